@@ -1,0 +1,173 @@
+//! Knot vectors: validation, span search and B-spline basis functions.
+
+use crate::error::{check_finite, Error, Result};
+use smallvec::SmallVec;
+
+/// Scratch buffers sized for the degrees that occur in practice; larger degrees spill to the heap.
+pub(crate) type Scratch = SmallVec<[f64; 32]>;
+
+/// Validates a knot vector for a spline of `degree` with `n` control points.
+///
+/// Rules: `n + degree + 1` finite, non-decreasing values; interior multiplicity at most `degree`
+/// (so the spline is continuous), end multiplicity at most `degree + 1`; non-empty domain.
+pub fn validate_knots(degree: usize, n: usize, knots: &[f64]) -> Result<()> {
+    if n < degree + 1 {
+        return Err(Error::TooFewPoints {
+            degree,
+            needed: degree + 1,
+            got: n,
+        });
+    }
+    if knots.len() != n + degree + 1 {
+        return Err(Error::CountMismatch {
+            what: "knots (control points + degree + 1)",
+            expected: n + degree + 1,
+            got: knots.len(),
+        });
+    }
+    check_finite("knots", knots)?;
+    for i in 1..knots.len() {
+        if knots[i] < knots[i - 1] {
+            return Err(Error::DecreasingKnots {
+                index: i,
+                value: knots[i],
+                previous: knots[i - 1],
+            });
+        }
+    }
+    let (start, end) = (knots[degree], knots[n]);
+    if start >= end {
+        return Err(Error::EmptyDomain { start, end });
+    }
+    let mut i = 0;
+    while i < knots.len() {
+        let mut j = i;
+        while j + 1 < knots.len() && knots[j + 1] == knots[i] {
+            j += 1;
+        }
+        let multiplicity = j - i + 1;
+        let at_end = i == 0 || j == knots.len() - 1;
+        let max = if at_end { degree + 1 } else { degree };
+        if multiplicity > max {
+            return Err(Error::KnotMultiplicity {
+                value: knots[i],
+                multiplicity,
+                max,
+            });
+        }
+        i = j + 1;
+    }
+    Ok(())
+}
+
+/// Index `i` of the knot span `[knots[i], knots[i+1])` that contains `u`, with
+/// `degree <= i < n`; `u` at or beyond the domain end gives the last non-empty span.
+pub fn find_span(degree: usize, n: usize, knots: &[f64], u: f64) -> usize {
+    if u >= knots[n] {
+        let mut i = n - 1;
+        while i > degree && knots[i] >= knots[n] {
+            i -= 1;
+        }
+        return i;
+    }
+    if u <= knots[degree] {
+        let mut i = degree;
+        while i + 1 < n && knots[i + 1] <= knots[degree] {
+            i += 1;
+        }
+        return i;
+    }
+    // Binary search for the last i with knots[i] <= u.
+    let (mut lo, mut hi) = (degree, n);
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        if u < knots[mid] {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    lo
+}
+
+/// Number of times `u` occurs in `knots` (exact comparison).
+pub fn multiplicity(knots: &[f64], u: f64) -> usize {
+    let start = knots.partition_point(|&k| k < u);
+    knots[start..].iter().take_while(|&&k| k == u).count()
+}
+
+/// Non-zero basis functions and their derivatives up to order `nd` at `u` in span `span`
+/// (The NURBS Book, A2.3). `ders[k * (p+1) + j]` is the k-th derivative of `N_{span-p+j, p}`.
+pub(crate) fn basis_derivs(
+    span: usize,
+    u: f64,
+    p: usize,
+    nd: usize,
+    knots: &[f64],
+    ders: &mut Scratch,
+) {
+    let w = p + 1;
+    ders.clear();
+    ders.resize((nd + 1) * w, 0.0);
+    let mut ndu: Scratch = SmallVec::from_elem(0.0, w * w);
+    let mut left: Scratch = SmallVec::from_elem(0.0, w);
+    let mut right: Scratch = SmallVec::from_elem(0.0, w);
+    ndu[0] = 1.0;
+    for j in 1..=p {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        let mut saved = 0.0;
+        for r in 0..j {
+            // Lower triangle holds knot differences, upper triangle the basis functions.
+            ndu[j * w + r] = right[r + 1] + left[j - r];
+            let temp = ndu[r * w + j - 1] / ndu[j * w + r];
+            ndu[r * w + j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j * w + j] = saved;
+    }
+    for j in 0..=p {
+        ders[j] = ndu[j * w + p];
+    }
+    if nd == 0 {
+        return;
+    }
+    let mut a: Scratch = SmallVec::from_elem(0.0, 2 * w);
+    for r in 0..=p {
+        let (mut s1, mut s2) = (0usize, 1usize);
+        a[0] = 1.0;
+        for k in 1..=nd.min(p) {
+            let mut d = 0.0;
+            let rk = r as isize - k as isize;
+            let pk = p - k;
+            if r >= k {
+                a[s2 * w] = a[s1 * w] / ndu[(pk + 1) * w + (r - k)];
+                d = a[s2 * w] * ndu[(r - k) * w + pk];
+            }
+            let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
+            let j2 = if (r as isize - 1) <= pk as isize {
+                k - 1
+            } else {
+                p - r
+            };
+            for j in j1..=j2 {
+                let idx = (rk + j as isize) as usize;
+                a[s2 * w + j] = (a[s1 * w + j] - a[s1 * w + j - 1]) / ndu[(pk + 1) * w + idx];
+                d += a[s2 * w + j] * ndu[idx * w + pk];
+            }
+            if r <= pk {
+                a[s2 * w + k] = -a[s1 * w + k - 1] / ndu[(pk + 1) * w + r];
+                d += a[s2 * w + k] * ndu[r * w + pk];
+            }
+            ders[k * w + r] = d;
+            std::mem::swap(&mut s1, &mut s2);
+        }
+    }
+    let mut factor = p as f64;
+    for k in 1..=nd.min(p) {
+        for j in 0..=p {
+            ders[k * w + j] *= factor;
+        }
+        factor *= (p - k) as f64;
+    }
+}

@@ -1,0 +1,189 @@
+//! Property tests: every exact operation agrees with pointwise evaluation of its definition.
+
+mod common;
+use bspline::BSpline;
+use common::*;
+use proptest::prelude::*;
+
+const TOL: f64 = 1e-12;
+
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 2000,
+        ..ProptestConfig::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn product_matches_pointwise((a, b) in pair(5, 12, 1, 2)) {
+        let h = a.mul(&b).unwrap();
+        prop_assert_eq!(h.degree(), a.degree() + b.degree());
+        let scale = a.max_abs_coef() * b.max_abs_coef();
+        for u in sample_params(&h, 40) {
+            let (fa, fb, fh) = (a.eval(u), b.eval(u), h.eval(u));
+            for k in 0..2 {
+                prop_assert!(close(fh[k], fa[0] * fb[k], scale, TOL), "u={u} k={k}: {} vs {}", fh[k], fa[0] * fb[k]);
+            }
+        }
+    }
+
+    #[test]
+    fn product_has_minimal_knots((a, b) in pair(4, 10, 1, 1)) {
+        let h = a.mul(&b).unwrap();
+        let (p, q) = (a.degree(), b.degree());
+        for x in h.breakpoints() {
+            let (lo, hi) = h.domain();
+            if x == lo || x == hi { continue; }
+            let m = |f: &BSpline| bspline::knots::multiplicity(f.knots(), x);
+            let cont = |f: &BSpline, deg: usize| if m(f) == 0 { usize::MAX } else { deg - m(f) };
+            let want = (p + q) - cont(&a, p).min(cont(&b, q));
+            prop_assert_eq!(m(&h), want);
+        }
+    }
+
+    #[test]
+    fn dot_and_cross_match_pointwise((a, b) in pair(4, 10, 2, 2)) {
+        let d = a.dot(&b).unwrap();
+        let c = a.cross(&b).unwrap();
+        let scale = a.max_abs_coef() * b.max_abs_coef();
+        for u in sample_params(&d, 30) {
+            let (fa, fb) = (a.eval(u), b.eval(u));
+            prop_assert!(close(d.eval_scalar(u), fa[0] * fb[0] + fa[1] * fb[1], scale, TOL));
+            prop_assert!(close(c.eval_scalar(u), fa[0] * fb[1] - fa[1] * fb[0], scale, TOL));
+        }
+    }
+
+    #[test]
+    fn sum_and_difference_match_pointwise((a, b) in pair(5, 12, 2, 2)) {
+        let s = a.add(&b).unwrap();
+        let d = a.sub(&b).unwrap();
+        let scale = a.max_abs_coef() + b.max_abs_coef();
+        for u in sample_params(&s, 30) {
+            let (fa, fb) = (a.eval(u), b.eval(u));
+            for k in 0..2 {
+                prop_assert!(close(s.eval(u)[k], fa[k] + fb[k], scale, TOL));
+                prop_assert!(close(d.eval(u)[k], fa[k] - fb[k], scale, TOL));
+            }
+        }
+    }
+
+    #[test]
+    fn elevation_keeps_function_and_continuity(f in spline(5, 12, 2), t in 1usize..4) {
+        let g = f.elevate(t);
+        prop_assert_eq!(g.degree(), f.degree() + t);
+        for x in f.breakpoints() {
+            let m = |h: &BSpline| bspline::knots::multiplicity(h.knots(), x);
+            let (lo, hi) = f.domain();
+            if x != lo && x != hi { prop_assert_eq!(m(&g), m(&f) + t); }
+        }
+        let scale = f.max_abs_coef();
+        for u in sample_params(&f, 30) {
+            for k in 0..2 { prop_assert!(close(g.eval(u)[k], f.eval(u)[k], scale, TOL)); }
+        }
+    }
+
+    #[test]
+    fn knot_insertion_and_refinement_keep_function(f in spline(5, 12, 2), xs in prop::collection::vec(0.001f64..0.999, 1..8)) {
+        let (a, b) = f.domain();
+        let xs: Vec<f64> = xs.iter().map(|s| a + (b - a) * s).collect();
+        let g = f.refine(&xs).unwrap();
+        prop_assert_eq!(g.n_ctrl(), f.n_ctrl() + xs.len());
+        let h = f.insert_knot(xs[0], 2).unwrap();
+        let scale = f.max_abs_coef();
+        for u in sample_params(&g, 30) {
+            for k in 0..2 {
+                prop_assert!(close(g.eval(u)[k], f.eval(u)[k], scale, TOL));
+                prop_assert!(close(h.eval(u)[k], f.eval(u)[k], scale, TOL));
+            }
+        }
+    }
+
+    #[test]
+    fn split_and_restrict_keep_function(f in spline(5, 12, 2), s in 0.01f64..0.99, t in 0.0f64..1.0) {
+        let (a, b) = f.domain();
+        let u = a + (b - a) * s;
+        let (l, r) = f.split_at(u).unwrap();
+        prop_assert_eq!(l.domain(), (a, u));
+        prop_assert_eq!(r.domain(), (u, b));
+        let scale = f.max_abs_coef();
+        for v in sample_params(&f, 30) {
+            let piece = if v <= u { &l } else { &r };
+            for k in 0..2 { prop_assert!(close(piece.eval(v)[k], f.eval(v)[k], scale, TOL)); }
+        }
+        let (c, d) = if u < a + (b - a) * t { (u, a + (b - a) * t) } else { (a + (b - a) * t, u) };
+        if c < d {
+            let g = f.restrict(c, d).unwrap();
+            prop_assert!(g.is_clamped());
+            for v in sample_params(&g, 20) {
+                for k in 0..2 { prop_assert!(close(g.eval(v)[k], f.eval(v)[k], scale, TOL)); }
+            }
+        }
+    }
+
+    #[test]
+    fn bezier_pieces_and_de_casteljau_match(f in spline(5, 12, 2), s in 0.05f64..0.95) {
+        let scale = f.max_abs_coef();
+        for piece in f.bezier_pieces() {
+            let mut out = [0.0; 2];
+            for i in 0..=10 {
+                let u = piece.a + (piece.b - piece.a) * i as f64 / 10.0;
+                piece.eval(u, &mut out);
+                for k in 0..2 { prop_assert!(close(out[k], f.eval(u)[k], scale, TOL)); }
+            }
+            let m = piece.a + (piece.b - piece.a) * s;
+            let (l, r) = piece.split(m);
+            for i in 0..=10 {
+                let u = piece.a + (piece.b - piece.a) * i as f64 / 10.0;
+                let half = if u <= m { &l } else { &r };
+                half.eval(u, &mut out);
+                for k in 0..2 { prop_assert!(close(out[k], f.eval(u)[k], scale, TOL)); }
+            }
+        }
+    }
+
+    #[test]
+    fn periodic_to_clamped_keeps_curve(p in 1usize..6, extra in 0usize..10, pts in prop::collection::vec(-10.0f64..10.0, 64)) {
+        let n = p + 1 + extra;
+        let f = BSpline::periodic(p, 2, pts[..2 * n].to_vec()).unwrap();
+        let g = f.clamped();
+        prop_assert!(g.is_clamped());
+        prop_assert_eq!(g.domain(), (0.0, n as f64));
+        // Closed and C^(p-1) at the seam.
+        let (mut d0, mut d1) = (vec![0.0; 2 * p], vec![0.0; 2 * p]);
+        f.eval_derivs(0.0, p - 1, &mut d0);
+        f.eval_derivs(n as f64, p - 1, &mut d1);
+        for (x, y) in d0.iter().zip(&d1) { prop_assert!(close(*x, *y, 10.0 * n.pow(p as u32) as f64, TOL)); }
+        for u in sample_params(&f, 40) {
+            for k in 0..2 { prop_assert!(close(g.eval(u)[k], f.eval(u)[k], 10.0, TOL)); }
+        }
+    }
+
+    #[test]
+    fn derivative_matches_finite_difference(f in spline(5, 12, 2)) {
+        let df = f.deriv();
+        let d2 = f.deriv_n(2);
+        let (a, b) = f.domain();
+        let h = (b - a) * 1e-3;
+        let mut all = vec![0.0; 6];
+        for br in f.breakpoints().windows(2) {
+            // Inside each span the function is a polynomial: a 6th-order central difference.
+            let (lo, hi) = (br[0], br[1]);
+            if hi - lo < 8.0 * h { continue; }
+            let u = 0.5 * (lo + hi);
+            let fd = |k: usize| {
+                let e = |s: f64| f.eval(u + s * h)[k];
+                (-e(-3.0) + 9.0 * e(-2.0) - 45.0 * e(-1.0) + 45.0 * e(1.0) - 9.0 * e(2.0) + e(3.0)) / (60.0 * h)
+            };
+            f.eval_derivs(u, 2, &mut all);
+            let scale = df.max_abs_coef();
+            for k in 0..2 {
+                prop_assert!(close(df.eval(u)[k], fd(k), scale, 1e-7), "fd {} vs {}", df.eval(u)[k], fd(k));
+                prop_assert!(close(all[2 + k], df.eval(u)[k], scale, TOL));
+                prop_assert!(close(all[4 + k], d2.eval(u)[k], d2.max_abs_coef(), TOL));
+            }
+        }
+    }
+}

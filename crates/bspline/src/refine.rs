@@ -59,9 +59,7 @@ impl BSpline {
             q[(j + r) * d..(j + r + 1) * d].copy_from_slice(&pw[j * d..(j + 1) * d]);
         }
         ub[..=a].copy_from_slice(&u[..=a]);
-        for j in b + p..u.len() {
-            ub[j + r] = u[j];
-        }
+        ub[b + p + r..].copy_from_slice(&u[b + p..]);
         let mut i = b + p - 1;
         let mut k = b + p + r - 1;
         for j in (0..r).rev() {

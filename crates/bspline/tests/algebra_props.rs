@@ -1,4 +1,5 @@
 //! Property tests: every exact operation agrees with pointwise evaluation of its definition.
+#![allow(clippy::needless_range_loop)]
 
 mod common;
 use bspline::BSpline;

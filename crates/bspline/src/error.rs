@@ -99,6 +99,14 @@ pub enum Error {
         /// Its value.
         value: f64,
     },
+    /// A function treated as periodic takes different values at its domain ends.
+    #[error("not periodic: the value at the domain start ({start}) differs from the value at its end ({end})")]
+    NotPeriodic {
+        /// Value at the domain start.
+        start: f64,
+        /// Value at the domain end.
+        end: f64,
+    },
     /// The dimension is zero.
     #[error("dimension must be at least 1")]
     ZeroDimension,

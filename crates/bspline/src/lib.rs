@@ -5,13 +5,25 @@
 //! to the true result up to rounding. Root isolation decides existence from the signs of
 //! B-spline coefficients with a rounding-error bound, so "no root here" and "exactly one simple
 //! root here" are proofs, not samples.
+//!
+//! - [`BSpline`]: polynomial B-splines of any dimension (scalar functions, planar curves,
+//!   homogeneous curves, rows of tensor-product coefficients).
+//! - [`Rational`]: NURBS curves in homogeneous form.
+//! - [`symbolic`]: curvature numerators and the sign functions of Jia's primitives.
+//! - [`roots`]: certified root isolation.
+//! - [`tensor`]: bivariate tensor-product functions `F(t, r)`.
 
 mod algebra;
 mod error;
 pub mod knots;
+mod rational;
 mod refine;
+pub mod roots;
 mod spline;
+pub mod symbolic;
+pub mod tensor;
 
 pub use error::{Error, Result};
+pub use rational::Rational;
 pub use refine::Bezier;
 pub use spline::{clamped_uniform_knots, BSpline};

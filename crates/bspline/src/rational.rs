@@ -1,0 +1,169 @@
+//! Rational (NURBS) curves in homogeneous form.
+
+use crate::error::{check_finite, Error, Result};
+use crate::spline::BSpline;
+use smallvec::SmallVec;
+
+/// A rational B-spline curve `C(u) = X(u) / w(u)` carried as the polynomial B-spline
+/// `H = (w·x₁, …, w·x_d, w)` of dimension `d + 1`. A polynomial curve is the case `w ≡ 1`.
+///
+/// All exact operations (derivative numerators, products) work on `H`, so rational curves get the
+/// same exact algebra as polynomial ones; only evaluation divides.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rational {
+    hom: BSpline,
+    rational: bool,
+}
+
+impl Rational {
+    /// A curve from control points of dimension `dim` and optional positive weights.
+    ///
+    /// ```
+    /// use bspline::{BSpline, Rational};
+    /// // A quarter circle as a rational quadratic Bézier.
+    /// let w = std::f64::consts::FRAC_1_SQRT_2;
+    /// let pts = BSpline::bezier(2, vec![1., 0., 1., 1., 0., 1.]).unwrap();
+    /// let c = Rational::new(pts, Some(&[1.0, w, 1.0])).unwrap();
+    /// let p = c.point(0.3);
+    /// assert!((p[0].hypot(p[1]) - 1.0).abs() < 1e-15);
+    /// ```
+    pub fn new(points: BSpline, weights: Option<&[f64]>) -> Result<Self> {
+        let Some(w) = weights else {
+            return Ok(Self::polynomial(&points));
+        };
+        if w.len() != points.n_ctrl() {
+            return Err(Error::CountMismatch {
+                what: "weights (one per control point)",
+                expected: points.n_ctrl(),
+                got: w.len(),
+            });
+        }
+        check_finite("weights", w)?;
+        if let Some(index) = w.iter().position(|&x| x <= 0.0) {
+            return Err(Error::NonPositiveWeight {
+                index,
+                value: w[index],
+            });
+        }
+        let d = points.dim();
+        let mut i = 0;
+        let hom = points.map_points(d + 1, |src, dst| {
+            for (o, s) in dst.iter_mut().zip(src) {
+                *o = s * w[i];
+            }
+            dst[d] = w[i];
+            i += 1;
+        });
+        let rational = w.iter().any(|&x| x != w[0]);
+        Ok(Self { hom, rational })
+    }
+
+    /// A polynomial curve (all weights 1).
+    pub fn polynomial(points: &BSpline) -> Self {
+        let d = points.dim();
+        let hom = points.map_points(d + 1, |src, dst| {
+            dst[..d].copy_from_slice(src);
+            dst[d] = 1.0;
+        });
+        Self {
+            hom,
+            rational: false,
+        }
+    }
+
+    /// From a homogeneous B-spline whose last coordinate (the weight) has positive coefficients.
+    pub fn from_homogeneous(hom: BSpline) -> Result<Self> {
+        let d = hom.dim();
+        if d < 2 {
+            return Err(Error::DimensionMismatch {
+                expected: 2,
+                got: d,
+            });
+        }
+        for i in 0..hom.n_ctrl() {
+            let w = hom.ctrl(i)[d - 1];
+            if w <= 0.0 {
+                return Err(Error::NonPositiveWeight { index: i, value: w });
+            }
+        }
+        let w0 = hom.ctrl(0)[d - 1];
+        let rational = (0..hom.n_ctrl()).any(|i| hom.ctrl(i)[d - 1] != w0);
+        Ok(Self { hom, rational })
+    }
+
+    /// The homogeneous B-spline `(w·x, w)`.
+    pub fn homogeneous(&self) -> &BSpline {
+        &self.hom
+    }
+    /// True when the weights are not all equal (the curve is not a polynomial one).
+    pub fn is_rational(&self) -> bool {
+        self.rational
+    }
+    /// Dimension of the curve's points.
+    pub fn dim(&self) -> usize {
+        self.hom.dim() - 1
+    }
+    /// Polynomial degree of the homogeneous form.
+    pub fn degree(&self) -> usize {
+        self.hom.degree()
+    }
+    /// Parameter domain.
+    pub fn domain(&self) -> (f64, f64) {
+        self.hom.domain()
+    }
+    /// The Euclidean control points (homogeneous points divided by their weights).
+    pub fn control_points(&self) -> Vec<SmallVec<[f64; 4]>> {
+        let d = self.dim();
+        (0..self.hom.n_ctrl())
+            .map(|i| {
+                let h = self.hom.ctrl(i);
+                h[..d].iter().map(|x| x / h[d]).collect()
+            })
+            .collect()
+    }
+    /// The weights.
+    pub fn weights(&self) -> Vec<f64> {
+        let d = self.dim();
+        (0..self.hom.n_ctrl())
+            .map(|i| self.hom.ctrl(i)[d])
+            .collect()
+    }
+    /// The curve restricted to `[a, b]`.
+    pub fn restrict(&self, a: f64, b: f64) -> Result<Self> {
+        Ok(Self {
+            hom: self.hom.restrict(a, b)?,
+            rational: self.rational,
+        })
+    }
+
+    /// The point at `u`.
+    pub fn point(&self, u: f64) -> SmallVec<[f64; 4]> {
+        let h = self.hom.eval(u);
+        let d = self.dim();
+        h[..d].iter().map(|x| x / h[d]).collect()
+    }
+
+    /// The point and derivatives up to order `k` at `u` (`out[j*dim..]` the j-th derivative),
+    /// by the quotient rule `C⁽ᵏ⁾ = (X⁽ᵏ⁾ − Σᵢ C(k,i) w⁽ⁱ⁾ C⁽ᵏ⁻ⁱ⁾) / w`.
+    pub fn eval_derivs(&self, u: f64, k: usize, out: &mut [f64]) {
+        let d = self.dim();
+        let mut h: SmallVec<[f64; 16]> = smallvec::smallvec![0.0; (k + 1) * (d + 1)];
+        self.hom.eval_derivs(u, k, &mut h);
+        let w = |j: usize| h[j * (d + 1) + d];
+        for j in 0..=k {
+            let mut binom = 1.0;
+            for c in 0..d {
+                out[j * d + c] = h[j * (d + 1) + c];
+            }
+            for i in 1..=j {
+                binom = binom * (j + 1 - i) as f64 / i as f64;
+                for c in 0..d {
+                    out[j * d + c] -= binom * w(i) * out[(j - i) * d + c];
+                }
+            }
+            for c in 0..d {
+                out[j * d + c] /= w(0);
+            }
+        }
+    }
+}

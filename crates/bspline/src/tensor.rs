@@ -1,0 +1,1 @@
+//! Bivariate tensor-product functions (in progress).

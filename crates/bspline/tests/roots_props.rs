@@ -1,0 +1,172 @@
+//! Root isolation against independent oracles: polynomials built from known roots (including
+//! clusters and double roots), and dense sampling of random B-splines.
+
+mod common;
+use bspline::roots::{find_roots, find_roots_periodic, Root, RootKind, RootOptions};
+use bspline::BSpline;
+use common::*;
+use proptest::prelude::*;
+
+/// c · Π (u − rᵢ) on [a, b], built exactly as a product of linear Bézier factors.
+fn from_roots(roots: &[f64], c: f64, a: f64, b: f64) -> BSpline {
+    let knots = vec![a, a, b, b];
+    let mut f = BSpline::new(0, vec![a, b], 1, vec![c]).unwrap();
+    for &r in roots {
+        let lin = BSpline::new(1, knots.clone(), 1, vec![a - r, b - r]).unwrap();
+        f = f.mul(&lin).unwrap();
+    }
+    f
+}
+
+fn covers(r: &Root, x: f64, slack: f64) -> bool {
+    r.bracket.0 - slack <= x && x <= r.bracket.1 + slack
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    /// Well-separated simple roots: all found, all certified, none extra, accurate.
+    #[test]
+    fn separated_roots_are_all_certified(
+        raw in prop::collection::vec(0.0f64..1.0, 1..13),
+        c in prop_oneof![-100.0f64..-0.01, 0.01f64..100.0],
+    ) {
+        let mut rs = raw.clone();
+        rs.sort_by(f64::total_cmp);
+        rs.dedup_by(|x, y| (*x - *y).abs() < 0.02);
+        let f = from_roots(&rs, c, -0.01, 1.01);
+        let found = find_roots(&f, -0.01, 1.01, &RootOptions::default()).unwrap();
+        prop_assert_eq!(found.len(), rs.len(), "{:?} vs {:?}", found, rs);
+        for (r, x) in found.iter().zip(&rs) {
+            prop_assert!(r.certified && r.kind == RootKind::Simple);
+            prop_assert!((r.u - x).abs() <= 1e-9, "{} vs {}", r.u, x);
+            prop_assert!(covers(r, *x, 1e-10));
+        }
+    }
+
+    /// Near-double and exact double roots are never lost: each true root lies in a reported
+    /// bracket (a certified simple root or a cluster), and far roots stay certified.
+    #[test]
+    fn clustered_roots_are_never_dropped(
+        r0 in 0.1f64..0.9,
+        log_gap in -15.0f64..-2.0,
+        double in any::<bool>(),
+        others in prop::collection::vec(0.0f64..1.0, 0..5),
+    ) {
+        let gap = if double { 0.0 } else { 10f64.powf(log_gap) };
+        let mut rs = vec![r0, r0 + gap];
+        for o in others {
+            if (o - r0).abs() > 0.05 { rs.push(o); }
+        }
+        rs.sort_by(f64::total_cmp);
+        let f = from_roots(&rs, 1.0, -0.01, 1.01);
+        let found = find_roots(&f, -0.01, 1.01, &RootOptions::default()).unwrap();
+        for &x in &rs {
+            // A double root's location is only determined to about sqrt(eps).
+            prop_assert!(found.iter().any(|r| covers(r, x, 1e-7)), "root {} lost in {:?}", x, found);
+        }
+        for r in &found {
+            prop_assert!(rs.iter().any(|&x| covers(r, x, 1e-7)), "invented {:?}", r);
+        }
+    }
+
+    /// Random B-splines against dense sampling: every sign change of the samples lies in a
+    /// reported bracket, and every certified root is a real sign change.
+    #[test]
+    fn random_splines_match_dense_sampling(f in spline(7, 25, 1)) {
+        let (a, b) = f.domain();
+        let found = find_roots(&f, a, b, &RootOptions::default()).unwrap();
+        let scale = f.max_abs_coef();
+        let n = 4000;
+        let xs: Vec<f64> = (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
+        let vs: Vec<f64> = xs.iter().map(|&x| f.eval_scalar(x)).collect();
+        let noise = 1e-12 * scale;
+        for i in 0..n {
+            if vs[i].abs() > noise && vs[i + 1].abs() > noise && (vs[i] > 0.0) != (vs[i + 1] > 0.0) {
+                prop_assert!(found.iter().any(|r| r.bracket.1 >= xs[i] && r.bracket.0 <= xs[i + 1]),
+                    "sign change in [{}, {}] missed: {:?}", xs[i], xs[i + 1], found);
+            }
+        }
+        for r in found.iter().filter(|r| r.certified) {
+            let h = 1e-6 * (b - a);
+            let (lo, hi) = ((r.u - h).max(a), (r.u + h).min(b));
+            let (fl, fh) = (f.eval_scalar(lo), f.eval_scalar(hi));
+            if fl.abs() > noise && fh.abs() > noise {
+                prop_assert!((fl > 0.0) != (fh > 0.0), "certified root {:?} without sign change", r);
+            }
+            // The residual is what the slope and the bracket width allow.
+            let mut d = [0.0; 2];
+            f.eval_derivs(r.u, 1, &mut d);
+            let width = r.bracket.1 - r.bracket.0;
+            prop_assert!(d[0].abs() <= d[1].abs() * (width + 1e-12) + 1e3 * f64::EPSILON * scale,
+                "residual {} at {:?}", d[0], r);
+        }
+        for w in found.windows(2) {
+            prop_assert!(w[0].bracket.1 <= w[1].bracket.0, "overlapping brackets {:?}", w);
+        }
+    }
+}
+
+#[test]
+fn degree_15_bezier_with_15_roots() {
+    let rs: Vec<f64> = (0..15).map(|i| (i as f64 + 0.5) / 15.0).collect();
+    let f = from_roots(&rs, 1.0, 0.0, 1.0);
+    assert_eq!(f.degree(), 15);
+    let found = find_roots(&f, 0.0, 1.0, &RootOptions::default()).unwrap();
+    assert_eq!(found.len(), 15);
+    let scale = f.max_abs_coef();
+    for (r, x) in found.iter().zip(&rs) {
+        assert!(r.certified);
+        // Forward error = backward error (rounding of the coefficients) / |f'(root)|.
+        let mut d = [0.0; 2];
+        f.eval_derivs(*x, 1, &mut d);
+        let limit = 1e-13 + 64.0 * 16.0 * f64::EPSILON * scale / d[1].abs();
+        assert!(
+            (r.u - x).abs() <= limit,
+            "{} vs {} (limit {limit:e})",
+            r.u,
+            x
+        );
+    }
+}
+
+#[test]
+fn roots_at_the_ends_and_the_seam() {
+    // Root exactly at both ends of [0, 1].
+    let f = from_roots(&[0.0, 0.5, 1.0], 1.0, 0.0, 1.0);
+    let found = find_roots(&f, 0.0, 1.0, &RootOptions::default()).unwrap();
+    for x in [0.0, 0.5, 1.0] {
+        assert!(found.iter().any(|r| covers(r, x, 1e-12)), "{x}: {found:?}");
+    }
+    // A periodic function with a simple zero at the seam: reported once.
+    let g = BSpline::periodic(3, 1, vec![0.0, 1.0, 2.0, 1.0, 0.0, -1.0, -2.0, -1.0]).unwrap();
+    let v0 = g.eval_scalar(0.0);
+    let g = g.map_points(1, |c, o| o[0] = c[0] - v0);
+    let found = find_roots_periodic(&g, &RootOptions::default()).unwrap();
+    let (a, b) = g.domain();
+    let seam = found
+        .iter()
+        .filter(|r| r.u <= a + 1e-9 || r.u >= b - 1e-9)
+        .count();
+    assert_eq!(seam, 1, "{found:?}");
+    assert_eq!(found.len(), 2, "{found:?}");
+    assert!(found.iter().all(|r| r.certified));
+}
+
+#[test]
+fn zero_function_is_one_cluster() {
+    let f = BSpline::clamped_uniform(3, 1, vec![0.0; 8]).unwrap();
+    let found = find_roots(&f, 0.0, 1.0, &RootOptions::default()).unwrap();
+    assert_eq!(found.len(), 1);
+    assert_eq!(found[0].kind, RootKind::Cluster);
+    assert_eq!(found[0].bracket, (0.0, 1.0));
+}
+
+#[test]
+fn bad_input_is_an_error() {
+    let f = BSpline::clamped_uniform(2, 2, vec![0.0; 8]).unwrap();
+    assert!(find_roots(&f, 0.0, 1.0, &RootOptions::default()).is_err());
+    let g = BSpline::clamped_uniform(2, 1, vec![1.0, -1.0, 1.0]).unwrap();
+    assert!(find_roots(&g, 0.5, 2.0, &RootOptions::default()).is_err());
+    assert!(find_roots(&g, 0.0, 1.0, &RootOptions::default().tolerance(f64::NAN)).is_err());
+}

@@ -1,5 +1,6 @@
 //! Property tests: every exact operation agrees with pointwise evaluation of its definition.
 #![allow(clippy::needless_range_loop)]
+#![allow(clippy::unwrap_used)]
 
 mod common;
 use bspline::BSpline;

@@ -1,5 +1,6 @@
 //! Root isolation against independent oracles: polynomials built from known roots (including
 //! clusters and double roots), and dense sampling of random B-splines.
+#![allow(clippy::unwrap_used)]
 
 mod common;
 use bspline::roots::{find_roots, find_roots_periodic, Root, RootKind, RootOptions};

@@ -1,5 +1,6 @@
 //! Shared generators and helpers for the property tests.
 #![allow(dead_code, unreachable_pub)]
+#![allow(clippy::unwrap_used)]
 
 use bspline::BSpline;
 use proptest::prelude::*;

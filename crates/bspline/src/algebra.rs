@@ -52,11 +52,12 @@ fn union_breaks(a: &BSpline, b: &BSpline) -> Vec<f64> {
     out
 }
 
-/// Continuity order of `f` at the interior value `x`: `p − multiplicity` (∞ where `x` is no knot).
-fn continuity(f: &BSpline, x: f64) -> usize {
+/// Continuity order of `f` at the interior value `x`: `p − multiplicity`, −1 where `f` jumps
+/// (a derivative of a C⁰ spline), and "infinite" where `x` is no knot.
+fn continuity(f: &BSpline, x: f64) -> isize {
     match multiplicity(f.knots(), x) {
-        0 => usize::MAX,
-        m => f.degree().saturating_sub(m),
+        0 => isize::MAX,
+        m => f.degree() as isize - m as isize,
     }
 }
 
@@ -118,7 +119,7 @@ fn product(a: &BSpline, b: &BSpline, form: &Bilinear<'_>) -> Result<BSpline> {
     let mut knots = vec![lo; deg + 1];
     for &x in &breaks[1..breaks.len() - 1] {
         let cont = continuity(a, x).min(continuity(b, x));
-        let mult = deg.saturating_sub(cont);
+        let mult = (deg as isize - cont).clamp(0, deg as isize + 1) as usize;
         knots.extend(std::iter::repeat_n(x, mult));
     }
     knots.extend(std::iter::repeat_n(hi, deg + 1));

@@ -172,14 +172,19 @@ impl BSpline {
             x.extend(std::iter::repeat_n(bk, p.saturating_sub(have)));
         }
         let r = f.refine_sorted(&x);
-        let coefs = r.coefs();
-        (0..breaks.len() - 1)
-            .map(|j| Bezier {
-                a: breaks[j],
-                b: breaks[j + 1],
-                degree: p,
-                dim: d,
-                coefs: coefs[j * p * d..(j * p + p + 1) * d].to_vec(),
+        // With every break of multiplicity ≥ p, the p + 1 basis functions alive on a span are
+        // the Bernstein polynomials of that span (any multiplicity, degree 0 included).
+        breaks
+            .windows(2)
+            .map(|w| {
+                let span = find_span(p, r.n_ctrl(), r.knots(), 0.5 * (w[0] + w[1]));
+                Bezier {
+                    a: w[0],
+                    b: w[1],
+                    degree: p,
+                    dim: d,
+                    coefs: r.coefs()[(span - p) * d..(span + 1) * d].to_vec(),
+                }
             })
             .collect()
     }

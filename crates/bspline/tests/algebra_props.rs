@@ -32,6 +32,25 @@ proptest! {
         }
     }
 
+    /// Derivatives of C⁰ splines jump at their knots: the product must keep the jumps.
+    #[test]
+    fn product_of_discontinuous_factors_matches((a, b) in pair(4, 10, 1, 1)) {
+        let (da, db) = (a.deriv(), b.deriv());
+        let h = da.mul(&db).unwrap();
+        let scale = da.max_abs_coef() * db.max_abs_coef();
+        let mut bp = a.breakpoints();
+        bp.extend(b.breakpoints());
+        bp.sort_by(f64::total_cmp);
+        bp.dedup();
+        for w in bp.windows(2) {
+            for s in [0.1, 0.5, 0.9] {
+                let u = w[0] + (w[1] - w[0]) * s;
+                let want = da.eval_scalar(u) * db.eval_scalar(u);
+                prop_assert!(close(h.eval_scalar(u), want, scale, TOL), "u={u}: {} vs {want}", h.eval_scalar(u));
+            }
+        }
+    }
+
     #[test]
     fn product_has_minimal_knots((a, b) in pair(4, 10, 1, 1)) {
         let h = a.mul(&b).unwrap();

@@ -11,6 +11,7 @@
 //! - [`Rational`]: NURBS curves in homogeneous form.
 //! - [`symbolic`]: curvature numerators and the sign functions of Jia's primitives.
 //! - [`roots`]: certified root isolation.
+//! - [`shapes`]: exact rational forms of the circle, ellipse, limaçon and convexities.
 //! - [`tensor`]: bivariate tensor-product functions `F(t, r)`.
 
 mod algebra;
@@ -19,6 +20,7 @@ pub mod knots;
 mod rational;
 mod refine;
 pub mod roots;
+pub mod shapes;
 mod spline;
 pub mod symbolic;
 pub mod tensor;

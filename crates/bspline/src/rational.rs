@@ -71,7 +71,12 @@ impl Rational {
         }
     }
 
-    /// From a homogeneous B-spline whose last coordinate (the weight) has positive coefficients.
+    /// From a homogeneous B-spline whose last coordinate (the weight) is a positive function.
+    ///
+    /// Positivity is proven, not assumed: where a weight coefficient is not positive, the spans
+    /// around it are refined (the function is unchanged) until all weight coefficients are
+    /// positive. If that does not happen within a few rounds the weight has a zero or is
+    /// negative: [`Error::NonPositiveWeight`] names the first offending coefficient.
     pub fn from_homogeneous(hom: BSpline) -> Result<Self> {
         let d = hom.dim();
         if d < 2 {
@@ -80,11 +85,31 @@ impl Rational {
                 got: d,
             });
         }
-        for i in 0..hom.n_ctrl() {
-            let w = hom.ctrl(i)[d - 1];
-            if w <= 0.0 {
-                return Err(Error::NonPositiveWeight { index: i, value: w });
+        let mut hom = hom;
+        for round in 0..=24 {
+            let bad: Vec<usize> = (0..hom.n_ctrl())
+                .filter(|&i| hom.ctrl(i)[d - 1] <= 0.0)
+                .collect();
+            let Some(&first) = bad.first() else { break };
+            if round == 24 {
+                return Err(Error::NonPositiveWeight {
+                    index: first,
+                    value: hom.ctrl(first)[d - 1],
+                });
             }
+            // Split every span in the support of an offending coefficient.
+            let (p, k) = (hom.degree(), hom.knots());
+            let mut mids = Vec::new();
+            for &i in &bad {
+                for j in i..=i + p {
+                    if k[j + 1] > k[j] {
+                        mids.push(0.5 * (k[j] + k[j + 1]));
+                    }
+                }
+            }
+            mids.sort_by(f64::total_cmp);
+            mids.dedup();
+            hom = hom.refine(&mids)?;
         }
         let w0 = hom.ctrl(0)[d - 1];
         let rational = (0..hom.n_ctrl()).any(|i| hom.ctrl(i)[d - 1] != w0);

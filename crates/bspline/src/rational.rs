@@ -192,3 +192,50 @@ impl Rational {
         }
     }
 }
+
+/// Products of rational functions: numerators and denominators multiply in homogeneous form,
+/// `(X₁/w₁) ∘ (X₂/w₂) = (X₁ ∘ X₂) / (w₁ w₂)`, so the result is again exact.
+impl Rational {
+    fn euclidean(&self) -> BSpline {
+        let d = self.dim();
+        self.hom.map_points(d, |h, o| o.copy_from_slice(&h[..d]))
+    }
+
+    fn weight(&self) -> Result<BSpline> {
+        self.hom.component(self.dim())
+    }
+
+    fn from_parts(num: &BSpline, den: &BSpline) -> Result<Self> {
+        Self::from_homogeneous(BSpline::stack(&[num, den])?)
+    }
+
+    /// The product of a scalar rational function (`self`, dimension 1) and a rational curve.
+    pub fn mul(&self, other: &Rational) -> Result<Rational> {
+        if self.dim() != 1 {
+            return Err(Error::DimensionMismatch {
+                expected: 1,
+                got: self.dim(),
+            });
+        }
+        Self::from_parts(
+            &self.euclidean().mul(&other.euclidean())?,
+            &self.weight()?.mul(&other.weight()?)?,
+        )
+    }
+
+    /// The dot product of two rational curves of one dimension, a scalar rational function.
+    pub fn dot(&self, other: &Rational) -> Result<Rational> {
+        Self::from_parts(
+            &self.euclidean().dot(&other.euclidean())?,
+            &self.weight()?.mul(&other.weight()?)?,
+        )
+    }
+
+    /// The planar cross product of two rational planar curves, a scalar rational function.
+    pub fn cross(&self, other: &Rational) -> Result<Rational> {
+        Self::from_parts(
+            &self.euclidean().cross(&other.euclidean())?,
+            &self.weight()?.mul(&other.weight()?)?,
+        )
+    }
+}

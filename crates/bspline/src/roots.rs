@@ -375,7 +375,7 @@ impl State<'_> {
         let mut x = lo + (hi - lo) * (flo / (flo - fhi));
         let mut d = [0.0; 2];
         for _ in 0..200 {
-            self.f.eval_derivs(x, 1, &mut d);
+            self.f.eval_d1(x, &mut d);
             let (fx, dfx) = (d[0], d[1]);
             if fx == 0.0 {
                 lo = x;
@@ -406,7 +406,7 @@ impl State<'_> {
             };
         }
         // A last Newton step from the final iterate, kept inside the bracket.
-        self.f.eval_derivs(x, 1, &mut d);
+        self.f.eval_d1(x, &mut d);
         let step = if d[1] != 0.0 { x - d[0] / d[1] } else { x };
         let u = if step.is_finite() {
             step.clamp(lo, hi)

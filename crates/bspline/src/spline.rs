@@ -207,6 +207,42 @@ impl BSpline {
         }
     }
 
+    /// Value and first derivative at `u` into `out` (`2*dim` values), by de Boor's algorithm
+    /// stopped one level early: the two last points give the value and, scaled by
+    /// `p / (t_{s+1} − t_s)`, the derivative. Cheaper than [`BSpline::eval_derivs`] and
+    /// allocation-free for the degrees and dimensions met in practice.
+    pub fn eval_d1(&self, u: f64, out: &mut [f64]) {
+        let (p, d, n) = (self.degree, self.dim, self.n_ctrl());
+        let (a, b) = self.domain();
+        let u = u.clamp(a, b);
+        let s = find_span(p, n, &self.knots, u);
+        let t = &self.knots;
+        let mut w: SmallVec<[f64; 64]> =
+            SmallVec::from_slice(&self.coefs[(s - p) * d..(s + 1) * d]);
+        if p == 0 {
+            out[..d].copy_from_slice(&w[..d]);
+            out[d..2 * d].fill(0.0);
+            return;
+        }
+        // Levels 1..p−1: w[j] becomes the blossom b(u^level, knots…) of the points s−p+j.
+        for level in 1..p {
+            for j in (level..=p).rev() {
+                let i = s - p + j;
+                let alpha = (u - t[i]) / (t[i + p + 1 - level] - t[i]);
+                for c in 0..d {
+                    w[j * d + c] = (1.0 - alpha) * w[(j - 1) * d + c] + alpha * w[j * d + c];
+                }
+            }
+        }
+        let h = t[s + 1] - t[s];
+        let alpha = (u - t[s]) / h;
+        for c in 0..d {
+            let (q0, q1) = (w[(p - 1) * d + c], w[p * d + c]);
+            out[c] = (1.0 - alpha) * q0 + alpha * q1;
+            out[d + c] = p as f64 * (q1 - q0) / h;
+        }
+    }
+
     /// The derivative as a B-spline of degree `p − 1` (the hodograph); the zero function of
     /// degree 0 when `p == 0`.
     pub fn deriv(&self) -> BSpline {

@@ -9,6 +9,10 @@ use proptest::prelude::*;
 
 const TOL: f64 = 1e-12;
 
+fn scale_of(f: &BSpline, df: &BSpline) -> f64 {
+    f.max_abs_coef().max(df.max_abs_coef())
+}
+
 fn config() -> ProptestConfig {
     ProptestConfig {
         cases: 2000,
@@ -199,6 +203,11 @@ proptest! {
                 (-e(-3.0) + 9.0 * e(-2.0) - 45.0 * e(-1.0) + 45.0 * e(1.0) - 9.0 * e(2.0) + e(3.0)) / (60.0 * h)
             };
             f.eval_derivs(u, 2, &mut all);
+            let mut d1 = [0.0; 4];
+            f.eval_d1(u, &mut d1);
+            for k in 0..4 {
+                prop_assert!(close(d1[k], all[k], scale_of(&f, &df), TOL), "eval_d1 {} vs {}", d1[k], all[k]);
+            }
             let scale = df.max_abs_coef();
             for k in 0..2 {
                 prop_assert!(close(df.eval(u)[k], fd(k), scale, 1e-7), "fd {} vs {}", df.eval(u)[k], fd(k));

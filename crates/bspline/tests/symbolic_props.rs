@@ -65,6 +65,24 @@ proptest! {
     }
 
     #[test]
+    fn rational_products_match_pointwise(a in curve(), b in curve()) {
+        let (lo, hi) = a.domain();
+        let b = Rational::from_homogeneous(b.homogeneous().reparam(lo, hi).unwrap()).unwrap();
+        let dot = a.dot(&b).unwrap();
+        let cross = a.cross(&b).unwrap();
+        let sx = Rational::from_homogeneous(a.homogeneous().map_points(2, |h, o| { o[0] = h[0]; o[1] = h[2]; })).unwrap();
+        let scaled = sx.mul(&b).unwrap();
+        for u in interior_params(&a) {
+            let (p, q) = (a.point(u), b.point(u));
+            let scale = p[0].hypot(p[1]).max(1.0) * q[0].hypot(q[1]).max(1.0);
+            prop_assert!((dot.point(u)[0] - (p[0] * q[0] + p[1] * q[1])).abs() <= 1e-11 * scale);
+            prop_assert!((cross.point(u)[0] - (p[0] * q[1] - p[1] * q[0])).abs() <= 1e-11 * scale);
+            let m = scaled.point(u);
+            prop_assert!((m[0] - p[0] * q[0]).abs() <= 1e-11 * scale && (m[1] - p[0] * q[1]).abs() <= 1e-11 * scale);
+        }
+    }
+
+    #[test]
     fn curvature_numerator_matches_formula(c in curve()) {
         let k = symbolic::curvature_numerator(&c).unwrap();
         let expect_deg = if c.is_rational() { 3 * c.degree() - 3 } else { 2 * c.degree() - 3 };

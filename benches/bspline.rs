@@ -68,5 +68,19 @@ fn roots(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, products, curvature, roots);
+fn tensor_subdivision(c: &mut Criterion) {
+    use bspline::tensor::TensorBSpline;
+    // A degree (10, 10) Bézier patch: a sum of three outer products of degree-10 functions.
+    let bez = |seed: f64| BSpline::bezier(1, (0..11).map(|i| ((i as f64) * 1.3 + seed).sin()).collect()).unwrap();
+    let f = TensorBSpline::sum_of_outer(&[(bez(0.1), bez(0.7)), (bez(1.9), bez(2.3)), (bez(3.1), bez(4.2))]).unwrap();
+    assert_eq!((f.deg_t(), f.deg_r()), (10, 10));
+    c.bench_function("tensor_deg10x10_quad_subdivision", |b| {
+        b.iter(|| {
+            let (lo, hi) = black_box(&f).split_t(0.5).unwrap();
+            (lo.split_r(0.5).unwrap(), hi.split_r(0.5).unwrap())
+        })
+    });
+}
+
+criterion_group!(benches, products, curvature, roots, tensor_subdivision);
 criterion_main!(benches);

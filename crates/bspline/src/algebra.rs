@@ -218,6 +218,14 @@ impl BSpline {
     }
 
     /// The planar cross product `x_a y_b − y_a x_b` of two 2D functions, a scalar function.
+    ///
+    /// ```
+    /// use bspline::BSpline;
+    /// // C × C′ for the parabola C(u) = (u, u²): u·2u − u² = u².
+    /// let c = BSpline::bezier(2, vec![0., 0., 0.5, 0., 1., 1.]).unwrap();
+    /// let k = c.cross(&c.deriv()).unwrap();
+    /// assert!((k.eval_scalar(0.6) - 0.36).abs() < 1e-15);
+    /// ```
     pub fn cross(&self, other: &BSpline) -> Result<BSpline> {
         for d in [self.dim(), other.dim()] {
             if d != 2 {
@@ -268,6 +276,15 @@ impl BSpline {
 
     /// Raises the degree by `times`; the function is unchanged and every knot's multiplicity
     /// grows by `times`, so the continuity is kept exactly.
+    ///
+    /// ```
+    /// use bspline::BSpline;
+    /// let f = BSpline::new(2, vec![0., 0., 0., 0.5, 1., 1., 1.], 1, vec![0., 2., -1., 1.]).unwrap();
+    /// let g = f.elevate(1);
+    /// assert_eq!(g.degree(), 3);
+    /// assert_eq!(g.knots(), &[0., 0., 0., 0., 0.5, 0.5, 1., 1., 1., 1.]);
+    /// assert!((g.eval_scalar(0.7) - f.eval_scalar(0.7)).abs() < 1e-15);
+    /// ```
     pub fn elevate(&self, times: usize) -> BSpline {
         if times == 0 {
             return self.clone();

@@ -8,6 +8,17 @@ use crate::spline::BSpline;
 impl BSpline {
     /// Inserts every value of `new_knots` (sorted or not, repeats allowed) into the knot vector.
     /// The function is unchanged; only its representation grows (The NURBS Book, A5.4).
+    ///
+    /// ```
+    /// use bspline::BSpline;
+    /// let f = BSpline::clamped_uniform(3, 2, vec![0., 0., 1., 2., 3., 1., 4., 0., 5., 2.]).unwrap();
+    /// let g = f.refine(&[0.3, 0.3, 0.7]).unwrap();
+    /// assert_eq!(g.n_ctrl(), f.n_ctrl() + 3);
+    /// let (p, q) = (f.eval(0.42), g.eval(0.42));
+    /// assert!((p[0] - q[0]).abs() < 1e-14 && (p[1] - q[1]).abs() < 1e-14);
+    /// // A knot may not repeat more often than the degree inside the domain.
+    /// assert!(f.refine(&[0.5; 4]).is_err());
+    /// ```
     pub fn refine(&self, new_knots: &[f64]) -> Result<BSpline> {
         check_finite("new knots", new_knots)?;
         let (lo, hi) = self.domain();
@@ -132,6 +143,14 @@ impl BSpline {
     }
 
     /// Splits the function at `u` (strictly inside the domain) into two clamped B-splines.
+    ///
+    /// ```
+    /// use bspline::BSpline;
+    /// let f = BSpline::bezier(1, vec![1., -2., 3.]).unwrap();
+    /// let (l, r) = f.split_at(0.25).unwrap();
+    /// assert_eq!((l.domain(), r.domain()), ((0.0, 0.25), (0.25, 1.0)));
+    /// assert!((l.eval_scalar(0.1) - f.eval_scalar(0.1)).abs() < 1e-15);
+    /// ```
     pub fn split_at(&self, u: f64) -> Result<(BSpline, BSpline)> {
         let (lo, hi) = self.domain();
         if !(u > lo && u < hi) {

@@ -245,6 +245,14 @@ impl BSpline {
 
     /// The derivative as a B-spline of degree `p − 1` (the hodograph); the zero function of
     /// degree 0 when `p == 0`.
+    ///
+    /// ```
+    /// use bspline::BSpline;
+    /// let f = BSpline::bezier(1, vec![0., 0., 1.]).unwrap(); // u²
+    /// let df = f.deriv();
+    /// assert_eq!(df.degree(), 1);
+    /// assert!((df.eval_scalar(0.3) - 0.6).abs() < 1e-15);
+    /// ```
     pub fn deriv(&self) -> BSpline {
         let (p, d, n) = (self.degree, self.dim, self.n_ctrl());
         if p == 0 {

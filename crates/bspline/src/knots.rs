@@ -171,3 +171,99 @@ pub(crate) fn basis_derivs(
         factor *= (p - k) as f64;
     }
 }
+
+/// A validated knot vector for splines of a given degree: finite, non-decreasing, interior
+/// multiplicity at most `degree`, end multiplicity at most `degree + 1`, non-empty domain.
+///
+/// ```
+/// use bspline::knots::KnotVector;
+/// let k = KnotVector::new(2, vec![0., 0., 0., 1., 1., 2., 3., 3., 3.]).unwrap();
+/// assert_eq!(k.domain(), (0.0, 3.0));
+/// assert_eq!(k.n_ctrl(), 6);
+/// assert_eq!(k.multiplicity(1.0), 2);
+/// assert!(k.is_clamped());
+/// assert_eq!(k.span(1.5), 4); // knots[4] = 1 ≤ 1.5 < knots[5] = 2
+/// assert!(KnotVector::new(2, vec![0., 0., 0., 1., 1., 1., 0.5, 3., 3.]).is_err());
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct KnotVector {
+    degree: usize,
+    knots: Vec<f64>,
+}
+
+impl KnotVector {
+    /// Validates `knots` for splines of `degree` (with `knots.len() − degree − 1` control points).
+    pub fn new(degree: usize, knots: Vec<f64>) -> Result<Self> {
+        let n = knots.len().saturating_sub(degree + 1);
+        validate_knots(degree, n, &knots)?;
+        Ok(Self { degree, knots })
+    }
+    /// The clamped knot vector on `[a, b]` with uniform interior knots for `n` control points.
+    pub fn clamped_uniform(degree: usize, n: usize, a: f64, b: f64) -> Result<Self> {
+        if n < degree + 1 {
+            return Err(Error::TooFewPoints {
+                degree,
+                needed: degree + 1,
+                got: n,
+            });
+        }
+        Self::new(
+            degree,
+            crate::spline::clamped_uniform_knots(degree, n, a, b),
+        )
+    }
+    /// The unclamped uniform knot vector `−p, …, n + p` of a closed periodic spline with `n`
+    /// distinct control points (domain `[0, n]`).
+    pub fn periodic_uniform(degree: usize, n: usize) -> Result<Self> {
+        if degree == 0 || n < degree + 1 {
+            return Err(Error::TooFewPoints {
+                degree,
+                needed: degree + 1,
+                got: n,
+            });
+        }
+        Self::new(
+            degree,
+            (0..n + 2 * degree + 1)
+                .map(|i| i as f64 - degree as f64)
+                .collect(),
+        )
+    }
+    /// Wraps the knots of a spline (valid by construction).
+    pub(crate) fn from_valid(degree: usize, knots: Vec<f64>) -> Self {
+        Self { degree, knots }
+    }
+    /// The degree the vector was validated for.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+    /// Number of control points it supports.
+    pub fn n_ctrl(&self) -> usize {
+        self.knots.len() - self.degree - 1
+    }
+    /// The knot values.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.knots
+    }
+    /// The parameter domain `[knots[p], knots[n]]`.
+    pub fn domain(&self) -> (f64, f64) {
+        (self.knots[self.degree], self.knots[self.n_ctrl()])
+    }
+    /// The span index `i` with `knots[i] ≤ u < knots[i+1]` (the last span at the domain end).
+    pub fn span(&self, u: f64) -> usize {
+        find_span(self.degree, self.n_ctrl(), &self.knots, u)
+    }
+    /// How often `u` occurs.
+    pub fn multiplicity(&self, u: f64) -> usize {
+        multiplicity(&self.knots, u)
+    }
+    /// True when both ends have multiplicity `degree + 1`.
+    pub fn is_clamped(&self) -> bool {
+        let (k, p) = (&self.knots, self.degree);
+        k[0] == k[p] && k[k.len() - 1] == k[k.len() - 1 - p]
+    }
+    /// Consumes the vector, returning the values.
+    pub fn into_vec(self) -> Vec<f64> {
+        self.knots
+    }
+}

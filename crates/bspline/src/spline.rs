@@ -146,6 +146,10 @@ impl BSpline {
     pub fn coefs(&self) -> &[f64] {
         &self.coefs
     }
+    /// The knot vector as a validated [`KnotVector`](crate::knots::KnotVector).
+    pub fn knot_vector(&self) -> crate::knots::KnotVector {
+        crate::knots::KnotVector::from_valid(self.degree, self.knots.clone())
+    }
     /// Control point `i`.
     pub fn ctrl(&self, i: usize) -> &[f64] {
         &self.coefs[i * self.dim..(i + 1) * self.dim]

@@ -12,14 +12,18 @@ fn cubic(n: usize, seed: f64) -> BSpline {
     let interior = n - 4;
     let mut knots = vec![0.0; 4];
     let mut acc = 0.0;
-    let gaps: Vec<f64> = (0..=interior).map(|i| 1.0 + 0.5 * ((i as f64 + seed) * 1.7).sin()).collect();
+    let gaps: Vec<f64> = (0..=interior)
+        .map(|i| 1.0 + 0.5 * ((i as f64 + seed) * 1.7).sin())
+        .collect();
     let total: f64 = gaps.iter().sum();
     for g in &gaps[..interior] {
         acc += g;
         knots.push(acc / total);
     }
     knots.extend([1.0; 4]);
-    let coefs = (0..n).map(|i| ((i as f64) * 0.9 + seed).sin() * 3.0).collect();
+    let coefs = (0..n)
+        .map(|i| ((i as f64) * 0.9 + seed).sin() * 3.0)
+        .collect();
     BSpline::new(3, knots, 1, coefs).unwrap()
 }
 
@@ -50,7 +54,9 @@ fn curvature(c: &mut Criterion) {
     });
     let k = symbolic::curvature_numerator(&curve).unwrap();
     c.bench_function("inflections_closed_cubic_32", |b| {
-        b.iter(|| bspline::roots::find_roots_periodic(black_box(&k), &RootOptions::default()).unwrap())
+        b.iter(|| {
+            bspline::roots::find_roots_periodic(black_box(&k), &RootOptions::default()).unwrap()
+        })
     });
 }
 
@@ -62,7 +68,12 @@ fn roots(c: &mut Criterion) {
         let lin = BSpline::new(1, vec![0.0, 0.0, 1.0, 1.0], 1, vec![-r, 1.0 - r]).unwrap();
         f = f.mul(&lin).unwrap();
     }
-    assert_eq!(find_roots(&f, 0.0, 1.0, &RootOptions::default()).unwrap().len(), 15);
+    assert_eq!(
+        find_roots(&f, 0.0, 1.0, &RootOptions::default())
+            .unwrap()
+            .len(),
+        15
+    );
     c.bench_function("roots_degree15_bezier_15_roots", |b| {
         b.iter(|| find_roots(black_box(&f), 0.0, 1.0, &RootOptions::default()).unwrap())
     });
@@ -71,8 +82,19 @@ fn roots(c: &mut Criterion) {
 fn tensor_subdivision(c: &mut Criterion) {
     use bspline::tensor::TensorBSpline;
     // A degree (10, 10) Bézier patch: a sum of three outer products of degree-10 functions.
-    let bez = |seed: f64| BSpline::bezier(1, (0..11).map(|i| ((i as f64) * 1.3 + seed).sin()).collect()).unwrap();
-    let f = TensorBSpline::sum_of_outer(&[(bez(0.1), bez(0.7)), (bez(1.9), bez(2.3)), (bez(3.1), bez(4.2))]).unwrap();
+    let bez = |seed: f64| {
+        BSpline::bezier(
+            1,
+            (0..11).map(|i| ((i as f64) * 1.3 + seed).sin()).collect(),
+        )
+        .unwrap()
+    };
+    let f = TensorBSpline::sum_of_outer(&[
+        (bez(0.1), bez(0.7)),
+        (bez(1.9), bez(2.3)),
+        (bez(3.1), bez(4.2)),
+    ])
+    .unwrap();
     assert_eq!((f.deg_t(), f.deg_r()), (10, 10));
     c.bench_function("tensor_deg10x10_quad_subdivision", |b| {
         b.iter(|| {

@@ -606,3 +606,96 @@ fn basis(p: usize, knots: &[f64], u: f64, k: usize) -> (Scratch, usize) {
     ders.resize((k + 1) * (p + 1), 0.0);
     (ders, span)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A clamped scalar spline on [0, 1] of degree `p` with coefficients from `c` (at least p+1).
+    fn spline(p: usize, c: &[f64]) -> BSpline {
+        BSpline::clamped_uniform(p, 1, c.to_vec()).expect("valid spline")
+    }
+
+    fn close(a: f64, b: f64, scale: f64) -> bool {
+        (a - b).abs() <= 1e-11 * scale.max(1.0)
+    }
+
+    prop_compose! {
+        fn arb_spline()(p in 1usize..4, extra in 0usize..4)
+            (c in prop::collection::vec(-2.0..2.0f64, p + 1 + extra), p in Just(p)) -> BSpline {
+            spline(p, &c)
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Outer products, sums and products evaluate to their defining formulas.
+        #[test]
+        fn algebra_matches_formula(f in arb_spline(), g in arb_spline(), h in arb_spline(), k in arb_spline(),
+                                   t in 0.0..=1.0f64, r in 0.0..=1.0f64) {
+            let a = TensorBSpline::outer(&f, &g).unwrap();
+            let b = TensorBSpline::outer(&h, &k).unwrap();
+            let (fv, gv, hv, kv) = (f.eval_scalar(t), g.eval_scalar(r), h.eval_scalar(t), k.eval_scalar(r));
+            prop_assert!(close(a.eval(t, r), fv * gv, 4.0));
+            let s = a.lincomb(2.0, &b, -0.5).unwrap();
+            prop_assert!(close(s.eval(t, r), 2.0 * fv * gv - 0.5 * hv * kv, 16.0));
+            let sum = TensorBSpline::sum_of_outer(&[(f.clone(), g.clone()), (h.clone(), k.clone())]).unwrap();
+            prop_assert!(close(sum.eval(t, r), fv * gv + hv * kv, 16.0));
+            let m = a.mul(&sum).unwrap();
+            prop_assert_eq!((m.deg_t(), m.deg_r()), (a.deg_t() + sum.deg_t(), a.deg_r() + sum.deg_r()));
+            prop_assert!(close(m.eval(t, r), fv * gv * (fv * gv + hv * kv), 64.0));
+            // Convex hull: the value lies within the coefficient range.
+            let (lo, hi) = m.coef_range();
+            let v = m.eval(t, r);
+            prop_assert!(v >= lo - 1e-12 && v <= hi + 1e-12);
+        }
+
+        /// Partial derivatives against finite differences and the derivative tensors.
+        #[test]
+        fn derivatives(f in arb_spline(), g in arb_spline(), h in arb_spline(), k in arb_spline(),
+                       t in 0.05..0.95f64, r in 0.05..0.95f64) {
+            let a = TensorBSpline::sum_of_outer(&[(f.clone(), g.clone()), (h.clone(), k.clone())]).unwrap();
+            let d = a.eval_derivs(t, r, 1, 1);
+            let mut o = [0.0; 2];
+            let (mut fo, mut go, mut ho, mut ko) = ([0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2]);
+            f.eval_derivs(t, 1, &mut fo);
+            g.eval_derivs(r, 1, &mut go);
+            h.eval_derivs(t, 1, &mut ho);
+            k.eval_derivs(r, 1, &mut ko);
+            o[0] = fo[1] * go[0] + ho[1] * ko[0];
+            o[1] = fo[0] * go[1] + ho[0] * ko[1];
+            prop_assert!(close(d[2], o[0], 100.0), "{} {}", d[2], o[0]);
+            prop_assert!(close(d[1], o[1], 100.0));
+            prop_assert!(close(d[3], fo[1] * go[1] + ho[1] * ko[1], 100.0));
+            prop_assert!(close(a.deriv_t().eval(t, r), o[0], 100.0));
+            prop_assert!(close(a.deriv_r().eval(t, r), o[1], 100.0));
+        }
+
+        /// Subdivision, restriction, refinement and elevation do not change the function.
+        #[test]
+        fn subdivision_keeps_the_function(f in arb_spline(), g in arb_spline(), h in arb_spline(), k in arb_spline(),
+                                          u in 0.1..0.9f64, t in 0.0..=1.0f64, r in 0.0..=1.0f64) {
+            let a = TensorBSpline::sum_of_outer(&[(f, g), (h, k)]).unwrap();
+            let v = a.eval(t, r);
+            let (lo, hi) = a.split_t(u).unwrap();
+            let part = if t <= u { &lo } else { &hi };
+            prop_assert!(close(part.eval(t, r), v, 16.0));
+            let (lo, hi) = a.split_r(u).unwrap();
+            let part = if r <= u { &lo } else { &hi };
+            prop_assert!(close(part.eval(t, r), v, 16.0));
+            let sub = a.restrict(t.min(u) * 0.5, 1.0, 0.0, r.max(u)).unwrap();
+            prop_assert!(close(sub.eval(t, r), v, 16.0));
+            prop_assert!(close(a.refine_t(&[u]).unwrap().eval(t, r), v, 16.0));
+            prop_assert!(close(a.refine_r(&[u]).unwrap().eval(t, r), v, 16.0));
+            prop_assert!(close(a.elevate(1, 2).eval(t, r), v, 16.0));
+            prop_assert!(close(a.transpose().eval(r, t), v, 16.0));
+            for p in a.bezier_patches() {
+                if (p.t0..=p.t1).contains(&t) && (p.r0..=p.r1).contains(&r) {
+                    prop_assert!(close(p.to_tensor().eval(t, r), v, 16.0));
+                }
+            }
+        }
+    }
+}

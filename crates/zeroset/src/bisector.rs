@@ -1,0 +1,522 @@
+//! Bisectors of two planar curves and self-bisectors (Elber & Kim): the zero set of `F(t, r)`
+//! mapped to bisector points and cleaned.
+//!
+//! Cleaning: a vertex is kept only when its point `P(t, r)` is a genuine, finite bisector point
+//! (equidistant from both foot points, on both normal lines, to a relative residual of
+//! [`RESIDUAL`]). This drops the parallel-normal component of `F1`/`F2` (Eq. 4) and the points
+//! at infinity; a branch is split where it leaves the valid set. For the self-bisector the
+//! trivial diagonal `t = r` is divided out of the diagonal Bézier cells symbolically, only the
+//! half `t ≤ r` is searched, and mirrored parts are clipped at the diagonal.
+
+use crate::error::{Error, Result};
+use crate::extract::Pieces;
+use crate::patch::Patch;
+use crate::symbolic::{bisector_function, Method};
+use crate::zeroset::{finish, run_cells, ZeroSetOptions};
+use bspline::Rational;
+use serde::{Deserialize, Serialize};
+
+/// Largest relative residual of the three bisector conditions for a reported point.
+pub const RESIDUAL: f64 = 1e-9;
+/// Points farther than this many bounding-box diagonals count as points at infinity.
+const FAR: f64 = 1e3;
+
+/// Options for [`bisector`] and [`self_bisector`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BisectorOptions {
+    /// Which function of §3 to use (default `F3`).
+    pub method: Method,
+    /// Parameter tolerance relative to the domains (default 1e-12).
+    pub tol: f64,
+    /// Chord tolerance relative to the curves' bounding-box diagonal (default 1e-3): the
+    /// bisector polylines stay this close to the bisector in the plane.
+    pub chord_tol: f64,
+    /// Keep only points whose foot points are the nearest points of the curves.
+    pub trimmed: bool,
+    /// Patch limit of the zero-set search.
+    pub max_patches: usize,
+}
+
+impl Default for BisectorOptions {
+    fn default() -> Self {
+        Self {
+            method: Method::F3,
+            tol: 1e-12,
+            chord_tol: 1e-3,
+            trimmed: false,
+            max_patches: 200_000,
+        }
+    }
+}
+
+/// One branch: matched foot-point parameters and the bisector points they give.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Branch {
+    /// `[t, r]` per vertex.
+    pub tr: Vec<[f64; 2]>,
+    /// `P(t, r)` per vertex.
+    pub xy: Vec<[f64; 2]>,
+}
+
+/// A special point of the bisector.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct BisectorPoint {
+    /// Foot-point parameters.
+    pub tr: [f64; 2],
+    /// The bisector point.
+    pub xy: [f64; 2],
+}
+
+/// The bisector of two curves, or the self-bisector of one.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Bisector {
+    /// The branches.
+    pub branches: Vec<Branch>,
+    /// Where branches cross (singular points of the zero set).
+    pub singular: Vec<BisectorPoint>,
+    /// Isolated bisector points.
+    pub isolated: Vec<BisectorPoint>,
+    /// False when a search limit was hit.
+    pub complete: bool,
+}
+
+/// Point, first derivative of a planar rational curve at `u`.
+fn pd(c: &Rational, u: f64) -> ([f64; 2], [f64; 2]) {
+    let mut o = [0.0; 4];
+    c.eval_derivs(u, 1, &mut o);
+    ([o[0], o[1]], [o[2], o[3]])
+}
+
+/// The largest relative residual of the three bisector conditions at `P` for the foot points
+/// `c1` (tangent `d1`) and `c2` (tangent `d2`); `floor` keeps it finite where the foot points
+/// meet (where the curves intersect, the intersection point is on the bisector).
+fn residual(
+    p: [f64; 2],
+    c1: [f64; 2],
+    d1: [f64; 2],
+    c2: [f64; 2],
+    d2: [f64; 2],
+    floor: f64,
+) -> f64 {
+    let v1 = [p[0] - c1[0], p[1] - c1[1]];
+    let v2 = [p[0] - c2[0], p[1] - c2[1]];
+    let (r1, r2) = (v1[0].hypot(v1[1]), v2[0].hypot(v2[1]));
+    let rho = r1.max(r2).max(floor);
+    let o1 = (v1[0] * d1[0] + v1[1] * d1[1]).abs() / d1[0].hypot(d1[1]).max(f64::MIN_POSITIVE);
+    let o2 = (v2[0] * d2[0] + v2[1] * d2[1]).abs() / d2[0].hypot(d2[1]).max(f64::MIN_POSITIVE);
+    (r1 - r2).abs().max(o1).max(o2) / rho
+}
+
+/// The bisector point `P(t, r)` for matched foot points, with its relative residual.
+///
+/// Three candidates: the intersection of the normal lines (Eq. 16, Cramer's rule) and the
+/// equidistant point along each normal line (accurate where the normals nearly coincide); the
+/// one with the smallest residual wins.
+fn point_and_residual(
+    c1: &Rational,
+    c2: &Rational,
+    t: f64,
+    r: f64,
+    floor: f64,
+) -> Option<([f64; 2], f64)> {
+    let (p1, d1) = pd(c1, t);
+    let (p2, d2) = pd(c2, r);
+    let d = [p1[0] - p2[0], p1[1] - p2[1]];
+    let dd = d[0] * d[0] + d[1] * d[1];
+    let mut cands: [Option<[f64; 2]>; 3] = [None; 3];
+    let den = d1[0] * d2[1] - d1[1] * d2[0];
+    if den != 0.0 {
+        let a1 = p1[0] * d1[0] + p1[1] * d1[1];
+        let a2 = p2[0] * d2[0] + p2[1] * d2[1];
+        cands[0] = Some([
+            (a1 * d2[1] - a2 * d1[1]) / den,
+            (d1[0] * a2 - d2[0] * a1) / den,
+        ]);
+    }
+    if dd == 0.0 {
+        cands[1] = Some(p1);
+    } else {
+        // P = C1 + α N1 with |α N1|² = |P − C2|²  ⇒  α = −|d|² / (2 ⟨N1, d⟩).
+        let n1 = [-d1[1], d1[0]];
+        let s1 = n1[0] * d[0] + n1[1] * d[1];
+        if s1 != 0.0 {
+            let al = -dd / (2.0 * s1);
+            cands[1] = Some([p1[0] + al * n1[0], p1[1] + al * n1[1]]);
+        }
+        let n2 = [-d2[1], d2[0]];
+        let s2 = n2[0] * d[0] + n2[1] * d[1];
+        if s2 != 0.0 {
+            let be = dd / (2.0 * s2);
+            cands[2] = Some([p2[0] + be * n2[0], p2[1] + be * n2[1]]);
+        }
+    }
+    cands
+        .iter()
+        .flatten()
+        .filter(|p| p[0].is_finite() && p[1].is_finite())
+        .map(|&p| (p, residual(p, p1, d1, p2, d2, floor)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+}
+
+/// The bisector point of the foot points `c1(t)`, `c2(r)` if they are matched (residual of the
+/// bisector conditions ≤ [`RESIDUAL`]), else `None`.
+pub fn bisector_point(c1: &Rational, c2: &Rational, t: f64, r: f64) -> Option<[f64; 2]> {
+    let floor = 1e-9 * bbox_diag(&[c1, c2]);
+    point_and_residual(c1, c2, t, r, floor).and_then(|(p, res)| (res <= RESIDUAL).then_some(p))
+}
+
+/// Bounding box of the control points: (centre, diagonal).
+fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for c in curves {
+        for p in c.control_points() {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+    }
+    let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    (
+        [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],
+        if diag > 0.0 { diag } else { 1.0 },
+    )
+}
+
+fn bbox_diag(curves: &[&Rational]) -> f64 {
+    bbox(curves).1
+}
+
+fn check(opts: &BisectorOptions) -> Result<ZeroSetOptions> {
+    let z = ZeroSetOptions {
+        tol: opts.tol,
+        chord_tol: opts.chord_tol,
+        max_patches: opts.max_patches,
+    };
+    z.check()?;
+    Ok(z)
+}
+
+/// Context shared by the two entry points.
+struct Ctx<'a> {
+    c1: &'a Rational,
+    c2: &'a Rational,
+    center: [f64; 2],
+    diag: f64,
+    selfb: bool,
+    trimmed: bool,
+}
+
+impl Ctx<'_> {
+    /// Whether the (self-bisector) curve closes: start and end points and tangents agree.
+    fn is_closed(&self) -> bool {
+        let (a, b) = self.c1.domain();
+        let ((p, d), (q, e)) = (pd(self.c1, a), pd(self.c1, b));
+        let tol = 1e-12 * self.diag;
+        let dn = d[0].hypot(d[1]).max(f64::MIN_POSITIVE);
+        (p[0] - q[0]).hypot(p[1] - q[1]) <= tol && (d[0] - e[0]).hypot(d[1] - e[1]) <= 1e-9 * dn
+    }
+
+    fn map(&self, t: f64, r: f64) -> Option<[f64; 2]> {
+        let (p, res) = point_and_residual(self.c1, self.c2, t, r, 1e-9 * self.diag)?;
+        let far = (p[0] - self.center[0]).hypot(p[1] - self.center[1]) > FAR * self.diag;
+        (res <= RESIDUAL && !far).then_some(p)
+    }
+
+    /// Whether a vertex belongs in the output (valid point, right half, trimmed if asked).
+    fn accept(&self, t: f64, r: f64) -> Option<[f64; 2]> {
+        if self.selfb {
+            let ext = self.c1.domain().1 - self.c1.domain().0;
+            if t > r || r - t <= 1e-9 * ext {
+                return None;
+            }
+        }
+        let p = self.map(t, r)?;
+        if self.trimmed {
+            let (q1, _) = pd(self.c1, t);
+            let rho = (p[0] - q1[0]).hypot(p[1] - q1[1]);
+            let slack = 1e-9 * self.diag;
+            if min_dist(self.c1, p) < rho - slack || min_dist(self.c2, p) < rho - slack {
+                return None;
+            }
+        }
+        Some(p)
+    }
+
+    fn build(&self, pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Bisector {
+        let z = finish(pieces, dom, cells);
+        let mut branches = Vec::new();
+        for pl in &z.branches {
+            let pts = if self.selfb {
+                clip_diagonal(&pl.pts, &|a, b| diagonal_end(cells, a, b, dom))
+            } else {
+                pl.pts.iter().map(|&q| Some(q)).collect()
+            };
+            let mut cur = Branch {
+                tr: Vec::new(),
+                xy: Vec::new(),
+            };
+            for q in pts {
+                match q.and_then(|q| self.accept(q[0], q[1]).map(|p| (q, p))) {
+                    Some((q, p)) => {
+                        cur.tr.push(q);
+                        cur.xy.push(p);
+                    }
+                    None => flush(&mut cur, &mut branches),
+                }
+            }
+            flush(&mut cur, &mut branches);
+        }
+        let closed = self.selfb && self.is_closed();
+        if closed {
+            branches = join_seam(branches, dom);
+        }
+        // Leaf clusters at the diagonal corners of the Bézier cells (where the undivided F has
+        // its trivial double zero) are artefacts of the diagonal, not bisector points.
+        let ext = dom[1] - dom[0];
+        let special = |v: &[[f64; 2]]| -> Vec<BisectorPoint> {
+            v.iter()
+                .filter(|q| !self.selfb || q[1] - q[0] > 1e-3 * ext)
+                // For a closed curve the corner (start, end) is the diagonal across the seam.
+                .filter(|q| !closed || q[1] - q[0] < (1.0 - 1e-3) * ext)
+                .filter_map(|q| {
+                    self.accept(q[0], q[1])
+                        .map(|xy| BisectorPoint { tr: *q, xy })
+                })
+                .collect()
+        };
+        Bisector {
+            branches,
+            singular: special(&z.singular),
+            isolated: special(&z.isolated),
+            complete: z.complete,
+        }
+    }
+}
+
+fn flush(cur: &mut Branch, out: &mut Vec<Branch>) {
+    if cur.tr.len() >= 2 {
+        out.push(std::mem::replace(
+            cur,
+            Branch {
+                tr: Vec::new(),
+                xy: Vec::new(),
+            },
+        ));
+    } else {
+        cur.tr.clear();
+        cur.xy.clear();
+    }
+}
+
+/// Joins branches across the seam of a closed curve: `(start, ρ)` on the border `t = start`
+/// is the same foot-point pair as `(ρ, end)` on the border `r = end` (parameters modulo the
+/// period, mirrored into `t ≤ r`).
+fn join_seam(mut v: Vec<Branch>, dom: [f64; 4]) -> Vec<Branch> {
+    let tol = 1e-9 * (dom[1] - dom[0]);
+    let on_top = |q: [f64; 2]| q[1] == dom[3];
+    let on_left = |q: [f64; 2]| q[0] == dom[0];
+    let ends = |b: &Branch| [b.tr[0], b.tr[b.tr.len() - 1]];
+    // Bounded: each join removes one branch.
+    for _ in 0..v.len() {
+        let mut found = None;
+        'search: for i in 0..v.len() {
+            for (ei, qi) in ends(&v[i]).into_iter().enumerate() {
+                if !on_top(qi) {
+                    continue;
+                }
+                for j in (0..v.len()).filter(|&j| j != i) {
+                    for (ej, qj) in ends(&v[j]).into_iter().enumerate() {
+                        if on_left(qj) && (qj[1] - qi[0]).abs() <= tol {
+                            found = Some((i, ei, j, ej));
+                            break 'search;
+                        }
+                    }
+                }
+            }
+        }
+        let Some((i, ei, j, ej)) = found else { break };
+        // Orient: the matching end of i last, the matching end of j first.
+        if ei == 0 {
+            v[i].tr.reverse();
+            v[i].xy.reverse();
+        }
+        let mut tail = v.remove(j);
+        if ej == 1 {
+            tail.tr.reverse();
+            tail.xy.reverse();
+        }
+        let i = if j < i { i - 1 } else { i };
+        v[i].tr.extend(tail.tr.into_iter().skip(1));
+        v[i].xy.extend(tail.xy.into_iter().skip(1));
+    }
+    v
+}
+
+/// The part of a polyline with `t ≤ r`; `None` marks a cut where it crosses the diagonal, and
+/// `end` supplies a vertex on the zero set just beside the crossing (so the branch reaches the
+/// diagonal whatever the vertex spacing).
+fn clip_diagonal(
+    pts: &[[f64; 2]],
+    end: &dyn Fn([f64; 2], [f64; 2]) -> Option<[f64; 2]>,
+) -> Vec<Option<[f64; 2]>> {
+    let mut out = Vec::with_capacity(pts.len() + 2);
+    for (k, q) in pts.iter().enumerate() {
+        let inside = q[0] <= q[1];
+        if k > 0 {
+            let p = pts[k - 1];
+            let was = p[0] <= p[1];
+            if was && !inside {
+                out.push(end(p, *q));
+                out.push(None);
+            } else if !was && inside {
+                out.push(end(*q, p));
+            }
+        }
+        if inside {
+            out.push(Some(*q));
+        }
+    }
+    out
+}
+
+/// Where the segment from `a` (`t ≤ r`) to `b` (`t > r`) meets the diagonal, the zero set of
+/// the divided function crosses it at right angles (it is symmetric). Find that crossing
+/// `(s, s)` by Newton along the diagonal, then the zero-set point at a small offset from it
+/// on the `t < r` side (Newton along the diagonal direction).
+fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Option<[f64; 2]> {
+    let (da, db) = (a[1] - a[0], b[1] - b[0]);
+    let w = da / (da - db);
+    let c = a[0] + w * (b[0] - a[0]);
+    let cell = cells
+        .iter()
+        .find(|p| p.t0 <= c && c <= p.t1 && p.r0 <= c && c <= p.r1)?;
+    let (lo, hi) = (cell.t0.max(cell.r0), cell.t1.min(cell.r1));
+    // Newton along a line q(μ) = base + μ (1, 1), kept inside the cell.
+    let solve = |base: [f64; 2], mut mu: f64| -> Option<f64> {
+        for _ in 0..30 {
+            let g = cell.eval_grad(base[0] + mu, base[1] + mu);
+            let slope = g[1] + g[2];
+            if slope == 0.0 || !slope.is_finite() {
+                return None;
+            }
+            let step = g[0] / slope;
+            mu -= step;
+            if step.abs() <= 1e-15 * (hi - lo) {
+                return Some(mu);
+            }
+        }
+        None
+    };
+    let s = solve([0.0, 0.0], c)?;
+    let delta = 1e-6 * (dom[1] - dom[0]);
+    let base = [s - delta, s + delta];
+    let mu = solve(base, 0.0)?;
+    let e = [base[0] + mu, base[1] + mu];
+    let inside = e[0] >= cell.t0 && e[0] <= cell.t1 && e[1] >= cell.r0 && e[1] <= cell.r1;
+    (inside && s > lo && s < hi && mu.abs() < 1e3 * delta).then_some(e)
+}
+
+/// The bisector of `c1(t)` and `c2(r)`.
+pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
+    let z = check(opts)?;
+    for (which, c) in [(1, c1), (2, c2)] {
+        if c.dim() != 2 {
+            return Err(Error::NotPlanar {
+                which,
+                dim: c.dim(),
+            });
+        }
+    }
+    let f = bisector_function(c1, c2, opts.method)?;
+    let (center, diag) = bbox(&[c1, c2]);
+    let ctx = Ctx {
+        c1,
+        c2,
+        center,
+        diag,
+        selfb: false,
+        trimmed: opts.trimmed,
+    };
+    let cells: Vec<Patch> = f.bezier_patches().iter().map(Patch::from_bezier).collect();
+    let (dt, dr) = (f.domain_t(), f.domain_r());
+    let dom = [dt.0, dt.1, dr.0, dr.1];
+    let map = |t: f64, r: f64| ctx.map(t, r);
+    let keep = |_: &Patch| true;
+    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep);
+    Ok(ctx.build(&pieces, dom, &cells))
+}
+
+/// The self-bisector of `c`: pairs `t < r` of distinct foot points on the same curve.
+pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
+    let z = check(opts)?;
+    if c.dim() != 2 {
+        return Err(Error::NotPlanar {
+            which: 1,
+            dim: c.dim(),
+        });
+    }
+    let f = bisector_function(c, c, opts.method)?;
+    let (center, diag) = bbox(&[c]);
+    let ctx = Ctx {
+        c1: c,
+        c2: c,
+        center,
+        diag,
+        selfb: true,
+        trimmed: opts.trimmed,
+    };
+    let mut cells: Vec<Patch> = Vec::new();
+    for b in f.bezier_patches() {
+        let mut p = Patch::from_bezier(&b);
+        if p.t0 >= p.r1 {
+            continue; // entirely below the diagonal: the mirror of a cell above it
+        }
+        // Diagonal cells: divide (t − r) out as often as it divides (twice for F3).
+        for _ in 0..6 {
+            match p.divide_diagonal(1e-9) {
+                Some(q) => p = q,
+                None => break,
+            }
+        }
+        cells.push(p);
+    }
+    let (dt, dr) = (f.domain_t(), f.domain_r());
+    let dom = [dt.0, dt.1, dr.0, dr.1];
+    let map = |t: f64, r: f64| ctx.map(t, r);
+    let keep = |p: &Patch| p.t0 < p.r1;
+    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep);
+    Ok(ctx.build(&pieces, dom, &cells))
+}
+
+/// Distance from `p` to the curve: dense samples, then Newton on `⟨C − p, C'⟩ = 0` from every
+/// sampled local minimum (not certified: a feature narrower than the sampling can be missed).
+fn min_dist(c: &Rational, p: [f64; 2]) -> f64 {
+    let (a, b) = c.domain();
+    let n = 64 * c.homogeneous().breakpoints().len().max(2);
+    let dist = |u: f64| {
+        let q = c.point(u);
+        (q[0] - p[0]).hypot(q[1] - p[1])
+    };
+    let us: Vec<f64> = (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
+    let ds: Vec<f64> = us.iter().map(|&u| dist(u)).collect();
+    let mut best = ds.iter().fold(f64::INFINITY, |m, &d| m.min(d));
+    for i in 1..n {
+        if ds[i] <= ds[i - 1] && ds[i] <= ds[i + 1] {
+            let mut u = us[i];
+            for _ in 0..20 {
+                let mut o = [0.0; 6];
+                c.eval_derivs(u, 2, &mut o);
+                let v = [o[0] - p[0], o[1] - p[1]];
+                let g = v[0] * o[2] + v[1] * o[3];
+                let h = o[2] * o[2] + o[3] * o[3] + v[0] * o[4] + v[1] * o[5];
+                if h <= 0.0 {
+                    break;
+                }
+                u = (u - g / h).clamp(us[i - 1], us[i + 1]);
+            }
+            best = best.min(dist(u));
+        }
+    }
+    best
+}

@@ -1,0 +1,358 @@
+//! Subdivision of `F(t, r)` into patches whose zero set is proven simple (§4 of Elber–Kim).
+//!
+//! A patch is dropped when all its coefficients share a trusted sign (no zero, convex hull). It
+//! is *simple* when the coefficients of one partial derivative share a trusted sign — then the
+//! zero set is a graph over the other variable, so it has no loop and every component is an
+//! arc from border to border — and the edge coefficients show exactly two sign changes in all
+//! (each edge at most one, so each change is exactly one simple edge root). Such a patch holds
+//! exactly one arc, traced by one-dimensional Newton in the graph variable. A monotone patch
+//! with no edge sign change holds no zero. Everything else is split; what is still unresolved at
+//! the size tolerance (crossings, isolated points, loops below the tolerance) becomes a leaf.
+
+use crate::patch::{common_sign, variations, vsign, Patch, EPS};
+use crate::solve1::{bracketed, bracketed_or_end};
+
+/// Where an arc ends: on a patch edge.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct End {
+    /// The end point `(t, r)`.
+    pub(crate) p: [f64; 2],
+    /// Edge of the patch it lies on (0 bottom, 1 right, 2 top, 3 left).
+    pub(crate) edge: usize,
+    /// The fixed coordinate of that edge's line.
+    pub(crate) line: f64,
+}
+
+/// An arc inside one simple patch, from `a` to `b`, with its vertices (ends included).
+#[derive(Debug, Clone)]
+pub(crate) struct Arc {
+    pub(crate) pts: Vec<[f64; 2]>,
+    pub(crate) ends: [End; 2],
+}
+
+/// A patch left unresolved at the size tolerance.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Leaf {
+    pub(crate) bx: [f64; 4],
+    /// Centre and `|F|` there.
+    pub(crate) center: [f64; 2],
+    pub(crate) fabs: f64,
+    /// Index of the Bézier cell it lies in.
+    pub(crate) cell: usize,
+}
+
+/// What the tracer needs besides the function.
+pub(crate) struct Tracer<'a> {
+    /// Leaf size in `t` and `r` (absolute).
+    pub(crate) min_size: [f64; 2],
+    /// Domain extents, to compare patch sizes in both directions.
+    pub(crate) extent: [f64; 2],
+    pub(crate) max_depth: usize,
+    pub(crate) max_patches: usize,
+    /// Maps `(t, r)` to the space where chords are measured (`None`: far away, do not refine).
+    pub(crate) map: &'a dyn Fn(f64, f64) -> Option<[f64; 2]>,
+    pub(crate) chord_tol: f64,
+    /// Region filter: patches for which this is false are dropped unseen.
+    pub(crate) keep: &'a dyn Fn(&Patch) -> bool,
+}
+
+/// Result of the subdivision of all cells.
+#[derive(Debug, Default)]
+pub(crate) struct Pieces {
+    pub(crate) arcs: Vec<Arc>,
+    pub(crate) leaves: Vec<Leaf>,
+    /// Patches examined.
+    pub(crate) patches: usize,
+    /// True when a limit (patch count) cut the search short.
+    pub(crate) truncated: bool,
+}
+
+/// Split ratios slightly off the middle and different in `t` and `r`, so zeros at "round"
+/// parameters (and on the diagonal of a square domain) rarely land on corners.
+const SPLIT_T: f64 = 0.498_763_4;
+const SPLIT_R: f64 = 0.501_349_7;
+/// Longest segment in `(t, r)`, relative to the domain.
+const MAX_SEG: f64 = 1.0 / 16.0;
+/// Vertex refinement depth per arc for the chord test.
+const MAX_CHORD_DEPTH: usize = 20;
+/// Bisection depth toward the edge of the valid set (one new vertex pair per level).
+const MAX_EDGE_DEPTH: usize = 48;
+
+impl Tracer<'_> {
+    /// Runs the subdivision on every cell (`cells` are the function's Bézier patches).
+    pub(crate) fn run(&self, cells: &[Patch], out: &mut Pieces) {
+        for (ci, cell) in cells.iter().enumerate() {
+            if !(self.keep)(cell) {
+                continue;
+            }
+            let scale = cell.max_abs();
+            if scale == 0.0 {
+                // F vanishes on the whole cell: nothing a zero-set extractor can report.
+                out.truncated = true;
+                continue;
+            }
+            let mut stack = vec![(cell.clone(), 0usize)];
+            while let Some((p, depth)) = stack.pop() {
+                out.patches += 1;
+                if out.patches > self.max_patches {
+                    out.truncated = true;
+                    return;
+                }
+                let err = (p.pt + p.pr + 2) as f64 * (depth + 4) as f64 * EPS * scale;
+                match self.classify(&p, err) {
+                    Class::Empty => {}
+                    Class::Simple(graph_r) => {
+                        if let Some(arc) = self.trace(cell, &p, graph_r, err) {
+                            out.arcs.push(arc);
+                        }
+                    }
+                    Class::Split => {
+                        let wt = (p.t1 - p.t0) / self.extent[0];
+                        let wr = (p.r1 - p.r0) / self.extent[1];
+                        let small =
+                            p.t1 - p.t0 <= self.min_size[0] && p.r1 - p.r0 <= self.min_size[1];
+                        // F within rounding of zero on the whole patch: no sign can be trusted
+                        // here, so splitting further cannot resolve anything.
+                        let flat = p.max_abs() <= 4.0 * err;
+                        if small || flat || depth >= self.max_depth {
+                            let c = [0.5 * (p.t0 + p.t1), 0.5 * (p.r0 + p.r1)];
+                            out.leaves.push(Leaf {
+                                bx: [p.t0, p.t1, p.r0, p.r1],
+                                center: c,
+                                fabs: cell.eval(c[0], c[1]).abs(),
+                                cell: ci,
+                            });
+                            continue;
+                        }
+                        let (a, b) = if wt >= wr {
+                            p.split_t(SPLIT_T)
+                        } else {
+                            p.split_r(SPLIT_R)
+                        };
+                        for q in [b, a] {
+                            if (self.keep)(&q) {
+                                stack.push((q, depth + 1));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    fn classify(&self, p: &Patch, err: f64) -> Class {
+        if common_sign(p.c.iter().copied(), err) != 0 {
+            return Class::Empty;
+        }
+        let mono_t = common_sign(p.dt_coefs(), 2.0 * err) != 0;
+        let mono_r = common_sign(p.dr_coefs(), 2.0 * err) != 0;
+        if !(mono_t || mono_r) {
+            return Class::Split;
+        }
+        let mut total = 0;
+        for e in 0..4 {
+            match variations(p.edge(e).into_iter(), err) {
+                v @ 0..=1 => total += v,
+                _ => return Class::Split,
+            }
+        }
+        match total {
+            0 => Class::Empty,
+            2 => {
+                // Prefer the graph variable along which the arc is long (better conditioned).
+                let graph_r = if mono_t && mono_r {
+                    (p.r1 - p.r0) / self.extent[1] >= (p.t1 - p.t0) / self.extent[0]
+                } else {
+                    mono_t
+                };
+                Class::Simple(graph_r)
+            }
+            _ => Class::Split,
+        }
+    }
+
+    /// The arc of a simple patch. `graph_r`: the arc is `t = φ(r)` (else `r = ψ(t)`).
+    fn trace(&self, cell: &Patch, p: &Patch, graph_r: bool, err: f64) -> Option<Arc> {
+        // Rounding level of the cell's values.
+        let noise = 2.0 * (cell.pt + cell.pr + 2) as f64 * EPS * cell.max_abs();
+        let mut ends: Vec<End> = Vec::with_capacity(2);
+        for e in 0..4 {
+            let coefs = p.edge(e);
+            if variations(coefs.iter().copied(), err) != 1 {
+                continue;
+            }
+            let s0 = vsign(coefs[0], err);
+            let end = match e {
+                0 | 2 => {
+                    let r = if e == 0 { p.r0 } else { p.r1 };
+                    let x0 = secant(p.t0, p.t1, coefs[0], coefs[coefs.len() - 1]);
+                    let t = bracketed(
+                        |t| {
+                            let g = cell.eval_grad(t, r);
+                            (g[0], g[1])
+                        },
+                        p.t0,
+                        p.t1,
+                        s0,
+                        x0,
+                        noise,
+                    );
+                    End {
+                        p: [t, r],
+                        edge: e,
+                        line: r,
+                    }
+                }
+                _ => {
+                    let t = if e == 3 { p.t0 } else { p.t1 };
+                    let x0 = secant(p.r0, p.r1, coefs[0], coefs[coefs.len() - 1]);
+                    let r = bracketed(
+                        |r| {
+                            let g = cell.eval_grad(t, r);
+                            (g[0], g[2])
+                        },
+                        p.r0,
+                        p.r1,
+                        s0,
+                        x0,
+                        noise,
+                    );
+                    End {
+                        p: [t, r],
+                        edge: e,
+                        line: t,
+                    }
+                }
+            };
+            ends.push(end);
+        }
+        if ends.len() != 2 {
+            return None;
+        }
+        let (a, b) = (ends[0], ends[1]);
+        // The arc as a function of the graph variable s; the other coordinate is solved for.
+        let k = if graph_r { 1 } else { 0 };
+        // Start each solve on the chord between the ends (the arc is close to it).
+        let (sa, sb) = (a.p[k], b.p[k]);
+        let (oa, ob) = (a.p[1 - k], b.p[1 - k]);
+        let point = |s: f64| -> [f64; 2] {
+            let w = if sb != sa { (s - sa) / (sb - sa) } else { 0.5 };
+            let x0 = oa + w * (ob - oa);
+            if graph_r {
+                let t = bracketed_or_end(
+                    |t| {
+                        let g = cell.eval_grad(t, s);
+                        (g[0], g[1])
+                    },
+                    p.t0,
+                    p.t1,
+                    x0,
+                    noise,
+                );
+                [t, s]
+            } else {
+                let r = bracketed_or_end(
+                    |r| {
+                        let g = cell.eval_grad(s, r);
+                        (g[0], g[2])
+                    },
+                    p.r0,
+                    p.r1,
+                    x0,
+                    noise,
+                );
+                [s, r]
+            }
+        };
+        let mut pts = vec![a.p];
+        let ma = (self.map)(a.p[0], a.p[1]);
+        let mb = (self.map)(b.p[0], b.p[1]);
+        self.refine(&point, (a.p[k], a.p, ma), (b.p[k], b.p, mb), 0, &mut pts);
+        pts.push(b.p);
+        Some(Arc { pts, ends: [a, b] })
+    }
+
+    /// Adds the interior vertices between two arc points until every chord is within tolerance
+    /// in the mapped space (checked at the middle and at the quarter points of the parameter).
+    #[allow(clippy::type_complexity)]
+    fn refine(
+        &self,
+        point: &dyn Fn(f64) -> [f64; 2],
+        a: (f64, [f64; 2], Option<[f64; 2]>),
+        b: (f64, [f64; 2], Option<[f64; 2]>),
+        depth: usize,
+        out: &mut Vec<[f64; 2]>,
+    ) {
+        let sm = 0.5 * (a.0 + b.0);
+        let pm = point(sm);
+        let mm = (self.map)(pm[0], pm[1]);
+        // A sampled chord test can miss an excursion between its samples: also keep the
+        // segments short in (t, r), where the zero set itself is smooth and slow.
+        let long = (b.1[0] - a.1[0]).abs() > MAX_SEG * self.extent[0]
+            || (b.1[1] - a.1[1]).abs() > MAX_SEG * self.extent[1];
+        // Where the mapped curve runs off to infinity (a pole of P) or leaves the valid set,
+        // bisect toward the boundary so the branch gets as close as the mapping allows.
+        let toward_edge =
+            (a.2.is_some() != b.2.is_some()) || (a.2.is_some() && b.2.is_some() && mm.is_none());
+        let tiny = (b.1[0] - a.1[0]).abs() <= 1e-7 * self.extent[0]
+            && (b.1[1] - a.1[1]).abs() <= 1e-7 * self.extent[1];
+        let need = if toward_edge {
+            depth < MAX_EDGE_DEPTH && !tiny
+        } else {
+            depth < MAX_CHORD_DEPTH
+                && (long
+                    || match (a.2, b.2, mm) {
+                        (Some(x), Some(y), Some(m)) => {
+                            let q1 = point(0.75 * a.0 + 0.25 * b.0);
+                            let q3 = point(0.25 * a.0 + 0.75 * b.0);
+                            let d = |q: [f64; 2], w: f64| match (self.map)(q[0], q[1]) {
+                                Some(z) => dist_to_chord(z, x, y, w),
+                                None => 0.0,
+                            };
+                            dist_to_chord(m, x, y, 0.5) > self.chord_tol
+                                || d(q1, 0.25) > self.chord_tol
+                                || d(q3, 0.75) > self.chord_tol
+                        }
+                        _ => false,
+                    })
+        };
+        if need {
+            self.refine(point, a, (sm, pm, mm), depth + 1, out);
+            out.push(pm);
+            self.refine(point, (sm, pm, mm), b, depth + 1, out);
+        } else if depth == 0 {
+            // Always keep one interior vertex: a patch-sized chord can hide a bulge in tr.
+            out.push(pm);
+        }
+    }
+}
+
+/// Where the line through `(a, fa)`, `(b, fb)` crosses zero (a start for edge roots).
+fn secant(a: f64, b: f64, fa: f64, fb: f64) -> f64 {
+    if fa == fb {
+        0.5 * (a + b)
+    } else {
+        a + (b - a) * fa / (fa - fb)
+    }
+}
+
+/// Distance of `z` from the chord `x`–`y` point at fraction `w`, or from the chord line when
+/// the mapping is far from uniform (the parameter need not be proportional to arc length).
+fn dist_to_chord(z: [f64; 2], x: [f64; 2], y: [f64; 2], w: f64) -> f64 {
+    let (dx, dy) = (y[0] - x[0], y[1] - x[1]);
+    let len2 = dx * dx + dy * dy;
+    let _ = w;
+    if len2 == 0.0 {
+        return (z[0] - x[0]).hypot(z[1] - x[1]);
+    }
+    // Distance to the segment.
+    let s = (((z[0] - x[0]) * dx + (z[1] - x[1]) * dy) / len2).clamp(0.0, 1.0);
+    (z[0] - x[0] - s * dx).hypot(z[1] - x[1] - s * dy)
+}
+
+enum Class {
+    Empty,
+    /// One arc; `true` when it is a graph over `r`.
+    Simple(bool),
+    Split,
+}

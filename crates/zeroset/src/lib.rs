@@ -1,0 +1,28 @@
+//! Zero sets of bivariate B-spline functions, square 2×2 systems, and the bisectors of planar
+//! rational curves (Elber & Kim, *Bisector curves of planar rational curves*, CAD 1998).
+//!
+//! - [`zero_set`]: all curves, crossings and isolated points of `F(t, r) = 0` by subdivision
+//!   with convex-hull purging and a proof of simplicity per patch (§4 of the paper).
+//! - [`solve_system`]: the isolated common zeros of two bivariate functions.
+//! - [`bisector`], [`self_bisector`]: the bisector as branches of matched foot points `(t, r)`
+//!   and bisector points `P(t, r)` (Eq. 16), from the functions `F1`, `F2`, `F3` of §3
+//!   ([`bisector_function`]).
+
+mod assemble;
+mod bisector;
+mod error;
+mod extract;
+mod patch;
+mod solve1;
+mod symbolic;
+mod system;
+mod zeroset;
+
+pub use bisector::{
+    bisector, bisector_point, self_bisector, Bisector, BisectorOptions, BisectorPoint, Branch,
+    RESIDUAL,
+};
+pub use error::{Error, Result};
+pub use symbolic::{bisector_function, Method};
+pub use system::{solve_system, Solution, SystemOptions};
+pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions};

@@ -1,0 +1,221 @@
+//! Isolated common zeros of two bivariate B-spline functions `F = G = 0` in their domain box.
+//!
+//! Subdivision as for zero sets: a box is dropped when either function has coefficients of one
+//! trusted sign. A box holds at most one solution when the interval Jacobian built from the
+//! coefficient ranges of the four partial derivatives has a determinant interval that excludes
+//! zero (every matrix in it is regular, so the map is injective on the convex box). Newton from
+//! the box centre then either converges inside the box (a solution, `certified`) or the box is
+//! split further. Boxes unresolved at the tolerance give uncertified candidates.
+
+use crate::error::Result;
+use crate::patch::{common_sign, Patch, EPS};
+use bspline::tensor::TensorBSpline;
+use serde::{Deserialize, Serialize};
+
+/// Options for [`solve_system`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SystemOptions {
+    /// Parameter tolerance relative to the domain.
+    pub tol: f64,
+    /// Limit on the boxes examined.
+    pub max_boxes: usize,
+}
+
+impl Default for SystemOptions {
+    fn default() -> Self {
+        Self {
+            tol: 1e-12,
+            max_boxes: 1_000_000,
+        }
+    }
+}
+
+/// One solution of the system.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Solution {
+    /// Parameter `t`.
+    pub t: f64,
+    /// Parameter `r`.
+    pub r: f64,
+    /// True when uniqueness in a box (interval Jacobian) and Newton convergence inside it
+    /// were both established.
+    pub certified: bool,
+}
+
+/// All isolated solutions of `f = g = 0` on the common domain, sorted by `(t, r)`.
+pub fn solve_system(
+    f: &TensorBSpline,
+    g: &TensorBSpline,
+    opts: &SystemOptions,
+) -> Result<Vec<Solution>> {
+    // Bring both onto one grid of Bézier cells: insert each other's breakpoints.
+    let f2 = f.refine_t(&missing(g.knots_t(), f.knots_t(), f.domain_t()))?;
+    let f2 = f2.refine_r(&missing(g.knots_r(), f.knots_r(), f.domain_r()))?;
+    let g2 = g.refine_t(&missing(f.knots_t(), g.knots_t(), g.domain_t()))?;
+    let g2 = g2.refine_r(&missing(f.knots_r(), g.knots_r(), g.domain_r()))?;
+    let fc: Vec<Patch> = f2.bezier_patches().iter().map(Patch::from_bezier).collect();
+    let gc: Vec<Patch> = g2.bezier_patches().iter().map(Patch::from_bezier).collect();
+    let (dt, dr) = (f.domain_t(), f.domain_r());
+    let ext = [dt.1 - dt.0, dr.1 - dr.0];
+    let min = [opts.tol * ext[0], opts.tol * ext[1]];
+    let max_depth = 2
+        * ((1.0 / opts.tol.max(1e-300))
+            .log2()
+            .ceil()
+            .clamp(1.0, 1100.0) as usize
+            + 4);
+    let mut sols: Vec<Solution> = Vec::new();
+    let mut boxes = 0usize;
+    for (cf, cg) in fc.iter().zip(&gc) {
+        let (sf, sg) = (cf.max_abs(), cg.max_abs());
+        let mut stack = vec![(cf.clone(), cg.clone(), 0usize)];
+        while let Some((pf, pg, depth)) = stack.pop() {
+            boxes += 1;
+            if boxes > opts.max_boxes {
+                break;
+            }
+            let ef = (pf.pt + pf.pr + 2) as f64 * (depth + 4) as f64 * EPS * sf;
+            let eg = (pg.pt + pg.pr + 2) as f64 * (depth + 4) as f64 * EPS * sg;
+            if common_sign(pf.c.iter().copied(), ef) != 0
+                || common_sign(pg.c.iter().copied(), eg) != 0
+            {
+                continue;
+            }
+            let bx = [pf.t0, pf.t1, pf.r0, pf.r1];
+            if unique(&pf, &pg) {
+                if let Some((t, r)) = newton(cf, cg, bx) {
+                    sols.push(Solution {
+                        t,
+                        r,
+                        certified: true,
+                    });
+                    continue;
+                }
+            }
+            let small = bx[1] - bx[0] <= min[0] && bx[3] - bx[2] <= min[1];
+            if small || depth >= max_depth {
+                let (t, r) = newton(
+                    cf,
+                    cg,
+                    [
+                        bx[0] - min[0],
+                        bx[1] + min[0],
+                        bx[2] - min[1],
+                        bx[3] + min[1],
+                    ],
+                )
+                .unwrap_or((0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3])));
+                sols.push(Solution {
+                    t,
+                    r,
+                    certified: false,
+                });
+                continue;
+            }
+            let split_t = (bx[1] - bx[0]) / ext[0] >= (bx[3] - bx[2]) / ext[1];
+            let s = 0.498_763_4;
+            let ((fa, fb), (ga, gb)) = if split_t {
+                (pf.split_t(s), pg.split_t(s))
+            } else {
+                (pf.split_r(s), pg.split_r(s))
+            };
+            stack.push((fb, gb, depth + 1));
+            stack.push((fa, ga, depth + 1));
+        }
+    }
+    Ok(dedup(
+        sols,
+        [
+            1e3 * min[0].max(f64::EPSILON),
+            1e3 * min[1].max(f64::EPSILON),
+        ],
+    ))
+}
+
+/// Breakpoints of `from` not already knots of `into`, inside the domain.
+fn missing(from: &[f64], into: &[f64], dom: (f64, f64)) -> Vec<f64> {
+    let mut v: Vec<f64> = from
+        .iter()
+        .copied()
+        .filter(|&x| x > dom.0 && x < dom.1 && !into.contains(&x))
+        .collect();
+    v.dedup();
+    v
+}
+
+/// Interval range of a coefficient iterator.
+fn range(it: impl Iterator<Item = f64>) -> (f64, f64) {
+    it.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+        (a.min(x), b.max(x))
+    })
+}
+
+fn imul(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    let p = [a.0 * b.0, a.0 * b.1, a.1 * b.0, a.1 * b.1];
+    (
+        p.iter().fold(f64::INFINITY, |m, &x| m.min(x)),
+        p.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x)),
+    )
+}
+
+/// Whether the interval Jacobian over the box is regular (its determinant excludes 0). The
+/// coefficient differences are positive multiples of the partials' coefficients; the common
+/// factors do not change the sign of the determinant.
+fn unique(f: &Patch, g: &Patch) -> bool {
+    let (ft, fr) = (range(f.dt_coefs()), range(f.dr_coefs()));
+    let (gt, gr) = (range(g.dt_coefs()), range(g.dr_coefs()));
+    // Scale differences into derivative units so the two products are comparable.
+    let sc = |x: (f64, f64), k: f64| (x.0 * k, x.1 * k);
+    let (kt_f, kr_f) = (f.pt as f64 / (f.t1 - f.t0), f.pr as f64 / (f.r1 - f.r0));
+    let (kt_g, kr_g) = (g.pt as f64 / (g.t1 - g.t0), g.pr as f64 / (g.r1 - g.r0));
+    let a = imul(sc(ft, kt_f), sc(gr, kr_g));
+    let b = imul(sc(fr, kr_f), sc(gt, kt_g));
+    let lo = a.0 - b.1;
+    let hi = a.1 - b.0;
+    let slack = 1e-12 * (a.0.abs().max(a.1.abs()) + b.0.abs().max(b.1.abs()));
+    lo > slack || hi < -slack
+}
+
+/// Newton on the cell polynomials from the box centre; `Some` when it converges inside the box.
+fn newton(f: &Patch, g: &Patch, bx: [f64; 4]) -> Option<(f64, f64)> {
+    let (mut t, mut r) = (0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3]));
+    for _ in 0..60 {
+        let a = f.eval_grad(t, r);
+        let b = g.eval_grad(t, r);
+        let det = a[1] * b[2] - a[2] * b[1];
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let dt = (a[0] * b[2] - a[2] * b[0]) / det;
+        let dr = (a[1] * b[0] - a[0] * b[1]) / det;
+        t -= dt;
+        r -= dr;
+        if !(t >= bx[0] && t <= bx[1] && r >= bx[2] && r <= bx[3]) {
+            return None;
+        }
+        let small = dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(bx[1] - bx[0])
+            && dr.abs() <= 4.0 * f64::EPSILON * r.abs().max(bx[3] - bx[2]);
+        if small {
+            return Some((t, r));
+        }
+    }
+    // No quadratic convergence: accept only with a tiny final step (rounding-level residual).
+    None
+}
+
+/// One report per solution: close duplicates (found from two boxes sharing a border) merge.
+fn dedup(mut v: Vec<Solution>, tol: [f64; 2]) -> Vec<Solution> {
+    v.sort_by(|a, b| a.t.total_cmp(&b.t).then(a.r.total_cmp(&b.r)));
+    let mut out: Vec<Solution> = Vec::new();
+    for s in v {
+        if let Some(o) = out
+            .iter_mut()
+            .find(|o| (o.t - s.t).abs() <= tol[0] && (o.r - s.r).abs() <= tol[1])
+        {
+            o.certified |= s.certified;
+            continue;
+        }
+        out.push(s);
+    }
+    out
+}

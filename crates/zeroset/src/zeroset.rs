@@ -1,0 +1,159 @@
+//! The zero set of a bivariate B-spline function: the public entry point.
+
+use crate::assemble::assemble;
+use crate::error::{Error, Result};
+use crate::extract::{Pieces, Tracer};
+use crate::patch::Patch;
+use bspline::tensor::TensorBSpline;
+use serde::{Deserialize, Serialize};
+
+/// Options for [`zero_set`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZeroSetOptions {
+    /// Parameter tolerance relative to the domain: patches this small that are still not
+    /// resolved become singular or isolated points.
+    pub tol: f64,
+    /// Chord tolerance relative to the domain diagonal: the polylines stay this close to the
+    /// zero set (vertices are placed adaptively where it bends).
+    pub chord_tol: f64,
+    /// Limit on the number of patches examined; hitting it makes the result incomplete.
+    pub max_patches: usize,
+}
+
+impl Default for ZeroSetOptions {
+    fn default() -> Self {
+        Self {
+            tol: 1e-12,
+            chord_tol: 1e-3,
+            max_patches: 200_000,
+        }
+    }
+}
+
+impl ZeroSetOptions {
+    /// Sets the parameter tolerance.
+    pub fn tolerance(mut self, tol: f64) -> Self {
+        self.tol = tol;
+        self
+    }
+    /// Sets the chord tolerance.
+    pub fn chord_tolerance(mut self, chord_tol: f64) -> Self {
+        self.chord_tol = chord_tol;
+        self
+    }
+
+    pub(crate) fn check(&self) -> Result<()> {
+        let bad = |field, value: f64| Error::BadOption {
+            field,
+            value,
+            why: "must be finite, > 0 and < 1",
+        };
+        if !(self.tol.is_finite() && self.tol > 0.0 && self.tol < 1.0) {
+            return Err(bad("tol", self.tol));
+        }
+        if !(self.chord_tol.is_finite() && self.chord_tol > 0.0 && self.chord_tol < 1.0) {
+            return Err(bad("chord_tol", self.chord_tol));
+        }
+        Ok(())
+    }
+
+    /// Depth limit implied by the tolerance: halving both sides down to `tol`, plus slack.
+    pub(crate) fn max_depth(&self) -> usize {
+        let halvings = (1.0 / self.tol.max(1e-300))
+            .log2()
+            .ceil()
+            .clamp(1.0, 1100.0) as usize;
+        2 * (halvings + 4)
+    }
+}
+
+/// One connected piece of a zero set, as a polyline in `(t, r)`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Polyline {
+    /// Vertices `[t, r]`, each on `F = 0` to rounding.
+    pub pts: Vec<[f64; 2]>,
+    /// True for a closed loop (first vertex repeated at the end).
+    pub closed: bool,
+}
+
+/// The zero set of `F(t, r)` on its domain.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ZeroSet {
+    /// The curves of the zero set.
+    pub branches: Vec<Polyline>,
+    /// Points where branches cross or end inside the domain (resolved to the tolerance).
+    pub singular: Vec<[f64; 2]>,
+    /// Isolated zeros (or loops smaller than the tolerance).
+    pub isolated: Vec<[f64; 2]>,
+    /// False when the patch limit was hit or `F` vanishes on a whole cell.
+    pub complete: bool,
+    /// Patches examined (a measure of the work done).
+    pub patches: usize,
+}
+
+/// The zero set of `f` on its whole domain.
+///
+/// ```
+/// use bspline::{tensor::TensorBSpline, BSpline};
+/// use zeroset::{zero_set, ZeroSetOptions};
+/// // F = t² + r² − 0.25 on [−1, 1]²: the circle of radius 1/2.
+/// let sq = BSpline::bezier(1, vec![1., -1., 1.]).unwrap().reparam(-1.0, 1.0).unwrap();
+/// let one = BSpline::constant(&[1.0], 0, -1.0, 1.0).unwrap();
+/// let quarter = BSpline::constant(&[-0.25], 0, -1.0, 1.0).unwrap();
+/// let f = TensorBSpline::sum_of_outer(&[(sq.clone(), one.clone()), (one.clone(), sq), (one, quarter.clone())])
+///     .unwrap();
+/// let z = zero_set(&f, &ZeroSetOptions::default()).unwrap();
+/// assert_eq!(z.branches.len(), 1);
+/// assert!(z.branches[0].closed);
+/// ```
+pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
+    opts.check()?;
+    let cells: Vec<Patch> = f.bezier_patches().iter().map(Patch::from_bezier).collect();
+    let (dt, dr) = (f.domain_t(), f.domain_r());
+    let dom = [dt.0, dt.1, dr.0, dr.1];
+    let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
+    let map = |t: f64, r: f64| Some([t, r]);
+    let keep = |_: &Patch| true;
+    let pieces = run_cells(&cells, dom, opts, &map, opts.chord_tol * diag, &keep);
+    Ok(finish(&pieces, dom, &cells))
+}
+
+/// The subdivision with a mapping for the chord test and a region filter (shared with the
+/// bisector, which measures chords in the plane and may skip half of a square domain).
+pub(crate) fn run_cells(
+    cells: &[Patch],
+    dom: [f64; 4],
+    opts: &ZeroSetOptions,
+    map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
+    chord_abs: f64,
+    keep: &dyn Fn(&Patch) -> bool,
+) -> Pieces {
+    let extent = [dom[1] - dom[0], dom[3] - dom[2]];
+    let tracer = Tracer {
+        min_size: [opts.tol * extent[0], opts.tol * extent[1]],
+        extent,
+        max_depth: opts.max_depth(),
+        max_patches: opts.max_patches,
+        map,
+        chord_tol: chord_abs,
+        keep,
+    };
+    let mut pieces = Pieces::default();
+    tracer.run(cells, &mut pieces);
+    pieces
+}
+
+pub(crate) fn finish(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> ZeroSet {
+    let a = assemble(pieces, dom, cells);
+    ZeroSet {
+        branches: a
+            .lines
+            .into_iter()
+            .map(|(pts, closed)| Polyline { pts, closed })
+            .collect(),
+        singular: a.singular,
+        isolated: a.isolated,
+        complete: !pieces.truncated,
+        patches: pieces.patches,
+    }
+}

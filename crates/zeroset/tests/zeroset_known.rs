@@ -1,0 +1,142 @@
+//! The zero-set extractor on functions whose zero sets are known exactly.
+#![allow(clippy::unwrap_used)]
+mod common;
+use bspline::tensor::TensorBSpline;
+use common::*;
+use proptest::prelude::*;
+use zeroset::{zero_set, ZeroSet, ZeroSetOptions};
+
+const UNIT: [f64; 4] = [0.0, 1.0, 0.0, 1.0];
+
+fn run(f: &TensorBSpline) -> ZeroSet {
+    let z = zero_set(f, &ZeroSetOptions::default()).unwrap();
+    assert!(z.complete);
+    // Every vertex is on F = 0 to rounding.
+    let scale = f.max_abs_coef();
+    for b in &z.branches {
+        for p in &b.pts {
+            assert!(
+                f.eval(p[0], p[1]).abs() <= 1e-7 * scale,
+                "{p:?} F = {}",
+                f.eval(p[0], p[1])
+            );
+        }
+    }
+    z
+}
+
+/// Points of a circle all lie within `tol` of some branch.
+fn covers_circle(z: &ZeroSet, c: [f64; 2], rho: f64, tol: f64) -> bool {
+    (0..400).all(|k| {
+        let a = k as f64 * std::f64::consts::TAU / 400.0;
+        let q = [c[0] + rho * a.cos(), c[1] + rho * a.sin()];
+        if q[0] < 0.0 || q[0] > 1.0 || q[1] < 0.0 || q[1] > 1.0 {
+            return true;
+        }
+        z.branches
+            .iter()
+            .any(|b| dist_to_polyline(q, &b.pts) <= tol)
+    })
+}
+
+#[test]
+fn circle_is_one_closed_loop() {
+    let z = run(&circle(0.5, 0.5, 0.3, UNIT));
+    assert_eq!(z.branches.len(), 1);
+    assert!(z.branches[0].closed);
+    assert!(z.singular.is_empty() && z.isolated.is_empty());
+    assert!(covers_circle(&z, [0.5, 0.5], 0.3, 2e-3));
+}
+
+#[test]
+fn crossing_lines_give_four_branches_and_a_singular_point() {
+    let f = plane(1.0, -1.0, 0.0, UNIT)
+        .mul(&plane(1.0, 1.0, -1.0, UNIT))
+        .unwrap();
+    let z = run(&f);
+    assert_eq!(z.singular.len(), 1);
+    let s = z.singular[0];
+    assert!(
+        (s[0] - 0.5).abs() < 1e-6 && (s[1] - 0.5).abs() < 1e-6,
+        "{s:?}"
+    );
+    assert_eq!(z.branches.len(), 4);
+    assert!(z.branches.iter().all(|b| !b.closed));
+}
+
+#[test]
+fn nested_small_loops_are_all_found() {
+    // Three concentric circles, the inner one tiny, and a separate tiny circle.
+    let radii = [0.3, 0.1, 0.004];
+    let mut f = circle(0.45, 0.5, radii[0], UNIT);
+    for r in &radii[1..] {
+        f = f.mul(&circle(0.45, 0.5, *r, UNIT)).unwrap();
+    }
+    f = f.mul(&circle(0.85, 0.15, 0.002, UNIT)).unwrap();
+    let z = run(&f);
+    assert_eq!(
+        z.branches.len(),
+        4,
+        "{:?}",
+        z.branches.iter().map(|b| b.pts.len()).collect::<Vec<_>>()
+    );
+    assert!(z.branches.iter().all(|b| b.closed));
+    for r in radii {
+        assert!(
+            covers_circle(&z, [0.45, 0.5], r, 2e-3 + 1e-3 * r),
+            "radius {r}"
+        );
+    }
+    assert!(covers_circle(&z, [0.85, 0.15], 0.002, 1e-3));
+}
+
+#[test]
+fn circle_touching_and_crossing_the_border() {
+    // Tangent to r = 0 at t = 0.5, and a circle cut by the border t = 1.
+    let f = circle(0.5, 0.3, 0.3, UNIT)
+        .mul(&circle(1.0, 0.8, 0.15, UNIT))
+        .unwrap();
+    let z = run(&f);
+    assert!(covers_circle(&z, [0.5, 0.3], 0.3, 2e-3));
+    assert!(covers_circle(&z, [1.0, 0.8], 0.15, 2e-3));
+    // The cut circle is one open branch from border to border.
+    let open: Vec<_> = z.branches.iter().filter(|b| !b.closed).collect();
+    assert!(!open.is_empty());
+    for b in open {
+        let (a, e) = (b.pts[0], b.pts[b.pts.len() - 1]);
+        let on_border = |p: [f64; 2]| p[0] == 0.0 || p[0] == 1.0 || p[1] == 0.0 || p[1] == 1.0;
+        assert!(
+            on_border(a) || on_border(e) || !z.singular.is_empty(),
+            "{a:?} {e:?}"
+        );
+    }
+}
+
+#[test]
+fn isolated_point_is_reported() {
+    // (t − 0.3)² + (r − 0.6)²: a single zero.
+    let f = circle(0.3, 0.6, 0.0, UNIT);
+    let z = zero_set(&f, &ZeroSetOptions::default()).unwrap();
+    assert!(z.branches.is_empty());
+    assert_eq!(z.isolated.len(), 1);
+    assert!((z.isolated[0][0] - 0.3).abs() < 1e-12 && (z.isolated[0][1] - 0.6).abs() < 1e-12);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    /// Two random circles inside the square: two loops, or one curve with crossings where they
+    /// meet; either way every point of both circles is covered.
+    #[test]
+    fn random_circle_pairs(cx in 0.2..0.8f64, cy in 0.2..0.8f64, r in 0.01..0.19f64,
+                           dx in 0.2..0.8f64, dy in 0.2..0.8f64, s in 0.01..0.19f64) {
+        let f = circle(cx, cy, r, UNIT).mul(&circle(dx, dy, s, UNIT)).unwrap();
+        let z = run(&f);
+        prop_assert!(covers_circle(&z, [cx, cy], r, 3e-3));
+        prop_assert!(covers_circle(&z, [dx, dy], s, 3e-3));
+        let d = (cx - dx).hypot(cy - dy);
+        if d > r + s + 1e-3 || d < (r - s).abs() - 1e-3 {
+            prop_assert_eq!(z.branches.len(), 2);
+            prop_assert!(z.branches.iter().all(|b| b.closed));
+        }
+    }
+}

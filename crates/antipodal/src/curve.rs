@@ -1,0 +1,156 @@
+//! The plane-curve trait the algorithms run on, and its B-spline/NURBS implementation.
+
+use crate::error::{Error, Result};
+use crate::geom::{Jet, V2};
+use bspline::{BSpline, Rational};
+
+/// A regular parametric plane curve with three continuous derivatives (piecewise for splines).
+///
+/// Analytic shapes implement it with exact derivatives; B-spline and NURBS curves
+/// ([`SplineCurve`]) also expose their exact rational form, which lets the algorithms certify
+/// their decisions by sign tests on symbolic B-splines.
+pub trait PlaneCurve {
+    /// The parameter domain `[a, b]`; a closed curve has period `b − a`.
+    fn domain(&self) -> (f64, f64);
+    /// True when the curve is closed (`C(a) = C(b)` with matching tangents).
+    fn is_closed(&self) -> bool;
+    /// Point and first three derivatives at `u ∈ [a, b]`.
+    fn jet(&self, u: f64) -> Jet;
+    /// Point and derivatives up to `order` (≤ 3) at `u`; higher entries may be left zero.
+    /// Curves whose derivatives cost extra (splines) override it.
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
+        let _ = order;
+        self.jet(u)
+    }
+    /// The exact rational B-spline form, when the curve has one.
+    fn rational(&self) -> Option<&Rational> {
+        None
+    }
+    /// True when the curve is simple by construction (the analytic shapes with valid
+    /// parameters), which skips the self-intersection check.
+    fn known_simple(&self) -> bool {
+        false
+    }
+}
+
+/// A B-spline or NURBS plane curve, closed (periodic or clamped with equal end points) or open.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SplineCurve {
+    curve: Rational,
+    closed: bool,
+}
+
+impl SplineCurve {
+    /// Wraps a planar rational curve; it counts as closed when its end points coincide (within
+    /// `1e-12` of its size).
+    pub fn new(curve: Rational) -> Result<Self> {
+        if curve.dim() != 2 {
+            return Err(Error::Spline(bspline::Error::DimensionMismatch {
+                expected: 2,
+                got: curve.dim(),
+            }));
+        }
+        let (a, b) = curve.domain();
+        let (pa, pb) = (curve.point(a), curve.point(b));
+        let size = control_size(&curve);
+        let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
+        let closed = gap <= 1e-12 * size.max(f64::MIN_POSITIVE);
+        Ok(Self { curve, closed })
+    }
+
+    /// A closed uniform periodic B-spline (optionally rational) through `points`: domain
+    /// `[0, n)`, the piece on `[i, i+1]` shaped by points `i..=i+p` (indices mod `n`).
+    pub fn periodic(degree: usize, points: &[[f64; 2]], weights: Option<&[f64]>) -> Result<Self> {
+        let hom = homogeneous(points, weights)?;
+        let spline = BSpline::periodic(degree, 3, hom)?;
+        let curve = Rational::from_homogeneous(spline)?;
+        Ok(Self {
+            curve,
+            closed: true,
+        })
+    }
+
+    /// A clamped B-spline (optionally rational) with the given knots, or uniform ones on
+    /// `[0, 1]`. It is closed when its first and last points coincide.
+    pub fn clamped(
+        degree: usize,
+        points: &[[f64; 2]],
+        weights: Option<&[f64]>,
+        knots: Option<Vec<f64>>,
+    ) -> Result<Self> {
+        let flat: Vec<f64> = points.iter().flat_map(|p| p.iter().copied()).collect();
+        let spline = match knots {
+            Some(k) => BSpline::new(degree, k, 2, flat)?,
+            None => BSpline::clamped_uniform(degree, 2, flat)?,
+        };
+        Self::new(Rational::new(spline, weights)?)
+    }
+
+    /// The underlying rational curve.
+    pub fn curve(&self) -> &Rational {
+        &self.curve
+    }
+}
+
+fn homogeneous(points: &[[f64; 2]], weights: Option<&[f64]>) -> Result<Vec<f64>> {
+    if let Some(w) = weights {
+        if w.len() != points.len() {
+            return Err(Error::Spline(bspline::Error::CountMismatch {
+                what: "weights (one per control point)",
+                expected: points.len(),
+                got: w.len(),
+            }));
+        }
+        if let Some(index) = w.iter().position(|&x| !(x > 0.0 && x.is_finite())) {
+            return Err(Error::Spline(bspline::Error::NonPositiveWeight {
+                index,
+                value: w[index],
+            }));
+        }
+    }
+    Ok(points
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| {
+            let w = weights.map_or(1.0, |w| w[i]);
+            [p[0] * w, p[1] * w, w]
+        })
+        .collect())
+}
+
+/// Diagonal of the control points' bounding box.
+pub(crate) fn control_size(c: &Rational) -> f64 {
+    let pts = c.control_points();
+    let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
+    for p in &pts {
+        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
+        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
+    }
+    (hi - lo).norm()
+}
+
+impl PlaneCurve for SplineCurve {
+    fn domain(&self) -> (f64, f64) {
+        self.curve.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+    fn jet(&self, u: f64) -> Jet {
+        self.jet_to(u, 3)
+    }
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
+        let mut o = [0.0; 8];
+        let k = order.min(3);
+        self.curve.eval_derivs(u, k, &mut o[..2 * (k + 1)]);
+        Jet {
+            p: V2::new(o[0], o[1]),
+            d1: V2::new(o[2], o[3]),
+            d2: V2::new(o[4], o[5]),
+            d3: V2::new(o[6], o[7]),
+        }
+    }
+    fn rational(&self) -> Option<&Rational> {
+        Some(&self.curve)
+    }
+}

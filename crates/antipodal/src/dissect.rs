@@ -1,0 +1,472 @@
+//! Dissection (Jia §5.1–5.2): inflections, then monotone pieces of total curvature below π.
+//!
+//! A "track" of sample parameters carries the unwrapped tangent angle ψ with increments below
+//! π between neighbours. For spline curves each increment is certified by the hodograph: the
+//! tangent numerator's control points on the interval lie in an open half-plane, so the tangent
+//! turns by less than π there. Analytic curves are sampled (Jia's method, not certified).
+
+use crate::error::{Error, Result};
+use crate::geom::{wrap_pi, V2};
+use crate::prims::Prefer;
+use crate::view::{newton_bracketed, View};
+use bspline::roots::{find_roots, find_roots_periodic, RootKind};
+use std::f64::consts::{PI, TAU};
+
+/// Unwrapped tangent angle along the curve.
+pub(crate) struct Tracks {
+    pub(crate) u: Vec<f64>,
+    pub(crate) psi: Vec<f64>,
+}
+
+impl Tracks {
+    /// Total turning over the track (±2π for a simple closed curve).
+    pub(crate) fn turn(&self) -> f64 {
+        self.psi[self.psi.len() - 1] - self.psi[0]
+    }
+
+    /// The same track for the curve run backwards (`u ↦ a + b − u`): no re-evaluation.
+    pub(crate) fn reversed(&self, a: f64, b: f64) -> Tracks {
+        // The reversed tangent points the other way: its angle is ψ + π, read backwards.
+        Tracks {
+            u: self.u.iter().rev().map(|u| a + b - u).collect(),
+            psi: self.psi.iter().rev().map(|p| p + PI).collect(),
+        }
+    }
+}
+
+/// A monotone piece of the curve: κ of one sign inside, |total curvature| < π.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Piece {
+    pub(crate) lo: f64,
+    pub(crate) hi: f64,
+    /// κ > 0 inside (the tangent turns left; convex on a counterclockwise closed curve).
+    pub(crate) convex: bool,
+    /// Tangent angle at `lo` (unwrapped).
+    pub(crate) psi_lo: f64,
+    /// Signed total curvature Φ(lo, hi).
+    pub(crate) rot: f64,
+    /// A straight stretch (κ ≡ 0): its normal is constant.
+    pub(crate) flat: bool,
+}
+
+/// Inflections and straight stretches.
+pub(crate) struct Zeros {
+    /// Simple inflections in `[a, a + period)`, sorted.
+    pub(crate) zs: Vec<f64>,
+    /// Intervals where the curvature vanishes identically (unwrapped, `lo < hi`).
+    pub(crate) flats: Vec<(f64, f64)>,
+}
+
+const MAX_SAMPLES: usize = 1 << 14;
+
+impl View<'_> {
+    /// Tangent angle at `u` given the track (valid for any unwrapped `u`).
+    pub(crate) fn psi(&self, tr: &Tracks, u: f64) -> f64 {
+        let (base, turns) = if self.closed {
+            let k = ((u - self.a) / self.period).floor();
+            (u - k * self.period, k)
+        } else {
+            (u.clamp(self.a, self.b), 0.0)
+        };
+        let i = tr.u.partition_point(|&x| x <= base).clamp(1, tr.u.len()) - 1;
+        let ang = self.jet_to(base, 1).d1.angle();
+        // ψᵢ is the sample's tangent angle unwrapped: the wrapped difference needs no jet there.
+        tr.psi[i] + wrap_pi(ang - tr.psi[i]) + turns * tr.turn()
+    }
+
+    /// ψ at a track point shifted by whole periods (no evaluation).
+    fn psi_sample(&self, tr: &Tracks, i: usize, periods: f64) -> f64 {
+        tr.psi[i] + periods * tr.turn()
+    }
+
+    /// Builds the track over one period (or the open domain).
+    pub(crate) fn tracks(&self, knots: &[f64]) -> Result<Tracks> {
+        let m = 96usize.max(4 * knots.len());
+        let mut us: Vec<f64> = (0..=m)
+            .map(|i| self.a + self.period * i as f64 / m as f64)
+            .collect();
+        us.extend(knots.iter().copied().filter(|&k| k > self.a && k < self.b));
+        us.sort_by(f64::total_cmp);
+        us.dedup();
+        let mut out_u = vec![us[0]];
+        let mut out_psi = vec![self.jet_to(us[0], 1).d1.angle()];
+        let speed_floor = 1e-13 * self.scale / self.period.max(1e-300);
+        for w in us.windows(2) {
+            // Depth-first refinement of [w0, w1] until each step turns by less than π/4
+            // (and, for splines, the hodograph certifies less than π).
+            let mut stack = vec![(w[0], w[1], 0usize)];
+            let mut pending: Vec<(f64, f64)> = Vec::new();
+            while let Some((x0, x1, depth)) = stack.pop() {
+                let (j0, j1) = (self.jet_to(x0, 1), self.jet_to(x1, 1));
+                if j1.d1.norm() <= speed_floor || j0.d1.norm() <= speed_floor {
+                    return Err(Error::Cusp {
+                        u: self.to_curve(if j0.d1.norm() <= speed_floor { x0 } else { x1 }),
+                    });
+                }
+                let step = wrap_pi(j1.d1.angle() - j0.d1.angle());
+                let ok = step.abs() < PI / 4.0 && self.hodograph_cone_ok(x0, x1);
+                if ok {
+                    pending.push((x1, step));
+                    continue;
+                }
+                if depth > 40 || out_u.len() + pending.len() + stack.len() > MAX_SAMPLES {
+                    return Err(Error::Cusp {
+                        u: self.to_curve(0.5 * (x0 + x1)),
+                    });
+                }
+                let mid = 0.5 * (x0 + x1);
+                // Push the right half first so the left half is processed first.
+                stack.push((mid, x1, depth + 1));
+                stack.push((x0, mid, depth + 1));
+            }
+            for (x, step) in pending {
+                let last = out_psi[out_psi.len() - 1];
+                out_u.push(x);
+                out_psi.push(last + step);
+            }
+        }
+        Ok(Tracks {
+            u: out_u,
+            psi: out_psi,
+        })
+    }
+
+    /// For splines: the tangent numerator's control points on `[x0, x1]` lie in an open
+    /// half-plane, so the tangent turns by less than π there. Always true for analytic curves.
+    fn hodograph_cone_ok(&self, x0: f64, x1: f64) -> bool {
+        let Some(cert) = &self.cert else {
+            return true;
+        };
+        let (l, h) = (x0.max(self.a), x1.min(self.b));
+        if h <= l {
+            return true;
+        }
+        let Ok(piece) = cert.tangent.restrict(l, h) else {
+            return false;
+        };
+        let mid = self.jet_to(0.5 * (l + h), 1).d1.unit();
+        piece.coefs().chunks_exact(2).all(|c| {
+            let v = V2::new(c[0], c[1]);
+            v.dot(mid) > 1e-9 * v.norm().max(f64::MIN_POSITIVE)
+        })
+    }
+
+    /// Simple inflections in `[a, a + period)`, sorted (Jia §5.1).
+    pub(crate) fn inflections(&self, tr: &Tracks) -> Result<Zeros> {
+        let mut flats = Vec::new();
+        let mut out = match &self.cert {
+            Some(cert) => {
+                let k = bspline::symbolic::curvature_numerator(&cert.curve)?;
+                let periodic = self.closed
+                    && (k.eval_scalar(self.a) - k.eval_scalar(self.b)).abs()
+                        <= 1e-9 * k.max_abs_coef();
+                let roots = if periodic {
+                    find_roots_periodic(&k, &cert.opts)?
+                } else {
+                    find_roots(&k, self.a, self.b, &cert.opts)?
+                };
+                let mut zs = Vec::new();
+                for r in roots {
+                    match r.kind {
+                        RootKind::Simple if r.certified => zs.push(r.u),
+                        _ => {
+                            // A cluster is an inflection only where the sign changes across it
+                            // (a double root bends back: second-order, neglected as in §5.1).
+                            let (l, h) = r.bracket;
+                            if h - l > 1e-6 * self.period {
+                                // Within rounding of zero all along: a straight stretch.
+                                flats.push((l, h));
+                                continue;
+                            }
+                            self.uncertify();
+                            let w = (h - l).max(1e-9 * self.period);
+                            let (kl, kh) = (
+                                self.jet_to(l - w, 2).curvature(),
+                                self.jet_to(h + w, 2).curvature(),
+                            );
+                            if (kl > 0.0) != (kh > 0.0) {
+                                zs.push(r.u);
+                            }
+                        }
+                    }
+                }
+                zs.extend(jump_sign_changes(&k, &zs, self.tol));
+                if self.closed && !periodic {
+                    // The seam of a clamped closed curve: curvature may jump and change sign.
+                    let (ka, kb) = (k.eval_scalar(self.a), k.eval_scalar(self.b));
+                    if (ka > 0.0) != (kb > 0.0) && ka != 0.0 && kb != 0.0 {
+                        zs.push(self.a);
+                    }
+                }
+                zs
+            }
+            None => {
+                let kappa = |u: f64| {
+                    let j = self.jet(u);
+                    (j.d1.cross(j.d2), j.d1.cross(j.d3))
+                };
+                let mut zs = Vec::new();
+                for w in tr.u.windows(2) {
+                    let (k0, k1) = (kappa(w[0]).0, kappa(w[1]).0);
+                    if k0 == 0.0 && w[0] == tr.u[0] && !self.closed {
+                        continue;
+                    }
+                    if (k0 < 0.0) != (k1 < 0.0) && k1 != 0.0 {
+                        zs.push(newton_bracketed(kappa, w[0], w[1], k0, self.tol, f64::NAN));
+                    }
+                }
+                zs
+            }
+        };
+        for z in &mut out {
+            *z = if self.closed { self.wrap(*z) } else { *z };
+        }
+        out.sort_by(f64::total_cmp);
+        out.dedup_by(|x, y| (*x - *y).abs() <= 4.0 * self.tol);
+        if self.closed && out.len() > 1 {
+            let (f, l) = (out[0], out[out.len() - 1]);
+            if f + self.period - l <= 4.0 * self.tol {
+                out.pop();
+            }
+        }
+        // Inflections at the ends of straight stretches are the stretches' business.
+        out.retain(|&z| {
+            !flats.iter().any(|&(l, h)| {
+                let k = ((z - l) / self.period).floor();
+                let zz = z - k * self.period;
+                zz >= l - 1e-9 * self.period && zz <= h + 1e-9 * self.period
+            })
+        });
+        Ok(Zeros { zs: out, flats })
+    }
+
+    /// The monotone pieces with |Φ| < π (Jia §5.1 step 2).
+    pub(crate) fn pieces(&self, tr: &Tracks, zeros: &Zeros) -> Vec<Piece> {
+        let zs = &zeros.zs;
+        let mut arcs: Vec<(f64, f64)> = Vec::new();
+        let mut flat_pieces = Vec::new();
+        if self.closed && !zeros.flats.is_empty() {
+            // Cut at inflections and at both ends of every straight stretch.
+            let mut cuts: Vec<f64> = zs.clone();
+            for &(l, h) in &zeros.flats {
+                cuts.push(self.wrap(l));
+                cuts.push(self.wrap(h));
+                let lo = self.wrap(l);
+                flat_pieces.push((lo, lo + (h - l)));
+            }
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup_by(|x, y| (*x - *y).abs() <= 4.0 * self.tol);
+            for (i, &z) in cuts.iter().enumerate() {
+                let next = if i + 1 < cuts.len() {
+                    cuts[i + 1]
+                } else {
+                    cuts[0] + self.period
+                };
+                let mid = self.wrap(0.5 * (z + next));
+                let is_flat = flat_pieces.iter().any(|&(l, h)| {
+                    let m = if mid < l { mid + self.period } else { mid };
+                    m > l && m < h
+                });
+                if !is_flat {
+                    arcs.push((z, next));
+                }
+            }
+        } else if self.closed {
+            if zs.is_empty() {
+                // A convex curve: start at a generic tangent direction, so that symmetric
+                // shapes do not put their antipodal points on piece ends.
+                let target = self.psi(tr, self.a) + 0.3819660112501051;
+                let w0 = self.param_at_angle(tr, self.a, self.a + self.period, target);
+                arcs.push((w0, w0 + self.period));
+            } else {
+                for (i, &z) in zs.iter().enumerate() {
+                    let next = if i + 1 < zs.len() {
+                        zs[i + 1]
+                    } else {
+                        zs[0] + self.period
+                    };
+                    arcs.push((z, next));
+                }
+            }
+        } else {
+            let mut cuts = vec![self.a];
+            cuts.extend(zs.iter().copied().filter(|&z| z > self.a && z < self.b));
+            cuts.push(self.b);
+            arcs.extend(cuts.windows(2).map(|w| (w[0], w[1])));
+        }
+        let mut out = Vec::new();
+        for (lo, hi) in arcs {
+            let (p0, p1) = (self.psi(tr, lo), self.psi(tr, hi));
+            let rot = p1 - p0;
+            let k = ((rot.abs() / (0.8 * PI)).ceil() as usize).clamp(1, 64);
+            let mut cuts = vec![lo];
+            for j in 1..k {
+                let target = p0 + rot * j as f64 / k as f64;
+                let prev = cuts[cuts.len() - 1];
+                cuts.push(self.param_at_angle(tr, prev, hi, target));
+            }
+            cuts.push(hi);
+            for w in cuts.windows(2) {
+                let (q0, q1) = (self.psi(tr, w[0]), self.psi(tr, w[1]));
+                let mid = self.jet_to(0.5 * (w[0] + w[1]), 2);
+                out.push(Piece {
+                    lo: w[0],
+                    hi: w[1],
+                    convex: if (q1 - q0).abs() > 1e-12 {
+                        q1 > q0
+                    } else {
+                        mid.curvature() > 0.0
+                    },
+                    psi_lo: q0,
+                    rot: q1 - q0,
+                    flat: false,
+                });
+            }
+        }
+        for (lo, hi) in flat_pieces {
+            out.push(Piece {
+                lo,
+                hi,
+                convex: false,
+                psi_lo: self.psi(tr, 0.5 * (lo + hi)),
+                rot: 0.0,
+                flat: true,
+            });
+        }
+        out
+    }
+
+    /// The parameter in `[lo, hi]` (a monotone stretch) where the tangent angle is `target`.
+    fn param_at_angle(&self, tr: &Tracks, lo: f64, hi: f64, target: f64) -> f64 {
+        let mut xs = vec![lo];
+        let mut psis = vec![self.psi(tr, lo)];
+        let k0 = if self.closed {
+            ((lo - self.a) / self.period).floor()
+        } else {
+            0.0
+        };
+        for k in 0..2 {
+            let periods = k0 + k as f64;
+            let off = periods * self.period;
+            for (i, &u) in tr.u.iter().enumerate() {
+                let x = u + off;
+                if x > lo && x < hi {
+                    xs.push(x);
+                    psis.push(self.psi_sample(tr, i, periods));
+                }
+            }
+            if !self.closed {
+                break;
+            }
+        }
+        xs.push(hi);
+        psis.push(self.psi(tr, hi));
+        for i in 0..xs.len() - 1 {
+            let (a0, a1) = (psis[i] - target, psis[i + 1] - target);
+            if a0 == 0.0 {
+                return xs[i];
+            }
+            if (a0 < 0.0) != (a1 < 0.0) {
+                let n = V2::polar(target).perp();
+                if let Some(u) = self.point_with_normal(xs[i], xs[i + 1], n) {
+                    return u;
+                }
+                return 0.5 * (xs[i] + xs[i + 1]);
+            }
+        }
+        let _ = Prefer::Low;
+        0.5 * (lo + hi)
+    }
+
+    /// Checks the closed polyline through the track points for crossings (the curve must be
+    /// simple) and the turning number (must be ±1).
+    pub(crate) fn check_simple(&self, tr: &Tracks) -> Result<()> {
+        let turn = tr.psi[tr.psi.len() - 1] - tr.psi[0];
+        if (turn.abs() - TAU).abs() > 0.5 {
+            return Err(Error::SelfIntersecting {
+                s: self.a,
+                t: self.a,
+            });
+        }
+        // Densify: four chords per track step keep the polygon close to the curve.
+        let mut us = Vec::with_capacity(4 * tr.u.len());
+        for w in tr.u.windows(2) {
+            for k in 0..4 {
+                us.push(w[0] + (w[1] - w[0]) * k as f64 / 4.0);
+            }
+        }
+        let pts: Vec<V2> = us.iter().map(|&u| self.point(u)).collect();
+        let n = pts.len();
+        let seg = |i: usize| (pts[i], pts[(i + 1) % n]);
+        let mut order: Vec<usize> = (0..n).collect();
+        let minx = |i: usize| {
+            let (p, q) = seg(i);
+            p.x.min(q.x)
+        };
+        order.sort_by(|&i, &j| minx(i).total_cmp(&minx(j)));
+        for (k, &i) in order.iter().enumerate() {
+            let (p, q) = seg(i);
+            let maxx = p.x.max(q.x);
+            for &j in &order[k + 1..] {
+                if minx(j) > maxx {
+                    break;
+                }
+                if j == (i + 1) % n || i == (j + 1) % n || i == j {
+                    continue;
+                }
+                let (r, s) = seg(j);
+                if crosses(p, q, r, s) {
+                    return Err(Error::SelfIntersecting {
+                        s: self.to_curve(us[i]),
+                        t: self.to_curve(us[j]),
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Proper crossing of segments pq and rs.
+fn crosses(p: V2, q: V2, r: V2, s: V2) -> bool {
+    let d1 = (q - p).cross(r - p);
+    let d2 = (q - p).cross(s - p);
+    let d3 = (s - r).cross(p - r);
+    let d4 = (s - r).cross(q - r);
+    (d1 > 0.0) != (d2 > 0.0)
+        && (d3 > 0.0) != (d4 > 0.0)
+        && d1 != 0.0
+        && d2 != 0.0
+        && d3 != 0.0
+        && d4 != 0.0
+}
+
+/// Sign changes of a scalar spline across its discontinuities (interior knots of multiplicity
+/// `p + 1`: the curvature of a spline of degree ≤ 2, or at C¹ knots), which root isolation
+/// does not report as roots. The one-sided values are the coefficients next to the knot.
+fn jump_sign_changes(k: &bspline::BSpline, known: &[f64], tol: f64) -> Vec<f64> {
+    let p = k.degree();
+    let knots = k.knots();
+    let c = k.coefs();
+    let err = 4.0 * (p + 2) as f64 * f64::EPSILON * k.max_abs_coef();
+    let mut out = Vec::new();
+    let n = c.len();
+    let mut i = p + 1;
+    while i < n {
+        let u = knots[i];
+        let mult = knots[i..].iter().take_while(|&&x| x == u).count();
+        if mult > p {
+            // Clamped on both sides: c[i-1] is the left limit, c[i] the right limit.
+            let (l, r) = (c[i - 1], c[i]);
+            let trusted = l.abs() > err && r.abs() > err;
+            if trusted
+                && (l > 0.0) != (r > 0.0)
+                && !known.iter().any(|&z| (z - u).abs() <= 16.0 * tol)
+            {
+                out.push(u);
+            }
+        }
+        i += mult.max(1);
+    }
+    out
+}

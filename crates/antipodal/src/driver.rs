@@ -1,0 +1,448 @@
+//! The public entry points: validation and dissection of a curve, the pair loop of §5, and the
+//! two-curve common tangents of §2.5.
+
+use crate::curve::PlaneCurve;
+use crate::dissect::{Piece, Tracks, Zeros};
+use crate::error::{Error, Result};
+use crate::families::{family_of, flat_pairs, is_family, merge_families};
+use crate::geom::{wrap_pi, V2};
+use crate::pairs::{opposite_pair, Pair};
+use crate::search::{antipodal_points, Budget, THETA_NOISE};
+use crate::tangent;
+use crate::types::{
+    Antipodal, AntipodalPair, Inflection, Inflections, Options, PairType, TangentLine, Tangents,
+};
+use crate::view::View;
+
+/// A validated, dissected curve.
+struct Prepared<'a> {
+    view: View<'a>,
+    tracks: Tracks,
+    zeros: Zeros,
+    pieces: Vec<Piece>,
+}
+
+fn knots_of(curve: &dyn PlaneCurve) -> Vec<f64> {
+    curve
+        .rational()
+        .map(|r| r.homogeneous().breakpoints())
+        .unwrap_or_default()
+}
+
+/// Orients (closed curves counterclockwise, unless `force_rev` is given), validates and
+/// dissects.
+fn prepare<'a>(
+    curve: &'a dyn PlaneCurve,
+    opts: &Options,
+    force_rev: Option<bool>,
+) -> Result<Prepared<'a>> {
+    opts.validate()?;
+    let knots = knots_of(curve);
+    let closed = curve.is_closed();
+    if closed {
+        let (a, b) = curve.domain();
+        let (ta, tb) = (curve.jet(a).d1, curve.jet(b).d1);
+        let angle = wrap_pi(tb.angle() - ta.angle()).abs();
+        if angle > 1e-7 {
+            return Err(Error::Corner { angle });
+        }
+    }
+    let (view, tracks) = match force_rev {
+        Some(rev) => {
+            let view = View::new(curve, rev, opts.certify, opts.tol)?;
+            let tracks = view.tracks(&knots)?;
+            (view, tracks)
+        }
+        None => {
+            // Orientation from the turning of the tangent (±2π); a clockwise curve is viewed
+            // reversed, reusing the same track.
+            let view = View::new(curve, false, opts.certify, opts.tol)?;
+            let tracks = view.tracks(&knots)?;
+            if closed && tracks.turn() < 0.0 {
+                let (a, b) = curve.domain();
+                (
+                    View::new(curve, true, opts.certify, opts.tol)?,
+                    tracks.reversed(a, b),
+                )
+            } else {
+                (view, tracks)
+            }
+        }
+    };
+    if closed && !curve.known_simple() {
+        view.check_simple(&tracks)?;
+    }
+    let zeros = view.inflections(&tracks)?;
+    if closed && zeros.zs.len() % 2 == 1 {
+        view.uncertify();
+    }
+    let pieces = view.pieces(&tracks, &zeros);
+    Ok(Prepared {
+        view,
+        tracks,
+        zeros,
+        pieces,
+    })
+}
+
+fn inflection_list(v: &View, zs: &[f64]) -> Vec<Inflection> {
+    let mut out: Vec<Inflection> = zs
+        .iter()
+        .map(|&z| Inflection {
+            u: v.to_curve(z),
+            p: v.point(z).arr(),
+        })
+        .collect();
+    out.sort_by(|a, b| a.u.total_cmp(&b.u));
+    out
+}
+
+/// All simple inflections of a curve (Jia §5.1; certified for splines).
+pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections> {
+    opts.validate()?;
+    let view = View::new(curve, false, opts.certify, opts.tol)?;
+    let tracks = view.tracks(&knots_of(curve))?;
+    let zeros = view.inflections(&tracks)?;
+    Ok(Inflections {
+        inflections: inflection_list(&view, &zeros.zs),
+        certified: view.certified.get(),
+    })
+}
+
+/// Every pair of antipodal points of a simple closed curve (Jia 2004).
+///
+/// ```
+/// use antipodal::{antipodal, shapes::Ellipse, Options};
+/// let e = Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap();
+/// let r = antipodal(&e, &Options::default()).unwrap();
+/// assert_eq!(r.pairs.len(), 2);
+/// ```
+pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
+    if !curve.is_closed() {
+        let (a, b) = curve.domain();
+        return Err(Error::NotClosed {
+            gap: (curve.jet(a).p - curve.jet(b).p).norm(),
+        });
+    }
+    let prep = prepare(curve, opts, None)?;
+    let v = &prep.view;
+    let mut raw: Vec<(f64, f64)> = Vec::new();
+    let mut families = Vec::new();
+    let mut budget = Budget {
+        sections: opts.max_sections,
+        exhausted: false,
+    };
+    let n = prep.pieces.len();
+    for i in 0..n {
+        for j in i + 1..n {
+            let (p, q) = (&prep.pieces[i], &prep.pieces[j]);
+            if p.flat || q.flat {
+                flat_pairs(v, p, q, &mut raw, &mut families);
+                continue;
+            }
+            let Some(pair) = opposite_pair(v, p, v, q) else {
+                continue;
+            };
+            if is_family(&pair) {
+                families.push((pair.sa, pair.sb, pair.ta, pair.tb));
+                continue;
+            }
+            for sec in sections(&pair) {
+                let sec = trim_antipodal_ends(&sec, &mut raw);
+                if let Some(sec) = sec {
+                    antipodal_points(&sec, &mut raw, &mut budget);
+                }
+            }
+        }
+    }
+    let _ = &prep.tracks;
+    let families = merge_families(v, families);
+    let pairs = finish_pairs(v, raw, &families);
+    Ok(Antipodal {
+        pairs,
+        inflections: inflection_list(v, &prep.zeros.zs),
+        families: families.iter().map(|&f| family_of(v, f)).collect(),
+        certified: v.certified.get(),
+        complete: !budget.exhausted,
+    })
+}
+
+/// §5.3: the sections of a pair where `N(s) · r(s) > 0` (condition (v)), cut at the common
+/// tangents.
+fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
+    let tangents = tangent::common_tangents(p);
+    let mut cuts = vec![(p.sa, p.ta)];
+    cuts.extend(
+        tangents
+            .iter()
+            .copied()
+            .filter(|c| c.0 > p.sa && c.0 < p.sb),
+    );
+    cuts.push((p.sb, p.tb));
+    let mut out = Vec::new();
+    for w in cuts.windows(2) {
+        let ((s0, t0), (s1, t1)) = (w[0], w[1]);
+        if s1 - s0 <= p.vs.tol {
+            continue;
+        }
+        let sm = 0.5 * (s0 + s1);
+        let tm = p.opposite_within(sm, t0, t1);
+        if p.d(sm, tm) > 0.0 {
+            out.push(p.sub(s0, t0, s1, t1));
+        }
+    }
+    out
+}
+
+/// Condition (iv): an end that is itself antipodal is reported and cut off.
+fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pair<'a>> {
+    let mut q = *p;
+    for at_a in [true, false] {
+        let (s, t) = if at_a { (q.sa, q.ta) } else { (q.sb, q.tb) };
+        if q.sin_theta(s, t).abs() > THETA_NOISE || q.d(s, t) <= 0.0 {
+            continue;
+        }
+        raw.push((s, t));
+        let dir = if at_a { 1.0 } else { -1.0 };
+        let mut eps = 16.0 * q.vs.tol;
+        let mut cut = None;
+        for _ in 0..64 {
+            let se = s + dir * eps;
+            if se <= q.sa || se >= q.sb {
+                break;
+            }
+            let te = q.opposite(se)?;
+            if q.sin_theta(se, te).abs() > THETA_NOISE {
+                cut = Some((se, te));
+                break;
+            }
+            eps *= 2.0;
+        }
+        let (se, te) = cut?;
+        q = if at_a {
+            q.sub(se, te, q.sb, q.tb)
+        } else {
+            q.sub(q.sa, q.ta, se, te)
+        };
+    }
+    Some(q)
+}
+
+fn classify(v: &View, s: f64, t: f64) -> PairType {
+    let (js, jt) = (v.jet(s), v.jet(t));
+    let (ks, kt) = (js.curvature(), jt.curvature());
+    let r = (jt.p - js.p).norm();
+    let radii = 1.0 / ks + 1.0 / kt;
+    match (ks > 0.0, kt > 0.0) {
+        (true, true) if radii < r => PairType::A,
+        (true, true) => PairType::B,
+        (false, false) => PairType::E,
+        _ if radii > r => PairType::C,
+        _ => PairType::D,
+    }
+}
+
+/// Polishes, validates (inward normals facing each other), deduplicates modulo the period,
+/// classifies and maps to the curve's parameters.
+fn finish_pairs(
+    v: &View,
+    raw: Vec<(f64, f64)>,
+    families: &[(f64, f64, f64, f64)],
+) -> Vec<AntipodalPair> {
+    let within = |x: f64, a: f64, b: f64| {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let slack = 1e-9 * v.period;
+        let k = ((x - lo + slack) / v.period).floor();
+        let xx = x - k * v.period;
+        xx >= lo - slack && xx <= hi + slack
+    };
+    let in_family = |s: f64, t: f64| {
+        families.iter().any(|&(sa, sb, ta, tb)| {
+            (within(s, sa, sb) && within(t, ta, tb)) || (within(t, sa, sb) && within(s, ta, tb))
+        })
+    };
+    let mut keep: Vec<(f64, f64)> = Vec::new();
+    let close = |x: f64, y: f64| {
+        let d = (x - y).rem_euclid(v.period);
+        d.min(v.period - d) <= 1e-7 * v.period
+    };
+    for (s, t) in raw {
+        let (s, t) = crate::pairs::polish(v, v, s, t, 1e-4 * v.period).unwrap_or((s, t));
+        let (js, jt) = (v.jet(s), v.jet(t));
+        let r = jt.p - js.p;
+        if js.normal().dot(r) <= 0.0 || js.d1.dot(jt.d1) >= 0.0 {
+            continue;
+        }
+        let (s, t) = (v.wrap(s), v.wrap(t));
+        if in_family(s, t) {
+            continue;
+        }
+        if keep
+            .iter()
+            .any(|&(a, b)| (close(a, s) && close(b, t)) || (close(a, t) && close(b, s)))
+        {
+            continue;
+        }
+        keep.push((s, t));
+    }
+    let mut out: Vec<AntipodalPair> = keep
+        .into_iter()
+        .map(|(s, t)| {
+            let kind = classify(v, s, t);
+            let (cs, ct) = (v.to_curve(s), v.to_curve(t));
+            let (cs, ct, s, t) = if cs <= ct {
+                (cs, ct, s, t)
+            } else {
+                (ct, cs, t, s)
+            };
+            let (p, q) = (v.point(s), v.point(t));
+            AntipodalPair {
+                s: cs,
+                t: ct,
+                p: p.arr(),
+                q: q.arr(),
+                distance: (q - p).norm(),
+                kind,
+            }
+        })
+        .collect();
+    out.sort_by(|a, b| a.s.total_cmp(&b.s));
+    out
+}
+
+/// Segments of two different curves may cross, and then Theorem 2 (at most two common
+/// tangents) no longer holds. Each segment lies in the triangle of its chord and end tangents;
+/// while the two triangles' boxes overlap, the pair is halved (at the middle `s` and its
+/// opposite `t`), which keeps conditions (i)–(iii).
+fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Vec<(f64, f64)>) {
+    // Coinciding stretches (the same curve twice) share a continuum of tangents: skip them.
+    let coincide = [0.0, 0.5, 1.0].iter().all(|&f| {
+        let s = p.sa + f * (p.sb - p.sa);
+        let t = if f == 0.0 {
+            Some(p.ta)
+        } else if f == 1.0 {
+            Some(p.tb)
+        } else {
+            p.opposite(s)
+        };
+        t.is_some_and(|t| p.r(s, t).norm() <= 1e-9 * p.vs.scale)
+    });
+    if coincide || *leaves == 0 {
+        p.vs.uncertify();
+        return;
+    }
+    let (tl, th) = p.t_range();
+    let overlap = match (seg_box(p.vs, p.sa, p.sb), seg_box(p.vt, tl, th)) {
+        (Some(a), Some(b)) => a.0.x <= b.1.x && b.0.x <= a.1.x && a.0.y <= b.1.y && b.0.y <= a.1.y,
+        _ => true,
+    };
+    if overlap && depth < 24 && p.sb - p.sa > 1e3 * p.vs.tol {
+        let sm = 0.5 * (p.sa + p.sb);
+        if let Some(tm) = p.opposite(sm) {
+            tangents_of_disjoint(&p.sub(p.sa, p.ta, sm, tm), depth + 1, leaves, out);
+            tangents_of_disjoint(&p.sub(sm, tm, p.sb, p.tb), depth + 1, leaves, out);
+            return;
+        }
+    }
+    if overlap {
+        p.vs.uncertify();
+    }
+    *leaves -= 1;
+    out.extend(tangent::common_tangents(p));
+}
+
+/// Bounding box of the triangle (chord ends and the meet of the end tangents) that contains a
+/// monotone segment with |Φ| < π; `None` when the end tangents are (nearly) parallel.
+fn seg_box(v: &View, a: f64, b: f64) -> Option<(V2, V2)> {
+    let (ja, jb) = (v.jet_to(a, 1), v.jet_to(b, 1));
+    let den = ja.d1.cross(jb.d1);
+    let chord = jb.p - ja.p;
+    let pts = if den.abs() <= 1e-12 * ja.d1.norm() * jb.d1.norm() {
+        if ja.d1.dot(jb.d1) > 0.0 {
+            // Straight (Φ ≈ 0): the chord itself.
+            [ja.p, jb.p, jb.p]
+        } else {
+            return None;
+        }
+    } else {
+        [ja.p, ja.p + ja.d1 * (chord.cross(jb.d1) / den), jb.p]
+    };
+    let lo = V2::new(
+        pts.iter().map(|p| p.x).fold(f64::MAX, f64::min),
+        pts.iter().map(|p| p.y).fold(f64::MAX, f64::min),
+    );
+    let hi = V2::new(
+        pts.iter().map(|p| p.x).fold(f64::MIN, f64::max),
+        pts.iter().map(|p| p.y).fold(f64::MIN, f64::max),
+    );
+    Some((lo, hi))
+}
+
+/// Every line tangent to both curves (Jia §2.5): pairs of monotone pieces with opposite normals,
+/// then again with the normals of the second curve reversed.
+pub fn common_tangents(
+    c1: &dyn PlaneCurve,
+    c2: &dyn PlaneCurve,
+    opts: &Options,
+) -> Result<Tangents> {
+    let a = prepare(c1, opts, Some(false))?;
+    let mut lines: Vec<(f64, f64, bool)> = Vec::new();
+    let mut certified = a.view.certified.get();
+    for rev in [false, true] {
+        let b = prepare(c2, opts, Some(rev))?;
+        for p in &a.pieces {
+            for q in &b.pieces {
+                let Some(pair) = opposite_pair(&a.view, p, &b.view, q) else {
+                    continue;
+                };
+                let mut found = Vec::new();
+                let mut leaves = 4096usize;
+                tangents_of_disjoint(&pair, 0, &mut leaves, &mut found);
+                for (s, t) in found {
+                    let (s, t) = crate::pairs::polish_tangent(
+                        &a.view,
+                        &b.view,
+                        s,
+                        t,
+                        1e-6 * a.view.period.max(b.view.period),
+                    )
+                    .unwrap_or((s, t));
+                    lines.push((a.view.to_curve(s), b.view.to_curve(t), rev));
+                }
+            }
+        }
+        certified &= b.view.certified.get() && a.view.certified.get();
+    }
+    let (pa, pb) = (c1.domain(), c2.domain());
+    let close = |x: f64, y: f64, per: f64, closed: bool| {
+        let d = (x - y).abs();
+        let d = if closed { d.min(per - d) } else { d };
+        d <= 1e-7 * per
+    };
+    let same_curve = std::ptr::addr_eq(c1, c2);
+    let size = a.view.scale;
+    let mut out: Vec<TangentLine> = Vec::new();
+    for (s, t, _) in lines {
+        // With one curve twice, a "common" tangent touching at a single point (an inflection's
+        // two sides meeting) is just a tangent: not a line through two points.
+        if same_curve && (c1.jet(s).p - c2.jet(t).p).norm() <= 1e-5 * size {
+            continue;
+        }
+        if out.iter().any(|l| {
+            close(l.s, s, pa.1 - pa.0, c1.is_closed()) && close(l.t, t, pb.1 - pb.0, c2.is_closed())
+        }) {
+            continue;
+        }
+        out.push(TangentLine {
+            s,
+            t,
+            p: c1.jet(s).p.arr(),
+            q: c2.jet(t).p.arr(),
+        });
+    }
+    out.sort_by(|x, y| x.s.total_cmp(&y.s));
+    Ok(Tangents {
+        lines: out,
+        certified,
+    })
+}

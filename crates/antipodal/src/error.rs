@@ -1,0 +1,58 @@
+//! The crate's error type.
+
+use thiserror::Error;
+
+/// Why a curve or a request cannot be processed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum Error {
+    /// The spline data is invalid.
+    #[error(transparent)]
+    Spline(#[from] bspline::Error),
+    /// An analytic shape parameter is out of range.
+    #[error("{field} = {value}: {why}")]
+    InvalidShape {
+        /// The offending field.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+        /// What is required.
+        why: &'static str,
+    },
+    /// An option is out of range.
+    #[error("option {field} = {value} is invalid")]
+    InvalidOption {
+        /// The option.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The operation needs a closed curve.
+    #[error("the curve is not closed (its ends are {gap} apart)")]
+    NotClosed {
+        /// Distance between the end points.
+        gap: f64,
+    },
+    /// The curve has a cusp or a stationary point (zero speed): no tangent or normal there.
+    #[error("the curve is singular (zero speed or cusp) near u = {u}")]
+    Cusp {
+        /// Parameter near the singularity.
+        u: f64,
+    },
+    /// The tangent direction jumps at the seam of a closed curve (a corner).
+    #[error("the closed curve has a corner at its seam (tangents differ by {angle} rad)")]
+    Corner {
+        /// Angle between the two one-sided tangents.
+        angle: f64,
+    },
+    /// The closed curve crosses itself (or its turning number is not ±1).
+    #[error("the curve is not simple: it crosses itself near u = {s} and u = {t}")]
+    SelfIntersecting {
+        /// One parameter near the crossing.
+        s: f64,
+        /// The other.
+        t: f64,
+    },
+}
+
+/// Shorthand for results of this crate.
+pub type Result<T> = std::result::Result<T, Error>;

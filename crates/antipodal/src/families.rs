@@ -1,0 +1,133 @@
+//! Degenerate input: continua of antipodal pairs (circles, concentric arcs, facing straight
+//! stretches) are reported as families instead of floods of pairs.
+
+use crate::dissect::Piece;
+use crate::pairs::Pair;
+use crate::search::THETA_NOISE;
+use crate::types::Family;
+use crate::view::View;
+
+/// Pairs involving a straight stretch: two facing parallel stretches make a family; a curved
+/// piece pairs with a stretch where its normal is opposite to the stretch's and the normal line
+/// meets the stretch.
+pub(crate) fn flat_pairs(
+    v: &View,
+    p: &Piece,
+    q: &Piece,
+    raw: &mut Vec<(f64, f64)>,
+    families: &mut Vec<(f64, f64, f64, f64)>,
+) {
+    let (f, g) = if p.flat { (p, q) } else { (q, p) };
+    let nf = v.normal(0.5 * (f.lo + f.hi));
+    let pf = v.point(f.lo);
+    if g.flat {
+        let ng = v.normal(0.5 * (g.lo + g.hi));
+        if (nf + ng).norm() > 1e-9 || nf.dot(v.point(g.lo) - pf) <= 0.0 {
+            return;
+        }
+        // Coordinates along the stretch direction.
+        let dir = nf.perp();
+        let x = |u: f64| (v.point(u) - pf).dot(dir);
+        let (f0, f1) = (x(f.lo), x(f.hi));
+        let (g0, g1) = (x(g.lo), x(g.hi));
+        let lo = f0.min(f1).max(g0.min(g1));
+        let hi = f0.max(f1).min(g0.max(g1));
+        if hi - lo <= 1e-12 * v.scale {
+            return;
+        }
+        // Parameter on a stretch at coordinate c: where the line across it meets it.
+        let at = |piece: &Piece, c: f64| {
+            v.point_on_ray(
+                piece.lo,
+                piece.hi,
+                pf + dir * c - nf * v.scale,
+                nf,
+                crate::prims::Prefer::Low,
+            )
+            .unwrap_or(if (x(piece.lo) - c).abs() < (x(piece.hi) - c).abs() {
+                piece.lo
+            } else {
+                piece.hi
+            })
+        };
+        let (s0, s1) = (at(f, lo), at(f, hi));
+        let (t0, t1) = (at(g, lo), at(g, hi));
+        families.push((
+            s0.min(s1),
+            s0.max(s1),
+            if s0 <= s1 { t0 } else { t1 },
+            if s0 <= s1 { t1 } else { t0 },
+        ));
+        return;
+    }
+    let Some(t) = v.point_with_normal(g.lo, g.hi, -nf) else {
+        return;
+    };
+    let pt = v.point(t);
+    let Some(s) = v.point_on_ray(f.lo, f.hi, pt, v.normal(t), crate::prims::Prefer::Low) else {
+        return;
+    };
+    if nf.dot(pt - v.point(s)) > 0.0 {
+        raw.push((s, t));
+    }
+}
+
+/// A continuum: θ vanishes all along the pair (a circle, concentric arcs).
+pub(crate) fn is_family(p: &Pair) -> bool {
+    (0..=4).all(|k| {
+        let s = p.sa + (p.sb - p.sa) * k as f64 / 4.0;
+        let t = if k == 0 {
+            Some(p.ta)
+        } else if k == 4 {
+            Some(p.tb)
+        } else {
+            p.opposite(s)
+        };
+        t.is_some_and(|t| p.sin_theta(s, t).abs() <= THETA_NOISE && p.d(s, t) > 0.0)
+    })
+}
+
+/// Joins families that continue each other (a circle is cut into pieces by the dissection).
+pub(crate) fn merge_families(
+    v: &View,
+    mut fs: Vec<(f64, f64, f64, f64)>,
+) -> Vec<(f64, f64, f64, f64)> {
+    let same = |x: f64, y: f64| {
+        let d = (x - y).rem_euclid(v.period);
+        d.min(v.period - d) <= 1e-9 * v.period
+    };
+    fs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut out: Vec<(f64, f64, f64, f64)> = Vec::new();
+    for _ in 0..fs.len() {
+        let Some(mut cur) = fs.first().copied() else {
+            break;
+        };
+        fs.remove(0);
+        // Extend at the end as long as some family continues it.
+        while let Some(k) = fs.iter().position(|g| same(g.0, cur.1) && same(g.2, cur.3)) {
+            let g = fs.remove(k);
+            let ds = (g.1 - g.0).abs();
+            let dt = g.3 - g.2;
+            cur = (cur.0, cur.1 + ds, cur.2, cur.3 + dt);
+        }
+        out.push(cur);
+    }
+    out
+}
+
+/// A family `(sa, sb, ta, tb)` in view parameters, as curve parameters.
+pub(crate) fn family_of(v: &View, f: (f64, f64, f64, f64)) -> Family {
+    let (s0, s1) = (v.to_curve(f.0), v.to_curve(f.1));
+    let (t0, t1) = (v.to_curve(f.2), v.to_curve(f.3));
+    if v.rev {
+        Family {
+            s: [s1, s0],
+            t: [t1, t0],
+        }
+    } else {
+        Family {
+            s: [s0, s1],
+            t: [t0, t1],
+        }
+    }
+}

@@ -1,0 +1,125 @@
+//! A tiny planar vector type: the algorithms need only a handful of operations.
+
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A point or vector in the plane.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct V2 {
+    /// x coordinate.
+    pub x: f64,
+    /// y coordinate.
+    pub y: f64,
+}
+
+impl V2 {
+    /// The vector `(x, y)`.
+    pub const fn new(x: f64, y: f64) -> Self {
+        Self { x, y }
+    }
+    /// From an array.
+    pub fn from_arr(a: [f64; 2]) -> Self {
+        Self::new(a[0], a[1])
+    }
+    /// As an array.
+    pub fn arr(self) -> [f64; 2] {
+        [self.x, self.y]
+    }
+    /// Dot product.
+    pub fn dot(self, o: V2) -> f64 {
+        self.x * o.x + self.y * o.y
+    }
+    /// The z component of the cross product.
+    pub fn cross(self, o: V2) -> f64 {
+        self.x * o.y - self.y * o.x
+    }
+    /// Euclidean length.
+    pub fn norm(self) -> f64 {
+        self.x.hypot(self.y)
+    }
+    /// Rotated by +90°: the left normal direction.
+    pub fn perp(self) -> V2 {
+        V2::new(-self.y, self.x)
+    }
+    /// Unit vector in the same direction (the zero vector stays zero).
+    pub fn unit(self) -> V2 {
+        let n = self.norm();
+        if n > 0.0 {
+            self * (1.0 / n)
+        } else {
+            self
+        }
+    }
+    /// Polar angle in `(−π, π]`.
+    pub fn angle(self) -> f64 {
+        self.y.atan2(self.x)
+    }
+    /// Unit vector at polar angle `a`.
+    pub fn polar(a: f64) -> V2 {
+        let (s, c) = a.sin_cos();
+        V2::new(c, s)
+    }
+}
+
+impl Add for V2 {
+    type Output = V2;
+    fn add(self, o: V2) -> V2 {
+        V2::new(self.x + o.x, self.y + o.y)
+    }
+}
+impl Sub for V2 {
+    type Output = V2;
+    fn sub(self, o: V2) -> V2 {
+        V2::new(self.x - o.x, self.y - o.y)
+    }
+}
+impl Neg for V2 {
+    type Output = V2;
+    fn neg(self) -> V2 {
+        V2::new(-self.x, -self.y)
+    }
+}
+impl Mul<f64> for V2 {
+    type Output = V2;
+    fn mul(self, s: f64) -> V2 {
+        V2::new(self.x * s, self.y * s)
+    }
+}
+
+/// The angle `a` wrapped into `(−π, π]`.
+pub(crate) fn wrap_pi(a: f64) -> f64 {
+    let t = std::f64::consts::TAU;
+    let mut r = a.rem_euclid(t);
+    if r > std::f64::consts::PI {
+        r -= t;
+    }
+    r
+}
+
+/// Point, first, second and third derivative of a curve at one parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Jet {
+    /// The point.
+    pub p: V2,
+    /// First derivative.
+    pub d1: V2,
+    /// Second derivative.
+    pub d2: V2,
+    /// Third derivative.
+    pub d3: V2,
+}
+
+impl Jet {
+    /// Unit tangent.
+    pub fn tangent(&self) -> V2 {
+        self.d1.unit()
+    }
+    /// Unit left normal (the inward normal of a counterclockwise curve).
+    pub fn normal(&self) -> V2 {
+        self.d1.unit().perp()
+    }
+    /// Signed curvature (positive where the curve turns left).
+    pub fn curvature(&self) -> f64 {
+        let s = self.d1.norm();
+        self.d1.cross(self.d2) / (s * s * s)
+    }
+}

@@ -1,0 +1,41 @@
+//! All antipodal point pairs of a closed plane curve, its inflections, and all common tangent
+//! lines of two curves, by Yan-Bin Jia's method:
+//!
+//! - Jia, *Computation on Parametric Curves with an Application in Grasping* (IJRR 2004):
+//!   dissection at inflections (§5), common tangents (§2, Appendix B), the Antipodal-Points
+//!   procedure of Table 1 with Bisect (§4.1) and March (§4.2), the primitives of Appendix A.
+//! - Jia, *Curvature-Based Computation of Antipodal Grasps* (ICRA 2002).
+//!
+//! Two points are antipodal when their inward normals are opposite, collinear and point at each
+//! other (a two-finger force-closure grasp). The curve is cut into monotone pieces (curvature of
+//! one sign, total curvature below π); every pair of pieces is reduced to sections with opposite
+//! normals whose normals face each other, and each section is searched by bisection and marching
+//! with provable convergence. No multi-start Newton and no sampling of the `(s, t)` square.
+//!
+//! For B-spline and NURBS curves ([`SplineCurve`]) every existence decision — inflections,
+//! tangent-turning bounds, and the roots of each primitive — rests on sign tests of B-spline
+//! coefficients (certified root isolation from `bspline`). Analytic shapes use Jia's sampled
+//! inflection search and sign tests at segment ends; their results say `certified: false`.
+
+mod curve;
+mod dissect;
+mod driver;
+mod error;
+mod families;
+mod geom;
+mod pairs;
+mod prims;
+mod search;
+pub mod shapes;
+mod tangent;
+mod types;
+mod view;
+
+pub use curve::{PlaneCurve, SplineCurve};
+pub use driver::{antipodal, common_tangents, inflections};
+pub use error::{Error, Result};
+pub use geom::{Jet, V2};
+pub use types::{
+    Antipodal, AntipodalPair, Family, Inflection, Inflections, Options, PairType, TangentLine,
+    Tangents,
+};

@@ -1,0 +1,257 @@
+//! Segment pairs with opposite normals (Jia §5.2): intersecting normal cones.
+
+use crate::dissect::Piece;
+use crate::geom::V2;
+use crate::view::View;
+use std::f64::consts::{PI, TAU};
+
+/// Two monotone segments `S` over `(sa, sb)` (`sa < sb`) and `T` over `(ta, tb)` (either order)
+/// with `N(sa) = −N(ta)`, `N(sb) = −N(tb)`: conditions (i)–(iii).
+#[derive(Clone, Copy)]
+pub(crate) struct Pair<'a> {
+    pub(crate) vs: &'a View<'a>,
+    pub(crate) vt: &'a View<'a>,
+    pub(crate) sa: f64,
+    pub(crate) sb: f64,
+    pub(crate) ta: f64,
+    pub(crate) tb: f64,
+    pub(crate) s_convex: bool,
+    pub(crate) t_convex: bool,
+}
+
+impl<'a> Pair<'a> {
+    pub(crate) fn t_range(&self) -> (f64, f64) {
+        (self.ta.min(self.tb), self.ta.max(self.tb))
+    }
+
+    /// The same pair with the roles of `S` and `T` exchanged.
+    pub(crate) fn swapped(&self) -> Pair<'a> {
+        let (sa, sb, ta, tb) = if self.ta <= self.tb {
+            (self.ta, self.tb, self.sa, self.sb)
+        } else {
+            (self.tb, self.ta, self.sb, self.sa)
+        };
+        Pair {
+            vs: self.vt,
+            vt: self.vs,
+            sa,
+            sb,
+            ta,
+            tb,
+            s_convex: self.t_convex,
+            t_convex: self.s_convex,
+        }
+    }
+
+    /// The sub-pair over `(s0, s1)` whose opposite points are `t0`, `t1`.
+    pub(crate) fn sub(&self, s0: f64, t0: f64, s1: f64, t1: f64) -> Pair<'a> {
+        Pair {
+            sa: s0,
+            ta: t0,
+            sb: s1,
+            tb: t1,
+            ..*self
+        }
+    }
+
+    /// The opposite point of `s` on `T` (point-with-normal with `−N(s)`).
+    pub(crate) fn opposite(&self, s: f64) -> Option<f64> {
+        let (lo, hi) = self.t_range();
+        self.vt.point_with_normal(lo, hi, -self.vs.normal(s))
+    }
+
+    /// The opposite point of `s`, searched between two known opposite points.
+    pub(crate) fn opposite_within(&self, s: f64, t0: f64, t1: f64) -> f64 {
+        let n = -self.vs.normal(s);
+        let (lo, hi) = (t0.min(t1), t0.max(t1));
+        self.vt
+            .point_with_normal_near(lo, hi, n, t0)
+            .or_else(|| self.opposite(s))
+            .unwrap_or(0.5 * (t0 + t1))
+    }
+
+    /// `r(s) = α(t) − α(s)`.
+    pub(crate) fn r(&self, s: f64, t: f64) -> V2 {
+        self.vt.point(t) - self.vs.point(s)
+    }
+
+    /// `sin θ = N(s) × r / |r|`: the sign of the antipodal angle (footnote 15).
+    pub(crate) fn sin_theta(&self, s: f64, t: f64) -> f64 {
+        let r = self.r(s, t);
+        self.vs.normal(s).cross(r) / r.norm().max(f64::MIN_POSITIVE)
+    }
+
+    /// `d(s) = N(s) · r(s)`: signed distance between the parallel tangent lines (§2.2).
+    pub(crate) fn d(&self, s: f64, t: f64) -> f64 {
+        self.vs.normal(s).dot(self.r(s, t))
+    }
+}
+
+/// Intersects the normal cone of `p` with the outward-normal cone of `q` and returns the pair of
+/// sub-segments with opposite normals, if the cones overlap.
+pub(crate) fn opposite_pair<'a>(
+    vs: &'a View<'a>,
+    p: &Piece,
+    vt: &'a View<'a>,
+    q: &Piece,
+) -> Option<Pair<'a>> {
+    // Normals are opposite exactly when tangent angles differ by π.
+    let (p0, p1) = ordered(p.psi_lo, p.psi_lo + p.rot);
+    let (q0, q1) = ordered(q.psi_lo + PI, q.psi_lo + PI + q.rot);
+    let mut best: Option<(f64, f64, f64)> = None;
+    // Unwrapped angles of different pieces may be many turns apart: centre the search.
+    let k0 = ((0.5 * (p0 + p1) - 0.5 * (q0 + q1)) / TAU).round();
+    for k in -1..=1 {
+        let shift = TAU * (k0 + k as f64);
+        let (lo, hi) = (p0.max(q0 + shift), p1.min(q1 + shift));
+        if hi > lo && best.is_none_or(|b| hi - lo > b.1 - b.0) {
+            best = Some((lo, hi, shift));
+        }
+    }
+    let (lo, hi, shift) = best?;
+    if hi - lo <= 1e-12 {
+        return None;
+    }
+    // Angles within rounding of a piece end snap to that end (its own normal there).
+    const SNAP: f64 = 1e-10;
+    let s_at = |ang: f64| -> Option<f64> {
+        if (ang - p.psi_lo).abs() <= SNAP {
+            Some(p.lo)
+        } else if (ang - (p.psi_lo + p.rot)).abs() <= SNAP {
+            Some(p.hi)
+        } else {
+            vs.point_with_normal(p.lo, p.hi, V2::polar(ang).perp())
+        }
+    };
+    let t_at = |ang: f64| -> Option<f64> {
+        let a = ang - shift - PI;
+        if (ang - shift - (q.psi_lo + PI)).abs() <= SNAP {
+            Some(q.lo)
+        } else if (ang - shift - (q.psi_lo + PI + q.rot)).abs() <= SNAP {
+            Some(q.hi)
+        } else {
+            vt.point_with_normal(q.lo, q.hi, V2::polar(a).perp())
+        }
+    };
+    let (s0, s1) = (s_at(lo)?, s_at(hi)?);
+    let (t0, t1) = (t_at(lo)?, t_at(hi)?);
+    let (sa, ta, sb, tb) = if s0 <= s1 {
+        (s0, t0, s1, t1)
+    } else {
+        (s1, t1, s0, t0)
+    };
+    if sb - sa <= vs.tol {
+        return None;
+    }
+    Some(Pair {
+        vs,
+        vt,
+        sa,
+        sb,
+        ta,
+        tb,
+        s_convex: p.convex,
+        t_convex: q.convex,
+    })
+}
+
+fn ordered(a: f64, b: f64) -> (f64, f64) {
+    if a <= b {
+        (a, b)
+    } else {
+        (b, a)
+    }
+}
+
+/// Newton's method on the antipodal system `α′(s) × α′(t) = 0`, `(α(t) − α(s)) · α′(s) = 0`
+/// from a nearby pair: a few steps to full precision. `None` when it moves farther than
+/// `max_move` or does not reduce the residual.
+pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Option<(f64, f64)> {
+    let resid = |s: f64, t: f64| {
+        let (js, jt) = (vs.jet_to(s, 1), vt.jet_to(t, 1));
+        let r = jt.p - js.p;
+        (js.d1.cross(jt.d1) / (js.d1.norm() * jt.d1.norm())).abs()
+            + (r.dot(js.d1) / (r.norm() * js.d1.norm())).abs()
+    };
+    let (s0, t0) = (s, t);
+    let (mut s, mut t) = (s, t);
+    let mut best = resid(s, t);
+    for _ in 0..8 {
+        let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
+        let r = jt.p - js.p;
+        let f1 = js.d1.cross(jt.d1);
+        let f2 = r.dot(js.d1);
+        let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
+        let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
+        let det = a11 * a22 - a12 * a21;
+        if det == 0.0 || !det.is_finite() {
+            break;
+        }
+        let ds = (f1 * a22 - f2 * a12) / det;
+        let dt = (a11 * f2 - a21 * f1) / det;
+        let (ns, nt) = (s - ds, t - dt);
+        if (ns - s0).abs() > max_move || (nt - t0).abs() > max_move {
+            return None;
+        }
+        let nr = resid(ns, nt);
+        if nr > best {
+            break;
+        }
+        best = nr;
+        s = ns;
+        t = nt;
+        if ds.abs() + dt.abs() <= 1e-17 * (1.0 + s.abs() + t.abs()) {
+            break;
+        }
+    }
+    Some((s, t))
+}
+
+/// Newton's method on the common-tangent system `α′(s) × β′(t) = 0`, `(β(t) − α(s)) × α′(s) = 0`
+/// from a found tangent: polishes it to full precision (`None` if it moves away).
+pub(crate) fn polish_tangent(
+    vs: &View,
+    vt: &View,
+    s: f64,
+    t: f64,
+    max_move: f64,
+) -> Option<(f64, f64)> {
+    let resid = |s: f64, t: f64| {
+        let (js, jt) = (vs.jet_to(s, 1), vt.jet_to(t, 1));
+        let r = jt.p - js.p;
+        (js.d1.cross(jt.d1) / (js.d1.norm() * jt.d1.norm())).abs()
+            + (r.cross(js.d1) / (r.norm() * js.d1.norm())).abs()
+    };
+    let (s0, t0) = (s, t);
+    let (mut s, mut t) = (s, t);
+    let mut best = resid(s, t);
+    for _ in 0..8 {
+        let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
+        let r = jt.p - js.p;
+        let f1 = js.d1.cross(jt.d1);
+        let f2 = r.cross(js.d1);
+        let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
+        let (a21, a22) = (r.cross(js.d2), jt.d1.cross(js.d1));
+        let det = a11 * a22 - a12 * a21;
+        if det == 0.0 || !det.is_finite() {
+            break;
+        }
+        let ds = (f1 * a22 - f2 * a12) / det;
+        let dt = (a11 * f2 - a21 * f1) / det;
+        let (ns, nt) = (s - ds, t - dt);
+        if (ns - s0).abs() > max_move || (nt - t0).abs() > max_move {
+            return None;
+        }
+        let nr = resid(ns, nt);
+        if nr > best {
+            break;
+        }
+        best = nr;
+        s = ns;
+        t = nt;
+        if ds.abs() + dt.abs() <= 1e-17 * (1.0 + s.abs() + t.abs()) {
+            break;
+        }
+    }
+    Some((s, t))
+}

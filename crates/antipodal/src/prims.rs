@@ -1,0 +1,210 @@
+//! The numerical primitives of Jia's Appendix A.
+//!
+//! Each one finds the unique root of a scalar function of the curve parameter on a monotone
+//! segment. For spline curves existence and the bracket come from certified root isolation of
+//! the primitive's symbolic B-spline (control-polygon sign tests); otherwise from the signs at
+//! the ends (Jia's criterion, exact on a monotone segment), refined by Newton's method inside
+//! the bracket, which cannot fail.
+
+use crate::geom::V2;
+use crate::view::{newton_bracketed, Count, View};
+use bspline::roots::{Root, RootKind};
+use bspline::BSpline;
+
+/// Which root to take when several qualify.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Prefer {
+    Low,
+    High,
+}
+
+impl View<'_> {
+    /// Shared driver: `f` gives value and derivative, `sym` builds the symbolic numerator
+    /// (same sign as `f`), `accept` filters roots by geometry.
+    // The closures and the bracket are the primitive; bundling them would only rename them.
+    #[allow(clippy::too_many_arguments)]
+    fn solve(
+        &self,
+        lo: f64,
+        hi: f64,
+        f: impl Fn(f64) -> (f64, f64),
+        sym: impl FnOnce() -> Option<BSpline>,
+        accept: impl Fn(f64) -> bool,
+        prefer: Prefer,
+        hint: f64,
+    ) -> Option<f64> {
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        let (flo, fhi) = (f(lo).0, f(hi).0);
+        if self.cert.is_some() {
+            if let Some(g) = sym() {
+                match self.cert_count(&g, lo, hi) {
+                    Some(Count::Zero) => return None,
+                    Some(Count::One(a, b)) => {
+                        // Certified unique root in [a, b]: refine on the curve itself.
+                        let (fa, fb) = (f(a).0, f(b).0);
+                        if (fa < 0.0) != (fb < 0.0) {
+                            let u = newton_bracketed(&f, a, b, fa, self.tol, hint);
+                            return accept(u).then_some(u);
+                        }
+                    }
+                    None => {}
+                }
+                if let Some(roots) = self.cert_roots(&g, lo, hi) {
+                    return self.pick(roots, lo, hi, &f, &accept, prefer, flo, fhi);
+                }
+            }
+            self.uncertify();
+        }
+        sampled(lo, hi, flo, fhi, &f, &accept, self.tol, hint)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn pick(
+        &self,
+        roots: Vec<Root>,
+        lo: f64,
+        hi: f64,
+        f: &impl Fn(f64) -> (f64, f64),
+        accept: &impl Fn(f64) -> bool,
+        prefer: Prefer,
+        flo: f64,
+        fhi: f64,
+    ) -> Option<f64> {
+        let mut good = roots.iter().filter(|r| accept(r.u));
+        let chosen = match prefer {
+            Prefer::Low => good.next(),
+            Prefer::High => good.last(),
+        };
+        match chosen {
+            Some(r) => {
+                if r.kind == RootKind::Cluster || !r.certified {
+                    self.uncertify();
+                }
+                // A root within rounding of an interval end may be reported as a cluster:
+                // polish it on the curve itself.
+                let u = if r.kind == RootKind::Cluster {
+                    polish(f, r.u, lo, hi)
+                } else {
+                    r.u
+                };
+                Some(u.clamp(lo, hi))
+            }
+            None => {
+                // A root exactly at an end can escape isolation (its coefficient is within
+                // rounding of zero and has no trusted sign): take the end itself then.
+                let small = 1e-13 * (flo.abs() + fhi.abs());
+                if flo.abs() <= small && accept(lo) {
+                    self.uncertify();
+                    Some(lo)
+                } else if fhi.abs() <= small && accept(hi) {
+                    self.uncertify();
+                    Some(hi)
+                } else {
+                    None
+                }
+            }
+        }
+    }
+
+    /// `point-with-normal(lo, hi, n)`: the point whose inward normal points along `n`.
+    pub(crate) fn point_with_normal(&self, lo: f64, hi: f64, n: V2) -> Option<f64> {
+        self.point_with_normal_near(lo, hi, n, f64::NAN)
+    }
+
+    /// `point-with-normal` started from a nearby parameter `hint`.
+    pub(crate) fn point_with_normal_near(&self, lo: f64, hi: f64, n: V2, hint: f64) -> Option<f64> {
+        let f = |u: f64| {
+            let j = self.jet_to(u, 2);
+            (j.d1.dot(n), j.d2.dot(n))
+        };
+        let sym = || {
+            let d = &self.cert.as_ref()?.tangent;
+            Some(d.map_points(1, |p, o| o[0] = p[0] * n.x + p[1] * n.y))
+        };
+        let accept = |u: f64| self.normal(u).dot(n) > 0.0;
+        self.solve(lo, hi, f, sym, accept, Prefer::Low, hint)
+    }
+
+    /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
+    pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
+        let f = |u: f64| {
+            let j = self.jet_to(u, 2);
+            let r = j.p - p;
+            (r.cross(j.d1), r.cross(j.d2))
+        };
+        let sym = || {
+            let c = &self.cert.as_ref()?.curve;
+            bspline::symbolic::tangency_from(c, p.arr()).ok()
+        };
+        self.solve(lo, hi, f, sym, |_| true, prefer, f64::NAN)
+    }
+
+    /// `point-on-ray(lo, hi, c)`: where the segment meets the ray from `c` along the unit
+    /// vector `dir` (the inward normal at `c`).
+    pub(crate) fn point_on_ray(
+        &self,
+        lo: f64,
+        hi: f64,
+        c: V2,
+        dir: V2,
+        prefer: Prefer,
+    ) -> Option<f64> {
+        let v = dir.perp();
+        let f = |u: f64| {
+            let j = self.jet_to(u, 1);
+            ((j.p - c).dot(v), j.d1.dot(v))
+        };
+        let sym = || {
+            let cc = &self.cert.as_ref()?.curve;
+            bspline::symbolic::offset_dot(cc, c.arr(), v.arr()).ok()
+        };
+        let accept = |u: f64| (self.point(u) - c).dot(dir) > 0.0;
+        self.solve(lo, hi, f, sym, accept, prefer, f64::NAN)
+    }
+}
+
+/// Jia's existence test (different signs at the ends) and a bracketed Newton solve.
+#[allow(clippy::too_many_arguments)]
+fn sampled(
+    lo: f64,
+    hi: f64,
+    flo: f64,
+    fhi: f64,
+    f: &impl Fn(f64) -> (f64, f64),
+    accept: &impl Fn(f64) -> bool,
+    tol: f64,
+    hint: f64,
+) -> Option<f64> {
+    let u = if flo == 0.0 {
+        lo
+    } else if fhi == 0.0 {
+        hi
+    } else if (flo < 0.0) != (fhi < 0.0) {
+        newton_bracketed(f, lo, hi, flo, tol, hint)
+    } else if flo.abs() <= 1e-12 * fhi.abs() {
+        lo
+    } else if fhi.abs() <= 1e-12 * flo.abs() {
+        hi
+    } else {
+        return None;
+    };
+    accept(u).then_some(u)
+}
+
+/// A few Newton steps kept inside `[lo, hi]`.
+fn polish(f: &impl Fn(f64) -> (f64, f64), u: f64, lo: f64, hi: f64) -> f64 {
+    let mut x = u;
+    for _ in 0..8 {
+        let (v, d) = f(x);
+        if d == 0.0 || v == 0.0 {
+            break;
+        }
+        let nx = (x - v / d).clamp(lo, hi);
+        if (nx - x).abs() <= 1e-16 * (1.0 + x.abs()) {
+            x = nx;
+            break;
+        }
+        x = nx;
+    }
+    x
+}

@@ -1,0 +1,310 @@
+//! Antipodal-Points (Jia Table 1): Bisect (§4.1) and March (§4.2.1, §4.2.2) calling each other
+//! on a pair satisfying conditions (i)–(v).
+
+use crate::pairs::{polish, Pair};
+use crate::prims::Prefer;
+
+/// |sin θ| below this is numerically zero (the antipodal angle of a found pair).
+pub(crate) const THETA_NOISE: f64 = 1e-9;
+
+/// Work limits shared by one run.
+pub(crate) struct Budget {
+    pub(crate) sections: usize,
+    pub(crate) exhausted: bool,
+}
+
+/// Finds all antipodal pairs `(s, t)` of `pair`, appending them to `out`.
+pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &mut Budget) {
+    let mut stack = vec![*pair];
+    LIMIT_HIT.with(|c| c.set(false));
+    while let Some(p) = stack.pop() {
+        if LIMIT_HIT.with(|c| c.get()) {
+            budget.exhausted = true;
+        }
+        if budget.sections == 0 {
+            budget.exhausted = true;
+            return;
+        }
+        budget.sections -= 1;
+        if p.sb - p.sa <= p.vs.tol {
+            continue;
+        }
+        let ta = p.sin_theta(p.sa, p.ta);
+        let tb = p.sin_theta(p.sb, p.tb);
+        if (ta < 0.0) != (tb < 0.0) && ta != 0.0 && tb != 0.0 {
+            // Bisect: one pair for sure; march on both remainders unless both are concave.
+            let Some(found) = bisect(&p, ta) else {
+                continue;
+            };
+            out.push((found.s, found.t));
+            if p.s_convex || p.t_convex {
+                stack.extend(remainders(&p, found.s, true, true, ta < 0.0));
+            }
+        } else {
+            let found = match (p.s_convex, p.t_convex) {
+                (true, true) => march_convex(&p, ta),
+                (false, false) => None,
+                (true, false) => march_mixed(&p),
+                (false, true) => march_mixed(&p.swapped()).map(|(s, t, up)| {
+                    // Back to the original roles; "up" is in t, so flip it when t runs down.
+                    (t, s, if p.ta <= p.tb { up } else { !up })
+                }),
+            };
+            if let Some((s, t, moved_up)) = found {
+                out.push((s, t));
+                // The marched side is free of pairs: continue on the other side only.
+                stack.extend(remainders(
+                    &p,
+                    s,
+                    moved_up,
+                    !moved_up,
+                    (ta < 0.0) == moved_up,
+                ));
+            }
+        }
+    }
+    if LIMIT_HIT.with(|c| c.get()) {
+        budget.exhausted = true;
+    }
+}
+
+struct Found {
+    s: f64,
+    t: f64,
+}
+
+/// Sub-pairs on either side of a found pair, cut at `s* ± ε` (Table 1). The side a pair was
+/// approached from keeps its sign, the other side has the opposite one (`below_neg`: θ < 0
+/// below `s*`). ε starts at 1e-6 of the section (the escape from `s*` then takes fewer march
+/// steps) and comes closer whenever θ shows the wrong sign there (another pair within ε),
+/// down to the parameter tolerance; it grows while θ is within rounding of zero.
+fn remainders<'a>(
+    p: &Pair<'a>,
+    s: f64,
+    above: bool,
+    below: bool,
+    below_neg: bool,
+) -> Vec<Pair<'a>> {
+    let mut out = Vec::new();
+    let min_eps = 16.0 * p.vs.tol;
+    for (want, dir, want_neg) in [(below, -1.0, below_neg), (above, 1.0, !below_neg)] {
+        if !want {
+            continue;
+        }
+        let mut eps = (1e-6 * (p.sb - p.sa)).max(min_eps);
+        for _ in 0..64 {
+            let se = s + dir * eps;
+            if se <= p.sa || se >= p.sb {
+                if eps > min_eps {
+                    eps = (eps / 8.0).max(min_eps);
+                    continue;
+                }
+                break;
+            }
+            let Some(te) = p.opposite(se) else {
+                break;
+            };
+            let th = p.sin_theta(se, te);
+            if th.abs() <= THETA_NOISE {
+                eps *= 2.0;
+                continue;
+            }
+            if (th < 0.0) == want_neg || eps <= min_eps {
+                out.push(if dir < 0.0 {
+                    p.sub(p.sa, p.ta, se, te)
+                } else {
+                    p.sub(se, te, p.sb, p.tb)
+                });
+                break;
+            }
+            eps = (eps / 8.0).max(min_eps);
+        }
+    }
+    out
+}
+
+/// §4.1: bisection on the sign of θ (regula falsi, Illinois variant, inside the bracket).
+fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
+    let (mut s0, mut t0, mut f0) = (p.sa, p.ta, theta_a);
+    let (mut s1, mut t1) = (p.sb, p.tb);
+    let mut f1 = p.sin_theta(s1, t1);
+    let mut side = 0i8;
+    for i in 0..300 {
+        if (s1 - s0).abs() <= p.vs.tol {
+            break;
+        }
+        // Illinois step, with a plain halving every few steps to bound the worst case.
+        let mut sm = if i % 5 == 4 {
+            0.5 * (s0 + s1)
+        } else {
+            (s0 * f1 - s1 * f0) / (f1 - f0)
+        };
+        if !(sm > s0.min(s1) && sm < s0.max(s1)) {
+            sm = 0.5 * (s0 + s1);
+        }
+        let tm = p.opposite_within(sm, t0, t1);
+        let fm = p.sin_theta(sm, tm);
+        if fm == 0.0 {
+            return Some(Found { s: sm, t: tm });
+        }
+        if (fm < 0.0) == (f0 < 0.0) {
+            s0 = sm;
+            t0 = tm;
+            f0 = fm;
+            if side == -1 {
+                f1 *= 0.5;
+            }
+            side = -1;
+        } else {
+            s1 = sm;
+            t1 = tm;
+            f1 = fm;
+            if side == 1 {
+                f0 *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    let (s, t) = if f0.abs() < f1.abs() {
+        (s0, t0)
+    } else {
+        (s1, t1)
+    };
+    Some(Found { s, t })
+}
+
+/// §4.2.1, two convex segments with θ of one sign at both ends: march from `s_b` down when
+/// θ < 0 (from `s_a` up when θ > 0), each step moving `s` to the point whose normal is parallel
+/// to `r(s_i)` and `t` to its opposite point. Returns `(s*, t*, moved_up)`.
+fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
+    let up = theta_a > 0.0;
+    let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
+    let mut last_step = f64::INFINITY;
+    for _ in 0..MARCH_STEPS {
+        let dir = p.r(s, t).unit();
+        let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
+        let ns = p.vs.point_with_normal_near(lo, hi, dir, s)?;
+        let nt = p.opposite_within(ns, t, if up { p.tb } else { p.ta });
+        let step = (ns - s).abs();
+        s = ns;
+        t = nt;
+        if converged(p, step, last_step, s, t) {
+            return Some((s, t, up));
+        }
+        match finish_early(p, s, t, step, last_step, up) {
+            Early::Found(f) => return Some(f),
+            Early::Nothing => return None,
+            Early::Continue => {}
+        }
+        last_step = step;
+    }
+    LIMIT_HIT.with(|c| c.set(true));
+    None
+}
+
+/// §4.2.2, `S` convex and `T` concave: march from the end whose normal ray at `t` meets `S`,
+/// each step moving `s` to where the ray of `N(t_i)` meets `S`. Returns `(s*, t*, moved_up)`.
+fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
+    let ray_hits = |t: f64| {
+        let (pt, n) = (p.vt.point(t), p.vt.normal(t));
+        let c0 = (p.vs.point(p.sa) - pt).cross(n);
+        let c1 = (p.vs.point(p.sb) - pt).cross(n);
+        (c0 < 0.0) != (c1 < 0.0)
+    };
+    // Lemma 9: no ray meets S, no pair.
+    let up = if ray_hits(p.ta) {
+        true
+    } else if ray_hits(p.tb) {
+        false
+    } else {
+        return None;
+    };
+    let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
+    let mut last_step = f64::INFINITY;
+    for _ in 0..MARCH_STEPS {
+        let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
+        let prefer = if up { Prefer::Low } else { Prefer::High };
+        let ns =
+            p.vs.point_on_ray(lo, hi, p.vt.point(t), p.vt.normal(t), prefer)?;
+        let nt = p.opposite_within(ns, t, if up { p.tb } else { p.ta });
+        let step = (ns - s).abs();
+        s = ns;
+        t = nt;
+        if converged(p, step, last_step, s, t) {
+            return Some((s, t, up));
+        }
+        match finish_early(p, s, t, step, last_step, up) {
+            Early::Found(f) => return Some(f),
+            Early::Nothing => return None,
+            Early::Continue => {}
+        }
+        last_step = step;
+    }
+    LIMIT_HIT.with(|c| c.set(true));
+    None
+}
+
+enum Early {
+    Found((f64, f64, bool)),
+    Nothing,
+    Continue,
+}
+
+/// Once the march is converging (steps shrinking, below 1e-4 of the period), Newton on the
+/// antipodal system finishes it. The pair it reaches must lie ahead in the marching direction
+/// with the antipodal angle keeping its sign in between (no pair skipped): inside the section
+/// it is the pair the march converges to; beyond the section's far end (a pair just cut off
+/// there) the march would only crawl up to that end, finding nothing. Otherwise the march goes
+/// on.
+fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Early {
+    // Linear convergence with ratio q puts the limit about step·q/(1−q) ahead.
+    let q = step / last;
+    if !(q < 0.98 && step <= 1e-4 * p.vs.period) {
+        return Early::Continue;
+    }
+    let ahead_by = step * q / (1.0 - q);
+    let Some((ps, pt)) = polish(p.vs, p.vt, s, t, 4.0 * ahead_by + 1e3 * p.vs.tol) else {
+        return Early::Continue;
+    };
+    let ahead = if up {
+        ps >= s - p.vs.tol
+    } else {
+        ps <= s + p.vs.tol
+    };
+    if !ahead || p.sin_theta(ps, pt).abs() > 1e-12 {
+        return Early::Continue;
+    }
+    let sign = p.sin_theta(s, t) < 0.0;
+    let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
+    let beyond = if up { ps >= end_s } else { ps <= end_s };
+    if beyond {
+        // The far end itself must still show the marching sign.
+        return if (p.sin_theta(end_s, end_t) < 0.0) == sign {
+            Early::Nothing
+        } else {
+            Early::Continue
+        };
+    }
+    let sm = 0.5 * (s + ps);
+    let tm = p.opposite_within(sm, t, pt);
+    if (p.sin_theta(sm, tm) < 0.0) == sign || (ps - s).abs() <= 4.0 * p.vs.tol {
+        Early::Found((ps, pt, up))
+    } else {
+        Early::Continue
+    }
+}
+
+thread_local! {
+    /// Set when a march used up its step bound (the result may then be incomplete).
+    static LIMIT_HIT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Bound on march steps: linear convergence needs O(ω) of them, a few hundred at worst.
+const MARCH_STEPS: usize = 4000;
+
+/// Converged: the steps shrink (linear convergence, not an escape from a nearby pair) and are
+/// below the tolerance, or the antipodal angle is zero to rounding.
+fn converged(p: &Pair, step: f64, last: f64, s: f64, t: f64) -> bool {
+    let shrinking = step <= last;
+    shrinking && (step <= p.vs.tol || (p.sin_theta(s, t).abs() <= 1e-15 && step <= 1e3 * p.vs.tol))
+}

@@ -1,0 +1,248 @@
+//! The analytic shapes of the interfaces file, with exact derivatives. All run counterclockwise
+//! over `φ ∈ [0, 2π)`.
+
+use crate::curve::PlaneCurve;
+use crate::error::{Error, Result};
+use crate::geom::{Jet, V2};
+use std::f64::consts::TAU;
+
+fn check(field: &'static str, value: f64, ok: bool, why: &'static str) -> Result<()> {
+    if ok && value.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::InvalidShape { field, value, why })
+    }
+}
+
+/// A polar curve `r(φ)(cos φ, sin φ)` from `r` and its first three derivatives.
+fn polar_jet(phi: f64, r: [f64; 4]) -> Jet {
+    let (s, c) = phi.sin_cos();
+    let [r0, r1, r2, r3] = r;
+    Jet {
+        p: V2::new(r0 * c, r0 * s),
+        d1: V2::new(r1 * c - r0 * s, r1 * s + r0 * c),
+        d2: V2::new(
+            r2 * c - 2.0 * r1 * s - r0 * c,
+            r2 * s + 2.0 * r1 * c - r0 * s,
+        ),
+        d3: V2::new(
+            r3 * c - 3.0 * r2 * s - 3.0 * r1 * c + r0 * s,
+            r3 * s + 3.0 * r2 * c - 3.0 * r1 * s - r0 * c,
+        ),
+    }
+}
+
+/// Circle `(cx + r cos φ, cy + r sin φ)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Circle {
+    r: f64,
+    center: V2,
+}
+
+impl Circle {
+    /// A circle of radius `r > 0`.
+    pub fn new(r: f64, center: [f64; 2]) -> Result<Self> {
+        check("r", r, r > 0.0, "must be > 0")?;
+        Ok(Self {
+            r,
+            center: V2::from_arr(center),
+        })
+    }
+}
+
+impl PlaneCurve for Circle {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn known_simple(&self) -> bool {
+        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
+        true
+    }
+    fn jet(&self, u: f64) -> Jet {
+        let (s, c) = u.sin_cos();
+        let r = self.r;
+        Jet {
+            p: self.center + V2::new(r * c, r * s),
+            d1: V2::new(-r * s, r * c),
+            d2: V2::new(-r * c, -r * s),
+            d3: V2::new(r * s, -r * c),
+        }
+    }
+}
+
+/// Ellipse `(cx + a cos φ, cy + b sin φ)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ellipse {
+    a: f64,
+    b: f64,
+    center: V2,
+}
+
+impl Ellipse {
+    /// An ellipse with semi-axes `a, b > 0`.
+    pub fn new(a: f64, b: f64, center: [f64; 2]) -> Result<Self> {
+        check("a", a, a > 0.0, "must be > 0")?;
+        check("b", b, b > 0.0, "must be > 0")?;
+        Ok(Self {
+            a,
+            b,
+            center: V2::from_arr(center),
+        })
+    }
+}
+
+impl PlaneCurve for Ellipse {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn known_simple(&self) -> bool {
+        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
+        true
+    }
+    fn jet(&self, u: f64) -> Jet {
+        let (s, c) = u.sin_cos();
+        let (a, b) = (self.a, self.b);
+        Jet {
+            p: self.center + V2::new(a * c, b * s),
+            d1: V2::new(-a * s, b * c),
+            d2: V2::new(-a * c, -b * s),
+            d3: V2::new(a * s, -b * c),
+        }
+    }
+}
+
+/// Limaçon `r(φ) = a + b cos φ`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limacon {
+    a: f64,
+    b: f64,
+}
+
+impl Limacon {
+    /// A simple limaçon: `a > b ≥ 0`.
+    pub fn new(a: f64, b: f64) -> Result<Self> {
+        check("b", b, b >= 0.0, "must be ≥ 0")?;
+        check("a", a, a > b, "must be > b for a simple curve")?;
+        Ok(Self { a, b })
+    }
+}
+
+impl PlaneCurve for Limacon {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn known_simple(&self) -> bool {
+        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
+        true
+    }
+    fn jet(&self, u: f64) -> Jet {
+        let (s, c) = u.sin_cos();
+        let (a, b) = (self.a, self.b);
+        polar_jet(u, [a + b * c, -b * s, -b * c, b * s])
+    }
+}
+
+/// Elliptic lemniscate `r(φ) = sqrt(a² cos² φ + b² sin² φ)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EllipticLemniscate {
+    a: f64,
+    b: f64,
+}
+
+impl EllipticLemniscate {
+    /// An elliptic lemniscate with `a, b > 0`.
+    pub fn new(a: f64, b: f64) -> Result<Self> {
+        check("a", a, a > 0.0, "must be > 0")?;
+        check("b", b, b > 0.0, "must be > 0")?;
+        Ok(Self { a, b })
+    }
+}
+
+impl PlaneCurve for EllipticLemniscate {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn known_simple(&self) -> bool {
+        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
+        true
+    }
+    fn jet(&self, u: f64) -> Jet {
+        // r² = g = A + B cos 2φ; differentiate r² = g three times.
+        let (aa, bb) = (self.a * self.a, self.b * self.b);
+        let (big_a, big_b) = (0.5 * (aa + bb), 0.5 * (aa - bb));
+        let (s2, c2) = (2.0 * u).sin_cos();
+        let g = big_a + big_b * c2;
+        let g1 = -2.0 * big_b * s2;
+        let g2 = -4.0 * big_b * c2;
+        let g3 = 8.0 * big_b * s2;
+        let r = g.sqrt();
+        let r1 = g1 / (2.0 * r);
+        let r2 = (0.5 * g2 - r1 * r1) / r;
+        let r3 = (0.5 * g3 - 3.0 * r1 * r2) / r;
+        polar_jet(u, [r, r1, r2, r3])
+    }
+}
+
+/// Curve with convexities `r(φ) = p / (1 + ε cos mφ)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Convexities {
+    p: f64,
+    eps: f64,
+    m: u32,
+}
+
+impl Convexities {
+    /// `p > 0`, `0 < ε < 1`, integer `m ≥ 2`.
+    pub fn new(p: f64, eps: f64, m: u32) -> Result<Self> {
+        check("p", p, p > 0.0, "must be > 0")?;
+        check("eps", eps, eps > 0.0 && eps < 1.0, "must be in (0, 1)")?;
+        check("m", m as f64, m >= 2, "must be an integer ≥ 2")?;
+        Ok(Self { p, eps, m })
+    }
+}
+
+impl PlaneCurve for Convexities {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn known_simple(&self) -> bool {
+        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
+        true
+    }
+    fn jet(&self, u: f64) -> Jet {
+        let m = self.m as f64;
+        let (s, c) = (m * u).sin_cos();
+        let e = self.eps;
+        let h = 1.0 + e * c;
+        let h1 = -e * m * s;
+        let h2 = -e * m * m * c;
+        let h3 = e * m * m * m * s;
+        let p = self.p;
+        let (i1, i2, i3, i4) = (
+            1.0 / h,
+            1.0 / (h * h),
+            1.0 / (h * h * h),
+            1.0 / (h * h * h * h),
+        );
+        let r = p * i1;
+        let r1 = -p * h1 * i2;
+        let r2 = p * (2.0 * h1 * h1 * i3 - h2 * i2);
+        let r3 = p * (-6.0 * h1 * h1 * h1 * i4 + 6.0 * h1 * h2 * i3 - h3 * i2);
+        polar_jet(u, [r, r1, r2, r3])
+    }
+}

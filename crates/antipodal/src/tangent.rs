@@ -1,0 +1,179 @@
+//! Common tangents of a segment pair (Jia §2.2–2.4, Appendix B).
+//!
+//! `d(s) = N(s) · (α(t) − α(s))` vanishes exactly at common tangents and has only simple zeros,
+//! at most two (Theorem 2). Different end signs at `sₐ`, `s_b`: exactly one. Equal end signs:
+//! none or two. Existence is decided by the Common-Tangent iteration of §2.3 itself, started
+//! with the endpoint ordering of §2.4: it converges whenever a tangent exists (Lemma 4), and its
+//! limit is verified (`d = 0` to rounding), so a run that fails to converge proves nothing
+//! exists to find. For segments bending the same way the configuration test of §2.2 and
+//! Appendix B (is an end point of one segment on two tangent lines of the other?) is evaluated
+//! too; our copy of the paper is truncated there, so where it disagrees with the iteration the
+//! result is marked uncertified rather than trusted.
+//! Once one tangent is known, the second lies where `d` changes sign again: a bisection on `d`
+//! backs the iteration up wherever a sign change brackets a tangent.
+
+use crate::geom::V2;
+use crate::pairs::Pair;
+use crate::prims::Prefer;
+use crate::view::View;
+
+/// Points of tangency `(s, t)` of the common tangents of `p`, sorted by `s`.
+pub(crate) fn common_tangents(p: &Pair) -> Vec<(f64, f64)> {
+    let da = p.d(p.sa, p.ta);
+    let db = p.d(p.sb, p.tb);
+    let odd = (da > 0.0) != (db > 0.0);
+    let mut out = Vec::new();
+    if odd {
+        let found = ct_from(p, true)
+            .or_else(|| ct_from(p, false))
+            .or_else(|| bisect_d(p, p.sa, p.ta, p.sb, p.tb));
+        out.extend(found);
+        return out;
+    }
+    // Equal end signs: none or two. The iteration converges whenever a tangent exists
+    // (Lemma 4) and its limit is verified, so it decides existence.
+    let first = ct_from(p, true).or_else(|| ct_any_order(p, true));
+    // Segments bending the same way: configuration (a) or none, by the region test. A
+    // disagreement with the (verified) iteration is reported as uncertified.
+    if p.s_convex != p.t_convex && two_tangents_same_bending(p) != first.is_some() {
+        p.vs.uncertify();
+    }
+    let Some(first) = first else {
+        return out;
+    };
+    out.push(first);
+    // The second one lies beyond the first: d changes sign once on (s_c, s_b].
+    let second = ct_from(p, false)
+        .filter(|q| q.0 > first.0 + 4.0 * p.vs.tol)
+        .or_else(|| {
+            let s1 = first.0 + 64.0 * p.vs.tol;
+            let t1 = p.opposite(s1)?;
+            bisect_d(p, s1, t1, p.sb, p.tb)
+        });
+    out.extend(second);
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    out
+}
+
+/// Common-Tangent started at the `a` ends (or the `b` ends) with the ordering rule of §2.4:
+/// if the translation from `L_a` to `L'_a` is along the bending direction of `S`, update `t`
+/// first.
+fn ct_from(p: &Pair, at_a: bool) -> Option<(f64, f64)> {
+    let (s0, t0) = if at_a { (p.sa, p.ta) } else { (p.sb, p.tb) };
+    let bend = if p.s_convex { 1.0 } else { -1.0 };
+    let t_first = p.d(s0, t0) * bend > 0.0;
+    common_tangent(p, at_a, t_first)
+}
+
+/// Both update orders (insurance where §2.2 gives no ordering: configuration (b)).
+fn ct_any_order(p: &Pair, at_a: bool) -> Option<(f64, f64)> {
+    common_tangent(p, at_a, false).or_else(|| common_tangent(p, at_a, true))
+}
+
+/// The iteration of §2.3: `x_{i+1}` = point of tangency on `X` of the tangent through
+/// `α(y_i)`, `y_{i+1}` = its opposite point on `Y`. Returns `(s, t)` once it converges to a
+/// verified common tangent.
+fn common_tangent(p: &Pair, at_a: bool, t_first: bool) -> Option<(f64, f64)> {
+    // X is the segment updated first.
+    let q = if t_first { p.swapped() } else { *p };
+    // In the swapped pair the a-ends are the ends of the smaller t; map `at_a` accordingly.
+    let at_a_q = if t_first && p.ta > p.tb { !at_a } else { at_a };
+    let (mut x, mut y) = if at_a_q { (q.sa, q.ta) } else { (q.sb, q.tb) };
+    let x_end = if at_a_q { q.sb } else { q.sa };
+    let prefer = if at_a_q { Prefer::Low } else { Prefer::High };
+    let tol = q.vs.tol;
+    for _ in 0..64 {
+        let py = q.vt.point(y);
+        let (lo, hi) = (x.min(x_end), x.max(x_end));
+        // Skip the current point itself: its tangent line is parallel to the one at y.
+        let nx = q.vs.point_of_tangency(lo, hi, py, prefer)?;
+        let ny = q.opposite(nx)?;
+        let done = (nx - x).abs() <= tol && (ny - y).abs() <= 4.0 * q.vt.tol;
+        x = nx;
+        y = ny;
+        if done {
+            break;
+        }
+    }
+    let (s, t) = if t_first { (y, x) } else { (x, y) };
+    verify(p, s, t).then_some((s, t))
+}
+
+fn verify(p: &Pair, s: f64, t: f64) -> bool {
+    let inside_s = s > p.sa - p.vs.tol && s < p.sb + p.vs.tol;
+    let (tl, th) = p.t_range();
+    let inside_t = t > tl - p.vt.tol && t < th + p.vt.tol;
+    let scale = p.vs.scale.max(p.vt.scale);
+    inside_s && inside_t && p.d(s, t).abs() <= 1e-9 * scale
+}
+
+/// Bisection on `d` over a bracket with a sign change (never fails).
+fn bisect_d(p: &Pair, s0: f64, t0: f64, s1: f64, t1: f64) -> Option<(f64, f64)> {
+    let (mut s0, mut t0, mut s1, mut t1) = (s0, t0, s1, t1);
+    let d0 = p.d(s0, t0);
+    if (d0 > 0.0) == (p.d(s1, t1) > 0.0) {
+        return None;
+    }
+    for _ in 0..200 {
+        if (s1 - s0).abs() <= p.vs.tol {
+            break;
+        }
+        let sm = 0.5 * (s0 + s1);
+        let tm = p.opposite_within(sm, t0, t1);
+        if (p.d(sm, tm) > 0.0) == (d0 > 0.0) {
+            s0 = sm;
+            t0 = tm;
+        } else {
+            s1 = sm;
+            t1 = tm;
+        }
+    }
+    let (s, t) = (0.5 * (s0 + s1), 0.5 * (t0 + t1));
+    let t = p.opposite(s).unwrap_or(t);
+    verify(p, s, t).then_some((s, t))
+}
+
+/// §2.2, configuration (a): segments bending the same way, `d` of one sign at both ends, have
+/// two common tangents when the end of one lies on two tangent lines of the other: `α(tₐ)` in
+/// the region `R₀` of `S`, or `α(sₐ)` in `R₀` of `T` (Appendix B).
+fn two_tangents_same_bending(p: &Pair) -> bool {
+    let (tl, th) = p.t_range();
+    in_r0(p.vs, p.sa, p.sb, p.s_convex, p.vt.point(p.ta))
+        || in_r0(p.vt, tl, th, p.t_convex, p.vs.point(p.sa))
+}
+
+/// Appendix B: `pt ∈ R₀` of the segment over `(a, b)` (on two of its tangent lines).
+fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
+    let (ja, jb) = (v.jet(a), v.jet(b));
+    let sign = if convex { 1.0 } else { -1.0 };
+    let (va, vb) = (ja.normal() * sign, jb.normal() * sign);
+    if (pt - ja.p).dot(va) <= 0.0 || (pt - jb.p).dot(vb) <= 0.0 {
+        return false;
+    }
+    let den = ja.d1.cross(jb.d1);
+    if den.abs() <= 1e-14 * ja.d1.norm() * jb.d1.norm() {
+        return false;
+    }
+    let o = ja.p + ja.d1 * ((jb.p - ja.p).cross(jb.d1) / den);
+    let tri = [ja.p, o, jb.p];
+    let s1 = (tri[1] - tri[0]).cross(pt - tri[0]);
+    let s2 = (tri[2] - tri[1]).cross(pt - tri[1]);
+    let s3 = (tri[0] - tri[2]).cross(pt - tri[2]);
+    let inside = (s1 >= 0.0 && s2 >= 0.0 && s3 >= 0.0) || (s1 <= 0.0 && s2 <= 0.0 && s3 <= 0.0);
+    if !inside {
+        return false;
+    }
+    // Foot point: root of (p − α(u)) · α′(u), of opposite signs at the ends inside the triangle.
+    let f = |u: f64| {
+        let j = v.jet(u);
+        let r = pt - j.p;
+        (r.dot(j.d1), r.dot(j.d2) - j.d1.dot(j.d1))
+    };
+    let (fa, fb) = (f(a).0, f(b).0);
+    if (fa > 0.0) == (fb > 0.0) {
+        return false;
+    }
+    let u = crate::view::newton_bracketed(f, a, b, fa, v.tol, f64::NAN);
+    let j = v.jet(u);
+    (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
+}

@@ -1,0 +1,144 @@
+//! Options and the plain result types (serde) of the public entry points.
+
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// Options of the algorithms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Parameter tolerance relative to the domain length (default `1e-12`).
+    pub tol: f64,
+    /// Use certified root isolation for spline curves (default `true`).
+    pub certify: bool,
+    /// Limit on the sections searched (a guard against floods on degenerate input).
+    pub max_sections: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            tol: 1e-12,
+            certify: true,
+            max_sections: 100_000,
+        }
+    }
+}
+
+impl Options {
+    /// Sets the parameter tolerance.
+    pub fn tolerance(mut self, tol: f64) -> Self {
+        self.tol = tol;
+        self
+    }
+    /// Turns certification on or off.
+    pub fn certify(mut self, on: bool) -> Self {
+        self.certify = on;
+        self
+    }
+    pub(crate) fn validate(&self) -> Result<()> {
+        if !(self.tol.is_finite() && self.tol > 0.0 && self.tol < 1e-3) {
+            return Err(Error::InvalidOption {
+                field: "tol",
+                value: self.tol,
+            });
+        }
+        Ok(())
+    }
+}
+
+/// The type of a simple antipodal pair (Jia 2004, §3.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum PairType {
+    /// Both convex, `1/κ(s) + 1/κ(t) < |r|`.
+    A,
+    /// Both convex, `1/κ(s) + 1/κ(t) > |r|`.
+    B,
+    /// Convex and concave, the concave osculating circle inside the convex one.
+    C,
+    /// Convex and concave, not contained.
+    D,
+    /// Both concave.
+    E,
+}
+
+/// One pair of antipodal points.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct AntipodalPair {
+    /// Parameter of the first point (`s < t`).
+    pub s: f64,
+    /// Parameter of the second point.
+    pub t: f64,
+    /// The first point.
+    pub p: [f64; 2],
+    /// The second point.
+    pub q: [f64; 2],
+    /// `|q − p|`.
+    pub distance: f64,
+    /// Type A–E.
+    #[serde(rename = "type")]
+    pub kind: PairType,
+}
+
+/// A point of simple inflection.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Inflection {
+    /// Parameter.
+    pub u: f64,
+    /// Point.
+    pub p: [f64; 2],
+}
+
+/// A continuum of antipodal pairs: every `s` in `s` pairs with one `t` in `t`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Family {
+    /// Parameter range on one side (may run across the seam: then `s[1] < s[0]`).
+    pub s: [f64; 2],
+    /// The matching range on the other side.
+    pub t: [f64; 2],
+}
+
+/// Result of [`antipodal`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Antipodal {
+    /// Isolated antipodal pairs, sorted by `s`.
+    pub pairs: Vec<AntipodalPair>,
+    /// Simple inflections, sorted by `u`.
+    pub inflections: Vec<Inflection>,
+    /// Continua of antipodal pairs (circles, concentric arcs).
+    pub families: Vec<Family>,
+    /// True when every decision followed from certified sign tests.
+    pub certified: bool,
+    /// False when a work limit was hit (the result may then be incomplete).
+    pub complete: bool,
+}
+
+/// Result of [`inflections`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Inflections {
+    /// Simple inflections, sorted by `u`.
+    pub inflections: Vec<Inflection>,
+    /// True when isolated by certified root finding.
+    pub certified: bool,
+}
+
+/// A line tangent to the first curve at `s` and to the second at `t`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TangentLine {
+    /// Parameter on the first curve.
+    pub s: f64,
+    /// Parameter on the second curve.
+    pub t: f64,
+    /// Point of tangency on the first curve.
+    pub p: [f64; 2],
+    /// Point of tangency on the second curve.
+    pub q: [f64; 2],
+}
+
+/// Result of [`common_tangents`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Tangents {
+    /// The lines, sorted by `s`.
+    pub lines: Vec<TangentLine>,
+    /// True when every decision followed from certified sign tests.
+    pub certified: bool,
+}

@@ -1,0 +1,283 @@
+//! An oriented, periodic view of a curve: the parametrisation the algorithms work in.
+//!
+//! Parameters are unwrapped reals: a closed curve is evaluated modulo its period, so segments may
+//! run across the seam and no pair is ever split or found twice there. A clockwise curve is
+//! viewed reversed (`u ↦ a + b − u`), so inside the algorithms every closed curve runs
+//! counterclockwise and the left normal is the inward normal, as the papers assume.
+
+use crate::curve::PlaneCurve;
+use crate::geom::{Jet, V2};
+use bspline::roots::{find_roots, Root, RootOptions};
+use bspline::{BSpline, Rational};
+use smallvec::SmallVec;
+use std::cell::Cell;
+
+/// Outcome of [`View::cert_count`].
+pub(crate) enum Count {
+    /// No root (certified).
+    Zero,
+    /// Exactly one simple root in this bracket (certified).
+    One(f64, f64),
+}
+
+/// Symbolic forms of a spline curve in the view's parametrisation.
+pub(crate) struct Cert {
+    /// The curve (reversed when the view is).
+    pub(crate) curve: Rational,
+    /// Tangent numerator `D` (dim 2): `C′ = D / w²`.
+    pub(crate) tangent: BSpline,
+    pub(crate) opts: RootOptions,
+}
+
+pub(crate) struct View<'a> {
+    curve: &'a dyn PlaneCurve,
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    pub(crate) period: f64,
+    pub(crate) closed: bool,
+    pub(crate) rev: bool,
+    pub(crate) cert: Option<Cert>,
+    /// Size of the curve (bounding-box diagonal): the scale for geometric tolerances.
+    pub(crate) scale: f64,
+    /// Parameter tolerance.
+    pub(crate) tol: f64,
+    /// Cleared when some decision fell back on sampling.
+    pub(crate) certified: Cell<bool>,
+}
+
+impl<'a> View<'a> {
+    pub(crate) fn new(
+        curve: &'a dyn PlaneCurve,
+        rev: bool,
+        certify: bool,
+        tol: f64,
+    ) -> crate::Result<Self> {
+        let (a, b) = curve.domain();
+        let closed = curve.is_closed();
+        let cert = match (certify, curve.rational()) {
+            (true, Some(r)) => {
+                let curve = if rev { reverse(r)? } else { r.clone() };
+                let tangent = bspline::symbolic::tangent_numerator(&curve)?;
+                Some(Cert {
+                    curve,
+                    tangent,
+                    opts: RootOptions::default().tolerance(tol.max(1e-15)),
+                })
+            }
+            _ => None,
+        };
+        let mut v = Self {
+            curve,
+            a,
+            b,
+            period: b - a,
+            closed,
+            rev,
+            cert,
+            scale: 1.0,
+            tol: tol * (b - a).max(1.0),
+            certified: Cell::new(certify && curve.rational().is_some()),
+        };
+        let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
+        for i in 0..64 {
+            let p = v.point(a + (b - a) * i as f64 / 63.0);
+            lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        v.scale = (hi - lo).norm().max(f64::MIN_POSITIVE);
+        Ok(v)
+    }
+
+    /// The parameter wrapped into `[a, b)` for closed curves (clamped for open ones).
+    pub(crate) fn wrap(&self, u: f64) -> f64 {
+        if self.closed {
+            let w = self.a + (u - self.a).rem_euclid(self.period);
+            if w >= self.b {
+                self.a
+            } else {
+                w
+            }
+        } else {
+            u.clamp(self.a, self.b)
+        }
+    }
+
+    /// The parameter of the underlying curve.
+    pub(crate) fn to_curve(&self, u: f64) -> f64 {
+        let w = self.wrap(u);
+        if self.rev {
+            let r = self.a + self.b - w;
+            if self.closed && r >= self.b {
+                self.a
+            } else {
+                r
+            }
+        } else {
+            w
+        }
+    }
+
+    pub(crate) fn jet(&self, u: f64) -> Jet {
+        self.jet_to(u, 3)
+    }
+
+    /// Point and derivatives up to `order` only (cheaper for splines).
+    pub(crate) fn jet_to(&self, u: f64, order: usize) -> Jet {
+        let j = self.curve.jet_to(self.to_curve(u), order);
+        if self.rev {
+            Jet {
+                p: j.p,
+                d1: -j.d1,
+                d2: j.d2,
+                d3: -j.d3,
+            }
+        } else {
+            j
+        }
+    }
+    pub(crate) fn point(&self, u: f64) -> V2 {
+        self.jet_to(u, 0).p
+    }
+    pub(crate) fn normal(&self, u: f64) -> V2 {
+        self.jet_to(u, 1).normal()
+    }
+
+    pub(crate) fn uncertify(&self) {
+        self.certified.set(false);
+    }
+
+    /// The unwrapped interval `[lo, hi]` as pieces `(x0, x1, shift)` inside the domain (split
+    /// at the seam): `x + shift` is the unwrapped parameter.
+    fn domain_pieces(&self, lo: f64, hi: f64) -> SmallVec<[(f64, f64, f64); 2]> {
+        let mut out = SmallVec::new();
+        let mut push = |x0: f64, x1: f64, shift: f64| {
+            let (x0, x1) = (x0.max(self.a), x1.min(self.b));
+            if x1 > x0 {
+                out.push((x0, x1, shift));
+            }
+        };
+        if !self.closed {
+            push(lo, hi, 0.0);
+        } else {
+            let k = ((lo - self.a) / self.period).floor();
+            let shift = k * self.period;
+            let (l, h) = (lo - shift, hi - shift);
+            if h <= self.b {
+                push(l, h, shift);
+            } else {
+                push(l, self.b, shift);
+                push(self.a, h - self.period, shift + self.period);
+            }
+        }
+        out
+    }
+
+    /// Certified roots of a scalar B-spline `f` (in the view's parameter) on the unwrapped
+    /// interval `[lo, hi]`, split at the seam.
+    pub(crate) fn cert_roots(&self, f: &BSpline, lo: f64, hi: f64) -> Option<Vec<Root>> {
+        let cert = self.cert.as_ref()?;
+        let mut out = Vec::new();
+        for (x0, x1, shift) in self.domain_pieces(lo, hi) {
+            for mut r in find_roots(f, x0, x1, &cert.opts).ok()? {
+                r.u += shift;
+                r.bracket = (r.bracket.0 + shift, r.bracket.1 + shift);
+                out.push(r);
+            }
+        }
+        Some(out)
+    }
+
+    /// The fast certified decision: the control polygon of `f` restricted to `[lo, hi]`, with
+    /// every coefficient's sign trusted (beyond its rounding bound), has no sign change (no
+    /// root) or exactly one (exactly one simple root, by variation diminishing). `None` when
+    /// that does not settle it (then full root isolation decides).
+    pub(crate) fn cert_count(&self, f: &BSpline, lo: f64, hi: f64) -> Option<Count> {
+        let mut one = None;
+        for (x0, x1, shift) in self.domain_pieces(lo, hi) {
+            let g = f.restrict(x0, x1).ok()?;
+            let c = g.coefs();
+            let err = 4.0 * (g.degree() + 2) as f64 * f64::EPSILON * g.max_abs_coef();
+            if c.iter().any(|x| x.abs() <= err) {
+                return None;
+            }
+            let changes = c
+                .windows(2)
+                .filter(|w| (w[0] < 0.0) != (w[1] < 0.0))
+                .count();
+            match (changes, one) {
+                (0, _) => {}
+                (1, None) => one = Some((x0 + shift, x1 + shift)),
+                _ => return None,
+            }
+        }
+        Some(match one {
+            None => Count::Zero,
+            Some((a, b)) => Count::One(a, b),
+        })
+    }
+}
+
+/// The same rational curve run backwards over the same domain.
+fn reverse(r: &Rational) -> crate::Result<Rational> {
+    let h = r.homogeneous();
+    let (a, b) = h.domain();
+    let knots: Vec<f64> = h.knots().iter().rev().map(|k| a + b - k).collect();
+    let d = h.dim();
+    let n = h.n_ctrl();
+    let coefs: Vec<f64> = (0..n).rev().flat_map(|i| h.ctrl(i).to_vec()).collect();
+    let _ = n;
+    let rev = BSpline::new(h.degree(), knots, d, coefs)?;
+    Ok(Rational::from_homogeneous(rev)?)
+}
+
+/// Newton's method safeguarded by a bracket `[lo, hi]` on which `f` changes sign: never fails.
+///
+/// `f` returns the value and derivative; `flo` is the value at `lo`; `hint` (NaN for none) is
+/// a starting point. A bisection step replaces
+/// Newton whenever Newton would leave the bracket or is not at least halving the step (the
+/// classic `rtsafe` safeguard), so the loop (≤ 200 steps) converges for any continuous `f`.
+pub(crate) fn newton_bracketed(
+    f: impl Fn(f64) -> (f64, f64),
+    mut lo: f64,
+    mut hi: f64,
+    flo: f64,
+    tol: f64,
+    hint: f64,
+) -> f64 {
+    // Start from the hint when it is inside (a nearby previous solution converges in a few
+    // steps).
+    let mut x = if hint > lo.min(hi) && hint < lo.max(hi) {
+        hint
+    } else {
+        0.5 * (lo + hi)
+    };
+    // Orient so that f(lo) < 0.
+    if flo > 0.0 {
+        std::mem::swap(&mut lo, &mut hi);
+    }
+    let mut dx_old = (hi - lo).abs();
+    let mut dx = dx_old;
+    let (mut fx, mut dfx) = f(x);
+    for _ in 0..200 {
+        let out = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
+        if out || (2.0 * fx).abs() > (dx_old * dfx).abs() {
+            dx_old = dx;
+            dx = 0.5 * (hi - lo);
+            x = lo + dx;
+        } else {
+            dx_old = dx;
+            dx = fx / dfx;
+            x -= dx;
+        }
+        if dx.abs() <= 0.5 * tol || fx == 0.0 {
+            return x;
+        }
+        (fx, dfx) = f(x);
+        if fx < 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+    }
+    x
+}

@@ -1,0 +1,234 @@
+//! Degenerate and invalid input: continua are families, singular or crossing curves are typed
+//! errors, nothing loops or floods.
+
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
+
+use antipodal::shapes::{Circle, Convexities, Limacon};
+use antipodal::{antipodal, common_tangents, inflections, Error, Options, SplineCurve};
+
+const W: f64 = std::f64::consts::FRAC_1_SQRT_2;
+
+/// A stadium: two straight stretches joined by semicircles (exact quadratic NURBS).
+fn stadium(l: f64) -> SplineCurve {
+    let pts = [
+        [0.0, -1.0],
+        [l / 2.0, -1.0],
+        [l, -1.0],
+        [l + 1.0, -1.0],
+        [l + 1.0, 0.0],
+        [l + 1.0, 1.0],
+        [l, 1.0],
+        [0.0, 1.0],
+        [-l, 1.0],
+        [-l - 1.0, 1.0],
+        [-l - 1.0, 0.0],
+        [-l - 1.0, -1.0],
+        [-l, -1.0],
+        [-l / 2.0, -1.0],
+        [0.0, -1.0],
+    ];
+    let ws = [
+        1.0, 1.0, 1.0, W, 1.0, W, 1.0, 1.0, 1.0, W, 1.0, W, 1.0, 1.0, 1.0,
+    ];
+    let knots = vec![
+        0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 5., 5., 6., 6., 7., 7., 7.,
+    ];
+    SplineCurve::clamped(2, &pts, Some(&ws), Some(knots)).unwrap()
+}
+
+fn nurbs_circle(r: f64) -> SplineCurve {
+    let pts = [
+        [r, 0.0],
+        [r, r],
+        [0.0, r],
+        [-r, r],
+        [-r, 0.0],
+        [-r, -r],
+        [0.0, -r],
+        [r, -r],
+        [r, 0.0],
+    ];
+    let ws = [1.0, W, 1.0, W, 1.0, W, 1.0, W, 1.0];
+    let knots = vec![0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
+    SplineCurve::clamped(2, &pts, Some(&ws), Some(knots)).unwrap()
+}
+
+#[test]
+fn stadium_has_one_pair_and_one_family() {
+    let r = antipodal(&stadium(2.0), &Options::default()).unwrap();
+    assert_eq!(r.pairs.len(), 1, "{:?}", r.pairs);
+    let p = r.pairs[0];
+    assert!((p.s - 2.0).abs() < 1e-9 && (p.t - 5.0).abs() < 1e-9);
+    assert!((p.distance - 6.0).abs() < 1e-12);
+    assert_eq!(r.families.len(), 1, "{:?}", r.families);
+    let f = r.families[0];
+    assert!(
+        (f.s[0] - 3.0).abs() < 1e-9 && (f.s[1] - 4.0).abs() < 1e-9,
+        "{f:?}"
+    );
+    assert!(
+        (f.t[0] - 1.0).abs() < 1e-9 && (f.t[1] - 6.0).abs() < 1e-9,
+        "{f:?}"
+    );
+}
+
+#[test]
+fn circles_are_families() {
+    for r in [0.5, 3.0] {
+        let res = antipodal(&nurbs_circle(r), &Options::default()).unwrap();
+        assert!(res.pairs.is_empty());
+        assert_eq!(res.families.len(), 1, "{:?}", res.families);
+        assert!(res.certified);
+        let f = res.families[0];
+        assert!(
+            ((f.s[1] - f.s[0]).rem_euclid(4.0) - 2.0).abs() < 1e-9,
+            "{f:?}"
+        );
+        let res = antipodal(&Circle::new(r, [2.0, -1.0]).unwrap(), &Options::default()).unwrap();
+        assert!(res.pairs.is_empty());
+        assert_eq!(res.families.len(), 1);
+    }
+}
+
+#[test]
+fn singular_and_crossing_curves_are_errors() {
+    let cusp = SplineCurve::periodic(
+        3,
+        &[
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [0.0, 1.0],
+        ],
+        None,
+    )
+    .unwrap();
+    assert!(matches!(
+        antipodal(&cusp, &Options::default()),
+        Err(Error::Cusp { .. })
+    ));
+    let eight = SplineCurve::periodic(
+        3,
+        &[
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [2.0, 0.0],
+            [1.0, -1.0],
+            [0.0, 0.0],
+            [-1.0, 1.0],
+            [-2.0, 0.0],
+            [-1.0, -1.0],
+        ],
+        None,
+    )
+    .unwrap();
+    assert!(matches!(
+        antipodal(&eight, &Options::default()),
+        Err(Error::SelfIntersecting { .. })
+    ));
+    let open = SplineCurve::clamped(
+        3,
+        &[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]],
+        None,
+        None,
+    )
+    .unwrap();
+    assert!(matches!(
+        antipodal(&open, &Options::default()),
+        Err(Error::NotClosed { .. })
+    ));
+    let corner = SplineCurve::clamped(
+        2,
+        &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]],
+        None,
+        None,
+    )
+    .unwrap();
+    assert!(matches!(
+        antipodal(&corner, &Options::default()),
+        Err(Error::Corner { .. })
+    ));
+    assert!(matches!(
+        Limacon::new(2.0, 3.0),
+        Err(Error::InvalidShape { field: "a", .. })
+    ));
+    assert!(matches!(
+        Convexities::new(1.0, 1.5, 3),
+        Err(Error::InvalidShape { field: "eps", .. })
+    ));
+    assert!(matches!(
+        antipodal(
+            &Circle::new(1.0, [0.0, 0.0]).unwrap(),
+            &Options::default().tolerance(f64::NAN)
+        ),
+        Err(Error::InvalidOption { .. })
+    ));
+}
+
+#[test]
+fn open_curves_have_inflections_and_tangents() {
+    // y = x³ − x on [−1.5, 1.5] as a cubic Bézier has one inflection (at x = 0).
+    let c = SplineCurve::clamped(
+        3,
+        &[[-1.5, -1.875], [-0.5, 2.125], [0.5, -2.125], [1.5, 1.875]],
+        None,
+        None,
+    )
+    .unwrap();
+    let r = inflections(&c, &Options::default()).unwrap();
+    assert_eq!(r.inflections.len(), 1);
+    assert!((r.inflections[0].u - 0.5).abs() < 1e-12);
+    assert!(r.inflections[0].p[0].abs() < 1e-12);
+    assert!(r.certified);
+    // Two unit circles side by side: four common tangents.
+    let a = nurbs_circle(1.0);
+    let b = SplineCurve::clamped(
+        2,
+        &[
+            [4.0, 0.0],
+            [4.0, 1.0],
+            [3.0, 1.0],
+            [2.0, 1.0],
+            [2.0, 0.0],
+            [2.0, -1.0],
+            [3.0, -1.0],
+            [4.0, -1.0],
+            [4.0, 0.0],
+        ],
+        Some(&[1.0, W, 1.0, W, 1.0, W, 1.0, W, 1.0]),
+        Some(vec![0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.]),
+    )
+    .unwrap();
+    let t = common_tangents(&a, &b, &Options::default()).unwrap();
+    assert_eq!(t.lines.len(), 4, "{:?}", t.lines);
+    for l in &t.lines {
+        // Every line is tangent to both unit circles: distance 1 from both centres.
+        let (p, q) = (l.p, l.q);
+        let d = [q[0] - p[0], q[1] - p[1]];
+        let n = d[0].hypot(d[1]);
+        let dist = |c: [f64; 2]| ((c[0] - p[0]) * d[1] - (c[1] - p[1]) * d[0]).abs() / n;
+        assert!((dist([0.0, 0.0]) - 1.0).abs() < 1e-10 && (dist([3.0, 0.0]) - 1.0).abs() < 1e-10);
+    }
+}
+
+#[test]
+fn same_curve_twice_does_not_flood() {
+    // Every tangent of a curve is common to it and itself: the coinciding stretches are
+    // skipped, leaving only true bitangents (none for a convex curve, two for the limaçon's
+    // dimple side... here a convex ellipse-like spline).
+    let c = nurbs_circle(1.0);
+    let t0 = std::time::Instant::now();
+    let r = common_tangents(&c, &c, &Options::default()).unwrap();
+    assert!(r.lines.is_empty(), "{:?}", r.lines);
+    assert!(!r.certified);
+    assert!(t0.elapsed().as_secs_f64() < 5.0);
+    let l = Limacon::new(4.0, 2.5).unwrap();
+    let r = common_tangents(&l, &l, &Options::default()).unwrap();
+    // The limaçon's dimple has one bitangent line (found once per contact order).
+    assert!(!r.lines.is_empty() && r.lines.len() <= 2, "{:?}", r.lines);
+    for line in &r.lines {
+        assert!((line.s - line.t).abs() > 1e-3);
+    }
+}

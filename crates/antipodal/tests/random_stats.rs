@@ -1,0 +1,118 @@
+//! Hundreds of random simple closed B-splines (degree 3–5, up to 20 control points, several
+//! inflections) against the brute-force oracle, with statistics so that the comparison is not
+//! vacuous (most curves valid, many pairs and inflections exercised).
+
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
+
+mod common;
+
+use antipodal::{antipodal, Error, Options, PlaneCurve, SplineCurve};
+
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+#[test]
+fn random_bsplines_against_oracle() {
+    run(0x5eed_1234, 300, 0.35, 200);
+}
+
+/// Wilder curves (deep dents, many inflections, near-degenerate pairs): run on demand.
+#[test]
+#[ignore]
+fn stress_random_bsplines() {
+    run(0xabcd_0042, 1000, 0.12, 0);
+}
+
+fn run(seed: u64, cases: usize, rmin: f64, min_valid: usize) {
+    let mut rng = Lcg(seed);
+    let (mut valid, mut skipped, mut pairs, mut infl, mut certified) = (0, 0, 0, 0, 0);
+    let mut types = std::collections::BTreeMap::new();
+    for case in 0..cases {
+        let deg = 3 + (rng.next() * 3.0) as usize;
+        let n = 6 + (rng.next() * 15.0) as usize;
+        let size = 0.1 + 10.0 * rng.next();
+        let mut pts: Vec<[f64; 2]> = (0..n)
+            .map(|i| {
+                let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (rng.next() - 0.5)) / n as f64;
+                let r = size * (rmin + (1.0 - rmin) * rng.next());
+                [r * ang.cos() + 3.0, r * ang.sin() - 1.0]
+            })
+            .collect();
+        if case % 2 == 1 {
+            pts.reverse();
+        }
+        let w: Option<Vec<f64>> =
+            (case % 3 == 2).then(|| (0..n).map(|_| 0.5 + 1.5 * rng.next()).collect());
+        let c = SplineCurve::periodic(deg, &pts, w.as_deref()).unwrap();
+        let r = match antipodal(&c, &Options::default()) {
+            Ok(r) => r,
+            Err(Error::SelfIntersecting { .. }) | Err(Error::Cusp { .. }) => {
+                skipped += 1;
+                continue;
+            }
+            Err(e) => panic!("case {case}: {e}"),
+        };
+        valid += 1;
+        pairs += r.pairs.len();
+        infl += r.inflections.len();
+        certified += r.certified as usize;
+        for p in &r.pairs {
+            *types.entry(format!("{:?}", p.kind)).or_insert(0) += 1;
+            assert!(
+                common::residual(&c, p.s, p.t) <= 1e-12,
+                "case {case} residual"
+            );
+        }
+        let oracle = common::antipodal_oracle(&c, 600);
+        let per = c.domain().1 - c.domain().0;
+        let mut size_bb = 0.0f64;
+        for j in common::jets(&c, 200).1.iter() {
+            size_bb = size_bb.max(j.p.norm());
+        }
+        for &(s, t) in &oracle {
+            let isolated = oracle.iter().all(|&(x, y)| {
+                (x == s && y == t)
+                    || !(common::same_param(&c, x, s, 1e-4 * per)
+                        && common::same_param(&c, y, t, 1e-4 * per))
+            });
+            if !isolated {
+                continue;
+            }
+            let ok = r
+                .pairs
+                .iter()
+                .any(|p| common::same_points(&c, s, t, p.p, p.q, 1e-9 * size_bb));
+            assert!(
+                ok,
+                "case {case}: missed ({s}, {t})\nfound {:?}\noracle {:?}",
+                r.pairs.iter().map(|p| (p.s, p.t)).collect::<Vec<_>>(),
+                oracle
+            );
+        }
+        for p in &r.pairs {
+            let ok = oracle
+                .iter()
+                .any(|&(s, t)| common::same_pair(&c, (s, t), (p.s, p.t), 1e-6 * per));
+            assert!(
+                ok,
+                "case {case}: extra {:?}\noracle {:?}",
+                (p.s, p.t),
+                oracle
+            );
+        }
+    }
+    eprintln!("valid {valid} skipped {skipped} pairs {pairs} inflections {infl} certified {certified} types {types:?}");
+    assert!(
+        valid >= min_valid,
+        "too many invalid random curves: {skipped}"
+    );
+    assert!(infl >= valid, "random curves should have inflections");
+}

@@ -1,1 +1,60 @@
-fn main() {}
+//! The `curvekit` command-line tool (see `interfaces.md`, "Command-line tool").
+//!
+//! Exit status: 0 success, 2 bad input or usage (one line on stderr), 1 anything else.
+
+mod cli;
+
+use clap::error::ErrorKind;
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    // Never die with a multi-line panic report: one line, exit 1.
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info.to_string().replace('\n', " ");
+        eprintln!("curvekit: internal error: {msg}");
+    }));
+    let args = match cli::Cli::try_parse() {
+        Ok(args) => args,
+        Err(e) => return usage_error(&e),
+    };
+    let outcome = std::panic::catch_unwind(|| cli::run(args));
+    match outcome {
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(failure)) => {
+            eprintln!("curvekit: {}", failure.message());
+            ExitCode::from(failure.code())
+        }
+        Err(_) => ExitCode::from(1),
+    }
+}
+
+/// Help and version go to stdout with status 0; every usage error is one line and status 2.
+fn usage_error(e: &clap::Error) -> ExitCode {
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            print!("{e}");
+            ExitCode::SUCCESS
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            eprintln!(
+                "curvekit: no command given (one of: demo, antipodal, inflections, tangents, bisector; see --help)"
+            );
+            ExitCode::from(2)
+        }
+        _ => {
+            // clap's first paragraph, joined into one line (it may list arguments below).
+            let text = e.to_string();
+            let first: Vec<&str> = text
+                .trim_start()
+                .lines()
+                .map(str::trim)
+                .take_while(|l| !l.is_empty())
+                .collect();
+            let line = first.join(" ");
+            let line = line.strip_prefix("error: ").unwrap_or(&line);
+            eprintln!("curvekit: {line} (see --help)");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,203 @@
+//! The single-curve and two-curve commands: read, compute, optionally time and draw, report.
+
+use super::report::{self, draw_curve};
+use super::{print_out, timing, write_file, Common, Failure};
+use curvekit::inflections::{inflections, ComputeError};
+use curvekit::io::{read_curve, Curve, CurveFileError, Problem, Shape};
+use curvekit::svg::Figure;
+use std::path::Path;
+use zeroset::BisectorOptions;
+
+pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
+    let curve = read_curve(path)?;
+    let found = inflections(&curve, common.tol).map_err(|e| compute_failure(e, &[&curve]))?;
+    let stats = common
+        .time
+        .then(|| timing::measure(|| inflections(&curve, common.tol)));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, &curve);
+        found.inflections.iter().for_each(|i| fig.dot(i.p));
+        fig.title(format!(
+            "{}: {} inflections",
+            curve.file,
+            found.inflections.len()
+        ));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &[&curve], stats.as_ref())
+    } else {
+        report::inflections_text(&curve, &found, stats.as_ref())
+    })
+}
+
+pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
+    let curve = read_curve(path)?;
+    let plane = curve
+        .plane_curve()
+        .map_err(|e| antipodal_failure(e, &[&curve]))?;
+    let opts = antipodal::Options::default().tolerance(common.tol);
+    let found =
+        antipodal::antipodal(plane.as_ref(), &opts).map_err(|e| antipodal_failure(e, &[&curve]))?;
+    let stats = common
+        .time
+        .then(|| timing::measure(|| antipodal::antipodal(plane.as_ref(), &opts)));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, &curve);
+        for (k, pair) in found.pairs.iter().enumerate() {
+            fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
+        }
+        found.inflections.iter().for_each(|i| fig.dot(i.p));
+        fig.title(format!(
+            "{}: {} antipodal pairs, {} inflections",
+            curve.file,
+            found.pairs.len(),
+            found.inflections.len()
+        ));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &[&curve], stats.as_ref())
+    } else {
+        report::antipodal_text(&curve, &found, stats.as_ref())
+    })
+}
+
+pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Result<(), Failure> {
+    let (c1, c2) = (read_curve(path1)?, read_curve(path2)?);
+    let both = [&c1, &c2];
+    let p1 = c1.plane_curve().map_err(|e| antipodal_failure(e, &both))?;
+    let p2 = c2.plane_curve().map_err(|e| antipodal_failure(e, &both))?;
+    let opts = antipodal::Options::default().tolerance(common.tol);
+    let found = antipodal::common_tangents(p1.as_ref(), p2.as_ref(), &opts)
+        .map_err(|e| antipodal_failure(e, &both))?;
+    let stats = common
+        .time
+        .then(|| timing::measure(|| antipodal::common_tangents(p1.as_ref(), p2.as_ref(), &opts)));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, &c1);
+        draw_curve(&mut fig, &c2);
+        for (k, line) in found.lines.iter().enumerate() {
+            fig.segment(line.p, line.q, Some((k + 1).to_string()));
+        }
+        fig.title(format!("{} common tangent lines", found.lines.len()));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &both, stats.as_ref())
+    } else {
+        report::tangents_text(&both, &found, stats.as_ref())
+    })
+}
+
+pub(super) fn run_bisector(
+    path1: &Path,
+    path2: Option<&Path>,
+    common: &Common,
+) -> Result<(), Failure> {
+    let c1 = read_curve(path1)?;
+    let c2 = path2.map(read_curve).transpose()?;
+    let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
+    let opts = BisectorOptions {
+        tol: common.tol,
+        ..BisectorOptions::default()
+    };
+    let r1 = spline_of(&c1)?;
+    let r2 = c2.as_ref().map(spline_of).transpose()?;
+    let compute = || match r2 {
+        None => zeroset::self_bisector(r1, &opts),
+        Some(r2) => zeroset::bisector(r1, r2, &opts),
+    };
+    let found = compute().map_err(zeroset_failure)?;
+    let stats = common.time.then(|| timing::measure(compute));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        curves.iter().for_each(|c| draw_curve(&mut fig, c));
+        report::draw_bisector(&mut fig, &c1, c2.as_ref().unwrap_or(&c1), &found);
+        fig.title(format!("{} bisector branches", found.branches.len()));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &curves, stats.as_ref())
+    } else {
+        report::bisector_text(&curves, &found, stats.as_ref())
+    })
+}
+
+fn zeroset_failure(e: zeroset::Error) -> Failure {
+    match e {
+        zeroset::Error::BadOption { field, value, why } => {
+            Failure::Usage(format!("--{field}: {value} is invalid: {why}"))
+        }
+        e => Failure::Other(format!("bisector: {e}")),
+    }
+}
+
+/// Bisectors are computed on the exact rational form, which only spline kinds have.
+fn spline_of(c: &Curve) -> Result<&bspline::Rational, Failure> {
+    c.rational().ok_or_else(|| {
+        Failure::Input(CurveFileError {
+            file: c.file.clone(),
+            field: "kind".into(),
+            problem: Problem::Unsupported(format!(
+                "bisector needs a bezier or bspline curve, got {}",
+                c.kind()
+            )),
+        })
+    })
+}
+
+pub(super) fn compute_failure(e: ComputeError, curves: &[&Curve]) -> Failure {
+    match e {
+        ComputeError::Antipodal(e) => antipodal_failure(e, curves),
+        ComputeError::Spline(e) => Failure::Other(format!("spline arithmetic failed: {e}")),
+    }
+}
+
+/// Options errors are usage errors, geometric refusals are input errors naming the curve that
+/// caused them, the rest is internal.
+pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failure {
+    use antipodal::Error as E;
+    match e {
+        E::InvalidOption { field, value } => Failure::Usage(format!(
+            "--{field}: {value} is not accepted by the antipodal algorithms"
+        )),
+        E::NotClosed { .. }
+        | E::Cusp { .. }
+        | E::Corner { .. }
+        | E::SelfIntersecting { .. }
+        | E::InvalidShape { .. } => match blame(curves) {
+            Some(culprit) => Failure::Input(CurveFileError {
+                file: culprit.file.clone(),
+                field: match culprit.shape {
+                    Shape::Spline(_) => "points",
+                    Shape::Analytic(_) => "kind",
+                }
+                .into(),
+                problem: Problem::Geometry(e.to_string()),
+            }),
+            None => Failure::Other(e.to_string()),
+        },
+        E::Spline(e) => Failure::Other(format!("spline arithmetic failed: {e}")),
+    }
+}
+
+/// The curve a geometric refusal is about: with two curves, the first one that is refused on
+/// its own (paired with a unit circle, which is never refused), else the second.
+fn blame<'c>(curves: &[&'c Curve]) -> Option<&'c Curve> {
+    let refused = |c: &Curve| {
+        let Ok(circle) = antipodal::shapes::Circle::new(1.0, [0.0, 0.0]) else {
+            return false;
+        };
+        c.plane_curve().map_or(true, |p| {
+            antipodal::common_tangents(p.as_ref(), &circle, &antipodal::Options::default()).is_err()
+        })
+    };
+    match curves {
+        [first, second, ..] if !refused(first) => Some(second),
+        _ => curves.first().copied(),
+    }
+}

@@ -1,0 +1,390 @@
+//! `curvekit demo`: the built-in examples (embedded, so it runs from any directory): the shapes
+//! of Jia's papers and a few B-spline/NURBS curves (inflections, antipodal pairs), then the
+//! bisector figures of Elber & Kim.
+
+use super::report::{curve_json, draw_bisector, draw_curve, time_line};
+use super::{print_out, timing, write_file, Common, Failure};
+use curvekit::inflections::{inflections, Inflections};
+use curvekit::io::{parse_curve, Curve};
+use curvekit::svg::Figure;
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::Path;
+use std::sync::mpsc;
+use std::time::Duration;
+use zeroset::{Bisector, BisectorOptions};
+
+macro_rules! fixture {
+    ($name:literal) => {
+        (
+            $name,
+            include_str!(concat!("../../fixtures/", $name, ".json")),
+        )
+    };
+}
+
+/// Name and file text of each shape example.
+const SHAPES: &[Embedded] = &[
+    fixture!("limacon"),
+    fixture!("elliptic_lemniscate"),
+    fixture!("convexities_m3"),
+    fixture!("convexities_m4"),
+    fixture!("ellipse"),
+    fixture!("periodic_cubic"),
+    fixture!("periodic_nurbs"),
+    fixture!("clamped_closed"),
+    fixture!("open_nurbs"),
+];
+
+/// An embedded curve file: (name, JSON text).
+type Embedded = (&'static str, &'static str);
+
+/// The bisector figures of Elber & Kim (the curves are shaped after them): (figure name, first
+/// curve, second curve or none for a self-bisector).
+const BISECTORS: &[(&str, Embedded, Option<Embedded>)] = &[
+    (
+        "bisector_fig2",
+        fixture!("bisector-fig2-quadratic"),
+        Some(fixture!("bisector-fig2-line")),
+    ),
+    (
+        "bisector_fig3",
+        fixture!("bisector-fig3-quadratic1"),
+        Some(fixture!("bisector-fig3-quadratic2")),
+    ),
+    (
+        "bisector_fig4",
+        fixture!("bisector-fig4-quadratic-bspline"),
+        None,
+    ),
+    (
+        "bisector_fig5",
+        fixture!("bisector-fig5-cubic-bspline"),
+        None,
+    ),
+    (
+        "bisector_fig6",
+        fixture!("bisector-fig6-cubic-bspline"),
+        Some(fixture!("bisector-fig6-line")),
+    ),
+    (
+        "bisector_fig7",
+        fixture!("bisector-fig7-quadratic1"),
+        Some(fixture!("bisector-fig7-quadratic2")),
+    ),
+];
+
+/// Longest wait for one bisector: the demo must finish even if a case is slow.
+const BISECTOR_BUDGET: Duration = Duration::from_secs(5);
+
+/// A computed cell: `None` where it does not apply (antipodal pairs of an open curve).
+type Cell<T> = Option<Result<T, String>>;
+
+struct ShapeRow {
+    name: &'static str,
+    curve: Curve,
+    inflections: Cell<Inflections>,
+    pairs: Cell<usize>,
+    /// Self-bisector of spline curves (analytic shapes have no exact form to run it on).
+    self_bisector: Cell<Bisector>,
+    svg: String,
+}
+
+struct BisectorRow {
+    name: &'static str,
+    curves: Vec<Curve>,
+    result: Result<Bisector, String>,
+    svg: String,
+}
+
+pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
+    if common.svg.is_some() {
+        return Err(Failure::Usage(
+            "--svg: demo writes one figure per example into --out DIR instead".into(),
+        ));
+    }
+    std::fs::create_dir_all(out)
+        .map_err(|e| Failure::Other(format!("cannot create {}: {e}", out.display())))?;
+    let shapes = SHAPES
+        .iter()
+        .map(|(name, text)| shape_row(name, text, out, common))
+        .collect::<Result<Vec<_>, _>>()?;
+    let bisectors = BISECTORS
+        .iter()
+        .map(|(name, c1, c2)| bisector_row(name, *c1, *c2, out, common))
+        .collect::<Result<Vec<_>, _>>()?;
+    let stats = common.time.then(|| {
+        timing::measure(|| {
+            shapes
+                .iter()
+                .filter_map(|r| inflections(&r.curve, common.tol).ok())
+                .count()
+        })
+    });
+    let text = if common.json {
+        demo_json(&shapes, &bisectors, stats.as_ref())
+    } else {
+        table(&shapes, &bisectors, out, stats.as_ref())
+    };
+    print_out(&text)?;
+    // The demo shows the state of every example; one that fails is reported, not fatal.
+    for e in errors(&shapes, &bisectors) {
+        eprintln!("curvekit: warning: demo example {e}");
+    }
+    Ok(())
+}
+
+/// One line per failed computation.
+fn errors(shapes: &[ShapeRow], bisectors: &[BisectorRow]) -> Vec<String> {
+    let mut out = Vec::new();
+    for r in shapes {
+        if let Some(Err(e)) = &r.inflections {
+            out.push(format!("{}: inflections: {e}", r.name));
+        }
+        if let Some(Err(e)) = &r.pairs {
+            out.push(format!("{}: antipodal: {e}", r.name));
+        }
+        if let Some(Err(e)) = &r.self_bisector {
+            out.push(format!("{}: self-bisector: {e}", r.name));
+        }
+    }
+    for r in bisectors {
+        if let Err(e) = &r.result {
+            out.push(format!("{}: bisector: {e}", r.name));
+        }
+    }
+    out
+}
+
+fn shape_row(
+    name: &'static str,
+    text: &str,
+    out: &Path,
+    common: &Common,
+) -> Result<ShapeRow, Failure> {
+    let curve = parse_curve(&format!("demo:{name}"), text)?;
+    let inflections = Some(inflections(&curve, common.tol).map_err(|e| e.to_string()));
+    let opts = antipodal::Options::default().tolerance(common.tol);
+    let antipodal = curve.is_closed().then(|| {
+        curve
+            .plane_curve()
+            .and_then(|p| antipodal::antipodal(p.as_ref(), &opts))
+            .map_err(|e| e.to_string())
+    });
+    let self_bisector = curve
+        .rational()
+        .is_some()
+        .then(|| bisector_within_budget(std::slice::from_ref(&curve), common.tol));
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, &curve);
+    if let Some(Ok(a)) = &antipodal {
+        for (k, pair) in a.pairs.iter().enumerate() {
+            fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
+        }
+    }
+    if let Some(Ok(found)) = &inflections {
+        found.inflections.iter().for_each(|i| fig.dot(i.p));
+    }
+    fig.title(format!(
+        "{name}: {} inflections, {} antipodal pairs",
+        cell(&inflections, |i| i.inflections.len().to_string()),
+        cell(&antipodal, |a| a.pairs.len().to_string()),
+    ));
+    let svg = out.join(format!("{name}.svg"));
+    write_file(&svg, &fig.render())?;
+    if let Some(Ok(b)) = &self_bisector {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, &curve);
+        draw_bisector(&mut fig, &curve, &curve, b);
+        fig.title(format!(
+            "{name}: self-bisector, {} branches",
+            branch_count(b)
+        ));
+        write_file(
+            &out.join(format!("{name}_self_bisector.svg")),
+            &fig.render(),
+        )?;
+    }
+    Ok(ShapeRow {
+        name,
+        curve,
+        inflections,
+        pairs: antipodal.map(|r| r.map(|a| a.pairs.len())),
+        self_bisector,
+        svg: svg.display().to_string(),
+    })
+}
+
+fn bisector_row(
+    name: &'static str,
+    c1: Embedded,
+    c2: Option<Embedded>,
+    out: &Path,
+    common: &Common,
+) -> Result<BisectorRow, Failure> {
+    let mut curves = vec![parse_curve(&format!("demo:{}", c1.0), c1.1)?];
+    if let Some((n, text)) = c2 {
+        curves.push(parse_curve(&format!("demo:{n}"), text)?);
+    }
+    let result = bisector_within_budget(&curves, common.tol);
+    let mut fig = Figure::new();
+    curves.iter().for_each(|c| draw_curve(&mut fig, c));
+    if let (Ok(b), Some(first)) = (&result, curves.first()) {
+        draw_bisector(&mut fig, first, curves.get(1).unwrap_or(first), b);
+    }
+    let branches = result.as_ref().map(|r| r.branches.len());
+    fig.title(format!(
+        "{name}: {} bisector branches",
+        branches.map_or_else(|e| e.clone(), |n| n.to_string())
+    ));
+    let svg = out.join(format!("{name}.svg"));
+    write_file(&svg, &fig.render())?;
+    Ok(BisectorRow {
+        name,
+        curves,
+        result,
+        svg: svg.display().to_string(),
+    })
+}
+
+/// The bisector of one or two curves (self-bisector for one), computed in a thread so that a
+/// slow case is reported as such instead of stalling the demo.
+fn bisector_within_budget(curves: &[Curve], tol: f64) -> Result<Bisector, String> {
+    let rationals: Vec<bspline::Rational> = curves
+        .iter()
+        .filter_map(|c| c.rational().cloned())
+        .collect();
+    let opts = BisectorOptions {
+        tol,
+        ..BisectorOptions::default()
+    };
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let r = match rationals.as_slice() {
+            [one] => zeroset::self_bisector(one, &opts),
+            [a, b] => zeroset::bisector(a, b, &opts),
+            _ => Err(zeroset::Error::NotPlanar { which: 1, dim: 0 }),
+        };
+        let _ = tx.send(r.map_err(|e| e.to_string()));
+    });
+    rx.recv_timeout(BISECTOR_BUDGET)
+        .unwrap_or_else(|e| match e {
+            mpsc::RecvTimeoutError::Timeout => {
+                Err(format!("timeout (> {} s)", BISECTOR_BUDGET.as_secs_f64()))
+            }
+            mpsc::RecvTimeoutError::Disconnected => Err("the computation panicked".into()),
+        })
+}
+
+/// A branch count, marked when a search limit was hit.
+fn branch_count(b: &Bisector) -> String {
+    if b.complete {
+        b.branches.len().to_string()
+    } else {
+        format!("{} (incomplete)", b.branches.len())
+    }
+}
+
+fn cell<T>(c: &Cell<T>, show: impl Fn(&T) -> String) -> String {
+    match c {
+        None => "-".into(),
+        Some(Ok(v)) => show(v),
+        Some(Err(_)) => "failed".into(),
+    }
+}
+
+fn table(
+    shapes: &[ShapeRow],
+    bisectors: &[BisectorRow],
+    out: &Path,
+    stats: Option<&timing::Stats>,
+) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{:<20} {:<20} {:>11} {:>10} {:>15} {:>22}",
+        "curve", "kind", "inflections", "certified", "antipodal pairs", "self-bisector branches"
+    );
+    for r in shapes {
+        let _ = writeln!(
+            s,
+            "{:<20} {:<20} {:>11} {:>10} {:>15} {:>22}",
+            r.name,
+            r.curve.kind(),
+            cell(&r.inflections, |i| i.inflections.len().to_string()),
+            cell(&r.inflections, |i| if i.certified { "yes" } else { "no" }
+                .into()),
+            cell(&r.pairs, usize::to_string),
+            cell(&r.self_bisector, branch_count),
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\n{:<14} {:<52} {:>17}",
+        "figure", "curves", "bisector branches"
+    );
+    for r in bisectors {
+        let names: Vec<&str> = r
+            .curves
+            .iter()
+            .map(|c| c.file.trim_start_matches("demo:"))
+            .collect();
+        let branches = r
+            .result
+            .as_ref()
+            .map_or_else(|_| "failed".to_string(), branch_count);
+        let _ = writeln!(
+            s,
+            "{:<14} {:<52} {:>17}",
+            r.name,
+            names.join(" + "),
+            branches
+        );
+    }
+    for e in errors(shapes, bisectors) {
+        let _ = writeln!(s, "failed: {e}");
+    }
+    let _ = writeln!(s, "figures written to {}", out.display());
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+    s
+}
+
+fn demo_json(
+    shapes: &[ShapeRow],
+    bisectors: &[BisectorRow],
+    stats: Option<&timing::Stats>,
+) -> String {
+    let err = |e: &String| json!({ "error": e });
+    let shapes: Vec<Value> = shapes
+        .iter()
+        .map(|r| {
+            json!({
+                "name": r.name,
+                "curve": curve_json(&r.curve),
+                "inflections": r.inflections.as_ref().map(|x| x.as_ref().map_or_else(err, |i| json!(i.inflections))),
+                "certified": r.inflections.as_ref().and_then(|x| x.as_ref().ok()).map(|i| i.certified),
+                "pairs": r.pairs.as_ref().map(|x| x.as_ref().map_or_else(err, |n| json!(n))),
+                "self_bisector_branches": r.self_bisector.as_ref().map(|x| x.as_ref().map_or_else(err, |b| json!(b.branches.len()))),
+                "svg": r.svg,
+            })
+        })
+        .collect();
+    let bisectors: Vec<Value> = bisectors
+        .iter()
+        .map(|r| {
+            json!({
+                "name": r.name,
+                "curves": r.curves.iter().map(curve_json).collect::<Vec<_>>(),
+                "branches": r.result.as_ref().map_or_else(err, |b| json!(b.branches.len())),
+                "svg": r.svg,
+            })
+        })
+        .collect();
+    let mut doc = json!({ "shapes": shapes, "bisectors": bisectors });
+    if let (Some(s), Some(map)) = (stats, doc.as_object_mut()) {
+        map.insert("stats".into(), json!(s));
+    }
+    format!("{doc}\n")
+}

@@ -1,0 +1,155 @@
+//! Command-line arguments, dispatch, and the exit status of each kind of failure.
+
+mod commands;
+mod demo;
+mod report;
+mod timing;
+
+use clap::{Args, Parser, Subcommand};
+use curvekit::io::CurveFileError;
+use std::path::{Path, PathBuf};
+
+/// Certified geometry on planar freeform curves.
+#[derive(Debug, Parser)]
+#[command(name = "curvekit", version, about)]
+pub(crate) struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run the built-in examples, write their figures, print a summary table.
+    Demo {
+        /// Directory for the SVG figures.
+        #[arg(long, value_name = "DIR", default_value = "demo-out")]
+        out: PathBuf,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// Antipodal point pairs of a closed curve.
+    Antipodal {
+        /// Curve file (JSON).
+        curve: PathBuf,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// Inflections of a curve.
+    Inflections {
+        /// Curve file (JSON).
+        curve: PathBuf,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// Lines tangent to two curves.
+    Tangents {
+        /// First curve file (JSON).
+        curve1: PathBuf,
+        /// Second curve file (JSON).
+        curve2: PathBuf,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// Bisector of two curves, or the self-bisector of one.
+    Bisector {
+        /// First curve file (JSON).
+        curve1: PathBuf,
+        /// Second curve file (JSON); omitted: the self-bisector of the first.
+        curve2: Option<PathBuf>,
+        #[command(flatten)]
+        common: Common,
+    },
+}
+
+/// Options every command takes.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct Common {
+    /// Print one JSON document instead of the text report.
+    #[arg(long)]
+    pub(crate) json: bool,
+    /// Also write an SVG figure to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) svg: Option<PathBuf>,
+    /// Parameter tolerance.
+    #[arg(long, value_name = "T", default_value_t = 1e-12, value_parser = parse_tol, allow_hyphen_values = true)]
+    pub(crate) tol: f64,
+    /// Repeat the computation for at least 0.5 s and report the median time of one run.
+    #[arg(long)]
+    pub(crate) time: bool,
+}
+
+fn parse_tol(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        Ok(_) => Err("must be a finite number > 0".into()),
+        Err(_) => Err("not a number".into()),
+    }
+}
+
+/// Why a command failed, and so its exit status.
+#[derive(Debug)]
+pub(crate) enum Failure {
+    /// Bad input file (exit 2).
+    Input(CurveFileError),
+    /// Bad option value (exit 2).
+    Usage(String),
+    /// Anything else (exit 1).
+    Other(String),
+}
+
+impl Failure {
+    pub(crate) fn code(&self) -> u8 {
+        match self {
+            Failure::Input(_) | Failure::Usage(_) => 2,
+            Failure::Other(_) => 1,
+        }
+    }
+
+    pub(crate) fn message(&self) -> String {
+        match self {
+            Failure::Input(e) => e.to_string(),
+            Failure::Usage(m) | Failure::Other(m) => m.clone(),
+        }
+        .replace('\n', " ")
+    }
+}
+
+impl From<CurveFileError> for Failure {
+    fn from(e: CurveFileError) -> Self {
+        Failure::Input(e)
+    }
+}
+
+/// Runs one command.
+pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
+    match cli.command {
+        Command::Demo { out, common } => demo::run(&out, &common),
+        Command::Inflections { curve, common } => commands::run_inflections(&curve, &common),
+        Command::Antipodal { curve, common } => commands::run_antipodal(&curve, &common),
+        Command::Tangents {
+            curve1,
+            curve2,
+            common,
+        } => commands::run_tangents(&curve1, &curve2, &common),
+        Command::Bisector {
+            curve1,
+            curve2,
+            common,
+        } => commands::run_bisector(&curve1, curve2.as_deref(), &common),
+    }
+}
+
+/// Writes a file, mapping failure to exit 1 with the path named.
+pub(crate) fn write_file(path: &Path, contents: &str) -> Result<(), Failure> {
+    std::fs::write(path, contents)
+        .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))
+}
+
+/// Prints to stdout; a closed pipe is a failure, not a panic.
+pub(crate) fn print_out(text: &str) -> Result<(), Failure> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| Failure::Other(format!("cannot write to stdout: {e}")))
+}

@@ -1,0 +1,481 @@
+//! Curve files (see `interfaces.md`, "Curve files"): JSON text → a validated [`Curve`].
+//!
+//! The reader walks the JSON value itself instead of deriving `Deserialize`, so that every error
+//! can name the exact field (`points[3][1]`, `knots[5]`), which serde's messages cannot. Unknown
+//! fields are rejected like `#[serde(deny_unknown_fields)]` would, but with the field named.
+
+use crate::shapes::{Analytic, Circle, Convexities, Ellipse, EllipticLemniscate, Limacon};
+use antipodal::PlaneCurve;
+use bspline::Rational;
+use serde_json::{Map, Value};
+use std::path::Path;
+use thiserror::Error;
+
+mod spline;
+
+/// Largest accepted magnitude of any number: keeps products of several coordinates (curvature
+/// numerators are cubic in the homogeneous points) far from overflow.
+pub const MAX_ABS: f64 = 1e100;
+/// Largest accepted degree: root isolation cost grows quickly with the degree.
+pub const MAX_DEGREE: usize = 64;
+/// Largest accepted number of lobes `m` of a `convexities` curve.
+pub const MAX_LOBES: u32 = 10_000;
+
+/// A curve file that cannot be used: which file, which field, what is wrong.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("{file}: {field}: {problem}")]
+pub struct CurveFileError {
+    /// The file as named on the command line.
+    pub file: String,
+    /// The offending field (`points[2][0]`, `knots`), or `document` for the file as a whole.
+    pub field: String,
+    /// What is wrong with it.
+    pub problem: Problem,
+}
+
+/// What is wrong with a field of a curve file.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum Problem {
+    /// The file could not be read.
+    #[error("cannot read the file: {0}")]
+    Unreadable(String),
+    /// The text is not JSON (or a number is out of the f64 range).
+    #[error("invalid JSON: {0}")]
+    Json(String),
+    /// A required field is absent.
+    #[error("missing required field")]
+    Missing,
+    /// A field that the kind does not have (a typo, most likely).
+    #[error("unknown field for kind `{kind}` (allowed: {allowed})")]
+    UnknownField {
+        /// The curve kind.
+        kind: String,
+        /// The fields it allows.
+        allowed: String,
+    },
+    /// `kind` names no known curve kind.
+    #[error("unknown kind `{0}` (expected one of: {KINDS})")]
+    UnknownKind(String),
+    /// A value of the wrong JSON type.
+    #[error("expected {expected}, got {got}")]
+    WrongType {
+        /// What the field must be.
+        expected: &'static str,
+        /// The JSON type found.
+        got: &'static str,
+    },
+    /// A number beyond [`MAX_ABS`].
+    #[error("{0:e} is too large (|value| must be at most 1e100)")]
+    TooLarge(f64),
+    /// A number that violates its range.
+    #[error("must be {rule}, got {value}")]
+    OutOfRange {
+        /// The rule, e.g. "> 0".
+        rule: String,
+        /// The value given.
+        value: f64,
+    },
+    /// An array of the wrong length.
+    #[error("expected {expected}, got {got}")]
+    WrongCount {
+        /// The length required.
+        expected: String,
+        /// The length given.
+        got: usize,
+    },
+    /// `knots` together with `periodic: true`.
+    #[error("must be absent when `periodic` is true (a periodic curve has uniform knots)")]
+    KnotsWithPeriodic,
+    /// The curve's geometry does not suit the command (open where a closed curve is needed,
+    /// a cusp, a corner at the seam, a self-intersection).
+    #[error("{0}")]
+    Geometry(String),
+    /// The command does not take this kind of curve.
+    #[error("{0}")]
+    Unsupported(String),
+    /// All control points coincide.
+    #[error("all points coincide: the curve is a single point")]
+    Degenerate,
+    /// The spline cannot be represented: the rule is in the message.
+    #[error("{0}")]
+    Spline(#[from] bspline::Error),
+    /// Derivatives overflow f64 (knots far too close for the coordinates).
+    #[error("knot spacing too small for the coordinates: derivatives overflow f64")]
+    Overflow,
+}
+
+const KINDS: &str = "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities";
+
+/// Which spline kind a file used.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SplineKind {
+    /// `bezier`.
+    Bezier,
+    /// `bspline`.
+    BSpline,
+}
+
+/// A validated B-spline, NURBS or Bézier curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SplineCurve {
+    /// The curve (polynomial curves have unit weights).
+    pub curve: Rational,
+    /// `bezier` or `bspline`.
+    pub kind: SplineKind,
+    /// Given with `periodic: true` (a closed, uniform, `C^(p−1)` curve on `[0, n)`).
+    pub periodic: bool,
+    /// Closed: periodic, or clamped with equal first and last points.
+    pub closed: bool,
+    /// Whether `weights` were given.
+    pub weighted: bool,
+    /// Number of control points in the file.
+    pub n_points: usize,
+}
+
+/// What a curve file describes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// `bezier` or `bspline`.
+    Spline(SplineCurve),
+    /// One of the analytic kinds (all closed).
+    Analytic(Analytic),
+}
+
+/// A validated curve with the name of the file it came from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// File name (for messages and reports).
+    pub file: String,
+    /// The curve.
+    pub shape: Shape,
+}
+
+impl Curve {
+    /// The `kind` of the file.
+    pub fn kind(&self) -> &'static str {
+        match &self.shape {
+            Shape::Spline(s) if s.kind == SplineKind::Bezier => "bezier",
+            Shape::Spline(_) => "bspline",
+            Shape::Analytic(a) => a.kind(),
+        }
+    }
+
+    /// True for closed curves.
+    pub fn is_closed(&self) -> bool {
+        match &self.shape {
+            Shape::Spline(s) => s.closed,
+            Shape::Analytic(_) => true,
+        }
+    }
+
+    /// The parameter domain.
+    pub fn domain(&self) -> (f64, f64) {
+        match &self.shape {
+            Shape::Spline(s) => s.curve.domain(),
+            Shape::Analytic(_) => (0.0, std::f64::consts::TAU),
+        }
+    }
+
+    /// The curve as the `antipodal` algorithms take it.
+    pub fn plane_curve(&self) -> antipodal::Result<Box<dyn PlaneCurve>> {
+        match &self.shape {
+            Shape::Spline(s) => Ok(Box::new(antipodal::SplineCurve::new(s.curve.clone())?)),
+            Shape::Analytic(a) => a.to_plane_curve(),
+        }
+    }
+
+    /// The rational B-spline form, for spline kinds.
+    pub fn rational(&self) -> Option<&Rational> {
+        match &self.shape {
+            Shape::Spline(s) => Some(&s.curve),
+            Shape::Analytic(_) => None,
+        }
+    }
+
+    /// `n + 1` points at uniform parameters over the whole domain (both ends included).
+    pub fn polyline(&self, n: usize) -> Vec<[f64; 2]> {
+        let Ok(c) = self.plane_curve() else {
+            return Vec::new();
+        };
+        let (a, b) = self.domain();
+        let n = n.max(1);
+        (0..=n)
+            .map(|i| c.jet(a + (b - a) * i as f64 / n as f64).p.arr())
+            .collect()
+    }
+}
+
+/// Reads and validates a curve file.
+pub fn read_curve(path: &Path) -> Result<Curve, CurveFileError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| CurveFileError {
+        file: file.clone(),
+        field: "document".into(),
+        problem: Problem::Unreadable(e.to_string()),
+    })?;
+    parse_curve(&file, &text)
+}
+
+/// Validates the text of a curve file; `file` names it in errors.
+///
+/// ```
+/// use curvekit::io::{parse_curve, Shape};
+/// let c = parse_curve("s.json", r#"{"kind":"bezier","points":[[0,0],[1,2],[2,-2],[3,0]]}"#).unwrap();
+/// assert!(matches!(c.shape, Shape::Spline(_)) && !c.is_closed());
+///
+/// let e = parse_curve("c.json", r#"{"kind":"circle","r":1,"radius":2}"#).unwrap_err();
+/// assert_eq!(e.field, "radius");
+/// assert!(e.to_string().starts_with("c.json: radius: unknown field"));
+/// ```
+pub fn parse_curve(file: &str, text: &str) -> Result<Curve, CurveFileError> {
+    let err = |field: &str, problem: Problem| CurveFileError {
+        file: file.to_string(),
+        field: field.to_string(),
+        problem,
+    };
+    if text.trim().is_empty() {
+        return Err(err("document", Problem::Json("the file is empty".into())));
+    }
+    let value: Value =
+        serde_json::from_str(text).map_err(|e| err("document", Problem::Json(e.to_string())))?;
+    let Value::Object(map) = value else {
+        return Err(err(
+            "document",
+            Problem::WrongType {
+                expected: "a JSON object",
+                got: type_name(&value),
+            },
+        ));
+    };
+    let shape = parse_shape(&map).map_err(|(field, problem)| err(&field, problem))?;
+    Ok(Curve {
+        file: file.to_string(),
+        shape,
+    })
+}
+
+/// An error before the file name is attached: (field, problem).
+type FieldError = (String, Problem);
+
+fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
+    let kind = match map.get("kind") {
+        None => return Err(("kind".into(), Problem::Missing)),
+        Some(Value::String(s)) => s.as_str(),
+        Some(v) => return Err(wrong_type("kind", "a string", v)),
+    };
+    let allowed: &[&str] = match kind {
+        "bezier" => &["points", "weights"],
+        "bspline" => &["degree", "points", "weights", "knots", "periodic"],
+        "circle" => &["r", "center"],
+        "ellipse" => &["a", "b", "center"],
+        "limacon" | "elliptic_lemniscate" => &["a", "b"],
+        "convexities" => &["p", "eps", "m"],
+        other => return Err(("kind".into(), Problem::UnknownKind(other.to_string()))),
+    };
+    // Reject unknown fields first: a typo'd optional field must not pass silently.
+    if let Some(key) = map
+        .keys()
+        .find(|k| k.as_str() != "kind" && !allowed.contains(&k.as_str()))
+    {
+        return Err((
+            key.clone(),
+            Problem::UnknownField {
+                kind: kind.to_string(),
+                allowed: allowed.join(", "),
+            },
+        ));
+    }
+    let f = Fields(map);
+    let analytic = match kind {
+        "bezier" | "bspline" => return spline::parse_spline(kind, &f).map(Shape::Spline),
+        "circle" => Analytic::Circle(Circle {
+            center: f.opt_point("center")?.unwrap_or([0.0, 0.0]),
+            r: f.positive("r")?,
+        }),
+        "ellipse" => Analytic::Ellipse(Ellipse {
+            center: f.opt_point("center")?.unwrap_or([0.0, 0.0]),
+            a: f.positive("a")?,
+            b: f.positive("b")?,
+        }),
+        "limacon" => {
+            let a = f.number("a")?;
+            let b = f.number("b")?;
+            if b < 0.0 {
+                return Err(out_of_range("b", ">= 0", b));
+            }
+            if a <= b {
+                return Err(out_of_range(
+                    "a",
+                    "> b (a simple limaçon needs a > b >= 0)",
+                    a,
+                ));
+            }
+            Analytic::Limacon(Limacon { a, b })
+        }
+        "elliptic_lemniscate" => Analytic::EllipticLemniscate(EllipticLemniscate {
+            a: f.positive("a")?,
+            b: f.positive("b")?,
+        }),
+        _ => {
+            let p = f.positive("p")?;
+            let eps = f.number("eps")?;
+            if !(eps > 0.0 && eps < 1.0) {
+                return Err(out_of_range("eps", "in (0, 1)", eps));
+            }
+            let m = f.integer("m", 2, u64::from(MAX_LOBES))?;
+            let m = u32::try_from(m).unwrap_or(MAX_LOBES);
+            Analytic::Convexities(Convexities { p, eps, m })
+        }
+    };
+    Ok(Shape::Analytic(analytic))
+}
+
+/// Typed access to the fields of one curve object, naming the field in every error.
+pub(crate) struct Fields<'a>(pub(crate) &'a Map<String, Value>);
+
+impl Fields<'_> {
+    pub(crate) fn get(&self, key: &str) -> Option<&Value> {
+        self.0.get(key)
+    }
+
+    pub(crate) fn require(&self, key: &str) -> Result<&Value, FieldError> {
+        self.0
+            .get(key)
+            .ok_or_else(|| (key.to_string(), Problem::Missing))
+    }
+
+    pub(crate) fn number(&self, key: &str) -> Result<f64, FieldError> {
+        number_at(key, self.require(key)?)
+    }
+
+    pub(crate) fn positive(&self, key: &str) -> Result<f64, FieldError> {
+        let x = self.number(key)?;
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(out_of_range(key, "> 0", x))
+        }
+    }
+
+    /// An integer in `[min, max]` (a JSON number without a fractional part, `3.0` included).
+    pub(crate) fn integer(&self, key: &str, min: u64, max: u64) -> Result<u64, FieldError> {
+        let x = self.number(key)?;
+        if x.fract() != 0.0 {
+            return Err(out_of_range(key, "an integer", x));
+        }
+        if x < min as f64 {
+            return Err(out_of_range(key, &format!("an integer >= {min}"), x));
+        }
+        if x > max as f64 {
+            return Err(out_of_range(key, &format!("an integer <= {max}"), x));
+        }
+        Ok(x as u64)
+    }
+
+    pub(crate) fn opt_point(&self, key: &str) -> Result<Option<[f64; 2]>, FieldError> {
+        self.get(key).map(|v| point_at(key, v)).transpose()
+    }
+
+    pub(crate) fn opt_bool(&self, key: &str) -> Result<Option<bool>, FieldError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(Value::Bool(b)) => Ok(Some(*b)),
+            Some(v) => Err(wrong_type(key, "true or false", v)),
+        }
+    }
+
+    /// An array of numbers.
+    pub(crate) fn opt_numbers(&self, key: &str) -> Result<Option<Vec<f64>>, FieldError> {
+        let Some(v) = self.get(key) else {
+            return Ok(None);
+        };
+        let items = array_at(key, v, "an array of numbers")?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, x)| number_at(&format!("{key}[{i}]"), x))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
+    }
+
+    /// An array of `[x, y]` points.
+    pub(crate) fn points(&self, key: &str) -> Result<Vec<[f64; 2]>, FieldError> {
+        let items = array_at(key, self.require(key)?, "an array of [x, y] points")?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, p)| point_at(&format!("{key}[{i}]"), p))
+            .collect()
+    }
+}
+
+fn array_at<'v>(
+    key: &str,
+    v: &'v Value,
+    expected: &'static str,
+) -> Result<&'v Vec<Value>, FieldError> {
+    match v {
+        Value::Array(items) => Ok(items),
+        _ => Err(wrong_type(key, expected, v)),
+    }
+}
+
+fn point_at(key: &str, v: &Value) -> Result<[f64; 2], FieldError> {
+    let items = array_at(key, v, "an [x, y] point")?;
+    if items.len() != 2 {
+        return Err((
+            key.to_string(),
+            Problem::WrongCount {
+                expected: "2 coordinates [x, y]".into(),
+                got: items.len(),
+            },
+        ));
+    }
+    Ok([
+        number_at(&format!("{key}[0]"), &items[0])?,
+        number_at(&format!("{key}[1]"), &items[1])?,
+    ])
+}
+
+fn number_at(key: &str, v: &Value) -> Result<f64, FieldError> {
+    let x = match v {
+        Value::Number(n) => n.as_f64(),
+        _ => return Err(wrong_type(key, "a number", v)),
+    };
+    match x {
+        Some(x) if x.is_finite() && x.abs() <= MAX_ABS => Ok(x),
+        Some(x) => Err((key.to_string(), Problem::TooLarge(x))),
+        None => Err(wrong_type(key, "a number", v)),
+    }
+}
+
+pub(crate) fn out_of_range(key: &str, rule: &str, value: f64) -> FieldError {
+    (
+        key.to_string(),
+        Problem::OutOfRange {
+            rule: rule.to_string(),
+            value,
+        },
+    )
+}
+
+fn wrong_type(key: &str, expected: &'static str, v: &Value) -> FieldError {
+    (
+        key.to_string(),
+        Problem::WrongType {
+            expected,
+            got: type_name(v),
+        },
+    )
+}
+
+fn type_name(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}

@@ -1,0 +1,160 @@
+//! The spline kinds of curve files: `bezier` and `bspline`.
+
+use super::{out_of_range, FieldError, Fields, Problem, SplineCurve, SplineKind, MAX_DEGREE};
+use bspline::{knots::validate_knots, BSpline, Rational};
+
+/// Validates a `bezier` or `bspline` object (unknown fields were already rejected).
+pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, FieldError> {
+    let points = f.points("points")?;
+    let n = points.len();
+    let (kind, degree, periodic, knots) = if kind == "bezier" {
+        if n < 2 {
+            return Err(count("points", "at least 2 points".into(), n));
+        }
+        if n > MAX_DEGREE + 1 {
+            let limit = format!("at most {} points (degree <= {MAX_DEGREE})", MAX_DEGREE + 1);
+            return Err(count("points", limit, n));
+        }
+        (SplineKind::Bezier, n - 1, false, None)
+    } else {
+        let degree = f.integer("degree", 1, MAX_DEGREE as u64)? as usize;
+        let periodic = f.opt_bool("periodic")?.unwrap_or(false);
+        let knots = f.opt_numbers("knots")?;
+        if periodic && knots.is_some() {
+            return Err(("knots".into(), Problem::KnotsWithPeriodic));
+        }
+        if n <= degree {
+            let need = format!("at least {} points for degree {degree}", degree + 1);
+            return Err(count("points", need, n));
+        }
+        (SplineKind::BSpline, degree, periodic, knots)
+    };
+    let weights = f.opt_numbers("weights")?;
+    if let Some(w) = &weights {
+        if w.len() != n {
+            return Err(count(
+                "weights",
+                format!("{n} weights (one per point)"),
+                w.len(),
+            ));
+        }
+        if let Some(i) = w.iter().position(|&x| x <= 0.0) {
+            return Err(out_of_range(&format!("weights[{i}]"), "> 0", w[i]));
+        }
+    }
+    if points.iter().all(|p| *p == points[0]) {
+        return Err(("points".into(), Problem::Degenerate));
+    }
+    if let Some(k) = &knots {
+        validate_knots(degree, n, k).map_err(|e| knot_error(e, k.len()))?;
+    }
+
+    let mut coefs: Vec<f64> = points.iter().flat_map(|p| p.iter().copied()).collect();
+    let mut weights = weights;
+    let spline = if periodic {
+        // BSpline::periodic wraps the first p points; the weights must wrap the same way.
+        if let Some(w) = &mut weights {
+            let head = w[..degree].to_vec();
+            w.extend(head);
+        }
+        BSpline::periodic(degree, 2, coefs)
+    } else if let Some(k) = knots.clone() {
+        BSpline::new(degree, k, 2, std::mem::take(&mut coefs))
+    } else {
+        BSpline::clamped_uniform(degree, 2, coefs)
+    }
+    .map_err(|e| ("points".to_string(), Problem::Spline(e)))?;
+    let curve = Rational::new(spline, weights.as_deref())
+        .map_err(|e| ("weights".to_string(), Problem::Spline(e)))?;
+
+    // Curvature needs two derivatives of the homogeneous form; if they overflow, nothing
+    // downstream can be trusted. Only knots packed far too tightly can cause this.
+    let d1 = curve.homogeneous().deriv();
+    let d2 = d1.deriv();
+    if !d1.coefs().iter().chain(d2.coefs()).all(|x| x.is_finite()) {
+        let field = if knots.is_some() { "knots" } else { "points" };
+        return Err((field.into(), Problem::Overflow));
+    }
+
+    let closed = periodic || ends_meet(&curve, &points);
+    Ok(SplineCurve {
+        curve,
+        kind,
+        periodic,
+        closed,
+        weighted: weights.is_some(),
+        n_points: n,
+    })
+}
+
+/// True when the curve's end points coincide (up to rounding relative to its size).
+fn ends_meet(curve: &Rational, points: &[[f64; 2]]) -> bool {
+    let (a, b) = curve.domain();
+    let (p, q) = (curve.point(a), curve.point(b));
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for pt in points {
+        for c in 0..2 {
+            lo[c] = lo[c].min(pt[c]);
+            hi[c] = hi[c].max(pt[c]);
+        }
+    }
+    let size = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    (p[0] - q[0]).hypot(p[1] - q[1]) <= 1e-12 * size
+}
+
+fn count(field: &str, expected: String, got: usize) -> FieldError {
+    (field.to_string(), Problem::WrongCount { expected, got })
+}
+
+/// Names the knot the spline library complained about.
+fn knot_error(e: bspline::Error, len: usize) -> FieldError {
+    let field = match &e {
+        bspline::Error::DecreasingKnots { index, .. } | bspline::Error::NotFinite { index, .. }
+            if *index < len =>
+        {
+            format!("knots[{index}]")
+        }
+        _ => "knots".to_string(),
+    };
+    (field, Problem::Spline(e))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::io::{parse_curve, Shape};
+
+    fn spline(text: &str) -> crate::io::SplineCurve {
+        match parse_curve("t.json", text).map(|c| c.shape) {
+            Ok(Shape::Spline(s)) => s,
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn closedness() {
+        let p =
+            spline(r#"{"kind":"bspline","degree":2,"periodic":true,"points":[[0,0],[1,0],[1,1]]}"#);
+        assert!(p.periodic && p.closed);
+        assert_eq!(p.curve.domain(), (0.0, 3.0));
+        let c = spline(r#"{"kind":"bspline","degree":2,"points":[[0,0],[1,0],[1,1],[0,0]]}"#);
+        assert!(!c.periodic && c.closed);
+        let o = spline(r#"{"kind":"bezier","points":[[0,0],[1,0],[1,1]]}"#);
+        assert!(!o.closed);
+    }
+
+    #[test]
+    fn periodic_weights_wrap_with_the_points() {
+        let s = spline(
+            r#"{"kind":"bspline","degree":2,"periodic":true,"points":[[1,0],[0,1],[-1,0],[0,-1]],"weights":[1,2,1,2]}"#,
+        );
+        assert!(s.curve.is_rational() && s.weighted);
+        // Periodic: the curve closes with matching tangents.
+        let (a, b) = s.curve.domain();
+        let (mut da, mut db) = ([0.0; 4], [0.0; 4]);
+        s.curve.eval_derivs(a, 1, &mut da);
+        s.curve.eval_derivs(b, 1, &mut db);
+        for (x, y) in da.iter().zip(&db) {
+            assert!((x - y).abs() < 1e-12, "{da:?} vs {db:?}");
+        }
+    }
+}

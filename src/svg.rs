@@ -1,0 +1,256 @@
+//! A small SVG writer for result figures: polylines, dots, numbered segments and labels,
+//! with the view box fitted to the content and y pointing up.
+
+use std::fmt::Write as _;
+
+/// Colors of the figure elements (curves cycle through the first ones).
+const PALETTE: [&str; 4] = ["#1f4e9c", "#2a8c4a", "#8c2a7a", "#b05a00"];
+
+enum Item {
+    Polyline {
+        points: Vec<[f64; 2]>,
+        color: &'static str,
+        width: f64,
+        closed: bool,
+    },
+    Dot {
+        at: [f64; 2],
+        color: &'static str,
+    },
+    Segment {
+        from: [f64; 2],
+        to: [f64; 2],
+        label: Option<String>,
+    },
+    Text {
+        at: [f64; 2],
+        text: String,
+    },
+}
+
+/// A figure under construction.
+#[derive(Default)]
+pub struct Figure {
+    items: Vec<Item>,
+    curves: usize,
+    title: Option<String>,
+}
+
+impl Figure {
+    /// An empty figure.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// A curve as a dense polyline (a new color per curve).
+    pub fn curve(&mut self, points: Vec<[f64; 2]>, closed: bool) {
+        let color = PALETTE[self.curves % PALETTE.len()];
+        self.curves += 1;
+        self.items.push(Item::Polyline {
+            points,
+            color,
+            width: 2.0,
+            closed,
+        });
+    }
+
+    /// A thin polyline (bisector branches, foot-point lines).
+    pub fn thin(&mut self, points: Vec<[f64; 2]>, color: &'static str) {
+        self.items.push(Item::Polyline {
+            points,
+            color,
+            width: 0.6,
+            closed: false,
+        });
+    }
+
+    /// A marked point (inflections).
+    pub fn dot(&mut self, at: [f64; 2]) {
+        self.items.push(Item::Dot {
+            at,
+            color: "#d62020",
+        });
+    }
+
+    /// A segment between two points, optionally numbered at its middle (antipodal pairs).
+    pub fn segment(&mut self, from: [f64; 2], to: [f64; 2], label: Option<String>) {
+        self.items.push(Item::Segment { from, to, label });
+    }
+
+    /// A caption in the top-left corner.
+    pub fn title(&mut self, text: impl Into<String>) {
+        self.title = Some(text.into());
+    }
+
+    /// A label at a point.
+    pub fn text(&mut self, at: [f64; 2], text: impl Into<String>) {
+        self.items.push(Item::Text {
+            at,
+            text: text.into(),
+        });
+    }
+
+    /// The SVG document.
+    pub fn render(&self) -> String {
+        let (lo, hi) = self.bounds();
+        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-9);
+        let pad = 0.06 * size;
+        let (x0, y0) = (lo[0] - pad, -hi[1] - pad);
+        let (w, h) = (hi[0] - lo[0] + 2.0 * pad, hi[1] - lo[1] + 2.0 * pad);
+        let px = 640.0;
+        let (pw, ph) = if w >= h {
+            (px, px * h / w)
+        } else {
+            (px * w / h, px)
+        };
+        let r = 0.008 * size;
+        let font = 0.035 * size;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{pw:.0}" height="{ph:.0}" viewBox="{} {} {} {}">"#,
+            num(x0),
+            num(y0),
+            num(w),
+            num(h)
+        );
+        let _ = writeln!(
+            s,
+            r##"<rect x="{}" y="{}" width="{}" height="{}" fill="#ffffff"/>"##,
+            num(x0),
+            num(y0),
+            num(w),
+            num(h)
+        );
+        for item in &self.items {
+            match item {
+                Item::Polyline {
+                    points,
+                    color,
+                    width,
+                    closed,
+                } => {
+                    let tag = if *closed { "polygon" } else { "polyline" };
+                    let pts: Vec<String> = points.iter().map(|p| pair(*p)).collect();
+                    let _ = writeln!(
+                        s,
+                        r#"<{tag} points="{}" fill="none" stroke="{color}" stroke-width="{width}" vector-effect="non-scaling-stroke" stroke-linejoin="round"/>"#,
+                        pts.join(" ")
+                    );
+                }
+                Item::Dot { at, color } => {
+                    let _ = writeln!(
+                        s,
+                        r#"<circle cx="{}" cy="{}" r="{}" fill="{color}"/>"#,
+                        num(at[0]),
+                        num(-at[1]),
+                        num(r)
+                    );
+                }
+                Item::Segment { from, to, label } => {
+                    let _ = writeln!(
+                        s,
+                        r##"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#444444" stroke-width="1" vector-effect="non-scaling-stroke" stroke-dasharray="4 3"/>"##,
+                        num(from[0]),
+                        num(-from[1]),
+                        num(to[0]),
+                        num(-to[1])
+                    );
+                    if let Some(label) = label {
+                        // Near the first end: segments often share their midpoint.
+                        let at = [
+                            from[0] + 0.1 * (to[0] - from[0]),
+                            from[1] + 0.1 * (to[1] - from[1]),
+                        ];
+                        text(&mut s, at, label, font);
+                    }
+                }
+                Item::Text { at, text: t } => text(&mut s, *at, t, font),
+            }
+        }
+        if let Some(t) = &self.title {
+            // In the top padding, in plot coordinates (y up).
+            text(&mut s, [x0 + 0.5 * pad, hi[1] + 0.2 * pad], t, font);
+        }
+        s.push_str("</svg>\n");
+        s
+    }
+
+    fn bounds(&self) -> ([f64; 2], [f64; 2]) {
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        let mut add = |p: &[f64; 2]| {
+            if p[0].is_finite() && p[1].is_finite() {
+                for c in 0..2 {
+                    lo[c] = lo[c].min(p[c]);
+                    hi[c] = hi[c].max(p[c]);
+                }
+            }
+        };
+        for item in &self.items {
+            match item {
+                Item::Polyline { points, .. } => points.iter().for_each(&mut add),
+                Item::Dot { at, .. } | Item::Text { at, .. } => add(at),
+                Item::Segment { from, to, .. } => {
+                    add(from);
+                    add(to);
+                }
+            }
+        }
+        if lo[0] > hi[0] {
+            return ([-1.0, -1.0], [1.0, 1.0]);
+        }
+        (lo, hi)
+    }
+}
+
+fn text(s: &mut String, at: [f64; 2], t: &str, font: f64) {
+    let escaped = t
+        .replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;");
+    let _ = writeln!(
+        s,
+        r##"<text x="{}" y="{}" font-size="{}" font-family="sans-serif" fill="#222222">{escaped}</text>"##,
+        num(at[0]),
+        num(-at[1]),
+        num(font)
+    );
+}
+
+/// A coordinate with enough digits for a figure; non-finite values become 0 (never invalid SVG).
+fn num(x: f64) -> String {
+    if !x.is_finite() {
+        return "0".into();
+    }
+    let s = format!("{x:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".into()
+    } else {
+        s.to_string()
+    }
+}
+
+/// A point as `x,y` with y flipped (SVG's y points down).
+fn pair(p: [f64; 2]) -> String {
+    format!("{},{}", num(p[0]), num(-p[1]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn renders_fitted_y_up() {
+        let mut f = Figure::new();
+        f.curve(vec![[0.0, 0.0], [10.0, 0.0], [10.0, 5.0]], false);
+        f.dot([10.0, 5.0]);
+        f.segment([0.0, 0.0], [10.0, 5.0], Some("1".into()));
+        let svg = f.render();
+        assert!(svg.starts_with("<svg"));
+        assert!(svg.contains("viewBox=\"-0.6 -5.6 11.2 6.2\""));
+        assert!(svg.contains("cy=\"-5\""));
+        assert!(svg.trim_end().ends_with("</svg>"));
+    }
+}

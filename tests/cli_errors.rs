@@ -1,0 +1,139 @@
+//! Exit status 2 with one line on stderr naming the file, the field and the problem, for every
+//! bad fixture and every kind of usage error.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{curvekit, fixture, fixtures_dir, json_files};
+
+/// Every file in `fixtures/bad/` with the field its message must name.
+const BAD: &[(&str, &str)] = &[
+    ("bezier_one_point.json", "points"),
+    ("center_arity.json", "center"),
+    ("coincident_points.json", "points"),
+    ("degree_not_integer.json", "degree"),
+    ("degree_too_high.json", "degree"),
+    ("degree_zero.json", "degree"),
+    ("ellipse_negative.json", "a"),
+    ("empty.json", "document"),
+    ("eps_out_of_range.json", "eps"),
+    ("invalid_json.json", "document"),
+    ("kind_not_string.json", "kind"),
+    ("knots_count.json", "knots"),
+    ("knots_decreasing.json", "knots[4]"),
+    ("knots_multiplicity.json", "knots"),
+    ("knots_overflow.json", "knots"),
+    ("knots_with_periodic.json", "knots"),
+    ("lemniscate_b_zero.json", "b"),
+    ("limacon_a_le_b.json", "a"),
+    ("limacon_b_negative.json", "b"),
+    ("m_not_integer.json", "m"),
+    ("m_too_small.json", "m"),
+    ("missing_field.json", "r"),
+    ("missing_kind.json", "kind"),
+    ("not_object.json", "document"),
+    ("number_out_of_range.json", "document"),
+    ("number_too_large.json", "r"),
+    ("p_negative.json", "p"),
+    ("periodic_not_bool.json", "periodic"),
+    ("point_arity.json", "points[1]"),
+    ("point_not_number.json", "points[1][1]"),
+    ("radius_zero.json", "r"),
+    ("too_few_points.json", "points"),
+    ("unknown_field.json", "radius"),
+    ("unknown_kind.json", "kind"),
+    ("weight_zero.json", "weights[1]"),
+    ("weights_count.json", "weights"),
+    ("wrong_type.json", "r"),
+];
+
+/// Asserts exit 2 and a single stderr line containing every `needle`.
+fn assert_usage_error(args: &[&str], needles: &[&str]) {
+    let r = curvekit(args);
+    assert_eq!(r.code, 2, "{args:?}: stderr {:?}", r.stderr);
+    assert_eq!(r.stderr.lines().count(), 1, "{args:?}: {:?}", r.stderr);
+    assert!(r.stdout.is_empty(), "{args:?}: {:?}", r.stdout);
+    for n in needles {
+        assert!(r.stderr.contains(n), "{args:?}: {:?} lacks {n:?}", r.stderr);
+    }
+}
+
+#[test]
+fn every_bad_fixture_is_listed() {
+    let on_disk: Vec<String> = json_files(&fixtures_dir().join("bad"))
+        .iter()
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    let listed: Vec<String> = BAD.iter().map(|(f, _)| f.to_string()).collect();
+    assert_eq!(on_disk, listed);
+}
+
+#[test]
+fn bad_fixtures_exit_2_naming_file_and_field() {
+    for (file, field) in BAD {
+        let path = fixture(&format!("bad/{file}"));
+        assert_usage_error(&["inflections", &path], &[&path, &format!(": {field}: ")]);
+    }
+}
+
+#[test]
+fn every_command_rejects_bad_input() {
+    let bad = fixture("bad/unknown_field.json");
+    let good = fixture("periodic_cubic.json");
+    for args in [
+        vec!["antipodal", bad.as_str()],
+        vec!["inflections", bad.as_str(), "--json"],
+        vec!["tangents", good.as_str(), bad.as_str()],
+        vec!["bisector", bad.as_str()],
+        vec!["bisector", good.as_str(), bad.as_str()],
+    ] {
+        assert_usage_error(&args, &[&bad, ": radius: "]);
+    }
+}
+
+#[test]
+fn unreadable_file() {
+    assert_usage_error(
+        &["inflections", "no/such/file.json"],
+        &["no/such/file.json"],
+    );
+}
+
+#[test]
+fn usage_errors_are_one_line_exit_2() {
+    let good = fixture("ellipse.json");
+    assert_usage_error(&[], &["no command"]);
+    assert_usage_error(&["frobnicate"], &["frobnicate"]);
+    assert_usage_error(&["inflections"], &["<CURVE>"]);
+    assert_usage_error(&["inflections", &good, "--bogus"], &["--bogus"]);
+    assert_usage_error(&["tangents", &good], &["<CURVE2>"]);
+    assert_usage_error(&["demo", "--svg", "x.svg"], &["--svg"]);
+    for tol in ["-1", "0", "abc", "inf", "NaN"] {
+        assert_usage_error(&["inflections", &good, "--tol", tol], &["--tol"]);
+    }
+    // Accepted by the parser but not by the antipodal algorithms: still a usage error.
+    assert_usage_error(&["antipodal", &good, "--tol", "0.5"], &["--tol"]);
+}
+
+#[test]
+fn unsuitable_curves_are_input_errors() {
+    // An open curve has no antipodal pairs to speak of.
+    let open = fixture("bezier_s.json");
+    assert_usage_error(&["antipodal", &open], &[&open, ": points: ", "not closed"]);
+    // Bisectors need the exact rational form.
+    let analytic = fixture("limacon.json");
+    assert_usage_error(&["bisector", &analytic], &[&analytic, ": kind: "]);
+}
+
+#[test]
+fn help_and_version_succeed() {
+    for args in [
+        vec!["--help"],
+        vec!["--version"],
+        vec!["inflections", "--help"],
+    ] {
+        let r = curvekit(&args);
+        assert_eq!(r.code, 0, "{args:?}");
+        assert!(!r.stdout.is_empty());
+    }
+}

@@ -1,0 +1,212 @@
+//! The JSON document of every command has the shape the contract gives; `--time`, `--svg` and
+//! `demo` do what they say.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{curvekit, curvekit_json, fixture};
+use serde_json::Value;
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+fn assert_point(v: &Value) {
+    let a = v.as_array().unwrap();
+    assert_eq!(a.len(), 2, "{v}");
+    a.iter().for_each(|x| assert!(num(x).is_finite()));
+}
+
+#[test]
+fn inflections_json() {
+    let d = curvekit_json(&["inflections", &fixture("periodic_cubic.json")]);
+    assert_eq!(d["certified"], Value::Bool(true));
+    let list = d["inflections"].as_array().unwrap();
+    assert_eq!(list.len(), 2);
+    for i in list {
+        assert!((0.0..6.0).contains(&num(&i["u"])));
+        assert_point(&i["p"]);
+        assert_eq!(i["certified"], Value::Bool(true));
+    }
+    assert_eq!(d["curve"]["kind"], "bspline");
+    assert!(d.get("stats").is_none());
+}
+
+#[test]
+fn inflections_known_values() {
+    // An S-shaped cubic Bézier, symmetric about its middle: the inflection is at u = 1/2.
+    let d = curvekit_json(&["inflections", &fixture("bezier_s.json")]);
+    let i = &d["inflections"][0];
+    assert!((num(&i["u"]) - 0.5).abs() < 1e-12);
+    assert!((num(&i["p"][0]) - 1.5).abs() < 1e-12 && num(&i["p"][1]).abs() < 1e-12);
+    // Limaçon r = a + b cos φ: inflections where a² + 3ab cos φ + 2b² = 0.
+    let d = curvekit_json(&["inflections", &fixture("limacon.json")]);
+    let (a, b) = (4.0f64, 2.5f64);
+    let phi = (-(a * a + 2.0 * b * b) / (3.0 * a * b)).acos();
+    let us: Vec<f64> = d["inflections"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| num(&i["u"]))
+        .collect();
+    assert_eq!(us.len(), 2);
+    assert!((us[0] - phi).abs() < 1e-8, "{us:?} vs {phi}");
+    assert!(
+        (us[1] - (std::f64::consts::TAU - phi)).abs() < 1e-8,
+        "{us:?}"
+    );
+}
+
+/// The `inflections` command (certified pipeline) and the inflection list of `antipodal` agree
+/// on closed spline curves.
+#[test]
+fn inflections_agree_with_antipodal() {
+    for f in [
+        "periodic_cubic.json",
+        "periodic_nurbs.json",
+        "clamped_closed.json",
+    ] {
+        let a = curvekit_json(&["inflections", &fixture(f)]);
+        let b = curvekit_json(&["antipodal", &fixture(f)]);
+        let us = |d: &Value| -> Vec<f64> {
+            d["inflections"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|i| num(&i["u"]))
+                .collect()
+        };
+        let (ua, ub) = (us(&a), us(&b));
+        assert_eq!(ua.len(), ub.len(), "{f}");
+        for (x, y) in ua.iter().zip(&ub) {
+            assert!((x - y).abs() < 1e-9, "{f}: {ua:?} vs {ub:?}");
+        }
+    }
+}
+
+#[test]
+fn antipodal_json() {
+    let d = curvekit_json(&["antipodal", &fixture("ellipse.json")]);
+    let pairs = d["pairs"].as_array().unwrap();
+    assert_eq!(pairs.len(), 2);
+    let mut last = f64::NEG_INFINITY;
+    for p in pairs {
+        let (s, t) = (num(&p["s"]), num(&p["t"]));
+        assert!(s >= last, "sorted by s");
+        last = s;
+        assert!(s != t);
+        assert_point(&p["p"]);
+        assert_point(&p["q"]);
+        let (pp, qq) = (&p["p"], &p["q"]);
+        let dist = (num(&qq[0]) - num(&pp[0])).hypot(num(&qq[1]) - num(&pp[1]));
+        assert!((dist - num(&p["distance"])).abs() < 1e-9);
+        assert!(["A", "B", "C", "D", "E"].contains(&p["type"].as_str().unwrap()));
+    }
+    assert!(d["inflections"].as_array().unwrap().is_empty());
+    assert!(d["families"].is_array());
+}
+
+#[test]
+fn tangents_json() {
+    let d = curvekit_json(&[
+        "tangents",
+        &fixture("ellipse.json"),
+        &fixture("circle.json"),
+    ]);
+    let lines = d["lines"].as_array().unwrap();
+    assert!(!lines.is_empty());
+    for l in lines {
+        assert!(num(&l["s"]).is_finite() && num(&l["t"]).is_finite());
+        assert_point(&l["p"]);
+        assert_point(&l["q"]);
+    }
+    assert_eq!(d["curves"].as_array().unwrap().len(), 2);
+}
+
+#[test]
+fn bisector_json() {
+    let d = curvekit_json(&[
+        "bisector",
+        &fixture("bisector-fig2-quadratic.json"),
+        &fixture("bisector-fig2-line.json"),
+    ]);
+    let branches = d["branches"].as_array().unwrap();
+    assert!(!branches.is_empty());
+    for b in branches {
+        let (tr, xy) = (b["tr"].as_array().unwrap(), b["xy"].as_array().unwrap());
+        assert_eq!(tr.len(), xy.len());
+        tr.iter().chain(xy).for_each(assert_point);
+    }
+}
+
+#[test]
+fn time_reports_stats() {
+    let d = curvekit_json(&["inflections", &fixture("bezier_s.json"), "--time"]);
+    let stats = &d["stats"];
+    assert!(num(&stats["median_us"]) > 0.0);
+    assert!(stats["runs"].as_u64().unwrap() >= 3);
+    let r = curvekit(&["inflections", &fixture("bezier_s.json"), "--time"]);
+    assert_eq!(r.code, 0);
+    assert!(r
+        .stdout
+        .lines()
+        .any(|l| l.starts_with("time:") && l.contains("median")));
+}
+
+#[test]
+fn svg_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, name) in [
+        (vec!["inflections", "periodic_nurbs.json"], "i.svg"),
+        (vec!["antipodal", "limacon.json"], "a.svg"),
+        (vec!["tangents", "ellipse.json", "circle.json"], "t.svg"),
+        (
+            vec![
+                "bisector",
+                "bisector-fig2-quadratic.json",
+                "bisector-fig2-line.json",
+            ],
+            "b.svg",
+        ),
+    ] {
+        let path = dir.path().join(name);
+        let mut full: Vec<String> = vec![args[0].to_string()];
+        full.extend(args[1..].iter().map(|f| fixture(f)));
+        full.extend(["--svg".to_string(), path.display().to_string()]);
+        let refs: Vec<&str> = full.iter().map(String::as_str).collect();
+        let r = curvekit(&refs);
+        assert_eq!(r.code, 0, "{args:?}: {}", r.stderr);
+        let svg = std::fs::read_to_string(&path).unwrap();
+        assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+        assert!(svg.contains("viewBox"));
+    }
+}
+
+#[test]
+fn demo_writes_figures() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    let r = curvekit(&["demo", "--out", out.to_str().unwrap(), "--json"]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let d: Value = serde_json::from_str(&r.stdout).unwrap();
+    let shapes = d["shapes"].as_array().unwrap();
+    assert!(shapes.len() >= 8);
+    for s in shapes {
+        // Inflections are available for every example.
+        assert!(s["inflections"].is_array(), "{s}");
+        let svg = std::fs::read_to_string(s["svg"].as_str().unwrap()).unwrap();
+        assert!(svg.starts_with("<svg"));
+    }
+    let names: Vec<&str> = shapes.iter().map(|s| s["name"].as_str().unwrap()).collect();
+    for paper in [
+        "limacon",
+        "elliptic_lemniscate",
+        "convexities_m3",
+        "convexities_m4",
+    ] {
+        assert!(names.contains(&paper));
+    }
+    for b in d["bisectors"].as_array().unwrap() {
+        assert!(std::path::Path::new(b["svg"].as_str().unwrap()).exists());
+    }
+}

@@ -629,7 +629,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(48))]
+        #![proptest_config(ProptestConfig::with_cases(1000))]
 
         /// Outer products, sums and products evaluate to their defining formulas.
         #[test]

@@ -34,6 +34,7 @@ pub struct Figure {
     items: Vec<Item>,
     curves: usize,
     title: Option<String>,
+    frame: Option<([f64; 2], [f64; 2])>,
 }
 
 impl Figure {
@@ -82,6 +83,13 @@ impl Figure {
         self.title = Some(text.into());
     }
 
+    /// Fixes the drawn region to the box `lo`–`hi` (plot coordinates) instead of fitting it to
+    /// the content; what lies outside is clipped. Bisectors reach far from their curves, and a
+    /// figure fitted to them would show the curves as a dot.
+    pub fn frame(&mut self, lo: [f64; 2], hi: [f64; 2]) {
+        self.frame = Some((lo, hi));
+    }
+
     /// A label at a point.
     pub fn text(&mut self, at: [f64; 2], text: impl Into<String>) {
         self.items.push(Item::Text {
@@ -92,7 +100,13 @@ impl Figure {
 
     /// The SVG document.
     pub fn render(&self) -> String {
-        let (lo, hi) = self.bounds();
+        side_by_side(&[self])
+    }
+
+    /// One panel as a nested `<svg>` element at horizontal offset `x` (pixels), with its width
+    /// and height in pixels. A nested `<svg>` clips what lies outside its view box.
+    fn panel(&self, x: f64) -> (String, f64, f64) {
+        let (lo, hi) = self.frame.unwrap_or_else(|| self.bounds());
         let size = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-9);
         let pad = 0.06 * size;
         let (x0, y0) = (lo[0] - pad, -hi[1] - pad);
@@ -103,12 +117,14 @@ impl Figure {
         } else {
             (px * w / h, px)
         };
+        // Stroke widths are given in pixels and converted to user units, so every renderer
+        // draws them alike (`vector-effect` is not supported everywhere).
+        let upx = w / pw;
         let r = 0.008 * size;
-        let font = 0.035 * size;
         let mut s = String::new();
         let _ = writeln!(
             s,
-            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{pw:.0}" height="{ph:.0}" viewBox="{} {} {} {}">"#,
+            r#"<svg x="{x:.0}" y="0" width="{pw:.0}" height="{ph:.0}" viewBox="{} {} {} {}">"#,
             num(x0),
             num(y0),
             num(w),
@@ -134,8 +150,9 @@ impl Figure {
                     let pts: Vec<String> = points.iter().map(|p| pair(*p)).collect();
                     let _ = writeln!(
                         s,
-                        r#"<{tag} points="{}" fill="none" stroke="{color}" stroke-width="{width}" vector-effect="non-scaling-stroke" stroke-linejoin="round"/>"#,
-                        pts.join(" ")
+                        r#"<{tag} points="{}" fill="none" stroke="{color}" stroke-width="{}" stroke-linejoin="round"/>"#,
+                        pts.join(" "),
+                        num(width * upx)
                     );
                 }
                 Item::Dot { at, color } => {
@@ -150,11 +167,14 @@ impl Figure {
                 Item::Segment { from, to, label } => {
                     let _ = writeln!(
                         s,
-                        r##"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#444444" stroke-width="1" vector-effect="non-scaling-stroke" stroke-dasharray="4 3"/>"##,
+                        r##"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#444444" stroke-width="{}" stroke-dasharray="{} {}"/>"##,
                         num(from[0]),
                         num(-from[1]),
                         num(to[0]),
-                        num(-to[1])
+                        num(-to[1]),
+                        num(upx),
+                        num(4.0 * upx),
+                        num(3.0 * upx)
                     );
                     if let Some(label) = label {
                         // Near the first end: segments often share their midpoint.
@@ -162,18 +182,18 @@ impl Figure {
                             from[0] + 0.1 * (to[0] - from[0]),
                             from[1] + 0.1 * (to[1] - from[1]),
                         ];
-                        text(&mut s, at, label, font);
+                        text(&mut s, at, label, upx);
                     }
                 }
-                Item::Text { at, text: t } => text(&mut s, *at, t, font),
+                Item::Text { at, text: t } => text(&mut s, *at, t, upx),
             }
         }
         if let Some(t) = &self.title {
             // In the top padding, in plot coordinates (y up).
-            text(&mut s, [x0 + 0.5 * pad, hi[1] + 0.2 * pad], t, font);
+            text(&mut s, [x0 + 0.5 * pad, hi[1] + 0.2 * pad], t, upx);
         }
         s.push_str("</svg>\n");
-        s
+        (s, pw, ph)
     }
 
     fn bounds(&self) -> ([f64; 2], [f64; 2]) {
@@ -204,37 +224,55 @@ impl Figure {
     }
 }
 
-fn text(s: &mut String, at: [f64; 2], t: &str, font: f64) {
+/// Text of 14 pixels whatever the figure's scale: set in pixels and scaled to user units by a
+/// transform (tiny user-unit font sizes render badly in some viewers).
+fn text(s: &mut String, at: [f64; 2], t: &str, upx: f64) {
     let escaped = t
         .replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;");
     let _ = writeln!(
         s,
-        r##"<text x="{}" y="{}" font-size="{}" font-family="sans-serif" fill="#222222">{escaped}</text>"##,
+        r##"<text transform="translate({} {}) scale({})" font-size="14" font-family="sans-serif" fill="#222222">{escaped}</text>"##,
         num(at[0]),
         num(-at[1]),
-        num(font)
+        num(upx)
     );
 }
 
-/// A coordinate with enough digits for a figure; non-finite values become 0 (never invalid SVG).
+/// A number with about seven significant digits, whatever the figure's scale (f32's shortest
+/// round-trip form); non-finite values become 0 (never invalid SVG).
 fn num(x: f64) -> String {
+    let x = x as f32;
     if !x.is_finite() {
         return "0".into();
     }
-    let s = format!("{x:.6}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" || s.is_empty() {
-        "0".into()
-    } else {
-        s.to_string()
+    if x == 0.0 {
+        return "0".into();
     }
+    x.to_string()
 }
 
 /// A point as `x,y` with y flipped (SVG's y points down).
 fn pair(p: [f64; 2]) -> String {
     format!("{},{}", num(p[0]), num(-p[1]))
+}
+
+/// Figures side by side in one SVG document (a figure and its parameter-space view).
+pub fn side_by_side(figures: &[&Figure]) -> String {
+    let gap = 16.0;
+    let (mut body, mut x, mut height) = (String::new(), 0.0, 0.0f64);
+    for f in figures {
+        let (panel, pw, ph) = f.panel(x);
+        body.push_str(&panel);
+        x += pw + gap;
+        height = height.max(ph);
+    }
+    let width = (x - gap).max(0.0);
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width:.0}\" height=\"{height:.0}\">\n\
+         <rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n{body}</svg>\n"
+    )
 }
 
 #[cfg(test)]
@@ -252,5 +290,20 @@ mod tests {
         assert!(svg.contains("viewBox=\"-0.6 -5.6 11.2 6.2\""));
         assert!(svg.contains("cy=\"-5\""));
         assert!(svg.trim_end().ends_with("</svg>"));
+    }
+
+    #[test]
+    fn frames_clip_and_panels_sit_side_by_side() {
+        let mut f = Figure::new();
+        f.thin(vec![[0.0, 0.0], [1e6, 0.0]], "#000000");
+        f.frame([0.0, 0.0], [10.0, 10.0]);
+        let mut g = Figure::new();
+        g.curve(vec![[0.0, 0.0], [1.0, 1.0]], false);
+        let svg = side_by_side(&[&f, &g]);
+        // The frame, not the far point, sets the view box; the second panel follows the first.
+        assert!(svg.contains("viewBox=\"-0.6 -10.6 11.2 11.2\""));
+        assert!(svg.contains("<svg x=\"0\""));
+        assert!(svg.contains("<svg x=\"656\""));
+        assert_eq!(svg.matches("<svg").count(), 3);
     }
 }

@@ -44,19 +44,13 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
         .time
         .then(|| timing::measure(|| antipodal::antipodal(plane.as_ref(), &opts)));
     if let Some(svg) = &common.svg {
-        let mut fig = Figure::new();
-        draw_curve(&mut fig, &curve);
-        for (k, pair) in found.pairs.iter().enumerate() {
-            fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
-        }
-        found.inflections.iter().for_each(|i| fig.dot(i.p));
-        fig.title(format!(
+        let title = format!(
             "{}: {} antipodal pairs, {} inflections",
             curve.file,
             found.pairs.len(),
             found.inflections.len()
-        ));
-        write_file(svg, &fig.render())?;
+        );
+        write_file(svg, &report::antipodal_figure(&curve, &found, title))?;
     }
     print_out(&if common.json {
         report::json_doc(&found, &[&curve], stats.as_ref())
@@ -114,11 +108,8 @@ pub(super) fn run_bisector(
     let found = compute().map_err(zeroset_failure)?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
-        let mut fig = Figure::new();
-        curves.iter().for_each(|c| draw_curve(&mut fig, c));
-        report::draw_bisector(&mut fig, &c1, c2.as_ref().unwrap_or(&c1), &found);
-        fig.title(format!("{} bisector branches", found.branches.len()));
-        write_file(svg, &fig.render())?;
+        let title = format!("{} bisector branches", found.branches.len());
+        write_file(svg, &report::bisector_figure(&curves, &found, title))?;
     }
     print_out(&if common.json {
         report::json_doc(&found, &curves, stats.as_ref())

@@ -2,7 +2,7 @@
 //! of Jia's papers and a few B-spline/NURBS curves (inflections, antipodal pairs), then the
 //! bisector figures of Elber & Kim.
 
-use super::report::{curve_json, draw_bisector, draw_curve, time_line};
+use super::report::{antipodal_figure, bisector_figure, curve_json, draw_curve, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
 use curvekit::inflections::{inflections, Inflections};
 use curvekit::io::{parse_curve, Curve};
@@ -175,34 +175,31 @@ fn shape_row(
         .rational()
         .is_some()
         .then(|| bisector_within_budget(std::slice::from_ref(&curve), common.tol));
-    let mut fig = Figure::new();
-    draw_curve(&mut fig, &curve);
-    if let Some(Ok(a)) = &antipodal {
-        for (k, pair) in a.pairs.iter().enumerate() {
-            fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
-        }
-    }
-    if let Some(Ok(found)) = &inflections {
-        found.inflections.iter().for_each(|i| fig.dot(i.p));
-    }
-    fig.title(format!(
+    let title = format!(
         "{name}: {} inflections, {} antipodal pairs",
         cell(&inflections, |i| i.inflections.len().to_string()),
         cell(&antipodal, |a| a.pairs.len().to_string()),
-    ));
+    );
     let svg = out.join(format!("{name}.svg"));
-    write_file(&svg, &fig.render())?;
+    let figure = match &antipodal {
+        Some(Ok(a)) => antipodal_figure(&curve, a, title),
+        // An open curve, or a failure (reported in the table): the curve and its inflections.
+        _ => {
+            let mut fig = Figure::new();
+            draw_curve(&mut fig, &curve);
+            if let Some(Ok(found)) = &inflections {
+                found.inflections.iter().for_each(|i| fig.dot(i.p));
+            }
+            fig.title(title);
+            fig.render()
+        }
+    };
+    write_file(&svg, &figure)?;
     if let Some(Ok(b)) = &self_bisector {
-        let mut fig = Figure::new();
-        draw_curve(&mut fig, &curve);
-        draw_bisector(&mut fig, &curve, &curve, b);
-        fig.title(format!(
-            "{name}: self-bisector, {} branches",
-            branch_count(b)
-        ));
+        let title = format!("{name}: self-bisector, {} branches", branch_count(b));
         write_file(
             &out.join(format!("{name}_self_bisector.svg")),
-            &fig.render(),
+            &bisector_figure(&[&curve], b, title),
         )?;
     }
     Ok(ShapeRow {
@@ -227,18 +224,22 @@ fn bisector_row(
         curves.push(parse_curve(&format!("demo:{n}"), text)?);
     }
     let result = bisector_within_budget(&curves, common.tol);
-    let mut fig = Figure::new();
-    curves.iter().for_each(|c| draw_curve(&mut fig, c));
-    if let (Ok(b), Some(first)) = (&result, curves.first()) {
-        draw_bisector(&mut fig, first, curves.get(1).unwrap_or(first), b);
-    }
-    let branches = result.as_ref().map(|r| r.branches.len());
-    fig.title(format!(
-        "{name}: {} bisector branches",
-        branches.map_or_else(|e| e.clone(), |n| n.to_string())
-    ));
     let svg = out.join(format!("{name}.svg"));
-    write_file(&svg, &fig.render())?;
+    let refs: Vec<&Curve> = curves.iter().collect();
+    let figure = match &result {
+        Ok(b) => bisector_figure(
+            &refs,
+            b,
+            format!("{name}: {} bisector branches", branch_count(b)),
+        ),
+        Err(e) => {
+            let mut fig = Figure::new();
+            curves.iter().for_each(|c| draw_curve(&mut fig, c));
+            fig.title(format!("{name}: {e}"));
+            fig.render()
+        }
+    };
+    write_file(&svg, &figure)?;
     Ok(BisectorRow {
         name,
         curves,

@@ -4,7 +4,7 @@ use super::timing::Stats;
 use antipodal::{Antipodal, Tangents};
 use curvekit::inflections::Inflections;
 use curvekit::io::{Curve, Shape};
-use curvekit::svg::Figure;
+use curvekit::svg::{side_by_side, Figure};
 use serde::Serialize;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
@@ -254,21 +254,75 @@ pub(crate) fn bisector_text(curves: &[&Curve], r: &Bisector, stats: Option<&Stat
     s
 }
 
-/// Bisector branches as thin polylines, with a few foot-point lines per branch.
-pub(crate) fn draw_bisector(fig: &mut Figure, c1: &Curve, c2: &Curve, r: &Bisector) {
-    let (Ok(p1), Ok(p2)) = (c1.plane_curve(), c2.plane_curve()) else {
-        return;
+/// The antipodal figure: the curve, its inflections, and each pair as a numbered segment
+/// (Jia's Figures 1 and 24).
+pub(crate) fn antipodal_figure(curve: &Curve, found: &Antipodal, title: String) -> String {
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, curve);
+    for (k, pair) in found.pairs.iter().enumerate() {
+        fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
+    }
+    found.inflections.iter().for_each(|i| fig.dot(i.p));
+    fig.title(title);
+    fig.render()
+}
+
+/// The bisector figure, as in Elber and Kim's: the curves, the bisector branches and thin
+/// lines from a few bisector points to their foot points, framed around the curves (branches
+/// run off to infinity where the normals turn parallel); beside it, the zero set in the
+/// `(t, r)` parameter square. `curves` holds one curve for a self-bisector.
+pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) -> String {
+    let (c1, c2) = match curves {
+        [c1] => (*c1, *c1),
+        [c1, c2, ..] => (*c1, *c2),
+        [] => return Figure::new().render(),
     };
-    for b in &r.branches {
-        fig.thin(b.xy.clone(), "#d62020");
-        let step = (b.xy.len() / 6).max(1);
-        for (tr, xy) in b.tr.iter().zip(&b.xy).step_by(step) {
-            fig.thin(
-                vec![p1.jet(tr[0]).p.arr(), *xy, p2.jet(tr[1]).p.arr()],
-                "#999999",
-            );
+    let mut plane = Figure::new();
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for c in curves {
+        draw_curve(&mut plane, c);
+        for p in c.polyline(256) {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
         }
     }
+    if lo[0] <= hi[0] {
+        let pad = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        plane.frame([lo[0] - pad, lo[1] - pad], [hi[0] + pad, hi[1] + pad]);
+    }
+    if let (Ok(p1), Ok(p2)) = (c1.plane_curve(), c2.plane_curve()) {
+        for b in &r.branches {
+            plane.thin(b.xy.clone(), "#d62020");
+            let step = (b.xy.len() / 6).max(1);
+            for (tr, xy) in b.tr.iter().zip(&b.xy).step_by(step) {
+                plane.thin(
+                    vec![p1.jet(tr[0]).p.arr(), *xy, p2.jet(tr[1]).p.arr()],
+                    "#999999",
+                );
+            }
+        }
+    }
+    plane.title(title);
+
+    // The parameter square, scaled to a unit square so that both domains read alike.
+    let ((t0, t1), (r0, r1)) = (c1.domain(), c2.domain());
+    let unit = |tr: &[f64; 2]| [(tr[0] - t0) / (t1 - t0), (tr[1] - r0) / (r1 - r0)];
+    let mut params = Figure::new();
+    params.thin(
+        vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]],
+        "#444444",
+    );
+    for b in &r.branches {
+        params.thin(b.tr.iter().map(unit).collect(), "#d62020");
+    }
+    params.text([0.45, -0.08], format!("t ∈ [{}, {}]", n(t0), n(t1)));
+    params.text([-0.05, 1.03], format!("r ∈ [{}, {}]", n(r0), n(r1)));
+    params.frame([-0.08, -0.1], [1.02, 1.06]);
+    params.title("zero set in (t, r)");
+    side_by_side(&[&plane, &params])
 }
 
 /// A number for text reports: shortest round-trip form, scientific when tiny or huge.

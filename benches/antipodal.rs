@@ -1,0 +1,97 @@
+//! Headline figures of the `antipodal` issue: every antipodal pair of the papers' shapes and of
+//! random periodic cubic B-splines, at the default tolerance, on one core. (Jia reports about
+//! 10 ms per shape on a 933 MHz Pentium III; IRIT 11 takes 1.3–5 ms; the target is ≤ 20 µs.)
+//! The convexities family `m = 3 … 12` shows how the cost grows with the number of pairs.
+#![allow(missing_docs, clippy::unwrap_used)]
+
+use antipodal::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon};
+use antipodal::{antipodal, Options, PlaneCurve, SplineCurve};
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
+use std::time::Duration;
+
+/// A random star-shaped periodic cubic B-spline with `n` control points (deterministic seed).
+fn star(n: usize, seed: u64) -> SplineCurve {
+    let mut x = seed;
+    let mut rnd = || {
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let pts: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (i as f64 + 0.8 * (rnd() - 0.5)) / n as f64;
+            let r = 0.35 + 0.65 * rnd();
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    SplineCurve::periodic(3, &pts, None).unwrap()
+}
+
+fn bench_one(c: &mut Criterion, name: &str, curve: &dyn PlaneCurve) {
+    let opts = Options::default();
+    // The run must succeed and be complete before it is timed.
+    let r = antipodal(curve, &opts).unwrap();
+    assert!(r.complete, "{name}");
+    c.bench_function(name, |b| {
+        b.iter(|| antipodal(black_box(curve), black_box(&opts)).unwrap())
+    });
+}
+
+fn papers_shapes(c: &mut Criterion) {
+    bench_one(
+        c,
+        "antipodal_ellipse_3x2",
+        &Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap(),
+    );
+    bench_one(
+        c,
+        "antipodal_limacon_4_2.5",
+        &Limacon::new(4.0, 2.5).unwrap(),
+    );
+    bench_one(
+        c,
+        "antipodal_lemniscate_6_3",
+        &EllipticLemniscate::new(6.0, 3.0).unwrap(),
+    );
+    bench_one(
+        c,
+        "antipodal_convexities_3_0.5_3",
+        &Convexities::new(3.0, 0.5, 3).unwrap(),
+    );
+    bench_one(
+        c,
+        "antipodal_convexities_4.5_0.2_4",
+        &Convexities::new(4.5, 0.2, 4).unwrap(),
+    );
+}
+
+fn random_splines(c: &mut Criterion) {
+    bench_one(c, "antipodal_bspline_cubic_8", &star(8, 7));
+    bench_one(c, "antipodal_bspline_cubic_20", &star(20, 11));
+}
+
+/// Convexities `r = 3 / (1 + 0.5 cos mφ)`: 2m inflections and a number of pairs growing with m.
+fn convexities_family(c: &mut Criterion) {
+    let opts = Options::default();
+    let mut g = c.benchmark_group("antipodal_convexities_m");
+    for m in 3..=12u32 {
+        let curve = Convexities::new(3.0, 0.5, m).unwrap();
+        let r = antipodal(&curve, &opts).unwrap();
+        assert!(r.complete);
+        g.bench_with_input(BenchmarkId::from_parameter(m), &m, |b, _| {
+            b.iter(|| antipodal(black_box(&curve), black_box(&opts)).unwrap())
+        });
+    }
+    g.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(500))
+        .sample_size(20);
+    targets = papers_shapes, random_splines, convexities_family
+}
+criterion_main!(benches);

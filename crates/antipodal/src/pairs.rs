@@ -173,6 +173,7 @@ pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Opt
         (js.d1.cross(jt.d1) / (js.d1.norm() * jt.d1.norm())).abs()
             + (r.dot(js.d1) / (r.norm() * js.d1.norm())).abs()
     };
+    crate::view::bump(11);
     let (s0, t0) = (s, t);
     let (mut s, mut t) = (s, t);
     let mut best = resid(s, t);

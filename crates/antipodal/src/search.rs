@@ -93,6 +93,7 @@ fn remainders<'a>(
         }
         let mut eps = (1e-6 * (p.sb - p.sa)).max(min_eps);
         for _ in 0..64 {
+            crate::view::bump(13);
             let se = s + dir * eps;
             if se <= p.sa || se >= p.sb {
                 if eps > min_eps {
@@ -133,6 +134,7 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
         if (s1 - s0).abs() <= p.vs.tol {
             break;
         }
+        crate::view::bump(10);
         // Illinois step, with a plain halving every few steps to bound the worst case.
         let mut sm = if i % 5 == 4 {
             0.5 * (s0 + s1)
@@ -181,6 +183,7 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
     for _ in 0..MARCH_STEPS {
+        crate::view::bump(8);
         let dir = p.r(s, t).unit();
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let ns = p.vs.point_with_normal_near(lo, hi, dir, s)?;
@@ -222,6 +225,7 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
     for _ in 0..MARCH_STEPS {
+        crate::view::bump(9);
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let prefer = if up { Prefer::Low } else { Prefer::High };
         let ns =

@@ -399,11 +399,18 @@ impl State<'_> {
                 break;
             }
             let newton = x - fx / dfx;
-            x = if newton > lo && newton < hi && dfx != 0.0 {
-                newton
+            if newton > lo && newton < hi && dfx != 0.0 {
+                // Newton approaches a simple root from one side, so the bracket need not
+                // shrink: stop once the step is far below the tolerance (the error is then of
+                // the order of its square). The outward probes below bracket the result.
+                let converged = (newton - x).abs() <= 0.25 * self.tol;
+                x = newton;
+                if converged {
+                    break;
+                }
             } else {
-                0.5 * (lo + hi)
-            };
+                x = 0.5 * (lo + hi);
+            }
         }
         // A last Newton step from the final iterate, kept inside the bracket.
         self.f.eval_d1(x, &mut d);

@@ -224,8 +224,13 @@ impl Patch {
     /// the patch is divisible to within `rel` of its scale; `None` otherwise.
     ///
     /// With local `u, v` the relation `F = (u − v) Q` reads, coefficient by coefficient,
-    /// `n² F_kl = k (n − l) Q_(k−1)l − l (n − k) Q_k(l−1)`; rows of `Q` follow one from the
-    /// other, and the equations not used to compute them measure the divisibility.
+    /// `n² F_kl = k (n − l) Q_(k−1)l − l (n − k) Q_k(l−1)`. It couples one anti-diagonal
+    /// `k + l = s` of `F` (m + 1 values) with one anti-diagonal of `Q` (m unknowns): a
+    /// bidiagonal system with one equation to spare. Solving it from one end only (a plain
+    /// recurrence) multiplies rounding errors by up to `(n − 1)²` per step, which made
+    /// high-degree cells look indivisible. Here each anti-diagonal is solved from both ends
+    /// toward its middle, where every step has a factor ≤ 1 (as in stable polynomial
+    /// deflation), and the spare equation in the middle measures the divisibility.
     pub(crate) fn divide_diagonal(&self, rel: f64) -> Option<Patch> {
         let n = self.pt;
         if n == 0 || self.pr != n || self.t0 != self.r0 || self.t1 != self.r1 {
@@ -235,25 +240,45 @@ impl Patch {
         let f = |k: usize, l: usize| self.c[k * w + l];
         let nn = (n * n) as f64;
         let mut q = vec![0.0; n * n];
-        for k in 0..n {
-            for l in 1..=n {
-                let prev = if k > 0 && l < n {
-                    q[(k - 1) * n + l]
-                } else {
-                    0.0
-                };
-                q[k * n + l - 1] =
-                    ((k * (n - l)) as f64 * prev - nn * f(k, l)) / (l * (n - k)) as f64;
-            }
-        }
         let scale = self.max_abs().max(f64::MIN_POSITIVE);
         let mut resid: f64 = 0.0;
-        for k in 0..=n {
-            let prev = if k > 0 { q[(k - 1) * n] } else { 0.0 };
-            resid = resid.max((nn * f(k, 0) - (k * n) as f64 * prev).abs());
+        for s in 0..=2 * n {
+            let (kmin, kmax) = (s.saturating_sub(n), s.min(n));
+            // Equation k: n² F(k, s−k) = a(k) Q(k−1, s−k) − b(k) Q(k, s−1−k), with a(kmin) =
+            // b(kmax) = 0; the unknowns are Q(k, s−1−k) for kmin ≤ k < kmax.
+            let a = |k: usize| (k * (n + k - s)) as f64;
+            let b = |k: usize| ((s - k) * (n - k)) as f64;
+            if kmin == kmax {
+                // A corner of F (s = 0 or 2n): no unknown, F must vanish there.
+                resid = resid.max(nn * f(kmin, s - kmin).abs());
+                continue;
+            }
+            // Forward while a(k) ≤ b(k) (then |a/b| ≤ 1), backward from the other end.
+            let mut mid = kmin;
+            while mid < kmax && a(mid) <= b(mid) {
+                mid += 1;
+            }
+            // Equations kmin..mid−1 give Q(kmin..mid−1) forward; equations kmax..mid+1 give
+            // Q(kmax−1..mid) backward; equation `mid` is the spare one.
+            let mut prev = 0.0;
+            for k in kmin..mid {
+                let qk = (a(k) * prev - nn * f(k, s - k)) / b(k);
+                q[k * n + (s - 1 - k)] = qk;
+                prev = qk;
+            }
+            let mut next = 0.0;
+            for k in (mid + 1..=kmax).rev() {
+                let qk1 = (nn * f(k, s - k) + b(k) * next) / a(k);
+                q[(k - 1) * n + (s - k)] = qk1;
+                next = qk1;
+            }
+            let lhs = nn * f(mid, s - mid);
+            let left = if mid > kmin { q[(mid - 1) * n + (s - mid)] } else { 0.0 };
+            let right = if mid < kmax { q[mid * n + (s - 1 - mid)] } else { 0.0 };
+            resid = resid.max((lhs - a(mid) * left + b(mid) * right).abs());
         }
-        for l in 0..n {
-            resid = resid.max((nn * f(n, l) - (n * (n - l)) as f64 * q[(n - 1) * n + l]).abs());
+        if std::env::var("ZS_DEBUG").is_ok() {
+            eprintln!("DIV n {n} box {} {} resid/scale {:e}", self.t0, self.t1, resid / (nn * scale));
         }
         if resid > rel * nn * scale {
             return None;

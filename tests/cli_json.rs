@@ -139,6 +139,72 @@ fn bisector_json() {
     }
 }
 
+/// Every bisector point of `branches` as `[x, y]`.
+fn bisector_points(d: &Value) -> Vec<[f64; 2]> {
+    d["branches"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|b| b["xy"].as_array().unwrap().clone())
+        .map(|p| [num(&p[0]), num(&p[1])])
+        .collect()
+}
+
+/// Distance from `p` to the nearest segment of the branches' polylines.
+fn distance_to_branches(d: &Value, p: [f64; 2]) -> f64 {
+    let mut best = f64::INFINITY;
+    for b in d["branches"].as_array().unwrap() {
+        let xy: Vec<[f64; 2]> = b["xy"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|q| [num(&q[0]), num(&q[1])])
+            .collect();
+        for w in xy.windows(2) {
+            let (a, c) = (w[0], w[1]);
+            let (dx, dy) = (c[0] - a[0], c[1] - a[1]);
+            let len2 = dx * dx + dy * dy;
+            let s = if len2 > 0.0 {
+                (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            best = best.min((p[0] - a[0] - s * dx).hypot(p[1] - a[1] - s * dy));
+        }
+    }
+    best
+}
+
+/// `--method` and `--trimmed` reach the library: the three functions of §3 trace the same
+/// bisector, and the trimmed bisector is a part of it.
+#[test]
+fn bisector_methods_and_trimming_agree() {
+    let (c1, c2) = (
+        fixture("bisector-fig3-quadratic1.json"),
+        fixture("bisector-fig3-quadratic2.json"),
+    );
+    let f3 = curvekit_json(&["bisector", &c1, &c2, "--method", "f3"]);
+    // Chord tolerance 1e-3 of a diagonal of about 5, on both polylines.
+    let near = 2.0 * 1e-3 * 5.0;
+    for method in ["f1", "f2"] {
+        let other = curvekit_json(&["bisector", &c1, &c2, "--method", method]);
+        let pts = bisector_points(&other);
+        assert!(!pts.is_empty(), "{method}");
+        for p in pts.iter().filter(|p| p[0].hypot(p[1]) < 10.0) {
+            let d = distance_to_branches(&f3, *p);
+            assert!(d <= near, "{method}: {p:?} is {d} from the F3 bisector");
+        }
+    }
+    let trimmed = curvekit_json(&["bisector", &c1, &c2, "--trimmed"]);
+    let pts = bisector_points(&trimmed);
+    assert!(!pts.is_empty() && pts.len() < bisector_points(&f3).len());
+    for p in pts {
+        assert!(distance_to_branches(&f3, p) <= near, "trimmed point {p:?}");
+    }
+    let bad = curvekit(&["bisector", &c1, &c2, "--method", "f4"]);
+    assert_eq!(bad.code, 2);
+}
+
 #[test]
 fn time_reports_stats() {
     let d = curvekit_json(&["inflections", &fixture("bezier_s.json"), "--time"]);

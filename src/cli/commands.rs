@@ -1,12 +1,11 @@
 //! The single-curve and two-curve commands: read, compute, optionally time and draw, report.
 
 use super::report::{self, draw_curve};
-use super::{print_out, timing, write_file, Common, Failure};
+use super::{print_out, timing, write_file, BisectorArgs, Common, Failure};
 use curvekit::inflections::{inflections, ComputeError};
 use curvekit::io::{read_curve, Curve, CurveFileError, Problem, Shape};
 use curvekit::svg::Figure;
 use std::path::Path;
-use zeroset::BisectorOptions;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     let curve = read_curve(path)?;
@@ -90,15 +89,13 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
 pub(super) fn run_bisector(
     path1: &Path,
     path2: Option<&Path>,
+    args: &BisectorArgs,
     common: &Common,
 ) -> Result<(), Failure> {
     let c1 = read_curve(path1)?;
     let c2 = path2.map(read_curve).transpose()?;
     let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
-    let opts = BisectorOptions {
-        tol: common.tol,
-        ..BisectorOptions::default()
-    };
+    let opts = args.options(common.tol);
     let r1 = spline_of(&c1)?;
     let r2 = c2.as_ref().map(spline_of).transpose()?;
     let compute = || match r2 {

@@ -57,8 +57,53 @@ enum Command {
         /// Second curve file (JSON); omitted: the self-bisector of the first.
         curve2: Option<PathBuf>,
         #[command(flatten)]
+        options: BisectorArgs,
+        #[command(flatten)]
         common: Common,
     },
+}
+
+/// Options of the bisector command.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct BisectorArgs {
+    /// Bisector function of Elber and Kim (§3): f1 (Eq. 3), f2 (normal form) or f3 (Eq. 13).
+    #[arg(long, value_enum, default_value_t = MethodArg::F3)]
+    pub(crate) method: MethodArg,
+    /// Keep only points whose foot points are the nearest points of the curves (the trimmed
+    /// bisector of a medial axis or a Voronoi diagram).
+    #[arg(long)]
+    pub(crate) trimmed: bool,
+    /// Chord tolerance of the bisector polylines, relative to the curves' bounding-box diagonal.
+    #[arg(long, value_name = "C", default_value_t = 1e-3, value_parser = parse_tol, allow_hyphen_values = true)]
+    pub(crate) chord_tol: f64,
+}
+
+/// The bisector function, as named on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub(crate) enum MethodArg {
+    /// Eq. 3: equal distances along the normals.
+    F1,
+    /// §3.2: the normal form.
+    F2,
+    /// Eq. 13 times the cross product of the tangents: lowest degree (default).
+    F3,
+}
+
+impl BisectorArgs {
+    /// The library's options for these arguments and the common tolerance.
+    pub(crate) fn options(&self, tol: f64) -> zeroset::BisectorOptions {
+        zeroset::BisectorOptions {
+            method: match self.method {
+                MethodArg::F1 => zeroset::Method::F1,
+                MethodArg::F2 => zeroset::Method::F2,
+                MethodArg::F3 => zeroset::Method::F3,
+            },
+            tol,
+            chord_tol: self.chord_tol,
+            trimmed: self.trimmed,
+            ..zeroset::BisectorOptions::default()
+        }
+    }
 }
 
 /// Options every command takes.
@@ -134,8 +179,9 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
         Command::Bisector {
             curve1,
             curve2,
+            options,
             common,
-        } => commands::run_bisector(&curve1, curve2.as_deref(), &common),
+        } => commands::run_bisector(&curve1, curve2.as_deref(), &options, &common),
     }
 }
 

@@ -20,6 +20,8 @@ use serde::{Deserialize, Serialize};
 pub const RESIDUAL: f64 = 1e-9;
 /// Points farther than this many bounding-box diagonals count as points at infinity.
 const FAR: f64 = 1e3;
+/// Relative residual below which a diagonal cell counts as divisible by `t − r`.
+const DIVISIBLE: f64 = 1e-8;
 
 /// Options for [`bisector`] and [`self_bisector`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -472,9 +474,15 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
         if p.t0 >= p.r1 {
             continue; // entirely below the diagonal: the mirror of a cell above it
         }
-        // Diagonal cells: divide (t − r) out as often as it divides (twice for F3).
-        for _ in 0..6 {
-            match p.divide_diagonal(1e-9) {
+        // Diagonal cells: divide (t − r) out as often as it divides. For F3 that is four
+        // times: F3 = den · F̂3 with den = C'(t) × C'(r) = O(t − r) and F̂3 = O((t − r)³)
+        // (|P − C(u)|² has critical points at both foot points, so its difference between
+        // them is a cubic in t − r). The quotient vanishes on the diagonal only at curvature
+        // extrema, where self-bisector branches end. A divisible cell has a relative
+        // residual near 1e-13, an indivisible one near 1; a cell left with a factor (t − r)
+        // would keep the extractor grinding along the whole diagonal.
+        for _ in 0..8 {
+            match p.divide_diagonal(DIVISIBLE) {
                 Some(q) => p = q,
                 None => break,
             }

@@ -94,14 +94,6 @@ impl Tracer<'_> {
             let mut stack = vec![(cell.clone(), 0usize)];
             while let Some((p, depth)) = stack.pop() {
                 out.patches += 1;
-                if std::env::var("ZS_DEBUG").is_ok() && out.patches % 5000 == 0 {
-                    eprintln!(
-                        "DBG cell {ci} depth {depth} box {:?} {:?} {:?}",
-                        [p.t0, p.t1, p.r0, p.r1],
-                        p.max_abs(),
-                        scale
-                    );
-                }
                 if out.patches > self.max_patches {
                     out.truncated = true;
                     return;

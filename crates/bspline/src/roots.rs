@@ -114,6 +114,76 @@ pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec
     Ok(merge_clusters(st.roots))
 }
 
+/// Proves that the scalar function `f` is positive on `[a, b]`: `Ok(None)` when every piece of
+/// a subdivision has all coefficients above their rounding-error bound (a proof, by the
+/// convex-hull property); else `Ok(Some(u))` with `u` the middle of the first (leftmost) stretch
+/// where positivity could not be shown down to the tolerance: there `f` is within rounding of
+/// zero or below it. For a double zero (a vanishing speed) that middle is the zero.
+///
+/// ```
+/// use bspline::{roots::{prove_positive, RootOptions}, BSpline};
+/// // (u − 0.5)² + 0.01 > 0, and (u − 0.5)² touches zero at 0.5.
+/// let pos = BSpline::bezier(1, vec![0.26, -0.24, 0.26]).unwrap();
+/// let touch = BSpline::bezier(1, vec![0.25, -0.25, 0.25]).unwrap();
+/// let opts = RootOptions::default();
+/// assert_eq!(prove_positive(&pos, 0.0, 1.0, &opts).unwrap(), None);
+/// let u = prove_positive(&touch, 0.0, 1.0, &opts).unwrap().unwrap();
+/// assert!((u - 0.5).abs() < 1e-6);
+/// ```
+pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Option<f64>> {
+    if f.dim() != 1 {
+        return Err(Error::DimensionMismatch {
+            expected: 1,
+            got: f.dim(),
+        });
+    }
+    let g = f.restrict(a, b)?;
+    let scale = g.max_abs_coef();
+    if scale == 0.0 {
+        return Ok(Some(a));
+    }
+    let tol = opts.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs()));
+    let err = 4.0 * (g.degree() + 2) as f64 * EPS * scale;
+    // Depth-first, left piece first: unproven pieces come out in order. The first run of
+    // touching unproven pieces is where the function reaches zero (within rounding); its middle
+    // is the estimate (a double zero, as of a speed, sits in the middle of its rounding zone).
+    let mut run: Option<(f64, f64)> = None;
+    let mut stack = vec![(Node::new(g), err, 0usize)];
+    let mut pieces = 0usize;
+    while let Some((node, err, depth)) = stack.pop() {
+        pieces += 1;
+        let c = node.coefs();
+        let (lo, hi) = node.interval();
+        if c.iter().all(|&x| x > err) {
+            if run.is_some() {
+                break;
+            }
+            continue;
+        }
+        // A piece within rounding of zero (or below it) is not split further: rounding would
+        // keep it unproven at every depth.
+        let flat = c.iter().all(|&x| x <= err);
+        if flat || hi - lo <= tol || depth >= opts.max_depth || pieces >= opts.max_pieces {
+            match &mut run {
+                None => run = Some((lo, hi)),
+                Some(r) if lo <= r.1 => r.1 = hi,
+                Some(_) => break,
+            }
+            continue;
+        }
+        let m = 0.5 * (lo + hi);
+        let Some((l, r)) = node.split(m) else {
+            run = run.or(Some((lo, hi)));
+            break;
+        };
+        let child_err = err
+            + 2.0 * (node.degree() + 1) as f64 * EPS * c.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        stack.push((r, child_err, depth + 1));
+        stack.push((l, child_err, depth + 1));
+    }
+    Ok(run.map(|(lo, hi)| 0.5 * (lo + hi)))
+}
+
 /// The roots of a periodic function over one whole period, with no seam: the search runs on
 /// the period rotated to start where the function has a trusted sign, so a root at the domain
 /// ends is found once, as an interior root. `u` is reported in the domain; a bracket may cross

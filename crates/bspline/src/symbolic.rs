@@ -37,6 +37,28 @@ pub fn tangent_numerator(c: &Rational) -> Result<BSpline> {
     w.mul(&x.deriv())?.sub(&w.deriv().mul(&x)?)
 }
 
+/// Proves that the curve is regular (its tangent never vanishes): `Ok(None)` when
+/// `|D|² = D · D` of the [`tangent_numerator`] `D` is proven positive on the whole domain, else
+/// `Ok(Some(u))` with a parameter near which the speed is within rounding of zero (a cusp or a
+/// stationary point), to the parameter tolerance `tol`.
+///
+/// ```
+/// use bspline::{symbolic, BSpline, Rational};
+/// // (u², u³) on [-1, 1], as a cubic Bézier on [0, 1]: a cusp at the parameter 0.5.
+/// let cusp = BSpline::bezier(2, vec![1., -1., -1. / 3., 1., -1. / 3., -1., 1., 1.]).unwrap();
+/// let u = symbolic::singular_point(&Rational::polynomial(&cusp), 1e-12).unwrap().unwrap();
+/// assert!((u - 0.5).abs() < 1e-6);
+/// let arc = BSpline::bezier(2, vec![1., 0., 1., 1., 0., 1.]).unwrap();
+/// assert_eq!(symbolic::singular_point(&Rational::polynomial(&arc), 1e-12).unwrap(), None);
+/// ```
+pub fn singular_point(c: &Rational, tol: f64) -> Result<Option<f64>> {
+    let d = tangent_numerator(c)?;
+    let speed2 = d.dot(&d)?;
+    let (a, b) = speed2.domain();
+    let opts = crate::roots::RootOptions::default().tolerance(tol);
+    crate::roots::prove_positive(&speed2, a, b, &opts)
+}
+
 /// The curvature numerator: `x′y″ − x″y′` for a polynomial curve (degree `2p − 3`), and
 /// `det[H, H′, H″]` (degree `3p − 3`) for a rational one, which equals `w³ (x′y″ − x″y′)`.
 /// Its roots are the inflections; its sign is the side the curve turns to.

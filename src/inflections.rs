@@ -17,6 +17,13 @@ pub enum ComputeError {
     /// The spline library refused an operation.
     #[error("spline arithmetic failed: {0}")]
     Spline(#[from] bspline::Error),
+    /// The curve's speed vanishes (a cusp or a stationary point): the curvature, and so an
+    /// inflection, is undefined there.
+    #[error("the curve is singular (zero speed or cusp) near u = {u}")]
+    Singular {
+        /// Where the speed is within rounding of zero.
+        u: f64,
+    },
 }
 
 /// One inflection (or an unresolved cluster of them).
@@ -75,6 +82,10 @@ pub fn inflections(curve: &Curve, tol: f64) -> Result<Inflections, ComputeError>
 
 /// Certified inflections of a B-spline or NURBS curve.
 pub fn spline_inflections(s: &SplineCurve, tol: f64) -> Result<Inflections, ComputeError> {
+    // At a cusp the curvature numerator vanishes too: it would pass for an inflection.
+    if let Some(u) = bspline::symbolic::singular_point(&s.curve, tol)? {
+        return Err(ComputeError::Singular { u });
+    }
     let k = curvature_numerator(&s.curve)?;
     let opts = RootOptions::default().tolerance(tol);
     let (a, b) = k.domain();

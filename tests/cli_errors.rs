@@ -120,6 +120,15 @@ fn unsuitable_curves_are_input_errors() {
     // An open curve has no antipodal pairs to speak of.
     let open = fixture("bezier_s.json");
     assert_usage_error(&["antipodal", &open], &[&open, ": points: ", "not closed"]);
+    // A stationary point (three equal control points): no tangent, no curvature there. Both
+    // the certified regularity proof (inflections) and the dissection (antipodal) refuse it.
+    let cusp = fixture("singular/cusp_closed.json");
+    for command in ["inflections", "antipodal"] {
+        assert_usage_error(
+            &[command, &cusp],
+            &[&cusp, ": points: ", "singular", "u = 0"],
+        );
+    }
     // Bisectors need the exact rational form.
     let analytic = fixture("limacon.json");
     assert_usage_error(&["bisector", &analytic], &[&analytic, ": kind: "]);

@@ -142,6 +142,7 @@ pub(super) fn compute_failure(e: ComputeError, curves: &[&Curve]) -> Failure {
     match e {
         ComputeError::Antipodal(e) => antipodal_failure(e, curves),
         ComputeError::Spline(e) => Failure::Other(format!("spline arithmetic failed: {e}")),
+        ComputeError::Singular { u } => antipodal_failure(antipodal::Error::Cusp { u }, curves),
     }
 }
 

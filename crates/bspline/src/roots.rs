@@ -118,7 +118,8 @@ pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec
 /// a subdivision has all coefficients above their rounding-error bound (a proof, by the
 /// convex-hull property); else `Ok(Some(u))` with `u` the middle of the first (leftmost) stretch
 /// where positivity could not be shown down to the tolerance: there `f` is within rounding of
-/// zero or below it. For a double zero (a vanishing speed) that middle is the zero.
+/// zero or below it. For a double zero (a vanishing speed) that middle is the zero; a stretch
+/// that reaches an end of `[a, b]` is reported at that end.
 ///
 /// ```
 /// use bspline::{roots::{prove_positive, RootOptions}, BSpline};
@@ -181,7 +182,12 @@ pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result
         stack.push((r, child_err, depth + 1));
         stack.push((l, child_err, depth + 1));
     }
-    Ok(run.map(|(lo, hi)| 0.5 * (lo + hi)))
+    // A stretch at an end of the interval has only one side: the zero is at that end.
+    Ok(run.map(|(lo, hi)| match (lo <= a, hi >= b) {
+        (true, false) => a,
+        (false, true) => b,
+        _ => 0.5 * (lo + hi),
+    }))
 }
 
 /// The roots of a periodic function over one whole period, with no seam: the search runs on

@@ -56,6 +56,14 @@ proptest! {
         prop_assert!(u.is_some_and(|u| (u - r).abs() < 1e-5), "cusp at {r}, reported {u:?}");
     }
 
+    /// A cusp at an end of the domain is reported at that end.
+    #[test]
+    fn cusps_at_the_ends(at_start in any::<bool>(), angle in 0.0f64..6.3, scale in 0.01f64..100.0) {
+        let r = if at_start { 0.0 } else { 1.0 };
+        let c = cusp_curve(r, angle, scale, [1.0, -2.0], None);
+        prop_assert_eq!(symbolic::singular_point(&c, 1e-12).unwrap(), Some(r));
+    }
+
     /// On random curves a proof of regularity is never contradicted by sampling (it cannot
     /// be: the test guards the implementation), and a reported singular point is a place where
     /// the speed really is within rounding of zero.

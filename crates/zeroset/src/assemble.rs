@@ -6,7 +6,7 @@
 //! border of an unresolved leaf; touching leaves form clusters, and a cluster is a singular point
 //! (one, three or more ends meet there), a pass-through (two) or an isolated point (none).
 
-use crate::extract::{Arc, Leaf, Pieces};
+use crate::extract::{Arc, End, Leaf, Pieces};
 use crate::patch::Patch;
 use std::collections::HashMap;
 
@@ -15,6 +15,8 @@ enum Link {
     Free,
     End(usize),
     Node(usize),
+    /// Continues through singular point `.1` into end `.0` (the opposite arm of a crossing).
+    Via(usize, usize),
 }
 
 /// Polylines in `(t, r)` and the special points, before any mapping.
@@ -37,10 +39,21 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     let n_ends = 2 * arcs.len();
     let mut link = vec![Link::Free; n_ends];
     let ext = [dom[1] - dom[0], dom[3] - dom[2]];
+    let (cluster_of, n_clusters) = cluster_leaves(&pieces.leaves, ext);
+    let mut attached: Vec<Vec<usize>> = vec![Vec::new(); n_clusters];
+    let leaf_at = LeafIndex::new(&pieces.leaves, ext);
     // Ends grouped by the interior line they lie on: (axis, line bits) → (v, side, id).
     let mut lines: HashMap<LineKey, Vec<LineEnd>> = HashMap::new();
     for (i, a) in arcs.iter().enumerate() {
         for (j, e) in a.ends.iter().enumerate() {
+            // An end on the border of an unresolved leaf belongs to that leaf's cluster: the
+            // patch across the line is the leaf. Matching it along the line instead could pair
+            // it with another arm that crosses the line within the matching tolerance — near a
+            // crossing, where the arms are as close as the roots are uncertain.
+            if let Some(k) = leaf_at.across(e) {
+                attached[cluster_of[k]].push(2 * i + j);
+                continue;
+            }
             let (axis, v, side) = match e.edge {
                 0 => (1u8, e.p[0], 1u8),
                 2 => (1, e.p[0], 0),
@@ -63,7 +76,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     let mut unmatched: Vec<usize> = Vec::new();
     for ((axis, _), mut v) in lines {
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let tol = 1e-7 * ext[if axis == 0 { 1 } else { 0 }];
+        let tol = MATCH_TOL * ext[if axis == 0 { 1 } else { 0 }];
         let mut i = 0;
         while i < v.len() {
             if i + 1 < v.len() && v[i].1 != v[i + 1].1 && (v[i + 1].0 - v[i].0).abs() <= tol {
@@ -74,21 +87,6 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 unmatched.push(v[i].2);
                 i += 1;
             }
-        }
-    }
-    let (cluster_of, n_clusters) = cluster_leaves(&pieces.leaves, ext);
-    // Attach unmatched ends to the leaf whose box holds them.
-    let mut attached: Vec<Vec<usize>> = vec![Vec::new(); n_clusters];
-    let slack = [1e-9 * ext[0], 1e-9 * ext[1]];
-    for id in unmatched {
-        let p = arcs[id / 2].ends[id % 2].p;
-        if let Some(k) = pieces.leaves.iter().position(|l| {
-            p[0] >= l.bx[0] - slack[0]
-                && p[0] <= l.bx[1] + slack[0]
-                && p[1] >= l.bx[2] - slack[1]
-                && p[1] <= l.bx[3] + slack[1]
-        }) {
-            attached[cluster_of[k]].push(id);
         }
     }
     let mut out = Assembled::default();
@@ -118,6 +116,32 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
         h[2] = h[2].min(l.bx[2]);
         h[3] = h[3].max(l.bx[3]);
     }
+    // An end with no partner across its line goes to a leaf within the matching tolerance,
+    // or else to the nearest cluster whose hull, grown by its own size, holds it. This happens
+    // beside flat regions: the patch across saw the root as a corner zero (a value within its
+    // rounding bound counts as positive) and handed it to the leaf there. Where F vanishes to
+    // high order (three lines through a point) the flat region and the uncertainty of roots
+    // beside it grow together, hence the second, relative rule.
+    for id in unmatched {
+        let p = arcs[id / 2].ends[id % 2].p;
+        if let Some(k) = leaf_at.find(p, MATCH_TOL) {
+            attached[cluster_of[k]].push(id);
+            continue;
+        }
+        let mut best: Option<(f64, usize)> = None;
+        for (c, h) in hull.iter().enumerate() {
+            let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
+            let dt = (h[0] - p[0]).max(p[0] - h[1]).max(0.0) / wt.max(f64::MIN_POSITIVE);
+            let dr = (h[2] - p[1]).max(p[1] - h[3]).max(0.0) / wr.max(f64::MIN_POSITIVE);
+            let d = dt.max(dr);
+            if d <= 1.0 && best.is_none_or(|b| d < b.0) {
+                best = Some((d, c));
+            }
+        }
+        if let Some((_, c)) = best {
+            attached[c].push(id);
+        }
+    }
     // Leaves resolve a crossing only to about the square root of the rounding level; Newton
     // on ∇F = 0 (a crossing or an isolated zero is a critical point) sharpens it.
     for c in 0..n_clusters {
@@ -126,6 +150,25 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 node_pt[c] = q;
             }
         }
+    }
+    // An arc with both ends on one cluster that stays beside it is a fragment traced through
+    // a gap between the leaves of a singular point, not an arm: drop it.
+    let mut dropped = vec![false; arcs.len()];
+    for (c, ends) in attached.iter_mut().enumerate() {
+        let h = hull[c];
+        let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
+        let near = |q: &[f64; 2]| {
+            q[0] >= h[0] - wt && q[0] <= h[1] + wt && q[1] >= h[2] - wr && q[1] <= h[3] + wr
+        };
+        let inner: Vec<usize> = ends
+            .iter()
+            .copied()
+            .filter(|&e| ends.contains(&(e ^ 1)) && arcs[e / 2].pts.iter().all(near))
+            .collect();
+        for &e in &inner {
+            dropped[e / 2] = true;
+        }
+        ends.retain(|e| !inner.contains(e));
     }
     let mut node_id = vec![usize::MAX; n_clusters];
     for (c, ends) in attached.iter().enumerate() {
@@ -144,8 +187,147 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
             }
         }
     }
-    out.lines = walk(arcs, &link, &out.singular);
+    // Through a crossing, each smooth curve continues into the arm leaving the node in the
+    // opposite direction: pair those arms so a curve that crosses another stays one polyline.
+    for ends in attached.iter().filter(|e| e.len() >= 3) {
+        let Link::Node(n) = link[ends[0]] else {
+            continue;
+        };
+        let node = out.singular[n];
+        let dirs: Vec<[f64; 2]> = ends
+            .iter()
+            .map(|&e| arm_direction(arcs, &link, e, node, ext))
+            .collect();
+        let mut free: Vec<usize> = (0..ends.len()).collect();
+        // Bounded: each round pairs two arms or stops.
+        while free.len() >= 2 {
+            let mut best: Option<(f64, usize, usize)> = None;
+            for (x, &i) in free.iter().enumerate() {
+                for &j in &free[x + 1..] {
+                    let c = dirs[i][0] * dirs[j][0] + dirs[i][1] * dirs[j][1];
+                    if best.is_none_or(|b| c < b.0) {
+                        best = Some((c, i, j));
+                    }
+                }
+            }
+            match best {
+                Some((c, i, j)) if c < -OPPOSITE => {
+                    link[ends[i]] = Link::Via(ends[j], n);
+                    link[ends[j]] = Link::Via(ends[i], n);
+                    free.retain(|&k| k != i && k != j);
+                }
+                _ => break,
+            }
+        }
+    }
+    out.lines = walk(arcs, &link, &out.singular, dropped);
     out
+}
+
+/// Two ends on one grid line are the same edge root when they are this close (relative to
+/// the domain): the root computed from either side differs by rounding / slope, which is
+/// far below this except beside flat regions (unresolved leaves), where ends go to leaves.
+const MATCH_TOL: f64 = 1e-7;
+
+/// Arms of a singular point whose directions have a cosine below `−OPPOSITE` continue each
+/// other (a transversal crossing has exactly opposite arms; 0.9 is about 25°).
+const OPPOSITE: f64 = 0.9;
+/// Distance from a singular point (relative to the domain) at which an arm's direction is
+/// measured: far enough that the vertex positions (noisy like rounding / distance near a
+/// crossing, where |∇F| vanishes) give the angle to ~1e-8, near enough to be a tangent.
+const ARM_REACH: f64 = 1e-4;
+
+/// Unit direction (in coordinates scaled by the domain) from `node` to the chain of arcs
+/// leaving it through end `e`, measured at about [`ARM_REACH`] or at the chain's end.
+fn arm_direction(arcs: &[Arc], link: &[Link], e: usize, node: [f64; 2], ext: [f64; 2]) -> [f64; 2] {
+    let rel = |q: [f64; 2]| [(q[0] - node[0]) / ext[0], (q[1] - node[1]) / ext[1]];
+    let mut entry = e;
+    let mut far = rel(arcs[e / 2].ends[e % 2].p);
+    // Bounded by the number of arcs (and in practice by the reach).
+    'chain: for _ in 0..arcs.len() {
+        let a = &arcs[entry / 2].pts;
+        let pts: Box<dyn Iterator<Item = &[f64; 2]>> = if entry % 2 == 0 {
+            Box::new(a.iter())
+        } else {
+            Box::new(a.iter().rev())
+        };
+        for q in pts {
+            far = rel(*q);
+            if far[0].hypot(far[1]) >= ARM_REACH {
+                break 'chain;
+            }
+        }
+        match link[entry ^ 1] {
+            Link::End(next) if next / 2 != e / 2 => entry = next,
+            _ => break,
+        }
+    }
+    let len = far[0].hypot(far[1]);
+    if len > 0.0 {
+        [far[0] / len, far[1] / len]
+    } else {
+        [0.0, 0.0]
+    }
+}
+
+/// Leaf boxes sorted by `t0`, to find the leaf holding a point.
+struct LeafIndex<'a> {
+    leaves: &'a [Leaf],
+    order: Vec<usize>,
+    t0s: Vec<f64>,
+    max_w: f64,
+    ext: [f64; 2],
+}
+
+impl<'a> LeafIndex<'a> {
+    fn new(leaves: &'a [Leaf], ext: [f64; 2]) -> Self {
+        let mut order: Vec<usize> = (0..leaves.len()).collect();
+        order.sort_by(|&a, &b| leaves[a].bx[0].total_cmp(&leaves[b].bx[0]));
+        let t0s = order.iter().map(|&k| leaves[k].bx[0]).collect();
+        let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx[1] - l.bx[0]));
+        Self {
+            leaves,
+            order,
+            t0s,
+            max_w,
+            ext,
+        }
+    }
+
+    /// The leaf just across the patch edge that `e` lies on, holding `e` on its own edge
+    /// (exact tests: the boxes of the subdivision share their split values bit for bit).
+    fn across(&self, e: &End) -> Option<usize> {
+        let p = e.p;
+        let lo = self.t0s.partition_point(|&x| x < p[0] - self.max_w);
+        let hi = self.t0s.partition_point(|&x| x <= p[0]);
+        self.order[lo..hi].iter().copied().find(|&k| {
+            let b = self.leaves[k].bx;
+            let (along, lim) = match e.edge {
+                0 => (p[0], b[3] == e.line),
+                2 => (p[0], b[2] == e.line),
+                1 => (p[1], b[0] == e.line),
+                _ => (p[1], b[1] == e.line),
+            };
+            let range = if e.edge % 2 == 0 {
+                [b[0], b[1]]
+            } else {
+                [b[2], b[3]]
+            };
+            lim && along >= range[0] && along <= range[1]
+        })
+    }
+
+    /// A leaf whose box, grown by `slack` of the domain, holds `p`.
+    fn find(&self, p: [f64; 2], slack: f64) -> Option<usize> {
+        let s = [slack * self.ext[0], slack * self.ext[1]];
+        // Candidates: t0 in [p − max_w − slack, p + slack].
+        let lo = self.t0s.partition_point(|&x| x < p[0] - self.max_w - s[0]);
+        let hi = self.t0s.partition_point(|&x| x <= p[0] + s[0]);
+        self.order[lo..hi].iter().copied().find(|&k| {
+            let b = self.leaves[k].bx;
+            p[0] >= b[0] - s[0] && p[0] <= b[1] + s[0] && p[1] >= b[2] - s[1] && p[1] <= b[3] + s[1]
+        })
+    }
 }
 
 /// Newton on `∇F = 0` from `x`, with the Hessian from central differences of the exact
@@ -232,8 +414,13 @@ fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2]) -> (Vec<usize>, usize) {
 }
 
 /// Follows links from free or node ends, then closes the remaining cycles.
-fn walk(arcs: &[Arc], link: &[Link], nodes: &[[f64; 2]]) -> Vec<(Vec<[f64; 2]>, bool)> {
-    let mut seen = vec![false; arcs.len()];
+fn walk(
+    arcs: &[Arc],
+    link: &[Link],
+    nodes: &[[f64; 2]],
+    dropped: Vec<bool>,
+) -> Vec<(Vec<[f64; 2]>, bool)> {
+    let mut seen = dropped;
     let mut out = Vec::new();
     let follow = |start: usize, seen: &mut Vec<bool>| -> (Vec<[f64; 2]>, bool) {
         let mut pts: Vec<[f64; 2]> = Vec::new();
@@ -242,6 +429,7 @@ fn walk(arcs: &[Arc], link: &[Link], nodes: &[[f64; 2]]) -> Vec<(Vec<[f64; 2]>, 
         }
         let mut entry = start;
         let mut closed = false;
+        let mut shared_joint = !pts.is_empty();
         // Each step consumes one unseen arc, so this ends after at most arcs.len() steps.
         loop {
             let i = entry / 2;
@@ -253,31 +441,42 @@ fn walk(arcs: &[Arc], link: &[Link], nodes: &[[f64; 2]]) -> Vec<(Vec<[f64; 2]>, 
                 Box::new(a.iter().rev())
             };
             for (k, q) in iter.enumerate() {
-                if k == 0 && !pts.is_empty() {
+                if k == 0 && shared_joint {
                     continue; // the joint was already added from the previous arc
                 }
                 pts.push(*q);
             }
             let exit = entry ^ 1;
-            match link[exit] {
+            let (next, via) = match link[exit] {
                 Link::Free => break,
                 Link::Node(n) => {
                     pts.push(nodes[n]);
                     break;
                 }
-                Link::End(e) => {
-                    if e / 2 == start / 2 {
-                        closed = true;
-                        break;
-                    }
-                    if seen[e / 2] {
-                        break;
-                    }
-                    entry = e;
-                }
+                Link::End(e) => (e, None),
+                Link::Via(e, n) => (e, Some(n)),
+            };
+            if let Some(n) = via {
+                pts.push(nodes[n]);
             }
+            shared_joint = via.is_none();
+            if next / 2 == start / 2 {
+                closed = true;
+                if via.is_some() {
+                    // Closed through a singular point: the node is the last vertex, the
+                    // first arc's start follows it.
+                    if let Some(&f) = pts.first() {
+                        pts.push(f);
+                    }
+                }
+                break;
+            }
+            if seen[next / 2] {
+                break;
+            }
+            entry = next;
         }
-        if closed {
+        if closed && shared_joint {
             // The last arc ends where the first began: make the loop exactly closed.
             if let Some(&f) = pts.first() {
                 if let Some(l) = pts.last_mut() {
@@ -290,7 +489,7 @@ fn walk(arcs: &[Arc], link: &[Link], nodes: &[[f64; 2]]) -> Vec<(Vec<[f64; 2]>, 
     for i in 0..arcs.len() {
         for j in 0..2 {
             let id = 2 * i + j;
-            if !seen[i] && !matches!(link[id], Link::End(_)) {
+            if !seen[i] && matches!(link[id], Link::Free | Link::Node(_)) {
                 out.push(follow(id, &mut seen));
             }
         }

@@ -20,6 +20,19 @@ use serde::{Deserialize, Serialize};
 pub const RESIDUAL: f64 = 1e-9;
 /// Points farther than this many bounding-box diagonals count as points at infinity.
 const FAR: f64 = 1e3;
+/// Residuals are relative to the distance from the foot points, but never to less than this
+/// fraction of the size of the coordinates (bounding-box diagonal plus distance of its
+/// centre from the origin): the coordinates themselves carry rounding errors of ~1e-16 of
+/// that size, so where the curves cross (distances → 0) a purely relative test would ask for
+/// more than doubles hold. 1e-6 keeps the absolute requirement there at 1e-15 of the size.
+const FLOOR: f64 = 1e-6;
+/// Newton steps when polishing a vertex on the bisector condition.
+const MAX_POLISH: usize = 8;
+/// Largest move of a polished vertex, relative to the domain.
+const MOVE: f64 = 1e-6;
+/// Self-bisector vertices closer than this (relative to the domain) to the diagonal are
+/// dropped: their foot points (nearly) coincide.
+const DIAGONAL_MARGIN: f64 = 1e-9;
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
 const DIVISIBLE: f64 = 1e-8;
 
@@ -160,10 +173,41 @@ fn point_and_residual(
         .min_by(|a, b| a.1.total_cmp(&b.1))
 }
 
+/// The bisector condition `ψ = 2 ⟨N1, d⟩ ⟨d, C2'⟩ − |d|² ⟨N1, C2'⟩` (with `d = C1 − C2`,
+/// `N1` the normal of `C1`: the equidistant point on the normal line of `C1(t)` lies on the
+/// normal line of `C2(r)`) and its partial derivatives. Cubic in `d`, so its rounding error
+/// shrinks with `d` where the curves cross, unlike that of F3.
+fn psi(c1: &Rational, c2: &Rational, t: f64, r: f64) -> (f64, f64, f64) {
+    let (mut a, mut b) = ([0.0; 6], [0.0; 6]);
+    c1.eval_derivs(t, 2, &mut a);
+    c2.eval_derivs(r, 2, &mut b);
+    let dot = |x: [f64; 2], y: [f64; 2]| x[0] * y[0] + x[1] * y[1];
+    let d = [a[0] - b[0], a[1] - b[1]];
+    let (d1, e1) = ([a[2], a[3]], [a[4], a[5]]);
+    let (d2, e2) = ([b[2], b[3]], [b[4], b[5]]);
+    let n1 = [-d1[1], d1[0]];
+    let m1 = [-e1[1], e1[0]];
+    let (s, g, dd, k) = (dot(n1, d), dot(d, d2), dot(d, d), dot(n1, d2));
+    let v = 2.0 * s * g - dd * k;
+    let (s_t, g_t, dd_t, k_t) = (dot(m1, d), dot(d1, d2), 2.0 * dot(d, d1), dot(m1, d2));
+    let (s_r, g_r, dd_r, k_r) = (
+        -dot(n1, d2),
+        dot(d, e2) - dot(d2, d2),
+        -2.0 * dot(d, d2),
+        dot(n1, e2),
+    );
+    (
+        v,
+        2.0 * (s_t * g + s * g_t) - (dd_t * k + dd * k_t),
+        2.0 * (s_r * g + s * g_r) - (dd_r * k + dd * k_r),
+    )
+}
+
 /// The bisector point of the foot points `c1(t)`, `c2(r)` if they are matched (residual of the
 /// bisector conditions ≤ [`RESIDUAL`]), else `None`.
 pub fn bisector_point(c1: &Rational, c2: &Rational, t: f64, r: f64) -> Option<[f64; 2]> {
-    let floor = 1e-9 * bbox_diag(&[c1, c2]);
+    let (center, diag) = bbox(&[c1, c2]);
+    let floor = FLOOR * (diag + center[0].hypot(center[1]));
     point_and_residual(c1, c2, t, r, floor).and_then(|(p, res)| (res <= RESIDUAL).then_some(p))
 }
 
@@ -183,10 +227,6 @@ fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
         [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],
         if diag > 0.0 { diag } else { 1.0 },
     )
-}
-
-fn bbox_diag(curves: &[&Rational]) -> f64 {
-    bbox(curves).1
 }
 
 fn check(opts: &BisectorOptions) -> Result<ZeroSetOptions> {
@@ -220,29 +260,84 @@ impl Ctx<'_> {
     }
 
     fn map(&self, t: f64, r: f64) -> Option<[f64; 2]> {
-        let (p, res) = point_and_residual(self.c1, self.c2, t, r, 1e-9 * self.diag)?;
-        let far = (p[0] - self.center[0]).hypot(p[1] - self.center[1]) > FAR * self.diag;
-        (res <= RESIDUAL && !far).then_some(p)
+        self.valid(t, r).map(|(_, p)| p)
+    }
+
+    /// The vertex `(t, r)`, polished if needed, and its bisector point, when they are a
+    /// genuine finite bisector point (residual ≤ [`RESIDUAL`], not at infinity).
+    ///
+    /// A vertex refined on `F = 0` is as accurate as `F` is well conditioned: near a point
+    /// where the two curves cross, F3 vanishes to second order (its zero set has a crossing
+    /// there: the two angle bisectors), so the vertex is off by ~rounding / distance and the
+    /// residual, relative to the tiny distances, fails within ~1e-3 of the crossing. Such a
+    /// vertex is polished by Newton on the bisector condition itself ([`psi`]), whose
+    /// rounding error shrinks with the distances; it may move by at most [`MOVE`] of the
+    /// domain (a vertex of the redundant parallel-normal component of F1/F2 or beside a
+    /// point at infinity does not converge nearby and stays rejected).
+    fn valid(&self, t: f64, r: f64) -> Option<([f64; 2], [f64; 2])> {
+        let floor = self.floor();
+        let far =
+            |p: [f64; 2]| (p[0] - self.center[0]).hypot(p[1] - self.center[1]) > FAR * self.diag;
+        if let Some((p, res)) = point_and_residual(self.c1, self.c2, t, r, floor) {
+            if res <= RESIDUAL {
+                return (!far(p)).then_some(([t, r], p));
+            }
+        }
+        let (d1, d2) = (self.c1.domain(), self.c2.domain());
+        let (e1, e2) = (d1.1 - d1.0, d2.1 - d2.0);
+        let mut q = [t, r];
+        for _ in 0..MAX_POLISH {
+            let (v, gt, gr) = psi(self.c1, self.c2, q[0], q[1]);
+            // Newton toward ψ = 0 along its gradient, in coordinates scaled by the domains.
+            let (st, sr) = (gt * e1, gr * e2);
+            let g2 = st * st + sr * sr;
+            if g2 == 0.0 || !g2.is_finite() {
+                return None;
+            }
+            q = [q[0] - v * st / g2 * e1, q[1] - v * sr / g2 * e2];
+            if !(q[0] >= d1.0 && q[0] <= d1.1 && q[1] >= d2.0 && q[1] <= d2.1) {
+                return None;
+            }
+            if ((q[0] - t) / e1).hypot((q[1] - r) / e2) > MOVE {
+                return None;
+            }
+            if let Some((p, res)) = point_and_residual(self.c1, self.c2, q[0], q[1], floor) {
+                if res <= RESIDUAL {
+                    return (!far(p)).then_some((q, p));
+                }
+            }
+        }
+        None
+    }
+
+    /// The distance below which residuals are measured absolutely (see [`FLOOR`]).
+    fn floor(&self) -> f64 {
+        FLOOR * (self.diag + self.center[0].hypot(self.center[1]))
     }
 
     /// Whether a vertex belongs in the output (valid point, right half, trimmed if asked).
-    fn accept(&self, t: f64, r: f64) -> Option<[f64; 2]> {
-        if self.selfb {
+    /// Returns the (possibly polished) vertex and its bisector point.
+    fn accept(&self, t: f64, r: f64) -> Option<([f64; 2], [f64; 2])> {
+        let half = |q: [f64; 2]| {
             let ext = self.c1.domain().1 - self.c1.domain().0;
-            if t > r || r - t <= 1e-9 * ext {
-                return None;
-            }
+            !self.selfb || q[1] - q[0] > DIAGONAL_MARGIN * ext
+        };
+        if !half([t, r]) {
+            return None;
         }
-        let p = self.map(t, r)?;
+        let (q, p) = self.valid(t, r)?;
+        if !half(q) {
+            return None;
+        }
         if self.trimmed {
-            let (q1, _) = pd(self.c1, t);
+            let (q1, _) = pd(self.c1, q[0]);
             let rho = (p[0] - q1[0]).hypot(p[1] - q1[1]);
             let slack = 1e-9 * self.diag;
             if min_dist(self.c1, p) < rho - slack || min_dist(self.c2, p) < rho - slack {
                 return None;
             }
         }
-        Some(p)
+        Some((q, p))
     }
 
     fn build(&self, pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Bisector {
@@ -250,7 +345,9 @@ impl Ctx<'_> {
         let mut branches = Vec::new();
         for pl in &z.branches {
             let pts = if self.selfb {
-                clip_diagonal(&pl.pts, &|a, b| diagonal_end(cells, a, b, dom))
+                clip_diagonal(&pl.pts, DIAGONAL_MARGIN * (dom[1] - dom[0]), &|a, b| {
+                    diagonal_end(cells, a, b, dom)
+                })
             } else {
                 pl.pts.iter().map(|&q| Some(q)).collect()
             };
@@ -259,7 +356,7 @@ impl Ctx<'_> {
                 xy: Vec::new(),
             };
             for q in pts {
-                match q.and_then(|q| self.accept(q[0], q[1]).map(|p| (q, p))) {
+                match q.and_then(|q| self.accept(q[0], q[1])) {
                     Some((q, p)) => {
                         cur.tr.push(q);
                         cur.xy.push(p);
@@ -283,7 +380,7 @@ impl Ctx<'_> {
                 .filter(|q| !closed || q[1] - q[0] < (1.0 - 1e-3) * ext)
                 .filter_map(|q| {
                     self.accept(q[0], q[1])
-                        .map(|xy| BisectorPoint { tr: *q, xy })
+                        .map(|(tr, xy)| BisectorPoint { tr, xy })
                 })
                 .collect()
         };
@@ -358,16 +455,21 @@ fn join_seam(mut v: Vec<Branch>, dom: [f64; 4]) -> Vec<Branch> {
 /// The part of a polyline with `t ≤ r`; `None` marks a cut where it crosses the diagonal, and
 /// `end` supplies a vertex on the zero set just beside the crossing (so the branch reaches the
 /// diagonal whatever the vertex spacing).
+///
+/// A vertex within `margin` of the diagonal counts as outside: the symmetric zero set can put
+/// a vertex exactly on the diagonal where it crosses, and such a vertex is no bisector point
+/// (the foot points coincide), so the crossing must be cut there, not one vertex later.
 fn clip_diagonal(
     pts: &[[f64; 2]],
+    margin: f64,
     end: &dyn Fn([f64; 2], [f64; 2]) -> Option<[f64; 2]>,
 ) -> Vec<Option<[f64; 2]>> {
     let mut out = Vec::with_capacity(pts.len() + 2);
     for (k, q) in pts.iter().enumerate() {
-        let inside = q[0] <= q[1];
+        let inside = q[1] - q[0] > margin;
         if k > 0 {
             let p = pts[k - 1];
-            let was = p[0] <= p[1];
+            let was = p[1] - p[0] > margin;
             if was && !inside {
                 out.push(end(p, *q));
                 out.push(None);
@@ -404,7 +506,10 @@ fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Opt
             }
             let step = g[0] / slope;
             mu -= step;
-            if step.abs() <= 1e-15 * (hi - lo) {
+            // Newton converges quadratically: after a step this small the error is far below
+            // rounding, while the steps themselves need not fall below the rounding noise of
+            // G (1e-15 of the cell is about one ulp: asking for it can fail to converge).
+            if step.abs() <= 1e-12 * (hi - lo) {
                 return Some(mu);
             }
         }

@@ -48,8 +48,10 @@ fn circle_is_one_closed_loop() {
     assert!(covers_circle(&z, [0.5, 0.5], 0.3, 2e-3));
 }
 
+/// Two lines crossing: one singular point, and each line is one polyline through it (the
+/// arms leaving the crossing in opposite directions are joined).
 #[test]
-fn crossing_lines_give_four_branches_and_a_singular_point() {
+fn crossing_lines_give_two_branches_through_a_singular_point() {
     let f = plane(1.0, -1.0, 0.0, UNIT)
         .mul(&plane(1.0, 1.0, -1.0, UNIT))
         .unwrap();
@@ -60,8 +62,76 @@ fn crossing_lines_give_four_branches_and_a_singular_point() {
         (s[0] - 0.5).abs() < 1e-6 && (s[1] - 0.5).abs() < 1e-6,
         "{s:?}"
     );
-    assert_eq!(z.branches.len(), 4);
-    assert!(z.branches.iter().all(|b| !b.closed));
+    assert_eq!(z.branches.len(), 2);
+    let mut lines = [0, 0];
+    for b in &z.branches {
+        assert!(!b.closed);
+        assert!(b.pts.contains(&s), "the crossing is a vertex of both lines");
+        // All on t = r or all on t + r = 1, from border to border.
+        let k = usize::from((b.pts[0][0] - b.pts[0][1]).abs() > 1e-9);
+        lines[k] += 1;
+        for p in &b.pts {
+            let off = if k == 0 {
+                p[0] - p[1]
+            } else {
+                p[0] + p[1] - 1.0
+            };
+            assert!(off.abs() < 1e-6, "{p:?} off line {k}");
+        }
+        let border = |p: [f64; 2]| p.iter().any(|&x| x == 0.0 || x == 1.0);
+        assert!(border(b.pts[0]) && border(b.pts[b.pts.len() - 1]));
+    }
+    assert_eq!(lines, [1, 1]);
+}
+
+/// Three lines through one point (six arms): each line is one polyline through it.
+#[test]
+fn three_concurrent_lines_give_three_branches() {
+    let f = plane(1.0, -1.0, 0.0, UNIT)
+        .mul(&plane(1.0, 1.0, -1.0, UNIT))
+        .unwrap()
+        .mul(&plane(1.0, 0.0, -0.5, UNIT))
+        .unwrap();
+    let z = run(&f);
+    assert_eq!(z.singular.len(), 1, "{:?}", z.singular);
+    assert_eq!(z.branches.len(), 3);
+    assert!(z
+        .branches
+        .iter()
+        .all(|b| !b.closed && b.pts.contains(&z.singular[0])));
+}
+
+/// A figure eight (lemniscate-like quartic `(t² + r²)² = t² − r²` scaled into the square):
+/// one closed curve through its own crossing.
+#[test]
+fn figure_eight_is_one_closed_branch() {
+    // u = 2.2 (t − ½), v = 2.2 (r − ½): (u² + v²)² − (u² − v²) = 0.
+    let u = lin(-1.1, 2.2, 0.0, 1.0);
+    let one = cst(1.0, 0.0, 1.0);
+    let u2 = u.mul(&u).unwrap();
+    let sum = TensorBSpline::sum_of_outer(&[(u2.clone(), one.clone()), (one.clone(), u2.clone())])
+        .unwrap();
+    let diff =
+        TensorBSpline::sum_of_outer(&[(u2.clone(), one.clone()), (one.clone(), u2.scale(-1.0))])
+            .unwrap();
+    let f = sum.mul(&sum).unwrap().sub(&diff).unwrap();
+    let z = run(&f);
+    assert_eq!(z.singular.len(), 1);
+    assert!((z.singular[0][0] - 0.5).abs() < 1e-6 && (z.singular[0][1] - 0.5).abs() < 1e-6);
+    assert_eq!(
+        z.branches.len(),
+        1,
+        "{:?}",
+        z.branches.iter().map(|b| b.pts.len()).collect::<Vec<_>>()
+    );
+    assert!(z.branches[0].closed);
+    // Both lobes are there: points at u = ±1 (t = ½ ± 1/2.2) on r = ½.
+    for t in [0.5 - 1.0 / 2.2, 0.5 + 1.0 / 2.2] {
+        assert!(z
+            .branches
+            .iter()
+            .any(|b| dist_to_polyline([t, 0.5], &b.pts) < 2e-3));
+    }
 }
 
 #[test]

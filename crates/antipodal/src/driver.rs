@@ -14,9 +14,6 @@ use crate::types::{
 };
 use crate::view::View;
 
-thread_local!{ pub(crate) static SECJ: std::cell::Cell<u64> = const { std::cell::Cell::new(0) }; }
-#[doc(hidden)]
-pub fn secj() -> u64 { SECJ.with(|x| x.replace(0)) }
 /// A validated, dissected curve.
 struct Prepared<'a> {
     view: View<'a>,
@@ -128,7 +125,6 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
         });
     }
     let prep = prepare(curve, opts, None)?;
-    crate::view::CNT.with(|c| { let v = c.borrow()[0]; c.borrow_mut()[14] = v; });
     let v = &prep.view;
     let mut raw: Vec<(f64, f64)> = Vec::new();
     let mut families = Vec::new();
@@ -151,10 +147,7 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
                 families.push((pair.sa, pair.sb, pair.ta, pair.tb));
                 continue;
             }
-            let j0 = crate::view::CNT.with(|c| c.borrow()[0]);
-            let secs = sections(&pair);
-            SECJ.with(|x| x.set(x.get() + crate::view::CNT.with(|c| c.borrow()[0]) - j0));
-            for sec in secs {
+            for sec in sections(&pair) {
                 let sec = trim_antipodal_ends(&sec, &mut raw);
                 if let Some(sec) = sec {
                     antipodal_points(&sec, &mut raw, &mut budget);

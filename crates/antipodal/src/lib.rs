@@ -31,10 +31,7 @@ mod tangent;
 mod types;
 mod view;
 
-#[doc(hidden)]
-pub fn counters() -> [u64; 16] { view::CNT.with(|c| { let v = *c.borrow(); *c.borrow_mut() = [0; 16]; v }) }
 pub use curve::{PlaneCurve, SplineCurve};
-pub use driver::secj;
 pub use driver::{antipodal, common_tangents, inflections};
 pub use error::{Error, Result};
 pub use geom::{Jet, V2};

@@ -77,13 +77,15 @@ impl<'a> Pair<'a> {
 
     /// `sin θ = N(s) × r / |r|`: the sign of the antipodal angle (footnote 15).
     pub(crate) fn sin_theta(&self, s: f64, t: f64) -> f64 {
-        let r = self.r(s, t);
-        self.vs.normal(s).cross(r) / r.norm().max(f64::MIN_POSITIVE)
+        let js = self.vs.jet_to(s, 1);
+        let r = self.vt.point(t) - js.p;
+        js.normal().cross(r) / r.norm().max(f64::MIN_POSITIVE)
     }
 
     /// `d(s) = N(s) · r(s)`: signed distance between the parallel tangent lines (§2.2).
     pub(crate) fn d(&self, s: f64, t: f64) -> f64 {
-        self.vs.normal(s).dot(self.r(s, t))
+        let js = self.vs.jet_to(s, 1);
+        js.normal().dot(self.vt.point(t) - js.p)
     }
 }
 
@@ -173,7 +175,6 @@ pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Opt
         (js.d1.cross(jt.d1) / (js.d1.norm() * jt.d1.norm())).abs()
             + (r.dot(js.d1) / (r.norm() * js.d1.norm())).abs()
     };
-    crate::view::bump(11);
     let (s0, t0) = (s, t);
     let (mut s, mut t) = (s, t);
     let mut best = resid(s, t);

@@ -55,7 +55,6 @@ impl View<'_> {
             }
             self.uncertify();
         }
-        crate::view::bump(7);
         sampled(lo, hi, flo, fhi, &f, &accept, self.tol, hint)
     }
 
@@ -114,7 +113,6 @@ impl View<'_> {
 
     /// `point-with-normal` started from a nearby parameter `hint`.
     pub(crate) fn point_with_normal_near(&self, lo: f64, hi: f64, n: V2, hint: f64) -> Option<f64> {
-        crate::view::bump(1);
         let f = |u: f64| {
             let j = self.jet_to(u, 2);
             (j.d1.dot(n), j.d2.dot(n))
@@ -129,7 +127,6 @@ impl View<'_> {
 
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
     pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
-        crate::view::bump(2);
         let f = |u: f64| {
             let j = self.jet_to(u, 2);
             let r = j.p - p;
@@ -152,7 +149,6 @@ impl View<'_> {
         dir: V2,
         prefer: Prefer,
     ) -> Option<f64> {
-        crate::view::bump(3);
         let v = dir.perp();
         let f = |u: f64| {
             let j = self.jet_to(u, 1);

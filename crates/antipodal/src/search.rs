@@ -93,7 +93,6 @@ fn remainders<'a>(
         }
         let mut eps = (1e-6 * (p.sb - p.sa)).max(min_eps);
         for _ in 0..64 {
-            crate::view::bump(13);
             let se = s + dir * eps;
             if se <= p.sa || se >= p.sb {
                 if eps > min_eps {
@@ -111,6 +110,11 @@ fn remainders<'a>(
                 continue;
             }
             if (th < 0.0) == want_neg || eps <= min_eps {
+                let (se, te) = if (th < 0.0) == want_neg {
+                    widen(p, s, dir, eps, th, se, te)
+                } else {
+                    (se, te)
+                };
                 out.push(if dir < 0.0 {
                     p.sub(p.sa, p.ta, se, te)
                 } else {
@@ -124,6 +128,31 @@ fn remainders<'a>(
     out
 }
 
+/// Moves a cut `s* ± ε` away from the found pair while θ grows at least half as fast as
+/// linearly from it (so it does not turn back towards zero, which another pair close by
+/// would need): the march that follows then starts farther from `s*` and escapes from it in
+/// fewer steps. Returns the (possibly unchanged) cut.
+fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f64, f64) {
+    let limit = 1e-2 * (p.sb - p.sa);
+    let (mut eps, mut th, mut cut) = (eps, th, (se, te));
+    while eps * 16.0 <= limit {
+        let e2 = eps * 16.0;
+        let s2 = s + dir * e2;
+        if s2 <= p.sa || s2 >= p.sb {
+            break;
+        }
+        let Some(t2) = p.opposite(s2) else {
+            break;
+        };
+        let th2 = p.sin_theta(s2, t2);
+        if (th2 < 0.0) != (th < 0.0) || th2.abs() < 0.5 * 16.0 * th.abs() {
+            break;
+        }
+        (eps, th, cut) = (e2, th2, (s2, t2));
+    }
+    cut
+}
+
 /// §4.1: bisection on the sign of θ (regula falsi, Illinois variant, inside the bracket).
 fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
     let (mut s0, mut t0, mut f0) = (p.sa, p.ta, theta_a);
@@ -134,7 +163,6 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
         if (s1 - s0).abs() <= p.vs.tol {
             break;
         }
-        crate::view::bump(10);
         // Illinois step, with a plain halving every few steps to bound the worst case.
         let mut sm = if i % 5 == 4 {
             0.5 * (s0 + s1)
@@ -166,6 +194,23 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
             }
             side = 1;
         }
+        // Newton on the antipodal system from the better end, accepted only when it lands
+        // on a pair inside the current bracket (which then holds a pair for sure).
+        if i % 3 == 1 {
+            let (sb, tb) = if f0.abs() < f1.abs() {
+                (s0, t0)
+            } else {
+                (s1, t1)
+            };
+            let (lo, hi) = (s0.min(s1), s0.max(s1));
+            if let Some((ns, nt)) = polish(p.vs, p.vt, sb, tb, hi - lo) {
+                let (tl, th) = (t0.min(t1), t0.max(t1));
+                let inside = ns >= lo && ns <= hi && nt >= tl && nt <= th;
+                if inside && p.sin_theta(ns, nt).abs() <= 1e-13 {
+                    return Some(Found { s: ns, t: nt });
+                }
+            }
+        }
     }
     let (s, t) = if f0.abs() < f1.abs() {
         (s0, t0)
@@ -183,7 +228,6 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
     for _ in 0..MARCH_STEPS {
-        crate::view::bump(8);
         let dir = p.r(s, t).unit();
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let ns = p.vs.point_with_normal_near(lo, hi, dir, s)?;
@@ -208,10 +252,12 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
 /// §4.2.2, `S` convex and `T` concave: march from the end whose normal ray at `t` meets `S`,
 /// each step moving `s` to where the ray of `N(t_i)` meets `S`. Returns `(s*, t*, moved_up)`.
 fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
+    let (psa, psb) = (p.vs.point(p.sa), p.vs.point(p.sb));
     let ray_hits = |t: f64| {
-        let (pt, n) = (p.vt.point(t), p.vt.normal(t));
-        let c0 = (p.vs.point(p.sa) - pt).cross(n);
-        let c1 = (p.vs.point(p.sb) - pt).cross(n);
+        let jt = p.vt.jet_to(t, 1);
+        let (pt, n) = (jt.p, jt.normal());
+        let c0 = (psa - pt).cross(n);
+        let c1 = (psb - pt).cross(n);
         (c0 < 0.0) != (c1 < 0.0)
     };
     // Lemma 9: no ray meets S, no pair.
@@ -225,11 +271,10 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
     for _ in 0..MARCH_STEPS {
-        crate::view::bump(9);
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let prefer = if up { Prefer::Low } else { Prefer::High };
-        let ns =
-            p.vs.point_on_ray(lo, hi, p.vt.point(t), p.vt.normal(t), prefer)?;
+        let jt = p.vt.jet_to(t, 1);
+        let ns = p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer)?;
         let nt = p.opposite_within(ns, t, if up { p.tb } else { p.ta });
         let step = (ns - s).abs();
         s = ns;
@@ -254,7 +299,7 @@ enum Early {
     Continue,
 }
 
-/// Once the march is converging (steps shrinking, below 1e-4 of the period), Newton on the
+/// Once the march is converging (steps shrinking by 0.9 or better, below 1e-2 of the period), Newton on the
 /// antipodal system finishes it. The pair it reaches must lie ahead in the marching direction
 /// with the antipodal angle keeping its sign in between (no pair skipped): inside the section
 /// it is the pair the march converges to; beyond the section's far end (a pair just cut off
@@ -263,7 +308,7 @@ enum Early {
 fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Early {
     // Linear convergence with ratio q puts the limit about step·q/(1−q) ahead.
     let q = step / last;
-    if !(q < 0.98 && step <= 1e-4 * p.vs.period) {
+    if !(q < 0.9 && step <= 1e-2 * p.vs.period) {
         return Early::Continue;
     }
     let ahead_by = step * q / (1.0 - q);

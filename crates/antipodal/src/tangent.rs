@@ -83,7 +83,6 @@ fn common_tangent(p: &Pair, at_a: bool, t_first: bool) -> Option<(f64, f64)> {
     let prefer = if at_a_q { Prefer::Low } else { Prefer::High };
     let tol = q.vs.tol;
     for _ in 0..64 {
-        crate::view::bump(15);
         let py = q.vt.point(y);
         let (lo, hi) = (x.min(x_end), x.max(x_end));
         // Skip the current point itself: its tangent line is parallel to the one at y.

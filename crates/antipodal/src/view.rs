@@ -12,8 +12,6 @@ use bspline::{BSpline, Rational};
 use smallvec::SmallVec;
 use std::cell::Cell;
 
-thread_local! { pub(crate) static CNT: std::cell::RefCell<[u64; 16]> = const { std::cell::RefCell::new([0; 16]) }; }
-pub(crate) fn bump(i: usize) { CNT.with(|c| c.borrow_mut()[i] += 1); }
 /// Outcome of [`View::cert_count`].
 pub(crate) enum Count {
     /// No root (certified).
@@ -125,7 +123,6 @@ impl<'a> View<'a> {
 
     /// Point and derivatives up to `order` only (cheaper for splines).
     pub(crate) fn jet_to(&self, u: f64, order: usize) -> Jet {
-        bump(0);
         let j = self.curve.jet_to(self.to_curve(u), order);
         if self.rev {
             Jet {
@@ -179,7 +176,6 @@ impl<'a> View<'a> {
     /// interval `[lo, hi]`, split at the seam.
     pub(crate) fn cert_roots(&self, f: &BSpline, lo: f64, hi: f64) -> Option<Vec<Root>> {
         let cert = self.cert.as_ref()?;
-        bump(6);
         let mut out = Vec::new();
         for (x0, x1, shift) in self.domain_pieces(lo, hi) {
             for mut r in find_roots(f, x0, x1, &cert.opts).ok()? {
@@ -196,14 +192,12 @@ impl<'a> View<'a> {
     /// root) or exactly one (exactly one simple root, by variation diminishing). `None` when
     /// that does not settle it (then full root isolation decides).
     pub(crate) fn cert_count(&self, f: &BSpline, lo: f64, hi: f64) -> Option<Count> {
-        bump(4);
         let mut one = None;
         for (x0, x1, shift) in self.domain_pieces(lo, hi) {
             let g = f.restrict(x0, x1).ok()?;
             let c = g.coefs();
             let err = 4.0 * (g.degree() + 2) as f64 * f64::EPSILON * g.max_abs_coef();
             if c.iter().any(|x| x.abs() <= err) {
-                bump(5);
                 return None;
             }
             let changes = c
@@ -213,7 +207,7 @@ impl<'a> View<'a> {
             match (changes, one) {
                 (0, _) => {}
                 (1, None) => one = Some((x0 + shift, x1 + shift)),
-                _ => { bump(5); return None }
+                _ => return None,
             }
         }
         Some(match one {
@@ -265,7 +259,6 @@ pub(crate) fn newton_bracketed(
     let mut dx = dx_old;
     let (mut fx, mut dfx) = f(x);
     for _ in 0..200 {
-        bump(12);
         let out = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
         if out || (2.0 * fx).abs() > (dx_old * dfx).abs() {
             dx_old = dx;

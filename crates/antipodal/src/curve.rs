@@ -1,6 +1,7 @@
 //! The plane-curve trait the algorithms run on, and its B-spline/NURBS implementation.
 
 use crate::error::{Error, Result};
+use crate::fast::Pw;
 use crate::geom::{Jet, V2};
 use bspline::{BSpline, Rational};
 
@@ -38,6 +39,8 @@ pub trait PlaneCurve {
 pub struct SplineCurve {
     curve: Rational,
     closed: bool,
+    /// The homogeneous curve as Bézier pieces (fast evaluation).
+    fast: Pw,
 }
 
 impl SplineCurve {
@@ -55,7 +58,12 @@ impl SplineCurve {
         let size = control_size(&curve);
         let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
         let closed = gap <= 1e-12 * size.max(f64::MIN_POSITIVE);
-        Ok(Self { curve, closed })
+        let fast = Pw::new(curve.homogeneous());
+        Ok(Self {
+            curve,
+            closed,
+            fast,
+        })
     }
 
     /// A closed uniform periodic B-spline (optionally rational) through `points`: domain
@@ -64,9 +72,11 @@ impl SplineCurve {
         let hom = homogeneous(points, weights)?;
         let spline = BSpline::periodic(degree, 3, hom)?;
         let curve = Rational::from_homogeneous(spline)?;
+        let fast = Pw::new(curve.homogeneous());
         Ok(Self {
             curve,
             closed: true,
+            fast,
         })
     }
 
@@ -118,6 +128,26 @@ fn homogeneous(points: &[[f64; 2]], weights: Option<&[f64]>) -> Result<Vec<f64>>
         .collect())
 }
 
+/// Point and derivatives up to order `k ≤ 3` of the planar rational curve with homogeneous
+/// form `h` (`out[2j..2j+2]` the j-th derivative), by the quotient rule
+/// `C⁽ʲ⁾ = (X⁽ʲ⁾ − Σᵢ C(j,i) w⁽ⁱ⁾ C⁽ʲ⁻ⁱ⁾) / w`.
+pub(crate) fn rational_derivs(h: &Pw, u: f64, k: usize, out: &mut [f64; 8]) {
+    let mut hv = [0.0; 12];
+    h.eval_derivs(u, k, &mut hv[..3 * (k + 1)]);
+    let w = |j: usize| hv[3 * j + 2];
+    for j in 0..=k {
+        let mut binom = 1.0;
+        let (mut x, mut y) = (hv[3 * j], hv[3 * j + 1]);
+        for i in 1..=j {
+            binom = binom * (j + 1 - i) as f64 / i as f64;
+            x -= binom * w(i) * out[2 * (j - i)];
+            y -= binom * w(i) * out[2 * (j - i) + 1];
+        }
+        out[2 * j] = x / w(0);
+        out[2 * j + 1] = y / w(0);
+    }
+}
+
 /// Diagonal of the control points' bounding box.
 pub(crate) fn control_size(c: &Rational) -> f64 {
     let pts = c.control_points();
@@ -142,7 +172,7 @@ impl PlaneCurve for SplineCurve {
     fn jet_to(&self, u: f64, order: usize) -> Jet {
         let mut o = [0.0; 8];
         let k = order.min(3);
-        self.curve.eval_derivs(u, k, &mut o[..2 * (k + 1)]);
+        rational_derivs(&self.fast, u, k, &mut o);
         Jet {
             p: V2::new(o[0], o[1]),
             d1: V2::new(o[2], o[3]),

@@ -141,14 +141,16 @@ impl View<'_> {
         if h <= l {
             return true;
         }
-        let Ok(piece) = cert.tangent.restrict(l, h) else {
-            return false;
-        };
         let mid = self.jet_to(0.5 * (l + h), 1).d1.unit();
-        piece.coefs().chunks_exact(2).all(|c| {
-            let v = V2::new(c[0], c[1]);
-            v.dot(mid) > 1e-9 * v.norm().max(f64::MIN_POSITIVE)
-        })
+        let mut ok = true;
+        cert.tangent_pw.for_each_restricted_points(l, h, |pts| {
+            ok = pts.chunks_exact(2).all(|c| {
+                let v = V2::new(c[0], c[1]);
+                v.dot(mid) > 1e-9 * v.norm().max(f64::MIN_POSITIVE)
+            });
+            ok
+        });
+        ok
     }
 
     /// Simple inflections in `[a, a + period)`, sorted (Jia §5.1).

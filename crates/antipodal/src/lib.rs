@@ -22,6 +22,7 @@ mod dissect;
 mod driver;
 mod error;
 mod families;
+mod fast;
 mod geom;
 mod pairs;
 mod prims;

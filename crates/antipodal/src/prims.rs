@@ -6,6 +6,7 @@
 //! the ends (Jia's criterion, exact on a monotone segment), refined by Newton's method inside
 //! the bracket, which cannot fail.
 
+use crate::fast::Pw;
 use crate::geom::V2;
 use crate::view::{newton_bracketed, Count, View};
 use bspline::roots::{Root, RootKind};
@@ -28,12 +29,29 @@ impl View<'_> {
         lo: f64,
         hi: f64,
         f: impl Fn(f64) -> (f64, f64),
+        fast: Option<(&Pw, [f64; 3])>,
         sym: impl FnOnce() -> Option<BSpline>,
         accept: impl Fn(f64) -> bool,
         prefer: Prefer,
         hint: f64,
     ) -> Option<f64> {
         let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        if self.cert.is_some() {
+            // The sign test on the precomputed Bézier pieces settles almost every call.
+            if let Some((pw, w)) = fast {
+                match self.cert_count_pw(pw, &w[..pw.dim()], lo, hi) {
+                    Some(Count::Zero) => return None,
+                    Some(Count::One(a, b)) => {
+                        let (fa, fb) = (f(a).0, f(b).0);
+                        if (fa < 0.0) != (fb < 0.0) {
+                            let u = newton_bracketed(&f, a, b, fa, self.tol, hint);
+                            return accept(u).then_some(u);
+                        }
+                    }
+                    None => {}
+                }
+            }
+        }
         let (flo, fhi) = (f(lo).0, f(hi).0);
         if self.cert.is_some() {
             if let Some(g) = sym() {
@@ -122,7 +140,8 @@ impl View<'_> {
             Some(d.map_points(1, |p, o| o[0] = p[0] * n.x + p[1] * n.y))
         };
         let accept = |u: f64| self.normal(u).dot(n) > 0.0;
-        self.solve(lo, hi, f, sym, accept, Prefer::Low, hint)
+        let fast = self.cert.as_ref().map(|c| (&c.tangent_pw, [n.x, n.y, 0.0]));
+        self.solve(lo, hi, f, fast, sym, accept, Prefer::Low, hint)
     }
 
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
@@ -136,7 +155,13 @@ impl View<'_> {
             let c = &self.cert.as_ref()?.curve;
             bspline::symbolic::tangency_from(c, p.arr()).ok()
         };
-        self.solve(lo, hi, f, sym, |_| true, prefer, f64::NAN)
+        // A − p × D = A + p_y Dₓ − pₓ D_y.
+        let fast = self
+            .cert
+            .as_ref()
+            .and_then(|c| c.tangency_pw.as_ref())
+            .map(|pw| (pw, [1.0, p.y, -p.x]));
+        self.solve(lo, hi, f, fast, sym, |_| true, prefer, f64::NAN)
     }
 
     /// `point-on-ray(lo, hi, c)`: where the segment meets the ray from `c` along the unit
@@ -159,7 +184,12 @@ impl View<'_> {
             bspline::symbolic::offset_dot(cc, c.arr(), v.arr()).ok()
         };
         let accept = |u: f64| (self.point(u) - c).dot(dir) > 0.0;
-        self.solve(lo, hi, f, sym, accept, prefer, f64::NAN)
+        // (X − c w) · v = vₓ X + v_y Y − (c · v) w.
+        let fast = self
+            .cert
+            .as_ref()
+            .map(|cc| (&cc.hom_pw, [v.x, v.y, -c.dot(v)]));
+        self.solve(lo, hi, f, fast, sym, accept, prefer, f64::NAN)
     }
 }
 

@@ -6,6 +6,7 @@
 //! counterclockwise and the left normal is the inward normal, as the papers assume.
 
 use crate::curve::PlaneCurve;
+use crate::fast::Pw;
 use crate::geom::{Jet, V2};
 use bspline::roots::{find_roots, Root, RootOptions};
 use bspline::{BSpline, Rational};
@@ -26,7 +27,31 @@ pub(crate) struct Cert {
     pub(crate) curve: Rational,
     /// Tangent numerator `D` (dim 2): `C′ = D / w²`.
     pub(crate) tangent: BSpline,
+    /// `D` as Bézier pieces: `D · n` is the sign function of point-with-normal.
+    pub(crate) tangent_pw: Pw,
+    /// `(A, Dₓ, D_y)` with `A = X × X′`, `D = wX′ − w′X`, as Bézier pieces:
+    /// `A − q × D = (X − qw) × (X − qw)′` is the sign function of point-of-tangency from `q`
+    /// (`None` if the two do not share their pieces).
+    pub(crate) tangency_pw: Option<Pw>,
+    /// The homogeneous curve `(X, w)` as Bézier pieces: `(X − qw) · v` is the sign function of
+    /// point-on-ray.
+    pub(crate) hom_pw: Pw,
     pub(crate) opts: RootOptions,
+}
+
+/// `(A, D)` stacked (dim 3): `A = X × X′` and `D = wX′ − w′X`, both of degree `2p − 1` on the
+/// curve's knots, so that `(X − qw) × (X − qw)′ = A − q × D` for every point `q`.
+fn tangency_parts(c: &Rational) -> Option<BSpline> {
+    let h = c.homogeneous();
+    let x = h.map_points(2, |p, o| o.copy_from_slice(&p[..2]));
+    let xd = x.deriv();
+    let a = x.cross(&xd).ok()?;
+    let w = h.component(2).ok()?;
+    let d = w.mul(&xd).ok()?.sub(&w.deriv().mul(&x).ok()?).ok()?;
+    if a.degree() != d.degree() || a.knots() != d.knots() {
+        return None;
+    }
+    BSpline::stack(&[&a, &d]).ok()
 }
 
 pub(crate) struct View<'a> {
@@ -58,9 +83,15 @@ impl<'a> View<'a> {
             (true, Some(r)) => {
                 let curve = if rev { reverse(r)? } else { r.clone() };
                 let tangent = bspline::symbolic::tangent_numerator(&curve)?;
+                let tangent_pw = Pw::new(&tangent);
+                let tangency_pw = tangency_parts(&curve).map(|b| Pw::new(&b));
+                let hom_pw = Pw::new(curve.homogeneous());
                 Some(Cert {
                     curve,
                     tangent,
+                    tangent_pw,
+                    tangency_pw,
+                    hom_pw,
                     opts: RootOptions::default().tolerance(tol.max(1e-15)),
                 })
             }
@@ -208,6 +239,48 @@ impl<'a> View<'a> {
                 (0, _) => {}
                 (1, None) => one = Some((x0 + shift, x1 + shift)),
                 _ => return None,
+            }
+        }
+        Some(match one {
+            None => Count::Zero,
+            Some((a, b)) => Count::One(a, b),
+        })
+    }
+}
+
+impl View<'_> {
+    /// [`View::cert_count`] on the Bézier pieces of the scalar function
+    /// `Σ_c weights[c] · f_c`: no allocation, no knot insertion, and brackets as tight as one
+    /// piece.
+    pub(crate) fn cert_count_pw(&self, f: &Pw, weights: &[f64], lo: f64, hi: f64) -> Option<Count> {
+        let mut one = None;
+        let mut settled = true;
+        let eps = 4.0 * (f.degree() + 2) as f64 * f64::EPSILON;
+        for (x0, x1, shift) in self.domain_pieces(lo, hi) {
+            f.for_each_restricted(weights, x0, x1, |a, b, c, scale| {
+                let err = eps * scale;
+                if c.iter().any(|x| x.abs() <= err) {
+                    settled = false;
+                    return false;
+                }
+                let changes = c
+                    .windows(2)
+                    .filter(|w| (w[0] < 0.0) != (w[1] < 0.0))
+                    .count();
+                match (changes, one) {
+                    (0, _) => true,
+                    (1, None) => {
+                        one = Some((a + shift, b + shift));
+                        true
+                    }
+                    _ => {
+                        settled = false;
+                        false
+                    }
+                }
+            });
+            if !settled {
+                return None;
             }
         }
         Some(match one {

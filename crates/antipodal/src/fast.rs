@@ -1,0 +1,280 @@
+//! Piecewise Bézier forms of B-splines, built once per curve: allocation-free evaluation with
+//! derivatives, and the control polygon of any sub-interval (for the sign tests of the
+//! primitives) by de Casteljau subdivision of the few pieces it overlaps.
+//!
+//! The coefficients are those of `bspline` (knot insertion up to full multiplicity), so the
+//! forms are exactly the splines they come from, up to rounding.
+
+use bspline::BSpline;
+use smallvec::SmallVec;
+
+/// Scratch space for one piece (degree + 1 points of dimension ≤ 3, degree ≤ 84).
+type Buf = SmallVec<[f64; 256]>;
+
+/// A spline as its Bézier pieces on consecutive breakpoints.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Pw {
+    breaks: Vec<f64>,
+    deg: usize,
+    dim: usize,
+    /// Piece-major, then point-major: `(deg + 1) · dim` values per piece.
+    coefs: Vec<f64>,
+}
+
+impl Pw {
+    /// The Bézier pieces of `f`, one per non-empty knot span.
+    pub(crate) fn new(f: &BSpline) -> Self {
+        let pieces = f.bezier_pieces();
+        let mut breaks = Vec::with_capacity(pieces.len() + 1);
+        let mut coefs = Vec::with_capacity(pieces.len() * (f.degree() + 1) * f.dim());
+        for (i, b) in pieces.iter().enumerate() {
+            if i == 0 {
+                breaks.push(b.a);
+            }
+            breaks.push(b.b);
+            coefs.extend_from_slice(&b.coefs);
+        }
+        Self {
+            breaks,
+            deg: f.degree(),
+            dim: f.dim(),
+            coefs,
+        }
+    }
+
+    pub(crate) fn degree(&self) -> usize {
+        self.deg
+    }
+
+    pub(crate) fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// Index of the piece holding `u` (the right one at a break, the last one at the end).
+    fn piece_at(&self, u: f64) -> usize {
+        let n = self.breaks.len() - 1;
+        self.breaks.partition_point(|&x| x <= u).clamp(1, n) - 1
+    }
+
+    fn piece(&self, i: usize) -> &[f64] {
+        let w = (self.deg + 1) * self.dim;
+        &self.coefs[i * w..(i + 1) * w]
+    }
+
+    /// Value and derivatives up to order `k ≤ 3` at `u` (clamped into the domain):
+    /// `out[j·dim + c]` is the j-th derivative of component `c`. Derivatives above the degree
+    /// are zero. De Casteljau: the j-th derivative is `p!/(p−j)! Δʲ` of the points of level
+    /// `p − j`, over `hʲ`.
+    pub(crate) fn eval_derivs(&self, u: f64, k: usize, out: &mut [f64]) {
+        let (p, d) = (self.deg, self.dim);
+        let i = self.piece_at(u);
+        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+        let h = b - a;
+        let s =
+            ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
+        let mut w: Buf = SmallVec::from_slice(self.piece(i));
+        for v in out[..(k + 1) * d].iter_mut() {
+            *v = 0.0;
+        }
+        // Levels p, p−1, p−2, p−3 hold 1, 2, 3, 4 points.
+        let mut lv: [[f64; 12]; 4] = [[0.0; 12]; 4];
+        let keep = |lv: &mut [[f64; 12]; 4], w: &[f64], pts: usize| {
+            // pts = number of points left (p − level + 1); keep the last four levels.
+            if pts <= 4 {
+                lv[pts - 1][..pts * d].copy_from_slice(&w[..pts * d]);
+            }
+        };
+        keep(&mut lv, &w, p + 1);
+        for level in 1..=p {
+            for j in 0..=p - level {
+                for c in 0..d {
+                    w[j * d + c] += s * (w[(j + 1) * d + c] - w[j * d + c]);
+                }
+            }
+            keep(&mut lv, &w, p - level + 1);
+        }
+        out[..d].copy_from_slice(&lv[0][..d]);
+        let mut fact = 1.0;
+        for j in 1..=k.min(p) {
+            fact *= (p + 1 - j) as f64 / h;
+            // j-th forward difference of the j + 1 points of level p − j.
+            let pts = &lv[j];
+            for c in 0..d {
+                let mut acc = 0.0;
+                let mut binom = 1.0;
+                for m in 0..=j {
+                    let sign = if (j - m) % 2 == 0 { 1.0 } else { -1.0 };
+                    acc += sign * binom * pts[m * d + c];
+                    binom = binom * (j - m) as f64 / (m + 1) as f64;
+                }
+                out[j * d + c] = fact * acc;
+            }
+        }
+    }
+
+    /// The Bernstein coefficients of the scalar function `g(u) = Σ_c weights[c] · f_c(u)` on
+    /// `[lo, hi]` (inside one piece's closure or spanning several), piece by piece, handed to
+    /// `visit(x0, x1, coefs, scale)` in order; `scale` bounds `Σ_c |weights[c] f_c|` over the
+    /// coefficients (for rounding bounds). Stops early when `visit` returns false.
+    pub(crate) fn for_each_restricted(
+        &self,
+        weights: &[f64],
+        lo: f64,
+        hi: f64,
+        mut visit: impl FnMut(f64, f64, &[f64], f64) -> bool,
+    ) {
+        let (p, d) = (self.deg, self.dim);
+        let first = self.piece_at(lo);
+        let last = self.piece_at(hi);
+        for i in first..=last {
+            let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+            let (x0, x1) = (lo.max(a), hi.min(b));
+            if x1 <= x0 {
+                continue;
+            }
+            let src = self.piece(i);
+            let mut g: SmallVec<[f64; 96]> = SmallVec::with_capacity(p + 1);
+            let mut scale = 0.0f64;
+            for j in 0..=p {
+                let mut v = 0.0;
+                let mut mag = 0.0;
+                for c in 0..d {
+                    let t = weights[c] * src[j * d + c];
+                    v += t;
+                    mag += t.abs();
+                }
+                g.push(v);
+                scale = scale.max(mag);
+            }
+            let h = b - a;
+            let (r0, r1) = ((x0 - a) / h, (x1 - a) / h);
+            if r1 < 1.0 {
+                // Keep the left part [0, r1].
+                split_left(&mut g, r1);
+            }
+            if r0 > 0.0 {
+                // Keep the right part [r0/r1, 1] of what is left.
+                let r = if r1 < 1.0 { r0 / r1 } else { r0 };
+                split_right(&mut g, r);
+            }
+            if !visit(x0, x1, &g, scale) {
+                return;
+            }
+        }
+    }
+
+    /// The control points (dimension `dim`) of the vector function on `[lo, hi]`, piece by
+    /// piece, to `visit(points)`; stops when it returns false.
+    pub(crate) fn for_each_restricted_points(
+        &self,
+        lo: f64,
+        hi: f64,
+        mut visit: impl FnMut(&[f64]) -> bool,
+    ) {
+        let (p, d) = (self.deg, self.dim);
+        let first = self.piece_at(lo);
+        let last = self.piece_at(hi);
+        for i in first..=last {
+            let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+            let (x0, x1) = (lo.max(a), hi.min(b));
+            if x1 <= x0 {
+                continue;
+            }
+            let mut pts: Buf = SmallVec::from_slice(self.piece(i));
+            let h = b - a;
+            let (r0, r1) = ((x0 - a) / h, (x1 - a) / h);
+            for c in 0..d {
+                let mut g: SmallVec<[f64; 96]> = (0..=p).map(|j| pts[j * d + c]).collect();
+                if r1 < 1.0 {
+                    split_left(&mut g, r1);
+                }
+                if r0 > 0.0 {
+                    let r = if r1 < 1.0 { r0 / r1 } else { r0 };
+                    split_right(&mut g, r);
+                }
+                for j in 0..=p {
+                    pts[j * d + c] = g[j];
+                }
+            }
+            if !visit(&pts) {
+                return;
+            }
+        }
+    }
+}
+
+/// Replaces the Bernstein coefficients on `[0, 1]` by those of the part on `[0, r]`.
+fn split_left(g: &mut [f64], r: f64) {
+    let p = g.len() - 1;
+    // After level k, g[k] is the k-th left coefficient; the tail is updated in place.
+    for level in 1..=p {
+        for j in (level..=p).rev() {
+            g[j] = g[j - 1] + r * (g[j] - g[j - 1]);
+        }
+    }
+}
+
+/// Replaces the Bernstein coefficients on `[0, 1]` by those of the part on `[r, 1]`.
+fn split_right(g: &mut [f64], r: f64) {
+    let p = g.len() - 1;
+    for level in 1..=p {
+        for j in 0..=p - level {
+            g[j] += r * (g[j + 1] - g[j]);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    fn spline() -> BSpline {
+        let knots = vec![0., 0., 0., 0., 0.3, 0.5, 0.5, 0.8, 1., 1., 1., 1.];
+        let coefs: Vec<f64> = (0..16).map(|i| ((i as f64) * 1.7).sin() * 2.0).collect();
+        BSpline::new(3, knots, 2, coefs).unwrap()
+    }
+
+    #[test]
+    fn derivatives_match_bspline() {
+        let f = spline();
+        let pw = Pw::new(&f);
+        for i in 0..=50 {
+            let u = i as f64 / 50.0;
+            let (mut a, mut b) = ([0.0; 8], [0.0; 8]);
+            f.eval_derivs(u, 3, &mut a);
+            pw.eval_derivs(u, 3, &mut b);
+            for j in 0..8 {
+                assert!(
+                    (a[j] - b[j]).abs() <= 1e-11 * (1.0 + a[j].abs()),
+                    "{u} {j} {a:?} {b:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn restriction_matches_bspline() {
+        let f = spline();
+        let pw = Pw::new(&f);
+        for (lo, hi) in [(0.1, 0.2), (0.25, 0.7), (0.0, 1.0), (0.5, 0.9), (0.3, 0.5)] {
+            let mut got: Vec<(f64, f64, Vec<f64>)> = Vec::new();
+            pw.for_each_restricted(&[1.0, -0.5], lo, hi, |x0, x1, c, _| {
+                got.push((x0, x1, c.to_vec()));
+                true
+            });
+            for (x0, x1, c) in got {
+                // The Bernstein coefficients reproduce the function at the piece's ends.
+                let g = |u: f64| {
+                    let v = f.eval(u);
+                    v[0] - 0.5 * v[1]
+                };
+                let n = c.len() - 1;
+                assert!((c[0] - g(x0)).abs() < 1e-12);
+                // Evaluate the right end from the left (c[n] is the left limit at x1).
+                let eps = 1e-9;
+                assert!((c[n] - g(x1 - eps)).abs() < 1e-7, "{lo} {hi} {x1}");
+            }
+        }
+    }
+}

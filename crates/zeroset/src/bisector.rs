@@ -115,10 +115,13 @@ fn residual(
 ) -> f64 {
     let v1 = [p[0] - c1[0], p[1] - c1[1]];
     let v2 = [p[0] - c2[0], p[1] - c2[1]];
-    let (r1, r2) = (v1[0].hypot(v1[1]), v2[0].hypot(v2[1]));
+    // Plain square roots: hypot's care about overflow is not needed (a huge or infinite
+    // candidate fails the test either way) and it was a visible cost.
+    let norm = |x: [f64; 2]| (x[0] * x[0] + x[1] * x[1]).sqrt();
+    let (r1, r2) = (norm(v1), norm(v2));
     let rho = r1.max(r2).max(floor);
-    let o1 = (v1[0] * d1[0] + v1[1] * d1[1]).abs() / d1[0].hypot(d1[1]).max(f64::MIN_POSITIVE);
-    let o2 = (v2[0] * d2[0] + v2[1] * d2[1]).abs() / d2[0].hypot(d2[1]).max(f64::MIN_POSITIVE);
+    let o1 = (v1[0] * d1[0] + v1[1] * d1[1]).abs() / norm(d1).max(f64::MIN_POSITIVE);
+    let o2 = (v2[0] * d2[0] + v2[1] * d2[1]).abs() / norm(d2).max(f64::MIN_POSITIVE);
     (r1 - r2).abs().max(o1).max(o2) / rho
 }
 

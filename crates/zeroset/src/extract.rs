@@ -75,6 +75,10 @@ const SPLIT_R: f64 = 0.501_349_7;
 const MAX_SEG: f64 = 1.0 / 16.0;
 /// Vertex refinement depth per arc for the chord test.
 const MAX_CHORD_DEPTH: usize = 20;
+/// Largest ratio of the images of the two halves of a segment before it is halved anyway.
+const UNEVEN: f64 = 4.0;
+/// Step (relative to the domain) along the zero set for the direction of its image.
+const TANGENT_STEP: f64 = 1e-7;
 /// Bisection depth toward the edge of the valid set (one new vertex pair per level).
 const MAX_EDGE_DEPTH: usize = 48;
 
@@ -264,67 +268,152 @@ impl Tracer<'_> {
                 [s, r]
             }
         };
+        // The direction of the mapped curve at a vertex, oriented from `a` toward `b`: the
+        // image of a short step along the zero set's tangent (F_r, −F_t).
+        let forward = if sb >= sa { 1.0 } else { -1.0 };
+        let tangent = |q: [f64; 2], m: Option<[f64; 2]>| -> Option<[f64; 2]> {
+            let m = m?;
+            let g = cell.eval_grad(q[0], q[1]);
+            let mut d = [g[2] * self.extent[0], -g[1] * self.extent[1]];
+            if d[k] * forward < 0.0 {
+                d = [-d[0], -d[1]];
+            }
+            let len = d[0].hypot(d[1]);
+            if len == 0.0 || !len.is_finite() {
+                return None;
+            }
+            let h = TANGENT_STEP / len;
+            let z = (self.map)(
+                q[0] + h * d[0] * self.extent[0],
+                q[1] + h * d[1] * self.extent[1],
+            )?;
+            Some([z[0] - m[0], z[1] - m[1]])
+        };
         let mut pts = vec![a.p];
         let ma = (self.map)(a.p[0], a.p[1]);
         let mb = (self.map)(b.p[0], b.p[1]);
-        self.refine(&point, (a.p[k], a.p, ma), (b.p[k], b.p, mb), 0, &mut pts);
+        let va = Vtx {
+            s: a.p[k],
+            p: a.p,
+            m: ma,
+            tan: tangent(a.p, ma),
+        };
+        let vb = Vtx {
+            s: b.p[k],
+            p: b.p,
+            m: mb,
+            tan: tangent(b.p, mb),
+        };
+        self.refine(&point, &tangent, va, vb, None, 0, &mut pts);
         pts.push(b.p);
         Some(Arc { pts, ends: [a, b] })
     }
 
     /// Adds the interior vertices between two arc points until every chord is within tolerance
-    /// in the mapped space (checked at the middle and at the quarter points of the parameter).
-    #[allow(clippy::type_complexity)]
+    /// in the mapped space (checked at the middle and at the quarter points of the parameter)
+    /// and the mapped curve runs forward along each chord at both its ends.
+    ///
+    /// The second test catches folds of the image (a bisector turns back at a cusp): a fold
+    /// narrower than the sample spacing passes the sampled chord test, since all samples may
+    /// lie on the returning part, but the tangent at the vertex before it points away from
+    /// the next vertex.
+    #[allow(clippy::too_many_arguments)]
     fn refine(
         &self,
         point: &dyn Fn(f64) -> [f64; 2],
-        a: (f64, [f64; 2], Option<[f64; 2]>),
-        b: (f64, [f64; 2], Option<[f64; 2]>),
+        tangent: &dyn Fn([f64; 2], Option<[f64; 2]>) -> Option<[f64; 2]>,
+        a: Vtx,
+        b: Vtx,
+        mid: Option<Sample>,
         depth: usize,
         out: &mut Vec<[f64; 2]>,
     ) {
-        let sm = 0.5 * (a.0 + b.0);
-        let pm = point(sm);
-        let mm = (self.map)(pm[0], pm[1]);
+        let sm = 0.5 * (a.s + b.s);
+        let (pm, mm) = mid.unwrap_or_else(|| {
+            let pm = point(sm);
+            (pm, (self.map)(pm[0], pm[1]))
+        });
         // A sampled chord test can miss an excursion between its samples: also keep the
         // segments short in (t, r), where the zero set itself is smooth and slow.
-        let long = (b.1[0] - a.1[0]).abs() > MAX_SEG * self.extent[0]
-            || (b.1[1] - a.1[1]).abs() > MAX_SEG * self.extent[1];
+        let long = (b.p[0] - a.p[0]).abs() > MAX_SEG * self.extent[0]
+            || (b.p[1] - a.p[1]).abs() > MAX_SEG * self.extent[1];
         // Where the mapped curve runs off to infinity (a pole of P) or leaves the valid set,
         // bisect toward the boundary so the branch gets as close as the mapping allows.
         let toward_edge =
-            (a.2.is_some() != b.2.is_some()) || (a.2.is_some() && b.2.is_some() && mm.is_none());
-        let tiny = (b.1[0] - a.1[0]).abs() <= 1e-7 * self.extent[0]
-            && (b.1[1] - a.1[1]).abs() <= 1e-7 * self.extent[1];
+            (a.m.is_some() != b.m.is_some()) || (a.m.is_some() && b.m.is_some() && mm.is_none());
+        let tiny = (b.p[0] - a.p[0]).abs() <= 1e-7 * self.extent[0]
+            && (b.p[1] - a.p[1]).abs() <= 1e-7 * self.extent[1];
+        // The quarter points, when the chord test computed them: the children's midpoints.
+        let mut quarters: (Option<Sample>, Option<Sample>) = (None, None);
         let need = if toward_edge {
             depth < MAX_EDGE_DEPTH && !tiny
         } else {
             depth < MAX_CHORD_DEPTH
                 && (long
-                    || match (a.2, b.2, mm) {
+                    || match (a.m, b.m, mm) {
                         (Some(x), Some(y), Some(m)) => {
-                            let q1 = point(0.75 * a.0 + 0.25 * b.0);
-                            let q3 = point(0.25 * a.0 + 0.75 * b.0);
-                            let d = |q: [f64; 2], w: f64| match (self.map)(q[0], q[1]) {
-                                Some(z) => dist_to_chord(z, x, y, w),
-                                None => 0.0,
+                            let c = [y[0] - x[0], y[1] - x[1]];
+                            let back = |t: Option<[f64; 2]>| {
+                                t.is_some_and(|t| t[0] * c[0] + t[1] * c[1] <= 0.0)
                             };
-                            dist_to_chord(m, x, y, 0.5) > self.chord_tol
-                                || d(q1, 0.25) > self.chord_tol
-                                || d(q3, 0.75) > self.chord_tol
+                            let (h1, h2) = (
+                                (m[0] - x[0]).hypot(m[1] - x[1]),
+                                (m[0] - y[0]).hypot(m[1] - y[1]),
+                            );
+                            // A fold is located to within the chord tolerance: once the
+                            // image of the segment is that small, stop.
+                            let big = h1.max(h2) > self.chord_tol;
+                            // Samples at fixed fractions of the parameter say little where
+                            // the image speed varies strongly (toward a pole of the bisector
+                            // point): halve until the two halves' images are comparable.
+                            let uneven = big && h1.max(h2) > UNEVEN * h1.min(h2);
+                            uneven || (big && (back(a.tan) || back(b.tan))) || {
+                                let sample = |w: f64| {
+                                    let q = point((1.0 - w) * a.s + w * b.s);
+                                    (q, (self.map)(q[0], q[1]))
+                                };
+                                let (q1, q3) = (sample(0.25), sample(0.75));
+                                quarters = (Some(q1), Some(q3));
+                                let d = |q: Sample, w: f64| match q.1 {
+                                    Some(z) => dist_to_chord(z, x, y, w),
+                                    None => 0.0,
+                                };
+                                dist_to_chord(m, x, y, 0.5) > self.chord_tol
+                                    || d(q1, 0.25) > self.chord_tol
+                                    || d(q3, 0.75) > self.chord_tol
+                            }
                         }
                         _ => false,
                     })
         };
         if need {
-            self.refine(point, a, (sm, pm, mm), depth + 1, out);
+            let vm = Vtx {
+                s: sm,
+                p: pm,
+                m: mm,
+                tan: tangent(pm, mm),
+            };
+            self.refine(point, tangent, a, vm, quarters.0, depth + 1, out);
             out.push(pm);
-            self.refine(point, (sm, pm, mm), b, depth + 1, out);
+            self.refine(point, tangent, vm, b, quarters.1, depth + 1, out);
         } else if depth == 0 {
             // Always keep one interior vertex: a patch-sized chord can hide a bulge in tr.
             out.push(pm);
         }
     }
+}
+
+/// A point of an arc and its image.
+type Sample = ([f64; 2], Option<[f64; 2]>);
+
+/// A vertex of an arc under refinement: graph parameter, point, its image (`None`: not a
+/// valid point of the mapping) and the image's direction there.
+#[derive(Clone, Copy)]
+struct Vtx {
+    s: f64,
+    p: [f64; 2],
+    m: Option<[f64; 2]>,
+    tan: Option<[f64; 2]>,
 }
 
 /// Where the line through `(a, fa)`, `(b, fb)` crosses zero (a start for edge roots).

@@ -185,10 +185,12 @@ impl Patch {
         let (ht, hr) = (self.t1 - self.t0, self.r1 - self.r0);
         let u = (t - self.t0) / ht;
         let v = (r - self.r0) / hr;
-        let mut buf = [0.0f64; 128];
+        // Sized for F3 of two cubics or of one rational cubic (degrees ≤ 11): zeroing a larger
+        // buffer on every call showed up in profiles.
+        let mut buf = [0.0f64; 48];
         let mut heap = Vec::new();
         let need = 2 * (self.pt + self.pr + 2);
-        let all: &mut [f64] = if need <= 128 {
+        let all: &mut [f64] = if need <= buf.len() {
             &mut buf[..need]
         } else {
             heap.resize(need, 0.0);
@@ -300,38 +302,59 @@ impl Patch {
     }
 }
 
+/// Degrees up to which [`bernstein`] reads binomial coefficients from a table.
+const BINOM_MAX: usize = 40;
+
+/// Binomial coefficients `C(n, i)` for `n ≤ BINOM_MAX` (exact: all below 2⁵³).
+static BINOM: [[f64; BINOM_MAX + 1]; BINOM_MAX + 1] = binomials();
+
+const fn binomials() -> [[f64; BINOM_MAX + 1]; BINOM_MAX + 1] {
+    let mut t = [[0.0; BINOM_MAX + 1]; BINOM_MAX + 1];
+    let mut n = 0;
+    while n <= BINOM_MAX {
+        t[n][0] = 1.0;
+        let mut i = 1;
+        while i <= n {
+            t[n][i] = t[n - 1][i - 1] + if i < n { t[n - 1][i] } else { 0.0 };
+            i += 1;
+        }
+        n += 1;
+    }
+    t
+}
+
+/// `C(n, i)`: from the table, or by the product formula beyond it.
+fn binom(n: usize, i: usize) -> f64 {
+    if n <= BINOM_MAX {
+        BINOM[n][i]
+    } else {
+        (0..i).fold(1.0, |c, k| c * (n - k) as f64 / (k + 1) as f64)
+    }
+}
+
 /// Bernstein basis values `b` and derivatives `d` (with respect to the local parameter) of
 /// degree `b.len() − 1` at `u`. Products of powers: every term is positive, so there is no
 /// cancellation. Filled in place (returning arrays by value showed up as copies in profiles).
 pub(crate) fn bernstein(u: f64, b: &mut [f64], d: &mut [f64]) {
     let n = b.len() - 1;
     let v = 1.0 - u;
-    let mut small = [0.0f64; 64];
-    let mut big = Vec::new();
-    let pv: &mut [f64] = if n < 64 {
-        &mut small[..=n]
-    } else {
-        big.resize(n + 1, 0.0);
-        &mut big
-    };
-    pv[0] = 1.0;
-    for k in 1..=n {
-        pv[k] = pv[k - 1] * v;
+    // First b[i] = v^(n−i); then, in increasing i, v^(n−1−i) is still in b[i + 1].
+    b[n] = 1.0;
+    for i in (0..n).rev() {
+        b[i] = b[i + 1] * v;
     }
     // b[i] = C(n, i) u^i v^(n−i); B^{n−1}_i = C(n−1, i) u^i v^(n−1−i); d[i] = n (B^{n−1}_{i−1} − B^{n−1}_i).
-    let (mut c, mut cm, mut pu, mut prev) = (1.0, 1.0, 1.0, 0.0);
+    let (mut pu, mut prev) = (1.0, 0.0);
     for i in 0..=n {
-        b[i] = c * pu * pv[n - i];
-        let cur = if i < n { cm * pu * pv[n - 1 - i] } else { 0.0 };
+        let cur = if i < n {
+            binom(n - 1, i) * pu * b[i + 1]
+        } else {
+            0.0
+        };
+        b[i] *= binom(n, i) * pu;
         d[i] = n as f64 * (prev - cur);
         prev = cur;
         pu *= u;
-        if i < n {
-            c = c * (n - i) as f64 / (i + 1) as f64;
-            if i + 1 < n {
-                cm = cm * (n - 1 - i) as f64 / (i + 1) as f64;
-            }
-        }
     }
 }
 
@@ -362,6 +385,20 @@ mod tests {
             pt: 2,
             pr: 1,
             c,
+        }
+    }
+
+    #[test]
+    fn bernstein_sums_to_one_and_matches_the_product_formula() {
+        for n in [1usize, 5, 10, 40, 45] {
+            let (mut b, mut d) = (vec![0.0; n + 1], vec![0.0; n + 1]);
+            bernstein(0.37, &mut b, &mut d);
+            assert!((b.iter().sum::<f64>() - 1.0).abs() < 1e-13, "n {n}");
+            assert!(d.iter().sum::<f64>().abs() < 1e-10, "n {n}");
+            let c = (0..3).fold(1.0, |c, k| c * (n - k) as f64 / (k + 1) as f64);
+            if n >= 3 {
+                assert!((binom(n, 3) - c).abs() <= 1e-9 * c);
+            }
         }
     }
 

@@ -1,86 +1,139 @@
-//! Random pairs of curves: reported points satisfy the bisector conditions, and an independent
-//! dense solver finds no bisector point that the reported branches miss.
+//! Random pairs of curves (and random self-bisectors): reported points satisfy the bisector
+//! conditions, and an independent dense solver finds no bisector point that the reported
+//! branches miss.
+//!
+//! The oracle does not use the zero-set machinery: for many `t` it scans `r` densely for sign
+//! changes of `h(t, r) = 2 ⟨N1, d⟩ ⟨d, C2'⟩ − |d|² ⟨N1, C2'⟩` (the equidistant point on the
+//! normal line of `C1(t)` lies on the normal line of `C2(r)`), bisects each, keeps the genuine
+//! finite bisector points, and requires each to be within twice the chord tolerance of a
+//! reported branch (or of a reported singular or isolated point).
 #![allow(clippy::unwrap_used)]
 mod common;
-use bspline::Rational;
+use bspline::{BSpline, Rational};
 use common::*;
 use proptest::prelude::*;
-use zeroset::{bisector, Bisector, BisectorOptions, RESIDUAL};
+use zeroset::{bisector, self_bisector, Bisector, BisectorOptions, RESIDUAL};
 
-/// Relative residuals of the three conditions, as the crate defines them.
-fn check_points(c1: &Rational, c2: &Rational, b: &Bisector, diag: f64) -> Result<(), String> {
-    for br in &b.branches {
-        for (tr, p) in br.tr.iter().zip(&br.xy) {
-            let (q1, d1) = pd(c1, tr[0]);
-            let (q2, d2) = pd(c2, tr[1]);
-            let v1 = [p[0] - q1[0], p[1] - q1[1]];
-            let v2 = [p[0] - q2[0], p[1] - q2[1]];
-            let (r1, r2) = (v1[0].hypot(v1[1]), v2[0].hypot(v2[1]));
-            let rho = r1.max(r2).max(1e-9 * diag);
-            let o1 = (v1[0] * d1[0] + v1[1] * d1[1]).abs() / d1[0].hypot(d1[1]);
-            let o2 = (v2[0] * d2[0] + v2[1] * d2[1]).abs() / d2[0].hypot(d2[1]);
-            let res = (r1 - r2).abs().max(o1).max(o2) / rho;
-            if res > RESIDUAL {
-                return Err(format!("residual {res:e} at {tr:?}"));
-            }
+/// Size of the coordinates: bounding-box diagonal plus distance of its centre from 0.
+fn size_of(pts: &[[f64; 2]]) -> (f64, [f64; 2], f64) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in pts {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    let c = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
+    (diag, c, diag + c[0].hypot(c[1]))
+}
+
+/// Relative residual of the three bisector conditions (equal distances, both foot-point
+/// orthogonalities), relative to the distance from the foot points but not below 1e-6 of
+/// the coordinate size: where the curves cross, distances vanish and the coordinates' own
+/// rounding (~1e-16 of the size) bounds what any computation can reach.
+fn residual(c1: &Rational, c2: &Rational, tr: [f64; 2], p: [f64; 2], size: f64) -> f64 {
+    let (q1, d1) = pd(c1, tr[0]);
+    let (q2, d2) = pd(c2, tr[1]);
+    let v1 = [p[0] - q1[0], p[1] - q1[1]];
+    let v2 = [p[0] - q2[0], p[1] - q2[1]];
+    let (r1, r2) = (v1[0].hypot(v1[1]), v2[0].hypot(v2[1]));
+    let rho = r1.max(r2).max(1e-6 * size);
+    let o1 = (v1[0] * d1[0] + v1[1] * d1[1]).abs() / d1[0].hypot(d1[1]);
+    let o2 = (v2[0] * d2[0] + v2[1] * d2[1]).abs() / d2[0].hypot(d2[1]);
+    (r1 - r2).abs().max(o1).max(o2) / rho
+}
+
+fn check_points(c1: &Rational, c2: &Rational, b: &Bisector, size: f64) -> Result<(), String> {
+    let special = b.singular.iter().chain(&b.isolated).map(|s| (s.tr, s.xy));
+    let vertices = b
+        .branches
+        .iter()
+        .flat_map(|br| br.tr.iter().copied().zip(br.xy.iter().copied()));
+    for (tr, p) in vertices.chain(special) {
+        let res = residual(c1, c2, tr, p, size);
+        if res > RESIDUAL {
+            return Err(format!("residual {res:e} at {tr:?}"));
         }
     }
     Ok(())
 }
 
-/// For many `t`: every `r` where the equidistant point on the normal of `C1(t)` lies on the
-/// normal of `C2(r)`, found by dense sampling and bisection; each valid one must be near a
-/// branch (in the plane).
+/// `h` of the module docs.
+fn h(c1: &Rational, c2: &Rational, t: f64, r: f64) -> f64 {
+    let (q1, d1) = pd(c1, t);
+    let (q2, d2) = pd(c2, r);
+    let d = [q1[0] - q2[0], q1[1] - q2[1]];
+    let n1 = [-d1[1], d1[0]];
+    let s = n1[0] * d[0] + n1[1] * d[1];
+    2.0 * s * (d[0] * d2[0] + d[1] * d2[1])
+        - (d[0] * d[0] + d[1] * d[1]) * (n1[0] * d2[0] + n1[1] * d2[1])
+}
+
+/// The oracle: returns (bisector points found, those not covered). For a self-bisector only
+/// `r ≥ t + gap` is scanned (on the diagonal `h` vanishes trivially).
+#[allow(clippy::too_many_arguments)]
 fn oracle_misses(
     c1: &Rational,
     c2: &Rational,
     b: &Bisector,
+    center: [f64; 2],
     diag: f64,
     tol: f64,
+    selfb: bool,
 ) -> (usize, Vec<[f64; 2]>) {
+    let (nt, nr) = (80, 400);
+    let (a1, b1) = c1.domain();
+    let (a2, b2) = c2.domain();
+    let gap = 1e-3 * (b2 - a2);
     let mut found = 0;
-    let h = |t: f64, r: f64| -> f64 {
-        let (q1, d1) = pd(c1, t);
-        let (q2, d2) = pd(c2, r);
-        let d = [q1[0] - q2[0], q1[1] - q2[1]];
-        let n1 = [-d1[1], d1[0]];
-        let s = n1[0] * d[0] + n1[1] * d[1];
-        2.0 * s * (d[0] * d2[0] + d[1] * d2[1])
-            - (d[0] * d[0] + d[1] * d[1]) * (n1[0] * d2[0] + n1[1] * d2[1])
-    };
     let mut misses = Vec::new();
-    let (nt, nr) = (60, 400);
     for i in 1..nt {
-        let t = i as f64 / nt as f64;
-        let mut prev = h(t, 0.0);
+        let t = a1 + (b1 - a1) * i as f64 / nt as f64;
+        let r_lo = if selfb { t + gap } else { a2 };
+        if r_lo >= b2 {
+            continue;
+        }
+        let at = |j: usize| r_lo + (b2 - r_lo) * j as f64 / nr as f64;
+        let mut prev = h(c1, c2, t, at(0));
         for j in 1..=nr {
-            let r = j as f64 / nr as f64;
-            let cur = h(t, r);
+            let r = at(j);
+            let cur = h(c1, c2, t, r);
             if (prev > 0.0) != (cur > 0.0) {
-                let (mut lo, mut hi) = ((j - 1) as f64 / nr as f64, r);
+                let (mut lo, mut hi) = (at(j - 1), r);
                 for _ in 0..60 {
                     let m = 0.5 * (lo + hi);
-                    if (h(t, m) > 0.0) == (prev > 0.0) {
+                    if (h(c1, c2, t, m) > 0.0) == (prev > 0.0) {
                         lo = m
                     } else {
                         hi = m
                     }
                 }
                 let rr = 0.5 * (lo + hi);
-                // Only genuine finite bisector points count (not sign changes through a pole).
+                // Only genuine bisector points well inside the reported range count (not sign
+                // changes through a pole, nor points near the cut at 1e3 diagonals).
                 if let Some(p) = zeroset::bisector_point(c1, c2, t, rr) {
-                    let far = p[0].abs().max(p[1].abs()) > 1e3 * diag;
-                    let covered = b
-                        .branches
-                        .iter()
-                        .any(|br| dist_to_polyline(p, &br.xy) <= tol)
-                        || b.singular
+                    if (p[0] - center[0]).hypot(p[1] - center[1]) < 100.0 * diag {
+                        found += 1;
+                        let covered = b
+                            .branches
                             .iter()
-                            .chain(&b.isolated)
-                            .any(|s| (s.xy[0] - p[0]).hypot(s.xy[1] - p[1]) <= tol);
-                    found += usize::from(!far);
-                    if !far && !covered {
-                        misses.push([t, rr]);
+                            .any(|br| dist_to_polyline(p, &br.xy) <= tol)
+                            || b.singular
+                                .iter()
+                                .chain(&b.isolated)
+                                .any(|s| (s.xy[0] - p[0]).hypot(s.xy[1] - p[1]) <= tol);
+                        if !covered {
+                            let best = b
+                                .branches
+                                .iter()
+                                .map(|br| dist_to_polyline(p, &br.xy))
+                                .fold(f64::INFINITY, f64::min);
+                            eprintln!(
+                                "MISS t {t} r {rr} p {p:?} dist {best:e} tol {tol:e} diag {diag}"
+                            );
+                            misses.push([t, rr]);
+                        }
                     }
                 }
             }
@@ -94,15 +147,24 @@ fn pts(v: &[f64]) -> Vec<[f64; 2]> {
     v.chunks(2).map(|c| [c[0], c[1]]).collect()
 }
 
-fn diag_of(a: &[[f64; 2]], b: &[[f64; 2]]) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in a.iter().chain(b) {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    (hi[0] - lo[0]).hypot(hi[1] - lo[1])
+/// Regular curves only (the paper's assumption): no collapsed control-polygon legs.
+fn regular(p: &[[f64; 2]]) -> bool {
+    p.windows(2)
+        .all(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) > 0.05)
+}
+
+/// Regular as a curve: the speed never drops below 5% of its mean (collinear control points
+/// can make a curve turn back with a cusp, which the polygon test does not see).
+fn regular_curve(c: &Rational) -> bool {
+    let (a, b) = c.domain();
+    let speeds: Vec<f64> = (0..=400)
+        .map(|i| {
+            let (_, d) = pd(c, a + (b - a) * i as f64 / 400.0);
+            d[0].hypot(d[1])
+        })
+        .collect();
+    let mean = speeds.iter().sum::<f64>() / speeds.len() as f64;
+    speeds.iter().all(|&v| v >= 0.05 * mean)
 }
 
 fn run_pair(
@@ -111,31 +173,58 @@ fn run_pair(
     c1: Rational,
     c2: Rational,
 ) -> Result<(), TestCaseError> {
-    // Regular curves only (the paper's assumption): no collapsed control-polygon legs.
-    for p in [p1, p2] {
-        prop_assume!(p
-            .windows(2)
-            .all(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) > 0.05));
-    }
-    let diag = diag_of(p1, p2);
+    prop_assume!(regular(p1) && regular(p2) && regular_curve(&c1) && regular_curve(&c2));
+    let all: Vec<[f64; 2]> = p1.iter().chain(p2).copied().collect();
+    let (diag, center, size) = size_of(&all);
     let opts = BisectorOptions::default();
     let b = bisector(&c1, &c2, &opts).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert!(b.complete);
-    check_points(&c1, &c2, &b, diag).map_err(TestCaseError::fail)?;
-    // Chord tolerance, plus the gap left where a branch is cut near points at infinity.
-    let (found, misses) = oracle_misses(&c1, &c2, &b, diag, 2.0 * opts.chord_tol * diag);
+    check_points(&c1, &c2, &b, size).map_err(TestCaseError::fail)?;
+    // Twice the chord tolerance: the chord test samples each segment at three points.
+    let tol = 2.0 * opts.chord_tol * diag;
+    let (found, misses) = oracle_misses(&c1, &c2, &b, center, diag, tol, false);
     prop_assert!(found == 0 || !b.branches.is_empty());
     prop_assert!(
-        misses.len() <= 2,
-        "missed {} oracle points, e.g. {:?}",
+        misses.is_empty(),
+        "missed {} of {found} oracle points, e.g. {:?}",
         misses.len(),
         &misses[..misses.len().min(4)]
     );
     Ok(())
 }
 
+fn run_self(p: &[[f64; 2]], c: Rational) -> Result<(), TestCaseError> {
+    prop_assume!(regular(p) && regular_curve(&c));
+    let (diag, center, size) = size_of(p);
+    let opts = BisectorOptions::default();
+    let b = self_bisector(&c, &opts).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    prop_assert!(b.complete);
+    prop_assert!(b
+        .branches
+        .iter()
+        .all(|br| br.tr.iter().all(|q| q[0] < q[1])));
+    check_points(&c, &c, &b, size).map_err(TestCaseError::fail)?;
+    let tol = 2.0 * opts.chord_tol * diag;
+    let (found, misses) = oracle_misses(&c, &c, &b, center, diag, tol, true);
+    prop_assert!(found == 0 || !b.branches.is_empty());
+    prop_assert!(
+        misses.is_empty(),
+        "missed {} of {found} oracle points, e.g. {:?}",
+        misses.len(),
+        &misses[..misses.len().min(4)]
+    );
+    Ok(())
+}
+
+/// A clamped uniform cubic B-spline with weights (a NURBS curve).
+fn nurbs(p: &[[f64; 2]], w: &[f64]) -> Rational {
+    let c: Vec<f64> = p.iter().flat_map(|q| [q[0], q[1]]).collect();
+    Rational::new(BSpline::clamped_uniform(3, 2, c).unwrap(), Some(w)).unwrap()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(250))]
+    /// Two cubic Béziers in disjoint boxes.
     #[test]
     fn random_cubic_bezier_pairs(a in prop::collection::vec(-1.0..1.0f64, 8), b in prop::collection::vec(-1.0..1.0f64, 8)) {
         let mut b = b;
@@ -144,11 +233,40 @@ proptest! {
         run_pair(&p1, &p2, bez(&p1), bez(&p2))?;
     }
 
+    /// A cubic B-spline with five points and a quadratic Bézier in disjoint boxes.
     #[test]
     fn random_bspline_and_quadratic_pairs(a in prop::collection::vec(-1.0..1.0f64, 10), b in prop::collection::vec(-1.0..1.0f64, 6)) {
         let mut b = b;
         for k in (1..6).step_by(2) { b[k] += 2.5; }
         let (p1, p2) = (pts(&a), pts(&b));
         run_pair(&p1, &p2, bsp(3, &p1), bez(&p2))?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+    /// Two cubic Béziers in the same box: they usually intersect, and each intersection is a
+    /// crossing of the zero set (the two angle bisectors through it).
+    #[test]
+    fn random_intersecting_cubic_bezier_pairs(a in prop::collection::vec(-1.0..1.0f64, 8), b in prop::collection::vec(-1.0..1.0f64, 8)) {
+        let (p1, p2) = (pts(&a), pts(&b));
+        run_pair(&p1, &p2, bez(&p1), bez(&p2))?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(150))]
+    /// Self-bisectors of cubic B-splines with seven points (the paper's figure 5 setting).
+    #[test]
+    fn random_self_bisectors(a in prop::collection::vec(-1.0..1.0f64, 14)) {
+        let p = pts(&a);
+        run_self(&p, bsp(3, &p))?;
+    }
+
+    /// Self-bisectors of cubic NURBS with seven points and weights in [0.5, 2].
+    #[test]
+    fn random_nurbs_self_bisectors(a in prop::collection::vec(-1.0..1.0f64, 14), w in prop::collection::vec(0.5..2.0f64, 7)) {
+        let p = pts(&a);
+        run_self(&p, nurbs(&p, &w))?;
     }
 }

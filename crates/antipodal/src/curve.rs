@@ -27,6 +27,14 @@ pub trait PlaneCurve {
     fn rational(&self) -> Option<&Rational> {
         None
     }
+    /// The exact rational B-spline form of the curve in the parameter `u ∈ [0, 4]` of the
+    /// rational unit circle of [`bspline::shapes`], for curves whose own parameter is that
+    /// circle's angle `φ = bspline::shapes::circle_angle(u)` (the ellipse, the limaçon and the
+    /// curves with convexities). With it the algorithms decide by sign tests on its symbolic
+    /// B-splines (certified results) and still report parameters `φ`.
+    fn circle_form(&self) -> Option<Rational> {
+        None
+    }
     /// True when the curve is simple by construction (the analytic shapes with valid
     /// parameters), which skips the self-intersection check.
     fn known_simple(&self) -> bool {

@@ -1,6 +1,7 @@
 //! The public entry points: validation and dissection of a curve, the pair loop of §5, and the
 //! two-curve common tangents of §2.5.
 
+use crate::circle::OnCircle;
 use crate::curve::PlaneCurve;
 use crate::dissect::{Piece, Tracks, Zeros};
 use crate::error::{Error, Result};
@@ -29,12 +30,58 @@ fn knots_of(curve: &dyn PlaneCurve) -> Vec<f64> {
         .unwrap_or_default()
 }
 
+/// The curve the algorithms run on: an analytic shape with an exact rational-circle form runs
+/// on that form (every decision certified), with parameters reported back in `φ`.
+struct Working<'a> {
+    circle: Option<OnCircle<'a>>,
+    orig: &'a dyn PlaneCurve,
+}
+
+impl<'a> Working<'a> {
+    fn new(curve: &'a dyn PlaneCurve, opts: &Options) -> Self {
+        let circle = if opts.certify {
+            curve.circle_form().map(|f| OnCircle::new(curve, f))
+        } else {
+            None
+        };
+        Self {
+            circle,
+            orig: curve,
+        }
+    }
+    fn curve(&self) -> &dyn PlaneCurve {
+        match &self.circle {
+            Some(c) => c,
+            None => self.orig,
+        }
+    }
+    fn report(&self) -> Option<fn(f64) -> f64> {
+        self.circle.as_ref().map(|_| phi_of as fn(f64) -> f64)
+    }
+}
+
+fn phi_of(u: f64) -> f64 {
+    crate::circle::angle(u)[0]
+}
+
+fn view_of<'a>(
+    curve: &'a dyn PlaneCurve,
+    rev: bool,
+    opts: &Options,
+    report: Option<fn(f64) -> f64>,
+) -> Result<View<'a>> {
+    let mut v = View::new(curve, rev, opts.certify, opts.tol)?;
+    v.report = report;
+    Ok(v)
+}
+
 /// Orients (closed curves counterclockwise, unless `force_rev` is given), validates and
 /// dissects.
 fn prepare<'a>(
     curve: &'a dyn PlaneCurve,
     opts: &Options,
     force_rev: Option<bool>,
+    report: Option<fn(f64) -> f64>,
 ) -> Result<Prepared<'a>> {
     opts.validate()?;
     let knots = knots_of(curve);
@@ -49,21 +96,18 @@ fn prepare<'a>(
     }
     let (view, tracks) = match force_rev {
         Some(rev) => {
-            let view = View::new(curve, rev, opts.certify, opts.tol)?;
+            let view = view_of(curve, rev, opts, report)?;
             let tracks = view.tracks(&knots)?;
             (view, tracks)
         }
         None => {
             // Orientation from the turning of the tangent (±2π); a clockwise curve is viewed
             // reversed, reusing the same track.
-            let view = View::new(curve, false, opts.certify, opts.tol)?;
+            let view = view_of(curve, false, opts, report)?;
             let tracks = view.tracks(&knots)?;
             if closed && tracks.turn() < 0.0 {
                 let (a, b) = curve.domain();
-                (
-                    View::new(curve, true, opts.certify, opts.tol)?,
-                    tracks.reversed(a, b),
-                )
+                (view_of(curve, true, opts, report)?, tracks.reversed(a, b))
             } else {
                 (view, tracks)
             }
@@ -100,7 +144,9 @@ fn inflection_list(v: &View, zs: &[f64]) -> Vec<Inflection> {
 /// All simple inflections of a curve (Jia §5.1; certified for splines).
 pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections> {
     opts.validate()?;
-    let view = View::new(curve, false, opts.certify, opts.tol)?;
+    let work = Working::new(curve, opts);
+    let curve = work.curve();
+    let view = view_of(curve, false, opts, work.report())?;
     let tracks = view.tracks(&knots_of(curve))?;
     let zeros = view.inflections(&tracks)?;
     Ok(Inflections {
@@ -124,7 +170,8 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
             gap: (curve.jet(a).p - curve.jet(b).p).norm(),
         });
     }
-    let prep = prepare(curve, opts, None)?;
+    let work = Working::new(curve, opts);
+    let prep = prepare(work.curve(), opts, None, work.report())?;
     let v = &prep.view;
     let mut raw: Vec<(f64, f64)> = Vec::new();
     let mut families = Vec::new();
@@ -385,11 +432,12 @@ pub fn common_tangents(
     c2: &dyn PlaneCurve,
     opts: &Options,
 ) -> Result<Tangents> {
-    let a = prepare(c1, opts, Some(false))?;
+    let (w1, w2) = (Working::new(c1, opts), Working::new(c2, opts));
+    let a = prepare(w1.curve(), opts, Some(false), w1.report())?;
     let mut lines: Vec<(f64, f64, bool)> = Vec::new();
     let mut certified = a.view.certified.get();
     for rev in [false, true] {
-        let b = prepare(c2, opts, Some(rev))?;
+        let b = prepare(w2.curve(), opts, Some(rev), w2.report())?;
         for p in &a.pieces {
             for q in &b.pieces {
                 let Some(pair) = opposite_pair(&a.view, p, &b.view, q) else {

@@ -8,8 +8,8 @@
 use bspline::BSpline;
 use smallvec::SmallVec;
 
-/// Scratch space for one piece (degree + 1 points of dimension ≤ 3, degree ≤ 84).
-type Buf = SmallVec<[f64; 256]>;
+/// Scratch space for one piece (on the stack up to degree 15 in dimension 3).
+type Buf = SmallVec<[f64; 48]>;
 
 /// A spline as its Bézier pieces on consecutive breakpoints.
 #[derive(Debug, Clone, PartialEq)]
@@ -72,7 +72,8 @@ impl Pw {
         let h = b - a;
         let s =
             ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
-        let mut w: Buf = SmallVec::from_slice(self.piece(i));
+        let mut w = Buf::new();
+        w.extend_from_slice(self.piece(i));
         for v in out[..(k + 1) * d].iter_mut() {
             *v = 0.0;
         }
@@ -133,7 +134,7 @@ impl Pw {
                 continue;
             }
             let src = self.piece(i);
-            let mut g: SmallVec<[f64; 96]> = SmallVec::with_capacity(p + 1);
+            let mut g: SmallVec<[f64; 32]> = SmallVec::new();
             let mut scale = 0.0f64;
             for j in 0..=p {
                 let mut v = 0.0;
@@ -180,11 +181,12 @@ impl Pw {
             if x1 <= x0 {
                 continue;
             }
-            let mut pts: Buf = SmallVec::from_slice(self.piece(i));
+            let mut pts = Buf::new();
+            pts.extend_from_slice(self.piece(i));
             let h = b - a;
             let (r0, r1) = ((x0 - a) / h, (x1 - a) / h);
             for c in 0..d {
-                let mut g: SmallVec<[f64; 96]> = (0..=p).map(|j| pts[j * d + c]).collect();
+                let mut g: SmallVec<[f64; 32]> = (0..=p).map(|j| pts[j * d + c]).collect();
                 if r1 < 1.0 {
                     split_left(&mut g, r1);
                 }

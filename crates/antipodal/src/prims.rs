@@ -41,6 +41,7 @@ impl View<'_> {
             if let Some((pw, w)) = fast {
                 match self.cert_count_pw(pw, &w[..pw.dim()], lo, hi) {
                     Some(Count::Zero) => return None,
+                    Some(Count::AtEnd(x)) => return accept(x).then_some(x),
                     Some(Count::One(a, b)) => {
                         let (fa, fb) = (f(a).0, f(b).0);
                         if (fa < 0.0) != (fb < 0.0) {
@@ -65,7 +66,7 @@ impl View<'_> {
                             return accept(u).then_some(u);
                         }
                     }
-                    None => {}
+                    Some(Count::AtEnd(_)) | None => {}
                 }
                 if let Some(roots) = self.cert_roots(&g, lo, hi) {
                     return self.pick(roots, lo, hi, &f, &accept, prefer, flo, fhi);

@@ -4,6 +4,7 @@
 use crate::curve::PlaneCurve;
 use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
+use bspline::Rational;
 use std::f64::consts::TAU;
 
 fn check(field: &'static str, value: f64, ok: bool, why: &'static str) -> Result<()> {
@@ -105,6 +106,9 @@ impl PlaneCurve for Ellipse {
         // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
         true
     }
+    fn circle_form(&self) -> Option<Rational> {
+        bspline::shapes::ellipse(self.center.arr(), self.a, self.b).ok()
+    }
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
         let (a, b) = (self.a, self.b);
@@ -143,6 +147,9 @@ impl PlaneCurve for Limacon {
     fn known_simple(&self) -> bool {
         // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
         true
+    }
+    fn circle_form(&self) -> Option<Rational> {
+        bspline::shapes::limacon(self.a, self.b).ok()
     }
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
@@ -223,6 +230,9 @@ impl PlaneCurve for Convexities {
     fn known_simple(&self) -> bool {
         // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
         true
+    }
+    fn circle_form(&self) -> Option<Rational> {
+        bspline::shapes::convexities(self.p, self.eps, self.m as usize).ok()
     }
     fn jet(&self, u: f64) -> Jet {
         let m = self.m as f64;

@@ -19,6 +19,9 @@ pub(crate) enum Count {
     Zero,
     /// Exactly one simple root in this bracket (certified).
     One(f64, f64),
+    /// No root but, within rounding, the end `lo` or `hi` given (the function's value there is
+    /// within its rounding bound of zero).
+    AtEnd(f64),
 }
 
 /// Symbolic forms of a spline curve in the view's parametrisation.
@@ -68,6 +71,9 @@ pub(crate) struct View<'a> {
     pub(crate) tol: f64,
     /// Cleared when some decision fell back on sampling.
     pub(crate) certified: Cell<bool>,
+    /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
+    /// run on its rational-circle form).
+    pub(crate) report: Option<fn(f64) -> f64>,
 }
 
 impl<'a> View<'a> {
@@ -108,6 +114,7 @@ impl<'a> View<'a> {
             scale: 1.0,
             tol: tol * (b - a).max(1.0),
             certified: Cell::new(certify && curve.rational().is_some()),
+            report: None,
         };
         let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
         for i in 0..64 {
@@ -133,8 +140,14 @@ impl<'a> View<'a> {
         }
     }
 
-    /// The parameter of the underlying curve.
+    /// The parameter reported to the caller.
     pub(crate) fn to_curve(&self, u: f64) -> f64 {
+        let x = self.eval_param(u);
+        self.report.map_or(x, |f| f(x))
+    }
+
+    /// The parameter of the evaluated curve.
+    fn eval_param(&self, u: f64) -> f64 {
         let w = self.wrap(u);
         if self.rev {
             let r = self.a + self.b - w;
@@ -154,7 +167,7 @@ impl<'a> View<'a> {
 
     /// Point and derivatives up to `order` only (cheaper for splines).
     pub(crate) fn jet_to(&self, u: f64, order: usize) -> Jet {
-        let j = self.curve.jet_to(self.to_curve(u), order);
+        let j = self.curve.jet_to(self.eval_param(u), order);
         if self.rev {
             Jet {
                 p: j.p,
@@ -250,43 +263,115 @@ impl<'a> View<'a> {
 
 impl View<'_> {
     /// [`View::cert_count`] on the Bézier pieces of the scalar function
-    /// `Σ_c weights[c] · f_c`: no allocation, no knot insertion, and brackets as tight as one
-    /// piece.
+    /// `Σ_c weights[c] · f_c`: no allocation, no knot insertion, and brackets as tight as the
+    /// pieces around the sign change.
+    ///
+    /// The pieces' control polygons (across breaks and the seam) are read as one sequence, the
+    /// control polygon of the function on `[lo, hi]` with every break of full multiplicity, so
+    /// variation diminishing bounds its roots by the sign changes. A coefficient within its
+    /// rounding bound of zero has no trusted sign; it cannot change the count when it lies
+    /// between trusted coefficients of opposite signs (a root exactly at a break, at the seam or
+    /// on an axis of symmetry), and leaves the decision open otherwise. So do untrusted ends and
+    /// a jump at a joint (a curve only C⁰ at its seam).
     pub(crate) fn cert_count_pw(&self, f: &Pw, weights: &[f64], lo: f64, hi: f64) -> Option<Count> {
-        let mut one = None;
-        let mut settled = true;
+        struct State {
+            /// Sign of the last trusted coefficient and the start of its piece.
+            last: Option<(bool, f64)>,
+            /// Untrusted coefficients since the last trusted one.
+            pending: bool,
+            /// Last coefficient of the previous piece and its bound (joints).
+            prev_end: Option<(f64, f64)>,
+            changes: usize,
+            bracket: (f64, f64),
+            open: bool,
+            /// Untrusted coefficients before the first trusted one.
+            lead: usize,
+            /// Untrusted coefficients after the last trusted one.
+            trail: usize,
+        }
+        let mut st = State {
+            last: None,
+            pending: false,
+            prev_end: None,
+            changes: 0,
+            bracket: (lo, hi),
+            open: false,
+            lead: 0,
+            trail: 0,
+        };
         let eps = 4.0 * (f.degree() + 2) as f64 * f64::EPSILON;
         for (x0, x1, shift) in self.domain_pieces(lo, hi) {
             f.for_each_restricted(weights, x0, x1, |a, b, c, scale| {
                 let err = eps * scale;
-                if c.iter().any(|x| x.abs() <= err) {
-                    settled = false;
-                    return false;
+                let (a, b) = (a + shift, b + shift);
+                // A sliver of a piece at an end (the interval ends just past a break) holds
+                // nothing but the break's value again.
+                let sliver = b - a <= 4.0 * self.tol;
+                let leading = st.prev_end.is_none() && b < hi - 4.0 * self.tol;
+                let trailing = st.prev_end.is_some() && b >= hi - 4.0 * self.tol;
+                if sliver && (leading || trailing) {
+                    return true;
                 }
-                let changes = c
-                    .windows(2)
-                    .filter(|w| (w[0] < 0.0) != (w[1] < 0.0))
-                    .count();
-                match (changes, one) {
-                    (0, _) => true,
-                    (1, None) => {
-                        one = Some((a + shift, b + shift));
-                        true
+                let mut skip_first = false;
+                if let Some((prev, perr)) = st.prev_end {
+                    // A joint: the same value twice for a continuous function.
+                    if (prev - c[0]).abs() > err + perr {
+                        st.open = true;
+                        return false;
                     }
-                    _ => {
-                        settled = false;
-                        false
-                    }
+                    skip_first = true;
                 }
+                for (i, &x) in c.iter().enumerate() {
+                    if i == 0 && skip_first {
+                        continue;
+                    }
+                    if x.abs() <= err {
+                        if st.last.is_none() {
+                            // Untrusted first coefficient: f(lo) ≈ 0.
+                            st.lead += 1;
+                        } else {
+                            st.pending = true;
+                            st.trail += 1;
+                        }
+                        continue;
+                    }
+                    st.trail = 0;
+                    let sign = x < 0.0;
+                    match st.last {
+                        Some((s0, start)) if s0 != sign => {
+                            st.changes += 1;
+                            if st.changes > 1 {
+                                st.open = true;
+                                return false;
+                            }
+                            st.bracket = (start, b);
+                        }
+                        Some(_) if st.pending => {
+                            // Untrusted between equal signs: 0 or 2 roots, undecided.
+                            st.open = true;
+                            return false;
+                        }
+                        _ => {}
+                    }
+                    st.pending = false;
+                    st.last = Some((sign, a));
+                }
+                st.prev_end = Some((c[c.len() - 1], err));
+                true
             });
-            if !settled {
+            if st.open {
                 return None;
             }
         }
-        Some(match one {
-            None => Count::Zero,
-            Some((a, b)) => Count::One(a, b),
-        })
+        // An end value within rounding of zero (its neighbour trusted, no other sign change):
+        // the one root there is the end itself, up to rounding.
+        match (st.changes, st.lead, st.trail, st.last.is_some()) {
+            (0, 0, 0, true) => Some(Count::Zero),
+            (0, 1, 0, true) => Some(Count::AtEnd(lo)),
+            (0, 0, 1, true) => Some(Count::AtEnd(hi)),
+            (1, 0, 0, true) => Some(Count::One(st.bracket.0, st.bracket.1)),
+            _ => None,
+        }
     }
 }
 

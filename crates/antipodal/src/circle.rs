@@ -5,6 +5,7 @@
 //! (chain rule through `φ(u)`), and report parameters mapped back to `φ`.
 
 use crate::curve::PlaneCurve;
+use crate::forms::{Forms, SymbolicForms};
 use crate::geom::Jet;
 use bspline::Rational;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
@@ -12,14 +13,18 @@ use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
 /// An analytic curve in the rational-circle parameter.
 pub(crate) struct OnCircle<'a> {
     inner: &'a dyn PlaneCurve,
-    form: Rational,
+    forms: Forms<'a>,
 }
 
 impl<'a> OnCircle<'a> {
-    /// `form` must be the exact rational form of `inner` in the parameter `u` with
-    /// `φ = angle(u)` (as [`PlaneCurve::circle_form`] promises).
-    pub(crate) fn new(inner: &'a dyn PlaneCurve, form: Rational) -> Self {
-        Self { inner, form }
+    /// The curve on its circle form, when it has one: the forms it keeps, or built for this
+    /// run. `None` when it has none (or they cannot be built).
+    pub(crate) fn new(inner: &'a dyn PlaneCurve) -> Option<Self> {
+        let forms = match inner.circle_forms() {
+            Some(f) => Forms::Kept(f),
+            None => Forms::Built(Box::new(SymbolicForms::new(inner.circle_form()?).ok()?)),
+        };
+        Some(Self { inner, forms })
     }
 }
 
@@ -98,7 +103,10 @@ impl PlaneCurve for OnCircle<'_> {
         }
     }
     fn rational(&self) -> Option<&Rational> {
-        Some(&self.form)
+        Some(&self.forms.curve)
+    }
+    fn symbolic_forms(&self) -> Option<&SymbolicForms> {
+        Some(&self.forms)
     }
     fn known_simple(&self) -> bool {
         self.inner.known_simple()

@@ -2,6 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::fast::Pw;
+use crate::forms::{kept, KeptForms, SymbolicForms};
 use crate::geom::{Jet, V2};
 use bspline::{BSpline, Rational};
 
@@ -35,6 +36,16 @@ pub trait PlaneCurve {
     fn circle_form(&self) -> Option<Rational> {
         None
     }
+    /// The [`SymbolicForms`] of [`PlaneCurve::rational`], when the curve keeps them (the
+    /// curve types of this crate build them on first use). `None` makes the algorithms build
+    /// them for each run.
+    fn symbolic_forms(&self) -> Option<&SymbolicForms> {
+        None
+    }
+    /// The [`SymbolicForms`] of [`PlaneCurve::circle_form`], when the curve keeps them.
+    fn circle_forms(&self) -> Option<&SymbolicForms> {
+        None
+    }
     /// True when the curve is simple by construction (the analytic shapes with valid
     /// parameters), which skips the self-intersection check.
     fn known_simple(&self) -> bool {
@@ -43,12 +54,20 @@ pub trait PlaneCurve {
 }
 
 /// A B-spline or NURBS plane curve, closed (periodic or clamped with equal end points) or open.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct SplineCurve {
     curve: Rational,
     closed: bool,
     /// The homogeneous curve as Bézier pieces (fast evaluation).
     fast: Pw,
+    /// Symbolic forms, built on first use.
+    forms: KeptForms,
+}
+
+impl PartialEq for SplineCurve {
+    fn eq(&self, other: &Self) -> bool {
+        self.curve == other.curve && self.closed == other.closed
+    }
 }
 
 impl SplineCurve {
@@ -71,6 +90,7 @@ impl SplineCurve {
             curve,
             closed,
             fast,
+            forms: KeptForms::new(),
         })
     }
 
@@ -85,6 +105,7 @@ impl SplineCurve {
             curve,
             closed: true,
             fast,
+            forms: KeptForms::new(),
         })
     }
 
@@ -190,5 +211,8 @@ impl PlaneCurve for SplineCurve {
     }
     fn rational(&self) -> Option<&Rational> {
         Some(&self.curve)
+    }
+    fn symbolic_forms(&self) -> Option<&SymbolicForms> {
+        kept(&self.forms, || Some(self.curve.clone()))
     }
 }

@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::geom::{wrap_pi, V2};
 use crate::prims::Prefer;
 use crate::view::{newton_bracketed, View};
-use bspline::roots::{find_roots, find_roots_periodic, RootKind};
+use bspline::roots::RootKind;
 use std::f64::consts::{PI, TAU};
 
 /// Unwrapped tangent angle along the curve.
@@ -81,48 +81,59 @@ impl View<'_> {
 
     /// Builds the track over one period (or the open domain).
     pub(crate) fn tracks(&self, knots: &[f64]) -> Result<Tracks> {
-        let m = 96usize.max(4 * knots.len());
+        // A certified curve that needs no self-intersection test (an analytic shape on its
+        // rational form) only needs the track for the unwrapped angle: the hodograph certifies
+        // every step, so a few samples besides the breakpoints do. Otherwise the track is
+        // Jia's sampling (and the polygon of the simplicity test).
+        let coarse = self.cert.is_some() && self.curve_known_simple();
+        let (m, max_step) = if coarse {
+            (16, PI / 2.0)
+        } else {
+            (96usize.max(4 * knots.len()), PI / 4.0)
+        };
         let mut us: Vec<f64> = (0..=m)
             .map(|i| self.a + self.period * i as f64 / m as f64)
             .collect();
         us.extend(knots.iter().copied().filter(|&k| k > self.a && k < self.b));
         us.sort_by(f64::total_cmp);
         us.dedup();
-        let mut out_u = vec![us[0]];
-        let mut out_psi = vec![self.jet_to(us[0], 1).d1.angle()];
         let speed_floor = 1e-13 * self.scale / self.period.max(1e-300);
-        for w in us.windows(2) {
-            // Depth-first refinement of [w0, w1] until each step turns by less than π/4
-            // (and, for splines, the hodograph certifies less than π).
-            let mut stack = vec![(w[0], w[1], 0usize)];
-            let mut pending: Vec<(f64, f64)> = Vec::new();
-            while let Some((x0, x1, depth)) = stack.pop() {
-                let (j0, j1) = (self.jet_to(x0, 1), self.jet_to(x1, 1));
-                if j1.d1.norm() <= speed_floor || j0.d1.norm() <= speed_floor {
-                    return Err(Error::Cusp {
-                        u: self.to_curve(if j0.d1.norm() <= speed_floor { x0 } else { x1 }),
-                    });
-                }
+        let jet = |x: f64| -> Result<crate::geom::Jet> {
+            let j = self.jet_to(x, 1);
+            if j.d1.norm() <= speed_floor {
+                return Err(Error::Cusp {
+                    u: self.to_curve(x),
+                });
+            }
+            Ok(j)
+        };
+        let (mut x0, mut j0) = (us[0], jet(us[0])?);
+        let mut out_u = vec![x0];
+        let mut out_psi = vec![j0.d1.angle()];
+        let mut stack: Vec<(f64, usize, crate::geom::Jet)> = Vec::new();
+        for &w1 in &us[1..] {
+            // Depth-first refinement of [x0, w1] until each step turns by less than
+            // `max_step` (and, for splines, the hodograph certifies less than π). Every
+            // point is evaluated once: the stack holds right ends with their jets.
+            stack.push((w1, 0, jet(w1)?));
+            while let Some(&(x1, depth, j1)) = stack.last() {
                 let step = wrap_pi(j1.d1.angle() - j0.d1.angle());
-                let ok = step.abs() < PI / 4.0 && self.hodograph_cone_ok(x0, x1);
-                if ok {
-                    pending.push((x1, step));
+                let axis = (j0.d1.unit() + j1.d1.unit()).unit();
+                if step.abs() < max_step && self.hodograph_cone_ok(x0, x1, axis) {
+                    stack.pop();
+                    let last = out_psi[out_psi.len() - 1];
+                    out_u.push(x1);
+                    out_psi.push(last + step);
+                    (x0, j0) = (x1, j1);
                     continue;
                 }
-                if depth > 40 || out_u.len() + pending.len() + stack.len() > MAX_SAMPLES {
+                if depth > 40 || out_u.len() + stack.len() > MAX_SAMPLES {
                     return Err(Error::Cusp {
                         u: self.to_curve(0.5 * (x0 + x1)),
                     });
                 }
                 let mid = 0.5 * (x0 + x1);
-                // Push the right half first so the left half is processed first.
-                stack.push((mid, x1, depth + 1));
-                stack.push((x0, mid, depth + 1));
-            }
-            for (x, step) in pending {
-                let last = out_psi[out_psi.len() - 1];
-                out_u.push(x);
-                out_psi.push(last + step);
+                stack.push((mid, depth + 1, jet(mid)?));
             }
         }
         Ok(Tracks {
@@ -133,7 +144,7 @@ impl View<'_> {
 
     /// For splines: the tangent numerator's control points on `[x0, x1]` lie in an open
     /// half-plane, so the tangent turns by less than π there. Always true for analytic curves.
-    fn hodograph_cone_ok(&self, x0: f64, x1: f64) -> bool {
+    fn hodograph_cone_ok(&self, x0: f64, x1: f64, axis: V2) -> bool {
         let Some(cert) = &self.cert else {
             return true;
         };
@@ -141,7 +152,7 @@ impl View<'_> {
         if h <= l {
             return true;
         }
-        let mid = self.jet_to(0.5 * (l + h), 1).d1.unit();
+        let mid = axis;
         let mut ok = true;
         cert.tangent_pw.for_each_restricted_points(l, h, |pts| {
             ok = pts.chunks_exact(2).all(|c| {
@@ -158,15 +169,11 @@ impl View<'_> {
         let mut flats = Vec::new();
         let mut out = match &self.cert {
             Some(cert) => {
-                let k = bspline::symbolic::curvature_numerator(&cert.curve)?;
+                let k = &cert.curvature;
                 let periodic = self.closed
                     && (k.eval_scalar(self.a) - k.eval_scalar(self.b)).abs()
                         <= 1e-9 * k.max_abs_coef();
-                let roots = if periodic {
-                    find_roots_periodic(&k, &cert.opts)?
-                } else {
-                    find_roots(&k, self.a, self.b, &cert.opts)?
-                };
+                let roots = cert.curvature_roots(&cert.opts, periodic, self.a, self.b)?;
                 let mut zs = Vec::new();
                 for r in roots {
                     match r.kind {
@@ -192,7 +199,7 @@ impl View<'_> {
                         }
                     }
                 }
-                zs.extend(jump_sign_changes(&k, &zs, self.tol));
+                zs.extend(jump_sign_changes(k, &zs, self.tol));
                 if self.closed && !periodic {
                     // The seam of a clamped closed curve: curvature may jump and change sign.
                     let (ka, kb) = (k.eval_scalar(self.a), k.eval_scalar(self.b));

@@ -40,7 +40,7 @@ struct Working<'a> {
 impl<'a> Working<'a> {
     fn new(curve: &'a dyn PlaneCurve, opts: &Options) -> Self {
         let circle = if opts.certify {
-            curve.circle_form().map(|f| OnCircle::new(curve, f))
+            OnCircle::new(curve)
         } else {
             None
         };

@@ -27,6 +27,7 @@ mod driver;
 mod error;
 mod families;
 mod fast;
+mod forms;
 mod geom;
 mod pairs;
 mod prims;
@@ -39,6 +40,7 @@ mod view;
 pub use curve::{PlaneCurve, SplineCurve};
 pub use driver::{antipodal, common_tangents, inflections};
 pub use error::{Error, Result};
+pub use forms::SymbolicForms;
 pub use geom::{Jet, V2};
 pub use types::{
     Antipodal, AntipodalPair, Family, Inflection, Inflections, Options, PairType, TangentLine,

@@ -3,6 +3,7 @@
 
 use crate::curve::PlaneCurve;
 use crate::error::{Error, Result};
+use crate::forms::{kept, KeptForms, SymbolicForms};
 use crate::geom::{Jet, V2};
 use bspline::Rational;
 use std::f64::consts::TAU;
@@ -75,11 +76,18 @@ impl PlaneCurve for Circle {
 }
 
 /// Ellipse `(cx + a cos φ, cy + b sin φ)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Ellipse {
     a: f64,
     b: f64,
     center: V2,
+    forms: KeptForms,
+}
+
+impl PartialEq for Ellipse {
+    fn eq(&self, o: &Self) -> bool {
+        (self.a, self.b, self.center) == (o.a, o.b, o.center)
+    }
 }
 
 impl Ellipse {
@@ -91,6 +99,7 @@ impl Ellipse {
             a,
             b,
             center: V2::from_arr(center),
+            forms: KeptForms::new(),
         })
     }
 }
@@ -109,6 +118,9 @@ impl PlaneCurve for Ellipse {
     fn circle_form(&self) -> Option<Rational> {
         bspline::shapes::ellipse(self.center.arr(), self.a, self.b).ok()
     }
+    fn circle_forms(&self) -> Option<&SymbolicForms> {
+        kept(&self.forms, || self.circle_form())
+    }
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
         let (a, b) = (self.a, self.b);
@@ -122,10 +134,17 @@ impl PlaneCurve for Ellipse {
 }
 
 /// Limaçon `r(φ) = a + b cos φ`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Limacon {
     a: f64,
     b: f64,
+    forms: KeptForms,
+}
+
+impl PartialEq for Limacon {
+    fn eq(&self, o: &Self) -> bool {
+        (self.a, self.b) == (o.a, o.b)
+    }
 }
 
 impl Limacon {
@@ -133,7 +152,11 @@ impl Limacon {
     pub fn new(a: f64, b: f64) -> Result<Self> {
         check("b", b, b >= 0.0, "must be ≥ 0")?;
         check("a", a, a > b, "must be > b for a simple curve")?;
-        Ok(Self { a, b })
+        Ok(Self {
+            a,
+            b,
+            forms: KeptForms::new(),
+        })
     }
 }
 
@@ -150,6 +173,9 @@ impl PlaneCurve for Limacon {
     }
     fn circle_form(&self) -> Option<Rational> {
         bspline::shapes::limacon(self.a, self.b).ok()
+    }
+    fn circle_forms(&self) -> Option<&SymbolicForms> {
+        kept(&self.forms, || self.circle_form())
     }
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
@@ -203,11 +229,18 @@ impl PlaneCurve for EllipticLemniscate {
 }
 
 /// Curve with convexities `r(φ) = p / (1 + ε cos mφ)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Convexities {
     p: f64,
     eps: f64,
     m: u32,
+    forms: KeptForms,
+}
+
+impl PartialEq for Convexities {
+    fn eq(&self, o: &Self) -> bool {
+        (self.p, self.eps, self.m) == (o.p, o.eps, o.m)
+    }
 }
 
 impl Convexities {
@@ -216,7 +249,12 @@ impl Convexities {
         check("p", p, p > 0.0, "must be > 0")?;
         check("eps", eps, eps > 0.0 && eps < 1.0, "must be in (0, 1)")?;
         check("m", m as f64, m >= 2, "must be an integer ≥ 2")?;
-        Ok(Self { p, eps, m })
+        Ok(Self {
+            p,
+            eps,
+            m,
+            forms: KeptForms::new(),
+        })
     }
 }
 
@@ -233,6 +271,9 @@ impl PlaneCurve for Convexities {
     }
     fn circle_form(&self) -> Option<Rational> {
         bspline::shapes::convexities(self.p, self.eps, self.m as usize).ok()
+    }
+    fn circle_forms(&self) -> Option<&SymbolicForms> {
+        kept(&self.forms, || self.circle_form())
     }
     fn jet(&self, u: f64) -> Jet {
         let m = self.m as f64;

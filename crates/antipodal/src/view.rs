@@ -7,6 +7,7 @@
 
 use crate::curve::PlaneCurve;
 use crate::fast::Pw;
+use crate::forms::{Forms, SymbolicForms};
 use crate::geom::{Jet, V2};
 use bspline::roots::{find_roots, Root, RootOptions};
 use bspline::{BSpline, Rational};
@@ -25,36 +26,16 @@ pub(crate) enum Count {
 }
 
 /// Symbolic forms of a spline curve in the view's parametrisation.
-pub(crate) struct Cert {
-    /// The curve (reversed when the view is).
-    pub(crate) curve: Rational,
-    /// Tangent numerator `D` (dim 2): `C′ = D / w²`.
-    pub(crate) tangent: BSpline,
-    /// `D` as Bézier pieces: `D · n` is the sign function of point-with-normal.
-    pub(crate) tangent_pw: Pw,
-    /// `(A, Dₓ, D_y)` with `A = X × X′`, `D = wX′ − w′X`, as Bézier pieces:
-    /// `A − q × D = (X − qw) × (X − qw)′` is the sign function of point-of-tangency from `q`
-    /// (`None` if the two do not share their pieces).
-    pub(crate) tangency_pw: Option<Pw>,
-    /// The homogeneous curve `(X, w)` as Bézier pieces: `(X − qw) · v` is the sign function of
-    /// point-on-ray.
-    pub(crate) hom_pw: Pw,
+pub(crate) struct Cert<'a> {
+    pub(crate) forms: Forms<'a>,
     pub(crate) opts: RootOptions,
 }
 
-/// `(A, D)` stacked (dim 3): `A = X × X′` and `D = wX′ − w′X`, both of degree `2p − 1` on the
-/// curve's knots, so that `(X − qw) × (X − qw)′ = A − q × D` for every point `q`.
-fn tangency_parts(c: &Rational) -> Option<BSpline> {
-    let h = c.homogeneous();
-    let x = h.map_points(2, |p, o| o.copy_from_slice(&p[..2]));
-    let xd = x.deriv();
-    let a = x.cross(&xd).ok()?;
-    let w = h.component(2).ok()?;
-    let d = w.mul(&xd).ok()?.sub(&w.deriv().mul(&x).ok()?).ok()?;
-    if a.degree() != d.degree() || a.knots() != d.knots() {
-        return None;
+impl std::ops::Deref for Cert<'_> {
+    type Target = SymbolicForms;
+    fn deref(&self) -> &SymbolicForms {
+        &self.forms
     }
-    BSpline::stack(&[&a, &d]).ok()
 }
 
 pub(crate) struct View<'a> {
@@ -64,7 +45,7 @@ pub(crate) struct View<'a> {
     pub(crate) period: f64,
     pub(crate) closed: bool,
     pub(crate) rev: bool,
-    pub(crate) cert: Option<Cert>,
+    pub(crate) cert: Option<Cert<'a>>,
     /// Size of the curve (bounding-box diagonal): the scale for geometric tolerances.
     pub(crate) scale: f64,
     /// Parameter tolerance.
@@ -87,17 +68,15 @@ impl<'a> View<'a> {
         let closed = curve.is_closed();
         let cert = match (certify, curve.rational()) {
             (true, Some(r)) => {
-                let curve = if rev { reverse(r)? } else { r.clone() };
-                let tangent = bspline::symbolic::tangent_numerator(&curve)?;
-                let tangent_pw = Pw::new(&tangent);
-                let tangency_pw = tangency_parts(&curve).map(|b| Pw::new(&b));
-                let hom_pw = Pw::new(curve.homogeneous());
+                let forms = match (rev, curve.symbolic_forms()) {
+                    (false, Some(f)) => Forms::Kept(f),
+                    _ => {
+                        let c = if rev { reverse(r)? } else { r.clone() };
+                        Forms::Built(Box::new(SymbolicForms::new(c)?))
+                    }
+                };
                 Some(Cert {
-                    curve,
-                    tangent,
-                    tangent_pw,
-                    tangency_pw,
-                    hom_pw,
+                    forms,
                     opts: RootOptions::default().tolerance(tol.max(1e-15)),
                 })
             }
@@ -184,6 +163,11 @@ impl<'a> View<'a> {
     }
     pub(crate) fn normal(&self, u: f64) -> V2 {
         self.jet_to(u, 1).normal()
+    }
+
+    /// True when the curve is simple by construction.
+    pub(crate) fn curve_known_simple(&self) -> bool {
+        self.curve.known_simple()
     }
 
     pub(crate) fn uncertify(&self) {

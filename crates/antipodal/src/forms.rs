@@ -1,0 +1,118 @@
+//! The symbolic B-spline forms the certified algorithms need, computed once per curve.
+
+use crate::error::Result;
+use crate::fast::Pw;
+use bspline::roots::{find_roots, find_roots_periodic, Root, RootOptions};
+use bspline::{BSpline, Rational};
+use std::sync::OnceLock;
+
+/// Symbolic B-spline forms of a rational plane curve, for the certified algorithms: its tangent
+/// and tangency numerators, its curvature numerator, and their Bézier pieces. The curve types
+/// of this crate build them once, on first use, and keep them, so that repeated runs on the
+/// same curve skip the symbolic products. Opaque.
+#[derive(Debug, Clone)]
+pub struct SymbolicForms {
+    /// The curve itself.
+    pub(crate) curve: Rational,
+    /// Tangent numerator `D` (dim 2): `C′ = D / w²`.
+    pub(crate) tangent: BSpline,
+    /// `D` as Bézier pieces: `D · n` is the sign function of point-with-normal.
+    pub(crate) tangent_pw: Pw,
+    /// `(A, Dₓ, D_y)` with `A = X × X′`, `D = wX′ − w′X`, as Bézier pieces:
+    /// `A − q × D = (X − qw) × (X − qw)′` is the sign function of point-of-tangency from `q`
+    /// (`None` if the two do not share their pieces).
+    pub(crate) tangency_pw: Option<Pw>,
+    /// The homogeneous curve `(X, w)` as Bézier pieces: `(X − qw) · v` is the sign function of
+    /// point-on-ray.
+    pub(crate) hom_pw: Pw,
+    /// The curvature numerator (its roots are the inflections).
+    pub(crate) curvature: BSpline,
+    /// Its certified roots, with the options and periodicity they were found with.
+    roots: OnceLock<(RootOptions, bool, Vec<Root>)>,
+}
+
+impl SymbolicForms {
+    /// The forms of `curve` (planar).
+    pub(crate) fn new(curve: Rational) -> Result<Self> {
+        let tangent = bspline::symbolic::tangent_numerator(&curve)?;
+        let tangent_pw = Pw::new(&tangent);
+        let tangency_pw = tangency_parts(&curve).map(|b| Pw::new(&b));
+        let hom_pw = Pw::new(curve.homogeneous());
+        let curvature = bspline::symbolic::curvature_numerator(&curve)?;
+        Ok(Self {
+            curve,
+            tangent,
+            tangent_pw,
+            tangency_pw,
+            hom_pw,
+            curvature,
+            roots: OnceLock::new(),
+        })
+    }
+
+    /// Certified roots of the curvature numerator on `[a, b]` (periodic when `periodic`),
+    /// kept for the next call with the same options.
+    pub(crate) fn curvature_roots(
+        &self,
+        opts: &RootOptions,
+        periodic: bool,
+        a: f64,
+        b: f64,
+    ) -> Result<Vec<Root>> {
+        if let Some((o, p, r)) = self.roots.get() {
+            if o == opts && *p == periodic {
+                return Ok(r.clone());
+            }
+        }
+        let roots = if periodic {
+            find_roots_periodic(&self.curvature, opts)?
+        } else {
+            find_roots(&self.curvature, a, b, opts)?
+        };
+        let _ = self.roots.set((*opts, periodic, roots.clone()));
+        Ok(roots)
+    }
+}
+
+/// `(A, D)` stacked (dim 3): `A = X × X′` and `D = wX′ − w′X`, both of degree `2p − 1` on the
+/// curve's knots, so that `(X − qw) × (X − qw)′ = A − q × D` for every point `q`.
+fn tangency_parts(c: &Rational) -> Option<BSpline> {
+    let h = c.homogeneous();
+    let x = h.map_points(2, |p, o| o.copy_from_slice(&p[..2]));
+    let xd = x.deriv();
+    let a = x.cross(&xd).ok()?;
+    let w = h.component(2).ok()?;
+    let d = w.mul(&xd).ok()?.sub(&w.deriv().mul(&x).ok()?).ok()?;
+    if a.degree() != d.degree() || a.knots() != d.knots() {
+        return None;
+    }
+    BSpline::stack(&[&a, &d]).ok()
+}
+
+/// Forms kept by a curve, or built for one run.
+pub(crate) enum Forms<'a> {
+    Kept(&'a SymbolicForms),
+    Built(Box<SymbolicForms>),
+}
+
+impl std::ops::Deref for Forms<'_> {
+    type Target = SymbolicForms;
+    fn deref(&self) -> &SymbolicForms {
+        match self {
+            Forms::Kept(f) => f,
+            Forms::Built(f) => f,
+        }
+    }
+}
+
+/// A lazily built, kept set of forms (`None` inside when they cannot be built).
+pub(crate) type KeptForms = OnceLock<Option<SymbolicForms>>;
+
+/// The kept forms of `kept`, building them from `make` on first use.
+pub(crate) fn kept(
+    kept: &KeptForms,
+    make: impl FnOnce() -> Option<Rational>,
+) -> Option<&SymbolicForms> {
+    kept.get_or_init(|| make().and_then(|r| SymbolicForms::new(r).ok()))
+        .as_ref()
+}

@@ -42,6 +42,19 @@ fn quarter(q: usize) -> [[f64; 2]; 3] {
 
 /// The angle `φ(u) ∈ [0, 2π)` of the rational circle and its first three derivatives.
 pub(crate) fn angle(u: f64) -> [f64; 4] {
+    let (phi, _, d) = frame(u);
+    [phi, d[0], d[1], d[2]]
+}
+
+/// The angle `φ(u)`, its cosine and sine, and its first three derivatives.
+fn frame(u: f64) -> (f64, [f64; 2], [f64; 3]) {
+    let (cs, d, q, x, y) = frame_cs(u);
+    let phi = q as f64 * (PI / 2.0) + local(q, x, y);
+    (if phi >= TAU { 0.0 } else { phi }, cs, d)
+}
+
+/// `(cos φ, sin φ)`, the derivatives of φ, and the quarter and homogeneous point (no atan2).
+fn frame_cs(u: f64) -> ([f64; 2], [f64; 3], usize, f64, f64) {
     let u = u.rem_euclid(4.0);
     let q = (u.floor() as usize).min(3);
     let s = u - q as f64;
@@ -65,9 +78,8 @@ pub(crate) fn angle(u: f64) -> [f64; 4] {
     let g = n1 * m - n * m1;
     let d2 = g / (m * m);
     let d3 = (n2 * m - n * m2) / (m * m) - 2.0 * m1 * g / (m * m * m);
-    // The angle itself from the quarter's start, exactly continuous across quarters.
-    let phi = q as f64 * (PI / 2.0) + local(q, x, y);
-    [if phi >= TAU { 0.0 } else { phi }, d1, d2, d3]
+    let inv = 1.0 / m.sqrt();
+    ([x * inv, y * inv], [d1, d2, d3], q, x, y)
 }
 
 /// Angle of `(x, y)` measured from the start of quarter `q`, in `[0, π/2]`.
@@ -93,8 +105,18 @@ impl PlaneCurve for OnCircle<'_> {
         self.jet_to(u, 3)
     }
     fn jet_to(&self, u: f64, order: usize) -> Jet {
-        let [phi, a1, a2, a3] = angle(u);
-        let j = self.inner.jet_to(phi, order);
+        let j;
+        let (a1, a2, a3);
+        if let Some(shape) = self.forms.shape {
+            // The shape's own formula from (cos φ, sin φ): no angle, no sine or cosine.
+            let (cs, d, ..) = frame_cs(u);
+            [a1, a2, a3] = d;
+            j = shape.jet(cs[0], cs[1]);
+        } else {
+            let (phi, _, d) = frame(u);
+            [a1, a2, a3] = d;
+            j = self.inner.jet_to(phi, order);
+        }
         Jet {
             p: j.p,
             d1: j.d1 * a1,

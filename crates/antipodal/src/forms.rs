@@ -2,6 +2,7 @@
 
 use crate::error::Result;
 use crate::fast::Pw;
+use crate::shapes::CircleShape;
 use bspline::roots::{find_roots, find_roots_periodic, Root, RootOptions};
 use bspline::{BSpline, Rational};
 use std::sync::OnceLock;
@@ -29,6 +30,8 @@ pub struct SymbolicForms {
     pub(crate) curvature: BSpline,
     /// Its certified roots, with the options and periodicity they were found with.
     roots: OnceLock<(RootOptions, bool, Vec<Root>)>,
+    /// For the shapes of this crate on their circle form: the formula in `(cos φ, sin φ)`.
+    pub(crate) shape: Option<CircleShape>,
 }
 
 impl SymbolicForms {
@@ -47,6 +50,7 @@ impl SymbolicForms {
             hom_pw,
             curvature,
             roots: OnceLock::new(),
+            shape: None,
         })
     }
 
@@ -72,6 +76,20 @@ impl SymbolicForms {
         let _ = self.roots.set((*opts, periodic, roots.clone()));
         Ok(roots)
     }
+}
+
+/// The kept circle forms of one of this crate's shapes, with its formula in `(cos φ, sin φ)`.
+pub(crate) fn kept_circle(
+    kept: &KeptForms,
+    make: impl FnOnce() -> Option<Rational>,
+    shape: CircleShape,
+) -> Option<&SymbolicForms> {
+    kept.get_or_init(|| {
+        let mut f = SymbolicForms::new(make()?).ok()?;
+        f.shape = Some(shape);
+        Some(f)
+    })
+    .as_ref()
 }
 
 /// `(A, D)` stacked (dim 3): `A = X × X′` and `D = wX′ − w′X`, both of degree `2p − 1` on the

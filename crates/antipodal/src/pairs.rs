@@ -169,44 +169,41 @@ fn ordered(a: f64, b: f64) -> (f64, f64) {
 /// from a nearby pair: a few steps to full precision. `None` when it moves farther than
 /// `max_move` or does not reduce the residual.
 pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Option<(f64, f64)> {
-    let resid = |s: f64, t: f64| {
-        let (js, jt) = (vs.jet_to(s, 1), vt.jet_to(t, 1));
-        let r = jt.p - js.p;
-        (js.d1.cross(jt.d1) / (js.d1.norm() * jt.d1.norm())).abs()
-            + (r.dot(js.d1) / (r.norm() * js.d1.norm())).abs()
-    };
     let (s0, t0) = (s, t);
     let (mut s, mut t) = (s, t);
-    let mut best = resid(s, t);
-    for _ in 0..8 {
+    // The best point so far and its residual; each iteration evaluates one pair of jets,
+    // which gives both the residual of the current point and the Newton step from it.
+    let mut best = (f64::INFINITY, s, t);
+    for _ in 0..9 {
         let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
         let r = jt.p - js.p;
         let f1 = js.d1.cross(jt.d1);
         let f2 = r.dot(js.d1);
+        let res =
+            (f1 / (js.d1.norm() * jt.d1.norm())).abs() + (f2 / (r.norm() * js.d1.norm())).abs();
+        if res > best.0 {
+            break;
+        }
+        best = (res, s, t);
         let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
         let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
         let det = a11 * a22 - a12 * a21;
-        if det == 0.0 || !det.is_finite() {
+        if det == 0.0 || !det.is_finite() || res == 0.0 {
             break;
         }
         let ds = (f1 * a22 - f2 * a12) / det;
         let dt = (a11 * f2 - a21 * f1) / det;
+        if ds.abs() + dt.abs() <= 1e-17 * (1.0 + s.abs() + t.abs()) {
+            break;
+        }
         let (ns, nt) = (s - ds, t - dt);
         if (ns - s0).abs() > max_move || (nt - t0).abs() > max_move {
             return None;
         }
-        let nr = resid(ns, nt);
-        if nr > best {
-            break;
-        }
-        best = nr;
         s = ns;
         t = nt;
-        if ds.abs() + dt.abs() <= 1e-17 * (1.0 + s.abs() + t.abs()) {
-            break;
-        }
     }
-    Some((s, t))
+    Some((best.1, best.2))
 }
 
 /// Newton's method on the common-tangent system `α′(s) × β′(t) = 0`, `(β(t) − α(s)) × α′(s) = 0`

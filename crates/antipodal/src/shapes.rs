@@ -3,7 +3,7 @@
 
 use crate::curve::PlaneCurve;
 use crate::error::{Error, Result};
-use crate::forms::{kept, KeptForms, SymbolicForms};
+use crate::forms::{kept_circle, KeptForms, SymbolicForms};
 use crate::geom::{Jet, V2};
 use bspline::Rational;
 use std::f64::consts::TAU;
@@ -19,6 +19,11 @@ fn check(field: &'static str, value: f64, ok: bool, why: &'static str) -> Result
 /// A polar curve `r(φ)(cos φ, sin φ)` from `r` and its first three derivatives.
 fn polar_jet(phi: f64, r: [f64; 4]) -> Jet {
     let (s, c) = phi.sin_cos();
+    polar_jet_cs(s, c, r)
+}
+
+/// [`polar_jet`] from the sine and cosine of φ.
+fn polar_jet_cs(s: f64, c: f64, r: [f64; 4]) -> Jet {
     let [r0, r1, r2, r3] = r;
     Jet {
         p: V2::new(r0 * c, r0 * s),
@@ -32,6 +37,61 @@ fn polar_jet(phi: f64, r: [f64; 4]) -> Jet {
             r3 * s + 3.0 * r2 * c - 3.0 * r1 * s - r0 * c,
         ),
     }
+}
+
+/// The shapes with a rational-circle form, as formulas in `(cos φ, sin φ)` (jets in φ).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum CircleShape {
+    Ellipse { a: f64, b: f64, center: V2 },
+    Limacon { a: f64, b: f64 },
+    Convexities { p: f64, eps: f64, m: u32 },
+}
+
+impl CircleShape {
+    /// Point and derivatives in φ at the angle with cosine `c` and sine `s`.
+    pub(crate) fn jet(self, c: f64, s: f64) -> Jet {
+        match self {
+            CircleShape::Ellipse { a, b, center } => ellipse_jet(a, b, center, s, c),
+            CircleShape::Limacon { a, b } => polar_jet_cs(s, c, [a + b * c, -b * s, -b * c, b * s]),
+            CircleShape::Convexities { p, eps, m } => {
+                // cos mφ + i sin mφ = (c + i s)ᵐ.
+                let (mut cm, mut sm) = (1.0, 0.0);
+                for _ in 0..m {
+                    (cm, sm) = (cm * c - sm * s, cm * s + sm * c);
+                }
+                convexities_jet(p, eps, m, s, c, sm, cm)
+            }
+        }
+    }
+}
+
+fn ellipse_jet(a: f64, b: f64, center: V2, s: f64, c: f64) -> Jet {
+    Jet {
+        p: center + V2::new(a * c, b * s),
+        d1: V2::new(-a * s, b * c),
+        d2: V2::new(-a * c, -b * s),
+        d3: V2::new(a * s, -b * c),
+    }
+}
+
+/// `r(φ) = p / (1 + ε cos mφ)` from the sines and cosines of φ and mφ.
+fn convexities_jet(p: f64, e: f64, m: u32, s: f64, c: f64, sm: f64, cm: f64) -> Jet {
+    let m = m as f64;
+    let h = 1.0 + e * cm;
+    let h1 = -e * m * sm;
+    let h2 = -e * m * m * cm;
+    let h3 = e * m * m * m * sm;
+    let (i1, i2, i3, i4) = (
+        1.0 / h,
+        1.0 / (h * h),
+        1.0 / (h * h * h),
+        1.0 / (h * h * h * h),
+    );
+    let r = p * i1;
+    let r1 = -p * h1 * i2;
+    let r2 = p * (2.0 * h1 * h1 * i3 - h2 * i2);
+    let r3 = p * (-6.0 * h1 * h1 * h1 * i4 + 6.0 * h1 * h2 * i3 - h3 * i2);
+    polar_jet_cs(s, c, [r, r1, r2, r3])
 }
 
 /// Circle `(cx + r cos φ, cy + r sin φ)`.
@@ -119,17 +179,16 @@ impl PlaneCurve for Ellipse {
         bspline::shapes::ellipse(self.center.arr(), self.a, self.b).ok()
     }
     fn circle_forms(&self) -> Option<&SymbolicForms> {
-        kept(&self.forms, || self.circle_form())
+        let shape = CircleShape::Ellipse {
+            a: self.a,
+            b: self.b,
+            center: self.center,
+        };
+        kept_circle(&self.forms, || self.circle_form(), shape)
     }
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
-        let (a, b) = (self.a, self.b);
-        Jet {
-            p: self.center + V2::new(a * c, b * s),
-            d1: V2::new(-a * s, b * c),
-            d2: V2::new(-a * c, -b * s),
-            d3: V2::new(a * s, -b * c),
-        }
+        ellipse_jet(self.a, self.b, self.center, s, c)
     }
 }
 
@@ -175,7 +234,11 @@ impl PlaneCurve for Limacon {
         bspline::shapes::limacon(self.a, self.b).ok()
     }
     fn circle_forms(&self) -> Option<&SymbolicForms> {
-        kept(&self.forms, || self.circle_form())
+        let shape = CircleShape::Limacon {
+            a: self.a,
+            b: self.b,
+        };
+        kept_circle(&self.forms, || self.circle_form(), shape)
     }
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
@@ -273,27 +336,16 @@ impl PlaneCurve for Convexities {
         bspline::shapes::convexities(self.p, self.eps, self.m as usize).ok()
     }
     fn circle_forms(&self) -> Option<&SymbolicForms> {
-        kept(&self.forms, || self.circle_form())
+        let shape = CircleShape::Convexities {
+            p: self.p,
+            eps: self.eps,
+            m: self.m,
+        };
+        kept_circle(&self.forms, || self.circle_form(), shape)
     }
     fn jet(&self, u: f64) -> Jet {
-        let m = self.m as f64;
-        let (s, c) = (m * u).sin_cos();
-        let e = self.eps;
-        let h = 1.0 + e * c;
-        let h1 = -e * m * s;
-        let h2 = -e * m * m * c;
-        let h3 = e * m * m * m * s;
-        let p = self.p;
-        let (i1, i2, i3, i4) = (
-            1.0 / h,
-            1.0 / (h * h),
-            1.0 / (h * h * h),
-            1.0 / (h * h * h * h),
-        );
-        let r = p * i1;
-        let r1 = -p * h1 * i2;
-        let r2 = p * (2.0 * h1 * h1 * i3 - h2 * i2);
-        let r3 = p * (-6.0 * h1 * h1 * h1 * i4 + 6.0 * h1 * h2 * i3 - h3 * i2);
-        polar_jet(u, [r, r1, r2, r3])
+        let (sm, cm) = (self.m as f64 * u).sin_cos();
+        let (s, c) = u.sin_cos();
+        convexities_jet(self.p, self.eps, self.m, s, c, sm, cm)
     }
 }

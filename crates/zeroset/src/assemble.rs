@@ -31,7 +31,7 @@ pub(crate) struct Assembled {
 /// An interior grid line: axis (0: `t` = const, 1: `r` = const) and the constant's bits.
 type LineKey = (u8, u64);
 /// An arc end on a line: position along it, side of the line, end id.
-type LineEnd = (f64, u8, usize);
+type LineEnd = (f64, u8, usize, f64);
 
 /// Domain box `[t0, t1, r0, r1]`.
 pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assembled {
@@ -39,7 +39,8 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     let n_ends = 2 * arcs.len();
     let mut link = vec![Link::Free; n_ends];
     let ext = [dom[1] - dom[0], dom[3] - dom[2]];
-    let (cluster_of, n_clusters) = cluster_leaves(&pieces.leaves, ext);
+    let cl = cluster_leaves(&pieces.leaves, ext, cells);
+    let (cluster_of, n_clusters) = (&cl.of, cl.n);
     let mut attached: Vec<Vec<usize>> = vec![Vec::new(); n_clusters];
     let leaf_at = LeafIndex::new(&pieces.leaves, ext);
     // Ends grouped by the interior line they lie on: (axis, line bits) → (v, side, id).
@@ -66,10 +67,12 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 e.line == dom[2] || e.line == dom[3]
             };
             if !on_border {
-                lines
-                    .entry((axis, e.line.to_bits()))
-                    .or_default()
-                    .push((v, side, 2 * i + j));
+                lines.entry((axis, e.line.to_bits())).or_default().push((
+                    v,
+                    side,
+                    2 * i + j,
+                    e.unc,
+                ));
             }
         }
     }
@@ -77,51 +80,36 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     for ((axis, _), mut v) in lines {
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
         let tol = MATCH_TOL * ext[if axis == 0 { 1 } else { 0 }];
-        let mut i = 0;
-        while i < v.len() {
-            if i + 1 < v.len() && v[i].1 != v[i + 1].1 && (v[i + 1].0 - v[i].0).abs() <= tol {
+        // Within the tolerance, or within what rounding leaves of both roots.
+        let close =
+            |a: &LineEnd, b: &LineEnd| (b.0 - a.0).abs() <= tol.max(ROOT_SLACK * (a.3 + b.3));
+        // Neighbours from opposite sides, closest first: with three ends within the tolerance
+        // (beside a crossing) the nearest two are the one root seen twice.
+        let mut pairs: Vec<(f64, usize)> = (0..v.len().saturating_sub(1))
+            .filter(|&i| v[i].1 != v[i + 1].1 && close(&v[i], &v[i + 1]))
+            .map(|i| (v[i + 1].0 - v[i].0, i))
+            .collect();
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut taken = vec![false; v.len()];
+        for (_, i) in pairs {
+            if !taken[i] && !taken[i + 1] {
+                taken[i] = true;
+                taken[i + 1] = true;
                 link[v[i].2] = Link::End(v[i + 1].2);
                 link[v[i + 1].2] = Link::End(v[i].2);
-                i += 2;
-            } else {
-                unmatched.push(v[i].2);
-                i += 1;
             }
         }
+        unmatched.extend((0..v.len()).filter(|&i| !taken[i]).map(|i| v[i].2));
     }
     let mut out = Assembled::default();
-    let mut node_pt: Vec<[f64; 2]> = vec![[f64::NAN; 2]; n_clusters];
-    // Representative point of a cluster: the leaf centre with the smallest |F|.
-    let mut best = vec![f64::INFINITY; n_clusters];
-    let mut best_cell = vec![0usize; n_clusters];
-    let mut hull = vec![
-        [
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY
-        ];
-        n_clusters
-    ];
-    for (k, l) in pieces.leaves.iter().enumerate() {
-        let c = cluster_of[k];
-        if l.fabs < best[c] {
-            best[c] = l.fabs;
-            node_pt[c] = l.center;
-            best_cell[c] = l.cell;
-        }
-        let h = &mut hull[c];
-        h[0] = h[0].min(l.bx[0]);
-        h[1] = h[1].max(l.bx[1]);
-        h[2] = h[2].min(l.bx[2]);
-        h[3] = h[3].max(l.bx[3]);
-    }
+    let (hull, node_pt) = (&cl.hull, &cl.node);
     // An end with no partner across its line goes to a leaf within the matching tolerance,
     // or else to the nearest cluster whose hull, grown by its own size, holds it. This happens
     // beside flat regions: the patch across saw the root as a corner zero (a value within its
     // rounding bound counts as positive) and handed it to the leaf there. Where F vanishes to
     // high order (three lines through a point) the flat region and the uncertainty of roots
     // beside it grow together, hence the second, relative rule.
+    let mut rest: Vec<usize> = Vec::new();
     for id in unmatched {
         let p = arcs[id / 2].ends[id % 2].p;
         if let Some(k) = leaf_at.find(p, MATCH_TOL) {
@@ -138,37 +126,96 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 best = Some((d, c));
             }
         }
-        if let Some((_, c)) = best {
-            attached[c].push(id);
+        match best {
+            Some((_, c)) => attached[c].push(id),
+            None => rest.push(id),
         }
     }
-    // Leaves resolve a crossing only to about the square root of the rounding level; Newton
-    // on ∇F = 0 (a crossing or an isolated zero is a critical point) sharpens it.
+    // Ends left over, away from any cluster, that are as close as two computations of one
+    // root can be are joined: the zero set passed (within rounding) by a patch corner, and
+    // the patches on either side saw it on different edges of the corner.
+    let end_of = |id: usize| &arcs[id / 2].ends[id % 2];
+    let unit = ext[0].min(ext[1]);
+    let mut paired = vec![false; rest.len()];
+    for x in 0..rest.len() {
+        if paired[x] {
+            continue;
+        }
+        let (a, mut best) = (end_of(rest[x]), None::<(f64, usize)>);
+        for y in x + 1..rest.len() {
+            let b = end_of(rest[y]);
+            let d = ((a.p[0] - b.p[0]) / ext[0]).hypot((a.p[1] - b.p[1]) / ext[1]);
+            let tol = MATCH_TOL.max(ROOT_SLACK * (a.unc + b.unc) / unit);
+            let other_arc = rest[y] / 2 != rest[x] / 2;
+            if !paired[y] && other_arc && d <= tol && best.is_none_or(|bb| d < bb.0) {
+                best = Some((d, y));
+            }
+        }
+        if let Some((_, y)) = best {
+            paired[x] = true;
+            paired[y] = true;
+            link[rest[x]] = Link::End(rest[y]);
+            link[rest[y]] = Link::End(rest[x]);
+        }
+    }
+    // Inside the neighbourhood of a cluster (its hull grown by its own size) rounding decides
+    // nothing: F is within a few rounding bounds of zero there, and arcs traced through gaps
+    // between its leaves are artefacts — fragments that leave the cluster and come back, or
+    // a bridge that joins two arms just outside it (two arms of a crossing seen as a V, the
+    // pair of edge roots between them lost in rounding). Every arc lying entirely in that
+    // neighbourhood is dropped, and whatever it was joined to is attached to the cluster:
+    // the arms leaving the neighbourhood decide the topology.
+    let mut dropped = vec![false; arcs.len()];
     for c in 0..n_clusters {
-        if let Some(cell) = cells.get(best_cell[c]) {
-            if let Some(q) = critical_point(cell, node_pt[c], hull[c]) {
-                node_pt[c] = q;
+        let h = hull[c];
+        let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
+        let g = [h[0] - wt, h[1] + wt, h[2] - wr, h[3] + wr];
+        let near = |q: &[f64; 2]| q[0] >= g[0] && q[0] <= g[1] && q[1] >= g[2] && q[1] <= g[3];
+        let inside: Vec<usize> = (0..arcs.len())
+            .filter(|&i| !dropped[i] && near(&arcs[i].ends[0].p) && near(&arcs[i].ends[1].p))
+            .filter(|&i| arcs[i].pts.iter().all(near))
+            .collect();
+        for &i in &inside {
+            dropped[i] = true;
+        }
+        for &i in &inside {
+            for e in [2 * i, 2 * i + 1] {
+                attached[c].retain(|&x| x != e);
+                if let Link::End(o) = link[e] {
+                    link[e] = Link::Free;
+                    if !dropped[o / 2] {
+                        link[o] = Link::Free;
+                        attached[c].push(o);
+                    }
+                }
             }
         }
     }
-    // An arc with both ends on one cluster that stays beside it is a fragment traced through
-    // a gap between the leaves of a singular point, not an arm: drop it.
-    let mut dropped = vec![false; arcs.len()];
-    for (c, ends) in attached.iter_mut().enumerate() {
-        let h = hull[c];
-        let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
-        let near = |q: &[f64; 2]| {
-            q[0] >= h[0] - wt && q[0] <= h[1] + wt && q[1] >= h[2] - wr && q[1] <= h[3] + wr
-        };
-        let inner: Vec<usize> = ends
-            .iter()
-            .copied()
-            .filter(|&e| ends.contains(&(e ^ 1)) && arcs[e / 2].pts.iter().all(near))
-            .collect();
-        for &e in &inner {
-            dropped[e / 2] = true;
+    // An end attached twice (to two clusters, or once more by the rule above) counts once;
+    // two ends of different arcs at one point (the same edge root, seen from both sides, both
+    // handed to the cluster) are joined to each other instead: a curve passing by.
+    for ends in attached.iter_mut() {
+        ends.sort_unstable();
+        ends.dedup();
+        let mut joined: Vec<usize> = Vec::new();
+        for x in 0..ends.len() {
+            for y in x + 1..ends.len() {
+                let (a, b) = (ends[x], ends[y]);
+                if a / 2 == b / 2 || joined.contains(&a) || joined.contains(&b) {
+                    continue;
+                }
+                let (ea, eb) = (&arcs[a / 2].ends[a % 2], &arcs[b / 2].ends[b % 2]);
+                let (p, q) = (ea.p, eb.p);
+                // Seen from both sides of one grid line: opposite edges on the same line.
+                let across = ea.edge == (eb.edge + 2) % 4 && ea.line == eb.line;
+                if across && ((p[0] - q[0]) / ext[0]).hypot((p[1] - q[1]) / ext[1]) <= SAME_POINT {
+                    link[a] = Link::End(b);
+                    link[b] = Link::End(a);
+                    joined.extend([a, b]);
+                }
+            }
         }
-        ends.retain(|e| !inner.contains(e));
+        ends.retain(|e| !joined.contains(e));
     }
     let mut node_id = vec![usize::MAX; n_clusters];
     for (c, ends) in attached.iter().enumerate() {
@@ -221,6 +268,38 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
         }
     }
     out.lines = walk(arcs, &link, &out.singular, dropped);
+    // An open piece shorter than the matching tolerance that ends nowhere (neither on the
+    // border nor at a singular point) is rounding debris: a patch that saw the zero set
+    // passing within rounding of its corner traced a duplicate of a few ulps of it.
+    let on_border =
+        |q: &[f64; 2]| q[0] == dom[0] || q[0] == dom[1] || q[1] == dom[2] || q[1] == dom[3];
+    let at_node = |q: &[f64; 2]| out.singular.contains(q);
+    out.lines.retain(|(pts, closed)| {
+        let (Some(a), Some(b)) = (pts.first(), pts.last()) else {
+            return false;
+        };
+        // Nor does a piece that never leaves the neighbourhood of a cluster (see above).
+        let within = |h: &[f64; 4]| {
+            let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
+            pts.iter().all(|q| {
+                q[0] >= h[0] - wt && q[0] <= h[1] + wt && q[1] >= h[2] - wr && q[1] <= h[3] + wr
+            })
+        };
+        if hull.iter().any(within) {
+            return false;
+        }
+        if *closed || on_border(a) || on_border(b) || at_node(a) || at_node(b) {
+            return true;
+        }
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for q in pts {
+            for k in 0..2 {
+                lo[k] = lo[k].min(q[k]);
+                hi[k] = hi[k].max(q[k]);
+            }
+        }
+        (hi[0] - lo[0]) / ext[0] > MATCH_TOL || (hi[1] - lo[1]) / ext[1] > MATCH_TOL
+    });
     out
 }
 
@@ -228,6 +307,13 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
 /// the domain): the root computed from either side differs by rounding / slope, which is
 /// far below this except beside flat regions (unresolved leaves), where ends go to leaves.
 const MATCH_TOL: f64 = 1e-7;
+
+/// Two ends attached to one cluster closer than this (relative to the domain) are one root.
+const SAME_POINT: f64 = 1e-9;
+
+/// Two ends also match when their distance is within this many times the sum of their
+/// rounding uncertainties.
+const ROOT_SLACK: f64 = 4.0;
 
 /// Arms of a singular point whose directions have a cosine below `−OPPOSITE` continue each
 /// other (a transversal crossing has exactly opposite arms; 0.9 is about 25°).
@@ -331,7 +417,8 @@ impl<'a> LeafIndex<'a> {
 }
 
 /// Newton on `∇F = 0` from `x`, with the Hessian from central differences of the exact
-/// gradient; `None` unless it converges inside the (doubled) box.
+/// gradient; `None` if it leaves the (doubled) box. (At a degenerate critical point, where
+/// F vanishes to higher order, it only creeps; the last iterate is returned.)
 fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
     let (wt, wr) = ((bx[1] - bx[0]).max(1e-300), (bx[3] - bx[2]).max(1e-300));
     let lim = [bx[0] - wt, bx[1] + wt, bx[2] - wr, bx[3] + wr];
@@ -367,8 +454,26 @@ fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
     Some(p)
 }
 
-/// Connected components of touching leaf boxes (sweep over boxes sorted by `t0`).
-fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2]) -> (Vec<usize>, usize) {
+/// The clusters of unresolved leaves: for each leaf its cluster, and per cluster the hull of
+/// its boxes and its representative point.
+struct Clusters {
+    of: Vec<usize>,
+    n: usize,
+    hull: Vec<[f64; 4]>,
+    node: Vec<[f64; 2]>,
+}
+
+/// Connected components of touching leaf boxes (sweep over boxes sorted by `t0`), then merged
+/// where they lie within their own size of each other.
+///
+/// Representative point: the leaf centre with the smallest |F|, sharpened by Newton on
+/// ∇F = 0 (leaves resolve a crossing only to about the square root of the rounding level).
+/// The flat region of a crossing (where |F| is below its rounding bound) reaches out along
+/// the arms, thinning, and can come out of the subdivision in pieces separated by small
+/// simple patches; apart, the pieces would each claim some of the arms. (A larger reach
+/// also catches satellites farther along an arm, but it merges the flat corners of a
+/// self-bisector's cells on the diagonal with the short genuine branches that start there.)
+fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) -> Clusters {
     let n = leaves.len();
     let mut parent: Vec<usize> = (0..n).collect();
     fn find(p: &mut [usize], mut i: usize) -> usize {
@@ -399,18 +504,96 @@ fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2]) -> (Vec<usize>, usize) {
             }
         }
     }
+    // Per root: hull, best leaf, node.
+    let mut hull: Vec<Option<[f64; 4]>> = vec![None; n];
+    let mut best: Vec<(f64, usize)> = vec![(f64::INFINITY, 0); n];
+    for (i, l) in leaves.iter().enumerate() {
+        let r = find(&mut parent, i);
+        let h = hull[r].get_or_insert(l.bx);
+        h[0] = h[0].min(l.bx[0]);
+        h[1] = h[1].max(l.bx[1]);
+        h[2] = h[2].min(l.bx[2]);
+        h[3] = h[3].max(l.bx[3]);
+        if l.fabs < best[r].0 {
+            best[r] = (l.fabs, i);
+        }
+    }
+    let mut node = vec![[f64::NAN; 2]; n];
+    // |∇F| at the node (scaled by the domain): zero at a crossing, so when clusters merge the
+    // node nearest to being a critical point represents them.
+    let mut slope = vec![f64::INFINITY; n];
+    for r in 0..n {
+        let Some(h) = hull[r] else { continue };
+        let l = &leaves[best[r].1];
+        node[r] = l.center;
+        if let Some(cell) = cells.get(l.cell) {
+            if let Some(q) = critical_point(cell, l.center, h) {
+                node[r] = q;
+            }
+            let g = cell.eval_grad(node[r][0], node[r][1]);
+            slope[r] = (g[1] * ext[0]).hypot(g[2] * ext[1]);
+        }
+    }
+    let roots: Vec<usize> = (0..n).filter(|&i| hull[i].is_some()).collect();
+    let grown = |h: [f64; 4]| {
+        let (w, v) = (h[1] - h[0], h[3] - h[2]);
+        [h[0] - w, h[1] + w, h[2] - v, h[3] + v]
+    };
+    let meet =
+        |g: [f64; 4], h: [f64; 4]| h[0] <= g[1] && g[0] <= h[1] && h[2] <= g[3] && g[2] <= h[3];
+    // Bounded: each pass merges two clusters or stops.
+    for _ in 0..roots.len() {
+        let mut merged = false;
+        let live: Vec<usize> = roots
+            .iter()
+            .copied()
+            .filter(|&i| find(&mut parent, i) == i)
+            .collect();
+        'pairs: for (x, &a) in live.iter().enumerate() {
+            for &b in &live[x + 1..] {
+                let (Some(ha), Some(hb)) = (hull[a], hull[b]) else {
+                    continue;
+                };
+                if meet(grown(ha), hb) || meet(grown(hb), ha) {
+                    parent[a] = b;
+                    hull[b] = Some([
+                        ha[0].min(hb[0]),
+                        ha[1].max(hb[1]),
+                        ha[2].min(hb[2]),
+                        ha[3].max(hb[3]),
+                    ]);
+                    // The node nearer to a critical point represents both.
+                    if slope[a] < slope[b] {
+                        node[b] = node[a];
+                        slope[b] = slope[a];
+                    }
+                    merged = true;
+                    break 'pairs;
+                }
+            }
+        }
+        if !merged {
+            break;
+        }
+    }
     let mut id = vec![usize::MAX; n];
-    let mut count = 0;
-    let mut out = vec![0; n];
-    for (i, o) in out.iter_mut().enumerate() {
+    let mut out = Clusters {
+        of: vec![0; n],
+        n: 0,
+        hull: Vec::new(),
+        node: Vec::new(),
+    };
+    for i in 0..n {
         let r = find(&mut parent, i);
         if id[r] == usize::MAX {
-            id[r] = count;
-            count += 1;
+            id[r] = out.n;
+            out.n += 1;
+            out.hull.push(hull[r].unwrap_or([f64::NAN; 4]));
+            out.node.push(node[r]);
         }
-        *o = id[r];
+        out.of[i] = id[r];
     }
-    (out, count)
+    out
 }
 
 /// Follows links from free or node ends, then closes the remaining cycles.

@@ -21,6 +21,11 @@ pub(crate) struct End {
     pub(crate) edge: usize,
     /// The fixed coordinate of that edge's line.
     pub(crate) line: f64,
+    /// Uncertainty of the position along the line: the patch's rounding bound of F (below
+    /// which a corner value counts as positive, moving a root that passes near a corner onto
+    /// the corner) over the slope of F along the line there. Large beside a crossing, where
+    /// the slope vanishes, and where the zero set meets the line at a grazing angle.
+    pub(crate) unc: f64,
 }
 
 /// An arc inside one simple patch, from `a` to `b`, with its vertices (ends included).
@@ -205,6 +210,7 @@ impl Tracer<'_> {
                         p: [t, r],
                         edge: e,
                         line: r,
+                        unc: err / cell.eval_grad(t, r)[1].abs(),
                     }
                 }
                 _ => {
@@ -225,6 +231,7 @@ impl Tracer<'_> {
                         p: [t, r],
                         edge: e,
                         line: t,
+                        unc: err / cell.eval_grad(t, r)[2].abs(),
                     }
                 }
             };

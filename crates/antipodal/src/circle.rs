@@ -55,7 +55,11 @@ fn frame(u: f64) -> (f64, [f64; 2], [f64; 3]) {
 
 /// `(cos φ, sin φ)`, the derivatives of φ, and the quarter and homogeneous point (no atan2).
 fn frame_cs(u: f64) -> ([f64; 2], [f64; 3], usize, f64, f64) {
-    let u = u.rem_euclid(4.0);
+    let u = if (0.0..4.0).contains(&u) {
+        u
+    } else {
+        u.rem_euclid(4.0)
+    };
     let q = (u.floor() as usize).min(3);
     let s = u - q as f64;
     let [p0, p1, p2] = quarter(q);

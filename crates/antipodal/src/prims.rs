@@ -141,6 +141,22 @@ impl View<'_> {
             Some(d.map_points(1, |p, o| o[0] = p[0] * n.x + p[1] * n.y))
         };
         let accept = |u: f64| self.normal(u).dot(n) > 0.0;
+        if self.cert.is_some() {
+            // Every caller asks on a monotone segment (curvature of one sign, certified by the
+            // isolated inflections; total turning below π, certified by the hodograph): there
+            // the tangent meets each direction at most once, so the signs of `C′ · n` at the
+            // two ends decide, when both are trusted beyond their rounding bound.
+            let (jl, jh) = (self.jet_to(lo.min(hi), 1), self.jet_to(lo.max(hi), 1));
+            let (fl, fh) = (jl.d1.dot(n), jh.d1.dot(n));
+            let bound = |d1: V2| 64.0 * f64::EPSILON * d1.norm();
+            if fl.abs() > bound(jl.d1) && fh.abs() > bound(jh.d1) {
+                if (fl < 0.0) == (fh < 0.0) {
+                    return None;
+                }
+                let u = newton_bracketed(f, lo.min(hi), lo.max(hi), fl, self.tol, hint);
+                return accept(u).then_some(u);
+            }
+        }
         let fast = self.cert.as_ref().map(|c| (&c.tangent_pw, [n.x, n.y, 0.0]));
         self.solve(lo, hi, f, fast, sym, accept, Prefer::Low, hint)
     }

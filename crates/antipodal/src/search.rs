@@ -141,9 +141,9 @@ fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f6
         if s2 <= p.sa || s2 >= p.sb {
             break;
         }
-        let Some(t2) = p.opposite(s2) else {
-            break;
-        };
+        // The opposite point lies between the last cut's and the far end's.
+        let t_far = if dir > 0.0 { p.tb } else { p.ta };
+        let t2 = p.opposite_within(s2, cut.1, t_far);
         let th2 = p.sin_theta(s2, t2);
         if (th2 < 0.0) != (th < 0.0) || th2.abs() < 0.5 * 16.0 * th.abs() {
             break;

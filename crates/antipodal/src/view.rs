@@ -107,6 +107,9 @@ impl<'a> View<'a> {
 
     /// The parameter wrapped into `[a, b)` for closed curves (clamped for open ones).
     pub(crate) fn wrap(&self, u: f64) -> f64 {
+        if u >= self.a && u < self.b {
+            return u;
+        }
         if self.closed {
             let w = self.a + (u - self.a).rem_euclid(self.period);
             if w >= self.b {

@@ -116,9 +116,15 @@ fn remainders<'a>(
                     (se, te)
                 };
                 out.push(if dir < 0.0 {
-                    p.sub(p.sa, p.ta, se, te)
+                    Pair {
+                        near_b: true,
+                        ..p.sub(p.sa, p.ta, se, te)
+                    }
                 } else {
-                    p.sub(se, te, p.sb, p.tb)
+                    Pair {
+                        near_a: true,
+                        ..p.sub(se, te, p.sb, p.tb)
+                    }
                 });
                 break;
             }
@@ -306,12 +312,19 @@ enum Early {
 /// there) the march would only crawl up to that end, finding nothing. Otherwise the march goes
 /// on.
 fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Early {
+    let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
+    // Marching towards a pair just cut off beyond the far end: the limit is that pair unless
+    // another one comes first.
+    let toward_known = if up { p.near_b } else { p.near_a };
     // Linear convergence with ratio q puts the limit about step·q/(1−q) ahead.
     let q = step / last;
-    if !(q < 0.9 && step <= 1e-2 * p.vs.period) {
+    let ahead_by = if toward_known {
+        (end_s - s).abs()
+    } else if q < 0.9 && step <= 1e-2 * p.vs.period {
+        step * q / (1.0 - q)
+    } else {
         return Early::Continue;
-    }
-    let ahead_by = step * q / (1.0 - q);
+    };
     let Some((ps, pt)) = polish(p.vs, p.vt, s, t, 4.0 * ahead_by + 1e3 * p.vs.tol) else {
         return Early::Continue;
     };
@@ -324,11 +337,14 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
         return Early::Continue;
     }
     let sign = p.sin_theta(s, t) < 0.0;
-    let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
     let beyond = if up { ps >= end_s } else { ps <= end_s };
     if beyond {
-        // The far end itself must still show the marching sign.
-        return if (p.sin_theta(end_s, end_t) < 0.0) == sign {
+        // The far end itself, and the middle of what is left, must still show the marching
+        // sign.
+        let sm = 0.5 * (s + end_s);
+        let tm = p.opposite_within(sm, t, end_t);
+        let same = |s: f64, t: f64| (p.sin_theta(s, t) < 0.0) == sign;
+        return if same(end_s, end_t) && same(sm, tm) {
             Early::Nothing
         } else {
             Early::Continue

@@ -464,7 +464,7 @@ struct Clusters {
 }
 
 /// Connected components of touching leaf boxes (sweep over boxes sorted by `t0`), then merged
-/// where they lie within their own size of each other.
+/// where their neighbourhoods (hulls grown by their own size) overlap.
 ///
 /// Representative point: the leaf centre with the smallest |F|, sharpened by Newton on
 /// ∇F = 0 (leaves resolve a crossing only to about the square root of the rounding level).
@@ -554,7 +554,8 @@ fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) -> Clusters {
                 let (Some(ha), Some(hb)) = (hull[a], hull[b]) else {
                     continue;
                 };
-                if meet(grown(ha), hb) || meet(grown(hb), ha) {
+                // Their neighbourhoods (each hull grown by its own size) overlap.
+                if meet(grown(ha), grown(hb)) {
                     parent[a] = b;
                     hull[b] = Some([
                         ha[0].min(hb[0]),

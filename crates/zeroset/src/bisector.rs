@@ -553,7 +553,9 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
     let keep = |_: &Patch| true;
-    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep);
+    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &|_| {
+        false
+    });
     Ok(ctx.build(&pieces, dom, &cells))
 }
 
@@ -601,7 +603,11 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
     let keep = |p: &Patch| p.t0 < p.r1;
-    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep);
+    // Cells touching the diagonal at a corner (t1 = r0), and for a closed curve the cell at
+    // the corner (start, end) — the diagonal across the seam: F vanishes to fourth order at
+    // that corner (see `lax` in the tracer).
+    let lax = |p: &Patch| p.t1 == p.r0 || (p.t0 == dom[0] && p.r1 == dom[3]);
+    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &lax);
     Ok(ctx.build(&pieces, dom, &cells))
 }
 

@@ -9,7 +9,7 @@
 //! with no edge sign change holds no zero. Everything else is split; what is still unresolved at
 //! the size tolerance (crossings, isolated points, loops below the tolerance) becomes a leaf.
 
-use crate::patch::{common_sign, variations, vsign, Patch, EPS};
+use crate::patch::{common_sign, tsign, variations, vsign, Patch, EPS};
 use crate::solve1::{bracketed, bracketed_or_end};
 
 /// Where an arc ends: on a patch edge.
@@ -52,6 +52,8 @@ pub(crate) struct Tracer<'a> {
     pub(crate) min_size: [f64; 2],
     /// Domain extents, to compare patch sizes in both directions.
     pub(crate) extent: [f64; 2],
+    /// The domain `[t0, t1, r0, r1]`.
+    pub(crate) dom: [f64; 4],
     pub(crate) max_depth: usize,
     pub(crate) max_patches: usize,
     /// Maps `(t, r)` to the space where chords are measured (`None`: far away, do not refine).
@@ -59,6 +61,9 @@ pub(crate) struct Tracer<'a> {
     pub(crate) chord_tol: f64,
     /// Region filter: patches for which this is false are dropped unseen.
     pub(crate) keep: &'a dyn Fn(&Patch) -> bool,
+    /// Cells where F has a known zero of high order at a corner (a self-bisector's cells
+    /// touching the diagonal there), in which the check of inner edge coefficients is off.
+    pub(crate) lax: &'a dyn Fn(&Patch) -> bool,
 }
 
 /// Result of the subdivision of all cells.
@@ -100,6 +105,7 @@ impl Tracer<'_> {
                 out.truncated = true;
                 continue;
             }
+            let strict = !(self.lax)(cell);
             let mut stack = vec![(cell.clone(), 0usize)];
             while let Some((p, depth)) = stack.pop() {
                 out.patches += 1;
@@ -108,7 +114,7 @@ impl Tracer<'_> {
                     return;
                 }
                 let err = (p.pt + p.pr + 2) as f64 * (depth + 4) as f64 * EPS * scale;
-                match self.classify(&p, err) {
+                match self.classify(&p, err, strict) {
                     Class::Empty => {}
                     Class::Simple(graph_r) => {
                         if let Some(arc) = self.trace(cell, &p, graph_r, err) {
@@ -149,7 +155,7 @@ impl Tracer<'_> {
         }
     }
 
-    fn classify(&self, p: &Patch, err: f64) -> Class {
+    fn classify(&self, p: &Patch, err: f64, strict: bool) -> Class {
         if common_sign(p.c.iter().copied(), err) != 0 {
             return Class::Empty;
         }
@@ -157,6 +163,32 @@ impl Tracer<'_> {
         let mono_r = common_sign(p.dr_coefs(), 2.0 * err) != 0;
         if !(mono_t || mono_r) {
             return Class::Split;
+        }
+        // The count of edge roots below is only a proof when the inner coefficients of each
+        // edge have trusted signs. One within rounding of zero (beside the flat region around
+        // a crossing) can hide a pair of roots: a V of two arms just beside a crossing then
+        // looked like one arc from side to side, and the crossing was lost. Such a patch is
+        // split (and ends as a leaf if it stays so). Corner values within rounding are fine
+        // (adjacent patches agree on the sign convention, so a zero at a corner is seen once,
+        // beside it), and so are edges on the border of the domain, where nothing is joined
+        // (a curve tangent to the border would be split down to the size limit all along
+        // its contact). Off in `lax` cells: around a self-bisector's knot corner on the
+        // diagonal F is flat to fourth order, and the check would swallow the short genuine
+        // branches that start there into leaves.
+        if strict {
+            let unsure = |e: usize| {
+                let on_border = match e {
+                    0 => p.r0 == self.dom[2],
+                    1 => p.t1 == self.dom[1],
+                    2 => p.r1 == self.dom[3],
+                    _ => p.t0 == self.dom[0],
+                };
+                let c = p.edge(e);
+                !on_border && c[1..c.len() - 1].iter().any(|&x| tsign(x, err) == 0)
+            };
+            if (0..4).any(unsure) {
+                return Class::Split;
+            }
         }
         let mut total = 0;
         for e in 0..4 {

@@ -114,7 +114,15 @@ pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
     let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
     let map = |t: f64, r: f64| Some([t, r]);
     let keep = |_: &Patch| true;
-    let pieces = run_cells(&cells, dom, opts, &map, opts.chord_tol * diag, &keep);
+    let pieces = run_cells(
+        &cells,
+        dom,
+        opts,
+        &map,
+        opts.chord_tol * diag,
+        &keep,
+        &|_| false,
+    );
     Ok(finish(&pieces, dom, &cells))
 }
 
@@ -127,16 +135,19 @@ pub(crate) fn run_cells(
     map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
     chord_abs: f64,
     keep: &dyn Fn(&Patch) -> bool,
+    lax: &dyn Fn(&Patch) -> bool,
 ) -> Pieces {
     let extent = [dom[1] - dom[0], dom[3] - dom[2]];
     let tracer = Tracer {
         min_size: [opts.tol * extent[0], opts.tol * extent[1]],
         extent,
+        dom,
         max_depth: opts.max_depth(),
         max_patches: opts.max_patches,
         map,
         chord_tol: chord_abs,
         keep,
+        lax,
     };
     let mut pieces = Pieces::default();
     tracer.run(cells, &mut pieces);

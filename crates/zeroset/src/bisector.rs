@@ -642,3 +642,74 @@ fn min_dist(c: &Rational, p: [f64; 2]) -> f64 {
     }
     best
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use bspline::BSpline;
+
+    /// How often `(t − r)` divides each diagonal cell of the self-bisector function.
+    fn divisions(c: &Rational, method: Method) -> Vec<usize> {
+        let f = bisector_function(c, c, method).unwrap();
+        f.bezier_patches()
+            .iter()
+            .map(Patch::from_bezier)
+            .filter(|p| p.t0 == p.r0 && p.t1 == p.r1)
+            .map(|mut p| {
+                let mut k = 0;
+                while let Some(q) = p.divide_diagonal(DIVISIBLE) {
+                    p = q;
+                    k += 1;
+                    assert!(k <= 8);
+                }
+                k
+            })
+            .collect()
+    }
+
+    fn pts(v: &[[f64; 2]]) -> Vec<f64> {
+        v.iter().flat_map(|p| [p[0], p[1]]).collect()
+    }
+
+    /// F3 of a curve with itself vanishes to fourth order on the diagonal (den = O(t − r),
+    /// F̂3 = O((t − r)³)), F1 and F2 to fifth (they carry den once more, and are
+    /// antisymmetric). The division finds exactly that in every diagonal cell, for a cubic
+    /// B-spline, a cubic NURBS (degree 11 cells) and a periodic NURBS.
+    #[test]
+    fn self_bisector_functions_divide_by_the_expected_power() {
+        let seven = pts(&[
+            [0.0, 0.0],
+            [1.0, 2.0],
+            [3.0, 2.5],
+            [4.0, 0.5],
+            [3.0, -1.5],
+            [1.5, -1.0],
+            [2.0, 0.5],
+        ]);
+        let cubic = Rational::polynomial(&BSpline::clamped_uniform(3, 2, seven.clone()).unwrap());
+        let w = [1.0, 3.0, 1.0, 1.0, 0.5, 2.0, 1.0];
+        let nurbs =
+            Rational::new(BSpline::clamped_uniform(3, 2, seven).unwrap(), Some(&w)).unwrap();
+        let ring = pts(&[
+            [3.0, 0.0],
+            [2.5, 2.0],
+            [0.5, 1.0],
+            [-1.0, 2.5],
+            [-3.0, 0.5],
+            [-2.5, -2.0],
+            [0.0, -0.8],
+            [2.0, -2.5],
+        ]);
+        let mut wr = vec![1.0, 2.0, 0.5, 1.0, 1.5, 1.0, 0.6, 1.0];
+        wr.extend_from_slice(&[1.0, 2.0, 0.5]);
+        let periodic = Rational::new(BSpline::periodic(3, 2, ring).unwrap(), Some(&wr)).unwrap();
+        for c in [&cubic, &nurbs, &periodic] {
+            let d3 = divisions(c, Method::F3);
+            assert!(!d3.is_empty() && d3.iter().all(|&k| k == 4), "F3: {d3:?}");
+        }
+        for m in [Method::F1, Method::F2] {
+            let d = divisions(&cubic, m);
+            assert!(!d.is_empty() && d.iter().all(|&k| k == 5), "{m:?}: {d:?}");
+        }
+    }
+}

@@ -25,10 +25,10 @@ fn has_total_degree(f: &TensorBSpline, d: usize) -> bool {
 
 #[test]
 fn degrees_of_section_3_4() {
-    for m in 2..=3usize {
+    for m in 1..=4usize {
         // Generic points (leading coefficients not parallel, which would cancel top terms).
-        let a = [[0.0, 0.0], [1.0, 2.0], [2.3, -1.0], [3.0, 1.4]];
-        let b = [[0.1, 3.0], [1.5, 2.2], [1.7, 4.1], [3.2, 3.5]];
+        let a = [[0.0, 0.0], [1.0, 2.0], [2.3, -1.0], [3.0, 1.4], [4.2, 0.3]];
+        let b = [[0.1, 3.0], [1.5, 2.2], [1.7, 4.1], [3.2, 3.5], [3.9, 5.0]];
         let (p1, p2) = (a[..=m].to_vec(), b[..=m].to_vec());
         let (c1, c2) = (bez(&p1), bez(&p2));
         let f1 = bisector_function(&c1, &c2, Method::F1).unwrap();
@@ -39,6 +39,7 @@ fn degrees_of_section_3_4() {
         assert!(has_total_degree(&f3, 4 * m - 2), "F3, m = {m}");
         // Tensor degrees are lower than the total degree in each variable.
         assert_eq!((f1.deg_t(), f1.deg_r()), (4 * m - 2, 4 * m - 2));
+        assert_eq!((f2.deg_t(), f2.deg_r()), (4 * m - 2, 4 * m - 2));
         assert_eq!((f3.deg_t(), f3.deg_r()), (3 * m - 1, 3 * m - 1));
     }
 }

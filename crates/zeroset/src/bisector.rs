@@ -4,9 +4,12 @@
 //! Cleaning: a vertex is kept only when its point `P(t, r)` is a genuine, finite bisector point
 //! (equidistant from both foot points, on both normal lines, to a relative residual of
 //! [`RESIDUAL`]). This drops the parallel-normal component of `F1`/`F2` (Eq. 4) and the points
-//! at infinity; a branch is split where it leaves the valid set. For the self-bisector the
-//! trivial diagonal `t = r` is divided out of the diagonal Bézier cells symbolically, only the
-//! half `t ≤ r` is searched, and mirrored parts are clipped at the diagonal.
+//! at infinity; a branch is split where it leaves the valid set. A vertex that fails only
+//! because `F` is ill-conditioned there (beside a point where the curves cross, a crossing of
+//! the zero set) is first polished by Newton on the bisector condition itself. For the
+//! self-bisector the trivial diagonal `t = r` is divided out of the diagonal Bézier cells
+//! symbolically (`(t − r)⁴` for F3, `(t − r)⁵` for F1 and F2), only the half `t ≤ r` is
+//! searched, and mirrored parts are clipped at the diagonal.
 
 use crate::error::{Error, Result};
 use crate::extract::Pieces;
@@ -16,7 +19,11 @@ use crate::zeroset::{finish, run_cells, ZeroSetOptions};
 use bspline::Rational;
 use serde::{Deserialize, Serialize};
 
-/// Largest relative residual of the three bisector conditions for a reported point.
+/// Largest relative residual of the three bisector conditions for a reported point: the
+/// largest of `| |P − C1| − |P − C2| |` and the two foot-point orthogonalities
+/// `|⟨P − Ci, Ci'⟩| / |Ci'|`, divided by the larger distance `|P − Ci|` — but by no less than
+/// 1e-6 of the coordinate size (bounding-box diagonal plus distance of its centre from the
+/// origin), so that where the curves cross the requirement stays above what doubles hold.
 pub const RESIDUAL: f64 = 1e-9;
 /// Points farther than this many bounding-box diagonals count as points at infinity.
 const FAR: f64 = 1e3;

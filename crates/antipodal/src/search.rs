@@ -233,7 +233,7 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
     let up = theta_a > 0.0;
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
-    for _ in 0..MARCH_STEPS {
+    for i in 0..MARCH_STEPS {
         let dir = p.r(s, t).unit();
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let ns = p.vs.point_with_normal_near(lo, hi, dir, s)?;
@@ -244,7 +244,7 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
         if converged(p, step, last_step, s, t) {
             return Some((s, t, up));
         }
-        match finish_early(p, s, t, step, last_step, up) {
+        match finish_early(p, s, t, step, last_step, up, i) {
             Early::Found(f) => return Some(f),
             Early::Nothing => return None,
             Early::Continue => {}
@@ -276,7 +276,7 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
     };
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
-    for _ in 0..MARCH_STEPS {
+    for i in 0..MARCH_STEPS {
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let prefer = if up { Prefer::Low } else { Prefer::High };
         let jt = p.vt.jet_to(t, 1);
@@ -288,7 +288,7 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
         if converged(p, step, last_step, s, t) {
             return Some((s, t, up));
         }
-        match finish_early(p, s, t, step, last_step, up) {
+        match finish_early(p, s, t, step, last_step, up, i) {
             Early::Found(f) => return Some(f),
             Early::Nothing => return None,
             Early::Continue => {}
@@ -311,7 +311,7 @@ enum Early {
 /// it is the pair the march converges to; beyond the section's far end (a pair just cut off
 /// there) the march would only crawl up to that end, finding nothing. Otherwise the march goes
 /// on.
-fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Early {
+fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool, i: usize) -> Early {
     let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
     // Marching towards a pair just cut off beyond the far end: the limit is that pair unless
     // another one comes first.
@@ -322,6 +322,10 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
         (end_s - s).abs()
     } else if q < 0.9 && step <= 1e-2 * p.vs.period {
         step * q / (1.0 - q)
+    } else if q < 1.0 && i >= 8 && i.is_power_of_two() {
+        // A march converging with a ratio near 1 (a nearly degenerate pair) would take
+        // thousands of steps: Newton is tried at exponentially spaced steps.
+        (step * q / (1.0 - q)).min(p.vs.period)
     } else {
         return Early::Continue;
     };

@@ -40,6 +40,11 @@ const MOVE: f64 = 1e-6;
 /// Self-bisector vertices closer than this (relative to the domain) to the diagonal are
 /// dropped: their foot points (nearly) coincide.
 const DIAGONAL_MARGIN: f64 = 1e-9;
+/// A self-bisector branch ending this close (relative to the domain) to a knot corner of the
+/// diagonal, on the cell across it, is extended to the corner.
+const CORNER_REACH: f64 = 1e-3;
+/// Halvings toward a knot corner (from ~1e-5 of the domain down to ~1e-11).
+const MAX_CORNER_STEPS: usize = 20;
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
 const DIVISIBLE: f64 = 1e-8;
 
@@ -376,6 +381,9 @@ impl Ctx<'_> {
             }
             flush(&mut cur, &mut branches);
         }
+        if self.selfb {
+            self.reach_knot_corners(&mut branches, cells, dom);
+        }
         let closed = self.selfb && self.is_closed();
         if closed {
             branches = join_seam(branches, dom);
@@ -399,6 +407,86 @@ impl Ctx<'_> {
             singular: special(&z.singular),
             isolated: special(&z.isolated),
             complete: z.complete,
+        }
+    }
+}
+
+impl Ctx<'_> {
+    /// Extends self-bisector branches that end beside a knot corner `(k, k)` of the diagonal
+    /// up to it.
+    ///
+    /// Where the curvature has an extremum exactly at a knot (its derivative changes sign
+    /// there, common for B-splines), a branch ends at the corner `(k, k)`, reached through the
+    /// cell `t < k < r`. That cell is not divided by `(t − r)⁴` (its two foot points lie on
+    /// different polynomial pieces), so `F` is flat to fourth order around the corner and the
+    /// zero set stops where the flat region begins, ~1e-5 of the domain short (in the plane,
+    /// ~1e-5 of the size short of the branch's end). Near the corner the branch is a ray;
+    /// points along it, halving the distance each time, are polished onto the bisector
+    /// condition ψ (whose rounding error shrinks with the distances) while they stay valid,
+    /// taking the branch to ~1e-11 of the corner.
+    fn reach_knot_corners(&self, branches: &mut [Branch], cells: &[Patch], dom: [f64; 4]) {
+        let ext = dom[1] - dom[0];
+        let mut knots: Vec<f64> = cells
+            .iter()
+            .filter(|p| p.t0 == p.r0 && p.t0 > dom[0])
+            .map(|p| p.t0)
+            .collect();
+        knots.sort_by(f64::total_cmp);
+        knots.dedup();
+        for b in branches.iter_mut() {
+            for front in [false, true] {
+                let Some(&q) = (if front { b.tr.first() } else { b.tr.last() }) else {
+                    continue;
+                };
+                let Some(&k) = knots.iter().find(|&&k| {
+                    q[0] <= k
+                        && k < q[1]
+                        && k - q[0] <= CORNER_REACH * ext
+                        && q[1] - k <= CORNER_REACH * ext
+                }) else {
+                    continue;
+                };
+                let n = b.xy.len();
+                let (p0, p1) = if front {
+                    (b.xy[0], b.xy[1.min(n - 1)])
+                } else {
+                    (b.xy[n - 1], b.xy[n.saturating_sub(2)])
+                };
+                // The image converges along the ray; each new point must stay in step (its
+                // move at most twice the previous one), and the polish may not leave the ray
+                // by more than a quarter of the distance to the corner — else it found another
+                // zero of ψ (ψ has three near the corner) and the extension stops.
+                let (mut last, mut step) = (p0, (p0[0] - p1[0]).hypot(p0[1] - p1[1]));
+                let mut extra: Vec<([f64; 2], [f64; 2])> = Vec::new();
+                let mut f = 1.0;
+                for _ in 0..MAX_CORNER_STEPS {
+                    f *= 0.5;
+                    let g = [k + f * (q[0] - k), k + f * (q[1] - k)];
+                    let Some((tr, xy)) = self.accept(g[0], g[1]) else {
+                        break;
+                    };
+                    let off = (tr[0] - g[0]).hypot(tr[1] - g[1]);
+                    let moved = (xy[0] - last[0]).hypot(xy[1] - last[1]);
+                    if off > 0.25 * f * (q[0] - k).hypot(q[1] - k)
+                        || moved > 2.0 * step + 1e-12 * self.diag
+                    {
+                        break;
+                    }
+                    extra.push((tr, xy));
+                    (last, step) = (xy, moved);
+                }
+                if front {
+                    for (tr, xy) in extra {
+                        b.tr.insert(0, tr);
+                        b.xy.insert(0, xy);
+                    }
+                } else {
+                    for (tr, xy) in extra {
+                        b.tr.push(tr);
+                        b.xy.push(xy);
+                    }
+                }
+            }
         }
     }
 }

@@ -33,7 +33,7 @@ fn no_solution_when_disjoint() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig::with_cases(256))]
     /// Two random lines: exactly their intersection when it is inside, reported once.
     #[test]
     fn line_pairs(a in -1.0..1.0f64, b in -1.0..1.0f64, c in -1.0..1.0f64, d in -1.0..1.0f64, e in -1.0..1.0f64, g in -1.0..1.0f64) {
@@ -51,6 +51,41 @@ proptest! {
             prop_assert!((s[0].t - t).abs() < 1e-10 && (s[0].r - r).abs() < 1e-10);
         } else if !(-0.001..1.001).contains(&t) || !(-0.001..1.001).contains(&r) {
             prop_assert!(s.is_empty());
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+    /// Two random circles (degree (2, 2) functions): their 0 or 2 intersection points, each
+    /// certified and once, against the analytic solution (tangent pairs and points near the
+    /// border excluded).
+    #[test]
+    fn circle_pairs(cx in 0.2..0.8f64, cy in 0.2..0.8f64, r1 in 0.05..0.4f64,
+                    dx in 0.2..0.8f64, dy in 0.2..0.8f64, r2 in 0.05..0.4f64) {
+        let d = (dx - cx).hypot(dy - cy);
+        prop_assume!(d > 1e-3);
+        prop_assume!((d - (r1 + r2)).abs() > 1e-3 && (d - (r1 - r2).abs()).abs() > 1e-3);
+        let mut expect = Vec::new();
+        if d < r1 + r2 && d > (r1 - r2).abs() {
+            let a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d);
+            let h = (r1 * r1 - a * a).sqrt();
+            let (ux, uy) = ((dx - cx) / d, (dy - cy) / d);
+            let (mx, my) = (cx + a * ux, cy + a * uy);
+            expect.push([mx - h * uy, my + h * ux]);
+            expect.push([mx + h * uy, my - h * ux]);
+        }
+        for q in &expect {
+            prop_assume!(q.iter().all(|&x| (0.001..0.999).contains(&x)));
+        }
+        let f = circle(cx, cy, r1, UNIT);
+        let g = circle(dx, dy, r2, UNIT);
+        let s = solve_system(&f, &g, &SystemOptions::default()).unwrap();
+        prop_assert_eq!(s.len(), expect.len(), "{:?} vs {:?}", s, expect);
+        for q in &expect {
+            let hit: Vec<_> = s.iter().filter(|x| (x.t - q[0]).hypot(x.r - q[1]) < 1e-9).collect();
+            prop_assert_eq!(hit.len(), 1, "{:?} not found once in {:?}", q, s);
+            prop_assert!(hit[0].certified);
         }
     }
 }

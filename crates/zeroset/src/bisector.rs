@@ -43,7 +43,7 @@ const DIAGONAL_MARGIN: f64 = 1e-9;
 /// A self-bisector branch ending this close (relative to the domain) to a knot corner of the
 /// diagonal, on the cell across it, is extended to the corner.
 const CORNER_REACH: f64 = 1e-3;
-/// Halvings toward a knot corner (from ~1e-5 of the domain down to ~1e-11).
+/// Halvings toward a knot corner at most (from ~1e-5 of the domain down to ~1e-11).
 const MAX_CORNER_STEPS: usize = 20;
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
 const DIVISIBLE: f64 = 1e-8;
@@ -422,8 +422,9 @@ impl Ctx<'_> {
     /// zero set stops where the flat region begins, ~1e-5 of the domain short (in the plane,
     /// ~1e-5 of the size short of the branch's end). Near the corner the branch is a ray;
     /// points along it, halving the distance each time, are polished onto the bisector
-    /// condition ψ (whose rounding error shrinks with the distances) while they stay valid,
-    /// taking the branch to ~1e-11 of the corner.
+    /// condition ψ (whose rounding error shrinks with the distances) while they stay valid
+    /// and in step. On the demo's periodic NURBS this takes the branches to ~1e-8 of the
+    /// corner (their images to 2e-8–6e-8 of the limit point, the centre of curvature there).
     fn reach_knot_corners(&self, branches: &mut [Branch], cells: &[Patch], dom: [f64; 4]) {
         let ext = dom[1] - dom[0];
         let mut knots: Vec<f64> = cells

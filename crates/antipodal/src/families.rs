@@ -43,6 +43,7 @@ pub(crate) fn flat_pairs(
                 pf + dir * c - nf * v.scale,
                 nf,
                 crate::prims::Prefer::Low,
+                f64::NAN,
             )
             .unwrap_or(if (x(piece.lo) - c).abs() < (x(piece.hi) - c).abs() {
                 piece.lo
@@ -64,7 +65,14 @@ pub(crate) fn flat_pairs(
         return;
     };
     let pt = v.point(t);
-    let Some(s) = v.point_on_ray(f.lo, f.hi, pt, v.normal(t), crate::prims::Prefer::Low) else {
+    let Some(s) = v.point_on_ray(
+        f.lo,
+        f.hi,
+        pt,
+        v.normal(t),
+        crate::prims::Prefer::Low,
+        f64::NAN,
+    ) else {
         return;
     };
     if nf.dot(pt - v.point(s)) > 0.0 {

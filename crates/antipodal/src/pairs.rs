@@ -71,10 +71,15 @@ impl<'a> Pair<'a> {
 
     /// The opposite point of `s`, searched between two known opposite points.
     pub(crate) fn opposite_within(&self, s: f64, t0: f64, t1: f64) -> f64 {
+        self.opposite_near(s, t0, t1, t0)
+    }
+
+    /// [`Pair::opposite_within`] with Newton started at `hint`.
+    pub(crate) fn opposite_near(&self, s: f64, t0: f64, t1: f64, hint: f64) -> f64 {
         let n = -self.vs.normal(s);
         let (lo, hi) = (t0.min(t1), t0.max(t1));
         self.vt
-            .point_with_normal_near(lo, hi, n, t0)
+            .point_with_normal_near(lo, hi, n, hint)
             .or_else(|| self.opposite(s))
             .unwrap_or(0.5 * (t0 + t1))
     }

@@ -182,7 +182,7 @@ impl View<'_> {
     }
 
     /// `point-on-ray(lo, hi, c)`: where the segment meets the ray from `c` along the unit
-    /// vector `dir` (the inward normal at `c`).
+    /// vector `dir` (the inward normal at `c`); Newton starts at `hint` (NaN for none).
     pub(crate) fn point_on_ray(
         &self,
         lo: f64,
@@ -190,6 +190,7 @@ impl View<'_> {
         c: V2,
         dir: V2,
         prefer: Prefer,
+        hint: f64,
     ) -> Option<f64> {
         let v = dir.perp();
         let f = |u: f64| {
@@ -206,7 +207,7 @@ impl View<'_> {
             .cert
             .as_ref()
             .map(|cc| (&cc.hom_pw, [v.x, v.y, -c.dot(v)]));
-        self.solve(lo, hi, f, fast, sym, accept, prefer, f64::NAN)
+        self.solve(lo, hi, f, fast, sym, accept, prefer, hint)
     }
 }
 

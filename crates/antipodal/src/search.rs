@@ -141,8 +141,8 @@ fn remainders<'a>(
 fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f64, f64) {
     let limit = 1e-2 * (p.sb - p.sa);
     let (mut eps, mut th, mut cut) = (eps, th, (se, te));
-    while eps * 16.0 <= limit {
-        let e2 = eps * 16.0;
+    while eps * 64.0 <= limit {
+        let e2 = eps * 64.0;
         let s2 = s + dir * e2;
         if s2 <= p.sa || s2 >= p.sb {
             break;
@@ -151,7 +151,7 @@ fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f6
         let t_far = if dir > 0.0 { p.tb } else { p.ta };
         let t2 = p.opposite_within(s2, cut.1, t_far);
         let th2 = p.sin_theta(s2, t2);
-        if (th2 < 0.0) != (th < 0.0) || th2.abs() < 0.5 * 16.0 * th.abs() {
+        if (th2 < 0.0) != (th < 0.0) || th2.abs() < 0.5 * 64.0 * th.abs() {
             break;
         }
         (eps, th, cut) = (e2, th2, (s2, t2));
@@ -202,7 +202,7 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
         }
         // Newton on the antipodal system from the better end, accepted only when it lands
         // on a pair inside the current bracket (which then holds a pair for sure).
-        if i % 3 == 1 {
+        if i % 2 == 0 {
             let (sb, tb) = if f0.abs() < f1.abs() {
                 (s0, t0)
             } else {
@@ -233,12 +233,16 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
     let up = theta_a > 0.0;
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
+    // The last moves, extrapolated by the step ratio: Newton starts near the next point.
+    let (mut ds, mut dt, mut ratio) = (0.0, 0.0, 1.0);
     for i in 0..MARCH_STEPS {
         let dir = p.r(s, t).unit();
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
-        let ns = p.vs.point_with_normal_near(lo, hi, dir, s)?;
-        let nt = p.opposite_within(ns, t, if up { p.tb } else { p.ta });
+        let ns = p.vs.point_with_normal_near(lo, hi, dir, s + ds * ratio)?;
+        let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);
         let step = (ns - s).abs();
+        ratio = (step / last_step).clamp(0.0, 3.0);
+        (ds, dt) = (ns - s, nt - t);
         s = ns;
         t = nt;
         if converged(p, step, last_step, s, t) {
@@ -276,13 +280,17 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
     };
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
+    let (mut ds, mut dt, mut ratio) = (0.0, 0.0, 1.0);
     for i in 0..MARCH_STEPS {
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let prefer = if up { Prefer::Low } else { Prefer::High };
         let jt = p.vt.jet_to(t, 1);
-        let ns = p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer)?;
-        let nt = p.opposite_within(ns, t, if up { p.tb } else { p.ta });
+        let hint = if i == 0 { f64::NAN } else { s + ds * ratio };
+        let ns = p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint)?;
+        let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);
         let step = (ns - s).abs();
+        ratio = (step / last_step).clamp(0.0, 3.0);
+        (ds, dt) = (ns - s, nt - t);
         s = ns;
         t = nt;
         if converged(p, step, last_step, s, t) {

@@ -223,49 +223,37 @@ impl Tracer<'_> {
                 continue;
             }
             let s0 = vsign(coefs[0], err);
-            let end = match e {
-                0 | 2 => {
-                    let r = if e == 0 { p.r0 } else { p.r1 };
-                    let x0 = secant(p.t0, p.t1, coefs[0], coefs[coefs.len() - 1]);
-                    let t = bracketed(
-                        |t| {
-                            let g = cell.eval_grad(t, r);
-                            (g[0], g[1])
-                        },
-                        p.t0,
-                        p.t1,
-                        s0,
-                        x0,
-                        noise,
-                    );
-                    End {
-                        p: [t, r],
-                        edge: e,
-                        line: r,
-                        unc: err / cell.eval_grad(t, r)[1].abs(),
-                    }
-                }
-                _ => {
-                    let t = if e == 3 { p.t0 } else { p.t1 };
-                    let x0 = secant(p.r0, p.r1, coefs[0], coefs[coefs.len() - 1]);
-                    let r = bracketed(
-                        |r| {
-                            let g = cell.eval_grad(t, r);
-                            (g[0], g[2])
-                        },
-                        p.r0,
-                        p.r1,
-                        s0,
-                        x0,
-                        noise,
-                    );
-                    End {
-                        p: [t, r],
-                        edge: e,
-                        line: t,
-                        unc: err / cell.eval_grad(t, r)[2].abs(),
-                    }
-                }
+            // Edges 0 and 2 run along t at a fixed r, edges 1 and 3 along r at a fixed t; the
+            // crossing is found by a bracketed solve in the running variable.
+            let along_t = e == 0 || e == 2;
+            let (fixed, lo, hi) = match e {
+                0 => (p.r0, p.t0, p.t1),
+                2 => (p.r1, p.t0, p.t1),
+                3 => (p.t0, p.r0, p.r1),
+                _ => (p.t1, p.r0, p.r1),
+            };
+            let at = |x: f64| if along_t { [x, fixed] } else { [fixed, x] };
+            // Index of the partial derivative in the running variable in `eval_grad`.
+            let k = if along_t { 1 } else { 2 };
+            let x0 = secant(lo, hi, coefs[0], coefs[coefs.len() - 1]);
+            let x = bracketed(
+                |x| {
+                    let [t, r] = at(x);
+                    let g = cell.eval_grad(t, r);
+                    (g[0], g[k])
+                },
+                lo,
+                hi,
+                s0,
+                x0,
+                noise,
+            );
+            let [t, r] = at(x);
+            let end = End {
+                p: [t, r],
+                edge: e,
+                line: fixed,
+                unc: err / cell.eval_grad(t, r)[k].abs(),
             };
             ends.push(end);
         }

@@ -60,7 +60,8 @@ fn frame_cs(u: f64) -> ([f64; 2], [f64; 3], usize, f64, f64) {
     } else {
         u.rem_euclid(4.0)
     };
-    let q = (u.floor() as usize).min(3);
+    // u ≥ 0 here: truncation is the floor.
+    let q = (u as usize).min(3);
     let s = u - q as f64;
     let [p0, p1, p2] = quarter(q);
     // Quadratic Bernstein basis and derivatives (the third derivative vanishes).

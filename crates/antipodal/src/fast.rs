@@ -66,14 +66,26 @@ impl Pw {
     /// are zero. De Casteljau: the j-th derivative is `p!/(p−j)! Δʲ` of the points of level
     /// `p − j`, over `hʲ`.
     pub(crate) fn eval_derivs(&self, u: f64, k: usize, out: &mut [f64]) {
+        if self.dim == 3 && self.deg <= 7 && k <= 3 {
+            return self.eval_derivs3(u, k, out);
+        }
         let (p, d) = (self.deg, self.dim);
         let i = self.piece_at(u);
         let (a, b) = (self.breaks[i], self.breaks[i + 1]);
         let h = b - a;
         let s =
             ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
-        let mut w = Buf::new();
-        w.extend_from_slice(self.piece(i));
+        // Scratch on the stack (degree ≤ 15 in dimension 3), else on the heap.
+        let src = self.piece(i);
+        let mut stack = [0.0f64; 48];
+        let mut heap = Vec::new();
+        let w: &mut [f64] = if src.len() <= stack.len() {
+            stack[..src.len()].copy_from_slice(src);
+            &mut stack[..src.len()]
+        } else {
+            heap.extend_from_slice(src);
+            &mut heap
+        };
         for v in out[..(k + 1) * d].iter_mut() {
             *v = 0.0;
         }
@@ -85,14 +97,14 @@ impl Pw {
                 lv[pts - 1][..pts * d].copy_from_slice(&w[..pts * d]);
             }
         };
-        keep(&mut lv, &w, p + 1);
+        keep(&mut lv, w, p + 1);
         for level in 1..=p {
             for j in 0..=p - level {
                 for c in 0..d {
                     w[j * d + c] += s * (w[(j + 1) * d + c] - w[j * d + c]);
                 }
             }
-            keep(&mut lv, &w, p - level + 1);
+            keep(&mut lv, w, p - level + 1);
         }
         out[..d].copy_from_slice(&lv[0][..d]);
         let mut fact = 1.0;
@@ -110,6 +122,60 @@ impl Pw {
                 }
                 out[j * d + c] = fact * acc;
             }
+        }
+    }
+
+    /// [`Pw::eval_derivs`] for points of dimension 3 and degree ≤ 7 (homogeneous planar
+    /// curves), with fixed-size arrays.
+    fn eval_derivs3(&self, u: f64, k: usize, out: &mut [f64]) {
+        let p = self.deg;
+        let i = self.piece_at(u);
+        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+        let h = b - a;
+        let s =
+            ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
+        let src = self.piece(i);
+        let mut w = [[0.0f64; 3]; 8];
+        for (j, pt) in w.iter_mut().enumerate().take(p + 1) {
+            *pt = [src[3 * j], src[3 * j + 1], src[3 * j + 2]];
+        }
+        // lv[m] holds the m + 1 points of level p − m (m ≤ 3).
+        let mut lv = [[[0.0f64; 3]; 4]; 4];
+        let top = k.min(p);
+        if p <= top {
+            lv[p][..=p].copy_from_slice(&w[..=p]);
+        }
+        for level in 1..=p {
+            let left = p - level;
+            for j in 0..=left {
+                let next = w[j + 1];
+                for (x, y) in w[j].iter_mut().zip(next) {
+                    *x += s * (y - *x);
+                }
+            }
+            if left <= top {
+                lv[left][..=left].copy_from_slice(&w[..=left]);
+            }
+        }
+        out[..3].copy_from_slice(&lv[0][0]);
+        let pf = p as f64;
+        for c in 0..3 {
+            if top >= 1 {
+                let q = &lv[1];
+                out[3 + c] = pf / h * (q[1][c] - q[0][c]);
+            }
+            if top >= 2 {
+                let q = &lv[2];
+                out[6 + c] = pf * (pf - 1.0) / (h * h) * (q[2][c] - 2.0 * q[1][c] + q[0][c]);
+            }
+            if top >= 3 {
+                let q = &lv[3];
+                out[9 + c] = pf * (pf - 1.0) * (pf - 2.0) / (h * h * h)
+                    * (q[3][c] - 3.0 * q[2][c] + 3.0 * q[1][c] - q[0][c]);
+            }
+        }
+        for v in out[3 * (top + 1)..3 * (k + 1)].iter_mut() {
+            *v = 0.0;
         }
     }
 
@@ -251,6 +317,30 @@ mod tests {
                     (a[j] - b[j]).abs() <= 1e-11 * (1.0 + a[j].abs()),
                     "{u} {j} {a:?} {b:?}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn derivatives_match_bspline_in_dimension_3() {
+        for p in 1..=5usize {
+            let n = p + 4;
+            let coefs: Vec<f64> = (0..3 * n)
+                .map(|i| ((i as f64) * 0.77).cos() + 2.0)
+                .collect();
+            let f = BSpline::clamped_uniform(p, 3, coefs).unwrap();
+            let pw = Pw::new(&f);
+            for i in 0..=40 {
+                let u = i as f64 / 40.0;
+                let (mut a, mut b) = ([0.0; 12], [0.0; 12]);
+                f.eval_derivs(u, 3, &mut a);
+                pw.eval_derivs(u, 3, &mut b);
+                for j in 0..12 {
+                    assert!(
+                        (a[j] - b[j]).abs() <= 1e-9 * (1.0 + a[j].abs()),
+                        "{p} {u} {j}"
+                    );
+                }
             }
         }
     }

@@ -34,7 +34,14 @@ impl V2 {
     }
     /// Euclidean length.
     pub fn norm(self) -> f64 {
-        self.x.hypot(self.y)
+        // √(x² + y²) is within an ulp or two of hypot and several times faster; hypot only
+        // where the squares would overflow or underflow.
+        let n2 = self.x * self.x + self.y * self.y;
+        if n2.is_finite() && n2 >= f64::MIN_POSITIVE {
+            n2.sqrt()
+        } else {
+            self.x.hypot(self.y)
+        }
     }
     /// Rotated by +90°: the left normal direction.
     pub fn perp(self) -> V2 {

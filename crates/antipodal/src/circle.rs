@@ -48,13 +48,13 @@ pub(crate) fn angle(u: f64) -> [f64; 4] {
 
 /// The angle `φ(u)`, its cosine and sine, and its first three derivatives.
 fn frame(u: f64) -> (f64, [f64; 2], [f64; 3]) {
-    let (cs, d, q, x, y) = frame_cs(u);
+    let (cs, d, q, x, y) = frame_cs(u, 3);
     let phi = q as f64 * (PI / 2.0) + local(q, x, y);
     (if phi >= TAU { 0.0 } else { phi }, cs, d)
 }
 
 /// `(cos φ, sin φ)`, the derivatives of φ, and the quarter and homogeneous point (no atan2).
-fn frame_cs(u: f64) -> ([f64; 2], [f64; 3], usize, f64, f64) {
+fn frame_cs(u: f64, order: usize) -> ([f64; 2], [f64; 3], usize, f64, f64) {
     let u = if (0.0..4.0).contains(&u) {
         u
     } else {
@@ -80,9 +80,14 @@ fn frame_cs(u: f64) -> ([f64; 2], [f64; 3], usize, f64, f64) {
     let m1 = 2.0 * (x * x1 + y * y1);
     let m2 = 2.0 * (x1 * x1 + x * x2 + y1 * y1 + y * y2);
     let d1 = n / m;
-    let g = n1 * m - n * m1;
-    let d2 = g / (m * m);
-    let d3 = (n2 * m - n * m2) / (m * m) - 2.0 * m1 * g / (m * m * m);
+    let (mut d2, mut d3) = (0.0, 0.0);
+    if order >= 2 {
+        let g = n1 * m - n * m1;
+        d2 = g / (m * m);
+        if order >= 3 {
+            d3 = (n2 * m - n * m2) / (m * m) - 2.0 * m1 * g / (m * m * m);
+        }
+    }
     let inv = 1.0 / m.sqrt();
     ([x * inv, y * inv], [d1, d2, d3], q, x, y)
 }
@@ -114,9 +119,9 @@ impl PlaneCurve for OnCircle<'_> {
         let (a1, a2, a3);
         if let Some(shape) = self.forms.shape {
             // The shape's own formula from (cos φ, sin φ): no angle, no sine or cosine.
-            let (cs, d, ..) = frame_cs(u);
+            let (cs, d, ..) = frame_cs(u, order);
             [a1, a2, a3] = d;
-            j = shape.jet(cs[0], cs[1]);
+            j = shape.jet(cs[0], cs[1], order);
         } else {
             let (phi, _, d) = frame(u);
             [a1, a2, a3] = d;

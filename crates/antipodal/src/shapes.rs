@@ -24,19 +24,30 @@ fn polar_jet(phi: f64, r: [f64; 4]) -> Jet {
 
 /// [`polar_jet`] from the sine and cosine of φ.
 fn polar_jet_cs(s: f64, c: f64, r: [f64; 4]) -> Jet {
+    polar_jet_to(s, c, r, 3)
+}
+
+/// [`polar_jet_cs`] up to derivative `order` (higher ones left zero).
+fn polar_jet_to(s: f64, c: f64, r: [f64; 4], order: usize) -> Jet {
     let [r0, r1, r2, r3] = r;
-    Jet {
+    let mut j = Jet {
         p: V2::new(r0 * c, r0 * s),
         d1: V2::new(r1 * c - r0 * s, r1 * s + r0 * c),
-        d2: V2::new(
+        ..Jet::default()
+    };
+    if order >= 2 {
+        j.d2 = V2::new(
             r2 * c - 2.0 * r1 * s - r0 * c,
             r2 * s + 2.0 * r1 * c - r0 * s,
-        ),
-        d3: V2::new(
+        );
+    }
+    if order >= 3 {
+        j.d3 = V2::new(
             r3 * c - 3.0 * r2 * s - 3.0 * r1 * c + r0 * s,
             r3 * s + 3.0 * r2 * c - 3.0 * r1 * s - r0 * c,
-        ),
+        );
     }
+    j
 }
 
 /// The shapes with a rational-circle form, as formulas in `(cos φ, sin φ)` (jets in φ).
@@ -48,18 +59,20 @@ pub(crate) enum CircleShape {
 }
 
 impl CircleShape {
-    /// Point and derivatives in φ at the angle with cosine `c` and sine `s`.
-    pub(crate) fn jet(self, c: f64, s: f64) -> Jet {
+    /// Point and derivatives in φ up to `order` at the angle with cosine `c` and sine `s`.
+    pub(crate) fn jet(self, c: f64, s: f64, order: usize) -> Jet {
         match self {
             CircleShape::Ellipse { a, b, center } => ellipse_jet(a, b, center, s, c),
-            CircleShape::Limacon { a, b } => polar_jet_cs(s, c, [a + b * c, -b * s, -b * c, b * s]),
+            CircleShape::Limacon { a, b } => {
+                polar_jet_to(s, c, [a + b * c, -b * s, -b * c, b * s], order)
+            }
             CircleShape::Convexities { p, eps, m } => {
                 // cos mφ + i sin mφ = (c + i s)ᵐ.
                 let (mut cm, mut sm) = (1.0, 0.0);
                 for _ in 0..m {
                     (cm, sm) = (cm * c - sm * s, cm * s + sm * c);
                 }
-                convexities_jet(p, eps, m, s, c, sm, cm)
+                convexities_jet(p, eps, m, s, c, sm, cm, order)
             }
         }
     }
@@ -75,7 +88,8 @@ fn ellipse_jet(a: f64, b: f64, center: V2, s: f64, c: f64) -> Jet {
 }
 
 /// `r(φ) = p / (1 + ε cos mφ)` from the sines and cosines of φ and mφ.
-fn convexities_jet(p: f64, e: f64, m: u32, s: f64, c: f64, sm: f64, cm: f64) -> Jet {
+#[allow(clippy::too_many_arguments)] // the shape's three parameters and two angles
+fn convexities_jet(p: f64, e: f64, m: u32, s: f64, c: f64, sm: f64, cm: f64, order: usize) -> Jet {
     let m = m as f64;
     let h = 1.0 + e * cm;
     let h1 = -e * m * sm;
@@ -91,7 +105,7 @@ fn convexities_jet(p: f64, e: f64, m: u32, s: f64, c: f64, sm: f64, cm: f64) -> 
     let r1 = -p * h1 * i2;
     let r2 = p * (2.0 * h1 * h1 * i3 - h2 * i2);
     let r3 = p * (-6.0 * h1 * h1 * h1 * i4 + 6.0 * h1 * h2 * i3 - h3 * i2);
-    polar_jet_cs(s, c, [r, r1, r2, r3])
+    polar_jet_to(s, c, [r, r1, r2, r3], order)
 }
 
 /// Circle `(cx + r cos φ, cy + r sin φ)`.
@@ -346,6 +360,6 @@ impl PlaneCurve for Convexities {
     fn jet(&self, u: f64) -> Jet {
         let (sm, cm) = (self.m as f64 * u).sin_cos();
         let (s, c) = u.sin_cos();
-        convexities_jet(self.p, self.eps, self.m, s, c, sm, cm)
+        convexities_jet(self.p, self.eps, self.m, s, c, sm, cm, 3)
     }
 }

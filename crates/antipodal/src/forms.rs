@@ -32,6 +32,8 @@ pub struct SymbolicForms {
     roots: OnceLock<(RootOptions, bool, Vec<Root>)>,
     /// For the shapes of this crate on their circle form: the formula in `(cos φ, sin φ)`.
     pub(crate) shape: Option<CircleShape>,
+    /// The forms of the curve run backwards (a clockwise curve is viewed reversed).
+    reversed: OnceLock<Option<Box<SymbolicForms>>>,
 }
 
 impl SymbolicForms {
@@ -51,7 +53,18 @@ impl SymbolicForms {
             curvature,
             roots: OnceLock::new(),
             shape: None,
+            reversed: OnceLock::new(),
         })
+    }
+
+    /// The forms of the curve run backwards over the same domain, built on first use.
+    pub(crate) fn reversed(&self) -> Option<&SymbolicForms> {
+        self.reversed
+            .get_or_init(|| {
+                let r = crate::view::reverse(&self.curve).ok()?;
+                SymbolicForms::new(r).ok().map(Box::new)
+            })
+            .as_deref()
     }
 
     /// Certified roots of the curvature numerator on `[a, b]` (periodic when `periodic`),

@@ -17,11 +17,6 @@ pub(crate) struct Pair<'a> {
     pub(crate) tb: f64,
     pub(crate) s_convex: bool,
     pub(crate) t_convex: bool,
-    /// A found pair lies just beyond the `a` end (the pair was cut off there): a march that
-    /// converges towards that end converges to it.
-    pub(crate) near_a: bool,
-    /// The same at the `b` end.
-    pub(crate) near_b: bool,
 }
 
 impl<'a> Pair<'a> {
@@ -31,10 +26,10 @@ impl<'a> Pair<'a> {
 
     /// The same pair with the roles of `S` and `T` exchanged.
     pub(crate) fn swapped(&self) -> Pair<'a> {
-        let (sa, sb, ta, tb, near_a, near_b) = if self.ta <= self.tb {
-            (self.ta, self.tb, self.sa, self.sb, self.near_a, self.near_b)
+        let (sa, sb, ta, tb) = if self.ta <= self.tb {
+            (self.ta, self.tb, self.sa, self.sb)
         } else {
-            (self.tb, self.ta, self.sb, self.sa, self.near_b, self.near_a)
+            (self.tb, self.ta, self.sb, self.sa)
         };
         Pair {
             vs: self.vt,
@@ -45,8 +40,6 @@ impl<'a> Pair<'a> {
             tb,
             s_convex: self.t_convex,
             t_convex: self.s_convex,
-            near_a,
-            near_b,
         }
     }
 
@@ -57,8 +50,6 @@ impl<'a> Pair<'a> {
             ta: t0,
             sb: s1,
             tb: t1,
-            near_a: false,
-            near_b: false,
             ..*self
         }
     }
@@ -168,8 +159,6 @@ pub(crate) fn opposite_pair<'a>(
         tb,
         s_convex: p.convex,
         t_convex: q.convex,
-        near_a: false,
-        near_b: false,
     })
 }
 

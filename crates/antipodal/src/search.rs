@@ -116,15 +116,9 @@ fn remainders<'a>(
                     (se, te)
                 };
                 out.push(if dir < 0.0 {
-                    Pair {
-                        near_b: true,
-                        ..p.sub(p.sa, p.ta, se, te)
-                    }
+                    p.sub(p.sa, p.ta, se, te)
                 } else {
-                    Pair {
-                        near_a: true,
-                        ..p.sub(se, te, p.sb, p.tb)
-                    }
+                    p.sub(se, te, p.sb, p.tb)
                 });
                 break;
             }
@@ -321,14 +315,11 @@ enum Early {
 /// on.
 fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool, i: usize) -> Early {
     let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
-    // Marching towards a pair just cut off beyond the far end: the limit is that pair unless
-    // another one comes first.
-    let toward_known = if up { p.near_b } else { p.near_a };
-    // Linear convergence with ratio q puts the limit about step·q/(1−q) ahead.
+    // Linear convergence with ratio q puts the limit about step·q/(1−q) ahead. (Newton is
+    // not tried before the march shows its convergence: from a first iterate it may jump to
+    // the pair just cut off beyond the far end and over one in between.)
     let q = step / last;
-    let ahead_by = if toward_known {
-        (end_s - s).abs()
-    } else if q < 0.9 && step <= 1e-2 * p.vs.period {
+    let ahead_by = if q < 0.9 && step <= 1e-2 * p.vs.period {
         step * q / (1.0 - q)
     } else if q < 1.0 && i >= 8 && i.is_power_of_two() {
         // A march converging with a ratio near 1 (a nearly degenerate pair) would take

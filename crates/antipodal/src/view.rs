@@ -68,8 +68,10 @@ impl<'a> View<'a> {
         let closed = curve.is_closed();
         let cert = match (certify, curve.rational()) {
             (true, Some(r)) => {
-                let forms = match (rev, curve.symbolic_forms()) {
-                    (false, Some(f)) => Forms::Kept(f),
+                let kept = curve.symbolic_forms();
+                let forms = match (rev, kept, kept.and_then(|f| f.reversed())) {
+                    (false, Some(f), _) => Forms::Kept(f),
+                    (true, _, Some(f)) => Forms::Kept(f),
                     _ => {
                         let c = if rev { reverse(r)? } else { r.clone() };
                         Forms::Built(Box::new(SymbolicForms::new(c)?))
@@ -363,7 +365,7 @@ impl View<'_> {
 }
 
 /// The same rational curve run backwards over the same domain.
-fn reverse(r: &Rational) -> crate::Result<Rational> {
+pub(crate) fn reverse(r: &Rational) -> crate::Result<Rational> {
     let h = r.homogeneous();
     let (a, b) = h.domain();
     let knots: Vec<f64> = h.knots().iter().rev().map(|k| a + b - k).collect();

@@ -11,6 +11,7 @@ use crate::geom::V2;
 use crate::view::{newton_bracketed, Count, View};
 use bspline::roots::{Root, RootKind};
 use bspline::BSpline;
+use smallvec::SmallVec;
 
 /// Which root to take when several qualify.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -202,12 +203,76 @@ impl View<'_> {
             bspline::symbolic::offset_dot(cc, c.arr(), v.arr()).ok()
         };
         let accept = |u: f64| (self.point(u) - c).dot(dir) > 0.0;
+        if self.cert.is_some() {
+            if let Some(r) =
+                self.ray_on_monotone(lo.min(hi), lo.max(hi), c, v, &f, &accept, prefer, hint)
+            {
+                return r;
+            }
+        }
         // (X − c w) · v = vₓ X + v_y Y − (c · v) w.
         let fast = self
             .cert
             .as_ref()
             .map(|cc| (&cc.hom_pw, [v.x, v.y, -c.dot(v)]));
         self.solve(lo, hi, f, fast, sym, accept, prefer, hint)
+    }
+}
+
+impl View<'_> {
+    /// point-on-ray decided by signs of the curve itself on a monotone segment (every caller
+    /// asks on one): `f = (C − c) · v` has the derivative `C′ · v`, which vanishes at most
+    /// once there (the tangent meets each direction once); that point (found by
+    /// point-with-normal, itself decided by end signs) splits the segment into at most two
+    /// stretches on which `f` is monotone, and the trusted signs of `f` at their ends decide
+    /// each. `None` when some sign is within its rounding bound (the caller then decides).
+    #[allow(clippy::too_many_arguments)]
+    fn ray_on_monotone(
+        &self,
+        lo: f64,
+        hi: f64,
+        c: V2,
+        v: V2,
+        f: &impl Fn(f64) -> (f64, f64),
+        accept: &impl Fn(f64) -> bool,
+        prefer: Prefer,
+        hint: f64,
+    ) -> Option<Option<f64>> {
+        let eps = 64.0 * f64::EPSILON;
+        let (jl, jh) = (self.jet_to(lo, 1), self.jet_to(hi, 1));
+        let (gl, gh) = (jl.d1.dot(v), jh.d1.dot(v));
+        if gl.abs() <= eps * jl.d1.norm() || gh.abs() <= eps * jh.d1.norm() {
+            return None;
+        }
+        let mut cuts: SmallVec<[(f64, V2); 3]> = SmallVec::new();
+        cuts.push((lo, jl.p));
+        if (gl < 0.0) != (gh < 0.0) {
+            let g = |u: f64| {
+                let j = self.jet_to(u, 2);
+                (j.d1.dot(v), j.d2.dot(v))
+            };
+            let ue = newton_bracketed(g, lo, hi, gl, self.tol, f64::NAN);
+            cuts.push((ue, self.point(ue)));
+        }
+        cuts.push((hi, jh.p));
+        let val = |p: V2| (p - c).dot(v);
+        let trusted = |p: V2| val(p).abs() > eps * (p.norm() + c.norm());
+        if !cuts.iter().all(|&(_, p)| trusted(p)) {
+            return None;
+        }
+        let n = cuts.len() - 1;
+        for k in 0..n {
+            let k = if prefer == Prefer::Low { k } else { n - 1 - k };
+            let ((x0, p0), (x1, p1)) = (cuts[k], cuts[k + 1]);
+            let (f0, f1) = (val(p0), val(p1));
+            if (f0 < 0.0) != (f1 < 0.0) {
+                let u = newton_bracketed(f, x0, x1, f0, self.tol, hint);
+                if accept(u) {
+                    return Some(Some(u));
+                }
+            }
+        }
+        Some(None)
     }
 }
 

@@ -109,9 +109,20 @@ pub(crate) fn basis_derivs(
     let w = p + 1;
     ders.clear();
     ders.resize((nd + 1) * w, 0.0);
-    let mut ndu: Scratch = SmallVec::from_elem(0.0, w * w);
-    let mut left: Scratch = SmallVec::from_elem(0.0, w);
-    let mut right: Scratch = SmallVec::from_elem(0.0, w);
+    // One work buffer for the triangle `ndu`, `left`, `right` and the two rows `a`: on the
+    // stack up to degree 7 (evaluation is a hot path; no allocation, no large moves).
+    let need = w * w + 4 * w;
+    let mut stack = [0.0f64; 96];
+    let mut heap = Vec::new();
+    let work: &mut [f64] = if need <= stack.len() {
+        &mut stack[..need]
+    } else {
+        heap.resize(need, 0.0);
+        &mut heap
+    };
+    let (ndu, rest) = work.split_at_mut(w * w);
+    let (left, rest) = rest.split_at_mut(w);
+    let (right, a) = rest.split_at_mut(w);
     ndu[0] = 1.0;
     for j in 1..=p {
         left[j] = u - knots[span + 1 - j];
@@ -132,7 +143,6 @@ pub(crate) fn basis_derivs(
     if nd == 0 {
         return;
     }
-    let mut a: Scratch = SmallVec::from_elem(0.0, 2 * w);
     for r in 0..=p {
         let (mut s1, mut s2) = (0usize, 1usize);
         a[0] = 1.0;

@@ -7,7 +7,7 @@ use crate::dissect::{Piece, Tracks, Zeros};
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::geom::{wrap_pi, V2};
-use crate::pairs::{opposite_pair, Pair};
+use crate::pairs::{negligible, opposite_pair, Pair};
 use crate::search::{antipodal_points, Budget, THETA_NOISE};
 use crate::tangent;
 use crate::types::{
@@ -229,7 +229,7 @@ fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
     let mut out = Vec::new();
     for w in cuts.windows(2) {
         let ((s0, t0), (s1, t1)) = (w[0], w[1]);
-        if s1 - s0 <= p.vs.tol {
+        if negligible(p.vs, s0, s1) {
             continue;
         }
         let sm = 0.5 * (s0 + s1);

@@ -2,6 +2,7 @@
 
 use crate::dissect::Piece;
 use crate::geom::V2;
+use crate::search::THETA_NOISE;
 use crate::view::View;
 use std::f64::consts::{PI, TAU};
 
@@ -94,6 +95,22 @@ impl<'a> Pair<'a> {
     }
 }
 
+/// A stretch `[s0, s1]` of a monotone segment holds nothing to search: it is empty, or both
+/// narrower than the parameter tolerance and turning the normal by no more than the noise of
+/// the antipodal angle. Narrowness alone does not do: where the parametrisation is very
+/// uneven (a slender ellipse on its rational-circle form) the normal turns by a finite angle
+/// within the parameter tolerance.
+pub(crate) fn negligible(v: &View, s0: f64, s1: f64) -> bool {
+    if s1 <= s0 {
+        return true;
+    }
+    if s1 - s0 > v.tol {
+        return false;
+    }
+    let (n0, n1) = (v.normal(s0), v.normal(s1));
+    n0.cross(n1).atan2(n0.dot(n1)).abs() <= THETA_NOISE
+}
+
 /// Intersects the normal cone of `p` with the outward-normal cone of `q` and returns the pair of
 /// sub-segments with opposite normals, if the cones overlap.
 pub(crate) fn opposite_pair<'a>(
@@ -147,7 +164,17 @@ pub(crate) fn opposite_pair<'a>(
     } else {
         (s1, t1, s0, t0)
     };
-    if sb - sa <= vs.tol {
+    // The cones overlap by more than rounding (above), so the pair is dropped only when the
+    // normals do not turn across it either: a stretch narrower than the parameter tolerance
+    // may still turn the normal by a finite angle (an ellipse of aspect 1e12 turns it by π
+    // within 1e-12 of its rational parameter) and hold a pair.
+    if negligible(vs, sa, sb) {
+        if sb <= sa && hi - lo > 2.0 * SNAP {
+            // Cones overlapping by more than the snapping to one end, on a stretch rounding
+            // collapsed to a point: the normal jumps within one unit of the parameter, beyond
+            // what double precision resolves.
+            vs.uncertify();
+        }
         return None;
     }
     Some(Pair {

@@ -1,7 +1,7 @@
 //! Antipodal-Points (Jia Table 1): Bisect (§4.1) and March (§4.2.1, §4.2.2) calling each other
 //! on a pair satisfying conditions (i)–(v).
 
-use crate::pairs::{polish, Pair};
+use crate::pairs::{negligible, polish, Pair};
 use crate::prims::Prefer;
 
 /// |sin θ| below this is numerically zero (the antipodal angle of a found pair).
@@ -26,7 +26,7 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
             return;
         }
         budget.sections -= 1;
-        if p.sb - p.sa <= p.vs.tol {
+        if negligible(p.vs, p.sa, p.sb) {
             continue;
         }
         let ta = p.sin_theta(p.sa, p.ta);
@@ -160,7 +160,10 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
     let mut f1 = p.sin_theta(s1, t1);
     let mut side = 0i8;
     for i in 0..300 {
-        if (s1 - s0).abs() <= p.vs.tol {
+        // Down to the parameter tolerance, and on until the normal no longer turns across
+        // the bracket (a stretch narrower than the tolerance may still turn it by a finite
+        // angle).
+        if negligible(p.vs, s0.min(s1), s0.max(s1)) {
             break;
         }
         // Illinois step, with a plain halving every few steps to bound the worst case.
@@ -171,6 +174,10 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
         };
         if !(sm > s0.min(s1) && sm < s0.max(s1)) {
             sm = 0.5 * (s0 + s1);
+            if !(sm > s0.min(s1) && sm < s0.max(s1)) {
+                // Neighbouring floats: the bracket cannot shrink further.
+                break;
+            }
         }
         let tm = p.opposite_within(sm, t0, t1);
         let fm = p.sin_theta(sm, tm);

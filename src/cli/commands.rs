@@ -158,6 +158,7 @@ pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failu
         | E::Cusp { .. }
         | E::Corner { .. }
         | E::SelfIntersecting { .. }
+        | E::Winding { .. }
         | E::InvalidShape { .. } => match blame(curves) {
             Some(culprit) => Failure::Input(CurveFileError {
                 file: culprit.file.clone(),

@@ -392,10 +392,7 @@ impl View<'_> {
     pub(crate) fn check_simple(&self, tr: &Tracks) -> Result<()> {
         let turn = tr.psi[tr.psi.len() - 1] - tr.psi[0];
         if (turn.abs() - TAU).abs() > 0.5 {
-            return Err(Error::SelfIntersecting {
-                s: self.a,
-                t: self.a,
-            });
+            return Err(Error::Winding { turns: turn / TAU });
         }
         // Densify: four chords per track step keep the polygon close to the curve.
         let mut us = Vec::with_capacity(4 * tr.u.len());

@@ -44,13 +44,20 @@ pub enum Error {
         /// Angle between the two one-sided tangents.
         angle: f64,
     },
-    /// The closed curve crosses itself (or its turning number is not ±1).
+    /// The closed curve crosses itself.
     #[error("the curve is not simple: it crosses itself near u = {s} and u = {t}")]
     SelfIntersecting {
         /// One parameter near the crossing.
         s: f64,
         /// The other.
         t: f64,
+    },
+    /// The tangent of the closed curve does not turn exactly once around over one period, so
+    /// the curve crosses itself (a loop, or a curve wound more than once).
+    #[error("the curve is not simple: its tangent turns {turns:.1} times around over one period (once for a simple closed curve)")]
+    Winding {
+        /// Total turning of the tangent, in whole turns (2π).
+        turns: f64,
     },
 }
 

@@ -54,7 +54,7 @@ fn run(seed: u64, cases: usize, rmin: f64, min_valid: usize) {
         let c = SplineCurve::periodic(deg, &pts, w.as_deref()).unwrap();
         let r = match antipodal(&c, &Options::default()) {
             Ok(r) => r,
-            Err(Error::SelfIntersecting { .. }) | Err(Error::Cusp { .. }) => {
+            Err(Error::SelfIntersecting { .. } | Error::Winding { .. } | Error::Cusp { .. }) => {
                 skipped += 1;
                 continue;
             }

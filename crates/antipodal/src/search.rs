@@ -78,6 +78,15 @@ struct Found {
 /// below `s*`). ε starts at 1e-6 of the section (the escape from `s*` then takes fewer march
 /// steps) and comes closer whenever θ shows the wrong sign there (another pair within ε),
 /// down to the parameter tolerance; it grows while θ is within rounding of zero.
+///
+/// The expected signs hold for a pair marched to, but not always for one bisected to: a
+/// bracket with three pairs inside may end on the middle one (Newton lands there), whose θ
+/// crosses zero the other way. A wrong sign that persists down to where θ is within rounding
+/// (or down to the tolerance) is then the side's own sign: the cut is made at the closest ε
+/// that shows it, and the search of the remainder — a sign change towards the section's end —
+/// finds the pairs beyond. (Growing ε out of the rounding and shrinking it at the wrong sign
+/// again used to cycle until the iterations ran out and drop both remainders.) A remainder
+/// that still cannot be cut uncertifies the result.
 fn remainders<'a>(
     p: &Pair<'a>,
     s: f64,
@@ -91,7 +100,17 @@ fn remainders<'a>(
         if !want {
             continue;
         }
+        let cut_at = |se: f64, te: f64| {
+            if dir < 0.0 {
+                p.sub(p.sa, p.ta, se, te)
+            } else {
+                p.sub(se, te, p.sb, p.tb)
+            }
+        };
         let mut eps = (1e-6 * (p.sb - p.sa)).max(min_eps);
+        // The closest cut seen with the wrong sign: (ε, s, t).
+        let mut wrong: Option<(f64, f64, f64)> = None;
+        let mut decided = false;
         for _ in 0..64 {
             let se = s + dir * eps;
             if se <= p.sa || se >= p.sb {
@@ -99,6 +118,8 @@ fn remainders<'a>(
                     eps = (eps / 8.0).max(min_eps);
                     continue;
                 }
+                // Nothing left beyond the tolerance.
+                decided = true;
                 break;
             }
             let Some(te) = p.opposite(se) else {
@@ -107,22 +128,33 @@ fn remainders<'a>(
             let th = p.sin_theta(se, te);
             if th.abs() <= THETA_NOISE {
                 eps *= 2.0;
+                if let Some((w, sw, tw)) = wrong {
+                    if eps >= w {
+                        // Within rounding below the closest wrong sign: that sign is the
+                        // side's own.
+                        out.push(cut_at(sw, tw));
+                        decided = true;
+                        break;
+                    }
+                }
                 continue;
             }
-            if (th < 0.0) == want_neg || eps <= min_eps {
-                let (se, te) = if (th < 0.0) == want_neg {
-                    widen(p, s, dir, eps, th, se, te)
-                } else {
-                    (se, te)
-                };
-                out.push(if dir < 0.0 {
-                    p.sub(p.sa, p.ta, se, te)
-                } else {
-                    p.sub(se, te, p.sb, p.tb)
-                });
+            if (th < 0.0) == want_neg {
+                let (se, te) = widen(p, s, dir, eps, th, se, te);
+                out.push(cut_at(se, te));
+                decided = true;
                 break;
             }
+            if eps <= min_eps {
+                out.push(cut_at(se, te));
+                decided = true;
+                break;
+            }
+            wrong = Some((eps, se, te));
             eps = (eps / 8.0).max(min_eps);
+        }
+        if !decided {
+            p.vs.uncertify();
         }
     }
     out

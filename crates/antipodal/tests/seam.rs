@@ -2,7 +2,9 @@
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use antipodal::{antipodal, Options, PlaneCurve, SplineCurve};
+mod common;
+
+use antipodal::{antipodal, Options, PlaneCurve, SplineCurve, V2};
 
 /// A periodic cubic on an elliptic control polygon, symmetric about the x axis with `C(0)` on
 /// the axis: antipodal pairs at `0 ↔ n/2` and `n/4 ↔ 3n/4`.
@@ -43,5 +45,50 @@ fn seam_pair_reported_once() {
         assert!(p.s.abs() < 1e-9 && (p.t - half).abs() < 1e-9, "{p:?}");
         let (a, b) = c.domain();
         assert!(r.pairs.iter().all(|p| p.s >= a && p.t < b));
+    }
+}
+
+/// Proptest seed of `seam_orientation_and_clamping_invariance`: a periodic quartic on seven
+/// control points (clockwise). Every oracle pair must be found, on the curve itself, with its
+/// seam moved by a cyclic shift of the control points, and on the reversed curve.
+#[test]
+fn quartic_pairs_independent_of_seam_and_orientation() {
+    let pts = [
+        [2.285846385795749, -4.044134590620461],
+        [-0.6062691950330958, -3.3586895426786674],
+        [-5.667586920972362, -0.9378108171442645],
+        [-3.3000538215609665, 1.5584428031297677],
+        [-1.3613392364508612, 5.280599459424067],
+        [2.120307641538984, 4.044286477232793],
+        [3.390290034163397, -0.1286843653837148],
+    ];
+    let n = pts.len();
+    let mut variants = vec![pts.to_vec()];
+    for k in 1..n {
+        variants.push((0..n).map(|i| pts[(i + k) % n]).collect());
+    }
+    variants.push(pts.iter().rev().copied().collect());
+    let oracle_pts: Vec<(V2, V2)> = {
+        let c = SplineCurve::periodic(4, &pts, None).unwrap();
+        common::antipodal_oracle(&c, 600)
+            .into_iter()
+            .map(|(s, t)| (c.jet(s).p, c.jet(t).p))
+            .collect()
+    };
+    assert_eq!(oracle_pts.len(), 6, "{oracle_pts:?}");
+    for (vi, q) in variants.iter().enumerate() {
+        let c = SplineCurve::periodic(4, q, None).unwrap();
+        let r = antipodal(&c, &Options::default()).unwrap();
+        assert!(r.certified && r.complete, "variant {vi}");
+        let found: Vec<(f64, f64)> = r.pairs.iter().map(|p| (p.s, p.t)).collect();
+        assert_eq!(r.pairs.len(), oracle_pts.len(), "variant {vi}: {found:?}");
+        for &(p, q) in &oracle_pts {
+            assert!(
+                r.pairs
+                    .iter()
+                    .any(|x| common::same_points(&c, x.s, x.t, p.arr(), q.arr(), 1e-8)),
+                "variant {vi}: missed {p:?} ↔ {q:?}; found {found:?}"
+            );
+        }
     }
 }

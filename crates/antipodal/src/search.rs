@@ -41,14 +41,36 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
                 stack.extend(remainders(&p, found.s, true, true, ta < 0.0));
             }
         } else {
-            let found = match (p.s_convex, p.t_convex) {
+            let march = match (p.s_convex, p.t_convex) {
                 (true, true) => march_convex(&p, ta),
-                (false, false) => None,
+                (false, false) => March::Nothing,
                 (true, false) => march_mixed(&p),
-                (false, true) => march_mixed(&p.swapped()).map(|(s, t, up)| {
+                (false, true) => match march_mixed(&p.swapped()) {
                     // Back to the original roles; "up" is in t, so flip it when t runs down.
-                    (t, s, if p.ta <= p.tb { up } else { !up })
-                }),
+                    March::Found(s, t, up) => {
+                        March::Found(t, s, if p.ta <= p.tb { up } else { !up })
+                    }
+                    March::Crawled(s, t, up) => {
+                        March::Crawled(t, s, if p.ta <= p.tb { up } else { !up })
+                    }
+                    March::Nothing => March::Nothing,
+                },
+            };
+            let found = match march {
+                March::Found(s, t, up) => Some((s, t, up)),
+                March::Nothing => None,
+                March::Crawled(s, t, up) => {
+                    // The marched stretch is free of pairs; the rest is settled by the width.
+                    let rest = if up {
+                        p.sub(s, t, p.sb, p.tb)
+                    } else {
+                        p.sub(p.sa, p.ta, s, t)
+                    };
+                    if !by_width(&rest, out) {
+                        LIMIT_HIT.with(|c| c.set(true));
+                    }
+                    None
+                }
             };
             if let Some((s, t, moved_up)) = found {
                 out.push((s, t));
@@ -261,8 +283,8 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
 
 /// §4.2.1, two convex segments with θ of one sign at both ends: march from `s_b` down when
 /// θ < 0 (from `s_a` up when θ > 0), each step moving `s` to the point whose normal is parallel
-/// to `r(s_i)` and `t` to its opposite point. Returns `(s*, t*, moved_up)`.
-fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
+/// to `r(s_i)` and `t` to its opposite point.
+fn march_convex(p: &Pair, theta_a: f64) -> March {
     let up = theta_a > 0.0;
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
@@ -271,7 +293,9 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
     for _ in 0..MARCH_STEPS {
         let dir = p.r(s, t).unit();
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
-        let ns = p.vs.point_with_normal_near(lo, hi, dir, s + ds * ratio)?;
+        let Some(ns) = p.vs.point_with_normal_near(lo, hi, dir, s + ds * ratio) else {
+            return March::Nothing;
+        };
         let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);
         let step = (ns - s).abs();
         ratio = (step / last_step).clamp(0.0, 3.0);
@@ -279,22 +303,21 @@ fn march_convex(p: &Pair, theta_a: f64) -> Option<(f64, f64, bool)> {
         s = ns;
         t = nt;
         if converged(p, step, last_step, s, t) {
-            return Some((s, t, up));
+            return March::Found(s, t, up);
         }
         match finish_early(p, s, t, step, last_step, up) {
-            Early::Found(f) => return Some(f),
-            Early::Nothing => return None,
+            Early::Found((s, t, up)) => return March::Found(s, t, up),
+            Early::Nothing => return March::Nothing,
             Early::Continue => {}
         }
         last_step = step;
     }
-    LIMIT_HIT.with(|c| c.set(true));
-    None
+    March::Crawled(s, t, up)
 }
 
 /// §4.2.2, `S` convex and `T` concave: march from the end whose normal ray at `t` meets `S`,
-/// each step moving `s` to where the ray of `N(t_i)` meets `S`. Returns `(s*, t*, moved_up)`.
-fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
+/// each step moving `s` to where the ray of `N(t_i)` meets `S`.
+fn march_mixed(p: &Pair) -> March {
     let (psa, psb) = (p.vs.point(p.sa), p.vs.point(p.sb));
     let ray_hits = |t: f64| {
         let jt = p.vt.jet_to(t, 1);
@@ -309,7 +332,7 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
     } else if ray_hits(p.tb) {
         false
     } else {
-        return None;
+        return March::Nothing;
     };
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
@@ -319,7 +342,9 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
         let prefer = if up { Prefer::Low } else { Prefer::High };
         let jt = p.vt.jet_to(t, 1);
         let hint = if i == 0 { f64::NAN } else { s + ds * ratio };
-        let ns = p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint)?;
+        let Some(ns) = p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint) else {
+            return March::Nothing;
+        };
         let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);
         let step = (ns - s).abs();
         ratio = (step / last_step).clamp(0.0, 3.0);
@@ -327,17 +352,96 @@ fn march_mixed(p: &Pair) -> Option<(f64, f64, bool)> {
         s = ns;
         t = nt;
         if converged(p, step, last_step, s, t) {
-            return Some((s, t, up));
+            return March::Found(s, t, up);
         }
         match finish_early(p, s, t, step, last_step, up) {
-            Early::Found(f) => return Some(f),
-            Early::Nothing => return None,
+            Early::Found((s, t, up)) => return March::Found(s, t, up),
+            Early::Nothing => return March::Nothing,
             Early::Continue => {}
         }
         last_step = step;
     }
-    LIMIT_HIT.with(|c| c.set(true));
-    None
+    March::Crawled(s, t, up)
+}
+
+/// Outcome of a march: the pair it reached (`moved_up` in `s`), no pair ahead, or its step
+/// bound used up at `(s, t)` with the stretch behind free of pairs.
+enum March {
+    Found(f64, f64, bool),
+    Nothing,
+    Crawled(f64, f64, bool),
+}
+
+/// Samples of `w''` per section in [`by_width`].
+const WIDTH_SAMPLES: usize = 256;
+
+/// Settles a section the march could not cross (the antipodal angle stays so small that its
+/// steps, which turn the normal by θ, crawl: the segments are close to arcs of one circle).
+/// With both segments parametrised by the normal angle ψ, the distance between the parallel
+/// tangent lines `w(ψ) = d` has `w′ = ±|r| sin θ` and `w″ = ρ(s) + ρ(t) − w` (signed radii of
+/// curvature). Between the zeros of `w″` the derivative `w′` is monotone: each stretch holds a
+/// pair exactly when θ changes sign across it, found by bisection. The zeros of `w″` are
+/// located by sampling (the result is no longer certified). Returns `false` when `w″` cannot
+/// be evaluated.
+fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>) -> bool {
+    p.vs.uncertify();
+    let w2 = |s: f64, t: f64| {
+        let (js, jt) = (p.vs.jet_to(s, 2), p.vt.jet_to(t, 2));
+        1.0 / js.curvature() + 1.0 / jt.curvature() - p.d(s, t)
+    };
+    let mut cuts = vec![(p.sa, p.ta)];
+    let (mut prev_s, mut prev_t) = (p.sa, p.ta);
+    let mut prev_w = w2(p.sa, p.ta);
+    if prev_w.is_nan() {
+        return false;
+    }
+    for k in 1..=WIDTH_SAMPLES {
+        let (s, t) = if k == WIDTH_SAMPLES {
+            (p.sb, p.tb)
+        } else {
+            let s = p.sa + (p.sb - p.sa) * k as f64 / WIDTH_SAMPLES as f64;
+            (s, p.opposite_near(s, prev_t, p.tb, prev_t))
+        };
+        let w = w2(s, t);
+        if w.is_nan() {
+            return false;
+        }
+        if (w < 0.0) != (prev_w < 0.0) {
+            // A zero of w″ in (prev_s, s): bisection on its sign.
+            let (mut lo, mut hi, mut tl, mut th) = (prev_s, s, prev_t, t);
+            while !negligible(p.vs, lo, hi) {
+                let m = 0.5 * (lo + hi);
+                if !(m > lo && m < hi) {
+                    break;
+                }
+                let tm = p.opposite_within(m, tl, th);
+                if (w2(m, tm) < 0.0) == (prev_w < 0.0) {
+                    (lo, tl) = (m, tm);
+                } else {
+                    (hi, th) = (m, tm);
+                }
+            }
+            cuts.push((lo, tl));
+        }
+        (prev_s, prev_t, prev_w) = (s, t, w);
+    }
+    cuts.push((p.sb, p.tb));
+    for w in cuts.windows(2) {
+        let ((s0, t0), (s1, t1)) = (w[0], w[1]);
+        if negligible(p.vs, s0, s1) {
+            continue;
+        }
+        let sub = p.sub(s0, t0, s1, t1);
+        let (a, b) = (sub.sin_theta(s0, t0), sub.sin_theta(s1, t1));
+        if a == 0.0 {
+            out.push((s0, t0));
+        } else if (a < 0.0) != (b < 0.0) && b != 0.0 {
+            if let Some(f) = bisect(&sub, a) {
+                out.push((f.s, f.t));
+            }
+        }
+    }
+    true
 }
 
 enum Early {
@@ -402,7 +506,9 @@ thread_local! {
     static LIMIT_HIT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
-/// Bound on march steps: linear convergence needs O(ω) of them, a few hundred at worst.
+/// Bound on march steps: linear convergence needs O(ω) of them, a few hundred at worst. A march
+/// whose steps stay tiny (θ small all along: nearly circular segments) stops here and
+/// [`by_width`] settles the rest of its section.
 const MARCH_STEPS: usize = 4000;
 
 /// Converged: the steps shrink (linear convergence, not an escape from a nearby pair) and are

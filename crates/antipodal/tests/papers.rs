@@ -138,3 +138,85 @@ fn circle_is_one_family_not_a_flood() {
         .sum();
     assert!((covered - per).abs() < 1e-6, "{:?}", r.families);
 }
+
+/// Residual bound for a pair reported at floating-point parameters: 1e-12 plus what one unit
+/// in the last place of each parameter turns the tangent by (at the pinched waist of a slender
+/// lemniscate the tangent turns by ~(a/b)² per unit of φ, and π/2 is not a float).
+fn float_residual_bound(c: &dyn PlaneCurve, s: f64, t: f64) -> f64 {
+    let turn = |u: f64| {
+        let j = c.jet(u);
+        (j.curvature() * j.d1.norm()).abs() * u.abs().max(1.0) * f64::EPSILON
+    };
+    1e-12 + turn(s) + turn(t)
+}
+
+/// Top of the right lobe (where the tangent is horizontal), by bisection on y′ — a well
+/// conditioned equation, unlike the antipodal system there.
+fn lobe_top(c: &dyn PlaneCurve) -> f64 {
+    let (mut lo, mut hi) = (0.3, 1.2);
+    for _ in 0..200 {
+        let m = 0.5 * (lo + hi);
+        if (c.jet(m).d1.y > 0.0) == (c.jet(lo).d1.y > 0.0) {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// Slender elliptic lemniscates: the lobes approach circles (θ of order (b/a)⁴ across them), so
+/// the march crawls with steps that turn the normal by θ; past its step bound the rest of a
+/// section is settled by the width's second derivative. Complete, four pairs (the x-axis
+/// diameter, the waist, the two lobes' vertical diameters), no families, and the pairs where
+/// the oracle is reliable; at a/b = 100 the lobe pairs' antipodal system has a singular value
+/// ~1e-8, so their parameters are known to ~1e-8 only (checked against the lobe's top).
+#[test]
+fn slender_elliptic_lemniscates_are_complete() {
+    use std::f64::consts::{FRAC_PI_2, PI, TAU};
+    for (a, b, param_tol, oracle) in [
+        (2.0, 1.0, 1e-9, true),
+        (6.0, 3.0, 1e-9, true),
+        (20.0, 1.0, 1e-9, true),
+        (100.0, 1.0, 1e-8, false),
+    ] {
+        let c = EllipticLemniscate::new(a, b).unwrap();
+        let r = antipodal(&c, &Options::default()).unwrap();
+        assert!(r.complete, "a = {a}");
+        assert!(r.families.is_empty(), "a = {a}: {:?}", r.families);
+        assert_eq!(r.pairs.len(), 4, "a = {a}: {:?}", r.pairs);
+        for p in &r.pairs {
+            let res = common::residual(&c, p.s, p.t);
+            assert!(
+                res <= float_residual_bound(&c, p.s, p.t),
+                "a = {a}: {p:?} {res:e}"
+            );
+        }
+        let top = lobe_top(&c);
+        let expected = [
+            (0.0, PI),
+            (top, TAU - top),
+            (FRAC_PI_2, 3.0 * FRAC_PI_2),
+            (PI - top, PI + top),
+        ];
+        for (s, t) in expected {
+            assert!(
+                r.pairs
+                    .iter()
+                    .any(|p| common::same_pair(&c, (p.s, p.t), (s, t), param_tol)),
+                "a = {a}: ({s}, {t}) missing in {:?}",
+                r.pairs
+            );
+        }
+        if oracle {
+            let o = common::antipodal_oracle(&c, 900);
+            assert_eq!(o.len(), 4, "a = {a}: oracle {o:?}");
+            for (s, t) in o {
+                assert!(r
+                    .pairs
+                    .iter()
+                    .any(|p| common::same_pair(&c, (p.s, p.t), (s, t), 1e-9)));
+            }
+        }
+    }
+}

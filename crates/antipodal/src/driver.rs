@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::geom::{wrap_pi, V2};
 use crate::pairs::{negligible, opposite_pair, Pair};
-use crate::search::{antipodal_points, Budget, THETA_NOISE};
+use crate::search::{antipodal_points, Budget};
 use crate::tangent;
 use crate::types::{
     Antipodal, AntipodalPair, Inflection, Inflections, Options, PairType, TangentLine, Tangents,
@@ -246,7 +246,7 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
     let mut q = *p;
     for at_a in [true, false] {
         let (s, t) = if at_a { (q.sa, q.ta) } else { (q.sb, q.tb) };
-        if q.sin_theta(s, t).abs() > THETA_NOISE || q.d(s, t) <= 0.0 {
+        if q.sin_theta(s, t).abs() > q.theta_noise(s, t) || q.d(s, t) <= 0.0 {
             continue;
         }
         raw.push((s, t));
@@ -259,7 +259,7 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
                 break;
             }
             let te = q.opposite(se)?;
-            if q.sin_theta(se, te).abs() > THETA_NOISE {
+            if q.sin_theta(se, te).abs() > q.theta_noise(se, te) {
                 cut = Some((se, te));
                 break;
             }

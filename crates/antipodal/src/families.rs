@@ -3,7 +3,6 @@
 
 use crate::dissect::Piece;
 use crate::pairs::Pair;
-use crate::search::THETA_NOISE;
 use crate::types::Family;
 use crate::view::View;
 
@@ -91,7 +90,7 @@ pub(crate) fn is_family(p: &Pair) -> bool {
         } else {
             p.opposite(s)
         };
-        t.is_some_and(|t| p.sin_theta(s, t).abs() <= THETA_NOISE && p.d(s, t) > 0.0)
+        t.is_some_and(|t| p.sin_theta(s, t).abs() <= p.theta_noise(s, t) && p.d(s, t) > 0.0)
     })
 }
 

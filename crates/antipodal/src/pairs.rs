@@ -88,6 +88,19 @@ impl<'a> Pair<'a> {
         js.normal().cross(r) / r.norm().max(f64::MIN_POSITIVE)
     }
 
+    /// Below this `|sin θ|` at `(s, t)` is numerically zero: what moving `s` and `t` by the
+    /// parameter tolerance (to which opposite points are solved) changes it by — the points
+    /// slide along the curve and the normal at `s` turns — or rounding, and never more than
+    /// [`THETA_NOISE`]. (An absolute 1e-9 alone took the nearly circular lobes of a slender
+    /// elliptic lemniscate, where θ stays of order 1e-10 but is resolved, for a family.)
+    pub(crate) fn theta_noise(&self, s: f64, t: f64) -> f64 {
+        let (js, jt) = (self.vs.jet_to(s, 2), self.vt.jet_to(t, 1));
+        let r = (jt.p - js.p).norm().max(f64::MIN_POSITIVE);
+        let (vs, vt) = (js.d1.norm(), jt.d1.norm());
+        let slide = self.vs.tol * vs * (1.0 / r + js.curvature().abs()) + self.vt.tol * vt / r;
+        (slide + 64.0 * f64::EPSILON).min(THETA_NOISE)
+    }
+
     /// `d(s) = N(s) · r(s)`: signed distance between the parallel tangent lines (§2.2).
     pub(crate) fn d(&self, s: f64, t: f64) -> f64 {
         let js = self.vs.jet_to(s, 1);

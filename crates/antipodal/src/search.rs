@@ -4,7 +4,8 @@
 use crate::pairs::{negligible, polish, Pair};
 use crate::prims::Prefer;
 
-/// |sin θ| below this is numerically zero (the antipodal angle of a found pair).
+/// Upper bound of the noise of |sin θ| (the antipodal angle of a found pair); the noise at a
+/// given pair, from the parameter tolerance, is [`Pair::theta_noise`].
 pub(crate) const THETA_NOISE: f64 = 1e-9;
 
 /// Work limits shared by one run.
@@ -148,7 +149,7 @@ fn remainders<'a>(
                 break;
             };
             let th = p.sin_theta(se, te);
-            if th.abs() <= THETA_NOISE {
+            if th.abs() <= p.theta_noise(se, te) {
                 eps *= 2.0;
                 if let Some((w, sw, tw)) = wrong {
                     if eps >= w {

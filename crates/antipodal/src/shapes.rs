@@ -289,11 +289,14 @@ impl PlaneCurve for EllipticLemniscate {
         true
     }
     fn jet(&self, u: f64) -> Jet {
-        // r² = g = A + B cos 2φ; differentiate r² = g three times.
+        // r² = g = A + B cos 2φ; differentiate r² = g three times. The value itself as
+        // a² cos² φ + b² sin² φ: the form with cos 2φ cancels near the waist (φ = π/2) of a
+        // slender lemniscate, where g ≈ b² ≪ a².
         let (aa, bb) = (self.a * self.a, self.b * self.b);
-        let (big_a, big_b) = (0.5 * (aa + bb), 0.5 * (aa - bb));
+        let big_b = 0.5 * (aa - bb);
+        let (s, c) = u.sin_cos();
         let (s2, c2) = (2.0 * u).sin_cos();
-        let g = big_a + big_b * c2;
+        let g = aa * c * c + bb * s * s;
         let g1 = -2.0 * big_b * s2;
         let g2 = -4.0 * big_b * c2;
         let g3 = 8.0 * big_b * s2;

@@ -287,33 +287,11 @@ fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
 /// to `r(s_i)` and `t` to its opposite point.
 fn march_convex(p: &Pair, theta_a: f64) -> March {
     let up = theta_a > 0.0;
-    let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
-    let mut last_step = f64::INFINITY;
-    // The last moves, extrapolated by the step ratio: Newton starts near the next point.
-    let (mut ds, mut dt, mut ratio) = (0.0, 0.0, 1.0);
-    for _ in 0..MARCH_STEPS {
+    march(p, up, |_, s, t, hint| {
         let dir = p.r(s, t).unit();
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
-        let Some(ns) = p.vs.point_with_normal_near(lo, hi, dir, s + ds * ratio) else {
-            return March::Nothing;
-        };
-        let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);
-        let step = (ns - s).abs();
-        ratio = (step / last_step).clamp(0.0, 3.0);
-        (ds, dt) = (ns - s, nt - t);
-        s = ns;
-        t = nt;
-        if converged(p, step, last_step, s, t) {
-            return March::Found(s, t, up);
-        }
-        match finish_early(p, s, t, step, last_step, up) {
-            Early::Found((s, t, up)) => return March::Found(s, t, up),
-            Early::Nothing => return March::Nothing,
-            Early::Continue => {}
-        }
-        last_step = step;
-    }
-    March::Crawled(s, t, up)
+        p.vs.point_with_normal_near(lo, hi, dir, hint)
+    })
 }
 
 /// §4.2.2, `S` convex and `T` concave: march from the end whose normal ray at `t` meets `S`,
@@ -335,15 +313,25 @@ fn march_mixed(p: &Pair) -> March {
     } else {
         return March::Nothing;
     };
+    march(p, up, |i, s, t, hint| {
+        let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
+        let prefer = if up { Prefer::Low } else { Prefer::High };
+        let jt = p.vt.jet_to(t, 1);
+        let hint = if i == 0 { f64::NAN } else { hint };
+        p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint)
+    })
+}
+
+/// The march loop shared by §4.2.1 and §4.2.2, from the `s_a` end when `up` (else from `s_b`):
+/// `next(i, s, t, hint)` gives step `i`'s new `s` (`hint`: the last move extrapolated by the
+/// step ratio, where Newton should start), or `None` when no pair lies ahead; `t` follows to
+/// the opposite point.
+fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Option<f64>) -> March {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
     let (mut ds, mut dt, mut ratio) = (0.0, 0.0, 1.0);
     for i in 0..MARCH_STEPS {
-        let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
-        let prefer = if up { Prefer::Low } else { Prefer::High };
-        let jt = p.vt.jet_to(t, 1);
-        let hint = if i == 0 { f64::NAN } else { s + ds * ratio };
-        let Some(ns) = p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint) else {
+        let Some(ns) = next(i, s, t, s + ds * ratio) else {
             return March::Nothing;
         };
         let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);

@@ -266,34 +266,28 @@ impl Tracer<'_> {
         // Start each solve on the chord between the ends (the arc is close to it).
         let (sa, sb) = (a.p[k], b.p[k]);
         let (oa, ob) = (a.p[1 - k], b.p[1 - k]);
+        // The solved variable is t (∂/∂t is `eval_grad`'s entry 1) on a graph over r, else r.
+        let (lo, hi, dk) = if graph_r {
+            (p.t0, p.t1, 1)
+        } else {
+            (p.r0, p.r1, 2)
+        };
+        let at = |x: f64, s: f64| if graph_r { [x, s] } else { [s, x] };
         let point = |s: f64| -> [f64; 2] {
             let w = if sb != sa { (s - sa) / (sb - sa) } else { 0.5 };
             let x0 = oa + w * (ob - oa);
-            if graph_r {
-                let t = bracketed_or_end(
-                    |t| {
-                        let g = cell.eval_grad(t, s);
-                        (g[0], g[1])
-                    },
-                    p.t0,
-                    p.t1,
-                    x0,
-                    noise,
-                );
-                [t, s]
-            } else {
-                let r = bracketed_or_end(
-                    |r| {
-                        let g = cell.eval_grad(s, r);
-                        (g[0], g[2])
-                    },
-                    p.r0,
-                    p.r1,
-                    x0,
-                    noise,
-                );
-                [s, r]
-            }
+            let x = bracketed_or_end(
+                |x| {
+                    let [t, r] = at(x, s);
+                    let g = cell.eval_grad(t, r);
+                    (g[0], g[dk])
+                },
+                lo,
+                hi,
+                x0,
+                noise,
+            );
+            at(x, s)
         };
         // The direction of the mapped curve at a vertex, oriented from `a` toward `b`: the
         // image of a short step along the zero set's tangent (F_r, −F_t).

@@ -7,11 +7,17 @@
 //! isolated root is then refined by Newton steps that never leave the bracket (bisection when a
 //! step would). What does not separate above the tolerance is reported as a cluster, a possible
 //! multiple root, never dropped.
+//!
+//! [`sign_changes`] builds on it: which roots (and which discontinuities) are sign changes of
+//! the function, which clusters are flat stretches, which could not be decided.
 
 use crate::error::{Error, Result};
 use crate::refine::Bezier;
 use crate::spline::BSpline;
 use serde::{Deserialize, Serialize};
+
+mod sign_changes;
+pub use sign_changes::{sign_changes, Flat, SignChange, SignChangeKind, SignChanges, FLAT_WIDTH};
 
 /// Options for [`find_roots`].
 #[derive(Debug, Clone, Copy, PartialEq)]

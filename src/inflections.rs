@@ -1,9 +1,9 @@
 //! Inflections: for spline curves the certified pipeline of `bspline` (curvature numerator →
-//! certified root isolation, periodic search on closed curves so the seam is no special case);
+//! its certified sign changes, periodic search on closed curves so the seam is no special case);
 //! for analytic shapes the sampled search of `antipodal` (reported as not certified).
 
 use crate::io::{Curve, Shape, SplineCurve};
-use bspline::roots::{find_roots, find_roots_periodic, Root, RootKind, RootOptions};
+use bspline::roots::{sign_changes, RootKind, RootOptions, SignChangeKind};
 use bspline::symbolic::curvature_numerator;
 use serde::Serialize;
 use thiserror::Error;
@@ -80,7 +80,8 @@ pub fn inflections(curve: &Curve, tol: f64) -> Result<Inflections, ComputeError>
     }
 }
 
-/// Certified inflections of a B-spline or NURBS curve.
+/// Certified inflections of a B-spline or NURBS curve: the sign changes of its curvature
+/// numerator ([`bspline::roots::sign_changes`]).
 pub fn spline_inflections(s: &SplineCurve, tol: f64) -> Result<Inflections, ComputeError> {
     // At a cusp the curvature numerator vanishes too: it would pass for an inflection.
     if let Some(u) = bspline::symbolic::singular_point(&s.curve, tol)? {
@@ -88,124 +89,52 @@ pub fn spline_inflections(s: &SplineCurve, tol: f64) -> Result<Inflections, Comp
     }
     let k = curvature_numerator(&s.curve)?;
     let opts = RootOptions::default().tolerance(tol);
+    let found = sign_changes(&k, s.closed, &opts)?;
     let (a, b) = k.domain();
-    let roots = if s.closed {
-        match find_roots_periodic(&k, &opts) {
-            Ok(r) => r,
-            // A clamped closed curve need not be curvature-continuous at its seam.
-            Err(bspline::Error::NotPeriodic { .. }) => seam_roots(s, &k, &opts)?,
-            Err(e) => return Err(e.into()),
-        }
-    } else {
-        find_roots(&k, a, b, &opts)?
+    let mut inflections: Vec<Inflection> = Vec::new();
+    let mut push = |u: f64, bracket: (f64, f64), certified: bool, kind: RootKind| {
+        let p = s.curve.point(u);
+        inflections.push(Inflection {
+            u,
+            p: [p[0], p[1]],
+            certified,
+            kind,
+            bracket: Some([bracket.0, bracket.1]),
+        });
     };
-    let roots = sign_changes(&k, roots, s.closed);
-    let inflections: Vec<Inflection> = roots
-        .iter()
-        .map(|r| {
-            let p = s.curve.point(r.u);
-            Inflection {
-                u: r.u,
-                p: [p[0], p[1]],
-                certified: r.certified,
-                kind: r.kind,
-                bracket: Some([r.bracket.0, r.bracket.1]),
+    for c in &found.changes {
+        match c.kind {
+            SignChangeKind::Simple => push(c.u, c.bracket, c.certified, RootKind::Simple),
+            SignChangeKind::Cluster => push(c.u, c.bracket, c.certified, RootKind::Cluster),
+            // The seam of a clamped closed curve that is not curvature-continuous there: an
+            // inflection where the tangent is continuous (at a corner the curve does not
+            // inflect), decided by evaluations, so not certified.
+            SignChangeKind::Jump if s.closed && c.u == a => {
+                if tangent_continuous(s, a, b) {
+                    push(c.u, c.bracket, false, RootKind::Simple);
+                }
             }
-        })
-        .collect();
+            // Jumps of the curvature at interior knots (where the curve is only C¹) are not
+            // reported here, unlike in `antipodal`: root isolation reports some of them as
+            // simple roots (those stay), the others would be new inflections (the second one of
+            // fixtures/open_quadratic.json, for instance).
+            SignChangeKind::Jump => {}
+        }
+    }
+    // A flat piece between a convex and a concave arc is an inflection (unresolved: a cluster);
+    // a straight line or a touching zero is not (Jia neglects even-order inflections: they do
+    // not change convexity).
+    for f in found.flats.iter().filter(|f| f.sign_change) {
+        push(f.u, f.bracket, false, RootKind::Cluster);
+    }
+    inflections.sort_by(|x, y| x.u.total_cmp(&y.u));
     Ok(Inflections {
         certified: inflections.iter().all(|i| i.certified),
         inflections,
     })
 }
 
-/// Keeps the roots where the curvature changes sign. Simple roots always do; a cluster (a flat
-/// stretch, a multiple root) counts only when the curvature has opposite signs on its two sides,
-/// taken between it and its neighbours, where isolation proved there is no root: a flat piece
-/// between a convex and a concave arc is an inflection, a straight line or a touching zero is
-/// not (Jia neglects even-order inflections: they do not change convexity).
-fn sign_changes(k: &bspline::BSpline, roots: Vec<Root>, closed: bool) -> Vec<Root> {
-    let (a, b) = k.domain();
-    let period = b - a;
-    let wrap = |u: f64| {
-        if closed {
-            a + (u - a).rem_euclid(period)
-        } else {
-            u
-        }
-    };
-    let sign_at = |u: f64| {
-        let v = k.eval_scalar(wrap(u));
-        if v > 0.0 {
-            1
-        } else if v < 0.0 {
-            -1
-        } else {
-            0
-        }
-    };
-    let n = roots.len();
-    let side = |i: usize, left: bool| -> i32 {
-        let r = &roots[i];
-        let (lo, hi) = r.bracket;
-        let neighbour = if left {
-            match (i.checked_sub(1), closed) {
-                (Some(j), _) => Some(roots[j].bracket.1),
-                (None, true) => roots.last().map(|x| x.bracket.1 - period),
-                (None, false) => Some(a),
-            }
-        } else {
-            match (i + 1 < n, closed) {
-                (true, _) => Some(roots[i + 1].bracket.0),
-                (false, true) => roots.first().map(|x| x.bracket.0 + period),
-                (false, false) => Some(b),
-            }
-        };
-        match neighbour {
-            // An open curve's cluster that reaches a domain end has nothing on that side.
-            Some(x) if (left && x < lo) || (!left && x > hi) => {
-                sign_at(0.5 * (x + if left { lo } else { hi }))
-            }
-            _ => 0,
-        }
-    };
-    (0..n)
-        .filter(|&i| roots[i].kind == RootKind::Simple || side(i, true) * side(i, false) < 0)
-        .map(|i| roots[i])
-        .collect()
-}
-
-/// Roots on a closed curve whose curvature jumps at the seam: the open search, a root seen at
-/// both ends reported once, and a sign change across a tangent-continuous seam reported as an
-/// (uncertified: decided by two evaluations) inflection at the seam.
-fn seam_roots(
-    s: &SplineCurve,
-    k: &bspline::BSpline,
-    opts: &RootOptions,
-) -> Result<Vec<Root>, ComputeError> {
-    let (a, b) = k.domain();
-    let mut roots = find_roots(k, a, b, opts)?;
-    let near = |u: f64, v: f64| (u - v).abs() <= 4.0 * opts.tol.max(1e-12 * (b - a));
-    let at_start = roots.first().is_some_and(|r| near(r.u, a));
-    if at_start && roots.last().is_some_and(|r| near(r.u, b)) {
-        roots.pop();
-    }
-    let at_seam = at_start || roots.last().is_some_and(|r| near(r.u, b));
-    let (ka, kb) = (k.eval_scalar(a), k.eval_scalar(b));
-    if !at_seam && ka * kb < 0.0 && tangent_continuous(s, a, b) {
-        roots.insert(
-            0,
-            Root {
-                u: a,
-                bracket: (a, a),
-                certified: false,
-                kind: RootKind::Simple,
-            },
-        );
-    }
-    Ok(roots)
-}
-
+/// The tangent directions at the end and at the start of the curve agree.
 fn tangent_continuous(s: &SplineCurve, a: f64, b: f64) -> bool {
     let mut da = [0.0; 4];
     let mut db = [0.0; 4];

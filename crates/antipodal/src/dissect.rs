@@ -9,7 +9,6 @@ use crate::error::{Error, Result};
 use crate::geom::{wrap_pi, V2};
 use crate::prims::Prefer;
 use crate::view::{newton_bracketed, View};
-use bspline::roots::RootKind;
 use std::f64::consts::{PI, TAU};
 
 /// Unwrapped tangent angle along the curve.
@@ -169,45 +168,16 @@ impl View<'_> {
         let mut flats = Vec::new();
         let mut out = match &self.cert {
             Some(cert) => {
-                let k = &cert.curvature;
-                let periodic = self.closed
-                    && (k.eval_scalar(self.a) - k.eval_scalar(self.b)).abs()
-                        <= 1e-9 * k.max_abs_coef();
-                let roots = cert.curvature_roots(&cert.opts, periodic, self.a, self.b)?;
-                let mut zs = Vec::new();
-                for r in roots {
-                    match r.kind {
-                        RootKind::Simple if r.certified => zs.push(r.u),
-                        _ => {
-                            // A cluster is an inflection only where the sign changes across it
-                            // (a double root bends back: second-order, neglected as in §5.1).
-                            let (l, h) = r.bracket;
-                            if h - l > 1e-6 * self.period {
-                                // Within rounding of zero all along: a straight stretch.
-                                flats.push((l, h));
-                                continue;
-                            }
-                            self.uncertify();
-                            let w = (h - l).max(1e-9 * self.period);
-                            let (kl, kh) = (
-                                self.jet_to(l - w, 2).curvature(),
-                                self.jet_to(h + w, 2).curvature(),
-                            );
-                            if (kl > 0.0) != (kh > 0.0) {
-                                zs.push(r.u);
-                            }
-                        }
-                    }
+                // The sign changes of the curvature numerator: simple roots, narrow clusters
+                // across which the sign changes (a double root bends back: second-order,
+                // neglected as in §5.1), jumps at discontinuities and at the seam of a clamped
+                // closed curve. Clusters wider than 1e-6 of the period are straight stretches.
+                let found = cert.curvature_sign_changes(&cert.opts, self.closed)?;
+                if !found.certified() {
+                    self.uncertify();
                 }
-                zs.extend(jump_sign_changes(k, &zs, self.tol));
-                if self.closed && !periodic {
-                    // The seam of a clamped closed curve: curvature may jump and change sign.
-                    let (ka, kb) = (k.eval_scalar(self.a), k.eval_scalar(self.b));
-                    if (ka > 0.0) != (kb > 0.0) && ka != 0.0 && kb != 0.0 {
-                        zs.push(self.a);
-                    }
-                }
-                zs
+                flats.extend(found.flats.iter().map(|f| f.bracket));
+                found.changes.iter().map(|c| c.u).collect()
             }
             None => {
                 let kappa = |u: f64| {
@@ -238,14 +208,6 @@ impl View<'_> {
                 out.pop();
             }
         }
-        // Inflections at the ends of straight stretches are the stretches' business.
-        out.retain(|&z| {
-            !flats.iter().any(|&(l, h)| {
-                let k = ((z - l) / self.period).floor();
-                let zz = z - k * self.period;
-                zz >= l - 1e-9 * self.period && zz <= h + 1e-9 * self.period
-            })
-        });
         Ok(Zeros { zs: out, flats })
     }
 
@@ -445,34 +407,4 @@ fn crosses(p: V2, q: V2, r: V2, s: V2) -> bool {
         && d2 != 0.0
         && d3 != 0.0
         && d4 != 0.0
-}
-
-/// Sign changes of a scalar spline across its discontinuities (interior knots of multiplicity
-/// `p + 1`: the curvature of a spline of degree ≤ 2, or at C¹ knots), which root isolation
-/// does not report as roots. The one-sided values are the coefficients next to the knot.
-fn jump_sign_changes(k: &bspline::BSpline, known: &[f64], tol: f64) -> Vec<f64> {
-    let p = k.degree();
-    let knots = k.knots();
-    let c = k.coefs();
-    let err = 4.0 * (p + 2) as f64 * f64::EPSILON * k.max_abs_coef();
-    let mut out = Vec::new();
-    let n = c.len();
-    let mut i = p + 1;
-    while i < n {
-        let u = knots[i];
-        let mult = knots[i..].iter().take_while(|&&x| x == u).count();
-        if mult > p {
-            // Clamped on both sides: c[i-1] is the left limit, c[i] the right limit.
-            let (l, r) = (c[i - 1], c[i]);
-            let trusted = l.abs() > err && r.abs() > err;
-            if trusted
-                && (l > 0.0) != (r > 0.0)
-                && !known.iter().any(|&z| (z - u).abs() <= 16.0 * tol)
-            {
-                out.push(u);
-            }
-        }
-        i += mult.max(1);
-    }
-    out
 }

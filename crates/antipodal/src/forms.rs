@@ -3,7 +3,7 @@
 use crate::error::Result;
 use crate::fast::Pw;
 use crate::shapes::CircleShape;
-use bspline::roots::{find_roots, find_roots_periodic, Root, RootOptions};
+use bspline::roots::{sign_changes, RootOptions, SignChanges};
 use bspline::{BSpline, Rational};
 use std::sync::OnceLock;
 
@@ -28,8 +28,8 @@ pub struct SymbolicForms {
     pub(crate) hom_pw: Pw,
     /// The curvature numerator (its roots are the inflections).
     pub(crate) curvature: BSpline,
-    /// Its certified roots, with the options and periodicity they were found with.
-    roots: OnceLock<(RootOptions, bool, Vec<Root>)>,
+    /// Its sign changes, with the options and closedness they were found with.
+    sign_changes: OnceLock<(RootOptions, bool, SignChanges)>,
     /// For the shapes of this crate on their circle form: the formula in `(cos φ, sin φ)`.
     pub(crate) shape: Option<CircleShape>,
     /// The forms of the curve run backwards (a clockwise curve is viewed reversed).
@@ -51,7 +51,7 @@ impl SymbolicForms {
             tangency_pw,
             hom_pw,
             curvature,
-            roots: OnceLock::new(),
+            sign_changes: OnceLock::new(),
             shape: None,
             reversed: OnceLock::new(),
         })
@@ -67,27 +67,21 @@ impl SymbolicForms {
             .as_deref()
     }
 
-    /// Certified roots of the curvature numerator on `[a, b]` (periodic when `periodic`),
-    /// kept for the next call with the same options.
-    pub(crate) fn curvature_roots(
+    /// The sign changes of the curvature numerator over the domain (closed: a circle), kept
+    /// for the next call with the same options.
+    pub(crate) fn curvature_sign_changes(
         &self,
         opts: &RootOptions,
-        periodic: bool,
-        a: f64,
-        b: f64,
-    ) -> Result<Vec<Root>> {
-        if let Some((o, p, r)) = self.roots.get() {
-            if o == opts && *p == periodic {
-                return Ok(r.clone());
+        closed: bool,
+    ) -> Result<SignChanges> {
+        if let Some((o, c, s)) = self.sign_changes.get() {
+            if o == opts && *c == closed {
+                return Ok(s.clone());
             }
         }
-        let roots = if periodic {
-            find_roots_periodic(&self.curvature, opts)?
-        } else {
-            find_roots(&self.curvature, a, b, opts)?
-        };
-        let _ = self.roots.set((*opts, periodic, roots.clone()));
-        Ok(roots)
+        let found = sign_changes(&self.curvature, closed, opts)?;
+        let _ = self.sign_changes.set((*opts, closed, found.clone()));
+        Ok(found)
     }
 }
 

@@ -216,3 +216,23 @@ impl PlaneCurve for SplineCurve {
         kept(&self.forms, || Some(self.curve.clone()))
     }
 }
+
+#[cfg(test)]
+pub(crate) mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    /// A random star-shaped closed B-spline from `2n` numbers in `[0, 1)` (angle jitter and
+    /// radius per control point), rational with the first `n` of `weights` when given.
+    pub(crate) fn star_curve(deg: usize, seed: &[f64], weights: Option<&[f64]>) -> SplineCurve {
+        let n = seed.len() / 2;
+        let pts: Vec<[f64; 2]> = (0..n)
+            .map(|i| {
+                let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (seed[2 * i] - 0.5)) / n as f64;
+                let r = 0.35 + 0.65 * seed[2 * i + 1];
+                [r * ang.cos(), r * ang.sin()]
+            })
+            .collect();
+        SplineCurve::periodic(deg, &pts, weights.map(|w| &w[..n])).unwrap()
+    }
+}

@@ -6,9 +6,9 @@ use crate::curve::PlaneCurve;
 use crate::dissect::{Piece, Tracks, Zeros};
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
-use crate::geom::{wrap_pi, V2};
+use crate::geom::wrap_pi;
 use crate::pairs::{negligible, opposite_pair, Pair};
-use crate::search::{antipodal_points, Budget};
+use crate::search::{antipodal_points, Budget, THETA_NOISE};
 use crate::tangent;
 use crate::types::{
     Antipodal, AntipodalPair, Inflection, Inflections, Options, PairType, TangentLine, Tangents,
@@ -16,11 +16,11 @@ use crate::types::{
 use crate::view::View;
 
 /// A validated, dissected curve.
-struct Prepared<'a> {
-    view: View<'a>,
+pub(crate) struct Prepared<'a> {
+    pub(crate) view: View<'a>,
     tracks: Tracks,
     zeros: Zeros,
-    pieces: Vec<Piece>,
+    pub(crate) pieces: Vec<Piece>,
 }
 
 fn knots_of(curve: &dyn PlaneCurve) -> Vec<f64> {
@@ -77,7 +77,7 @@ fn view_of<'a>(
 
 /// Orients (closed curves counterclockwise, unless `force_rev` is given), validates and
 /// dissects.
-fn prepare<'a>(
+pub(crate) fn prepare<'a>(
     curve: &'a dyn PlaneCurve,
     opts: &Options,
     force_rev: Option<bool>,
@@ -320,6 +320,12 @@ fn finish_pairs(
         if js.normal().dot(r) <= 0.0 || js.d1.dot(jt.d1) >= 0.0 {
             continue;
         }
+        // A point that is no pair (θ beyond any rounding) is a defect upstream: never report
+        // it.
+        if js.normal().cross(r).abs() > THETA_NOISE * r.norm() {
+            v.uncertify();
+            continue;
+        }
         let (s, t) = (v.wrap(s), v.wrap(t));
         if in_family(s, t) {
             continue;
@@ -379,7 +385,7 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
         return;
     }
     let (tl, th) = p.t_range();
-    let overlap = match (seg_box(p.vs, p.sa, p.sb), seg_box(p.vt, tl, th)) {
+    let overlap = match (p.vs.arc_box(p.sa, p.sb), p.vt.arc_box(tl, th)) {
         (Some(a), Some(b)) => a.0.x <= b.1.x && b.0.x <= a.1.x && a.0.y <= b.1.y && b.0.y <= a.1.y,
         _ => true,
     };
@@ -396,33 +402,6 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
     }
     *leaves -= 1;
     out.extend(tangent::common_tangents(p));
-}
-
-/// Bounding box of the triangle (chord ends and the meet of the end tangents) that contains a
-/// monotone segment with |Φ| < π; `None` when the end tangents are (nearly) parallel.
-fn seg_box(v: &View, a: f64, b: f64) -> Option<(V2, V2)> {
-    let (ja, jb) = (v.jet_to(a, 1), v.jet_to(b, 1));
-    let den = ja.d1.cross(jb.d1);
-    let chord = jb.p - ja.p;
-    let pts = if den.abs() <= 1e-12 * ja.d1.norm() * jb.d1.norm() {
-        if ja.d1.dot(jb.d1) > 0.0 {
-            // Straight (Φ ≈ 0): the chord itself.
-            [ja.p, jb.p, jb.p]
-        } else {
-            return None;
-        }
-    } else {
-        [ja.p, ja.p + ja.d1 * (chord.cross(jb.d1) / den), jb.p]
-    };
-    let lo = V2::new(
-        pts.iter().map(|p| p.x).fold(f64::MAX, f64::min),
-        pts.iter().map(|p| p.y).fold(f64::MAX, f64::min),
-    );
-    let hi = V2::new(
-        pts.iter().map(|p| p.x).fold(f64::MIN, f64::max),
-        pts.iter().map(|p| p.y).fold(f64::MIN, f64::max),
-    );
-    Some((lo, hi))
 }
 
 /// Every line tangent to both curves (Jia §2.5): pairs of monotone pieces with opposite normals,

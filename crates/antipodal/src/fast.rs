@@ -19,6 +19,18 @@ pub(crate) struct Pw {
     dim: usize,
     /// Piece-major, then point-major: `(deg + 1) · dim` values per piece.
     coefs: Vec<f64>,
+    /// The binomial coefficients `C(deg, j)` (for evaluation in the Bernstein basis).
+    binoms: Vec<f64>,
+}
+
+fn binomials(p: usize) -> Vec<f64> {
+    let mut out = Vec::with_capacity(p + 1);
+    let mut b = 1.0;
+    for j in 0..=p {
+        out.push(b);
+        b = b * (p - j) as f64 / (j + 1) as f64;
+    }
+    out
 }
 
 impl Pw {
@@ -39,6 +51,7 @@ impl Pw {
             deg: f.degree(),
             dim: f.dim(),
             coefs,
+            binoms: binomials(f.degree()),
         }
     }
 
@@ -56,7 +69,18 @@ impl Pw {
         self.breaks.partition_point(|&x| x <= u).clamp(1, n) - 1
     }
 
-    fn piece(&self, i: usize) -> &[f64] {
+    /// The number of pieces.
+    pub(crate) fn pieces(&self) -> usize {
+        self.breaks.len() - 1
+    }
+
+    /// The interval of piece `i`.
+    pub(crate) fn piece_span(&self, i: usize) -> (f64, f64) {
+        (self.breaks[i], self.breaks[i + 1])
+    }
+
+    /// The control points of piece `i` (point-major).
+    pub(crate) fn piece(&self, i: usize) -> &[f64] {
         let w = (self.deg + 1) * self.dim;
         &self.coefs[i * w..(i + 1) * w]
     }
@@ -230,6 +254,104 @@ impl Pw {
         }
     }
 
+    /// The same function with every piece cut into `k` equal pieces (de Casteljau: exact up
+    /// to rounding).
+    pub(crate) fn subdivided(&self, k: usize) -> Pw {
+        let (d, n) = (self.dim, self.breaks.len() - 1);
+        let mut breaks = vec![self.breaks[0]];
+        let mut coefs = Vec::with_capacity(self.coefs.len() * k);
+        for i in 0..n {
+            let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+            for j in 0..k {
+                let (r0, r1) = (j as f64 / k as f64, (j + 1) as f64 / k as f64);
+                let mut pts = Buf::from_slice(self.piece(i));
+                if r1 < 1.0 {
+                    split_left_points(&mut pts, d, r1);
+                }
+                if r0 > 0.0 {
+                    split_right_points(&mut pts, d, r0 / r1);
+                }
+                coefs.extend_from_slice(&pts);
+                breaks.push(if j + 1 == k { b } else { a + (b - a) * r1 });
+            }
+        }
+        Pw {
+            breaks,
+            deg: self.deg,
+            dim: d,
+            coefs,
+            binoms: self.binoms.clone(),
+        }
+    }
+
+    /// Per piece, a bound on `|f′|` there: the largest difference of neighbouring control
+    /// points (Euclidean norm) times `degree / width` (the derivative's control points).
+    pub(crate) fn lipschitz(&self) -> Vec<f64> {
+        let (p, d) = (self.deg, self.dim);
+        (0..self.breaks.len() - 1)
+            .map(|i| {
+                let c = self.piece(i);
+                let h = self.breaks[i + 1] - self.breaks[i];
+                let big = (0..p)
+                    .map(|j| {
+                        (0..d)
+                            .map(|k| (c[(j + 1) * d + k] - c[j * d + k]).powi(2))
+                            .sum::<f64>()
+                            .sqrt()
+                    })
+                    .fold(0.0, f64::max);
+                big * p as f64 / h
+            })
+            .collect()
+    }
+
+    /// The pieces overlapping `[lo, hi]`: `(index, x0, x1)` with the overlap.
+    pub(crate) fn overlaps(
+        &self,
+        lo: f64,
+        hi: f64,
+    ) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
+        let (first, last) = (self.piece_at(lo), self.piece_at(hi));
+        (first..=last).filter_map(move |i| {
+            let (x0, x1) = (lo.max(self.breaks[i]), hi.min(self.breaks[i + 1]));
+            (x1 >= x0).then_some((i, x0, x1))
+        })
+    }
+
+    /// The value of piece `i` at `u` in `O(degree)` (Horner's scheme on `t = s/(1 − s)`,
+    /// mirrored beyond the middle, so that `t ≤ 1`), and the largest control point's
+    /// magnitude (the scale of its rounding).
+    pub(crate) fn value_in_piece(&self, i: usize, u: f64, out: &mut [f64]) -> f64 {
+        let (p, d) = (self.deg, self.dim);
+        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+        let s = ((u - a) / (b - a)).clamp(0.0, 1.0);
+        let c = self.piece(i);
+        let mirror = s > 0.5;
+        let (t, base) = if mirror { (1.0 - s, s) } else { (s, 1.0 - s) };
+        let ratio = t / base;
+        let at = |j: usize, k: usize| {
+            if mirror {
+                c[(p - j) * d + k]
+            } else {
+                c[j * d + k]
+            }
+        };
+        let binoms = &self.binoms;
+        let pow = base.powi(p as i32);
+        let mut scale = 0.0f64;
+        for (k, o) in out[..d].iter_mut().enumerate() {
+            // Σ c_j C(p, j) t^j base^(p−j) = base^p Σ c_j C(p, j) ratio^j.
+            let mut acc = 0.0;
+            for j in (0..=p).rev() {
+                let cj = at(j, k);
+                acc = acc * ratio + cj * binoms[j];
+                scale = scale.max(cj.abs());
+            }
+            *o = acc * pow;
+        }
+        scale
+    }
+
     /// The control points (dimension `dim`) of the vector function on `[lo, hi]`, piece by
     /// piece, to `visit(points)`; stops when it returns false.
     pub(crate) fn for_each_restricted_points(
@@ -238,7 +360,7 @@ impl Pw {
         hi: f64,
         mut visit: impl FnMut(&[f64]) -> bool,
     ) {
-        let (p, d) = (self.deg, self.dim);
+        let d = self.dim;
         let first = self.piece_at(lo);
         let last = self.piece_at(hi);
         for i in first..=last {
@@ -251,21 +373,48 @@ impl Pw {
             pts.extend_from_slice(self.piece(i));
             let h = b - a;
             let (r0, r1) = ((x0 - a) / h, (x1 - a) / h);
-            for c in 0..d {
-                let mut g: SmallVec<[f64; 32]> = (0..=p).map(|j| pts[j * d + c]).collect();
-                if r1 < 1.0 {
-                    split_left(&mut g, r1);
-                }
-                if r0 > 0.0 {
-                    let r = if r1 < 1.0 { r0 / r1 } else { r0 };
-                    split_right(&mut g, r);
-                }
-                for j in 0..=p {
-                    pts[j * d + c] = g[j];
-                }
+            if r1 < 1.0 {
+                split_left_points(&mut pts, d, r1);
+            }
+            if r0 > 0.0 {
+                split_right_points(&mut pts, d, if r1 < 1.0 { r0 / r1 } else { r0 });
             }
             if !visit(&pts) {
                 return;
+            }
+        }
+    }
+}
+
+/// [`split_left`] on points of dimension `d` stored point-major, all coordinates at once.
+fn split_left_points(g: &mut [f64], d: usize, r: f64) {
+    if d == 1 {
+        return split_left(g, r);
+    }
+    let p = g.len() / d - 1;
+    for level in 1..=p {
+        for j in (level..=p).rev() {
+            let (head, tail) = g.split_at_mut(j * d);
+            let prev = &head[(j - 1) * d..];
+            for (x, &y) in tail[..d].iter_mut().zip(prev) {
+                *x = y + r * (*x - y);
+            }
+        }
+    }
+}
+
+/// [`split_right`] on points of dimension `d` stored point-major, all coordinates at once.
+fn split_right_points(g: &mut [f64], d: usize, r: f64) {
+    if d == 1 {
+        return split_right(g, r);
+    }
+    let p = g.len() / d - 1;
+    for level in 1..=p {
+        for j in 0..=p - level {
+            let (head, tail) = g.split_at_mut((j + 1) * d);
+            let cur = &mut head[j * d..];
+            for (x, &y) in cur.iter_mut().zip(&tail[..d]) {
+                *x += r * (y - *x);
             }
         }
     }

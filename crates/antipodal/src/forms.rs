@@ -1,5 +1,6 @@
 //! The symbolic B-spline forms the certified algorithms need, computed once per curve.
 
+use crate::bounds::BoundForms;
 use crate::error::Result;
 use crate::fast::Pw;
 use crate::shapes::CircleShape;
@@ -28,6 +29,10 @@ pub struct SymbolicForms {
     pub(crate) hom_pw: Pw,
     /// The curvature numerator (its roots are the inflections).
     pub(crate) curvature: BSpline,
+    /// Enclosures of the curvature over intervals, built on first use.
+    bounds: OnceLock<BoundForms>,
+    /// The curve's size (see `View::scale`), measured on first use.
+    size: OnceLock<f64>,
     /// Its sign changes, with the options and closedness they were found with.
     sign_changes: OnceLock<(RootOptions, bool, SignChanges)>,
     /// For the shapes of this crate on their circle form: the formula in `(cos φ, sin φ)`.
@@ -51,6 +56,8 @@ impl SymbolicForms {
             tangency_pw,
             hom_pw,
             curvature,
+            bounds: OnceLock::new(),
+            size: OnceLock::new(),
             sign_changes: OnceLock::new(),
             shape: None,
             reversed: OnceLock::new(),
@@ -65,6 +72,17 @@ impl SymbolicForms {
                 SymbolicForms::new(r).ok().map(Box::new)
             })
             .as_deref()
+    }
+
+    /// The curve's size, measured by `measure` on first use.
+    pub(crate) fn size(&self, measure: impl FnOnce() -> f64) -> f64 {
+        *self.size.get_or_init(measure)
+    }
+
+    /// The enclosures of [`crate::view::View::arc_bounds`].
+    pub(crate) fn bound_forms(&self) -> &BoundForms {
+        self.bounds
+            .get_or_init(|| BoundForms::new(&self.curve, &self.tangent, &self.curvature))
     }
 
     /// The sign changes of the curvature numerator over the domain (closed: a circle), kept

@@ -20,6 +20,7 @@
 //! through the rational unit circle instead (certified, parameters still reported in φ); the
 //! elliptic lemniscate (a square root) stays sampled.
 
+mod bounds;
 mod circle;
 mod curve;
 mod dissect;
@@ -27,6 +28,7 @@ mod driver;
 mod error;
 mod families;
 mod fast;
+mod finish;
 mod forms;
 mod geom;
 mod pairs;

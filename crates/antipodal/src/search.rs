@@ -1,6 +1,13 @@
 //! Antipodal-Points (Jia Table 1): Bisect (§4.1) and March (§4.2.1, §4.2.2) calling each other
 //! on a pair satisfying conditions (i)–(v).
+//!
+//! On curves with symbolic forms two steps go beyond the paper, both resting on a proof that
+//! θ is monotone over a stretch ([`crate::finish`]): a march ends by Newton's method as soon
+//! as the stretch to the pair it proposes holds no other (Jia's march converges only
+//! linearly), and the stretch beside a found pair that Table 1 cuts off by a small ε is as
+//! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
+use crate::finish::{certified_finish, certified_rest, Finish};
 use crate::pairs::{negligible, polish, Pair};
 use crate::prims::Prefer;
 
@@ -39,7 +46,7 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
             };
             out.push((found.s, found.t));
             if p.s_convex || p.t_convex {
-                stack.extend(remainders(&p, found.s, true, true, ta < 0.0));
+                stack.extend(rests(&p, found.s, found.t, true, true, ta < 0.0));
             }
         } else {
             let march = match (p.s_convex, p.t_convex) {
@@ -76,13 +83,7 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
             if let Some((s, t, moved_up)) = found {
                 out.push((s, t));
                 // The marched side is free of pairs: continue on the other side only.
-                stack.extend(remainders(
-                    &p,
-                    s,
-                    moved_up,
-                    !moved_up,
-                    (ta < 0.0) == moved_up,
-                ));
+                stack.extend(rests(&p, s, t, moved_up, !moved_up, (ta < 0.0) == moved_up));
             }
         }
     }
@@ -91,9 +92,43 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
     }
 }
 
-struct Found {
+/// The sub-pairs left beside a found pair `(s, t)`: cut where θ is proven monotone from the
+/// pair on (curves with symbolic forms), else by [`remainders`].
+fn rests<'a>(
+    p: &Pair<'a>,
     s: f64,
     t: f64,
+    above: bool,
+    below: bool,
+    below_neg: bool,
+) -> Vec<Pair<'a>> {
+    let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
+    let mut out = Vec::new();
+    for (want, dir) in [(below, -1.0), (above, 1.0)] {
+        if !want {
+            continue;
+        }
+        match certified.then(|| certified_rest(p, s, t, dir)).flatten() {
+            Some(rest) => out.extend(rest),
+            // Where no stretch is proven (θ′ changes sign right beside the pair, or the
+            // ranges are too loose: a slender ellipse's type-B pair), Table 1's ε decided by
+            // the signs of θ, without widening it by guess on a certified curve.
+            None => out.extend(remainders(
+                p,
+                s,
+                dir > 0.0,
+                dir < 0.0,
+                below_neg,
+                !certified,
+            )),
+        }
+    }
+    out
+}
+
+pub(crate) struct Found {
+    pub(crate) s: f64,
+    pub(crate) t: f64,
 }
 
 /// Sub-pairs on either side of a found pair, cut at `s* ± ε` (Table 1). The side a pair was
@@ -109,13 +144,15 @@ struct Found {
 /// that shows it, and the search of the remainder — a sign change towards the section's end —
 /// finds the pairs beyond. (Growing ε out of the rounding and shrinking it at the wrong sign
 /// again used to cycle until the iterations ran out and drop both remainders.) A remainder
-/// that still cannot be cut uncertifies the result.
+/// that still cannot be cut uncertifies the result. `widening`: the cut may then move away
+/// from the pair by [`widen`] (a guess: only where nothing is certified anyway).
 fn remainders<'a>(
     p: &Pair<'a>,
     s: f64,
     above: bool,
     below: bool,
     below_neg: bool,
+    widening: bool,
 ) -> Vec<Pair<'a>> {
     let mut out = Vec::new();
     let min_eps = 16.0 * p.vs.tol;
@@ -163,7 +200,11 @@ fn remainders<'a>(
                 continue;
             }
             if (th < 0.0) == want_neg {
-                let (se, te) = widen(p, s, dir, eps, th, se, te);
+                let (se, te) = if widening {
+                    widen(p, s, dir, eps, th, se, te)
+                } else {
+                    (se, te)
+                };
                 out.push(cut_at(se, te));
                 decided = true;
                 break;
@@ -209,7 +250,7 @@ fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f6
 }
 
 /// §4.1: bisection on the sign of θ (regula falsi, Illinois variant, inside the bracket).
-fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
+pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
     let (mut s0, mut t0, mut f0) = (p.sa, p.ta, theta_a);
     let (mut s1, mut t1) = (p.sb, p.tb);
     let mut f1 = p.sin_theta(s1, t1);
@@ -330,6 +371,9 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     let mut last_step = f64::INFINITY;
     let (mut ds, mut dt, mut ratio) = (0.0, 0.0, 1.0);
+    let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
+    // Steps to the next finishing attempt, and the gap after a failed one (doubling).
+    let (mut wait, mut gap) = (0usize, 1usize);
     for i in 0..MARCH_STEPS {
         let Some(ns) = next(i, s, t, s + ds * ratio) else {
             return March::Nothing;
@@ -340,13 +384,38 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
         (ds, dt) = (ns - s, nt - t);
         s = ns;
         t = nt;
-        if converged(p, step, last_step, s, t) {
+        if let Some((s, t)) = converged(p, step, last_step, s, t) {
             return March::Found(s, t, up);
         }
-        match finish_early(p, s, t, step, last_step, up) {
-            Early::Found((s, t, up)) => return March::Found(s, t, up),
-            Early::Nothing => return March::Nothing,
-            Early::Continue => {}
+        if certified {
+            // Tried while the march converges (not while it escapes from a pair behind),
+            // at steps ever farther apart after failures.
+            if step > last_step {
+                (wait, gap) = (0, 1);
+            } else if wait == 0 {
+                let q = step / last_step;
+                let limit = if q < 1.0 {
+                    step * q / (1.0 - q)
+                } else {
+                    f64::NAN
+                };
+                match certified_finish(p, s, t, up, limit) {
+                    Finish::Found(s, t) => return March::Found(s, t, up),
+                    Finish::Nothing => return March::Nothing,
+                    Finish::Unproven => {
+                        wait = gap;
+                        gap *= 2;
+                    }
+                }
+            } else {
+                wait -= 1;
+            }
+        } else {
+            match finish_early(p, s, t, step, last_step, up) {
+                Early::Found((s, t, up)) => return March::Found(s, t, up),
+                Early::Nothing => return March::Nothing,
+                Early::Continue => {}
+            }
         }
         last_step = step;
     }
@@ -439,9 +508,11 @@ enum Early {
     Continue,
 }
 
-/// Once the march is converging (steps shrinking, below 1e-4 of the period), Newton on the
-/// antipodal system finishes it. (Tried earlier — at a ratio of 0.9 and steps up to 1e-2 of
-/// the period — it skipped pairs close to others on random curves.) The pair it reaches must lie ahead in the marching direction
+/// The finish of a march on a curve without symbolic forms (where [`certified_finish`] has no
+/// ranges to prove anything with; such results are reported uncertified anyway): once the
+/// march is converging (steps shrinking, below 1e-4 of the period), Newton on the antipodal
+/// system finishes it. (Tried earlier — at a ratio of 0.9 and steps up to 1e-2 of the period —
+/// it skipped pairs close to others on random curves.) The pair it reaches must lie ahead in the marching direction
 /// with the antipodal angle keeping its sign in between (no pair skipped): inside the section
 /// it is the pair the march converges to; beyond the section's far end (a pair just cut off
 /// there) the march would only crawl up to that end, finding nothing. Otherwise the march goes
@@ -500,9 +571,23 @@ thread_local! {
 /// [`by_width`] settles the rest of its section.
 const MARCH_STEPS: usize = 4000;
 
-/// Converged: the steps shrink (linear convergence, not an escape from a nearby pair) and are
-/// below the tolerance, or the antipodal angle is zero to rounding.
-fn converged(p: &Pair, step: f64, last: f64, s: f64, t: f64) -> bool {
-    let shrinking = step <= last;
-    shrinking && (step <= p.vs.tol || (p.sin_theta(s, t).abs() <= 1e-15 && step <= 1e3 * p.vs.tol))
+/// Converged: the steps shrink (linear convergence, not an escape from a nearby pair) and what
+/// is left to the limit, `step·q/(1 − q)` at the ratio `q` of the last two steps, is below the
+/// tolerance, or the antipodal angle is zero to rounding — and Newton's method from there
+/// confirms a pair within a few tolerances (returned). (Neither the step nor the predicted
+/// distance alone is enough: where θ hardly changes, as between the nearly double pairs of
+/// the curve with convexities `p = 3, ε = 0.5, m = 11`, the steps are tiny and erratic far
+/// from any pair, and at a tolerance of 1e-8 hundreds of march points were taken for pairs.)
+fn converged(p: &Pair, step: f64, last: f64, s: f64, t: f64) -> Option<(f64, f64)> {
+    let q = step / last;
+    if q.is_nan() || q > 1.0 {
+        return None;
+    }
+    let left = if q < 0.5 { step } else { step * q / (1.0 - q) };
+    let close = left <= p.vs.tol || (p.sin_theta(s, t).abs() <= 1e-15 && step <= 1e3 * p.vs.tol);
+    if !close {
+        return None;
+    }
+    let (ps, pt) = polish(p.vs, p.vt, s, t, 64.0 * p.vs.tol.max(left))?;
+    (p.sin_theta(ps, pt).abs() <= THETA_NOISE.min(1e3 * p.theta_noise(ps, pt))).then_some((ps, pt))
 }

@@ -55,6 +55,45 @@ pub(crate) struct View<'a> {
     /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
     /// run on its rational-circle form).
     pub(crate) report: Option<fn(f64) -> f64>,
+    /// The last few jets evaluated (see [`JetCache`]).
+    cache: JetCache,
+}
+
+/// Entries of [`JetCache`].
+const CACHED_JETS: usize = 8;
+
+/// The jets most recently evaluated, by parameter. The algorithms ask for the same points
+/// again and again — a march step's ends, the segment ends of every primitive call, the pair a
+/// Newton solve has just reached — and a jet is most of the cost of a step.
+#[derive(Default)]
+struct JetCache {
+    u: [Cell<f64>; CACHED_JETS],
+    order: [Cell<usize>; CACHED_JETS],
+    jet: [Cell<Jet>; CACHED_JETS],
+    next: Cell<usize>,
+}
+
+impl JetCache {
+    fn new() -> Self {
+        let c = Self::default();
+        // No parameter compares equal to NaN: every entry starts empty.
+        c.u.iter().for_each(|u| u.set(f64::NAN));
+        c
+    }
+
+    fn get(&self, u: f64, order: usize) -> Option<Jet> {
+        (0..CACHED_JETS)
+            .find(|&i| self.u[i].get() == u && self.order[i].get() >= order)
+            .map(|i| self.jet[i].get())
+    }
+
+    fn put(&self, u: f64, order: usize, jet: Jet) {
+        let i = self.next.get();
+        self.u[i].set(u);
+        self.order[i].set(order);
+        self.jet[i].set(jet);
+        self.next.set((i + 1) % CACHED_JETS);
+    }
 }
 
 impl<'a> View<'a> {
@@ -96,14 +135,24 @@ impl<'a> View<'a> {
             tol: tol * (b - a).max(1.0),
             certified: Cell::new(certify && curve.rational().is_some()),
             report: None,
+            cache: JetCache::new(),
         };
-        let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
-        for i in 0..64 {
-            let p = v.point(a + (b - a) * i as f64 / 63.0);
-            lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
-            hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
-        }
-        v.scale = (hi - lo).norm().max(f64::MIN_POSITIVE);
+        let sampled = || {
+            let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
+            for i in 0..64 {
+                let p = v.point(a + (b - a) * i as f64 / 63.0);
+                lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
+                hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
+            }
+            (hi - lo).norm().max(f64::MIN_POSITIVE)
+        };
+        // The sample grid maps to itself reversed: the size does not depend on the
+        // orientation, and forms kept by the curve keep it too.
+        let scale = match &v.cert {
+            Some(c) => c.forms.size(sampled),
+            None => sampled(),
+        };
+        v.scale = scale;
         Ok(v)
     }
 
@@ -151,6 +200,15 @@ impl<'a> View<'a> {
 
     /// Point and derivatives up to `order` only (cheaper for splines).
     pub(crate) fn jet_to(&self, u: f64, order: usize) -> Jet {
+        if let Some(j) = self.cache.get(u, order) {
+            return j;
+        }
+        let j = self.oriented_jet(u, order);
+        self.cache.put(u, order, j);
+        j
+    }
+
+    fn oriented_jet(&self, u: f64, order: usize) -> Jet {
         let j = self.curve.jet_to(self.eval_param(u), order);
         if self.rev {
             Jet {
@@ -181,7 +239,7 @@ impl<'a> View<'a> {
 
     /// The unwrapped interval `[lo, hi]` as pieces `(x0, x1, shift)` inside the domain (split
     /// at the seam): `x + shift` is the unwrapped parameter.
-    fn domain_pieces(&self, lo: f64, hi: f64) -> SmallVec<[(f64, f64, f64); 2]> {
+    pub(crate) fn domain_pieces(&self, lo: f64, hi: f64) -> SmallVec<[(f64, f64, f64); 2]> {
         let mut out = SmallVec::new();
         let mut push = |x0: f64, x1: f64, shift: f64| {
             let (x0, x1) = (x0.max(self.a), x1.min(self.b));

@@ -106,6 +106,49 @@ fn convexities_4_has_sixteen_pairs() {
     insta::assert_json_snapshot!("convexities_4", rounded(&r));
 }
 
+/// Eleven convexities (p = 3, ε = 0.5): each pair of neighbouring lobes holds three pairs
+/// within 1.5e-3 of φ, with |sin θ| ≤ 3e-6 between them (nearly double pairs: at the middle one
+/// the march's ratio q = 1 + θ′/κ is 0.99901, and θ′ changes sign twice within 7e-4, too
+/// close for the monotonicity proof). The march towards it runs out of steps and the sampled
+/// width test settles the section: complete, not certified. (Before that test the result was
+/// incomplete and 22 pairs short; at a tolerance of 1e-8 the march's tiny steps passed for
+/// convergence and hundreds of points that are no pairs were reported.) Parameters from an
+/// independent oracle (dense sampling of the common normal direction on every pair of
+/// monotone pieces, sign changes of θ refined by bisection).
+#[test]
+fn convexities_11_nearly_triple_pairs_are_all_found() {
+    let c = Convexities::new(3.0, 0.5, 11).unwrap();
+    let r = antipodal(&c, &Options::default()).unwrap();
+    assert!(r.complete);
+    assert_eq!(r.pairs.len(), 198);
+    for p in &r.pairs {
+        assert!(common::residual(&c, p.s, p.t) <= 1e-12);
+    }
+    // Rotation by 2π/11 maps the pairs onto themselves.
+    let turn = std::f64::consts::TAU / 11.0;
+    let has = |pairs: &[antipodal::AntipodalPair], s: f64, t: f64, tol: f64| {
+        pairs
+            .iter()
+            .any(|p| common::same_pair(&c, (p.s, p.t), (s, t), tol))
+    };
+    for p in &r.pairs {
+        assert!(has(&r.pairs, p.s + turn, p.t + turn, 1e-9), "{p:?}");
+    }
+    for (s, t) in [
+        (0.257761563936, 0.883173151578),
+        (0.258510419732, 0.883886908846),
+        (0.259224177001, 0.884635764643),
+    ] {
+        assert!(has(&r.pairs, s, t, 1e-9), "({s}, {t}) missing");
+    }
+    let coarse = antipodal(&c, &Options::default().tolerance(1e-8)).unwrap();
+    assert!(coarse.complete);
+    assert_eq!(coarse.pairs.len(), 198);
+    for p in &coarse.pairs {
+        assert!(common::residual(&c, p.s, p.t) <= 1e-9, "{p:?}");
+    }
+}
+
 #[test]
 fn convex_shapes_have_at_least_two_pairs() {
     for (a, b) in [(1.0, 0.3), (5.0, 4.9), (2.0, 1.0)] {

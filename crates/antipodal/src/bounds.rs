@@ -1,0 +1,393 @@
+//! Certified ranges over a parameter interval: the curvature, the speed and the position of an
+//! arc, from the control points of its symbolic forms restricted to the interval (the convex
+//! hull property of Bézier pieces with positive weights), and a few operations of interval
+//! arithmetic to combine them.
+
+use crate::fast::Pw;
+use crate::geom::V2;
+use crate::view::View;
+use bspline::{BSpline, Rational};
+
+/// A closed interval of reals.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Iv {
+    pub(crate) lo: f64,
+    pub(crate) hi: f64,
+}
+
+impl Iv {
+    pub(crate) fn new(lo: f64, hi: f64) -> Self {
+        Self { lo, hi }
+    }
+
+    /// The interval widened by a relative `margin` of its magnitude: room for the rounding
+    /// of the coefficients it was read from and of the operations that combine it.
+    pub(crate) fn widened(self, margin: f64) -> Self {
+        let m = margin * self.lo.abs().max(self.hi.abs());
+        Self::new(self.lo - m, self.hi + m)
+    }
+
+    pub(crate) fn add(self, o: Iv) -> Self {
+        Self::new(self.lo + o.lo, self.hi + o.hi)
+    }
+
+    pub(crate) fn sub(self, o: Iv) -> Self {
+        Self::new(self.lo - o.hi, self.hi - o.lo)
+    }
+
+    pub(crate) fn mul(self, o: Iv) -> Self {
+        let c = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        Self::new(
+            c.iter().copied().fold(f64::INFINITY, f64::min),
+            c.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        )
+    }
+
+    /// `1 / x` for an interval that excludes zero (`None` otherwise).
+    pub(crate) fn recip(self) -> Option<Self> {
+        (self.lo > 0.0 || self.hi < 0.0).then(|| Self::new(1.0 / self.hi, 1.0 / self.lo))
+    }
+
+    /// Strictly positive or strictly negative throughout.
+    pub(crate) fn excludes_zero(self) -> bool {
+        self.lo > 0.0 || self.hi < 0.0
+    }
+}
+
+/// What the control points of an arc's symbolic forms prove about it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ArcBounds {
+    /// The signed curvature (positive where the view's curve turns left).
+    pub(crate) kappa: Iv,
+    /// Bounding box of the arc.
+    pub(crate) lo: V2,
+    pub(crate) hi: V2,
+}
+
+impl ArcBounds {
+    /// Diagonal of the bounding box.
+    pub(crate) fn diameter(&self) -> f64 {
+        (self.hi - self.lo).norm()
+    }
+
+    /// The least and greatest distance between a point of this arc and one of `o`.
+    pub(crate) fn distance(&self, o: &ArcBounds) -> Iv {
+        let gap = |a0: f64, a1: f64, b0: f64, b1: f64| (b0 - a1).max(a0 - b1).max(0.0);
+        let span = |a0: f64, a1: f64, b0: f64, b1: f64| (b1 - a0).max(a1 - b0);
+        let near = V2::new(
+            gap(self.lo.x, self.hi.x, o.lo.x, o.hi.x),
+            gap(self.lo.y, self.hi.y, o.lo.y, o.hi.y),
+        );
+        let far = V2::new(
+            span(self.lo.x, self.hi.x, o.lo.x, o.hi.x),
+            span(self.lo.y, self.hi.y, o.lo.y, o.hi.y),
+        );
+        Iv::new(near.norm(), far.norm())
+    }
+}
+
+/// Fine pieces per Bézier piece of an [`Enclosure`]: derivative bounds taken over an eighth of
+/// a piece are local enough to prove monotone stretches close to a pair.
+const FINE: usize = 8;
+
+/// Values per overlapped fine piece in [`Enclosure::each`].
+const SAMPLES: usize = 4;
+
+/// The range of a scalar function, or of the length of a vector one, over an interval: in
+/// `O(1)` for each fine piece the interval covers (the hull of the piece's control points)
+/// and `O(degree)` for each it overlaps in part (values across the overlap, widened by the
+/// piece's derivative bound times half their spacing, and by the rounding of the
+/// evaluation).
+#[derive(Debug, Clone)]
+pub(crate) struct Enclosure {
+    pw: Pw,
+    lip: Vec<f64>,
+    /// Per fine piece, the range its control points prove.
+    hull: Vec<Iv>,
+}
+
+impl Enclosure {
+    pub(crate) fn new(f: &BSpline) -> Self {
+        let pw = Pw::new(f).subdivided(FINE);
+        let d = pw.dim();
+        let hull = (0..pw.pieces())
+            .map(|i| points_range(pw.piece(i), d))
+            .collect();
+        Self {
+            lip: pw.lipschitz(),
+            hull,
+            pw,
+        }
+    }
+
+    /// The range over `[lo, hi]` (inside the domain), joined into `acc`.
+    fn join_range(&self, lo: f64, hi: f64, acc: &mut Iv) {
+        let mut join = |a: f64, b: f64| *acc = Iv::new(acc.lo.min(a), acc.hi.max(b));
+        let d = self.pw.dim();
+        let eps = 4.0 * (self.pw.degree() + 2) as f64 * f64::EPSILON;
+        // A short interval (within two fine pieces, as close to a pair) gets a few values
+        // across each overlap: the derivative bound then only bridges the gaps between them,
+        // and the enclosure approaches the function's own range.
+        let n = if self.pw.overlaps(lo, hi).nth(2).is_some() {
+            1
+        } else {
+            SAMPLES
+        };
+        let mut v = [0.0f64; 3];
+        for (i, x0, x1) in self.pw.overlaps(lo, hi) {
+            let (a, b) = self.pw.piece_span(i);
+            if n == 1 && x0 <= a && x1 >= b {
+                let h = self.hull[i];
+                join(h.lo, h.hi);
+                continue;
+            }
+            let step = (x1 - x0) / n as f64;
+            for j in 0..n {
+                let scale = self
+                    .pw
+                    .value_in_piece(i, x0 + (j as f64 + 0.5) * step, &mut v);
+                let r = 0.5 * step * self.lip[i] + eps * scale;
+                let x = if d == 1 { v[0] } else { v[0].hypot(v[1]) };
+                join(x - r, x + r);
+            }
+        }
+    }
+}
+
+/// The range control points (dimension `d`, point-major) prove for a scalar function, or for
+/// the length of a vector one: from below by the projections on the direction of the end
+/// points' sum (a narrow hodograph cone), from above by the largest.
+fn points_range(c: &[f64], d: usize) -> Iv {
+    if d == 1 {
+        return Iv::new(
+            c.iter().copied().fold(f64::INFINITY, f64::min),
+            c.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        );
+    }
+    let pts = || c.chunks_exact(d).map(|p| V2::new(p[0], p[1]));
+    let (first, last) = (&c[..2], &c[c.len() - d..c.len() - d + 2]);
+    let axis = V2::new(first[0] + last[0], first[1] + last[1]).unit();
+    Iv::new(
+        pts()
+            .map(|p| p.dot(axis))
+            .fold(f64::INFINITY, f64::min)
+            .max(0.0),
+        pts().map(|p| p.norm()).fold(0.0, f64::max),
+    )
+}
+
+/// The enclosures behind [`View::arc_bounds`]: the curvature numerator `K`, the tangent
+/// numerator `D` and the weight `w`, built on first use.
+#[derive(Debug, Clone)]
+pub(crate) struct BoundForms {
+    curvature: Enclosure,
+    tangent: Enclosure,
+    weight: Option<Enclosure>,
+}
+
+impl BoundForms {
+    pub(crate) fn new(curve: &Rational, tangent: &BSpline, curvature: &BSpline) -> Self {
+        let h = curve.homogeneous();
+        let last = h.dim() - 1;
+        let w = h.map_points(1, |p, o| o[0] = p[last]);
+        let polynomial = w.coefs().iter().all(|&c| c == 1.0);
+        Self {
+            curvature: Enclosure::new(curvature),
+            tangent: Enclosure::new(tangent),
+            weight: (!polynomial).then(|| Enclosure::new(&w)),
+        }
+    }
+}
+
+impl View<'_> {
+    /// Certified bounds over the (unwrapped) parameter interval `[lo, hi]` of a monotone piece
+    /// (curvature of one sign, turning below π); `None` for a curve without symbolic forms, or
+    /// where the enclosures prove nothing (a weight or the speed not bounded away from zero).
+    ///
+    /// With the tangent numerator `D = wX′ − w′X` and the curvature numerator
+    /// `K = w³ (x′y″ − x″y′)` (for a polynomial curve `w ≡ 1`): `C′ = D / w²` and
+    /// `κ = K w³ / |D|³`, each factor enclosed over the interval. The arc lies in the triangle
+    /// of its chord and end tangents.
+    pub(crate) fn arc_bounds(&self, lo: f64, hi: f64) -> Option<ArcBounds> {
+        let cert = self.cert.as_ref()?;
+        let forms = cert.bound_forms();
+        let (lo, hi) = (lo.min(hi), lo.max(hi));
+        let (mut k, mut d, mut w) = (
+            Iv::new(f64::INFINITY, f64::NEG_INFINITY),
+            Iv::new(f64::INFINITY, 0.0),
+            Iv::new(f64::INFINITY, 0.0),
+        );
+        for (x0, x1, _) in self.domain_pieces(lo, hi) {
+            forms.curvature.join_range(x0, x1, &mut k);
+            forms.tangent.join_range(x0, x1, &mut d);
+            match &forms.weight {
+                Some(e) => e.join_range(x0, x1, &mut w),
+                None => w = Iv::new(1.0, 1.0),
+            }
+        }
+        let proven = d.lo > 0.0 && w.lo > 0.0 && k.excludes_zero() && k.lo.is_finite();
+        if !proven || !k.hi.is_finite() {
+            return None;
+        }
+        let margin = 1e-12;
+        let w3 = Iv::new(w.lo.powi(3), w.hi.powi(3));
+        let d3 = Iv::new(d.lo.powi(3), d.hi.powi(3))
+            .widened(margin)
+            .recip()?;
+        let (lo_box, hi_box) = self.arc_box(lo, hi)?;
+        Some(ArcBounds {
+            kappa: k.widened(margin).mul(w3).mul(d3),
+            lo: lo_box,
+            hi: hi_box,
+        })
+    }
+
+    /// Bounding box of a monotone arc `[a, b]` (curvature of one sign, turning below π): the
+    /// triangle of its chord and the meet of its end tangents, or, where the end tangents are
+    /// too close to parallel for that meet, the chord widened by the turn. `None` when the end
+    /// tangents are opposite.
+    pub(crate) fn arc_box(&self, a: f64, b: f64) -> Option<(V2, V2)> {
+        let (ja, jb) = (self.jet_to(a, 1), self.jet_to(b, 1));
+        let (ta, tb) = (ja.d1.unit(), jb.d1.unit());
+        let (sin, cos) = (ta.cross(tb), ta.dot(tb));
+        let chord = jb.p - ja.p;
+        let pts = if cos > 0.0 && sin.abs() <= 1e-6 {
+            // Nearly straight: the arc strays from its chord by at most |chord| · turn.
+            let pad = chord.norm() * (sin.abs() + 1e-12);
+            let pad = V2::new(pad, pad);
+            [ja.p - pad, ja.p + pad, jb.p - pad, jb.p + pad]
+        } else if sin.abs() > 1e-6 {
+            let apex = ja.p + ta * (chord.cross(tb) / sin);
+            [ja.p, jb.p, apex, apex]
+        } else {
+            return None;
+        };
+        let lo = V2::new(
+            pts.iter().map(|p| p.x).fold(f64::MAX, f64::min),
+            pts.iter().map(|p| p.y).fold(f64::MAX, f64::min),
+        );
+        let hi = V2::new(
+            pts.iter().map(|p| p.x).fold(f64::MIN, f64::max),
+            pts.iter().map(|p| p.y).fold(f64::MIN, f64::max),
+        );
+        Some((lo, hi))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::curve::tests::star_curve as curve;
+    use proptest::prelude::*;
+
+    fn inside(x: f64, iv: Iv) -> bool {
+        let slack = 1e-9 * (iv.lo.abs().max(iv.hi.abs()) + x.abs());
+        x >= iv.lo - slack && x <= iv.hi + slack
+    }
+
+    proptest! {
+            #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+            /// Sampled values of random splines lie in the enclosure of any interval.
+            #[test]
+            fn enclosure_holds_sampled_values(
+                deg in 2usize..=7,
+                coefs in proptest::collection::vec(-3.0f64..3.0, 24),
+                dim in 1usize..=2,
+                a in 0.0f64..1.0,
+                len in prop_oneof![1e-6f64..1e-3, 1e-3f64..0.1, 0.1f64..1.0],
+    ) {
+                let n = coefs.len() / dim;
+                let f = bspline::BSpline::clamped_uniform(deg, dim, coefs[..n * dim].to_vec()).unwrap();
+                let e = Enclosure::new(&f);
+                let (lo, hi) = (a.min(1.0 - len.min(1.0)), (a.min(1.0 - len.min(1.0)) + len).min(1.0));
+                let mut iv = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+                e.join_range(lo, hi, &mut iv);
+                for i in 0..=200 {
+                    let u = lo + (hi - lo) * i as f64 / 200.0;
+                    let v = f.eval(u);
+                    let x = if dim == 1 { v[0] } else { v[0].hypot(v[1]) };
+                    prop_assert!(inside(x, iv), "{x} outside {iv:?} at {u} on [{lo}, {hi}]");
+                }
+            }
+
+            /// The curvature of random closed B-splines and NURBS, sampled densely over any
+            /// interval, lies within the certified range; over a monotone stretch, so do its points
+            /// within the box.
+            #[test]
+            fn arc_bounds_hold_sampled_curvature_and_points(
+                deg in 3usize..=5,
+                seed in proptest::collection::vec(0.0f64..1.0, 16..=40),
+                w in proptest::collection::vec(0.5f64..2.0, 20),
+                rational in any::<bool>(),
+                a in 0.0f64..1.0,
+                len in prop_oneof![1e-5f64..1e-3, 1e-3f64..0.05, 0.05f64..0.5],
+            ) {
+                let c = curve(deg, &seed, rational.then_some(&w[..]));
+                let v = View::new(&c, false, true, 1e-12).unwrap();
+                let lo = v.a + a * v.period;
+                let hi = lo + len * v.period;
+                let Some(b) = v.arc_bounds(lo, hi) else {
+                    return Ok(());
+                };
+                let mut turn = 0.0f64;
+                let mut last = v.jet(lo).d1;
+                let mut sign = 0.0f64;
+                let mut monotone = true;
+                for i in 0..=300 {
+                    let u = lo + (hi - lo) * i as f64 / 300.0;
+                    let j = v.jet(u);
+                    let k = j.curvature();
+                    prop_assert!(inside(k, b.kappa), "κ = {k} outside {:?} at {u}", b.kappa);
+                    monotone &= sign * k >= 0.0;
+                    if sign == 0.0 {
+                        sign = k.signum();
+                    }
+                    turn += last.cross(j.d1).atan2(last.dot(j.d1)).abs();
+                    last = j.d1;
+                }
+                if monotone && turn < 3.0 {
+                    let pad = 1e-9 * (b.hi - b.lo).norm().max(1e-12);
+                    for i in 0..=300 {
+                        let p = v.point(lo + (hi - lo) * i as f64 / 300.0);
+                        prop_assert!(
+                            p.x >= b.lo.x - pad && p.x <= b.hi.x + pad
+                                && p.y >= b.lo.y - pad && p.y <= b.hi.y + pad,
+                            "{p:?} outside {:?}–{:?}", b.lo, b.hi
+                        );
+                    }
+                }
+            }
+        }
+
+    #[test]
+    fn interval_arithmetic_contains_its_members() {
+        let pts = [-2.5, -1.0, -0.25, 0.0, 0.5, 1.0, 3.0];
+        for &a0 in &pts {
+            for &a1 in pts.iter().filter(|&&x| x >= a0) {
+                for &b0 in &pts {
+                    for &b1 in pts.iter().filter(|&&x| x >= b0) {
+                        let (a, b) = (Iv::new(a0, a1), Iv::new(b0, b1));
+                        for x in [a0, 0.5 * (a0 + a1), a1] {
+                            for y in [b0, 0.5 * (b0 + b1), b1] {
+                                assert!(inside(x + y, a.add(b)));
+                                assert!(inside(x - y, a.sub(b)));
+                                assert!(inside(x * y, a.mul(b)));
+                                if let Some(r) = b.recip() {
+                                    assert!(inside(1.0 / y, r));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(Iv::new(-1.0, 1.0).recip().is_none());
+    }
+}

@@ -110,15 +110,20 @@ pub fn spline_inflections(s: &SplineCurve, tol: f64) -> Result<Inflections, Comp
             // inflection where the tangent is continuous (at a corner the curve does not
             // inflect), decided by evaluations, so not certified.
             SignChangeKind::Jump if s.closed && c.u == a => {
-                if tangent_continuous(s, a, b) {
+                if tangent_continuous(s, a, b, 1e-9) {
                     push(c.u, c.bracket, false, RootKind::Simple);
                 }
             }
-            // Jumps of the curvature at interior knots (where the curve is only C¹) are not
-            // reported here, unlike in `antipodal`: root isolation reports some of them as
-            // simple roots (those stay), the others would be new inflections (the second one of
-            // fixtures/open_quadratic.json, for instance).
-            SignChangeKind::Jump => {}
+            // A jump of the curvature at an interior knot (a quadratic spline's every knot,
+            // or a knot of high multiplicity): an inflection where the tangent is continuous.
+            // Below full multiplicity less one the curve is C¹ there (certified as the jump);
+            // otherwise the two one-sided tangents are compared (not certified).
+            SignChangeKind::Jump => {
+                let (continuous, certain) = interior_tangent_continuous(s, c.u);
+                if continuous {
+                    push(c.u, c.bracket, c.certified && certain, RootKind::Simple);
+                }
+            }
         }
     }
     // A flat piece between a convex and a concave arc is an inflection (unresolved: a cluster);
@@ -134,8 +139,23 @@ pub fn spline_inflections(s: &SplineCurve, tol: f64) -> Result<Inflections, Comp
     })
 }
 
-/// The tangent directions at the end and at the start of the curve agree.
-fn tangent_continuous(s: &SplineCurve, a: f64, b: f64) -> bool {
+/// Whether the tangent is continuous at the interior knot `u`, and whether that is certain
+/// (knot multiplicity below the degree: the curve is C¹ there) or read from the one-sided
+/// tangents a little to each side.
+fn interior_tangent_continuous(s: &SplineCurve, u: f64) -> (bool, bool) {
+    let h = s.curve.homogeneous();
+    let mult = h.knots().iter().filter(|&&k| k == u).count();
+    if mult < h.degree() {
+        return (true, true);
+    }
+    let (a, b) = h.domain();
+    let d = 1e-9 * (b - a);
+    (tangent_continuous(s, u + d, u - d, 1e-6), false)
+}
+
+/// The tangent directions at `b` (coming in) and at `a` (going out) agree to within the sine
+/// `tol`.
+fn tangent_continuous(s: &SplineCurve, a: f64, b: f64, tol: f64) -> bool {
     let mut da = [0.0; 4];
     let mut db = [0.0; 4];
     s.curve.eval_derivs(a, 1, &mut da);
@@ -143,5 +163,5 @@ fn tangent_continuous(s: &SplineCurve, a: f64, b: f64) -> bool {
     let (ta, tb) = ([da[2], da[3]], [db[2], db[3]]);
     let dot = ta[0] * tb[0] + ta[1] * tb[1];
     let cross = ta[0] * tb[1] - ta[1] * tb[0];
-    dot > 0.0 && cross.abs() <= 1e-9 * ta[0].hypot(ta[1]) * tb[0].hypot(tb[1])
+    dot > 0.0 && cross.abs() <= tol * ta[0].hypot(ta[1]) * tb[0].hypot(tb[1])
 }

@@ -90,7 +90,7 @@ fn bracketed_ahead(
 ) -> Option<(f64, f64)> {
     let dir = if end.0 >= from.0 { 1.0 } else { -1.0 };
     let remaining = (end.0 - from.0) * dir;
-    if !(limit > 0.0) {
+    if limit.is_nan() || limit <= 0.0 {
         return None;
     }
     let mut prev = from;

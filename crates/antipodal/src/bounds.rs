@@ -109,6 +109,8 @@ pub(crate) struct Enclosure {
     lip: Vec<f64>,
     /// Per fine piece, the range its control points prove.
     hull: Vec<Iv>,
+    /// Per fine piece, the rounding of an evaluation there.
+    rounding: Vec<f64>,
 }
 
 impl Enclosure {
@@ -118,9 +120,13 @@ impl Enclosure {
         let hull = (0..pw.pieces())
             .map(|i| points_range(pw.piece(i), d))
             .collect();
+        let eps = 4.0 * (pw.degree() + 2) as f64 * f64::EPSILON;
         Self {
             lip: pw.lipschitz(),
             hull,
+            rounding: (0..pw.pieces())
+                .map(|i| eps * pw.piece_magnitude(i))
+                .collect(),
             pw,
         }
     }
@@ -129,7 +135,6 @@ impl Enclosure {
     fn join_range(&self, lo: f64, hi: f64, acc: &mut Iv) {
         let mut join = |a: f64, b: f64| *acc = Iv::new(acc.lo.min(a), acc.hi.max(b));
         let d = self.pw.dim();
-        let eps = 4.0 * (self.pw.degree() + 2) as f64 * f64::EPSILON;
         // A short interval (within two fine pieces, as close to a pair) gets a few values
         // across each overlap: the derivative bound then only bridges the gaps between them,
         // and the enclosure approaches the function's own range.
@@ -148,11 +153,14 @@ impl Enclosure {
             }
             let step = (x1 - x0) / n as f64;
             for j in 0..n {
-                let scale = self
-                    .pw
+                self.pw
                     .value_in_piece(i, x0 + (j as f64 + 0.5) * step, &mut v);
-                let r = 0.5 * step * self.lip[i] + eps * scale;
-                let x = if d == 1 { v[0] } else { v[0].hypot(v[1]) };
+                let r = 0.5 * step * self.lip[i] + self.rounding[i];
+                let x = if d == 1 {
+                    v[0]
+                } else {
+                    (v[0] * v[0] + v[1] * v[1]).sqrt()
+                };
                 join(x - r, x + r);
             }
         }

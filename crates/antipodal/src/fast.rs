@@ -318,10 +318,10 @@ impl Pw {
         })
     }
 
-    /// The value of piece `i` at `u` in `O(degree)` (Horner's scheme on `t = s/(1 − s)`,
-    /// mirrored beyond the middle, so that `t ≤ 1`), and the largest control point's
-    /// magnitude (the scale of its rounding).
-    pub(crate) fn value_in_piece(&self, i: usize, u: f64, out: &mut [f64]) -> f64 {
+    /// The value of piece `i` at `u` in `O(degree)`: Horner's scheme on `t = s/(1 − s)`, or on
+    /// its inverse beyond the middle (the binomial weights are symmetric), so that the ratio
+    /// stays below 1. The rounding is a few units of the largest control point times the degree.
+    pub(crate) fn value_in_piece(&self, i: usize, u: f64, out: &mut [f64]) {
         let (p, d) = (self.deg, self.dim);
         let (a, b) = (self.breaks[i], self.breaks[i + 1]);
         let s = ((u - a) / (b - a)).clamp(0.0, 1.0);
@@ -329,27 +329,27 @@ impl Pw {
         let mirror = s > 0.5;
         let (t, base) = if mirror { (1.0 - s, s) } else { (s, 1.0 - s) };
         let ratio = t / base;
-        let at = |j: usize, k: usize| {
-            if mirror {
-                c[(p - j) * d + k]
-            } else {
-                c[j * d + k]
-            }
-        };
-        let binoms = &self.binoms;
         let pow = base.powi(p as i32);
-        let mut scale = 0.0f64;
+        let binoms = &self.binoms[..=p];
         for (k, o) in out[..d].iter_mut().enumerate() {
-            // Σ c_j C(p, j) t^j base^(p−j) = base^p Σ c_j C(p, j) ratio^j.
+            // Σ c_j C(p, j) s^j (1 − s)^(p−j) = base^p Σ c_j C(p, j) ratio^(j or p − j).
             let mut acc = 0.0;
-            for j in (0..=p).rev() {
-                let cj = at(j, k);
-                acc = acc * ratio + cj * binoms[j];
-                scale = scale.max(cj.abs());
+            if mirror {
+                for (j, bj) in binoms.iter().enumerate() {
+                    acc = acc * ratio + c[j * d + k] * bj;
+                }
+            } else {
+                for (j, bj) in binoms.iter().enumerate().rev() {
+                    acc = acc * ratio + c[j * d + k] * bj;
+                }
             }
             *o = acc * pow;
         }
-        scale
+    }
+
+    /// The largest magnitude among the control points of piece `i`.
+    pub(crate) fn piece_magnitude(&self, i: usize) -> f64 {
+        self.piece(i).iter().fold(0.0, |m, x| m.max(x.abs()))
     }
 
     /// The control points (dimension `dim`) of the vector function on `[lo, hi]`, piece by

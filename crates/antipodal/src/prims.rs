@@ -173,6 +173,11 @@ impl View<'_> {
             let c = &self.cert.as_ref()?.curve;
             bspline::symbolic::tangency_from(c, p.arr()).ok()
         };
+        if self.cert.is_some() {
+            if let Some(found) = self.tangency_on_monotone(lo.min(hi), lo.max(hi), p, &f) {
+                return found;
+            }
+        }
         // A − p × D = A + p_y Dₓ − pₓ D_y.
         let fast = self
             .cert
@@ -220,6 +225,68 @@ impl View<'_> {
 }
 
 impl View<'_> {
+    /// point-of-tangency decided by signs of the curve itself on a monotone segment with
+    /// turning below π (every caller asks on one), where a point lies on at most two tangent
+    /// lines (Jia, Appendix B): trusted end values of `f = (C − p) × C′` of different signs
+    /// leave exactly one point of tangency (the case inside Common-Tangent, §2.3); equal signs
+    /// leave none or two, and none is certain when `p` lies in the region `R₁` (behind both end
+    /// tangents, on the side away from the bending) or in `R₂` outside the triangle of the
+    /// chord and the end tangents. `None` when these tests do not decide (the caller then
+    /// counts roots on the symbolic form).
+    fn tangency_on_monotone(
+        &self,
+        lo: f64,
+        hi: f64,
+        p: V2,
+        f: &impl Fn(f64) -> (f64, f64),
+    ) -> Option<Option<f64>> {
+        let (jl, jh) = (self.jet_to(lo, 1), self.jet_to(hi, 1));
+        let trusted =
+            |x: f64, q: V2, d: V2| x.abs() > 64.0 * f64::EPSILON * (q.norm() + p.norm()) * d.norm();
+        let (fl, fh) = ((jl.p - p).cross(jl.d1), (jh.p - p).cross(jh.d1));
+        if !(trusted(fl, jl.p, jl.d1) && trusted(fh, jh.p, jh.d1)) {
+            return None;
+        }
+        if (fl < 0.0) != (fh < 0.0) {
+            return Some(Some(newton_bracketed(f, lo, hi, fl, self.tol, f64::NAN)));
+        }
+        // The bending direction: the side the tangent turns to (|Φ| < π).
+        let turn = jl.d1.cross(jh.d1);
+        if !trusted(turn, jl.d1, jh.d1) {
+            return None;
+        }
+        let (na, nb) = (jl.d1.unit().perp(), jh.d1.unit().perp());
+        let (va, vb) = if turn > 0.0 { (na, nb) } else { (-na, -nb) };
+        let (da, db) = ((p - jl.p).dot(va), (p - jh.p).dot(vb));
+        if !(trusted(da, jl.p, va) && trusted(db, jh.p, vb)) {
+            return None;
+        }
+        if da < 0.0 && db < 0.0 {
+            // R₁: on no tangent line.
+            return Some(None);
+        }
+        if da > 0.0 && db > 0.0 {
+            // R₀ ∪ R₂: R₂ for certain outside the triangle of α(a), α(b) and the meet of the
+            // end tangents.
+            let chord = jh.p - jl.p;
+            let apex = jl.p + jl.d1 * (chord.cross(jh.d1) / jl.d1.cross(jh.d1));
+            // Each side's orientation of p, trusted beyond its rounding.
+            let side = |a: V2, b: V2| {
+                let x = (b - a).cross(p - a);
+                let bound = 64.0 * f64::EPSILON * (b - a).norm() * (p.norm() + a.norm());
+                (x.abs() > bound).then_some(x > 0.0)
+            };
+            let sides = [side(jl.p, apex), side(apex, jh.p), side(jh.p, jl.p)];
+            if sides.iter().all(Option::is_some) {
+                let inside = sides.iter().all(|&x| x == sides[0]);
+                if !inside {
+                    return Some(None);
+                }
+            }
+        }
+        None
+    }
+
     /// point-on-ray decided by signs of the curve itself on a monotone segment (every caller
     /// asks on one): `f = (C − c) · v` has the derivative `C′ · v`, which vanishes at most
     /// once there (the tangent meets each direction once); that point (found by
@@ -320,4 +387,68 @@ fn polish(f: &impl Fn(f64) -> (f64, f64), u: f64, lo: f64, hi: f64) -> f64 {
         x = nx;
     }
     x
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::curve::tests::star_curve;
+    use crate::driver::prepare;
+    use crate::Options;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+        /// Where the end-sign and region tests decide point-of-tangency on a monotone piece of
+        /// a random closed B-spline, dense sampling of `(C − p) × C′` agrees: no sign change
+        /// where none is claimed, exactly one (at the returned point) where one is.
+        #[test]
+        fn tangency_decisions_match_sampling(
+            deg in 3usize..=5,
+            seed in proptest::collection::vec(0.0f64..1.0, 12..=30),
+            w in proptest::collection::vec(0.5f64..2.0, 15),
+            rational in any::<bool>(),
+            points in proptest::collection::vec((-1.5f64..1.5, -1.5f64..1.5), 6),
+        ) {
+            let c = star_curve(deg, &seed, rational.then_some(&w[..]));
+            let Ok(prep) = prepare(&c, &Options::default(), None, None) else {
+                return Ok(());
+            };
+            let v = &prep.view;
+            for piece in prep.pieces.iter().filter(|q| !q.flat) {
+                for &(x, y) in &points {
+                    let p = V2::new(x, y);
+                    let f = |u: f64| {
+                        let j = v.jet_to(u, 2);
+                        let r = j.p - p;
+                        (r.cross(j.d1), r.cross(j.d2))
+                    };
+                    let Some(found) = v.tangency_on_monotone(piece.lo, piece.hi, p, &f) else {
+                        continue;
+                    };
+                    let n = 2000;
+                    let mut changes = Vec::new();
+                    let mut last = f(piece.lo).0;
+                    for k in 1..=n {
+                        let u = piece.lo + (piece.hi - piece.lo) * k as f64 / n as f64;
+                        let val = f(u).0;
+                        if (val < 0.0) != (last < 0.0) {
+                            changes.push(u);
+                        }
+                        last = val;
+                    }
+                    let h = 2.0 * (piece.hi - piece.lo) / n as f64;
+                    match found {
+                        None => prop_assert!(changes.is_empty(), "{p:?}: tangents at {changes:?}"),
+                        Some(u) => {
+                            prop_assert_eq!(changes.len(), 1, "{:?}: tangents at {:?}", p, changes);
+                            prop_assert!((changes[0] - u).abs() <= h, "{u} vs {changes:?}");
+                        }
+                    }
+                }
+            }
+        }
+    }
 }

@@ -233,7 +233,7 @@ fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
             continue;
         }
         let sm = 0.5 * (s0 + s1);
-        let tm = p.opposite_within(sm, t0, t1);
+        let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
         if p.d(sm, tm) > 0.0 {
             out.push(p.sub(s0, t0, s1, t1));
         }

@@ -59,7 +59,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
             let past = (1e-3 * ahead).max(64.0 * p.vs.tol);
             if ahead + past < remaining {
                 let e = ps + dir * past;
-                (e, p.opposite_within(e, t, end_t))
+                (e, p.opposite_between(e, (s, t), (end_s, end_t)))
             } else {
                 (end_s, end_t)
             }
@@ -133,7 +133,7 @@ fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64)) -> Option<(f64, f6
             to
         } else {
             let e = from.0 + dir * len;
-            (e, p.opposite_within(e, from.1, to.1))
+            (e, p.opposite_between(e, from, to))
         };
         if theta_monotone(p, from, next).is_some() {
             return Some(next);

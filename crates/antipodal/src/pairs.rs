@@ -66,6 +66,17 @@ impl<'a> Pair<'a> {
         self.opposite_near(s, t0, t1, t0)
     }
 
+    /// The opposite point of `s`, which lies between the known opposite pairs `a` and `b`:
+    /// Newton starts where `t` would be if it followed `s` linearly.
+    pub(crate) fn opposite_between(&self, s: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
+        let f = if b.0 != a.0 {
+            (s - a.0) / (b.0 - a.0)
+        } else {
+            0.5
+        };
+        self.opposite_near(s, a.1, b.1, a.1 + f * (b.1 - a.1))
+    }
+
     /// [`Pair::opposite_within`] with Newton started at `hint`.
     pub(crate) fn opposite_near(&self, s: f64, t0: f64, t1: f64, hint: f64) -> f64 {
         let n = -self.vs.normal(s);

@@ -275,7 +275,7 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
                 break;
             }
         }
-        let tm = p.opposite_within(sm, t0, t1);
+        let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
         let fm = p.sin_theta(sm, tm);
         if fm == 0.0 {
             return Some(Found { s: sm, t: tm });
@@ -473,7 +473,7 @@ fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>) -> bool {
                 if !(m > lo && m < hi) {
                     break;
                 }
-                let tm = p.opposite_within(m, tl, th);
+                let tm = p.opposite_between(m, (lo, tl), (hi, th));
                 if (w2(m, tm) < 0.0) == (prev_w < 0.0) {
                     (lo, tl) = (m, tm);
                 } else {

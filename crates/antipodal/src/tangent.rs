@@ -119,7 +119,7 @@ fn bisect_d(p: &Pair, s0: f64, t0: f64, s1: f64, t1: f64) -> Option<(f64, f64)> 
             break;
         }
         let sm = 0.5 * (s0 + s1);
-        let tm = p.opposite_within(sm, t0, t1);
+        let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
         if (p.d(sm, tm) > 0.0) == (d0 > 0.0) {
             s0 = sm;
             t0 = tm;

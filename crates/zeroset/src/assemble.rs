@@ -4,10 +4,11 @@
 //! patch across the line at the same edge root (computed twice, from each side, so compared
 //! with a tolerance); ends on the domain border stay free. Ends that find no partner lie on the
 //! border of an unresolved leaf; touching leaves form clusters, and a cluster is a singular point
-//! (one, three or more ends meet there), a pass-through (two) or an isolated point (none).
+//! (one, three or more ends meet there), a pass-through (two) or an isolated point (none, and
+//! only where ∇F may vanish: a closed zero curve or an isolated zero needs a critical point).
 
 use crate::extract::{Arc, End, Leaf, Pieces};
-use crate::patch::Patch;
+use crate::patch::{Patch, EPS};
 use std::collections::HashMap;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -103,19 +104,64 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     }
     let mut out = Assembled::default();
     let (hull, node_pt) = (&cl.hull, &cl.node);
+    let end_of = |id: usize| &arcs[id / 2].ends[id % 2];
+    let unit = ext[0].min(ext[1]);
+    // Two ends of other arcs as close as two computations of one root can be.
+    let twins = |x: usize, y: usize| -> Option<f64> {
+        let (a, b) = (end_of(x), end_of(y));
+        let d = ((a.p[0] - b.p[0]) / ext[0]).hypot((a.p[1] - b.p[1]) / ext[1]);
+        let tol = MATCH_TOL.max(ROOT_SLACK * (a.unc + b.unc) / unit);
+        (x / 2 != y / 2 && d <= tol).then_some(d)
+    };
     // An end with no partner across its line goes to a leaf within the matching tolerance,
     // or else to the nearest cluster whose hull, grown by its own size, holds it. This happens
     // beside flat regions: the patch across saw the root as a corner zero (a value within its
     // rounding bound counts as positive) and handed it to the leaf there. Where F vanishes to
     // high order (three lines through a point) the flat region and the uncertainty of roots
     // beside it grow together, hence the second, relative rule.
-    let mut rest: Vec<usize> = Vec::new();
+    let mut pending: Vec<usize> = Vec::new();
     for id in unmatched {
-        let p = arcs[id / 2].ends[id % 2].p;
-        if let Some(k) = leaf_at.find(p, MATCH_TOL) {
-            attached[cluster_of[k]].push(id);
-            continue;
+        match leaf_at.find(end_of(id).p, MATCH_TOL) {
+            Some(k) => attached[cluster_of[k]].push(id),
+            None => pending.push(id),
         }
+    }
+    // Before that second rule, the two ends of a root at a patch corner (the zero set passed
+    // within rounding of the corner, and the patches on either side saw it on the two
+    // different lines through it) are joined: the border of a grown hull can pass between
+    // them, and then one went to the cluster and the other, left alone, ended a branch
+    // (beside a crossing, one of its arms was cut off there).
+    let at_corner = |x: usize, y: usize| -> Option<f64> {
+        let (a, b) = (end_of(x), end_of(y));
+        if a.edge % 2 == b.edge % 2 {
+            return None;
+        }
+        // Edges 1 and 3 lie on lines t = const, edges 0 and 2 on lines r = const.
+        let corner = if a.edge % 2 == 1 {
+            [a.line, b.line]
+        } else {
+            [b.line, a.line]
+        };
+        let tol = MATCH_TOL.max(ROOT_SLACK * (a.unc + b.unc) / unit);
+        let off = |q: [f64; 2]| ((q[0] - corner[0]) / ext[0]).hypot((q[1] - corner[1]) / ext[1]);
+        if off(a.p) > tol || off(b.p) > tol {
+            return None;
+        }
+        // Not at a corner in a cluster's hull: there the flat region, not rounding at one
+        // corner, makes the roots uncertain (a self-bisector's knot corner on the diagonal,
+        // where F is flat to fourth order), and the ends go to the cluster.
+        let in_hull = |h: &[f64; 4]| {
+            corner[0] >= h[0] && corner[0] <= h[1] && corner[1] >= h[2] && corner[1] <= h[3]
+        };
+        if hull.iter().any(in_hull) {
+            return None;
+        }
+        twins(x, y)
+    };
+    let taken = pair_closest(&pending, &at_corner, &mut link);
+    let mut rest: Vec<usize> = Vec::new();
+    for (&id, _) in pending.iter().zip(taken).filter(|(_, t)| !t) {
+        let p = end_of(id).p;
         let mut best: Option<(f64, usize)> = None;
         for (c, h) in hull.iter().enumerate() {
             let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
@@ -134,30 +180,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     // Ends left over, away from any cluster, that are as close as two computations of one
     // root can be are joined: the zero set passed (within rounding) by a patch corner, and
     // the patches on either side saw it on different edges of the corner.
-    let end_of = |id: usize| &arcs[id / 2].ends[id % 2];
-    let unit = ext[0].min(ext[1]);
-    let mut paired = vec![false; rest.len()];
-    for x in 0..rest.len() {
-        if paired[x] {
-            continue;
-        }
-        let (a, mut best) = (end_of(rest[x]), None::<(f64, usize)>);
-        for y in x + 1..rest.len() {
-            let b = end_of(rest[y]);
-            let d = ((a.p[0] - b.p[0]) / ext[0]).hypot((a.p[1] - b.p[1]) / ext[1]);
-            let tol = MATCH_TOL.max(ROOT_SLACK * (a.unc + b.unc) / unit);
-            let other_arc = rest[y] / 2 != rest[x] / 2;
-            if !paired[y] && other_arc && d <= tol && best.is_none_or(|bb| d < bb.0) {
-                best = Some((d, y));
-            }
-        }
-        if let Some((_, y)) = best {
-            paired[x] = true;
-            paired[y] = true;
-            link[rest[x]] = Link::End(rest[y]);
-            link[rest[y]] = Link::End(rest[x]);
-        }
-    }
+    pair_closest(&rest, &twins, &mut link);
     // Inside the neighbourhood of a cluster (its hull grown by its own size) rounding decides
     // nothing: F is within a few rounding bounds of zero there, and arcs traced through gaps
     // between its leaves are artefacts — fragments that leave the cluster and come back, or
@@ -167,9 +190,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     // the arms leaving the neighbourhood decide the topology.
     let mut dropped = vec![false; arcs.len()];
     for c in 0..n_clusters {
-        let h = hull[c];
-        let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
-        let g = [h[0] - wt, h[1] + wt, h[2] - wr, h[3] + wr];
+        let g = grown(hull[c]);
         let near = |q: &[f64; 2]| q[0] >= g[0] && q[0] <= g[1] && q[1] >= g[2] && q[1] <= g[3];
         let inside: Vec<usize> = (0..arcs.len())
             .filter(|&i| !dropped[i] && near(&arcs[i].ends[0].p) && near(&arcs[i].ends[1].p))
@@ -220,6 +241,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     let mut node_id = vec![usize::MAX; n_clusters];
     for (c, ends) in attached.iter().enumerate() {
         match ends.len() {
+            0 if no_critical_point(cells, grown(hull[c]), node_pt[c]) => {}
             0 => out.isolated.push(node_pt[c]),
             2 => {
                 link[ends[0]] = Link::End(ends[1]);
@@ -266,6 +288,30 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 _ => break,
             }
         }
+    }
+    // An arc both of whose ends found nothing (no partner, no cluster, not on the border),
+    // and that is no longer than its ends are uncertain, is rounding debris: a patch saw the
+    // zero set passing within rounding of its corner (through the corner itself, traced by
+    // the patches on either side) and cut the corner with a duplicate of it.
+    let on_dom_border =
+        |q: [f64; 2]| q[0] == dom[0] || q[0] == dom[1] || q[1] == dom[2] || q[1] == dom[3];
+    for (i, a) in arcs.iter().enumerate() {
+        let loose = |e: usize| link[e] == Link::Free && !on_dom_border(end_of(e).p);
+        if dropped[i] || !loose(2 * i) || !loose(2 * i + 1) {
+            continue;
+        }
+        let (lo, hi) = a.pts.iter().fold(
+            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+            |(lo, hi), q| {
+                (
+                    [lo[0].min(q[0]), lo[1].min(q[1])],
+                    [hi[0].max(q[0]), hi[1].max(q[1])],
+                )
+            },
+        );
+        let size = ((hi[0] - lo[0]) / ext[0]).max((hi[1] - lo[1]) / ext[1]);
+        let (x, y) = (&a.ends[0], &a.ends[1]);
+        dropped[i] = size <= MATCH_TOL.max(ROOT_SLACK * (x.unc + y.unc) / unit);
     }
     out.lines = walk(arcs, &link, &out.singular, dropped);
     // An open piece shorter than the matching tolerance that ends nowhere (neither on the
@@ -416,6 +462,86 @@ impl<'a> LeafIndex<'a> {
     }
 }
 
+/// Joins ends of `ids` in pairs: each, in turn, with the closest still unpaired later one
+/// that `close` accepts (`close` gives the distance). Returns which were paired.
+fn pair_closest(
+    ids: &[usize],
+    close: &dyn Fn(usize, usize) -> Option<f64>,
+    link: &mut [Link],
+) -> Vec<bool> {
+    let mut paired = vec![false; ids.len()];
+    for x in 0..ids.len() {
+        if paired[x] {
+            continue;
+        }
+        let mut best = None::<(f64, usize)>;
+        for y in x + 1..ids.len() {
+            if paired[y] {
+                continue;
+            }
+            if let Some(d) = close(ids[x], ids[y]) {
+                if best.is_none_or(|b| d < b.0) {
+                    best = Some((d, y));
+                }
+            }
+        }
+        if let Some((_, y)) = best {
+            paired[x] = true;
+            paired[y] = true;
+            link[ids[x]] = Link::End(ids[y]);
+            link[ids[y]] = Link::End(ids[x]);
+        }
+    }
+    paired
+}
+
+/// A hull grown by its own size on every side: the neighbourhood of a cluster.
+fn grown(h: [f64; 4]) -> [f64; 4] {
+    let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
+    [h[0] - wt, h[1] + wt, h[2] - wr, h[3] + wr]
+}
+
+/// Whether one partial derivative of `F` has one trusted sign on all of the box `g`: then `F`
+/// is strictly monotone along every line of `g` in that direction, so no zero of `F` in `g` is
+/// isolated and no closed curve of zeros lies in `g`.
+///
+/// A cluster with no arcs attached is reported as an isolated point (or a loop below the
+/// tolerance), which needs just that. Its leaves are flat — `|F|` below its rounding bound —
+/// but flatness alone proves nothing: beside the arms of a crossing the flat region is a band
+/// along each arm (where `F` is the product of the distances to the lines, narrowing as
+/// `1/distance` from the crossing), and a column of leaves inside such a band, just beside the
+/// arm, holds no zero at all while `∇F` there is far above its rounding level.
+fn no_critical_point(cells: &[Patch], g: [f64; 4], at: [f64; 2]) -> bool {
+    let err = |cell: &Patch| 4.0 * (cell.pt + cell.pr + 2) as f64 * EPS * cell.max_abs();
+    // The partial at `at` (a point of `g`) is within the range of the coefficients the proof
+    // needs above `2 err`; where it is not even above `err` (the evaluation's own error is
+    // below a quarter of that), the proof cannot succeed and is not tried: at a crossing or
+    // a degenerate corner it would always fail.
+    let inside = |c: &&Patch| at[0] >= c.t0 && at[0] <= c.t1 && at[1] >= c.r0 && at[1] <= c.r1;
+    let hopeless = cells.iter().find(inside).map(|cell| {
+        let d = cell.eval_grad(at[0], at[1]);
+        let e = err(cell);
+        [
+            d[1].abs() * (cell.t1 - cell.t0) <= e * cell.pt as f64,
+            d[2].abs() * (cell.r1 - cell.r0) <= e * cell.pr as f64,
+        ]
+    });
+    (0..2).any(|k| {
+        if hopeless.is_some_and(|h| h[k]) {
+            return false;
+        }
+        let mut sign = 0i8;
+        for cell in cells {
+            match cell.partial_sign(k, g, err(cell)) {
+                None => {}
+                Some(s) if s != 0 && (sign == 0 || s == sign) => sign = s,
+                Some(_) => return false,
+            }
+        }
+        sign != 0
+    })
+}
+
 /// Newton on `∇F = 0` from `x`, with the Hessian from central differences of the exact
 /// gradient; `None` if it leaves the (doubled) box. (At a degenerate critical point, where
 /// F vanishes to higher order, it only creeps; the last iterate is returned.)
@@ -535,10 +661,6 @@ fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) -> Clusters {
         }
     }
     let roots: Vec<usize> = (0..n).filter(|&i| hull[i].is_some()).collect();
-    let grown = |h: [f64; 4]| {
-        let (w, v) = (h[1] - h[0], h[3] - h[2]);
-        [h[0] - w, h[1] + w, h[2] - v, h[3] + v]
-    };
     let meet =
         |g: [f64; 4], h: [f64; 4]| h[0] <= g[1] && g[0] <= h[1] && h[2] <= g[3] && g[2] <= h[3];
     // Bounded: each pass merges two clusters or stops.

@@ -235,7 +235,7 @@ impl Tracer<'_> {
             let at = |x: f64| if along_t { [x, fixed] } else { [fixed, x] };
             // Index of the partial derivative in the running variable in `eval_grad`.
             let k = if along_t { 1 } else { 2 };
-            let x0 = secant(lo, hi, coefs[0], coefs[coefs.len() - 1]);
+            let x0 = polygon_crossing(lo, hi, &coefs, err);
             let x = bracketed(
                 |x| {
                     let [t, r] = at(x);
@@ -437,13 +437,25 @@ struct Vtx {
     tan: Option<[f64; 2]>,
 }
 
-/// Where the line through `(a, fa)`, `(b, fb)` crosses zero (a start for edge roots).
-fn secant(a: f64, b: f64, fa: f64, fb: f64) -> f64 {
-    if fa == fb {
-        0.5 * (a + b)
+/// Where the control polygon of the Bernstein coefficients `c` of an edge from `a` to `b`
+/// crosses zero at the one sign variation of [`variations`] (the start for its edge root).
+///
+/// Not the chord between the end values: with a corner value within rounding of zero (a
+/// curve passing through the corner, seen by the patch across) and the variation at the other
+/// end, the chord crosses zero at that corner, where `|F|` is at rounding level, so the solve
+/// stopped there at once and took the corner's curve for the one the variation counts — an arc
+/// bridging two arms beside a crossing, and a branch end left with no partner.
+fn polygon_crossing(a: f64, b: f64, c: &[f64], err: f64) -> f64 {
+    let n = c.len() - 1;
+    let Some(i) = (0..n).find(|&i| vsign(c[i], err) != vsign(c[i + 1], err)) else {
+        return 0.5 * (a + b);
+    };
+    let w = if c[i] == c[i + 1] {
+        0.5
     } else {
-        a + (b - a) * fa / (fa - fb)
-    }
+        (c[i] / (c[i] - c[i + 1])).clamp(0.0, 1.0)
+    };
+    a + (b - a) * (i as f64 + w) / n as f64
 }
 
 /// Distance of `z` from the chord `x`–`y` point at fraction `w`, or from the chord line when

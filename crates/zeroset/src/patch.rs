@@ -168,6 +168,59 @@ impl Patch {
             .flat_map(move |i| (0..self.pr).map(move |j| self.c[i * w + j + 1] - self.c[i * w + j]))
     }
 
+    /// The same polynomial on the part of the patch's box inside `bx` (`None` when they do
+    /// not overlap). The new ends come from de Casteljau splits, so they may differ from
+    /// those of `bx` by rounding.
+    pub(crate) fn restrict(&self, bx: [f64; 4]) -> Option<Patch> {
+        let (a, b) = (bx[0].max(self.t0), bx[1].min(self.t1));
+        let (c, d) = (bx[2].max(self.r0), bx[3].min(self.r1));
+        if !(a <= b && c <= d) {
+            return None;
+        }
+        let mut p = self.clone();
+        if a > p.t0 {
+            p = p.split_t((a - p.t0) / (p.t1 - p.t0)).1;
+        }
+        if b < p.t1 {
+            p = p.split_t((b - p.t0) / (p.t1 - p.t0)).0;
+        }
+        if c > p.r0 {
+            p = p.split_r((c - p.r0) / (p.r1 - p.r0)).1;
+        }
+        if d < p.r1 {
+            p = p.split_r((d - p.r0) / (p.r1 - p.r0)).0;
+        }
+        Some(p)
+    }
+
+    /// The trusted sign of the partial derivative in `t` (`k = 0`) or `r` (`k = 1`) on the
+    /// part of the patch's box inside `bx`: `+1` or `−1` when all its Bernstein coefficients
+    /// there have that sign beyond their rounding bound, else 0. `err` bounds the error of
+    /// this patch's coefficients. `None` when the boxes do not overlap.
+    pub(crate) fn partial_sign(&self, k: usize, bx: [f64; 4], err: f64) -> Option<i8> {
+        let deg = if k == 0 { self.pt } else { self.pr };
+        if deg == 0 {
+            // Constant in that direction: the partial vanishes.
+            return self.restrict(bx).map(|_| 0);
+        }
+        // The hodograph (coefficient differences: a positive multiple of the partial).
+        let d = Patch {
+            pt: if k == 0 { self.pt - 1 } else { self.pt },
+            pr: if k == 0 { self.pr } else { self.pr - 1 },
+            c: if k == 0 {
+                self.dt_coefs().collect()
+            } else {
+                self.dr_coefs().collect()
+            },
+            ..self.clone_box()
+        };
+        let d = d.restrict(bx)?;
+        // Each difference carries twice the coefficients' error; the (at most four) splits
+        // of `restrict` add rounding of the order of the degree per split.
+        let e = 2.0 * err + 8.0 * (d.pt + d.pr + 2) as f64 * EPS * d.max_abs();
+        Some(common_sign(d.c.iter().copied(), e))
+    }
+
     /// Coefficients along edge `e`: 0 bottom (`r = r0`, along t), 1 right (`t = t1`, along r),
     /// 2 top (`r = r1`), 3 left (`t = t0`).
     pub(crate) fn edge(&self, e: usize) -> Vec<f64> {
@@ -422,6 +475,26 @@ mod tests {
             };
             assert!((part.eval(t, r) - f(t, r)).abs() < 1e-14, "{t} {r}");
         }
+    }
+
+    #[test]
+    fn restriction_and_signs_of_the_partials() {
+        // ∂F/∂t = (r − 0.6) + 0.2 t, ∂F/∂r = t − 0.3.
+        let f = |t: f64, r: f64| (t - 0.3) * (r - 0.6) + 0.1 * t * t;
+        let p = sample();
+        let err = 1e-15;
+        let q = p.restrict([0.5, 0.6, 0.7, 0.8]).expect("overlap");
+        assert!((q.eval(0.55, 0.75) - f(0.55, 0.75)).abs() < 1e-14);
+        assert!((q.t0 - 0.5).abs() < 1e-15 && (q.r1 - 0.8).abs() < 1e-15);
+        assert_eq!(p.partial_sign(0, [0.5, 0.6, 0.7, 0.8], err), Some(1));
+        assert_eq!(p.partial_sign(1, [0.5, 0.6, 0.7, 0.8], err), Some(1));
+        assert_eq!(p.partial_sign(1, [0.0, 0.1, 0.7, 0.8], err), Some(-1));
+        // ∂F/∂t vanishes on r = 0.6 − 0.2 t, ∂F/∂r on t = 0.3: no trusted sign across them.
+        assert_eq!(p.partial_sign(0, [0.0, 1.0, 0.4, 0.6], err), Some(0));
+        assert_eq!(p.partial_sign(1, [0.2, 0.4, 0.0, 1.0], err), Some(0));
+        // Partly outside the patch: the part inside counts; wholly outside: nothing.
+        assert_eq!(p.partial_sign(0, [0.5, 1.5, 0.7, 1.5], err), Some(1));
+        assert_eq!(p.partial_sign(0, [1.5, 2.0, 0.0, 1.0], err), None);
     }
 
     #[test]

@@ -68,6 +68,12 @@ pub fn solve_system(
     let mut boxes = 0usize;
     for (cf, cg) in fc.iter().zip(&gc) {
         let (sf, sg) = (cf.max_abs(), cg.max_abs());
+        // Rounding level of a value of the cell polynomials (their coefficients' own error
+        // and the evaluation's), for Newton's stopping test.
+        let noise = [
+            4.0 * (cf.pt + cf.pr + 2) as f64 * EPS * sf,
+            4.0 * (cg.pt + cg.pr + 2) as f64 * EPS * sg,
+        ];
         let mut stack = vec![(cf.clone(), cg.clone(), 0usize)];
         while let Some((pf, pg, depth)) = stack.pop() {
             boxes += 1;
@@ -83,7 +89,7 @@ pub fn solve_system(
             }
             let bx = [pf.t0, pf.t1, pf.r0, pf.r1];
             if unique(&pf, &pg) {
-                if let Some((t, r)) = newton(cf, cg, bx) {
+                if let Some((t, r)) = newton(cf, cg, bx, noise) {
                     sols.push(Solution {
                         t,
                         r,
@@ -103,6 +109,7 @@ pub fn solve_system(
                         bx[2] - min[1],
                         bx[3] + min[1],
                     ],
+                    noise,
                 )
                 .unwrap_or((0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3])));
                 sols.push(Solution {
@@ -177,8 +184,18 @@ fn unique(f: &Patch, g: &Patch) -> bool {
 }
 
 /// Newton on the cell polynomials from the box centre; `Some` when it converges inside the box.
-fn newton(f: &Patch, g: &Patch, bx: [f64; 4]) -> Option<(f64, f64)> {
+///
+/// Converged means the step has come down to the rounding level: a few ulps of the iterate,
+/// or what the rounding `noise` of the values of `f` and `g` moves the Newton step by (the
+/// iterates then wander among a few neighbouring doubles and cannot get closer). The ulp
+/// test alone cannot be met near `t = 0` or `r = 0`, where an ulp is far below the error the
+/// values carry, nor at a shallow crossing, where `J⁻¹` magnifies that error. The converged
+/// iterate may lie that far outside the box (a root on its border, met from both sides).
+fn newton(f: &Patch, g: &Patch, bx: [f64; 4], noise: [f64; 2]) -> Option<(f64, f64)> {
     let (mut t, mut r) = (0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3]));
+    let inside = |t: f64, r: f64, st: f64, sr: f64| {
+        t >= bx[0] - st && t <= bx[1] + st && r >= bx[2] - sr && r <= bx[3] + sr
+    };
     for _ in 0..60 {
         let a = f.eval_grad(t, r);
         let b = g.eval_grad(t, r);
@@ -188,18 +205,21 @@ fn newton(f: &Patch, g: &Patch, bx: [f64; 4]) -> Option<(f64, f64)> {
         }
         let dt = (a[0] * b[2] - a[2] * b[0]) / det;
         let dr = (a[1] * b[0] - a[0] * b[1]) / det;
+        // What errors of `noise` in the values move the step by.
+        let nt = (noise[0] * b[2].abs() + noise[1] * a[2].abs()) / det.abs();
+        let nr = (noise[0] * b[1].abs() + noise[1] * a[1].abs()) / det.abs();
         t -= dt;
         r -= dr;
-        if !(t >= bx[0] && t <= bx[1] && r >= bx[2] && r <= bx[3]) {
-            return None;
-        }
-        let small = dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(bx[1] - bx[0])
-            && dr.abs() <= 4.0 * f64::EPSILON * r.abs().max(bx[3] - bx[2]);
-        if small {
+        let small = dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(bx[1] - bx[0]) + nt
+            && dr.abs() <= 4.0 * f64::EPSILON * r.abs().max(bx[3] - bx[2]) + nr;
+        if small && inside(t, r, nt, nr) {
             return Some((t, r));
         }
+        if !inside(t, r, 0.0, 0.0) {
+            return None;
+        }
     }
-    // No quadratic convergence: accept only with a tiny final step (rounding-level residual).
+    // No convergence in 60 steps.
     None
 }
 

@@ -55,37 +55,91 @@ proptest! {
     }
 }
 
+/// Two circles (degree (2, 2) functions): their 0 or 2 intersection points, each certified
+/// and once, against the analytic solution (tangent pairs and points near the border
+/// excluded).
+fn circle_pair(cx: f64, cy: f64, r1: f64, dx: f64, dy: f64, r2: f64) -> Result<(), TestCaseError> {
+    let d = (dx - cx).hypot(dy - cy);
+    prop_assume!(d > 1e-3);
+    prop_assume!((d - (r1 + r2)).abs() > 1e-3 && (d - (r1 - r2).abs()).abs() > 1e-3);
+    let mut expect = Vec::new();
+    if d < r1 + r2 && d > (r1 - r2).abs() {
+        let a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d);
+        let h = (r1 * r1 - a * a).sqrt();
+        let (ux, uy) = ((dx - cx) / d, (dy - cy) / d);
+        let (mx, my) = (cx + a * ux, cy + a * uy);
+        expect.push([mx - h * uy, my + h * ux]);
+        expect.push([mx + h * uy, my - h * ux]);
+    }
+    for q in &expect {
+        prop_assume!(q.iter().all(|&x| (0.001..0.999).contains(&x)));
+    }
+    let f = circle(cx, cy, r1, UNIT);
+    let g = circle(dx, dy, r2, UNIT);
+    let s = solve_system(&f, &g, &SystemOptions::default()).unwrap();
+    prop_assert_eq!(s.len(), expect.len(), "{:?} vs {:?}", s, expect);
+    for q in &expect {
+        let hit: Vec<_> = s
+            .iter()
+            .filter(|x| (x.t - q[0]).hypot(x.r - q[1]) < 1e-9)
+            .collect();
+        prop_assert_eq!(hit.len(), 1, "{:?} not found once in {:?}", q, s);
+        prop_assert!(hit[0].certified, "{:?} not certified in {:?}", q, s);
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
-    /// Two random circles (degree (2, 2) functions): their 0 or 2 intersection points, each
-    /// certified and once, against the analytic solution (tangent pairs and points near the
-    /// border excluded).
     #[test]
     fn circle_pairs(cx in 0.2..0.8f64, cy in 0.2..0.8f64, r1 in 0.05..0.4f64,
                     dx in 0.2..0.8f64, dy in 0.2..0.8f64, r2 in 0.05..0.4f64) {
-        let d = (dx - cx).hypot(dy - cy);
-        prop_assume!(d > 1e-3);
-        prop_assume!((d - (r1 + r2)).abs() > 1e-3 && (d - (r1 - r2).abs()).abs() > 1e-3);
-        let mut expect = Vec::new();
-        if d < r1 + r2 && d > (r1 - r2).abs() {
-            let a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d);
-            let h = (r1 * r1 - a * a).sqrt();
-            let (ux, uy) = ((dx - cx) / d, (dy - cy) / d);
-            let (mx, my) = (cx + a * ux, cy + a * uy);
-            expect.push([mx - h * uy, my + h * ux]);
-            expect.push([mx + h * uy, my - h * ux]);
-        }
-        for q in &expect {
-            prop_assume!(q.iter().all(|&x| (0.001..0.999).contains(&x)));
-        }
-        let f = circle(cx, cy, r1, UNIT);
-        let g = circle(dx, dy, r2, UNIT);
-        let s = solve_system(&f, &g, &SystemOptions::default()).unwrap();
-        prop_assert_eq!(s.len(), expect.len(), "{:?} vs {:?}", s, expect);
-        for q in &expect {
-            let hit: Vec<_> = s.iter().filter(|x| (x.t - q[0]).hypot(x.r - q[1]) < 1e-9).collect();
-            prop_assert_eq!(hit.len(), 1, "{:?} not found once in {:?}", q, s);
-            prop_assert!(hit[0].certified);
-        }
+        circle_pair(cx, cy, r1, dx, dy, r2)?;
+    }
+}
+
+/// Circle pairs whose second point Newton reached but never called converged: its stopping
+/// test asked for a step of a few ulps of the iterate, while the rounding of the values
+/// moves the step by more where a coordinate is small (`t ≈ 0.01`: steps of ~1e-16 against
+/// a bound of ~9e-18) or the crossing is shallow (1°, 4.5°). The iterates wandered among
+/// neighbouring doubles for all 60 steps, box after box, down to the size tolerance, and the
+/// point came out uncertified (19 in 10⁶ random pairs).
+#[test]
+fn circle_pairs_meeting_near_the_border_or_at_a_shallow_angle_are_certified() {
+    for c in [
+        [
+            0.3417113891752065,
+            0.5643765318043283,
+            0.3789116979156605,
+            0.26662292018245737,
+            0.5651619620713388,
+            0.31483258219986954,
+        ],
+        [
+            0.666790276267832,
+            0.4579769980829911,
+            0.3676314610936001,
+            0.6720687019398086,
+            0.4659332267612281,
+            0.3744414497996107,
+        ],
+        [
+            0.22983379603751963,
+            0.697799986205178,
+            0.23246997566754574,
+            0.22713653124127564,
+            0.6479572020023017,
+            0.2517109585665094,
+        ],
+        [
+            0.4582258988533653,
+            0.5692162903258732,
+            0.294162302431525,
+            0.4484095171191998,
+            0.5293660957960232,
+            0.3272165494955422,
+        ],
+    ] {
+        circle_pair(c[0], c[1], c[2], c[3], c[4], c[5]).unwrap();
     }
 }

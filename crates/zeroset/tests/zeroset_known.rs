@@ -222,87 +222,197 @@ fn crossing(l: [f64; 3], m: [f64; 3]) -> Option<[f64; 2]> {
     })
 }
 
+/// Three lines through the square (at least 15° apart, crossings inside and apart
+/// from each other and from the border, or outside): every crossing is a singular point,
+/// every point of every line is covered, every vertex lies on a line, and every branch
+/// end is on the border or at a crossing.
+///
+/// (Each line is one branch through its crossings, with exactly one singular point per
+/// crossing, in all but about two cases in ten thousand: within ~1e-5 of a crossing the flat
+/// region, where |F| is below its rounding bound, can come out of the subdivision in
+/// pieces along an arm; a piece beyond the reach of the crossing's own becomes a second
+/// singular point and the arm is cut there, or (rarer) the arms are paired wrongly and a
+/// polyline turns from one line into another at the crossing. What is asserted allows
+/// that — extra singular points only within 1e-5 of a crossing, at most two extra
+/// branches per crossing, branches may change line only at a crossing — and nothing
+/// more.)
+fn line_arrangement(p: &[f64], a: &[f64]) -> Result<(), TestCaseError> {
+    let lines: Vec<[f64; 3]> = (0..3)
+        .map(|i| {
+            let (s, c) = a[i].sin_cos();
+            // Through (p[2i], p[2i+1]) with direction (c, s): normal (−s, c).
+            [-s, c, s * p[2 * i] - c * p[2 * i + 1]]
+        })
+        .collect();
+    let mut inside = Vec::new();
+    for i in 0..3 {
+        for j in i + 1..3 {
+            let mut da = (a[i] - a[j]).abs();
+            da = da.min(std::f64::consts::PI - da);
+            prop_assume!(da > 15f64.to_radians());
+            if let Some(q) = crossing(lines[i], lines[j]) {
+                let margin = q
+                    .iter()
+                    .map(|&x| x.min(1.0 - x))
+                    .fold(f64::INFINITY, f64::min);
+                prop_assume!(!(-0.05..=0.05).contains(&margin));
+                if margin > 0.0 {
+                    inside.push(q);
+                }
+            }
+        }
+    }
+    for i in 0..inside.len() {
+        for j in i + 1..inside.len() {
+            prop_assume!((inside[i][0] - inside[j][0]).hypot(inside[i][1] - inside[j][1]) > 0.05);
+        }
+    }
+    let mut f = plane(lines[0][0], lines[0][1], lines[0][2], UNIT);
+    for l in &lines[1..] {
+        f = f.mul(&plane(l[0], l[1], l[2], UNIT)).unwrap();
+    }
+    let z = run(&f);
+    for q in &inside {
+        prop_assert!(
+            z.singular
+                .iter()
+                .any(|s| (s[0] - q[0]).hypot(s[1] - q[1]) < 1e-6),
+            "crossing {q:?} lost"
+        );
+    }
+    for s in &z.singular {
+        prop_assert!(
+            inside
+                .iter()
+                .any(|q| (s[0] - q[0]).hypot(s[1] - q[1]) < 1e-5),
+            "singular point {s:?} at no crossing"
+        );
+    }
+    prop_assert!(z.isolated.is_empty(), "isolated points {:?}", z.isolated);
+    prop_assert!(
+        z.branches.len() >= 3 && z.branches.len() <= 3 + 2 * inside.len(),
+        "{} branches",
+        z.branches.len()
+    );
+    let border = |p: [f64; 2]| p.iter().any(|&x| x == 0.0 || x == 1.0);
+    let near_crossing = |p: [f64; 2]| {
+        inside
+            .iter()
+            .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) < 1e-5)
+    };
+    for b in &z.branches {
+        for p in [b.pts[0], b.pts[b.pts.len() - 1]] {
+            prop_assert!(border(p) || near_crossing(p), "branch end {p:?} nowhere");
+        }
+    }
+    for b in &z.branches {
+        for p in &b.pts {
+            let off = lines
+                .iter()
+                .map(|l| (l[0] * p[0] + l[1] * p[1] + l[2]).abs())
+                .fold(f64::INFINITY, f64::min);
+            prop_assert!(off < 1e-6, "vertex {p:?} off the lines by {off:e}");
+        }
+    }
+    for l in &lines {
+        // Points of the line inside the square are covered.
+        for k in 0..=50 {
+            let t = k as f64 / 50.0;
+            // Parametrise by t when the line is not vertical, else by r.
+            let q = if l[1].abs() > 0.3 {
+                [t, -(l[0] * t + l[2]) / l[1]]
+            } else {
+                [-(l[1] * t + l[2]) / l[0], t]
+            };
+            if q.iter().all(|&x| (0.0..=1.0).contains(&x)) {
+                prop_assert!(
+                    z.branches
+                        .iter()
+                        .any(|b| dist_to_polyline(q, &b.pts) < 2e-3),
+                    "{q:?} not covered"
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
-    /// Three random lines through the square (at least 15° apart, crossings inside and apart
-    /// from each other and from the border, or outside): every crossing is a singular point,
-    /// every point of every line is covered, every vertex lies on a line, and every branch
-    /// end is on the border or at a crossing.
-    ///
-    /// (Each line is one branch through its crossings, with exactly one singular point per
-    /// crossing, in all but a few cases per thousand: within ~1e-5 of a crossing the flat
-    /// region, where |F| is below its rounding bound, can come out of the subdivision in
-    /// pieces along an arm; a piece beyond the reach of the crossing's own becomes a second
-    /// singular point and the arm is cut there, or (rarer) the arms are paired wrongly and a
-    /// polyline turns from one line into another at the crossing. What is asserted allows
-    /// that — extra singular points only within 1e-5 of a crossing, at most two extra
-    /// branches per crossing, branches may change line only at a crossing — and nothing
-    /// more.)
     #[test]
     fn random_line_arrangements(p in prop::collection::vec(0.2..0.8f64, 6), a in prop::collection::vec(0.0..std::f64::consts::PI, 3)) {
-        let lines: Vec<[f64; 3]> = (0..3)
-            .map(|i| {
-                let (s, c) = a[i].sin_cos();
-                // Through (p[2i], p[2i+1]) with direction (c, s): normal (−s, c).
-                [-s, c, s * p[2 * i] - c * p[2 * i + 1]]
-            })
-            .collect();
-        let mut inside = Vec::new();
-        for i in 0..3 {
-            for j in i + 1..3 {
-                let mut da = (a[i] - a[j]).abs();
-                da = da.min(std::f64::consts::PI - da);
-                prop_assume!(da > 15f64.to_radians());
-                if let Some(q) = crossing(lines[i], lines[j]) {
-                    let margin = q.iter().map(|&x| x.min(1.0 - x)).fold(f64::INFINITY, f64::min);
-                    prop_assume!(!(-0.05..=0.05).contains(&margin));
-                    if margin > 0.0 {
-                        inside.push(q);
-                    }
-                }
-            }
-        }
-        for i in 0..inside.len() {
-            for j in i + 1..inside.len() {
-                prop_assume!((inside[i][0] - inside[j][0]).hypot(inside[i][1] - inside[j][1]) > 0.05);
-            }
-        }
-        let mut f = plane(lines[0][0], lines[0][1], lines[0][2], UNIT);
-        for l in &lines[1..] {
-            f = f.mul(&plane(l[0], l[1], l[2], UNIT)).unwrap();
-        }
-        let z = run(&f);
-        for q in &inside {
-            prop_assert!(z.singular.iter().any(|s| (s[0] - q[0]).hypot(s[1] - q[1]) < 1e-6), "crossing {q:?} lost");
-        }
-        for s in &z.singular {
-            prop_assert!(inside.iter().any(|q| (s[0] - q[0]).hypot(s[1] - q[1]) < 1e-5), "singular point {s:?} at no crossing");
-        }
-        prop_assert!(z.isolated.is_empty());
-        prop_assert!(z.branches.len() >= 3 && z.branches.len() <= 3 + 2 * inside.len(), "{} branches", z.branches.len());
-        let border = |p: [f64; 2]| p.iter().any(|&x| x == 0.0 || x == 1.0);
-        let near_crossing = |p: [f64; 2]| inside.iter().any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) < 1e-5);
-        for b in &z.branches {
-            for p in [b.pts[0], b.pts[b.pts.len() - 1]] {
-                prop_assert!(border(p) || near_crossing(p), "branch end {p:?} nowhere");
-            }
-        }
-        for b in &z.branches {
-            for p in &b.pts {
-                let off = lines.iter().map(|l| (l[0] * p[0] + l[1] * p[1] + l[2]).abs()).fold(f64::INFINITY, f64::min);
-                prop_assert!(off < 1e-6, "vertex {p:?} off the lines by {off:e}");
-            }
-        }
-        for l in &lines {
-            // Points of the line inside the square are covered.
-            for k in 0..=50 {
-                let t = k as f64 / 50.0;
-                // Parametrise by t when the line is not vertical, else by r.
-                let q = if l[1].abs() > 0.3 { [t, -(l[0] * t + l[2]) / l[1]] } else { [-(l[1] * t + l[2]) / l[0], t] };
-                if q.iter().all(|&x| (0.0..=1.0).contains(&x)) {
-                    prop_assert!(z.branches.iter().any(|b| dist_to_polyline(q, &b.pts) < 2e-3), "{q:?} not covered");
-                }
-            }
-        }
+        line_arrangement(&p, &a)?;
+    }
+}
+
+/// Arrangements that failed: at each, two arms of a crossing meet at a small angle to a grid
+/// line, and within ~1e-5 of the crossing F is below its rounding bound over a band along
+/// each arm.
+///
+/// - A column of flat leaves inside the band of one arm, 1.2e-9 beside it, had no arc
+///   attached and came out as an isolated point 6.4e-6 from the crossing, though ∂F/∂t is
+///   −1.1e-6 all over it (F has no critical point there, so no isolated zero and no loop).
+/// - A patch beside a crossing held one arm at its corner (F within rounding there) and the
+///   other entering through the same edge; the edge root was sought from the chord between
+///   the end values, which starts at that corner, and the corner zero was taken for the root
+///   of the sign change. The arc bridged the two arms and the arm's end below had no partner.
+/// - An arm passing within rounding of a patch corner was seen on the two lines through it
+///   by the patches on either side, 8e-8 apart; the border of the crossing's grown hull ran
+///   between the two ends, so one went to the crossing and the other ended a branch 1.2e-5
+///   from it.
+/// - An arm passing through a patch corner (within rounding) was traced by the patches on
+///   either side, and the patch diagonally across cut the corner with a duplicate 2e-7 long,
+///   within the uncertainty of its two ends (1.8e-7 and 2.6e-8), which found nothing to meet:
+///   a piece of debris ending nowhere, 1.5e-5 from the crossing.
+#[test]
+fn line_arrangements_that_failed() {
+    let cases: [([f64; 6], [f64; 3]); 4] = [
+        (
+            [
+                0.37692335199058014,
+                0.3315670999995136,
+                0.4112656074539773,
+                0.2,
+                0.21931415093892334,
+                0.6338232010618492,
+            ],
+            [1.5487684403891682, 2.0723246717697346, 0.8236772969354804],
+        ),
+        (
+            [
+                0.7536440403572238,
+                0.2946764027360524,
+                0.319045177330317,
+                0.6159995382815101,
+                0.40552446284559696,
+                0.7334768137755336,
+            ],
+            [2.2567206084812304, 0.018648290853216603, 1.681587447701493],
+        ),
+        (
+            [
+                0.4198709609397856,
+                0.6981371367242156,
+                0.2948165412804193,
+                0.30977828023924264,
+                0.5396750568991904,
+                0.2785145871861411,
+            ],
+            [1.0935689123606356, 3.049613557622173, 2.682199747312916],
+        ),
+        (
+            [
+                0.507693128792043,
+                0.6425276382172478,
+                0.5797369409387482,
+                0.7487752691199887,
+                0.24905335299221262,
+                0.6940160831899791,
+            ],
+            [0.5138878375110767, 0.9625656626829238, 0.14038493412677638],
+        ),
+    ];
+    for (p, a) in cases {
+        line_arrangement(&p, &a).unwrap();
     }
 }

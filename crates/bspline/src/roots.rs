@@ -75,6 +75,18 @@ pub struct Root {
 /// Unit roundoff.
 const EPS: f64 = f64::EPSILON * 0.5;
 
+/// The root searches take scalar functions only.
+pub(crate) fn require_scalar(f: &BSpline) -> Result<()> {
+    if f.dim() == 1 {
+        Ok(())
+    } else {
+        Err(Error::DimensionMismatch {
+            expected: 1,
+            got: f.dim(),
+        })
+    }
+}
+
 /// All roots of the scalar function `f` in `[a, b]`, sorted.
 ///
 /// ```
@@ -87,12 +99,7 @@ const EPS: f64 = f64::EPSILON * 0.5;
 /// assert!((r[0].u - 0.2).abs() < 1e-12 && (r[1].u - 0.7).abs() < 1e-12);
 /// ```
 pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec<Root>> {
-    if f.dim() != 1 {
-        return Err(Error::DimensionMismatch {
-            expected: 1,
-            got: f.dim(),
-        });
-    }
+    require_scalar(f)?;
     if !(opts.tol.is_finite() && opts.tol > 0.0) {
         return Err(Error::NotFinite {
             what: "tolerance",
@@ -138,12 +145,7 @@ pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec
 /// assert!((u - 0.5).abs() < 1e-6);
 /// ```
 pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Option<f64>> {
-    if f.dim() != 1 {
-        return Err(Error::DimensionMismatch {
-            expected: 1,
-            got: f.dim(),
-        });
-    }
+    require_scalar(f)?;
     let g = f.restrict(a, b)?;
     let scale = g.max_abs_coef();
     if scale == 0.0 {
@@ -204,12 +206,7 @@ pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result
 /// `f` must take the same value at both ends of its domain (within rounding), else
 /// [`Error::NotPeriodic`].
 pub fn find_roots_periodic(f: &BSpline, opts: &RootOptions) -> Result<Vec<Root>> {
-    if f.dim() != 1 {
-        return Err(Error::DimensionMismatch {
-            expected: 1,
-            got: f.dim(),
-        });
-    }
+    require_scalar(f)?;
     let (a, b) = f.domain();
     let period = b - a;
     let (fa, fb) = (f.eval_scalar(a), f.eval_scalar(b));

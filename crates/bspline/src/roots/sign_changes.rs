@@ -10,7 +10,7 @@
 //! `p + 1`, or the seam of a closed domain on which the function is not periodic): those are
 //! added as jumps.
 
-use super::{find_roots, find_roots_periodic, Root, RootKind, RootOptions, EPS};
+use super::{find_roots, find_roots_periodic, require_scalar, Root, RootKind, RootOptions, EPS};
 use crate::error::{Error, Result};
 use crate::spline::BSpline;
 use serde::{Deserialize, Serialize};
@@ -163,12 +163,7 @@ impl Event {
 ///
 /// Errors: those of [`find_roots`] (a function that is not scalar, an invalid tolerance).
 pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<SignChanges> {
-    if f.dim() != 1 {
-        return Err(Error::DimensionMismatch {
-            expected: 1,
-            got: f.dim(),
-        });
-    }
+    require_scalar(f)?;
     let (a, b) = f.domain();
     let period = b - a;
     let (mut roots, periodic) = if closed {

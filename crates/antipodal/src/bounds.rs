@@ -3,7 +3,7 @@
 //! hull property of Bézier pieces with positive weights), and a few operations of interval
 //! arithmetic to combine them.
 
-use crate::fast::Pw;
+use crate::fast::{Pw, ValueSlope};
 use crate::geom::V2;
 use crate::view::View;
 use bspline::{BSpline, Rational};
@@ -95,74 +95,100 @@ impl ArcBounds {
 /// a piece are local enough to prove monotone stretches close to a pair.
 const FINE: usize = 8;
 
-/// Values per overlapped fine piece in [`Enclosure::each`].
-const SAMPLES: usize = 4;
-
 /// The range of a scalar function, or of the length of a vector one, over an interval: in
 /// `O(1)` for each fine piece the interval covers (the hull of the piece's control points)
-/// and `O(degree)` for each it overlaps in part (values across the overlap, widened by the
-/// piece's derivative bound times half their spacing, and by the rounding of the
-/// evaluation).
+/// and `O(degree)` for each it overlaps in part, by Taylor's theorem about the middle `m` of
+/// the overlap (half-width `δ`): `|f(x) − f(m)| ≤ |f′(m)| δ + M₂ δ²/2` with `M₂` the piece's
+/// bound on `|f″|`, widened by the rounding of the two evaluations. Its width exceeds the
+/// function's own variation by a second-order term only, so short intervals close to a pair
+/// get nearly exact ranges.
 #[derive(Debug, Clone)]
 pub(crate) struct Enclosure {
     pw: Pw,
-    lip: Vec<f64>,
+    eval: ValueSlope,
+    /// Per fine piece, a bound on `|f″|`.
+    second: Vec<f64>,
     /// Per fine piece, the range its control points prove.
     hull: Vec<Iv>,
-    /// Per fine piece, the rounding of an evaluation there.
-    rounding: Vec<f64>,
+    /// Per fine piece, the rounding of an evaluation of `f` and of `f′` there.
+    rounding: Vec<(f64, f64)>,
 }
 
 impl Enclosure {
-    pub(crate) fn new(f: &BSpline) -> Self {
+    /// `None` for a function of dimension other than 1 and 2.
+    pub(crate) fn new(f: &BSpline) -> Option<Self> {
         let pw = Pw::new(f).subdivided(FINE);
+        let deriv = pw.derivative();
         let d = pw.dim();
         let hull = (0..pw.pieces())
             .map(|i| points_range(pw.piece(i), d))
             .collect();
+        // Evaluation in the Bernstein basis errs by a few units of rounding per degree, relative
+        // to the largest control point; the derivative's points carry the rounding of their
+        // differences too.
         let eps = 4.0 * (pw.degree() + 2) as f64 * f64::EPSILON;
-        Self {
-            lip: pw.lipschitz(),
+        let rounding = (0..pw.pieces())
+            .map(|i| {
+                let (a, b) = pw.piece_span(i);
+                let slope = pw.degree() as f64 / (b - a) * pw.piece_magnitude(i);
+                (
+                    eps * pw.piece_magnitude(i),
+                    eps * (deriv.piece_magnitude(i) + 2.0 * slope),
+                )
+            })
+            .collect();
+        Some(Self {
+            second: deriv.derivative().norm_bounds(),
             hull,
-            rounding: (0..pw.pieces())
-                .map(|i| eps * pw.piece_magnitude(i))
-                .collect(),
+            rounding,
+            eval: ValueSlope::new(&pw)?,
             pw,
-        }
+        })
+    }
+
+    /// The fine pieces' breakpoints.
+    pub(crate) fn breaks(&self) -> &[f64] {
+        self.pw.breaks()
+    }
+
+    /// `[lo, hi]` lies in one fine piece whose control points (of a vector function) lie in an
+    /// open half-plane, with room for their rounding: the function's direction turns by less
+    /// than π there.
+    pub(crate) fn in_half_plane(&self, lo: f64, hi: f64) -> bool {
+        let i = self.pw.piece_at(lo);
+        let (a, b) = self.pw.piece_span(i);
+        let h = self.hull[i];
+        lo >= a && hi <= b && h.lo > 1e-9 * h.hi
     }
 
     /// The range over `[lo, hi]` (inside the domain), joined into `acc`.
     fn join_range(&self, lo: f64, hi: f64, acc: &mut Iv) {
-        let mut join = |a: f64, b: f64| *acc = Iv::new(acc.lo.min(a), acc.hi.max(b));
         let d = self.pw.dim();
-        // A short interval (within two fine pieces, as close to a pair) gets a few values
-        // across each overlap: the derivative bound then only bridges the gaps between them,
-        // and the enclosure approaches the function's own range.
-        let n = if self.pw.overlaps(lo, hi).nth(2).is_some() {
-            1
-        } else {
-            SAMPLES
+        let norm = |v: [f64; 2]| {
+            if d == 1 {
+                v[0]
+            } else {
+                (v[0] * v[0] + v[1] * v[1]).sqrt()
+            }
         };
-        let mut v = [0.0f64; 3];
+        // Over a long interval a covered piece's hull is close enough; over a short one
+        // (within two fine pieces, as close to a pair) every piece gets the Taylor bound too.
+        let long = self.pw.overlaps(lo, hi).nth(2).is_some();
         for (i, x0, x1) in self.pw.overlaps(lo, hi) {
             let (a, b) = self.pw.piece_span(i);
-            if n == 1 && x0 <= a && x1 >= b {
-                let h = self.hull[i];
-                join(h.lo, h.hi);
-                continue;
-            }
-            let step = (x1 - x0) / n as f64;
-            for j in 0..n {
-                self.pw
-                    .value_in_piece(i, x0 + (j as f64 + 0.5) * step, &mut v);
-                let r = 0.5 * step * self.lip[i] + self.rounding[i];
-                let x = if d == 1 {
-                    v[0]
-                } else {
-                    (v[0] * v[0] + v[1] * v[1]).sqrt()
-                };
-                join(x - r, x + r);
-            }
+            let hull = self.hull[i];
+            let range = if long && x0 <= a && x1 >= b {
+                hull
+            } else {
+                let (m, delta) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
+                let (v, g) = self.eval.eval(i, m);
+                let (rv, rg) = self.rounding[i];
+                let r = (norm(g).abs() + rg) * delta + 0.5 * self.second[i] * delta * delta + rv;
+                let x = norm(v);
+                // Both enclose the range: keep their common part.
+                Iv::new((x - r).max(hull.lo), (x + r).min(hull.hi))
+            };
+            *acc = Iv::new(acc.lo.min(range.lo), acc.hi.max(range.hi));
         }
     }
 }
@@ -194,21 +220,25 @@ fn points_range(c: &[f64], d: usize) -> Iv {
 #[derive(Debug, Clone)]
 pub(crate) struct BoundForms {
     curvature: Enclosure,
-    tangent: Enclosure,
+    pub(crate) tangent: Enclosure,
     weight: Option<Enclosure>,
 }
 
 impl BoundForms {
-    pub(crate) fn new(curve: &Rational, tangent: &BSpline, curvature: &BSpline) -> Self {
+    /// `None` when the forms are not those of a plane curve.
+    pub(crate) fn new(curve: &Rational, tangent: &BSpline, curvature: &BSpline) -> Option<Self> {
         let h = curve.homogeneous();
         let last = h.dim() - 1;
         let w = h.map_points(1, |p, o| o[0] = p[last]);
         let polynomial = w.coefs().iter().all(|&c| c == 1.0);
-        Self {
-            curvature: Enclosure::new(curvature),
-            tangent: Enclosure::new(tangent),
-            weight: (!polynomial).then(|| Enclosure::new(&w)),
-        }
+        Some(Self {
+            curvature: Enclosure::new(curvature)?,
+            tangent: Enclosure::new(tangent)?,
+            weight: match polynomial {
+                true => None,
+                false => Some(Enclosure::new(&w)?),
+            },
+        })
     }
 }
 
@@ -223,7 +253,7 @@ impl View<'_> {
     /// of its chord and end tangents.
     pub(crate) fn arc_bounds(&self, lo: f64, hi: f64) -> Option<ArcBounds> {
         let cert = self.cert.as_ref()?;
-        let forms = cert.bound_forms();
+        let forms = cert.bound_forms()?;
         let (lo, hi) = (lo.min(hi), lo.max(hi));
         let (mut k, mut d, mut w) = (
             Iv::new(f64::INFINITY, f64::NEG_INFINITY),
@@ -313,7 +343,7 @@ mod tests {
     ) {
                 let n = coefs.len() / dim;
                 let f = bspline::BSpline::clamped_uniform(deg, dim, coefs[..n * dim].to_vec()).unwrap();
-                let e = Enclosure::new(&f);
+                let e = Enclosure::new(&f).unwrap();
                 let (lo, hi) = (a.min(1.0 - len.min(1.0)), (a.min(1.0 - len.min(1.0)) + len).min(1.0));
                 let mut iv = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
                 e.join_range(lo, hi, &mut iv);

@@ -90,9 +90,20 @@ impl View<'_> {
         } else {
             (96usize.max(4 * knots.len()), PI / 4.0)
         };
-        let mut us: Vec<f64> = (0..=m)
-            .map(|i| self.a + self.period * i as f64 / m as f64)
-            .collect();
+        // A coarse track steps from one fine piece of the tangent's enclosure to the next,
+        // where the enclosure alone certifies each step.
+        let fine = self
+            .cert
+            .as_ref()
+            .and_then(|c| c.bound_forms())
+            .filter(|_| coarse)
+            .map(|f| f.tangent.breaks());
+        let mut us: Vec<f64> = match fine {
+            Some(b) => b.to_vec(),
+            None => (0..=m)
+                .map(|i| self.a + self.period * i as f64 / m as f64)
+                .collect(),
+        };
         us.extend(knots.iter().copied().filter(|&k| k > self.a && k < self.b));
         us.sort_by(f64::total_cmp);
         us.dedup();
@@ -149,6 +160,12 @@ impl View<'_> {
         };
         let (l, h) = (x0.max(self.a), x1.min(self.b));
         if h <= l {
+            return true;
+        }
+        if cert
+            .bound_forms()
+            .is_some_and(|f| f.tangent.in_half_plane(l, h))
+        {
             return true;
         }
         let mid = axis;

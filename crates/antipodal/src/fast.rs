@@ -64,9 +64,14 @@ impl Pw {
     }
 
     /// Index of the piece holding `u` (the right one at a break, the last one at the end).
-    fn piece_at(&self, u: f64) -> usize {
+    pub(crate) fn piece_at(&self, u: f64) -> usize {
         let n = self.breaks.len() - 1;
         self.breaks.partition_point(|&x| x <= u).clamp(1, n) - 1
+    }
+
+    /// The breakpoints, from the domain's start to its end.
+    pub(crate) fn breaks(&self) -> &[f64] {
+        &self.breaks
     }
 
     /// The number of pieces.
@@ -284,23 +289,42 @@ impl Pw {
         }
     }
 
-    /// Per piece, a bound on `|f′|` there: the largest difference of neighbouring control
-    /// points (Euclidean norm) times `degree / width` (the derivative's control points).
-    pub(crate) fn lipschitz(&self) -> Vec<f64> {
-        let (p, d) = (self.deg, self.dim);
-        (0..self.breaks.len() - 1)
+    /// The derivative, piece by piece: degree `p − 1` with control points `p/h · Δc` (the
+    /// hodograph), exact up to rounding. A constant function gives a zero of degree 0.
+    pub(crate) fn derivative(&self) -> Pw {
+        let (p, d, n) = (self.deg, self.dim, self.breaks.len() - 1);
+        let q = p.max(1) - 1;
+        let mut coefs = Vec::with_capacity(n * (q + 1) * d);
+        for i in 0..n {
+            let (c, h) = (self.piece(i), self.breaks[i + 1] - self.breaks[i]);
+            if p == 0 {
+                coefs.extend(std::iter::repeat_n(0.0, d));
+                continue;
+            }
+            let f = p as f64 / h;
+            coefs.extend(
+                (0..q + 1)
+                    .flat_map(|j| (0..d).map(move |k| f * (c[(j + 1) * d + k] - c[j * d + k]))),
+            );
+        }
+        Pw {
+            breaks: self.breaks.clone(),
+            deg: q,
+            dim: d,
+            coefs,
+            binoms: binomials(q),
+        }
+    }
+
+    /// Per piece, a bound on `|f|` there (Euclidean norm): its largest control point.
+    pub(crate) fn norm_bounds(&self) -> Vec<f64> {
+        let d = self.dim;
+        (0..self.pieces())
             .map(|i| {
-                let c = self.piece(i);
-                let h = self.breaks[i + 1] - self.breaks[i];
-                let big = (0..p)
-                    .map(|j| {
-                        (0..d)
-                            .map(|k| (c[(j + 1) * d + k] - c[j * d + k]).powi(2))
-                            .sum::<f64>()
-                            .sqrt()
-                    })
-                    .fold(0.0, f64::max);
-                big * p as f64 / h
+                self.piece(i)
+                    .chunks_exact(d)
+                    .map(|pt| pt.iter().map(|x| x * x).sum::<f64>().sqrt())
+                    .fold(0.0, f64::max)
             })
             .collect()
     }
@@ -316,35 +340,6 @@ impl Pw {
             let (x0, x1) = (lo.max(self.breaks[i]), hi.min(self.breaks[i + 1]));
             (x1 >= x0).then_some((i, x0, x1))
         })
-    }
-
-    /// The value of piece `i` at `u` in `O(degree)`: Horner's scheme on `t = s/(1 − s)`, or on
-    /// its inverse beyond the middle (the binomial weights are symmetric), so that the ratio
-    /// stays below 1. The rounding is a few units of the largest control point times the degree.
-    pub(crate) fn value_in_piece(&self, i: usize, u: f64, out: &mut [f64]) {
-        let (p, d) = (self.deg, self.dim);
-        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
-        let s = ((u - a) / (b - a)).clamp(0.0, 1.0);
-        let c = self.piece(i);
-        let mirror = s > 0.5;
-        let (t, base) = if mirror { (1.0 - s, s) } else { (s, 1.0 - s) };
-        let ratio = t / base;
-        let pow = base.powi(p as i32);
-        let binoms = &self.binoms[..=p];
-        for (k, o) in out[..d].iter_mut().enumerate() {
-            // Σ c_j C(p, j) s^j (1 − s)^(p−j) = base^p Σ c_j C(p, j) ratio^(j or p − j).
-            let mut acc = 0.0;
-            if mirror {
-                for (j, bj) in binoms.iter().enumerate() {
-                    acc = acc * ratio + c[j * d + k] * bj;
-                }
-            } else {
-                for (j, bj) in binoms.iter().enumerate().rev() {
-                    acc = acc * ratio + c[j * d + k] * bj;
-                }
-            }
-            *o = acc * pow;
-        }
     }
 
     /// The largest magnitude among the control points of piece `i`.
@@ -441,6 +436,78 @@ fn split_right(g: &mut [f64], r: f64) {
     }
 }
 
+/// Value and first derivative of a piecewise Bézier function of dimension 1 or 2 in one
+/// `O(degree)` pass per piece: Horner's scheme on `s/(1 − s)` (or on its inverse beyond the
+/// middle, so that the ratio stays below 1) over control points premultiplied by their
+/// binomial weights. The rounding is a few units of the largest control point times the degree.
+#[derive(Debug, Clone)]
+pub(crate) struct ValueSlope {
+    breaks: Vec<f64>,
+    deg: usize,
+    /// Per piece, the `deg + 1` points `C(deg, j) · c_j` (the second component 0 in dimension 1).
+    value: Vec<[f64; 2]>,
+    /// Per piece, the `deg` points `C(deg − 1, j) · deg/h · (c_{j+1} − c_j)` of the derivative.
+    slope: Vec<[f64; 2]>,
+}
+
+impl ValueSlope {
+    /// `None` in dimensions other than 1 and 2.
+    pub(crate) fn new(f: &Pw) -> Option<Self> {
+        let (p, d) = (f.deg, f.dim);
+        if !(1..=2).contains(&d) {
+            return None;
+        }
+        let point = |c: &[f64], j: usize| [c[j * d], if d == 2 { c[j * d + 1] } else { 0.0 }];
+        let lower = binomials(p.max(1) - 1);
+        let (mut value, mut slope) = (Vec::new(), Vec::new());
+        for i in 0..f.pieces() {
+            let (c, (a, b)) = (f.piece(i), f.piece_span(i));
+            for (j, bj) in f.binoms.iter().enumerate() {
+                let x = point(c, j);
+                value.push([x[0] * bj, x[1] * bj]);
+            }
+            let scale = p as f64 / (b - a);
+            for (j, bj) in lower.iter().enumerate().take(p) {
+                let (x, y) = (point(c, j), point(c, j + 1));
+                let k = scale * bj;
+                slope.push([k * (y[0] - x[0]), k * (y[1] - x[1])]);
+            }
+        }
+        Some(Self {
+            breaks: f.breaks.clone(),
+            deg: p,
+            value,
+            slope,
+        })
+    }
+
+    /// Value and derivative of piece `i` at `u` (clamped into the piece).
+    pub(crate) fn eval(&self, i: usize, u: f64) -> ([f64; 2], [f64; 2]) {
+        let p = self.deg;
+        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+        let s = ((u - a) / (b - a)).clamp(0.0, 1.0);
+        let mirror = s > 0.5;
+        let (t, base) = if mirror { (1.0 - s, s) } else { (s, 1.0 - s) };
+        let ratio = t / base;
+        // Σ c_j C(p, j) s^j (1 − s)^(p−j) = base^p Σ c_j C(p, j) ratio^(j or p − j).
+        let horner = |cs: &[[f64; 2]]| {
+            let step = |acc: [f64; 2], c: &[f64; 2]| [acc[0] * ratio + c[0], acc[1] * ratio + c[1]];
+            if mirror {
+                cs.iter().fold([0.0; 2], step)
+            } else {
+                cs.iter().rev().fold([0.0; 2], step)
+            }
+        };
+        let v = horner(&self.value[i * (p + 1)..(i + 1) * (p + 1)]);
+        let g = horner(&self.slope[i * p..(i + 1) * p]);
+        let pow = if p == 0 { 1.0 } else { base.powi(p as i32 - 1) };
+        (
+            [v[0] * pow * base, v[1] * pow * base],
+            [g[0] * pow, g[1] * pow],
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
@@ -468,6 +535,35 @@ mod tests {
                     "degree {} u {u} j {j}: {a:?} {b:?}",
                     f.degree()
                 );
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// Value and slope of random splines (degrees 1–12, dimensions 1 and 2, subdivided)
+        /// against de Boor's evaluation, anywhere in every piece.
+        #[test]
+        fn value_slope_matches_bspline(
+            deg in 1usize..=12,
+            dim in 1usize..=2,
+            coefs in proptest::collection::vec(-3.0f64..3.0, 60),
+            fine in 1usize..=8,
+            xs in proptest::collection::vec(0.0f64..=1.0, 20),
+        ) {
+            let n = (coefs.len() / dim).min(deg + 1 + 5);
+            let f = BSpline::clamped_uniform(deg, dim, coefs[..n * dim].to_vec()).unwrap();
+            let pw = Pw::new(&f).subdivided(fine);
+            let vs = ValueSlope::new(&pw).unwrap();
+            for &x in &xs {
+                let i = pw.piece_at(x);
+                let (v, g) = vs.eval(i, x);
+                let mut want = [0.0; 4];
+                f.eval_derivs(x, 1, &mut want[..2 * dim]);
+                for c in 0..dim {
+                    let (wv, wg) = (want[c], want[dim + c]);
+                    proptest::prop_assert!((v[c] - wv).abs() <= 1e-11 * (1.0 + wv.abs()), "value {c} at {x}: {} vs {wv}", v[c]);
+                    proptest::prop_assert!((g[c] - wg).abs() <= 1e-9 * (1.0 + wg.abs()), "slope {c} at {x}: {} vs {wg}", g[c]);
+                }
             }
         }
     }

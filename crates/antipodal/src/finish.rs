@@ -208,8 +208,7 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
 /// could be proven (the caller then cuts by the signs of θ, Table 1's ε).
 ///
 /// The cut is tried at the section's end first and then ever closer to the pair: the ranges
-/// tighten as the stretch shrinks. The stretch starts a few tolerances before `s`, so that
-/// it holds the exact pair too, and monotone θ then has no other zero on it.
+/// tighten as the stretch shrinks.
 pub(crate) fn certified_rest<'a>(
     p: &Pair<'a>,
     s: f64,
@@ -225,14 +224,9 @@ pub(crate) fn certified_rest<'a>(
     if room.is_nan() || room <= 0.0 {
         return Some(None);
     }
-    // From a few tolerances behind the pair, so that the stretch holds the exact pair too.
-    let back = 4.0 * p.vs.tol;
-    let behind = s - dir * back;
-    let from = (
-        behind,
-        p.opposite_within(behind, t, if dir > 0.0 { p.ta } else { p.tb }),
-    );
-    let (e, te) = monotone_reach(p, from, (end_s, end_t))?;
+    // From the pair itself: the exact pair lies within the tolerance of it, either on the
+    // proven stretch (its only zero there) or behind it, closer than anything resolved.
+    let (e, te) = monotone_reach(p, (s, t), (end_s, end_t))?;
     if e == end_s {
         return Some(None);
     }

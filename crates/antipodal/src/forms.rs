@@ -30,7 +30,7 @@ pub struct SymbolicForms {
     /// The curvature numerator (its roots are the inflections).
     pub(crate) curvature: BSpline,
     /// Enclosures of the curvature over intervals, built on first use.
-    bounds: OnceLock<BoundForms>,
+    bounds: OnceLock<Option<BoundForms>>,
     /// The curve's size (see `View::scale`), measured on first use.
     size: OnceLock<f64>,
     /// Its sign changes, with the options and closedness they were found with.
@@ -80,9 +80,10 @@ impl SymbolicForms {
     }
 
     /// The enclosures of [`crate::view::View::arc_bounds`].
-    pub(crate) fn bound_forms(&self) -> &BoundForms {
+    pub(crate) fn bound_forms(&self) -> Option<&BoundForms> {
         self.bounds
             .get_or_init(|| BoundForms::new(&self.curve, &self.tangent, &self.curvature))
+            .as_ref()
     }
 
     /// The sign changes of the curvature numerator over the domain (closed: a circle), kept

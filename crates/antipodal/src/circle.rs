@@ -8,7 +8,7 @@ use crate::curve::PlaneCurve;
 use crate::forms::{Forms, SymbolicForms};
 use crate::geom::Jet;
 use bspline::Rational;
-use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
+use std::f64::consts::{PI, SQRT_2, TAU};
 
 /// An analytic curve in the rational-circle parameter.
 pub(crate) struct OnCircle<'a> {
@@ -28,18 +28,6 @@ impl<'a> OnCircle<'a> {
     }
 }
 
-/// Homogeneous control points `(X, Y)` of the quarter circles (the weights are `1, 1/√2, 1`);
-/// quarter `q` runs from angle `qπ/2` to `(q + 1)π/2`.
-fn quarter(q: usize) -> [[f64; 2]; 3] {
-    let w = FRAC_1_SQRT_2;
-    match q {
-        0 => [[1.0, 0.0], [w, w], [0.0, 1.0]],
-        1 => [[0.0, 1.0], [-w, w], [-1.0, 0.0]],
-        2 => [[-1.0, 0.0], [-w, -w], [0.0, -1.0]],
-        _ => [[0.0, -1.0], [w, -w], [1.0, 0.0]],
-    }
-}
-
 /// The angle `φ(u) ∈ [0, 2π)` of the rational circle and its first three derivatives.
 pub(crate) fn angle(u: f64) -> [f64; 4] {
     let (phi, _, d) = frame(u);
@@ -48,60 +36,70 @@ pub(crate) fn angle(u: f64) -> [f64; 4] {
 
 /// The angle `φ(u)`, its cosine and sine, and its first three derivatives.
 fn frame(u: f64) -> (f64, [f64; 2], [f64; 3]) {
-    let (cs, d, q, x, y) = frame_cs(u, 3);
-    let phi = q as f64 * (PI / 2.0) + local(q, x, y);
-    (if phi >= TAU { 0.0 } else { phi }, cs, d)
+    let f = frame_cs(u);
+    let phi = f.q as f64 * (PI / 2.0) + f.local[1].atan2(f.local[0]);
+    (if phi >= TAU { 0.0 } else { phi }, f.cs, f.d)
 }
 
-/// `(cos φ, sin φ)`, the derivatives of φ, and the quarter and homogeneous point (no atan2).
-fn frame_cs(u: f64, order: usize) -> ([f64; 2], [f64; 3], usize, f64, f64) {
+/// The rational circle at one parameter, without the angle itself.
+struct Frame {
+    /// `(cos φ, sin φ)`.
+    cs: [f64; 2],
+    /// `φ′, φ″, φ‴`.
+    d: [f64; 3],
+    /// The quarter, `φ ∈ [qπ/2, (q + 1)π/2]`.
+    q: u32,
+    /// Cosine and sine of `φ − qπ/2`.
+    local: [f64; 2],
+}
+
+/// `√2 − 1`.
+const SQRT2_M1: f64 = SQRT_2 - 1.0;
+/// `2 − √2`.
+const TWO_M_SQRT2: f64 = 2.0 - SQRT_2;
+
+/// `(cos φ, sin φ)` and the derivatives of φ at `u`, in closed form (no angle, no square root,
+/// one division).
+///
+/// On quarter `q` (`u = q + s`) the rational quadratic with control points `(1, 0), (1, 1),
+/// (0, 1)` and weights `1, 1/√2, 1` is `(X, Y) / W` with
+/// `X = (1 − s)(1 + (√2 − 1)s)`, `Y = s(√2 − (√2 − 1)s)` and `W = 1 − (2 − √2)s(1 − s)`
+/// (factored: no cancellation near either end), rotated by `qπ/2`. It is a Möbius
+/// reparametrisation of the half-angle (see `bspline::shapes::circle_param`), whence
+/// `φ′ = √2 / W`.
+fn frame_cs(u: f64) -> Frame {
     let u = if (0.0..4.0).contains(&u) {
         u
     } else {
         u.rem_euclid(4.0)
     };
-    // u ≥ 0 here: truncation is the floor.
-    let q = (u as usize).min(3);
+    // u ≥ 0 here: truncation is the floor (to u32: a cheaper conversion than to usize).
+    let q = (u as u32).min(3);
     let s = u - q as f64;
-    let [p0, p1, p2] = quarter(q);
-    // Quadratic Bernstein basis and derivatives (the third derivative vanishes).
-    let b = [(1.0 - s) * (1.0 - s), 2.0 * s * (1.0 - s), s * s];
-    let b1 = [-2.0 * (1.0 - s), 2.0 - 4.0 * s, 2.0 * s];
-    let b2 = [2.0, -4.0, 2.0];
-    let comb = |c: &[f64; 3], k: usize| c[0] * p0[k] + c[1] * p1[k] + c[2] * p2[k];
-    let (x, y) = (comb(&b, 0), comb(&b, 1));
-    let (x1, y1) = (comb(&b1, 0), comb(&b1, 1));
-    let (x2, y2) = (comb(&b2, 0), comb(&b2, 1));
-    // φ = atan2(Y, X): φ′ = N/M with N = XY′ − YX′, M = X² + Y².
-    let n = x * y1 - y * x1;
-    let n1 = x * y2 - y * x2;
-    let n2 = x1 * y2 - y1 * x2;
-    let m = x * x + y * y;
-    let m1 = 2.0 * (x * x1 + y * y1);
-    let m2 = 2.0 * (x1 * x1 + x * x2 + y1 * y1 + y * y2);
-    let d1 = n / m;
-    let (mut d2, mut d3) = (0.0, 0.0);
-    if order >= 2 {
-        let g = n1 * m - n * m1;
-        d2 = g / (m * m);
-        if order >= 3 {
-            d3 = (n2 * m - n * m2) / (m * m) - 2.0 * m1 * g / (m * m * m);
-        }
-    }
-    let inv = 1.0 / m.sqrt();
-    ([x * inv, y * inv], [d1, d2, d3], q, x, y)
-}
-
-/// Angle of `(x, y)` measured from the start of quarter `q`, in `[0, π/2]`.
-fn local(q: usize, x: f64, y: f64) -> f64 {
-    // Rotate back by qπ/2.
-    let (rx, ry) = match q {
-        0 => (x, y),
-        1 => (y, -x),
-        2 => (-x, -y),
-        _ => (-y, x),
+    let t = 1.0 - s;
+    let inv = 1.0 / (1.0 - TWO_M_SQRT2 * (s * t));
+    let (x, y) = (
+        t * (1.0 + SQRT2_M1 * s) * inv,
+        s * (SQRT_2 - SQRT2_M1 * s) * inv,
+    );
+    // φ′ = √2/W, φ″ = −√2 W′/W², φ‴ = −√2 (W″ − 2W′²/W)/W², with W′ = (2 − √2)(2s − 1)
+    // and W″ = 2(2 − √2).
+    let w1 = TWO_M_SQRT2 * (s - t);
+    let d1 = SQRT_2 * inv;
+    let d2 = -d1 * w1 * inv;
+    let d3 = 2.0 * d1 * inv * (w1 * w1 * inv - TWO_M_SQRT2);
+    let cs = match q {
+        0 => [x, y],
+        1 => [-y, x],
+        2 => [-x, -y],
+        _ => [y, -x],
     };
-    ry.atan2(rx)
+    Frame {
+        cs,
+        d: [d1, d2, d3],
+        q,
+        local: [x, y],
+    }
 }
 
 impl PlaneCurve for OnCircle<'_> {
@@ -119,20 +117,27 @@ impl PlaneCurve for OnCircle<'_> {
         let (a1, a2, a3);
         if let Some(shape) = self.forms.shape {
             // The shape's own formula from (cos φ, sin φ): no angle, no sine or cosine.
-            let (cs, d, ..) = frame_cs(u, order);
-            [a1, a2, a3] = d;
-            j = shape.jet(cs[0], cs[1], order);
+            let f = frame_cs(u);
+            [a1, a2, a3] = f.d;
+            j = shape.jet(f.cs[0], f.cs[1], order);
         } else {
             let (phi, _, d) = frame(u);
             [a1, a2, a3] = d;
             j = self.inner.jet_to(phi, order);
         }
-        Jet {
+        // Chain rule, up to the order asked for (the rest is left zero).
+        let mut out = Jet {
             p: j.p,
             d1: j.d1 * a1,
-            d2: j.d2 * (a1 * a1) + j.d1 * a2,
-            d3: j.d3 * (a1 * a1 * a1) + j.d2 * (3.0 * a1 * a2) + j.d1 * a3,
+            ..Jet::default()
+        };
+        if order >= 2 {
+            out.d2 = j.d2 * (a1 * a1) + j.d1 * a2;
         }
+        if order >= 3 {
+            out.d3 = j.d3 * (a1 * a1 * a1) + j.d2 * (3.0 * a1 * a2) + j.d1 * a3;
+        }
+        out
     }
     fn rational(&self) -> Option<&Rational> {
         Some(&self.forms.curve)
@@ -149,6 +154,7 @@ impl PlaneCurve for OnCircle<'_> {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
+    use crate::geom::V2;
 
     #[test]
     fn angle_matches_the_rational_circle() {
@@ -169,6 +175,122 @@ mod tests {
                 assert!((num1 - d1).abs() < 1e-7, "{u}");
                 assert!((num2 - d2).abs() < 1e-6, "{u}");
                 assert!((num3 - d3).abs() < 1e-5, "{u}");
+            }
+        }
+    }
+
+    /// `(cos φ, sin φ)` and `φ′, φ″, φ‴` the long way: the homogeneous quadratic Bézier
+    /// quarters, normalised by `√(X² + Y²)`, and the quotient rule on `φ′ = (XY′ − YX′)/(X² + Y²)`.
+    fn bernstein_frame(u: f64) -> ([f64; 2], [f64; 3]) {
+        let w = std::f64::consts::FRAC_1_SQRT_2;
+        let u = u.rem_euclid(4.0);
+        let q = (u as usize).min(3);
+        let s = u - q as f64;
+        let [p0, p1, p2] = match q {
+            0 => [[1.0, 0.0], [w, w], [0.0, 1.0]],
+            1 => [[0.0, 1.0], [-w, w], [-1.0, 0.0]],
+            2 => [[-1.0, 0.0], [-w, -w], [0.0, -1.0]],
+            _ => [[0.0, -1.0], [w, -w], [1.0, 0.0]],
+        };
+        let b = [(1.0 - s) * (1.0 - s), 2.0 * s * (1.0 - s), s * s];
+        let b1 = [-2.0 * (1.0 - s), 2.0 - 4.0 * s, 2.0 * s];
+        let b2 = [2.0, -4.0, 2.0];
+        let comb = |c: &[f64; 3], k: usize| c[0] * p0[k] + c[1] * p1[k] + c[2] * p2[k];
+        let (x, y) = (comb(&b, 0), comb(&b, 1));
+        let (x1, y1) = (comb(&b1, 0), comb(&b1, 1));
+        let (x2, y2) = (comb(&b2, 0), comb(&b2, 1));
+        let n = x * y1 - y * x1;
+        let n1 = x * y2 - y * x2;
+        let n2 = x1 * y2 - y1 * x2;
+        let m = x * x + y * y;
+        let m1 = 2.0 * (x * x1 + y * y1);
+        let m2 = 2.0 * (x1 * x1 + x * x2 + y1 * y1 + y * y2);
+        let g = n1 * m - n * m1;
+        let d = [
+            n / m,
+            g / (m * m),
+            (n2 * m - n * m2) / (m * m) - 2.0 * m1 * g / (m * m * m),
+        ];
+        let r = m.sqrt();
+        ([x / r, y / r], d)
+    }
+
+    #[test]
+    fn closed_form_frame_matches_the_bernstein_form() {
+        // Dense over the four quarters, their ends, and wrapped parameters.
+        let mut us: Vec<f64> = (0..=4000).map(|i| 4.0 * i as f64 / 4000.0).collect();
+        us.extend([
+            -0.3,
+            -4.0,
+            4.0 - 1e-16,
+            5.25,
+            1e-300,
+            1.0 - 1e-15,
+            3.999_999,
+        ]);
+        for u in us {
+            let f = frame_cs(u);
+            let (cs, d) = bernstein_frame(u);
+            for k in 0..2 {
+                assert!(
+                    (f.cs[k] - cs[k]).abs() <= 4e-16,
+                    "{u}: {:?} vs {cs:?}",
+                    f.cs
+                );
+            }
+            // The reference cancels in φ″ and φ‴ (the closed form does not): a bound relative
+            // to the derivatives' size.
+            let size = d[0].abs() + d[1].abs() + d[2].abs();
+            for k in 0..3 {
+                let tol = 16.0 * f64::EPSILON * size;
+                assert!((f.d[k] - d[k]).abs() <= tol, "{u}: {:?} vs {d:?}", f.d);
+            }
+            // The rotation by quarters lands on the unit circle.
+            assert!((f.cs[0].hypot(f.cs[1]) - 1.0).abs() <= 4e-16, "{u}");
+        }
+    }
+
+    /// The shapes' formulas on the circle (`CircleShape`) against the generic path: the angle
+    /// `φ(u)` and the shape's own jet in φ (sines and cosines), through the chain rule.
+    #[test]
+    fn shape_jets_match_the_generic_path() {
+        use crate::shapes::{Convexities, Ellipse, Limacon};
+        let shapes: Vec<Box<dyn PlaneCurve>> = vec![
+            Box::new(Ellipse::new(3.0, 2.0, [0.5, -1.0]).unwrap()),
+            Box::new(Limacon::new(4.0, 2.5).unwrap()),
+            Box::new(Convexities::new(3.0, 0.5, 3).unwrap()),
+            Box::new(Convexities::new(4.5, 0.2, 4).unwrap()),
+            Box::new(Convexities::new(1.0, 0.9, 2).unwrap()),
+            Box::new(Convexities::new(2.0, 0.3, 7).unwrap()),
+        ];
+        for inner in &shapes {
+            let fast = OnCircle::new(inner.as_ref()).unwrap();
+            assert!(fast.forms.shape.is_some());
+            let generic = OnCircle {
+                inner: inner.as_ref(),
+                forms: Forms::Built(Box::new(
+                    SymbolicForms::new(inner.circle_form().unwrap()).unwrap(),
+                )),
+            };
+            for i in 0..=1000 {
+                let u = 4.0 * i as f64 / 1000.0 - 0.002;
+                let (a, b) = (fast.jet_to(u, 3), generic.jet_to(u, 3));
+                let scale = b.p.norm() + b.d1.norm() + b.d2.norm() + b.d3.norm();
+                for (x, y) in [(a.p, b.p), (a.d1, b.d1), (a.d2, b.d2), (a.d3, b.d3)] {
+                    assert!((x - y).norm() <= 1e-13 * scale, "{u}: {a:?} vs {b:?}");
+                }
+                // Lower orders: the same leading entries, the rest left zero.
+                for order in 0..3 {
+                    let j = fast.jet_to(u, order);
+                    let full = [a.p, a.d1, a.d2, a.d3];
+                    for (k, v) in [j.p, j.d1, j.d2, j.d3].into_iter().enumerate() {
+                        if k <= order.max(1) {
+                            assert_eq!(v, full[k], "{u} order {order}");
+                        } else {
+                            assert_eq!(v, V2::default(), "{u} order {order}");
+                        }
+                    }
+                }
             }
         }
     }

@@ -16,13 +16,8 @@ fn check(field: &'static str, value: f64, ok: bool, why: &'static str) -> Result
     }
 }
 
-/// A polar curve `r(φ)(cos φ, sin φ)` from `r` and its first three derivatives.
-fn polar_jet(phi: f64, r: [f64; 4]) -> Jet {
-    let (s, c) = phi.sin_cos();
-    polar_jet_cs(s, c, r)
-}
-
-/// [`polar_jet`] from the sine and cosine of φ.
+/// A polar curve `r(φ)(cos φ, sin φ)` from the sine and cosine of φ, `r` and its first three
+/// derivatives.
 fn polar_jet_cs(s: f64, c: f64, r: [f64; 4]) -> Jet {
     polar_jet_to(s, c, r, 3)
 }
@@ -67,9 +62,10 @@ impl CircleShape {
                 polar_jet_to(s, c, [a + b * c, -b * s, -b * c, b * s], order)
             }
             CircleShape::Convexities { p, eps, m } => {
-                // cos mφ + i sin mφ = (c + i s)ᵐ.
-                let (mut cm, mut sm) = (1.0, 0.0);
-                for _ in 0..m {
+                // cos mφ + i sin mφ = (c + i s)ᵐ, by repeated complex products (m ≥ 2): the
+                // error grows only linearly in m, unlike the Chebyshev three-term recurrence.
+                let (mut cm, mut sm) = (c, s);
+                for _ in 1..m {
                     (cm, sm) = (cm * c - sm * s, cm * s + sm * c);
                 }
                 convexities_jet(p, eps, m, s, c, sm, cm, order)
@@ -87,24 +83,26 @@ fn ellipse_jet(a: f64, b: f64, center: V2, s: f64, c: f64) -> Jet {
     }
 }
 
-/// `r(φ) = p / (1 + ε cos mφ)` from the sines and cosines of φ and mφ.
+/// `r(φ) = p / (1 + ε cos mφ)` from the sines and cosines of φ and mφ, up to `order`.
 #[allow(clippy::too_many_arguments)] // the shape's three parameters and two angles
 fn convexities_jet(p: f64, e: f64, m: u32, s: f64, c: f64, sm: f64, cm: f64, order: usize) -> Jet {
     let m = m as f64;
-    let h = 1.0 + e * cm;
-    let h1 = -e * m * sm;
-    let h2 = -e * m * m * cm;
-    let h3 = e * m * m * m * sm;
-    let (i1, i2, i3, i4) = (
-        1.0 / h,
-        1.0 / (h * h),
-        1.0 / (h * h * h),
-        1.0 / (h * h * h * h),
-    );
-    let r = p * i1;
-    let r1 = -p * h1 * i2;
-    let r2 = p * (2.0 * h1 * h1 * i3 - h2 * i2);
-    let r3 = p * (-6.0 * h1 * h1 * h1 * i4 + 6.0 * h1 * h2 * i3 - h3 * i2);
+    // h = 1 + ε cos mφ and r = p/h: with k = h′/h and gⱼ = h⁽ʲ⁾/h (one division),
+    // r′ = −rk, r″ = r(2k² − g₂), r‴ = r(6k(g₂ − k²) − g₃).
+    let inv = 1.0 / (1.0 + e * cm);
+    let r = p * inv;
+    let em = e * m;
+    let k = -em * sm * inv;
+    let r1 = -r * k;
+    let (mut r2, mut r3) = (0.0, 0.0);
+    if order >= 2 {
+        let g2 = -em * m * cm * inv;
+        r2 = r * (2.0 * k * k - g2);
+        if order >= 3 {
+            let g3 = em * m * m * sm * inv;
+            r3 = r * (6.0 * k * (g2 - k * k) - g3);
+        }
+    }
     polar_jet_to(s, c, [r, r1, r2, r3], order)
 }
 
@@ -257,7 +255,7 @@ impl PlaneCurve for Limacon {
     fn jet(&self, u: f64) -> Jet {
         let (s, c) = u.sin_cos();
         let (a, b) = (self.a, self.b);
-        polar_jet(u, [a + b * c, -b * s, -b * c, b * s])
+        polar_jet_cs(s, c, [a + b * c, -b * s, -b * c, b * s])
     }
 }
 
@@ -289,22 +287,31 @@ impl PlaneCurve for EllipticLemniscate {
         true
     }
     fn jet(&self, u: f64) -> Jet {
+        self.jet_to(u, 3)
+    }
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
         // r² = g = A + B cos 2φ; differentiate r² = g three times. The value itself as
         // a² cos² φ + b² sin² φ: the form with cos 2φ cancels near the waist (φ = π/2) of a
         // slender lemniscate, where g ≈ b² ≪ a².
         let (aa, bb) = (self.a * self.a, self.b * self.b);
         let big_b = 0.5 * (aa - bb);
+        // One sine and cosine: the double angle from them (sin 2φ = 2sc, cos 2φ = (c − s)(c + s),
+        // the factored form exact near φ = π/4 up to the rounding of c and s themselves).
         let (s, c) = u.sin_cos();
-        let (s2, c2) = (2.0 * u).sin_cos();
+        let (s2, c2) = (2.0 * s * c, (c - s) * (c + s));
         let g = aa * c * c + bb * s * s;
-        let g1 = -2.0 * big_b * s2;
-        let g2 = -4.0 * big_b * c2;
-        let g3 = 8.0 * big_b * s2;
         let r = g.sqrt();
-        let r1 = g1 / (2.0 * r);
-        let r2 = (0.5 * g2 - r1 * r1) / r;
-        let r3 = (0.5 * g3 - 3.0 * r1 * r2) / r;
-        polar_jet(u, [r, r1, r2, r3])
+        let inv = 1.0 / r;
+        // 2rr′ = g′, 2(rr″ + r′²) = g″, 2(rr‴ + 3r′r″) = g‴.
+        let r1 = -big_b * s2 * inv;
+        let (mut r2, mut r3) = (0.0, 0.0);
+        if order >= 2 {
+            r2 = (-2.0 * big_b * c2 - r1 * r1) * inv;
+            if order >= 3 {
+                r3 = (4.0 * big_b * s2 - 3.0 * r1 * r2) * inv;
+            }
+        }
+        polar_jet_to(s, c, [r, r1, r2, r3], order)
     }
 }
 
@@ -364,5 +371,108 @@ impl PlaneCurve for Convexities {
         let (sm, cm) = (self.m as f64 * u).sin_cos();
         let (s, c) = u.sin_cos();
         convexities_jet(self.p, self.eps, self.m, s, c, sm, cm, 3)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    /// Each derivative of `c`'s jet against central differences of the one below, at many φ.
+    fn check_against_differences(c: &dyn PlaneCurve) {
+        let h = 1e-5;
+        for i in 0..=720 {
+            let u = TAU * i as f64 / 720.0 + 1e-3;
+            let j = c.jet(u);
+            let (lo, hi) = (c.jet(u - h), c.jet(u + h));
+            let scale = j.p.norm() + j.d1.norm() + j.d2.norm() + j.d3.norm();
+            let pairs = [
+                (j.d1, hi.p - lo.p),
+                (j.d2, hi.d1 - lo.d1),
+                (j.d3, hi.d2 - lo.d2),
+            ];
+            for (k, (d, diff)) in pairs.into_iter().enumerate() {
+                let err = (d - diff * (0.5 / h)).norm();
+                assert!(
+                    err <= 1e-7 * scale,
+                    "{u}: derivative {} off by {err}",
+                    k + 1
+                );
+            }
+            // Lower orders agree with the full jet.
+            for order in 0..3 {
+                let l = c.jet_to(u, order);
+                assert_eq!((l.p, l.d1), (j.p, j.d1), "{u} order {order}");
+                if order >= 2 {
+                    assert_eq!(l.d2, j.d2, "{u} order {order}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn jets_match_central_differences() {
+        check_against_differences(&Circle::new(1.5, [1.0, 2.0]).unwrap());
+        check_against_differences(&Ellipse::new(3.0, 2.0, [0.5, -1.0]).unwrap());
+        check_against_differences(&Limacon::new(4.0, 2.5).unwrap());
+        check_against_differences(&EllipticLemniscate::new(6.0, 3.0).unwrap());
+        check_against_differences(&EllipticLemniscate::new(1.0, 0.05).unwrap());
+        check_against_differences(&Convexities::new(3.0, 0.5, 3).unwrap());
+        check_against_differences(&Convexities::new(4.5, 0.2, 4).unwrap());
+        check_against_differences(&Convexities::new(2.0, 0.3, 7).unwrap());
+    }
+
+    /// The shapes' formulas in `(cos φ, sin φ)` against their jets from `sin mφ, cos mφ` by the
+    /// library's sine and cosine.
+    #[test]
+    fn circle_shapes_match_the_angle_formulas() {
+        for (p, eps, m) in [(3.0, 0.5, 3), (4.5, 0.2, 4), (1.0, 0.9, 2), (2.0, 0.3, 7)] {
+            let c = Convexities::new(p, eps, m).unwrap();
+            let shape = CircleShape::Convexities { p, eps, m };
+            for i in 0..=2000 {
+                let u = TAU * i as f64 / 2000.0;
+                let (s, co) = u.sin_cos();
+                let (a, b) = (shape.jet(co, s, 3), c.jet(u));
+                let scale = b.p.norm() + b.d1.norm() + b.d2.norm() + b.d3.norm();
+                for (x, y) in [(a.p, b.p), (a.d1, b.d1), (a.d2, b.d2), (a.d3, b.d3)] {
+                    assert!((x - y).norm() <= 1e-13 * scale, "m={m} {u}: {a:?} vs {b:?}");
+                }
+            }
+        }
+    }
+
+    /// The elliptic lemniscate's jet from one sine and cosine against the former evaluation
+    /// (the double angle by its own sine and cosine, divisions by r).
+    #[test]
+    fn lemniscate_matches_the_double_angle_formula() {
+        for (a, b) in [(6.0, 3.0), (1.0, 0.05), (2.0, 2.0), (0.3, 5.0)] {
+            let c = EllipticLemniscate::new(a, b).unwrap();
+            let (aa, bb) = (a * a, b * b);
+            let big_b = 0.5 * (aa - bb);
+            for i in 0..=4000 {
+                let u = TAU * i as f64 / 4000.0;
+                let (s, co) = u.sin_cos();
+                let (s2, c2) = (2.0 * u).sin_cos();
+                let r = (aa * co * co + bb * s * s).sqrt();
+                let r1 = -2.0 * big_b * s2 / (2.0 * r);
+                let r2 = (-2.0 * big_b * c2 - r1 * r1) / r;
+                let r3 = (4.0 * big_b * s2 - 3.0 * r1 * r2) / r;
+                let want = polar_jet_cs(s, co, [r, r1, r2, r3]);
+                let got = c.jet(u);
+                let scale = want.p.norm() + want.d1.norm() + want.d2.norm() + want.d3.norm();
+                for (x, y) in [
+                    (got.p, want.p),
+                    (got.d1, want.d1),
+                    (got.d2, want.d2),
+                    (got.d3, want.d3),
+                ] {
+                    assert!(
+                        (x - y).norm() <= 1e-14 * scale,
+                        "{a},{b} {u}: {got:?} vs {want:?}"
+                    );
+                }
+            }
+        }
     }
 }

@@ -7,7 +7,6 @@
 
 use crate::error::{Error, Result};
 use crate::geom::{wrap_pi, V2};
-use crate::prims::Prefer;
 use crate::view::{newton_bracketed, View};
 use std::f64::consts::{PI, TAU};
 
@@ -326,43 +325,41 @@ impl View<'_> {
 
     /// The parameter in `[lo, hi]` (a monotone stretch) where the tangent angle is `target`.
     fn param_at_angle(&self, tr: &Tracks, lo: f64, hi: f64, target: f64) -> f64 {
-        let mut xs = vec![lo];
-        let mut psis = vec![self.psi(tr, lo)];
         let k0 = if self.closed {
             ((lo - self.a) / self.period).floor()
         } else {
             0.0
         };
-        for k in 0..2 {
+        let periods = if self.closed { 2 } else { 1 };
+        // The track's samples strictly inside (lo, hi), over the periods it may span, between
+        // the two ends: consecutive points bracket the target angle (no allocation).
+        let inside = (0..periods).flat_map(|k| {
             let periods = k0 + k as f64;
             let off = periods * self.period;
-            for (i, &u) in tr.u.iter().enumerate() {
+            tr.u.iter().enumerate().filter_map(move |(i, &u)| {
                 let x = u + off;
-                if x > lo && x < hi {
-                    xs.push(x);
-                    psis.push(self.psi_sample(tr, i, periods));
+                (x > lo && x < hi).then(|| (x, self.psi_sample(tr, i, periods)))
+            })
+        });
+        let points = std::iter::once((lo, self.psi(tr, lo)))
+            .chain(inside)
+            .chain(std::iter::once((hi, self.psi(tr, hi))));
+        let mut prev: Option<(f64, f64)> = None;
+        for (x1, p1) in points {
+            if let Some((x0, p0)) = prev {
+                let (a0, a1) = (p0 - target, p1 - target);
+                if a0 == 0.0 {
+                    return x0;
+                }
+                if (a0 < 0.0) != (a1 < 0.0) {
+                    let n = V2::polar(target).perp();
+                    return self
+                        .point_with_normal(x0, x1, n)
+                        .unwrap_or(0.5 * (x0 + x1));
                 }
             }
-            if !self.closed {
-                break;
-            }
+            prev = Some((x1, p1));
         }
-        xs.push(hi);
-        psis.push(self.psi(tr, hi));
-        for i in 0..xs.len() - 1 {
-            let (a0, a1) = (psis[i] - target, psis[i + 1] - target);
-            if a0 == 0.0 {
-                return xs[i];
-            }
-            if (a0 < 0.0) != (a1 < 0.0) {
-                let n = V2::polar(target).perp();
-                if let Some(u) = self.point_with_normal(xs[i], xs[i + 1], n) {
-                    return u;
-                }
-                return 0.5 * (xs[i] + xs[i + 1]);
-            }
-        }
-        let _ = Prefer::Low;
         0.5 * (lo + hi)
     }
 

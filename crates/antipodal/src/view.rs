@@ -167,7 +167,15 @@ impl<'a> View<'a> {
             return u;
         }
         if self.closed {
-            let w = self.a + (u - self.a).rem_euclid(self.period);
+            // Unwrapped parameters are mostly within a period of the domain (pieces across
+            // the seam): a subtraction, not a floating-point remainder.
+            let w = if u >= self.b && u < self.b + self.period {
+                u - self.period
+            } else if u < self.a && u >= self.a - self.period {
+                u + self.period
+            } else {
+                self.a + (u - self.a).rem_euclid(self.period)
+            };
             if w >= self.b {
                 self.a
             } else {

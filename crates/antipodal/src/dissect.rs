@@ -353,9 +353,7 @@ impl View<'_> {
                 }
                 if (a0 < 0.0) != (a1 < 0.0) {
                     let n = V2::polar(target).perp();
-                    return self
-                        .point_with_normal(x0, x1, n)
-                        .unwrap_or(0.5 * (x0 + x1));
+                    return self.point_with_normal(x0, x1, n).unwrap_or(0.5 * (x0 + x1));
                 }
             }
             prev = Some((x1, p1));

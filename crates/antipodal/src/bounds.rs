@@ -141,7 +141,7 @@ impl Enclosure {
             second: deriv.derivative().norm_bounds(),
             hull,
             rounding,
-            eval: ValueSlope::new(&pw)?,
+            eval: ValueSlope::new(&pw, &deriv)?,
             pw,
         })
     }

@@ -94,8 +94,8 @@ impl View<'_> {
         let fine = self
             .cert
             .as_ref()
-            .and_then(|c| c.bound_forms())
             .filter(|_| coarse)
+            .and_then(|c| c.bound_forms())
             .map(|f| f.tangent.breaks());
         let mut us: Vec<f64> = match fine {
             Some(b) => b.to_vec(),

@@ -451,32 +451,32 @@ pub(crate) struct ValueSlope {
 }
 
 impl ValueSlope {
-    /// `None` in dimensions other than 1 and 2.
-    pub(crate) fn new(f: &Pw) -> Option<Self> {
-        let (p, d) = (f.deg, f.dim);
-        if !(1..=2).contains(&d) {
+    /// From a function and its [`Pw::derivative`]; `None` in dimensions other than 1 and 2.
+    pub(crate) fn new(f: &Pw, deriv: &Pw) -> Option<Self> {
+        let d = f.dim;
+        if !(1..=2).contains(&d) || deriv.dim != d || deriv.breaks != f.breaks {
             return None;
         }
-        let point = |c: &[f64], j: usize| [c[j * d], if d == 2 { c[j * d + 1] } else { 0.0 }];
-        let lower = binomials(p.max(1) - 1);
-        let (mut value, mut slope) = (Vec::new(), Vec::new());
-        for i in 0..f.pieces() {
-            let (c, (a, b)) = (f.piece(i), f.piece_span(i));
-            for (j, bj) in f.binoms.iter().enumerate() {
-                let x = point(c, j);
-                value.push([x[0] * bj, x[1] * bj]);
-            }
-            let scale = p as f64 / (b - a);
-            for (j, bj) in lower.iter().enumerate().take(p) {
-                let (x, y) = (point(c, j), point(c, j + 1));
-                let k = scale * bj;
-                slope.push([k * (y[0] - x[0]), k * (y[1] - x[1])]);
-            }
-        }
+        // Premultiplied by the binomial weights, the second component 0 in dimension 1.
+        let scaled = |g: &Pw| -> Vec<[f64; 2]> {
+            (0..g.pieces())
+                .flat_map(|i| {
+                    let c = g.piece(i);
+                    g.binoms.iter().enumerate().map(move |(j, bj)| {
+                        [c[j * d] * bj, if d == 2 { c[j * d + 1] * bj } else { 0.0 }]
+                    })
+                })
+                .collect()
+        };
+        let slope = if f.deg == 0 {
+            Vec::new()
+        } else {
+            scaled(deriv)
+        };
         Some(Self {
             breaks: f.breaks.clone(),
-            deg: p,
-            value,
+            deg: f.deg,
+            value: scaled(f),
             slope,
         })
     }
@@ -553,7 +553,7 @@ mod tests {
             let n = (coefs.len() / dim).min(deg + 1 + 5);
             let f = BSpline::clamped_uniform(deg, dim, coefs[..n * dim].to_vec()).unwrap();
             let pw = Pw::new(&f).subdivided(fine);
-            let vs = ValueSlope::new(&pw).unwrap();
+            let vs = ValueSlope::new(&pw, &pw.derivative()).unwrap();
             for &x in &xs {
                 let i = pw.piece_at(x);
                 let (v, g) = vs.eval(i, x);

@@ -181,7 +181,7 @@ impl Enclosure {
                 hull
             } else {
                 let (m, delta) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
-                let (v, g) = self.eval.eval(i, m);
+                let (v, g) = self.eval.eval(i, (m - a) / (b - a));
                 let (rv, rg) = self.rounding[i];
                 let r = (norm(g).abs() + rg) * delta + 0.5 * self.second[i] * delta * delta + rv;
                 let x = norm(v);

@@ -442,7 +442,6 @@ fn split_right(g: &mut [f64], r: f64) {
 /// binomial weights. The rounding is a few units of the largest control point times the degree.
 #[derive(Debug, Clone)]
 pub(crate) struct ValueSlope {
-    breaks: Vec<f64>,
     deg: usize,
     /// Per piece, the `deg + 1` points `C(deg, j) · c_j` (the second component 0 in dimension 1).
     value: Vec<[f64; 2]>,
@@ -474,18 +473,17 @@ impl ValueSlope {
             scaled(deriv)
         };
         Some(Self {
-            breaks: f.breaks.clone(),
             deg: f.deg,
             value: scaled(f),
             slope,
         })
     }
 
-    /// Value and derivative of piece `i` at `u` (clamped into the piece).
-    pub(crate) fn eval(&self, i: usize, u: f64) -> ([f64; 2], [f64; 2]) {
+    /// Value and derivative (in the function's parameter) of piece `i` at its local parameter
+    /// `s ∈ [0, 1]` (the pieces' breakpoints are the caller's, as for the [`Pw`] it came from).
+    pub(crate) fn eval(&self, i: usize, s: f64) -> ([f64; 2], [f64; 2]) {
         let p = self.deg;
-        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
-        let s = ((u - a) / (b - a)).clamp(0.0, 1.0);
+        let s = s.clamp(0.0, 1.0);
         let mirror = s > 0.5;
         let (t, base) = if mirror { (1.0 - s, s) } else { (s, 1.0 - s) };
         let ratio = t / base;
@@ -556,7 +554,8 @@ mod tests {
             let vs = ValueSlope::new(&pw, &pw.derivative()).unwrap();
             for &x in &xs {
                 let i = pw.piece_at(x);
-                let (v, g) = vs.eval(i, x);
+                let (a, b) = pw.piece_span(i);
+                let (v, g) = vs.eval(i, (x - a) / (b - a));
                 let mut want = [0.0; 4];
                 f.eval_derivs(x, 1, &mut want[..2 * dim]);
                 for c in 0..dim {

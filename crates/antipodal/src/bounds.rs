@@ -5,6 +5,7 @@
 
 use crate::fast::{Pw, ValueSlope};
 use crate::geom::V2;
+use crate::taylor::Taylor;
 use crate::view::View;
 use bspline::{BSpline, Rational};
 
@@ -161,6 +162,48 @@ impl Enclosure {
         lo >= a && hi <= b && h.lo > 1e-9 * h.hi
     }
 
+    /// A first-order Taylor model of the function (of its length, in dimension 2) about the
+    /// middle of `[x0, x1]`, which lies in fine piece `i`, and the range the piece's hull
+    /// proves. `None` where the length may vanish there.
+    ///
+    /// The remainder is `M₂δ²/2` plus rounding for a scalar; for the length `|f|`,
+    /// `|f|″ = (|f′|² + f·f″)/|f| − (f·f′)²/|f|³` is at most `|f′|²/|f| + |f″|`, with `|f′|` and
+    /// `|f|` bounded over the interval from the model of `f` itself.
+    fn taylor(&self, i: usize, x0: f64, x1: f64) -> Option<(Taylor, Iv)> {
+        let (a, b) = self.pw.piece_span(i);
+        let (m, delta) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
+        let (v, g) = self.eval.eval(i, (m - a) / (b - a));
+        let (rv, rg) = self.rounding[i];
+        let (m2, hull) = (self.second[i], self.hull[i]);
+        if self.pw.dim() == 1 {
+            let r = 0.5 * m2 * delta * delta + rv + rg * delta;
+            return Some((
+                Taylor {
+                    v: v[0],
+                    g: g[0],
+                    r,
+                },
+                hull,
+            ));
+        }
+        let n = v[0].hypot(v[1]);
+        let gn = g[0].hypot(g[1]);
+        // Each component errs by `rv` (`rg` for the slope): the length by at most twice that.
+        let err = 2.0 * (rv + rg * delta);
+        let lower = (n - gn * delta - 0.5 * m2 * delta * delta - err).max(hull.lo);
+        if !(lower > 0.0) {
+            return None;
+        }
+        let slope = gn + rg + m2 * delta;
+        let second = slope * slope / lower + m2;
+        let model = Taylor {
+            v: n,
+            g: (v[0] * g[0] + v[1] * g[1]) / n,
+            r: 0.5 * second * delta * delta + err,
+        };
+        Some((model, hull))
+    }
+
     /// The range over `[lo, hi]` (inside the domain), joined into `acc`.
     fn join_range(&self, lo: f64, hi: f64, acc: &mut Iv) {
         let d = self.pw.dim();
@@ -222,6 +265,9 @@ pub(crate) struct BoundForms {
     curvature: Enclosure,
     pub(crate) tangent: Enclosure,
     weight: Option<Enclosure>,
+    /// The three enclosures share their fine pieces (always, for forms of one curve): the
+    /// curvature is then bounded by Taylor models, piece by piece.
+    aligned: bool,
 }
 
 impl BoundForms {
@@ -231,15 +277,86 @@ impl BoundForms {
         let last = h.dim() - 1;
         let w = h.map_points(1, |p, o| o[0] = p[last]);
         let polynomial = w.coefs().iter().all(|&c| c == 1.0);
+        let curvature = Enclosure::new(curvature)?;
+        let tangent = Enclosure::new(tangent)?;
+        let weight = match polynomial {
+            true => None,
+            false => Some(Enclosure::new(&w)?),
+        };
+        let aligned = curvature.breaks() == tangent.breaks()
+            && weight
+                .as_ref()
+                .is_none_or(|e| e.breaks() == curvature.breaks());
         Some(Self {
-            curvature: Enclosure::new(curvature)?,
-            tangent: Enclosure::new(tangent)?,
-            weight: match polynomial {
-                true => None,
-                false => Some(Enclosure::new(&w)?),
-            },
+            curvature,
+            tangent,
+            weight,
+            aligned,
         })
     }
+
+    /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
+    /// per fine piece, the common part of the Taylor model's range and of the quotient of the
+    /// factors' ranges. `None` where `|D|` or `w` is not proven positive.
+    fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<()> {
+        for (i, x0, x1) in self.curvature.pw.overlaps(lo, hi) {
+            let delta = 0.5 * (x1 - x0);
+            let clip = |(t, hull): (Taylor, Iv)| {
+                let r = t.range(delta);
+                (t, Iv::new(r.lo.max(hull.lo), r.hi.min(hull.hi)))
+            };
+            let (tk, k) = clip(self.curvature.taylor(i, x0, x1)?);
+            let (td, d) = clip(self.tangent.taylor(i, x0, x1)?);
+            let (tw, w) = match &self.weight {
+                Some(e) => clip(e.taylor(i, x0, x1)?),
+                None => (Taylor::constant(1.0), Iv::new(1.0, 1.0)),
+            };
+            let ranges = quotient(k, d, w)?;
+            let model = td
+                .recip(delta)
+                .map(|inv| tk.mul(tw.cube(delta), delta).mul(inv.cube(delta), delta));
+            let piece = match model {
+                Some(t) => {
+                    let r = t.range(delta).widened(MARGIN);
+                    Iv::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
+                }
+                None => ranges,
+            };
+            *acc = Iv::new(acc.lo.min(piece.lo), acc.hi.max(piece.hi));
+        }
+        Some(())
+    }
+
+    /// [`BoundForms::join_kappa`] from the factors' ranges over the whole of `[lo, hi]`.
+    fn join_kappa_ranges(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<()> {
+        let empty = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        let (mut k, mut d, mut w) = (empty, empty, Iv::new(1.0, 1.0));
+        self.curvature.join_range(lo, hi, &mut k);
+        self.tangent.join_range(lo, hi, &mut d);
+        if let Some(e) = &self.weight {
+            w = empty;
+            e.join_range(lo, hi, &mut w);
+        }
+        let q = quotient(k, d, w)?;
+        *acc = Iv::new(acc.lo.min(q.lo), acc.hi.max(q.hi));
+        Some(())
+    }
+}
+
+/// Relative room for the rounding of the coefficients the ranges were read from and of the
+/// operations that combine them.
+const MARGIN: f64 = 1e-12;
+
+/// `K w³ / |D|³` from the ranges of its factors; `None` unless `|D|` and `w` are positive.
+fn quotient(k: Iv, d: Iv, w: Iv) -> Option<Iv> {
+    if !(d.lo > 0.0 && w.lo > 0.0 && k.lo.is_finite() && k.hi.is_finite()) {
+        return None;
+    }
+    let w3 = Iv::new(w.lo.powi(3), w.hi.powi(3));
+    let d3 = Iv::new(d.lo.powi(3), d.hi.powi(3))
+        .widened(MARGIN)
+        .recip()?;
+    Some(k.widened(MARGIN).mul(w3).mul(d3))
 }
 
 impl View<'_> {
@@ -255,31 +372,20 @@ impl View<'_> {
         let cert = self.cert.as_ref()?;
         let forms = cert.bound_forms()?;
         let (lo, hi) = (lo.min(hi), lo.max(hi));
-        let (mut k, mut d, mut w) = (
-            Iv::new(f64::INFINITY, f64::NEG_INFINITY),
-            Iv::new(f64::INFINITY, 0.0),
-            Iv::new(f64::INFINITY, 0.0),
-        );
+        let mut kappa = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
-            forms.curvature.join_range(x0, x1, &mut k);
-            forms.tangent.join_range(x0, x1, &mut d);
-            match &forms.weight {
-                Some(e) => e.join_range(x0, x1, &mut w),
-                None => w = Iv::new(1.0, 1.0),
+            if forms.aligned {
+                forms.join_kappa(x0, x1, &mut kappa)?;
+            } else {
+                forms.join_kappa_ranges(x0, x1, &mut kappa)?;
             }
         }
-        let proven = d.lo > 0.0 && w.lo > 0.0 && k.excludes_zero() && k.lo.is_finite();
-        if !proven || !k.hi.is_finite() {
+        if !(kappa.excludes_zero() && kappa.lo.is_finite() && kappa.hi.is_finite()) {
             return None;
         }
-        let margin = 1e-12;
-        let w3 = Iv::new(w.lo.powi(3), w.hi.powi(3));
-        let d3 = Iv::new(d.lo.powi(3), d.hi.powi(3))
-            .widened(margin)
-            .recip()?;
         let (lo_box, hi_box) = self.arc_box(lo, hi)?;
         Some(ArcBounds {
-            kappa: k.widened(margin).mul(w3).mul(d3),
+            kappa,
             lo: lo_box,
             hi: hi_box,
         })

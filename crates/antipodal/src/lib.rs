@@ -36,6 +36,7 @@ mod prims;
 mod search;
 pub mod shapes;
 mod tangent;
+mod taylor;
 mod types;
 mod view;
 

@@ -6,6 +6,7 @@ use crate::curve::PlaneCurve;
 use crate::dissect::{Piece, Tracks, Zeros};
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
+use crate::finish::certified_rest;
 use crate::geom::wrap_pi;
 use crate::pairs::{negligible, opposite_pair, Pair};
 use crate::search::{antipodal_points, Budget, THETA_NOISE};
@@ -241,9 +242,12 @@ fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
     out
 }
 
-/// Condition (iv): an end that is itself antipodal is reported and cut off.
+/// Condition (iv): an end that is itself antipodal is reported and cut off: on curves with
+/// symbolic forms as far as θ is proven monotone from it (as beside any found pair), else
+/// where θ first shows a sign beyond its noise.
 fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pair<'a>> {
     let mut q = *p;
+    let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     for at_a in [true, false] {
         let (s, t) = if at_a { (q.sa, q.ta) } else { (q.sb, q.tb) };
         if q.sin_theta(s, t).abs() > q.theta_noise(s, t) || q.d(s, t) <= 0.0 {
@@ -251,6 +255,16 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
         }
         raw.push((s, t));
         let dir = if at_a { 1.0 } else { -1.0 };
+        if certified {
+            match certified_rest(&q, s, t, dir) {
+                Some(None) => return None,
+                Some(Some(rest)) => {
+                    q = rest;
+                    continue;
+                }
+                None => {}
+            }
+        }
         let mut eps = 16.0 * q.vs.tol;
         let mut cut = None;
         for _ in 0..64 {

@@ -225,6 +225,19 @@ fn ordered(a: f64, b: f64) -> (f64, f64) {
 /// from a nearby pair: a few steps to full precision. `None` when it moves farther than
 /// `max_move` or does not reduce the residual.
 pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Option<(f64, f64)> {
+    polish_within(vs, vt, s, t, max_move, max_move)
+}
+
+/// [`polish`] with separate bounds on the moves of `s` and `t` (a bracket's widths: `t` may
+/// move much farther than `s` where `T` is the flatter curve).
+pub(crate) fn polish_within(
+    vs: &View,
+    vt: &View,
+    s: f64,
+    t: f64,
+    max_s: f64,
+    max_t: f64,
+) -> Option<(f64, f64)> {
     let (s0, t0) = (s, t);
     let (mut s, mut t) = (s, t);
     // The best point so far and its residual; each iteration evaluates one pair of jets,
@@ -253,7 +266,7 @@ pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Opt
             break;
         }
         let (ns, nt) = (s - ds, t - dt);
-        if (ns - s0).abs() > max_move || (nt - t0).abs() > max_move {
+        if (ns - s0).abs() > max_s || (nt - t0).abs() > max_t {
             return None;
         }
         s = ns;

@@ -8,7 +8,7 @@
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
 use crate::finish::{certified_finish, certified_rest, Finish};
-use crate::pairs::{negligible, polish, Pair};
+use crate::pairs::{negligible, polish, polish_within, Pair};
 use crate::prims::Prefer;
 
 /// Upper bound of the noise of |sin θ| (the antipodal angle of a found pair); the noise at a
@@ -306,8 +306,8 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
                 (s1, t1)
             };
             let (lo, hi) = (s0.min(s1), s0.max(s1));
-            if let Some((ns, nt)) = polish(p.vs, p.vt, sb, tb, hi - lo) {
-                let (tl, th) = (t0.min(t1), t0.max(t1));
+            let (tl, th) = (t0.min(t1), t0.max(t1));
+            if let Some((ns, nt)) = polish_within(p.vs, p.vt, sb, tb, hi - lo, th - tl) {
                 let inside = ns >= lo && ns <= hi && nt >= tl && nt <= th;
                 if inside && p.sin_theta(ns, nt).abs() <= 1e-13 {
                     return Some(Found { s: ns, t: nt });

@@ -476,9 +476,13 @@ pub(crate) fn newton_bracketed(
     let mut dx_old = (hi - lo).abs();
     let mut dx = dx_old;
     let (mut fx, mut dfx) = f(x);
+    // The last step was Newton's (not a halving).
+    let mut newton = false;
     for _ in 0..200 {
         let out = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
-        if out || (2.0 * fx).abs() > (dx_old * dfx).abs() {
+        let was_newton = newton;
+        newton = !(out || (2.0 * fx).abs() > (dx_old * dfx).abs());
+        if !newton {
             dx_old = dx;
             dx = 0.5 * (hi - lo);
             x = lo + dx;
@@ -488,6 +492,13 @@ pub(crate) fn newton_bracketed(
             x -= dx;
         }
         if dx.abs() <= 0.5 * tol || fx == 0.0 {
+            return x;
+        }
+        // Two Newton steps in a row shrinking fast are in the quadratic regime, where the
+        // error left after this step is about `dx³/dx_old²`: far below the tolerance, the
+        // evaluation that would confirm it is spared.
+        let (a, b) = (dx.abs(), dx_old.abs());
+        if newton && was_newton && a <= b / 8.0 && a * a * a <= tol / 16.0 * b * b {
             return x;
         }
         (fx, dfx) = f(x);

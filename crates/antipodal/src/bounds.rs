@@ -191,7 +191,8 @@ impl Enclosure {
         // Each component errs by `rv` (`rg` for the slope): the length by at most twice that.
         let err = 2.0 * (rv + rg * delta);
         let lower = (n - gn * delta - 0.5 * m2 * delta * delta - err).max(hull.lo);
-        if !(lower > 0.0) {
+        // (NaN fails too.)
+        if lower.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         let slope = gn + rg + m2 * delta;

@@ -1,12 +1,15 @@
-//! Analytic shapes on the rational unit circle: the curve `C(φ)` seen in the parameter `u ∈
-//! [0, 4]` of the rational circle of `bspline::shapes` (`φ = angle(u)`), together with its exact
-//! rational B-spline form in that parameter. The algorithms then decide everything by sign
-//! tests on the form's symbolic B-splines (certified), evaluate jets from the analytic formula
-//! (chain rule through `φ(u)`), and report parameters mapped back to `φ`.
+//! Analytic shapes on the rational unit circle: the curve seen in the parameter `u ∈ [0, 4]` of
+//! the rational circle of `bspline::shapes` (circle angle `ψ = angle(u)`), together with its
+//! exact rational B-spline form in that parameter. The algorithms then decide everything by
+//! sign tests on the form's symbolic B-splines (certified), evaluate jets from the analytic
+//! formula in `(cos ψ, sin ψ)` (chain rule through `ψ(u)`), and report parameters mapped back
+//! to the shape's own angle φ ([`Angle`]: `φ = ψ`, except for the elliptic lemniscate, the
+//! inverse of an ellipse, where `tan φ = (a/b) tan ψ`).
 
 use crate::curve::PlaneCurve;
 use crate::forms::{Forms, SymbolicForms};
 use crate::geom::Jet;
+use crate::shapes::CircleShape;
 use bspline::Rational;
 use std::f64::consts::{PI, SQRT_2, TAU};
 
@@ -25,6 +28,56 @@ impl<'a> OnCircle<'a> {
             None => Forms::Built(Box::new(SymbolicForms::new(inner.circle_form()?).ok()?)),
         };
         Some(Self { inner, forms })
+    }
+
+    /// How this form's parameter maps back to the shape's angle.
+    pub(crate) fn angle(&self) -> Angle {
+        match self.forms.shape {
+            Some(CircleShape::Lemniscate { a, b }) => Angle::Squeezed { a, b },
+            _ => Angle::Circle,
+        }
+    }
+}
+
+/// How a parameter `u` of a circle form maps back to the shape's own angle `φ ∈ [0, 2π)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Angle {
+    /// `φ` is the circle's angle ψ itself.
+    Circle,
+    /// `φ` is the polar angle of `(cos ψ / a, sin ψ / b)` (the ellipse an elliptic lemniscate
+    /// inverts).
+    Squeezed { a: f64, b: f64 },
+}
+
+impl Angle {
+    /// How many times faster than the circle's angle ψ the shape's angle φ turns, at most
+    /// (`dφ/dψ = ab / (b² cos² ψ + a² sin² ψ)` for the squeezed one, between `b/a` and `a/b`).
+    pub(crate) fn max_rate(self) -> f64 {
+        match self {
+            Angle::Circle => 1.0,
+            Angle::Squeezed { a, b } => (a / b).max(b / a),
+        }
+    }
+
+    /// The shape's angle φ of the form's parameter `u`.
+    pub(crate) fn phi(self, u: f64) -> f64 {
+        match self {
+            Angle::Circle => angle(u)[0],
+            Angle::Squeezed { a, b } => {
+                // Per quarter, from the local cosine and sine (no cancellation near the
+                // quarter's ends); the rotation by qπ/2 swaps the roles of a and b on odd
+                // quarters.
+                let f = frame_cs(u);
+                let [x, y] = f.local;
+                let (sx, sy) = if f.q % 2 == 0 { (a, b) } else { (b, a) };
+                let phi = f.q as f64 * (PI / 2.0) + (y / sy).atan2(x / sx);
+                if phi >= TAU {
+                    0.0
+                } else {
+                    phi
+                }
+            }
+        }
     }
 }
 

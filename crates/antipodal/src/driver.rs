@@ -1,7 +1,7 @@
 //! The public entry points: validation and dissection of a curve, the pair loop of §5, and the
 //! two-curve common tangents of §2.5.
 
-use crate::circle::OnCircle;
+use crate::circle::{Angle, OnCircle};
 use crate::curve::PlaneCurve;
 use crate::dissect::{Piece, Tracks, Zeros};
 use crate::error::{Error, Result};
@@ -56,22 +56,21 @@ impl<'a> Working<'a> {
             None => self.orig,
         }
     }
-    fn report(&self) -> Option<fn(f64) -> f64> {
-        self.circle.as_ref().map(|_| phi_of as fn(f64) -> f64)
+    fn report(&self) -> Option<Angle> {
+        self.circle.as_ref().map(OnCircle::angle)
     }
-}
-
-fn phi_of(u: f64) -> f64 {
-    crate::circle::angle(u)[0]
 }
 
 fn view_of<'a>(
     curve: &'a dyn PlaneCurve,
     rev: bool,
     opts: &Options,
-    report: Option<fn(f64) -> f64>,
+    report: Option<Angle>,
 ) -> Result<View<'a>> {
-    let mut v = View::new(curve, rev, opts.certify, opts.tol)?;
+    // The tolerance is on the reported parameter: where the form's parameter runs up to k
+    // times slower than the shape's angle, it is solved k times finer.
+    let tol = opts.tol / report.map_or(1.0, Angle::max_rate);
+    let mut v = View::new(curve, rev, opts.certify, tol)?;
     v.report = report;
     Ok(v)
 }
@@ -82,7 +81,7 @@ pub(crate) fn prepare<'a>(
     curve: &'a dyn PlaneCurve,
     opts: &Options,
     force_rev: Option<bool>,
-    report: Option<fn(f64) -> f64>,
+    report: Option<Angle>,
 ) -> Result<Prepared<'a>> {
     opts.validate()?;
     let knots = knots_of(curve);
@@ -205,7 +204,12 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
     }
     let _ = &prep.tracks;
     let families = merge_families(v, families);
-    let pairs = finish_pairs(v, raw, &families);
+    // The shape in its own angle, for the last polish of the pairs.
+    let shape = match work.circle {
+        Some(_) => Some(View::new(curve, false, false, opts.tol)?),
+        None => None,
+    };
+    let pairs = finish_pairs(v, shape.as_ref(), raw, &families);
     Ok(Antipodal {
         pairs,
         inflections: inflection_list(v, &prep.zeros.zs),
@@ -304,9 +308,14 @@ fn classify(v: &View, s: f64, t: f64) -> PairType {
 }
 
 /// Polishes, validates (inward normals facing each other), deduplicates modulo the period,
-/// classifies and maps to the curve's parameters.
+/// classifies and maps to the curve's parameters. `shape`: the analytic shape in its own
+/// angle, when the search ran on its circle form; each pair gets a last Newton polish there,
+/// in the parameter it is reported in (the elliptic lemniscate's form runs up to `a/b` times
+/// slower than its angle, and at the nearly singular pairs of a slender one's lobes the
+/// parameters would otherwise be known only that much more coarsely).
 fn finish_pairs(
     v: &View,
+    shape: Option<&View>,
     raw: Vec<(f64, f64)>,
     families: &[(f64, f64, f64, f64)],
 ) -> Vec<AntipodalPair> {
@@ -362,7 +371,14 @@ fn finish_pairs(
             } else {
                 (ct, cs, t, s)
             };
-            let (p, q) = (v.point(s), v.point(t));
+            let (cs, ct, p, q) = match shape {
+                Some(o) => {
+                    let (a, b) = crate::pairs::polish(o, o, cs, ct, 1e-4 * o.period)
+                        .map_or((cs, ct), |(a, b)| (o.wrap(a), o.wrap(b)));
+                    (a, b, o.point(a), o.point(b))
+                }
+                None => (cs, ct, v.point(s), v.point(t)),
+            };
             AntipodalPair {
                 s: cs,
                 t: ct,

@@ -45,18 +45,22 @@ fn polar_jet_to(s: f64, c: f64, r: [f64; 4], order: usize) -> Jet {
     j
 }
 
-/// The shapes with a rational-circle form, as formulas in `(cos φ, sin φ)` (jets in φ).
+/// The shapes with a rational-circle form, as formulas in `(cos ψ, sin ψ)` of the circle's
+/// angle ψ (jets in ψ): the shape's own angle φ for all but the elliptic lemniscate, whose
+/// form inverts an ellipse (`tan φ = (a/b) tan ψ`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum CircleShape {
     Ellipse { a: f64, b: f64, center: V2 },
     Limacon { a: f64, b: f64 },
     Convexities { p: f64, eps: f64, m: u32 },
+    Lemniscate { a: f64, b: f64 },
 }
 
 impl CircleShape {
-    /// Point and derivatives in φ up to `order` at the angle with cosine `c` and sine `s`.
+    /// Point and derivatives in ψ up to `order` at the angle with cosine `c` and sine `s`.
     pub(crate) fn jet(self, c: f64, s: f64, order: usize) -> Jet {
         match self {
+            CircleShape::Lemniscate { a, b } => inverted_ellipse_jet(a, b, s, c, order),
             CircleShape::Ellipse { a, b, center } => ellipse_jet(a, b, center, s, c),
             CircleShape::Limacon { a, b } => {
                 polar_jet_to(s, c, [a + b * c, -b * s, -b * c, b * s], order)
@@ -72,6 +76,34 @@ impl CircleShape {
             }
         }
     }
+}
+
+/// The elliptic lemniscate as the inverse `P = V / |V|²` of the ellipse point
+/// `V = (cos ψ / a, sin ψ / b)`, with derivatives in ψ up to `order`: `V″ = −V`, so with
+/// `q = |V|²`: `q′ = 2V·V′`, `q″ = 2(|V′|² − q)`, `q‴ = −4q′`, and `Pq = V` differentiated
+/// gives each derivative of `P` from the lower ones (one division).
+fn inverted_ellipse_jet(a: f64, b: f64, s: f64, c: f64, order: usize) -> Jet {
+    let v = V2::new(c / a, s / b);
+    let v1 = V2::new(-s / a, c / b);
+    let q = v.dot(v);
+    let q1 = 2.0 * v.dot(v1);
+    let inv = 1.0 / q;
+    let p = v * inv;
+    let p1 = (v1 - p * q1) * inv;
+    let mut j = Jet {
+        p,
+        d1: p1,
+        ..Jet::default()
+    };
+    if order >= 2 {
+        let q2 = 2.0 * (v1.dot(v1) - q);
+        j.d2 = (-v - p1 * (2.0 * q1) - p * q2) * inv;
+        if order >= 3 {
+            let q3 = -4.0 * q1;
+            j.d3 = (-v1 - j.d2 * (3.0 * q1) - p1 * (3.0 * q2) - p * q3) * inv;
+        }
+    }
+    j
 }
 
 fn ellipse_jet(a: f64, b: f64, center: V2, s: f64, c: f64) -> Jet {
@@ -260,10 +292,17 @@ impl PlaneCurve for Limacon {
 }
 
 /// Elliptic lemniscate `r(φ) = sqrt(a² cos² φ + b² sin² φ)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct EllipticLemniscate {
     a: f64,
     b: f64,
+    forms: KeptForms,
+}
+
+impl PartialEq for EllipticLemniscate {
+    fn eq(&self, o: &Self) -> bool {
+        (self.a, self.b) == (o.a, o.b)
+    }
 }
 
 impl EllipticLemniscate {
@@ -271,7 +310,11 @@ impl EllipticLemniscate {
     pub fn new(a: f64, b: f64) -> Result<Self> {
         check("a", a, a > 0.0, "must be > 0")?;
         check("b", b, b > 0.0, "must be > 0")?;
-        Ok(Self { a, b })
+        Ok(Self {
+            a,
+            b,
+            forms: KeptForms::new(),
+        })
     }
 }
 
@@ -285,6 +328,16 @@ impl PlaneCurve for EllipticLemniscate {
     fn known_simple(&self) -> bool {
         // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
         true
+    }
+    fn circle_forms(&self) -> Option<&SymbolicForms> {
+        // Exact (the inverse of an ellipse) but not in φ = circle_angle(u): no `circle_form`
+        // for the generic path, only the kept forms with the shape's own jet and angle.
+        let (a, b) = (self.a, self.b);
+        kept_circle(
+            &self.forms,
+            || bspline::shapes::elliptic_lemniscate(a, b).ok(),
+            CircleShape::Lemniscate { a, b },
+        )
     }
     fn jet(&self, u: f64) -> Jet {
         self.jet_to(u, 3)

@@ -49,7 +49,8 @@ impl Taylor {
     pub(crate) fn recip(self, delta: f64) -> Option<Self> {
         let e = self.g.abs() * delta + self.r;
         let a = self.v.abs();
-        if !(e < a) {
+        // (NaN fails too.)
+        if e.partial_cmp(&a) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         let v2 = self.v * self.v;

@@ -5,6 +5,7 @@
 //! viewed reversed (`u ↦ a + b − u`), so inside the algorithms every closed curve runs
 //! counterclockwise and the left normal is the inward normal, as the papers assume.
 
+use crate::circle::Angle;
 use crate::curve::PlaneCurve;
 use crate::fast::Pw;
 use crate::forms::{Forms, SymbolicForms};
@@ -54,7 +55,7 @@ pub(crate) struct View<'a> {
     pub(crate) certified: Cell<bool>,
     /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
     /// run on its rational-circle form).
-    pub(crate) report: Option<fn(f64) -> f64>,
+    pub(crate) report: Option<Angle>,
     /// The last few jets evaluated (see [`JetCache`]).
     cache: JetCache,
 }
@@ -189,7 +190,7 @@ impl<'a> View<'a> {
     /// The parameter reported to the caller.
     pub(crate) fn to_curve(&self, u: f64) -> f64 {
         let x = self.eval_param(u);
-        self.report.map_or(x, |f| f(x))
+        self.report.map_or(x, |a| a.phi(x))
     }
 
     /// The parameter of the evaluated curve.

@@ -124,6 +124,35 @@ pub fn convexities(p: f64, eps: f64, m: usize) -> Result<Rational> {
     assemble(&nx, &ny, &den)
 }
 
+/// The elliptic lemniscate `r(φ) = √(a² cos² φ + b² sin² φ)` (degree 4): the inverse, in the
+/// unit circle about the origin, of the ellipse `a²X² + b²Y² = 1`, whose points `(cos ψ / a,
+/// sin ψ / b)` come from the rational circle. Inversion `V ↦ V / |V|²` keeps the polar angle
+/// and inverts the radius, so the point of parameter `u` lies at the polar angle φ with
+/// `tan φ = (a/b) tan ψ`, where `ψ = circle_angle(u)` (not at `φ = circle_angle(u)` as for the
+/// other shapes of this module).
+///
+/// ```
+/// let (a, b) = (6.0, 3.0);
+/// let c = bspline::shapes::elliptic_lemniscate(a, b).unwrap();
+/// let p = c.point(0.7);
+/// let phi = p[1].atan2(p[0]);
+/// let r = (a * a * phi.cos().powi(2) + b * b * phi.sin().powi(2)).sqrt();
+/// assert!((p[0].hypot(p[1]) - r).abs() < 1e-12 * a);
+/// ```
+pub fn elliptic_lemniscate(a: f64, b: f64) -> Result<Rational> {
+    positive("a", a)?;
+    positive("b", b)?;
+    let (x, y, w) = circle_parts();
+    // With X = x/(aw), Y = y/(bw): V/|V|² = (xw/a, yw/b) / (x²/a² + y²/b²), scaled by a²b²
+    // (a homogeneous factor) to keep the divisions out.
+    let den = x.mul(&x)?.scale(b * b).add(&y.mul(&y)?.scale(a * a))?;
+    assemble(
+        &x.mul(&w)?.scale(a * b * b),
+        &y.mul(&w)?.scale(a * a * b),
+        &den,
+    )
+}
+
 fn power(f: &BSpline, k: usize) -> Result<BSpline> {
     let mut acc = f.clone();
     for _ in 1..k {

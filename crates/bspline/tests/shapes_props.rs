@@ -1,7 +1,7 @@
 //! The exact rational shapes against their analytic definitions.
 #![allow(clippy::unwrap_used)]
 
-use bspline::shapes::{circle_angle, circle_param, convexities, ellipse, limacon};
+use bspline::shapes::{circle_angle, circle_param, convexities, ellipse, elliptic_lemniscate, limacon};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 
@@ -32,6 +32,15 @@ proptest! {
         let q = cv.point(u);
         prop_assert!((q[0] - r * phi.cos()).abs() < 1e-11 * r && (q[1] - r * phi.sin()).abs() < 1e-11 * r,
             "{:?} vs {}", q, r);
+        // The lemniscate's point of parameter u lies at tan φ = (a/b) tan ψ, ψ = circle_angle(u).
+        let lem = elliptic_lemniscate(a, p).unwrap();
+        prop_assert_eq!(lem.degree(), 4);
+        let (sl, cl) = phi.sin_cos();
+        let phl = (sl / p).atan2(cl / a);
+        let r = (a * a * phl.cos().powi(2) + p * p * phl.sin().powi(2)).sqrt();
+        let q = lem.point(u);
+        prop_assert!((q[0] - r * phl.cos()).abs() < 1e-12 * a.max(p) && (q[1] - r * phl.sin()).abs() < 1e-12 * a.max(p),
+            "{:?} vs {}", q, r);
         let el = ellipse([1.0, -2.0], a, p).unwrap();
         let q = el.point(u);
         prop_assert!((q[0] - 1.0 - a * phi.cos()).abs() < 1e-12 * a && (q[1] + 2.0 - p * phi.sin()).abs() < 1e-12 * a.max(p));
@@ -44,6 +53,8 @@ fn shapes_are_closed_counterclockwise_and_validated() {
         limacon(4.0, 2.5).unwrap(),
         convexities(3.0, 0.5, 3).unwrap(),
         ellipse([0.0; 2], 2.0, 1.0).unwrap(),
+        elliptic_lemniscate(6.0, 3.0).unwrap(),
+        elliptic_lemniscate(1.0, 20.0).unwrap(),
     ] {
         let (p0, p1) = (c.point(0.0), c.point(4.0));
         assert!((p0[0] - p1[0]).abs() < 1e-14 && (p0[1] - p1[1]).abs() < 1e-14);
@@ -60,4 +71,6 @@ fn shapes_are_closed_counterclockwise_and_validated() {
     }
     assert!(convexities(3.0, 1.5, 3).is_err());
     assert!(ellipse([0.0; 2], -1.0, 1.0).is_err());
+    assert!(elliptic_lemniscate(1.0, 0.0).is_err());
+    assert!(elliptic_lemniscate(f64::NAN, 1.0).is_err());
 }

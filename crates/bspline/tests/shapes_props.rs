@@ -1,7 +1,9 @@
 //! The exact rational shapes against their analytic definitions.
 #![allow(clippy::unwrap_used)]
 
-use bspline::shapes::{circle_angle, circle_param, convexities, ellipse, elliptic_lemniscate, limacon};
+use bspline::shapes::{
+    circle_angle, circle_param, convexities, ellipse, elliptic_lemniscate, limacon,
+};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 

@@ -347,4 +347,56 @@ mod tests {
             }
         }
     }
+
+    /// The elliptic lemniscate on its circle form (the inverse of an ellipse): the jets from
+    /// `(cos ψ, sin ψ)` against the exact rational form's own derivatives, and the reported
+    /// angle against the point's polar angle and the shape's formula in φ.
+    #[test]
+    fn lemniscate_form_matches_its_rational_form_and_angle() {
+        use crate::shapes::EllipticLemniscate;
+        for (a, b) in [(6.0, 3.0), (2.0, 1.0), (1.0, 4.0), (5.0, 1.0), (1.0, 1.0)] {
+            let inner = EllipticLemniscate::new(a, b).unwrap();
+            let c = OnCircle::new(&inner).unwrap();
+            let angle = c.angle();
+            assert_eq!(angle, Angle::Squeezed { a, b });
+            let mut out = [0.0; 8];
+            // (u = 4 is the seam: the jet wraps to u = 0, where ψ″ jumps.)
+            for i in 0..2000 {
+                let u = 4.0 * i as f64 / 2000.0;
+                let j = c.jet_to(u, 3);
+                c.forms.curve.eval_derivs(u, 3, &mut out);
+                let exact = [0, 1, 2, 3].map(|k| V2::new(out[2 * k], out[2 * k + 1]));
+                let scale = exact.iter().map(|v| v.norm()).sum::<f64>();
+                for (k, (x, y)) in [j.p, j.d1, j.d2, j.d3].into_iter().zip(exact).enumerate() {
+                    assert!(
+                        (x - y).norm() <= 1e-12 * scale,
+                        "{a}/{b} u = {u} d{k}: {x:?} vs {y:?}"
+                    );
+                }
+                let phi = angle.phi(u);
+                assert!((0.0..TAU).contains(&phi), "{u}: {phi}");
+                let polar = j.p.y.atan2(j.p.x).rem_euclid(TAU);
+                let d = (phi - polar).abs();
+                assert!(
+                    d.min(TAU - d) <= 1e-14 * TAU,
+                    "{a}/{b} u = {u}: {phi} vs {polar}"
+                );
+                let own = inner.jet(phi).p;
+                assert!(
+                    (own - j.p).norm() <= 1e-13 * a.max(b),
+                    "{u}: {own:?} vs {:?}",
+                    j.p
+                );
+            }
+            // The angle runs up monotonically from 0 (no jump inside the domain).
+            let mut last = -1.0;
+            for i in 0..4000 {
+                let phi = angle.phi(4.0 * i as f64 / 4000.0);
+                assert!(phi > last, "{a}/{b}: φ not increasing at {i}");
+                last = phi;
+            }
+        }
+        // Too slender a lemniscate keeps the sampled path.
+        assert!(OnCircle::new(&EllipticLemniscate::new(6.0, 1.0).unwrap()).is_none());
+    }
 }

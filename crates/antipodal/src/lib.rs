@@ -17,8 +17,9 @@
 //! coefficients (certified root isolation from `bspline`). Analytic shapes use Jia's sampled
 //! inflection search and sign tests at segment ends; their results say `certified: false`. The
 //! ellipse, the limaçon and the curves with convexities run on their exact rational forms
-//! through the rational unit circle instead (certified, parameters still reported in φ); the
-//! elliptic lemniscate (a square root) stays sampled.
+//! through the rational unit circle instead (certified, parameters still reported in φ), and
+//! so does the elliptic lemniscate, the inverse of an ellipse, up to `a/b = 5` (more slender
+//! ones stay sampled).
 
 mod bounds;
 mod circle;

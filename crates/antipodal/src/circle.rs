@@ -50,15 +50,6 @@ pub(crate) enum Angle {
 }
 
 impl Angle {
-    /// How many times faster than the circle's angle ψ the shape's angle φ turns, at most
-    /// (`dφ/dψ = ab / (b² cos² ψ + a² sin² ψ)` for the squeezed one, between `b/a` and `a/b`).
-    pub(crate) fn max_rate(self) -> f64 {
-        match self {
-            Angle::Circle => 1.0,
-            Angle::Squeezed { a, b } => (a / b).max(b / a),
-        }
-    }
-
     /// The shape's angle φ of the form's parameter `u`.
     pub(crate) fn phi(self, u: f64) -> f64 {
         match self {

@@ -67,10 +67,7 @@ fn view_of<'a>(
     opts: &Options,
     report: Option<Angle>,
 ) -> Result<View<'a>> {
-    // The tolerance is on the reported parameter: where the form's parameter runs up to k
-    // times slower than the shape's angle, it is solved k times finer.
-    let tol = opts.tol / report.map_or(1.0, Angle::max_rate);
-    let mut v = View::new(curve, rev, opts.certify, tol)?;
+    let mut v = View::new(curve, rev, opts.certify, opts.tol)?;
     v.report = report;
     Ok(v)
 }
@@ -204,12 +201,7 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
     }
     let _ = &prep.tracks;
     let families = merge_families(v, families);
-    // The shape in its own angle, for the last polish of the pairs.
-    let shape = match work.circle {
-        Some(_) => Some(View::new(curve, false, false, opts.tol)?),
-        None => None,
-    };
-    let pairs = finish_pairs(v, shape.as_ref(), raw, &families);
+    let pairs = finish_pairs(v, raw, &families);
     Ok(Antipodal {
         pairs,
         inflections: inflection_list(v, &prep.zeros.zs),
@@ -308,14 +300,9 @@ fn classify(v: &View, s: f64, t: f64) -> PairType {
 }
 
 /// Polishes, validates (inward normals facing each other), deduplicates modulo the period,
-/// classifies and maps to the curve's parameters. `shape`: the analytic shape in its own
-/// angle, when the search ran on its circle form; each pair gets a last Newton polish there,
-/// in the parameter it is reported in (the elliptic lemniscate's form runs up to `a/b` times
-/// slower than its angle, and at the nearly singular pairs of a slender one's lobes the
-/// parameters would otherwise be known only that much more coarsely).
+/// classifies and maps to the curve's parameters.
 fn finish_pairs(
     v: &View,
-    shape: Option<&View>,
     raw: Vec<(f64, f64)>,
     families: &[(f64, f64, f64, f64)],
 ) -> Vec<AntipodalPair> {
@@ -371,14 +358,7 @@ fn finish_pairs(
             } else {
                 (ct, cs, t, s)
             };
-            let (cs, ct, p, q) = match shape {
-                Some(o) => {
-                    let (a, b) = crate::pairs::polish(o, o, cs, ct, 1e-4 * o.period)
-                        .map_or((cs, ct), |(a, b)| (o.wrap(a), o.wrap(b)));
-                    (a, b, o.point(a), o.point(b))
-                }
-                None => (cs, ct, v.point(s), v.point(t)),
-            };
+            let (p, q) = (v.point(s), v.point(t));
             AntipodalPair {
                 s: cs,
                 t: ct,

@@ -65,6 +65,8 @@ impl Iv {
 pub(crate) struct ArcBounds {
     /// The signed curvature (positive where the view's curve turns left).
     pub(crate) kappa: Iv,
+    /// The greatest speed `|C′|` (in the view's parameter).
+    pub(crate) speed: f64,
     /// Bounding box of the arc.
     pub(crate) lo: V2,
     pub(crate) hi: V2,
@@ -298,8 +300,10 @@ impl BoundForms {
 
     /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
     /// per fine piece, the common part of the Taylor model's range and of the quotient of the
-    /// factors' ranges. `None` where `|D|` or `w` is not proven positive.
-    fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<()> {
+    /// factors' ranges. Returns the greatest speed `|C′| = |D| / w²` there; `None` where `|D|`
+    /// or `w` is not proven positive.
+    fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<f64> {
+        let mut speed = 0.0f64;
         for (i, x0, x1) in self.curvature.pw.overlaps(lo, hi) {
             let delta = 0.5 * (x1 - x0);
             let clip = |(t, hull): (Taylor, Iv)| {
@@ -313,6 +317,7 @@ impl BoundForms {
                 None => (Taylor::constant(1.0), Iv::new(1.0, 1.0)),
             };
             let ranges = quotient(k, d, w)?;
+            speed = speed.max(d.hi / (w.lo * w.lo));
             let model = td
                 .recip(delta)
                 .map(|inv| tk.mul(tw.cube(delta), delta).mul(inv.cube(delta), delta));
@@ -325,11 +330,11 @@ impl BoundForms {
             };
             *acc = Iv::new(acc.lo.min(piece.lo), acc.hi.max(piece.hi));
         }
-        Some(())
+        Some(speed)
     }
 
     /// [`BoundForms::join_kappa`] from the factors' ranges over the whole of `[lo, hi]`.
-    fn join_kappa_ranges(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<()> {
+    fn join_kappa_ranges(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<f64> {
         let empty = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
         let (mut k, mut d, mut w) = (empty, empty, Iv::new(1.0, 1.0));
         self.curvature.join_range(lo, hi, &mut k);
@@ -340,7 +345,7 @@ impl BoundForms {
         }
         let q = quotient(k, d, w)?;
         *acc = Iv::new(acc.lo.min(q.lo), acc.hi.max(q.hi));
-        Some(())
+        Some(d.hi / (w.lo * w.lo))
     }
 }
 
@@ -374,12 +379,14 @@ impl View<'_> {
         let forms = cert.bound_forms()?;
         let (lo, hi) = (lo.min(hi), lo.max(hi));
         let mut kappa = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        let mut speed = 0.0f64;
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
-            if forms.aligned {
-                forms.join_kappa(x0, x1, &mut kappa)?;
+            let v = if forms.aligned {
+                forms.join_kappa(x0, x1, &mut kappa)?
             } else {
-                forms.join_kappa_ranges(x0, x1, &mut kappa)?;
-            }
+                forms.join_kappa_ranges(x0, x1, &mut kappa)?
+            };
+            speed = speed.max(v);
         }
         if !(kappa.excludes_zero() && kappa.lo.is_finite() && kappa.hi.is_finite()) {
             return None;
@@ -387,6 +394,7 @@ impl View<'_> {
         let (lo_box, hi_box) = self.arc_box(lo, hi)?;
         Some(ArcBounds {
             kappa,
+            speed: speed * (1.0 + MARGIN),
             lo: lo_box,
             hi: hi_box,
         })
@@ -490,6 +498,8 @@ mod tests {
                     let j = v.jet(u);
                     let k = j.curvature();
                     prop_assert!(inside(k, b.kappa), "κ = {k} outside {:?} at {u}", b.kappa);
+                    let sp = j.d1.norm();
+                    prop_assert!(sp <= b.speed * (1.0 + 1e-9), "speed {sp} above {} at {u}", b.speed);
                     monotone &= sign * k >= 0.0;
                     if sign == 0.0 {
                         sign = k.signum();

@@ -171,35 +171,77 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let (Some(bs), Some(bt)) = (p.vs.arc_bounds(s0, s1), p.vt.arc_bounds(t_lo, t_hi)) else {
         return None;
     };
-    let dist = bs.distance(&bt);
-    let inv_r = dist.recip()?;
-    // |θ| anywhere on J: its value at s0, plus the turn of the normal along S over J, plus
-    // the turn of r, which moves by at most the two boxes' diameters.
+    // |θ| anywhere on J, to begin with: its value at s0, plus the turn of the normal along S
+    // over J, plus the turn of r, which moves by at most the two boxes' diameters. (θ at an
+    // end is that of the solved opposite point: within its noise of the exact one.)
+    let end_angle = |s: f64, t: f64| {
+        (p.sin_theta(s, t).abs() + p.theta_noise(s, t))
+            .min(1.0)
+            .asin()
+    };
+    let th0 = end_angle(s0, t0);
     let r0 = p.r(s0, t0).norm();
     let turn_s = p.vs.normal(s0).dot(p.vs.normal(s1)).clamp(-1.0, 1.0).acos();
     let turn_r = ((bs.diameter() + bt.diameter()) / r0).min(1.0).asin();
-    let theta_max = p.sin_theta(s0, t0).abs().min(1.0).asin() + turn_s + turn_r;
-    let cos = Iv::new(
-        if theta_max < FRAC_PI_2 {
-            theta_max.cos()
-        } else {
-            -1.0
-        },
-        1.0,
-    );
-    // θ′/|C′| = κ(s) · ((ρ(s) + ρ(t)) cos θ / |r| − 1) with signed radii ρ = 1/κ: κ(s) keeps
-    // its sign on a monotone piece, so the bracket decides (written so that each range
-    // enters once, which keeps the interval bound tight).
+    let mut theta_max = th0 + turn_s + turn_r;
+    let mut dist = bs.distance(&bt);
     let (rho_s, rho_t) = (bs.kappa.recip()?, bt.kappa.recip()?);
     let ks = bs.kappa;
-    let g = rho_s
-        .add(rho_t)
-        .mul(cos)
-        .mul(inv_r)
-        .sub(Iv::new(1.0, 1.0))
-        .widened(1e-9);
-    // θ′ has the sign of κ(s) times that of the bracket.
-    (ks.excludes_zero() && g.excludes_zero()).then_some((ks.lo > 0.0) == (g.lo > 0.0))
+    let len = (s1 - s0).abs();
+    // The far end's angle and distance, once the first bound has failed.
+    let mut far: Option<(f64, f64)> = None;
+    for _ in 0..4 {
+        let inv_r = dist.recip()?;
+        let cos = Iv::new(
+            if theta_max < FRAC_PI_2 {
+                theta_max.cos()
+            } else {
+                -1.0
+            },
+            1.0,
+        );
+        // θ′/|C′| = κ(s) · ((ρ(s) + ρ(t)) cos θ / |r| − 1) with signed radii ρ = 1/κ: κ(s)
+        // keeps its sign on a monotone piece, so the bracket decides (written so that each
+        // range enters once, which keeps the interval bound tight).
+        let g = rho_s
+            .add(rho_t)
+            .mul(cos)
+            .mul(inv_r)
+            .sub(Iv::new(1.0, 1.0))
+            .widened(1e-9);
+        if ks.excludes_zero() && g.excludes_zero() {
+            // θ′ has the sign of κ(s) times that of the bracket.
+            return Some((ks.lo > 0.0) == (g.lo > 0.0));
+        }
+        // Not proven: tighten the bound on |θ| by the rate θ can change at (|θ′| ≤ |C′| |κ(s)|
+        // |g|): a zero-free path from both ends, |θ(x)| ≤ (|θ(s0)| + |θ(s1)| + max|θ′| |J|)/2.
+        // Every bound so far holds on all of J, so the new one does too; with it, the range of
+        // |r| by its own rate from both ends.
+        let (th1, r1) = *far.get_or_insert_with(|| (end_angle(s1, t1), p.r(s1, t1).norm()));
+        let most = bs.speed * ks.lo.abs().max(ks.hi.abs()) * g.lo.abs().max(g.hi.abs());
+        let next = 0.5 * (th0 + th1 + most * len) * (1.0 + 1e-9);
+        if !(next < 0.9 * theta_max) {
+            return None;
+        }
+        theta_max = next;
+        // |d|r|/ds| = |C′(s)| |1 + κ(s)/κ(t)| |sin θ| along a section (the tangents at s and t
+        // are opposite, and t moves κ(s)/κ(t) times as far in arc length).
+        let spread = Iv::new(1.0, 1.0).add(ks.mul(rho_t));
+        let r_rate = bs.speed * spread.lo.abs().max(spread.hi.abs());
+        let swing = r_rate * theta_max.min(FRAC_PI_2).sin() * len;
+        // (The ends' t are solved to the tolerance: |r| there is known to that times the
+        // speed of T, and to its rounding.)
+        let pad = 64.0 * p.vt.tol * bt.speed + 1e-12 * (r0 + r1);
+        let mid = 0.5 * (r0 + r1);
+        dist = Iv::new(
+            dist.lo.max(mid - 0.5 * swing - pad),
+            dist.hi.min(mid + 0.5 * swing + pad),
+        );
+        if dist.lo > dist.hi {
+            return None;
+        }
+    }
+    None
 }
 
 /// What is left of `p` beside a found pair `(s, t)` on the side `dir` (+1: above `s`), cut

@@ -25,7 +25,7 @@ fn random_bsplines_against_oracle() {
 }
 
 /// The same curves on the path of curves without symbolic forms (Jia's sampled inflections,
-/// signs at segment ends, Table 1's ε), which the elliptic lemniscate takes.
+/// signs at segment ends, Table 1's ε), which elliptic lemniscates more slender than a/b = 5 take.
 #[test]
 fn random_bsplines_uncertified_against_oracle() {
     run(

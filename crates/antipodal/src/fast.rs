@@ -443,6 +443,8 @@ fn split_right(g: &mut [f64], r: f64) {
 #[derive(Debug, Clone)]
 pub(crate) struct ValueSlope {
     deg: usize,
+    /// 1 or 2.
+    dim: usize,
     /// Per piece, the `deg + 1` points `C(deg, j) · c_j` (the second component 0 in dimension 1).
     value: Vec<[f64; 2]>,
     /// Per piece, the `deg` points `C(deg − 1, j) · deg/h · (c_{j+1} − c_j)` of the derivative.
@@ -474,6 +476,7 @@ impl ValueSlope {
         };
         Some(Self {
             deg: f.deg,
+            dim: d,
             value: scaled(f),
             slope,
         })
@@ -496,8 +499,26 @@ impl ValueSlope {
                 cs.iter().rev().fold([0.0; 2], step)
             }
         };
-        let v = horner(&self.value[i * (p + 1)..(i + 1) * (p + 1)]);
-        let g = horner(&self.slope[i * p..(i + 1) * p]);
+        // A scalar skips the second component (a third fewer operations for the
+        // curvature numerator and the weight).
+        let scalar = |cs: &[[f64; 2]]| {
+            let step = |acc: f64, c: &[f64; 2]| acc * ratio + c[0];
+            let x = if mirror {
+                cs.iter().fold(0.0, step)
+            } else {
+                cs.iter().rev().fold(0.0, step)
+            };
+            [x, 0.0]
+        };
+        let (values, slopes) = (
+            &self.value[i * (p + 1)..(i + 1) * (p + 1)],
+            &self.slope[i * p..(i + 1) * p],
+        );
+        let (v, g) = if self.dim == 1 {
+            (scalar(values), scalar(slopes))
+        } else {
+            (horner(values), horner(slopes))
+        };
         let pow = if p == 0 { 1.0 } else { base.powi(p as i32 - 1) };
         (
             [v[0] * pow * base, v[1] * pow * base],

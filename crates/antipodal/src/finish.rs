@@ -117,14 +117,14 @@ fn bracketed_ahead(
 }
 
 /// How far from `from` towards `to` (pairs `(s, t)` of opposite points) θ is proven strictly
-/// monotone: the whole way, or else a quarter of it, a sixteenth, …, whichever is proven
-/// first; `None` when none is. (The ranges tighten as the stretch shrinks. Extending a proven
+/// monotone: the fraction `first` of the way (1: the whole), or else a quarter of that, a
+/// sixteenth, …, whichever is proven first; `None` when none is. (The ranges tighten as the stretch shrinks. Extending a proven
 /// stretch piece by piece was tried: near where θ′ vanishes the pieces only crawl, and the
 /// march they spare is cheaper than their bounds.)
-fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64)) -> Option<(f64, f64)> {
+fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64), first: f64) -> Option<(f64, f64)> {
     let dir = if to.0 >= from.0 { 1.0 } else { -1.0 };
     let whole = (to.0 - from.0) * dir;
-    let mut len = whole;
+    let mut len = whole * first;
     for _ in 0..24 {
         if len <= 64.0 * p.vs.tol {
             break;
@@ -257,21 +257,37 @@ pub(crate) fn certified_rest<'a>(
     t: f64,
     dir: f64,
 ) -> Option<Option<Pair<'a>>> {
-    let (end_s, end_t) = if dir > 0.0 {
+    rest_beyond(p, (s, t), dir, 1.0)
+}
+
+/// [`certified_rest`] with the first cut tried at the fraction `first` of the way to the end.
+fn rest_beyond<'a>(
+    p: &Pair<'a>,
+    (s, t): (f64, f64),
+    dir: f64,
+    first: f64,
+) -> Option<Option<Pair<'a>>> {
+    let end = if dir > 0.0 {
         (p.sb, p.tb)
     } else {
         (p.sa, p.ta)
     };
-    let room = (end_s - s) * dir;
+    let room = (end.0 - s) * dir;
     if room.is_nan() || room <= 0.0 {
         return Some(None);
     }
     // From the pair itself: the exact pair lies within the tolerance of it, either on the
     // proven stretch (its only zero there) or behind it, closer than anything resolved.
-    let (e, te) = monotone_reach(p, (s, t), (end_s, end_t))?;
-    if e == end_s {
+    let (e, te) = monotone_reach(p, (s, t), end, first)?;
+    if e == end.0 {
         return Some(None);
     }
+    cut_at(p, s, (e, te), dir)
+}
+
+/// The rest of `p` beyond a cut at `e` on the side `dir` of a found pair at `s`: `None` when
+/// the cut is within the tolerance of the pair or θ there is within its noise.
+fn cut_at<'a>(p: &Pair<'a>, s: f64, (e, te): (f64, f64), dir: f64) -> Option<Option<Pair<'a>>> {
     if (e - s) * dir <= 64.0 * p.vs.tol || p.sin_theta(e, te).abs() <= p.theta_noise(e, te) {
         return None;
     }
@@ -280,6 +296,41 @@ pub(crate) fn certified_rest<'a>(
     } else {
         p.sub(p.sa, p.ta, e, te)
     }))
+}
+
+/// Both sides of a found pair `(s, t)` inside `p` at once, as [`certified_rest`] gives each
+/// (below, then above): a side is settled by θ proven monotone from the pair to its end; two
+/// sides that are not share one proof over a quarter of each, across the pair (θ monotone
+/// there has no zero but the pair's); a side still open goes on alone from a quarter on.
+pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Option<Pair<'a>>>; 2] {
+    let ends = [(p.sa, p.ta), (p.sb, p.tb)];
+    let room = |i: usize| (ends[i].0 - s).abs();
+    let whole = |i: usize| {
+        let r = room(i);
+        if r.is_nan() || r <= 0.0 || theta_monotone(p, (s, t), ends[i]).is_some() {
+            Some(None)
+        } else {
+            None
+        }
+    };
+    let mut out = [whole(0), whole(1)];
+    if out[0].is_none() && out[1].is_none() {
+        let lo = s - 0.25 * room(0);
+        let hi = s + 0.25 * room(1);
+        let (tl, th) = (
+            p.opposite_between(lo, ends[0], (s, t)),
+            p.opposite_between(hi, (s, t), ends[1]),
+        );
+        if theta_monotone(p, (lo, tl), (hi, th)).is_some() {
+            out = [cut_at(p, s, (lo, tl), -1.0), cut_at(p, s, (hi, th), 1.0)];
+        }
+    }
+    for (i, dir) in [(0, -1.0), (1, 1.0)] {
+        if out[i].is_none() {
+            out[i] = rest_beyond(p, (s, t), dir, 0.25);
+        }
+    }
+    out
 }
 
 /// `(ρ(s) + ρ(t)) cos θ / |r| − 1` at one point (the bracket of θ′ in [`theta_monotone`]).

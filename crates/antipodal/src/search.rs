@@ -7,7 +7,7 @@
 //! linearly), and the stretch beside a found pair that Table 1 cuts off by a small ε is as
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
-use crate::finish::{certified_finish, certified_rest, Finish};
+use crate::finish::{certified_finish, certified_rest, certified_rests, Finish};
 use crate::pairs::{negligible, polish, polish_within, Pair};
 use crate::prims::Prefer;
 
@@ -104,11 +104,20 @@ fn rests<'a>(
 ) -> Vec<Pair<'a>> {
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     let mut out = Vec::new();
-    for (want, dir) in [(below, -1.0), (above, 1.0)] {
+    let both = match certified && above && below {
+        true => certified_rests(p, s, t),
+        false => [None, None],
+    };
+    for ((want, dir), joint) in [(below, -1.0), (above, 1.0)].into_iter().zip(both) {
         if !want {
             continue;
         }
-        match certified.then(|| certified_rest(p, s, t, dir)).flatten() {
+        let proven = match (above && below, certified) {
+            (true, _) => joint,
+            (false, true) => certified_rest(p, s, t, dir),
+            (false, false) => None,
+        };
+        match proven {
             Some(rest) => out.extend(rest),
             // Where no stretch is proven (θ′ changes sign right beside the pair, or the
             // ranges are too loose: a slender ellipse's type-B pair), Table 1's ε decided by

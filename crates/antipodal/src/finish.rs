@@ -118,9 +118,9 @@ fn bracketed_ahead(
 
 /// How far from `from` towards `to` (pairs `(s, t)` of opposite points) θ is proven strictly
 /// monotone: the fraction `first` of the way (1: the whole), or else a quarter of that, a
-/// sixteenth, …, whichever is proven first; `None` when none is. (The ranges tighten as the stretch shrinks. Extending a proven
-/// stretch piece by piece was tried: near where θ′ vanishes the pieces only crawl, and the
-/// march they spare is cheaper than their bounds.)
+/// sixteenth, …, whichever is proven first; `None` when none is. (The ranges tighten as the
+/// stretch shrinks. Extending a proven stretch piece by piece was tried: near where θ′
+/// vanishes the pieces only crawl, and the march they spare is cheaper than their bounds.)
 fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64), first: f64) -> Option<(f64, f64)> {
     let dir = if to.0 >= from.0 { 1.0 } else { -1.0 };
     let whole = (to.0 - from.0) * dir;

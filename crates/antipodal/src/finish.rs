@@ -19,7 +19,7 @@
 
 use crate::bounds::Iv;
 use crate::pairs::{polish, Pair};
-use crate::search::bisect;
+use crate::search::{bisect, THETA_NOISE};
 use std::f64::consts::FRAC_PI_2;
 
 /// What a finishing attempt proved.
@@ -173,12 +173,9 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     };
     // |θ| anywhere on J, to begin with: its value at s0, plus the turn of the normal along S
     // over J, plus the turn of r, which moves by at most the two boxes' diameters. (θ at an
-    // end is that of the solved opposite point: within its noise of the exact one.)
-    let end_angle = |s: f64, t: f64| {
-        (p.sin_theta(s, t).abs() + p.theta_noise(s, t))
-            .min(1.0)
-            .asin()
-    };
+    // end is that of the solved opposite point: within its noise, at most `THETA_NOISE`, of
+    // the exact one.)
+    let end_angle = |s: f64, t: f64| (p.sin_theta(s, t).abs() + THETA_NOISE).min(1.0).asin();
     let th0 = end_angle(s0, t0);
     let r0 = p.r(s0, t0).norm();
     let turn_s = p.vs.normal(s0).dot(p.vs.normal(s1)).clamp(-1.0, 1.0).acos();

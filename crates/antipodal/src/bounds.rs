@@ -299,18 +299,17 @@ impl BoundForms {
     }
 
     /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
-    /// per fine piece, the common part of the Taylor model's range and of the quotient of the
-    /// factors' ranges. Over a long interval (three fine pieces or more) a piece it covers
-    /// gets the quotient of the factors' hulls alone: cheaper, and as good there (measured on
-    /// the papers' shapes). Returns the greatest speed `|C′| = |D| / w²` there; `None` where
-    /// `|D|` or `w` is not proven positive.
+    /// per fine piece it overlaps in part, the common part of the Taylor model's range and of
+    /// the quotient of the factors' ranges; per piece it covers, the quotient of the factors'
+    /// hulls alone (cheaper, and as good for the proofs: measured on the papers' shapes, the
+    /// models pay off only on the short stretches beside a pair). Returns the greatest speed
+    /// `|C′| = |D| / w²` there; `None` where `|D|` or `w` is not proven positive.
     fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<f64> {
         let mut speed = 0.0f64;
-        let long = self.curvature.pw.overlaps(lo, hi).nth(2).is_some();
         for (i, x0, x1) in self.curvature.pw.overlaps(lo, hi) {
             let delta = 0.5 * (x1 - x0);
             let (a, b) = self.curvature.pw.piece_span(i);
-            if long && x0 <= a && x1 >= b {
+            if x0 <= a && x1 >= b {
                 let w = match &self.weight {
                     Some(e) => e.hull[i],
                     None => Iv::new(1.0, 1.0),

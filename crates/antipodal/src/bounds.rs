@@ -271,6 +271,9 @@ pub(crate) struct BoundForms {
     /// The three enclosures share their fine pieces (always, for forms of one curve): the
     /// curvature is then bounded by Taylor models, piece by piece.
     aligned: bool,
+    /// Per fine piece (when aligned), the curvature and the greatest speed its hulls prove
+    /// (`None` where they do not prove `|D|` and `w` positive).
+    covered: Vec<Option<(Iv, f64)>>,
 }
 
 impl BoundForms {
@@ -290,11 +293,22 @@ impl BoundForms {
             && weight
                 .as_ref()
                 .is_none_or(|e| e.breaks() == curvature.breaks());
+        let covered = match aligned {
+            true => (0..curvature.hull.len())
+                .map(|i| {
+                    let w = weight.as_ref().map_or(Iv::new(1.0, 1.0), |e| e.hull[i]);
+                    let d = tangent.hull[i];
+                    Some((quotient(curvature.hull[i], d, w)?, d.hi / (w.lo * w.lo)))
+                })
+                .collect(),
+            false => Vec::new(),
+        };
         Some(Self {
             curvature,
             tangent,
             weight,
             aligned,
+            covered,
         })
     }
 
@@ -310,13 +324,9 @@ impl BoundForms {
             let delta = 0.5 * (x1 - x0);
             let (a, b) = self.curvature.pw.piece_span(i);
             if x0 <= a && x1 >= b {
-                let w = match &self.weight {
-                    Some(e) => e.hull[i],
-                    None => Iv::new(1.0, 1.0),
-                };
-                let ranges = quotient(self.curvature.hull[i], self.tangent.hull[i], w)?;
-                speed = speed.max(self.tangent.hull[i].hi / (w.lo * w.lo));
-                *acc = Iv::new(acc.lo.min(ranges.lo), acc.hi.max(ranges.hi));
+                let (kappa, v) = self.covered[i]?;
+                speed = speed.max(v);
+                *acc = Iv::new(acc.lo.min(kappa.lo), acc.hi.max(kappa.hi));
                 continue;
             }
             let clip = |(t, hull): (Taylor, Iv)| {

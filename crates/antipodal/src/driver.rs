@@ -68,7 +68,9 @@ fn view_of<'a>(
     report: Option<Angle>,
 ) -> Result<View<'a>> {
     let mut v = View::new(curve, rev, opts.certify, opts.tol)?;
-    v.report = report;
+    if let Some(angle) = report {
+        v.set_report(angle);
+    }
     Ok(v)
 }
 

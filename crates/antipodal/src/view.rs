@@ -55,7 +55,12 @@ pub(crate) struct View<'a> {
     pub(crate) certified: Cell<bool>,
     /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
     /// run on its rational-circle form).
-    pub(crate) report: Option<Angle>,
+    report: Option<Angle>,
+    /// The least order a jet is evaluated to: 2 where the second derivative costs little
+    /// beside the first (analytic formulas), so that the many requests for a point's first
+    /// and then second derivatives (θ, then its noise; a Newton step's end, then the next
+    /// solve) find it cached.
+    least_order: usize,
     /// The last few jets evaluated (see [`JetCache`]).
     cache: JetCache,
 }
@@ -141,6 +146,7 @@ impl<'a> View<'a> {
             tol: tol * (b - a).max(1.0),
             certified: Cell::new(certify && curve.rational().is_some()),
             report: None,
+            least_order: if curve.rational().is_none() { 2 } else { 0 },
             cache: JetCache::new(),
         };
         let sampled = || {
@@ -187,6 +193,13 @@ impl<'a> View<'a> {
         }
     }
 
+    /// Reports parameters as the shape's angle: the view runs on a circle form, whose jets
+    /// come from the shape's formula.
+    pub(crate) fn set_report(&mut self, angle: Angle) {
+        self.report = Some(angle);
+        self.least_order = 2;
+    }
+
     /// The parameter reported to the caller.
     pub(crate) fn to_curve(&self, u: f64) -> f64 {
         let x = self.eval_param(u);
@@ -217,6 +230,7 @@ impl<'a> View<'a> {
         if let Some(j) = self.cache.get(u, order) {
             return j;
         }
+        let order = order.max(self.least_order);
         let j = self.oriented_jet(u, order);
         self.cache.put(u, order, j);
         j

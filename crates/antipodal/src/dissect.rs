@@ -204,7 +204,13 @@ impl View<'_> {
                         continue;
                     }
                     if (k0 < 0.0) != (k1 < 0.0) && k1 != 0.0 {
-                        zs.push(newton_bracketed(kappa, w[0], w[1], k0, self.tol, f64::NAN));
+                        zs.push(newton_bracketed(
+                            kappa,
+                            (w[0], w[1]),
+                            (k0, k1),
+                            self.tol,
+                            f64::NAN,
+                        ));
                     }
                 }
                 zs

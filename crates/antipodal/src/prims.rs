@@ -46,7 +46,7 @@ impl View<'_> {
                     Some(Count::One(a, b)) => {
                         let (fa, fb) = (f(a).0, f(b).0);
                         if (fa < 0.0) != (fb < 0.0) {
-                            let u = newton_bracketed(&f, a, b, fa, self.tol, hint);
+                            let u = newton_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
                             return accept(u).then_some(u);
                         }
                     }
@@ -63,7 +63,7 @@ impl View<'_> {
                         // Certified unique root in [a, b]: refine on the curve itself.
                         let (fa, fb) = (f(a).0, f(b).0);
                         if (fa < 0.0) != (fb < 0.0) {
-                            let u = newton_bracketed(&f, a, b, fa, self.tol, hint);
+                            let u = newton_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
                             return accept(u).then_some(u);
                         }
                     }
@@ -154,7 +154,7 @@ impl View<'_> {
                 if (fl < 0.0) == (fh < 0.0) {
                     return None;
                 }
-                let u = newton_bracketed(f, lo.min(hi), lo.max(hi), fl, self.tol, hint);
+                let u = newton_bracketed(f, (lo.min(hi), lo.max(hi)), (fl, fh), self.tol, hint);
                 return accept(u).then_some(u);
             }
         }
@@ -248,7 +248,13 @@ impl View<'_> {
             return None;
         }
         if (fl < 0.0) != (fh < 0.0) {
-            return Some(Some(newton_bracketed(f, lo, hi, fl, self.tol, f64::NAN)));
+            return Some(Some(newton_bracketed(
+                f,
+                (lo, hi),
+                (fl, fh),
+                self.tol,
+                f64::NAN,
+            )));
         }
         // The bending direction: the side the tangent turns to (|Φ| < π).
         let turn = jl.d1.cross(jh.d1);
@@ -318,7 +324,7 @@ impl View<'_> {
                 let j = self.jet_to(u, 2);
                 (j.d1.dot(v), j.d2.dot(v))
             };
-            let ue = newton_bracketed(g, lo, hi, gl, self.tol, f64::NAN);
+            let ue = newton_bracketed(g, (lo, hi), (gl, gh), self.tol, f64::NAN);
             cuts.push((ue, self.point(ue)));
         }
         cuts.push((hi, jh.p));
@@ -333,7 +339,7 @@ impl View<'_> {
             let ((x0, p0), (x1, p1)) = (cuts[k], cuts[k + 1]);
             let (f0, f1) = (val(p0), val(p1));
             if (f0 < 0.0) != (f1 < 0.0) {
-                let u = newton_bracketed(f, x0, x1, f0, self.tol, hint);
+                let u = newton_bracketed(f, (x0, x1), (f0, f1), self.tol, hint);
                 if accept(u) {
                     return Some(Some(u));
                 }
@@ -360,7 +366,7 @@ fn sampled(
     } else if fhi == 0.0 {
         hi
     } else if (flo < 0.0) != (fhi < 0.0) {
-        newton_bracketed(f, lo, hi, flo, tol, hint)
+        newton_bracketed(f, (lo, hi), (flo, fhi), tol, hint)
     } else if flo.abs() <= 1e-12 * fhi.abs() {
         lo
     } else if fhi.abs() <= 1e-12 * flo.abs() {

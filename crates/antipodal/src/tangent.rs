@@ -173,7 +173,7 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
     if (fa > 0.0) == (fb > 0.0) {
         return false;
     }
-    let u = crate::view::newton_bracketed(f, a, b, fa, v.tol, f64::NAN);
+    let u = crate::view::newton_bracketed(f, (a, b), (fa, fb), v.tol, f64::NAN);
     let j = v.jet(u);
     (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
 }

@@ -465,22 +465,26 @@ pub(crate) fn reverse(r: &Rational) -> crate::Result<Rational> {
 
 /// Newton's method safeguarded by a bracket `[lo, hi]` on which `f` changes sign: never fails.
 ///
-/// `f` returns the value and derivative; `flo` is the value at `lo`; `hint` (NaN for none) is
-/// a starting point. A bisection step replaces
-/// Newton whenever Newton would leave the bracket or is not at least halving the step (the
-/// classic `rtsafe` safeguard), so the loop (≤ 200 steps) converges for any continuous `f`.
+/// `f` returns the value and derivative; `flo`, `fhi` are the values at `lo`, `hi`; `hint`
+/// (NaN for none) is a starting point. A bisection step replaces Newton whenever Newton would
+/// leave the bracket or is not at least halving the step (the classic `rtsafe` safeguard), so
+/// the loop (≤ 200 steps) converges for any continuous `f`.
 pub(crate) fn newton_bracketed(
     f: impl Fn(f64) -> (f64, f64),
-    mut lo: f64,
-    mut hi: f64,
-    flo: f64,
+    (mut lo, mut hi): (f64, f64),
+    (flo, fhi): (f64, f64),
     tol: f64,
     hint: f64,
 ) -> f64 {
     // Start from the hint when it is inside (a nearby previous solution converges in a few
-    // steps).
-    let mut x = if hint > lo.min(hi) && hint < lo.max(hi) {
+    // steps), else where the chord of the end values crosses zero (from the middle, the
+    // first Newton steps tend to overshoot and halve instead).
+    let inside = |x: f64| x > lo.min(hi) && x < lo.max(hi);
+    let secant = lo - flo * (hi - lo) / (fhi - flo);
+    let mut x = if inside(hint) {
         hint
+    } else if inside(secant) {
+        secant
     } else {
         0.5 * (lo + hi)
     };

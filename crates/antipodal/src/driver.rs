@@ -226,14 +226,26 @@ fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
     );
     cuts.push((p.sb, p.tb));
     let mut out = Vec::new();
+    // d has no zero inside a window (its zeros are the common tangents, the cuts): its sign
+    // at an end where it is clear of zero is the window's; else it is taken in the middle.
+    let clear = 1e-6 * p.vs.scale.max(p.vt.scale);
+    let sign_at = |s: f64, t: f64| {
+        let d = p.d(s, t);
+        (d.abs() > clear).then_some(d > 0.0)
+    };
     for w in cuts.windows(2) {
         let ((s0, t0), (s1, t1)) = (w[0], w[1]);
         if negligible(p.vs, s0, s1) {
             continue;
         }
-        let sm = 0.5 * (s0 + s1);
-        let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
-        if p.d(sm, tm) > 0.0 {
+        let facing = sign_at(s0, t0)
+            .or_else(|| sign_at(s1, t1))
+            .unwrap_or_else(|| {
+                let sm = 0.5 * (s0 + s1);
+                let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
+                p.d(sm, tm) > 0.0
+            });
+        if facing {
             out.push(p.sub(s0, t0, s1, t1));
         }
     }

@@ -164,6 +164,20 @@ impl Enclosure {
         lo >= a && hi <= b && h.lo > 1e-9 * h.hi
     }
 
+    /// The control points of every fine piece overlapping `[lo, hi]` (of a vector function)
+    /// lie in the open half-plane `x · axis > 0`, with room for their rounding: the function's
+    /// direction turns by less than π over `[lo, hi]` (whole pieces' points: a superset of the
+    /// stretch's own, so no subdivision).
+    pub(crate) fn in_half_plane_of(&self, lo: f64, hi: f64, axis: V2) -> bool {
+        self.pw.dim() == 2
+            && self.pw.overlaps(lo, hi).all(|(i, _, _)| {
+                self.pw.piece(i).chunks_exact(2).all(|c| {
+                    let v = V2::new(c[0], c[1]);
+                    v.dot(axis) > 1e-9 * v.norm().max(f64::MIN_POSITIVE)
+                })
+            })
+    }
+
     /// A first-order Taylor model of the function (of its length, in dimension 2) about the
     /// middle of `[x0, x1]`, which lies in fine piece `i`, and the range the piece's hull
     /// proves. `None` where the length may vanish there.

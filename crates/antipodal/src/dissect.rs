@@ -158,10 +158,9 @@ impl View<'_> {
         if h <= l {
             return true;
         }
-        if cert
-            .bound_forms()
-            .is_some_and(|f| f.tangent.in_half_plane(l, h))
-        {
+        if cert.bound_forms().is_some_and(|f| {
+            f.tangent.in_half_plane(l, h) || f.tangent.in_half_plane_of(l, h, axis)
+        }) {
             return true;
         }
         let mid = axis;

@@ -217,7 +217,8 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
         let (th1, r1) = *far.get_or_insert_with(|| (end_angle(s1, t1), p.r(s1, t1).norm()));
         let most = bs.speed * ks.lo.abs().max(ks.hi.abs()) * g.lo.abs().max(g.hi.abs());
         let next = 0.5 * (th0 + th1 + most * len) * (1.0 + 1e-9);
-        if !(next < 0.9 * theta_max) {
+        // (NaN stops too.)
+        if next.partial_cmp(&(0.9 * theta_max)) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         theta_max = next;

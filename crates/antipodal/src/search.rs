@@ -396,6 +396,10 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
         if let Some((s, t)) = converged(p, step, last_step, s, t) {
             return March::Found(s, t, up);
         }
+        if i >= CRAWL_CHECK && ratio >= 1.0 && crawls(p, s, up, step, ratio, MARCH_STEPS - i) {
+            // The step bound would be used up before the section's end: hand over now.
+            return March::Crawled(s, t, up);
+        }
         if certified {
             // Tried while the march converges (not while it escapes from a pair behind),
             // at steps ever farther apart after failures.
@@ -429,6 +433,27 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
         last_step = step;
     }
     March::Crawled(s, t, up)
+}
+
+/// Steps after which a march that does not converge is checked for crawling.
+const CRAWL_CHECK: usize = 64;
+
+/// A march at `s` heading up (`up`) or down, whose steps (the last one `step`) do not shrink
+/// but grow by `ratio` each, would need more than `left` steps to reach the section's end:
+/// it crawls (θ stays so small along the section that each step turns the normal by little),
+/// and [`by_width`] would settle the rest anyway once the step bound is used up.
+fn crawls(p: &Pair, s: f64, up: bool, step: f64, ratio: f64, left: usize) -> bool {
+    let remaining = if up { p.sb - s } else { s - p.sa };
+    if !(step > 0.0) || remaining <= 0.0 {
+        return false;
+    }
+    let needed = if ratio > 1.0 + 1e-9 {
+        // Steps growing geometrically: Σ step·ratioᵏ reaches `remaining` after this many.
+        (1.0 + remaining * (ratio - 1.0) / step).ln() / ratio.ln()
+    } else {
+        remaining / step
+    };
+    needed > left as f64
 }
 
 /// Outcome of a march: the pair it reached (`moved_up` in `s`), no pair ahead, or its step

@@ -603,7 +603,7 @@ thread_local! {
 /// Steps a march takes before its first finishing attempt: the attempt's proof must cover
 /// the stretch to the pair the march converges on (or to the section's end), and from a
 /// section's end that is rarely short enough. Measured on the papers' shapes and a wavy
-/// cubic: 2 saves 4–14 % of a run against 0.
+/// cubic: 2 saves 2–13 % of a run against 0.
 const FIRST_WAIT: usize = 2;
 
 /// Steps a march waits after its first failed finishing attempt (then twice as many, …): 8

@@ -444,7 +444,7 @@ const CRAWL_CHECK: usize = 64;
 /// and [`by_width`] would settle the rest anyway once the step bound is used up.
 fn crawls(p: &Pair, s: f64, up: bool, step: f64, ratio: f64, left: usize) -> bool {
     let remaining = if up { p.sb - s } else { s - p.sa };
-    if !(step > 0.0) || remaining <= 0.0 {
+    if step.is_nan() || step <= 0.0 || remaining <= 0.0 {
         return false;
     }
     let needed = if ratio > 1.0 + 1e-9 {

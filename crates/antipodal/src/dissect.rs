@@ -14,6 +14,9 @@ use std::f64::consts::{PI, TAU};
 pub(crate) struct Tracks {
     pub(crate) u: Vec<f64>,
     pub(crate) psi: Vec<f64>,
+    /// The curve's points there (for the simplicity test's polygon; empty for a curve simple
+    /// by construction).
+    p: Vec<V2>,
 }
 
 impl Tracks {
@@ -28,6 +31,7 @@ impl Tracks {
         Tracks {
             u: self.u.iter().rev().map(|u| a + b - u).collect(),
             psi: self.psi.iter().rev().map(|p| p + PI).collect(),
+            p: self.p.iter().rev().copied().collect(),
         }
     }
 }
@@ -116,6 +120,9 @@ impl View<'_> {
         let (mut x0, mut j0) = (us[0], jet(us[0])?);
         let mut out_u = vec![x0];
         let mut out_psi = vec![j0.d1.angle()];
+        // Points only for the simplicity test (not run on a curve simple by construction).
+        let keep_points = !self.curve_known_simple();
+        let mut out_p = if keep_points { vec![j0.p] } else { Vec::new() };
         let mut stack: Vec<(f64, usize, crate::geom::Jet)> = Vec::new();
         for &w1 in &us[1..] {
             // Depth-first refinement of [x0, w1] until each step turns by less than
@@ -130,6 +137,9 @@ impl View<'_> {
                     let last = out_psi[out_psi.len() - 1];
                     out_u.push(x1);
                     out_psi.push(last + step);
+                    if keep_points {
+                        out_p.push(j1.p);
+                    }
                     (x0, j0) = (x1, j1);
                     continue;
                 }
@@ -145,6 +155,7 @@ impl View<'_> {
         Ok(Tracks {
             u: out_u,
             psi: out_psi,
+            p: out_p,
         })
     }
 
@@ -370,14 +381,19 @@ impl View<'_> {
         if (turn.abs() - TAU).abs() > 0.5 {
             return Err(Error::Winding { turns: turn / TAU });
         }
-        // Densify: four chords per track step keep the polygon close to the curve.
+        // Densify: four chords per track step keep the polygon close to the curve (the
+        // track's own points are kept; the three between are evaluated).
         let mut us = Vec::with_capacity(4 * tr.u.len());
-        for w in tr.u.windows(2) {
-            for k in 0..4 {
-                us.push(w[0] + (w[1] - w[0]) * k as f64 / 4.0);
+        let mut pts = Vec::with_capacity(4 * tr.u.len());
+        for (i, w) in tr.u.windows(2).enumerate() {
+            us.push(w[0]);
+            pts.push(tr.p.get(i).copied().unwrap_or_else(|| self.point(w[0])));
+            for k in 1..4 {
+                let u = w[0] + (w[1] - w[0]) * k as f64 / 4.0;
+                us.push(u);
+                pts.push(self.point(u));
             }
         }
-        let pts: Vec<V2> = us.iter().map(|&u| self.point(u)).collect();
         let n = pts.len();
         let seg = |i: usize| (pts[i], pts[(i + 1) % n]);
         let mut order: Vec<usize> = (0..n).collect();

@@ -42,7 +42,10 @@ pub trait PlaneCurve {
     fn symbolic_forms(&self) -> Option<&SymbolicForms> {
         None
     }
-    /// The [`SymbolicForms`] of [`PlaneCurve::circle_form`], when the curve keeps them.
+    /// The [`SymbolicForms`] of the curve's exact rational form in the parameter of the
+    /// rational unit circle, when the curve keeps them: those of [`PlaneCurve::circle_form`],
+    /// or, for a shape whose angle is not the circle's (the elliptic lemniscate), forms that
+    /// carry the shape's own formula and angle.
     fn circle_forms(&self) -> Option<&SymbolicForms> {
         None
     }

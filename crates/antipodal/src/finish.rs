@@ -185,8 +185,10 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let (rho_s, rho_t) = (bs.kappa.recip()?, bt.kappa.recip()?);
     let ks = bs.kappa;
     let len = (s1 - s0).abs();
-    // The far end's angle and distance, once the first bound has failed.
-    let mut far: Option<(f64, f64)> = None;
+    // The far end's angle and distance, and the bound on how fast |r| moves, once the first
+    // bound has failed. |d|r|/ds| = |C′(s)| |1 + κ(s)/κ(t)| |sin θ| along a section (the
+    // tangents at s and t are opposite, and t moves κ(s)/κ(t) times as far in arc length).
+    let mut far: Option<(f64, f64, f64)> = None;
     for _ in 0..4 {
         let inv_r = dist.recip()?;
         let cos = Iv::new(
@@ -214,7 +216,11 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
         // |g|): a zero-free path from both ends, |θ(x)| ≤ (|θ(s0)| + |θ(s1)| + max|θ′| |J|)/2.
         // Every bound so far holds on all of J, so the new one does too; with it, the range of
         // |r| by its own rate from both ends.
-        let (th1, r1) = *far.get_or_insert_with(|| (end_angle(s1, t1), p.r(s1, t1).norm()));
+        let (th1, r1, r_rate) = *far.get_or_insert_with(|| {
+            let spread = Iv::new(1.0, 1.0).add(ks.mul(rho_t));
+            let r_rate = bs.speed * spread.lo.abs().max(spread.hi.abs());
+            (end_angle(s1, t1), p.r(s1, t1).norm(), r_rate)
+        });
         let most = bs.speed * ks.lo.abs().max(ks.hi.abs()) * g.lo.abs().max(g.hi.abs());
         let next = 0.5 * (th0 + th1 + most * len) * (1.0 + 1e-9);
         // (NaN stops too.)
@@ -222,10 +228,6 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
             return None;
         }
         theta_max = next;
-        // |d|r|/ds| = |C′(s)| |1 + κ(s)/κ(t)| |sin θ| along a section (the tangents at s and t
-        // are opposite, and t moves κ(s)/κ(t) times as far in arc length).
-        let spread = Iv::new(1.0, 1.0).add(ks.mul(rho_t));
-        let r_rate = bs.speed * spread.lo.abs().max(spread.hi.abs());
         let swing = r_rate * theta_max.min(FRAC_PI_2).sin() * len;
         // (The ends' t are solved to the tolerance: |r| there is known to that times the
         // speed of T, and to its rounding.)

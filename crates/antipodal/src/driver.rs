@@ -300,7 +300,7 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
 }
 
 fn classify(v: &View, s: f64, t: f64) -> PairType {
-    let (js, jt) = (v.jet(s), v.jet(t));
+    let (js, jt) = (v.jet_to(s, 2), v.jet_to(t, 2));
     let (ks, kt) = (js.curvature(), jt.curvature());
     let r = (jt.p - js.p).norm();
     let radii = 1.0 / ks + 1.0 / kt;
@@ -339,7 +339,7 @@ fn finish_pairs(
     };
     for (s, t) in raw {
         let (s, t) = crate::pairs::polish(v, v, s, t, 1e-4 * v.period).unwrap_or((s, t));
-        let (js, jt) = (v.jet(s), v.jet(t));
+        let (js, jt) = (v.jet_to(s, 1), v.jet_to(t, 1));
         let r = jt.p - js.p;
         if js.normal().dot(r) <= 0.0 || js.d1.dot(jt.d1) >= 0.0 {
             continue;

@@ -233,24 +233,30 @@ fn ordered(a: f64, b: f64) -> (f64, f64) {
     }
 }
 
+/// The residual of the antipodal system (sines of the angles between the tangents and between
+/// `r` and the tangent at `s`, summed) below which a pair is at full precision: a few units of
+/// rounding of the jets.
+const RESIDUAL_FLOOR: f64 = 2e-15;
+
 /// Newton's method on the antipodal system `α′(s) × α′(t) = 0`, `(α(t) − α(s)) · α′(s) = 0`
 /// from a nearby pair: a few steps to full precision. `None` when it moves farther than
 /// `max_move` or does not reduce the residual.
 pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Option<(f64, f64)> {
-    polish_within(vs, vt, s, t, max_move, max_move)
+    let area = ((s - max_move, s + max_move), (t - max_move, t + max_move));
+    polish_within(vs, vt, s, t, area)
 }
 
-/// [`polish`] with separate bounds on the moves of `s` and `t` (a bracket's widths: `t` may
-/// move much farther than `s` where `T` is the flatter curve).
+/// [`polish`] inside the box `area = ((s_lo, s_hi), (t_lo, t_hi))`: `None` as soon as an
+/// iterate leaves it (a bracket's Newton that heads out of the bracket is converging to
+/// some other pair, and is given up before it spends more jets on it).
 pub(crate) fn polish_within(
     vs: &View,
     vt: &View,
     s: f64,
     t: f64,
-    max_s: f64,
-    max_t: f64,
+    area: ((f64, f64), (f64, f64)),
 ) -> Option<(f64, f64)> {
-    let (s0, t0) = (s, t);
+    let ((s_lo, s_hi), (t_lo, t_hi)) = area;
     let (mut s, mut t) = (s, t);
     // The best point so far and its residual; each iteration evaluates one pair of jets,
     // which gives both the residual of the current point and the Newton step from it.
@@ -266,19 +272,28 @@ pub(crate) fn polish_within(
             break;
         }
         best = (res, s, t);
+        // At the rounding floor another step only moves within the noise (it used to take
+        // three or four more jet pairs to see the residual rise).
+        if res <= RESIDUAL_FLOOR {
+            break;
+        }
         let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
         let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
         let det = a11 * a22 - a12 * a21;
-        if det == 0.0 || !det.is_finite() || res == 0.0 {
+        if det == 0.0 || !det.is_finite() {
             break;
         }
         let ds = (f1 * a22 - f2 * a12) / det;
         let dt = (a11 * f2 - a21 * f1) / det;
-        if ds.abs() + dt.abs() <= 1e-17 * (1.0 + s.abs() + t.abs()) {
+        if ds.abs() <= 4.0 * f64::EPSILON * s.abs().max(1.0)
+            && dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(1.0)
+        {
             break;
         }
         let (ns, nt) = (s - ds, t - dt);
-        if (ns - s0).abs() > max_s || (nt - t0).abs() > max_t {
+        // (NaN leaves too.)
+        let inside = ns >= s_lo && ns <= s_hi && nt >= t_lo && nt <= t_hi;
+        if !inside {
             return None;
         }
         s = ns;

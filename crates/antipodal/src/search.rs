@@ -308,17 +308,15 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
         }
         // Newton on the antipodal system from the better end, accepted only when it lands
         // on a pair inside the current bracket (which then holds a pair for sure).
-        if i % 3 == 1 {
+        if i % 2 == 0 {
             let (sb, tb) = if f0.abs() < f1.abs() {
                 (s0, t0)
             } else {
                 (s1, t1)
             };
-            let (lo, hi) = (s0.min(s1), s0.max(s1));
-            let (tl, th) = (t0.min(t1), t0.max(t1));
-            if let Some((ns, nt)) = polish_within(p.vs, p.vt, sb, tb, hi - lo, th - tl) {
-                let inside = ns >= lo && ns <= hi && nt >= tl && nt <= th;
-                if inside && p.sin_theta(ns, nt).abs() <= 1e-13 {
+            let area = ((s0.min(s1), s0.max(s1)), (t0.min(t1), t0.max(t1)));
+            if let Some((ns, nt)) = polish_within(p.vs, p.vt, sb, tb, area) {
+                if p.sin_theta(ns, nt).abs() <= 1e-13 {
                     return Some(Found { s: ns, t: nt });
                 }
             }

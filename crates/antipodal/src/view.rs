@@ -14,6 +14,7 @@ use bspline::roots::{find_roots, Root, RootOptions};
 use bspline::{BSpline, Rational};
 use smallvec::SmallVec;
 use std::cell::Cell;
+use std::f64::consts::TAU;
 
 /// Outcome of [`View::cert_count`].
 pub(crate) enum Count {
@@ -65,6 +66,10 @@ pub(crate) struct View<'a> {
     cache: JetCache,
 }
 
+/// How close below a closed curve's end (relative to the period) a reported parameter is
+/// the seam: a few units of rounding.
+const SEAM_ROUNDING: f64 = 8.0 * f64::EPSILON;
+
 /// Entries of [`JetCache`]. On the papers' shapes 40–60 % of the jets asked for are found,
 /// spread over all eight entries (a third of the hits are five to eight jets old), so fewer
 /// entries lose more evaluations than they save in the search; without the cache a run takes
@@ -92,6 +97,7 @@ impl JetCache {
         c
     }
 
+    #[inline]
     fn get(&self, u: f64, order: usize) -> Option<Jet> {
         (0..CACHED_JETS)
             .find(|&i| self.u[i].get() == u && self.order[i].get() >= order)
@@ -200,10 +206,19 @@ impl<'a> View<'a> {
         self.least_order = 2;
     }
 
-    /// The parameter reported to the caller.
+    /// The parameter reported to the caller. On a closed curve, a parameter within a few
+    /// units of rounding below the domain's end is the seam itself, and reads as the start.
     pub(crate) fn to_curve(&self, u: f64) -> f64 {
         let x = self.eval_param(u);
-        self.report.map_or(x, |a| a.phi(x))
+        let (x, (a, b)) = match self.report {
+            Some(angle) => (angle.phi(x), (0.0, TAU)),
+            None => (x, (self.a, self.b)),
+        };
+        if self.closed && b - x <= SEAM_ROUNDING * (b - a) {
+            a
+        } else {
+            x
+        }
     }
 
     /// The parameter of the evaluated curve.
@@ -226,10 +241,18 @@ impl<'a> View<'a> {
     }
 
     /// Point and derivatives up to `order` only (cheaper for splines).
+    #[inline]
     pub(crate) fn jet_to(&self, u: f64, order: usize) -> Jet {
-        if let Some(j) = self.cache.get(u, order) {
-            return j;
+        match self.cache.get(u, order) {
+            Some(j) => j,
+            None => self.evaluate(u, order),
         }
+    }
+
+    /// A jet that is not cached: evaluated and kept (out of line, so that the lookup above
+    /// inlines into its many callers).
+    #[inline(never)]
+    fn evaluate(&self, u: f64, order: usize) -> Jet {
         let order = order.max(self.least_order);
         let j = self.oriented_jet(u, order);
         self.cache.put(u, order, j);

@@ -8,15 +8,15 @@
 use crate::error::{Error, Result};
 use crate::geom::{wrap_pi, V2};
 use crate::view::{newton_bracketed, View};
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::PI;
 
 /// Unwrapped tangent angle along the curve.
 pub(crate) struct Tracks {
     pub(crate) u: Vec<f64>,
     pub(crate) psi: Vec<f64>,
-    /// The curve's points there (for the simplicity test's polygon; empty for a curve simple
-    /// by construction).
-    p: Vec<V2>,
+    /// The curve's points there (for the simplicity test; empty for a curve simple by
+    /// construction).
+    pub(crate) p: Vec<V2>,
 }
 
 impl Tracks {
@@ -83,11 +83,11 @@ impl View<'_> {
 
     /// Builds the track over one period (or the open domain).
     pub(crate) fn tracks(&self, knots: &[f64]) -> Result<Tracks> {
-        // A certified curve that needs no self-intersection test (an analytic shape on its
-        // rational form) only needs the track for the unwrapped angle: the hodograph certifies
-        // every step, so a few samples besides the breakpoints do. Otherwise the track is
-        // Jia's sampling (and the polygon of the simplicity test).
-        let coarse = self.cert.is_some() && self.curve_known_simple();
+        // A certified curve only needs the track for the unwrapped angle and for the arcs of
+        // the simplicity test: the hodograph certifies every step, so a few samples besides
+        // the breakpoints do. Otherwise the track is Jia's sampling (and the polygon of the
+        // sampled simplicity test).
+        let coarse = self.cert.is_some();
         let (m, max_step) = if coarse {
             (16, PI / 2.0)
         } else {
@@ -373,68 +373,4 @@ impl View<'_> {
         }
         0.5 * (lo + hi)
     }
-
-    /// Checks the closed polyline through the track points for crossings (the curve must be
-    /// simple) and the turning number (must be ±1).
-    pub(crate) fn check_simple(&self, tr: &Tracks) -> Result<()> {
-        let turn = tr.psi[tr.psi.len() - 1] - tr.psi[0];
-        if (turn.abs() - TAU).abs() > 0.5 {
-            return Err(Error::Winding { turns: turn / TAU });
-        }
-        // Densify: four chords per track step keep the polygon close to the curve (the
-        // track's own points are kept; the three between are evaluated).
-        let mut us = Vec::with_capacity(4 * tr.u.len());
-        let mut pts = Vec::with_capacity(4 * tr.u.len());
-        for (i, w) in tr.u.windows(2).enumerate() {
-            us.push(w[0]);
-            pts.push(tr.p.get(i).copied().unwrap_or_else(|| self.point(w[0])));
-            for k in 1..4 {
-                let u = w[0] + (w[1] - w[0]) * k as f64 / 4.0;
-                us.push(u);
-                pts.push(self.point(u));
-            }
-        }
-        let n = pts.len();
-        let seg = |i: usize| (pts[i], pts[(i + 1) % n]);
-        let mut order: Vec<usize> = (0..n).collect();
-        let minx = |i: usize| {
-            let (p, q) = seg(i);
-            p.x.min(q.x)
-        };
-        order.sort_by(|&i, &j| minx(i).total_cmp(&minx(j)));
-        for (k, &i) in order.iter().enumerate() {
-            let (p, q) = seg(i);
-            let maxx = p.x.max(q.x);
-            for &j in &order[k + 1..] {
-                if minx(j) > maxx {
-                    break;
-                }
-                if j == (i + 1) % n || i == (j + 1) % n || i == j {
-                    continue;
-                }
-                let (r, s) = seg(j);
-                if crosses(p, q, r, s) {
-                    return Err(Error::SelfIntersecting {
-                        s: self.to_curve(us[i]),
-                        t: self.to_curve(us[j]),
-                    });
-                }
-            }
-        }
-        Ok(())
-    }
-}
-
-/// Proper crossing of segments pq and rs.
-fn crosses(p: V2, q: V2, r: V2, s: V2) -> bool {
-    let d1 = (q - p).cross(r - p);
-    let d2 = (q - p).cross(s - p);
-    let d3 = (s - r).cross(p - r);
-    let d4 = (s - r).cross(q - r);
-    (d1 > 0.0) != (d2 > 0.0)
-        && (d3 > 0.0) != (d4 > 0.0)
-        && d1 != 0.0
-        && d2 != 0.0
-        && d3 != 0.0
-        && d4 != 0.0
 }

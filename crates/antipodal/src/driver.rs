@@ -112,10 +112,10 @@ pub(crate) fn prepare<'a>(
             }
         }
     };
-    if closed && !curve.known_simple() {
-        view.check_simple(&tracks)?;
-    }
     let zeros = view.inflections(&tracks)?;
+    if closed && !curve.known_simple() {
+        view.check_simple(&tracks, &zeros)?;
+    }
     if closed && zeros.zs.len() % 2 == 1 {
         view.uncertify();
     }

@@ -36,6 +36,7 @@ mod pairs;
 mod prims;
 mod search;
 pub mod shapes;
+mod simple;
 mod tangent;
 mod taylor;
 mod types;

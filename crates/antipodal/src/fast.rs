@@ -155,56 +155,23 @@ impl Pw {
     }
 
     /// [`Pw::eval_derivs`] for points of dimension 3 and degree ≤ 7 (homogeneous planar
-    /// curves), with fixed-size arrays.
+    /// curves): de Casteljau on fixed-size arrays, one instance per degree so that the
+    /// loops unroll (jets are most of the cost of a spline's run).
     fn eval_derivs3(&self, u: f64, k: usize, out: &mut [f64]) {
-        let p = self.deg;
         let i = self.piece_at(u);
         let (a, b) = (self.breaks[i], self.breaks[i + 1]);
         let h = b - a;
         let s =
             ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
         let src = self.piece(i);
-        let mut w = [[0.0f64; 3]; 8];
-        for (j, pt) in w.iter_mut().enumerate().take(p + 1) {
-            *pt = [src[3 * j], src[3 * j + 1], src[3 * j + 2]];
-        }
-        // lv[m] holds the m + 1 points of level p − m (m ≤ 3).
-        let mut lv = [[[0.0f64; 3]; 4]; 4];
-        let top = k.min(p);
-        if p <= top {
-            lv[p][..=p].copy_from_slice(&w[..=p]);
-        }
-        for level in 1..=p {
-            let left = p - level;
-            for j in 0..=left {
-                let next = w[j + 1];
-                for (x, y) in w[j].iter_mut().zip(next) {
-                    *x += s * (y - *x);
-                }
-            }
-            if left <= top {
-                lv[left][..=left].copy_from_slice(&w[..=left]);
-            }
-        }
-        out[..3].copy_from_slice(&lv[0][0]);
-        let pf = p as f64;
-        for c in 0..3 {
-            if top >= 1 {
-                let q = &lv[1];
-                out[3 + c] = pf / h * (q[1][c] - q[0][c]);
-            }
-            if top >= 2 {
-                let q = &lv[2];
-                out[6 + c] = pf * (pf - 1.0) / (h * h) * (q[2][c] - 2.0 * q[1][c] + q[0][c]);
-            }
-            if top >= 3 {
-                let q = &lv[3];
-                out[9 + c] = pf * (pf - 1.0) * (pf - 2.0) / (h * h * h)
-                    * (q[3][c] - 3.0 * q[2][c] + 3.0 * q[1][c] - q[0][c]);
-            }
-        }
-        for v in out[3 * (top + 1)..3 * (k + 1)].iter_mut() {
-            *v = 0.0;
+        match self.deg {
+            1 => casteljau3::<2>(src, s, h, k, out),
+            2 => casteljau3::<3>(src, s, h, k, out),
+            3 => casteljau3::<4>(src, s, h, k, out),
+            4 => casteljau3::<5>(src, s, h, k, out),
+            5 => casteljau3::<6>(src, s, h, k, out),
+            6 => casteljau3::<7>(src, s, h, k, out),
+            _ => casteljau3::<8>(src, s, h, k, out),
         }
     }
 
@@ -527,6 +494,60 @@ impl ValueSlope {
     }
 }
 
+/// Value and derivatives up to order `k ≤ 3` of the Bézier piece with the `N` points `src`
+/// (dimension 3) at local parameter `s`, the piece spanning `h`: the j-th derivative is
+/// `p!/(p−j)!` times the j-th forward difference of the `j + 1` points of de Casteljau's
+/// level `p − j`, over `hʲ` (`p = N − 1`).
+#[inline(always)]
+fn casteljau3<const N: usize>(src: &[f64], s: f64, h: f64, k: usize, out: &mut [f64]) {
+    let p = N - 1;
+    let mut w = [[0.0f64; 3]; N];
+    for (j, pt) in w.iter_mut().enumerate() {
+        *pt = [src[3 * j], src[3 * j + 1], src[3 * j + 2]];
+    }
+    let top = k.min(p);
+    let diff = |w: &[[f64; 3]; N], j: usize| -> [f64; 3] {
+        let mut d = [0.0; 3];
+        for (c, v) in d.iter_mut().enumerate() {
+            *v = match j {
+                0 => w[0][c],
+                1 => w[1][c] - w[0][c],
+                2 => w[2][c] - 2.0 * w[1][c] + w[0][c],
+                _ => w[3][c] - 3.0 * w[2][c] + 3.0 * w[1][c] - w[0][c],
+            };
+        }
+        d
+    };
+    // d[j]: the difference for the j-th derivative, taken when its level is reached.
+    let mut d = [[0.0f64; 3]; 4];
+    if p <= top {
+        d[p] = diff(&w, p);
+    }
+    for level in 1..=p {
+        let left = p - level;
+        for j in 0..=left {
+            let next = w[j + 1];
+            for (x, y) in w[j].iter_mut().zip(next) {
+                *x += s * (y - *x);
+            }
+        }
+        if left <= top {
+            d[left] = diff(&w, left);
+        }
+    }
+    out[..3].copy_from_slice(&d[0]);
+    let mut fact = 1.0;
+    for j in 1..=top {
+        fact *= (p + 1 - j) as f64 / h;
+        for c in 0..3 {
+            out[3 * j + c] = fact * d[j][c];
+        }
+    }
+    for v in out[3 * (top + 1)..3 * (k + 1)].iter_mut() {
+        *v = 0.0;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
@@ -595,7 +616,8 @@ mod tests {
 
     #[test]
     fn derivatives_match_bspline_in_dimension_3() {
-        for p in 1..=5usize {
+        // Every instance of the fixed-size path (degrees 1–7) and the general one (8).
+        for p in 1..=8usize {
             let n = p + 4;
             let coefs: Vec<f64> = (0..3 * n)
                 .map(|i| ((i as f64) * 0.77).cos() + 2.0)

@@ -28,6 +28,9 @@ pub(crate) enum Finish {
     Found(f64, f64),
     /// No pair between the march and the section's end.
     Nothing,
+    /// No pair between the march and this point (θ proven monotone up to it, with the
+    /// march's sign there): the march goes on from it.
+    Leap(f64, f64),
     /// Nothing proven: the march goes on.
     Unproven,
 }
@@ -68,12 +71,30 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     };
     let th_e = p.sin_theta(e, te);
     if th_e.abs() <= p.theta_noise(e, te) || theta_monotone(p, (s, t), (e, te)).is_none() {
-        return Finish::Unproven;
+        return leap(p, (s, t), (e, te), th_s);
     }
     match ((th_e < 0.0) != (th_s < 0.0), proposal) {
         (true, Some((ps, pt))) => Finish::Found(ps, pt),
         (false, _) if e == end_s => Finish::Nothing,
+        // Monotone with one sign at both ends: no zero up to e (the proposal was noise).
+        (false, _) => Finish::Leap(e, te),
         _ => Finish::Unproven,
+    }
+}
+
+/// Where θ is not proven monotone from the march's point `from` to `to`: over the first half
+/// of the way it may be (the ranges tighten as the stretch shrinks), and with the march's
+/// sign at its end that half holds no pair.
+fn leap(p: &Pair, from: (f64, f64), to: (f64, f64), th: f64) -> Finish {
+    let m = 0.5 * (from.0 + to.0);
+    let tm = p.opposite_between(m, from, to);
+    let th_m = p.sin_theta(m, tm);
+    if th_m.abs() <= p.theta_noise(m, tm) || (th_m < 0.0) != (th < 0.0) {
+        return Finish::Unproven;
+    }
+    match theta_monotone(p, from, (m, tm)) {
+        Some(_) => Finish::Leap(m, tm),
+        None => Finish::Unproven,
     }
 }
 

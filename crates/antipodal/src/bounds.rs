@@ -4,10 +4,11 @@
 //! arithmetic to combine them.
 
 use crate::fast::{Pw, ValueSlope};
-use crate::geom::V2;
+use crate::geom::{wrap_pi, V2};
 use crate::taylor::Taylor;
 use crate::view::View;
 use bspline::{BSpline, Rational};
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// A closed interval of reals.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -115,6 +116,10 @@ pub(crate) struct Enclosure {
     hull: Vec<Iv>,
     /// Per fine piece, the rounding of an evaluation of `f` and of `f′` there.
     rounding: Vec<(f64, f64)>,
+    /// Per fine piece of a vector function, the least arc of directions holding its control
+    /// points, `(start, end)` counterclockwise and shorter than π (`None` when there is none,
+    /// or a point is zero).
+    cones: Vec<Option<(f64, f64)>>,
 }
 
 impl Enclosure {
@@ -140,10 +145,15 @@ impl Enclosure {
                 )
             })
             .collect();
+        let cones = match d {
+            2 => (0..pw.pieces()).map(|i| cone(pw.piece(i))).collect(),
+            _ => Vec::new(),
+        };
         Some(Self {
             second: deriv.derivative().norm_bounds(),
             hull,
             rounding,
+            cones,
             eval: ValueSlope::new(&pw, &deriv)?,
             pw,
         })
@@ -170,12 +180,10 @@ impl Enclosure {
     /// stretch's own, so no subdivision).
     pub(crate) fn in_half_plane_of(&self, lo: f64, hi: f64, axis: V2) -> bool {
         self.pw.dim() == 2
-            && self.pw.overlaps(lo, hi).all(|(i, _, _)| {
-                self.pw.piece(i).chunks_exact(2).all(|c| {
-                    let v = V2::new(c[0], c[1]);
-                    v.dot(axis) > 1e-9 * v.norm().max(f64::MIN_POSITIVE)
-                })
-            })
+            && self
+                .pw
+                .overlaps(lo, hi)
+                .all(|(i, _, _)| cone_inside(self.cones[i], axis))
     }
 
     /// A first-order Taylor model of the function (of its length, in dimension 2) about the
@@ -251,6 +259,36 @@ impl Enclosure {
             *acc = Iv::new(acc.lo.min(range.lo), acc.hi.max(range.hi));
         }
     }
+}
+
+/// The least arc of directions holding the 2-d points `c` (point-major), counterclockwise
+/// from its start, when it is shorter than π: angles relative to the first point are then
+/// unwrapped correctly (and when they span less than π, so do the points). `None` for a zero
+/// point.
+fn cone(c: &[f64]) -> Option<(f64, f64)> {
+    let first = V2::new(c[0], c[1]).angle();
+    let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    for p in c.chunks_exact(2) {
+        let v = V2::new(p[0], p[1]);
+        if v.norm() == 0.0 {
+            return None;
+        }
+        let rel = wrap_pi(v.angle() - first);
+        lo = lo.min(rel);
+        hi = hi.max(rel);
+    }
+    (hi - lo < PI).then_some((first + lo, first + hi))
+}
+
+/// A cone of directions (see [`cone`]) lies in the open half-plane `x · axis > 0`, by the
+/// margin `x · axis > 1e-9 |x|` (angles within `π/2 − 1e-9` of the axis): both ends inside,
+/// in order.
+fn cone_inside(cone: Option<(f64, f64)>, axis: V2) -> bool {
+    let (ax, room) = (axis.angle(), FRAC_PI_2 - 1e-9);
+    cone.is_some_and(|(a, b)| {
+        let (ra, rb) = (wrap_pi(a - ax), wrap_pi(b - ax));
+        ra > -room && rb < room && ra <= rb
+    })
 }
 
 /// The range control points (dimension `d`, point-major) prove for a scalar function, or for
@@ -480,9 +518,23 @@ impl View<'_> {
     /// `κ = K w³ / |D|³`, each factor enclosed over the interval. The arc lies in the triangle
     /// of its chord and end tangents.
     pub(crate) fn arc_bounds(&self, lo: f64, hi: f64) -> Option<ArcBounds> {
+        self.arc_bounds_padded(lo, hi, 0.0, (f64::NEG_INFINITY, f64::INFINITY))
+    }
+
+    /// [`View::arc_bounds`] over `[lo − pad, hi + pad]` clipped to `limits` (the arc of
+    /// points solved to within `pad`): its box is that of `[lo, hi]`, whose end jets are
+    /// usually at hand, grown by how far the ends move at the greatest speed.
+    pub(crate) fn arc_bounds_padded(
+        &self,
+        lo: f64,
+        hi: f64,
+        pad: f64,
+        limits: (f64, f64),
+    ) -> Option<ArcBounds> {
         let cert = self.cert.as_ref()?;
         let forms = cert.bound_forms()?;
-        let (lo, hi) = (lo.min(hi), lo.max(hi));
+        let (a, b) = (lo.min(hi), lo.max(hi));
+        let (lo, hi) = ((a - pad).max(limits.0), (b + pad).min(limits.1));
         let mut kappa = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
         let mut speed = 0.0f64;
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
@@ -496,12 +548,15 @@ impl View<'_> {
         if !(kappa.excludes_zero() && kappa.lo.is_finite() && kappa.hi.is_finite()) {
             return None;
         }
-        let (lo_box, hi_box) = self.arc_box(lo, hi)?;
+        let speed = speed * (1.0 + MARGIN);
+        let (lo_box, hi_box) = self.arc_box(a, b)?;
+        let grow = (a - lo).max(hi - b).max(0.0) * speed * (1.0 + MARGIN);
+        let grow = V2::new(grow, grow);
         Some(ArcBounds {
             kappa,
-            speed: speed * (1.0 + MARGIN),
-            lo: lo_box,
-            hi: hi_box,
+            speed,
+            lo: lo_box - grow,
+            hi: hi_box + grow,
         })
     }
 
@@ -543,6 +598,38 @@ mod tests {
     use super::*;
     use crate::curve::tests::star_curve as curve;
     use proptest::prelude::*;
+
+    proptest! {
+        /// The cone test of a set of directions agrees with testing every direction against
+        /// the half-plane (away from the margin's rounding).
+        #[test]
+        fn cone_test_matches_pointwise(
+            pts in proptest::collection::vec((-1.0f64..1.0, -1.0f64..1.0), 1..12),
+            spread in 0.0f64..4.0,
+            ax in -4.0f64..4.0,
+        ) {
+            // Directions within `spread` radians of a random one, scaled randomly.
+            let c: Vec<f64> = pts
+                .iter()
+                .flat_map(|&(a, r)| {
+                    let v = V2::polar(ax + 1.3 + spread * a) * (0.1 + r.abs());
+                    [v.x, v.y]
+                })
+                .collect();
+            let axis = V2::polar(ax);
+            let pointwise = c.chunks_exact(2).all(|p| {
+                let v = V2::new(p[0], p[1]);
+                v.dot(axis) > 1e-9 * v.norm()
+            });
+            let near_margin = c.chunks_exact(2).any(|p| {
+                let v = V2::new(p[0], p[1]);
+                (v.dot(axis) / v.norm()).abs() < 1e-6
+            });
+            if !near_margin {
+                prop_assert_eq!(cone_inside(cone(&c), axis), pointwise);
+            }
+        }
+    }
 
     fn inside(x: f64, iv: Iv) -> bool {
         let slack = 1e-9 * (iv.lo.abs().max(iv.hi.abs()) + x.abs());

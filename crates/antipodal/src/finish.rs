@@ -188,8 +188,8 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     }
     let (tl, th) = p.t_range();
     let pad = 64.0 * p.vt.tol;
-    let (t_lo, t_hi) = ((t0.min(t1) - pad).max(tl), (t0.max(t1) + pad).min(th));
-    let (Some(bs), Some(bt)) = (p.vs.arc_bounds(s0, s1), p.vt.arc_bounds(t_lo, t_hi)) else {
+    let bt = p.vt.arc_bounds_padded(t0, t1, pad, (tl, th));
+    let (Some(bs), Some(bt)) = (p.vs.arc_bounds(s0, s1), bt) else {
         return None;
     };
     // |θ| anywhere on J, to begin with: its value at s0, plus the turn of the normal along S

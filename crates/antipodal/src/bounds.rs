@@ -64,7 +64,8 @@ impl Iv {
 /// What the control points of an arc's symbolic forms prove about it.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ArcBounds {
-    /// The signed curvature (positive where the view's curve turns left).
+    /// The signed curvature (positive where the view's curve turns left; it may include zero
+    /// where the arc reaches an inflection).
     pub(crate) kappa: Iv,
     /// The greatest speed `|C′|` (in the view's parameter).
     pub(crate) speed: f64,
@@ -545,7 +546,8 @@ impl View<'_> {
             };
             speed = speed.max(v);
         }
-        if !(kappa.excludes_zero() && kappa.lo.is_finite() && kappa.hi.is_finite()) {
+        // (The range may reach zero: at an inflection that ends the piece.)
+        if !(kappa.lo.is_finite() && kappa.hi.is_finite()) {
             return None;
         }
         let speed = speed * (1.0 + MARGIN);

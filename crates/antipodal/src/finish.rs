@@ -170,9 +170,9 @@ fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64), first: f64) -> Opt
 /// The sign of θ′ is that of κ(s) times the bracket below, bounded by interval arithmetic.
 fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let ((s0, t0), (s1, t1)) = (a, b);
-    // The bracket evaluated at the two ends must have one sign: a cheap necessary condition
-    // that spares the bounds where they cannot succeed.
-    let (h0, h1) = (bracket_at(p, s0, t0), bracket_at(p, s1, t1));
+    // θ′ must have one sign at the two ends: a cheap necessary condition that spares the
+    // bounds where they cannot succeed.
+    let (h0, h1) = (turning_at(p, s0, t0), turning_at(p, s1, t1));
     if (h0 < 0.0) != (h1 < 0.0) {
         return None;
     }
@@ -203,12 +203,22 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let turn_r = ((bs.diameter() + bt.diameter()) / r0).min(1.0).asin();
     let mut theta_max = th0 + turn_s + turn_r;
     let mut dist = bs.distance(&bt);
-    let (rho_s, rho_t) = (bs.kappa.recip()?, bt.kappa.recip()?);
-    let ks = bs.kappa;
-    let len = (s1 - s0).abs();
-    // The far end's angle and distance, and the bound on how fast |r| moves, once the first
-    // bound has failed. |d|r|/ds| = |C′(s)| |1 + κ(s)/κ(t)| |sin θ| along a section (the
-    // tangents at s and t are opposite, and t moves κ(s)/κ(t) times as far in arc length).
+    // κ keeps the sign of its piece (the isolated inflections prove it), reaching zero at
+    // most at an inflection that ends the piece: the ranges are clipped to that sign, and
+    // the signed radii ρ = 1/κ exist only where they keep clear of zero.
+    let signed = |k: Iv, convex: bool| match convex {
+        true => Iv::new(k.lo.max(0.0), k.hi),
+        false => Iv::new(k.lo, k.hi.min(0.0)),
+    };
+    let (ks, kt) = (signed(bs.kappa, p.s_convex), signed(bt.kappa, p.t_convex));
+    let (rho_s, rho_t) = (ks.recip(), kt.recip());
+    let one = Iv::new(1.0, 1.0);
+    let abs_max = |v: Iv| v.lo.abs().max(v.hi.abs());
+    // (t moves κ(s)/κ(t) times as far as s in arc length: the tangents at s and t are
+    // opposite along a section.) The arc of T is padded: so is its length.
+    let (len, len_t) = ((s1 - s0).abs(), (t1 - t0).abs() + 2.0 * pad);
+    // The far end's angle and distance, and how far |r| can move over J at most (over sin θ),
+    // once the first bound has failed.
     let mut far: Option<(f64, f64, f64)> = None;
     for _ in 0..4 {
         let inv_r = dist.recip()?;
@@ -220,36 +230,54 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
             },
             1.0,
         );
-        // θ′/|C′| = κ(s) · ((ρ(s) + ρ(t)) cos θ / |r| − 1) with signed radii ρ = 1/κ: κ(s)
-        // keeps its sign on a monotone piece, so the bracket decides (written so that each
-        // range enters once, which keeps the interval bound tight).
-        let g = rho_s
-            .add(rho_t)
-            .mul(cos)
-            .mul(inv_r)
-            .sub(Iv::new(1.0, 1.0))
-            .widened(1e-9);
-        if ks.excludes_zero() && g.excludes_zero() {
-            // θ′ has the sign of κ(s) times that of the bracket.
+        let c_r = cos.mul(inv_r);
+        // θ′/|C′(s)| = (1 + κ(s)/κ(t)) cos θ/|r| − κ(s) (Jia eq. 10). First as κ(s) times the
+        // bracket (ρ(s) + ρ(t)) cos θ/|r| − 1, each range entering once (the tightest).
+        let g = match (rho_s, rho_t) {
+            (Some(rs), Some(rt)) => Some(rs.add(rt).mul(c_r).sub(one).widened(1e-9)),
+            _ => None,
+        };
+        if let Some(g) = g.filter(|g| g.excludes_zero()) {
             return Some((ks.lo > 0.0) == (g.lo > 0.0));
         }
-        // Not proven: tighten the bound on |θ| by the rate θ can change at (|θ′| ≤ |C′| |κ(s)|
-        // |g|): a zero-free path from both ends, |θ(x)| ≤ (|θ(s0)| + |θ(s1)| + max|θ′| |J|)/2.
-        // Every bound so far holds on all of J, so the new one does too; with it, the range of
-        // |r| by its own rate from both ends.
-        let (th1, r1, r_rate) = *far.get_or_insert_with(|| {
-            let spread = Iv::new(1.0, 1.0).add(ks.mul(rho_t));
-            let r_rate = bs.speed * spread.lo.abs().max(spread.hi.abs());
-            (end_angle(s1, t1), p.r(s1, t1).norm(), r_rate)
+        // Then free of radii: κ(t) θ′/|C′(s)| = κ(s) (cos θ/|r| − κ(t)) + κ(t) cos θ/|r|,
+        // which proves stretches that reach an inflection (κ(t) keeps its piece's sign).
+        let q = ks.mul(c_r.sub(kt)).add(kt.mul(c_r)).widened(1e-9);
+        if q.excludes_zero() {
+            return Some(p.t_convex == (q.lo > 0.0));
+        }
+        // Not proven: tighten the bound on |θ| by the rate θ can change at, a zero-free path
+        // from both ends: |θ(x)| ≤ (|θ(s0)| + |θ(s1)| + max|θ′| |J|)/2. In s, |θ′|/|C′(s)| is
+        // at most |κ(s)| |g| and |(1 + κ(s) ρ(t)) cos θ/|r| − κ(s)|; in t, by symmetry (θ is
+        // also the angle of −r from N(t)), |dθ/dt|/|C′(t)| is at most |(1 + κ(t) ρ(s)) cos
+        // θ/|r| − κ(t)|. (Towards an inflection of T, t outruns s and only the rate in t is
+        // finite; towards one of S, the other way round.) Every bound so far holds on all of
+        // J, so the new one does too; with it, the range of |r| by its own rate, |d|r|/ds| =
+        // |C′(s)| |1 + κ(s) ρ(t)| |sin θ| (or in t), from both ends.
+        let by_g = g.map_or(f64::INFINITY, |g| abs_max(ks) * abs_max(g));
+        let in_s = rho_t.map_or(f64::INFINITY, |rt| {
+            abs_max(one.add(ks.mul(rt)).mul(c_r).sub(ks).widened(1e-9))
         });
-        let most = bs.speed * ks.lo.abs().max(ks.hi.abs()) * g.lo.abs().max(g.hi.abs());
-        let next = 0.5 * (th0 + th1 + most * len) * (1.0 + 1e-9);
-        // (NaN stops too.)
+        let in_t = rho_s.map_or(f64::INFINITY, |rs| {
+            abs_max(one.add(kt.mul(rs)).mul(c_r).sub(kt).widened(1e-9))
+        });
+        let (th1, r1, r_swing) = *far.get_or_insert_with(|| {
+            let by_s = rho_t.map_or(f64::INFINITY, |rt| {
+                bs.speed * abs_max(one.add(ks.mul(rt))) * len
+            });
+            let by_t = rho_s.map_or(f64::INFINITY, |rs| {
+                bt.speed * abs_max(one.add(kt.mul(rs))) * len_t
+            });
+            (end_angle(s1, t1), p.r(s1, t1).norm(), by_s.min(by_t))
+        });
+        let change = (bs.speed * by_g.min(in_s) * len).min(bt.speed * in_t * len_t);
+        let next = 0.5 * (th0 + th1 + change) * (1.0 + 1e-9);
+        // (NaN and infinity stop too.)
         if next.partial_cmp(&(0.9 * theta_max)) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         theta_max = next;
-        let swing = r_rate * theta_max.min(FRAC_PI_2).sin() * len;
+        let swing = r_swing * theta_max.min(FRAC_PI_2).sin();
         // (The ends' t are solved to the tolerance: |r| there is known to that times the
         // speed of T, and to its rounding.)
         let pad = 64.0 * p.vt.tol * bt.speed + 1e-12 * (r0 + r1);
@@ -354,12 +382,15 @@ pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Optio
     out
 }
 
-/// `(ρ(s) + ρ(t)) cos θ / |r| − 1` at one point (the bracket of θ′ in [`theta_monotone`]).
-fn bracket_at(p: &Pair, s: f64, t: f64) -> f64 {
+/// `κ(t) θ′/|C′(s)| = κ(s) (cos θ/|r| − κ(t)) + κ(t) cos θ/|r|` at one point: its sign times
+/// that of κ on `T` is the sign of θ′ (finite at an inflection ending either piece, where a
+/// radius is not).
+fn turning_at(p: &Pair, s: f64, t: f64) -> f64 {
     let (js, jt) = (p.vs.jet_to(s, 2), p.vt.jet_to(t, 2));
     let r = jt.p - js.p;
-    let cos = js.normal().dot(r) / r.norm();
-    (1.0 / js.curvature() + 1.0 / jt.curvature()) * cos / r.norm() - 1.0
+    let c_r = js.normal().dot(r) / r.dot(r);
+    let (ks, kt) = (js.curvature(), jt.curvature());
+    ks * (c_r - kt) + kt * c_r
 }
 
 #[cfg(test)]

@@ -170,9 +170,12 @@ fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64), first: f64) -> Opt
 /// The sign of θ′ is that of κ(s) times the bracket below, bounded by interval arithmetic.
 fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let ((s0, t0), (s1, t1)) = (a, b);
-    // θ′ must have one sign at the two ends: a cheap necessary condition that spares the
-    // bounds where they cannot succeed.
-    let (h0, h1) = (turning_at(p, s0, t0), turning_at(p, s1, t1));
+    // θ′ must have one sign at the two ends, clear of rounding: a cheap necessary condition
+    // that spares the bounds where they cannot succeed (as where both ends of a section are
+    // inflections, and θ′ is 0/0 there).
+    let (Some(h0), Some(h1)) = (turning_at(p, s0, t0), turning_at(p, s1, t1)) else {
+        return None;
+    };
     if (h0 < 0.0) != (h1 < 0.0) {
         return None;
     }
@@ -384,13 +387,15 @@ pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Optio
 
 /// `κ(t) θ′/|C′(s)| = κ(s) (cos θ/|r| − κ(t)) + κ(t) cos θ/|r|` at one point: its sign times
 /// that of κ on `T` is the sign of θ′ (finite at an inflection ending either piece, where a
-/// radius is not).
-fn turning_at(p: &Pair, s: f64, t: f64) -> f64 {
+/// radius is not). `None` where it is within rounding of zero (curvatures of 1e-9 over the
+/// distance, as at two inflections opposite each other).
+fn turning_at(p: &Pair, s: f64, t: f64) -> Option<f64> {
     let (js, jt) = (p.vs.jet_to(s, 2), p.vt.jet_to(t, 2));
     let r = jt.p - js.p;
     let c_r = js.normal().dot(r) / r.dot(r);
     let (ks, kt) = (js.curvature(), jt.curvature());
-    ks * (c_r - kt) + kt * c_r
+    let h = ks * (c_r - kt) + kt * c_r;
+    (h.abs() > 1e-9 * c_r * c_r).then_some(h)
 }
 
 #[cfg(test)]

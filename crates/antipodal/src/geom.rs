@@ -94,10 +94,20 @@ impl Mul<f64> for V2 {
 
 /// The angle `a` wrapped into `(−π, π]`.
 pub(crate) fn wrap_pi(a: f64) -> f64 {
-    let t = std::f64::consts::TAU;
-    let mut r = a.rem_euclid(t);
-    if r > std::f64::consts::PI {
-        r -= t;
+    use std::f64::consts::{PI, TAU};
+    // Most angles are within a turn of the range: a subtraction, not a floating remainder.
+    if (-PI..=PI).contains(&a) && a != -PI {
+        return a;
+    }
+    if a > PI && a <= PI + TAU {
+        return a - TAU;
+    }
+    if a < -PI && a > -PI - TAU {
+        return a + TAU;
+    }
+    let mut r = a.rem_euclid(TAU);
+    if r > PI {
+        r -= TAU;
     }
     r
 }
@@ -128,5 +138,33 @@ impl Jet {
     pub fn curvature(&self) -> f64 {
         let s = self.d1.norm();
         self.d1.cross(self.d2) / (s * s * s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::{PI, TAU};
+
+    proptest::proptest! {
+        /// Wrapping by subtraction agrees with the floating remainder, into (−π, π].
+        #[test]
+        fn wrap_pi_matches_remainder(a in -40.0f64..40.0) {
+            let want = {
+                let r = a.rem_euclid(TAU);
+                if r > PI { r - TAU } else { r }
+            };
+            let got = wrap_pi(a);
+            proptest::prop_assert!(got > -PI && got <= PI, "{a} → {got}");
+            proptest::prop_assert!((got - want).abs() <= 4.0 * f64::EPSILON * a.abs().max(1.0));
+        }
+    }
+
+    #[test]
+    fn wrap_pi_edges() {
+        assert_eq!(wrap_pi(PI), PI);
+        assert_eq!(wrap_pi(-PI), PI);
+        assert_eq!(wrap_pi(0.0), 0.0);
+        assert!((wrap_pi(3.0 * PI) - PI).abs() < 1e-15);
     }
 }

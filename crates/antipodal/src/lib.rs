@@ -14,7 +14,8 @@
 //!
 //! For B-spline and NURBS curves ([`SplineCurve`]) every existence decision — inflections,
 //! tangent-turning bounds, and the roots of each primitive — rests on sign tests of B-spline
-//! coefficients (certified root isolation from `bspline`). Analytic shapes use Jia's sampled
+//! coefficients (certified root isolation from `bspline`), and the curve is proven simple by
+//! enclosures of its monotone arcs (or proven to cross itself). Analytic shapes use Jia's sampled
 //! inflection search and sign tests at segment ends; their results say `certified: false`. The
 //! ellipse, the limaçon and the curves with convexities run on their exact rational forms
 //! through the rational unit circle instead (certified, parameters still reported in φ), and

@@ -49,6 +49,38 @@ pub(crate) struct Piece {
     pub(crate) rot: f64,
     /// A straight stretch (κ ≡ 0): its normal is constant.
     pub(crate) flat: bool,
+    /// How fast the tangent turns at the ends, `dψ/du` (for [`Piece::param_guess`]).
+    pub(crate) rates: (f64, f64),
+}
+
+impl Piece {
+    /// Where the tangent angle is about `ang` (unwrapped, inside the piece's range): the
+    /// cubic Hermite interpolant of `u(ψ)` from the ends' parameters and turning rates, its
+    /// slopes limited to keep it monotone (Fritsch–Carlson; at an inflection that ends the
+    /// piece the rate vanishes). A start for Newton, not an answer.
+    pub(crate) fn param_guess(&self, ang: f64) -> f64 {
+        if self.rot == 0.0 {
+            return 0.5 * (self.lo + self.hi);
+        }
+        let x = ((ang - self.psi_lo) / self.rot).clamp(0.0, 1.0);
+        let du = self.hi - self.lo;
+        // Slopes of u(x) at the ends: du/dψ · dψ/dx, within [0, 3 du] (u rises with x).
+        let slope = |rate: f64| {
+            let m = self.rot / rate;
+            if m.is_finite() && m > 0.0 {
+                m.min(3.0 * du)
+            } else {
+                3.0 * du
+            }
+        };
+        let (m0, m1) = (slope(self.rates.0), slope(self.rates.1));
+        let (x2, x3) = (x * x, x * x * x);
+        let u = (2.0 * x3 - 3.0 * x2 + 1.0) * self.lo
+            + (x3 - 2.0 * x2 + x) * m0
+            + (-2.0 * x3 + 3.0 * x2) * self.hi
+            + (x3 - x2) * m1;
+        u.clamp(self.lo, self.hi)
+    }
 }
 
 /// Inflections and straight stretches.
@@ -306,20 +338,25 @@ impl View<'_> {
                 cuts.push(self.param_at_angle(tr, prev, hi, target));
             }
             cuts.push(hi);
+            let rate = |u: f64| {
+                let j = self.jet_to(u, 2);
+                j.d1.cross(j.d2) / j.d1.dot(j.d1)
+            };
             for w in cuts.windows(2) {
                 let (q0, q1) = (self.psi(tr, w[0]), self.psi(tr, w[1]));
-                let mid = self.jet_to(0.5 * (w[0] + w[1]), 2);
+                let convex = if (q1 - q0).abs() > 1e-12 {
+                    q1 > q0
+                } else {
+                    self.jet_to(0.5 * (w[0] + w[1]), 2).curvature() > 0.0
+                };
                 out.push(Piece {
                     lo: w[0],
                     hi: w[1],
-                    convex: if (q1 - q0).abs() > 1e-12 {
-                        q1 > q0
-                    } else {
-                        mid.curvature() > 0.0
-                    },
+                    convex,
                     psi_lo: q0,
                     rot: q1 - q0,
                     flat: false,
+                    rates: (rate(w[0]), rate(w[1])),
                 });
             }
         }
@@ -331,6 +368,7 @@ impl View<'_> {
                 psi_lo: self.psi(tr, 0.5 * (lo + hi)),
                 rot: 0.0,
                 flat: true,
+                rates: (0.0, 0.0),
             });
         }
         out
@@ -372,5 +410,46 @@ impl View<'_> {
             prev = Some((x1, p1));
         }
         0.5 * (lo + hi)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn piece(rates: (f64, f64), rot: f64) -> Piece {
+        Piece {
+            lo: 2.0,
+            hi: 3.0,
+            convex: rot > 0.0,
+            psi_lo: 1.0,
+            rot,
+            flat: false,
+            rates,
+        }
+    }
+
+    /// The guess reproduces a uniformly turning piece, its ends, and stays monotone inside
+    /// the piece when a rate vanishes (an inflection at an end) or is huge.
+    #[test]
+    fn param_guess_is_exact_on_uniform_turning_and_monotone() {
+        let uniform = piece((0.5, 0.5), 0.5);
+        for i in 0..=10 {
+            let x = i as f64 / 10.0;
+            assert!((uniform.param_guess(1.0 + 0.5 * x) - (2.0 + x)).abs() < 1e-12);
+        }
+        for rates in [(0.0, 0.5), (0.5, 0.0), (1e9, 0.1), (-0.5, -0.5)] {
+            for rot in [0.5f64, -0.5] {
+                let p = piece((rates.0 * rot.signum(), rates.1 * rot.signum()), rot);
+                assert_eq!(p.param_guess(1.0), 2.0);
+                assert_eq!(p.param_guess(1.0 + rot), 3.0);
+                let mut last = 2.0;
+                for i in 1..=100 {
+                    let u = p.param_guess(1.0 + rot * i as f64 / 100.0);
+                    assert!(u >= last && u <= 3.0, "{rates:?} {rot}: {u} after {last}");
+                    last = u;
+                }
+            }
+        }
     }
 }

@@ -162,17 +162,22 @@ pub(crate) fn opposite_pair<'a>(
     }
     // Angles within rounding of a piece end snap to that end (its own normal there).
     const SNAP: f64 = 1e-10;
-    // Newton starts where the tangent, turning at its rate at the nearer end of the piece,
-    // would reach the angle.
-    let guess = |v: &View, piece: &Piece, ang: f64| {
-        let (e, off) = if (ang - piece.psi_lo).abs() <= (ang - piece.psi_lo - piece.rot).abs() {
-            (piece.lo, ang - piece.psi_lo)
-        } else {
-            (piece.hi, ang - piece.psi_lo - piece.rot)
-        };
-        let j = v.jet_to(e, 2);
-        let rate = j.d1.cross(j.d2) / j.d1.dot(j.d1);
-        (e + off / rate).clamp(piece.lo, piece.hi)
+    // Newton starts where the piece's interpolant of u(ψ) puts the angle. On a certified
+    // curve the angle lies inside the piece's range by more than the snapping, so the signs
+    // of C′ · n at the piece's ends are those of sin(ψ − angle) there (no jets needed).
+    let solve = |v: &View, piece: &Piece, ang: f64| {
+        let n = V2::polar(ang).perp();
+        let guess = piece.param_guess(ang);
+        if v.cert.is_some() {
+            let ends = (
+                (piece.psi_lo - ang).sin(),
+                (piece.psi_lo + piece.rot - ang).sin(),
+            );
+            if (ends.0 < 0.0) != (ends.1 < 0.0) {
+                return v.point_with_normal_between(piece.lo, piece.hi, n, ends, guess);
+            }
+        }
+        v.point_with_normal_near(piece.lo, piece.hi, n, guess)
     };
     let s_at = |ang: f64| -> Option<f64> {
         if (ang - p.psi_lo).abs() <= SNAP {
@@ -180,7 +185,7 @@ pub(crate) fn opposite_pair<'a>(
         } else if (ang - (p.psi_lo + p.rot)).abs() <= SNAP {
             Some(p.hi)
         } else {
-            vs.point_with_normal_near(p.lo, p.hi, V2::polar(ang).perp(), guess(vs, p, ang))
+            solve(vs, p, ang)
         }
     };
     let t_at = |ang: f64| -> Option<f64> {
@@ -190,7 +195,7 @@ pub(crate) fn opposite_pair<'a>(
         } else if (ang - shift - (q.psi_lo + PI + q.rot)).abs() <= SNAP {
             Some(q.hi)
         } else {
-            vt.point_with_normal_near(q.lo, q.hi, V2::polar(a).perp(), guess(vt, q, a))
+            solve(vt, q, a)
         }
     };
     let (s0, s1) = (s_at(lo)?, s_at(hi)?);

@@ -162,6 +162,25 @@ impl View<'_> {
         self.solve(lo, hi, f, fast, sym, accept, Prefer::Low, hint)
     }
 
+    /// [`View::point_with_normal_near`] on a monotone segment where the signs of `C′ · n` at
+    /// the ends are known without evaluating there (`ends`: values of those signs, as from
+    /// the ends' tangent angles): the tangent meets the direction exactly once inside.
+    pub(crate) fn point_with_normal_between(
+        &self,
+        lo: f64,
+        hi: f64,
+        n: V2,
+        ends: (f64, f64),
+        hint: f64,
+    ) -> Option<f64> {
+        let f = |u: f64| {
+            let j = self.jet_to(u, 2);
+            (j.d1.dot(n), j.d2.dot(n))
+        };
+        let u = newton_bracketed(f, (lo, hi), ends, self.tol, hint);
+        (self.normal(u).dot(n) > 0.0).then_some(u)
+    }
+
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
     pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
         let f = |u: f64| {

@@ -144,7 +144,7 @@ fn two_tangents_same_bending(p: &Pair) -> bool {
 
 /// Appendix B: `pt ∈ R₀` of the segment over `(a, b)` (on two of its tangent lines).
 fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
-    let (ja, jb) = (v.jet(a), v.jet(b));
+    let (ja, jb) = (v.jet_to(a, 2), v.jet_to(b, 2));
     let sign = if convex { 1.0 } else { -1.0 };
     let (va, vb) = (ja.normal() * sign, jb.normal() * sign);
     if (pt - ja.p).dot(va) <= 0.0 || (pt - jb.p).dot(vb) <= 0.0 {
@@ -165,7 +165,7 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
     }
     // Foot point: root of (p − α(u)) · α′(u), of opposite signs at the ends inside the triangle.
     let f = |u: f64| {
-        let j = v.jet(u);
+        let j = v.jet_to(u, 2);
         let r = pt - j.p;
         (r.dot(j.d1), r.dot(j.d2) - j.d1.dot(j.d1))
     };
@@ -174,6 +174,6 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
         return false;
     }
     let u = crate::view::newton_bracketed(f, (a, b), (fa, fb), v.tol, f64::NAN);
-    let j = v.jet(u);
+    let j = v.jet_to(u, 2);
     (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
 }

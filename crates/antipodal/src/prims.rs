@@ -181,6 +181,30 @@ impl View<'_> {
         (self.normal(u).dot(n) > 0.0).then_some(u)
     }
 
+    /// [`View::point_with_normal_near`] with the tangents at the two ends given (`(u, C′(u))`,
+    /// either order): a march keeps its section's far end at hand, so the ends need no
+    /// evaluation.
+    pub(crate) fn point_with_normal_from(
+        &self,
+        a: (f64, V2),
+        b: (f64, V2),
+        n: V2,
+        hint: f64,
+    ) -> Option<f64> {
+        if self.cert.is_some() {
+            let ((lo, d_lo), (hi, d_hi)) = if a.0 <= b.0 { (a, b) } else { (b, a) };
+            let (fl, fh) = (d_lo.dot(n), d_hi.dot(n));
+            let bound = |d1: V2| 64.0 * f64::EPSILON * d1.norm();
+            if fl.abs() > bound(d_lo) && fh.abs() > bound(d_hi) {
+                if (fl < 0.0) == (fh < 0.0) {
+                    return None;
+                }
+                return self.point_with_normal_between(lo, hi, n, (fl, fh), hint);
+            }
+        }
+        self.point_with_normal_near(a.0, b.0, n, hint)
+    }
+
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
     pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
         let f = |u: f64| {

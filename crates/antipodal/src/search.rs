@@ -335,10 +335,12 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
 /// to `r(s_i)` and `t` to its opposite point.
 fn march_convex(p: &Pair, theta_a: f64) -> March {
     let up = theta_a > 0.0;
+    let end = if up { p.sb } else { p.sa };
+    let far = (end, p.vs.jet_to(end, 1).d1);
     march(p, up, |_, s, t, hint| {
         let dir = p.r(s, t).unit();
-        let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
-        p.vs.point_with_normal_near(lo, hi, dir, hint)
+        let here = (s, p.vs.jet_to(s, 1).d1);
+        p.vs.point_with_normal_from(here, far, dir, hint)
     })
 }
 
@@ -376,6 +378,9 @@ fn march_mixed(p: &Pair) -> March {
 /// the opposite point.
 fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Option<f64>) -> March {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
+    // T's far end, kept with its tangent: every step's solve for t is bracketed by it.
+    let t_end = if up { p.tb } else { p.ta };
+    let t_far = (t_end, p.vt.jet_to(t_end, 1).d1);
     let mut last_step = f64::INFINITY;
     let (mut ds, mut dt, mut ratio) = (0.0, 0.0, 1.0);
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
@@ -385,7 +390,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
         let Some(ns) = next(i, s, t, s + ds * ratio) else {
             return March::Nothing;
         };
-        let nt = p.opposite_near(ns, t, if up { p.tb } else { p.ta }, t + dt * ratio);
+        let nt = p.opposite_near_from(ns, t, t_far, t + dt * ratio);
         let mut step = (ns - s).abs();
         ratio = (step / last_step).clamp(0.0, 3.0);
         (ds, dt) = (ns - s, nt - t);

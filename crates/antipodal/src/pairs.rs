@@ -78,6 +78,11 @@ impl<'a> Pair<'a> {
     }
 
     /// [`Pair::opposite_within`] with Newton started at `hint`.
+    pub(crate) fn opposite_near(&self, s: f64, t0: f64, t1: f64, hint: f64) -> f64 {
+        let d1 = self.vt.jet_to(t1, 1).d1;
+        self.opposite_near_from(s, t0, (t1, d1), hint)
+    }
+
     /// [`Pair::opposite_near`] with `T`'s tangent at `t1` given (a march's far end).
     pub(crate) fn opposite_near_from(&self, s: f64, t0: f64, t1: (f64, V2), hint: f64) -> f64 {
         let n = -self.vs.normal(s);
@@ -86,15 +91,6 @@ impl<'a> Pair<'a> {
             .point_with_normal_from((t0, d0), t1, n, hint)
             .or_else(|| self.opposite(s))
             .unwrap_or(0.5 * (t0 + t1.0))
-    }
-
-    pub(crate) fn opposite_near(&self, s: f64, t0: f64, t1: f64, hint: f64) -> f64 {
-        let n = -self.vs.normal(s);
-        let (lo, hi) = (t0.min(t1), t0.max(t1));
-        self.vt
-            .point_with_normal_near(lo, hi, n, hint)
-            .or_else(|| self.opposite(s))
-            .unwrap_or(0.5 * (t0 + t1))
     }
 
     /// `r(s) = α(t) − α(s)`.

@@ -143,19 +143,9 @@ impl View<'_> {
         };
         let accept = |u: f64| self.normal(u).dot(n) > 0.0;
         if self.cert.is_some() {
-            // Every caller asks on a monotone segment (curvature of one sign, certified by the
-            // isolated inflections; total turning below π, certified by the hodograph): there
-            // the tangent meets each direction at most once, so the signs of `C′ · n` at the
-            // two ends decide, when both are trusted beyond their rounding bound.
-            let (jl, jh) = (self.jet_to(lo.min(hi), 1), self.jet_to(lo.max(hi), 1));
-            let (fl, fh) = (jl.d1.dot(n), jh.d1.dot(n));
-            let bound = |d1: V2| 64.0 * f64::EPSILON * d1.norm();
-            if fl.abs() > bound(jl.d1) && fh.abs() > bound(jh.d1) {
-                if (fl < 0.0) == (fh < 0.0) {
-                    return None;
-                }
-                let u = newton_bracketed(f, (lo.min(hi), lo.max(hi)), (fl, fh), self.tol, hint);
-                return accept(u).then_some(u);
+            let end = |u: f64| (u, self.jet_to(u, 1).d1);
+            if let Some(found) = self.normal_by_end_signs(end(lo), end(hi), n, hint) {
+                return found;
             }
         }
         let fast = self.cert.as_ref().map(|c| (&c.tangent_pw, [n.x, n.y, 0.0]));
@@ -192,17 +182,35 @@ impl View<'_> {
         hint: f64,
     ) -> Option<f64> {
         if self.cert.is_some() {
-            let ((lo, d_lo), (hi, d_hi)) = if a.0 <= b.0 { (a, b) } else { (b, a) };
-            let (fl, fh) = (d_lo.dot(n), d_hi.dot(n));
-            let bound = |d1: V2| 64.0 * f64::EPSILON * d1.norm();
-            if fl.abs() > bound(d_lo) && fh.abs() > bound(d_hi) {
-                if (fl < 0.0) == (fh < 0.0) {
-                    return None;
-                }
-                return self.point_with_normal_between(lo, hi, n, (fl, fh), hint);
+            if let Some(found) = self.normal_by_end_signs(a, b, n, hint) {
+                return found;
             }
         }
         self.point_with_normal_near(a.0, b.0, n, hint)
+    }
+
+    /// Every caller asks on a monotone segment (curvature of one sign, certified by the
+    /// isolated inflections; total turning below π, certified by the hodograph): there the
+    /// tangent meets each direction at most once, so the signs of `C′ · n` at the two ends
+    /// (`(u, C′(u))`, either order) decide, when both are trusted beyond their rounding bound.
+    /// `None` when they are not.
+    fn normal_by_end_signs(
+        &self,
+        a: (f64, V2),
+        b: (f64, V2),
+        n: V2,
+        hint: f64,
+    ) -> Option<Option<f64>> {
+        let ((lo, d_lo), (hi, d_hi)) = if a.0 <= b.0 { (a, b) } else { (b, a) };
+        let (fl, fh) = (d_lo.dot(n), d_hi.dot(n));
+        let bound = |d1: V2| 64.0 * f64::EPSILON * d1.norm();
+        if fl.abs() <= bound(d_lo) || fh.abs() <= bound(d_hi) {
+            return None;
+        }
+        if (fl < 0.0) == (fh < 0.0) {
+            return Some(None);
+        }
+        Some(self.point_with_normal_between(lo, hi, n, (fl, fh), hint))
     }
 
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.

@@ -167,7 +167,9 @@ fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64), first: f64) -> Opt
 /// θ is strictly monotone for `s` between `a.0` and `b.0` (opposite points `a.1`, `b.1`):
 /// `Some(true)` where it increases, `Some(false)` where it decreases.
 ///
-/// The sign of θ′ is that of κ(s) times the bracket below, bounded by interval arithmetic.
+/// The sign of θ′ is bounded by interval arithmetic on the ranges of κ on both arcs, of |r|
+/// and of θ: as κ(s) times a bracket of radii, or free of radii where an arc reaches an
+/// inflection.
 fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let ((s0, t0), (s1, t1)) = (a, b);
     // θ′ must have one sign at the two ends, clear of rounding: a cheap necessary condition

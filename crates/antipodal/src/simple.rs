@@ -186,7 +186,13 @@ impl View<'_> {
         };
         let mut stack = vec![arc];
         while let Some(arc) = stack.pop() {
-            if (arc.psi1 - arc.psi0).abs() < FRAC_PI_2 - 0.1 || arc.u1 - arc.u0 <= self.tol {
+            let turning = (arc.psi1 - arc.psi0).abs();
+            if turning < FRAC_PI_2 - 0.1 || arc.u1 - arc.u0 <= self.tol {
+                // An arc within the tolerance that still turns this much (a near-cusp) may
+                // leave its triangle: what is decided with it is not proven.
+                if turning >= FRAC_PI_2 - 0.1 {
+                    self.uncertify();
+                }
                 arcs.push(arc);
                 continue;
             }

@@ -444,9 +444,9 @@ impl BoundForms {
     }
 
     /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
-    /// per fine piece it covers, the piece's precomputed range; per piece it overlaps within
-    /// two cells, the stretch's own Taylor models ([`BoundForms::partial`]); per piece it
-    /// overlaps across more cells, the union of those cells. Returns the greatest speed
+    /// per fine piece it covers, the piece's precomputed range; for a stretch within two cells
+    /// of one piece, its own Taylor models ([`BoundForms::partial`]); per piece any other
+    /// stretch overlaps in part, the union of the cells it touches. Returns the greatest speed
     /// `|C′| = |D| / w²` there; `None` where `|D|` or `w` is not proven positive.
     ///
     /// (Measured on the papers' shapes against models for every partly covered piece: with
@@ -454,6 +454,9 @@ impl BoundForms {
     /// run, the others 2–4 % fewer; 8 and 32 cells do about as well, 4 and 64 worse.)
     fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<f64> {
         let mut speed = 0.0f64;
+        // A stretch within one fine piece may be short enough for its own models to matter;
+        // one across several reads cells at its ends.
+        let within_one = self.curvature.pw.piece_at(lo) == self.curvature.pw.piece_at(hi);
         for (i, x0, x1) in self.curvature.pw.overlaps(lo, hi) {
             let (a, b) = self.curvature.pw.piece_span(i);
             let (kappa, v) = if x0 <= a && x1 >= b {
@@ -464,7 +467,7 @@ impl BoundForms {
                     (((x - a) / (b - a) * CELLS as f64).floor().max(0.0) as usize).min(CELLS - 1)
                 };
                 let (c0, c1) = (cell(x0), cell(x1));
-                if c1 - c0 <= 1 {
+                if c1 - c0 <= 1 && within_one {
                     // Within two cells: the stretch's own models are tighter.
                     self.partial(i, x0, x1)?
                 } else {

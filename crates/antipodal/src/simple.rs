@@ -17,7 +17,7 @@
 //! result uncertified.
 //!
 //! On a curve without symbolic forms the inflections are sampled, so an arc may hide a pair of
-//! them: the densified polygon of the track is searched for crossings as well.
+//! them: the densified polygon of the track is searched for crossings instead.
 
 use crate::dissect::{Tracks, Zeros};
 use crate::error::{Error, Result};
@@ -107,12 +107,17 @@ fn spans(a: &Arc, ha: &Hull, b: &Arc) -> bool {
 
 impl View<'_> {
     /// The curve is simple: its tangent turns once around (±2π), and no two of its arcs
-    /// meet (see the module notes). Uncertifies the result where a pair of arcs could not be
-    /// decided.
+    /// meet (see the module notes; without symbolic forms, no two chords of its sampled
+    /// polygon cross). Uncertifies the result where a pair of arcs could not be decided.
     pub(crate) fn check_simple(&self, tr: &Tracks, zeros: &Zeros) -> Result<()> {
         let turn = tr.turn();
         if (turn.abs() - TAU).abs() > 0.5 {
             return Err(Error::Winding { turns: turn / TAU });
+        }
+        if self.cert.is_none() {
+            // Sampled inflections and uncertified track steps do not make the arcs monotone:
+            // the enclosures would prove nothing, and only the polygon is searched.
+            return self.check_polygon(tr);
         }
         let arcs = self.monotone_arcs(tr, zeros);
         let pad = 1e-12 * self.scale;
@@ -134,9 +139,6 @@ impl View<'_> {
         }
         if !decided {
             self.uncertify();
-        }
-        if self.cert.is_none() {
-            self.check_polygon(tr)?;
         }
         Ok(())
     }

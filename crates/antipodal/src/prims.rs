@@ -8,7 +8,7 @@
 
 use crate::fast::Pw;
 use crate::geom::V2;
-use crate::view::{newton_bracketed, Count, View};
+use crate::view::{halley_bracketed, Count, View};
 use bspline::roots::{Root, RootKind};
 use bspline::BSpline;
 use smallvec::SmallVec;
@@ -29,7 +29,7 @@ impl View<'_> {
         &self,
         lo: f64,
         hi: f64,
-        f: impl Fn(f64) -> (f64, f64),
+        f: impl Fn(f64) -> (f64, f64, f64),
         fast: Option<(&Pw, [f64; 3])>,
         sym: impl FnOnce() -> Option<BSpline>,
         accept: impl Fn(f64) -> bool,
@@ -46,7 +46,7 @@ impl View<'_> {
                     Some(Count::One(a, b)) => {
                         let (fa, fb) = (f(a).0, f(b).0);
                         if (fa < 0.0) != (fb < 0.0) {
-                            let u = newton_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
+                            let u = halley_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
                             return accept(u).then_some(u);
                         }
                     }
@@ -63,7 +63,7 @@ impl View<'_> {
                         // Certified unique root in [a, b]: refine on the curve itself.
                         let (fa, fb) = (f(a).0, f(b).0);
                         if (fa < 0.0) != (fb < 0.0) {
-                            let u = newton_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
+                            let u = halley_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
                             return accept(u).then_some(u);
                         }
                     }
@@ -84,7 +84,7 @@ impl View<'_> {
         roots: Vec<Root>,
         lo: f64,
         hi: f64,
-        f: &impl Fn(f64) -> (f64, f64),
+        f: &impl Fn(f64) -> (f64, f64, f64),
         accept: &impl Fn(f64) -> bool,
         prefer: Prefer,
         flo: f64,
@@ -134,8 +134,8 @@ impl View<'_> {
     /// `point-with-normal` started from a nearby parameter `hint`.
     pub(crate) fn point_with_normal_near(&self, lo: f64, hi: f64, n: V2, hint: f64) -> Option<f64> {
         let f = |u: f64| {
-            let j = self.jet_to(u, 2);
-            (j.d1.dot(n), j.d2.dot(n))
+            let j = self.jet_to(u, 3);
+            (j.d1.dot(n), j.d2.dot(n), j.d3.dot(n))
         };
         let sym = || {
             let d = &self.cert.as_ref()?.tangent;
@@ -164,10 +164,10 @@ impl View<'_> {
         hint: f64,
     ) -> Option<f64> {
         let f = |u: f64| {
-            let j = self.jet_to(u, 2);
-            (j.d1.dot(n), j.d2.dot(n))
+            let j = self.jet_to(u, 3);
+            (j.d1.dot(n), j.d2.dot(n), j.d3.dot(n))
         };
-        let u = newton_bracketed(f, (lo, hi), ends, self.tol, hint);
+        let u = halley_bracketed(f, (lo, hi), ends, self.tol, hint);
         (self.normal(u).dot(n) > 0.0).then_some(u)
     }
 
@@ -216,9 +216,13 @@ impl View<'_> {
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
     pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
         let f = |u: f64| {
-            let j = self.jet_to(u, 2);
+            let j = self.jet_to(u, 3);
             let r = j.p - p;
-            (r.cross(j.d1), r.cross(j.d2))
+            (
+                r.cross(j.d1),
+                r.cross(j.d2),
+                j.d1.cross(j.d2) + r.cross(j.d3),
+            )
         };
         let sym = || {
             let c = &self.cert.as_ref()?.curve;
@@ -251,8 +255,8 @@ impl View<'_> {
     ) -> Option<f64> {
         let v = dir.perp();
         let f = |u: f64| {
-            let j = self.jet_to(u, 1);
-            ((j.p - c).dot(v), j.d1.dot(v))
+            let j = self.jet_to(u, 2);
+            ((j.p - c).dot(v), j.d1.dot(v), j.d2.dot(v))
         };
         let sym = || {
             let cc = &self.cert.as_ref()?.curve;
@@ -289,7 +293,7 @@ impl View<'_> {
         lo: f64,
         hi: f64,
         p: V2,
-        f: &impl Fn(f64) -> (f64, f64),
+        f: &impl Fn(f64) -> (f64, f64, f64),
     ) -> Option<Option<f64>> {
         let (jl, jh) = (self.jet_to(lo, 1), self.jet_to(hi, 1));
         let trusted =
@@ -299,7 +303,7 @@ impl View<'_> {
             return None;
         }
         if (fl < 0.0) != (fh < 0.0) {
-            return Some(Some(newton_bracketed(
+            return Some(Some(halley_bracketed(
                 f,
                 (lo, hi),
                 (fl, fh),
@@ -357,7 +361,7 @@ impl View<'_> {
         hi: f64,
         c: V2,
         v: V2,
-        f: &impl Fn(f64) -> (f64, f64),
+        f: &impl Fn(f64) -> (f64, f64, f64),
         accept: &impl Fn(f64) -> bool,
         prefer: Prefer,
         hint: f64,
@@ -372,10 +376,10 @@ impl View<'_> {
         cuts.push((lo, jl.p));
         if (gl < 0.0) != (gh < 0.0) {
             let g = |u: f64| {
-                let j = self.jet_to(u, 2);
-                (j.d1.dot(v), j.d2.dot(v))
+                let j = self.jet_to(u, 3);
+                (j.d1.dot(v), j.d2.dot(v), j.d3.dot(v))
             };
-            let ue = newton_bracketed(g, (lo, hi), (gl, gh), self.tol, f64::NAN);
+            let ue = halley_bracketed(g, (lo, hi), (gl, gh), self.tol, f64::NAN);
             cuts.push((ue, self.point(ue)));
         }
         cuts.push((hi, jh.p));
@@ -390,7 +394,7 @@ impl View<'_> {
             let ((x0, p0), (x1, p1)) = (cuts[k], cuts[k + 1]);
             let (f0, f1) = (val(p0), val(p1));
             if (f0 < 0.0) != (f1 < 0.0) {
-                let u = newton_bracketed(f, (x0, x1), (f0, f1), self.tol, hint);
+                let u = halley_bracketed(f, (x0, x1), (f0, f1), self.tol, hint);
                 if accept(u) {
                     return Some(Some(u));
                 }
@@ -407,7 +411,7 @@ fn sampled(
     hi: f64,
     flo: f64,
     fhi: f64,
-    f: &impl Fn(f64) -> (f64, f64),
+    f: &impl Fn(f64) -> (f64, f64, f64),
     accept: &impl Fn(f64) -> bool,
     tol: f64,
     hint: f64,
@@ -417,7 +421,7 @@ fn sampled(
     } else if fhi == 0.0 {
         hi
     } else if (flo < 0.0) != (fhi < 0.0) {
-        newton_bracketed(f, (lo, hi), (flo, fhi), tol, hint)
+        halley_bracketed(f, (lo, hi), (flo, fhi), tol, hint)
     } else if flo.abs() <= 1e-12 * fhi.abs() {
         lo
     } else if fhi.abs() <= 1e-12 * flo.abs() {
@@ -429,10 +433,10 @@ fn sampled(
 }
 
 /// A few Newton steps kept inside `[lo, hi]`.
-fn polish(f: &impl Fn(f64) -> (f64, f64), u: f64, lo: f64, hi: f64) -> f64 {
+fn polish(f: &impl Fn(f64) -> (f64, f64, f64), u: f64, lo: f64, hi: f64) -> f64 {
     let mut x = u;
     for _ in 0..8 {
-        let (v, d) = f(x);
+        let (v, d, _) = f(x);
         if d == 0.0 || v == 0.0 {
             break;
         }
@@ -478,9 +482,9 @@ mod tests {
                 for &(x, y) in &points {
                     let p = V2::new(x, y);
                     let f = |u: f64| {
-                        let j = v.jet_to(u, 2);
+                        let j = v.jet_to(u, 3);
                         let r = j.p - p;
-                        (r.cross(j.d1), r.cross(j.d2))
+                        (r.cross(j.d1), r.cross(j.d2), j.d1.cross(j.d2) + r.cross(j.d3))
                     };
                     let Some(found) = v.tangency_on_monotone(piece.lo, piece.hi, p, &f) else {
                         continue;

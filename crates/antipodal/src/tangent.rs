@@ -165,15 +165,19 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
     }
     // Foot point: root of (p − α(u)) · α′(u), of opposite signs at the ends inside the triangle.
     let f = |u: f64| {
-        let j = v.jet_to(u, 2);
+        let j = v.jet_to(u, 3);
         let r = pt - j.p;
-        (r.dot(j.d1), r.dot(j.d2) - j.d1.dot(j.d1))
+        (
+            r.dot(j.d1),
+            r.dot(j.d2) - j.d1.dot(j.d1),
+            r.dot(j.d3) - 3.0 * j.d1.dot(j.d2),
+        )
     };
     let (fa, fb) = (f(a).0, f(b).0);
     if (fa > 0.0) == (fb > 0.0) {
         return false;
     }
-    let u = crate::view::newton_bracketed(f, (a, b), (fa, fb), v.tol, f64::NAN);
+    let u = crate::view::halley_bracketed(f, (a, b), (fa, fb), v.tol, f64::NAN);
     let j = v.jet_to(u, 2);
     (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
 }

@@ -55,6 +55,39 @@ impl Iv {
         (self.lo > 0.0 || self.hi < 0.0).then(|| Self::new(1.0 / self.hi, 1.0 / self.lo))
     }
 
+    /// The exact range of `f` over the box `a × b × c` when `f` is multilinear (of degree at
+    /// most one in each variable, as `xy + yz − xz`): a multilinear function takes its
+    /// extremes at corners, where plain interval arithmetic loses whatever a variable
+    /// entering twice shares. Widened by `margin` (absolute: the rounding of the terms).
+    pub(crate) fn multilinear(
+        [a, b, c]: [Iv; 3],
+        f: impl Fn(f64, f64, f64) -> f64,
+        margin: f64,
+    ) -> Self {
+        let v = [
+            f(a.lo, b.lo, c.lo),
+            f(a.lo, b.lo, c.hi),
+            f(a.lo, b.hi, c.lo),
+            f(a.lo, b.hi, c.hi),
+            f(a.hi, b.lo, c.lo),
+            f(a.hi, b.lo, c.hi),
+            f(a.hi, b.hi, c.lo),
+            f(a.hi, b.hi, c.hi),
+        ];
+        if v.iter().any(|x| x.is_nan()) {
+            // (It must not pass for a proof.)
+            return Self::new(f64::NAN, f64::NAN);
+        }
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Self::new(lo - margin, hi + margin)
+    }
+
+    /// The greatest magnitude in the interval.
+    pub(crate) fn mag(self) -> f64 {
+        self.lo.abs().max(self.hi.abs())
+    }
+
     /// Strictly positive or strictly negative throughout.
     pub(crate) fn excludes_zero(self) -> bool {
         self.lo > 0.0 || self.hi < 0.0

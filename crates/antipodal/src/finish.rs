@@ -247,7 +247,14 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
         }
         // Then free of radii: κ(t) θ′/|C′(s)| = κ(s) (cos θ/|r| − κ(t)) + κ(t) cos θ/|r|,
         // which proves stretches that reach an inflection (κ(t) keeps its piece's sign).
-        let q = ks.mul(c_r.sub(kt)).add(kt.mul(c_r)).widened(1e-9);
+        // Multilinear in κ(s), κ(t) and cos θ/|r|: its exact range is at the corners (each
+        // curvature enters twice, and plain interval arithmetic lost a sign the ends share
+        // where one arc runs into an inflection).
+        let q = Iv::multilinear(
+            [ks, kt, c_r],
+            |a, b, c| a * (c - b) + b * c,
+            1e-9 * (ks.mag() * (c_r.mag() + kt.mag()) + kt.mag() * c_r.mag()),
+        );
         if q.excludes_zero() {
             return Some(p.t_convex == (q.lo > 0.0));
         }
@@ -260,12 +267,13 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
         // J, so the new one does too; with it, the range of |r| by its own rate, |d|r|/ds| =
         // |C′(s)| |1 + κ(s) ρ(t)| |sin θ| (or in t), from both ends.
         let by_g = g.map_or(f64::INFINITY, |g| abs_max(ks) * abs_max(g));
-        let in_s = rho_t.map_or(f64::INFINITY, |rt| {
-            abs_max(one.add(ks.mul(rt)).mul(c_r).sub(ks).widened(1e-9))
-        });
-        let in_t = rho_s.map_or(f64::INFINITY, |rs| {
-            abs_max(one.add(kt.mul(rs)).mul(c_r).sub(kt).widened(1e-9))
-        });
+        // (Multilinear again: exact at the corners.)
+        let rate = |k: Iv, rho: Iv| {
+            let size = (1.0 + k.mag() * rho.mag()) * c_r.mag() + k.mag();
+            Iv::multilinear([k, rho, c_r], |k, r, c| (1.0 + k * r) * c - k, 1e-9 * size).mag()
+        };
+        let in_s = rho_t.map_or(f64::INFINITY, |rt| rate(ks, rt));
+        let in_t = rho_s.map_or(f64::INFINITY, |rs| rate(kt, rs));
         let (th1, r1, r_swing) = *far.get_or_insert_with(|| {
             let by_s = rho_t.map_or(f64::INFINITY, |rt| {
                 bs.speed * abs_max(one.add(ks.mul(rt))) * len

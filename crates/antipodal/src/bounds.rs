@@ -638,6 +638,34 @@ mod tests {
     use proptest::prelude::*;
 
     proptest! {
+        /// The corner range of a random multilinear function holds every value sampled on a
+        /// grid of its box, and is attained (its ends are values at corners).
+        #[test]
+        fn multilinear_range_is_exact(
+            c in proptest::array::uniform8(-2.0f64..2.0),
+            ends in proptest::array::uniform6(-3.0f64..3.0),
+        ) {
+            let iv = |a: f64, b: f64| Iv::new(a.min(b), a.max(b));
+            let boxes = [iv(ends[0], ends[1]), iv(ends[2], ends[3]), iv(ends[4], ends[5])];
+            let f = |x: f64, y: f64, z: f64| {
+                c[0] + c[1] * x + c[2] * y + c[3] * z
+                    + c[4] * x * y + c[5] * y * z + c[6] * x * z + c[7] * x * y * z
+            };
+            let r = Iv::multilinear(boxes, f, 0.0);
+            let at = |b: Iv, k: usize| b.lo + (b.hi - b.lo) * k as f64 / 8.0;
+            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+            for i in 0..=8 {
+                for j in 0..=8 {
+                    for k in 0..=8 {
+                        let v = f(at(boxes[0], i), at(boxes[1], j), at(boxes[2], k));
+                        prop_assert!(v >= r.lo - 1e-12 && v <= r.hi + 1e-12, "{v} outside {r:?}");
+                        (lo, hi) = (lo.min(v), hi.max(v));
+                    }
+                }
+            }
+            prop_assert!((lo - r.lo).abs() <= 1e-12 && (hi - r.hi).abs() <= 1e-12);
+        }
+
         /// The cone test of a set of directions agrees with testing every direction against
         /// the half-plane (away from the margin's rounding).
         #[test]

@@ -82,6 +82,17 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     }
 }
 
+/// A march at `(s, t)` heading up in `s` when `up` that escapes from a pair behind it: no pair
+/// lies ahead when θ has its sign at the section's end and is proven monotone up to there.
+pub(crate) fn clear_ahead(p: &Pair, s: f64, t: f64, up: bool) -> bool {
+    let end = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
+    let (th_s, th_e) = (p.sin_theta(s, t), p.sin_theta(end.0, end.1));
+    th_s.abs() > p.theta_noise(s, t)
+        && th_e.abs() > p.theta_noise(end.0, end.1)
+        && (th_s < 0.0) == (th_e < 0.0)
+        && theta_monotone(p, (s, t), end).is_some()
+}
+
 /// Where θ is not proven monotone from the march's point `from` to `to`: over the first half
 /// of the way it may be (the ranges tighten as the stretch shrinks), and with the march's
 /// sign at its end that half holds no pair.

@@ -7,7 +7,7 @@
 //! linearly), and the stretch beside a found pair that Table 1 cuts off by a small ε is as
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
-use crate::finish::{certified_finish, certified_rest, certified_rests, Finish};
+use crate::finish::{certified_finish, certified_rest, certified_rests, clear_ahead, Finish};
 use crate::pairs::{negligible, polish, polish_within, Pair};
 use crate::prims::Prefer;
 
@@ -386,6 +386,9 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     // Steps to the next finishing attempt, and the gap after a failed one (doubling).
     let (mut wait, mut gap) = (FIRST_WAIT, FIRST_GAP);
+    // The step from which an escaping march next tries to prove nothing lies ahead, and |θ|
+    // at the last point (the march escapes while it grows).
+    let (mut escape_at, mut last_theta) = (ESCAPE_CHECK, f64::INFINITY);
     for i in 0..MARCH_STEPS {
         let Some(ns) = next(i, s, t, s + ds * ratio) else {
             return March::Nothing;
@@ -404,10 +407,20 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
             return March::Crawled(s, t, up);
         }
         if certified {
-            // Tried while the march converges (not while it escapes from a pair behind),
-            // at steps ever farther apart after failures.
+            let theta = p.sin_theta(s, t).abs();
+            // A finish is tried while the march converges, at steps ever farther apart
+            // after failures. While it escapes from a pair behind (steps and |θ| growing)
+            // with several steps to go, a proof that none lies ahead may end it early.
             if step > last_step {
                 (wait, gap) = (0, FIRST_GAP);
+                let escaping = theta > last_theta && i + 1 >= escape_at;
+                if escaping && steps_left(p, s, up, step, ratio) >= ESCAPE_STEPS {
+                    if clear_ahead(p, s, t, up) {
+                        return March::Nothing;
+                    }
+                    escape_at = 2 * (i + 1);
+                }
+                last_theta = theta;
             } else if wait == 0 {
                 let q = step / last_step;
                 let limit = if q < 1.0 {
@@ -426,6 +439,11 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                     (ds, dt, ratio, step) = (0.0, 0.0, 1.0, f64::INFINITY);
                     finish = certified_finish(p, s, t, up, f64::NAN);
                 }
+                last_theta = if step.is_finite() {
+                    theta
+                } else {
+                    f64::INFINITY
+                };
                 match finish {
                     Finish::Found(s, t) => return March::Found(s, t, up),
                     Finish::Nothing => return March::Nothing,
@@ -436,6 +454,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                 }
             } else {
                 wait -= 1;
+                last_theta = theta;
             }
         } else {
             match finish_early(p, s, t, step, last_step, up) {
@@ -457,17 +476,22 @@ const CRAWL_CHECK: usize = 64;
 /// it crawls (θ stays so small along the section that each step turns the normal by little),
 /// and [`by_width`] would settle the rest anyway once the step bound is used up.
 fn crawls(p: &Pair, s: f64, up: bool, step: f64, ratio: f64, left: usize) -> bool {
+    steps_left(p, s, up, step, ratio) > left as f64
+}
+
+/// How many more steps a march at `s` heading up (`up`) or down, whose steps (the last one
+/// `step`) grow by `ratio` each, takes to the section's end (0 when it cannot tell).
+fn steps_left(p: &Pair, s: f64, up: bool, step: f64, ratio: f64) -> f64 {
     let remaining = if up { p.sb - s } else { s - p.sa };
     if step.is_nan() || step <= 0.0 || remaining <= 0.0 {
-        return false;
+        return 0.0;
     }
-    let needed = if ratio > 1.0 + 1e-9 {
+    if ratio > 1.0 + 1e-9 {
         // Steps growing geometrically: Σ step·ratioᵏ reaches `remaining` after this many.
         (1.0 + remaining * (ratio - 1.0) / step).ln() / ratio.ln()
     } else {
         remaining / step
-    };
-    needed > left as f64
+    }
 }
 
 /// Outcome of a march: the pair it reached (`moved_up` in `s`), no pair ahead, or its step
@@ -619,6 +643,16 @@ thread_local! {
 /// section's end that is rarely short enough. Measured on the papers' shapes and a wavy
 /// cubic: 2 saves 2–13 % of a run against 0.
 const FIRST_WAIT: usize = 2;
+
+/// Steps of a march before it first tries to prove that nothing lies ahead as it escapes
+/// from a pair behind (then at steps twice as far in after each failure).
+const ESCAPE_CHECK: usize = 2;
+
+/// Steps an escaping march must still have ahead (predicted from the growth of its steps)
+/// for the proof that ends it early to be worth its cost (a few steps' worth of jets): with
+/// fewer it ends by itself sooner (the ellipse's and limaçon's marches; the elliptic
+/// lemniscate's run ten to an inflection).
+const ESCAPE_STEPS: f64 = 3.0;
 
 /// Proven leaps in a row at one finishing attempt of a march.
 const MAX_LEAPS: usize = 8;

@@ -15,6 +15,7 @@ use crate::types::{
     Antipodal, AntipodalPair, Inflection, Inflections, Options, PairType, TangentLine, Tangents,
 };
 use crate::view::View;
+use smallvec::SmallVec;
 
 /// A validated, dissected curve.
 pub(crate) struct Prepared<'a> {
@@ -172,7 +173,7 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
     let work = Working::new(curve, opts);
     let prep = prepare(work.curve(), opts, None, work.report())?;
     let v = &prep.view;
-    let mut raw: Vec<(f64, f64)> = Vec::new();
+    let mut raw: Vec<(f64, f64)> = Vec::with_capacity(32);
     let mut families = Vec::new();
     let mut budget = Budget {
         sections: opts.max_sections,
@@ -215,9 +216,10 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
 
 /// §5.3: the sections of a pair where `N(s) · r(s) > 0` (condition (v)), cut at the common
 /// tangents.
-fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
+fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
     let tangents = tangent::common_tangents(p);
-    let mut cuts = vec![(p.sa, p.ta)];
+    let mut cuts: SmallVec<[(f64, f64); 4]> = SmallVec::new();
+    cuts.push((p.sa, p.ta));
     cuts.extend(
         tangents
             .iter()
@@ -225,7 +227,7 @@ fn sections<'a>(p: &Pair<'a>) -> Vec<Pair<'a>> {
             .filter(|c| c.0 > p.sa && c.0 < p.sb),
     );
     cuts.push((p.sb, p.tb));
-    let mut out = Vec::new();
+    let mut out = SmallVec::new();
     // d has no zero inside a window (its zeros are the common tangents, the cuts): its sign
     // at an end where it is clear of zero is the window's; else it is taken in the middle.
     let clear = 1e-6 * p.vs.scale.max(p.vt.scale);
@@ -333,8 +335,9 @@ fn finish_pairs(
         })
     };
     let mut keep: Vec<(f64, f64)> = Vec::new();
+    // (Both wrapped into the domain: their distance around the curve needs no remainder.)
     let close = |x: f64, y: f64| {
-        let d = (x - y).rem_euclid(v.period);
+        let d = (x - y).abs();
         d.min(v.period - d) <= 1e-7 * v.period
     };
     for (s, t) in raw {

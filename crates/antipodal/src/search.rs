@@ -10,6 +10,7 @@
 use crate::finish::{certified_finish, certified_rest, certified_rests, clear_ahead, Finish};
 use crate::pairs::{negligible, polish, polish_within, Pair};
 use crate::prims::Prefer;
+use smallvec::SmallVec;
 
 /// Upper bound of the noise of |sin θ| (the antipodal angle of a found pair); the noise at a
 /// given pair, from the parameter tolerance, is [`Pair::theta_noise`].
@@ -23,7 +24,8 @@ pub(crate) struct Budget {
 
 /// Finds all antipodal pairs `(s, t)` of `pair`, appending them to `out`.
 pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &mut Budget) {
-    let mut stack = vec![*pair];
+    let mut stack = Vec::with_capacity(16);
+    stack.push(*pair);
     LIMIT_HIT.with(|c| c.set(false));
     while let Some(p) = stack.pop() {
         if LIMIT_HIT.with(|c| c.get()) {
@@ -101,9 +103,9 @@ fn rests<'a>(
     above: bool,
     below: bool,
     below_neg: bool,
-) -> Vec<Pair<'a>> {
+) -> SmallVec<[Pair<'a>; 2]> {
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
-    let mut out = Vec::new();
+    let mut out = SmallVec::new();
     let both = match certified && above && below {
         true => certified_rests(p, s, t),
         false => [None, None],
@@ -162,8 +164,8 @@ fn remainders<'a>(
     below: bool,
     below_neg: bool,
     widening: bool,
-) -> Vec<Pair<'a>> {
-    let mut out = Vec::new();
+) -> SmallVec<[Pair<'a>; 2]> {
+    let mut out = SmallVec::new();
     let min_eps = 16.0 * p.vs.tol;
     for (want, dir, want_neg) in [(below, -1.0, below_neg), (above, 1.0, !below_neg)] {
         if !want {

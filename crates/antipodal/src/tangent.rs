@@ -16,13 +16,14 @@ use crate::geom::V2;
 use crate::pairs::Pair;
 use crate::prims::Prefer;
 use crate::view::View;
+use smallvec::SmallVec;
 
 /// Points of tangency `(s, t)` of the common tangents of `p`, sorted by `s`.
-pub(crate) fn common_tangents(p: &Pair) -> Vec<(f64, f64)> {
+pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
     let da = p.d(p.sa, p.ta);
     let db = p.d(p.sb, p.tb);
     let odd = (da > 0.0) != (db > 0.0);
-    let mut out = Vec::new();
+    let mut out = SmallVec::new();
     if odd {
         let found = ct_from(p, true)
             .or_else(|| ct_from(p, false))

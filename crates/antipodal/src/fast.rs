@@ -94,10 +94,19 @@ impl Pw {
     /// `out[j·dim + c]` is the j-th derivative of component `c`. Derivatives above the degree
     /// are zero. De Casteljau: the j-th derivative is `p!/(p−j)! Δʲ` of the points of level
     /// `p − j`, over `hʲ`.
+    #[inline]
     pub(crate) fn eval_derivs(&self, u: f64, k: usize, out: &mut [f64]) {
         if self.dim == 3 && self.deg <= 7 && k <= 3 {
-            return self.eval_derivs3(u, k, out);
+            self.eval_derivs3(u, k, out)
+        } else {
+            self.eval_derivs_any(u, k, out)
         }
+    }
+
+    /// [`Pw::eval_derivs`] for any dimension and degree (kept out of line: the planar
+    /// curves' jets take the fixed-size path).
+    #[inline(never)]
+    fn eval_derivs_any(&self, u: f64, k: usize, out: &mut [f64]) {
         let (p, d) = (self.deg, self.dim);
         let i = self.piece_at(u);
         let (a, b) = (self.breaks[i], self.breaks[i + 1]);
@@ -157,6 +166,7 @@ impl Pw {
     /// [`Pw::eval_derivs`] for points of dimension 3 and degree ≤ 7 (homogeneous planar
     /// curves): de Casteljau on fixed-size arrays, one instance per degree so that the
     /// loops unroll (jets are most of the cost of a spline's run).
+    #[inline]
     fn eval_derivs3(&self, u: f64, k: usize, out: &mut [f64]) {
         let i = self.piece_at(u);
         let (a, b) = (self.breaks[i], self.breaks[i + 1]);

@@ -86,11 +86,20 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
 /// lies ahead when θ has its sign at the section's end and is proven monotone up to there.
 pub(crate) fn clear_ahead(p: &Pair, s: f64, t: f64, up: bool) -> bool {
     let end = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
-    let (th_s, th_e) = (p.sin_theta(s, t), p.sin_theta(end.0, end.1));
-    th_s.abs() > p.theta_noise(s, t)
-        && th_e.abs() > p.theta_noise(end.0, end.1)
-        && (th_s < 0.0) == (th_e < 0.0)
-        && theta_monotone(p, (s, t), end).is_some()
+    let ends = (p.sin_theta(s, t), p.sin_theta(end.0, end.1));
+    clear_between(p, (s, t), end, ends)
+}
+
+/// No pair lies on `p` between the opposite points `a` and `b`, where θ is `th.0` and `th.1`:
+/// their signs agree beyond the noise, and θ is proven monotone in between. (The cheap tests
+/// first: the monotonicity proof fails fast where θ′ changes sign between the ends.)
+pub(crate) fn clear_between(p: &Pair, a: (f64, f64), b: (f64, f64), th: (f64, f64)) -> bool {
+    (th.0 < 0.0) == (th.1 < 0.0)
+        && th.0 != 0.0
+        && th.1 != 0.0
+        && theta_monotone(p, a, b).is_some()
+        && th.0.abs() > p.theta_noise(a.0, a.1)
+        && th.1.abs() > p.theta_noise(b.0, b.1)
 }
 
 /// Where θ is not proven monotone from the march's point `from` to `to`: over the first half

@@ -7,7 +7,9 @@
 //! linearly), and the stretch beside a found pair that Table 1 cuts off by a small ε is as
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
-use crate::finish::{certified_finish, certified_rest, certified_rests, clear_ahead, Finish};
+use crate::finish::{
+    certified_finish, certified_rest, certified_rests, clear_ahead, clear_between, Finish,
+};
 use crate::pairs::{negligible, polish, polish_within, Pair};
 use crate::prims::Prefer;
 use smallvec::SmallVec;
@@ -51,6 +53,9 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
                 stack.extend(rests(&p, found.s, found.t, true, true, ta < 0.0));
             }
         } else {
+            if long_march(&p, (ta, tb)) && clear_between(&p, (p.sa, p.ta), (p.sb, p.tb), (ta, tb)) {
+                continue;
+            }
             let march = match (p.s_convex, p.t_convex) {
                 (true, true) => march_convex(&p, ta),
                 (false, false) => March::Nothing,
@@ -92,6 +97,19 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
     if LIMIT_HIT.with(|c| c.get()) {
         budget.exhausted = true;
     }
+}
+
+/// A march over the section `p` (θ = `th` at its ends, of one sign) would take several steps:
+/// each turns the normal by about θ, so the normal's whole turn over `p` at the smaller |θ|
+/// of the ends takes [`LONG_MARCH`] or more. Only on curves with symbolic forms (where the
+/// section may be proven free of pairs instead).
+fn long_march(p: &Pair, th: (f64, f64)) -> bool {
+    if p.vs.cert.is_none() || p.vt.cert.is_none() {
+        return false;
+    }
+    let (na, nb) = (p.vs.normal(p.sa), p.vs.normal(p.sb));
+    let turn = na.cross(nb).atan2(na.dot(nb)).abs();
+    turn >= LONG_MARCH * th.0.abs().min(th.1.abs()).min(1.0).asin()
 }
 
 /// The sub-pairs left beside a found pair `(s, t)`: cut where θ is proven monotone from the
@@ -655,6 +673,10 @@ const ESCAPE_CHECK: usize = 2;
 /// fewer it ends by itself sooner (the ellipse's and limaçon's marches; the elliptic
 /// lemniscate's run ten to an inflection).
 const ESCAPE_STEPS: f64 = 3.0;
+
+/// Steps (predicted from θ at a section's ends) from which a march is worth sparing by a
+/// proof that the section holds no pair: shorter ones end by themselves for less.
+const LONG_MARCH: f64 = 3.0;
 
 /// Proven leaps in a row at one finishing attempt of a march.
 const MAX_LEAPS: usize = 8;

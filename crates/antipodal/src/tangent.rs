@@ -32,8 +32,10 @@ pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
         return out;
     }
     // Equal end signs: none or two. The iteration converges whenever a tangent exists
-    // (Lemma 4) and its limit is verified, so it decides existence.
-    let first = ct_from(p, true).or_else(|| ct_any_order(p, true));
+    // (Lemma 4) and its limit is verified, so it decides existence. (In the §2.4 order, then
+    // in the other.)
+    let ordered = t_first(p, true);
+    let first = common_tangent(p, true, ordered).or_else(|| common_tangent(p, true, !ordered));
     // Segments bending the same way: configuration (a) or none, by the region test. A
     // disagreement with the (verified) iteration is reported as uncertified.
     if p.s_convex != p.t_convex && two_tangents_same_bending(p) != first.is_some() {
@@ -60,15 +62,14 @@ pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
 /// if the translation from `L_a` to `L'_a` is along the bending direction of `S`, update `t`
 /// first.
 fn ct_from(p: &Pair, at_a: bool) -> Option<(f64, f64)> {
-    let (s0, t0) = if at_a { (p.sa, p.ta) } else { (p.sb, p.tb) };
-    let bend = if p.s_convex { 1.0 } else { -1.0 };
-    let t_first = p.d(s0, t0) * bend > 0.0;
-    common_tangent(p, at_a, t_first)
+    common_tangent(p, at_a, t_first(p, at_a))
 }
 
-/// Both update orders (insurance where §2.2 gives no ordering: configuration (b)).
-fn ct_any_order(p: &Pair, at_a: bool) -> Option<(f64, f64)> {
-    common_tangent(p, at_a, false).or_else(|| common_tangent(p, at_a, true))
+/// The ordering rule of §2.4 at the `a` ends (or the `b` ends): `t` is updated first.
+fn t_first(p: &Pair, at_a: bool) -> bool {
+    let (s0, t0) = if at_a { (p.sa, p.ta) } else { (p.sb, p.tb) };
+    let bend = if p.s_convex { 1.0 } else { -1.0 };
+    p.d(s0, t0) * bend > 0.0
 }
 
 /// The iteration of §2.3: `x_{i+1}` = point of tangency on `X` of the tangent through

@@ -342,8 +342,14 @@ impl View<'_> {
                 let j = self.jet_to(u, 2);
                 j.d1.cross(j.d2) / j.d1.dot(j.d1)
             };
-            for w in cuts.windows(2) {
-                let (q0, q1) = (self.psi(tr, w[0]), self.psi(tr, w[1]));
+            // The angles at the cuts (the arc's ends are known already).
+            let mut q0 = p0;
+            for (i, w) in cuts.windows(2).enumerate() {
+                let q1 = if i + 2 == cuts.len() {
+                    p1
+                } else {
+                    self.psi(tr, w[1])
+                };
                 let convex = if (q1 - q0).abs() > 1e-12 {
                     q1 > q0
                 } else {
@@ -358,6 +364,7 @@ impl View<'_> {
                     flat: false,
                     rates: (rate(w[0]), rate(w[1])),
                 });
+                q0 = q1;
             }
         }
         for (lo, hi) in flat_pieces {

@@ -238,7 +238,6 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     let (ks, kt) = (signed(bs.kappa, p.s_convex), signed(bt.kappa, p.t_convex));
     let (rho_s, rho_t) = (ks.recip(), kt.recip());
     let one = Iv::new(1.0, 1.0);
-    let abs_max = |v: Iv| v.lo.abs().max(v.hi.abs());
     // (t moves κ(s)/κ(t) times as far as s in arc length: the tangents at s and t are
     // opposite along a section.) The arc of T is padded: so is its length.
     let (len, len_t) = ((s1 - s0).abs(), (t1 - t0).abs() + 2.0 * pad);
@@ -286,7 +285,7 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
         // finite; towards one of S, the other way round.) Every bound so far holds on all of
         // J, so the new one does too; with it, the range of |r| by its own rate, |d|r|/ds| =
         // |C′(s)| |1 + κ(s) ρ(t)| |sin θ| (or in t), from both ends.
-        let by_g = g.map_or(f64::INFINITY, |g| abs_max(ks) * abs_max(g));
+        let by_g = g.map_or(f64::INFINITY, |g| ks.mag() * g.mag());
         // (Multilinear again: exact at the corners.)
         let rate = |k: Iv, rho: Iv| {
             let size = (1.0 + k.mag() * rho.mag()) * c_r.mag() + k.mag();
@@ -296,10 +295,10 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
         let in_t = rho_s.map_or(f64::INFINITY, |rs| rate(kt, rs));
         let (th1, r1, r_swing) = *far.get_or_insert_with(|| {
             let by_s = rho_t.map_or(f64::INFINITY, |rt| {
-                bs.speed * abs_max(one.add(ks.mul(rt))) * len
+                bs.speed * one.add(ks.mul(rt)).mag() * len
             });
             let by_t = rho_s.map_or(f64::INFINITY, |rs| {
-                bt.speed * abs_max(one.add(kt.mul(rs))) * len_t
+                bt.speed * one.add(kt.mul(rs)).mag() * len_t
             });
             (end_angle(s1, t1), p.r(s1, t1).norm(), by_s.min(by_t))
         });

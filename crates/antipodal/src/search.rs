@@ -102,9 +102,10 @@ pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &
 /// A march over the section `p` (θ = `th` at its ends, of one sign) would take several steps:
 /// each turns the normal by about θ, so the normal's whole turn over `p` at the smaller |θ|
 /// of the ends takes [`LONG_MARCH`] or more. Only on curves with symbolic forms (where the
-/// section may be proven free of pairs instead).
+/// section may be proven free of pairs instead), and not on two concave segments (which
+/// hold no pair: no march).
 fn long_march(p: &Pair, th: (f64, f64)) -> bool {
-    if p.vs.cert.is_none() || p.vt.cert.is_none() {
+    if p.vs.cert.is_none() || p.vt.cert.is_none() || !(p.s_convex || p.t_convex) {
         return false;
     }
     let (na, nb) = (p.vs.normal(p.sa), p.vs.normal(p.sb));
@@ -440,7 +441,6 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                     }
                     escape_at = 2 * (i + 1);
                 }
-                last_theta = theta;
             } else if wait == 0 {
                 let q = step / last_step;
                 let limit = if q < 1.0 {
@@ -459,11 +459,6 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                     (ds, dt, ratio, step) = (0.0, 0.0, 1.0, f64::INFINITY);
                     finish = certified_finish(p, s, t, up, f64::NAN);
                 }
-                last_theta = if step.is_finite() {
-                    theta
-                } else {
-                    f64::INFINITY
-                };
                 match finish {
                     Finish::Found(s, t) => return March::Found(s, t, up),
                     Finish::Nothing => return March::Nothing,
@@ -474,8 +469,13 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                 }
             } else {
                 wait -= 1;
-                last_theta = theta;
             }
+            // (After leaps the march stands elsewhere, its θ unknown.)
+            last_theta = if step.is_finite() {
+                theta
+            } else {
+                f64::INFINITY
+            };
         } else {
             match finish_early(p, s, t, step, last_step, up) {
                 Early::Found((s, t, up)) => return March::Found(s, t, up),
@@ -670,8 +670,8 @@ const ESCAPE_CHECK: usize = 2;
 
 /// Steps an escaping march must still have ahead (predicted from the growth of its steps)
 /// for the proof that ends it early to be worth its cost (a few steps' worth of jets): with
-/// fewer it ends by itself sooner (the ellipse's and limaçon's marches; the elliptic
-/// lemniscate's run ten to an inflection).
+/// fewer it ends by itself sooner (the ellipse's and limaçon's marches; those of the
+/// elliptic lemniscate run ten steps to an inflection).
 const ESCAPE_STEPS: f64 = 3.0;
 
 /// Steps (predicted from θ at a section's ends) from which a march is worth sparing by a

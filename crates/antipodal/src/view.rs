@@ -508,8 +508,8 @@ pub(crate) fn reverse(r: &Rational) -> crate::Result<Rational> {
 /// `f` returns the value and derivative; `flo`, `fhi` are the values at `lo`, `hi`; `hint`
 /// (NaN for none) is a starting point. A bisection step replaces Newton whenever Newton would
 /// leave the bracket or is not at least halving the step (the classic `rtsafe` safeguard), so
-/// the loop (≤ 200 steps) converges for any continuous `f`. Every step is confirmed by an
-/// evaluation ([`halley_bracketed`] spares the last one when its error model allows).
+/// the loop (≤ 200 steps) converges for any continuous `f`. Once a Newton step falls below
+/// the tolerance, the point it starts from (evaluated already) is returned.
 pub(crate) fn newton_bracketed(
     f: impl Fn(f64) -> (f64, f64),
     bracket: (f64, f64),
@@ -541,6 +541,7 @@ pub(crate) fn halley_bracketed(
     safeguarded(f, bracket, ends, tol, hint)
 }
 
+/// The loop of [`newton_bracketed`] and [`halley_bracketed`] (`f″` NaN: Newton's step).
 fn safeguarded(
     f: impl Fn(f64) -> (f64, f64, f64),
     (mut lo, mut hi): (f64, f64),

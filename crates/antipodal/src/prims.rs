@@ -21,8 +21,8 @@ pub(crate) enum Prefer {
 }
 
 impl View<'_> {
-    /// Shared driver: `f` gives the value and its first two derivatives, `sym` builds the symbolic numerator
-    /// (same sign as `f`), `accept` filters roots by geometry.
+    /// Shared driver: `f` gives the value and its first two derivatives, `sym` builds the
+    /// symbolic numerator (same sign as `f`), `accept` filters roots by geometry.
     // The closures and the bracket are the primitive; bundling them would only rename them.
     #[allow(clippy::too_many_arguments)]
     fn solve(

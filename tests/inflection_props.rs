@@ -85,10 +85,9 @@ proptest! {
                 found.inflections.iter().map(|i| i.u).collect::<Vec<_>>()
             );
         }
-        // Two sign changes within one sampling step cancel in the samples: a reported
-        // inflection the samples miss must have a reported neighbour that close, and its own
-        // sign change is checked on the curve right beside it.
-        let step = (b - a) / SAMPLES as f64;
+        // Two sign changes closer than the sampling resolves may cancel in the samples: a
+        // reported inflection the samples miss must have a reported neighbour that close
+        // (`near`), and its own sign change is checked on the curve right beside it.
         let kappa = |u: f64| {
             let j = plane.jet(u);
             j.d1.cross(j.d2)
@@ -100,7 +99,7 @@ proptest! {
             let paired = found
                 .inflections
                 .iter()
-                .any(|o| o.u != i.u && (o.u - i.u).abs() <= 2.0 * step);
+                .any(|o| o.u != i.u && near(o.u, i.u));
             let h = 1e-7 * (b - a);
             let changes = (kappa(i.u - h) < 0.0) != (kappa(i.u + h) < 0.0);
             prop_assert!(

@@ -179,6 +179,7 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
         sections: opts.max_sections,
         exhausted: false,
     };
+    let mut stack = Vec::with_capacity(16);
     let n = prep.pieces.len();
     for i in 0..n {
         for j in i + 1..n {
@@ -197,7 +198,7 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
             for sec in sections(&pair) {
                 let sec = trim_antipodal_ends(&sec, &mut raw);
                 if let Some(sec) = sec {
-                    antipodal_points(&sec, &mut raw, &mut budget);
+                    antipodal_points(&sec, &mut raw, &mut budget, &mut stack);
                 }
             }
         }
@@ -262,7 +263,7 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     for at_a in [true, false] {
         let (s, t) = if at_a { (q.sa, q.ta) } else { (q.sb, q.tb) };
-        if q.sin_theta(s, t).abs() > q.theta_noise(s, t) || q.d(s, t) <= 0.0 {
+        if q.is_clear(s, t, q.sin_theta(s, t)) || q.d(s, t) <= 0.0 {
             continue;
         }
         raw.push((s, t));
@@ -285,7 +286,7 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
                 break;
             }
             let te = q.opposite(se)?;
-            if q.sin_theta(se, te).abs() > q.theta_noise(se, te) {
+            if q.is_clear(se, te, q.sin_theta(se, te)) {
                 cut = Some((se, te));
                 break;
             }

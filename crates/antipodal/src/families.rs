@@ -90,7 +90,7 @@ pub(crate) fn is_family(p: &Pair) -> bool {
         } else {
             p.opposite(s)
         };
-        t.is_some_and(|t| p.sin_theta(s, t).abs() <= p.theta_noise(s, t) && p.d(s, t) > 0.0)
+        t.is_some_and(|t| p.is_noise(s, t, p.sin_theta(s, t)) && p.d(s, t) > 0.0)
     })
 }
 

@@ -42,7 +42,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     let dir = if up { 1.0 } else { -1.0 };
     let th_s = p.sin_theta(s, t);
     let remaining = (end_s - s) * dir;
-    if th_s.abs() <= p.theta_noise(s, t) || remaining.is_nan() || remaining <= 0.0 {
+    if p.is_noise(s, t, th_s) || remaining.is_nan() || remaining <= 0.0 {
         return Finish::Unproven;
     }
     let reach = remaining.max((end_t - t).abs());
@@ -70,7 +70,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
         None => (end_s, end_t),
     };
     let th_e = p.sin_theta(e, te);
-    if th_e.abs() <= p.theta_noise(e, te) || theta_monotone(p, (s, t), (e, te)).is_none() {
+    if p.is_noise(e, te, th_e) || theta_monotone(p, (s, t), (e, te)).is_none() {
         return leap(p, (s, t), (e, te), th_s);
     }
     match ((th_e < 0.0) != (th_s < 0.0), proposal) {
@@ -98,8 +98,8 @@ pub(crate) fn clear_between(p: &Pair, a: (f64, f64), b: (f64, f64), th: (f64, f6
         && th.0 != 0.0
         && th.1 != 0.0
         && theta_monotone(p, a, b).is_some()
-        && th.0.abs() > p.theta_noise(a.0, a.1)
-        && th.1.abs() > p.theta_noise(b.0, b.1)
+        && p.is_clear(a.0, a.1, th.0)
+        && p.is_clear(b.0, b.1, th.1)
 }
 
 /// Where θ is not proven monotone from the march's point `from` to `to`: over the first half
@@ -109,7 +109,7 @@ fn leap(p: &Pair, from: (f64, f64), to: (f64, f64), th: f64) -> Finish {
     let m = 0.5 * (from.0 + to.0);
     let tm = p.opposite_between(m, from, to);
     let th_m = p.sin_theta(m, tm);
-    if th_m.abs() <= p.theta_noise(m, tm) || (th_m < 0.0) != (th < 0.0) {
+    if p.is_noise(m, tm, th_m) || (th_m < 0.0) != (th < 0.0) {
         return Finish::Unproven;
     }
     match theta_monotone(p, from, (m, tm)) {
@@ -143,7 +143,7 @@ fn bracketed_ahead(
         let x = from.0 + dir * reach;
         let y = p.opposite_within(x, prev.1, end.1);
         let th_x = p.sin_theta(x, y);
-        if th_x.abs() > p.theta_noise(x, y) && (th_x < 0.0) != (th < 0.0) {
+        if p.is_clear(x, y, th_x) && (th_x < 0.0) != (th < 0.0) {
             let sub = if dir > 0.0 {
                 p.sub(prev.0, prev.1, x, y)
             } else {
@@ -369,7 +369,7 @@ fn rest_beyond<'a>(
 /// The rest of `p` beyond a cut at `e` on the side `dir` of a found pair at `s`: `None` when
 /// the cut is within the tolerance of the pair or θ there is within its noise.
 fn cut_at<'a>(p: &Pair<'a>, s: f64, (e, te): (f64, f64), dir: f64) -> Option<Option<Pair<'a>>> {
-    if (e - s) * dir <= 64.0 * p.vs.tol || p.sin_theta(e, te).abs() <= p.theta_noise(e, te) {
+    if (e - s) * dir <= 64.0 * p.vs.tol || p.is_noise(e, te, p.sin_theta(e, te)) {
         return None;
     }
     Some(Some(if dir > 0.0 {

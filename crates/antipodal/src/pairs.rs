@@ -118,6 +118,17 @@ impl<'a> Pair<'a> {
         (slide + 64.0 * f64::EPSILON).min(THETA_NOISE)
     }
 
+    /// `sin θ = sin_theta` at `(s, t)` is within its noise there ([`Pair::theta_noise`], never
+    /// more than [`THETA_NOISE`]: beyond that, no jets of second order are needed to tell).
+    pub(crate) fn is_noise(&self, s: f64, t: f64, sin_theta: f64) -> bool {
+        sin_theta.abs() <= THETA_NOISE && sin_theta.abs() <= self.theta_noise(s, t)
+    }
+
+    /// `sin θ = sin_theta` at `(s, t)` is beyond its noise there (false for NaN).
+    pub(crate) fn is_clear(&self, s: f64, t: f64, sin_theta: f64) -> bool {
+        sin_theta.abs() > THETA_NOISE || sin_theta.abs() > self.theta_noise(s, t)
+    }
+
     /// `d(s) = N(s) · r(s)`: signed distance between the parallel tangent lines (§2.2).
     pub(crate) fn d(&self, s: f64, t: f64) -> f64 {
         let js = self.vs.jet_to(s, 1);

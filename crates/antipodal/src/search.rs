@@ -24,9 +24,15 @@ pub(crate) struct Budget {
     pub(crate) exhausted: bool,
 }
 
-/// Finds all antipodal pairs `(s, t)` of `pair`, appending them to `out`.
-pub(crate) fn antipodal_points(pair: &Pair, out: &mut Vec<(f64, f64)>, budget: &mut Budget) {
-    let mut stack = Vec::with_capacity(16);
+/// Finds all antipodal pairs `(s, t)` of `pair`, appending them to `out`. `stack`: room for
+/// the sub-pairs still to search (empty; kept by the caller from one pair to the next).
+pub(crate) fn antipodal_points<'a>(
+    pair: &Pair<'a>,
+    out: &mut Vec<(f64, f64)>,
+    budget: &mut Budget,
+    stack: &mut Vec<Pair<'a>>,
+) {
+    stack.clear();
     stack.push(*pair);
     LIMIT_HIT.with(|c| c.set(false));
     while let Some(p) = stack.pop() {
@@ -216,7 +222,7 @@ fn remainders<'a>(
                 break;
             };
             let th = p.sin_theta(se, te);
-            if th.abs() <= p.theta_noise(se, te) {
+            if p.is_noise(se, te, th) {
                 eps *= 2.0;
                 if let Some((w, sw, tw)) = wrong {
                     if eps >= w {

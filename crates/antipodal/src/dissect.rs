@@ -8,6 +8,7 @@
 use crate::error::{Error, Result};
 use crate::geom::{wrap_pi, V2};
 use crate::view::{newton_bracketed, View};
+use smallvec::SmallVec;
 use std::f64::consts::PI;
 
 /// Unwrapped tangent angle along the curve.
@@ -93,6 +94,10 @@ pub(crate) struct Zeros {
 
 const MAX_SAMPLES: usize = 1 << 14;
 
+/// Points a track has room for at first (the papers' shapes take 7–13 on their circle forms,
+/// a random cubic with 20 control points 22).
+const TRACK_ROOM: usize = 32;
+
 impl View<'_> {
     /// Tangent angle at `u` given the track (valid for any unwrapped `u`).
     pub(crate) fn psi(&self, tr: &Tracks, u: f64) -> f64 {
@@ -129,13 +134,12 @@ impl View<'_> {
         // step until the hodograph certifies it (one fine piece of the tangent's enclosure
         // does at once) and it turns by less than π/2. (Starting from every fine piece cost
         // the ellipse a tenth of its run in samples it did not need.)
-        let mut us: Vec<f64> = if coarse {
-            vec![self.a, self.b]
+        let mut us: Vec<f64> = Vec::with_capacity(m + 1 + knots.len());
+        if coarse {
+            us.extend([self.a, self.b]);
         } else {
-            (0..=m)
-                .map(|i| self.a + self.period * i as f64 / m as f64)
-                .collect()
-        };
+            us.extend((0..=m).map(|i| self.a + self.period * i as f64 / m as f64));
+        }
         us.extend(knots.iter().copied().filter(|&k| k > self.a && k < self.b));
         us.sort_by(f64::total_cmp);
         us.dedup();
@@ -150,12 +154,18 @@ impl View<'_> {
             Ok(j)
         };
         let (mut x0, mut j0) = (us[0], jet(us[0])?);
-        let mut out_u = vec![x0];
-        let mut out_psi = vec![j0.d1.angle()];
+        // (Room for a typical track: growing the vectors cost more than filling them.)
+        let mut out_u = Vec::with_capacity(TRACK_ROOM);
+        out_u.push(x0);
+        let mut out_psi = Vec::with_capacity(TRACK_ROOM);
+        out_psi.push(j0.d1.angle());
         // Points only for the simplicity test (not run on a curve simple by construction).
         let keep_points = !self.curve_known_simple();
-        let mut out_p = if keep_points { vec![j0.p] } else { Vec::new() };
-        let mut stack: Vec<(f64, usize, crate::geom::Jet)> = Vec::new();
+        let mut out_p = Vec::with_capacity(if keep_points { TRACK_ROOM } else { 0 });
+        if keep_points {
+            out_p.push(j0.p);
+        }
+        let mut stack: SmallVec<[(f64, usize, crate::geom::Jet); 16]> = SmallVec::new();
         for &w1 in &us[1..] {
             // Depth-first refinement of [x0, w1] until each step turns by less than
             // `max_step` (and, for splines, the hodograph certifies less than π). Every
@@ -275,7 +285,7 @@ impl View<'_> {
     /// The monotone pieces with |Φ| < π (Jia §5.1 step 2).
     pub(crate) fn pieces(&self, tr: &Tracks, zeros: &Zeros) -> Vec<Piece> {
         let zs = &zeros.zs;
-        let mut arcs: Vec<(f64, f64)> = Vec::new();
+        let mut arcs: Vec<(f64, f64)> = Vec::with_capacity(zs.len() + 1);
         let mut flat_pieces = Vec::new();
         if self.closed && !zeros.flats.is_empty() {
             // Cut at inflections and at both ends of every straight stretch.
@@ -326,12 +336,12 @@ impl View<'_> {
             cuts.push(self.b);
             arcs.extend(cuts.windows(2).map(|w| (w[0], w[1])));
         }
-        let mut out = Vec::new();
+        let mut out = Vec::with_capacity(2 * arcs.len() + flat_pieces.len());
         for (lo, hi) in arcs {
             let (p0, p1) = (self.psi(tr, lo), self.psi(tr, hi));
             let rot = p1 - p0;
             let k = ((rot.abs() / (0.8 * PI)).ceil() as usize).clamp(1, 64);
-            let mut cuts = vec![lo];
+            let mut cuts: SmallVec<[f64; 4]> = smallvec::smallvec![lo];
             for j in 1..k {
                 let target = p0 + rot * j as f64 / k as f64;
                 let prev = cuts[cuts.len() - 1];

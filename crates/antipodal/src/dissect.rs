@@ -172,7 +172,8 @@ impl View<'_> {
             // point is evaluated once: the stack holds right ends with their jets.
             stack.push((w1, 0, jet(w1)?));
             while let Some(&(x1, depth, j1)) = stack.last() {
-                let step = wrap_pi(j1.d1.angle() - j0.d1.angle());
+                // (The angle between the two tangents: one arctangent, not two.)
+                let step = j0.d1.cross(j1.d1).atan2(j0.d1.dot(j1.d1));
                 let axis = (j0.d1.unit() + j1.d1.unit()).unit();
                 if step.abs() < max_step && self.hodograph_cone_ok(x0, x1, axis) {
                     stack.pop();

@@ -285,12 +285,28 @@ fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f6
     cut
 }
 
-/// §4.1: bisection on the sign of θ (regula falsi, Illinois variant, inside the bracket).
+/// §4.1: bisection on the sign of θ (regula falsi, Illinois variant, inside the bracket),
+/// with Newton's method on the antipodal system tried along the way: any pair inside the
+/// bracket will do (what lies beside it is searched on).
 pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
     let (mut s0, mut t0, mut f0) = (p.sa, p.ta, theta_a);
     let (mut s1, mut t1) = (p.sb, p.tb);
     let mut f1 = p.sin_theta(s1, t1);
     let mut side = 0i8;
+    // Newton on the antipodal system first, from the secant of θ with `t` following `s`
+    // linearly (no opposite point solved): taken when it lands on a pair inside the bracket.
+    // (Per run, 3–4 % fewer instructions on the curves with convexities m = 3, 4 and a wavy
+    // cubic, 9 % on a random cubic with 20 points; +3 % on one with 8.)
+    {
+        let w = f0 / (f0 - f1);
+        let (sg, tg) = (s0 + w * (s1 - s0), t0 + w * (t1 - t0));
+        let area = ((s0, s1), (t0.min(t1), t0.max(t1)));
+        if let Some((ns, nt)) = polish_within(p.vs, p.vt, sg, tg, area) {
+            if p.sin_theta(ns, nt).abs() <= 1e-13 {
+                return Some(Found { s: ns, t: nt });
+            }
+        }
+    }
     for i in 0..300 {
         // Down to the parameter tolerance, and on until the normal no longer turns across
         // the bracket (a stretch narrower than the tolerance may still turn it by a finite

@@ -182,7 +182,7 @@ pub(crate) fn opposite_pair<'a>(
     // Newton starts where the piece's interpolant of u(ψ) puts the angle. On a certified
     // curve the angle lies inside the piece's range by more than the snapping, so the signs
     // of C′ · n at the piece's ends are those of sin(ψ − angle) there (no jets needed).
-    let solve = |v: &View, piece: &Piece, ang: f64| {
+    let solve_on = |v: &View, piece: &Piece, ang: f64| {
         let n = V2::polar(ang).perp();
         let guess = piece.param_guess(ang);
         if v.cert.is_some() {
@@ -195,6 +195,9 @@ pub(crate) fn opposite_pair<'a>(
             }
         }
         v.point_with_normal_near(piece.lo, piece.hi, n, guess)
+    };
+    let solve = |v: &View, piece: &Piece, ang: f64| {
+        v.piece_point_memo(piece.lo, ang - piece.psi_lo, || solve_on(v, piece, ang))
     };
     let s_at = |ang: f64| -> Option<f64> {
         if (ang - p.psi_lo).abs() <= SNAP {

@@ -13,7 +13,7 @@ use crate::geom::{Jet, V2};
 use bspline::roots::{find_roots, Root, RootOptions};
 use bspline::{BSpline, Rational};
 use smallvec::SmallVec;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
 
 /// Outcome of [`View::cert_count`].
@@ -59,7 +59,22 @@ pub(crate) struct View<'a> {
     report: Option<Angle>,
     /// The last few jets evaluated (see [`JetCache`]).
     cache: JetCache,
+    /// Points of given tangent angle found on pieces (see [`View::piece_point_memo`]).
+    piece_points: RefCell<Vec<PiecePoint>>,
 }
+
+/// A point of a piece (starting at `piece_lo`) whose tangent angle is `rel` beyond the
+/// piece's first one: its parameter, or `None` where there is none.
+struct PiecePoint {
+    piece_lo: f64,
+    rel: f64,
+    u: Option<f64>,
+}
+
+/// Tangent angles closer than this on one piece are one: far below the snapping of
+/// angles to a piece's ends (1e-10) and above the rounding of the angles of piece ends
+/// that two neighbouring pieces share.
+const SAME_ANGLE: f64 = 1e-13;
 
 /// How close below a closed curve's end (relative to the period) a reported parameter is
 /// the seam: a few units of rounding.
@@ -172,6 +187,7 @@ impl<'a> View<'a> {
             certified: Cell::new(certify && curve.rational().is_some()),
             report: None,
             cache: JetCache::new(),
+            piece_points: RefCell::new(Vec::new()),
         };
         let sampled = || {
             let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
@@ -289,6 +305,32 @@ impl<'a> View<'a> {
             j
         }
     }
+    /// The point of the piece starting at `piece_lo` whose tangent angle lies `rel` beyond
+    /// the piece's first one, from `solve` once and kept: the cone overlaps of §5.2 end at
+    /// piece ends, and every piece end angle shared by two neighbouring pieces is solved for
+    /// on each piece opposite them twice.
+    pub(crate) fn piece_point_memo(
+        &self,
+        piece_lo: f64,
+        rel: f64,
+        solve: impl FnOnce() -> Option<f64>,
+    ) -> Option<f64> {
+        let known = self
+            .piece_points
+            .borrow()
+            .iter()
+            .find(|e| e.piece_lo == piece_lo && (e.rel - rel).abs() <= SAME_ANGLE)
+            .map(|e| e.u);
+        if let Some(u) = known {
+            return u;
+        }
+        let u = solve();
+        self.piece_points
+            .borrow_mut()
+            .push(PiecePoint { piece_lo, rel, u });
+        u
+    }
+
     pub(crate) fn point(&self, u: f64) -> V2 {
         self.jet_to(u, 0).p
     }
@@ -622,6 +664,31 @@ mod tests {
             let d = (3.0 * c[3] * x + 2.0 * c[2]) * x + c[1];
             (f, d, 6.0 * c[3] * x + 2.0 * c[2])
         }
+    }
+
+    /// A piece point is solved once per piece and angle (angles within rounding are one), and
+    /// a point on another piece or at another angle is solved anew.
+    #[test]
+    fn piece_points_are_solved_once_per_piece_and_angle() {
+        let seed = [
+            0.3, 0.9, 0.5, 0.7, 0.2, 0.8, 0.4, 0.6, 0.1, 0.95, 0.35, 0.75,
+        ];
+        let curve = crate::curve::tests::star_curve(3, &seed, None);
+        let v = View::new(&curve, false, false, 1e-12).unwrap();
+        let solves = Cell::new(0);
+        let ask = |lo: f64, rel: f64, answer: Option<f64>| {
+            v.piece_point_memo(lo, rel, || {
+                solves.set(solves.get() + 1);
+                answer
+            })
+        };
+        assert_eq!(ask(0.5, 0.25, Some(0.7)), Some(0.7));
+        assert_eq!(ask(0.5, 0.25 + 1e-15, Some(9.0)), Some(0.7));
+        assert_eq!(ask(0.5, 0.3, None), None);
+        assert_eq!(ask(0.5, 0.3, Some(9.0)), None);
+        assert_eq!(ask(0.6, 0.25, Some(0.8)), Some(0.8));
+        assert_eq!(ask(0.5, 0.25 + 1e-9, Some(0.71)), Some(0.71));
+        assert_eq!(solves.get(), 4);
     }
 
     proptest! {

@@ -52,6 +52,8 @@ pub(crate) struct Piece {
     pub(crate) flat: bool,
     /// How fast the tangent turns at the ends, `dψ/du` (for [`Piece::param_guess`]).
     pub(crate) rates: (f64, f64),
+    /// Its place in the view's list of pieces.
+    pub(crate) id: usize,
 }
 
 impl Piece {
@@ -374,6 +376,7 @@ impl View<'_> {
                     rot: q1 - q0,
                     flat: false,
                     rates: (rate(w[0]), rate(w[1])),
+                    id: out.len(),
                 });
                 q0 = q1;
             }
@@ -387,6 +390,7 @@ impl View<'_> {
                 rot: 0.0,
                 flat: true,
                 rates: (0.0, 0.0),
+                id: out.len(),
             });
         }
         out
@@ -444,6 +448,7 @@ mod tests {
             rot,
             flat: false,
             rates,
+            id: 0,
         }
     }
 

@@ -197,7 +197,7 @@ pub(crate) fn opposite_pair<'a>(
         v.point_with_normal_near(piece.lo, piece.hi, n, guess)
     };
     let solve = |v: &View, piece: &Piece, ang: f64| {
-        v.piece_point_memo(piece.lo, ang - piece.psi_lo, || solve_on(v, piece, ang))
+        v.piece_point_memo(piece.id, ang - piece.psi_lo, || solve_on(v, piece, ang))
     };
     let s_at = |ang: f64| -> Option<f64> {
         if (ang - p.psi_lo).abs() <= SNAP {

@@ -59,14 +59,15 @@ pub(crate) struct View<'a> {
     report: Option<Angle>,
     /// The last few jets evaluated (see [`JetCache`]).
     cache: JetCache,
-    /// Points of given tangent angle found on pieces (see [`View::piece_point_memo`]).
-    piece_points: RefCell<Vec<PiecePoint>>,
+    /// Points of given tangent angle found on pieces, per piece (see
+    /// [`View::piece_point_memo`]).
+    piece_points: RefCell<Vec<SmallVec<[PiecePoint; 4]>>>,
 }
 
-/// A point of a piece (starting at `piece_lo`) whose tangent angle is `rel` beyond the
-/// piece's first one: its parameter, or `None` where there is none.
+/// A point of a piece whose tangent angle is `rel` beyond the piece's first one: its
+/// parameter, or `None` where there is none.
+#[derive(Clone, Copy)]
 struct PiecePoint {
-    piece_lo: f64,
     rel: f64,
     u: Option<f64>,
 }
@@ -305,29 +306,33 @@ impl<'a> View<'a> {
             j
         }
     }
-    /// The point of the piece starting at `piece_lo` whose tangent angle lies `rel` beyond
-    /// the piece's first one, from `solve` once and kept: the cone overlaps of §5.2 end at
-    /// piece ends, and every piece end angle shared by two neighbouring pieces is solved for
-    /// on each piece opposite them twice.
+    /// The point of the piece numbered `piece` whose tangent angle lies `rel` beyond the
+    /// piece's first one, from `solve` once and kept: the cone overlaps of §5.2 end at piece
+    /// ends, and every piece end angle shared by two neighbouring pieces is solved for on
+    /// each piece opposite them twice.
     pub(crate) fn piece_point_memo(
         &self,
-        piece_lo: f64,
+        piece: usize,
         rel: f64,
         solve: impl FnOnce() -> Option<f64>,
     ) -> Option<f64> {
-        let known = self
-            .piece_points
-            .borrow()
-            .iter()
-            .find(|e| e.piece_lo == piece_lo && (e.rel - rel).abs() <= SAME_ANGLE)
-            .map(|e| e.u);
+        let known = self.piece_points.borrow().get(piece).and_then(|points| {
+            points
+                .iter()
+                .find(|e| (e.rel - rel).abs() <= SAME_ANGLE)
+                .map(|e| e.u)
+        });
         if let Some(u) = known {
             return u;
         }
         let u = solve();
-        self.piece_points
-            .borrow_mut()
-            .push(PiecePoint { piece_lo, rel, u });
+        let mut all = self.piece_points.borrow_mut();
+        if all.len() <= piece {
+            all.resize(piece + 1, SmallVec::new());
+        }
+        if let Some(points) = all.get_mut(piece) {
+            points.push(PiecePoint { rel, u });
+        }
         u
     }
 
@@ -676,18 +681,18 @@ mod tests {
         let curve = crate::curve::tests::star_curve(3, &seed, None);
         let v = View::new(&curve, false, false, 1e-12).unwrap();
         let solves = Cell::new(0);
-        let ask = |lo: f64, rel: f64, answer: Option<f64>| {
-            v.piece_point_memo(lo, rel, || {
+        let ask = |piece: usize, rel: f64, answer: Option<f64>| {
+            v.piece_point_memo(piece, rel, || {
                 solves.set(solves.get() + 1);
                 answer
             })
         };
-        assert_eq!(ask(0.5, 0.25, Some(0.7)), Some(0.7));
-        assert_eq!(ask(0.5, 0.25 + 1e-15, Some(9.0)), Some(0.7));
-        assert_eq!(ask(0.5, 0.3, None), None);
-        assert_eq!(ask(0.5, 0.3, Some(9.0)), None);
-        assert_eq!(ask(0.6, 0.25, Some(0.8)), Some(0.8));
-        assert_eq!(ask(0.5, 0.25 + 1e-9, Some(0.71)), Some(0.71));
+        assert_eq!(ask(2, 0.25, Some(0.7)), Some(0.7));
+        assert_eq!(ask(2, 0.25 + 1e-15, Some(9.0)), Some(0.7));
+        assert_eq!(ask(2, 0.3, None), None);
+        assert_eq!(ask(2, 0.3, Some(9.0)), None);
+        assert_eq!(ask(0, 0.25, Some(0.8)), Some(0.8));
+        assert_eq!(ask(2, 0.25 + 1e-9, Some(0.71)), Some(0.71));
         assert_eq!(solves.get(), 4);
     }
 

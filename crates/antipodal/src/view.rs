@@ -306,6 +306,7 @@ impl<'a> View<'a> {
             j
         }
     }
+
     /// The point of the piece numbered `piece` whose tangent angle lies `rel` beyond the
     /// piece's first one, from `solve` once and kept: the cone overlaps of §5.2 end at piece
     /// ends, and every piece end angle shared by two neighbouring pieces is solved for on

@@ -340,8 +340,15 @@ impl View<'_> {
             arcs.extend(cuts.windows(2).map(|w| (w[0], w[1])));
         }
         let mut out = Vec::with_capacity(2 * arcs.len() + flat_pieces.len());
+        // (Consecutive arcs share an end: its angle is taken once.)
+        let mut last_end: Option<(f64, f64)> = None;
         for (lo, hi) in arcs {
-            let (p0, p1) = (self.psi(tr, lo), self.psi(tr, hi));
+            let p0 = match last_end {
+                Some((u, psi)) if u == lo => psi,
+                _ => self.psi(tr, lo),
+            };
+            let p1 = self.psi(tr, hi);
+            last_end = Some((hi, p1));
             let rot = p1 - p0;
             let k = ((rot.abs() / (0.8 * PI)).ceil() as usize).clamp(1, 64);
             let mut cuts: SmallVec<[f64; 4]> = smallvec::smallvec![lo];

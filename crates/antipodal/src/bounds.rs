@@ -369,6 +369,11 @@ pub(crate) struct BoundForms {
     /// prove (computed once: a stretch that covers several cells of a piece in part reads
     /// them instead of evaluating its own models).
     cells: Vec<Option<(Iv, f64)>>,
+    /// Per fine piece, the unions of its cells `0 ..= c` (indexed like `cells`): a stretch
+    /// that starts before a piece reads what it covers of it at once.
+    prefix: Vec<Option<(Iv, f64)>>,
+    /// Per fine piece, the unions of its cells `c ..` to its last (indexed like `cells`).
+    suffix: Vec<Option<(Iv, f64)>>,
 }
 
 /// Cells per fine piece of [`BoundForms::cells`].
@@ -398,6 +403,8 @@ impl BoundForms {
             aligned,
             covered: Vec::new(),
             cells: Vec::new(),
+            prefix: Vec::new(),
+            suffix: Vec::new(),
         };
         if aligned {
             let pieces = forms.curvature.hull.len();
@@ -414,6 +421,19 @@ impl BoundForms {
                     forms.partial(i, a + w * c as f64, x1)
                 })
                 .collect();
+            let join = |a: Option<(Iv, f64)>, b: Option<(Iv, f64)>| {
+                let ((ka, va), (kb, vb)) = (a?, b?);
+                Some((Iv::new(ka.lo.min(kb.lo), ka.hi.max(kb.hi)), va.max(vb)))
+            };
+            forms.prefix = forms.cells.clone();
+            forms.suffix = forms.cells.clone();
+            for i in 0..pieces {
+                for c in 1..CELLS {
+                    let (k, r) = (i * CELLS + c, i * CELLS + CELLS - 1 - c);
+                    forms.prefix[k] = join(forms.prefix[k - 1], forms.cells[k]);
+                    forms.suffix[r] = join(forms.suffix[r + 1], forms.cells[r]);
+                }
+            }
             forms.covered = (0..pieces)
                 .map(|i| {
                     let w = forms
@@ -441,6 +461,12 @@ impl BoundForms {
     /// The union of cells `c0 ..= c1` of fine piece `i` (`None` unless all prove `|D|` and
     /// `w` positive).
     fn cells_range(&self, i: usize, c0: usize, c1: usize) -> Option<(Iv, f64)> {
+        if c0 == 0 {
+            return self.prefix[i * CELLS + c1];
+        }
+        if c1 == CELLS - 1 {
+            return self.suffix[i * CELLS + c0];
+        }
         let mut k = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
         let mut speed = 0.0f64;
         for cell in &self.cells[i * CELLS + c0..=i * CELLS + c1] {
@@ -499,9 +525,10 @@ impl BoundForms {
             let (kappa, v) = if x0 <= a && x1 >= b {
                 self.covered[i]?
             } else {
-                // The cells the overlap touches (one more at an end on a cell boundary).
+                // The cells the overlap touches (one more at an end on a cell boundary). (On
+                // values clamped to be non-negative, the conversion's truncation is the floor.)
                 let cell = |x: f64| {
-                    (((x - a) / (b - a) * CELLS as f64).floor().max(0.0) as usize).min(CELLS - 1)
+                    (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1)
                 };
                 let (c0, c1) = (cell(x0), cell(x1));
                 if c1 - c0 <= 1 && within_one {

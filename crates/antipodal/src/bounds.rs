@@ -519,8 +519,10 @@ impl BoundForms {
         let mut speed = 0.0f64;
         // A stretch within one fine piece may be short enough for its own models to matter;
         // one across several reads cells at its ends.
-        let within_one = self.curvature.pw.piece_at(lo) == self.curvature.pw.piece_at(hi);
-        for (i, x0, x1) in self.curvature.pw.overlaps(lo, hi) {
+        let pw = &self.curvature.pw;
+        let ends = (pw.piece_at(lo), pw.piece_at(hi));
+        let within_one = ends.0 == ends.1;
+        for (i, x0, x1) in pw.overlaps_of(lo, hi, ends) {
             let (a, b) = self.curvature.pw.piece_span(i);
             let (kappa, v) = if x0 <= a && x1 >= b {
                 self.covered[i]?

@@ -312,7 +312,16 @@ impl Pw {
         lo: f64,
         hi: f64,
     ) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
-        let (first, last) = (self.piece_at(lo), self.piece_at(hi));
+        self.overlaps_of(lo, hi, (self.piece_at(lo), self.piece_at(hi)))
+    }
+
+    /// [`Pw::overlaps`], given the pieces holding `lo` and `hi`.
+    pub(crate) fn overlaps_of(
+        &self,
+        lo: f64,
+        hi: f64,
+        (first, last): (usize, usize),
+    ) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
         (first..=last).filter_map(move |i| {
             let (x0, x1) = (lo.max(self.breaks[i]), hi.min(self.breaks[i + 1]));
             (x1 >= x0).then_some((i, x0, x1))

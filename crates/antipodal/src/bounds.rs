@@ -213,11 +213,11 @@ impl Enclosure {
     /// direction turns by less than π over `[lo, hi]` (whole pieces' points: a superset of the
     /// stretch's own, so no subdivision).
     pub(crate) fn in_half_plane_of(&self, lo: f64, hi: f64, axis: V2) -> bool {
+        let (first, last) = (self.pw.piece_at(lo), self.pw.piece_at(hi));
         self.pw.dim() == 2
-            && self
-                .pw
-                .overlaps(lo, hi)
-                .all(|(i, _, _)| cone_inside(self.cones[i], axis))
+            && self.cones[first..=last]
+                .iter()
+                .all(|&c| cone_inside(c, axis))
     }
 
     /// A first-order Taylor model of the function (of its length, in dimension 2) about the

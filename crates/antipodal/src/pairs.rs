@@ -102,7 +102,15 @@ impl<'a> Pair<'a> {
     pub(crate) fn sin_theta(&self, s: f64, t: f64) -> f64 {
         let js = self.vs.jet_to(s, 1);
         let r = self.vt.point(t) - js.p;
-        js.normal().cross(r) / r.norm().max(f64::MIN_POSITIVE)
+        // N × r / |r| with N = C′⊥/|C′| is −C′ · r / (|C′| |r|): one root, of the product of
+        // the squares (each length apart where that product would overflow or underflow).
+        let sq = js.d1.dot(js.d1) * r.dot(r);
+        let den = if sq.is_finite() && sq >= f64::MIN_POSITIVE {
+            sq.sqrt()
+        } else {
+            js.d1.norm() * r.norm()
+        };
+        -js.d1.dot(r) / den.max(f64::MIN_POSITIVE)
     }
 
     /// Below this `|sin θ|` at `(s, t)` is numerically zero: what moving `s` and `t` by the

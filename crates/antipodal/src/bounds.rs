@@ -529,9 +529,8 @@ impl BoundForms {
             } else {
                 // The cells the overlap touches (one more at an end on a cell boundary). (On
                 // values clamped to be non-negative, the conversion's truncation is the floor.)
-                let cell = |x: f64| {
-                    (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1)
-                };
+                let cell =
+                    |x: f64| (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1);
                 let (c0, c1) = (cell(x0), cell(x1));
                 if c1 - c0 <= 1 && within_one {
                     // Within two cells: the stretch's own models are tighter.

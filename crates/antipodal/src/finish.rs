@@ -434,7 +434,7 @@ fn turning_at(p: &Pair, s: f64, t: f64) -> Option<f64> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
     use crate::curve::tests::star_curve;
@@ -448,7 +448,7 @@ mod tests {
 
     /// The opposite point of `s` by bisection on the side of `N(t)` against `−N(s)` over the
     /// whole of `T` (monotone: one crossing), independent of the solver and of conditioning.
-    fn opposite_by_bisection(p: &Pair, s: f64) -> f64 {
+    pub(crate) fn opposite_by_bisection(p: &Pair, s: f64) -> f64 {
         let n = -p.vs.normal(s);
         let side = |t: f64| p.vt.normal(t).cross(n) > 0.0;
         let (mut lo, mut hi) = (p.ta, p.tb);

@@ -31,9 +31,12 @@ pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
         out.extend(found);
         return out;
     }
-    // Equal end signs: none or two. The iteration converges whenever a tangent exists
-    // (Lemma 4) and its limit is verified, so it decides existence. (In the §2.4 order, then
-    // in the other.)
+    // Equal end signs: none or two. None at all where the sign of d is proven throughout.
+    if d_one_signed(p) {
+        return out;
+    }
+    // Else the iteration converges whenever a tangent exists (Lemma 4) and its limit is
+    // verified, so it decides existence. (In the §2.4 order, then in the other.)
     let ordered = t_first(p, true);
     let first = common_tangent(p, true, ordered).or_else(|| common_tangent(p, true, !ordered));
     // Segments bending the same way: configuration (a) or none, by the region test. A
@@ -56,6 +59,36 @@ pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
     out.extend(second);
     out.sort_by(|x, y| x.0.total_cmp(&y.0));
     out
+}
+
+/// `d = N(s) · r` keeps one sign over the whole of `p` (curves with symbolic forms): the
+/// normals of `S` lie in the cone of its end normals (a monotone segment, turning by less than
+/// π) and `r` in the difference of the two arcs' bounding boxes, and `N · r` has one sign,
+/// beyond rounding, at the cone's two edges against the difference's four corners. That
+/// holds over the whole box (linear in `r`), and for a corner over the whole cone (a cone
+/// narrower than π with both edges in a half-plane lies in it). Segments far apart for their
+/// size, the common case, are settled without iterating.
+fn d_one_signed(p: &Pair) -> bool {
+    if p.vs.cert.is_none() || p.vt.cert.is_none() {
+        return false;
+    }
+    let (Some((s_lo, s_hi)), Some((t_lo, t_hi))) =
+        (p.vs.arc_box(p.sa, p.sb), p.vt.arc_box(p.ta, p.tb))
+    else {
+        return false;
+    };
+    let (lo, hi) = (t_lo - s_hi, t_hi - s_lo);
+    let corners = [lo, V2::new(lo.x, hi.y), V2::new(hi.x, lo.y), hi];
+    let room = 1e-9 * p.vs.scale.max(p.vt.scale);
+    let (mut pos, mut neg) = (true, true);
+    for n in [p.vs.normal(p.sa), p.vs.normal(p.sb)] {
+        for c in corners {
+            let v = n.dot(c);
+            pos &= v > room;
+            neg &= v < -room;
+        }
+    }
+    pos || neg
 }
 
 /// Common-Tangent started at the `a` ends (or the `b` ends) with the ordering rule of §2.4:
@@ -182,4 +215,107 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
     let u = crate::view::halley_bracketed(f, (a, b), (fa, fb), v.tol, f64::NAN);
     let j = v.jet_to(u, 2);
     (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::curve::tests::{star_curve, star_curve_at};
+    use crate::driver::prepare;
+    use crate::finish::tests::opposite_by_bisection;
+    use crate::pairs::opposite_pair;
+    use crate::Options;
+    use proptest::prelude::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    /// Stretches where `d` was proven of one sign, and where sampling found it change sign
+    /// (neither count may stay small: the property must not be vacuous either way).
+    static PROVEN: AtomicUsize = AtomicUsize::new(0);
+    static CHANGING: AtomicUsize = AtomicUsize::new(0);
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 100, ..ProptestConfig::default() })]
+
+        /// On random stretches of random pairs of monotone pieces, of one random closed
+        /// B-spline or NURBS and of two (whose inner common tangents have opposite normals),
+        /// `d` sampled densely (opposite points by bisection) keeps the sign it is proven to
+        /// keep; where it changes sign (a common tangent) nothing is proven.
+        fn proven_one_signed_d_has_no_zero(
+            deg in 3usize..=5,
+            seed in proptest::collection::vec(0.0f64..1.0, 12..=30),
+            seed2 in proptest::collection::vec(0.0f64..1.0, 12..=30),
+            w in proptest::collection::vec(0.5f64..2.0, 15),
+            rational in any::<bool>(),
+            (dist, dir) in (1.2f64..3.0, 0.0f64..std::f64::consts::TAU),
+            picks in proptest::collection::vec((0.0f64..1.0, 0.05f64..1.0), 3),
+        ) {
+            let weights = rational.then_some(&w[..]);
+            let a = star_curve(deg, &seed, weights);
+            let b = star_curve_at(deg, &seed2, weights, [dist * dir.cos(), dist * dir.sin()]);
+            let opts = Options::default();
+            let Ok(pa) = prepare(&a, &opts, Some(false), None) else {
+                return Ok(());
+            };
+            let mut others = vec![];
+            for rev in [false, true] {
+                let Ok(pb) = prepare(&b, &opts, Some(rev), None) else {
+                    return Ok(());
+                };
+                others.push(pb);
+            }
+            let mut pairs = vec![];
+            for (i, p) in pa.pieces.iter().enumerate() {
+                pairs.extend(pa.pieces[i + 1..].iter().filter_map(|q| opposite_pair(&pa.view, p, &pa.view, q)));
+                for pb in &others {
+                    pairs.extend(pb.pieces.iter().filter_map(|q| opposite_pair(&pa.view, p, &pb.view, q)));
+                }
+            }
+            for pair in &pairs {
+                // Opposite points by bisection inside, the pair's own at its ends (where the
+                // bisection cannot tell the root from the end it sits on).
+                let opp = |s: f64| match s {
+                    s if s == pair.sa => pair.ta,
+                    s if s == pair.sb => pair.tb,
+                    s => opposite_by_bisection(pair, s),
+                };
+                // The whole pair first (what a run asks about), then stretches of it.
+                for &(f, len) in [(0.0, 1.0)].iter().chain(&picks) {
+                    let s0 = pair.sa + f * (pair.sb - pair.sa);
+                    let s1 = (s0 + len * (pair.sb - pair.sa)).min(pair.sb);
+                    if s1 <= s0 {
+                        continue;
+                    }
+                    let sub = pair.sub(s0, opp(s0), s1, opp(s1));
+                    let ds: Vec<f64> = (0..=60)
+                        .map(|k| {
+                            let s = s0 + (s1 - s0) * k as f64 / 60.0;
+                            sub.d(s, opp(s))
+                        })
+                        .collect();
+                    let changes = ds.iter().any(|&d| (d > 0.0) != (ds[0] > 0.0));
+                    if changes {
+                        CHANGING.fetch_add(1, Ordering::Relaxed);
+                    }
+                    if !d_one_signed(&sub) {
+                        continue;
+                    }
+                    PROVEN.fetch_add(1, Ordering::Relaxed);
+                    prop_assert!(
+                        !changes && ds.iter().all(|&d| d != 0.0),
+                        "d proven of one sign on [{s0}, {s1}] but sampled {ds:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Runs the property and checks that both outcomes occur.
+    #[test]
+    fn proven_one_signed_d_has_no_zero_and_both_outcomes_occur() {
+        proven_one_signed_d_has_no_zero();
+        // (Measured: about 14,000 proven and 1,300 changing.)
+        assert!(PROVEN.load(Ordering::Relaxed) >= 2000);
+        assert!(CHANGING.load(Ordering::Relaxed) >= 200);
+    }
 }

@@ -432,6 +432,8 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
     // The step from which an escaping march next tries to prove nothing lies ahead, and |θ|
     // at the last point (the march escapes while it grows).
     let (mut escape_at, mut last_theta) = (ESCAPE_CHECK, f64::INFINITY);
+    // The greatest |θ| so far, and whether the march has come down from it.
+    let (mut peak, mut past_peak) = (0.0f64, false);
     for i in 0..MARCH_STEPS {
         let Some(ns) = next(i, s, t, s + ds * ratio) else {
             return March::Nothing;
@@ -463,7 +465,8 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                     }
                     escape_at = 2 * (i + 1);
                 }
-            } else if wait == 0 {
+            } else if wait == 0 || (!past_peak && theta < PAST_PEAK * peak) {
+                past_peak |= theta < PAST_PEAK * peak;
                 let q = step / last_step;
                 let limit = if q < 1.0 {
                     step * q / (1.0 - q)
@@ -492,6 +495,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
             } else {
                 wait -= 1;
             }
+            peak = peak.max(theta);
             // (After leaps the march stands elsewhere, its θ unknown.)
             last_theta = if step.is_finite() {
                 theta
@@ -706,6 +710,10 @@ const MAX_LEAPS: usize = 8;
 /// Steps a march waits after its first failed finishing attempt (then twice as many, …): 8
 /// did best with [`FIRST_WAIT`] (fewer wasted attempts, few extra steps).
 const FIRST_GAP: usize = 8;
+
+/// Fraction of the greatest |θ| of a march below which it has passed the peak: θ falls
+/// monotonically from there on as a rule, and a finish is tried at once.
+const PAST_PEAK: f64 = 0.8;
 
 /// Bound on march steps: linear convergence needs O(ω) of them, a few hundred at worst. A march
 /// whose steps stay tiny (θ small all along: nearly circular segments) stops here and

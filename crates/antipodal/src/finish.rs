@@ -57,12 +57,12 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
         .or_else(|| bracketed_ahead(p, (s, t), (end_s, end_t), th_s, limit));
     // J runs from s to a little past the proposal, or to the end when there is none.
     let (e, te) = match proposal {
-        Some((ps, _)) => {
+        Some((ps, pt)) => {
             let ahead = (ps - s) * dir;
             let past = (1e-3 * ahead).max(64.0 * p.vs.tol);
             if ahead + past < remaining {
                 let e = ps + dir * past;
-                (e, p.opposite_between(e, (s, t), (end_s, end_t)))
+                (e, p.opposite_from(e, (ps, pt), (end_s, end_t)))
             } else {
                 (end_s, end_t)
             }
@@ -174,7 +174,7 @@ fn monotone_reach(p: &Pair, from: (f64, f64), to: (f64, f64), first: f64) -> Opt
             to
         } else {
             let e = from.0 + dir * len;
-            (e, p.opposite_between(e, from, to))
+            (e, p.opposite_from(e, from, to))
         };
         if theta_monotone(p, from, next).is_some() {
             return Some(next);
@@ -402,8 +402,8 @@ pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Optio
         let lo = s - 0.25 * room(0);
         let hi = s + 0.25 * room(1);
         let (tl, th) = (
-            p.opposite_between(lo, ends[0], (s, t)),
-            p.opposite_between(hi, (s, t), ends[1]),
+            p.opposite_from(lo, (s, t), ends[0]),
+            p.opposite_from(hi, (s, t), ends[1]),
         );
         if theta_monotone(p, (lo, tl), (hi, th)).is_some() {
             out = [cut_at(p, s, (lo, tl), -1.0), cut_at(p, s, (hi, th), 1.0)];

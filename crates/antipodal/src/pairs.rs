@@ -77,6 +77,22 @@ impl<'a> Pair<'a> {
         self.opposite_near(s, a.1, b.1, a.1 + f * (b.1 - a.1))
     }
 
+    /// The opposite point of `s`, between those of `a` and `b`, with Newton started on the
+    /// tangent of `t(s)` at `a` (`dt/ds = κ(s)|C′(s)| / (κ(t)|C′(t)|)`, the normals turning
+    /// alike): closer than the chord where `s` is much nearer `a` than `b`, as beside a found
+    /// pair.
+    pub(crate) fn opposite_from(&self, s: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
+        let (ja, jt) = (self.vs.jet_to(a.0, 2), self.vt.jet_to(a.1, 2));
+        let slope = ja.curvature() * ja.d1.norm() / (jt.curvature() * jt.d1.norm());
+        let h = a.1 + slope * (s - a.0);
+        let hint = if h > a.1.min(b.1) && h < a.1.max(b.1) {
+            h
+        } else {
+            f64::NAN
+        };
+        self.opposite_near(s, a.1, b.1, hint)
+    }
+
     /// [`Pair::opposite_within`] with Newton started at `hint`.
     pub(crate) fn opposite_near(&self, s: f64, t0: f64, t1: f64, hint: f64) -> f64 {
         let d1 = self.vt.jet_to(t1, 1).d1;

@@ -322,7 +322,11 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
                 break;
             }
         }
-        let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
+        let tm = if (sm - s0).abs() <= (sm - s1).abs() {
+            p.opposite_from(sm, (s0, t0), (s1, t1))
+        } else {
+            p.opposite_from(sm, (s1, t1), (s0, t0))
+        };
         let fm = p.sin_theta(sm, tm);
         if fm == 0.0 {
             return Some(Found { s: sm, t: tm });

@@ -523,7 +523,7 @@ impl BoundForms {
         let ends = (pw.piece_at(lo), pw.piece_at(hi));
         let within_one = ends.0 == ends.1;
         for (i, x0, x1) in pw.overlaps_of(lo, hi, ends) {
-            let (a, b) = self.curvature.pw.piece_span(i);
+            let (a, b) = pw.piece_span(i);
             let (kappa, v) = if x0 <= a && x1 >= b {
                 self.covered[i]?
             } else {

@@ -457,6 +457,8 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
         }
         if certified {
             let theta = p.sin_theta(s, t).abs();
+            // First come down from the peak: the finish is tried at once.
+            let fallen = !past_peak && theta < PAST_PEAK * peak;
             // A finish is tried while the march converges, at steps ever farther apart
             // after failures. While it escapes from a pair behind (steps and |θ| growing)
             // with several steps to go, a proof that none lies ahead may end it early.
@@ -469,8 +471,8 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                     }
                     escape_at = 2 * (i + 1);
                 }
-            } else if wait == 0 || (!past_peak && theta < PAST_PEAK * peak) {
-                past_peak |= theta < PAST_PEAK * peak;
+            } else if wait == 0 || fallen {
+                past_peak |= fallen;
                 let q = step / last_step;
                 let limit = if q < 1.0 {
                     step * q / (1.0 - q)

@@ -9,6 +9,7 @@ use crate::taylor::Taylor;
 use crate::view::View;
 use bspline::{BSpline, Rational};
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 /// A closed interval of reals.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -228,6 +229,13 @@ impl Enclosure {
     /// `|f|″ = (|f′|² + f·f″)/|f| − (f·f′)²/|f|³` is at most `|f′|²/|f| + |f″|`, with `|f′|` and
     /// `|f|` bounded over the interval from the model of `f` itself.
     fn taylor(&self, i: usize, x0: f64, x1: f64) -> Option<(Taylor, Iv)> {
+        self.taylor_slope(i, x0, x1).map(|(t, hull, _)| (t, hull))
+    }
+
+    /// [`Enclosure::taylor`] and the range of the derivative (of the length's, in dimension
+    /// 2) over `[x0, x1]`: within `M δ` of its value at the middle, `M` the bound on the
+    /// second derivative behind the model's remainder, widened by rounding.
+    fn taylor_slope(&self, i: usize, x0: f64, x1: f64) -> Option<(Taylor, Iv, Iv)> {
         let (a, b) = self.pw.piece_span(i);
         let (m, delta) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
         let (v, g) = self.eval.eval(i, (m - a) / (b - a));
@@ -235,6 +243,7 @@ impl Enclosure {
         let (m2, hull) = (self.second[i], self.hull[i]);
         if self.pw.dim() == 1 {
             let r = 0.5 * m2 * delta * delta + rv + rg * delta;
+            let spread = m2 * delta + rg;
             return Some((
                 Taylor {
                     v: v[0],
@@ -242,6 +251,7 @@ impl Enclosure {
                     r,
                 },
                 hull,
+                Iv::new(g[0] - spread, g[0] + spread),
             ));
         }
         let n = v[0].hypot(v[1]);
@@ -260,7 +270,9 @@ impl Enclosure {
             g: (v[0] * g[0] + v[1] * g[1]) / n,
             r: 0.5 * second * delta * delta + err,
         };
-        Some((model, hull))
+        // (|f|′ = f·f′/|f| at the middle errs by the slope's rounding and the value's over |f|.)
+        let spread = second * delta + 2.0 * (rg + rv * gn / lower);
+        Some((model, hull, Iv::new(model.g - spread, model.g + spread)))
     }
 
     /// The range over `[lo, hi]` (inside the domain), joined into `acc`.
@@ -374,6 +386,18 @@ pub(crate) struct BoundForms {
     prefix: Vec<Option<(Iv, f64)>>,
     /// Per fine piece, the unions of its cells `c ..` to its last (indexed like `cells`).
     suffix: Vec<Option<(Iv, f64)>>,
+    /// Per fine piece, the rates of its radius of curvature, built on first use.
+    rates: Vec<OnceLock<Option<PieceRates>>>,
+}
+
+/// The ranges of `dρ/dψ` over the cells of a fine piece (see `BoundForms::rho_rates`), each
+/// with κ clipped to negative and to positive values, and their unions from the first cell
+/// and to the last.
+#[derive(Debug, Clone)]
+struct PieceRates {
+    cells: Vec<[Option<Iv>; 2]>,
+    prefix: Vec<[Option<Iv>; 2]>,
+    suffix: Vec<[Option<Iv>; 2]>,
 }
 
 /// Cells per fine piece of [`BoundForms::cells`].
@@ -405,6 +429,7 @@ impl BoundForms {
             cells: Vec::new(),
             prefix: Vec::new(),
             suffix: Vec::new(),
+            rates: Vec::new(),
         };
         if aligned {
             let pieces = forms.curvature.hull.len();
@@ -434,6 +459,7 @@ impl BoundForms {
                     forms.suffix[r] = join(forms.suffix[r + 1], forms.cells[r]);
                 }
             }
+            forms.rates = (0..pieces).map(|_| OnceLock::new()).collect();
             forms.covered = (0..pieces)
                 .map(|i| {
                     let w = forms
@@ -504,6 +530,137 @@ impl BoundForms {
             None => ranges,
         };
         Some((kappa, speed))
+    }
+
+    /// The ranges of `dρ/dψ` over `[x0, x1]` inside fine piece `i`, with κ clipped to
+    /// negative and to positive values (indexed by `convex`): the rate at which the radius of
+    /// curvature `ρ = 1/κ` changes with the tangent angle ψ, `−κ′ / (κ³ |C′|)`, with
+    /// `κ′ = w² (K′w + 3Kw′) / |D|³ − 3κ |D|′ / |D|` from the Taylor models of the factors and
+    /// their derivatives. Where κ may reach zero on its side (an inflection ending a piece) the
+    /// rate is unbounded on the side the signs of κ and κ′ give. `None` where nothing is
+    /// proven (or κ has no values of that sign).
+    fn rho_rates(&self, i: usize, x0: f64, x1: f64) -> [Option<Iv>; 2] {
+        let none = [None, None];
+        let Some((kappa, _)) = self.partial(i, x0, x1) else {
+            return none;
+        };
+        let delta = 0.5 * (x1 - x0);
+        let value = |(t, hull, slope): (Taylor, Iv, Iv)| {
+            let r = t.range(delta);
+            (Iv::new(r.lo.max(hull.lo), r.hi.min(hull.hi)), slope)
+        };
+        let models = (
+            self.curvature.taylor_slope(i, x0, x1),
+            self.tangent.taylor_slope(i, x0, x1),
+        );
+        let (Some(km), Some(dm)) = models else {
+            return none;
+        };
+        let ((k, k1), (d, d1)) = (value(km), value(dm));
+        let (w, w1) = match &self.weight {
+            Some(e) => match e.taylor_slope(i, x0, x1) {
+                Some(m) => value(m),
+                None => return none,
+            },
+            None => (Iv::new(1.0, 1.0), Iv::new(0.0, 0.0)),
+        };
+        let Some(inv_d) = d.recip() else {
+            return none;
+        };
+        let positive_weight = w.lo > 0.0;
+        if !positive_weight {
+            return none;
+        }
+        let speed = Iv::new(d.lo / (w.hi * w.hi), d.hi / (w.lo * w.lo));
+        let three = Iv::new(3.0, 3.0);
+        let scaled = w.mul(w).mul(k1.mul(w).add(three.mul(k).mul(w1)));
+        let cubed = inv_d.mul(inv_d).mul(inv_d);
+        [false, true].map(|convex| {
+            let kappa = match convex {
+                true => Iv::new(kappa.lo.max(0.0), kappa.hi),
+                false => Iv::new(kappa.lo, kappa.hi.min(0.0)),
+            };
+            // (Empty where κ has no values of that sign.)
+            let some = kappa.lo <= kappa.hi;
+            if !some {
+                return None;
+            }
+            let rate = scaled
+                .mul(cubed)
+                .sub(three.mul(kappa).mul(d1).mul(inv_d))
+                .widened(MARGIN);
+            if kappa.excludes_zero() {
+                let out = rate.mul(kappa.mul(kappa).mul(kappa).mul(speed).recip()?);
+                return Some(Iv::new(-out.hi, -out.lo).widened(MARGIN));
+            }
+            // κ reaches zero on its side: |ρ′| ≥ |κ′|min / (|κ|max³ |C′|max), of the sign of
+            // −κ′κ.
+            if !rate.excludes_zero() || kappa.mag() == 0.0 {
+                return None;
+            }
+            let least = rate.lo.abs().min(rate.hi.abs()) / (kappa.mag().powi(3) * speed.hi);
+            let least = least * (1.0 - MARGIN);
+            Some(match (rate.lo > 0.0) != convex {
+                true => Iv::new(least, f64::INFINITY),
+                false => Iv::new(f64::NEG_INFINITY, -least),
+            })
+        })
+    }
+
+    /// The rates of fine piece `i` over its [`CELLS`] cells, built on first use.
+    fn piece_rates(&self, i: usize) -> Option<&PieceRates> {
+        let slot = self.rates.get(i)?;
+        slot.get_or_init(|| {
+            let (a, b) = self.curvature.pw.piece_span(i);
+            let w = (b - a) / CELLS as f64;
+            let cells: Vec<[Option<Iv>; 2]> = (0..CELLS)
+                .map(|c| {
+                    let x1 = if c + 1 == CELLS {
+                        b
+                    } else {
+                        a + w * (c + 1) as f64
+                    };
+                    self.rho_rates(i, a + w * c as f64, x1)
+                })
+                .collect();
+            let join = |x: [Option<Iv>; 2], y: [Option<Iv>; 2]| {
+                [0, 1].map(|k| {
+                    let (p, q) = (x[k]?, y[k]?);
+                    Some(Iv::new(p.lo.min(q.lo), p.hi.max(q.hi)))
+                })
+            };
+            let (mut prefix, mut suffix) = (cells.clone(), cells.clone());
+            for c in 1..CELLS {
+                prefix[c] = join(prefix[c - 1], cells[c]);
+                let r = CELLS - 1 - c;
+                suffix[r] = join(suffix[r + 1], cells[r]);
+            }
+            Some(PieceRates {
+                cells,
+                prefix,
+                suffix,
+            })
+        })
+        .as_ref()
+    }
+
+    /// The range of `dρ/dψ` over the cells `c0 ..= c1` of fine piece `i` (κ of the sign
+    /// `convex` gives).
+    fn cells_rho_rate(&self, i: usize, c0: usize, c1: usize, convex: bool) -> Option<Iv> {
+        let r = self.piece_rates(i)?;
+        let k = usize::from(convex);
+        if c0 == 0 {
+            return r.prefix[c1][k];
+        }
+        if c1 == CELLS - 1 {
+            return r.suffix[c0][k];
+        }
+        let mut acc = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        for cell in &r.cells[c0..=c1] {
+            let x = cell[k]?;
+            acc = Iv::new(acc.lo.min(x.lo), acc.hi.max(x.hi));
+        }
+        Some(acc)
     }
 
     /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
@@ -628,6 +785,31 @@ impl View<'_> {
             lo: lo_box - grow,
             hi: hi_box + grow,
         })
+    }
+
+    /// The range of `dρ/dψ` (see `BoundForms::rho_rates`) over the unwrapped parameter
+    /// interval `[lo, hi]` of a monotone piece (`convex`: of positive curvature), from the
+    /// cells it touches; `None` for a curve without symbolic forms, or where nothing is
+    /// proven.
+    pub(crate) fn arc_rho_rate(&self, lo: f64, hi: f64, convex: bool) -> Option<Iv> {
+        let forms = self.cert.as_ref()?.bound_forms()?;
+        if !forms.aligned {
+            return None;
+        }
+        let pw = &forms.curvature.pw;
+        let (lo, hi) = (lo.min(hi), lo.max(hi));
+        let mut acc = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        for (x0, x1, _) in self.domain_pieces(lo, hi) {
+            let ends = (pw.piece_at(x0), pw.piece_at(x1));
+            for (i, y0, y1) in pw.overlaps_of(x0, x1, ends) {
+                let (a, b) = pw.piece_span(i);
+                let cell =
+                    |x: f64| (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1);
+                let r = forms.cells_rho_rate(i, cell(y0), cell(y1), convex)?;
+                acc = Iv::new(acc.lo.min(r.lo), acc.hi.max(r.hi));
+            }
+        }
+        (acc.lo <= acc.hi).then_some(acc)
     }
 
     /// Bounding box of a monotone arc `[a, b]` (curvature of one sign, turning below π): the

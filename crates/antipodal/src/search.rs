@@ -8,7 +8,8 @@
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
 use crate::finish::{
-    certified_finish, certified_rest, certified_rests, clear_ahead, clear_between, Finish,
+    certified_finish, certified_rest, certified_rests, clear_ahead, clear_between, clear_by_rates,
+    Finish,
 };
 use crate::pairs::{negligible, polish, polish_within, Pair};
 use crate::prims::Prefer;
@@ -59,7 +60,11 @@ pub(crate) fn antipodal_points<'a>(
                 stack.extend(rests(&p, found.s, found.t, true, true, ta < 0.0));
             }
         } else {
-            if long_march(&p, (ta, tb)) && clear_between(&p, (p.sa, p.ta), (p.sb, p.tb), (ta, tb)) {
+            let ends = ((p.sa, p.ta), (p.sb, p.tb));
+            if long_march(&p, (ta, tb))
+                && (clear_between(&p, ends.0, ends.1, (ta, tb))
+                    || clear_by_rates(&p, ends.0, ends.1, (ta, tb)))
+            {
                 continue;
             }
             let march = match (p.s_convex, p.t_convex) {

@@ -532,16 +532,17 @@ impl BoundForms {
         Some((kappa, speed))
     }
 
-    /// The ranges of `dρ/dψ` over `[x0, x1]` inside fine piece `i`, with κ clipped to
+    /// The ranges of `dρ/dψ` over `[x0, x1]` inside fine piece `i` (where κ ranges over
+    /// `kappa`), with κ clipped to
     /// negative and to positive values (indexed by `convex`): the rate at which the radius of
     /// curvature `ρ = 1/κ` changes with the tangent angle ψ, `−κ′ / (κ³ |C′|)`, with
     /// `κ′ = w² (K′w + 3Kw′) / |D|³ − 3κ |D|′ / |D|` from the Taylor models of the factors and
     /// their derivatives. Where κ may reach zero on its side (an inflection ending a piece) the
     /// rate is unbounded on the side the signs of κ and κ′ give. `None` where nothing is
     /// proven (or κ has no values of that sign).
-    fn rho_rates(&self, i: usize, x0: f64, x1: f64) -> [Option<Iv>; 2] {
+    fn rho_rates(&self, i: usize, x0: f64, x1: f64, kappa: Option<Iv>) -> [Option<Iv>; 2] {
         let none = [None, None];
-        let Some((kappa, _)) = self.partial(i, x0, x1) else {
+        let Some(kappa) = kappa else {
             return none;
         };
         let delta = 0.5 * (x1 - x0);
@@ -620,7 +621,9 @@ impl BoundForms {
                     } else {
                         a + w * (c + 1) as f64
                     };
-                    self.rho_rates(i, a + w * c as f64, x1)
+                    // (The cell's curvature is known already.)
+                    let kappa = self.cells[i * CELLS + c].map(|(k, _)| k);
+                    self.rho_rates(i, a + w * c as f64, x1, kappa)
                 })
                 .collect();
             let join = |x: [Option<Iv>; 2], y: [Option<Iv>; 2]| {

@@ -450,14 +450,10 @@ impl BoundForms {
                 let ((ka, va), (kb, vb)) = (a?, b?);
                 Some((Iv::new(ka.lo.min(kb.lo), ka.hi.max(kb.hi)), va.max(vb)))
             };
-            forms.prefix = forms.cells.clone();
-            forms.suffix = forms.cells.clone();
-            for i in 0..pieces {
-                for c in 1..CELLS {
-                    let (k, r) = (i * CELLS + c, i * CELLS + CELLS - 1 - c);
-                    forms.prefix[k] = join(forms.prefix[k - 1], forms.cells[k]);
-                    forms.suffix[r] = join(forms.suffix[r + 1], forms.cells[r]);
-                }
+            for piece in forms.cells.chunks(CELLS) {
+                let (prefix, suffix) = running_unions(piece, join);
+                forms.prefix.extend(prefix);
+                forms.suffix.extend(suffix);
             }
             forms.rates = (0..pieces).map(|_| OnceLock::new()).collect();
             forms.covered = (0..pieces)
@@ -632,12 +628,7 @@ impl BoundForms {
                     Some(Iv::new(p.lo.min(q.lo), p.hi.max(q.hi)))
                 })
             };
-            let (mut prefix, mut suffix) = (cells.clone(), cells.clone());
-            for c in 1..CELLS {
-                prefix[c] = join(prefix[c - 1], cells[c]);
-                let r = CELLS - 1 - c;
-                suffix[r] = join(suffix[r + 1], cells[r]);
-            }
+            let (prefix, suffix) = running_unions(&cells, join);
             Some(PieceRates {
                 cells,
                 prefix,
@@ -687,11 +678,8 @@ impl BoundForms {
             let (kappa, v) = if x0 <= a && x1 >= b {
                 self.covered[i]?
             } else {
-                // The cells the overlap touches (one more at an end on a cell boundary). (On
-                // values clamped to be non-negative, the conversion's truncation is the floor.)
-                let cell =
-                    |x: f64| (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1);
-                let (c0, c1) = (cell(x0), cell(x1));
+                // The cells the overlap touches (one more at an end on a cell boundary).
+                let (c0, c1) = (cell_of(x0, (a, b)), cell_of(x1, (a, b)));
                 if c1 - c0 <= 1 && within_one {
                     // Within two cells: the stretch's own models are tighter.
                     self.partial(i, x0, x1)?
@@ -719,6 +707,24 @@ impl BoundForms {
         *acc = Iv::new(acc.lo.min(q.lo), acc.hi.max(q.hi));
         Some(d.hi / (w.lo * w.lo))
     }
+}
+
+/// The cell of a fine piece spanning `(a, b)` that holds `x` (the first or last for `x`
+/// outside). (On values clamped to be non-negative, the conversion's truncation is the floor.)
+fn cell_of(x: f64, (a, b): (f64, f64)) -> usize {
+    (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1)
+}
+
+/// The unions of a piece's cells from its first to each (`prefix`) and from each to its last
+/// (`suffix`), by `join`.
+fn running_unions<T: Copy>(cells: &[T], join: impl Fn(T, T) -> T) -> (Vec<T>, Vec<T>) {
+    let (mut prefix, mut suffix) = (cells.to_vec(), cells.to_vec());
+    for c in 1..cells.len() {
+        prefix[c] = join(prefix[c - 1], cells[c]);
+        let r = cells.len() - 1 - c;
+        suffix[r] = join(suffix[r + 1], cells[r]);
+    }
+    (prefix, suffix)
 }
 
 /// Relative room for the rounding of the coefficients the ranges were read from and of the
@@ -805,10 +811,8 @@ impl View<'_> {
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
             let ends = (pw.piece_at(x0), pw.piece_at(x1));
             for (i, y0, y1) in pw.overlaps_of(x0, x1, ends) {
-                let (a, b) = pw.piece_span(i);
-                let cell =
-                    |x: f64| (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1);
-                let r = forms.cells_rho_rate(i, cell(y0), cell(y1), convex)?;
+                let span = pw.piece_span(i);
+                let r = forms.cells_rho_rate(i, cell_of(y0, span), cell_of(y1, span), convex)?;
                 acc = Iv::new(acc.lo.min(r.lo), acc.hi.max(r.hi));
             }
         }

@@ -156,11 +156,8 @@ pub(crate) fn clear_by_rates(p: &Pair, a: (f64, f64), b: (f64, f64), th: (f64, f
 /// `dρ/dψ = −κ′ / (κ³ |C′|)` at `u` (NaN or infinite at an inflection).
 fn rho_rate_at(v: &crate::view::View, u: f64) -> f64 {
     let j = v.jet_to(u, 3);
-    let speed = j.d1.norm();
-    let s3 = speed * speed * speed;
-    let k = j.d1.cross(j.d2) / s3;
-    let k1 = j.d1.cross(j.d3) / s3 - 3.0 * j.d1.cross(j.d2) * j.d1.dot(j.d2) / (s3 * speed * speed);
-    -k1 / (k * k * k * speed)
+    let k = j.curvature();
+    -j.curvature_rate() / (k * k * k * j.d1.norm())
 }
 
 /// Where θ is not proven monotone from the march's point `from` to `to`: over the first half

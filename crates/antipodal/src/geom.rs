@@ -139,6 +139,13 @@ impl Jet {
         let s = self.d1.norm();
         self.d1.cross(self.d2) / (s * s * s)
     }
+    /// Derivative of the signed curvature in the parameter (needs the third derivative):
+    /// `κ′ = C′ × C‴ / |C′|³ − 3 (C′ × C″)(C′ · C″) / |C′|⁵`.
+    pub fn curvature_rate(&self) -> f64 {
+        let s2 = self.d1.dot(self.d1);
+        let s3 = s2 * s2.sqrt();
+        (self.d1.cross(self.d3) - 3.0 * self.d1.cross(self.d2) * self.d1.dot(self.d2) / s2) / s3
+    }
 }
 
 #[cfg(test)]
@@ -157,6 +164,36 @@ mod tests {
             let got = wrap_pi(a);
             proptest::prop_assert!(got > -PI && got <= PI, "{a} → {got}");
             proptest::prop_assert!((got - want).abs() <= 4.0 * f64::EPSILON * a.abs().max(1.0));
+        }
+    }
+
+    proptest::proptest! {
+        /// κ′ of the jets of a random cubic `C(u) = Σ aᵢuⁱ` against central differences of κ.
+        #[test]
+        fn curvature_rate_matches_differences(
+            c in proptest::collection::vec(-2.0f64..2.0, 8),
+            u in -1.0f64..1.0,
+        ) {
+            let jet = |u: f64| {
+                let poly = |k: usize, d: usize| -> f64 {
+                    // d-th derivative of c[k] + c[k+2] u + c[k+4] u² + c[k+6] u³ at u.
+                    let a = [c[k], c[k + 2], c[k + 4], c[k + 6]];
+                    (d..4)
+                        .map(|i| {
+                            let f = (i - d + 1..=i).product::<usize>() as f64;
+                            a[i] * f * u.powi((i - d) as i32)
+                        })
+                        .sum()
+                };
+                let v = |d: usize| V2::new(poly(0, d), poly(1, d));
+                Jet { p: v(0), d1: v(1), d2: v(2), d3: v(3) }
+            };
+            let j = jet(u);
+            proptest::prop_assume!(j.d1.norm() > 0.1);
+            let h = 1e-5;
+            let fd = (jet(u + h).curvature() - jet(u - h).curvature()) / (2.0 * h);
+            let got = j.curvature_rate();
+            proptest::prop_assert!((got - fd).abs() <= 1e-5 * (1.0 + fd.abs()), "{got} vs {fd}");
         }
     }
 

@@ -30,6 +30,11 @@ impl Iv {
         Self::new(self.lo - m, self.hi + m)
     }
 
+    /// The least interval holding both.
+    pub(crate) fn hull(self, o: Iv) -> Self {
+        Self::new(self.lo.min(o.lo), self.hi.max(o.hi))
+    }
+
     pub(crate) fn add(self, o: Iv) -> Self {
         Self::new(self.lo + o.lo, self.hi + o.hi)
     }
@@ -302,7 +307,7 @@ impl Enclosure {
                 // Both enclose the range: keep their common part.
                 Iv::new((x - r).max(hull.lo), (x + r).min(hull.hi))
             };
-            *acc = Iv::new(acc.lo.min(range.lo), acc.hi.max(range.hi));
+            *acc = acc.hull(range);
         }
     }
 }
@@ -373,35 +378,178 @@ pub(crate) struct BoundForms {
     /// The three enclosures share their fine pieces (always, for forms of one curve): the
     /// curvature is then bounded by Taylor models, piece by piece.
     aligned: bool,
-    /// Per fine piece (when aligned), the curvature and the greatest speed its hulls prove,
-    /// narrowed to the union of its cells' (`None` where they do not prove `|D|` and `w`
-    /// positive).
-    covered: Vec<Option<(Iv, f64)>>,
-    /// Per fine piece, [`CELLS`] equal cells with the curvature and speed their Taylor models
-    /// prove (computed once: a stretch that covers several cells of a piece in part reads
-    /// them instead of evaluating its own models).
-    cells: Vec<Option<(Iv, f64)>>,
-    /// Per fine piece, the unions of its cells `0 ..= c` (indexed like `cells`): a stretch
-    /// that starts before a piece reads what it covers of it at once.
-    prefix: Vec<Option<(Iv, f64)>>,
-    /// Per fine piece, the unions of its cells `c ..` to its last (indexed like `cells`).
-    suffix: Vec<Option<(Iv, f64)>>,
-    /// Per fine piece, the rates of its radius of curvature, built on first use.
-    rates: Vec<OnceLock<Option<PieceRates>>>,
+    /// Per fine piece (when aligned), the curvature and greatest speed over its cells
+    /// (`None` where they do not prove `|D|` and `w` positive): a stretch that covers
+    /// several cells of a piece in part reads them instead of evaluating its own models.
+    kappa: Vec<Blocks<KappaCell>>,
+    /// Per fine piece, the curvature and greatest speed its hulls prove, narrowed to the
+    /// union of its cells'.
+    covered: Vec<KappaCell>,
+    /// Per fine piece, the rates of its radius of curvature (see `BoundForms::rho_rates`)
+    /// over its cells, with κ clipped to negative and to positive values; built on first use.
+    rates: Vec<OnceLock<Cells<[Option<Iv>; 2]>>>,
 }
 
-/// The ranges of `dρ/dψ` over the cells of a fine piece (see `BoundForms::rho_rates`), each
-/// with κ clipped to negative and to positive values, and their unions from the first cell
-/// and to the last.
+/// What Taylor models prove over the equal cells of a fine piece, at two resolutions:
+/// [`COARSE_CELLS`] cells, and [`FINE_CELLS`] ones built on first use, for where the coarse
+/// ones prove too little. (Built for every piece a stretch ends in, fine cells made the first
+/// run on a curve up to twice as costly, most of them never needed.)
 #[derive(Debug, Clone)]
-struct PieceRates {
-    cells: Vec<[Option<Iv>; 2]>,
-    prefix: Vec<[Option<Iv>; 2]>,
-    suffix: Vec<[Option<Iv>; 2]>,
+struct Cells<T> {
+    coarse: RunUnions<T>,
+    fine: OnceLock<RunUnions<T>>,
 }
 
-/// Cells per fine piece of [`BoundForms::cells`].
-const CELLS: usize = 16;
+impl<T: Union> Cells<T> {
+    fn new(coarse: RunUnions<T>) -> Self {
+        Self {
+            coarse,
+            fine: OnceLock::new(),
+        }
+    }
+
+    /// Over the whole piece.
+    fn whole(&self) -> T {
+        self.coarse.union(0, COARSE_CELLS - 1)
+    }
+
+    /// Over the coarse cells holding fine cells `c0 ..= c1`.
+    fn coarse_over(&self, c0: usize, c1: usize) -> T {
+        let per = FINE_CELLS / COARSE_CELLS;
+        self.coarse.union(c0 / per, c1 / per)
+    }
+
+    /// Over fine cells `c0 ..= c1` (`build`: all fine cells, on first use).
+    fn fine(&self, c0: usize, c1: usize, build: impl FnOnce() -> RunUnions<T>) -> T {
+        self.fine.get_or_init(build).union(c0, c1)
+    }
+}
+
+/// What Taylor models prove over the equal cells of a fine piece, at two resolutions:
+/// [`COARSE_CELLS`] cells, and [`SPLIT`] fine ones in each, built on first use. A stretch reads
+/// fine cells where it ends inside a coarse one, coarse cells in between. (A whole table of
+/// fine cells per piece proves a little more, but building it for every piece a stretch ends
+/// in made the first run on a curve up to twice as costly.)
+#[derive(Debug, Clone)]
+struct Blocks<T> {
+    coarse: RunUnions<T>,
+    /// Per coarse cell, its fine cells.
+    fine: Vec<OnceLock<Split<T>>>,
+}
+
+/// The fine cells of a coarse cell, with the unions of those from its first to each and from
+/// each to its last, and of those from the piece's start to each and from each to the piece's
+/// end (a stretch that ends in a piece reads what it covers of it at once).
+#[derive(Debug, Clone)]
+struct Split<T> {
+    cells: [T; SPLIT],
+    prefix: [T; SPLIT],
+    suffix: [T; SPLIT],
+    from_start: [T; SPLIT],
+    to_end: [T; SPLIT],
+}
+
+impl<T: Union> Split<T> {
+    /// `before`, `after`: the unions of the coarse cells before and after this one.
+    fn new(cells: [T; SPLIT], before: Option<T>, after: Option<T>) -> Self {
+        let (mut prefix, mut suffix) = (cells, cells);
+        for c in 1..SPLIT {
+            prefix[c] = prefix[c - 1].union(cells[c]);
+            suffix[SPLIT - 1 - c] = suffix[SPLIT - c].union(cells[SPLIT - 1 - c]);
+        }
+        let join = |x: T, y: Option<T>| y.map_or(x, |y| x.union(y));
+        Self {
+            cells,
+            prefix,
+            suffix,
+            from_start: prefix.map(|x| join(x, before)),
+            to_end: suffix.map(|x| join(x, after)),
+        }
+    }
+}
+
+/// Coarse cells per fine piece.
+const COARSE_CELLS: usize = 16;
+
+/// Fine cells per coarse cell. Against none, 4 take a tenth fewer instructions per run on the
+/// curve with convexities m = 4 and a quarter fewer on m = 5 and 6: the rates of the radii
+/// and the curvature beside a found pair are then tight enough for the proofs that spare a
+/// march.
+const SPLIT: usize = 4;
+
+/// Fine cells per fine piece.
+const FINE_CELLS: usize = COARSE_CELLS * SPLIT;
+
+/// The span of cell `c` of `n` equal ones of `[a, b]` (the last ends at `b` exactly).
+fn cell_span((a, b): (f64, f64), n: usize, c: usize) -> (f64, f64) {
+    let w = (b - a) / n as f64;
+    let x1 = if c + 1 == n {
+        b
+    } else {
+        a + w * (c + 1) as f64
+    };
+    (a + w * c as f64, x1)
+}
+
+impl<T: Union> Blocks<T> {
+    fn new(coarse: &[T]) -> Self {
+        Self {
+            coarse: RunUnions::new(coarse),
+            fine: (0..coarse.len()).map(|_| OnceLock::new()).collect(),
+        }
+    }
+
+    /// The union of fine cells `c0 ..= c1` (`c0 ≤ c1 < FINE_CELLS`): fine ones in the coarse
+    /// cells where the run ends part way, coarse ones elsewhere. `build(k)`: the fine cells
+    /// of coarse cell `k`.
+    fn union(&self, c0: usize, c1: usize, build: impl Fn(usize) -> [T; SPLIT]) -> T {
+        let (k0, k1) = (c0 / SPLIT, c1 / SPLIT);
+        let (r0, r1) = (c0 % SPLIT, c1 % SPLIT);
+        let last = self.fine.len() - 1;
+        let split = |k: usize| {
+            self.fine[k].get_or_init(|| {
+                let before = (k > 0).then(|| self.coarse.union(0, k - 1));
+                let after = (k < last).then(|| self.coarse.union(k + 1, last));
+                Split::new(build(k), before, after)
+            })
+        };
+        // Runs from the piece's start or to its end first (the ends of longer stretches).
+        if c1 == FINE_CELLS - 1 {
+            return match r0 {
+                0 => self.coarse.union(k0, last),
+                _ => split(k0).to_end[r0],
+            };
+        }
+        if c0 == 0 {
+            return match r1 {
+                r if r == SPLIT - 1 => self.coarse.union(0, k1),
+                _ => split(k1).from_start[r1],
+            };
+        }
+        if k0 == k1 {
+            if r0 == 0 && r1 == SPLIT - 1 {
+                return self.coarse.union(k0, k0);
+            }
+            let cells = &split(k0).cells;
+            return cells[r0 + 1..=r1]
+                .iter()
+                .fold(cells[r0], |acc, &x| acc.union(x));
+        }
+        let head = match r0 {
+            0 => self.coarse.union(k0, k0),
+            _ => split(k0).suffix[r0],
+        };
+        let tail = match r1 {
+            r if r == SPLIT - 1 => self.coarse.union(k1, k1),
+            _ => split(k1).prefix[r1],
+        };
+        let ends = head.union(tail);
+        match k1 - k0 {
+            1 => ends,
+            _ => ends.union(self.coarse.union(k0 + 1, k1 - 1)),
+        }
+    }
+}
 
 impl BoundForms {
     /// `None` when the forms are not those of a plane curve.
@@ -420,88 +568,71 @@ impl BoundForms {
             && weight
                 .as_ref()
                 .is_none_or(|e| e.breaks() == curvature.breaks());
+        let pieces = curvature.hull.len();
+        let n = if aligned { pieces } else { 0 };
         let mut forms = Self {
             curvature,
             tangent,
             weight,
             aligned,
+            kappa: Vec::new(),
             covered: Vec::new(),
-            cells: Vec::new(),
-            prefix: Vec::new(),
-            suffix: Vec::new(),
-            rates: Vec::new(),
+            rates: (0..n).map(|_| OnceLock::new()).collect(),
         };
-        if aligned {
-            let pieces = forms.curvature.hull.len();
-            forms.cells = (0..pieces * CELLS)
-                .map(|k| {
-                    let (i, c) = (k / CELLS, k % CELLS);
-                    let (a, b) = forms.curvature.pw.piece_span(i);
-                    let w = (b - a) / CELLS as f64;
-                    let x1 = if c + 1 == CELLS {
-                        b
-                    } else {
-                        a + w * (c + 1) as f64
-                    };
-                    forms.partial(i, a + w * c as f64, x1)
-                })
-                .collect();
-            let join = |a: Option<(Iv, f64)>, b: Option<(Iv, f64)>| {
-                let ((ka, va), (kb, vb)) = (a?, b?);
-                Some((Iv::new(ka.lo.min(kb.lo), ka.hi.max(kb.hi)), va.max(vb)))
-            };
-            for piece in forms.cells.chunks(CELLS) {
-                let (prefix, suffix) = running_unions(piece, join);
-                forms.prefix.extend(prefix);
-                forms.suffix.extend(suffix);
-            }
-            forms.rates = (0..pieces).map(|_| OnceLock::new()).collect();
-            forms.covered = (0..pieces)
-                .map(|i| {
-                    let w = forms
-                        .weight
-                        .as_ref()
-                        .map_or(Iv::new(1.0, 1.0), |e| e.hull[i]);
-                    let d = forms.tangent.hull[i];
-                    let hulls = quotient(forms.curvature.hull[i], d, w)?;
-                    let speed = d.hi / (w.lo * w.lo);
-                    // Both enclose the piece's curvature (and speed): keep the common part.
-                    let cells = forms.cells_range(i, 0, CELLS - 1);
-                    Some(match cells {
-                        Some((k, v)) => (
-                            Iv::new(hulls.lo.max(k.lo), hulls.hi.min(k.hi)),
-                            speed.min(v),
-                        ),
-                        None => (hulls, speed),
+        forms.kappa = (0..n)
+            .map(|i| {
+                let span = forms.curvature.pw.piece_span(i);
+                let coarse: Vec<_> = (0..COARSE_CELLS)
+                    .map(|c| {
+                        let (x0, x1) = cell_span(span, COARSE_CELLS, c);
+                        forms.partial(i, x0, x1)
                     })
-                })
-                .collect();
-        }
+                    .collect();
+                Blocks::new(&coarse)
+            })
+            .collect();
+        forms.covered = (0..n).map(|i| forms.whole_piece(i)).collect();
         Some(forms)
     }
 
-    /// The union of cells `c0 ..= c1` of fine piece `i` (`None` unless all prove `|D|` and
-    /// `w` positive).
-    fn cells_range(&self, i: usize, c0: usize, c1: usize) -> Option<(Iv, f64)> {
-        if c0 == 0 {
-            return self.prefix[i * CELLS + c1];
-        }
-        if c1 == CELLS - 1 {
-            return self.suffix[i * CELLS + c0];
-        }
-        let mut k = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
-        let mut speed = 0.0f64;
-        for cell in &self.cells[i * CELLS + c0..=i * CELLS + c1] {
-            let (r, v) = (*cell)?;
-            k = Iv::new(k.lo.min(r.lo), k.hi.max(r.hi));
-            speed = speed.max(v);
-        }
-        Some((k, speed))
+    /// The curvature and greatest speed over the fine cells of coarse cell `k` of fine piece
+    /// `i`.
+    fn fine_kappa(&self, i: usize, k: usize) -> [KappaCell; SPLIT] {
+        let span = self.curvature.pw.piece_span(i);
+        std::array::from_fn(|c| {
+            let (x0, x1) = cell_span(span, FINE_CELLS, k * SPLIT + c);
+            self.partial(i, x0, x1)
+        })
+    }
+
+    /// The curvature and greatest speed over fine piece `i`: what its hulls prove and its
+    /// coarse cells prove, in common.
+    fn whole_piece(&self, i: usize) -> KappaCell {
+        let weight = self
+            .weight
+            .as_ref()
+            .map_or(Iv::new(1.0, 1.0), |e| e.hull[i]);
+        let d = self.tangent.hull[i];
+        let hulls = quotient(self.curvature.hull[i], d, weight)?;
+        let speed = d.hi / (weight.lo * weight.lo);
+        Some(match self.kappa[i].coarse.union(0, COARSE_CELLS - 1) {
+            Some((k, v)) => (
+                Iv::new(hulls.lo.max(k.lo), hulls.hi.min(k.hi)),
+                speed.min(v),
+            ),
+            None => (hulls, speed),
+        })
+    }
+
+    /// The union of fine cells `c0 ..= c1` of fine piece `i` (`None` unless all prove `|D|`
+    /// and `w` positive).
+    fn cells_range(&self, i: usize, c0: usize, c1: usize) -> KappaCell {
+        self.kappa[i].union(c0, c1, |k| self.fine_kappa(i, k))
     }
 
     /// The curvature and greatest speed over `[x0, x1]` inside fine piece `i`: the common
     /// part of the Taylor model's range and of the quotient of the factors' ranges.
-    fn partial(&self, i: usize, x0: f64, x1: f64) -> Option<(Iv, f64)> {
+    fn partial(&self, i: usize, x0: f64, x1: f64) -> KappaCell {
         let delta = 0.5 * (x1 - x0);
         let clip = |(t, hull): (Taylor, Iv)| {
             let r = t.range(delta);
@@ -528,19 +659,15 @@ impl BoundForms {
         Some((kappa, speed))
     }
 
-    /// The ranges of `dρ/dψ` over `[x0, x1]` inside fine piece `i` (where κ ranges over
-    /// `kappa`), with κ clipped to
+    /// The ranges of `dρ/dψ` over `[x0, x1]` inside fine piece `i`, with κ clipped to
     /// negative and to positive values (indexed by `convex`): the rate at which the radius of
     /// curvature `ρ = 1/κ` changes with the tangent angle ψ, `−κ′ / (κ³ |C′|)`, with
     /// `κ′ = w² (K′w + 3Kw′) / |D|³ − 3κ |D|′ / |D|` from the Taylor models of the factors and
     /// their derivatives. Where κ may reach zero on its side (an inflection ending a piece) the
     /// rate is unbounded on the side the signs of κ and κ′ give. `None` where nothing is
     /// proven (or κ has no values of that sign).
-    fn rho_rates(&self, i: usize, x0: f64, x1: f64, kappa: Option<Iv>) -> [Option<Iv>; 2] {
+    fn rho_rates(&self, i: usize, x0: f64, x1: f64) -> [Option<Iv>; 2] {
         let none = [None, None];
-        let Some(kappa) = kappa else {
-            return none;
-        };
         let delta = 0.5 * (x1 - x0);
         let value = |(t, hull, slope): (Taylor, Iv, Iv)| {
             let r = t.range(delta);
@@ -554,12 +681,28 @@ impl BoundForms {
             return none;
         };
         let ((k, k1), (d, d1)) = (value(km), value(dm));
-        let (w, w1) = match &self.weight {
+        let (w, w1, tw) = match &self.weight {
             Some(e) => match e.taylor_slope(i, x0, x1) {
-                Some(m) => value(m),
+                Some(m) => {
+                    let (w, w1) = value(m);
+                    (w, w1, m.0)
+                }
                 None => return none,
             },
-            None => (Iv::new(1.0, 1.0), Iv::new(0.0, 0.0)),
+            None => (Iv::new(1.0, 1.0), Iv::new(0.0, 0.0), Taylor::constant(1.0)),
+        };
+        // κ = K w³ / |D|³ over the stretch (as `partial`, from the same models): its Taylor
+        // model's range within the quotient of the factors' ranges.
+        let Some(ranges) = quotient(k, d, w) else {
+            return none;
+        };
+        let kappa = match dm.0.recip(delta) {
+            Some(inv) => {
+                let t = km.0.mul(tw.cube(delta), delta).mul(inv.cube(delta), delta);
+                let r = t.range(delta).widened(MARGIN);
+                Iv::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
+            }
+            None => ranges,
         };
         let Some(inv_d) = d.recip() else {
             return none;
@@ -604,57 +747,35 @@ impl BoundForms {
         })
     }
 
-    /// The rates of fine piece `i` over its [`CELLS`] cells, built on first use.
-    fn piece_rates(&self, i: usize) -> Option<&PieceRates> {
-        let slot = self.rates.get(i)?;
-        slot.get_or_init(|| {
-            let (a, b) = self.curvature.pw.piece_span(i);
-            let w = (b - a) / CELLS as f64;
-            let cells: Vec<[Option<Iv>; 2]> = (0..CELLS)
-                .map(|c| {
-                    let x1 = if c + 1 == CELLS {
-                        b
-                    } else {
-                        a + w * (c + 1) as f64
-                    };
-                    // (The cell's curvature is known already.)
-                    let kappa = self.cells[i * CELLS + c].map(|(k, _)| k);
-                    self.rho_rates(i, a + w * c as f64, x1, kappa)
-                })
-                .collect();
-            let join = |x: [Option<Iv>; 2], y: [Option<Iv>; 2]| {
-                [0, 1].map(|k| {
-                    let (p, q) = (x[k]?, y[k]?);
-                    Some(Iv::new(p.lo.min(q.lo), p.hi.max(q.hi)))
-                })
-            };
-            let (prefix, suffix) = running_unions(&cells, join);
-            Some(PieceRates {
-                cells,
-                prefix,
-                suffix,
+    /// The rates of the radius of curvature over `n` equal cells of fine piece `i`.
+    fn rate_cells(&self, i: usize, n: usize) -> RunUnions<[Option<Iv>; 2]> {
+        let span = self.curvature.pw.piece_span(i);
+        let cells: Vec<_> = (0..n)
+            .map(|c| {
+                let (x0, x1) = cell_span(span, n, c);
+                self.rho_rates(i, x0, x1)
             })
-        })
-        .as_ref()
+            .collect();
+        RunUnions::new(&cells)
     }
 
-    /// The range of `dρ/dψ` over the cells `c0 ..= c1` of fine piece `i` (κ of the sign
-    /// `convex` gives).
-    fn cells_rho_rate(&self, i: usize, c0: usize, c1: usize, convex: bool) -> Option<Iv> {
-        let r = self.piece_rates(i)?;
-        let k = usize::from(convex);
-        if c0 == 0 {
-            return r.prefix[c1][k];
-        }
-        if c1 == CELLS - 1 {
-            return r.suffix[c0][k];
-        }
-        let mut acc = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
-        for cell in &r.cells[c0..=c1] {
-            let x = cell[k]?;
-            acc = Iv::new(acc.lo.min(x.lo), acc.hi.max(x.hi));
-        }
-        Some(acc)
+    /// The range of `dρ/dψ` over fine piece `i`, or over its fine cells `c0 ..= c1` (κ of
+    /// the sign `convex` gives), from the coarse cells holding them unless `fine`.
+    fn cells_rho_rate(
+        &self,
+        i: usize,
+        cells: Option<(usize, usize)>,
+        convex: bool,
+        fine: bool,
+    ) -> Option<Iv> {
+        let rates = self.rates.get(i)?;
+        let rates = rates.get_or_init(|| Cells::new(self.rate_cells(i, COARSE_CELLS)));
+        let r = match cells {
+            None => rates.whole(),
+            Some((c0, c1)) if fine => rates.fine(c0, c1, || self.rate_cells(i, FINE_CELLS)),
+            Some((c0, c1)) => rates.coarse_over(c0, c1),
+        };
+        r[usize::from(convex)]
     }
 
     /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
@@ -688,7 +809,7 @@ impl BoundForms {
                 }
             };
             speed = speed.max(v);
-            *acc = Iv::new(acc.lo.min(kappa.lo), acc.hi.max(kappa.hi));
+            *acc = acc.hull(kappa);
         }
         Some(speed)
     }
@@ -704,7 +825,7 @@ impl BoundForms {
             e.join_range(lo, hi, &mut w);
         }
         let q = quotient(k, d, w)?;
-        *acc = Iv::new(acc.lo.min(q.lo), acc.hi.max(q.hi));
+        *acc = acc.hull(q);
         Some(d.hi / (w.lo * w.lo))
     }
 }
@@ -712,19 +833,70 @@ impl BoundForms {
 /// The cell of a fine piece spanning `(a, b)` that holds `x` (the first or last for `x`
 /// outside). (On values clamped to be non-negative, the conversion's truncation is the floor.)
 fn cell_of(x: f64, (a, b): (f64, f64)) -> usize {
-    (((x - a) / (b - a) * CELLS as f64).max(0.0) as usize).min(CELLS - 1)
+    (((x - a) / (b - a) * FINE_CELLS as f64).max(0.0) as usize).min(FINE_CELLS - 1)
 }
 
-/// The unions of a piece's cells from its first to each (`prefix`) and from each to its last
-/// (`suffix`), by `join`.
-fn running_unions<T: Copy>(cells: &[T], join: impl Fn(T, T) -> T) -> (Vec<T>, Vec<T>) {
-    let (mut prefix, mut suffix) = (cells.to_vec(), cells.to_vec());
-    for c in 1..cells.len() {
-        prefix[c] = join(prefix[c - 1], cells[c]);
-        let r = cells.len() - 1 - c;
-        suffix[r] = join(suffix[r + 1], cells[r]);
+/// The unions of every run of `2ᵏ` neighbouring cells of a piece (a sparse table): the union
+/// of any run `c0 ..= c1` is that of two such runs, read in constant time however many cells
+/// it spans.
+#[derive(Debug, Clone)]
+struct RunUnions<T> {
+    /// Level `k` (`len` entries each, the last `2ᵏ − 1` unused): the union of cells
+    /// `c .. c + 2ᵏ`.
+    levels: Vec<T>,
+    len: usize,
+}
+
+/// What a stretch's Taylor models prove about the curvature: its range and the greatest
+/// speed (`None` where they do not prove `|D|` and `w` positive).
+type KappaCell = Option<(Iv, f64)>;
+
+/// What a cell proves, joined with another cell's: what both together prove.
+trait Union: Copy {
+    fn union(self, other: Self) -> Self;
+}
+
+/// A cell's curvature and greatest speed (`None` where `|D|` or `w` is not proven positive).
+impl Union for KappaCell {
+    fn union(self, other: Self) -> Self {
+        let ((ka, va), (kb, vb)) = (self?, other?);
+        Some((ka.hull(kb), va.max(vb)))
     }
-    (prefix, suffix)
+}
+
+/// A cell's rates of the radius of curvature, with κ negative and positive.
+impl Union for [Option<Iv>; 2] {
+    fn union(self, other: Self) -> Self {
+        [0, 1].map(|k| Some(self[k]?.hull(other[k]?)))
+    }
+}
+
+impl<T: Union> RunUnions<T> {
+    fn new(cells: &[T]) -> Self {
+        let len = cells.len();
+        let mut levels = cells.to_vec();
+        let mut width = 1;
+        while 2 * width <= len {
+            let base = levels.len() - len;
+            for c in 0..len {
+                let x = match c + width < len {
+                    true => levels[base + c].union(levels[base + c + width]),
+                    false => levels[base + c],
+                };
+                levels.push(x);
+            }
+            width *= 2;
+        }
+        Self { levels, len }
+    }
+
+    /// The union of cells `c0 ..= c1` (`c0 ≤ c1 < len`): that of the two runs of `2ᵏ` cells
+    /// starting at `c0` and ending at `c1` (the same run twice where one is enough).
+    fn union(&self, c0: usize, c1: usize) -> T {
+        let k = (usize::BITS - 1 - (c1 + 1 - c0).leading_zeros()) as usize;
+        let base = k * self.len;
+        self.levels[base + c0].union(self.levels[base + c1 + 1 - (1 << k)])
+    }
 }
 
 /// Relative room for the rounding of the coefficients the ranges were read from and of the
@@ -800,7 +972,7 @@ impl View<'_> {
     /// interval `[lo, hi]` of a monotone piece (`convex`: of positive curvature), from the
     /// cells it touches; `None` for a curve without symbolic forms, or where nothing is
     /// proven.
-    pub(crate) fn arc_rho_rate(&self, lo: f64, hi: f64, convex: bool) -> Option<Iv> {
+    pub(crate) fn arc_rho_rate(&self, lo: f64, hi: f64, convex: bool, fine: bool) -> Option<Iv> {
         let forms = self.cert.as_ref()?.bound_forms()?;
         if !forms.aligned {
             return None;
@@ -812,8 +984,10 @@ impl View<'_> {
             let ends = (pw.piece_at(x0), pw.piece_at(x1));
             for (i, y0, y1) in pw.overlaps_of(x0, x1, ends) {
                 let span = pw.piece_span(i);
-                let r = forms.cells_rho_rate(i, cell_of(y0, span), cell_of(y1, span), convex)?;
-                acc = Iv::new(acc.lo.min(r.lo), acc.hi.max(r.hi));
+                let whole = y0 <= span.0 && y1 >= span.1;
+                let cells = (!whole).then(|| (cell_of(y0, span), cell_of(y1, span)));
+                let r = forms.cells_rho_rate(i, cells, convex, fine)?;
+                acc = acc.hull(r);
             }
         }
         (acc.lo <= acc.hi).then_some(acc)
@@ -916,6 +1090,78 @@ mod tests {
                 prop_assert_eq!(cone_inside(cone_ends(&c), axis), pointwise);
             }
         }
+    }
+
+    /// Random cells of one piece: fine ones, and coarse ones holding their fine cells
+    /// (widened by random amounts, as coarse Taylor models are), each with a speed.
+    fn random_cells(seed: &[(f64, f64, f64)], widen: &[f64]) -> (Vec<KappaCell>, Vec<KappaCell>) {
+        let fine: Vec<_> = (0..FINE_CELLS)
+            .map(|c| {
+                let (a, b, v) = seed[c % seed.len()];
+                let shift = c as f64 * 0.01;
+                Some((Iv::new(a.min(b) + shift, a.max(b) + shift), v))
+            })
+            .collect();
+        let coarse = fine
+            .chunks(SPLIT)
+            .zip(widen.iter().cycle())
+            .map(|(cells, &w)| {
+                let (k, v) = cells[1..].iter().fold(cells[0], |a, &x| a.union(x))?;
+                Some((Iv::new(k.lo - w, k.hi + w), v + w))
+            })
+            .collect();
+        (fine, coarse)
+    }
+
+    proptest! {
+        /// The sparse table's union of any run of cells is the union of its cells, one by one.
+        /// The two-level cells' union of a run of fine cells holds the union of those cells,
+        /// and lies within the union of the coarse cells that hold them: built lazily, it is
+        /// sound and never looser than the coarse cells alone.
+        #[test]
+        fn unions_of_runs_of_cells(
+            seed in proptest::collection::vec((-3.0f64..3.0, -3.0f64..3.0, 0.0f64..5.0), FINE_CELLS),
+            widen in proptest::collection::vec(0.0f64..0.1, COARSE_CELLS),
+            runs in proptest::collection::vec((0usize..FINE_CELLS, 0usize..FINE_CELLS), 1..40),
+        ) {
+            let (fine, coarse) = random_cells(&seed, &widen);
+            let exact = |c0: usize, c1: usize, cells: &[KappaCell]| {
+                cells[c0 + 1..=c1].iter().fold(cells[c0], |a, &x| a.union(x))
+            };
+            let table = RunUnions::new(&fine);
+            let blocks = Blocks::new(&coarse);
+            let built = std::cell::Cell::new(0usize);
+            for &(x, y) in &runs {
+                let (c0, c1) = (x.min(y), x.max(y));
+                prop_assert_eq!(table.union(c0, c1), exact(c0, c1, &fine));
+                let got = blocks.union(c0, c1, |k| {
+                    built.set(built.get() + 1);
+                    std::array::from_fn(|c| fine[k * SPLIT + c])
+                });
+                let ((g, gv), (want, wv)) = (got.unwrap(), exact(c0, c1, &fine).unwrap());
+                prop_assert!(g.lo <= want.lo && g.hi >= want.hi && gv >= wv, "{:?} misses {:?}", g, want);
+                let (outer, ov) = exact(c0 / SPLIT, c1 / SPLIT, &coarse).unwrap();
+                prop_assert!(g.lo >= outer.lo && g.hi <= outer.hi && gv <= ov, "{:?} beyond {:?}", g, outer);
+            }
+            // Each coarse cell's fine cells are built once at most.
+            prop_assert!(built.get() <= COARSE_CELLS);
+        }
+    }
+
+    /// A cell that proves nothing (`None`) makes every union over it prove nothing.
+    #[test]
+    fn unions_over_a_cell_without_proof_prove_nothing() {
+        let (mut fine, mut coarse) = random_cells(&[(0.0, 1.0, 1.0), (-1.0, 2.0, 3.0)], &[0.5]);
+        fine[21] = None;
+        coarse[21 / SPLIT] = None;
+        let (table, blocks) = (RunUnions::new(&fine), Blocks::new(&coarse));
+        let build = |k: usize| std::array::from_fn(|c| fine[k * SPLIT + c]);
+        for (c0, c1) in [(0, 63), (21, 21), (20, 22), (3, 40), (0, 21), (21, 63)] {
+            assert_eq!(table.union(c0, c1), None, "{c0}..{c1}");
+            assert_eq!(blocks.union(c0, c1, build), None, "{c0}..{c1}");
+        }
+        assert!(blocks.union(22, 63, build).is_some());
+        assert!(table.union(0, 20).is_some());
     }
 
     fn inside(x: f64, iv: Iv) -> bool {

@@ -23,6 +23,7 @@ fn polar_jet_cs(s: f64, c: f64, r: [f64; 4]) -> Jet {
 }
 
 /// [`polar_jet_cs`] up to derivative `order` (higher ones left zero).
+#[inline]
 fn polar_jet_to(s: f64, c: f64, r: [f64; 4], order: usize) -> Jet {
     let [r0, r1, r2, r3] = r;
     let mut j = Jet {
@@ -85,6 +86,7 @@ impl CircleShape {
 /// `V = (cos ψ / a, sin ψ / b)`, with derivatives in ψ up to `order`: `V″ = −V`, so with
 /// `q = |V|²`: `q′ = 2V·V′`, `q″ = 2(|V′|² − q)`, `q‴ = −4q′`, and `Pq = V` differentiated
 /// gives each derivative of `P` from the lower ones (one division).
+#[inline]
 fn inverted_ellipse_jet(a: f64, b: f64, s: f64, c: f64, order: usize) -> Jet {
     let v = V2::new(c / a, s / b);
     let v1 = V2::new(-s / a, c / b);
@@ -120,6 +122,7 @@ fn ellipse_jet(a: f64, b: f64, center: V2, s: f64, c: f64) -> Jet {
 
 /// `r(φ) = p / (1 + ε cos mφ)` from the sines and cosines of φ and mφ, up to `order`.
 #[allow(clippy::too_many_arguments)] // the shape's three parameters and two angles
+#[inline]
 fn convexities_jet(p: f64, e: f64, m: u32, s: f64, c: f64, sm: f64, cm: f64, order: usize) -> Jet {
     let m = m as f64;
     // h = 1 + ε cos mφ and r = p/h: with k = h′/h and gⱼ = h⁽ʲ⁾/h (one division),

@@ -337,9 +337,11 @@ impl<'a> View<'a> {
         u
     }
 
+    #[inline]
     pub(crate) fn point(&self, u: f64) -> V2 {
         self.jet_to(u, 0).p
     }
+    #[inline]
     pub(crate) fn normal(&self, u: f64) -> V2 {
         self.jet_to(u, 1).normal()
     }

@@ -581,14 +581,7 @@ impl BoundForms {
         };
         forms.kappa = (0..n)
             .map(|i| {
-                let span = forms.curvature.pw.piece_span(i);
-                let coarse: Vec<_> = (0..COARSE_CELLS)
-                    .map(|c| {
-                        let (x0, x1) = cell_span(span, COARSE_CELLS, c);
-                        forms.partial(i, x0, x1)
-                    })
-                    .collect();
-                Blocks::new(&coarse)
+                Blocks::new(&forms.over_cells(i, COARSE_CELLS, |x0, x1| forms.partial(i, x0, x1)))
             })
             .collect();
         forms.covered = (0..n).map(|i| forms.whole_piece(i)).collect();
@@ -749,14 +742,18 @@ impl BoundForms {
 
     /// The rates of the radius of curvature over `n` equal cells of fine piece `i`.
     fn rate_cells(&self, i: usize, n: usize) -> RunUnions<[Option<Iv>; 2]> {
+        RunUnions::new(&self.over_cells(i, n, |x0, x1| self.rho_rates(i, x0, x1)))
+    }
+
+    /// `cell(x0, x1)` over each of `n` equal cells `[x0, x1]` of fine piece `i`.
+    fn over_cells<T>(&self, i: usize, n: usize, cell: impl Fn(f64, f64) -> T) -> Vec<T> {
         let span = self.curvature.pw.piece_span(i);
-        let cells: Vec<_> = (0..n)
+        (0..n)
             .map(|c| {
                 let (x0, x1) = cell_span(span, n, c);
-                self.rho_rates(i, x0, x1)
+                cell(x0, x1)
             })
-            .collect();
-        RunUnions::new(&cells)
+            .collect()
     }
 
     /// The range of `dρ/dψ` over fine piece `i`, or over its fine cells `c0 ..= c1` (κ of

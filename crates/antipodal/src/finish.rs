@@ -139,13 +139,15 @@ pub(crate) fn clear_by_rates(p: &Pair, a: (f64, f64), b: (f64, f64), th: (f64, f
     let least = |r: Iv| if sigma > 0.0 { r.lo } else { -r.hi };
     // (T's least is at most its value at either end.)
     let cap_t = (sigma * rates_t[0]).min(sigma * rates_t[1]);
+    // (NaN fails too.)
+    let above_zero = |x: f64| x > 0.0;
     // From coarse cells first; where they fail, from fine ones (built on first use: most
     // stretches need none).
     let proven = [false, true].into_iter().any(|fine| {
         let Some(fs) = p.vs.arc_rho_rate(a.0, b.0, p.s_convex, fine) else {
             return false;
         };
-        if least(fs) + cap_t <= 0.0 || least(fs).is_nan() {
+        if !above_zero(least(fs) + cap_t) {
             return false;
         }
         let Some(ft) = p.vt.arc_rho_rate(a.1, b.1, p.t_convex, fine) else {

@@ -23,6 +23,7 @@
 //! ones stay sampled).
 
 mod bounds;
+mod cells;
 mod circle;
 mod curve;
 mod dissect;

@@ -230,11 +230,29 @@ impl Bezier {
     /// this is the value at `u`; with knots as arguments it gives B-spline coefficients.
     pub fn blossom(&self, args: &[f64], out: &mut [f64]) {
         let d = self.dim;
-        let mut w: smallvec::SmallVec<[f64; 64]> = self.coefs.iter().copied().collect();
-        let h = self.b - self.a;
-        for (level, &u) in args.iter().enumerate() {
-            let s = (u - self.a) / h;
-            for k in 0..self.degree - level {
+        let (a, b) = (self.a, self.b);
+        // An argument at an end of the interval acts by index alone (de Casteljau's step with
+        // s = 0 keeps the points and drops the last, with s = 1 drops the first), and these
+        // steps commute with the others exactly: applied first, they leave a shorter de
+        // Casteljau on the other arguments, with the same result. (B-spline coefficients of a
+        // product are blossoms at knots, most of them at the ends of the piece.)
+        let (at_a, at_b) = match a < b {
+            true => (
+                args.iter().filter(|&&u| u == a).count(),
+                args.iter().filter(|&&u| u == b).count(),
+            ),
+            false => (0, 0),
+        };
+        let (first, last) = (at_b, self.degree - at_a);
+        let mut w: smallvec::SmallVec<[f64; 64]> = self.coefs[first * d..(last + 1) * d]
+            .iter()
+            .copied()
+            .collect();
+        let h = b - a;
+        let inner = args.iter().filter(|&&u| !(a < b && (u == a || u == b)));
+        for (level, &u) in inner.enumerate() {
+            let s = (u - a) / h;
+            for k in 0..last - first - level {
                 for c in 0..d {
                     w[k * d + c] = (1.0 - s) * w[k * d + c] + s * w[(k + 1) * d + c];
                 }

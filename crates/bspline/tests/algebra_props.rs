@@ -217,3 +217,53 @@ proptest! {
         }
     }
 }
+
+/// The blossom the long way: de Casteljau with each argument in turn, over all points.
+fn blossom_by_de_casteljau(p: &bspline::Bezier, args: &[f64]) -> Vec<f64> {
+    let d = p.dim;
+    let mut w = p.coefs.clone();
+    for (level, &u) in args.iter().enumerate() {
+        let s = (u - p.a) / (p.b - p.a);
+        for k in 0..p.degree - level {
+            for c in 0..d {
+                w[k * d + c] = (1.0 - s) * w[k * d + c] + s * w[(k + 1) * d + c];
+            }
+        }
+    }
+    w[..d].to_vec()
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The blossom, which applies arguments at the interval's ends by index, equals de
+    /// Casteljau over every argument in turn exactly, whatever mix of ends and inner
+    /// arguments (in any order) it is given.
+    #[test]
+    fn blossom_matches_de_casteljau(
+        degree in 1usize..=12,
+        dim in 1usize..=3,
+        ends in (-3.0f64..3.0, 0.01f64..4.0),
+        coefs in proptest::collection::vec(-5.0f64..5.0, 39),
+        picks in proptest::collection::vec((0u8..3, 0.0f64..1.0), 12),
+    ) {
+        let (a, b) = (ends.0, ends.0 + ends.1);
+        let p = bspline::Bezier { a, b, degree, dim, coefs: coefs[..(degree + 1) * dim].to_vec() };
+        // Each argument: the start, the end, or a point inside or beyond the interval.
+        let args: Vec<f64> = picks[..degree]
+            .iter()
+            .map(|&(kind, x)| match kind {
+                0 => a,
+                1 => b,
+                _ => a + (b - a) * (2.0 * x - 0.5),
+            })
+            .collect();
+        let mut out = vec![0.0; dim];
+        p.blossom(&args, &mut out);
+        let want = blossom_by_de_casteljau(&p, &args);
+        for c in 0..dim {
+            // (Exactly equal: the index steps are exact, and the other steps the same.)
+            prop_assert!(out[c] == want[c], "{:?} vs {:?} at {:?}", out, want, args);
+        }
+    }
+}

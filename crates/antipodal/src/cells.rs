@@ -7,8 +7,8 @@ use std::sync::OnceLock;
 
 /// What Taylor models prove over the equal cells of a fine piece, at two resolutions:
 /// [`COARSE_CELLS`] cells, and [`FINE_CELLS`] ones built on first use, for where the coarse
-/// ones prove too little. (Built for every piece a stretch ends in, fine cells made the first
-/// run on a curve up to twice as costly, most of them never needed.)
+/// ones prove too little. (Built for every piece a stretch ends in, the fine rates of the radii
+/// made the first run on the ellipse a third more costly, most of them never needed.)
 #[derive(Debug, Clone)]
 pub(crate) struct Cells<T> {
     coarse: RunUnions<T>,
@@ -44,7 +44,7 @@ impl<T: Union> Cells<T> {
 /// [`COARSE_CELLS`] cells, and [`SPLIT`] fine ones in each, built on first use. A stretch reads
 /// fine cells where it ends inside a coarse one, coarse cells in between. (A whole table of
 /// fine cells per piece proves a little more, but building it for every piece a stretch ends
-/// in made the first run on a curve up to twice as costly.)
+/// in made the first run on a curve up to half as costly again, on the limaçon.)
 #[derive(Debug, Clone)]
 pub(crate) struct Blocks<T> {
     coarse: RunUnions<T>,

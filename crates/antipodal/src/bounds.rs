@@ -479,19 +479,8 @@ impl BoundForms {
             Some(e) => clip(e.taylor(i, x0, x1)?),
             None => (Taylor::constant(1.0), Iv::new(1.0, 1.0)),
         };
-        let ranges = quotient(k, d, w)?;
-        let speed = d.hi / (w.lo * w.lo);
-        let model = td
-            .recip(delta)
-            .map(|inv| tk.mul(tw.cube(delta), delta).mul(inv.cube(delta), delta));
-        let kappa = match model {
-            Some(t) => {
-                let r = t.range(delta).widened(MARGIN);
-                Iv::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
-            }
-            None => ranges,
-        };
-        Some((kappa, speed))
+        let kappa = kappa_from([tk, td, tw], [k, d, w], delta)?;
+        Some((kappa, d.hi / (w.lo * w.lo)))
     }
 
     /// The ranges of `dρ/dψ` over `[x0, x1]` inside fine piece `i`, with κ clipped to
@@ -526,26 +515,13 @@ impl BoundForms {
             },
             None => (Iv::new(1.0, 1.0), Iv::new(0.0, 0.0), Taylor::constant(1.0)),
         };
-        // κ = K w³ / |D|³ over the stretch (as `partial`, from the same models): its Taylor
-        // model's range within the quotient of the factors' ranges.
-        let Some(ranges) = quotient(k, d, w) else {
+        // (From the same models as the rates; `None` unless |D| and w are proven positive.)
+        let Some(kappa) = kappa_from([km.0, dm.0, tw], [k, d, w], delta) else {
             return none;
-        };
-        let kappa = match dm.0.recip(delta) {
-            Some(inv) => {
-                let t = km.0.mul(tw.cube(delta), delta).mul(inv.cube(delta), delta);
-                let r = t.range(delta).widened(MARGIN);
-                Iv::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
-            }
-            None => ranges,
         };
         let Some(inv_d) = d.recip() else {
             return none;
         };
-        let positive_weight = w.lo > 0.0;
-        if !positive_weight {
-            return none;
-        }
         let speed = Iv::new(d.lo / (w.hi * w.hi), d.hi / (w.lo * w.lo));
         let three = Iv::new(3.0, 3.0);
         let scaled = w.mul(w).mul(k1.mul(w).add(three.mul(k).mul(w1)));
@@ -691,6 +667,23 @@ impl Union for [Option<Iv>; 2] {
 /// Relative room for the rounding of the coefficients the ranges were read from and of the
 /// operations that combine them.
 const MARGIN: f64 = 1e-12;
+
+/// The curvature `κ = K w³ / |D|³` over a stretch of half-width `delta`: the range of its
+/// Taylor model, from the models `[K, |D|, w]`, within the quotient of the factors' ranges
+/// `[k, d, w]`. `None` unless `|D|` and `w` are proven positive.
+fn kappa_from([tk, td, tw]: [Taylor; 3], [k, d, w]: [Iv; 3], delta: f64) -> Option<Iv> {
+    let ranges = quotient(k, d, w)?;
+    let model = td
+        .recip(delta)
+        .map(|inv| tk.mul(tw.cube(delta), delta).mul(inv.cube(delta), delta));
+    Some(match model {
+        Some(t) => {
+            let r = t.range(delta).widened(MARGIN);
+            Iv::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
+        }
+        None => ranges,
+    })
+}
 
 /// `K w³ / |D|³` from the ranges of its factors; `None` unless `|D|` and `w` are positive.
 fn quotient(k: Iv, d: Iv, w: Iv) -> Option<Iv> {

@@ -30,8 +30,7 @@ impl<T: Union> Cells<T> {
 
     /// Over the coarse cells holding fine cells `c0 ..= c1`.
     pub(crate) fn coarse_over(&self, c0: usize, c1: usize) -> T {
-        let per = FINE_CELLS / COARSE_CELLS;
-        self.coarse.union(c0 / per, c1 / per)
+        self.coarse.union(c0 / SPLIT, c1 / SPLIT)
     }
 
     /// Over fine cells `c0 ..= c1` (`build`: all fine cells, on first use).

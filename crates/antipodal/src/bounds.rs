@@ -763,8 +763,7 @@ impl View<'_> {
         let (lo, hi) = (lo.min(hi), lo.max(hi));
         let mut acc = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
-            let ends = (pw.piece_at(x0), pw.piece_at(x1));
-            for (i, y0, y1) in pw.overlaps_of(x0, x1, ends) {
+            for (i, y0, y1) in pw.overlaps(x0, x1) {
                 let span = pw.piece_span(i);
                 let whole = y0 <= span.0 && y1 >= span.1;
                 let cells = (!whole).then(|| (cell_of(y0, span), cell_of(y1, span)));

@@ -625,18 +625,44 @@ pub(crate) mod tests {
         (r1 - r0) / da
     }
 
-    /// Runs `check` on the dissection of a random closed B-spline or NURBS (a star from
-    /// `seed`, rational with the weights `w`), or, given `bumps = (ε, m)`, of a curve with
-    /// convexities on its circle form; nothing when the curve is rejected.
-    fn on_random_curve(
+    /// A random closed B-spline or NURBS (a star of degree `deg` from `seed`, rational with
+    /// the weights `w` when `rational`), or, given `bumps = (ε, m)`, a curve with convexities
+    /// on its circle form.
+    #[derive(Debug, Clone)]
+    struct RandomCurve {
         deg: usize,
-        seed: &[f64],
-        w: &[f64],
+        seed: Vec<f64>,
+        w: Vec<f64>,
         rational: bool,
         bumps: Option<(f64, u32)>,
+    }
+
+    prop_compose! {
+        /// The curves the rate properties run on.
+        fn random_curve()(
+            deg in 3usize..=5,
+            seed in proptest::collection::vec(0.0f64..1.0, 12..=30),
+            w in proptest::collection::vec(0.5f64..2.0, 15),
+            rational in any::<bool>(),
+            bumps in proptest::option::of((0.1f64..0.6, 3u32..=6)),
+        ) -> RandomCurve {
+            RandomCurve { deg, seed, w, rational, bumps }
+        }
+    }
+
+    /// Runs `check` on the dissection of `curve`; nothing when the curve is rejected.
+    fn on_random_curve(
+        curve: &RandomCurve,
         check: impl FnOnce(&crate::driver::Prepared) -> Result<(), TestCaseError>,
     ) -> Result<(), TestCaseError> {
-        let star = star_curve(deg, seed, rational.then_some(w));
+        let RandomCurve {
+            deg,
+            seed,
+            w,
+            rational,
+            bumps,
+        } = curve;
+        let star = star_curve(*deg, seed, rational.then_some(&w[..]));
         let bumpy = bumps.map(|(eps, m)| crate::shapes::Convexities::new(4.0, eps, m).unwrap());
         let on_circle = bumpy.as_ref().and_then(|b| crate::circle::OnCircle::new(b));
         let c: &dyn crate::curve::PlaneCurve = match &on_circle {
@@ -656,14 +682,10 @@ pub(crate) mod tests {
         /// closed B-splines and NURBS, and of curves with convexities on their circle form,
         /// holds the rate found by differences at points inside.
         fn rho_rate_enclosure_holds_differences(
-            deg in 3usize..=5,
-            seed in proptest::collection::vec(0.0f64..1.0, 12..=30),
-            w in proptest::collection::vec(0.5f64..2.0, 15),
-            rational in any::<bool>(),
-            bumps in proptest::option::of((0.1f64..0.6, 3u32..=6)),
+            curve in random_curve(),
             picks in proptest::collection::vec((0.0f64..1.0, 0.01f64..1.0, any::<bool>()), 3),
         ) {
-            on_random_curve(deg, &seed, &w, rational, bumps, |prep| {
+            on_random_curve(&curve, |prep| {
                 let v = &prep.view;
                 for piece in &prep.pieces {
                     for &(f, len, fine) in &picks {
@@ -695,14 +717,10 @@ pub(crate) mod tests {
         /// Wherever θ is proven of one sign by the rates on random stretches of random pairs,
         /// dense sampling (opposite points by bisection) finds it of that sign.
         fn cleared_by_rates_stretches_hold_no_pair(
-            deg in 3usize..=5,
-            seed in proptest::collection::vec(0.0f64..1.0, 12..=30),
-            w in proptest::collection::vec(0.5f64..2.0, 15),
-            rational in any::<bool>(),
-            bumps in proptest::option::of((0.1f64..0.6, 3u32..=6)),
+            curve in random_curve(),
             picks in proptest::collection::vec((0.0f64..1.0, 0.02f64..1.0), 4),
         ) {
-            on_random_curve(deg, &seed, &w, rational, bumps, |prep| {
+            on_random_curve(&curve, |prep| {
                 let (v, pieces) = (&prep.view, &prep.pieces);
                 for i in 0..pieces.len() {
                     for j in i + 1..pieces.len() {
@@ -752,13 +770,9 @@ pub(crate) mod tests {
         /// At the end of a monotone piece on an inflection, dρ/dψ has the sign of its limit
         /// from inside the piece, whatever sign rounding leaves κ there.
         fn rate_at_inflection_ends_has_its_limit_sign(
-            deg in 3usize..=5,
-            seed in proptest::collection::vec(0.0f64..1.0, 12..=30),
-            w in proptest::collection::vec(0.5f64..2.0, 15),
-            rational in any::<bool>(),
-            bumps in proptest::option::of((0.1f64..0.6, 3u32..=6)),
+            curve in random_curve(),
         ) {
-            on_random_curve(deg, &seed, &w, rational, bumps, |prep| {
+            on_random_curve(&curve, |prep| {
                 let v = &prep.view;
                 for piece in &prep.pieces {
                     let len = piece.hi - piece.lo;

@@ -1,4 +1,4 @@
-//! The `curvekit` command-line tool (see `interfaces.md`, "Command-line tool").
+//! The `curvekit` command-line tool (see `docs/interfaces.md`, "Command-line tool").
 //!
 //! Exit status: 0 success, 2 bad input or usage (one line on stderr), 1 anything else.
 

@@ -1,4 +1,4 @@
-//! Curve files (see `interfaces.md`, "Curve files"): JSON text → a validated [`Curve`].
+//! Curve files (see `docs/interfaces.md`, "Curve files"): JSON text → a validated [`Curve`].
 //!
 //! The reader walks the JSON value itself instead of deriving `Deserialize`, so that every error
 //! can name the exact field (`points[3][1]`, `knots[5]`), which serde's messages cannot. Unknown

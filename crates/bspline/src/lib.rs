@@ -10,22 +10,30 @@
 //!   homogeneous curves, rows of tensor-product coefficients).
 //! - [`Rational`]: NURBS curves in homogeneous form.
 //! - [`symbolic`]: curvature numerators and the sign functions of Jia's primitives.
-//! - [`roots`]: certified root isolation.
+//! - [`Piecewise`]: the piecewise Bézier form every certified decision reads, with a bound on
+//!   the error of its coefficients; its algebra and evaluation.
+//! - [`rounding`]: the one rounding model behind those bounds.
+//! - [`roots`]: certified root counting and isolation.
+//! - [`solve`]: the one bracketed solver.
 //! - [`shapes`]: exact rational forms of the circle, ellipse, limaçon and convexities.
 //! - [`tensor`]: bivariate tensor-product functions `F(t, r)`.
 
 mod algebra;
 mod error;
 pub mod knots;
+mod piecewise;
 mod rational;
 mod refine;
 pub mod roots;
+pub mod rounding;
 pub mod shapes;
+pub mod solve;
 mod spline;
 pub mod symbolic;
 pub mod tensor;
 
 pub use error::{Error, Result};
+pub use piecewise::{Piecewise, ValueSlope, JUMP};
 pub use rational::Rational;
 pub use refine::Bezier;
 pub use spline::{clamped_uniform_knots, BSpline};

@@ -13,10 +13,14 @@ use smallvec::SmallVec;
 pub struct Rational {
     hom: BSpline,
     rational: bool,
+    /// Bound on the error of the homogeneous coefficients against the curve they stand for
+    /// (the rounding of `w·x`).
+    err: f64,
 }
 
 impl Rational {
-    /// A curve from control points of dimension `dim` and optional positive weights.
+    /// A curve from control points of dimension `dim` and optional positive weights. Weights
+    /// that are all equal leave a polynomial curve (the same curve, with its points exact).
     ///
     /// ```
     /// use bspline::{BSpline, Rational};
@@ -45,6 +49,9 @@ impl Rational {
                 value: w[index],
             });
         }
+        if w.iter().all(|&x| x == w[0]) {
+            return Ok(Self::polynomial(&points));
+        }
         let d = points.dim();
         let mut i = 0;
         let hom = points.map_points(d + 1, |src, dst| {
@@ -54,8 +61,13 @@ impl Rational {
             dst[d] = w[i];
             i += 1;
         });
-        let rational = w.iter().any(|&x| x != w[0]);
-        Ok(Self { hom, rational })
+        // Each w·x rounds once.
+        let err = crate::rounding::UNIT_ROUNDOFF * hom.max_abs_coef();
+        Ok(Self {
+            hom,
+            rational: true,
+            err,
+        })
     }
 
     /// A polynomial curve (all weights 1).
@@ -68,6 +80,7 @@ impl Rational {
         Self {
             hom,
             rational: false,
+            err: 0.0,
         }
     }
 
@@ -113,7 +126,25 @@ impl Rational {
         }
         let w0 = hom.ctrl(0)[d - 1];
         let rational = (0..hom.n_ctrl()).any(|i| hom.ctrl(i)[d - 1] != w0);
-        Ok(Self { hom, rational })
+        Ok(Self {
+            hom,
+            rational,
+            err: 0.0,
+        })
+    }
+
+    /// [`Rational::from_homogeneous`] for homogeneous coefficients that are themselves in
+    /// error by up to `err` (computed ones), kept as [`Rational::coefficient_error`].
+    pub fn from_homogeneous_with_error(hom: BSpline, err: f64) -> Result<Self> {
+        let mut c = Self::from_homogeneous(hom)?;
+        c.err = err;
+        Ok(c)
+    }
+
+    /// Bound on the error of the homogeneous coefficients against the curve they stand for: 0
+    /// for a polynomial curve from its points, the rounding of `w·x` for a rational one.
+    pub fn coefficient_error(&self) -> f64 {
+        self.err
     }
 
     /// The homogeneous B-spline `(w·x, w)`.
@@ -155,9 +186,12 @@ impl Rational {
     }
     /// The curve restricted to `[a, b]`.
     pub fn restrict(&self, a: f64, b: f64) -> Result<Self> {
+        let mut err = self.err;
+        let hom = self.hom.restrict_tracked(a, b, Some(&mut err))?;
         Ok(Self {
-            hom: self.hom.restrict(a, b)?,
+            hom,
             rational: self.rational,
+            err,
         })
     }
 

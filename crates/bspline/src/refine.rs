@@ -54,6 +54,14 @@ impl BSpline {
 
     /// Refinement by a sorted list of values inside the domain (no checks).
     pub(crate) fn refine_sorted(&self, x: &[f64]) -> BSpline {
+        self.refine_tracked(x, None)
+    }
+
+    /// [`BSpline::refine_sorted`] carrying a bound on each control point's error along
+    /// (`errors`: one per control point on entry, one per control point of the result on
+    /// return): every new point is a convex combination of two old ones, whose errors it
+    /// combines alike, plus the rounding of the step ([`crate::rounding::insertion`]).
+    pub(crate) fn refine_tracked(&self, x: &[f64], errors: Option<&mut Vec<f64>>) -> BSpline {
         if x.is_empty() {
             return self.clone();
         }
@@ -69,6 +77,19 @@ impl BSpline {
         for j in b - 1..n {
             q[(j + r) * d..(j + r + 1) * d].copy_from_slice(&pw[j * d..(j + 1) * d]);
         }
+        // The errors move with their points.
+        let mut e = Vec::new();
+        if let Some(old) = errors.as_deref() {
+            e = vec![0.0; n + r];
+            e[..a + 1 - p].copy_from_slice(&old[..a + 1 - p]);
+            e[b - 1 + r..n + r].copy_from_slice(&old[b - 1..n]);
+        }
+        let tracked = errors.is_some();
+        let magnitude = |q: &[f64], i: usize| {
+            q[i * d..(i + 1) * d]
+                .iter()
+                .fold(0.0f64, |m, c| m.max(c.abs()))
+        };
         ub[..=a].copy_from_slice(&u[..=a]);
         ub[b + p + r..].copy_from_slice(&u[b + p..]);
         let mut i = b + p - 1;
@@ -76,18 +97,32 @@ impl BSpline {
         for j in (0..r).rev() {
             while x[j] <= u[i] && i > a {
                 q[(k - p - 1) * d..(k - p) * d].copy_from_slice(&pw[(i - p - 1) * d..(i - p) * d]);
+                if let Some(old) = errors.as_deref() {
+                    e[k - p - 1] = old[i - p - 1];
+                }
                 ub[k] = u[i];
                 k -= 1;
                 i -= 1;
             }
             q.copy_within((k - p) * d..(k - p + 1) * d, (k - p - 1) * d);
+            if tracked {
+                e[k - p - 1] = e[k - p];
+            }
             for l in 1..=p {
                 let ind = k - p + l;
                 let alpha = ub[k + l] - x[j];
                 if alpha == 0.0 {
                     q.copy_within(ind * d..(ind + 1) * d, (ind - 1) * d);
+                    if tracked {
+                        e[ind - 1] = e[ind];
+                    }
                 } else {
                     let alpha = alpha / (ub[k + l] - u[i + l - p]);
+                    if tracked {
+                        let m =
+                            magnitude(&q, ind - 1).max(magnitude(&q, ind)) + e[ind - 1].max(e[ind]);
+                        e[ind - 1] = e[ind - 1].max(e[ind]) + crate::rounding::insertion(m);
+                    }
                     for c in 0..d {
                         q[(ind - 1) * d + c] =
                             alpha * q[(ind - 1) * d + c] + (1.0 - alpha) * q[ind * d + c];
@@ -96,6 +131,9 @@ impl BSpline {
             }
             ub[k] = x[j];
             k = k.wrapping_sub(1);
+        }
+        if let Some(out) = errors {
+            *out = e;
         }
         BSpline::from_raw(p, d, ub, q)
     }
@@ -118,6 +156,17 @@ impl BSpline {
     /// assert!((g.eval_scalar(1.7) - f.eval_scalar(1.7)).abs() < 1e-14);
     /// ```
     pub fn restrict(&self, a: f64, b: f64) -> Result<BSpline> {
+        self.restrict_tracked(a, b, None)
+    }
+
+    /// [`BSpline::restrict`] for coefficients in error by up to `err` (`Some`), which returns
+    /// the bound for the result's (see [`BSpline::refine_tracked`]) in its place.
+    pub(crate) fn restrict_tracked(
+        &self,
+        a: f64,
+        b: f64,
+        err: Option<&mut f64>,
+    ) -> Result<BSpline> {
         let (lo, hi) = self.domain();
         if !(a.is_finite() && b.is_finite() && lo <= a && a < b && b <= hi) {
             return Err(Error::OutOfDomain {
@@ -132,11 +181,15 @@ impl BSpline {
             b,
             (p + 1).saturating_sub(multiplicity(self.knots(), b)),
         ));
-        let r = self.refine_sorted(&x);
+        let mut errors = err.as_ref().map(|&&mut e| vec![e; self.n_ctrl()]);
+        let r = self.refine_tracked(&x, errors.as_mut());
         let (deg, d, knots, coefs) = r.into_parts();
         // The last p+1 copies of `a` and the first p+1 copies of `b` bound the sub-spline.
         let ia = knots.partition_point(|&k| k <= a) - (p + 1);
         let ib = knots.partition_point(|&k| k < b) + p;
+        if let (Some(out), Some(errors)) = (err, errors) {
+            *out = errors[ia..ib - p].iter().fold(0.0, |m: f64, &e| m.max(e));
+        }
         let new_knots = knots[ia..=ib].to_vec();
         let new_coefs = coefs[ia * d..(ib - p) * d].to_vec();
         Ok(BSpline::from_raw(deg, d, new_knots, new_coefs))

@@ -1,23 +1,27 @@
-//! Certified root isolation for scalar B-spline functions.
+//! Certified root counting and isolation for scalar functions in piecewise Bézier form.
 //!
-//! The function is subdivided until each piece's coefficients show no sign change (no root:
-//! proven by the convex-hull property) or exactly one between end values of opposite, trusted
-//! signs (exactly one simple root: proven by the variation-diminishing property). A coefficient
-//! within its rounding-error bound of zero has no trusted sign and may count either way. Each
-//! isolated root is then refined by Newton steps that never leave the bracket (bisection when a
-//! step would). What does not separate above the tolerance is reported as a cluster, a possible
-//! multiple root, never dropped.
+//! [`count_roots`] reads the control polygon of a function over an interval with the bound on
+//! each coefficient's error ([`Count`], the one counter every certified decision goes through).
+//! [`find_roots_in`] subdivides until each part's polygon shows no root or exactly one simple
+//! root, and refines each isolated root by Newton steps that never leave its bracket. What does
+//! not separate above the tolerance is reported as a cluster, a possible multiple root, never
+//! dropped. The B-spline entry points ([`find_roots`], [`prove_positive`],
+//! [`find_roots_periodic`]) take the spline's coefficients as exact and run on its pieces.
 //!
 //! [`sign_changes`] builds on it: which roots (and which discontinuities) are sign changes of
 //! the function, which clusters are flat stretches, which could not be decided.
 
 use crate::error::{Error, Result};
-use crate::refine::Bezier;
+use crate::piecewise::Piecewise;
 use crate::spline::BSpline;
 use serde::{Deserialize, Serialize};
 
+mod count;
 mod sign_changes;
-pub use sign_changes::{sign_changes, Flat, SignChange, SignChangeKind, SignChanges, FLAT_WIDTH};
+pub use count::{most_sign_changes, Count, SignCount};
+pub use sign_changes::{
+    sign_changes, sign_changes_in, Flat, SignChange, SignChangeKind, SignChanges, FLAT_WIDTH,
+};
 
 /// Options for [`find_roots`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,6 +50,24 @@ impl RootOptions {
         self.tol = tol;
         self
     }
+
+    /// The tolerance used on `[a, b]`: the one asked for, but never below a few units of
+    /// rounding of the parameters there (no bracket can be narrower).
+    fn effective_tol(&self, a: f64, b: f64) -> f64 {
+        self.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs()))
+    }
+
+    fn validate(&self) -> Result<()> {
+        if self.tol.is_finite() && self.tol > 0.0 {
+            Ok(())
+        } else {
+            Err(Error::NotFinite {
+                what: "tolerance",
+                index: 0,
+                value: self.tol,
+            })
+        }
+    }
 }
 
 /// What is known about a reported root.
@@ -72,22 +94,61 @@ pub struct Root {
     pub kind: RootKind,
 }
 
-/// Unit roundoff.
-const EPS: f64 = f64::EPSILON * 0.5;
-
 /// The root searches take scalar functions only.
-pub(crate) fn require_scalar(f: &BSpline) -> Result<()> {
-    if f.dim() == 1 {
+fn require_scalar(dim: usize) -> Result<()> {
+    if dim == 1 {
         Ok(())
     } else {
         Err(Error::DimensionMismatch {
             expected: 1,
-            got: f.dim(),
+            got: dim,
         })
     }
 }
 
-/// All roots of the scalar function `f` in `[a, b]`, sorted.
+/// `[a, b]` must be a non-empty interval inside the domain.
+fn require_inside(f: &Piecewise, a: f64, b: f64) -> Result<()> {
+    let (lo, hi) = f.domain();
+    if a.is_finite() && b.is_finite() && lo <= a && a < b && b <= hi {
+        Ok(())
+    } else {
+        Err(Error::OutOfDomain {
+            a,
+            b,
+            domain: (lo, hi),
+        })
+    }
+}
+
+/// What the control polygon of `Σ weights[c] f_c` over `[lo, hi]` (inside the domain) proves
+/// about its roots there, with every coefficient's error bounded (see [`Count`]).
+///
+/// ```
+/// use bspline::roots::{count_roots, Count};
+/// use bspline::{BSpline, Piecewise};
+/// // (u − 0.2)(u − 0.7) on [0, 1]: open over [0, 1], exactly one root on [0, 0.5].
+/// let f = Piecewise::from_bspline(&BSpline::bezier(1, vec![0.14, -0.31, 0.24]).unwrap());
+/// assert_eq!(count_roots(&f, &[1.0], 0.0, 1.0), Count::Open);
+/// assert!(matches!(count_roots(&f, &[1.0], 0.0, 0.5), Count::One(..)));
+/// assert_eq!(count_roots(&f, &[1.0], 0.8, 1.0), Count::Zero);
+/// ```
+pub fn count_roots(f: &Piecewise, weights: &[f64], lo: f64, hi: f64) -> Count {
+    let mut count = SignCount::new(lo, hi);
+    f.for_each_restricted(weights, lo, hi, |i, x0, x1, c, err| {
+        count.piece(x0, x1, c, err, f.continuity(i))
+    });
+    count.finish()
+}
+
+/// The piecewise form of a B-spline handed to the entry points below: its coefficients are
+/// taken to be computed ones, in error by [`crate::rounding::computed_coefficients`].
+pub(crate) fn computed(f: &BSpline) -> Piecewise {
+    let err = crate::rounding::computed_coefficients(f.degree(), f.max_abs_coef());
+    Piecewise::from_bspline_with_error(f, err)
+}
+
+/// All roots of the scalar B-spline `f` in `[a, b]`, sorted (its coefficients taken as computed
+/// ones, known to [`crate::rounding::computed_coefficients`]).
 ///
 /// ```
 /// use bspline::{roots::{find_roots, RootOptions}, BSpline};
@@ -99,40 +160,34 @@ pub(crate) fn require_scalar(f: &BSpline) -> Result<()> {
 /// assert!((r[0].u - 0.2).abs() < 1e-12 && (r[1].u - 0.7).abs() < 1e-12);
 /// ```
 pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec<Root>> {
-    require_scalar(f)?;
-    if !(opts.tol.is_finite() && opts.tol > 0.0) {
-        return Err(Error::NotFinite {
-            what: "tolerance",
-            index: 0,
-            value: opts.tol,
-        });
-    }
-    let g = f.restrict(a, b)?;
-    let scale = g.max_abs_coef();
-    let mut st = State {
-        f: &g,
-        eval_err: 2.0 * (g.degree() + 2) as f64 * EPS * scale,
-        tol: opts.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs())),
+    require_scalar(f.dim())?;
+    opts.validate()?;
+    find_roots_in(&computed(f), a, b, opts)
+}
+
+/// All roots of the scalar piecewise function `f` in `[a, b]` (inside its domain), sorted:
+/// certified simple roots where the coefficient signs prove one, clusters elsewhere.
+pub fn find_roots_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> Result<Vec<Root>> {
+    require_scalar(f.dim())?;
+    opts.validate()?;
+    require_inside(f, a, b)?;
+    let mut search = Isolation {
+        f,
+        tol: opts.effective_tol(a, b),
         opts: *opts,
-        pieces: 0,
+        parts: 0,
         roots: Vec::new(),
     };
-    // Initial rounding: the coefficients of the restricted spline come from knot insertion.
-    let err = 4.0 * (g.degree() + 2) as f64 * EPS * scale;
-    if scale == 0.0 {
-        st.roots.push(cluster(a, b));
-        return Ok(st.roots);
-    }
-    st.visit(Node::new(g.clone()), err, 0);
-    Ok(merge_clusters(st.roots))
+    search.visit(Part::of(f, a, b), 0);
+    Ok(merge_clusters(search.roots))
 }
 
 /// Proves that the scalar function `f` is positive on `[a, b]`: `Ok(None)` when every piece of
-/// a subdivision has all coefficients above their rounding-error bound (a proof, by the
-/// convex-hull property); else `Ok(Some(u))` with `u` the middle of the first (leftmost) stretch
-/// where positivity could not be shown down to the tolerance: there `f` is within rounding of
-/// zero or below it. For a double zero (a vanishing speed) that middle is the zero; a stretch
-/// that reaches an end of `[a, b]` is reported at that end.
+/// a subdivision has all coefficients above their error bound (a proof, by the convex-hull
+/// property); else `Ok(Some(u))` with `u` the middle of the first (leftmost) stretch where
+/// positivity could not be shown down to the tolerance: there `f` is within rounding of zero
+/// or below it. For a double zero (a vanishing speed) that middle is the zero; a stretch that
+/// reaches an end of `[a, b]` is reported at that end.
 ///
 /// ```
 /// use bspline::{roots::{prove_positive, RootOptions}, BSpline};
@@ -145,34 +200,42 @@ pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec
 /// assert!((u - 0.5).abs() < 1e-6);
 /// ```
 pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Option<f64>> {
-    require_scalar(f)?;
-    let g = f.restrict(a, b)?;
-    let scale = g.max_abs_coef();
-    if scale == 0.0 {
-        return Ok(Some(a));
-    }
-    let tol = opts.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs()));
-    let err = 4.0 * (g.degree() + 2) as f64 * EPS * scale;
-    // Depth-first, left piece first: unproven pieces come out in order. The first run of
-    // touching unproven pieces is where the function reaches zero (within rounding); its middle
+    require_scalar(f.dim())?;
+    prove_positive_in(&computed(f), a, b, opts)
+}
+
+/// [`prove_positive`] on a piecewise function (inside its domain).
+pub fn prove_positive_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> Result<Option<f64>> {
+    require_scalar(f.dim())?;
+    opts.validate()?;
+    require_inside(f, a, b)?;
+    let tol = opts.effective_tol(a, b);
+    // Depth-first, left part first: unproven parts come out in order. The first run of
+    // touching unproven parts is where the function reaches zero (within rounding); its middle
     // is the estimate (a double zero, as of a speed, sits in the middle of its rounding zone).
     let mut run: Option<(f64, f64)> = None;
-    let mut stack = vec![(Node::new(g), err, 0usize)];
-    let mut pieces = 0usize;
-    while let Some((node, err, depth)) = stack.pop() {
-        pieces += 1;
-        let c = node.coefs();
-        let (lo, hi) = node.interval();
-        if c.iter().all(|&x| x > err) {
+    let mut stack = vec![(Part::of(f, a, b), 0usize)];
+    let mut parts = 0usize;
+    while let Some((part, depth)) = stack.pop() {
+        parts += 1;
+        let (lo, hi) = part.interval();
+        let positive = part
+            .spans
+            .iter()
+            .all(|s| s.coefs.iter().all(|&x| x > s.err));
+        if positive {
             if run.is_some() {
                 break;
             }
             continue;
         }
-        // A piece within rounding of zero (or below it) is not split further: rounding would
+        // A part within rounding of zero (or below it) is not split further: rounding would
         // keep it unproven at every depth.
-        let flat = c.iter().all(|&x| x <= err);
-        if flat || hi - lo <= tol || depth >= opts.max_depth || pieces >= opts.max_pieces {
+        let flat = part
+            .spans
+            .iter()
+            .all(|s| s.coefs.iter().all(|&x| x <= s.err));
+        if flat || hi - lo <= tol || depth >= opts.max_depth || parts >= opts.max_pieces {
             match &mut run {
                 None => run = Some((lo, hi)),
                 Some(r) if lo <= r.1 => r.1 = hi,
@@ -180,15 +243,9 @@ pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result
             }
             continue;
         }
-        let m = 0.5 * (lo + hi);
-        let Some((l, r)) = node.split(m) else {
-            run = run.or(Some((lo, hi)));
-            break;
-        };
-        let child_err = err
-            + 2.0 * (node.degree() + 1) as f64 * EPS * c.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        stack.push((r, child_err, depth + 1));
-        stack.push((l, child_err, depth + 1));
+        let (left, right) = part.split(f, split_point(f, lo, hi));
+        stack.push((right, depth + 1));
+        stack.push((left, depth + 1));
     }
     // A stretch at an end of the interval has only one side: the zero is at that end.
     Ok(run.map(|(lo, hi)| match (lo <= a, hi >= b) {
@@ -198,31 +255,53 @@ pub fn prove_positive(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result
     }))
 }
 
-/// The roots of a periodic function over one whole period, with no seam: the search runs on
-/// the period rotated to start where the function has a trusted sign, so a root at the domain
-/// ends is found once, as an interior root. `u` is reported in the domain; a bracket may cross
-/// the seam (it is then given in the unwrapped parameter, beyond the domain end).
-///
-/// `f` must take the same value at both ends of its domain (within rounding), else
-/// [`Error::NotPeriodic`].
+/// The roots of a periodic B-spline over one whole period (see [`find_roots_periodic_in`]).
+/// `f` must take the same value at both ends of its domain (within `1e-9` of its largest
+/// coefficient), else [`Error::NotPeriodic`]; it is then taken as continuous across the seam.
 pub fn find_roots_periodic(f: &BSpline, opts: &RootOptions) -> Result<Vec<Root>> {
-    require_scalar(f)?;
+    require_scalar(f.dim())?;
     let (a, b) = f.domain();
-    let period = b - a;
     let (fa, fb) = (f.eval_scalar(a), f.eval_scalar(b));
     if (fa - fb).abs() > 1e-9 * f.max_abs_coef().max(f64::MIN_POSITIVE) {
         return Err(Error::NotPeriodic { start: fa, end: fb });
     }
+    find_roots_periodic_in(&computed(f).with_periodic_seam(0), opts)
+}
+
+/// The roots of a periodic function (declared so: [`Piecewise::with_periodic_seam`]) over one
+/// whole period, with no seam: the search runs on the period rotated to start where the
+/// function has a trusted sign, so a root at the domain ends is found once, as an interior
+/// root. `u` is reported in the domain; a bracket may cross the seam (it is then given in the
+/// unwrapped parameter, beyond the domain end).
+pub fn find_roots_periodic_in(f: &Piecewise, opts: &RootOptions) -> Result<Vec<Root>> {
+    require_scalar(f.dim())?;
+    let (a, b) = f.domain();
+    if !f.is_periodic() {
+        let (mut fa, mut fb) = ([0.0], [0.0]);
+        f.eval(a, &mut fa);
+        f.eval(b, &mut fb);
+        return Err(Error::NotPeriodic {
+            start: fa[0],
+            end: fb[0],
+        });
+    }
+    let period = b - a;
     // Start the period where |f| is largest among a few candidates.
+    let value = |u: f64| {
+        let mut v = [0.0];
+        f.eval(u, &mut v);
+        v[0].abs()
+    };
     let u0 = (0..16)
         .map(|i| a + period * (i as f64 + 0.5) / 16.0)
-        .max_by(|x, y| f.eval_scalar(*x).abs().total_cmp(&f.eval_scalar(*y).abs()))
+        .max_by(|x, y| value(*x).total_cmp(&value(*y)))
         .unwrap_or(a + 0.5 * period);
-    let rotated = join(
-        &f.restrict(u0, b)?,
-        &f.restrict(a, u0)?.reparam(b, b + (u0 - a))?,
-    );
-    let mut roots = find_roots(&rotated, u0, b + (u0 - a), opts)?;
+    let Some(rotated) = f.rotated(u0) else {
+        // Breaks too close for the shifted period: the seam stays where it is.
+        return find_roots_in(f, a, b, opts);
+    };
+    let (r0, r1) = rotated.domain();
+    let mut roots = find_roots_in(&rotated, r0, r1, opts)?;
     for r in &mut roots {
         if r.u >= b {
             r.u -= period;
@@ -231,20 +310,6 @@ pub fn find_roots_periodic(f: &BSpline, opts: &RootOptions) -> Result<Vec<Root>>
     }
     roots.sort_by(|x, y| x.u.total_cmp(&y.u));
     Ok(roots)
-}
-
-/// Joins two clamped splines of one degree where the first ends and the second starts
-/// (a knot of multiplicity p there: C⁰, which is all their common end value guarantees).
-fn join(left: &BSpline, right: &BSpline) -> BSpline {
-    let p = left.degree();
-    let mut knots = left.knots()[..left.knots().len() - 1].to_vec();
-    knots.extend_from_slice(&right.knots()[p + 1..]);
-    let mut coefs = left.coefs().to_vec();
-    if let (Some(last), Some(first)) = (coefs.last_mut(), right.coefs().first()) {
-        *last = 0.5 * (*last + first);
-    }
-    coefs.extend_from_slice(&right.coefs()[1..]);
-    BSpline::from_raw(p, 1, knots, coefs)
 }
 
 fn cluster(lo: f64, hi: f64) -> Root {
@@ -256,7 +321,7 @@ fn cluster(lo: f64, hi: f64) -> Root {
     }
 }
 
-/// Joins clusters whose brackets touch (the same unresolved root seen from two pieces).
+/// Joins clusters whose brackets touch (the same unresolved root seen from two parts).
 fn merge_clusters(mut roots: Vec<Root>) -> Vec<Root> {
     roots.sort_by(|x, y| x.bracket.0.total_cmp(&y.bracket.0));
     let mut out: Vec<Root> = Vec::with_capacity(roots.len());
@@ -275,186 +340,188 @@ fn merge_clusters(mut roots: Vec<Root>) -> Vec<Root> {
     out
 }
 
-/// A piece of the function: a single Bézier piece (fast de Casteljau path) or a B-spline.
-enum Node {
-    Bezier(Bezier),
-    Spline(BSpline),
+/// The value of the scalar `f` at `u` and the bound on its error there.
+fn value(f: &Piecewise, u: f64) -> (f64, f64) {
+    let mut v = [0.0];
+    f.eval(u, &mut v);
+    (v[0], f.eval_error(f.piece_at(u), 0))
 }
 
-impl Node {
-    fn new(g: BSpline) -> Self {
-        if g.n_ctrl() == g.degree() + 1 {
-            let (a, b) = g.domain();
-            Node::Bezier(Bezier {
-                a,
-                b,
-                degree: g.degree(),
-                dim: 1,
-                coefs: g.coefs().to_vec(),
-            })
-        } else {
-            Node::Spline(g)
+/// A point of `(lo, hi)` near its middle where `f` has a trusted sign, if there is one, else
+/// the middle: the interior break nearest the middle (whole pieces on both
+/// sides), then points in the middle quarter.
+fn split_point(f: &Piecewise, lo: f64, hi: f64) -> f64 {
+    let mid = 0.5 * (lo + hi);
+    let breaks = f.breaks();
+    let (first, last) = (
+        breaks.partition_point(|&x| x <= lo),
+        breaks.partition_point(|&x| x < hi),
+    );
+    let mut inner: smallvec::SmallVec<[f64; 8]> = smallvec::SmallVec::new();
+    if first < last {
+        // The few interior breaks nearest the middle.
+        let k = breaks[first..last].partition_point(|&x| x < mid) + first;
+        for j in [k, k.wrapping_sub(1), k + 1, k.wrapping_sub(2)] {
+            if j >= first && j < last {
+                inner.push(breaks[j]);
+            }
         }
+        inner.sort_by(|x, y| (x - mid).abs().total_cmp(&(y - mid).abs()));
     }
-    fn coefs(&self) -> &[f64] {
-        match self {
-            Node::Bezier(z) => &z.coefs,
-            Node::Spline(s) => s.coefs(),
-        }
+    let fractions = [0.5, 0.4375, 0.5625, 0.375, 0.625, 0.3125, 0.6875];
+    inner
+        .into_iter()
+        .chain(fractions.iter().map(|t| lo + (hi - lo) * t))
+        .filter(|&u| u > lo && u < hi)
+        .find(|&u| {
+            let (v, e) = value(f, u);
+            v.abs() > 2.0 * e
+        })
+        .unwrap_or(mid)
+}
+
+/// One piece of a [`Part`]: Bernstein coefficients on `[x0, x1]` within `err` of the exact
+/// ones, and the order of continuity at `x0` (from the previous span).
+#[derive(Clone)]
+struct Span {
+    x0: f64,
+    x1: f64,
+    coefs: smallvec::SmallVec<[f64; 16]>,
+    err: f64,
+    joint: i32,
+}
+
+/// A stretch of a scalar function under subdivision, as the spans of the pieces it covers.
+/// Spans are cut by de Casteljau's algorithm from their own coefficients, so the rounding of a
+/// cut is relative to the stretch's own magnitudes (small close to a root), not the piece's.
+struct Part {
+    spans: Vec<Span>,
+}
+
+impl Part {
+    /// `f` on `[lo, hi]`.
+    fn of(f: &Piecewise, lo: f64, hi: f64) -> Self {
+        let mut spans = Vec::new();
+        f.for_each_restricted(&[1.0], lo, hi, |i, x0, x1, c, err| {
+            spans.push(Span {
+                x0,
+                x1,
+                coefs: c.iter().copied().collect(),
+                err,
+                joint: f.continuity(i),
+            });
+            true
+        });
+        Self { spans }
     }
+
     fn interval(&self) -> (f64, f64) {
-        match self {
-            Node::Bezier(z) => (z.a, z.b),
-            Node::Spline(s) => s.domain(),
-        }
+        (self.spans[0].x0, self.spans[self.spans.len() - 1].x1)
     }
-    fn degree(&self) -> usize {
-        match self {
-            Node::Bezier(z) => z.degree,
-            Node::Spline(s) => s.degree(),
-        }
-    }
-    fn value(&self, u: f64) -> f64 {
-        match self {
-            Node::Bezier(z) => bernstein_eval(&z.coefs, (u - z.a) / (z.b - z.a)),
-            Node::Spline(s) => s.eval_scalar(u),
-        }
-    }
-    /// A split point near the middle where the value has a trusted sign, if there is one.
-    fn split_point(&self, err: f64) -> f64 {
+
+    /// The count over the part, and whether every coefficient is within its bound of zero.
+    fn count(&self) -> (SignCount, bool) {
         let (lo, hi) = self.interval();
-        let mut candidates: smallvec::SmallVec<[f64; 12]> = smallvec::SmallVec::new();
-        if let Node::Spline(s) = self {
-            // Prefer the interior knot nearest the middle: children get fewer pieces.
-            let mid = 0.5 * (lo + hi);
-            if let Some(k) = s
-                .breakpoints()
-                .into_iter()
-                .filter(|&k| k > lo && k < hi)
-                .min_by(|x, y| (x - mid).abs().total_cmp(&(y - mid).abs()))
-            {
-                candidates.push(k);
-            }
+        let mut count = SignCount::new(lo, hi);
+        let mut flat = true;
+        for s in &self.spans {
+            flat &= s.coefs.iter().all(|x| x.abs() <= s.err);
+            count.piece(s.x0, s.x1, &s.coefs, s.err, s.joint);
         }
-        for f in [0.5, 0.4375, 0.5625, 0.375, 0.625, 0.3125, 0.6875] {
-            candidates.push(lo + (hi - lo) * f);
-        }
-        candidates
-            .iter()
-            .copied()
-            .find(|&u| self.value(u).abs() > 2.0 * err)
-            .unwrap_or(0.5 * (lo + hi))
+        (count, flat)
     }
-    fn split(&self, u: f64) -> Option<(Node, Node)> {
-        match self {
-            Node::Bezier(z) => {
-                let (l, r) = z.split(u);
-                Some((Node::Bezier(l), Node::Bezier(r)))
-            }
-            Node::Spline(s) => {
-                let (l, r) = s.split_at(u).ok()?;
-                Some((Node::new(l), Node::new(r)))
+
+    /// The two parts on either side of `m` (inside the part).
+    fn split(self, f: &Piecewise, m: f64) -> (Part, Part) {
+        let p = f.degree();
+        let mut left = Vec::new();
+        let mut right = Vec::new();
+        for s in self.spans {
+            if s.x1 <= m {
+                left.push(s);
+            } else if s.x0 >= m {
+                right.push(s);
+            } else {
+                let magnitude = s.coefs.iter().fold(0.0f64, |a, x| a.max(x.abs())) + s.err;
+                let err = s.err + crate::rounding::casteljau(p, magnitude);
+                let r = (m - s.x0) / (s.x1 - s.x0);
+                let mut l = s.coefs.clone();
+                let mut rt = s.coefs;
+                crate::piecewise::split_left(&mut l, r);
+                crate::piecewise::split_right(&mut rt, r);
+                left.push(Span {
+                    x0: s.x0,
+                    x1: m,
+                    coefs: l,
+                    err,
+                    joint: s.joint,
+                });
+                right.push(Span {
+                    x0: m,
+                    x1: s.x1,
+                    coefs: rt,
+                    err,
+                    joint: i32::MAX,
+                });
             }
         }
+        (Part { spans: left }, Part { spans: right })
     }
 }
 
-/// Value of a Bernstein polynomial at the local parameter `s`, by de Casteljau (stable).
-fn bernstein_eval(c: &[f64], s: f64) -> f64 {
-    let mut w: smallvec::SmallVec<[f64; 32]> = c.iter().copied().collect();
-    for level in 1..c.len() {
-        for k in 0..c.len() - level {
-            w[k] = (1.0 - s) * w[k] + s * w[k + 1];
-        }
-    }
-    w[0]
-}
-
-/// The largest number of sign changes the coefficient sequence can have, when coefficients
-/// within `err` of zero may take either sign.
-fn max_sign_changes(c: &[f64], err: f64) -> usize {
-    const NONE: i64 = i64::MIN / 2;
-    let (mut pos, mut neg) = (NONE, NONE);
-    for (i, &x) in c.iter().enumerate() {
-        let (can_pos, can_neg) = (x > -err, x < err);
-        let start = if i == 0 { 0 } else { NONE };
-        let np = if can_pos {
-            pos.max(neg + 1).max(start)
-        } else {
-            NONE
-        };
-        let nn = if can_neg {
-            neg.max(pos + 1).max(start)
-        } else {
-            NONE
-        };
-        pos = np;
-        neg = nn;
-    }
-    pos.max(neg).max(0) as usize
-}
-
-struct State<'a> {
-    f: &'a BSpline,
-    eval_err: f64,
+/// Subdivision of one scalar function into parts with at most one certified root.
+struct Isolation<'a> {
+    f: &'a Piecewise,
     tol: f64,
     opts: RootOptions,
-    pieces: usize,
+    parts: usize,
     roots: Vec<Root>,
 }
 
-impl State<'_> {
-    fn visit(&mut self, node: Node, err: f64, depth: usize) {
-        self.pieces += 1;
-        let c = node.coefs();
-        let (lo, hi) = node.interval();
-        let changes = max_sign_changes(c, err);
-        if changes == 0 {
-            return;
+impl Isolation<'_> {
+    fn visit(&mut self, part: Part, depth: usize) {
+        self.parts += 1;
+        let (lo, hi) = part.interval();
+        let (count, flat) = part.count();
+        match count.finish() {
+            Count::Zero => return,
+            Count::One(a, b) => {
+                let root = self.refine(a.max(lo), b.min(hi), count.starts_negative());
+                self.roots.push(root);
+                return;
+            }
+            Count::AtEnd(_) | Count::Open => {}
         }
-        let (c0, cn) = (c[0], c[c.len() - 1]);
-        if changes == 1 && c0.abs() > err && cn.abs() > err && (c0 > 0.0) != (cn > 0.0) {
-            let root = self.refine(&node);
-            self.roots.push(root);
-            return;
-        }
-        if c.iter().all(|x| x.abs() <= err)
+        if flat
             || hi - lo <= self.tol
             || depth >= self.opts.max_depth
-            || self.pieces >= self.opts.max_pieces
+            || self.parts >= self.opts.max_pieces
         {
             self.roots.push(cluster(lo, hi));
             return;
         }
-        let m = node.split_point(err);
-        let Some((l, r)) = node.split(m) else {
-            self.roots.push(cluster(lo, hi));
-            return;
-        };
-        // Each split level is p convex combinations per coefficient.
-        let child_err = err
-            + 2.0 * (node.degree() + 1) as f64 * EPS * c.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        self.visit(l, child_err, depth + 1);
-        self.visit(r, child_err, depth + 1);
+        let (left, right) = part.split(self.f, split_point(self.f, lo, hi));
+        self.visit(left, depth + 1);
+        self.visit(right, depth + 1);
     }
 
-    /// Safeguarded Newton inside a bracket with end values of opposite trusted signs.
-    ///
-    /// Evaluation uses the top-level function (`self.f`), whose rounding error `self.eval_err`
-    /// is far below that of a deeply subdivided piece. The bracket reported is the last one
-    /// whose end values have trusted signs; the estimate goes on narrowing to the tolerance on
-    /// computed signs, which is the best the floating-point function can say.
-    fn refine(&self, node: &Node) -> Root {
-        let (mut lo, mut hi) = node.interval();
-        let (mut tlo, mut thi) = (lo, hi);
-        let c = node.coefs();
-        let (flo, fhi) = (c[0], c[c.len() - 1]);
-        let rising = fhi > 0.0;
+    /// Safeguarded Newton inside a bracket where the function has exactly one simple root and
+    /// end values of opposite, trusted signs (`rising`: negative at `a`). The bracket reported is the last one whose end
+    /// values have trusted signs; the estimate goes on narrowing to the tolerance on computed
+    /// signs, which is the best the floating-point function can say.
+    fn refine(&self, a: f64, b: f64, rising: bool) -> Root {
+        let f = self.f;
+        let (flo, fhi) = (value(f, a).0, value(f, b).0);
+        let (mut lo, mut hi) = (a, b);
+        let (mut tlo, mut thi) = (a, b);
         // Start from the secant (regula falsi) point of the end values.
         let mut x = lo + (hi - lo) * (flo / (flo - fhi));
+        if !(x > lo && x < hi) {
+            x = 0.5 * (lo + hi);
+        }
         let mut d = [0.0; 2];
         for _ in 0..200 {
-            self.f.eval_d1(x, &mut d);
+            f.eval_derivs(x, 1, &mut d);
             let (fx, dfx) = (d[0], d[1]);
             if fx == 0.0 {
                 lo = x;
@@ -467,7 +534,7 @@ impl State<'_> {
             } else {
                 lo = x;
             }
-            if fx.abs() > self.eval_err {
+            if fx.abs() > f.eval_error(f.piece_at(x), 0) {
                 if right_of_root {
                     thi = x;
                 } else {
@@ -492,7 +559,7 @@ impl State<'_> {
             }
         }
         // A last Newton step from the final iterate, kept inside the bracket.
-        self.f.eval_d1(x, &mut d);
+        f.eval_derivs(x, 1, &mut d);
         let step = if d[1] != 0.0 { x - d[0] / d[1] } else { x };
         let u = if step.is_finite() {
             step.clamp(lo, hi)
@@ -502,8 +569,8 @@ impl State<'_> {
         // Where the last trusted values are far from the estimate (the function was within
         // rounding of zero near the root), probe outward for the nearest trusted signs.
         let trusted = |v: f64, right: bool| {
-            let fv = self.f.eval_scalar(v);
-            fv.abs() > self.eval_err && ((fv > 0.0) == rising) == right
+            let (fv, e) = value(f, v);
+            fv.abs() > e && ((fv > 0.0) == rising) == right
         };
         let mut delta = self.tol;
         while u - delta > tlo {

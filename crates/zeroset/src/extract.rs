@@ -10,7 +10,7 @@
 //! the size tolerance (crossings, isolated points, loops below the tolerance) becomes a leaf.
 
 use crate::patch::{common_sign, tsign, variations, vsign, Patch, EPS};
-use crate::solve1::{bracketed, bracketed_or_end};
+use crate::solve1::{bracketed_from, bracketed_or_end};
 
 /// Where an arc ends: on a patch edge.
 #[derive(Debug, Clone, Copy)]
@@ -236,7 +236,7 @@ impl Tracer<'_> {
             // Index of the partial derivative in the running variable in `eval_grad`.
             let k = if along_t { 1 } else { 2 };
             let x0 = polygon_crossing(lo, hi, &coefs, err);
-            let x = bracketed(
+            let x = bracketed_from(
                 |x| {
                     let [t, r] = at(x);
                     let g = cell.eval_grad(t, r);

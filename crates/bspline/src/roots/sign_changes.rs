@@ -10,8 +10,11 @@
 //! `p + 1`, or the seam of a closed domain on which the function is not periodic): those are
 //! added as jumps.
 
-use super::{find_roots, find_roots_periodic, require_scalar, Root, RootKind, RootOptions, EPS};
-use crate::error::{Error, Result};
+use super::{
+    find_roots_in, find_roots_periodic_in, require_scalar, value, Root, RootKind, RootOptions,
+};
+use crate::error::Result;
+use crate::piecewise::Piecewise;
 use crate::spline::BSpline;
 use serde::{Deserialize, Serialize};
 
@@ -88,11 +91,11 @@ impl SignChanges {
 /// A root, or a discontinuity that is not inside a root's bracket.
 enum Event {
     Root(Root),
-    /// A discontinuity at `u` with its left and right limits.
+    /// A discontinuity at `u` with its left and right limits (each with its error bound).
     Jump {
         u: f64,
-        left: f64,
-        right: f64,
+        left: (f64, f64),
+        right: (f64, f64),
     },
 }
 
@@ -161,19 +164,36 @@ impl Event {
 /// assert!(s.certified() && found.len() == 2);
 /// ```
 ///
-/// Errors: those of [`find_roots`] (a function that is not scalar, an invalid tolerance).
+/// Errors: those of [`super::find_roots`] (a function that is not scalar, an invalid
+/// tolerance).
 pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<SignChanges> {
-    require_scalar(f)?;
+    require_scalar(f.dim())?;
+    let pieces = super::computed(f);
+    // A closed domain on which the function takes one value at both ends is periodic: taken
+    // as continuous across the seam.
+    let (a, b) = f.domain();
+    let (fa, fb) = (f.eval_scalar(a), f.eval_scalar(b));
+    let periodic = closed && (fa - fb).abs() <= 1e-9 * f.max_abs_coef().max(f64::MIN_POSITIVE);
+    let pieces = if periodic {
+        pieces.with_periodic_seam(0)
+    } else {
+        pieces
+    };
+    sign_changes_in(&pieces, closed, opts)
+}
+
+/// [`sign_changes`] of a piecewise function; with `closed`, its domain is a circle, searched
+/// periodically when the function is declared periodic ([`Piecewise::with_periodic_seam`]),
+/// else with its seam a discontinuity like any other.
+pub fn sign_changes_in(f: &Piecewise, closed: bool, opts: &RootOptions) -> Result<SignChanges> {
+    require_scalar(f.dim())?;
     let (a, b) = f.domain();
     let period = b - a;
-    let (mut roots, periodic) = if closed {
-        match find_roots_periodic(f, opts) {
-            Ok(r) => (r, true),
-            Err(Error::NotPeriodic { .. }) => (find_roots(f, a, b, opts)?, false),
-            Err(e) => return Err(e),
-        }
+    let periodic = closed && f.is_periodic();
+    let mut roots = if periodic {
+        find_roots_periodic_in(f, opts)?
     } else {
-        (find_roots(f, a, b, opts)?, false)
+        find_roots_in(f, a, b, opts)?
     };
     // Two parameters this close are one place (a few times the tolerance root isolation
     // refines to).
@@ -216,12 +236,11 @@ pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<Sig
     events.extend(roots.iter().copied().map(Event::Root));
     events.sort_by(|x, y| x.u().total_cmp(&y.u()));
 
-    let eval_err = 2.0 * (f.degree() + 2) as f64 * EPS * f.max_abs_coef();
     let sign_at = |u: f64| -> i32 {
-        let v = f.eval_scalar(wrap(u));
-        if v > eval_err {
+        let (v, err) = value(f, wrap(u));
+        if v > err {
             1
-        } else if v < -eval_err {
+        } else if v < -err {
             -1
         } else {
             0
@@ -252,8 +271,6 @@ pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<Sig
         }
     };
 
-    // One-sided limits beyond this are trusted (the coefficients next to a knot).
-    let coef_err = 4.0 * (f.degree() + 2) as f64 * f64::EPSILON * f.max_abs_coef();
     let mut out = SignChanges::default();
     for (i, e) in events.iter().enumerate() {
         let change = || side(i, true) * side(i, false) < 0;
@@ -285,9 +302,10 @@ pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<Sig
             }
             Event::Jump { u, left, right } => {
                 if change() {
-                    let trusted = left.abs() > coef_err
-                        && right.abs() > coef_err
-                        && (left > 0.0) != (right > 0.0);
+                    // One-sided limits beyond their bounds are trusted.
+                    let trusted = left.0.abs() > left.1
+                        && right.0.abs() > right.1
+                        && (left.0 > 0.0) != (right.0 > 0.0);
                     out.changes.push(SignChange {
                         u,
                         bracket: (u, u),
@@ -325,27 +343,28 @@ pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<Sig
     Ok(out)
 }
 
-/// The discontinuities of `f` in its domain, with their left and right limits: the interior
-/// knots of multiplicity `p + 1` (clamped on both sides: the coefficient before the knot is the
-/// left limit, the one after it the right limit) and, with `seam`, the domain start as the
+/// A one-sided limit and the bound on its error.
+type Limit = (f64, f64);
+
+/// The discontinuities of `f` in its domain, with their left and right limits and the bounds
+/// on their error: the interior breaks where it may jump (the coefficient before the break is
+/// the left limit, the one after it the right limit) and, with `seam`, the domain start as the
 /// meeting point of the end (left) and the start (right).
-fn jumps(f: &BSpline, seam: bool) -> Vec<(f64, f64, f64)> {
-    let p = f.degree();
-    let (a, b) = f.domain();
-    let knots = f.knots();
-    let c = f.coefs();
+fn jumps(f: &Piecewise, seam: bool) -> Vec<(f64, Limit, Limit)> {
+    let n = f.pieces();
+    let first = |i: usize| (f.piece(i)[0], f.error(i));
+    let last = |i: usize| {
+        let c = f.piece(i);
+        (c[c.len() - 1], f.error(i))
+    };
     let mut out = Vec::new();
     if seam {
-        out.push((a, f.eval_scalar(b), f.eval_scalar(a)));
+        out.push((f.domain().0, last(n - 1), first(0)));
     }
-    let mut i = p + 1;
-    while i < c.len() {
-        let u = knots[i];
-        let mult = knots[i..].iter().take_while(|&&x| x == u).count();
-        if mult > p && u > a && u < b {
-            out.push((u, c[i - 1], c[i]));
+    for i in 1..n {
+        if f.continuity(i) < 0 {
+            out.push((f.breaks()[i], last(i - 1), first(i)));
         }
-        i += mult.max(1);
     }
     out
 }

@@ -6,11 +6,11 @@
 use crate::cells::{
     cell_of, cell_span, Blocks, Cells, RunUnions, Union, COARSE_CELLS, FINE_CELLS, SPLIT,
 };
-use crate::fast::{Pw, ValueSlope};
 use crate::geom::{wrap_pi, V2};
 use crate::taylor::Taylor;
 use crate::view::View;
-use bspline::{BSpline, Rational};
+use bspline::rounding;
+use bspline::{Piecewise, ValueSlope};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
@@ -151,7 +151,7 @@ const FINE: usize = 8;
 /// get nearly exact ranges.
 #[derive(Debug, Clone)]
 pub(crate) struct Enclosure {
-    pw: Pw,
+    pw: Piecewise,
     eval: ValueSlope,
     /// Per fine piece, a bound on `|f″|`.
     second: Vec<f64>,
@@ -167,29 +167,31 @@ pub(crate) struct Enclosure {
 
 impl Enclosure {
     /// `None` for a function of dimension other than 1 and 2.
-    pub(crate) fn new(f: &BSpline) -> Option<Self> {
-        let pw = Pw::new(f).subdivided(FINE);
+    pub(crate) fn new(f: &Piecewise) -> Option<Self> {
+        let pw = f.subdivided(FINE);
         let deriv = pw.derivative();
         let d = pw.dim();
         let hull = (0..pw.pieces())
-            .map(|i| points_range(pw.piece(i), d))
+            .map(|i| points_range(pw.piece(i), d, pw.errors(i)))
             .collect();
-        // Evaluation in the Bernstein basis errs by a few units of rounding per degree, relative
-        // to the largest control point; the derivative's points carry the rounding of their
-        // differences too.
-        let eps = 4.0 * (pw.degree() + 2) as f64 * f64::EPSILON;
+        // Horner's scheme errs by a few units of rounding per degree of the largest control
+        // point, beside the pieces' own error (the derivative's carries its differences).
         let rounding = (0..pw.pieces())
             .map(|i| {
-                let (a, b) = pw.piece_span(i);
-                let slope = pw.degree() as f64 / (b - a) * pw.piece_magnitude(i);
+                let (m, dm) = (
+                    pw.piece_magnitude(i) + pw.error(i),
+                    deriv.piece_magnitude(i) + deriv.error(i),
+                );
                 (
-                    eps * pw.piece_magnitude(i),
-                    eps * (deriv.piece_magnitude(i) + 2.0 * slope),
+                    pw.error(i) + rounding::horner(pw.degree(), m),
+                    deriv.error(i) + rounding::horner(deriv.degree(), dm),
                 )
             })
             .collect();
         let cones = match d {
-            2 => (0..pw.pieces()).map(|i| cone_ends(pw.piece(i))).collect(),
+            2 => (0..pw.pieces())
+                .map(|i| cone_ends(pw.piece(i), pw.errors(i)))
+                .collect(),
             _ => Vec::new(),
         };
         Some(Self {
@@ -315,28 +317,32 @@ impl Enclosure {
     }
 }
 
-/// The least arc of directions holding the 2-d points `c` (point-major), counterclockwise
-/// from its start, when it is shorter than π: angles relative to the first point are then
-/// unwrapped correctly (and when they span less than π, so do the points). `None` for a zero
-/// point.
-fn cone(c: &[f64]) -> Option<(f64, f64)> {
+/// The least arc of directions holding the 2-d points `c` (point-major), each within `err` of
+/// its exact value coordinate by coordinate (so within `|err|` of it: its direction within
+/// `asin(|err| / |c|)`), counterclockwise from its start, when it is shorter than π: angles
+/// relative to the first point are then unwrapped correctly (and when they span less than π,
+/// so do the points). `None` for a point within its error of zero.
+fn cone(c: &[f64], err: &[f64]) -> Option<(f64, f64)> {
     let first = V2::new(c[0], c[1]).angle();
     let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    let reach = err[0].hypot(err[1]);
     for p in c.chunks_exact(2) {
         let v = V2::new(p[0], p[1]);
-        if v.norm() == 0.0 {
+        let n = v.norm();
+        if n <= reach {
             return None;
         }
+        let slack = (reach / n).asin();
         let rel = wrap_pi(v.angle() - first);
-        lo = lo.min(rel);
-        hi = hi.max(rel);
+        lo = lo.min(rel - slack);
+        hi = hi.max(rel + slack);
     }
     (hi - lo < PI).then_some((first + lo, first + hi))
 }
 
 /// [`cone`]'s two boundary directions, as unit vectors (start, end).
-fn cone_ends(c: &[f64]) -> Option<(V2, V2)> {
-    cone(c).map(|(a, b)| (V2::polar(a), V2::polar(b)))
+fn cone_ends(c: &[f64], err: &[f64]) -> Option<(V2, V2)> {
+    cone(c, err).map(|(a, b)| (V2::polar(a), V2::polar(b)))
 }
 
 /// A cone of directions (its unit boundary directions, see [`cone_ends`]) lies in the open
@@ -349,25 +355,24 @@ fn cone_inside(cone: Option<(V2, V2)>, axis: V2) -> bool {
     cone.is_some_and(|(a, b)| a.dot(axis) > room && b.dot(axis) > room)
 }
 
-/// The range control points (dimension `d`, point-major) prove for a scalar function, or for
-/// the length of a vector one: from below by the projections on the direction of the end
-/// points' sum (a narrow hodograph cone), from above by the largest.
-fn points_range(c: &[f64], d: usize) -> Iv {
+/// The range control points (dimension `d`, point-major, each coordinate within its `err` of
+/// the exact one) prove for a scalar function, or for the length of a vector one: from below
+/// by the projections on the direction of the end points' sum (a narrow hodograph cone), from
+/// above by the largest.
+fn points_range(c: &[f64], d: usize, err: &[f64]) -> Iv {
     if d == 1 {
         return Iv::new(
-            c.iter().copied().fold(f64::INFINITY, f64::min),
-            c.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            c.iter().copied().fold(f64::INFINITY, f64::min) - err[0],
+            c.iter().copied().fold(f64::NEG_INFINITY, f64::max) + err[0],
         );
     }
+    let reach = err[0].hypot(err[1]);
     let pts = || c.chunks_exact(d).map(|p| V2::new(p[0], p[1]));
     let (first, last) = (&c[..2], &c[c.len() - d..c.len() - d + 2]);
     let axis = V2::new(first[0] + last[0], first[1] + last[1]).unit();
     Iv::new(
-        pts()
-            .map(|p| p.dot(axis))
-            .fold(f64::INFINITY, f64::min)
-            .max(0.0),
-        pts().map(|p| p.norm()).fold(0.0, f64::max),
+        (pts().map(|p| p.dot(axis)).fold(f64::INFINITY, f64::min) - reach).max(0.0),
+        pts().map(|p| p.norm()).fold(0.0, f64::max) + reach,
     )
 }
 
@@ -395,11 +400,10 @@ pub(crate) struct BoundForms {
 
 impl BoundForms {
     /// `None` when the forms are not those of a plane curve.
-    pub(crate) fn new(curve: &Rational, tangent: &BSpline, curvature: &BSpline) -> Option<Self> {
-        let h = curve.homogeneous();
-        let last = h.dim() - 1;
-        let w = h.map_points(1, |p, o| o[0] = p[last]);
-        let polynomial = w.coefs().iter().all(|&c| c == 1.0);
+    pub(crate) fn new(hom: &Piecewise, tangent: &Piecewise, curvature: &Piecewise) -> Option<Self> {
+        let w = hom.components(&[2]).ok()?;
+        // (A polynomial curve's weight is exactly 1: see `bspline::symbolic::CurvePieces`.)
+        let polynomial = (0..w.pieces()).all(|i| w.piece(i).iter().all(|&c| c == 1.0));
         let curvature = Enclosure::new(curvature)?;
         let tangent = Enclosure::new(tangent)?;
         let weight = match polynomial {
@@ -609,7 +613,7 @@ impl BoundForms {
         let pw = &self.curvature.pw;
         let ends = (pw.piece_at(lo), pw.piece_at(hi));
         let within_one = ends.0 == ends.1;
-        for (i, x0, x1) in pw.overlaps_of(lo, hi, ends) {
+        for (i, x0, x1) in pw.overlaps(lo, hi) {
             let (a, b) = pw.piece_span(i);
             let (kappa, v) = if x0 <= a && x1 >= b {
                 self.covered[i]?
@@ -868,7 +872,7 @@ mod tests {
                 (v.dot(axis) / v.norm()).abs() < 1e-6
             });
             if !near_margin {
-                prop_assert_eq!(cone_inside(cone_ends(&c), axis), pointwise);
+                prop_assert_eq!(cone_inside(cone_ends(&c, &[0.0, 0.0]), axis), pointwise);
             }
         }
     }
@@ -892,7 +896,7 @@ mod tests {
     ) {
                 let n = coefs.len() / dim;
                 let f = bspline::BSpline::clamped_uniform(deg, dim, coefs[..n * dim].to_vec()).unwrap();
-                let e = Enclosure::new(&f).unwrap();
+                let e = Enclosure::new(&bspline::Piecewise::from_bspline(&f)).unwrap();
                 let (lo, hi) = (a.min(1.0 - len.min(1.0)), (a.min(1.0 - len.min(1.0)) + len).min(1.0));
                 let mut iv = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
                 e.join_range(lo, hi, &mut iv);

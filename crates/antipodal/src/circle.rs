@@ -7,7 +7,7 @@
 //! inverse of an ellipse, where `tan φ = (a/b) tan ψ`).
 
 use crate::curve::PlaneCurve;
-use crate::forms::{Forms, SymbolicForms};
+use crate::forms::{Forms, Seam, SymbolicForms};
 use crate::geom::Jet;
 use crate::shapes::CircleShape;
 use bspline::Rational;
@@ -25,7 +25,9 @@ impl<'a> OnCircle<'a> {
     pub(crate) fn new(inner: &'a dyn PlaneCurve) -> Option<Self> {
         let forms = match inner.circle_forms() {
             Some(f) => Forms::Kept(f),
-            None => Forms::Built(Box::new(SymbolicForms::new(inner.circle_form()?).ok()?)),
+            None => Forms::Built(Box::new(
+                SymbolicForms::new(inner.circle_form()?, Seam::Circle).ok()?,
+            )),
         };
         Some(Self { inner, forms })
     }
@@ -313,7 +315,7 @@ mod tests {
             let generic = OnCircle {
                 inner: inner.as_ref(),
                 forms: Forms::Built(Box::new(
-                    SymbolicForms::new(inner.circle_form().unwrap()).unwrap(),
+                    SymbolicForms::new(inner.circle_form().unwrap(), Seam::Circle).unwrap(),
                 )),
             };
             for i in 0..=1000 {

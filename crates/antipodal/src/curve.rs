@@ -1,10 +1,9 @@
 //! The plane-curve trait the algorithms run on, and its B-spline/NURBS implementation.
 
 use crate::error::{Error, Result};
-use crate::fast::Pw;
-use crate::forms::{kept, KeptForms, SymbolicForms};
+use crate::forms::{kept, KeptForms, Seam, SymbolicForms};
 use crate::geom::{Jet, V2};
-use bspline::{BSpline, Rational};
+use bspline::{BSpline, Piecewise, Rational};
 
 /// A regular parametric plane curve with three continuous derivatives (piecewise for splines).
 ///
@@ -61,8 +60,10 @@ pub trait PlaneCurve {
 pub struct SplineCurve {
     curve: Rational,
     closed: bool,
+    /// How the curve continues across its seam.
+    seam: Seam,
     /// The homogeneous curve as Bézier pieces (fast evaluation).
-    fast: Pw,
+    fast: Piecewise,
     /// Symbolic forms, built on first use.
     forms: KeptForms,
 }
@@ -88,10 +89,11 @@ impl SplineCurve {
         let size = control_size(&curve);
         let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
         let closed = gap <= 1e-12 * size.max(f64::MIN_POSITIVE);
-        let fast = Pw::new(curve.homogeneous());
+        let fast = Piecewise::from_bspline(curve.homogeneous());
         Ok(Self {
             curve,
             closed,
+            seam: Seam::Unknown,
             fast,
             forms: KeptForms::new(),
         })
@@ -100,13 +102,26 @@ impl SplineCurve {
     /// A closed uniform periodic B-spline (optionally rational) through `points`: domain
     /// `[0, n)`, the piece on `[i, i+1]` shaped by points `i..=i+p` (indices mod `n`).
     pub fn periodic(degree: usize, points: &[[f64; 2]], weights: Option<&[f64]>) -> Result<Self> {
-        let hom = homogeneous(points, weights)?;
-        let spline = BSpline::periodic(degree, 3, hom)?;
-        let curve = Rational::from_homogeneous(spline)?;
-        let fast = Pw::new(curve.homogeneous());
+        if let Some(w) = weights {
+            if w.len() != points.len() {
+                return Err(Error::Spline(bspline::Error::CountMismatch {
+                    what: "weights (one per control point)",
+                    expected: points.len(),
+                    got: w.len(),
+                }));
+            }
+        }
+        let flat: Vec<f64> = points.iter().flat_map(|p| p.iter().copied()).collect();
+        let spline = BSpline::periodic(degree, 2, flat)?;
+        // The wrapped control points repeat the first `degree` ones, weights alike.
+        let wrapped: Option<Vec<f64>> =
+            weights.map(|w| w.iter().chain(&w[..degree.min(w.len())]).copied().collect());
+        let curve = Rational::new(spline, wrapped.as_deref())?;
+        let fast = Piecewise::from_bspline(curve.homogeneous());
         Ok(Self {
             curve,
             closed: true,
+            seam: Seam::Periodic(degree as i32 - 1),
             fast,
             forms: KeptForms::new(),
         })
@@ -134,36 +149,10 @@ impl SplineCurve {
     }
 }
 
-fn homogeneous(points: &[[f64; 2]], weights: Option<&[f64]>) -> Result<Vec<f64>> {
-    if let Some(w) = weights {
-        if w.len() != points.len() {
-            return Err(Error::Spline(bspline::Error::CountMismatch {
-                what: "weights (one per control point)",
-                expected: points.len(),
-                got: w.len(),
-            }));
-        }
-        if let Some(index) = w.iter().position(|&x| !(x > 0.0 && x.is_finite())) {
-            return Err(Error::Spline(bspline::Error::NonPositiveWeight {
-                index,
-                value: w[index],
-            }));
-        }
-    }
-    Ok(points
-        .iter()
-        .enumerate()
-        .flat_map(|(i, p)| {
-            let w = weights.map_or(1.0, |w| w[i]);
-            [p[0] * w, p[1] * w, w]
-        })
-        .collect())
-}
-
 /// Point and derivatives up to order `k ≤ 3` of the planar rational curve with homogeneous
 /// form `h` (`out[2j..2j+2]` the j-th derivative), by the quotient rule
 /// `C⁽ʲ⁾ = (X⁽ʲ⁾ − Σᵢ C(j,i) w⁽ⁱ⁾ C⁽ʲ⁻ⁱ⁾) / w`.
-pub(crate) fn rational_derivs(h: &Pw, u: f64, k: usize, out: &mut [f64; 8]) {
+pub(crate) fn rational_derivs(h: &Piecewise, u: f64, k: usize, out: &mut [f64; 8]) {
     let mut hv = [0.0; 12];
     let k = k.min(3);
     h.eval_derivs(u, k, &mut hv[..3 * (k + 1)]);
@@ -223,7 +212,7 @@ impl PlaneCurve for SplineCurve {
         Some(&self.curve)
     }
     fn symbolic_forms(&self) -> Option<&SymbolicForms> {
-        kept(&self.forms, || Some(self.curve.clone()))
+        kept(&self.forms, || Some((self.curve.clone(), self.seam)))
     }
 }
 

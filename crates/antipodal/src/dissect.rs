@@ -7,7 +7,8 @@
 
 use crate::error::{Error, Result};
 use crate::geom::{wrap_pi, V2};
-use crate::view::{newton_bracketed, View};
+use crate::prims::solve_in;
+use crate::view::View;
 use smallvec::SmallVec;
 use std::f64::consts::PI;
 
@@ -219,12 +220,15 @@ impl View<'_> {
         }) {
             return true;
         }
-        let mid = axis;
         let mut ok = true;
-        cert.tangent_pw.for_each_restricted_points(l, h, |pts| {
+        cert.tangent.for_each_restricted_points(l, h, |pts, err| {
+            // Each coordinate within its bound of the exact one: the projection on the axis
+            // within their weighted sum, beyond which the point must lie on the axis's side
+            // (with room for the rounding of the projection).
+            let reach = err[0] * axis.x.abs() + err[1] * axis.y.abs();
             ok = pts.chunks_exact(2).all(|c| {
                 let v = V2::new(c[0], c[1]);
-                v.dot(mid) > 1e-9 * v.norm().max(f64::MIN_POSITIVE)
+                v.dot(axis) > reach + 1e-9 * v.norm().max(f64::MIN_POSITIVE)
             });
             ok
         });
@@ -250,7 +254,7 @@ impl View<'_> {
             None => {
                 let kappa = |u: f64| {
                     let j = self.jet(u);
-                    (j.d1.cross(j.d2), j.d1.cross(j.d3))
+                    (j.d1.cross(j.d2), j.d1.cross(j.d3), f64::NAN)
                 };
                 let mut zs = Vec::new();
                 for w in tr.u.windows(2) {
@@ -259,13 +263,7 @@ impl View<'_> {
                         continue;
                     }
                     if (k0 < 0.0) != (k1 < 0.0) && k1 != 0.0 {
-                        zs.push(newton_bracketed(
-                            kappa,
-                            (w[0], w[1]),
-                            (k0, k1),
-                            self.tol,
-                            f64::NAN,
-                        ));
+                        zs.push(solve_in(kappa, (w[0], w[1]), (k0, k1), self.tol, f64::NAN));
                     }
                 }
                 zs

@@ -1,34 +1,46 @@
-//! The symbolic B-spline forms the certified algorithms need, computed once per curve.
+//! The symbolic forms the certified algorithms need, computed once per curve, in the piecewise
+//! Bézier form of `bspline` with bounds on their rounding.
 
 use crate::bounds::BoundForms;
 use crate::error::Result;
-use crate::fast::Pw;
 use crate::shapes::CircleShape;
-use bspline::roots::{sign_changes, RootOptions, SignChanges};
-use bspline::{BSpline, Rational};
+use bspline::roots::{sign_changes_in, RootOptions, SignChanges};
+use bspline::{Piecewise, Rational};
 use std::sync::OnceLock;
 
-/// Symbolic B-spline forms of a rational plane curve, for the certified algorithms: its tangent
-/// and tangency numerators, its curvature numerator, and their Bézier pieces. The curve types
-/// of this crate build them once, on first use, and keep them, so that repeated runs on the
-/// same curve skip the symbolic products. Opaque.
+/// How the homogeneous form of a curve continues across breaks and the seam, beyond what its
+/// knots say.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Seam {
+    /// Open, or closed with nothing known across the seam (a clamped closed spline).
+    Unknown,
+    /// A periodic curve whose homogeneous form is `C^order` across the seam.
+    Periodic(i32),
+    /// A shape on the rational circle: `C⁰` across the seam, numerators continuous at every
+    /// break (see `CurvePieces::numerators_continuous`).
+    Circle,
+}
+
+/// Symbolic forms of a rational plane curve, for the certified algorithms: its homogeneous
+/// form, its tangent and tangency numerators and its curvature numerator, each with bounds on
+/// its rounding. The curve types of this crate build them once, on first use, and keep them,
+/// so that repeated runs on the same curve skip the symbolic products. Opaque.
 #[derive(Debug, Clone)]
 pub struct SymbolicForms {
     /// The curve itself.
     pub(crate) curve: Rational,
-    /// Tangent numerator `D` (dim 2): `C′ = D / w²`.
-    pub(crate) tangent: BSpline,
-    /// `D` as Bézier pieces: `D · n` is the sign function of point-with-normal.
-    pub(crate) tangent_pw: Pw,
-    /// `(A, Dₓ, D_y)` with `A = X × X′`, `D = wX′ − w′X`, as Bézier pieces:
-    /// `A − q × D = (X − qw) × (X − qw)′` is the sign function of point-of-tangency from `q`
-    /// (`None` if the two do not share their pieces).
-    pub(crate) tangency_pw: Option<Pw>,
-    /// The homogeneous curve `(X, w)` as Bézier pieces: `(X − qw) · v` is the sign function of
-    /// point-on-ray.
-    pub(crate) hom_pw: Pw,
+    /// How the forms continue across breaks and the seam.
+    seam: Seam,
+    /// The homogeneous curve `(X, w)`: `(X − qw) · v` is the sign function of point-on-ray.
+    pub(crate) hom: Piecewise,
+    /// Tangent numerator `D` (dim 2): `C′ = D / w²`; `D · n` is the sign function of
+    /// point-with-normal.
+    pub(crate) tangent: Piecewise,
+    /// `(A, Dₓ, D_y)` with `A = X × X′`: `A − q × D = (X − qw) × (X − qw)′` is the sign
+    /// function of point-of-tangency from `q`.
+    pub(crate) tangency: Piecewise,
     /// The curvature numerator (its roots are the inflections).
-    pub(crate) curvature: BSpline,
+    pub(crate) curvature: Piecewise,
     /// Enclosures of the curvature over intervals, built on first use.
     bounds: OnceLock<Option<BoundForms>>,
     /// The curve's size (see `View::scale`), measured on first use.
@@ -42,20 +54,21 @@ pub struct SymbolicForms {
 }
 
 impl SymbolicForms {
-    /// The forms of `curve` (planar).
-    pub(crate) fn new(curve: Rational) -> Result<Self> {
-        let tangent = bspline::symbolic::tangent_numerator(&curve)?;
-        let tangent_pw = Pw::new(&tangent);
-        let tangency_pw = tangency_parts(&curve).map(|b| Pw::new(&b));
-        let hom_pw = Pw::new(curve.homogeneous());
-        let curvature = bspline::symbolic::curvature_numerator(&curve)?;
+    /// The forms of `curve` (planar), continued across its seam as `seam` says.
+    pub(crate) fn new(curve: Rational, seam: Seam) -> Result<Self> {
+        let mut pieces = bspline::symbolic::homogeneous_pieces(&curve);
+        pieces = match seam {
+            Seam::Unknown => pieces,
+            Seam::Periodic(order) => pieces.periodic(order),
+            Seam::Circle => pieces.periodic(0).numerators_continuous(),
+        };
         Ok(Self {
+            tangent: pieces.tangent()?,
+            tangency: pieces.tangency()?,
+            curvature: pieces.curvature()?,
+            hom: pieces.hom,
             curve,
-            tangent,
-            tangent_pw,
-            tangency_pw,
-            hom_pw,
-            curvature,
+            seam,
             bounds: OnceLock::new(),
             size: OnceLock::new(),
             sign_changes: OnceLock::new(),
@@ -69,7 +82,7 @@ impl SymbolicForms {
         self.reversed
             .get_or_init(|| {
                 let r = crate::view::reverse(&self.curve).ok()?;
-                SymbolicForms::new(r).ok().map(Box::new)
+                SymbolicForms::new(r, self.seam).ok().map(Box::new)
             })
             .as_deref()
     }
@@ -82,7 +95,7 @@ impl SymbolicForms {
     /// The enclosures of [`crate::view::View::arc_bounds`].
     pub(crate) fn bound_forms(&self) -> Option<&BoundForms> {
         self.bounds
-            .get_or_init(|| BoundForms::new(&self.curve, &self.tangent, &self.curvature))
+            .get_or_init(|| BoundForms::new(&self.hom, &self.tangent, &self.curvature))
             .as_ref()
     }
 
@@ -98,7 +111,7 @@ impl SymbolicForms {
                 return Ok(s.clone());
             }
         }
-        let found = sign_changes(&self.curvature, closed, opts)?;
+        let found = sign_changes_in(&self.curvature, closed, opts)?;
         let _ = self.sign_changes.set((*opts, closed, found.clone()));
         Ok(found)
     }
@@ -111,26 +124,11 @@ pub(crate) fn kept_circle(
     shape: CircleShape,
 ) -> Option<&SymbolicForms> {
     kept.get_or_init(|| {
-        let mut f = SymbolicForms::new(make()?).ok()?;
+        let mut f = SymbolicForms::new(make()?, Seam::Circle).ok()?;
         f.shape = Some(shape);
         Some(f)
     })
     .as_ref()
-}
-
-/// `(A, D)` stacked (dim 3): `A = X × X′` and `D = wX′ − w′X`, both of degree `2p − 1` on the
-/// curve's knots, so that `(X − qw) × (X − qw)′ = A − q × D` for every point `q`.
-fn tangency_parts(c: &Rational) -> Option<BSpline> {
-    let h = c.homogeneous();
-    let x = h.map_points(2, |p, o| o.copy_from_slice(&p[..2]));
-    let xd = x.deriv();
-    let a = x.cross(&xd).ok()?;
-    let w = h.component(2).ok()?;
-    let d = w.mul(&xd).ok()?.sub(&w.deriv().mul(&x).ok()?).ok()?;
-    if a.degree() != d.degree() || a.knots() != d.knots() {
-        return None;
-    }
-    BSpline::stack(&[&a, &d]).ok()
 }
 
 /// Forms kept by a curve, or built for one run.
@@ -152,11 +150,12 @@ impl std::ops::Deref for Forms<'_> {
 /// A lazily built, kept set of forms (`None` inside when they cannot be built).
 pub(crate) type KeptForms = OnceLock<Option<SymbolicForms>>;
 
-/// The kept forms of `kept`, building them from `make` on first use.
+/// The kept forms of `kept`, building them from `make` (the curve and how it continues across
+/// its seam) on first use.
 pub(crate) fn kept(
     kept: &KeptForms,
-    make: impl FnOnce() -> Option<Rational>,
+    make: impl FnOnce() -> Option<(Rational, Seam)>,
 ) -> Option<&SymbolicForms> {
-    kept.get_or_init(|| make().and_then(|r| SymbolicForms::new(r).ok()))
+    kept.get_or_init(|| make().and_then(|(r, seam)| SymbolicForms::new(r, seam).ok()))
         .as_ref()
 }

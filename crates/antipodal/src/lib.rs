@@ -30,7 +30,6 @@ mod dissect;
 mod driver;
 mod error;
 mod families;
-mod fast;
 mod finish;
 mod forms;
 mod geom;

@@ -6,12 +6,24 @@
 //! the ends (Jia's criterion, exact on a monotone segment), refined by Newton's method inside
 //! the bracket, which cannot fail.
 
-use crate::fast::Pw;
 use crate::geom::V2;
-use crate::view::{halley_bracketed, Count, View};
-use bspline::roots::{Root, RootKind};
-use bspline::BSpline;
+use crate::view::View;
+use bspline::roots::{Count, Root, RootKind};
+use bspline::solve::{bracketed, Accuracy};
+use bspline::Piecewise;
 use smallvec::SmallVec;
+
+/// Halley's step safeguarded by a bracket on which `f` changes sign (see
+/// [`bspline::solve::bracketed`]), to the parameter tolerance `tol`, from `hint` (NaN: none).
+pub(crate) fn solve_in(
+    f: impl Fn(f64) -> (f64, f64, f64),
+    bracket: (f64, f64),
+    ends: (f64, f64),
+    tol: f64,
+    hint: f64,
+) -> f64 {
+    bracketed(f, bracket, ends, Accuracy::param(tol).hint(hint))
+}
 
 /// Which root to take when several qualify.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -21,8 +33,9 @@ pub(crate) enum Prefer {
 }
 
 impl View<'_> {
-    /// Shared driver: `f` gives the value and its first two derivatives, `sym` builds the
-    /// symbolic numerator (same sign as `f`), `accept` filters roots by geometry.
+    /// Shared driver: `f` gives the value and its first two derivatives, `form` is the symbolic
+    /// form with the weights whose combination is the numerator of `f` (same sign), `accept`
+    /// filters roots by geometry.
     // The closures and the bracket are the primitive; bundling them would only rename them.
     #[allow(clippy::too_many_arguments)]
     fn solve(
@@ -30,51 +43,36 @@ impl View<'_> {
         lo: f64,
         hi: f64,
         f: impl Fn(f64) -> (f64, f64, f64),
-        fast: Option<(&Pw, [f64; 3])>,
-        sym: impl FnOnce() -> Option<BSpline>,
+        form: Option<(&Piecewise, [f64; 3])>,
         accept: impl Fn(f64) -> bool,
         prefer: Prefer,
         hint: f64,
     ) -> Option<f64> {
         let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
-        if self.cert.is_some() {
-            // The sign test on the precomputed Bézier pieces settles almost every call.
-            if let Some((pw, w)) = fast {
-                match self.cert_count_pw(pw, &w[..pw.dim()], lo, hi) {
-                    Some(Count::Zero) => return None,
-                    Some(Count::AtEnd(x)) => return accept(x).then_some(x),
-                    Some(Count::One(a, b)) => {
-                        let (fa, fb) = (f(a).0, f(b).0);
-                        if (fa < 0.0) != (fb < 0.0) {
-                            let u = halley_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
-                            return accept(u).then_some(u);
-                        }
+        if let (Some(_), Some((pw, w))) = (&self.cert, form) {
+            let weights = &w[..pw.dim()];
+            // The sign test on the pieces settles almost every call.
+            match self.cert_count(pw, weights, lo, hi) {
+                Some(Count::Zero) => return None,
+                Some(Count::AtEnd(x)) => return accept(x).then_some(x),
+                Some(Count::One(a, b)) => {
+                    let (fa, fb) = (f(a).0, f(b).0);
+                    if (fa < 0.0) != (fb < 0.0) {
+                        let u = solve_in(&f, (a, b), (fa, fb), self.tol, hint);
+                        return accept(u).then_some(u);
                     }
-                    None => {}
                 }
+                Some(Count::Open) | None => {}
+            }
+            if let Some(roots) = self.cert_roots(pw, weights, lo, hi) {
+                let (flo, fhi) = (f(lo).0, f(hi).0);
+                return self.pick(roots, lo, hi, &f, &accept, prefer, flo, fhi);
             }
         }
-        let (flo, fhi) = (f(lo).0, f(hi).0);
         if self.cert.is_some() {
-            if let Some(g) = sym() {
-                match self.cert_count(&g, lo, hi) {
-                    Some(Count::Zero) => return None,
-                    Some(Count::One(a, b)) => {
-                        // Certified unique root in [a, b]: refine on the curve itself.
-                        let (fa, fb) = (f(a).0, f(b).0);
-                        if (fa < 0.0) != (fb < 0.0) {
-                            let u = halley_bracketed(&f, (a, b), (fa, fb), self.tol, hint);
-                            return accept(u).then_some(u);
-                        }
-                    }
-                    Some(Count::AtEnd(_)) | None => {}
-                }
-                if let Some(roots) = self.cert_roots(&g, lo, hi) {
-                    return self.pick(roots, lo, hi, &f, &accept, prefer, flo, fhi);
-                }
-            }
             self.uncertify();
         }
+        let (flo, fhi) = (f(lo).0, f(hi).0);
         sampled(lo, hi, flo, fhi, &f, &accept, self.tol, hint)
     }
 
@@ -137,10 +135,6 @@ impl View<'_> {
             let j = self.jet_to(u, 3);
             (j.d1.dot(n), j.d2.dot(n), j.d3.dot(n))
         };
-        let sym = || {
-            let d = &self.cert.as_ref()?.tangent;
-            Some(d.map_points(1, |p, o| o[0] = p[0] * n.x + p[1] * n.y))
-        };
         let accept = |u: f64| self.normal(u).dot(n) > 0.0;
         if self.cert.is_some() {
             let end = |u: f64| (u, self.jet_to(u, 1).d1);
@@ -148,8 +142,8 @@ impl View<'_> {
                 return found;
             }
         }
-        let fast = self.cert.as_ref().map(|c| (&c.tangent_pw, [n.x, n.y, 0.0]));
-        self.solve(lo, hi, f, fast, sym, accept, Prefer::Low, hint)
+        let form = self.cert.as_ref().map(|c| (&c.tangent, [n.x, n.y, 0.0]));
+        self.solve(lo, hi, f, form, accept, Prefer::Low, hint)
     }
 
     /// [`View::point_with_normal_near`] on a monotone segment where the signs of `C′ · n` at
@@ -167,7 +161,7 @@ impl View<'_> {
             let j = self.jet_to(u, 3);
             (j.d1.dot(n), j.d2.dot(n), j.d3.dot(n))
         };
-        let u = halley_bracketed(f, (lo, hi), ends, self.tol, hint);
+        let u = solve_in(f, (lo, hi), ends, self.tol, hint);
         (self.normal(u).dot(n) > 0.0).then_some(u)
     }
 
@@ -224,22 +218,14 @@ impl View<'_> {
                 j.d1.cross(j.d2) + r.cross(j.d3),
             )
         };
-        let sym = || {
-            let c = &self.cert.as_ref()?.curve;
-            bspline::symbolic::tangency_from(c, p.arr()).ok()
-        };
         if self.cert.is_some() {
             if let Some(found) = self.tangency_on_monotone(lo.min(hi), lo.max(hi), p, &f) {
                 return found;
             }
         }
         // A − p × D = A + p_y Dₓ − pₓ D_y.
-        let fast = self
-            .cert
-            .as_ref()
-            .and_then(|c| c.tangency_pw.as_ref())
-            .map(|pw| (pw, [1.0, p.y, -p.x]));
-        self.solve(lo, hi, f, fast, sym, |_| true, prefer, f64::NAN)
+        let form = self.cert.as_ref().map(|c| (&c.tangency, [1.0, p.y, -p.x]));
+        self.solve(lo, hi, f, form, |_| true, prefer, f64::NAN)
     }
 
     /// `point-on-ray(lo, hi, c)`: where the segment meets the ray from `c` along the unit
@@ -258,10 +244,6 @@ impl View<'_> {
             let j = self.jet_to(u, 2);
             ((j.p - c).dot(v), j.d1.dot(v), j.d2.dot(v))
         };
-        let sym = || {
-            let cc = &self.cert.as_ref()?.curve;
-            bspline::symbolic::offset_dot(cc, c.arr(), v.arr()).ok()
-        };
         let accept = |u: f64| (self.point(u) - c).dot(dir) > 0.0;
         if self.cert.is_some() {
             if let Some(r) =
@@ -271,11 +253,11 @@ impl View<'_> {
             }
         }
         // (X − c w) · v = vₓ X + v_y Y − (c · v) w.
-        let fast = self
+        let form = self
             .cert
             .as_ref()
-            .map(|cc| (&cc.hom_pw, [v.x, v.y, -c.dot(v)]));
-        self.solve(lo, hi, f, fast, sym, accept, prefer, hint)
+            .map(|cc| (&cc.hom, [v.x, v.y, -c.dot(v)]));
+        self.solve(lo, hi, f, form, accept, prefer, hint)
     }
 }
 
@@ -303,13 +285,7 @@ impl View<'_> {
             return None;
         }
         if (fl < 0.0) != (fh < 0.0) {
-            return Some(Some(halley_bracketed(
-                f,
-                (lo, hi),
-                (fl, fh),
-                self.tol,
-                f64::NAN,
-            )));
+            return Some(Some(solve_in(f, (lo, hi), (fl, fh), self.tol, f64::NAN)));
         }
         // The bending direction: the side the tangent turns to (|Φ| < π).
         let turn = jl.d1.cross(jh.d1);
@@ -379,7 +355,7 @@ impl View<'_> {
                 let j = self.jet_to(u, 3);
                 (j.d1.dot(v), j.d2.dot(v), j.d3.dot(v))
             };
-            let ue = halley_bracketed(g, (lo, hi), (gl, gh), self.tol, f64::NAN);
+            let ue = solve_in(g, (lo, hi), (gl, gh), self.tol, f64::NAN);
             cuts.push((ue, self.point(ue)));
         }
         cuts.push((hi, jh.p));
@@ -394,7 +370,7 @@ impl View<'_> {
             let ((x0, p0), (x1, p1)) = (cuts[k], cuts[k + 1]);
             let (f0, f1) = (val(p0), val(p1));
             if (f0 < 0.0) != (f1 < 0.0) {
-                let u = halley_bracketed(f, (x0, x1), (f0, f1), self.tol, hint);
+                let u = solve_in(f, (x0, x1), (f0, f1), self.tol, hint);
                 if accept(u) {
                     return Some(Some(u));
                 }
@@ -421,7 +397,7 @@ fn sampled(
     } else if fhi == 0.0 {
         hi
     } else if (flo < 0.0) != (fhi < 0.0) {
-        halley_bracketed(f, (lo, hi), (flo, fhi), tol, hint)
+        solve_in(f, (lo, hi), (flo, fhi), tol, hint)
     } else if flo.abs() <= 1e-12 * fhi.abs() {
         lo
     } else if fhi.abs() <= 1e-12 * flo.abs() {

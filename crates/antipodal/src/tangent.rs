@@ -212,7 +212,7 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
     if (fa > 0.0) == (fb > 0.0) {
         return false;
     }
-    let u = crate::view::halley_bracketed(f, (a, b), (fa, fb), v.tol, f64::NAN);
+    let u = crate::prims::solve_in(f, (a, b), (fa, fb), v.tol, f64::NAN);
     let j = v.jet_to(u, 2);
     (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
 }

@@ -7,25 +7,13 @@
 
 use crate::circle::Angle;
 use crate::curve::PlaneCurve;
-use crate::fast::Pw;
 use crate::forms::{Forms, SymbolicForms};
 use crate::geom::{Jet, V2};
-use bspline::roots::{find_roots, Root, RootOptions};
-use bspline::{BSpline, Rational};
+use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
+use bspline::{BSpline, Piecewise, Rational};
 use smallvec::SmallVec;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
-
-/// Outcome of [`View::cert_count`].
-pub(crate) enum Count {
-    /// No root (certified).
-    Zero,
-    /// Exactly one simple root in this bracket (certified).
-    One(f64, f64),
-    /// No root but, within rounding, the end `lo` or `hi` given (the function's value there is
-    /// within its rounding bound of zero).
-    AtEnd(f64),
-}
 
 /// Symbolic forms of a spline curve in the view's parametrisation.
 pub(crate) struct Cert<'a> {
@@ -157,24 +145,17 @@ impl<'a> View<'a> {
     ) -> crate::Result<Self> {
         let (a, b) = curve.domain();
         let closed = curve.is_closed();
-        let cert = match (certify, curve.rational()) {
-            (true, Some(r)) => {
-                let kept = curve.symbolic_forms();
-                let forms = match (rev, kept, kept.and_then(|f| f.reversed())) {
-                    (false, Some(f), _) => Forms::Kept(f),
-                    (true, _, Some(f)) => Forms::Kept(f),
-                    _ => {
-                        let c = if rev { reverse(r)? } else { r.clone() };
-                        Forms::Built(Box::new(SymbolicForms::new(c)?))
-                    }
-                };
-                Some(Cert {
-                    forms,
-                    opts: RootOptions::default().tolerance(tol.max(1e-15)),
-                })
-            }
-            _ => None,
+        // The forms the curve keeps (its own or its reversal's); none: nothing is certified.
+        let kept = curve.symbolic_forms().filter(|_| certify);
+        let forms = match rev {
+            false => kept,
+            true => kept.and_then(SymbolicForms::reversed),
         };
+        let cert = forms.map(|f| Cert {
+            forms: Forms::Kept(f),
+            opts: RootOptions::default().tolerance(tol.max(1e-15)),
+        });
+        let cert_present = cert.is_some();
         let mut v = Self {
             curve,
             a,
@@ -185,7 +166,7 @@ impl<'a> View<'a> {
             cert,
             scale: 1.0,
             tol: tol * (b - a).max(1.0),
-            certified: Cell::new(certify && curve.rational().is_some()),
+            certified: Cell::new(cert_present),
             report: None,
             cache: JetCache::new(),
             piece_points: RefCell::new(Vec::new()),
@@ -381,13 +362,20 @@ impl<'a> View<'a> {
         out
     }
 
-    /// Certified roots of a scalar B-spline `f` (in the view's parameter) on the unwrapped
-    /// interval `[lo, hi]`, split at the seam.
-    pub(crate) fn cert_roots(&self, f: &BSpline, lo: f64, hi: f64) -> Option<Vec<Root>> {
+    /// Certified roots of the scalar function `Σ weights[c] f_c` of a symbolic form (in the
+    /// view's parameter) on the unwrapped interval `[lo, hi]`, split at the seam.
+    pub(crate) fn cert_roots(
+        &self,
+        f: &Piecewise,
+        weights: &[f64],
+        lo: f64,
+        hi: f64,
+    ) -> Option<Vec<Root>> {
         let cert = self.cert.as_ref()?;
+        let g = f.weighted(weights);
         let mut out = Vec::new();
         for (x0, x1, shift) in self.domain_pieces(lo, hi) {
-            for mut r in find_roots(f, x0, x1, &cert.opts).ok()? {
+            for mut r in find_roots_in(&g, x0, x1, &cert.opts).ok()? {
                 r.u += shift;
                 r.bracket = (r.bracket.0 + shift, r.bracket.1 + shift);
                 out.push(r);
@@ -396,146 +384,50 @@ impl<'a> View<'a> {
         Some(out)
     }
 
-    /// The fast certified decision: the control polygon of `f` restricted to `[lo, hi]`, with
-    /// every coefficient's sign trusted (beyond its rounding bound), has no sign change (no
-    /// root) or exactly one (exactly one simple root, by variation diminishing). `None` when
-    /// that does not settle it (then full root isolation decides).
-    pub(crate) fn cert_count(&self, f: &BSpline, lo: f64, hi: f64) -> Option<Count> {
-        let mut one = None;
-        for (x0, x1, shift) in self.domain_pieces(lo, hi) {
-            let g = f.restrict(x0, x1).ok()?;
-            let c = g.coefs();
-            let err = 4.0 * (g.degree() + 2) as f64 * f64::EPSILON * g.max_abs_coef();
-            if c.iter().any(|x| x.abs() <= err) {
-                return None;
-            }
-            let changes = c
-                .windows(2)
-                .filter(|w| (w[0] < 0.0) != (w[1] < 0.0))
-                .count();
-            match (changes, one) {
-                (0, _) => {}
-                (1, None) => one = Some((x0 + shift, x1 + shift)),
-                _ => return None,
-            }
-        }
-        Some(match one {
-            None => Count::Zero,
-            Some((a, b)) => Count::One(a, b),
-        })
-    }
-}
-
-impl View<'_> {
-    /// [`View::cert_count`] on the Bézier pieces of the scalar function
-    /// `Σ_c weights[c] · f_c`: no allocation, no knot insertion, and brackets as tight as the
-    /// pieces around the sign change.
+    /// What the control polygon of the scalar function `Σ weights[c] f_c` of a symbolic form
+    /// proves about its roots on the unwrapped interval `[lo, hi]` (see
+    /// [`bspline::roots::Count`]): the pieces across breaks and the seam read as one polygon,
+    /// joined as the form continues there. `None` when it does not decide (then full root
+    /// isolation does).
     ///
-    /// The pieces' control polygons (across breaks and the seam) are read as one sequence, the
-    /// control polygon of the function on `[lo, hi]` with every break of full multiplicity, so
-    /// variation diminishing bounds its roots by the sign changes. A coefficient within its
-    /// rounding bound of zero has no trusted sign; it cannot change the count when it lies
-    /// between trusted coefficients of opposite signs (a root exactly at a break, at the seam or
-    /// on an axis of symmetry), and leaves the decision open otherwise. So do untrusted ends and
-    /// a jump at a joint (a curve only C⁰ at its seam).
-    pub(crate) fn cert_count_pw(&self, f: &Pw, weights: &[f64], lo: f64, hi: f64) -> Option<Count> {
-        struct State {
-            /// Sign of the last trusted coefficient and the start of its piece.
-            last: Option<(bool, f64)>,
-            /// Untrusted coefficients since the last trusted one.
-            pending: bool,
-            /// Last coefficient of the previous piece and its bound (joints).
-            prev_end: Option<(f64, f64)>,
-            changes: usize,
-            bracket: (f64, f64),
-            open: bool,
-            /// Untrusted coefficients before the first trusted one.
-            lead: usize,
-            /// Untrusted coefficients after the last trusted one.
-            trail: usize,
-        }
-        let mut st = State {
-            last: None,
-            pending: false,
-            prev_end: None,
-            changes: 0,
-            bracket: (lo, hi),
-            open: false,
-            lead: 0,
-            trail: 0,
-        };
-        let eps = 4.0 * (f.degree() + 2) as f64 * f64::EPSILON;
+    /// A sliver of a piece at an end (the interval ends just past a break) holds nothing but
+    /// the break's value again, and is left out.
+    pub(crate) fn cert_count(
+        &self,
+        f: &Piecewise,
+        weights: &[f64],
+        lo: f64,
+        hi: f64,
+    ) -> Option<Count> {
+        let mut count = SignCount::new(lo, hi);
+        let mut first = true;
         for (x0, x1, shift) in self.domain_pieces(lo, hi) {
-            f.for_each_restricted(weights, x0, x1, |a, b, c, scale| {
-                let err = eps * scale;
+            let mut fed = true;
+            f.for_each_restricted(weights, x0, x1, |i, a, b, c, err| {
                 let (a, b) = (a + shift, b + shift);
-                // A sliver of a piece at an end (the interval ends just past a break) holds
-                // nothing but the break's value again.
                 let sliver = b - a <= 4.0 * self.tol;
-                let leading = st.prev_end.is_none() && b < hi - 4.0 * self.tol;
-                let trailing = st.prev_end.is_some() && b >= hi - 4.0 * self.tol;
+                let leading = first && b < hi - 4.0 * self.tol;
+                let trailing = !first && b >= hi - 4.0 * self.tol;
                 if sliver && (leading || trailing) {
                     return true;
                 }
-                let mut skip_first = false;
-                if let Some((prev, perr)) = st.prev_end {
-                    // A joint: the same value twice for a continuous function.
-                    if (prev - c[0]).abs() > err + perr {
-                        st.open = true;
-                        return false;
-                    }
-                    skip_first = true;
-                }
-                for (i, &x) in c.iter().enumerate() {
-                    if i == 0 && skip_first {
-                        continue;
-                    }
-                    if x.abs() <= err {
-                        if st.last.is_none() {
-                            // Untrusted first coefficient: f(lo) ≈ 0.
-                            st.lead += 1;
-                        } else {
-                            st.pending = true;
-                            st.trail += 1;
-                        }
-                        continue;
-                    }
-                    st.trail = 0;
-                    let sign = x < 0.0;
-                    match st.last {
-                        Some((s0, start)) if s0 != sign => {
-                            st.changes += 1;
-                            if st.changes > 1 {
-                                st.open = true;
-                                return false;
-                            }
-                            st.bracket = (start, b);
-                        }
-                        Some(_) if st.pending => {
-                            // Untrusted between equal signs: 0 or 2 roots, undecided.
-                            st.open = true;
-                            return false;
-                        }
-                        _ => {}
-                    }
-                    st.pending = false;
-                    st.last = Some((sign, a));
-                }
-                st.prev_end = Some((c[c.len() - 1], err));
-                true
+                // At a domain piece's start (the seam) the form continues as across its seam.
+                let joint = if a - shift == f.domain().0 {
+                    f.continuity(0)
+                } else {
+                    f.continuity(i)
+                };
+                first = false;
+                fed = count.piece(a, b, c, err, joint);
+                fed
             });
-            if st.open {
+            if !fed {
                 return None;
             }
         }
-        // An end value within rounding of zero (its neighbour trusted, no other sign change):
-        // the one root there is the end itself, up to rounding.
-        match (st.changes, st.lead, st.trail, st.last.is_some()) {
-            (0, 0, 0, true) => Some(Count::Zero),
-            (0, 1, 0, true) => Some(Count::AtEnd(lo)),
-            (0, 0, 1, true) => Some(Count::AtEnd(hi)),
-            (1, 0, 0, true) => Some(Count::One(st.bracket.0, st.bracket.1)),
-            _ => None,
+        match count.finish() {
+            Count::Open => None,
+            decided => Some(decided),
         }
     }
 }
@@ -550,129 +442,16 @@ pub(crate) fn reverse(r: &Rational) -> crate::Result<Rational> {
     let coefs: Vec<f64> = (0..n).rev().flat_map(|i| h.ctrl(i).to_vec()).collect();
     let _ = n;
     let rev = BSpline::new(h.degree(), knots, d, coefs)?;
-    Ok(Rational::from_homogeneous(rev)?)
-}
-
-/// Newton's method safeguarded by a bracket `[lo, hi]` on which `f` changes sign: never fails.
-///
-/// `f` returns the value and derivative; `flo`, `fhi` are the values at `lo`, `hi`; `hint`
-/// (NaN for none) is a starting point. A bisection step replaces Newton whenever Newton would
-/// leave the bracket or is not at least halving the step (the classic `rtsafe` safeguard), so
-/// the loop (≤ 200 steps) converges for any continuous `f`. Once a Newton step falls below
-/// the tolerance, the point it starts from (evaluated already) is returned.
-pub(crate) fn newton_bracketed(
-    f: impl Fn(f64) -> (f64, f64),
-    bracket: (f64, f64),
-    ends: (f64, f64),
-    tol: f64,
-    hint: f64,
-) -> f64 {
-    safeguarded(
-        |x| {
-            let (v, d) = f(x);
-            (v, d, f64::NAN)
-        },
-        bracket,
-        ends,
-        tol,
-        hint,
-    )
-}
-
-/// [`newton_bracketed`] with Halley's step: `f` also returns the second derivative, and the
-/// convergence is cubic (fewer evaluations where a jet of one more order costs little).
-pub(crate) fn halley_bracketed(
-    f: impl Fn(f64) -> (f64, f64, f64),
-    bracket: (f64, f64),
-    ends: (f64, f64),
-    tol: f64,
-    hint: f64,
-) -> f64 {
-    safeguarded(f, bracket, ends, tol, hint)
-}
-
-/// The loop of [`newton_bracketed`] and [`halley_bracketed`] (`f″` NaN: Newton's step).
-fn safeguarded(
-    f: impl Fn(f64) -> (f64, f64, f64),
-    (mut lo, mut hi): (f64, f64),
-    (flo, fhi): (f64, f64),
-    tol: f64,
-    hint: f64,
-) -> f64 {
-    // Start from the hint when it is inside (a nearby previous solution converges in a few
-    // steps), else where the chord of the end values crosses zero (from the middle, the
-    // first Newton steps tend to overshoot and halve instead).
-    let inside = |x: f64| x > lo.min(hi) && x < lo.max(hi);
-    let secant = lo - flo * (hi - lo) / (fhi - flo);
-    let mut x = if inside(hint) {
-        hint
-    } else if inside(secant) {
-        secant
-    } else {
-        0.5 * (lo + hi)
-    };
-    // Orient so that f(lo) < 0.
-    if flo > 0.0 {
-        std::mem::swap(&mut lo, &mut hi);
-    }
-    let mut dx_old = (hi - lo).abs();
-    let mut dx = dx_old;
-    let (mut fx, mut dfx, mut ddfx) = f(x);
-    for _ in 0..200 {
-        let out = ((x - hi) * dfx - fx) * ((x - lo) * dfx - fx) > 0.0;
-        if out || (2.0 * fx).abs() > (dx_old * dfx).abs() {
-            dx_old = dx;
-            dx = 0.5 * (hi - lo);
-            x = lo + dx;
-            if dx.abs() <= 0.5 * tol {
-                return x;
-            }
-        } else {
-            dx_old = dx;
-            dx = fx / dfx;
-            // Halley's correction of the Newton step (which stays inside the bracket), unless
-            // it is large (far from the root, where the local quadratic model is no better
-            // than the line) or leaves the bracket.
-            let shrink = 1.0 - 0.5 * dx * ddfx / dfx;
-            if (0.5..=2.0).contains(&shrink) {
-                let to = x - dx / shrink;
-                if to > lo.min(hi) && to < lo.max(hi) {
-                    dx /= shrink;
-                }
-            }
-            // A step below the tolerance: the point it starts from, already evaluated (its
-            // error is about the step), is returned, and the caller finds its jet cached.
-            // (Sparing that evaluation instead, by a model of the error the step leaves, was
-            // tried: estimates from the steps or from difference quotients of derivatives
-            // missed by 100× where f″ changes between the points.)
-            if dx.abs() <= 0.5 * tol || fx == 0.0 {
-                return x;
-            }
-            x -= dx;
-        }
-        (fx, dfx, ddfx) = f(x);
-        if fx < 0.0 {
-            lo = x;
-        } else {
-            hi = x;
-        }
-    }
-    x
+    Ok(Rational::from_homogeneous_with_error(
+        rev,
+        r.coefficient_error(),
+    )?)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use proptest::prelude::*;
-
-    /// `f(x) = Σ cₖ xᵏ` (degree 3) with its first two derivatives.
-    fn cubic(c: [f64; 4]) -> impl Fn(f64) -> (f64, f64, f64) {
-        move |x| {
-            let f = ((c[3] * x + c[2]) * x + c[1]) * x + c[0];
-            let d = (3.0 * c[3] * x + 2.0 * c[2]) * x + c[1];
-            (f, d, 6.0 * c[3] * x + 2.0 * c[2])
-        }
-    }
 
     /// A piece point is solved once per piece and angle (angles within rounding are one), and
     /// a point on another piece or at another angle is solved anew.
@@ -725,103 +504,6 @@ mod tests {
                     prop_assert_eq!(got.d3, want.d3);
                 }
             }
-        }
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig { cases: 50000, max_global_rejects: 100_000, ..ProptestConfig::default() })]
-
-        /// On any bracket of a random cubic (one, two or three roots inside), both solvers
-        /// return a point where the sign changes within the tolerance, inside the bracket,
-        /// from any hint.
-        #[test]
-        fn safeguarded_solvers_land_on_a_sign_change(
-            c in proptest::array::uniform3(-2.0f64..2.0),
-            lo in -2.0f64..0.0,
-            hi in 0.0f64..2.0,
-            at in 0.0f64..1.0,
-            hint in -3.0f64..3.0,
-        ) {
-            // A root at `x0` inside the bracket (the sign may still not change: two more).
-            let x0 = lo + at * (hi - lo);
-            let c = [-((c[2] * x0 + c[1]) * x0 + c[0]) * x0, c[0], c[1], c[2]];
-            let f = cubic(c);
-            let (flo, fhi) = (f(lo).0, f(hi).0);
-            prop_assume!((flo < 0.0) != (fhi < 0.0) && flo != 0.0 && fhi != 0.0);
-            let tol = 1e-12;
-            let by_halley = halley_bracketed(&f, (lo, hi), (flo, fhi), tol, hint);
-            let by_newton = newton_bracketed(|x| { let (v, d, _) = f(x); (v, d) },
-                (lo, hi), (flo, fhi), tol, hint);
-            for (k, x) in [by_halley, by_newton].into_iter().enumerate() {
-                prop_assert!(x >= lo && x <= hi, "{x} outside [{lo}, {hi}]");
-                let (a, b) = (f((x - tol).max(lo)).0, f((x + tol).min(hi)).0);
-                let scale = c.iter().map(|v| v.abs()).sum::<f64>();
-                prop_assert!((a < 0.0) != (b < 0.0) || f(x).0.abs() <= 1e-14 * scale,
-                    "solver {k}: no sign change at {x}: {a} {b}");
-            }
-        }
-
-        /// The same on an oscillating function, where the steps overshoot most: the
-        /// solvers never leave the bracket, and end on one of its sign changes.
-        #[test]
-        fn safeguarded_solvers_stay_in_the_bracket(
-            k in 1.0f64..30.0,
-            phase in 0.0f64..6.3,
-            c in -3.0f64..3.0,
-            lo in -2.0f64..0.0,
-            hi in 0.0f64..2.0,
-            hint in -2.0f64..2.0,
-        ) {
-            // An oscillation on a tilted exponential (the steps overshoot on its flat side).
-            let f = |x: f64| {
-                let (s, co) = (k * x + phase).sin_cos();
-                let e = (c * x).exp();
-                (s + e - 1.0, k * co + c * e, -k * k * s + c * c * e)
-            };
-            let (flo, fhi) = (f(lo).0, f(hi).0);
-            prop_assume!((flo < 0.0) != (fhi < 0.0) && flo != 0.0 && fhi != 0.0);
-            let tol = 1e-12;
-            let by_halley = halley_bracketed(f, (lo, hi), (flo, fhi), tol, hint);
-            let by_newton = newton_bracketed(|x| { let (v, d, _) = f(x); (v, d) },
-                (lo, hi), (flo, fhi), tol, hint);
-            for (k, x) in [by_halley, by_newton].into_iter().enumerate() {
-                prop_assert!(x >= lo && x <= hi, "solver {k}: {x} outside [{lo}, {hi}]");
-                let (a, b) = (f((x - tol).max(lo)).0, f((x + tol).min(hi)).0);
-                prop_assert!((a < 0.0) != (b < 0.0) || f(x).0.abs() <= 1e-14,
-                    "solver {k}: no sign change at {x}: {a} {b}");
-            }
-        }
-
-        /// From a start within a tenth of the bracket of a simple root, Halley's iteration
-        /// reaches the tolerance in at most four evaluations (the last one confirms) and
-        /// Newton's in at most six.
-        #[test]
-        fn halley_converges_cubically(
-            root in -1.0f64..1.0,
-            slope in 0.5f64..2.0,
-            curve in proptest::array::uniform2(-0.5f64..0.5),
-            off in -0.1f64..0.1,
-        ) {
-            // (x − root)(slope + curve₀ (x − root) + curve₁ (x − root)²): monotone on the
-            // bracket [root − 0.5, root + 0.5].
-            let g = move |x: f64| {
-                let y = x - root;
-                let f = y * (slope + y * (curve[0] + y * curve[1]));
-                let d = slope + y * (2.0 * curve[0] + 3.0 * y * curve[1]);
-                (f, d, 2.0 * curve[0] + 6.0 * y * curve[1])
-            };
-            let (lo, hi) = (root - 0.5, root + 0.5);
-            let ends = (g(lo).0, g(hi).0);
-            let count = std::cell::Cell::new(0);
-            let counted = |x: f64| { count.set(count.get() + 1); g(x) };
-            let x = halley_bracketed(counted, (lo, hi), ends, 1e-12, root + off);
-            prop_assert!((x - root).abs() <= 1e-12);
-            prop_assert!(count.get() <= 4, "{} evaluations", count.get());
-            count.set(0);
-            let x = newton_bracketed(|x| { count.set(count.get() + 1); let (v, d, _) = g(x); (v, d) },
-                (lo, hi), ends, 1e-12, root + off);
-            prop_assert!((x - root).abs() <= 1e-12);
-            prop_assert!(count.get() <= 6, "{} evaluations", count.get());
         }
     }
 }

@@ -6,8 +6,9 @@
 //! pieces it overlaps, and [`crate::rounding`] bounds every step, in terms of the magnitudes
 //! involved.
 //!
-//! The error bound of a piece covers every coefficient of it: the exact function's coefficient
-//! lies within `error(i)` of the stored one, in every coordinate.
+//! The error bounds of a piece are per coordinate: the exact function's coefficient lies within
+//! `errors(i)[c]` of the stored one in coordinate `c` (a slender curve's coordinates differ in
+//! size by orders of magnitude, and so do their errors).
 
 mod algebra;
 mod eval;
@@ -37,7 +38,7 @@ const UNKNOWN: i32 = JUMP;
 /// assert_eq!(pw.continuity(0), 2);
 /// let mut v = [0.0];
 /// pw.eval_derivs(1.3, 0, &mut v);
-/// assert!((v[0] - f.eval_scalar(1.3)).abs() <= pw.error(1) + 1e-15);
+/// assert!((v[0] - f.eval_scalar(1.3)).abs() <= pw.eval_error(1, 0));
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Piecewise {
@@ -46,7 +47,8 @@ pub struct Piecewise {
     dim: usize,
     /// Piece-major, then point-major: `(degree + 1) · dim` values per piece.
     coefs: Vec<f64>,
-    /// Per piece, the bound on the error of its coefficients.
+    /// Per piece and coordinate (`pieces · dim` entries), the bound on the error of the
+    /// piece's coefficients in that coordinate.
     err: Vec<f64>,
     /// Per break (`breaks.len()` entries), the order of continuity there: at interior breaks
     /// that of the function; at the two ends that of the periodic function across its seam
@@ -97,18 +99,21 @@ impl Piecewise {
             hi,
             (p + 1).saturating_sub(multiplicity(knots, hi)),
         ));
-        let mut errors = vec![err; f.n_ctrl()];
+        let mut errors = vec![err; f.coefs().len()];
         let r = f.refine_tracked(&x, Some(&mut errors));
         let mut coefs = Vec::with_capacity((breaks.len() - 1) * (p + 1) * d);
-        let mut err_out = Vec::with_capacity(breaks.len() - 1);
+        let mut err_out = Vec::with_capacity((breaks.len() - 1) * d);
         for w in breaks.windows(2) {
             let span = find_span(p, r.n_ctrl(), r.knots(), 0.5 * (w[0] + w[1]));
             coefs.extend_from_slice(&r.coefs()[(span - p) * d..(span + 1) * d]);
-            err_out.push(
-                errors[span - p..=span]
+            let piece = &errors[(span - p) * d..(span + 1) * d];
+            err_out.extend((0..d).map(|c| {
+                piece
                     .iter()
-                    .fold(0.0f64, |m, &e| m.max(e)),
-            );
+                    .skip(c)
+                    .step_by(d)
+                    .fold(0.0f64, |m, &e| m.max(e))
+            }));
         }
         let mut smooth: Vec<i32> = breaks
             .iter()
@@ -130,7 +135,8 @@ impl Piecewise {
 
     /// A function from its pieces: `breaks` increasing (`n + 1` values for `n` pieces),
     /// `coefs` the `n · (degree + 1) · dim` control point coordinates (piece-major), `err` one
-    /// bound per piece, `smooth` one order of continuity per break (ends: across the seam).
+    /// bound per piece and coordinate (`n · dim`, piece-major), `smooth` one order of
+    /// continuity per break (ends: across the seam).
     pub fn from_parts(
         degree: usize,
         dim: usize,
@@ -152,7 +158,11 @@ impl Piecewise {
         }
         for (what, expected, got) in [
             ("coefficients", n * (degree + 1) * dim, coefs.len()),
-            ("error bounds (one per piece)", n, err.len()),
+            (
+                "error bounds (one per piece and coordinate)",
+                n * dim,
+                err.len(),
+            ),
             ("continuity orders (one per break)", n + 1, smooth.len()),
         ] {
             if expected != got {
@@ -211,6 +221,50 @@ impl Piecewise {
         self
     }
 
+    /// The same function declared continuous to `order` at every interior break (and across
+    /// the seam when it is periodic), where it is not known to be more: the caller knows more
+    /// than the pieces' structure shows (the numerators of a curve on the rational circle are
+    /// continuous where its homogeneous form is only `C⁰`).
+    pub fn with_continuity(mut self, order: i32) -> Self {
+        let last = self.smooth.len() - 1;
+        let periodic = self.is_periodic();
+        for (k, s) in self.smooth.iter_mut().enumerate() {
+            if (k > 0 && k < last) || periodic {
+                *s = (*s).max(order);
+            }
+        }
+        self
+    }
+
+    /// The scalar function `Σ weights[c] f_c`, with the bound on its error.
+    pub fn weighted(&self, weights: &[f64]) -> Piecewise {
+        let (p, d, n) = (self.degree, self.dim, self.pieces());
+        let mut coefs = Vec::with_capacity(n * (p + 1));
+        let mut err = Vec::with_capacity(n);
+        for i in 0..n {
+            let mut scale = 0.0f64;
+            for pt in self.piece(i).chunks_exact(d) {
+                let (mut v, mut mag) = (0.0, 0.0);
+                for (w, x) in weights.iter().zip(pt) {
+                    v += w * x;
+                    mag += (w * x).abs();
+                }
+                coefs.push(v);
+                scale = scale.max(mag);
+            }
+            err.push(rounding::linear(d, scale, self.carried(i, weights)));
+        }
+        Piecewise {
+            breaks: self.breaks.clone(),
+            degree: p,
+            dim: 1,
+            coefs,
+            err,
+            smooth: self.smooth.clone(),
+            binoms: self.binoms.clone(),
+        }
+    }
+
     /// Polynomial degree of the pieces.
     pub fn degree(&self) -> usize {
         self.degree
@@ -240,9 +294,30 @@ impl Piecewise {
         let w = (self.degree + 1) * self.dim;
         &self.coefs[i * w..(i + 1) * w]
     }
-    /// The bound on the error of piece `i`'s coefficients.
+    /// The bounds on the error of piece `i`'s coefficients, one per coordinate.
+    pub fn errors(&self, i: usize) -> &[f64] {
+        &self.err[i * self.dim..(i + 1) * self.dim]
+    }
+    /// The largest bound on the error of piece `i`'s coefficients (over its coordinates).
     pub fn error(&self, i: usize) -> f64 {
-        self.err[i]
+        self.errors(i).iter().fold(0.0, |m, &e| m.max(e))
+    }
+    /// `Σ |weights[c]| errors(i)[c]`: the error piece `i`'s coefficients carry into the
+    /// combination `Σ weights[c] f_c`.
+    fn carried(&self, i: usize, weights: &[f64]) -> f64 {
+        self.errors(i)
+            .iter()
+            .zip(weights)
+            .map(|(e, w)| e * w.abs())
+            .sum()
+    }
+    /// The largest magnitude of coordinate `c` among the control points of piece `i`.
+    pub fn coordinate_magnitude(&self, i: usize, c: usize) -> f64 {
+        self.piece(i)
+            .iter()
+            .skip(c)
+            .step_by(self.dim)
+            .fold(0.0, |m, x| m.max(x.abs()))
     }
     /// The largest error bound of any piece.
     pub fn max_error(&self) -> f64 {
@@ -272,7 +347,7 @@ impl Piecewise {
         let d = self.dim;
         (0..self.pieces())
             .map(|i| {
-                let e = self.err[i] * (d as f64).sqrt();
+                let e = self.errors(i).iter().map(|e| e * e).sum::<f64>().sqrt();
                 self.piece(i)
                     .chunks_exact(d)
                     .map(|pt| pt.iter().map(|x| x * x).sum::<f64>().sqrt())
@@ -298,25 +373,24 @@ impl Piecewise {
         let (d, n, p) = (self.dim, self.pieces(), self.degree);
         let mut breaks = vec![self.breaks[0]];
         let mut coefs = Vec::with_capacity(self.coefs.len() * k);
-        let mut err = Vec::with_capacity(n * k);
+        let mut err = Vec::with_capacity(n * k * d);
         let mut smooth = vec![self.smooth[0]];
         for i in 0..n {
             let (a, b) = self.piece_span(i);
-            let m = self.piece_magnitude(i) + self.err[i];
             for j in 0..k {
                 let (r0, r1) = (j as f64 / k as f64, (j + 1) as f64 / k as f64);
                 let mut pts: SmallVec<[f64; 48]> = SmallVec::from_slice(self.piece(i));
-                let mut e = self.err[i];
+                let mut e: SmallVec<[f64; 4]> = SmallVec::from_slice(self.errors(i));
                 if r1 < 1.0 {
+                    self.cut_errors(i, &mut e);
                     split_left_points(&mut pts, d, r1);
-                    e += rounding::casteljau(p, m);
                 }
                 if r0 > 0.0 {
+                    self.cut_errors(i, &mut e);
                     split_right_points(&mut pts, d, r0 / r1);
-                    e += rounding::casteljau(p, m + e);
                 }
                 coefs.extend_from_slice(&pts);
-                err.push(e);
+                err.extend_from_slice(&e);
                 breaks.push(if j + 1 == k { b } else { a + (b - a) * r1 });
                 smooth.push(if j + 1 == k {
                     self.smooth[i + 1]
@@ -333,6 +407,14 @@ impl Piecewise {
             err,
             smooth,
             binoms: self.binoms.clone(),
+        }
+    }
+
+    /// Adds to the per-coordinate errors `e` of a stretch of piece `i` (whose coefficients lie
+    /// within the piece's magnitudes and `e`) the rounding of one more de Casteljau cut.
+    fn cut_errors(&self, i: usize, e: &mut [f64]) {
+        for (c, ec) in e.iter_mut().enumerate() {
+            *ec += rounding::casteljau(self.degree, self.coordinate_magnitude(i, c) + *ec);
         }
     }
 
@@ -355,49 +437,49 @@ impl Piecewise {
             degree: p,
             dim: d,
             coefs: Vec::with_capacity(self.coefs.len() + (p + 1) * d),
-            err: Vec::with_capacity(n + 1),
+            err: Vec::with_capacity((n + 1) * d),
             smooth: vec![],
             binoms: self.binoms.clone(),
         };
-        let mut push = |c: &[f64], e: f64, end: f64, joint: i32| {
+        let mut push = |c: &[f64], e: &[f64], end: f64, joint: i32| {
             out.coefs.extend_from_slice(c);
-            out.err.push(e);
+            out.err.extend_from_slice(e);
             out.smooth.push(joint);
             out.breaks.push(end);
         };
         let cut = u0 > lo;
         let (left, right) = if cut {
-            let m = self.piece_magnitude(i) + self.err[i];
-            let e = self.err[i] + rounding::casteljau(p, m);
+            let mut e: SmallVec<[f64; 4]> = SmallVec::from_slice(self.errors(i));
+            self.cut_errors(i, &mut e);
             let r = (u0 - lo) / (hi - lo);
             let mut l: SmallVec<[f64; 48]> = SmallVec::from_slice(self.piece(i));
             let mut rt = l.clone();
             split_left_points(&mut l, d, r);
             split_right_points(&mut rt, d, r);
-            (Some((l, e)), Some((rt, e)))
+            (Some((l, e.clone())), Some((rt, e)))
         } else {
             (None, None)
         };
         let seam = if cut { i32::MAX } else { self.smooth[i] };
         let first = if cut { i + 1 } else { i };
         if let Some((rt, e)) = &right {
-            push(rt, *e, hi, seam);
+            push(rt, e, hi, seam);
         }
         for j in first..n {
             // (Uncut, the first piece starts at the new seam.)
             let joint = if j == i { seam } else { self.smooth[j] };
-            push(self.piece(j), self.err[j], self.breaks[j + 1], joint);
+            push(self.piece(j), self.errors(j), self.breaks[j + 1], joint);
         }
         for j in 0..i {
             push(
                 self.piece(j),
-                self.err[j],
+                self.errors(j),
                 self.breaks[j + 1] + period,
                 self.smooth[j],
             );
         }
         if let Some((l, e)) = &left {
-            push(l, *e, u0 + period, self.smooth[i]);
+            push(l, e, u0 + period, self.smooth[i]);
         }
         out.smooth.push(seam);
         out.smooth[0] = seam;
@@ -411,12 +493,12 @@ impl Piecewise {
         let (p, d, n) = (self.degree, self.dim, self.pieces());
         let q = p.max(1) - 1;
         let mut coefs = Vec::with_capacity(n * (q + 1) * d);
-        let mut err = Vec::with_capacity(n);
+        let mut err = Vec::with_capacity(n * d);
         for i in 0..n {
             let (c, (a, b)) = (self.piece(i), self.piece_span(i));
             if p == 0 {
                 coefs.extend(std::iter::repeat_n(0.0, d));
-                err.push(0.0);
+                err.extend(std::iter::repeat_n(0.0, d));
                 continue;
             }
             let f = p as f64 / (b - a);
@@ -424,13 +506,9 @@ impl Piecewise {
                 (0..q + 1)
                     .flat_map(|j| (0..d).map(move |k| f * (c[(j + 1) * d + k] - c[j * d + k]))),
             );
-            err.push(rounding::derivative(
-                p,
-                a,
-                b,
-                self.piece_magnitude(i),
-                self.err[i],
-            ));
+            err.extend((0..d).map(|k| {
+                rounding::derivative(p, a, b, self.coordinate_magnitude(i, k), self.errors(i)[k])
+            }));
         }
         Piecewise {
             breaks: self.breaks.clone(),
@@ -458,7 +536,6 @@ impl Piecewise {
         mut visit: impl FnMut(usize, f64, f64, &[f64], f64) -> bool,
     ) {
         let (p, d) = (self.degree, self.dim);
-        let wsum: f64 = weights.iter().take(d).map(|w| w.abs()).sum();
         for (i, x0, x1) in self.overlaps(lo, hi) {
             if x1 <= x0 {
                 continue;
@@ -478,7 +555,7 @@ impl Piecewise {
                 g.push(v);
                 scale = scale.max(mag);
             }
-            let mut err = rounding::linear(d, scale, wsum * self.err[i]);
+            let mut err = rounding::linear(d, scale, self.carried(i, weights));
             let m = scale + err;
             let h = b - a;
             let (r0, r1) = ((x0 - a) / h, (x1 - a) / h);
@@ -498,33 +575,33 @@ impl Piecewise {
     }
 
     /// The control points (dimension `dim`) of the function on `[lo, hi]`, piece by piece in
-    /// order, to `visit(points, err)`; stops when it returns false.
+    /// order, to `visit(points, errors)` (one bound per coordinate); stops when it returns
+    /// false.
     pub fn for_each_restricted_points(
         &self,
         lo: f64,
         hi: f64,
-        mut visit: impl FnMut(&[f64], f64) -> bool,
+        mut visit: impl FnMut(&[f64], &[f64]) -> bool,
     ) {
-        let (p, d) = (self.degree, self.dim);
+        let d = self.dim;
         for (i, x0, x1) in self.overlaps(lo, hi) {
             if x1 <= x0 {
                 continue;
             }
             let (a, b) = self.piece_span(i);
             let mut pts: SmallVec<[f64; 48]> = SmallVec::from_slice(self.piece(i));
-            let m = self.piece_magnitude(i) + self.err[i];
-            let mut err = self.err[i];
+            let mut e: SmallVec<[f64; 4]> = SmallVec::from_slice(self.errors(i));
             let h = b - a;
             let (r0, r1) = ((x0 - a) / h, (x1 - a) / h);
             if r1 < 1.0 {
+                self.cut_errors(i, &mut e);
                 split_left_points(&mut pts, d, r1);
-                err += rounding::casteljau(p, m);
             }
             if r0 > 0.0 {
+                self.cut_errors(i, &mut e);
                 split_right_points(&mut pts, d, if r1 < 1.0 { r0 / r1 } else { r0 });
-                err += rounding::casteljau(p, m + err);
             }
-            if !visit(&pts, err) {
+            if !visit(&pts, &e) {
                 return;
             }
         }

@@ -57,10 +57,10 @@ impl BSpline {
         self.refine_tracked(x, None)
     }
 
-    /// [`BSpline::refine_sorted`] carrying a bound on each control point's error along
-    /// (`errors`: one per control point on entry, one per control point of the result on
-    /// return): every new point is a convex combination of two old ones, whose errors it
-    /// combines alike, plus the rounding of the step ([`crate::rounding::insertion`]).
+    /// [`BSpline::refine_sorted`] carrying a bound on each coefficient's error along (`errors`:
+    /// one per coefficient, as `coefs`, on entry and for the result on return): every new point
+    /// is a convex combination of two old ones, whose errors it combines alike, plus the
+    /// rounding of the step ([`crate::rounding::insertion`]), coordinate by coordinate.
     pub(crate) fn refine_tracked(&self, x: &[f64], errors: Option<&mut Vec<f64>>) -> BSpline {
         if x.is_empty() {
             return self.clone();
@@ -77,19 +77,14 @@ impl BSpline {
         for j in b - 1..n {
             q[(j + r) * d..(j + r + 1) * d].copy_from_slice(&pw[j * d..(j + 1) * d]);
         }
-        // The errors move with their points.
-        let mut e = Vec::new();
-        if let Some(old) = errors.as_deref() {
-            e = vec![0.0; n + r];
-            e[..a + 1 - p].copy_from_slice(&old[..a + 1 - p]);
-            e[b - 1 + r..n + r].copy_from_slice(&old[b - 1..n]);
+        // The errors move with their coefficients (an empty vector when not tracked).
+        let old: &[f64] = errors.as_deref().map_or(&[], |v| v.as_slice());
+        let tracked = !old.is_empty();
+        let mut e = vec![0.0; if tracked { (n + r) * d } else { 0 }];
+        if tracked {
+            e[..(a + 1 - p) * d].copy_from_slice(&old[..(a + 1 - p) * d]);
+            e[(b - 1 + r) * d..(n + r) * d].copy_from_slice(&old[(b - 1) * d..n * d]);
         }
-        let tracked = errors.is_some();
-        let magnitude = |q: &[f64], i: usize| {
-            q[i * d..(i + 1) * d]
-                .iter()
-                .fold(0.0f64, |m, c| m.max(c.abs()))
-        };
         ub[..=a].copy_from_slice(&u[..=a]);
         ub[b + p + r..].copy_from_slice(&u[b + p..]);
         let mut i = b + p - 1;
@@ -97,8 +92,9 @@ impl BSpline {
         for j in (0..r).rev() {
             while x[j] <= u[i] && i > a {
                 q[(k - p - 1) * d..(k - p) * d].copy_from_slice(&pw[(i - p - 1) * d..(i - p) * d]);
-                if let Some(old) = errors.as_deref() {
-                    e[k - p - 1] = old[i - p - 1];
+                if tracked {
+                    e[(k - p - 1) * d..(k - p) * d]
+                        .copy_from_slice(&old[(i - p - 1) * d..(i - p) * d]);
                 }
                 ub[k] = u[i];
                 k -= 1;
@@ -106,7 +102,7 @@ impl BSpline {
             }
             q.copy_within((k - p) * d..(k - p + 1) * d, (k - p - 1) * d);
             if tracked {
-                e[k - p - 1] = e[k - p];
+                e.copy_within((k - p) * d..(k - p + 1) * d, (k - p - 1) * d);
             }
             for l in 1..=p {
                 let ind = k - p + l;
@@ -114,18 +110,18 @@ impl BSpline {
                 if alpha == 0.0 {
                     q.copy_within(ind * d..(ind + 1) * d, (ind - 1) * d);
                     if tracked {
-                        e[ind - 1] = e[ind];
+                        e.copy_within(ind * d..(ind + 1) * d, (ind - 1) * d);
                     }
                 } else {
                     let alpha = alpha / (ub[k + l] - u[i + l - p]);
-                    if tracked {
-                        let m =
-                            magnitude(&q, ind - 1).max(magnitude(&q, ind)) + e[ind - 1].max(e[ind]);
-                        e[ind - 1] = e[ind - 1].max(e[ind]) + crate::rounding::insertion(m);
-                    }
                     for c in 0..d {
-                        q[(ind - 1) * d + c] =
-                            alpha * q[(ind - 1) * d + c] + (1.0 - alpha) * q[ind * d + c];
+                        let (lo, hi) = ((ind - 1) * d + c, ind * d + c);
+                        if tracked {
+                            let worst = e[lo].max(e[hi]);
+                            let m = q[lo].abs().max(q[hi].abs()) + worst;
+                            e[lo] = worst + crate::rounding::insertion(m);
+                        }
+                        q[lo] = alpha * q[lo] + (1.0 - alpha) * q[hi];
                     }
                 }
             }
@@ -181,14 +177,16 @@ impl BSpline {
             b,
             (p + 1).saturating_sub(multiplicity(self.knots(), b)),
         ));
-        let mut errors = err.as_ref().map(|&&mut e| vec![e; self.n_ctrl()]);
+        let mut errors = err.as_ref().map(|&&mut e| vec![e; self.coefs().len()]);
         let r = self.refine_tracked(&x, errors.as_mut());
         let (deg, d, knots, coefs) = r.into_parts();
         // The last p+1 copies of `a` and the first p+1 copies of `b` bound the sub-spline.
         let ia = knots.partition_point(|&k| k <= a) - (p + 1);
         let ib = knots.partition_point(|&k| k < b) + p;
         if let (Some(out), Some(errors)) = (err, errors) {
-            *out = errors[ia..ib - p].iter().fold(0.0, |m: f64, &e| m.max(e));
+            *out = errors[ia * d..(ib - p) * d]
+                .iter()
+                .fold(0.0, |m: f64, &e| m.max(e));
         }
         let new_knots = knots[ia..=ib].to_vec();
         let new_coefs = coefs[ia * d..(ib - p) * d].to_vec();

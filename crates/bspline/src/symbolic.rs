@@ -194,6 +194,9 @@ pub struct CurvePieces {
     pub hom: Piecewise,
     /// The weight is exactly 1 everywhere.
     pub polynomial: bool,
+    /// The numerators are continuous at every break (and across a periodic seam) whatever
+    /// the form's knots say ([`CurvePieces::numerators_continuous`]).
+    continuous: bool,
 }
 
 /// The curve's homogeneous form in pieces, with the error of the curve's own homogeneous
@@ -206,7 +209,11 @@ pub fn homogeneous_pieces(c: &Rational) -> CurvePieces {
     if polynomial {
         hom = hom.with_coordinate(2, 1.0);
     }
-    CurvePieces { hom, polynomial }
+    CurvePieces {
+        hom,
+        polynomial,
+        continuous: false,
+    }
 }
 
 impl CurvePieces {
@@ -224,7 +231,38 @@ impl CurvePieces {
         } else {
             hom
         };
-        Ok(Self { hom, polynomial })
+        Ok(Self {
+            hom,
+            polynomial,
+            continuous: false,
+        })
+    }
+
+    /// The curve declared periodic, its homogeneous form continuous to `order` across the
+    /// seam (`p − 1` for a periodic B-spline of degree p).
+    pub fn periodic(mut self, order: i32) -> Self {
+        self.hom = self.hom.with_periodic_seam(order);
+        self
+    }
+
+    /// Declares the tangent, tangency and curvature numerators continuous at every break
+    /// (and across the seam of a periodic curve), as they are for a curve `C¹` in its
+    /// parameter with a continuous curvature numerator: the shapes on the rational circle,
+    /// whose homogeneous form is only `C⁰` at the quarters, are such curves (the Möbius
+    /// reparametrisations of the quarters match speeds, and `C′ × C″` loses the jump of
+    /// `C″` along `C′`). The caller vouches for it.
+    pub fn numerators_continuous(mut self) -> Self {
+        self.continuous = true;
+        self
+    }
+
+    /// A numerator with the continuity the caller declared.
+    fn declared(&self, f: Piecewise) -> Piecewise {
+        if self.continuous {
+            f.with_continuity(0)
+        } else {
+            f
+        }
     }
 
     fn forms(&self) -> Homogeneous<'_, Piecewise> {
@@ -237,12 +275,12 @@ impl CurvePieces {
     /// [`tangent_numerator`] with its error bounds: `D = wX′ − w′X` (dimension 2; `X′` for a
     /// polynomial curve).
     pub fn tangent(&self) -> Result<Piecewise> {
-        self.forms().tangent()
+        Ok(self.declared(self.forms().tangent()?))
     }
 
     /// [`curvature_numerator`] with its error bounds.
     pub fn curvature(&self) -> Result<Piecewise> {
-        self.forms().curvature()
+        Ok(self.declared(self.forms().curvature()?))
     }
 
     /// `(A, Dₓ, D_y)`: `A = X × X′` and the tangent numerator `D` of the general formula
@@ -257,7 +295,7 @@ impl CurvePieces {
             constant_weight: None,
         }
         .tangent()?;
-        Piecewise::stack(&[&a, &d])
+        Ok(self.declared(Piecewise::stack(&[&a, &d])?))
     }
 
     /// Proves that the curve is regular (its tangent never vanishes): `Ok(None)` when `|D|²`

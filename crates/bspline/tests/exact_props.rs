@@ -21,9 +21,9 @@ fn bounds_hold(got: &Piecewise, want: impl Fn(usize) -> Vec<Vec<Q>>) -> Result<(
     let d = got.dim();
     for i in 0..got.pieces() {
         let exact = want(i);
-        let e = got.error(i);
         for (j, pt) in got.piece(i).chunks_exact(d).enumerate() {
             for (c, &x) in pt.iter().enumerate() {
+                let e = got.errors(i)[c];
                 if exact::exceeds(&exact[c][j], x, e) {
                     return Err(format!(
                         "piece {i}, point {j}, coordinate {c}: {x} vs exact {} (bound {e:e}, off by {:e})",
@@ -95,7 +95,7 @@ fn piece(
         dim,
         vec![*lo, lo + len],
         coefs.clone(),
-        vec![0.0],
+        vec![0.0; dim],
         vec![JUMP, JUMP],
     )
     .unwrap();

@@ -15,14 +15,9 @@ struct Bilinear<'a> {
 }
 
 impl Bilinear<'_> {
-    /// The most terms, and the greatest `Σ |c|`, of any output coordinate.
-    fn per_output(&self) -> (usize, f64) {
-        (0..self.out_dim)
-            .map(|k| {
-                let of_k = self.terms.iter().filter(|t| t.2 == k);
-                (of_k.clone().count(), of_k.map(|t| t.3.abs()).sum::<f64>())
-            })
-            .fold((0, 0.0), |(n, w), (m, v)| (n.max(m), w.max(v)))
+    /// The number of terms of output coordinate `k`.
+    fn terms_of(&self, k: usize) -> usize {
+        self.terms.iter().filter(|t| t.2 == k).count()
     }
 }
 
@@ -44,10 +39,9 @@ impl Piecewise {
         let deg = p + q;
         let (da, db, dout) = (self.dim, other.dim, form.out_dim);
         let (cp, cq, cd) = (binomials(p), binomials(q), binomials(deg));
-        let (terms, weight) = form.per_output();
         let n = self.pieces();
         let mut coefs = Vec::with_capacity(n * (deg + 1) * dout);
-        let mut err = Vec::with_capacity(n);
+        let mut err = Vec::with_capacity(n * dout);
         for i in 0..n {
             let (fa, fb) = (self.piece(i), other.piece(i));
             // h_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) f_i g_j.
@@ -62,13 +56,24 @@ impl Piecewise {
                 }
             }
             coefs.extend_from_slice(&h);
-            err.push(rounding::product(
-                (p, q),
-                (p.min(q) + 1) * terms,
-                weight,
-                (self.piece_magnitude(i), other.piece_magnitude(i)),
-                (self.err[i], other.err[i]),
-            ));
+            // Each output coordinate: the bounds of its terms, from their factors' coordinates.
+            let (ea, eb) = (self.errors(i), other.errors(i));
+            for k in 0..dout {
+                let sum = (p.min(q) + 1) * form.terms_of(k);
+                let bound: f64 = form
+                    .terms
+                    .iter()
+                    .filter(|t| t.2 == k)
+                    .map(|&(x, y, _, c)| {
+                        let m = (
+                            self.coordinate_magnitude(i, x),
+                            other.coordinate_magnitude(i, y),
+                        );
+                        rounding::product((p, q), sum, c.abs(), m, (ea[x], eb[y]))
+                    })
+                    .sum();
+                err.push(bound);
+            }
         }
         Ok(Piecewise {
             breaks: self.breaks.clone(),
@@ -189,7 +194,7 @@ impl Piecewise {
         let (p, d, n) = (self.degree, self.dim, self.pieces());
         let q = p + 1;
         let mut coefs = Vec::with_capacity(n * (q + 1) * d);
-        let mut err = Vec::with_capacity(n);
+        let mut err = Vec::with_capacity(n * d);
         for i in 0..n {
             let c = self.piece(i);
             for j in 0..=q {
@@ -200,7 +205,10 @@ impl Piecewise {
                     coefs.push(a * left + (1.0 - a) * right);
                 }
             }
-            err.push(self.err[i] + rounding::insertion(self.piece_magnitude(i) + self.err[i]));
+            let e = self.errors(i);
+            err.extend(
+                (0..d).map(|k| e[k] + rounding::insertion(self.coordinate_magnitude(i, k) + e[k])),
+            );
         }
         Piecewise {
             breaks: self.breaks.clone(),
@@ -230,9 +238,14 @@ impl Piecewise {
             *c = s * *c + t * d;
         }
         let err = (0..a.pieces())
-            .map(|i| {
-                let magnitude = s.abs() * a.piece_magnitude(i) + t.abs() * b.piece_magnitude(i);
-                rounding::linear(2, magnitude, s.abs() * a.err[i] + t.abs() * b.err[i])
+            .flat_map(|i| {
+                let (a, b) = (&a, &b);
+                (0..a.dim).map(move |k| {
+                    let magnitude = s.abs() * a.coordinate_magnitude(i, k)
+                        + t.abs() * b.coordinate_magnitude(i, k);
+                    let carried = s.abs() * a.errors(i)[k] + t.abs() * b.errors(i)[k];
+                    rounding::linear(2, magnitude, carried)
+                })
             })
             .collect();
         Ok(Piecewise {
@@ -257,8 +270,9 @@ impl Piecewise {
         for c in &mut f.coefs {
             *c *= s;
         }
-        for (i, e) in f.err.iter_mut().enumerate() {
-            let m = self.piece_magnitude(i);
+        let d = self.dim;
+        for (j, e) in f.err.iter_mut().enumerate() {
+            let m = self.coordinate_magnitude(j / d, j % d);
             *e = s.abs() * *e + rounding::gamma(1) * s.abs() * m;
         }
         f
@@ -276,13 +290,14 @@ impl Piecewise {
         if which.is_empty() {
             return Err(Error::ZeroDimension);
         }
-        let coefs = self
-            .coefs
-            .chunks_exact(self.dim)
-            .flat_map(|pt| which.iter().map(move |&k| pt[k]))
-            .collect();
+        let pick = |v: &[f64]| -> Vec<f64> {
+            v.chunks_exact(self.dim)
+                .flat_map(|pt| which.iter().map(move |&k| pt[k]))
+                .collect()
+        };
         Ok(Piecewise {
-            coefs,
+            coefs: pick(&self.coefs),
+            err: pick(&self.err),
             dim: which.len(),
             ..self.clone()
         })
@@ -309,7 +324,7 @@ impl Piecewise {
             }
         }
         let err = (0..n)
-            .map(|i| raised.iter().fold(0.0f64, |m, g| m.max(g.err[i])))
+            .flat_map(|i| raised.iter().flat_map(move |g| g.errors(i).to_vec()))
             .collect();
         let smooth = (0..first.smooth.len())
             .map(|k| raised.iter().map(|g| g.smooth[k]).min().unwrap_or(i32::MAX))

@@ -111,12 +111,20 @@ impl Piecewise {
     /// rounding of de Casteljau's levels, through the forward difference (whose weights sum to
     /// `2^order`) and the factor `p!/(p − order)!/h^order`.
     pub fn eval_error(&self, i: usize, order: usize) -> f64 {
+        (0..self.dim)
+            .map(|c| self.eval_error_of(i, order, c))
+            .fold(0.0, f64::max)
+    }
+
+    /// [`Piecewise::eval_error`] in coordinate `c`.
+    pub fn eval_error_of(&self, i: usize, order: usize, c: usize) -> f64 {
         let p = self.degree;
         if order > p {
             return 0.0;
         }
-        let m = self.piece_magnitude(i) + self.err[i];
-        let level = self.err[i] + rounding::casteljau(p, m);
+        let e = self.errors(i)[c];
+        let m = self.coordinate_magnitude(i, c) + e;
+        let level = e + rounding::casteljau(p, m);
         if order == 0 {
             return level;
         }

@@ -200,9 +200,22 @@ pub fn sign_changes_in(f: &Piecewise, closed: bool, opts: &RootOptions) -> Resul
     let tol = opts.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs()));
     let near = 16.0 * tol * period.max(1.0);
     if closed && !periodic && roots.len() > 1 {
-        // A root at the seam is seen at both ends of the open search: keep it once.
-        let first_at_a = roots.first().is_some_and(|r| (r.u - a).abs() <= near);
-        if first_at_a && roots.last().is_some_and(|r| (r.u - b).abs() <= near) {
+        // A root at the seam is seen at both ends of the open search: keep it once. Clusters
+        // touching the seam from both sides are one (a straight stretch across the seam of a
+        // closed curve): kept as one cluster over the unwrapped bracket.
+        let n = roots.len();
+        let (first, last) = (roots[0], roots[n - 1]);
+        let clusters = first.kind == RootKind::Cluster && last.kind == RootKind::Cluster;
+        if clusters && first.bracket.0 <= a + near && last.bracket.1 >= b - near {
+            let bracket = (last.bracket.0, first.bracket.1 + period);
+            let mid = 0.5 * (bracket.0 + bracket.1);
+            roots.remove(0);
+            roots[n - 2] = Root {
+                u: if mid >= b { mid - period } else { mid },
+                bracket,
+                ..last
+            };
+        } else if (first.u - a).abs() <= near && (last.u - b).abs() <= near {
             roots.pop();
         }
     }

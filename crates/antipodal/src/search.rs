@@ -430,6 +430,8 @@ fn march_mixed(p: &Pair) -> March {
 /// the opposite point.
 fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Option<f64>) -> March {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
+    // The sign of θ the march keeps until it reaches a pair.
+    let start_negative = p.sin_theta(s, t) < 0.0;
     // T's far end, kept with its tangent: every step's solve for t is bracketed by it.
     let t_end = if up { p.tb } else { p.ta };
     let t_far = (t_end, p.vt.jet_to(t_end, 1).d1);
@@ -445,7 +447,12 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
     let (mut peak, mut past_peak) = (0.0f64, false);
     for i in 0..MARCH_STEPS {
         let Some(ns) = next(i, s, t, s + ds * ratio) else {
-            return March::Nothing;
+            // No step ahead: nothing lies ahead, unless the last step went past a pair (by
+            // the tolerance its solves are made to) and the next one would lie behind.
+            return match i {
+                0 => March::Nothing,
+                _ => overshot(p, (s - ds, t - dt), (s, t), start_negative, up),
+            };
         };
         let nt = p.opposite_near_from(ns, t, t_far, t + dt * ratio);
         let mut step = (ns - s).abs();
@@ -523,6 +530,33 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
         last_step = step;
     }
     March::Crawled(s, t, up)
+}
+
+/// A march whose step from `prev` to `here` found no next step ahead: where θ at `here` still
+/// has the march's sign (`start_negative`) nothing lies ahead; where it has the other sign or
+/// is within its noise, the last step crossed a pair, which lies between the two points and
+/// is bisected for (or polished, at `here` itself).
+fn overshot(p: &Pair, prev: (f64, f64), here: (f64, f64), start_negative: bool, up: bool) -> March {
+    let (s, t) = here;
+    let th = p.sin_theta(s, t);
+    if p.is_noise(s, t, th) {
+        if let Some((s, t)) = polish(p.vs, p.vt, s, t, 64.0 * p.vs.tol) {
+            return March::Found(s, t, up);
+        }
+        return March::Found(s, t, up);
+    }
+    if (th < 0.0) == start_negative {
+        return March::Nothing;
+    }
+    let sub = if prev.0 <= s {
+        p.sub(prev.0, prev.1, s, t)
+    } else {
+        p.sub(s, t, prev.0, prev.1)
+    };
+    match bisect(&sub, sub.sin_theta(sub.sa, sub.ta)) {
+        Some(f) => March::Found(f.s, f.t, up),
+        None => March::Nothing,
+    }
 }
 
 /// Steps after which a march that does not converge is checked for crawling.

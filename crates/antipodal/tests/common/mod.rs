@@ -70,6 +70,9 @@ pub fn same_param(c: &dyn PlaneCurve, x: f64, y: f64, tol: f64) -> bool {
     d.min(per - d) <= tol
 }
 
+/// Sub-cells per side of a grid cell with sign changes (pairs closer than a cell apart).
+const SUB: usize = 16;
+
 /// All antipodal pairs (s < t after sorting each pair), by grid + Newton.
 pub fn antipodal_oracle(c: &dyn PlaneCurve, n: usize) -> Vec<(f64, f64)> {
     let orient = orientation(c);
@@ -90,23 +93,47 @@ pub fn antipodal_oracle(c: &dyn PlaneCurve, n: usize) -> Vec<(f64, f64)> {
             if !(ch(0) && ch(1)) {
                 continue;
             }
+            // A cell with sign changes may hold several pairs close together: Newton from
+            // the centre of every sub-cell that shows sign changes of both equations.
             let h = us[1] - us[0];
-            let Some((s, t)) = newton_anti(c, us[i] + 0.5 * h, us[j] + 0.5 * h) else {
-                continue;
-            };
-            let (js_, jt_) = (c.jet(s), c.jet(t));
-            let inward = js_.d1.unit().perp() * orient;
-            if inward.dot(jt_.p - js_.p) <= 0.0 {
-                continue;
+            let hs = h / SUB as f64;
+            let at = |u: f64| c.jet(wrap(c, u));
+            let sub: Vec<Jet> = (0..=SUB).map(|k| at(us[i] + k as f64 * hs)).collect();
+            let tub: Vec<Jet> = (0..=SUB).map(|k| at(us[j] + k as f64 * hs)).collect();
+            for a in 0..SUB {
+                for b in 0..SUB {
+                    let corners = [
+                        f_anti(&sub[a], &tub[b]),
+                        f_anti(&sub[a + 1], &tub[b]),
+                        f_anti(&sub[a], &tub[b + 1]),
+                        f_anti(&sub[a + 1], &tub[b + 1]),
+                    ];
+                    let ch = |k: usize| {
+                        let sg = corners.map(|c| if k == 0 { c.0 > 0.0 } else { c.1 > 0.0 });
+                        sg.iter().any(|&x| x != sg[0])
+                    };
+                    if !(ch(0) && ch(1)) {
+                        continue;
+                    }
+                    let (s0, t0) = (us[i] + (a as f64 + 0.5) * hs, us[j] + (b as f64 + 0.5) * hs);
+                    let Some((s, t)) = newton_anti(c, s0, t0) else {
+                        continue;
+                    };
+                    let (js_, jt_) = (c.jet(s), c.jet(t));
+                    let inward = js_.d1.unit().perp() * orient;
+                    if inward.dot(jt_.p - js_.p) <= 0.0 {
+                        continue;
+                    }
+                    let (s, t) = if s <= t { (s, t) } else { (t, s) };
+                    if found.iter().any(|&(x, y)| {
+                        (same_param(c, x, s, 1e-7) && same_param(c, y, t, 1e-7))
+                            || (same_param(c, x, t, 1e-7) && same_param(c, y, s, 1e-7))
+                    }) {
+                        continue;
+                    }
+                    found.push((s, t));
+                }
             }
-            let (s, t) = if s <= t { (s, t) } else { (t, s) };
-            if found.iter().any(|&(x, y)| {
-                (same_param(c, x, s, 1e-7) && same_param(c, y, t, 1e-7))
-                    || (same_param(c, x, t, 1e-7) && same_param(c, y, s, 1e-7))
-            }) {
-                continue;
-            }
-            found.push((s, t));
         }
     }
     found.sort_by(|a, b| a.0.total_cmp(&b.0));

@@ -9,7 +9,7 @@
 //! `(C2(t) − C1(s)) × C1'(s)`.
 #![allow(clippy::unwrap_used)]
 
-use curvekit::antipodal::{self, Options, PlaneCurve, SplineCurve};
+use curvekit::antipodal::{self, Options, ParamCurve, PlaneCurve, SplineCurve};
 use curvekit::bspline::tensor::TensorBSpline;
 use curvekit::bspline::BSpline;
 use curvekit::zeroset::{solve_system, SystemOptions};

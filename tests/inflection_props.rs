@@ -3,7 +3,6 @@
 //! the curvature sampled densely from the curve's derivatives.
 #![allow(clippy::unwrap_used)]
 
-use curvekit::inflections::inflections;
 use curvekit::io::parse_curve;
 use proptest::prelude::*;
 use serde_json::json;
@@ -65,11 +64,11 @@ proptest! {
             return Ok(());
         };
         // Cusps and self-touching control polygons are refused: nothing to compare.
-        let Ok(found) = inflections(&curve, 1e-10) else {
+        let Ok(found) = antipodal::inflections(curve.plane_curve(), &antipodal::Options::default().tolerance(1e-10)) else {
             return Ok(());
         };
-        let plane = curve.plane_curve().unwrap();
-        let Some(want) = oracle(plane.as_ref()) else {
+        let plane = curve.plane_curve();
+        let Some(want) = oracle(plane) else {
             return Ok(());
         };
         let (a, b) = plane.domain();

@@ -3,7 +3,6 @@
 //! inflection computation handles without panicking.
 #![allow(clippy::unwrap_used)]
 
-use curvekit::inflections::inflections;
 use curvekit::io::parse_curve;
 use proptest::prelude::*;
 use serde_json::{json, Map, Value};
@@ -34,7 +33,10 @@ const KINDS: &[&str] = &[
 /// Parses, and if accepted, computes the inflections (the result may be an error, not a panic).
 fn exercise(text: &str) {
     if let Ok(curve) = parse_curve("prop.json", text) {
-        let _ = inflections(&curve, 1e-10);
+        let _ = antipodal::inflections(
+            curve.plane_curve(),
+            &antipodal::Options::default().tolerance(1e-10),
+        );
     }
 }
 

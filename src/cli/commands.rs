@@ -2,17 +2,24 @@
 
 use super::report::{self, draw_curve};
 use super::{print_out, timing, write_file, BisectorArgs, Common, Failure};
-use curvekit::inflections::{inflections, ComputeError};
 use curvekit::io::{read_curve, Curve, CurveFileError, Problem, Shape};
 use curvekit::svg::Figure;
 use std::path::Path;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     let curve = read_curve(path)?;
-    let found = inflections(&curve, common.tol).map_err(|e| compute_failure(e, &[&curve]))?;
-    let stats = common
-        .time
-        .then(|| timing::measure(|| inflections(&curve, common.tol)));
+    let plane = curve.plane_curve();
+    let opts = common.options();
+    let prepared = antipodal::prepare(plane);
+    let found = prepared
+        .inflections(&opts)
+        .map_err(|e| antipodal_failure(e, &[&curve]))?;
+    let stats = common.time.then(|| {
+        timing::measure_both(
+            || prepared.inflections(&opts),
+            || antipodal::prepare(plane).inflections(&opts),
+        )
+    });
     if let Some(svg) = &common.svg {
         let mut fig = Figure::new();
         draw_curve(&mut fig, &curve);
@@ -33,15 +40,18 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     let curve = read_curve(path)?;
-    let plane = curve
-        .plane_curve()
+    let plane = curve.plane_curve();
+    let opts = common.options();
+    let prepared = antipodal::prepare(plane);
+    let found = prepared
+        .antipodal(&opts)
         .map_err(|e| antipodal_failure(e, &[&curve]))?;
-    let opts = antipodal::Options::default().tolerance(common.tol);
-    let found =
-        antipodal::antipodal(plane.as_ref(), &opts).map_err(|e| antipodal_failure(e, &[&curve]))?;
-    let stats = common
-        .time
-        .then(|| timing::measure(|| antipodal::antipodal(plane.as_ref(), &opts)));
+    let stats = common.time.then(|| {
+        timing::measure_both(
+            || prepared.antipodal(&opts),
+            || antipodal::prepare(plane).antipodal(&opts),
+        )
+    });
     if let Some(svg) = &common.svg {
         let title = format!(
             "{}: {} antipodal pairs, {} inflections",
@@ -61,14 +71,18 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
 pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Result<(), Failure> {
     let (c1, c2) = (read_curve(path1)?, read_curve(path2)?);
     let both = [&c1, &c2];
-    let p1 = c1.plane_curve().map_err(|e| antipodal_failure(e, &both))?;
-    let p2 = c2.plane_curve().map_err(|e| antipodal_failure(e, &both))?;
-    let opts = antipodal::Options::default().tolerance(common.tol);
-    let found = antipodal::common_tangents(p1.as_ref(), p2.as_ref(), &opts)
+    let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
+    let opts = common.options();
+    let (a, b) = antipodal::prepare_pair(p1, p2);
+    let found = a
+        .common_tangents(&b, &opts)
         .map_err(|e| antipodal_failure(e, &both))?;
-    let stats = common
-        .time
-        .then(|| timing::measure(|| antipodal::common_tangents(p1.as_ref(), p2.as_ref(), &opts)));
+    let stats = common.time.then(|| {
+        timing::measure_both(
+            || a.common_tangents(&b, &opts),
+            || antipodal::common_tangents(p1, p2, &opts),
+        )
+    });
     if let Some(svg) = &common.svg {
         let mut fig = Figure::new();
         draw_curve(&mut fig, &c1);
@@ -138,14 +152,6 @@ fn spline_of(c: &Curve) -> Result<&bspline::Rational, Failure> {
     })
 }
 
-pub(super) fn compute_failure(e: ComputeError, curves: &[&Curve]) -> Failure {
-    match e {
-        ComputeError::Antipodal(e) => antipodal_failure(e, curves),
-        ComputeError::Spline(e) => Failure::Other(format!("spline arithmetic failed: {e}")),
-        ComputeError::Singular { u } => antipodal_failure(antipodal::Error::Cusp { u }, curves),
-    }
-}
-
 /// Options errors are usage errors, geometric refusals are input errors naming the curve that
 /// caused them, the rest is internal.
 pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failure {
@@ -159,7 +165,7 @@ pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failu
         | E::Corner { .. }
         | E::SelfIntersecting { .. }
         | E::Winding { .. }
-        | E::InvalidShape { .. } => match blame(curves) {
+        | E::Curve(_) => match blame(curves) {
             Some(culprit) => Failure::Input(CurveFileError {
                 file: culprit.file.clone(),
                 field: match culprit.shape {
@@ -172,6 +178,7 @@ pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failu
             None => Failure::Other(e.to_string()),
         },
         E::Spline(e) => Failure::Other(format!("spline arithmetic failed: {e}")),
+        E::TooComplex { .. } => Failure::Other(e.to_string()),
     }
 }
 
@@ -182,9 +189,8 @@ fn blame<'c>(curves: &[&'c Curve]) -> Option<&'c Curve> {
         let Ok(circle) = antipodal::shapes::Circle::new(1.0, [0.0, 0.0]) else {
             return false;
         };
-        c.plane_curve().map_or(true, |p| {
-            antipodal::common_tangents(p.as_ref(), &circle, &antipodal::Options::default()).is_err()
-        })
+        antipodal::common_tangents(c.plane_curve(), &circle, &antipodal::Options::default())
+            .is_err()
     };
     match curves {
         [first, second, ..] if !refused(first) => Some(second),

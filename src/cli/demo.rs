@@ -4,7 +4,7 @@
 
 use super::report::{antipodal_figure, bisector_figure, curve_json, draw_curve, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
-use curvekit::inflections::{inflections, Inflections};
+use antipodal::Inflections;
 use curvekit::io::{parse_curve, Curve};
 use curvekit::svg::Figure;
 use serde_json::{json, Value};
@@ -117,7 +117,9 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         timing::measure(|| {
             shapes
                 .iter()
-                .filter_map(|r| inflections(&r.curve, common.tol).ok())
+                .filter_map(|r| {
+                    antipodal::inflections(r.curve.plane_curve(), &common.options()).ok()
+                })
                 .count()
         })
     });
@@ -163,14 +165,12 @@ fn shape_row(
     common: &Common,
 ) -> Result<ShapeRow, Failure> {
     let curve = parse_curve(&format!("demo:{name}"), text)?;
-    let inflections = Some(inflections(&curve, common.tol).map_err(|e| e.to_string()));
-    let opts = antipodal::Options::default().tolerance(common.tol);
-    let antipodal = curve.is_closed().then(|| {
-        curve
-            .plane_curve()
-            .and_then(|p| antipodal::antipodal(p.as_ref(), &opts))
-            .map_err(|e| e.to_string())
-    });
+    let opts = common.options();
+    let prepared = antipodal::prepare(curve.plane_curve());
+    let inflections = Some(prepared.inflections(&opts).map_err(|e| e.to_string()));
+    let antipodal = curve
+        .is_closed()
+        .then(|| prepared.antipodal(&opts).map_err(|e| e.to_string()));
     let self_bisector = curve
         .rational()
         .is_some()

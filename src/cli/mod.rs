@@ -123,6 +123,13 @@ pub(crate) struct Common {
     pub(crate) time: bool,
 }
 
+impl Common {
+    /// The algorithms' options for these command-line options.
+    pub(crate) fn options(&self) -> antipodal::Options {
+        antipodal::Options::default().tolerance(self.tol)
+    }
+}
+
 fn parse_tol(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(t) if t.is_finite() && t > 0.0 => Ok(t),

@@ -1,8 +1,7 @@
 //! Text and JSON reports, and drawing a curve into a figure.
 
 use super::timing::Stats;
-use antipodal::{Antipodal, Tangents};
-use curvekit::inflections::Inflections;
+use antipodal::{Antipodal, InflectionKind, Inflections, Tangents};
 use curvekit::io::{Curve, Shape};
 use curvekit::svg::{side_by_side, Figure};
 use serde::Serialize;
@@ -93,7 +92,7 @@ pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&St
     for (i, f) in r.inflections.iter().enumerate() {
         let note = match (f.certified, f.kind) {
             (true, _) => "",
-            (false, bspline::roots::RootKind::Cluster) => "  cluster, not certified",
+            (false, InflectionKind::Cluster) => "  cluster, not certified",
             (false, _) => "  not certified",
         };
         let _ = writeln!(
@@ -113,10 +112,17 @@ pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&St
 
 /// The `--time` line of text reports.
 pub(crate) fn time_line(st: &Stats) -> String {
-    format!(
+    let mut line = format!(
         "time:        median {:.3} µs per run over {} runs",
         st.median_us, st.runs
-    )
+    );
+    if let (Some(cold), Some(runs)) = (st.cold_median_us, st.cold_runs) {
+        let _ = write!(
+            line,
+            "; first run on a freshly read curve {cold:.3} µs ({runs} runs)"
+        );
+    }
+    line
 }
 
 fn curve_line(s: &mut String, label: &str, curve: &Curve) {
@@ -293,7 +299,8 @@ pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) ->
         let pad = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
         plane.frame([lo[0] - pad, lo[1] - pad], [hi[0] + pad, hi[1] + pad]);
     }
-    if let (Ok(p1), Ok(p2)) = (c1.plane_curve(), c2.plane_curve()) {
+    {
+        let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
         for b in &r.branches {
             plane.thin(b.xy.clone(), "#d62020");
             let step = (b.xy.len() / 6).max(1);

@@ -6,11 +6,27 @@ use std::time::{Duration, Instant};
 /// How long the repetitions run at least.
 const BUDGET: Duration = Duration::from_millis(500);
 
-/// Median time of one run and the number of runs it is taken over.
+/// Median time of one run and the number of runs it is taken over: warm (on a prepared curve)
+/// and, as an extension, cold (preparing the curve read and answering once).
 #[derive(Debug, Clone, Copy, Serialize)]
 pub(crate) struct Stats {
     pub(crate) median_us: f64,
     pub(crate) runs: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) cold_median_us: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) cold_runs: Option<usize>,
+}
+
+/// [`measure`] of a warm run and of a cold one, each for the whole budget.
+pub(crate) fn measure_both<T, U>(warm: impl FnMut() -> T, cold: impl FnMut() -> U) -> Stats {
+    let w = measure(warm);
+    let c = measure(cold);
+    Stats {
+        cold_median_us: Some(c.median_us),
+        cold_runs: Some(c.runs),
+        ..w
+    }
 }
 
 /// Runs `f` repeatedly for at least [`BUDGET`] (and at least three times).
@@ -32,5 +48,7 @@ pub(crate) fn measure<T>(mut f: impl FnMut() -> T) -> Stats {
     Stats {
         median_us: median,
         runs: n,
+        cold_median_us: None,
+        cold_runs: None,
     }
 }

@@ -4,9 +4,9 @@
 //! can name the exact field (`points[3][1]`, `knots[5]`), which serde's messages cannot. Unknown
 //! fields are rejected like `#[serde(deny_unknown_fields)]` would, but with the field named.
 
-use crate::shapes::{Analytic, Circle, Convexities, Ellipse, EllipticLemniscate, Limacon};
-use antipodal::PlaneCurve;
 use bspline::Rational;
+use curve::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape as Analytic};
+use curve::PlaneCurve;
 use serde_json::{Map, Value};
 use std::path::Path;
 use thiserror::Error;
@@ -18,8 +18,9 @@ mod spline;
 pub const MAX_ABS: f64 = 1e100;
 /// Largest accepted degree: root isolation cost grows quickly with the degree.
 pub const MAX_DEGREE: usize = 64;
-/// Largest accepted number of lobes `m` of a `convexities` curve.
-pub const MAX_LOBES: u32 = 10_000;
+/// Largest accepted number of lobes `m` of a `convexities` curve: the work grows as `m²` (the
+/// curve has about `1.9 m²` antipodal pairs; `m = 100`, 19,000 of them, takes half a second).
+pub const MAX_LOBES: u32 = 100;
 
 /// A curve file that cannot be used: which file, which field, what is wrong.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -118,7 +119,9 @@ pub enum SplineKind {
 /// A validated B-spline, NURBS or Bézier curve.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SplineCurve {
-    /// The curve (polynomial curves have unit weights).
+    /// The curve as the algorithms take it.
+    pub plane: curve::SplineCurve,
+    /// Its rational form (polynomial curves have unit weights).
     pub curve: Rational,
     /// `bezier` or `bspline`.
     pub kind: SplineKind,
@@ -136,7 +139,7 @@ pub struct SplineCurve {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
     /// `bezier` or `bspline`.
-    Spline(SplineCurve),
+    Spline(Box<SplineCurve>),
     /// One of the analytic kinds (all closed).
     Analytic(Analytic),
 }
@@ -176,11 +179,11 @@ impl Curve {
         }
     }
 
-    /// The curve as the `antipodal` algorithms take it.
-    pub fn plane_curve(&self) -> antipodal::Result<Box<dyn PlaneCurve>> {
+    /// The curve as the algorithms take it.
+    pub fn plane_curve(&self) -> &dyn PlaneCurve {
         match &self.shape {
-            Shape::Spline(s) => Ok(Box::new(antipodal::SplineCurve::new(s.curve.clone())?)),
-            Shape::Analytic(a) => a.to_plane_curve(),
+            Shape::Spline(s) => &s.plane,
+            Shape::Analytic(a) => a,
         }
     }
 
@@ -194,9 +197,7 @@ impl Curve {
 
     /// `n + 1` points at uniform parameters over the whole domain (both ends included).
     pub fn polyline(&self, n: usize) -> Vec<[f64; 2]> {
-        let Ok(c) = self.plane_curve() else {
-            return Vec::new();
-        };
+        let c = self.plane_curve();
         let (a, b) = self.domain();
         let n = n.max(1);
         (0..=n)
@@ -287,16 +288,18 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
     }
     let f = Fields(map);
     let analytic = match kind {
-        "bezier" | "bspline" => return spline::parse_spline(kind, &f).map(Shape::Spline),
-        "circle" => Analytic::Circle(Circle {
-            center: f.opt_point("center")?.unwrap_or([0.0, 0.0]),
-            r: f.positive("r")?,
-        }),
-        "ellipse" => Analytic::Ellipse(Ellipse {
-            center: f.opt_point("center")?.unwrap_or([0.0, 0.0]),
-            a: f.positive("a")?,
-            b: f.positive("b")?,
-        }),
+        "bezier" | "bspline" => {
+            return spline::parse_spline(kind, &f).map(|s| Shape::Spline(Box::new(s)))
+        }
+        "circle" => {
+            let center = f.opt_point("center")?.unwrap_or([0.0, 0.0]);
+            Analytic::Circle(shape("r", Circle::new(f.positive("r")?, center))?)
+        }
+        "ellipse" => {
+            let center = f.opt_point("center")?.unwrap_or([0.0, 0.0]);
+            let (a, b) = (f.positive("a")?, f.positive("b")?);
+            Analytic::Ellipse(shape("a", Ellipse::new(a, b, center))?)
+        }
         "limacon" => {
             let a = f.number("a")?;
             let b = f.number("b")?;
@@ -310,12 +313,12 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
                     a,
                 ));
             }
-            Analytic::Limacon(Limacon { a, b })
+            Analytic::Limacon(shape("a", Limacon::new(a, b))?)
         }
-        "elliptic_lemniscate" => Analytic::EllipticLemniscate(EllipticLemniscate {
-            a: f.positive("a")?,
-            b: f.positive("b")?,
-        }),
+        "elliptic_lemniscate" => {
+            let (a, b) = (f.positive("a")?, f.positive("b")?);
+            Analytic::EllipticLemniscate(shape("a", EllipticLemniscate::new(a, b))?)
+        }
         _ => {
             let p = f.positive("p")?;
             let eps = f.number("eps")?;
@@ -324,10 +327,25 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
             }
             let m = f.integer("m", 2, u64::from(MAX_LOBES))?;
             let m = u32::try_from(m).unwrap_or(MAX_LOBES);
-            Analytic::Convexities(Convexities { p, eps, m })
+            Analytic::Convexities(shape("p", Convexities::new(p, eps, m))?)
         }
     };
     Ok(Shape::Analytic(analytic))
+}
+
+/// A shape the reader validated already: a refusal by the curve model (not expected) names its
+/// field, or `default` where it names none.
+fn shape<T>(default: &str, made: curve::Result<T>) -> Result<T, FieldError> {
+    made.map_err(|e| match e {
+        curve::Error::InvalidShape { field, value, why } => (
+            field.to_string(),
+            Problem::OutOfRange {
+                rule: why.to_string(),
+                value,
+            },
+        ),
+        curve::Error::Spline(e) => (default.to_string(), Problem::Spline(e)),
+    })
 }
 
 /// Typed access to the fields of one curve object, naming the field in every error.

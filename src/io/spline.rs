@@ -1,7 +1,8 @@
 //! The spline kinds of curve files: `bezier` and `bspline`.
 
 use super::{out_of_range, FieldError, Fields, Problem, SplineCurve, SplineKind, MAX_DEGREE};
-use bspline::{knots::validate_knots, BSpline, Rational};
+use bspline::knots::validate_knots;
+use curve::ParamCurve;
 
 /// Validates a `bezier` or `bspline` object (unknown fields were already rejected).
 pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, FieldError> {
@@ -49,23 +50,19 @@ pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, Fi
         validate_knots(degree, n, k).map_err(|e| knot_error(e, k.len()))?;
     }
 
-    let mut coefs: Vec<f64> = points.iter().flat_map(|p| p.iter().copied()).collect();
-    let mut weights = weights;
-    let spline = if periodic {
-        // BSpline::periodic wraps the first p points; the weights must wrap the same way.
-        if let Some(w) = &mut weights {
-            let head = w[..degree].to_vec();
-            w.extend(head);
-        }
-        BSpline::periodic(degree, 2, coefs)
-    } else if let Some(k) = knots.clone() {
-        BSpline::new(degree, k, 2, std::mem::take(&mut coefs))
+    let plane = if periodic {
+        curve::SplineCurve::periodic(degree, &points, weights.as_deref())
     } else {
-        BSpline::clamped_uniform(degree, 2, coefs)
+        curve::SplineCurve::clamped(degree, &points, weights.as_deref(), knots.clone())
     }
-    .map_err(|e| ("points".to_string(), Problem::Spline(e)))?;
-    let curve = Rational::new(spline, weights.as_deref())
-        .map_err(|e| ("weights".to_string(), Problem::Spline(e)))?;
+    .map_err(|e| match e {
+        curve::Error::Spline(e @ bspline::Error::NonPositiveWeight { .. }) => {
+            ("weights".to_string(), Problem::Spline(e))
+        }
+        curve::Error::Spline(e) => ("points".to_string(), Problem::Spline(e)),
+        e => ("points".to_string(), Problem::Geometry(e.to_string())),
+    })?;
+    let curve = plane.curve().clone();
 
     // Curvature needs two derivatives of the homogeneous form; if they overflow, nothing
     // downstream can be trusted. Only knots packed far too tightly can cause this.
@@ -76,8 +73,9 @@ pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, Fi
         return Err((field.into(), Problem::Overflow));
     }
 
-    let closed = periodic || ends_meet(&curve, &points);
+    let closed = plane.is_closed();
     Ok(SplineCurve {
+        plane,
         curve,
         kind,
         periodic,
@@ -85,21 +83,6 @@ pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, Fi
         weighted: weights.is_some(),
         n_points: n,
     })
-}
-
-/// True when the curve's end points coincide (up to rounding relative to its size).
-fn ends_meet(curve: &Rational, points: &[[f64; 2]]) -> bool {
-    let (a, b) = curve.domain();
-    let (p, q) = (curve.point(a), curve.point(b));
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for pt in points {
-        for c in 0..2 {
-            lo[c] = lo[c].min(pt[c]);
-            hi[c] = hi[c].max(pt[c]);
-        }
-    }
-    let size = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
-    (p[0] - q[0]).hypot(p[1] - q[1]) <= 1e-12 * size
 }
 
 fn count(field: &str, expected: String, got: usize) -> FieldError {
@@ -125,7 +108,7 @@ mod tests {
 
     fn spline(text: &str) -> crate::io::SplineCurve {
         match parse_curve("t.json", text).map(|c| c.shape) {
-            Ok(Shape::Spline(s)) => s,
+            Ok(Shape::Spline(s)) => *s,
             other => panic!("{other:?}"),
         }
     }

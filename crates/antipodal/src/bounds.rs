@@ -6,11 +6,11 @@
 use crate::cells::{
     cell_of, cell_span, Blocks, Cells, RunUnions, Union, COARSE_CELLS, FINE_CELLS, SPLIT,
 };
-use crate::geom::{wrap_pi, V2};
 use crate::taylor::Taylor;
 use crate::view::View;
 use bspline::rounding;
 use bspline::{Piecewise, ValueSlope};
+use curve::{wrap_pi, V2};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
@@ -814,7 +814,7 @@ impl View<'_> {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use crate::curve::tests::star_curve as curve;
+    use crate::prepare::tests::{as_given, star_curve as curve};
     use proptest::prelude::*;
 
     proptest! {
@@ -921,7 +921,8 @@ mod tests {
                 len in prop_oneof![1e-5f64..1e-3, 1e-3f64..0.05, 0.05f64..0.5],
             ) {
                 let c = curve(deg, &seed, rational.then_some(&w[..]));
-                let v = View::new(&c, false, true, 1e-12).unwrap();
+                let prep = as_given(&c);
+                let v = View::new(prep.source(true), false, 1e-12);
                 let lo = v.a + a * v.period;
                 let hi = lo + len * v.period;
                 let Some(b) = v.arc_bounds(lo, hi) else {

@@ -6,9 +6,10 @@
 //! turns by less than π there. Analytic curves are sampled (Jia's method, not certified).
 
 use crate::error::{Error, Result};
-use crate::geom::{wrap_pi, V2};
 use crate::prims::solve_in;
 use crate::view::View;
+use bspline::roots::SignChangeKind;
+use curve::{wrap_pi, V2};
 use smallvec::SmallVec;
 use std::f64::consts::PI;
 
@@ -87,10 +88,48 @@ impl Piece {
     }
 }
 
+/// Where the curvature changes sign.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Zero {
+    /// The parameter.
+    pub(crate) u: f64,
+    /// An interval proven to hold it (certified isolation), in the view's parameter.
+    pub(crate) bracket: Option<(f64, f64)>,
+    /// Existence (and uniqueness in the bracket) follow from coefficient signs.
+    pub(crate) certified: bool,
+    /// A cluster of roots (the curvature within rounding of zero across the bracket).
+    pub(crate) cluster: bool,
+    /// A jump of the curvature where the tangent jumps too (a corner): the curve is cut
+    /// there, but it does not inflect.
+    pub(crate) corner: bool,
+}
+
+impl Zero {
+    fn sampled(u: f64) -> Self {
+        Zero {
+            u,
+            bracket: None,
+            certified: false,
+            cluster: false,
+            corner: false,
+        }
+    }
+}
+
+/// The largest sine of the angle between the one-sided tangents at a jump of the curvature
+/// that still counts as a continuous tangent (an inflection rather than a corner), where the
+/// forms do not prove the curve `C¹` there: far above the rounding of the tangents, far below
+/// any drawn corner.
+const TANGENT_CONTINUITY: f64 = 1e-9;
+
 /// Inflections and straight stretches.
 pub(crate) struct Zeros {
-    /// Simple inflections in `[a, a + period)`, sorted.
-    pub(crate) zs: Vec<f64>,
+    /// Sign changes of the curvature in `[a, a + period)`, sorted: simple inflections, and
+    /// corners.
+    pub(crate) zs: Vec<Zero>,
+    /// Straight stretches between a left and a right turn: an inflection each, reported as a
+    /// cluster (not cut at: the stretches are pieces of their own).
+    pub(crate) flat_changes: Vec<Zero>,
     /// Intervals where the curvature vanishes identically (unwrapped, `lo < hi`).
     pub(crate) flats: Vec<(f64, f64)>,
 }
@@ -131,7 +170,7 @@ impl View<'_> {
         let (m, max_step) = if coarse {
             (16, PI / 2.0)
         } else {
-            (96usize.max(4 * knots.len()), PI / 4.0)
+            (self.samples.max(4 * knots.len()), PI / 4.0)
         };
         // A coarse track starts from the breakpoints alone: the refinement below halves a
         // step until the hodograph certifies it (one fine piece of the tangent's enclosure
@@ -147,7 +186,7 @@ impl View<'_> {
         us.sort_by(f64::total_cmp);
         us.dedup();
         let speed_floor = 1e-13 * self.scale / self.period.max(1e-300);
-        let jet = |x: f64| -> Result<crate::geom::Jet> {
+        let jet = |x: f64| -> Result<curve::Jet> {
             let j = self.jet_to(x, 1);
             if j.d1.norm() <= speed_floor {
                 return Err(Error::Cusp {
@@ -168,7 +207,7 @@ impl View<'_> {
         if keep_points {
             out_p.push(j0.p);
         }
-        let mut stack: SmallVec<[(f64, usize, crate::geom::Jet); 16]> = SmallVec::new();
+        let mut stack: SmallVec<[(f64, usize, curve::Jet); 16]> = SmallVec::new();
         for &w1 in &us[1..] {
             // Depth-first refinement of [x0, w1] until each step turns by less than
             // `max_step` (and, for splines, the hodograph certifies less than π). Every
@@ -235,9 +274,11 @@ impl View<'_> {
         ok
     }
 
-    /// Simple inflections in `[a, a + period)`, sorted (Jia §5.1).
-    pub(crate) fn inflections(&self, tr: &Tracks) -> Result<Zeros> {
+    /// Simple inflections in `[a, a + period)`, sorted (Jia §5.1): from the symbolic forms,
+    /// or sampled along the track `tr` (built here when not given).
+    pub(crate) fn inflections(&self, tr: Option<&Tracks>) -> Result<Zeros> {
         let mut flats = Vec::new();
+        let mut flat_changes = Vec::new();
         let mut out = match &self.cert {
             Some(cert) => {
                 // The sign changes of the curvature numerator: simple roots, narrow clusters
@@ -249,9 +290,40 @@ impl View<'_> {
                     self.uncertify();
                 }
                 flats.extend(found.flats.iter().map(|f| f.bracket));
-                found.changes.iter().map(|c| c.u).collect()
+                flat_changes.extend(found.flats.iter().filter(|f| f.sign_change).map(|f| Zero {
+                    u: f.u,
+                    bracket: Some(f.bracket),
+                    certified: false,
+                    cluster: true,
+                    corner: false,
+                }));
+                found
+                    .changes
+                    .iter()
+                    .map(|c| {
+                        let (corner, certain) = match c.kind {
+                            SignChangeKind::Jump => self.corner_at(c.u),
+                            _ => (false, true),
+                        };
+                        Zero {
+                            u: c.u,
+                            bracket: Some(c.bracket),
+                            certified: c.certified && certain,
+                            cluster: c.kind == SignChangeKind::Cluster,
+                            corner,
+                        }
+                    })
+                    .collect()
             }
             None => {
+                let owned;
+                let tr = match tr {
+                    Some(tr) => tr,
+                    None => {
+                        owned = self.tracks(&[])?;
+                        &owned
+                    }
+                };
                 let kappa = |u: f64| {
                     let j = self.jet(u);
                     (j.d1.cross(j.d2), j.d1.cross(j.d3), f64::NAN)
@@ -263,29 +335,69 @@ impl View<'_> {
                         continue;
                     }
                     if (k0 < 0.0) != (k1 < 0.0) && k1 != 0.0 {
-                        zs.push(solve_in(kappa, (w[0], w[1]), (k0, k1), self.tol, f64::NAN));
+                        let u = solve_in(kappa, (w[0], w[1]), (k0, k1), self.tol, f64::NAN);
+                        zs.push(Zero::sampled(u));
                     }
                 }
                 zs
             }
         };
         for z in &mut out {
-            *z = if self.closed { self.wrap(*z) } else { *z };
+            if self.closed {
+                let w = self.wrap(z.u);
+                let shift = w - z.u;
+                z.u = w;
+                z.bracket = z.bracket.map(|(lo, hi)| (lo + shift, hi + shift));
+            }
         }
-        out.sort_by(f64::total_cmp);
-        out.dedup_by(|x, y| (*x - *y).abs() <= 4.0 * self.tol);
+        out.sort_by(|x, y| x.u.total_cmp(&y.u));
+        out.dedup_by(|x, y| (x.u - y.u).abs() <= 4.0 * self.tol);
         if self.closed && out.len() > 1 {
-            let (f, l) = (out[0], out[out.len() - 1]);
+            let (f, l) = (out[0].u, out[out.len() - 1].u);
             if f + self.period - l <= 4.0 * self.tol {
                 out.pop();
             }
         }
-        Ok(Zeros { zs: out, flats })
+        Ok(Zeros {
+            zs: out,
+            flat_changes,
+            flats,
+        })
+    }
+
+    /// Whether the curvature's jump at `u` (a break of the forms, or the seam) is a corner,
+    /// and whether that is certain: where the homogeneous form is `C¹` the tangent is
+    /// continuous (no corner, certain); elsewhere the one-sided tangents are compared (not
+    /// certain).
+    fn corner_at(&self, u: f64) -> (bool, bool) {
+        let Some(cert) = &self.cert else {
+            return (false, false);
+        };
+        let hom = &cert.hom;
+        let breaks = hom.breaks();
+        let k = breaks.partition_point(|&x| x < u);
+        let seam = k == 0 || k == breaks.len() - 1;
+        let smooth = if seam {
+            hom.continuity(0)
+        } else if breaks[k] == u {
+            hom.continuity(k)
+        } else {
+            i32::MAX
+        };
+        if smooth >= 1 {
+            return (false, true);
+        }
+        let d = 1e-9 * self.period;
+        let (before, after) = (self.jet_to(u - d, 1).d1, self.jet_to(u + d, 1).d1);
+        let continuous = before.dot(after) > 0.0
+            && before.cross(after).abs() <= TANGENT_CONTINUITY * before.norm() * after.norm();
+        (!continuous, false)
     }
 
     /// The monotone pieces with |Φ| < π (Jia §5.1 step 2).
     pub(crate) fn pieces(&self, tr: &Tracks, zeros: &Zeros) -> Vec<Piece> {
-        let zs = &zeros.zs;
+        let zs: Vec<f64> = zeros.zs.iter().map(|z| z.u).collect();
+        let zs = &zs;
         let mut arcs: Vec<(f64, f64)> = Vec::with_capacity(zs.len() + 1);
         let mut flat_pieces = Vec::new();
         if self.closed && !zeros.flats.is_empty() {

@@ -1,127 +1,84 @@
-//! The public entry points: validation and dissection of a curve, the pair loop of §5, and the
-//! two-curve common tangents of §2.5.
+//! The runs on a prepared curve: validation and dissection (§5.1–5.2), the pair loop of §5,
+//! and the two-curve common tangents of §2.5, in the curve's frame.
 
-use crate::circle::{Angle, OnCircle};
-use crate::curve::PlaneCurve;
 use crate::dissect::{Piece, Tracks, Zeros};
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::finish::certified_rest;
-use crate::geom::wrap_pi;
 use crate::pairs::{negligible, opposite_pair, Pair};
 use crate::search::{antipodal_points, Budget, THETA_NOISE};
 use crate::tangent;
 use crate::types::{
-    Antipodal, AntipodalPair, Inflection, Inflections, Options, PairType, TangentLine, Tangents,
+    Antipodal, AntipodalPair, Inflection, InflectionKind, Inflections, Options, PairType,
+    TangentLine, Tangents,
 };
-use crate::view::View;
+use crate::view::{Source, View};
+use curve::{wrap_pi, V2};
 use smallvec::SmallVec;
 
 /// A validated, dissected curve.
-pub(crate) struct Prepared<'a> {
+pub(crate) struct Dissected<'a> {
     pub(crate) view: View<'a>,
+    #[allow(dead_code)] // (kept with the dissection it was built for)
     tracks: Tracks,
     zeros: Zeros,
     pub(crate) pieces: Vec<Piece>,
 }
 
-fn knots_of(curve: &dyn PlaneCurve) -> Vec<f64> {
-    curve
-        .rational()
-        .map(|r| r.homogeneous().breakpoints())
-        .unwrap_or_default()
-}
-
-/// The curve the algorithms run on: an analytic shape with an exact rational-circle form runs
-/// on that form (every decision certified), with parameters reported back in `φ`.
-struct Working<'a> {
-    circle: Option<OnCircle<'a>>,
-    orig: &'a dyn PlaneCurve,
-}
-
-impl<'a> Working<'a> {
-    fn new(curve: &'a dyn PlaneCurve, opts: &Options) -> Self {
-        let circle = if opts.certify {
-            OnCircle::new(curve)
-        } else {
-            None
-        };
-        Self {
-            circle,
-            orig: curve,
-        }
-    }
-    fn curve(&self) -> &dyn PlaneCurve {
-        match &self.circle {
-            Some(c) => c,
-            None => self.orig,
-        }
-    }
-    fn report(&self) -> Option<Angle> {
-        self.circle.as_ref().map(OnCircle::angle)
-    }
-}
-
-fn view_of<'a>(
-    curve: &'a dyn PlaneCurve,
-    rev: bool,
-    opts: &Options,
-    report: Option<Angle>,
-) -> Result<View<'a>> {
-    let mut v = View::new(curve, rev, opts.certify, opts.tol)?;
-    if let Some(angle) = report {
-        v.set_report(angle);
-    }
-    Ok(v)
-}
+/// Largest angle between the tangents at a closed curve's two ends that is still no corner:
+/// far above the rounding of the tangents' directions, far below any drawn corner.
+const SEAM_CORNER: f64 = 1e-7;
 
 /// Orients (closed curves counterclockwise, unless `force_rev` is given), validates and
 /// dissects.
-pub(crate) fn prepare<'a>(
-    curve: &'a dyn PlaneCurve,
+pub(crate) fn dissect<'a>(
+    src: Source<'a>,
     opts: &Options,
     force_rev: Option<bool>,
-    report: Option<Angle>,
-) -> Result<Prepared<'a>> {
+) -> Result<Dissected<'a>> {
     opts.validate()?;
-    let knots = knots_of(curve);
+    let curve = src.curve;
+    let knots: Vec<f64> = src
+        .forms
+        .map(|f| f.hom.breaks().to_vec())
+        .unwrap_or_default();
     let closed = curve.is_closed();
     if closed {
         let (a, b) = curve.domain();
         let (ta, tb) = (curve.jet(a).d1, curve.jet(b).d1);
         let angle = wrap_pi(tb.angle() - ta.angle()).abs();
-        if angle > 1e-7 {
+        if angle > SEAM_CORNER {
             return Err(Error::Corner { angle });
         }
     }
     let (view, tracks) = match force_rev {
         Some(rev) => {
-            let view = view_of(curve, rev, opts, report)?;
+            let view = View::new(src, rev, opts.tol);
             let tracks = view.tracks(&knots)?;
             (view, tracks)
         }
         None => {
             // Orientation from the turning of the tangent (±2π); a clockwise curve is viewed
             // reversed, reusing the same track.
-            let view = view_of(curve, false, opts, report)?;
+            let view = View::new(src, false, opts.tol);
             let tracks = view.tracks(&knots)?;
             if closed && tracks.turn() < 0.0 {
                 let (a, b) = curve.domain();
-                (view_of(curve, true, opts, report)?, tracks.reversed(a, b))
+                (View::new(src, true, opts.tol), tracks.reversed(a, b))
             } else {
                 (view, tracks)
             }
         }
     };
-    let zeros = view.inflections(&tracks)?;
-    if closed && !curve.known_simple() {
+    let zeros = view.inflections(Some(&tracks))?;
+    if closed && !src.simple {
         view.check_simple(&tracks, &zeros)?;
     }
     if closed && zeros.zs.len() % 2 == 1 {
         view.uncertify();
     }
     let pieces = view.pieces(&tracks, &zeros);
-    Ok(Prepared {
+    Ok(Dissected {
         view,
         tracks,
         zeros,
@@ -129,49 +86,72 @@ pub(crate) fn prepare<'a>(
     })
 }
 
-fn inflection_list(v: &View, zs: &[f64]) -> Vec<Inflection> {
-    let mut out: Vec<Inflection> = zs
+/// The inflections of a dissection as reported: its sign changes of the curvature but the
+/// corners, and the straight stretches between a left and a right turn, in the curve's
+/// parameters.
+fn inflection_list(v: &View, zeros: &Zeros) -> Vec<Inflection> {
+    let certified = v.certified.get();
+    let mut out: Vec<Inflection> = zeros
+        .zs
         .iter()
-        .map(|&z| Inflection {
-            u: v.to_curve(z),
-            p: v.point(z).arr(),
+        .filter(|z| !z.corner)
+        .chain(&zeros.flat_changes)
+        .map(|z| Inflection {
+            u: v.to_curve(z.u),
+            p: v.point(z.u).arr(),
+            certified: certified && z.certified,
+            kind: match z.cluster {
+                true => InflectionKind::Cluster,
+                false => InflectionKind::Simple,
+            },
+            bracket: z.bracket.map(|(lo, hi)| v.bracket_to_curve(lo, hi)),
         })
         .collect();
     out.sort_by(|a, b| a.u.total_cmp(&b.u));
     out
 }
 
-/// All simple inflections of a curve (Jia §5.1; certified for splines).
-pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections> {
+/// All simple inflections of the curve of `src` (Jia §5.1; certified with symbolic forms), in
+/// its coordinates.
+pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Inflections> {
     opts.validate()?;
-    let work = Working::new(curve, opts);
-    let curve = work.curve();
-    let view = view_of(curve, false, opts, work.report())?;
-    let tracks = view.tracks(&knots_of(curve))?;
-    let zeros = view.inflections(&tracks)?;
+    let view = View::new(src, false, opts.tol);
+    // With symbolic forms the curve is proven regular (a cusp's vanishing curvature numerator
+    // would pass for an inflection) and the inflections need no track; without, Jia's sampled
+    // track (which refuses vanishing speeds) finds them.
+    // (An analytic shape is regular by construction.)
+    let tracks = match &view.cert {
+        Some(_) if src.simple => None,
+        Some(cert) => {
+            if let Some(u) = cert.singular_point(view.tol)? {
+                return Err(Error::Cusp {
+                    u: view.to_curve(u),
+                });
+            }
+            None
+        }
+        None => Some(view.tracks(&[])?),
+    };
+    let zeros = view.inflections(tracks.as_ref())?;
+    let inflections = inflection_list(&view, &zeros);
     Ok(Inflections {
-        inflections: inflection_list(&view, &zeros.zs),
-        certified: view.certified.get(),
+        certified: view.certified.get() && inflections.iter().all(|i| i.certified),
+        inflections,
+        reason: None,
     })
 }
 
-/// Every pair of antipodal points of a simple closed curve (Jia 2004).
-///
-/// ```
-/// use antipodal::{antipodal, shapes::Ellipse, Options};
-/// let e = Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap();
-/// let r = antipodal(&e, &Options::default()).unwrap();
-/// assert_eq!(r.pairs.len(), 2);
-/// ```
-pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
+/// Every pair of antipodal points of the simple closed curve of `src` (Jia 2004), in its
+/// coordinates.
+pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal> {
+    let curve = src.curve;
     if !curve.is_closed() {
         let (a, b) = curve.domain();
         return Err(Error::NotClosed {
             gap: (curve.jet(a).p - curve.jet(b).p).norm(),
         });
     }
-    let work = Working::new(curve, opts);
-    let prep = prepare(work.curve(), opts, None, work.report())?;
+    let prep = dissect(src, opts, None)?;
     let v = &prep.view;
     let mut raw: Vec<(f64, f64)> = Vec::with_capacity(32);
     let mut families = Vec::new();
@@ -203,15 +183,15 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
             }
         }
     }
-    let _ = &prep.tracks;
     let families = merge_families(v, families);
     let pairs = finish_pairs(v, raw, &families);
     Ok(Antipodal {
         pairs,
-        inflections: inflection_list(v, &prep.zeros.zs),
+        inflections: inflection_list(v, &prep.zeros),
         families: families.iter().map(|&f| family_of(v, f)).collect(),
         certified: v.certified.get(),
         complete: !budget.exhausted,
+        reason: None,
     })
 }
 
@@ -432,19 +412,26 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
     out.extend(tangent::common_tangents(p));
 }
 
-/// Every line tangent to both curves (Jia §2.5): pairs of monotone pieces with opposite normals,
-/// then again with the normals of the second curve reversed.
-pub fn common_tangents(
-    c1: &dyn PlaneCurve,
-    c2: &dyn PlaneCurve,
+/// Every line tangent to both curves of `s1` and `s2` (Jia §2.5), in their common
+/// coordinates: pairs of monotone pieces with opposite normals, then again with the normals of
+/// the second curve reversed. `same`: the two are one curve (a tangent touching it at one
+/// point is no common tangent).
+pub(crate) fn tangents_of(
+    s1: Source<'_>,
+    s2: Source<'_>,
+    same: bool,
     opts: &Options,
 ) -> Result<Tangents> {
-    let (w1, w2) = (Working::new(c1, opts), Working::new(c2, opts));
-    let a = prepare(w1.curve(), opts, Some(false), w1.report())?;
-    let mut lines: Vec<(f64, f64, bool)> = Vec::new();
+    let (c1, c2) = (s1.curve, s2.curve);
+    let a = dissect(s1, opts, Some(false))?;
+    // (s, t) reported, and the points of tangency.
+    let mut lines: Vec<(f64, f64, V2, V2)> = Vec::new();
     let mut certified = a.view.certified.get();
+    // The domain of the parameters reported on the second curve.
+    let mut pb = (0.0, 0.0);
     for rev in [false, true] {
-        let b = prepare(w2.curve(), opts, Some(rev), w2.report())?;
+        let b = dissect(s2, opts, Some(rev))?;
+        pb = b.view.reported_domain();
         for p in &a.pieces {
             for q in &b.pieces {
                 let Some(pair) = opposite_pair(&a.view, p, &b.view, q) else {
@@ -462,25 +449,29 @@ pub fn common_tangents(
                         1e-6 * a.view.period.max(b.view.period),
                     )
                     .unwrap_or((s, t));
-                    lines.push((a.view.to_curve(s), b.view.to_curve(t), rev));
+                    lines.push((
+                        a.view.to_curve(s),
+                        b.view.to_curve(t),
+                        a.view.point(s),
+                        b.view.point(t),
+                    ));
                 }
             }
         }
         certified &= b.view.certified.get() && a.view.certified.get();
     }
-    let (pa, pb) = (c1.domain(), c2.domain());
+    let pa = a.view.reported_domain();
     let close = |x: f64, y: f64, per: f64, closed: bool| {
         let d = (x - y).abs();
         let d = if closed { d.min(per - d) } else { d };
         d <= 1e-7 * per
     };
-    let same_curve = std::ptr::addr_eq(c1, c2);
     let size = a.view.scale;
     let mut out: Vec<TangentLine> = Vec::new();
-    for (s, t, _) in lines {
+    for (s, t, p, q) in lines {
         // With one curve twice, a "common" tangent touching at a single point (an inflection's
         // two sides meeting) is just a tangent: not a line through two points.
-        if same_curve && (c1.jet(s).p - c2.jet(t).p).norm() <= 1e-5 * size {
+        if same && (p - q).norm() <= 1e-5 * size {
             continue;
         }
         if out.iter().any(|l| {
@@ -491,13 +482,14 @@ pub fn common_tangents(
         out.push(TangentLine {
             s,
             t,
-            p: c1.jet(s).p.arr(),
-            q: c2.jet(t).p.arr(),
+            p: p.arr(),
+            q: q.arr(),
         });
     }
     out.sort_by(|x, y| x.s.total_cmp(&y.s));
     Ok(Tangents {
         lines: out,
         certified,
+        reason: None,
     })
 }

@@ -8,16 +8,9 @@ pub enum Error {
     /// The spline data is invalid.
     #[error(transparent)]
     Spline(#[from] bspline::Error),
-    /// An analytic shape parameter is out of range.
-    #[error("{field} = {value}: {why}")]
-    InvalidShape {
-        /// The offending field.
-        field: &'static str,
-        /// Its value.
-        value: f64,
-        /// What is required.
-        why: &'static str,
-    },
+    /// The curve cannot be made (an analytic shape's parameter out of range).
+    #[error(transparent)]
+    Curve(#[from] curve::Error),
     /// An option is out of range.
     #[error("option {field} = {value} is invalid")]
     InvalidOption {
@@ -26,6 +19,13 @@ pub enum Error {
         /// Its value.
         value: f64,
     },
+    /// The curve oscillates more than the sampled search is bounded to resolve (an analytic
+    /// shape with many lobes).
+    #[error("the curve oscillates too often for the search's bounds ({lobes} lobes)")]
+    TooComplex {
+        /// The number of lobes.
+        lobes: usize,
+    },
     /// The operation needs a closed curve.
     #[error("the curve is not closed (its ends are {gap} apart)")]
     NotClosed {
@@ -33,7 +33,7 @@ pub enum Error {
         gap: f64,
     },
     /// The curve has a cusp or a stationary point (zero speed): no tangent or normal there.
-    #[error("the curve is singular (zero speed or cusp) near u = {u}")]
+    #[error("the curve is singular (zero speed or cusp) near u = {u}, or too close to singular there for double precision to tell")]
     Cusp {
         /// Parameter near the singularity.
         u: f64,

@@ -508,9 +508,9 @@ fn turning_at(p: &Pair, s: f64, t: f64) -> Option<f64> {
 pub(crate) mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use crate::curve::tests::star_curve;
-    use crate::driver::prepare;
+    use crate::driver::dissect;
     use crate::pairs::opposite_pair;
+    use crate::prepare::tests::{as_given, star_curve};
     use crate::Options;
     use proptest::prelude::*;
 
@@ -558,7 +558,8 @@ pub(crate) mod tests {
             picks in proptest::collection::vec((0.0f64..1.0, prop_oneof![1e-4f64..1e-2, 1e-2f64..1.0]), 4),
         ) {
             let c = star_curve(deg, &seed, rational.then_some(&w[..]));
-            let Ok(prep) = prepare(&c, &Options::default(), None, None) else {
+            let given = as_given(&c);
+            let Ok(prep) = dissect(given.source(true), &Options::default(), None) else {
                 return Ok(());
             };
             let (v, pieces) = (&prep.view, &prep.pieces);
@@ -621,7 +622,7 @@ pub(crate) mod tests {
             (1.0 / j.curvature(), j.d1.angle())
         };
         let ((r0, a0), (r1, a1)) = (at(u - h), at(u + h));
-        let da = crate::geom::wrap_pi(a1 - a0);
+        let da = curve::wrap_pi(a1 - a0);
         (r1 - r0) / da
     }
 
@@ -653,7 +654,7 @@ pub(crate) mod tests {
     /// Runs `check` on the dissection of `curve`; nothing when the curve is rejected.
     fn on_random_curve(
         curve: &RandomCurve,
-        check: impl FnOnce(&crate::driver::Prepared) -> Result<(), TestCaseError>,
+        check: impl FnOnce(&crate::driver::Dissected) -> Result<(), TestCaseError>,
     ) -> Result<(), TestCaseError> {
         let RandomCurve {
             deg,
@@ -663,13 +664,14 @@ pub(crate) mod tests {
             bumps,
         } = curve;
         let star = star_curve(*deg, seed, rational.then_some(&w[..]));
-        let bumpy = bumps.map(|(eps, m)| crate::shapes::Convexities::new(4.0, eps, m).unwrap());
-        let on_circle = bumpy.as_ref().and_then(|b| crate::circle::OnCircle::new(b));
-        let c: &dyn crate::curve::PlaneCurve = match &on_circle {
+        let bumpy = bumps.map(|(eps, m)| curve::shapes::Convexities::new(4.0, eps, m).unwrap());
+        let c: &dyn curve::PlaneCurve = match &bumpy {
             Some(b) => b,
             None => &star,
         };
-        match prepare(c, &Options::default(), None, None) {
+        // (The curve with convexities runs on its circle form.)
+        let given = as_given(c);
+        match dissect(given.source(true), &Options::default(), None) {
             Ok(prep) => check(&prep),
             Err(_) => Ok(()),
         }

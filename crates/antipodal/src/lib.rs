@@ -24,31 +24,27 @@
 
 mod bounds;
 mod cells;
-mod circle;
-mod curve;
 mod dissect;
 mod driver;
 mod error;
 mod families;
 mod finish;
 mod forms;
-mod geom;
 mod pairs;
+mod prepare;
 mod prims;
 mod search;
-pub mod shapes;
 mod simple;
 mod tangent;
 mod taylor;
 mod types;
 mod view;
 
-pub use curve::{PlaneCurve, SplineCurve};
-pub use driver::{antipodal, common_tangents, inflections};
+pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, SplineCurve, V2};
 pub use error::{Error, Result};
 pub use forms::SymbolicForms;
-pub use geom::{Jet, V2};
+pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
 pub use types::{
-    Antipodal, AntipodalPair, Family, Inflection, Inflections, Options, PairType, TangentLine,
-    Tangents,
+    Antipodal, AntipodalPair, Family, Inflection, InflectionKind, Inflections, Options, PairType,
+    TangentLine, Tangents,
 };

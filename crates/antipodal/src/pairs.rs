@@ -1,9 +1,9 @@
 //! Segment pairs with opposite normals (Jia §5.2): intersecting normal cones.
 
 use crate::dissect::Piece;
-use crate::geom::V2;
 use crate::search::THETA_NOISE;
 use crate::view::View;
+use curve::V2;
 use std::f64::consts::{PI, TAU};
 
 /// Two monotone segments `S` over `(sa, sb)` (`sa < sb`) and `T` over `(ta, tb)` (either order)

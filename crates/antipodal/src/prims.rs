@@ -6,11 +6,11 @@
 //! the ends (Jia's criterion, exact on a monotone segment), refined by Newton's method inside
 //! the bracket, which cannot fail.
 
-use crate::geom::V2;
 use crate::view::View;
 use bspline::roots::{Count, Root, RootKind};
 use bspline::solve::{bracketed, Accuracy};
 use bspline::Piecewise;
+use curve::V2;
 use smallvec::SmallVec;
 
 /// Halley's step safeguarded by a bracket on which `f` changes sign (see
@@ -430,8 +430,8 @@ fn polish(f: &impl Fn(f64) -> (f64, f64, f64), u: f64, lo: f64, hi: f64) -> f64 
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use crate::curve::tests::star_curve;
-    use crate::driver::prepare;
+    use crate::driver::dissect;
+    use crate::prepare::tests::{as_given, star_curve};
     use crate::Options;
     use proptest::prelude::*;
 
@@ -450,7 +450,8 @@ mod tests {
             points in proptest::collection::vec((-1.5f64..1.5, -1.5f64..1.5), 6),
         ) {
             let c = star_curve(deg, &seed, rational.then_some(&w[..]));
-            let Ok(prep) = prepare(&c, &Options::default(), None, None) else {
+            let given = as_given(&c);
+            let Ok(prep) = dissect(given.source(true), &Options::default(), None) else {
                 return Ok(());
             };
             let v = &prep.view;

@@ -21,8 +21,8 @@
 
 use crate::dissect::{Tracks, Zeros};
 use crate::error::{Error, Result};
-use crate::geom::{wrap_pi, V2};
 use crate::view::View;
+use curve::{wrap_pi, V2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Halvings of a pair of arcs before the test gives up on it (2⁻⁴⁰ of an arc is far below
@@ -146,7 +146,7 @@ impl View<'_> {
     /// The track's steps cut at the inflections and the ends of straight stretches, then
     /// halved until each turns by less than π/2.
     fn monotone_arcs(&self, tr: &Tracks, zeros: &Zeros) -> Vec<Arc> {
-        let mut cuts: Vec<f64> = zeros.zs.clone();
+        let mut cuts: Vec<f64> = zeros.zs.iter().map(|z| z.u).collect();
         for &(lo, hi) in &zeros.flats {
             cuts.extend([self.wrap(lo), self.wrap(hi)]);
         }

@@ -12,10 +12,10 @@
 //! Once one tangent is known, the second lies where `d` changes sign again: a bisection on `d`
 //! backs the iteration up wherever a sign change brackets a tangent.
 
-use crate::geom::V2;
 use crate::pairs::Pair;
 use crate::prims::Prefer;
 use crate::view::View;
+use curve::V2;
 use smallvec::SmallVec;
 
 /// Points of tangency `(s, t)` of the common tangents of `p`, sorted by `s`.
@@ -221,10 +221,10 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use crate::curve::tests::{star_curve, star_curve_at};
-    use crate::driver::prepare;
+    use crate::driver::dissect;
     use crate::finish::tests::opposite_by_bisection;
     use crate::pairs::opposite_pair;
+    use crate::prepare::tests::{as_given, star_curve, star_curve_at};
     use crate::Options;
     use proptest::prelude::*;
     use std::sync::atomic::{AtomicUsize, Ordering};
@@ -254,12 +254,13 @@ mod tests {
             let a = star_curve(deg, &seed, weights);
             let b = star_curve_at(deg, &seed2, weights, [dist * dir.cos(), dist * dir.sin()]);
             let opts = Options::default();
-            let Ok(pa) = prepare(&a, &opts, Some(false), None) else {
+            let (ga, gb) = (as_given(&a), as_given(&b));
+            let Ok(pa) = dissect(ga.source(true), &opts, Some(false)) else {
                 return Ok(());
             };
             let mut others = vec![];
             for rev in [false, true] {
-                let Ok(pb) = prepare(&b, &opts, Some(rev), None) else {
+                let Ok(pb) = dissect(gb.source(true), &opts, Some(rev)) else {
                     return Ok(());
                 };
                 others.push(pb);

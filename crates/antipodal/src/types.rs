@@ -86,6 +86,27 @@ pub struct Inflection {
     pub u: f64,
     /// Point.
     pub p: [f64; 2],
+    /// Existence (and uniqueness in `bracket`) follow from coefficient signs.
+    pub certified: bool,
+    /// A simple sign change of the curvature, or a cluster (the curvature within rounding of
+    /// zero across `bracket`: a flat stretch between a left and a right turn, a root of odd
+    /// multiplicity, or roots closer than the tolerance).
+    pub kind: InflectionKind,
+    /// An interval of parameters proven to hold it (on a closed curve it may cross the seam:
+    /// it is then given in the unwrapped parameter, beyond the domain's end); absent where it
+    /// was found by sampling.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub bracket: Option<[f64; 2]>,
+}
+
+/// How an inflection was found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum InflectionKind {
+    /// A simple sign change of the curvature.
+    Simple,
+    /// A cluster of roots across which the curvature changes sign.
+    Cluster,
 }
 
 /// A continuum of antipodal pairs: every `s` in `s` pairs with one `t` in `t`.
@@ -110,15 +131,22 @@ pub struct Antipodal {
     pub certified: bool,
     /// False when a work limit was hit (the result may then be incomplete).
     pub complete: bool,
+    /// Why the result is not certified, where one reason stands out.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub reason: Option<String>,
 }
 
-/// Result of [`inflections`].
+/// Result of [`crate::inflections`].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Inflections {
-    /// Simple inflections, sorted by `u`.
+    /// Inflections, sorted by `u`.
     pub inflections: Vec<Inflection>,
-    /// True when isolated by certified root finding.
+    /// True when every inflection is certified and none was missed for certain: isolated by
+    /// certified root finding over the whole domain.
     pub certified: bool,
+    /// Why the result is not certified, where one reason stands out.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub reason: Option<String>,
 }
 
 /// A line tangent to the first curve at `s` and to the second at `t`.
@@ -141,4 +169,27 @@ pub struct Tangents {
     pub lines: Vec<TangentLine>,
     /// True when every decision followed from certified sign tests.
     pub certified: bool,
+    /// Why the result is not certified, where one reason stands out.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub reason: Option<String>,
 }
+
+/// Results that say whether they are certified, and why not.
+pub(crate) trait Provenance {
+    /// Marks the result uncertified, for `reason`.
+    fn uncertify(&mut self, reason: String);
+}
+
+macro_rules! provenance {
+    ($t:ty) => {
+        impl Provenance for $t {
+            fn uncertify(&mut self, reason: String) {
+                self.certified = false;
+                self.reason = Some(reason);
+            }
+        }
+    };
+}
+provenance!(Antipodal);
+provenance!(Inflections);
+provenance!(Tangents);

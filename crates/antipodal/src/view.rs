@@ -5,31 +5,49 @@
 //! viewed reversed (`u ↦ a + b − u`), so inside the algorithms every closed curve runs
 //! counterclockwise and the left normal is the inward normal, as the papers assume.
 
-use crate::circle::Angle;
-use crate::curve::PlaneCurve;
-use crate::forms::{Forms, SymbolicForms};
-use crate::geom::{Jet, V2};
+use crate::forms::SymbolicForms;
 use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
-use bspline::{BSpline, Piecewise, Rational};
+use bspline::Piecewise;
+use curve::circle::Angle;
+use curve::{Jet, ParamCurve, V2};
 use smallvec::SmallVec;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
 
 /// Symbolic forms of a spline curve in the view's parametrisation.
 pub(crate) struct Cert<'a> {
-    pub(crate) forms: Forms<'a>,
+    pub(crate) forms: &'a SymbolicForms,
     pub(crate) opts: RootOptions,
 }
 
 impl std::ops::Deref for Cert<'_> {
     type Target = SymbolicForms;
     fn deref(&self) -> &SymbolicForms {
-        &self.forms
+        self.forms
     }
 }
 
+/// What a view looks at: the curve evaluated in the parameter the algorithms run in, its
+/// symbolic forms when decisions are certified, whether it is simple and regular by
+/// construction (an analytic shape), and how its parameter maps to the one reported.
+#[derive(Clone, Copy)]
+pub(crate) struct Source<'a> {
+    pub(crate) curve: &'a dyn ParamCurve,
+    pub(crate) forms: Option<&'a SymbolicForms>,
+    pub(crate) simple: bool,
+    pub(crate) report: Option<Angle>,
+    /// The least number of samples of a sampled track (Jia's sampling must resolve the
+    /// curve's oscillations).
+    pub(crate) samples: usize,
+}
+
 pub(crate) struct View<'a> {
-    curve: &'a dyn PlaneCurve,
+    curve: &'a dyn ParamCurve,
+    /// Simple and regular by construction (the analytic shapes): the simplicity test is
+    /// skipped.
+    simple: bool,
+    /// The least number of samples of a sampled track.
+    pub(crate) samples: usize,
     pub(crate) a: f64,
     pub(crate) b: f64,
     pub(crate) period: f64,
@@ -137,27 +155,26 @@ impl JetCache {
 }
 
 impl<'a> View<'a> {
-    pub(crate) fn new(
-        curve: &'a dyn PlaneCurve,
-        rev: bool,
-        certify: bool,
-        tol: f64,
-    ) -> crate::Result<Self> {
+    /// The view of `src`, run backwards when `rev`, with the parameter tolerance `tol`
+    /// (relative to the domain's length).
+    pub(crate) fn new(src: Source<'a>, rev: bool, tol: f64) -> Self {
+        let curve = src.curve;
         let (a, b) = curve.domain();
         let closed = curve.is_closed();
-        // The forms the curve keeps (its own or its reversal's); none: nothing is certified.
-        let kept = curve.symbolic_forms().filter(|_| certify);
+        // The forms oriented as the view; none: nothing is certified.
         let forms = match rev {
-            false => kept,
-            true => kept.and_then(SymbolicForms::reversed),
+            false => src.forms,
+            true => src.forms.and_then(SymbolicForms::reversed),
         };
-        let cert = forms.map(|f| Cert {
-            forms: Forms::Kept(f),
+        let cert = forms.map(|forms| Cert {
+            forms,
             opts: RootOptions::default().tolerance(tol.max(1e-15)),
         });
         let cert_present = cert.is_some();
         let mut v = Self {
             curve,
+            simple: src.simple,
+            samples: src.samples,
             a,
             b,
             period: b - a,
@@ -167,7 +184,7 @@ impl<'a> View<'a> {
             scale: 1.0,
             tol: tol * (b - a).max(1.0),
             certified: Cell::new(cert_present),
-            report: None,
+            report: src.report,
             cache: JetCache::new(),
             piece_points: RefCell::new(Vec::new()),
         };
@@ -187,7 +204,7 @@ impl<'a> View<'a> {
             None => sampled(),
         };
         v.scale = scale;
-        Ok(v)
+        v
     }
 
     /// The parameter wrapped into `[a, b)` for closed curves (clamped for open ones).
@@ -215,12 +232,6 @@ impl<'a> View<'a> {
         }
     }
 
-    /// Reports parameters as the shape's angle: the view runs on a circle form, whose jets
-    /// come from the shape's formula.
-    pub(crate) fn set_report(&mut self, angle: Angle) {
-        self.report = Some(angle);
-    }
-
     /// The parameter reported to the caller. On a closed curve, a parameter within a few
     /// units of rounding below the domain's end is the seam itself, and reads as the start.
     pub(crate) fn to_curve(&self, u: f64) -> f64 {
@@ -233,6 +244,25 @@ impl<'a> View<'a> {
             a
         } else {
             x
+        }
+    }
+
+    /// A bracket `[lo, hi]` of the view's parameters as one of the reported parameters: from
+    /// the reported image of its (view-)first end, as long as the bracket is, so that one
+    /// crossing the seam runs past the reported domain's end.
+    pub(crate) fn bracket_to_curve(&self, lo: f64, hi: f64) -> [f64; 2] {
+        let (a, b) = self.reported_domain();
+        let (first, second) = if self.rev { (hi, lo) } else { (lo, hi) };
+        let start = self.to_curve(first);
+        let span = (self.to_curve(second) - start).rem_euclid(b - a);
+        [start, start + span]
+    }
+
+    /// The domain of the parameters reported ([`View::to_curve`]).
+    pub(crate) fn reported_domain(&self) -> (f64, f64) {
+        match self.report {
+            Some(_) => (0.0, TAU),
+            None => (self.a, self.b),
         }
     }
 
@@ -329,7 +359,7 @@ impl<'a> View<'a> {
 
     /// True when the curve is simple by construction.
     pub(crate) fn curve_known_simple(&self) -> bool {
-        self.curve.known_simple()
+        self.simple
     }
 
     pub(crate) fn uncertify(&self) {
@@ -432,22 +462,6 @@ impl<'a> View<'a> {
     }
 }
 
-/// The same rational curve run backwards over the same domain.
-pub(crate) fn reverse(r: &Rational) -> crate::Result<Rational> {
-    let h = r.homogeneous();
-    let (a, b) = h.domain();
-    let knots: Vec<f64> = h.knots().iter().rev().map(|k| a + b - k).collect();
-    let d = h.dim();
-    let n = h.n_ctrl();
-    let coefs: Vec<f64> = (0..n).rev().flat_map(|i| h.ctrl(i).to_vec()).collect();
-    let _ = n;
-    let rev = BSpline::new(h.degree(), knots, d, coefs)?;
-    Ok(Rational::from_homogeneous_with_error(
-        rev,
-        r.coefficient_error(),
-    )?)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -460,8 +474,9 @@ mod tests {
         let seed = [
             0.3, 0.9, 0.5, 0.7, 0.2, 0.8, 0.4, 0.6, 0.1, 0.95, 0.35, 0.75,
         ];
-        let curve = crate::curve::tests::star_curve(3, &seed, None);
-        let v = View::new(&curve, false, false, 1e-12).unwrap();
+        let curve = crate::prepare::tests::star_curve(3, &seed, None);
+        let prep = crate::prepare::tests::as_given(&curve);
+        let v = View::new(prep.source(false), false, 1e-12);
         let solves = Cell::new(0);
         let ask = |piece: usize, rel: f64, answer: Option<f64>| {
             v.piece_point_memo(piece, rel, || {
@@ -487,8 +502,9 @@ mod tests {
         ) {
             // (A spline's jet holds the derivatives up to the order asked for only.)
             let seed = [0.3, 0.9, 0.5, 0.7, 0.2, 0.8, 0.4, 0.6, 0.1, 0.95, 0.35, 0.75];
-            let curve = crate::curve::tests::star_curve(3, &seed, None);
-            let v = View::new(&curve, false, false, 1e-12).unwrap();
+            let curve = crate::prepare::tests::star_curve(3, &seed, None);
+            let prep = crate::prepare::tests::as_given(&curve);
+            let v = View::new(prep.source(false), false, 1e-12);
             let (a, b) = curve.domain();
             for (k, order) in picks {
                 let u = a + (b - a) * k as f64 / 600.0;

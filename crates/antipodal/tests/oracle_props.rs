@@ -4,7 +4,9 @@
 
 mod common;
 
-use antipodal::{antipodal, common_tangents, inflections, Error, Options, PlaneCurve, SplineCurve};
+use antipodal::{
+    antipodal, common_tangents, inflections, Error, Options, ParamCurve, PlaneCurve, SplineCurve,
+};
 use proptest::prelude::*;
 
 /// A star-shaped control polygon: sorted angles, radii in [0.35, 1], scaled by `size`.

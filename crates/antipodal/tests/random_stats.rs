@@ -6,7 +6,7 @@
 
 mod common;
 
-use antipodal::{antipodal, Error, Options, PlaneCurve, SplineCurve};
+use antipodal::{antipodal, Error, Options, ParamCurve, SplineCurve};
 
 struct Lcg(u64);
 impl Lcg {

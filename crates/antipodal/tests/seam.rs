@@ -4,7 +4,7 @@
 
 mod common;
 
-use antipodal::{antipodal, Options, PlaneCurve, SplineCurve, V2};
+use antipodal::{antipodal, Options, ParamCurve, SplineCurve, V2};
 
 /// A periodic cubic on an elliptic control polygon, symmetric about the x axis with `C(0)` on
 /// the axis: antipodal pairs at `0 ↔ n/2` and `n/4 ↔ 3n/4`.

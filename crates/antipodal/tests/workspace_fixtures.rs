@@ -5,7 +5,7 @@
 
 mod common;
 
-use antipodal::{antipodal, inflections, Options, PlaneCurve, SplineCurve};
+use antipodal::{antipodal, inflections, Options, ParamCurve, PlaneCurve, SplineCurve};
 
 fn check(c: &dyn PlaneCurve) -> usize {
     let r = antipodal(c, &Options::default()).unwrap();

@@ -15,7 +15,6 @@
 //! - [`rounding`]: the one rounding model behind those bounds.
 //! - [`roots`]: certified root counting and isolation.
 //! - [`solve`]: the one bracketed solver.
-//! - [`shapes`]: exact rational forms of the circle, ellipse, limaçon and convexities.
 //! - [`tensor`]: bivariate tensor-product functions `F(t, r)`.
 
 mod algebra;
@@ -26,7 +25,6 @@ mod rational;
 mod refine;
 pub mod roots;
 pub mod rounding;
-pub mod shapes;
 pub mod solve;
 mod spline;
 pub mod symbolic;

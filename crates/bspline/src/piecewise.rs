@@ -487,6 +487,38 @@ impl Piecewise {
         increasing.then_some(out)
     }
 
+    /// The same function run backwards over the same domain, `g(u) = f(a + b − u)`: the pieces
+    /// in reverse order, each with its control points reversed (exactly), the breaks mirrored
+    /// (`a + b − x`, rounded; the ends kept exactly). `None` when mirrored breaks would not
+    /// stay apart in floating point.
+    pub fn reversed(&self) -> Option<Piecewise> {
+        let (a, b) = self.domain();
+        let (n, d) = (self.pieces(), self.dim);
+        let mut breaks: Vec<f64> = self.breaks.iter().rev().map(|&x| a + b - x).collect();
+        breaks[0] = a;
+        breaks[n] = b;
+        if !breaks.windows(2).all(|w| w[1] > w[0]) {
+            return None;
+        }
+        let mut coefs = Vec::with_capacity(self.coefs.len());
+        let mut err = Vec::with_capacity(self.err.len());
+        for i in (0..n).rev() {
+            for pt in self.piece(i).chunks_exact(d).rev() {
+                coefs.extend_from_slice(pt);
+            }
+            err.extend_from_slice(self.errors(i));
+        }
+        Some(Piecewise {
+            breaks,
+            degree: self.degree,
+            dim: d,
+            coefs,
+            err,
+            smooth: self.smooth.iter().rev().copied().collect(),
+            binoms: self.binoms.clone(),
+        })
+    }
+
     /// The derivative, piece by piece: degree `p − 1` with control points `p/h · Δc` (the
     /// hodograph). A constant function gives a zero of degree 0.
     pub fn derivative(&self) -> Piecewise {

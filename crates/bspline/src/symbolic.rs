@@ -245,6 +245,14 @@ impl CurvePieces {
         self
     }
 
+    /// The same curve run backwards over the same domain (see [`Piecewise::reversed`]).
+    pub fn reversed(&self) -> Option<Self> {
+        Some(Self {
+            hom: self.hom.reversed()?,
+            ..*self
+        })
+    }
+
     /// Declares the tangent, tangency and curvature numerators continuous at every break
     /// (and across the seam of a periodic curve), as they are for a curve `C¹` in its
     /// parameter with a continuous curvature numerator: the shapes on the rational circle,

@@ -278,6 +278,18 @@ impl Piecewise {
         f
     }
 
+    /// Every coefficient multiplied by a constant `s` that is itself in error by up to `s_err`
+    /// against the exact constant it stands for (computed from exact parameters).
+    pub fn scale_inexact(&self, s: f64, s_err: f64) -> Piecewise {
+        let mut f = self.scale(s);
+        let d = self.dim;
+        for (j, e) in f.err.iter_mut().enumerate() {
+            let m = self.coordinate_magnitude(j / d, j % d) + self.err[j];
+            *e += s_err * m;
+        }
+        f
+    }
+
     /// The coordinates `which` (in that order) as a function of dimension `which.len()`:
     /// no arithmetic, the errors unchanged.
     pub fn components(&self, which: &[usize]) -> Result<Piecewise> {

@@ -1,11 +1,16 @@
-//! The analytic shapes of the interfaces file, with exact derivatives. All run counterclockwise
-//! over `φ ∈ [0, 2π)`.
+//! The analytic shapes of the curve files, defined once: their parameters (validated), their
+//! jets in the angle φ, their formulas in the cosine and sine of the rational circle's angle,
+//! and their exact rational forms on that circle, with bounds on the forms' coefficients. All
+//! run counterclockwise over `φ ∈ [0, 2π)`.
 
-use crate::curve::PlaneCurve;
+use crate::circle::circle_pieces;
 use crate::error::{Error, Result};
-use crate::forms::{kept_circle, KeptForms, SymbolicForms};
+use crate::frame::Frame;
 use crate::geom::{Jet, V2};
-use bspline::Rational;
+use crate::param::{Exact, ParamCurve, PlaneCurve};
+use bspline::rounding::gamma;
+use bspline::symbolic::CurvePieces;
+use bspline::Piecewise;
 use std::f64::consts::TAU;
 
 fn check(field: &'static str, value: f64, ok: bool, why: &'static str) -> Result<()> {
@@ -50,11 +55,39 @@ fn polar_jet_to(s: f64, c: f64, r: [f64; 4], order: usize) -> Jet {
 /// angle ψ (jets in ψ): the shape's own angle φ for all but the elliptic lemniscate, whose
 /// form inverts an ellipse (`tan φ = (a/b) tan ψ`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum CircleShape {
-    Ellipse { a: f64, b: f64, center: V2 },
-    Limacon { a: f64, b: f64 },
-    Convexities { p: f64, eps: f64, m: u32 },
-    Lemniscate { a: f64, b: f64 },
+pub enum CircleShape {
+    /// `(cx + a cos ψ, cy + b sin ψ)`.
+    Ellipse {
+        /// Semi-axis along x.
+        a: f64,
+        /// Semi-axis along y.
+        b: f64,
+        /// Center.
+        center: V2,
+    },
+    /// `r = a + b cos ψ`.
+    Limacon {
+        /// Constant term.
+        a: f64,
+        /// Cosine amplitude.
+        b: f64,
+    },
+    /// `r = p / (1 + ε cos mψ)`.
+    Convexities {
+        /// Scale.
+        p: f64,
+        /// Eccentricity.
+        eps: f64,
+        /// Lobes.
+        m: u32,
+    },
+    /// The inverse of the ellipse point `(cos ψ / a, sin ψ / b)` in the unit circle.
+    Lemniscate {
+        /// Radius at φ = 0.
+        a: f64,
+        /// Radius at φ = π/2.
+        b: f64,
+    },
 }
 
 impl CircleShape {
@@ -62,7 +95,7 @@ impl CircleShape {
     /// (Inlined into the circle form's jets, the hottest path of a run: left to itself the
     /// compiler stopped doing so as the crate grew, at 3 % of a run.)
     #[inline]
-    pub(crate) fn jet(self, c: f64, s: f64, order: usize) -> Jet {
+    pub fn jet(self, c: f64, s: f64, order: usize) -> Jet {
         match self {
             CircleShape::Lemniscate { a, b } => inverted_ellipse_jet(a, b, s, c, order),
             CircleShape::Ellipse { a, b, center } => ellipse_jet(a, b, center, s, c),
@@ -155,49 +188,28 @@ impl Circle {
     /// A circle of radius `r > 0`.
     pub fn new(r: f64, center: [f64; 2]) -> Result<Self> {
         check("r", r, r > 0.0, "must be > 0")?;
+        check("center", center[0], center[1].is_finite(), "must be finite")?;
         Ok(Self {
             r,
             center: V2::from_arr(center),
         })
     }
-}
-
-impl PlaneCurve for Circle {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
+    /// The radius.
+    pub fn r(&self) -> f64 {
+        self.r
     }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn known_simple(&self) -> bool {
-        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
-        true
-    }
-    fn jet(&self, u: f64) -> Jet {
-        let (s, c) = u.sin_cos();
-        let r = self.r;
-        Jet {
-            p: self.center + V2::new(r * c, r * s),
-            d1: V2::new(-r * s, r * c),
-            d2: V2::new(-r * c, -r * s),
-            d3: V2::new(r * s, -r * c),
-        }
+    /// The center.
+    pub fn center(&self) -> [f64; 2] {
+        self.center.arr()
     }
 }
 
 /// Ellipse `(cx + a cos φ, cy + b sin φ)`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ellipse {
     a: f64,
     b: f64,
     center: V2,
-    forms: KeptForms,
-}
-
-impl PartialEq for Ellipse {
-    fn eq(&self, o: &Self) -> bool {
-        (self.a, self.b, self.center) == (o.a, o.b, o.center)
-    }
 }
 
 impl Ellipse {
@@ -205,55 +217,32 @@ impl Ellipse {
     pub fn new(a: f64, b: f64, center: [f64; 2]) -> Result<Self> {
         check("a", a, a > 0.0, "must be > 0")?;
         check("b", b, b > 0.0, "must be > 0")?;
+        check("center", center[0], center[1].is_finite(), "must be finite")?;
         Ok(Self {
             a,
             b,
             center: V2::from_arr(center),
-            forms: KeptForms::new(),
         })
     }
-}
-
-impl PlaneCurve for Ellipse {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
+    /// Semi-axis along x.
+    pub fn a(&self) -> f64 {
+        self.a
     }
-    fn is_closed(&self) -> bool {
-        true
+    /// Semi-axis along y.
+    pub fn b(&self) -> f64 {
+        self.b
     }
-    fn known_simple(&self) -> bool {
-        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
-        true
-    }
-    fn circle_form(&self) -> Option<Rational> {
-        bspline::shapes::ellipse(self.center.arr(), self.a, self.b).ok()
-    }
-    fn circle_forms(&self) -> Option<&SymbolicForms> {
-        let shape = CircleShape::Ellipse {
-            a: self.a,
-            b: self.b,
-            center: self.center,
-        };
-        kept_circle(&self.forms, || self.circle_form(), shape)
-    }
-    fn jet(&self, u: f64) -> Jet {
-        let (s, c) = u.sin_cos();
-        ellipse_jet(self.a, self.b, self.center, s, c)
+    /// The center.
+    pub fn center(&self) -> [f64; 2] {
+        self.center.arr()
     }
 }
 
 /// Limaçon `r(φ) = a + b cos φ`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Limacon {
     a: f64,
     b: f64,
-    forms: KeptForms,
-}
-
-impl PartialEq for Limacon {
-    fn eq(&self, o: &Self) -> bool {
-        (self.a, self.b) == (o.a, o.b)
-    }
 }
 
 impl Limacon {
@@ -261,39 +250,15 @@ impl Limacon {
     pub fn new(a: f64, b: f64) -> Result<Self> {
         check("b", b, b >= 0.0, "must be ≥ 0")?;
         check("a", a, a > b, "must be > b for a simple curve")?;
-        Ok(Self {
-            a,
-            b,
-            forms: KeptForms::new(),
-        })
+        Ok(Self { a, b })
     }
-}
-
-impl PlaneCurve for Limacon {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
+    /// Constant term.
+    pub fn a(&self) -> f64 {
+        self.a
     }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn known_simple(&self) -> bool {
-        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
-        true
-    }
-    fn circle_form(&self) -> Option<Rational> {
-        bspline::shapes::limacon(self.a, self.b).ok()
-    }
-    fn circle_forms(&self) -> Option<&SymbolicForms> {
-        let shape = CircleShape::Limacon {
-            a: self.a,
-            b: self.b,
-        };
-        kept_circle(&self.forms, || self.circle_form(), shape)
-    }
-    fn jet(&self, u: f64) -> Jet {
-        let (s, c) = u.sin_cos();
-        let (a, b) = (self.a, self.b);
-        polar_jet_cs(s, c, [a + b * c, -b * s, -b * c, b * s])
+    /// Cosine amplitude.
+    pub fn b(&self) -> f64 {
+        self.b
     }
 }
 
@@ -307,17 +272,10 @@ const MAX_SQUEEZE: f64 = 5.0;
 
 /// Elliptic lemniscate `r(φ) = sqrt(a² cos² φ + b² sin² φ)`: certified on its exact rational
 /// form (the inverse of an ellipse) up to `a/b = 5` (either way round), sampled beyond.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EllipticLemniscate {
     a: f64,
     b: f64,
-    forms: KeptForms,
-}
-
-impl PartialEq for EllipticLemniscate {
-    fn eq(&self, o: &Self) -> bool {
-        (self.a, self.b) == (o.a, o.b)
-    }
 }
 
 impl EllipticLemniscate {
@@ -325,40 +283,313 @@ impl EllipticLemniscate {
     pub fn new(a: f64, b: f64) -> Result<Self> {
         check("a", a, a > 0.0, "must be > 0")?;
         check("b", b, b > 0.0, "must be > 0")?;
-        Ok(Self {
-            a,
-            b,
-            forms: KeptForms::new(),
-        })
+        Ok(Self { a, b })
+    }
+    /// Radius at φ = 0.
+    pub fn a(&self) -> f64 {
+        self.a
+    }
+    /// Radius at φ = π/2.
+    pub fn b(&self) -> f64 {
+        self.b
     }
 }
 
-impl PlaneCurve for EllipticLemniscate {
+/// Curve with convexities `r(φ) = p / (1 + ε cos mφ)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Convexities {
+    p: f64,
+    eps: f64,
+    m: u32,
+}
+
+impl Convexities {
+    /// `p > 0`, `0 < ε < 1`, integer `m ≥ 2`.
+    pub fn new(p: f64, eps: f64, m: u32) -> Result<Self> {
+        check("p", p, p > 0.0, "must be > 0")?;
+        check("eps", eps, eps > 0.0 && eps < 1.0, "must be in (0, 1)")?;
+        check("m", m as f64, m >= 2, "must be an integer ≥ 2")?;
+        Ok(Self { p, eps, m })
+    }
+    /// Scale.
+    pub fn p(&self) -> f64 {
+        self.p
+    }
+    /// Eccentricity.
+    pub fn eps(&self) -> f64 {
+        self.eps
+    }
+    /// Number of lobes.
+    pub fn m(&self) -> u32 {
+        self.m
+    }
+}
+
+/// One of the analytic shapes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// A circle.
+    Circle(Circle),
+    /// An ellipse.
+    Ellipse(Ellipse),
+    /// A limaçon.
+    Limacon(Limacon),
+    /// An elliptic lemniscate.
+    EllipticLemniscate(EllipticLemniscate),
+    /// A curve with convexities.
+    Convexities(Convexities),
+}
+
+impl Shape {
+    /// The `kind` of the curve files.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Shape::Circle(_) => "circle",
+            Shape::Ellipse(_) => "ellipse",
+            Shape::Limacon(_) => "limacon",
+            Shape::EllipticLemniscate(_) => "elliptic_lemniscate",
+            Shape::Convexities(_) => "convexities",
+        }
+    }
+
+    /// How many times the shape's curvature oscillates around it (the lobes of a curve with
+    /// convexities; 1 for the others): what a sampled search must resolve.
+    pub fn lobes(&self) -> u32 {
+        match self {
+            Shape::Convexities(c) => c.m,
+            _ => 1,
+        }
+    }
+
+    /// Two corners of a box holding the shape.
+    pub fn extent(&self) -> [[f64; 2]; 2] {
+        let boxed = |c: V2, rx: f64, ry: f64| [[c.x - rx, c.y - ry], [c.x + rx, c.y + ry]];
+        let origin = V2::new(0.0, 0.0);
+        match *self {
+            Shape::Circle(c) => boxed(c.center, c.r, c.r),
+            Shape::Ellipse(e) => boxed(e.center, e.a, e.b),
+            Shape::Limacon(l) => boxed(origin, l.a + l.b, l.a + l.b),
+            Shape::EllipticLemniscate(l) => boxed(origin, l.a.max(l.b), l.a.max(l.b)),
+            Shape::Convexities(c) => {
+                let r = c.p / (1.0 - c.eps);
+                boxed(origin, r, r)
+            }
+        }
+    }
+
+    /// The same shape in `frame`: lengths scaled by its power of two (exact), the center
+    /// moved (exact for the frame chosen for the shape's extent). The shapes without a center
+    /// lie about the origin, which such a frame keeps.
+    pub fn in_frame(&self, frame: &Frame) -> Shape {
+        let len = |x: f64| frame.length_to_local(x);
+        let at = |c: V2| V2::from_arr(frame.to_local(c.arr()));
+        match *self {
+            Shape::Circle(c) => Shape::Circle(Circle {
+                r: len(c.r),
+                center: at(c.center),
+            }),
+            Shape::Ellipse(e) => Shape::Ellipse(Ellipse {
+                a: len(e.a),
+                b: len(e.b),
+                center: at(e.center),
+            }),
+            Shape::Limacon(l) => Shape::Limacon(Limacon {
+                a: len(l.a),
+                b: len(l.b),
+            }),
+            Shape::EllipticLemniscate(l) => Shape::EllipticLemniscate(EllipticLemniscate {
+                a: len(l.a),
+                b: len(l.b),
+            }),
+            Shape::Convexities(c) => Shape::Convexities(Convexities { p: len(c.p), ..c }),
+        }
+    }
+
+    /// The shape's formula in the cosine and sine of the rational circle's angle, when it has
+    /// an exact form on that circle (all but the circle itself, whose antipodal points are one
+    /// family, and the slender lemniscates).
+    pub fn circle_shape(&self) -> Option<CircleShape> {
+        match *self {
+            Shape::Circle(_) => None,
+            Shape::Ellipse(e) => Some(CircleShape::Ellipse {
+                a: e.a,
+                b: e.b,
+                center: e.center,
+            }),
+            Shape::Limacon(l) => Some(CircleShape::Limacon { a: l.a, b: l.b }),
+            Shape::EllipticLemniscate(l) => ((l.a / l.b).max(l.b / l.a) <= MAX_SQUEEZE)
+                .then_some(CircleShape::Lemniscate { a: l.a, b: l.b }),
+            Shape::Convexities(c) => Some(CircleShape::Convexities {
+                p: c.p,
+                eps: c.eps,
+                m: c.m,
+            }),
+        }
+    }
+
+    /// The exact rational form on the rational circle (see [`crate::circle`]) in pieces, with
+    /// bounds on its coefficients, when the shape has one ([`Shape::circle_shape`]).
+    pub fn exact_pieces(&self) -> Option<CurvePieces> {
+        let form = self.circle_shape()?;
+        let hom = circle_form(form).ok()?;
+        let pieces = CurvePieces::new(hom, false).ok()?;
+        Some(pieces.periodic(0).numerators_continuous())
+    }
+
+    fn as_curve(&self) -> &dyn ParamCurve {
+        match self {
+            Shape::Circle(c) => c,
+            Shape::Ellipse(c) => c,
+            Shape::Limacon(c) => c,
+            Shape::EllipticLemniscate(c) => c,
+            Shape::Convexities(c) => c,
+        }
+    }
+}
+
+/// `s · f` for a constant `s` computed with up to `roundings` roundings from the shape's exact
+/// parameters: the rounding of `s` itself is carried as error of the coefficients.
+fn scaled(f: &Piecewise, s: f64, roundings: usize) -> Piecewise {
+    f.scale_inexact(s, gamma(roundings) * s.abs())
+}
+
+/// The homogeneous form `(X, Y, W)` of a shape on the rational circle, from the circle's
+/// `(x, y, w)` by exact products (each with its rounding bound).
+fn circle_form(shape: CircleShape) -> bspline::Result<Piecewise> {
+    let circle = circle_pieces()?;
+    let (x, y, w) = (
+        circle.components(&[0])?,
+        circle.components(&[1])?,
+        circle.components(&[2])?,
+    );
+    let (nx, ny, den) = match shape {
+        CircleShape::Ellipse { a, b, center } => {
+            (x.lincomb(a, &w, center.x)?, y.lincomb(b, &w, center.y)?, w)
+        }
+        CircleShape::Limacon { a, b } => {
+            // W²·r·cos φ = X(aW + bX), W²·r·sin φ = Y(aW + bX).
+            let rw = w.lincomb(a, &x, b)?;
+            (x.mul(&rw)?, y.mul(&rw)?, w.mul(&w)?)
+        }
+        CircleShape::Convexities { p, eps, m } => {
+            // Wᵐ cos mφ = Re (X + iY)ᵐ, by repeated complex multiplication.
+            let (mut re, mut im, mut wm) = (x.clone(), y.clone(), w.clone());
+            for _ in 1..m {
+                let nre = re.mul(&x)?.sub(&im.mul(&y)?)?;
+                let nim = re.mul(&y)?.lincomb(1.0, &im.mul(&x)?, 1.0)?;
+                re = nre;
+                im = nim;
+                wm = wm.mul(&w)?;
+            }
+            // r cos φ = p X W^(m−1) / (Wᵐ + ε Re(X+iY)ᵐ), and likewise with Y.
+            let den = wm.lincomb(1.0, &re, eps)?;
+            let mut wmm1 = w.clone();
+            for _ in 2..m {
+                wmm1 = wmm1.mul(&w)?;
+            }
+            (x.mul(&wmm1)?.scale(p), y.mul(&wmm1)?.scale(p), den)
+        }
+        CircleShape::Lemniscate { a, b } => {
+            // With X = x/(aw), Y = y/(bw): V/|V|² = (xw/a, yw/b) / (x²/a² + y²/b²), scaled by
+            // a²b² (a homogeneous factor) to keep the divisions out.
+            let den =
+                scaled(&x.mul(&x)?, b * b, 1).lincomb(1.0, &scaled(&y.mul(&y)?, a * a, 1), 1.0)?;
+            (
+                scaled(&x.mul(&w)?, a * b * b, 2),
+                scaled(&y.mul(&w)?, a * a * b, 2),
+                den,
+            )
+        }
+    };
+    Piecewise::stack(&[&nx, &ny, &den])
+}
+
+impl ParamCurve for Shape {
     fn domain(&self) -> (f64, f64) {
         (0.0, TAU)
     }
     fn is_closed(&self) -> bool {
         true
     }
-    fn known_simple(&self) -> bool {
-        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
+        self.as_curve().jet_to(u, order)
+    }
+}
+
+impl PlaneCurve for Shape {
+    fn exact(&self) -> Option<Exact<'_>> {
+        Some(Exact::Shape(*self))
+    }
+}
+
+/// The shapes as curves in their angle φ: exact jets.
+macro_rules! shape_curve {
+    ($t:ident) => {
+        impl PlaneCurve for $t {
+            fn exact(&self) -> Option<Exact<'_>> {
+                Some(Exact::Shape(Shape::$t(*self)))
+            }
+        }
+    };
+}
+shape_curve!(Circle);
+shape_curve!(Ellipse);
+shape_curve!(Limacon);
+shape_curve!(EllipticLemniscate);
+shape_curve!(Convexities);
+
+impl ParamCurve for Circle {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
         true
     }
-    fn circle_forms(&self) -> Option<&SymbolicForms> {
-        // Exact (the inverse of an ellipse) but not in φ = circle_angle(u): no `circle_form`
-        // for the generic path, only the kept forms with the shape's own jet and angle.
-        let (a, b) = (self.a, self.b);
-        if (a / b).max(b / a) > MAX_SQUEEZE {
-            return None;
+    fn jet_to(&self, u: f64, _order: usize) -> Jet {
+        let (s, c) = u.sin_cos();
+        let r = self.r;
+        Jet {
+            p: self.center + V2::new(r * c, r * s),
+            d1: V2::new(-r * s, r * c),
+            d2: V2::new(-r * c, -r * s),
+            d3: V2::new(r * s, -r * c),
         }
-        kept_circle(
-            &self.forms,
-            || bspline::shapes::elliptic_lemniscate(a, b).ok(),
-            CircleShape::Lemniscate { a, b },
-        )
     }
-    fn jet(&self, u: f64) -> Jet {
-        self.jet_to(u, 3)
+}
+
+impl ParamCurve for Ellipse {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn jet_to(&self, u: f64, _order: usize) -> Jet {
+        let (s, c) = u.sin_cos();
+        ellipse_jet(self.a, self.b, self.center, s, c)
+    }
+}
+
+impl ParamCurve for Limacon {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
+    }
+    fn jet_to(&self, u: f64, _order: usize) -> Jet {
+        let (s, c) = u.sin_cos();
+        let (a, b) = (self.a, self.b);
+        polar_jet_cs(s, c, [a + b * c, -b * s, -b * c, b * s])
+    }
+}
+
+impl ParamCurve for EllipticLemniscate {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, TAU)
+    }
+    fn is_closed(&self) -> bool {
+        true
     }
     fn jet_to(&self, u: f64, order: usize) -> Jet {
         // r² = g = A + B cos 2φ; differentiate r² = g three times. The value itself as
@@ -386,62 +617,17 @@ impl PlaneCurve for EllipticLemniscate {
     }
 }
 
-/// Curve with convexities `r(φ) = p / (1 + ε cos mφ)`.
-#[derive(Debug, Clone)]
-pub struct Convexities {
-    p: f64,
-    eps: f64,
-    m: u32,
-    forms: KeptForms,
-}
-
-impl PartialEq for Convexities {
-    fn eq(&self, o: &Self) -> bool {
-        (self.p, self.eps, self.m) == (o.p, o.eps, o.m)
-    }
-}
-
-impl Convexities {
-    /// `p > 0`, `0 < ε < 1`, integer `m ≥ 2`.
-    pub fn new(p: f64, eps: f64, m: u32) -> Result<Self> {
-        check("p", p, p > 0.0, "must be > 0")?;
-        check("eps", eps, eps > 0.0 && eps < 1.0, "must be in (0, 1)")?;
-        check("m", m as f64, m >= 2, "must be an integer ≥ 2")?;
-        Ok(Self {
-            p,
-            eps,
-            m,
-            forms: KeptForms::new(),
-        })
-    }
-}
-
-impl PlaneCurve for Convexities {
+impl ParamCurve for Convexities {
     fn domain(&self) -> (f64, f64) {
         (0.0, TAU)
     }
     fn is_closed(&self) -> bool {
         true
     }
-    fn known_simple(&self) -> bool {
-        // Star-shaped about the origin (r > 0) or an ellipse: never self-crossing.
-        true
-    }
-    fn circle_form(&self) -> Option<Rational> {
-        bspline::shapes::convexities(self.p, self.eps, self.m as usize).ok()
-    }
-    fn circle_forms(&self) -> Option<&SymbolicForms> {
-        let shape = CircleShape::Convexities {
-            p: self.p,
-            eps: self.eps,
-            m: self.m,
-        };
-        kept_circle(&self.forms, || self.circle_form(), shape)
-    }
-    fn jet(&self, u: f64) -> Jet {
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
         let (sm, cm) = (self.m as f64 * u).sin_cos();
         let (s, c) = u.sin_cos();
-        convexities_jet(self.p, self.eps, self.m, s, c, sm, cm, 3)
+        convexities_jet(self.p, self.eps, self.m, s, c, sm, cm, order.max(1))
     }
 }
 

@@ -93,7 +93,7 @@ impl Mul<f64> for V2 {
 }
 
 /// The angle `a` wrapped into `(−π, π]`.
-pub(crate) fn wrap_pi(a: f64) -> f64 {
+pub fn wrap_pi(a: f64) -> f64 {
     use std::f64::consts::{PI, TAU};
     // Most angles are within a turn of the range: a subtraction, not a floating remainder.
     if (-PI..=PI).contains(&a) && a != -PI {

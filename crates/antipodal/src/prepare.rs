@@ -1,0 +1,278 @@
+//! The prepared curve: what every run on one curve shares, built once, the way a compiled
+//! regular expression is: the frame the curve is computed in, the curve moved into it (an
+//! analytic shape on its rational circle), its symbolic forms and the enclosures later runs
+//! build on them. Results come back in the curve's own coordinates and parameters.
+
+use crate::driver::{antipodal_of, inflections_of, tangents_of};
+use crate::error::{Error, Result};
+use crate::forms::SymbolicForms;
+use crate::types::{Antipodal, Inflections, Options, Provenance, Tangents};
+use crate::view::Source;
+use curve::circle::Angle;
+use curve::{Frame, Local, OnCircle, ParamCurve, PlaneCurve};
+
+/// A curve prepared for the algorithms of this crate (see [`prepare`]).
+pub struct Prepared<'c> {
+    /// The curve as given.
+    given: &'c dyn PlaneCurve,
+    /// The frame the curve is computed in.
+    frame: Frame,
+    /// The curve moved into the frame (`None`: a curve known only by evaluation, used as
+    /// given).
+    local: Option<Local>,
+    /// An analytic shape in the parameter of its rational-circle form, where its symbolic
+    /// forms live.
+    circle: Option<OnCircle>,
+    /// The symbolic forms, when the curve has an exact form.
+    forms: Option<SymbolicForms>,
+    /// Simple and regular by construction (an analytic shape).
+    simple: bool,
+    /// How often the curvature oscillates around the curve, as far as known (a shape's lobes).
+    lobes: usize,
+}
+
+/// Samples of a sampled track per oscillation of the curvature: Jia's sampling of the
+/// inflections resolves a few per lobe (96 for the papers' shapes, as in the paper).
+const SAMPLES_PER_LOBE: usize = 96;
+
+impl<'c> Prepared<'c> {
+    /// The curve in `frame` (one of this crate's kinds; any other curve stays as given).
+    fn new(curve: &'c dyn PlaneCurve, frame: Frame) -> Self {
+        let Some(exact) = curve.exact() else {
+            return Self {
+                given: curve,
+                frame: Frame::IDENTITY,
+                local: None,
+                circle: None,
+                forms: None,
+                simple: false,
+                lobes: 1,
+            };
+        };
+        let local = exact.in_frame(&frame);
+        let lobes = match &local {
+            Local::Shape(s) => s.lobes() as usize,
+            Local::Spline(_) => 1,
+        };
+        let (circle, pieces, simple) = match &local {
+            Local::Spline(s) => (None, Some(s.exact_pieces()), false),
+            Local::Shape(shape) => match (shape.circle_shape(), shape.exact_pieces()) {
+                (Some(form), Some(pieces)) => (Some(OnCircle::new(form)), Some(pieces), true),
+                _ => (None, None, true),
+            },
+        };
+        Self {
+            given: curve,
+            frame,
+            local: Some(local),
+            circle,
+            forms: pieces.and_then(|p| SymbolicForms::new(p).ok()),
+            simple,
+            lobes,
+        }
+    }
+
+    /// What the runs look at: the curve with its symbolic forms (an analytic shape on its
+    /// rational circle) when `certify` and it has them, else the curve alone (a shape in its
+    /// own angle).
+    pub(crate) fn source(&self, certify: bool) -> Source<'_> {
+        let forms = self.forms.as_ref().filter(|_| certify);
+        let (curve, report): (&dyn ParamCurve, Option<Angle>) =
+            match (&self.circle, forms, &self.local) {
+                (Some(c), Some(_), _) => (c, Some(c.angle())),
+                (_, _, Some(l)) => (l.curve(), None),
+                (_, _, None) => (self.given, None),
+            };
+        Source {
+            curve,
+            forms,
+            simple: self.simple,
+            report,
+            samples: SAMPLES_PER_LOBE * self.lobes,
+        }
+    }
+
+    /// Runs `run` certified where the curve allows; where an analytic shape (regular by
+    /// construction) is refused as singular, its exact form lost the precision its proofs
+    /// need (a curve with many convexities: the form's degree grows with them), and it runs
+    /// again sampled, in its own angle, uncertified with that reason.
+    fn certified_or_sampled<T: Provenance>(
+        &self,
+        opts: &Options,
+        run: impl Fn(Source<'_>) -> Result<T>,
+    ) -> Result<T> {
+        // A shape refused as singular by the sampled search hit its bound on samples.
+        let sampled = || {
+            run(self.source(false)).map_err(|e| match e {
+                Error::Cusp { .. } if self.simple => Error::TooComplex { lobes: self.lobes },
+                e => e,
+            })
+        };
+        if !opts.certify {
+            return sampled();
+        }
+        match run(self.source(true)) {
+            Err(Error::Cusp { .. }) if self.simple => {
+                let mut r = sampled()?;
+                let degree = self.forms.as_ref().map_or(0, |f| f.hom.degree());
+                r.uncertify(format!(
+                    "the shape's exact rational form (degree {degree}) loses the precision its \
+                     sign tests need: found by Jia's sampled method"
+                ));
+                Ok(r)
+            }
+            r => r,
+        }
+    }
+
+    /// The frame the curve is computed in.
+    pub fn frame(&self) -> Frame {
+        self.frame
+    }
+
+    /// Every pair of antipodal points of the simple closed curve (Jia 2004); see
+    /// [`crate::antipodal`].
+    pub fn antipodal(&self, opts: &Options) -> Result<Antipodal> {
+        let mut r = self.certified_or_sampled(opts, |src| antipodal_of(src, opts))?;
+        let f = &self.frame;
+        for p in &mut r.pairs {
+            p.p = f.to_global(p.p);
+            p.q = f.to_global(p.q);
+            p.distance = f.length_to_global(p.distance);
+        }
+        for i in &mut r.inflections {
+            i.p = f.to_global(i.p);
+        }
+        Ok(r)
+    }
+
+    /// Every line tangent to this curve and `other` (Jia §2.5), in one frame for both (see
+    /// [`prepare_pair`]; a curve prepared in another frame is prepared again in this one's).
+    pub fn common_tangents(&self, other: &Prepared<'_>, opts: &Options) -> Result<Tangents> {
+        let again;
+        let other = if other.frame == self.frame {
+            other
+        } else {
+            again = Prepared::new(other.given, self.frame);
+            &again
+        };
+        let same = std::ptr::addr_eq(self.given, other.given);
+        let mut r = tangents_of(
+            self.source(opts.certify),
+            other.source(opts.certify),
+            same,
+            opts,
+        )?;
+        for l in &mut r.lines {
+            l.p = self.frame.to_global(l.p);
+            l.q = self.frame.to_global(l.q);
+        }
+        Ok(r)
+    }
+
+    /// The simple inflections of the curve (Jia §5.1); see [`crate::inflections`].
+    pub fn inflections(&self, opts: &Options) -> Result<Inflections> {
+        let mut r = self.certified_or_sampled(opts, |src| inflections_of(src, opts))?;
+        for i in &mut r.inflections {
+            i.p = self.frame.to_global(i.p);
+        }
+        Ok(r)
+    }
+}
+
+/// Prepares a curve for repeated runs: the frame it is computed in (see [`Frame`]), the curve
+/// moved there, its symbolic forms. A user asking once per curve may call the one-shot
+/// functions instead ([`crate::antipodal`], [`crate::inflections`]), which prepare and run.
+///
+/// ```
+/// use antipodal::{prepare, shapes::Ellipse, Options};
+/// let e = Ellipse::new(3.0, 2.0, [1e8, -1e8]).unwrap();
+/// let p = prepare(&e);
+/// let r = p.antipodal(&Options::default()).unwrap();
+/// assert_eq!(r.pairs.len(), 2);
+/// assert!(r.certified);
+/// ```
+pub fn prepare(curve: &dyn PlaneCurve) -> Prepared<'_> {
+    let frame = curve
+        .exact()
+        .map_or(Frame::IDENTITY, |e| Frame::for_points(&e.extent()));
+    Prepared::new(curve, frame)
+}
+
+/// Every pair of antipodal points of a simple closed curve (Jia 2004): prepares the curve and
+/// runs once (see [`Prepared::antipodal`]).
+///
+/// ```
+/// use antipodal::{antipodal, shapes::Ellipse, Options};
+/// let e = Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap();
+/// let r = antipodal(&e, &Options::default()).unwrap();
+/// assert_eq!(r.pairs.len(), 2);
+/// ```
+pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
+    prepare(curve).antipodal(opts)
+}
+
+/// All simple inflections of a curve (Jia §5.1; certified for the curve kinds of `curve`).
+pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections> {
+    prepare(curve).inflections(opts)
+}
+
+/// Two curves prepared in one frame (the identity when either is known only by evaluation),
+/// for their common tangents.
+pub fn prepare_pair<'c>(
+    c1: &'c dyn PlaneCurve,
+    c2: &'c dyn PlaneCurve,
+) -> (Prepared<'c>, Prepared<'c>) {
+    let frame = match (c1.exact(), c2.exact()) {
+        (Some(a), Some(b)) => Frame::for_all(&[&a.extent(), &b.extent()]),
+        _ => Frame::IDENTITY,
+    };
+    (Prepared::new(c1, frame), Prepared::new(c2, frame))
+}
+
+/// Every line tangent to both curves (Jia §2.5): prepares them in one frame and runs once (see
+/// [`Prepared::common_tangents`]).
+pub fn common_tangents(
+    c1: &dyn PlaneCurve,
+    c2: &dyn PlaneCurve,
+    opts: &Options,
+) -> Result<Tangents> {
+    let (p1, p2) = prepare_pair(c1, c2);
+    p1.common_tangents(&p2, opts)
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use curve::SplineCurve;
+
+    /// A random star-shaped closed B-spline from `2n` numbers in `[0, 1)` (angle jitter and
+    /// radius per control point), rational with the first `n` of `weights` when given.
+    pub(crate) fn star_curve(deg: usize, seed: &[f64], weights: Option<&[f64]>) -> SplineCurve {
+        star_curve_at(deg, seed, weights, [0.0, 0.0])
+    }
+
+    /// [`star_curve`] about `center` instead of the origin.
+    pub(crate) fn star_curve_at(
+        deg: usize,
+        seed: &[f64],
+        weights: Option<&[f64]>,
+        center: [f64; 2],
+    ) -> SplineCurve {
+        let n = seed.len() / 2;
+        let pts: Vec<[f64; 2]> = (0..n)
+            .map(|i| {
+                let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (seed[2 * i] - 0.5)) / n as f64;
+                let r = 0.35 + 0.65 * seed[2 * i + 1];
+                [center[0] + r * ang.cos(), center[1] + r * ang.sin()]
+            })
+            .collect();
+        SplineCurve::periodic(deg, &pts, weights.map(|w| &w[..n])).unwrap()
+    }
+
+    /// `curve` prepared as it is (the identity frame: the views evaluate the curve itself).
+    pub(crate) fn as_given(curve: &dyn PlaneCurve) -> Prepared<'_> {
+        Prepared::new(curve, Frame::IDENTITY)
+    }
+}

@@ -1,0 +1,33 @@
+//! The plane-curve model of curvekit: what the algorithms run on.
+//!
+//! - [`ParamCurve`]: evaluation (domain, closedness, jets to an order), all a curve needs to be
+//!   searched by Jia's sampled method; [`PlaneCurve`] adds the curve's [`Exact`] description,
+//!   from which certified decisions are made.
+//! - [`SplineCurve`]: B-spline and NURBS curves; [`shapes`]: the analytic shapes of the curve
+//!   files, each defined once, with their exact rational forms on the rational circle
+//!   ([`circle`]) and their view in its parameter ([`OnCircle`]).
+//! - [`Frame`]: exact changes of coordinates into a frame of about unit size near the curve.
+//! - [`V2`], [`Jet`]: the small geometric types the algorithms share.
+//!
+//! ```
+//! use curve::{shapes::Ellipse, ParamCurve, PlaneCurve};
+//! let e = Ellipse::new(3.0, 2.0, [1.0, 0.0]).unwrap();
+//! assert_eq!(e.jet(0.0).p.arr(), [4.0, 0.0]);
+//! assert!(e.exact().is_some());
+//! ```
+
+pub mod circle;
+mod error;
+mod frame;
+mod geom;
+mod on_circle;
+mod param;
+pub mod shapes;
+mod spline;
+
+pub use error::{Error, Result};
+pub use frame::Frame;
+pub use geom::{wrap_pi, Jet, V2};
+pub use on_circle::OnCircle;
+pub use param::{Exact, Local, ParamCurve, PlaneCurve};
+pub use spline::{rational_derivs, SplineCurve};

@@ -1,0 +1,231 @@
+//! B-spline and NURBS plane curves.
+
+use crate::error::{Error, Result};
+use crate::frame::{exact_difference, Frame};
+use crate::geom::{Jet, V2};
+use crate::param::{Exact, ParamCurve, PlaneCurve};
+use bspline::rounding::UNIT_ROUNDOFF;
+use bspline::symbolic::{homogeneous_pieces, CurvePieces};
+use bspline::{BSpline, Piecewise, Rational};
+
+/// A B-spline or NURBS plane curve, closed (periodic or clamped with equal end points) or open.
+#[derive(Debug, Clone)]
+pub struct SplineCurve {
+    curve: Rational,
+    closed: bool,
+    /// For a periodic curve, the order of continuity of its homogeneous form across the seam.
+    periodic: Option<i32>,
+    /// The homogeneous curve as Bézier pieces (fast evaluation).
+    pieces: Piecewise,
+}
+
+impl PartialEq for SplineCurve {
+    fn eq(&self, other: &Self) -> bool {
+        self.curve == other.curve && self.closed == other.closed && self.periodic == other.periodic
+    }
+}
+
+/// The largest gap between the end points, relative to the control points' size, that still
+/// makes a clamped curve closed: a few units of rounding of the points.
+const CLOSED_GAP: f64 = 1e-12;
+
+impl SplineCurve {
+    /// Wraps a planar rational curve; it counts as closed when its end points coincide (within
+    /// `1e-12` of its size). Its homogeneous coefficients are taken as given (with the error
+    /// the curve carries, [`Rational::coefficient_error`]).
+    pub fn new(curve: Rational) -> Result<Self> {
+        if curve.dim() != 2 {
+            return Err(Error::Spline(bspline::Error::DimensionMismatch {
+                expected: 2,
+                got: curve.dim(),
+            }));
+        }
+        let (a, b) = curve.domain();
+        let (pa, pb) = (curve.point(a), curve.point(b));
+        let size = control_size(&curve);
+        let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
+        let closed = gap <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
+        Ok(Self::from_rational(curve, closed, None))
+    }
+
+    fn from_rational(curve: Rational, closed: bool, periodic: Option<i32>) -> Self {
+        let pieces = Piecewise::from_bspline(curve.homogeneous());
+        Self {
+            curve,
+            closed,
+            periodic,
+            pieces,
+        }
+    }
+
+    /// A closed uniform periodic B-spline (optionally rational) through `points`: domain
+    /// `[0, n)`, the piece on `[i, i+1]` shaped by points `i..=i+p` (indices mod `n`).
+    pub fn periodic(degree: usize, points: &[[f64; 2]], weights: Option<&[f64]>) -> Result<Self> {
+        if let Some(w) = weights {
+            if w.len() != points.len() {
+                return Err(Error::Spline(bspline::Error::CountMismatch {
+                    what: "weights (one per control point)",
+                    expected: points.len(),
+                    got: w.len(),
+                }));
+            }
+        }
+        let flat: Vec<f64> = points.iter().flat_map(|p| p.iter().copied()).collect();
+        let spline = BSpline::periodic(degree, 2, flat)?;
+        // The wrapped control points repeat the first `degree` ones, weights alike.
+        let wrapped: Option<Vec<f64>> =
+            weights.map(|w| w.iter().chain(&w[..degree.min(w.len())]).copied().collect());
+        let curve = Rational::new(spline, wrapped.as_deref())?;
+        Ok(Self::from_rational(curve, true, Some(degree as i32 - 1)))
+    }
+
+    /// A clamped B-spline (optionally rational) with the given knots, or uniform ones on
+    /// `[0, 1]`. It is closed when its first and last points coincide.
+    pub fn clamped(
+        degree: usize,
+        points: &[[f64; 2]],
+        weights: Option<&[f64]>,
+        knots: Option<Vec<f64>>,
+    ) -> Result<Self> {
+        let flat: Vec<f64> = points.iter().flat_map(|p| p.iter().copied()).collect();
+        let spline = match knots {
+            Some(k) => BSpline::new(degree, k, 2, flat)?,
+            None => BSpline::clamped_uniform(degree, 2, flat)?,
+        };
+        Self::new(Rational::new(spline, weights)?)
+    }
+
+    /// The underlying rational curve.
+    pub fn curve(&self) -> &Rational {
+        &self.curve
+    }
+
+    /// For a periodic curve, the order of continuity of its homogeneous form across the seam.
+    pub fn periodic_order(&self) -> Option<i32> {
+        self.periodic
+    }
+
+    /// The Euclidean control points (homogeneous points over their weights).
+    pub fn control_points(&self) -> Vec<[f64; 2]> {
+        self.curve
+            .control_points()
+            .iter()
+            .map(|p| [p[0], p[1]])
+            .collect()
+    }
+
+    /// The curve's exact form in pieces, with bounds on its coefficients and its seam.
+    pub fn exact_pieces(&self) -> CurvePieces {
+        let pieces = homogeneous_pieces(&self.curve);
+        match self.periodic {
+            Some(order) => pieces.periodic(order),
+            None => pieces,
+        }
+    }
+
+    /// The same curve in `frame`: each homogeneous point `(X, Y, w)` becomes
+    /// `((X − oₓw) 2^−e, (Y − o_y w) 2^−e, w 2^−k)` with the weights scaled by the power of two
+    /// `2^−k` that brings the largest to about 1. Exact for a polynomial curve (w = 1) in the
+    /// frame chosen for its points; otherwise the rounding of `o·w` and of the difference is
+    /// added to the coefficients' error bound.
+    pub fn in_frame(&self, frame: &Frame) -> SplineCurve {
+        let h = self.curve.homogeneous();
+        let o = frame.origin();
+        let down = frame.length_to_local(1.0);
+        let wmax = h
+            .coefs()
+            .chunks_exact(3)
+            .fold(0.0f64, |m, p| m.max(p[2].abs()));
+        let wscale = Frame::new([0.0, 0.0], Frame::for_points(&[[wmax, 0.0]]).exponent())
+            .length_to_local(1.0);
+        // The error of each new coordinate, before scaling (the scalings by powers of two are
+        // exact): none where `X − o·w` is exact, else the rounding of `o·w` and of the
+        // difference.
+        let mut extra = 0.0f64;
+        let local = h.map_points(3, |p, q| {
+            let w = p[2];
+            for k in 0..2 {
+                let ow = o[k] * w;
+                let d = p[k] - ow;
+                let exact = (w == 1.0 || o[k] == 0.0) && exact_difference(p[k], ow);
+                if !exact {
+                    extra = extra.max(UNIT_ROUNDOFF * (ow.abs() + d.abs()));
+                }
+                q[k] = d * down * wscale;
+            }
+            q[2] = w * wscale;
+        });
+        let extra = extra * down * wscale;
+        let err = self.curve.coefficient_error() * down * wscale + extra;
+        let curve = match Rational::from_homogeneous_with_error(local, err) {
+            Ok(c) => c,
+            // (A positive weight stays positive scaled by a power of two.)
+            Err(_) => return self.clone(),
+        };
+        Self::from_rational(curve, self.closed, self.periodic)
+    }
+}
+
+/// Diagonal of the control points' bounding box.
+pub(crate) fn control_size(c: &Rational) -> f64 {
+    let pts = c.control_points();
+    let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
+    for p in &pts {
+        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
+        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
+    }
+    (hi - lo).norm()
+}
+
+/// Point and derivatives up to order `k ≤ 3` of the planar rational curve with homogeneous
+/// form `h` (`out[2j..2j+2]` the j-th derivative), by the quotient rule
+/// `C⁽ʲ⁾ = (X⁽ʲ⁾ − Σᵢ C(j,i) w⁽ⁱ⁾ C⁽ʲ⁻ⁱ⁾) / w`.
+pub fn rational_derivs(h: &Piecewise, u: f64, k: usize, out: &mut [f64; 8]) {
+    let mut hv = [0.0; 12];
+    let k = k.min(3);
+    h.eval_derivs(u, k, &mut hv[..3 * (k + 1)]);
+    // Written out per order (the binomials of the rule are 1; 1, 2, 1; 1, 3, 3, 1).
+    let inv = 1.0 / hv[2];
+    let (w1, w2, w3) = (hv[5], hv[8], hv[11]);
+    for c in 0..2 {
+        let c0 = hv[c] * inv;
+        out[c] = c0;
+        if k >= 1 {
+            let c1 = (hv[3 + c] - w1 * c0) * inv;
+            out[2 + c] = c1;
+            if k >= 2 {
+                let c2 = (hv[6 + c] - 2.0 * w1 * c1 - w2 * c0) * inv;
+                out[4 + c] = c2;
+                if k >= 3 {
+                    out[6 + c] = (hv[9 + c] - 3.0 * w1 * c2 - 3.0 * w2 * c1 - w3 * c0) * inv;
+                }
+            }
+        }
+    }
+}
+
+impl ParamCurve for SplineCurve {
+    fn domain(&self) -> (f64, f64) {
+        self.curve.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
+        let mut o = [0.0; 8];
+        let k = order.min(3);
+        rational_derivs(&self.pieces, u, k, &mut o);
+        Jet {
+            p: V2::new(o[0], o[1]),
+            d1: V2::new(o[2], o[3]),
+            d2: V2::new(o[4], o[5]),
+            d3: V2::new(o[6], o[7]),
+        }
+    }
+}
+
+impl PlaneCurve for SplineCurve {
+    fn exact(&self) -> Option<Exact<'_>> {
+        Some(Exact::Spline(self))
+    }
+}

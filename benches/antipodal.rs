@@ -1,11 +1,12 @@
 //! Headline figures of the `antipodal` issue: every antipodal pair of the papers' shapes and of
-//! random periodic cubic B-splines, at the default tolerance, on one core. (Jia reports about
+//! random periodic cubic B-splines, at the default tolerance, on one core: warm (on a prepared
+//! curve) and cold (`_cold`: preparing the curve and answering once). (Jia reports about
 //! 10 ms per shape on a 933 MHz Pentium III; IRIT 11 takes 1.3–5 ms; the target is ≤ 20 µs.)
 //! The convexities family `m = 3 … 12` shows how the cost grows with the number of pairs.
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use antipodal::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon};
-use antipodal::{antipodal, Options, PlaneCurve, SplineCurve};
+use antipodal::{antipodal, prepare, Options, PlaneCurve, SplineCurve};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
 
@@ -28,12 +29,17 @@ fn star(n: usize, seed: u64) -> SplineCurve {
     SplineCurve::periodic(3, &pts, None).unwrap()
 }
 
+/// A warm run (on the prepared curve) and a cold one (preparing and answering once).
 fn bench_one(c: &mut Criterion, name: &str, curve: &dyn PlaneCurve) {
     let opts = Options::default();
     // The run must succeed and be complete before it is timed.
-    let r = antipodal(curve, &opts).unwrap();
+    let prepared = prepare(curve);
+    let r = prepared.antipodal(&opts).unwrap();
     assert!(r.complete, "{name}");
     c.bench_function(name, |b| {
+        b.iter(|| prepared.antipodal(black_box(&opts)).unwrap())
+    });
+    c.bench_function(&format!("{name}_cold"), |b| {
         b.iter(|| antipodal(black_box(curve), black_box(&opts)).unwrap())
     });
 }
@@ -79,10 +85,11 @@ fn convexities_family(c: &mut Criterion) {
     let mut g = c.benchmark_group("antipodal_convexities_m");
     for m in 3..=12u32 {
         let curve = Convexities::new(4.5, 0.2, m).unwrap();
-        let r = antipodal(&curve, &opts).unwrap();
+        let prepared = prepare(&curve);
+        let r = prepared.antipodal(&opts).unwrap();
         assert!(r.complete);
         g.bench_with_input(BenchmarkId::from_parameter(m), &m, |b, _| {
-            b.iter(|| antipodal(black_box(&curve), black_box(&opts)).unwrap())
+            b.iter(|| prepared.antipodal(black_box(&opts)).unwrap())
         });
     }
     g.finish();

@@ -175,3 +175,34 @@ proptest! {
         exercise(&text);
     }
 }
+
+/// The first control point of a parsed curve.
+fn first_point(text: &str) -> [f64; 2] {
+    let curve = parse_curve("exact.json", text).unwrap();
+    match curve.plane_curve().exact() {
+        Some(curve::Exact::Spline(s)) => s.control_points()[0],
+        _ => panic!("not a spline"),
+    }
+}
+
+proptest! {
+    /// Numbers are read exactly: the double nearest the decimal in the file, as Rust's own
+    /// correctly rounded parser gives it, in every notation and with more digits than a
+    /// double holds (a reader one ulp off computes on another curve than the file's, and
+    /// certifies that one).
+    #[test]
+    fn numbers_are_read_exactly(
+        bits in any::<u64>(),
+        digits in 17usize..30,
+    ) {
+        let x = f64::from_bits(bits);
+        prop_assume!(x.is_finite() && x.abs() < 1e99 && x.abs() > 1e-300);
+        for text in [format!("{x}"), format!("{x:e}"), format!("{x:.digits$e}")] {
+            let want: f64 = text.parse().unwrap();
+            let file = format!(
+                r#"{{"kind":"bspline","degree":1,"points":[[{text},0],[1,1],[0,2]]}}"#
+            );
+            prop_assert_eq!(first_point(&file)[0].to_bits(), want.to_bits(), "{}", text);
+        }
+    }
+}

@@ -597,6 +597,43 @@ impl BoundForms {
         r[usize::from(convex)]
     }
 
+    /// The range of `dρ/dψ` `acc` over an arc, with the break between fine pieces `j` and
+    /// `i` (`i` after `j` along the arc) inside it: unchanged where the curvature is
+    /// continuous there; where it jumps (a curve only C¹ there, as every quadratic spline at
+    /// its knots), `ρ` jumps too and its rate holds a Dirac impulse, unbounded on the side of
+    /// the jump's sign as ψ grows. `None` where that sign is not proven.
+    fn with_rho_jump(&self, acc: Iv, j: usize, i: usize, convex: bool) -> Option<Iv> {
+        let pw = &self.curvature.pw;
+        let k = if i == 0 { 0 } else { i };
+        if pw.continuity(k) >= 0 {
+            return Some(acc);
+        }
+        // κ on either side, each from its own piece's polynomial (clipped to the arc's sign).
+        let side = |piece: usize, at: f64| -> Option<Iv> {
+            let (kappa, _) = self.partial(piece, at, at)?;
+            match convex {
+                true => Iv::new(kappa.lo.max(0.0), kappa.hi),
+                false => Iv::new(kappa.lo, kappa.hi.min(0.0)),
+            }
+            .recip()
+        };
+        let (rho_before, rho_after) = (side(j, pw.piece_span(j).1)?, side(i, pw.piece_span(i).0)?);
+        // As ψ grows: along the parameter on a convex arc, against it on a concave one.
+        let jump = rho_after.sub(rho_before).widened(4.0 * f64::EPSILON);
+        let jump = if convex {
+            jump
+        } else {
+            Iv::new(-jump.hi, -jump.lo)
+        };
+        if jump.lo >= 0.0 {
+            Some(Iv::new(acc.lo, f64::INFINITY))
+        } else if jump.hi <= 0.0 {
+            Some(Iv::new(f64::NEG_INFINITY, acc.hi))
+        } else {
+            None
+        }
+    }
+
     /// The curvature `κ = K w³ / |D|³` over `[lo, hi]` (inside the domain), joined into `acc`:
     /// per fine piece it covers, the piece's precomputed range; for a stretch within two cells
     /// of one piece, its own Taylor models ([`BoundForms::partial`]); per piece any other
@@ -766,8 +803,17 @@ impl View<'_> {
         let pw = &forms.curvature.pw;
         let (lo, hi) = (lo.min(hi), lo.max(hi));
         let mut acc = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        // The fine piece before the current one along the arc (the break between them is
+        // inside it).
+        let mut before: Option<usize> = None;
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
             for (i, y0, y1) in pw.overlaps(x0, x1) {
+                if y1 <= y0 {
+                    continue;
+                }
+                if let Some(j) = before.replace(i) {
+                    acc = forms.with_rho_jump(acc, j, i, convex)?;
+                }
                 let span = pw.piece_span(i);
                 let whole = y0 <= span.0 && y1 >= span.1;
                 let cells = (!whole).then(|| (cell_of(y0, span), cell_of(y1, span)));

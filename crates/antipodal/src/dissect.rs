@@ -5,6 +5,7 @@
 //! tangent numerator's control points on the interval lie in an open half-plane, so the tangent
 //! turns by less than π there. Analytic curves are sampled (Jia's method, not certified).
 
+use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::prims::solve_in;
 use crate::view::View;
@@ -287,13 +288,23 @@ impl View<'_> {
                 // closed curve. Clusters wider than 1e-6 of the period are straight stretches.
                 let found = cert.curvature_sign_changes(&cert.opts, self.closed)?;
                 if !found.certified() {
-                    self.uncertify();
+                    self.uncertify(Doubt::CurvatureUnresolved);
+                }
+                // A stretch whose curvature vanishes within rounding is taken as straight:
+                // proven where the data make it exactly straight, a judgement elsewhere.
+                if found.flats.iter().any(|f| {
+                    let (lo, hi) = f.bracket;
+                    self.straight_chain(lo, hi).is_none()
+                }) {
+                    self.uncertify(Doubt::FlatWithinRounding);
                 }
                 flats.extend(found.flats.iter().map(|f| f.bracket));
+                // (A straight stretch between opposite bends: the inflection is the stretch,
+                // certain where it is proven straight.)
                 flat_changes.extend(found.flats.iter().filter(|f| f.sign_change).map(|f| Zero {
                     u: f.u,
                     bracket: Some(f.bracket),
-                    certified: false,
+                    certified: self.straight_chain(f.bracket.0, f.bracket.1).is_some(),
                     cluster: true,
                     corner: false,
                 }));
@@ -305,6 +316,9 @@ impl View<'_> {
                             SignChangeKind::Jump => self.corner_at(c.u),
                             _ => (false, true),
                         };
+                        if !certain {
+                            self.uncertify(Doubt::CornerUndecided);
+                        }
                         Zero {
                             u: c.u,
                             bracket: Some(c.bracket),
@@ -387,11 +401,32 @@ impl View<'_> {
         if smooth >= 1 {
             return (false, true);
         }
-        let d = 1e-9 * self.period;
-        let (before, after) = (self.jet_to(u - d, 1).d1, self.jet_to(u + d, 1).d1);
-        let continuous = before.dot(after) > 0.0
-            && before.cross(after).abs() <= TANGENT_CONTINUITY * before.norm() * after.norm();
-        (!continuous, false)
+        // The one-sided tangents are the tangent numerator's end coefficients on either side
+        // (Bézier pieces interpolate their ends), each within its pieces' error bound.
+        // (Tangents sampled a little to either side turn by more than the threshold on a
+        // tightly curved stretch: a smooth seam was taken for a corner.)
+        let tangent = &cert.tangent;
+        let n = tangent.pieces();
+        let (i_before, i_after) = match (seam, k) {
+            (true, _) => (n - 1, 0),
+            (false, k) => (k - 1, k),
+        };
+        let end = |i: usize, last: bool| {
+            let c = tangent.piece(i);
+            let at = if last { c.len() - 2 } else { 0 };
+            let e = tangent.errors(i);
+            (V2::new(c[at], c[at + 1]), e[0].max(e[1]))
+        };
+        let ((before, eb), (after, ea)) = (end(i_before, true), end(i_after, false));
+        let (nb, na) = (before.norm(), after.norm());
+        // |a × b| and a · b move by at most |a| e_b + |b| e_a + e_a e_b (per coordinate
+        // errors, √2 each way), plus their own rounding.
+        let slack = 2.0 * (na * eb + nb * ea + ea * eb) + 4.0 * f64::EPSILON * na * nb;
+        let cross = before.cross(after).abs();
+        let threshold = TANGENT_CONTINUITY * nb * na;
+        let continuous = before.dot(after) > slack && cross + slack <= threshold;
+        let corner = before.dot(after) < -slack || cross - slack > threshold;
+        (corner, continuous || corner)
     }
 
     /// The monotone pieces with |Φ| < π (Jia §5.1 step 2).

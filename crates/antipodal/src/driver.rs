@@ -2,6 +2,7 @@
 //! and the two-curve common tangents of §2.5, in the curve's frame.
 
 use crate::dissect::{Piece, Tracks, Zeros};
+use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::finish::certified_rest;
@@ -75,7 +76,7 @@ pub(crate) fn dissect<'a>(
         view.check_simple(&tracks, &zeros)?;
     }
     if closed && zeros.zs.len() % 2 == 1 {
-        view.uncertify();
+        view.uncertify(Doubt::OddInflections);
     }
     let pieces = view.pieces(&tracks, &zeros);
     Ok(Dissected {
@@ -90,7 +91,7 @@ pub(crate) fn dissect<'a>(
 /// corners, and the straight stretches between a left and a right turn, in the curve's
 /// parameters.
 fn inflection_list(v: &View, zeros: &Zeros) -> Vec<Inflection> {
-    let certified = v.certified.get();
+    let certified = v.certified();
     let mut out: Vec<Inflection> = zeros
         .zs
         .iter()
@@ -134,10 +135,13 @@ pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Inflecti
     };
     let zeros = view.inflections(tracks.as_ref())?;
     let inflections = inflection_list(&view, &zeros);
+    if inflections.iter().any(|i| !i.certified) {
+        view.uncertify(Doubt::RootCluster);
+    }
     Ok(Inflections {
-        certified: view.certified.get() && inflections.iter().all(|i| i.certified),
+        certified: view.certified(),
         inflections,
-        reason: None,
+        reason: view.reason(),
     })
 }
 
@@ -161,6 +165,13 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
     };
     let mut stack = Vec::with_capacity(16);
     let n = prep.pieces.len();
+    // A straight stretch is searched as one segment with one normal: a proven chain of
+    // segments (a polyline's corners inside) is not one.
+    if prep.pieces.iter().any(|p| {
+        p.flat && v.straight_span(p.lo, p.hi).is_none() && v.straight_chain(p.lo, p.hi).is_some()
+    }) {
+        v.uncertify(Doubt::CornerInStraight);
+    }
     for i in 0..n {
         for j in i + 1..n {
             let (p, q) = (&prep.pieces[i], &prep.pieces[j]);
@@ -172,6 +183,11 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
                 continue;
             };
             if is_family(&pair) {
+                // (θ vanishing within rounding all along: only a curve defined as a circle is
+                // proven to have a continuum of pairs.)
+                if !v.exact_circle {
+                    v.uncertify(Doubt::Continuum);
+                }
                 families.push((pair.sa, pair.sb, pair.ta, pair.tb));
                 continue;
             }
@@ -189,9 +205,9 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
         pairs,
         inflections: inflection_list(v, &prep.zeros),
         families: families.iter().map(|&f| family_of(v, f)).collect(),
-        certified: v.certified.get(),
+        certified: v.certified(),
         complete: !budget.exhausted,
-        reason: None,
+        reason: v.reason(),
     })
 }
 
@@ -331,7 +347,7 @@ fn finish_pairs(
         // A point that is no pair (θ beyond any rounding) is a defect upstream: never report
         // it.
         if js.normal().cross(r).abs() > THETA_NOISE * r.norm() {
-            v.uncertify();
+            v.uncertify(Doubt::NotAPair);
             continue;
         }
         let (s, t) = (v.wrap(s), v.wrap(t));
@@ -389,7 +405,7 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
         t.is_some_and(|t| p.r(s, t).norm() <= 1e-9 * p.vs.scale)
     });
     if coincide || *leaves == 0 {
-        p.vs.uncertify();
+        p.vs.uncertify(Doubt::CurvesTouch);
         return;
     }
     let (tl, th) = p.t_range();
@@ -406,7 +422,7 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
         }
     }
     if overlap {
-        p.vs.uncertify();
+        p.vs.uncertify(Doubt::CurvesTouch);
     }
     *leaves -= 1;
     out.extend(tangent::common_tangents(p));
@@ -426,7 +442,7 @@ pub(crate) fn tangents_of(
     let a = dissect(s1, opts, Some(false))?;
     // (s, t) reported, and the points of tangency.
     let mut lines: Vec<(f64, f64, V2, V2)> = Vec::new();
-    let mut certified = a.view.certified.get();
+    let mut doubt = a.view.doubt.get();
     // The domain of the parameters reported on the second curve.
     let mut pb = (0.0, 0.0);
     for rev in [false, true] {
@@ -458,7 +474,7 @@ pub(crate) fn tangents_of(
                 }
             }
         }
-        certified &= b.view.certified.get() && a.view.certified.get();
+        doubt = doubt.or(a.view.doubt.get()).or(b.view.doubt.get());
     }
     let pa = a.view.reported_domain();
     let close = |x: f64, y: f64, per: f64, closed: bool| {
@@ -489,7 +505,7 @@ pub(crate) fn tangents_of(
     out.sort_by(|x, y| x.s.total_cmp(&y.s));
     Ok(Tangents {
         lines: out,
-        certified,
-        reason: None,
+        certified: doubt.is_none(),
+        reason: doubt.map(|d| d.reason().to_string()),
     })
 }

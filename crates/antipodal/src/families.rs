@@ -2,9 +2,12 @@
 //! stretches) are reported as families instead of floods of pairs.
 
 use crate::dissect::Piece;
+use crate::doubt::Doubt;
 use crate::pairs::Pair;
 use crate::types::Family;
 use crate::view::View;
+use curve::exact::cross_sign;
+use std::cmp::Ordering;
 
 /// Pairs involving a straight stretch: two facing parallel stretches make a family; a curved
 /// piece pairs with a stretch where its normal is opposite to the stretch's and the normal line
@@ -23,6 +26,15 @@ pub(crate) fn flat_pairs(
         let ng = v.normal(0.5 * (g.lo + g.hi));
         if (nf + ng).norm() > 1e-9 || nf.dot(v.point(g.lo) - pf) <= 0.0 {
             return;
+        }
+        // A continuum of pairs only between exactly parallel stretches: proven on the data
+        // where both are proven straight, a judgement elsewhere.
+        let parallel = match (v.straight_span(f.lo, f.hi), v.straight_span(g.lo, g.hi)) {
+            (Some(a), Some(b)) => cross_sign(a.from, a.to, b.from, b.to) == Some(Ordering::Equal),
+            _ => false,
+        };
+        if !parallel {
+            v.uncertify(Doubt::Continuum);
         }
         // Coordinates along the stretch direction.
         let dir = nf.perp();

@@ -25,6 +25,7 @@
 mod bounds;
 mod cells;
 mod dissect;
+mod doubt;
 mod driver;
 mod error;
 mod families;

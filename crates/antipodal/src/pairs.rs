@@ -1,6 +1,7 @@
 //! Segment pairs with opposite normals (Jia §5.2): intersecting normal cones.
 
 use crate::dissect::Piece;
+use crate::doubt::Doubt;
 use crate::search::THETA_NOISE;
 use crate::view::View;
 use curve::V2;
@@ -258,7 +259,7 @@ pub(crate) fn opposite_pair<'a>(
             // Cones overlapping by more than the snapping to one end, on a stretch rounding
             // collapsed to a point: the normal jumps within one unit of the parameter, beyond
             // what double precision resolves.
-            vs.uncertify();
+            vs.uncertify(Doubt::NormalJump);
         }
         return None;
     }

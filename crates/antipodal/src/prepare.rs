@@ -9,7 +9,7 @@ use crate::forms::SymbolicForms;
 use crate::types::{Antipodal, Inflections, Options, Provenance, Tangents};
 use crate::view::Source;
 use curve::circle::Angle;
-use curve::{Frame, Local, OnCircle, ParamCurve, PlaneCurve};
+use curve::{Frame, Local, OnCircle, ParamCurve, PlaneCurve, StraightSpan};
 
 /// A curve prepared for the algorithms of this crate (see [`prepare`]).
 pub struct Prepared<'c> {
@@ -29,6 +29,10 @@ pub struct Prepared<'c> {
     simple: bool,
     /// How often the curvature oscillates around the curve, as far as known (a shape's lobes).
     lobes: usize,
+    /// The stretches proven exactly straight, from the curve's data.
+    straight: Vec<StraightSpan>,
+    /// Exactly a circle by its definition.
+    exact_circle: bool,
 }
 
 /// Samples of a sampled track per oscillation of the curvature: Jia's sampling of the
@@ -47,12 +51,20 @@ impl<'c> Prepared<'c> {
                 forms: None,
                 simple: false,
                 lobes: 1,
+                straight: Vec::new(),
+                exact_circle: false,
             };
         };
         let local = exact.in_frame(&frame);
         let lobes = match &local {
             Local::Shape(s) => s.lobes() as usize,
             Local::Spline(_) => 1,
+        };
+        // (Straightness is proven on the data as given: the frame moves the curve, not its
+        // parameters.)
+        let (straight, exact_circle) = match &exact {
+            curve::Exact::Spline(s) => (s.straight_spans(), false),
+            curve::Exact::Shape(s) => (Vec::new(), s.is_exact_circle()),
         };
         let (circle, pieces, simple) = match &local {
             Local::Spline(s) => (None, Some(s.exact_pieces()), false),
@@ -69,6 +81,8 @@ impl<'c> Prepared<'c> {
             forms: pieces.and_then(|p| SymbolicForms::new(p).ok()),
             simple,
             lobes,
+            straight,
+            exact_circle,
         }
     }
 
@@ -89,6 +103,8 @@ impl<'c> Prepared<'c> {
             simple: self.simple,
             report,
             samples: SAMPLES_PER_LOBE * self.lobes,
+            straight: &self.straight,
+            exact_circle: self.exact_circle,
         }
     }
 
@@ -109,7 +125,9 @@ impl<'c> Prepared<'c> {
             })
         };
         if !opts.certify {
-            return sampled();
+            let mut r = sampled()?;
+            r.uncertify("certification was turned off (Options::certify)".to_string());
+            return Ok(r);
         }
         match run(self.source(true)) {
             Err(Error::Cusp { .. }) if self.simple => {

@@ -6,6 +6,7 @@
 //! the ends (Jia's criterion, exact on a monotone segment), refined by Newton's method inside
 //! the bracket, which cannot fail.
 
+use crate::doubt::Doubt;
 use crate::view::View;
 use bspline::roots::{Count, Root, RootKind};
 use bspline::solve::{bracketed, Accuracy};
@@ -70,7 +71,7 @@ impl View<'_> {
             }
         }
         if self.cert.is_some() {
-            self.uncertify();
+            self.uncertify(Doubt::RootsUnresolved);
         }
         let (flo, fhi) = (f(lo).0, f(hi).0);
         sampled(lo, hi, flo, fhi, &f, &accept, self.tol, hint)
@@ -96,7 +97,7 @@ impl View<'_> {
         match chosen {
             Some(r) => {
                 if r.kind == RootKind::Cluster || !r.certified {
-                    self.uncertify();
+                    self.uncertify(Doubt::RootCluster);
                 }
                 // A root within rounding of an interval end may be reported as a cluster:
                 // polish it on the curve itself.
@@ -112,10 +113,10 @@ impl View<'_> {
                 // rounding of zero and has no trusted sign): take the end itself then.
                 let small = 1e-13 * (flo.abs() + fhi.abs());
                 if flo.abs() <= small && accept(lo) {
-                    self.uncertify();
+                    self.uncertify(Doubt::RootAtEnd);
                     Some(lo)
                 } else if fhi.abs() <= small && accept(hi) {
-                    self.uncertify();
+                    self.uncertify(Doubt::RootAtEnd);
                     Some(hi)
                 } else {
                     None

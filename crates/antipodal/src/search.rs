@@ -7,6 +7,7 @@
 //! linearly), and the stretch beside a found pair that Table 1 cuts off by a small ε is as
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
+use crate::doubt::Doubt;
 use crate::finish::{
     certified_finish, certified_rest, certified_rests, clear_ahead, clear_between, clear_by_rates,
     Finish,
@@ -35,11 +36,7 @@ pub(crate) fn antipodal_points<'a>(
 ) {
     stack.clear();
     stack.push(*pair);
-    LIMIT_HIT.with(|c| c.set(false));
     while let Some(p) = stack.pop() {
-        if LIMIT_HIT.with(|c| c.get()) {
-            budget.exhausted = true;
-        }
         if budget.sections == 0 {
             budget.exhausted = true;
             return;
@@ -93,7 +90,8 @@ pub(crate) fn antipodal_points<'a>(
                         p.sub(p.sa, p.ta, s, t)
                     };
                     if !by_width(&rest, out) {
-                        LIMIT_HIT.with(|c| c.set(true));
+                        // (The width's sampling hit its bound: pairs may be missing.)
+                        budget.exhausted = true;
                     }
                     None
                 }
@@ -104,9 +102,6 @@ pub(crate) fn antipodal_points<'a>(
                 stack.extend(rests(&p, s, t, moved_up, !moved_up, (ta < 0.0) == moved_up));
             }
         }
-    }
-    if LIMIT_HIT.with(|c| c.get()) {
-        budget.exhausted = true;
     }
 }
 
@@ -259,7 +254,7 @@ fn remainders<'a>(
             eps = (eps / 8.0).max(min_eps);
         }
         if !decided {
-            p.vs.uncertify();
+            p.vs.uncertify(Doubt::SectionUndecided);
         }
     }
     out
@@ -605,7 +600,7 @@ const WIDTH_SAMPLES: usize = 256;
 /// located by sampling (the result is no longer certified). Returns `false` when `w″` cannot
 /// be evaluated.
 fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>) -> bool {
-    p.vs.uncertify();
+    p.vs.uncertify(Doubt::ConstantWidth);
     let w2 = |s: f64, t: f64| {
         let (js, jt) = (p.vs.jet_to(s, 2), p.vt.jet_to(t, 2));
         1.0 / js.curvature() + 1.0 / jt.curvature() - p.d(s, t)
@@ -722,11 +717,6 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
     } else {
         Early::Continue
     }
-}
-
-thread_local! {
-    /// Set when a march used up its step bound (the result may then be incomplete).
-    static LIMIT_HIT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// Steps a march takes before its first finishing attempt: the attempt's proof must cover

@@ -20,6 +20,7 @@
 //! them: the densified polygon of the track is searched for crossings instead.
 
 use crate::dissect::{Tracks, Zeros};
+use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::view::View;
 use curve::{wrap_pi, V2};
@@ -138,7 +139,7 @@ impl View<'_> {
             }
         }
         if !decided {
-            self.uncertify();
+            self.uncertify(Doubt::SimplicityUndecided);
         }
         Ok(())
     }
@@ -193,7 +194,7 @@ impl View<'_> {
                 // An arc within the tolerance that still turns this much (a near-cusp) may
                 // leave its triangle: what is decided with it is not proven.
                 if turning >= FRAC_PI_2 - 0.1 {
-                    self.uncertify();
+                    self.uncertify(Doubt::NearCusp);
                 }
                 arcs.push(arc);
                 continue;

@@ -12,6 +12,7 @@
 //! Once one tangent is known, the second lies where `d` changes sign again: a bisection on `d`
 //! backs the iteration up wherever a sign change brackets a tangent.
 
+use crate::doubt::Doubt;
 use crate::pairs::Pair;
 use crate::prims::Prefer;
 use crate::view::View;
@@ -42,7 +43,7 @@ pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
     // Segments bending the same way: configuration (a) or none, by the region test. A
     // disagreement with the (verified) iteration is reported as uncertified.
     if p.s_convex != p.t_convex && two_tangents_same_bending(p) != first.is_some() {
-        p.vs.uncertify();
+        p.vs.uncertify(Doubt::TangentTestsDisagree);
     }
     let Some(first) = first else {
         return out;

@@ -118,7 +118,7 @@ pub struct Family {
     pub t: [f64; 2],
 }
 
-/// Result of [`antipodal`].
+/// Result of [`antipodal()`](crate::antipodal()).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Antipodal {
     /// Isolated antipodal pairs, sorted by `s`.
@@ -162,7 +162,7 @@ pub struct TangentLine {
     pub q: [f64; 2],
 }
 
-/// Result of [`common_tangents`].
+/// Result of [`common_tangents()`](crate::common_tangents()).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Tangents {
     /// The lines, sorted by `s`.

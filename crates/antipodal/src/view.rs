@@ -5,11 +5,12 @@
 //! viewed reversed (`u ↦ a + b − u`), so inside the algorithms every closed curve runs
 //! counterclockwise and the left normal is the inward normal, as the papers assume.
 
+use crate::doubt::Doubt;
 use crate::forms::SymbolicForms;
 use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
 use bspline::Piecewise;
 use curve::circle::Angle;
-use curve::{Jet, ParamCurve, V2};
+use curve::{Jet, ParamCurve, StraightSpan, V2};
 use smallvec::SmallVec;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
@@ -27,6 +28,11 @@ impl std::ops::Deref for Cert<'_> {
     }
 }
 
+/// How far (relative to the period) the ends of a stretch whose curvature vanishes within
+/// rounding may lie from those of a proven straight stretch and still be that stretch: the
+/// isolation of the curvature's roots brackets the ends to its tolerance, far below this.
+const STRAIGHT_END: f64 = 1e-9;
+
 /// What a view looks at: the curve evaluated in the parameter the algorithms run in, its
 /// symbolic forms when decisions are certified, whether it is simple and regular by
 /// construction (an analytic shape), and how its parameter maps to the one reported.
@@ -39,6 +45,10 @@ pub(crate) struct Source<'a> {
     /// The least number of samples of a sampled track (Jia's sampling must resolve the
     /// curve's oscillations).
     pub(crate) samples: usize,
+    /// The stretches proven exactly straight (in the curve's parameters).
+    pub(crate) straight: &'a [StraightSpan],
+    /// The curve is exactly a circle by its definition (its pairs are one family).
+    pub(crate) exact_circle: bool,
 }
 
 pub(crate) struct View<'a> {
@@ -48,6 +58,10 @@ pub(crate) struct View<'a> {
     simple: bool,
     /// The least number of samples of a sampled track.
     pub(crate) samples: usize,
+    /// The stretches proven exactly straight (in the curve's parameters).
+    pub(crate) straight: &'a [StraightSpan],
+    /// The curve is exactly a circle by its definition.
+    pub(crate) exact_circle: bool,
     pub(crate) a: f64,
     pub(crate) b: f64,
     pub(crate) period: f64,
@@ -59,7 +73,7 @@ pub(crate) struct View<'a> {
     /// Parameter tolerance.
     pub(crate) tol: f64,
     /// Cleared when some decision fell back on sampling.
-    pub(crate) certified: Cell<bool>,
+    pub(crate) doubt: Cell<Option<Doubt>>,
     /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
     /// run on its rational-circle form).
     report: Option<Angle>,
@@ -170,11 +184,16 @@ impl<'a> View<'a> {
             forms,
             opts: RootOptions::default().tolerance(tol.max(1e-15)),
         });
-        let cert_present = cert.is_some();
+        let doubt = match cert {
+            Some(_) => None,
+            None => Some(Doubt::NoExactForm),
+        };
         let mut v = Self {
             curve,
             simple: src.simple,
             samples: src.samples,
+            straight: src.straight,
+            exact_circle: src.exact_circle,
             a,
             b,
             period: b - a,
@@ -183,7 +202,7 @@ impl<'a> View<'a> {
             cert,
             scale: 1.0,
             tol: tol * (b - a).max(1.0),
-            certified: Cell::new(cert_present),
+            doubt: Cell::new(doubt),
             report: src.report,
             cache: JetCache::new(),
             piece_points: RefCell::new(Vec::new()),
@@ -254,6 +273,10 @@ impl<'a> View<'a> {
         let (a, b) = self.reported_domain();
         let (first, second) = if self.rev { (hi, lo) } else { (lo, hi) };
         let start = self.to_curve(first);
+        if !self.closed {
+            // (No seam to run past: a bracket over the whole domain is that.)
+            return [start, self.to_curve(second)];
+        }
         let span = (self.to_curve(second) - start).rem_euclid(b - a);
         [start, start + span]
     }
@@ -362,8 +385,58 @@ impl<'a> View<'a> {
         self.simple
     }
 
-    pub(crate) fn uncertify(&self) {
-        self.certified.set(false);
+    /// Marks the run uncertified for `doubt` (the first reason met is kept).
+    pub(crate) fn uncertify(&self, doubt: Doubt) {
+        if self.doubt.get().is_none() {
+            self.doubt.set(Some(doubt));
+        }
+    }
+
+    /// The stretch proven exactly straight that the view's stretch `[lo, hi]` is (its ends
+    /// within [`STRAIGHT_END`] of the period of a proven one's), if any.
+    pub(crate) fn straight_span(&self, lo: f64, hi: f64) -> Option<StraightSpan> {
+        match self.straight_chain(lo, hi)? {
+            (first, 1) => Some(first),
+            _ => None,
+        }
+    }
+
+    /// The proven straight stretches, one after the other (on lines of their own: a polyline
+    /// and its corners), that the view's stretch `[lo, hi]` is made of: the first and how many.
+    pub(crate) fn straight_chain(&self, lo: f64, hi: f64) -> Option<(StraightSpan, usize)> {
+        if self.straight.is_empty() {
+            return None;
+        }
+        let [x, y] = self.bracket_to_curve(lo, hi);
+        let (a, b) = self.reported_domain();
+        let period = b - a;
+        let near = |u: f64, v: f64| {
+            let d = (u - v).rem_euclid(period);
+            d.min(period - d) <= STRAIGHT_END * period
+        };
+        let starting = |at: f64| self.straight.iter().find(|s| near(s.lo, at)).copied();
+        let first = starting(x)?;
+        let (mut reached, mut count, mut last) = (x + (first.hi - first.lo), 1, first);
+        // (Each stretch once at most: the walk ends.)
+        while count <= self.straight.len() {
+            if near(last.hi, y) && (reached - y).abs() <= 2.0 * STRAIGHT_END * period {
+                return Some((first, count));
+            }
+            let next = starting(last.hi)?;
+            reached += next.hi - next.lo;
+            (last, count) = (next, count + 1);
+        }
+        None
+    }
+
+    /// Why the run is not certified, if it is not.
+    pub(crate) fn reason(&self) -> Option<String> {
+        self.doubt.get().map(|d| d.reason().to_string())
+    }
+
+    /// True while every decision was proven.
+    pub(crate) fn certified(&self) -> bool {
+        self.doubt.get().is_none()
     }
 
     /// The unwrapped interval `[lo, hi]` as pieces `(x0, x1, shift)` inside the domain (split

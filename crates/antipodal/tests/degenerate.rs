@@ -72,13 +72,20 @@ fn stadium_has_one_pair_and_one_family() {
     );
 }
 
+/// A circle's pairs are one family: certified for a curve defined as a circle; for a NURBS
+/// circle (its weights 1/√2 rounded: nearly a circle, whose pairs no rounded computation
+/// can tell from a family) reported as one, uncertified with the reason.
 #[test]
 fn circles_are_families() {
     for r in [0.5, 3.0] {
         let res = antipodal(&nurbs_circle(r), &Options::default()).unwrap();
         assert!(res.pairs.is_empty());
         assert_eq!(res.families.len(), 1, "{:?}", res.families);
-        assert!(res.certified);
+        assert!(!res.certified);
+        assert!(
+            res.reason.as_deref().is_some_and(|r| r.contains("family")),
+            "{res:?}"
+        );
         let f = res.families[0];
         assert!(
             ((f.s[1] - f.s[0]).rem_euclid(4.0) - 2.0).abs() < 1e-9,
@@ -87,6 +94,7 @@ fn circles_are_families() {
         let res = antipodal(&Circle::new(r, [2.0, -1.0]).unwrap(), &Options::default()).unwrap();
         assert!(res.pairs.is_empty());
         assert_eq!(res.families.len(), 1);
+        assert!(res.certified, "{res:?}");
     }
 }
 

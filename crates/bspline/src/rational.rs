@@ -61,8 +61,14 @@ impl Rational {
             dst[d] = w[i];
             i += 1;
         });
-        // Each w·x rounds once.
-        let err = crate::rounding::UNIT_ROUNDOFF * hom.max_abs_coef();
+        // Each w·x rounds once (by half an ulp of the largest; the weights are exact, and
+        // of another size than the points: a curve of size 1e-50 has weights about 1).
+        let largest = hom
+            .coefs()
+            .chunks_exact(d + 1)
+            .flat_map(|p| &p[..d])
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        let err = crate::rounding::UNIT_ROUNDOFF * largest;
         Ok(Self {
             hom,
             rational: true,

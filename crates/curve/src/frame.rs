@@ -37,7 +37,11 @@ pub(crate) fn exact_difference(x: f64, c: f64) -> bool {
 fn axis_origin(values: &[f64]) -> f64 {
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    if !(lo.is_finite() && hi.is_finite()) || lo.abs().min(hi.abs()) < hi - lo || lo * hi <= 0.0 {
+    // (Signs compared, not multiplied: the product of two tiny data underflows to zero.)
+    if !(lo.is_finite() && hi.is_finite())
+        || lo.abs().min(hi.abs()) < hi - lo
+        || lo <= 0.0 && hi >= 0.0
+    {
         return 0.0;
     }
     let mid = 0.5 * (lo + hi);
@@ -158,7 +162,7 @@ impl Frame {
 }
 
 /// The exponent `e` with `2^e ≤ size < 2^(e+1)` (0 for a zero or non-finite size).
-fn exponent_of(size: f64) -> i32 {
+pub(crate) fn exponent_of(size: f64) -> i32 {
     if !(size.is_finite() && size > 0.0) {
         return 0;
     }
@@ -179,6 +183,30 @@ mod tests {
     use proptest::prelude::*;
 
     proptest! {
+        /// Data far from their size from the origin, at any scale (tiny data far away: the
+        /// origin moves there too): the local data are of about unit size.
+        #[test]
+        fn far_data_at_any_scale(
+            offset in prop_oneof![1e3f64..1e12, -1e12f64..-1e3],
+            k in -1000i32..1000,
+            xs in proptest::collection::vec((-1.0f64..1.0, -1.0f64..1.0), 2..20),
+        ) {
+            let scale = 2f64.powi(k);
+            let pts: Vec<[f64; 2]> = xs
+                .iter()
+                .map(|&(x, y)| [(offset + x) * scale, (y - offset) * scale])
+                .collect();
+            prop_assume!(pts.iter().flatten().all(|v| v.is_finite() && v.abs() > 1e-290));
+            let f = Frame::for_points(&pts);
+            // (The data lie a thousand spans and more from the origin.)
+            prop_assert!(f.origin()[0] != 0.0 && f.origin()[1] != 0.0, "{:?}", f);
+            for &p in &pts {
+                let (l, err) = f.to_local_checked(p);
+                prop_assert_eq!(err, 0.0, "{:?} in {:?}", p, f);
+                prop_assert!(l[0].abs() <= 4.0 && l[1].abs() <= 4.0, "{:?} in {:?}", l, f);
+            }
+        }
+
         /// Data far from the origin, of any size: the change is exact both ways, and the
         /// local data are of about unit size.
         #[test]

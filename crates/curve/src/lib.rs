@@ -7,6 +7,7 @@
 //!   files, each defined once, with their exact rational forms on the rational circle
 //!   ([`circle`]) and their view in its parameter ([`OnCircle`]).
 //! - [`Frame`]: exact changes of coordinates into a frame of about unit size near the curve.
+//! - [`exact`]: exact predicates on the data (collinear points, parallel stretches).
 //! - [`V2`], [`Jet`]: the small geometric types the algorithms share.
 //!
 //! ```
@@ -18,6 +19,7 @@
 
 pub mod circle;
 mod error;
+pub mod exact;
 mod frame;
 mod geom;
 mod on_circle;
@@ -30,4 +32,4 @@ pub use frame::Frame;
 pub use geom::{wrap_pi, Jet, V2};
 pub use on_circle::OnCircle;
 pub use param::{Exact, Local, ParamCurve, PlaneCurve};
-pub use spline::{rational_derivs, SplineCurve};
+pub use spline::{rational_derivs, SplineCurve, StraightSpan};

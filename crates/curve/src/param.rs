@@ -55,7 +55,7 @@ impl Exact<'_> {
     /// [`Frame`]), with any rounding of the change carried as error of its coefficients.
     pub fn in_frame(&self, frame: &Frame) -> Local {
         match self {
-            Exact::Spline(s) => Local::Spline(s.in_frame(frame)),
+            Exact::Spline(s) => Local::Spline(Box::new(s.in_frame(frame))),
             Exact::Shape(s) => Local::Shape(s.in_frame(frame)),
         }
     }
@@ -65,7 +65,7 @@ impl Exact<'_> {
 #[derive(Debug, Clone)]
 pub enum Local {
     /// A B-spline or NURBS curve.
-    Spline(SplineCurve),
+    Spline(Box<SplineCurve>),
     /// An analytic shape.
     Shape(Shape),
 }
@@ -74,7 +74,7 @@ impl Local {
     /// The curve as the algorithms evaluate it.
     pub fn curve(&self) -> &dyn PlaneCurve {
         match self {
-            Local::Spline(s) => s,
+            Local::Spline(s) => s.as_ref(),
             Local::Shape(s) => s,
         }
     }

@@ -406,11 +406,15 @@ impl Shape {
     }
 
     /// The shape's formula in the cosine and sine of the rational circle's angle, when it has
-    /// an exact form on that circle (all but the circle itself, whose antipodal points are one
-    /// family, and the slender lemniscates).
+    /// an exact form on that circle (all but the slender lemniscates; a circle is an ellipse
+    /// with equal axes).
     pub fn circle_shape(&self) -> Option<CircleShape> {
         match *self {
-            Shape::Circle(_) => None,
+            Shape::Circle(c) => Some(CircleShape::Ellipse {
+                a: c.r,
+                b: c.r,
+                center: c.center,
+            }),
             Shape::Ellipse(e) => Some(CircleShape::Ellipse {
                 a: e.a,
                 b: e.b,
@@ -424,6 +428,18 @@ impl Shape {
                 eps: c.eps,
                 m: c.m,
             }),
+        }
+    }
+
+    /// True when the shape is exactly a circle by its parameters (a circle, an ellipse with
+    /// equal axes): every pair of its opposite points is antipodal, one continuous family,
+    /// which no computation in rounded arithmetic can tell from a curve that is nearly a
+    /// circle.
+    pub fn is_exact_circle(&self) -> bool {
+        match *self {
+            Shape::Circle(_) => true,
+            Shape::Ellipse(e) => e.a == e.b,
+            _ => false,
         }
     }
 

@@ -1,7 +1,7 @@
 //! B-spline and NURBS plane curves.
 
 use crate::error::{Error, Result};
-use crate::frame::{exact_difference, Frame};
+use crate::frame::{exact_difference, exponent_of, Frame};
 use crate::geom::{Jet, V2};
 use crate::param::{Exact, ParamCurve, PlaneCurve};
 use bspline::rounding::UNIT_ROUNDOFF;
@@ -17,6 +17,32 @@ pub struct SplineCurve {
     periodic: Option<i32>,
     /// The homogeneous curve as Bézier pieces (fast evaluation).
     pieces: Piecewise,
+    /// The curve's data as given (Euclidean control points and weights), when it was made
+    /// from them: a frame moves the points themselves, so that a curve moved exactly is
+    /// computed exactly as the original (moving `w·x` would round differently).
+    data: Option<Data>,
+}
+
+/// A stretch of parameters on which a curve is exactly a straight segment, with two distinct
+/// points of the curve's data on its line (for exact tests of parallelism).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StraightSpan {
+    /// Where the stretch starts (a knot).
+    pub lo: f64,
+    /// Where it ends (a knot; past the domain's end for a stretch across a closed curve's
+    /// seam).
+    pub hi: f64,
+    /// A control point on the line.
+    pub from: [f64; 2],
+    /// Another control point on the line.
+    pub to: [f64; 2],
+}
+
+/// Euclidean control points and their weights.
+#[derive(Debug, Clone)]
+struct Data {
+    points: BSpline,
+    weights: Option<Vec<f64>>,
 }
 
 impl PartialEq for SplineCurve {
@@ -45,16 +71,22 @@ impl SplineCurve {
         let size = control_size(&curve);
         let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
         let closed = gap <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
-        Ok(Self::from_rational(curve, closed, None))
+        Ok(Self::from_rational(curve, closed, None, None))
     }
 
-    fn from_rational(curve: Rational, closed: bool, periodic: Option<i32>) -> Self {
+    fn from_rational(
+        curve: Rational,
+        closed: bool,
+        periodic: Option<i32>,
+        data: Option<Data>,
+    ) -> Self {
         let pieces = Piecewise::from_bspline(curve.homogeneous());
         Self {
             curve,
             closed,
             periodic,
             pieces,
+            data,
         }
     }
 
@@ -75,8 +107,17 @@ impl SplineCurve {
         // The wrapped control points repeat the first `degree` ones, weights alike.
         let wrapped: Option<Vec<f64>> =
             weights.map(|w| w.iter().chain(&w[..degree.min(w.len())]).copied().collect());
-        let curve = Rational::new(spline, wrapped.as_deref())?;
-        Ok(Self::from_rational(curve, true, Some(degree as i32 - 1)))
+        let curve = Rational::new(spline.clone(), wrapped.as_deref())?;
+        let data = Data {
+            points: spline,
+            weights: wrapped,
+        };
+        Ok(Self::from_rational(
+            curve,
+            true,
+            Some(degree as i32 - 1),
+            Some(data),
+        ))
     }
 
     /// A clamped B-spline (optionally rational) with the given knots, or uniform ones on
@@ -92,7 +133,12 @@ impl SplineCurve {
             Some(k) => BSpline::new(degree, k, 2, flat)?,
             None => BSpline::clamped_uniform(degree, 2, flat)?,
         };
-        Self::new(Rational::new(spline, weights)?)
+        let mut c = Self::new(Rational::new(spline.clone(), weights)?)?;
+        c.data = Some(Data {
+            points: spline,
+            weights: weights.map(<[f64]>::to_vec),
+        });
+        Ok(c)
     }
 
     /// The underlying rational curve.
@@ -114,6 +160,74 @@ impl SplineCurve {
             .collect()
     }
 
+    /// The stretches on which the curve is exactly straight, proven from its data: a knot
+    /// span is a straight segment when the control points that shape it are collinear
+    /// (exactly: [`crate::exact::orientation`]); neighbouring spans on one line join, across
+    /// the seam of a closed curve too. Empty for a curve given by homogeneous coefficients
+    /// (no data to prove it on).
+    ///
+    /// ```
+    /// use curve::SplineCurve;
+    /// // A quadratic with its first three control points on y = 0.1 (not a double, exactly
+    /// // the same double each time).
+    /// let pts = [[0.0, 0.1], [1.0, 0.1], [2.0, 0.1], [2.0, 1.0], [0.0, 1.0]];
+    /// let c = SplineCurve::clamped(2, &pts, None, None).unwrap();
+    /// let spans = c.straight_spans();
+    /// assert_eq!(spans.len(), 1);
+    /// assert_eq!((spans[0].lo, spans[0].hi), (0.0, 1.0 / 3.0));
+    /// ```
+    pub fn straight_spans(&self) -> Vec<StraightSpan> {
+        let Some(data) = &self.data else {
+            return Vec::new();
+        };
+        let (pts, p) = (&data.points, data.points.degree());
+        let knots = pts.knots();
+        let on_line = |from: [f64; 2], to: [f64; 2], q: [f64; 2]| {
+            crate::exact::orientation(from, to, q) == Some(std::cmp::Ordering::Equal)
+        };
+        let point = |i: usize| [pts.ctrl(i)[0], pts.ctrl(i)[1]];
+        let mut spans: Vec<StraightSpan> = Vec::new();
+        for j in p..pts.n_ctrl() {
+            let (lo, hi) = (knots[j], knots[j + 1]);
+            if hi <= lo {
+                continue;
+            }
+            let from = point(j - p);
+            // (All control points equal: the span is a point, not a segment.)
+            let Some(to) = (j - p + 1..=j).map(point).find(|&q| q != from) else {
+                continue;
+            };
+            if !(j - p + 1..=j).all(|i| on_line(from, to, point(i))) {
+                continue;
+            }
+            match spans.last_mut() {
+                Some(last)
+                    if last.hi == lo
+                        && on_line(last.from, last.to, from)
+                        && on_line(last.from, last.to, to) =>
+                {
+                    last.hi = hi;
+                }
+                _ => spans.push(StraightSpan { lo, hi, from, to }),
+            }
+        }
+        let (a, b) = self.curve.domain();
+        if self.closed && spans.len() > 1 {
+            let (first, last) = (spans[0], spans[spans.len() - 1]);
+            if first.lo == a
+                && last.hi == b
+                && on_line(last.from, last.to, first.from)
+                && on_line(last.from, last.to, first.to)
+            {
+                spans.remove(0);
+                if let Some(l) = spans.last_mut() {
+                    l.hi = first.hi + (b - a);
+                }
+            }
+        }
+        spans
+    }
+
     /// The curve's exact form in pieces, with bounds on its coefficients and its seam.
     pub fn exact_pieces(&self) -> CurvePieces {
         let pieces = homogeneous_pieces(&self.curve);
@@ -129,6 +243,46 @@ impl SplineCurve {
     /// frame chosen for its points; otherwise the rounding of `o·w` and of the difference is
     /// added to the coefficients' error bound.
     pub fn in_frame(&self, frame: &Frame) -> SplineCurve {
+        match &self.data {
+            Some(data) => self.data_in_frame(data, frame),
+            None => self.homogeneous_in_frame(frame),
+        }
+    }
+
+    /// [`SplineCurve::in_frame`] from the data: the points moved (exactly in the frame chosen
+    /// for them) and the weights scaled by a power of two, then multiplied out as given ones
+    /// are, so that the local curve of a curve moved exactly is that of the original.
+    fn data_in_frame(&self, data: &Data, frame: &Frame) -> SplineCurve {
+        let mut moved_err = 0.0f64;
+        let points = data.points.map_points(2, |p, q| {
+            let (local, err) = frame.to_local_checked([p[0], p[1]]);
+            moved_err = moved_err.max(err);
+            q.copy_from_slice(&local);
+        });
+        let weights = data.weights.as_ref().map(|w| {
+            let wmax = w.iter().fold(0.0f64, |m, &x| m.max(x));
+            let down = Frame::new([0.0, 0.0], exponent_of(wmax)).length_to_local(1.0);
+            w.iter().map(|&x| x * down).collect::<Vec<f64>>()
+        });
+        let curve = match Rational::new(points.clone(), weights.as_deref()) {
+            Ok(c) if moved_err == 0.0 => c,
+            Ok(c) => {
+                // A moved point off by δ moves its homogeneous point by w·δ (w ≤ 2 scaled).
+                let err = c.coefficient_error() + 2.0 * moved_err;
+                match Rational::from_homogeneous_with_error(c.homogeneous().clone(), err) {
+                    Ok(c) => c,
+                    Err(_) => return self.homogeneous_in_frame(frame),
+                }
+            }
+            // (Scaled weights stay positive unless they underflow.)
+            Err(_) => return self.homogeneous_in_frame(frame),
+        };
+        let data = Data { points, weights };
+        Self::from_rational(curve, self.closed, self.periodic, Some(data))
+    }
+
+    /// [`SplineCurve::in_frame`] from the homogeneous coefficients (a curve given by them).
+    fn homogeneous_in_frame(&self, frame: &Frame) -> SplineCurve {
         let h = self.curve.homogeneous();
         let o = frame.origin();
         let down = frame.length_to_local(1.0);
@@ -136,8 +290,7 @@ impl SplineCurve {
             .coefs()
             .chunks_exact(3)
             .fold(0.0f64, |m, p| m.max(p[2].abs()));
-        let wscale = Frame::new([0.0, 0.0], Frame::for_points(&[[wmax, 0.0]]).exponent())
-            .length_to_local(1.0);
+        let wscale = Frame::new([0.0, 0.0], exponent_of(wmax)).length_to_local(1.0);
         // The error of each new coordinate, before scaling (the scalings by powers of two are
         // exact): none where `X − o·w` is exact, else the rounding of `o·w` and of the
         // difference.
@@ -162,7 +315,7 @@ impl SplineCurve {
             // (A positive weight stays positive scaled by a power of two.)
             Err(_) => return self.clone(),
         };
-        Self::from_rational(curve, self.closed, self.periodic)
+        Self::from_rational(curve, self.closed, self.periodic, None)
     }
 }
 

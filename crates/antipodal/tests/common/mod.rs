@@ -4,6 +4,16 @@
 
 use antipodal::{Jet, PlaneCurve, V2};
 
+/// Proptest cases: `n`, scaled by the environment variable `CURVEKIT_CASES_SCALE` (a longer
+/// run before a release: `CURVEKIT_CASES_SCALE=10`).
+pub fn cases(n: u32) -> u32 {
+    let scale: f64 = std::env::var("CURVEKIT_CASES_SCALE")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1.0);
+    ((n as f64 * scale).round() as u32).max(1)
+}
+
 pub fn jets(c: &dyn PlaneCurve, n: usize) -> (Vec<f64>, Vec<Jet>) {
     let (a, b) = c.domain();
     let us: Vec<f64> = (0..n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
@@ -162,6 +172,12 @@ pub fn inflection_oracle(c: &dyn PlaneCurve, n: usize) -> Vec<f64> {
             let z = 0.5 * (lo + hi);
             out.push(if z >= b { a } else { z });
         }
+    }
+    // A jump of the curvature's sign at the seam of a closed curve (a quadratic spline's
+    // curvature jumps at every knot): the end's value is the limit from the left.
+    let (k_end, k_start) = (k(&c.jet(b)), k(&js[0]));
+    if c.is_closed() && (k_end > 0.0) != (k_start > 0.0) && !out.contains(&a) {
+        out.push(a);
     }
     out
 }

@@ -29,6 +29,15 @@ pub fn cross_sign(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<
         return None;
     }
     let (ux, uy, vx, vy) = (b[0] - a[0], b[1] - a[1], d[0] - c[0], d[1] - c[1]);
+    // (A difference of doubles is zero exactly when they are equal: a zero direction is
+    // parallel to any, without the exact path.)
+    if (ux == 0.0 && uy == 0.0) || (vx == 0.0 && vy == 0.0) {
+        return Some(Ordering::Equal);
+    }
+    // (Nor the same pair of points twice.)
+    if a == c && b == d {
+        return Some(Ordering::Equal);
+    }
     let (left, right) = (ux * vy, uy * vx);
     let det = left - right;
     // Each difference is within UNIT of its value, each product within 3 UNIT (and the
@@ -38,6 +47,9 @@ pub fn cross_sign(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<
     let bound = 8.0 * UNIT * (left.abs() + right.abs());
     if det.abs() > bound && bound > f64::MIN_POSITIVE {
         return det.partial_cmp(&0.0);
+    }
+    if let Some(sign) = exact_by_expansion(a, b, c, d) {
+        return Some(sign);
     }
     let q = |x: f64| BigRational::from_float(x);
     let (ax, ay, bx, by) = (q(a[0])?, q(a[1])?, q(b[0])?, q(b[1])?);
@@ -50,6 +62,58 @@ pub fn cross_sign(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<
     } else {
         Ordering::Less
     })
+}
+
+/// `(x + y, error)` with `x + y = sum + error` exactly (Knuth's two-sum).
+fn two_sum(x: f64, y: f64) -> (f64, f64) {
+    let sum = x + y;
+    let v = sum - x;
+    (sum, (x - (sum - v)) + (y - v))
+}
+
+/// Products whose fused rounding error is exact (no underflow of the error term) and that
+/// do not overflow: the expansion path's range.
+const EXPANSION_RANGE: (f64, f64) = (1e-280, 1e280);
+
+/// The sign of `(b − a) × (d − c)` in double arithmetic without rounding, where the four
+/// differences are exact (as for coordinates within a factor two of each other, or on a
+/// common grid): each product as a value and its exact error (a fused multiply-add), the
+/// four terms summed into a non-overlapping expansion (Shewchuk), whose largest component
+/// has the sum's sign. `None` where a difference rounds or a product leaves the range in
+/// which its error is exact.
+fn exact_by_expansion(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<Ordering> {
+    let diff = |x: f64, y: f64| match two_sum(x, -y) {
+        (v, 0.0) => Some(v),
+        _ => None,
+    };
+    let (ux, uy) = (diff(b[0], a[0])?, diff(b[1], a[1])?);
+    let (vx, vy) = (diff(d[0], c[0])?, diff(d[1], c[1])?);
+    let product = |x: f64, y: f64| {
+        let p = x * y;
+        // (A zero product is exact only from a zero factor: underflow gives zeros too.)
+        let fine =
+            x == 0.0 || y == 0.0 || (EXPANSION_RANGE.0..EXPANSION_RANGE.1).contains(&p.abs());
+        fine.then(|| (p, x.mul_add(y, -p)))
+    };
+    let ((p1, e1), (p2, e2)) = (product(ux, vy)?, product(uy, vx)?);
+    // Grow the expansion one term at a time: each two-sum passes the rounding error down.
+    let mut expansion: Vec<f64> = Vec::with_capacity(4);
+    for term in [e1, -e2, p1, -p2] {
+        let mut q = term;
+        for h in expansion.iter_mut() {
+            let (sum, err) = two_sum(q, *h);
+            *h = err;
+            q = sum;
+        }
+        expansion.push(q);
+    }
+    let top = expansion
+        .iter()
+        .rev()
+        .find(|&&x| x != 0.0)
+        .copied()
+        .unwrap_or(0.0);
+    top.partial_cmp(&0.0)
 }
 
 /// The orientation of the triangle `a, b, c`: `Greater` counterclockwise, `Less` clockwise,
@@ -97,6 +161,9 @@ mod tests {
             if nudge == 1 { d_near[0] = f64::from_bits(d_near[0].to_bits() + 1); }
             for d in [d_random, d_near] {
                 prop_assert_eq!(cross_sign(a, b, c, d), Some(rational(a, b, c, d)));
+                if let Some(sign) = exact_by_expansion(a, b, c, d) {
+                    prop_assert_eq!(sign, rational(a, b, c, d));
+                }
             }
             // Exactly parallel: points on a grid (their differences exact) and a whole
             // multiple of one difference.
@@ -106,6 +173,14 @@ mod tests {
             let d = [c[0] + m * (b[0] - a[0]), c[1] + m * (b[1] - a[1])];
             prop_assert_eq!(cross_sign(a, b, c, d), Some(Ordering::Equal));
             prop_assert_eq!(rational(a, b, c, d), Ordering::Equal);
+            // On the grid the differences are exact: the expansion decides.
+            let mut off = d;
+            off[nudge % 2] = f64::from_bits(off[nudge % 2].to_bits() + 1);
+            // (It declines where a difference rounds, as one ulp off may, or a product leaves
+            // its range.)
+            prop_assert_eq!(exact_by_expansion(a, b, c, d), Some(Ordering::Equal));
+            let by_expansion = exact_by_expansion(a, b, c, off);
+            prop_assert!(by_expansion.is_none_or(|e| e == rational(a, b, c, off)));
         }
     }
 

@@ -197,7 +197,10 @@ impl SplineCurve {
             let Some(to) = (j - p + 1..=j).map(point).find(|&q| q != from) else {
                 continue;
             };
-            if !(j - p + 1..=j).all(|i| on_line(from, to, point(i))) {
+            if !(j - p + 1..=j).all(|i| {
+                let q = point(i);
+                q == from || q == to || on_line(from, to, q)
+            }) {
                 continue;
             }
             match spans.last_mut() {

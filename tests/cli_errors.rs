@@ -14,6 +14,7 @@ const BAD: &[(&str, &str)] = &[
     ("degree_not_integer.json", "degree"),
     ("degree_too_high.json", "degree"),
     ("degree_zero.json", "degree"),
+    ("duplicate_field.json", "r"),
     ("ellipse_negative.json", "a"),
     ("empty.json", "document"),
     ("eps_out_of_range.json", "eps"),
@@ -111,8 +112,37 @@ fn usage_errors_are_one_line_exit_2() {
     for tol in ["-1", "0", "abc", "inf", "NaN"] {
         assert_usage_error(&["inflections", &good, "--tol", tol], &["--tol"]);
     }
-    // Accepted by the parser but not by the antipodal algorithms: still a usage error.
-    assert_usage_error(&["antipodal", &good, "--tol", "0.5"], &["--tol"]);
+    // Accepted by the parser but not by the algorithms (outside what they can deliver):
+    // still a usage error, saying the range.
+    for tol in ["0.5", "1e-3", "1e-16", "1e-300"] {
+        for command in ["antipodal", "inflections"] {
+            assert_usage_error(
+                &[command, &good, "--tol", tol],
+                &["--tol", "must be at least 1e-15"],
+            );
+        }
+        let both = [good.as_str(), good.as_str()];
+        assert_usage_error(
+            &["tangents", both[0], both[1], "--tol", tol],
+            &["--tol", "1e-15"],
+        );
+        assert_usage_error(&["demo", "--tol", tol], &["--tol", "1e-15"]);
+    }
+    let spline = fixture("periodic_cubic.json");
+    for chord in ["1e-12", "0.75", "5"] {
+        // (Spelled as on the command line.)
+        assert_usage_error(
+            &["bisector", &spline, "--chord-tol", chord],
+            &["--chord-tol: ", "1e-9"],
+        );
+    }
+    // Options are checked before any file is read.
+    let missing = "no/such/file.json";
+    assert_usage_error(&["antipodal", missing, "--tol", "0.5"], &["--tol"]);
+    assert_usage_error(
+        &["bisector", missing, "--chord-tol", "1e-12"],
+        &["--chord-tol"],
+    );
 }
 
 #[test]

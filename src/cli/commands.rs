@@ -7,6 +7,7 @@ use curvekit::svg::Figure;
 use std::path::Path;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
+    common.validate()?;
     let curve = read_curve(path)?;
     let plane = curve.plane_curve();
     let opts = common.options();
@@ -39,6 +40,7 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
 }
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
+    common.validate()?;
     let curve = read_curve(path)?;
     let plane = curve.plane_curve();
     let opts = common.options();
@@ -69,6 +71,7 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
 }
 
 pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Result<(), Failure> {
+    common.validate()?;
     let (c1, c2) = (read_curve(path1)?, read_curve(path2)?);
     let both = [&c1, &c2];
     let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
@@ -106,10 +109,11 @@ pub(super) fn run_bisector(
     args: &BisectorArgs,
     common: &Common,
 ) -> Result<(), Failure> {
+    let opts = args.options(common.tol);
+    opts.validate().map_err(zeroset_failure)?;
     let c1 = read_curve(path1)?;
     let c2 = path2.map(read_curve).transpose()?;
     let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
-    let opts = args.options(common.tol);
     let r1 = spline_of(&c1)?;
     let r2 = c2.as_ref().map(spline_of).transpose()?;
     let compute = || match r2 {
@@ -132,7 +136,12 @@ pub(super) fn run_bisector(
 fn zeroset_failure(e: zeroset::Error) -> Failure {
     match e {
         zeroset::Error::BadOption { field, value, why } => {
-            Failure::Usage(format!("--{field}: {value} is invalid: {why}"))
+            // (The library's field names, as the command line spells them.)
+            let flag = field.replace('_', "-");
+            Failure::Usage(format!(
+                "--{flag}: {} is out of range: {why}",
+                number(value)
+            ))
         }
         e => Failure::Other(format!("bisector: {e}")),
     }
@@ -157,9 +166,11 @@ fn spline_of(c: &Curve) -> Result<&bspline::Rational, Failure> {
 pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failure {
     use antipodal::Error as E;
     match e {
-        E::InvalidOption { field, value } => Failure::Usage(format!(
-            "--{field}: {value} is not accepted by the antipodal algorithms"
-        )),
+        E::InvalidOption {
+            field,
+            value,
+            expected,
+        } => Failure::Usage(format!("--{field}: {value} is out of range: {expected}")),
         E::NotClosed { .. }
         | E::Cusp { .. }
         | E::Corner { .. }
@@ -195,5 +206,16 @@ fn blame<'c>(curves: &[&'c Curve]) -> Option<&'c Curve> {
     match curves {
         [first, second, ..] if !refused(first) => Some(second),
         _ => curves.first().copied(),
+    }
+}
+
+/// A number as a user would write it: the shorter of the plain and the scientific notation
+/// (`1e-12`, not `0.000000000001`).
+fn number(x: f64) -> String {
+    let (plain, scientific) = (format!("{x}"), format!("{x:e}"));
+    if scientific.len() < plain.len() {
+        scientific
+    } else {
+        plain
     }
 }

@@ -98,6 +98,7 @@ struct BisectorRow {
 }
 
 pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
+    common.validate()?;
     if common.svg.is_some() {
         return Err(Failure::Usage(
             "--svg: demo writes one figure per example into --out DIR instead".into(),

@@ -128,6 +128,13 @@ impl Common {
     pub(crate) fn options(&self) -> antipodal::Options {
         antipodal::Options::default().tolerance(self.tol)
     }
+
+    /// Checks the options before any file is read (a usage error comes first).
+    pub(crate) fn validate(&self) -> Result<(), Failure> {
+        self.options()
+            .validate()
+            .map_err(|e| commands::antipodal_failure(e, &[]))
+    }
 }
 
 fn parse_tol(s: &str) -> Result<f64, String> {

@@ -46,6 +46,9 @@ pub enum Problem {
     /// A required field is absent.
     #[error("missing required field")]
     Missing,
+    /// A field given twice (JSON parsers differ on which one counts: none is taken).
+    #[error("given more than once")]
+    Duplicate,
     /// A field that the kind does not have (a typo, most likely).
     #[error("unknown field for kind `{kind}` (allowed: {allowed})")]
     UnknownField {
@@ -248,11 +251,43 @@ pub fn parse_curve(file: &str, text: &str) -> Result<Curve, CurveFileError> {
             },
         ));
     };
+    if let Some(key) = duplicate_key(text) {
+        return Err(err(&key, Problem::Duplicate));
+    }
     let shape = parse_shape(&map).map_err(|(field, problem)| err(&field, problem))?;
     Ok(Curve {
         file: file.to_string(),
         shape,
     })
+}
+
+/// The first key the top-level object of `text` (valid JSON) gives twice, if any. (serde_json
+/// keeps the last silently; another reader may keep the first and compute another curve.)
+fn duplicate_key(text: &str) -> Option<String> {
+    struct Keys(Option<String>);
+    impl<'de> serde::Deserialize<'de> for Keys {
+        fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            d.deserialize_map(Keys(None))
+        }
+    }
+    impl<'de> serde::de::Visitor<'de> for Keys {
+        type Value = Keys;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("a JSON object")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Keys, A::Error> {
+            let (mut seen, mut twice) = (std::collections::HashSet::new(), None);
+            // (The whole object is read: the parser checks its end.)
+            while let Some(key) = map.next_key::<String>()? {
+                map.next_value::<serde::de::IgnoredAny>()?;
+                if !seen.insert(key.clone()) && twice.is_none() {
+                    twice = Some(key);
+                }
+            }
+            Ok(Keys(twice))
+        }
+    }
+    serde_json::from_str::<Keys>(text).ok().and_then(|k| k.0)
 }
 
 /// An error before the file name is attached: (field, problem).

@@ -11,13 +11,15 @@ pub enum Error {
     /// The curve cannot be made (an analytic shape's parameter out of range).
     #[error(transparent)]
     Curve(#[from] curve::Error),
-    /// An option is out of range.
-    #[error("option {field} = {value} is invalid")]
+    /// An option is out of the range the algorithms can deliver.
+    #[error("option {field} = {value} is out of range: {expected}")]
     InvalidOption {
         /// The option.
         field: &'static str,
         /// Its value.
         value: f64,
+        /// What it must be.
+        expected: &'static str,
     },
     /// The curve oscillates more than the sampled search is bounded to resolve (an analytic
     /// shape with many lobes).

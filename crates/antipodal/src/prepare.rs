@@ -117,6 +117,8 @@ impl<'c> Prepared<'c> {
         opts: &Options,
         run: impl Fn(Source<'_>) -> Result<T>,
     ) -> Result<T> {
+        // (Options first: a usage error is reported before anything about the curve.)
+        opts.validate()?;
         // A shape refused as singular by the sampled search hit its bound on samples.
         let sampled = || {
             run(self.source(false)).map_err(|e| match e {
@@ -167,6 +169,7 @@ impl<'c> Prepared<'c> {
     /// Every line tangent to this curve and `other` (Jia §2.5), in one frame for both (see
     /// [`prepare_pair`]; a curve prepared in another frame is prepared again in this one's).
     pub fn common_tangents(&self, other: &Prepared<'_>, opts: &Options) -> Result<Tangents> {
+        opts.validate()?;
         let again;
         let other = if other.frame == self.frame {
             other

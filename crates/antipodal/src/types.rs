@@ -14,6 +14,14 @@ pub struct Options {
     pub max_sections: usize,
 }
 
+/// The finest parameter tolerance (relative to the domain's length): a few units of rounding
+/// of a parameter. (Brackets are as narrow as the tolerance or as the rounding of the sign
+/// tests allows, whichever is wider.)
+const MIN_TOL: f64 = 1e-15;
+/// The coarsest: brackets wider than this merge distinct pairs and inflections of ordinary
+/// curves.
+const MAX_TOL: f64 = 1e-3;
+
 impl Default for Options {
     fn default() -> Self {
         Self {
@@ -35,11 +43,29 @@ impl Options {
         self.certify = on;
         self
     }
-    pub(crate) fn validate(&self) -> Result<()> {
-        if !(self.tol.is_finite() && self.tol > 0.0 && self.tol < 1e-3) {
+    /// Checks the options against what the algorithms can deliver (every entry point checks
+    /// them too): the tolerance in `[1e-15, 1e-3)`, at least one section.
+    ///
+    /// ```
+    /// use antipodal::Options;
+    /// assert!(Options::default().validate().is_ok());
+    /// assert!(Options::default().tolerance(1e-20).validate().is_err());
+    /// ```
+    pub fn validate(&self) -> Result<()> {
+        if !(self.tol.is_finite() && (MIN_TOL..MAX_TOL).contains(&self.tol)) {
             return Err(Error::InvalidOption {
                 field: "tol",
                 value: self.tol,
+                expected:
+                    "must be at least 1e-15 (what double precision resolves of a domain) and \
+                           below 1e-3 (coarser brackets merge the pairs of a curve)",
+            });
+        }
+        if self.max_sections == 0 {
+            return Err(Error::InvalidOption {
+                field: "max_sections",
+                value: 0.0,
+                expected: "must be at least 1",
             });
         }
         Ok(())

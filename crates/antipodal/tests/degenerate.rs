@@ -316,3 +316,45 @@ fn slender_ellipses_keep_both_axis_pairs() {
     // Ratios up to 1e12 at least are within reach (the reported regression).
     assert!(certified_runs >= 5 * 6, "{certified_runs}");
 }
+
+/// A curve of any size in the range of doubles, subnormal coordinates included (their frame
+/// scales them up by more than one power of two can say): the same pairs and inflections,
+/// certified, at the same parameters (to the rounding the subnormal data cost).
+#[test]
+fn curves_of_extreme_size() {
+    let pts = [
+        [2.0, 0.0],
+        [1.2, 0.9],
+        [0.6, 1.9],
+        [-0.5, 1.1],
+        [-1.8, 1.6],
+        [-1.4, 0.1],
+        [-2.1, -1.2],
+        [-0.7, -0.8],
+        [0.1, -1.9],
+        [1.1, -0.7],
+    ];
+    let base = antipodal(
+        &SplineCurve::periodic(3, &pts, None).unwrap(),
+        &Options::default(),
+    )
+    .unwrap();
+    assert!(base.certified && base.pairs.len() == 12 && base.inflections.len() == 10);
+    for size in [1e-310, 1e-300, 1e-150, 1e150, 4e307] {
+        let scaled: Vec<[f64; 2]> = pts.iter().map(|p| [p[0] * size, p[1] * size]).collect();
+        let r = antipodal(
+            &SplineCurve::periodic(3, &scaled, None).unwrap(),
+            &Options::default(),
+        )
+        .unwrap();
+        assert!(r.certified, "size {size}: {:?}", r.reason);
+        assert_eq!(r.pairs.len(), base.pairs.len(), "size {size}");
+        assert_eq!(r.inflections.len(), base.inflections.len(), "size {size}");
+        for (p, q) in r.pairs.iter().zip(&base.pairs) {
+            assert!(
+                (p.s - q.s).abs() < 1e-6 && (p.t - q.t).abs() < 1e-6,
+                "size {size}"
+            );
+        }
+    }
+}

@@ -24,6 +24,23 @@ fn pow2(e: i32) -> f64 {
     }
 }
 
+/// `x · 2^e`, in steps that each stay in the normal range of the factor (a subnormal datum
+/// scaled up by 2^1030 overflows the factor, not the result), exact unless the result
+/// underflows or overflows.
+pub(crate) fn times_pow2(x: f64, e: i32) -> f64 {
+    let (mut x, mut e) = (x, e);
+    // (Three steps cover every exponent a finite double and its scale can have.)
+    for _ in 0..3 {
+        let step = e.clamp(-1022, 1023);
+        x *= pow2(step);
+        e -= step;
+        if e == 0 {
+            break;
+        }
+    }
+    x
+}
+
 /// `x − c` is a double (checked by the error term of the two-sum, which is zero exactly then).
 pub(crate) fn exact_difference(x: f64, c: f64) -> bool {
     let s = x - c;
@@ -123,24 +140,23 @@ impl Frame {
 
     /// A global length in local units (exact but for underflow below the normal range).
     pub fn length_to_local(&self, d: f64) -> f64 {
-        d * pow2(-self.exponent)
+        times_pow2(d, -self.exponent)
     }
 
     /// A local length in global units (exact but for overflow and underflow).
     pub fn length_to_global(&self, d: f64) -> f64 {
-        d * pow2(self.exponent)
+        times_pow2(d, self.exponent)
     }
 
     /// A global point in local coordinates, and the bound on the error of that change (zero
     /// where the difference and the scaling are exact, as for the data the frame was chosen
     /// for; otherwise what they rounded).
     pub fn to_local_checked(&self, p: [f64; 2]) -> ([f64; 2], f64) {
-        let down = pow2(-self.exponent);
         let mut err = 0.0f64;
         let local = [0, 1].map(|k| {
             let d = p[k] - self.origin[k];
-            let x = d * down;
-            if !exact_difference(p[k], self.origin[k]) || x * pow2(self.exponent) != d {
+            let x = times_pow2(d, -self.exponent);
+            if !exact_difference(p[k], self.origin[k]) || times_pow2(x, self.exponent) != d {
                 // At most half an ulp of the difference (or of the subnormal result).
                 err = err.max(f64::EPSILON * x.abs() + f64::MIN_POSITIVE * f64::EPSILON);
             }
@@ -156,8 +172,10 @@ impl Frame {
 
     /// A local point in global coordinates (rounded once, by adding the origin).
     pub fn to_global(&self, p: [f64; 2]) -> [f64; 2] {
-        let up = pow2(self.exponent);
-        [self.origin[0] + p[0] * up, self.origin[1] + p[1] * up]
+        [
+            self.origin[0] + times_pow2(p[0], self.exponent),
+            self.origin[1] + times_pow2(p[1], self.exponent),
+        ]
     }
 }
 
@@ -212,7 +230,7 @@ mod tests {
         #[test]
         fn changes_are_exact(
             offset in prop_oneof![Just(0.0), -1e12f64..1e12, Just(3e15), Just(-7.5e7)],
-            log_size in -300.0f64..300.0,
+            log_size in -320.0f64..300.0,
             xs in proptest::collection::vec((-1.0f64..1.0, -1.0f64..1.0), 2..20),
         ) {
             let size = 10f64.powf(log_size);
@@ -225,6 +243,20 @@ mod tests {
                 prop_assert!(l[0].abs() <= 4.0 && l[1].abs() <= 4.0, "{:?}", l);
             }
         }
+    }
+
+    /// Scaling by powers of two beyond one factor's range (subnormal data scaled up by
+    /// 2^1030, the largest doubles down by 2^-1023 and back) is exact.
+    #[test]
+    fn far_powers_of_two() {
+        for x in [5e-324, 1e-310, 3.3e-308, 1.0, 1.7e308] {
+            let e = -exponent_of(x);
+            let y = times_pow2(x, e);
+            assert!((1.0..2.0).contains(&y), "{x} -> {y}");
+            assert_eq!(times_pow2(y, -e), x);
+        }
+        assert_eq!(times_pow2(1.0, -1074), 5e-324);
+        assert_eq!(times_pow2(1.0, 2000), f64::INFINITY);
     }
 
     #[test]

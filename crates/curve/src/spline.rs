@@ -288,7 +288,6 @@ impl SplineCurve {
     fn homogeneous_in_frame(&self, frame: &Frame) -> SplineCurve {
         let h = self.curve.homogeneous();
         let o = frame.origin();
-        let down = frame.length_to_local(1.0);
         let wmax = h
             .coefs()
             .chunks_exact(3)
@@ -307,12 +306,12 @@ impl SplineCurve {
                 if !exact {
                     extra = extra.max(UNIT_ROUNDOFF * (ow.abs() + d.abs()));
                 }
-                q[k] = d * down * wscale;
+                q[k] = frame.length_to_local(d) * wscale;
             }
             q[2] = w * wscale;
         });
-        let extra = extra * down * wscale;
-        let err = self.curve.coefficient_error() * down * wscale + extra;
+        let extra = frame.length_to_local(extra) * wscale;
+        let err = frame.length_to_local(self.curve.coefficient_error()) * wscale + extra;
         let curve = match Rational::from_homogeneous_with_error(local, err) {
             Ok(c) => c,
             // (A positive weight stays positive scaled by a power of two.)

@@ -245,13 +245,30 @@ fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
 }
 
 fn check(opts: &BisectorOptions) -> Result<ZeroSetOptions> {
-    let z = ZeroSetOptions {
+    opts.validate()?;
+    Ok(zero_set_options(opts))
+}
+
+fn zero_set_options(opts: &BisectorOptions) -> ZeroSetOptions {
+    ZeroSetOptions {
         tol: opts.tol,
         chord_tol: opts.chord_tol,
         max_patches: opts.max_patches,
-    };
-    z.check()?;
-    Ok(z)
+    }
+}
+
+impl BisectorOptions {
+    /// Checks the options against what the computation can deliver (the bisector functions
+    /// check them too): the parameter tolerance in `[1e-15, 1e-3)`, the chord tolerance in
+    /// `[1e-9, 0.5]`.
+    ///
+    /// ```
+    /// let opts = zeroset::BisectorOptions { chord_tol: 1e-12, ..Default::default() };
+    /// assert!(opts.validate().is_err());
+    /// ```
+    pub fn validate(&self) -> Result<()> {
+        zero_set_options(self).check()
+    }
 }
 
 /// Context shared by the two entry points.

@@ -30,6 +30,17 @@ impl Default for ZeroSetOptions {
     }
 }
 
+/// The finest parameter tolerance (relative to the domain): a few units of rounding.
+const MIN_TOL: f64 = 1e-15;
+/// The coarsest: coarser brackets merge the features of ordinary curves.
+const MAX_TOL: f64 = 1e-3;
+/// The finest chord tolerance (relative to the size): a bisector's polyline within 1e-9 of it
+/// has up to a few hundred thousand vertices on the papers' figures; within 1e-11, millions
+/// (and gigabytes), closer than its vertices are computed.
+const MIN_CHORD_TOL: f64 = 1e-9;
+/// The coarsest: a polyline half the size away from the curve it stands for.
+const MAX_CHORD_TOL: f64 = 0.5;
+
 impl ZeroSetOptions {
     /// Sets the parameter tolerance.
     pub fn tolerance(mut self, tol: f64) -> Self {
@@ -43,16 +54,23 @@ impl ZeroSetOptions {
     }
 
     pub(crate) fn check(&self) -> Result<()> {
-        let bad = |field, value: f64| Error::BadOption {
-            field,
-            value,
-            why: "must be finite, > 0 and < 1",
-        };
-        if !(self.tol.is_finite() && self.tol > 0.0 && self.tol < 1.0) {
-            return Err(bad("tol", self.tol));
+        if !(self.tol.is_finite() && (MIN_TOL..MAX_TOL).contains(&self.tol)) {
+            return Err(Error::BadOption {
+                field: "tol",
+                value: self.tol,
+                why: "must be at least 1e-15 (what double precision resolves of a domain) and \
+                      below 1e-3",
+            });
         }
-        if !(self.chord_tol.is_finite() && self.chord_tol > 0.0 && self.chord_tol < 1.0) {
-            return Err(bad("chord_tol", self.chord_tol));
+        if !(self.chord_tol.is_finite()
+            && (MIN_CHORD_TOL..=MAX_CHORD_TOL).contains(&self.chord_tol))
+        {
+            return Err(Error::BadOption {
+                field: "chord_tol",
+                value: self.chord_tol,
+                why: "must be at least 1e-9 (finer polylines run to millions of points, past \
+                      the accuracy of their vertices) and at most 0.5",
+            });
         }
         Ok(())
     }

@@ -648,9 +648,14 @@ impl BoundForms {
         // A stretch within one fine piece may be short enough for its own models to matter;
         // one across several reads cells at its ends.
         let pw = &self.curvature.pw;
-        let ends = (pw.piece_at(lo), pw.piece_at(hi));
-        let within_one = ends.0 == ends.1;
-        for (i, x0, x1) in pw.overlaps(lo, hi) {
+        // (A stretch ending on a break lies within the piece before it: the next one's
+        // empty overlap is no part of it.)
+        let overlaps = || {
+            pw.overlaps(lo, hi)
+                .filter(move |&(_, x0, x1)| x1 > x0 || lo == hi)
+        };
+        let within_one = overlaps().nth(1).is_none();
+        for (i, x0, x1) in overlaps() {
             let (a, b) = pw.piece_span(i);
             let (kappa, v) = if x0 <= a && x1 >= b {
                 self.covered[i]?
@@ -661,7 +666,13 @@ impl BoundForms {
                     // Within two cells: the stretch's own models are tighter.
                     self.partial(i, x0, x1)?
                 } else {
-                    self.cells_range(i, c0, c1)?
+                    // Where a cell proves nothing (the speed varying by orders of magnitude
+                    // across it, as at a slender ellipse's vertex), the overlap's own models
+                    // may.
+                    match self.cells_range(i, c0, c1) {
+                        Some(r) => r,
+                        None => self.partial(i, x0, x1)?,
+                    }
                 }
             };
             speed = speed.max(v);

@@ -39,6 +39,8 @@ pub(crate) enum Doubt {
     NotAPair,
     /// Neither sign of θ could be proven at a section's cut.
     SectionUndecided,
+    /// A stretch beside a found pair skipped by Table 1's ε, not proven free of pairs.
+    EpsilonCut,
     /// A stretch of nearly constant width, whose pairs are found by sampling its width.
     ConstantWidth,
     /// The two curves touch or overlap within rounding where their common tangents are
@@ -91,6 +93,10 @@ impl Doubt {
             }
             Doubt::NotAPair => "a point found as a pair is none beyond rounding (dropped)",
             Doubt::SectionUndecided => "the sign of theta at a section's cut is within rounding",
+            Doubt::EpsilonCut => {
+                "a stretch beside a found pair was skipped by Jia's epsilon without a proof \
+                 that it holds no other pair"
+            }
             Doubt::ConstantWidth => {
                 "a stretch of nearly constant width: its pairs are found by sampling its width"
             }

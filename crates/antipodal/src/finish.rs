@@ -272,18 +272,36 @@ fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<bool> {
     if (h0 < 0.0) != (h1 < 0.0) {
         return None;
     }
-    // The arc of T is t(J) only if the ends are opposite points indeed (near an inflection
-    // at an end of T the opposite point is ill-conditioned): checked, and padded by a few
-    // tolerances inside T for the rounding of the solve.
+    // The arc of T is t(J) only if the ends are opposite points indeed, to the padding of
+    // T's arc (a few tolerances, for the rounding of the solve): the normal of T, which turns
+    // one way on its piece, passes the direction opposite to S's within the padding of the
+    // solved point. (An angle below 1e-9 did not say so where T is nearly straight, and
+    // refused the solved points at a slender ellipse's vertex, where it turns fast.)
+    let (tl, th) = p.t_range();
+    let pad = 64.0 * p.vt.tol;
     let opposite = |s: f64, t: f64| {
-        let (ns, nt) = (p.vs.normal(s), p.vt.normal(t));
-        ns.dot(nt) < 0.0 && ns.cross(nt).abs() <= 1e-9
+        let (ns, jt) = (p.vs.normal(s), p.vt.jet_to(t, 2));
+        let nt = jt.normal();
+        if ns.dot(nt) >= 0.0 {
+            return false;
+        }
+        let c = ns.cross(nt);
+        let side = |u: f64| ns.cross(p.vt.normal(u.clamp(tl, th)));
+        // At an end of T's piece the arc stops there: the exact opposite point must lie
+        // within the padding on the piece's side (at an inflection, where T's normal stands
+        // still, the angle is mere rounding).
+        if t == tl || t == th {
+            let inward = if t == tl { t + pad } else { t - pad };
+            return c.abs() <= PIECE_END_OPPOSITE || c * side(inward) <= 0.0;
+        }
+        // (Where the angle left is a small part of what the normal turns over the padding,
+        // the solved point is well inside it; else the signs at the padding's ends decide.)
+        let turn = (jt.curvature() * jt.d1.norm()).abs() * pad;
+        c.abs() <= OPPOSITE_INSIDE * turn || side(t - pad) * side(t + pad) <= 0.0
     };
     if !opposite(s0, t0) || !opposite(s1, t1) {
         return None;
     }
-    let (tl, th) = p.t_range();
-    let pad = 64.0 * p.vt.tol;
     let bt = p.vt.arc_bounds_padded(t0, t1, pad, (tl, th));
     let (Some(bs), Some(bt)) = (p.vs.arc_bounds(s0, s1), bt) else {
         return None;
@@ -501,8 +519,30 @@ fn turning_at(p: &Pair, s: f64, t: f64) -> Option<f64> {
     let c_r = js.normal().dot(r) / r.dot(r);
     let (ks, kt) = (js.curvature(), jt.curvature());
     let h = ks * (c_r - kt) + kt * c_r;
-    (h.abs() > 1e-9 * c_r * c_r).then_some(h)
+    // Clear of the cancellation among its terms, and of the curvatures' own noise, which is
+    // that of C′ × C″ against |C′||C″| (at inflections opposite each other h is all noise).
+    // (An absolute floor of 1e-9 / |r|² hid the sign at a slender ellipse's minor axis,
+    // where both curvatures are 1e-12 of 1 / |r| and exact to rounding.)
+    let terms = (ks * c_r).abs() + (ks * kt).abs() + (kt * c_r).abs();
+    let noise = |j: &curve::Jet| j.d2.norm() / j.d1.dot(j.d1);
+    let h_noise = noise(&js) * (c_r - kt).abs() + noise(&jt) * (ks.abs() + c_r.abs());
+    (h.abs() > TURNING_CLEAR * terms && h.abs() > TURNING_CLEAR * h_noise).then_some(h)
 }
+
+/// The part of the normal's turn over the padding of a solved opposite point that the angle
+/// left between the normals may be for the exact opposite point to lie well inside the
+/// padding without checking its ends (the turn rate varies little across it).
+const OPPOSITE_INSIDE: f64 = 0.1;
+
+/// The angle between the normals at the ends of a section that pair a piece's end of T
+/// with its solved opposite point on S: rounding of the solve, far below any turn that
+/// matters.
+const PIECE_END_OPPOSITE: f64 = 1e-9;
+
+/// How far the turning rate at an end must stand clear of the cancellation among its terms
+/// and of the curvatures' noise for its sign to be taken (a cheap filter ahead of the
+/// bounds, which prove the sign; about 10⁷ roundings).
+const TURNING_CLEAR: f64 = 1e-9;
 
 #[cfg(test)]
 pub(crate) mod tests {

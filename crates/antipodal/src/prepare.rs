@@ -3,6 +3,7 @@
 //! analytic shape on its rational circle), its symbolic forms and the enclosures later runs
 //! build on them. Results come back in the curve's own coordinates and parameters.
 
+use crate::doubt::Doubt;
 use crate::driver::{antipodal_of, inflections_of, tangents_of};
 use crate::error::{Error, Result};
 use crate::forms::SymbolicForms;
@@ -131,8 +132,15 @@ impl<'c> Prepared<'c> {
             r.uncertify("certification was turned off (Options::certify)".to_string());
             return Ok(r);
         }
+        // An analytic shape has no straight stretch: one taken as straight is its exact
+        // form's precision running out, as a refusal as singular is.
+        let lost = |r: &Result<T>| match r {
+            Err(Error::Cusp { .. }) => true,
+            Ok(r) => r.reason() == Some(Doubt::FlatWithinRounding.reason()),
+            Err(_) => false,
+        };
         match run(self.source(true)) {
-            Err(Error::Cusp { .. }) if self.simple => {
+            r if self.simple && lost(&r) => {
                 let mut r = sampled()?;
                 let degree = self.forms.as_ref().map_or(0, |f| f.hom.degree());
                 r.uncertify(format!(

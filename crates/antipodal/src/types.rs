@@ -204,6 +204,8 @@ pub struct Tangents {
 pub(crate) trait Provenance {
     /// Marks the result uncertified, for `reason`.
     fn uncertify(&mut self, reason: String);
+    /// Why it is not certified.
+    fn reason(&self) -> Option<&str>;
 }
 
 macro_rules! provenance {
@@ -212,6 +214,9 @@ macro_rules! provenance {
             fn uncertify(&mut self, reason: String) {
                 self.certified = false;
                 self.reason = Some(reason);
+            }
+            fn reason(&self) -> Option<&str> {
+                self.reason.as_deref()
             }
         }
     };

@@ -249,7 +249,11 @@ fn same_curve_twice_does_not_flood() {
 /// about `b/a` of the parameter around each end of the major axis: below the parameter
 /// tolerance from a ratio of about 1e11 on. Such a stretch still holds the major-axis pair.
 /// Either both axis pairs are found, to full precision, or the result is not certified (or a
-/// typed error): never a certified result missing a pair.
+/// typed error): never a certified result missing a pair. Up to a ratio of 1e9 the result is
+/// certified; from 1e11 on, the curvature at the minor axis (1e-22 of the major axis's) leaves
+/// the turning of the antipodal angle beside the type-B pair within rounding, and the stretch
+/// beside it is skipped by Jia's ε unproven (the results there used to say certified on the
+/// strength of that ε alone).
 #[test]
 fn slender_ellipses_keep_both_axis_pairs() {
     use antipodal::shapes::Ellipse;
@@ -277,7 +281,11 @@ fn slender_ellipses_keep_both_axis_pairs() {
                 }
             };
             if !(r.certified && r.complete) {
-                assert!(k >= 13, "a = {a}, b = {b}: not certified/complete");
+                assert!(
+                    k >= 11,
+                    "a = {a}, b = {b}: not certified/complete: {:?}",
+                    r.reason
+                );
                 continue;
             }
             certified_runs += 1;
@@ -313,8 +321,8 @@ fn slender_ellipses_keep_both_axis_pairs() {
             }
         }
     }
-    // Ratios up to 1e12 at least are within reach (the reported regression).
-    assert!(certified_runs >= 5 * 6, "{certified_runs}");
+    // Ratios up to 1e9 are certified (all six placements of 1e3, 1e6, 1e9).
+    assert!(certified_runs >= 3 * 6, "{certified_runs}");
 }
 
 /// A curve of any size in the range of doubles, subnormal coordinates included (their frame

@@ -611,7 +611,11 @@ impl ParamCurve for EllipticLemniscate {
         // r² = g = A + B cos 2φ; differentiate r² = g three times. The value itself as
         // a² cos² φ + b² sin² φ: the form with cos 2φ cancels near the waist (φ = π/2) of a
         // slender lemniscate, where g ≈ b² ≪ a².
-        let (aa, bb) = (self.a * self.a, self.b * self.b);
+        // (In units of the larger radius: the squares of radii of 1e-180 or 1e180 would
+        // underflow or overflow.)
+        let unit = self.a.max(self.b);
+        let (a, b) = (self.a / unit, self.b / unit);
+        let (aa, bb) = (a * a, b * b);
         let big_b = 0.5 * (aa - bb);
         // One sine and cosine: the double angle from them (sin 2φ = 2sc, cos 2φ = (c − s)(c + s),
         // the factored form exact near φ = π/4 up to the rounding of c and s themselves).
@@ -629,7 +633,7 @@ impl ParamCurve for EllipticLemniscate {
                 r3 = (4.0 * big_b * s2 - 3.0 * r1 * r2) * inv;
             }
         }
-        polar_jet_to(s, c, [r, r1, r2, r3], order)
+        polar_jet_to(s, c, [r, r1, r2, r3].map(|x| x * unit), order)
     }
 }
 

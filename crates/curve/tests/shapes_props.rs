@@ -178,3 +178,45 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// A shape's jet scales with the shape, at every size a file may give: lengths times 2^k
+    /// give points and derivatives times 2^k (to rounding), never an overflow of a square
+    /// or an underflow to zero.
+    #[test]
+    fn jets_scale_with_the_shape(
+        k in -1000i32..1000,
+        a in 0.2f64..5.0, b in 0.2f64..5.0,
+        eps in 0.01f64..0.95, m in 2u32..9,
+        u in 0.0f64..TAU,
+    ) {
+        let s = 2f64.powi(k);
+        let pairs = [
+            (Shape::Ellipse(Ellipse::new(a, b, [b, -a]).unwrap()),
+             Shape::Ellipse(Ellipse::new(a * s, b * s, [b * s, -a * s]).unwrap())),
+            (Shape::Limacon(Limacon::new(a + b, b).unwrap()),
+             Shape::Limacon(Limacon::new((a + b) * s, b * s).unwrap())),
+            (Shape::EllipticLemniscate(EllipticLemniscate::new(a, b).unwrap()),
+             Shape::EllipticLemniscate(EllipticLemniscate::new(a * s, b * s).unwrap())),
+            (Shape::Convexities(Convexities::new(a, eps, m).unwrap()),
+             Shape::Convexities(Convexities::new(a * s, eps, m).unwrap())),
+        ];
+        for (unit, scaled) in pairs {
+            let (j, js) = (unit.jet_to(u, 3), scaled.jet_to(u, 3));
+            let size = j.p.norm() + j.d1.norm() + j.d2.norm() + j.d3.norm();
+            for (x, xs) in [(j.p, js.p), (j.d1, js.d1), (j.d2, js.d2), (j.d3, js.d3)] {
+                for (c, cs) in [(x.x, xs.x), (x.y, xs.y)] {
+                    // (Relative to the jet's size in the scaled units; subnormal results
+                    // keep what precision they have.)
+                    let err = (cs / s - c).abs();
+                    prop_assert!(
+                        err <= 1e-13 * size || (cs.abs() < 1e-290 && err <= 1e-10 * size),
+                        "{}: {c} vs {cs} at scale 2^{k}", unit.kind()
+                    );
+                }
+            }
+        }
+    }
+}

@@ -14,9 +14,10 @@
 use crate::error::{Error, Result};
 use crate::extract::Pieces;
 use crate::patch::Patch;
-use crate::symbolic::{bisector_function, Method};
+use crate::symbolic::{bisector_function_scaled, Method};
 use crate::zeroset::{finish, run_cells, ZeroSetOptions};
 use bspline::Rational;
+use curve::Frame;
 use serde::{Deserialize, Serialize};
 
 /// Largest relative residual of the three bisector conditions for a reported point: the
@@ -651,7 +652,9 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
             });
         }
     }
-    let f = bisector_function(c1, c2, opts.method)?;
+    let (frame, local) = local_curves(&[c1, c2])?;
+    let (c1, c2) = (&local[0], &local[1]);
+    let (f, terms) = bisector_function_scaled(c1, c2, opts.method)?;
     let (center, diag) = bbox(&[c1, c2]);
     let ctx = Ctx {
         c1,
@@ -661,7 +664,11 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         selfb: false,
         trimmed: opts.trimmed,
     };
-    let cells: Vec<Patch> = f.bezier_patches().iter().map(Patch::from_bezier).collect();
+    let cells: Vec<Patch> = f
+        .bezier_patches()
+        .iter()
+        .map(|b| within_rounding_as_zero(Patch::from_bezier(b), terms))
+        .collect();
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
@@ -669,7 +676,66 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
     let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &|_| {
         false
     });
-    Ok(ctx.build(&pieces, dom, &cells))
+    Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
+}
+
+/// A cell whose coefficients are all within the rounding of the terms that formed them
+/// (`terms`, see [`bisector_function_scaled`]) as zero: the function vanishes there as far
+/// as double precision tells (two straight pieces; rationally parametrised they left noise
+/// that the extractor ground through for seconds), and the extractor reports it so.
+fn within_rounding_as_zero(mut p: Patch, terms: f64) -> Patch {
+    if p.max_abs() <= VANISHING * terms {
+        p.c.iter_mut().for_each(|x| *x = 0.0);
+    }
+    p
+}
+
+/// The size of a cell's coefficients, relative to the terms that formed them, below which
+/// they are rounding: a few hundred roundings of the products (degree-12 products of
+/// degree-3 pieces, six outer products summed).
+const VANISHING: f64 = 1e-12;
+
+/// The curves moved into one frame (a local origin and a power-of-two scale, see
+/// [`Frame`]): the bisector is the same in parameters and moves with the plane, and its
+/// functions, products of coordinate differences, keep the precision of unit-size data
+/// (a curve of size 100 at 2e14 from the origin lost all of it, and the extraction ground
+/// through noise without end).
+fn local_curves(curves: &[&Rational]) -> Result<(Frame, Vec<Rational>)> {
+    let points: Vec<Vec<[f64; 2]>> = curves
+        .iter()
+        .map(|c| c.control_points().iter().map(|p| [p[0], p[1]]).collect())
+        .collect();
+    let sets: Vec<&[[f64; 2]]> = points.iter().map(Vec::as_slice).collect();
+    let frame = Frame::for_all(&sets);
+    let local = curves
+        .iter()
+        .zip(&points)
+        .map(|(c, pts)| {
+            let mut at = pts.iter();
+            let moved = c.homogeneous().map_points(2, |_, dst| {
+                if let Some(&p) = at.next() {
+                    dst.copy_from_slice(&frame.to_local(p));
+                }
+            });
+            let weights = c.weights();
+            Rational::new(moved, c.is_rational().then_some(&weights[..]))
+        })
+        .collect::<std::result::Result<Vec<_>, _>>()?;
+    Ok((frame, local))
+}
+
+/// A bisector found in a frame, in global coordinates (the parameters are the same).
+fn to_global(mut b: Bisector, frame: &Frame) -> Bisector {
+    let points = b
+        .branches
+        .iter_mut()
+        .flat_map(|br| br.xy.iter_mut())
+        .chain(b.singular.iter_mut().map(|p| &mut p.xy))
+        .chain(b.isolated.iter_mut().map(|p| &mut p.xy));
+    for xy in points {
+        *xy = frame.to_global(*xy);
+    }
+    b
 }
 
 /// The self-bisector of `c`: pairs `t < r` of distinct foot points on the same curve.
@@ -681,7 +747,9 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
             dim: c.dim(),
         });
     }
-    let f = bisector_function(c, c, opts.method)?;
+    let (frame, local) = local_curves(&[c])?;
+    let c = &local[0];
+    let (f, terms) = bisector_function_scaled(c, c, opts.method)?;
     let (center, diag) = bbox(&[c]);
     let ctx = Ctx {
         c1: c,
@@ -693,7 +761,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     };
     let mut cells: Vec<Patch> = Vec::new();
     for b in f.bezier_patches() {
-        let mut p = Patch::from_bezier(&b);
+        let mut p = within_rounding_as_zero(Patch::from_bezier(&b), terms);
         if p.t0 >= p.r1 {
             continue; // entirely below the diagonal: the mirror of a cell above it
         }
@@ -721,7 +789,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     // that corner (see `lax` in the tracer).
     let lax = |p: &Patch| p.t1 == p.r0 || (p.t0 == dom[0] && p.r1 == dom[3]);
     let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &lax);
-    Ok(ctx.build(&pieces, dom, &cells))
+    Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
 }
 
 /// Distance from `p` to the curve: dense samples, then Newton on `⟨C − p, C'⟩ = 0` from every
@@ -763,7 +831,7 @@ mod tests {
 
     /// How often `(t − r)` divides each diagonal cell of the self-bisector function.
     fn divisions(c: &Rational, method: Method) -> Vec<usize> {
-        let f = bisector_function(c, c, method).unwrap();
+        let f = crate::bisector_function(c, c, method).unwrap();
         f.bezier_patches()
             .iter()
             .map(Patch::from_bezier)

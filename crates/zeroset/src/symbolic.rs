@@ -132,6 +132,18 @@ impl Sep {
 
 /// The bivariate function of `method` for the curves `c1(t)`, `c2(r)` (both planar).
 pub fn bisector_function(c1: &Rational, c2: &Rational, method: Method) -> Result<TensorBSpline> {
+    Ok(bisector_function_scaled(c1, c2, method)?.0)
+}
+
+/// [`bisector_function`] and the size of the terms that sum to it, `Σ ‖f_k‖ ‖g_k‖` over its
+/// outer products: the scale of its coefficients' rounding. (Where the curves are straight
+/// the terms cancel exactly; a rational parametrisation leaves their rounding, which the
+/// function's own size cannot tell from a signal.)
+pub(crate) fn bisector_function_scaled(
+    c1: &Rational,
+    c2: &Rational,
+    method: Method,
+) -> Result<(TensorBSpline, f64)> {
     let a = parts(c1, 1)?;
     let b = parts(c2, 2)?;
     let terms = match method {
@@ -175,7 +187,9 @@ pub fn bisector_function(c1: &Rational, c2: &Rational, method: Method) -> Result
             first.add(second.neg()).0
         }
     };
-    Ok(TensorBSpline::sum_of_outer(&terms)?)
+    let largest = |f: &BSpline| f.coefs().iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let scale = terms.iter().map(|(f, g)| largest(f) * largest(g)).sum();
+    Ok((TensorBSpline::sum_of_outer(&terms)?, scale))
 }
 
 /// The six outer products of `F3` (module docs):

@@ -143,16 +143,6 @@ fn oracle_misses(
     (found, misses)
 }
 
-fn pts(v: &[f64]) -> Vec<[f64; 2]> {
-    v.chunks(2).map(|c| [c[0], c[1]]).collect()
-}
-
-/// Regular curves only (the paper's assumption): no collapsed control-polygon legs.
-fn regular(p: &[[f64; 2]]) -> bool {
-    p.windows(2)
-        .all(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) > 0.05)
-}
-
 /// Regular as a curve: the speed never drops below 5% of its mean (collinear control points
 /// can make a curve turn back with a cusp, which the polygon test does not see).
 fn regular_curve(c: &Rational) -> bool {

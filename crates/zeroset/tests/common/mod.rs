@@ -75,3 +75,14 @@ pub fn dist_to_polyline(q: [f64; 2], pts: &[[f64; 2]]) -> f64 {
     }
     best
 }
+
+/// Points from a flat list of coordinates.
+pub fn pts(v: &[f64]) -> Vec<[f64; 2]> {
+    v.chunks(2).map(|c| [c[0], c[1]]).collect()
+}
+
+/// Regular curves only (the paper's assumption): no collapsed control-polygon legs.
+pub fn regular(p: &[[f64; 2]]) -> bool {
+    p.windows(2)
+        .all(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) > 0.05)
+}

@@ -1,0 +1,177 @@
+//! The bisector moves with the plane: curves translated far from the origin (up to 1e9 times
+//! their size) and scaled (by powers of two up to 2^±600, and by other factors) have the same
+//! bisector, moved the same way, to the chord tolerance and the rounding of the moved data.
+#![allow(clippy::unwrap_used)]
+mod common;
+use common::*;
+use proptest::prelude::*;
+use zeroset::{bisector, self_bisector, Bisector, BisectorOptions};
+
+/// The bisector's points mapped back by the inverse of `x ↦ o + s·x`.
+fn moved_back(b: &Bisector, o: [f64; 2], s: f64) -> Vec<Vec<[f64; 2]>> {
+    b.branches
+        .iter()
+        .map(|br| {
+            br.xy
+                .iter()
+                .map(|p| [(p[0] - o[0]) / s, (p[1] - o[1]) / s])
+                .collect()
+        })
+        .collect()
+}
+
+/// How far from the curves, in their sizes, bisector points are compared.
+const FAR: f64 = 30.0;
+
+/// Every point of one set of branches lies within `tol(p)` of the other set's polylines.
+fn within(
+    a: &[Vec<[f64; 2]>],
+    b: &[Vec<[f64; 2]>],
+    tol: impl Fn([f64; 2]) -> Option<f64>,
+) -> Result<(), String> {
+    for p in a.iter().flatten() {
+        let Some(tol) = tol(*p) else { continue };
+        let d = b
+            .iter()
+            .map(|pl| dist_to_polyline(*p, pl))
+            .fold(f64::INFINITY, f64::min);
+        if d > tol {
+            return Err(format!(
+                "{p:?} is {d:e} from the other bisector (tol {tol:e})"
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn diagonal(pts: &[[f64; 2]]) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in pts {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (hi[0] - lo[0]).hypot(hi[1] - lo[1])
+}
+
+fn transform() -> impl Strategy<Value = ([f64; 2], f64)> {
+    let offset = prop_oneof![Just(0.0), Just(1e9), Just(-3e7), -1e4f64..1e4];
+    let scale = prop_oneof![
+        (-600i32..600).prop_map(|k| 2f64.powi(k)),
+        Just(3.7),
+        Just(1e-3),
+        Just(7e5),
+    ];
+    (offset, -1.0f64..1.0, scale).prop_map(|(off, dir, s)| ([off * s, 0.5 * off * dir * s], s))
+}
+
+/// Compares the bisector of the curves with control points `sets` (computed by `run`) with
+/// that of the curves moved by `x ↦ o + s·x`.
+fn same_moved(
+    sets: &[Vec<[f64; 2]>],
+    (o, s): ([f64; 2], f64),
+    run: impl Fn(&[Vec<[f64; 2]>]) -> Bisector,
+) -> Result<(), TestCaseError> {
+    let moved: Vec<Vec<[f64; 2]>> = sets
+        .iter()
+        .map(|pts| {
+            pts.iter()
+                .map(|p| [o[0] + s * p[0], o[1] + s * p[1]])
+                .collect()
+        })
+        .collect();
+    let (b, bm) = (run(sets), run(&moved));
+    prop_assert_eq!(b.complete, bm.complete);
+    let all: Vec<[f64; 2]> = sets.iter().flatten().copied().collect();
+    let diag = diagonal(&all);
+    // The chord tolerance on both sides (each set of branches lies within it of the exact
+    // bisector, sampled at three points per segment), and the data's rounding when moved
+    // (an ulp of the offset and of the data, in units of the scale), which moves a point
+    // of the bisector at distance R from the curves by about (R / size)² times as much:
+    // the normals meeting there are nearly parallel.
+    let chord = 4.0 * BisectorOptions::default().chord_tol * diag;
+    let moved_rounding = 2.0 * f64::EPSILON * ((o[0].abs() + o[1].abs()) / s + diag);
+    // (Beyond `FAR` sizes from the curves the branches head for infinity, where the normals
+    // are parallel, and no perturbation bound is tight: those points are not compared.)
+    let tol = |p: [f64; 2]| {
+        let far = 1.0 + p[0].hypot(p[1]) / diag;
+        (far <= FAR).then_some(chord + 4.0 * moved_rounding * far * far)
+    };
+    let (back, orig) = (moved_back(&bm, o, s), moved_back(&b, [0.0, 0.0], 1.0));
+    within(&back, &orig, tol).map_err(TestCaseError::fail)?;
+    within(&orig, &back, tol).map_err(TestCaseError::fail)?;
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(60))]
+
+    /// Two cubic Béziers in disjoint boxes, moved and scaled together.
+    #[test]
+    fn pairs_move_with_the_plane(
+        a in prop::collection::vec(-1.0..1.0f64, 8),
+        b in prop::collection::vec(-1.0..1.0f64, 8),
+        t in transform(),
+    ) {
+        let mut b = b;
+        for k in (0..8).step_by(2) { b[k] += 2.5; }
+        let (p1, p2) = (pts(&a), pts(&b));
+        prop_assume!(regular(&p1) && regular(&p2));
+        same_moved(&[p1, p2], t, |s| bisector(&bez(&s[0]), &bez(&s[1]), &Default::default()).unwrap())?;
+    }
+
+    /// Self-bisectors of cubic B-splines with six points, moved and scaled.
+    #[test]
+    fn self_bisectors_move_with_the_plane(
+        a in prop::collection::vec(-1.0..1.0f64, 12),
+        t in transform(),
+    ) {
+        let p = pts(&a);
+        prop_assume!(regular(&p));
+        same_moved(&[p], t, |s| self_bisector(&bsp(3, &s[0]), &Default::default()).unwrap())?;
+    }
+}
+
+/// A quadratic Bézier with a repeated end point (a straight segment, its speed vanishing at
+/// one end), at 2^-142 of the unit and 105 · 2^41 units from the origin: computed in global
+/// coordinates its self-bisector took seconds (minutes under the fuzzer) to grind through
+/// rounding noise; in its frame it is the one at the origin, moved (none: the function
+/// vanishes, which the result says by `complete: false`).
+#[test]
+fn far_tiny_quadratic_self_bisector() {
+    let k = 2f64.powi(-142) * (1.0 + 10.0 / 256.0);
+    let far = 105.0 * 2f64.powi(41);
+    let p = vec![[-1.0, -1.0], [-1.0, -1.0], [10.0, 95.0]];
+    let opts = BisectorOptions {
+        chord_tol: 0.5,
+        ..Default::default()
+    };
+    same_moved(&[p], ([far * k, 0.0], k), |s| {
+        self_bisector(&bez(&s[0]), &opts).unwrap()
+    })
+    .unwrap();
+}
+
+/// A straight segment reparametrised rationally (weights 2^-21.75 and 1) is the same segment:
+/// its self-bisector function vanishes there as it does for the polynomial one (within the
+/// rounding of its terms), and both results say so, at once (the rational one ground through
+/// that rounding for seconds; found by fuzzing).
+#[test]
+fn rational_segment_self_bisector_is_the_segments() {
+    use bspline::{BSpline, Rational};
+    let coords = vec![105.0, 10.0, 3.0, 8.0];
+    let line = Rational::new(BSpline::bezier(2, coords.clone()).unwrap(), None).unwrap();
+    let w = 2f64.powf(-21.75);
+    let weighted = Rational::new(BSpline::bezier(2, coords).unwrap(), Some(&[w, 1.0])).unwrap();
+    let opts = BisectorOptions {
+        chord_tol: 0.5,
+        ..Default::default()
+    };
+    let (a, b) = (
+        self_bisector(&line, &opts).unwrap(),
+        self_bisector(&weighted, &opts).unwrap(),
+    );
+    assert_eq!((a.branches.len(), a.complete), (0, false));
+    assert_eq!((b.branches.len(), b.complete), (0, false));
+}

@@ -1,0 +1,71 @@
+//! `inflections` and `antipodal` on arbitrary curves: an error or a result, never a panic or a
+//! hang; results hold finite numbers, parameters within the domain, points on the curve, and a
+//! certified result on a closed curve is possible (an even number of inflections, at least one
+//! antipodal pair).
+#![no_main]
+
+#[path = "common.rs"]
+mod common;
+
+use antipodal::Options;
+use arbitrary::Arbitrary;
+use common::{all_finite, tolerance, within, ArbCurve};
+use curvekit::antipodal;
+use libfuzzer_sys::fuzz_target;
+
+#[derive(Arbitrary, Debug)]
+struct Input {
+    curve: ArbCurve,
+    tol: u8,
+    raw_tol: f64,
+    certify: bool,
+}
+
+fuzz_target!(|input: Input| {
+    let Some(curve) = input.curve.curve() else {
+        return;
+    };
+    let opts = Options::default()
+        .tolerance(tolerance(input.tol, input.raw_tol))
+        .certify(input.certify);
+    let plane = curve.plane_curve();
+    let domain = curve.domain();
+    let size = curve
+        .polyline(64)
+        .iter()
+        .fold(0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    let on_curve = |u: f64, p: [f64; 2]| {
+        let c = plane.jet(u).p.arr();
+        // (Far looser than any tolerance: this catches a point of another parameter.)
+        (c[0] - p[0]).hypot(c[1] - p[1]) <= 1e-6 * size.max(f64::MIN_POSITIVE)
+    };
+    let prepared = antipodal::prepare(plane);
+    if let Ok(r) = prepared.inflections(&opts) {
+        assert!(opts.validate().is_ok(), "tol {} accepted", opts.tol);
+        assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
+        for i in &r.inflections {
+            assert!(within(i.u, domain), "inflection at {} outside {domain:?}", i.u);
+            assert!(on_curve(i.u, i.p), "inflection point {:?} not at {}", i.p, i.u);
+            if let Some(b) = i.bracket {
+                assert!(b[0] <= i.u && i.u <= b[1], "{} outside its bracket {b:?}", i.u);
+            }
+        }
+        if r.certified && curve.is_closed() {
+            assert!(r.inflections.len() % 2 == 0, "odd inflections, certified: {r:?}");
+        }
+    }
+    if let Ok(r) = prepared.antipodal(&opts) {
+        assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
+        for p in &r.pairs {
+            assert!(within(p.s, domain) && within(p.t, domain), "{p:?} outside {domain:?}");
+            assert!(on_curve(p.s, p.p) && on_curve(p.t, p.q), "pair off the curve: {p:?}");
+        }
+        if r.certified && r.complete {
+            assert!(
+                !r.pairs.is_empty() || !r.families.is_empty(),
+                "no antipodal pair, certified"
+            );
+            assert!(r.inflections.len() % 2 == 0, "odd inflections, certified: {r:?}");
+        }
+    }
+});

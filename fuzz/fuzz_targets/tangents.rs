@@ -1,0 +1,35 @@
+//! `tangents` on arbitrary pairs of curves: an error or a result, never a panic or a hang;
+//! lines with finite ends on the two curves, at parameters within their domains.
+#![no_main]
+
+#[path = "common.rs"]
+mod common;
+
+use antipodal::Options;
+use arbitrary::Arbitrary;
+use common::{all_finite, tolerance, within, ArbCurve};
+use curvekit::antipodal;
+use libfuzzer_sys::fuzz_target;
+
+#[derive(Arbitrary, Debug)]
+struct Input {
+    first: ArbCurve,
+    second: ArbCurve,
+    tol: u8,
+    raw_tol: f64,
+}
+
+fuzz_target!(|input: Input| {
+    let (Some(c1), Some(c2)) = (input.first.curve(), input.second.curve()) else {
+        return;
+    };
+    let opts = Options::default().tolerance(tolerance(input.tol, input.raw_tol));
+    let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
+    if let Ok(r) = antipodal::common_tangents(p1, p2, &opts) {
+        assert!(opts.validate().is_ok(), "tol {} accepted", opts.tol);
+        assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
+        for l in &r.lines {
+            assert!(within(l.s, c1.domain()) && within(l.t, c2.domain()), "{l:?}");
+        }
+    }
+});

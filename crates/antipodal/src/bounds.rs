@@ -376,6 +376,13 @@ fn points_range(c: &[f64], d: usize, err: &[f64]) -> Iv {
     )
 }
 
+/// The curvature cells of a fine piece, and what they and the hulls prove over all of it.
+#[derive(Debug, Clone)]
+struct PieceKappa {
+    cells: Blocks<KappaCell>,
+    covered: KappaCell,
+}
+
 /// The enclosures behind [`View::arc_bounds`]: the curvature numerator `K`, the tangent
 /// numerator `D` and the weight `w`, built on first use.
 #[derive(Debug, Clone)]
@@ -386,13 +393,12 @@ pub(crate) struct BoundForms {
     /// The three enclosures share their fine pieces (always, for forms of one curve): the
     /// curvature is then bounded by Taylor models, piece by piece.
     aligned: bool,
-    /// Per fine piece (when aligned), the curvature and greatest speed over its cells
-    /// (`None` where they do not prove `|D|` and `w` positive): a stretch that covers
-    /// several cells of a piece in part reads them instead of evaluating its own models.
-    kappa: Vec<Blocks<KappaCell>>,
-    /// Per fine piece, the curvature and greatest speed its hulls prove, narrowed to the
-    /// union of its cells'.
-    covered: Vec<KappaCell>,
+    /// Per fine piece (when aligned), built on first use: the curvature and greatest speed
+    /// over its cells (`None` where they do not prove `|D|` and `w` positive), which a
+    /// stretch covering several cells of the piece in part reads instead of evaluating its
+    /// own models; and those its hulls prove, narrowed to the union of its cells', for a
+    /// stretch covering it whole.
+    kappa: Vec<OnceLock<PieceKappa>>,
     /// Per fine piece, the rates of its radius of curvature (see `BoundForms::rho_rates`)
     /// over its cells, with κ clipped to negative and to positive values; built on first use.
     rates: Vec<OnceLock<Cells<[Option<Iv>; 2]>>>,
@@ -416,22 +422,24 @@ impl BoundForms {
                 .is_none_or(|e| e.breaks() == curvature.breaks());
         let pieces = curvature.hull.len();
         let n = if aligned { pieces } else { 0 };
-        let mut forms = Self {
+        Some(Self {
             curvature,
             tangent,
             weight,
             aligned,
-            kappa: Vec::new(),
-            covered: Vec::new(),
+            kappa: (0..n).map(|_| OnceLock::new()).collect(),
             rates: (0..n).map(|_| OnceLock::new()).collect(),
-        };
-        forms.kappa = (0..n)
-            .map(|i| {
-                Blocks::new(&forms.over_cells(i, COARSE_CELLS, |x0, x1| forms.partial(i, x0, x1)))
-            })
-            .collect();
-        forms.covered = (0..n).map(|i| forms.whole_piece(i)).collect();
-        Some(forms)
+        })
+    }
+
+    /// The curvature cells of fine piece `i` (built on first use).
+    fn piece_kappa(&self, i: usize) -> &PieceKappa {
+        self.kappa[i].get_or_init(|| {
+            let cells =
+                Blocks::new(&self.over_cells(i, COARSE_CELLS, |x0, x1| self.partial(i, x0, x1)));
+            let covered = self.whole_piece(i, &cells);
+            PieceKappa { cells, covered }
+        })
     }
 
     /// The curvature and greatest speed over the fine cells of coarse cell `k` of fine piece
@@ -446,7 +454,7 @@ impl BoundForms {
 
     /// The curvature and greatest speed over fine piece `i`: what its hulls prove and its
     /// coarse cells prove, in common.
-    fn whole_piece(&self, i: usize) -> KappaCell {
+    fn whole_piece(&self, i: usize, cells: &Blocks<KappaCell>) -> KappaCell {
         let weight = self
             .weight
             .as_ref()
@@ -454,7 +462,7 @@ impl BoundForms {
         let d = self.tangent.hull[i];
         let hulls = quotient(self.curvature.hull[i], d, weight)?;
         let speed = d.hi / (weight.lo * weight.lo);
-        Some(match self.kappa[i].whole() {
+        Some(match cells.whole() {
             Some((k, v)) => (
                 Iv::new(hulls.lo.max(k.lo), hulls.hi.min(k.hi)),
                 speed.min(v),
@@ -466,7 +474,9 @@ impl BoundForms {
     /// The union of fine cells `c0 ..= c1` of fine piece `i` (`None` unless all prove `|D|`
     /// and `w` positive).
     fn cells_range(&self, i: usize, c0: usize, c1: usize) -> KappaCell {
-        self.kappa[i].union(c0, c1, |k| self.fine_kappa(i, k))
+        self.piece_kappa(i)
+            .cells
+            .union(c0, c1, |k| self.fine_kappa(i, k))
     }
 
     /// The curvature and greatest speed over `[x0, x1]` inside fine piece `i`: the common
@@ -658,7 +668,7 @@ impl BoundForms {
         for (i, x0, x1) in overlaps() {
             let (a, b) = pw.piece_span(i);
             let (kappa, v) = if x0 <= a && x1 >= b {
-                self.covered[i]?
+                self.piece_kappa(i).covered?
             } else {
                 // The cells the overlap touches (one more at an end on a cell boundary).
                 let (c0, c1) = (cell_of(x0, (a, b)), cell_of(x1, (a, b)));

@@ -308,6 +308,9 @@ impl Ctx<'_> {
     /// domain (a vertex of the redundant parallel-normal component of F1/F2 or beside a
     /// point at infinity does not converge nearby and stays rejected).
     fn valid(&self, t: f64, r: f64) -> Option<([f64; 2], [f64; 2])> {
+        let (d1, d2) = (self.c1.domain(), self.c2.domain());
+        // (A point the assembly located at a domain's edge may stand outside it by rounding.)
+        let (t, r) = (t.clamp(d1.0, d1.1), r.clamp(d2.0, d2.1));
         let floor = self.floor();
         let far =
             |p: [f64; 2]| (p[0] - self.center[0]).hypot(p[1] - self.center[1]) > FAR * self.diag;
@@ -316,7 +319,6 @@ impl Ctx<'_> {
                 return (!far(p)).then_some(([t, r], p));
             }
         }
-        let (d1, d2) = (self.c1.domain(), self.c2.domain());
         let (e1, e2) = (d1.1 - d1.0, d2.1 - d2.0);
         let mut q = [t, r];
         for _ in 0..MAX_POLISH {

@@ -175,3 +175,32 @@ fn rational_segment_self_bisector_is_the_segments() {
     assert_eq!((a.branches.len(), a.complete), (0, false));
     assert_eq!((b.branches.len(), b.complete), (0, false));
 }
+
+/// Reported parameters lie in the domains: a weighted periodic triangle (degree 1) at 2^-600
+/// had a singular point at t = -6e-21 (found by fuzzing).
+#[test]
+fn points_stay_in_the_domain() {
+    use bspline::{BSpline, Rational};
+    let k = 2f64.powi(-600);
+    let coords = [81.0, -10.0, 123.0, 0.0, 105.0, 80.0]
+        .map(|x| x * k)
+        .to_vec();
+    let w = 2f64.powf(-27.0 / 4.0);
+    let tri = Rational::new(
+        BSpline::periodic(1, 2, coords).unwrap(),
+        Some(&[w, 1.0, 1.0, w]),
+    )
+    .unwrap();
+    let opts = BisectorOptions {
+        chord_tol: 0.5,
+        ..Default::default()
+    };
+    let b = self_bisector(&tri, &opts).unwrap();
+    let (lo, hi) = tri.domain();
+    let inside = |tr: [f64; 2]| (lo..=hi).contains(&tr[0]) && (lo..=hi).contains(&tr[1]);
+    assert!(b.branches.iter().flat_map(|br| &br.tr).all(|&q| inside(q)));
+    assert!(
+        b.singular.iter().chain(&b.isolated).all(|p| inside(p.tr)),
+        "{b:?}"
+    );
+}

@@ -225,7 +225,8 @@ impl<T: Union> RunUnions<T> {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use crate::bounds::{Iv, KappaCell};
+    use crate::bounds::KappaCell;
+    use crate::interval::Iv;
     use proptest::prelude::*;
 
     /// Random cells of one piece: fine ones, and coarse ones holding their fine cells

@@ -17,7 +17,7 @@
 //! Only curves with symbolic forms have certified ranges; the others keep the march (or its
 //! sampled finish).
 
-use crate::bounds::Iv;
+use crate::interval::Iv;
 use crate::pairs::{polish, Pair};
 use crate::search::{bisect, THETA_NOISE};
 use std::f64::consts::FRAC_PI_2;

@@ -7,7 +7,7 @@
 //! Taylor model carries the common linear part through products and reciprocals exactly, so
 //! only second-order terms widen the result.
 
-use crate::bounds::Iv;
+use crate::interval::Iv;
 
 /// `f(m + h) ∈ v + g·h + [−r, r]` for `|h| ≤ δ` (the half-width `δ` is the caller's, the same
 /// for every model combined).

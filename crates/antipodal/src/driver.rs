@@ -6,8 +6,9 @@ use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::finish::certified_rest;
+use crate::pairs::THETA_NOISE;
 use crate::pairs::{negligible, opposite_pair, Pair};
-use crate::search::{antipodal_points, Budget, THETA_NOISE};
+use crate::search::{antipodal_points, Budget};
 use crate::tangent;
 use crate::types::{
     Antipodal, AntipodalPair, Inflection, InflectionKind, Inflections, Options, PairType,

@@ -17,9 +17,9 @@
 //! Only curves with symbolic forms have certified ranges; the others keep the march (or its
 //! sampled finish).
 
+use crate::bisect::bisect;
 use crate::interval::Iv;
-use crate::pairs::{polish, Pair};
-use crate::search::{bisect, THETA_NOISE};
+use crate::pairs::{polish, Pair, THETA_NOISE};
 use std::f64::consts::FRAC_PI_2;
 
 /// What a finishing attempt proved.

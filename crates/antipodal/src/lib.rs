@@ -22,6 +22,8 @@
 //! so does the elliptic lemniscate, the inverse of an ellipse, up to `a/b = 5` (more slender
 //! ones stay sampled).
 
+mod arcs;
+mod bisect;
 mod bounds;
 mod cells;
 mod dissect;

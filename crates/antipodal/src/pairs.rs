@@ -2,10 +2,13 @@
 
 use crate::dissect::Piece;
 use crate::doubt::Doubt;
-use crate::search::THETA_NOISE;
 use crate::view::View;
 use curve::V2;
 use std::f64::consts::{PI, TAU};
+
+/// Upper bound of the noise of |sin θ| (the antipodal angle of a found pair); the noise at a
+/// given pair, from the parameter tolerance, is [`Pair::theta_noise`].
+pub(crate) const THETA_NOISE: f64 = 1e-9;
 
 /// Two monotone segments `S` over `(sa, sb)` (`sa < sb`) and `T` over `(ta, tb)` (either order)
 /// with `N(sa) = −N(ta)`, `N(sb) = −N(tb)`: conditions (i)–(iii).

@@ -21,6 +21,16 @@
 //! through the rational unit circle instead (certified, parameters still reported in φ), and
 //! so does the elliptic lemniscate, the inverse of an ellipse, up to `a/b = 5` (more slender
 //! ones stay sampled).
+//!
+//! The modules, in the order of the paper's steps (each says where it goes beyond the paper):
+//! `prepare` (the frame and the symbolic forms, once per curve) and `driver` (one run);
+//! `dissect` and `simple` (§5: monotone pieces, and the proof that the curve is simple);
+//! `prims` (Appendix A: the primitives); `tangent` (§2.5: common tangents); `pairs` (a pair
+//! of pieces and its sections); `bisect` (§4.1); `search` (Table 1 and March, §4.2);
+//! `finish` and `families` (beyond the paper: proofs that spare marches, and continua of
+//! pairs). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
+//! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
+//! `taylor` and `interval`; `doubt` names every reason a result is not certified.
 
 mod arcs;
 mod bisect;

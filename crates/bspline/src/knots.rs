@@ -217,10 +217,7 @@ impl KnotVector {
                 got: n,
             });
         }
-        Self::new(
-            degree,
-            crate::spline::clamped_uniform_knots(degree, n, a, b),
-        )
+        Self::new(degree, clamped_uniform_knots(degree, n, a, b))
     }
     /// The unclamped uniform knot vector `−p, …, n + p` of a closed periodic spline with `n`
     /// distinct control points (domain `[0, n]`).
@@ -276,4 +273,16 @@ impl KnotVector {
     pub fn into_vec(self) -> Vec<f64> {
         self.knots
     }
+}
+
+/// The clamped knot vector of `n` control points and degree `p` on `[a, b]` with uniform
+/// interior knots.
+pub fn clamped_uniform_knots(p: usize, n: usize, a: f64, b: f64) -> Vec<f64> {
+    let interior = n - p - 1;
+    let mut k = vec![a; p + 1];
+    for i in 1..=interior {
+        k.push(a + (b - a) * i as f64 / (interior + 1) as f64);
+    }
+    k.extend(std::iter::repeat_n(b, p + 1));
+    k
 }

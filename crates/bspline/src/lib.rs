@@ -31,7 +31,8 @@ pub mod symbolic;
 pub mod tensor;
 
 pub use error::{Error, Result};
+pub use knots::clamped_uniform_knots;
 pub use piecewise::{Piecewise, ValueSlope, JUMP};
 pub use rational::Rational;
 pub use refine::Bezier;
-pub use spline::{clamped_uniform_knots, BSpline};
+pub use spline::BSpline;

@@ -1,7 +1,7 @@
 //! The B-spline type: a piecewise polynomial with `f64` coefficients of any dimension.
 
 use crate::error::{check_finite, Error, Result};
-use crate::knots::{basis_derivs, find_span, validate_knots, Scratch};
+use crate::knots::{basis_derivs, clamped_uniform_knots, find_span, validate_knots, Scratch};
 use smallvec::SmallVec;
 
 /// A polynomial B-spline function `[a, b] → R^dim`.
@@ -367,16 +367,4 @@ impl BSpline {
     pub(crate) fn into_parts(self) -> (usize, usize, Vec<f64>, Vec<f64>) {
         (self.degree, self.dim, self.knots, self.coefs)
     }
-}
-
-/// The clamped knot vector of `n` control points and degree `p` on `[a, b]` with uniform
-/// interior knots.
-pub fn clamped_uniform_knots(p: usize, n: usize, a: f64, b: f64) -> Vec<f64> {
-    let interior = n - p - 1;
-    let mut k = vec![a; p + 1];
-    for i in 1..=interior {
-        k.push(a + (b - a) * i as f64 / (interior + 1) as f64);
-    }
-    k.extend(std::iter::repeat_n(b, p + 1));
-    k
 }

@@ -24,6 +24,7 @@ mod frame;
 mod geom;
 mod on_circle;
 mod param;
+mod plane;
 pub mod shapes;
 mod spline;
 
@@ -31,5 +32,6 @@ pub use error::{Error, Result};
 pub use frame::Frame;
 pub use geom::{wrap_pi, Jet, V2};
 pub use on_circle::OnCircle;
-pub use param::{Exact, Local, ParamCurve, PlaneCurve};
+pub use param::ParamCurve;
+pub use plane::{Exact, Local, PlaneCurve};
 pub use spline::{rational_derivs, SplineCurve, StraightSpan};

@@ -7,7 +7,7 @@
 
 use crate::circle::{frame_cs, Angle};
 use crate::geom::Jet;
-use crate::param::{ParamCurve, PlaneCurve};
+use crate::param::ParamCurve;
 use crate::shapes::CircleShape;
 
 /// A shape in the rational circle's parameter.
@@ -64,5 +64,3 @@ impl ParamCurve for OnCircle {
         out
     }
 }
-
-impl PlaneCurve for OnCircle {}

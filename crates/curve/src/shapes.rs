@@ -7,7 +7,7 @@ use crate::circle::circle_pieces;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::geom::{Jet, V2};
-use crate::param::{Exact, ParamCurve, PlaneCurve};
+use crate::param::ParamCurve;
 use bspline::rounding::gamma;
 use bspline::symbolic::CurvePieces;
 use bspline::Piecewise;
@@ -532,28 +532,6 @@ impl ParamCurve for Shape {
     }
 }
 
-impl PlaneCurve for Shape {
-    fn exact(&self) -> Option<Exact<'_>> {
-        Some(Exact::Shape(*self))
-    }
-}
-
-/// The shapes as curves in their angle φ: exact jets.
-macro_rules! shape_curve {
-    ($t:ident) => {
-        impl PlaneCurve for $t {
-            fn exact(&self) -> Option<Exact<'_>> {
-                Some(Exact::Shape(Shape::$t(*self)))
-            }
-        }
-    };
-}
-shape_curve!(Circle);
-shape_curve!(Ellipse);
-shape_curve!(Limacon);
-shape_curve!(EllipticLemniscate);
-shape_curve!(Convexities);
-
 impl ParamCurve for Circle {
     fn domain(&self) -> (f64, f64) {
         (0.0, TAU)
@@ -655,6 +633,7 @@ impl ParamCurve for Convexities {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
+    use crate::PlaneCurve;
 
     /// Each derivative of `c`'s jet against central differences of the one below, at many φ.
     fn check_against_differences(c: &dyn PlaneCurve) {

@@ -3,7 +3,7 @@
 use crate::error::{Error, Result};
 use crate::frame::{exact_difference, exponent_of, Frame};
 use crate::geom::{Jet, V2};
-use crate::param::{Exact, ParamCurve, PlaneCurve};
+use crate::param::ParamCurve;
 use bspline::rounding::UNIT_ROUNDOFF;
 use bspline::symbolic::{homogeneous_pieces, CurvePieces};
 use bspline::{BSpline, Piecewise, Rational};
@@ -376,11 +376,5 @@ impl ParamCurve for SplineCurve {
             d2: V2::new(o[4], o[5]),
             d3: V2::new(o[6], o[7]),
         }
-    }
-}
-
-impl PlaneCurve for SplineCurve {
-    fn exact(&self) -> Option<Exact<'_>> {
-        Some(Exact::Spline(self))
     }
 }

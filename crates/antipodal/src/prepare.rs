@@ -120,6 +120,15 @@ impl<'c> Prepared<'c> {
     ) -> Result<T> {
         // (Options first: a usage error is reported before anything about the curve.)
         opts.validate()?;
+        // (A length in an error is the frame's: given back in the curve's units.)
+        let run = |src: Source<'_>| {
+            run(src).map_err(|e| match e {
+                Error::NotClosed { gap } => Error::NotClosed {
+                    gap: self.frame.length_to_global(gap),
+                },
+                e => e,
+            })
+        };
         // A shape refused as singular by the sampled search hit its bound on samples.
         let sampled = || {
             run(self.source(false)).map_err(|e| match e {

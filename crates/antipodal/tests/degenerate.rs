@@ -366,3 +366,23 @@ fn curves_of_extreme_size() {
         }
     }
 }
+
+/// An open curve is refused with its ends' distance in its own units, not the frame's: a
+/// Bézier from (1e8, 0) to (1e8, 7) (and one of size 2 with a weight of 1e82 beside 1,
+/// whose end once evaluated to NaN) are 7 and 2 apart.
+#[test]
+fn open_curves_report_their_gap_in_their_units() {
+    let gap_of = |pts: &[[f64; 2]], w: Option<&[f64]>| {
+        let c = SplineCurve::clamped(2, pts, w, None).unwrap();
+        match antipodal(&c, &Options::default()) {
+            Err(Error::NotClosed { gap }) => gap,
+            other => panic!("{pts:?}: {other:?}"),
+        }
+    };
+    assert_eq!(gap_of(&[[1e8, 0.0], [1e8, 3.0], [1e8, 7.0]], None), 7.0);
+    let heavy = [1.0, 1e82, 1.0];
+    assert_eq!(
+        gap_of(&[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], Some(&heavy)),
+        2.0
+    );
+}

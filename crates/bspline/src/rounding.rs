@@ -35,9 +35,10 @@ pub fn computed_coefficients(degree: usize, magnitude: f64) -> f64 {
     gamma(8 * (degree + 2)) * magnitude
 }
 
-/// Roundings per level of de Casteljau's step `x + s (y − x)` with `s ∈ [0, 1]` (a subtraction,
-/// a product and a sum), counted with the rounding of `s` itself, which moves the result by at
-/// most `|s| u |y − x| ≤ 2 u max(|x|, |y|)`: five units of the operands' magnitude per level.
+/// Roundings per level of de Casteljau's step `(1 − s) x + s y` with `s ∈ [0, 1]` (the
+/// difference `1 − s`, two products and a sum: three units of the operands' magnitude),
+/// counted with the rounding of `s` itself, which moves the result by at most
+/// `u |y − x| ≤ 2 u max(|x|, |y|)`: five units per level.
 const CASTELJAU_LEVEL: usize = 5;
 
 /// The error de Casteljau's algorithm adds, at one parameter in `[0, 1]`, to Bernstein

@@ -104,3 +104,27 @@ fn restriction_matches_bspline() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+
+    /// A Bézier piece evaluates to its end coefficients exactly at its ends, whatever their
+    /// magnitudes beside each other (weights 1e82 and 1 once gave 1e82 − 1e82 = 0 at the end,
+    /// and a NaN point), in every dimension and degree and by both evaluation paths.
+    #[test]
+    fn ends_are_the_end_coefficients(
+        degree in 1usize..=9,
+        dim in 1usize..=3,
+        mant in proptest::collection::vec(-1.0f64..1.0, 30),
+        exps in proptest::collection::vec(-120i32..120, 30),
+    ) {
+        let n = (degree + 1) * dim;
+        let coefs: Vec<f64> = (0..n).map(|i| mant[i] * 10f64.powi(exps[i])).collect();
+        let f = Piecewise::from_bspline(&BSpline::bezier(dim, coefs.clone()).unwrap());
+        let mut out = vec![0.0; 4 * dim];
+        f.eval_derivs(0.0, 0, &mut out);
+        prop_assert_eq!(&out[..dim], &coefs[..dim]);
+        f.eval_derivs(1.0, 0, &mut out);
+        prop_assert_eq!(&out[..dim], &coefs[n - dim..]);
+    }
+}

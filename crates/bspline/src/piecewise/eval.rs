@@ -52,10 +52,13 @@ impl Piecewise {
             }
         };
         keep(&mut lv, w, p + 1);
+        // (As `(1 − s) x + s y`: exact at both ends, where `x + s(y − x)` cancels at s = 1,
+        // as with weights 1e82 and 1 side by side.)
+        let t = 1.0 - s;
         for level in 1..=p {
             for j in 0..=p - level {
                 for c in 0..d {
-                    w[j * d + c] += s * (w[(j + 1) * d + c] - w[j * d + c]);
+                    w[j * d + c] = w[j * d + c] * t + w[(j + 1) * d + c] * s;
                 }
             }
             keep(&mut lv, w, p - level + 1);
@@ -259,12 +262,14 @@ fn casteljau3<const N: usize>(src: &[f64], s: f64, h: f64, k: usize, out: &mut [
     if p <= top {
         d[p] = diff(&w, p);
     }
+    // (Each step as `(1 − s) x + s y`, exact at both ends: see `Piecewise::eval_derivs_any`.)
+    let t = 1.0 - s;
     for level in 1..=p {
         let left = p - level;
         for j in 0..=left {
             let next = w[j + 1];
             for (x, y) in w[j].iter_mut().zip(next) {
-                *x += s * (y - *x);
+                *x = *x * t + y * s;
             }
         }
         if left <= top {

@@ -138,23 +138,12 @@ fn fast_matches_oracle(c: &dyn PlaneCurve, f: &Antipodal) -> Result<(), String> 
     Ok(())
 }
 
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// Random closed splines: periodic, degrees 2 to 6, 6 to 15 points, a third rational. Most
 /// agree; where the plain path differs (its sampled inflections miss close pairs, its ε a pair
 /// beside another), the fast path must be the one the oracles confirm.
 #[test]
 fn random_closed_splines_agree() {
-    let mut rng = Lcg(0xd1ff_0017);
+    let mut rng = common::Lcg(0xd1ff_0017);
     let (mut valid, mut agreed) = (0, 0);
     for case in 0..common::cases(300) {
         let degree = 2 + (rng.next() * 5.0) as usize;

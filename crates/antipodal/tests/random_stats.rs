@@ -8,17 +8,6 @@ mod common;
 
 use antipodal::{antipodal, Error, Options, ParamCurve, SplineCurve};
 
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 #[test]
 fn random_bsplines_against_oracle() {
     run(0x5eed_1234, 300, 0.35, 200, &Options::default());
@@ -52,7 +41,7 @@ fn stress_random_bsplines() {
 }
 
 fn run(seed: u64, cases: usize, rmin: f64, min_valid: usize, opts: &Options) {
-    let mut rng = Lcg(seed);
+    let mut rng = common::Lcg(seed);
     let (mut valid, mut skipped, mut pairs, mut infl, mut certified) = (0, 0, 0, 0, 0);
     let mut types = std::collections::BTreeMap::new();
     for case in 0..cases {

@@ -293,3 +293,17 @@ pub fn tangent_residual(c1: &dyn PlaneCurve, c2: &dyn PlaneCurve, s: f64, t: f64
         .abs()
         .max((r.cross(ta) / r.norm()).abs())
 }
+
+/// A seeded linear congruential generator of uniform draws in `[0, 1)`, for test loops that
+/// keep statistics over their cases.
+pub struct Lcg(pub u64);
+impl Lcg {
+    /// The next draw.
+    pub fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}

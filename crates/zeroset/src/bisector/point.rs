@@ -1,0 +1,155 @@
+//! The bisector point of two matched foot points and the residual of the three bisector
+//! conditions there: plain geometry of the curves, apart from the zero-set search and cleaning.
+
+use bspline::Rational;
+
+/// Largest relative residual of the three bisector conditions for a reported point: the
+/// largest of `| |P − C1| − |P − C2| |` and the two foot-point orthogonalities
+/// `|⟨P − Ci, Ci'⟩| / |Ci'|`, divided by the larger distance `|P − Ci|` — but by no less than
+/// 1e-6 of the coordinate size (bounding-box diagonal plus distance of its centre from the
+/// origin), so that where the curves cross the requirement stays above what doubles hold.
+pub const RESIDUAL: f64 = 1e-9;
+
+/// Residuals are relative to the distance from the foot points, but never to less than this
+/// fraction of the size of the coordinates (bounding-box diagonal plus distance of its
+/// centre from the origin): the coordinates themselves carry rounding errors of ~1e-16 of
+/// that size, so where the curves cross (distances → 0) a purely relative test would ask for
+/// more than doubles hold. 1e-6 keeps the absolute requirement there at 1e-15 of the size.
+pub(super) const FLOOR: f64 = 1e-6;
+
+/// Point, first derivative of a planar rational curve at `u`.
+pub(super) fn pd(c: &Rational, u: f64) -> ([f64; 2], [f64; 2]) {
+    let mut o = [0.0; 4];
+    c.eval_derivs(u, 1, &mut o);
+    ([o[0], o[1]], [o[2], o[3]])
+}
+
+/// The largest relative residual of the three bisector conditions at `P` for the foot points
+/// `c1` (tangent `d1`) and `c2` (tangent `d2`); `floor` keeps it finite where the foot points
+/// meet (where the curves intersect, the intersection point is on the bisector).
+fn residual(
+    p: [f64; 2],
+    c1: [f64; 2],
+    d1: [f64; 2],
+    c2: [f64; 2],
+    d2: [f64; 2],
+    floor: f64,
+) -> f64 {
+    let v1 = [p[0] - c1[0], p[1] - c1[1]];
+    let v2 = [p[0] - c2[0], p[1] - c2[1]];
+    // Plain square roots: hypot's care about overflow is not needed (a huge or infinite
+    // candidate fails the test either way) and it was a visible cost.
+    let norm = |x: [f64; 2]| (x[0] * x[0] + x[1] * x[1]).sqrt();
+    let (r1, r2) = (norm(v1), norm(v2));
+    let rho = r1.max(r2).max(floor);
+    let o1 = (v1[0] * d1[0] + v1[1] * d1[1]).abs() / norm(d1).max(f64::MIN_POSITIVE);
+    let o2 = (v2[0] * d2[0] + v2[1] * d2[1]).abs() / norm(d2).max(f64::MIN_POSITIVE);
+    (r1 - r2).abs().max(o1).max(o2) / rho
+}
+
+/// The bisector point `P(t, r)` for matched foot points, with its relative residual.
+///
+/// Three candidates: the intersection of the normal lines (Eq. 16, Cramer's rule) and the
+/// equidistant point along each normal line (accurate where the normals nearly coincide); the
+/// one with the smallest residual wins.
+pub(super) fn point_and_residual(
+    c1: &Rational,
+    c2: &Rational,
+    t: f64,
+    r: f64,
+    floor: f64,
+) -> Option<([f64; 2], f64)> {
+    let (p1, d1) = pd(c1, t);
+    let (p2, d2) = pd(c2, r);
+    let d = [p1[0] - p2[0], p1[1] - p2[1]];
+    let dd = d[0] * d[0] + d[1] * d[1];
+    let mut cands: [Option<[f64; 2]>; 3] = [None; 3];
+    let den = d1[0] * d2[1] - d1[1] * d2[0];
+    if den != 0.0 {
+        let a1 = p1[0] * d1[0] + p1[1] * d1[1];
+        let a2 = p2[0] * d2[0] + p2[1] * d2[1];
+        cands[0] = Some([
+            (a1 * d2[1] - a2 * d1[1]) / den,
+            (d1[0] * a2 - d2[0] * a1) / den,
+        ]);
+    }
+    if dd == 0.0 {
+        cands[1] = Some(p1);
+    } else {
+        // P = C1 + α N1 with |α N1|² = |P − C2|²  ⇒  α = −|d|² / (2 ⟨N1, d⟩).
+        let n1 = [-d1[1], d1[0]];
+        let s1 = n1[0] * d[0] + n1[1] * d[1];
+        if s1 != 0.0 {
+            let al = -dd / (2.0 * s1);
+            cands[1] = Some([p1[0] + al * n1[0], p1[1] + al * n1[1]]);
+        }
+        let n2 = [-d2[1], d2[0]];
+        let s2 = n2[0] * d[0] + n2[1] * d[1];
+        if s2 != 0.0 {
+            let be = dd / (2.0 * s2);
+            cands[2] = Some([p2[0] + be * n2[0], p2[1] + be * n2[1]]);
+        }
+    }
+    cands
+        .iter()
+        .flatten()
+        .filter(|p| p[0].is_finite() && p[1].is_finite())
+        .map(|&p| (p, residual(p, p1, d1, p2, d2, floor)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+}
+
+/// The bisector condition `ψ = 2 ⟨N1, d⟩ ⟨d, C2'⟩ − |d|² ⟨N1, C2'⟩` (with `d = C1 − C2`,
+/// `N1` the normal of `C1`: the equidistant point on the normal line of `C1(t)` lies on the
+/// normal line of `C2(r)`) and its partial derivatives. Cubic in `d`, so its rounding error
+/// shrinks with `d` where the curves cross, unlike that of F3.
+pub(super) fn psi(c1: &Rational, c2: &Rational, t: f64, r: f64) -> (f64, f64, f64) {
+    let (mut a, mut b) = ([0.0; 6], [0.0; 6]);
+    c1.eval_derivs(t, 2, &mut a);
+    c2.eval_derivs(r, 2, &mut b);
+    let dot = |x: [f64; 2], y: [f64; 2]| x[0] * y[0] + x[1] * y[1];
+    let d = [a[0] - b[0], a[1] - b[1]];
+    let (d1, e1) = ([a[2], a[3]], [a[4], a[5]]);
+    let (d2, e2) = ([b[2], b[3]], [b[4], b[5]]);
+    let n1 = [-d1[1], d1[0]];
+    let m1 = [-e1[1], e1[0]];
+    let (s, g, dd, k) = (dot(n1, d), dot(d, d2), dot(d, d), dot(n1, d2));
+    let v = 2.0 * s * g - dd * k;
+    let (s_t, g_t, dd_t, k_t) = (dot(m1, d), dot(d1, d2), 2.0 * dot(d, d1), dot(m1, d2));
+    let (s_r, g_r, dd_r, k_r) = (
+        -dot(n1, d2),
+        dot(d, e2) - dot(d2, d2),
+        -2.0 * dot(d, d2),
+        dot(n1, e2),
+    );
+    (
+        v,
+        2.0 * (s_t * g + s * g_t) - (dd_t * k + dd * k_t),
+        2.0 * (s_r * g + s * g_r) - (dd_r * k + dd * k_r),
+    )
+}
+
+/// The bisector point of the foot points `c1(t)`, `c2(r)` if they are matched (residual of the
+/// bisector conditions ≤ [`RESIDUAL`]), else `None`.
+pub fn bisector_point(c1: &Rational, c2: &Rational, t: f64, r: f64) -> Option<[f64; 2]> {
+    let (center, diag) = bbox(&[c1, c2]);
+    let floor = FLOOR * (diag + center[0].hypot(center[1]));
+    point_and_residual(c1, c2, t, r, floor).and_then(|(p, res)| (res <= RESIDUAL).then_some(p))
+}
+
+/// Bounding box of the control points: (centre, diagonal).
+pub(super) fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for c in curves {
+        for p in c.control_points() {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+    }
+    let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    (
+        [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],
+        if diag > 0.0 { diag } else { 1.0 },
+    )
+}

@@ -1,7 +1,7 @@
 //! The runs on a prepared curve: validation and dissection (§5.1–5.2), the pair loop of §5,
 //! and the two-curve common tangents of §2.5, in the curve's frame.
 
-use crate::dissect::{Piece, Tracks, Zeros};
+use crate::dissect::{Piece, Zeros};
 use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
@@ -10,6 +10,7 @@ use crate::pairs::THETA_NOISE;
 use crate::pairs::{negligible, opposite_pair, Pair};
 use crate::search::{antipodal_points, Budget};
 use crate::tangent;
+use crate::tracks::Tracks;
 use crate::types::{
     Antipodal, AntipodalPair, Inflection, InflectionKind, Inflections, Options, PairType,
     TangentLine, Tangents,

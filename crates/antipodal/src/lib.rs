@@ -24,11 +24,12 @@
 //!
 //! The modules, in the order of the paper's steps (each says where it goes beyond the paper):
 //! `prepare` (the frame and the symbolic forms, once per curve) and `driver` (one run);
-//! `dissect` and `simple` (§5: monotone pieces, and the proof that the curve is simple);
+//! `tracks`, `dissect` and `simple` (§5: the tangent's turning, monotone pieces, and the
+//! proof that the curve is simple);
 //! `prims` (Appendix A: the primitives); `tangent` (§2.5: common tangents); `pairs` (a pair
-//! of pieces and its sections); `bisect` (§4.1); `search` (Table 1 and March, §4.2);
-//! `finish` and `families` (beyond the paper: proofs that spare marches, and continua of
-//! pairs). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
+//! of pieces and its sections); `bisect` (§4.1); `search` (Table 1) and `march` (§4.2);
+//! `finish`, `monotone`, `radius_rates` and `families` (beyond the paper: proofs that spare
+//! marches, that θ is monotone or of one sign on a stretch, and continua of pairs). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
 //! `taylor` and `interval`; `doubt` names every reason a result is not certified.
 
@@ -45,13 +46,17 @@ mod families;
 mod finish;
 mod forms;
 mod interval;
+mod march;
+mod monotone;
 mod pairs;
 mod prepare;
 mod prims;
+mod radius_rates;
 mod search;
 mod simple;
 mod tangent;
 mod taylor;
+mod tracks;
 mod types;
 mod view;
 

@@ -19,9 +19,10 @@
 //! On a curve without symbolic forms the inflections are sampled, so an arc may hide a pair of
 //! them: the densified polygon of the track is searched for crossings instead.
 
-use crate::dissect::{Tracks, Zeros};
+use crate::dissect::Zeros;
 use crate::doubt::Doubt;
 use crate::error::{Error, Result};
+use crate::tracks::Tracks;
 use crate::view::View;
 use curve::{wrap_pi, V2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};

@@ -223,7 +223,7 @@ mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
     use crate::driver::dissect;
-    use crate::finish::tests::opposite_by_bisection;
+    use crate::monotone::tests::opposite_by_bisection;
     use crate::pairs::opposite_pair;
     use crate::prepare::tests::{as_given, star_curve, star_curve_at};
     use crate::Options;

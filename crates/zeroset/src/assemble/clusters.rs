@@ -1,0 +1,290 @@
+//! The unresolved leaves of the subdivision: finding the leaf at a point, clustering touching
+//! leaves into singular or isolated points, and the tests for critical points of `F` there.
+//! Apart from the matching of arc ends, which only asks which cluster an end goes to.
+
+use crate::extract::{End, Leaf};
+use crate::patch::{Patch, EPS};
+
+/// Leaf boxes sorted by `t0`, to find the leaf holding a point.
+pub(super) struct LeafIndex<'a> {
+    leaves: &'a [Leaf],
+    order: Vec<usize>,
+    t0s: Vec<f64>,
+    max_w: f64,
+    ext: [f64; 2],
+}
+
+impl<'a> LeafIndex<'a> {
+    pub(super) fn new(leaves: &'a [Leaf], ext: [f64; 2]) -> Self {
+        let mut order: Vec<usize> = (0..leaves.len()).collect();
+        order.sort_by(|&a, &b| leaves[a].bx[0].total_cmp(&leaves[b].bx[0]));
+        let t0s = order.iter().map(|&k| leaves[k].bx[0]).collect();
+        let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx[1] - l.bx[0]));
+        Self {
+            leaves,
+            order,
+            t0s,
+            max_w,
+            ext,
+        }
+    }
+
+    /// The leaf just across the patch edge that `e` lies on, holding `e` on its own edge
+    /// (exact tests: the boxes of the subdivision share their split values bit for bit).
+    pub(super) fn across(&self, e: &End) -> Option<usize> {
+        let p = e.p;
+        let lo = self.t0s.partition_point(|&x| x < p[0] - self.max_w);
+        let hi = self.t0s.partition_point(|&x| x <= p[0]);
+        self.order[lo..hi].iter().copied().find(|&k| {
+            let b = self.leaves[k].bx;
+            let (along, lim) = match e.edge {
+                0 => (p[0], b[3] == e.line),
+                2 => (p[0], b[2] == e.line),
+                1 => (p[1], b[0] == e.line),
+                _ => (p[1], b[1] == e.line),
+            };
+            let range = if e.edge % 2 == 0 {
+                [b[0], b[1]]
+            } else {
+                [b[2], b[3]]
+            };
+            lim && along >= range[0] && along <= range[1]
+        })
+    }
+
+    /// A leaf whose box, grown by `slack` of the domain, holds `p`.
+    pub(super) fn find(&self, p: [f64; 2], slack: f64) -> Option<usize> {
+        let s = [slack * self.ext[0], slack * self.ext[1]];
+        // Candidates: t0 in [p − max_w − slack, p + slack].
+        let lo = self.t0s.partition_point(|&x| x < p[0] - self.max_w - s[0]);
+        let hi = self.t0s.partition_point(|&x| x <= p[0] + s[0]);
+        self.order[lo..hi].iter().copied().find(|&k| {
+            let b = self.leaves[k].bx;
+            p[0] >= b[0] - s[0] && p[0] <= b[1] + s[0] && p[1] >= b[2] - s[1] && p[1] <= b[3] + s[1]
+        })
+    }
+}
+
+/// A hull grown by its own size on every side: the neighbourhood of a cluster.
+pub(super) fn grown(h: [f64; 4]) -> [f64; 4] {
+    let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
+    [h[0] - wt, h[1] + wt, h[2] - wr, h[3] + wr]
+}
+
+/// Whether one partial derivative of `F` has one trusted sign on all of the box `g`: then `F`
+/// is strictly monotone along every line of `g` in that direction, so no zero of `F` in `g` is
+/// isolated and no closed curve of zeros lies in `g`.
+///
+/// A cluster with no arcs attached is reported as an isolated point (or a loop below the
+/// tolerance), which needs just that. Its leaves are flat — `|F|` below its rounding bound —
+/// but flatness alone proves nothing: beside the arms of a crossing the flat region is a band
+/// along each arm (where `F` is the product of the distances to the lines, narrowing as
+/// `1/distance` from the crossing), and a column of leaves inside such a band, just beside the
+/// arm, holds no zero at all while `∇F` there is far above its rounding level.
+pub(super) fn no_critical_point(cells: &[Patch], g: [f64; 4], at: [f64; 2]) -> bool {
+    let err = |cell: &Patch| 4.0 * (cell.pt + cell.pr + 2) as f64 * EPS * cell.max_abs();
+    // The partial at `at` (a point of `g`) is within the range of the coefficients the proof
+    // needs above `2 err`; where it is not even above `err` (the evaluation's own error is
+    // below a quarter of that), the proof cannot succeed and is not tried: at a crossing or
+    // a degenerate corner it would always fail.
+    let inside = |c: &&Patch| at[0] >= c.t0 && at[0] <= c.t1 && at[1] >= c.r0 && at[1] <= c.r1;
+    let hopeless = cells.iter().find(inside).map(|cell| {
+        let d = cell.eval_grad(at[0], at[1]);
+        let e = err(cell);
+        [
+            d[1].abs() * (cell.t1 - cell.t0) <= e * cell.pt as f64,
+            d[2].abs() * (cell.r1 - cell.r0) <= e * cell.pr as f64,
+        ]
+    });
+    (0..2).any(|k| {
+        if hopeless.is_some_and(|h| h[k]) {
+            return false;
+        }
+        let mut sign = 0i8;
+        for cell in cells {
+            match cell.partial_sign(k, g, err(cell)) {
+                None => {}
+                Some(s) if s != 0 && (sign == 0 || s == sign) => sign = s,
+                Some(_) => return false,
+            }
+        }
+        sign != 0
+    })
+}
+
+/// Newton on `∇F = 0` from `x`, with the Hessian from central differences of the exact
+/// gradient; `None` if it leaves the (doubled) box. (At a degenerate critical point, where
+/// F vanishes to higher order, it only creeps; the last iterate is returned.)
+fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
+    let (wt, wr) = ((bx[1] - bx[0]).max(1e-300), (bx[3] - bx[2]).max(1e-300));
+    let lim = [bx[0] - wt, bx[1] + wt, bx[2] - wr, bx[3] + wr];
+    let (ht, hr) = (1e-4 * (cell.t1 - cell.t0), 1e-4 * (cell.r1 - cell.r0));
+    let mut p = x;
+    for _ in 0..30 {
+        let g = cell.eval_grad(p[0], p[1]);
+        let (gtp, gtm) = (
+            cell.eval_grad(p[0] + ht, p[1]),
+            cell.eval_grad(p[0] - ht, p[1]),
+        );
+        let (grp, grm) = (
+            cell.eval_grad(p[0], p[1] + hr),
+            cell.eval_grad(p[0], p[1] - hr),
+        );
+        let htt = (gtp[1] - gtm[1]) / (2.0 * ht);
+        let hrr = (grp[2] - grm[2]) / (2.0 * hr);
+        let htr = 0.5 * ((gtp[2] - gtm[2]) / (2.0 * ht) + (grp[1] - grm[1]) / (2.0 * hr));
+        let det = htt * hrr - htr * htr;
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let dt = (g[1] * hrr - g[2] * htr) / det;
+        let dr = (g[2] * htt - g[1] * htr) / det;
+        p = [p[0] - dt, p[1] - dr];
+        if !(p[0] >= lim[0] && p[0] <= lim[1] && p[1] >= lim[2] && p[1] <= lim[3]) {
+            return None;
+        }
+        if dt.abs() <= 1e-15 * (cell.t1 - cell.t0) && dr.abs() <= 1e-15 * (cell.r1 - cell.r0) {
+            return Some(p);
+        }
+    }
+    Some(p)
+}
+
+/// The clusters of unresolved leaves: for each leaf its cluster, and per cluster the hull of
+/// its boxes and its representative point.
+pub(super) struct Clusters {
+    pub(super) of: Vec<usize>,
+    pub(super) n: usize,
+    pub(super) hull: Vec<[f64; 4]>,
+    pub(super) node: Vec<[f64; 2]>,
+}
+
+/// Connected components of touching leaf boxes (sweep over boxes sorted by `t0`), then merged
+/// where their neighbourhoods (hulls grown by their own size) overlap.
+///
+/// Representative point: the leaf centre with the smallest |F|, sharpened by Newton on
+/// ∇F = 0 (leaves resolve a crossing only to about the square root of the rounding level).
+/// The flat region of a crossing (where |F| is below its rounding bound) reaches out along
+/// the arms, thinning, and can come out of the subdivision in pieces separated by small
+/// simple patches; apart, the pieces would each claim some of the arms. (A larger reach
+/// also catches satellites farther along an arm, but it merges the flat corners of a
+/// self-bisector's cells on the diagonal with the short genuine branches that start there.)
+pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) -> Clusters {
+    let n = leaves.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn find(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            p[i] = p[p[i]];
+            i = p[i];
+        }
+        i
+    }
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| leaves[a].bx[0].total_cmp(&leaves[b].bx[0]));
+    let slack = [1e-9 * ext[0], 1e-9 * ext[1]];
+    let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx[1] - l.bx[0]));
+    for (ia, &a) in order.iter().enumerate() {
+        let la = leaves[a].bx;
+        for &b in &order[ia + 1..] {
+            let lb = leaves[b].bx;
+            if lb[0] > la[1] + slack[0] + max_w {
+                break;
+            }
+            let touch = lb[0] <= la[1] + slack[0]
+                && la[0] <= lb[1] + slack[0]
+                && lb[2] <= la[3] + slack[1]
+                && la[2] <= lb[3] + slack[1];
+            if touch {
+                let (x, y) = (find(&mut parent, a), find(&mut parent, b));
+                parent[x] = y;
+            }
+        }
+    }
+    // Per root: hull, best leaf, node.
+    let mut hull: Vec<Option<[f64; 4]>> = vec![None; n];
+    let mut best: Vec<(f64, usize)> = vec![(f64::INFINITY, 0); n];
+    for (i, l) in leaves.iter().enumerate() {
+        let r = find(&mut parent, i);
+        let h = hull[r].get_or_insert(l.bx);
+        h[0] = h[0].min(l.bx[0]);
+        h[1] = h[1].max(l.bx[1]);
+        h[2] = h[2].min(l.bx[2]);
+        h[3] = h[3].max(l.bx[3]);
+        if l.fabs < best[r].0 {
+            best[r] = (l.fabs, i);
+        }
+    }
+    let mut node = vec![[f64::NAN; 2]; n];
+    // |∇F| at the node (scaled by the domain): zero at a crossing, so when clusters merge the
+    // node nearest to being a critical point represents them.
+    let mut slope = vec![f64::INFINITY; n];
+    for r in 0..n {
+        let Some(h) = hull[r] else { continue };
+        let l = &leaves[best[r].1];
+        node[r] = l.center;
+        if let Some(cell) = cells.get(l.cell) {
+            if let Some(q) = critical_point(cell, l.center, h) {
+                node[r] = q;
+            }
+            let g = cell.eval_grad(node[r][0], node[r][1]);
+            slope[r] = (g[1] * ext[0]).hypot(g[2] * ext[1]);
+        }
+    }
+    let roots: Vec<usize> = (0..n).filter(|&i| hull[i].is_some()).collect();
+    let meet =
+        |g: [f64; 4], h: [f64; 4]| h[0] <= g[1] && g[0] <= h[1] && h[2] <= g[3] && g[2] <= h[3];
+    // Bounded: each pass merges two clusters or stops.
+    for _ in 0..roots.len() {
+        let mut merged = false;
+        let live: Vec<usize> = roots
+            .iter()
+            .copied()
+            .filter(|&i| find(&mut parent, i) == i)
+            .collect();
+        'pairs: for (x, &a) in live.iter().enumerate() {
+            for &b in &live[x + 1..] {
+                let (Some(ha), Some(hb)) = (hull[a], hull[b]) else {
+                    continue;
+                };
+                // Their neighbourhoods (each hull grown by its own size) overlap.
+                if meet(grown(ha), grown(hb)) {
+                    parent[a] = b;
+                    hull[b] = Some([
+                        ha[0].min(hb[0]),
+                        ha[1].max(hb[1]),
+                        ha[2].min(hb[2]),
+                        ha[3].max(hb[3]),
+                    ]);
+                    // The node nearer to a critical point represents both.
+                    if slope[a] < slope[b] {
+                        node[b] = node[a];
+                        slope[b] = slope[a];
+                    }
+                    merged = true;
+                    break 'pairs;
+                }
+            }
+        }
+        if !merged {
+            break;
+        }
+    }
+    let mut id = vec![usize::MAX; n];
+    let mut out = Clusters {
+        of: vec![0; n],
+        n: 0,
+        hull: Vec::new(),
+        node: Vec::new(),
+    };
+    for i in 0..n {
+        let r = find(&mut parent, i);
+        if id[r] == usize::MAX {
+            id[r] = out.n;
+            out.n += 1;
+            out.hull.push(hull[r].unwrap_or([f64::NAN; 4]));
+            out.node.push(node[r]);
+        }
+        out.of[i] = id[r];
+    }
+    out
+}

@@ -160,17 +160,20 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
 }
 
 /// A march whose step from `prev` to `here` found no next step ahead: where θ at `here` still
-/// has the march's sign (`start_negative`) nothing lies ahead; where it has the other sign or
-/// is within its noise, the last step crossed a pair, which lies between the two points and
-/// is bisected for (or polished, at `here` itself).
+/// has the march's sign (`start_negative`) nothing lies ahead; where it has the other sign,
+/// the last step crossed a pair, which lies between the two points and is bisected for. Where
+/// θ is within its noise at `here`, Newton's method there must resolve a pair; else θ is
+/// merely small (the curves nearly arcs of one circle) and the march crawls: the section's
+/// width settles the rest from `prev` on. (Every such point was taken for a pair: a slender
+/// elliptic lemniscate at a tolerance of 1e-6 had a "pair" every 1e-4 along its lobes.)
 fn overshot(p: &Pair, prev: (f64, f64), here: (f64, f64), start_negative: bool, up: bool) -> March {
     let (s, t) = here;
     let th = p.sin_theta(s, t);
     if p.is_noise(s, t, th) {
-        if let Some((s, t)) = polish(p.vs, p.vt, s, t, 64.0 * p.vs.tol) {
-            return March::Found(s, t, up);
-        }
-        return March::Found(s, t, up);
+        return match polish(p.vs, p.vt, s, t, 64.0 * p.vs.tol) {
+            Some((s, t)) if p.is_resolved(s, t) => March::Found(s, t, up),
+            _ => March::Crawled(prev.0, prev.1, up),
+        };
     }
     if (th < 0.0) == start_negative {
         return March::Nothing;
@@ -325,7 +328,7 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
     } else {
         ps <= s + p.vs.tol
     };
-    if !ahead || p.sin_theta(ps, pt).abs() > 1e-12 {
+    if !ahead || p.sin_theta(ps, pt).abs() > 1e-12 || !p.is_resolved(ps, pt) {
         return Early::Continue;
     }
     let sign = p.sin_theta(s, t) < 0.0;
@@ -401,5 +404,7 @@ fn converged(p: &Pair, step: f64, last: f64, s: f64, t: f64) -> Option<(f64, f64
         return None;
     }
     let (ps, pt) = polish(p.vs, p.vt, s, t, 64.0 * p.vs.tol.max(left))?;
-    (p.sin_theta(ps, pt).abs() <= THETA_NOISE.min(1e3 * p.theta_noise(ps, pt))).then_some((ps, pt))
+    let th = p.sin_theta(ps, pt);
+    (th.abs() <= THETA_NOISE.min(1e3 * p.theta_noise(ps, pt)) && p.is_resolved(ps, pt))
+        .then_some((ps, pt))
 }

@@ -157,6 +157,17 @@ impl<'a> Pair<'a> {
         sin_theta.abs() > THETA_NOISE || sin_theta.abs() > self.theta_noise(s, t)
     }
 
+    /// `(s, t)` is a pair to the parameter tolerance (see [`is_resolved`]).
+    pub(crate) fn is_resolved(&self, s: f64, t: f64) -> bool {
+        is_resolved(
+            self.vs,
+            self.vt,
+            s,
+            t,
+            RESOLVED_STEPS * self.vs.tol.max(self.vt.tol),
+        )
+    }
+
     /// `d(s) = N(s) · r(s)`: signed distance between the parallel tangent lines (§2.2).
     pub(crate) fn d(&self, s: f64, t: f64) -> f64 {
         let js = self.vs.jet_to(s, 1);
@@ -315,29 +326,19 @@ pub(crate) fn polish_within(
     // which gives both the residual of the current point and the Newton step from it.
     let mut best = (f64::INFINITY, s, t);
     for _ in 0..9 {
-        let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
-        let r = jt.p - js.p;
-        let f1 = js.d1.cross(jt.d1);
-        let f2 = r.dot(js.d1);
-        let res =
-            (f1 / (js.d1.norm() * jt.d1.norm())).abs() + (f2 / (r.norm() * js.d1.norm())).abs();
-        if res > best.0 {
+        let step = newton_step(vs, vt, s, t);
+        if step.residual > best.0 {
             break;
         }
-        best = (res, s, t);
+        best = (step.residual, s, t);
         // At the rounding floor another step only moves within the noise (it used to take
         // three or four more jet pairs to see the residual rise).
-        if res <= RESIDUAL_FLOOR {
+        if step.residual <= RESIDUAL_FLOOR {
             break;
         }
-        let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
-        let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
-        let det = a11 * a22 - a12 * a21;
-        if det == 0.0 || !det.is_finite() {
+        let Some((ds, dt)) = step.step else {
             break;
-        }
-        let ds = (f1 * a22 - f2 * a12) / det;
-        let dt = (a11 * f2 - a21 * f1) / det;
+        };
         if ds.abs() <= 4.0 * f64::EPSILON * s.abs().max(1.0)
             && dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(1.0)
         {
@@ -353,6 +354,49 @@ pub(crate) fn polish_within(
         t = nt;
     }
     Some((best.1, best.2))
+}
+
+/// Tolerances a Newton step from a found pair may still take for the pair to count as
+/// resolved: the polish's own reach, within which a march's limit is placed.
+const RESOLVED_STEPS: f64 = 64.0;
+
+/// The antipodal system at one point: its residual and Newton's step from there.
+struct NewtonStep {
+    /// The sines of the angles between the tangents and between `r` and the tangent at `s`,
+    /// summed.
+    residual: f64,
+    /// The step `(ds, dt)` to subtract (`None` where the Jacobian is singular).
+    step: Option<(f64, f64)>,
+}
+
+/// [`NewtonStep`] at `(s, t)`.
+fn newton_step(vs: &View, vt: &View, s: f64, t: f64) -> NewtonStep {
+    let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
+    let r = jt.p - js.p;
+    let f1 = js.d1.cross(jt.d1);
+    let f2 = r.dot(js.d1);
+    let residual =
+        (f1 / (js.d1.norm() * jt.d1.norm())).abs() + (f2 / (r.norm() * js.d1.norm())).abs();
+    let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
+    let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
+    let det = a11 * a22 - a12 * a21;
+    let step = (det != 0.0 && det.is_finite())
+        .then(|| ((f1 * a22 - f2 * a12) / det, (a11 * f2 - a21 * f1) / det));
+    NewtonStep { residual, step }
+}
+
+/// `(s, t)` is a pair to the tolerance `tol`: a root of the antipodal system to rounding, or
+/// one that Newton's method places within `tol` of it in both parameters. (The antipodal angle
+/// alone does not say so: where the curves are nearly arcs of one circle, as the lobes of a
+/// slender elliptic lemniscate, θ stays within 1e-9 of zero over stretches 1e5 tolerances
+/// long, and Newton from any point of them found a "pair" whose θ was zero because its `t`
+/// had left the opposite point, the tangents no longer parallel.)
+pub(crate) fn is_resolved(vs: &View, vt: &View, s: f64, t: f64, tol: f64) -> bool {
+    let at = newton_step(vs, vt, s, t);
+    at.residual <= RESIDUAL_FLOOR
+        || at
+            .step
+            .is_some_and(|(ds, dt)| ds.abs() <= tol && dt.abs() <= tol)
 }
 
 /// Newton's method on the common-tangent system `α′(s) × β′(t) = 0`, `(β(t) − α(s)) × α′(s) = 0`

@@ -59,7 +59,7 @@ impl View<'_> {
                 Some(Count::One(a, b)) => {
                     let (fa, fb) = (f(a).0, f(b).0);
                     if (fa < 0.0) != (fb < 0.0) {
-                        let u = solve_in(&f, (a, b), (fa, fb), self.tol, hint);
+                        let u = solve_in(&f, (a, b), (fa, fb), self.point_tol, hint);
                         return accept(u).then_some(u);
                     }
                 }
@@ -74,7 +74,7 @@ impl View<'_> {
             self.uncertify(Doubt::RootsUnresolved);
         }
         let (flo, fhi) = (f(lo).0, f(hi).0);
-        sampled(lo, hi, flo, fhi, &f, &accept, self.tol, hint)
+        sampled(lo, hi, flo, fhi, &f, &accept, self.point_tol, hint)
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -162,7 +162,7 @@ impl View<'_> {
             let j = self.jet_to(u, 3);
             (j.d1.dot(n), j.d2.dot(n), j.d3.dot(n))
         };
-        let u = solve_in(f, (lo, hi), ends, self.tol, hint);
+        let u = solve_in(f, (lo, hi), ends, self.point_tol, hint);
         (self.normal(u).dot(n) > 0.0).then_some(u)
     }
 
@@ -286,7 +286,13 @@ impl View<'_> {
             return None;
         }
         if (fl < 0.0) != (fh < 0.0) {
-            return Some(Some(solve_in(f, (lo, hi), (fl, fh), self.tol, f64::NAN)));
+            return Some(Some(solve_in(
+                f,
+                (lo, hi),
+                (fl, fh),
+                self.point_tol,
+                f64::NAN,
+            )));
         }
         // The bending direction: the side the tangent turns to (|Φ| < π).
         let turn = jl.d1.cross(jh.d1);
@@ -356,7 +362,7 @@ impl View<'_> {
                 let j = self.jet_to(u, 3);
                 (j.d1.dot(v), j.d2.dot(v), j.d3.dot(v))
             };
-            let ue = solve_in(g, (lo, hi), (gl, gh), self.tol, f64::NAN);
+            let ue = solve_in(g, (lo, hi), (gl, gh), self.point_tol, f64::NAN);
             cuts.push((ue, self.point(ue)));
         }
         cuts.push((hi, jh.p));
@@ -371,7 +377,7 @@ impl View<'_> {
             let ((x0, p0), (x1, p1)) = (cuts[k], cuts[k + 1]);
             let (f0, f1) = (val(p0), val(p1));
             if (f0 < 0.0) != (f1 < 0.0) {
-                let u = solve_in(f, (x0, x1), (f0, f1), self.tol, hint);
+                let u = solve_in(f, (x0, x1), (f0, f1), self.point_tol, hint);
                 if accept(u) {
                     return Some(Some(u));
                 }

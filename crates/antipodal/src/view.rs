@@ -33,6 +33,15 @@ impl std::ops::Deref for Cert<'_> {
 /// isolation of the curvature's roots brackets the ends to its tolerance, far below this.
 const STRAIGHT_END: f64 = 1e-9;
 
+/// The loosest tolerance (relative to the domain) points are solved to, whatever the
+/// parameter tolerance asked for: the default one. Solved only to a loose tolerance, an
+/// opposite point carries an error into θ far above θ itself where the curves are nearly arcs
+/// of one circle (θ of 1e-9 along the lobes of a slender elliptic lemniscate, against 1e-6 of
+/// noise at a tolerance of 1e-6), and the searches read its sign: hundreds of pairs were
+/// found along such lobes. Newton's method converges quadratically: the extra precision costs
+/// a step or two per solve.
+pub(crate) const POINT_TOL: f64 = 1e-12;
+
 /// What a view looks at: the curve evaluated in the parameter the algorithms run in, its
 /// symbolic forms when decisions are certified, whether it is simple and regular by
 /// construction (an analytic shape), and how its parameter maps to the one reported.
@@ -70,8 +79,13 @@ pub(crate) struct View<'a> {
     pub(crate) cert: Option<Cert<'a>>,
     /// Size of the curve (bounding-box diagonal): the scale for geometric tolerances.
     pub(crate) scale: f64,
-    /// Parameter tolerance.
+    /// Parameter tolerance: how closely the searches locate what they report.
     pub(crate) tol: f64,
+    /// The tolerance points are solved to (an opposite point, a point with a given normal, a
+    /// tangent's point): never looser than [`POINT_TOL`] of the domain, whatever the
+    /// searches' tolerance, since the signs of θ and of the primitives that steer the searches
+    /// are read at those points.
+    pub(crate) point_tol: f64,
     /// Cleared when some decision fell back on sampling.
     pub(crate) doubt: Cell<Option<Doubt>>,
     /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
@@ -202,6 +216,7 @@ impl<'a> View<'a> {
             cert,
             scale: 1.0,
             tol: tol * (b - a).max(1.0),
+            point_tol: tol.min(POINT_TOL) * (b - a).max(1.0),
             doubt: Cell::new(doubt),
             report: src.report,
             cache: JetCache::new(),

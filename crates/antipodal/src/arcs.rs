@@ -116,12 +116,12 @@ impl View<'_> {
         let (ta, tb) = (ja.d1.unit(), jb.d1.unit());
         let (sin, cos) = (ta.cross(tb), ta.dot(tb));
         let chord = jb.p - ja.p;
-        let pts = if cos > 0.0 && sin.abs() <= 1e-6 {
+        let pts = if cos > 0.0 && sin.abs() <= NEARLY_STRAIGHT {
             // Nearly straight: the arc strays from its chord by at most |chord| · turn.
-            let pad = chord.norm() * (sin.abs() + 1e-12);
+            let pad = chord.norm() * (sin.abs() + CHORD_ROUNDING);
             let pad = V2::new(pad, pad);
             [ja.p - pad, ja.p + pad, jb.p - pad, jb.p + pad]
-        } else if sin.abs() > 1e-6 {
+        } else if sin.abs() > NEARLY_STRAIGHT {
             let apex = ja.p + ta * (chord.cross(tb) / sin);
             [ja.p, jb.p, apex, apex]
         } else {
@@ -138,6 +138,14 @@ impl View<'_> {
         Some((lo, hi))
     }
 }
+
+/// The sine of the turn between an arc's end tangents below which the meet of the tangents
+/// is too ill-conditioned (a division by the sine) to bound the arc: it is bounded by its
+/// chord widened by the turn instead.
+const NEARLY_STRAIGHT: f64 = 1e-6;
+
+/// Relative room for the rounding of the chord's end points in that widening.
+const CHORD_ROUNDING: f64 = 1e-12;
 
 #[cfg(test)]
 mod tests {

@@ -99,5 +99,10 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
 fn pair_within(p: &Pair, start: (f64, f64), a: (f64, f64), b: (f64, f64)) -> Option<Found> {
     let area = ((a.0.min(b.0), a.0.max(b.0)), (a.1.min(b.1), a.1.max(b.1)));
     let (s, t) = polish_within(p.vs, p.vt, start.0, start.1, area)?;
-    (p.sin_theta(s, t).abs() <= 1e-13).then_some(Found { s, t })
+    (p.sin_theta(s, t).abs() <= BRACKETED_ROOT).then_some(Found { s, t })
 }
+
+/// `|sin θ|` at Newton's point inside a bracket for it to be the bracket's pair: a few hundred
+/// units of rounding of θ (the bracket itself proves a pair inside; this only checks that
+/// Newton reached it rather than stalling).
+const BRACKETED_ROOT: f64 = 1e-13;

@@ -351,7 +351,7 @@ impl View<'_> {
                 } else {
                     self.psi(tr, w[1])
                 };
-                let convex = if (q1 - q0).abs() > 1e-12 {
+                let convex = if (q1 - q0).abs() > TURN_ROUNDING {
                     q1 > q0
                 } else {
                     self.jet_to(0.5 * (w[0] + w[1]), 2).curvature() > 0.0
@@ -422,6 +422,10 @@ impl View<'_> {
         0.5 * (lo + hi)
     }
 }
+
+/// A piece's turn (in radians) below which its sign is rounding of the tangent angles at its
+/// ends: the curvature in its middle decides whether it is convex instead.
+const TURN_ROUNDING: f64 = 1e-12;
 
 #[cfg(test)]
 mod tests {

@@ -229,7 +229,7 @@ fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
     let mut out = SmallVec::new();
     // d has no zero inside a window (its zeros are the common tangents, the cuts): its sign
     // at an end where it is clear of zero is the window's; else it is taken in the middle.
-    let clear = 1e-6 * p.vs.scale.max(p.vt.scale);
+    let clear = D_CLEAR * p.vs.scale.max(p.vt.scale);
     let sign_at = |s: f64, t: f64| {
         let d = p.d(s, t);
         (d.abs() > clear).then_some(d > 0.0)
@@ -323,7 +323,7 @@ fn finish_pairs(
 ) -> Vec<AntipodalPair> {
     let within = |x: f64, a: f64, b: f64| {
         let (lo, hi) = (a.min(b), a.max(b));
-        let slack = 1e-9 * v.period;
+        let slack = FAMILY_SLACK * v.period;
         let k = ((x - lo + slack) / v.period).floor();
         let xx = x - k * v.period;
         xx >= lo - slack && xx <= hi + slack
@@ -337,10 +337,11 @@ fn finish_pairs(
     // (Both wrapped into the domain: their distance around the curve needs no remainder.)
     let close = |x: f64, y: f64| {
         let d = (x - y).abs();
-        d.min(v.period - d) <= 1e-7 * v.period
+        d.min(v.period - d) <= DUPLICATE * v.period
     };
     for (s, t) in raw {
-        let (s, t) = crate::pairs::polish(v, v, s, t, 1e-4 * v.period).unwrap_or((s, t));
+        let (s, t) =
+            crate::pairs::polish(v, v, s, t, FINAL_POLISH_REACH * v.period).unwrap_or((s, t));
         let (js, jt) = (v.jet_to(s, 1), v.jet_to(t, 1));
         let r = jt.p - js.p;
         if js.normal().dot(r) <= 0.0 || js.d1.dot(jt.d1) >= 0.0 {
@@ -404,7 +405,7 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
         } else {
             p.opposite(s)
         };
-        t.is_some_and(|t| p.r(s, t).norm() <= 1e-9 * p.vs.scale)
+        t.is_some_and(|t| p.r(s, t).norm() <= COINCIDE * p.vs.scale)
     });
     if coincide || *leaves == 0 {
         p.vs.uncertify(Doubt::CurvesTouch);
@@ -464,7 +465,7 @@ pub(crate) fn tangents_of(
                         &b.view,
                         s,
                         t,
-                        1e-6 * a.view.period.max(b.view.period),
+                        TANGENT_POLISH_REACH * a.view.period.max(b.view.period),
                     )
                     .unwrap_or((s, t));
                     lines.push((
@@ -482,14 +483,14 @@ pub(crate) fn tangents_of(
     let close = |x: f64, y: f64, per: f64, closed: bool| {
         let d = (x - y).abs();
         let d = if closed { d.min(per - d) } else { d };
-        d <= 1e-7 * per
+        d <= DUPLICATE * per
     };
     let size = a.view.scale;
     let mut out: Vec<TangentLine> = Vec::new();
     for (s, t, p, q) in lines {
         // With one curve twice, a "common" tangent touching at a single point (an inflection's
         // two sides meeting) is just a tangent: not a line through two points.
-        if same && (p - q).norm() <= 1e-5 * size {
+        if same && (p - q).norm() <= ONE_POINT * size {
             continue;
         }
         if out.iter().any(|l| {
@@ -511,3 +512,29 @@ pub(crate) fn tangents_of(
         reason: doubt.map(|d| d.reason().to_string()),
     })
 }
+
+/// The distance between the tangent lines (relative to the curves' size) from which its sign
+/// at a window's end is taken for the window's: far above its rounding.
+const D_CLEAR: f64 = 1e-6;
+
+/// Room (relative to the period) for a pair on a family's end to count as inside it.
+const FAMILY_SLACK: f64 = 1e-9;
+
+/// Two results closer than this (relative to the period, in both parameters) are one: the
+/// same pair or tangent found from two sections, far above the tolerances they were solved to.
+const DUPLICATE: f64 = 1e-7;
+
+/// How far (relative to the period) the final polish of a pair may move it: a pair found to
+/// a loose tolerance still lies well within this of the root Newton's method converges to.
+const FINAL_POLISH_REACH: f64 = 1e-4;
+
+/// The same for a common tangent.
+const TANGENT_POLISH_REACH: f64 = 1e-6;
+
+/// The distance (relative to the size) below which two stretches coincide: the same curve
+/// twice, with a continuum of tangents.
+const COINCIDE: f64 = 1e-9;
+
+/// The distance (relative to the size) below which a common tangent of a curve with itself
+/// touches at one point (an inflection's two sides meeting), not two.
+const ONE_POINT: f64 = 1e-5;

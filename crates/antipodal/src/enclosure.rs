@@ -87,7 +87,7 @@ impl Enclosure {
         let i = self.pw.piece_at(lo);
         let (a, b) = self.pw.piece_span(i);
         let h = self.hull[i];
-        lo >= a && hi <= b && h.lo > 1e-9 * h.hi
+        lo >= a && hi <= b && h.lo > HALF_PLANE_MARGIN * h.hi
     }
 
     /// The control points of every fine piece overlapping `[lo, hi]` (of a vector function)
@@ -217,12 +217,12 @@ fn cone_ends(c: &[f64], err: &[f64]) -> Option<(V2, V2)> {
 }
 
 /// A cone of directions (its unit boundary directions, see [`cone_ends`]) lies in the open
-/// half-plane `x · axis > 0`, by the margin `x · axis > 1e-9 |x| |axis|` (angles within
-/// `π/2 − 1e-9` of the axis): both ends inside. (The cone is narrower than π, so its arc
+/// half-plane `x · axis > 0`, by the margin `x · axis > HALF_PLANE_MARGIN |x| |axis|`
+/// (angles within `π/2 − 1e-9` of the axis): both ends inside. (The cone is narrower than π, so its arc
 /// cannot go round the other half-plane, which is as wide as π. Two dot products, where
 /// comparing angles took three arctangents per fine piece.)
 fn cone_inside(cone: Option<(V2, V2)>, axis: V2) -> bool {
-    let room = 1e-9 * axis.norm();
+    let room = HALF_PLANE_MARGIN * axis.norm();
     cone.is_some_and(|(a, b)| a.dot(axis) > room && b.dot(axis) > room)
 }
 
@@ -246,6 +246,10 @@ fn points_range(c: &[f64], d: usize, err: &[f64]) -> Iv {
         pts().map(|p| p.norm()).fold(0.0, f64::max) + reach,
     )
 }
+
+/// The margin by which points must lie inside a half-plane (relative to their length): far
+/// above the rounding of the projections, far below any turn a proof needs.
+pub(crate) const HALF_PLANE_MARGIN: f64 = 1e-9;
 
 #[cfg(test)]
 mod tests {

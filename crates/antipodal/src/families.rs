@@ -24,7 +24,7 @@ pub(crate) fn flat_pairs(
     let pf = v.point(f.lo);
     if g.flat {
         let ng = v.normal(0.5 * (g.lo + g.hi));
-        if (nf + ng).norm() > 1e-9 || nf.dot(v.point(g.lo) - pf) <= 0.0 {
+        if (nf + ng).norm() > OPPOSITE_NORMALS || nf.dot(v.point(g.lo) - pf) <= 0.0 {
             return;
         }
         // A continuum of pairs only between exactly parallel stretches: proven on the data
@@ -43,7 +43,7 @@ pub(crate) fn flat_pairs(
         let (g0, g1) = (x(g.lo), x(g.hi));
         let lo = f0.min(f1).max(g0.min(g1));
         let hi = f0.max(f1).min(g0.max(g1));
-        if hi - lo <= 1e-12 * v.scale {
+        if hi - lo <= OVERLAP_ROUNDING * v.scale {
             return;
         }
         // Parameter on a stretch at coordinate c: where the line across it meets it.
@@ -113,7 +113,7 @@ pub(crate) fn merge_families(
 ) -> Vec<(f64, f64, f64, f64)> {
     let same = |x: f64, y: f64| {
         let d = (x - y).rem_euclid(v.period);
-        d.min(v.period - d) <= 1e-9 * v.period
+        d.min(v.period - d) <= SAME_END * v.period
     };
     fs.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out: Vec<(f64, f64, f64, f64)> = Vec::new();
@@ -150,3 +150,14 @@ pub(crate) fn family_of(v: &View, f: (f64, f64, f64, f64)) -> Family {
         }
     }
 }
+
+/// How far from opposite two straight stretches' unit normals may be for them to face each
+/// other (a judgement where they are not proven parallel on the data, then uncertified).
+const OPPOSITE_NORMALS: f64 = 1e-9;
+
+/// The overlap (relative to the size) of two facing stretches below which it is rounding.
+const OVERLAP_ROUNDING: f64 = 1e-12;
+
+/// How close (relative to the period) one family's end and the next one's start are the same
+/// point: the dissection's cuts, solved far more finely.
+const SAME_END: f64 = 1e-9;

@@ -47,7 +47,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     let reach = remaining.max((end_t - t).abs());
     let ahead_ok = |&(ps, pt): &(f64, f64)| {
         let ahead = (ps - s) * dir;
-        ahead > 0.0 && ahead < remaining && p.sin_theta(ps, pt).abs() <= 1e-12
+        ahead > 0.0 && ahead < remaining && p.sin_theta(ps, pt).abs() <= NEWTON_ROOT
     };
     // Newton from the march's point, or else (near a nearly double pair Newton overshoots) a
     // sign change of θ found around the limit the march's linear convergence predicts.
@@ -58,7 +58,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     let (e, te) = match proposal {
         Some((ps, pt)) => {
             let ahead = (ps - s) * dir;
-            let past = (1e-3 * ahead).max(64.0 * p.vs.tol);
+            let past = (PAST_PROPOSAL * ahead).max(64.0 * p.vs.tol);
             if ahead + past < remaining {
                 let e = ps + dir * past;
                 (e, p.opposite_from(e, (ps, pt), (end_s, end_t)))
@@ -250,3 +250,12 @@ pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Optio
     }
     out
 }
+
+/// `|sin θ|` at the point Newton's method proposes for it to be a pair: a few thousand units
+/// of rounding of θ (the proof that follows decides; this only rules out a stalled Newton).
+pub(crate) const NEWTON_ROOT: f64 = 1e-12;
+
+/// How far past the proposed pair (relative to the way to it) the stretch proven to hold one
+/// pair reaches: enough to bracket it with room for its solve, short enough to stay clear of
+/// the next.
+const PAST_PROPOSAL: f64 = 1e-3;

@@ -66,5 +66,5 @@ pub use forms::SymbolicForms;
 pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
 pub use types::{
     Antipodal, AntipodalPair, Family, Inflection, InflectionKind, Inflections, Options, PairType,
-    TangentLine, Tangents,
+    TangentLine, Tangents, DEFAULT_TOL,
 };

@@ -5,7 +5,7 @@
 
 use crate::bisect::bisect;
 use crate::doubt::Doubt;
-use crate::finish::{certified_finish, clear_ahead, Finish};
+use crate::finish::{certified_finish, clear_ahead, Finish, NEWTON_ROOT};
 use crate::pairs::{negligible, polish, Pair, THETA_NOISE};
 use crate::prims::Prefer;
 
@@ -207,7 +207,7 @@ fn steps_left(p: &Pair, s: f64, up: bool, step: f64, ratio: f64) -> f64 {
     if step.is_nan() || step <= 0.0 || remaining <= 0.0 {
         return 0.0;
     }
-    if ratio > 1.0 + 1e-9 {
+    if ratio > 1.0 + RATIO_ROUNDING {
         // Steps growing geometrically: Σ step·ratioᵏ reaches `remaining` after this many.
         (1.0 + remaining * (ratio - 1.0) / step).ln() / ratio.ln()
     } else {
@@ -316,7 +316,7 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
     // not tried before the march shows its convergence: from a first iterate it may jump to
     // the pair just cut off beyond the far end and over one in between.)
     let q = step / last;
-    if !(q < 0.98 && step <= 1e-4 * p.vs.period) {
+    if !(q < FINISH_RATIO && step <= FINISH_STEP * p.vs.period) {
         return Early::Continue;
     }
     let ahead_by = step * q / (1.0 - q);
@@ -328,7 +328,7 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
     } else {
         ps <= s + p.vs.tol
     };
-    if !ahead || p.sin_theta(ps, pt).abs() > 1e-12 || !p.is_resolved(ps, pt) {
+    if !ahead || p.sin_theta(ps, pt).abs() > NEWTON_ROOT || !p.is_resolved(ps, pt) {
         return Early::Continue;
     }
     let sign = p.sin_theta(s, t) < 0.0;
@@ -399,7 +399,8 @@ fn converged(p: &Pair, step: f64, last: f64, s: f64, t: f64) -> Option<(f64, f64
         return None;
     }
     let left = if q < 0.5 { step } else { step * q / (1.0 - q) };
-    let close = left <= p.vs.tol || (p.sin_theta(s, t).abs() <= 1e-15 && step <= 1e3 * p.vs.tol);
+    let close =
+        left <= p.vs.tol || (p.sin_theta(s, t).abs() <= THETA_ROUNDING && step <= 1e3 * p.vs.tol);
     if !close {
         return None;
     }
@@ -408,3 +409,16 @@ fn converged(p: &Pair, step: f64, last: f64, s: f64, t: f64) -> Option<(f64, f64
     (th.abs() <= THETA_NOISE.min(1e3 * p.theta_noise(ps, pt)) && p.is_resolved(ps, pt))
         .then_some((ps, pt))
 }
+
+/// A ratio of steps above 1 by more than this grows geometrically (not rounding of 1).
+const RATIO_ROUNDING: f64 = 1e-9;
+
+/// The uncertified finish starts once the march converges with steps shrinking by this
+/// ratio at least (0.9 skipped pairs close to others on random curves) …
+const FINISH_RATIO: f64 = 0.98;
+
+/// … and below this part of the period.
+const FINISH_STEP: f64 = 1e-4;
+
+/// `|sin θ|` that is zero to the rounding of θ's evaluation (a few units).
+const THETA_ROUNDING: f64 = 1e-15;

@@ -130,7 +130,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         // θ′/|C′(s)| = (1 + κ(s)/κ(t)) cos θ/|r| − κ(s) (Jia eq. 10). First as κ(s) times the
         // bracket (ρ(s) + ρ(t)) cos θ/|r| − 1, each range entering once (the tightest).
         let g = match (rho_s, rho_t) {
-            (Some(rs), Some(rt)) => Some(rs.add(rt).mul(c_r).sub(one).widened(1e-9)),
+            (Some(rs), Some(rt)) => Some(rs.add(rt).mul(c_r).sub(one).widened(BOUND_ROOM)),
             _ => None,
         };
         if let Some(g) = g.filter(|g| g.excludes_zero()) {
@@ -144,7 +144,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         let q = Iv::multilinear(
             [ks, kt, c_r],
             |a, b, c| a * (c - b) + b * c,
-            1e-9 * (ks.mag() * (c_r.mag() + kt.mag()) + kt.mag() * c_r.mag()),
+            BOUND_ROOM * (ks.mag() * (c_r.mag() + kt.mag()) + kt.mag() * c_r.mag()),
         );
         if q.excludes_zero() {
             return Some(p.t_convex == (q.lo > 0.0));
@@ -161,7 +161,12 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         // (Multilinear again: exact at the corners.)
         let rate = |k: Iv, rho: Iv| {
             let size = (1.0 + k.mag() * rho.mag()) * c_r.mag() + k.mag();
-            Iv::multilinear([k, rho, c_r], |k, r, c| (1.0 + k * r) * c - k, 1e-9 * size).mag()
+            Iv::multilinear(
+                [k, rho, c_r],
+                |k, r, c| (1.0 + k * r) * c - k,
+                BOUND_ROOM * size,
+            )
+            .mag()
         };
         let in_s = rho_t.map_or(f64::INFINITY, |rt| rate(ks, rt));
         let in_t = rho_s.map_or(f64::INFINITY, |rs| rate(kt, rs));
@@ -175,7 +180,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
             (end_angle(s1, t1), p.r(s1, t1).norm(), by_s.min(by_t))
         });
         let change = (bs.speed * by_g.min(in_s) * len).min(bt.speed * in_t * len_t);
-        let next = 0.5 * (th0 + th1 + change) * (1.0 + 1e-9);
+        let next = 0.5 * (th0 + th1 + change) * (1.0 + BOUND_ROOM);
         // (NaN and infinity stop too.)
         if next.partial_cmp(&(0.9 * theta_max)) != Some(std::cmp::Ordering::Less) {
             return None;
@@ -184,7 +189,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         let swing = r_swing * theta_max.min(FRAC_PI_2).sin();
         // (The ends' t are solved to the tolerance: |r| there is known to that times the
         // speed of T, and to its rounding.)
-        let pad = 64.0 * p.vt.tol * bt.speed + 1e-12 * (r0 + r1);
+        let pad = 64.0 * p.vt.tol * bt.speed + DISTANCE_ROUNDING * (r0 + r1);
         let mid = 0.5 * (r0 + r1);
         dist = Iv::new(
             dist.lo.max(mid - 0.5 * swing - pad),
@@ -230,6 +235,14 @@ const PIECE_END_OPPOSITE: f64 = 1e-9;
 /// and of the curvatures' noise for its sign to be taken (a cheap filter ahead of the
 /// bounds, which prove the sign; about 10⁷ roundings).
 const TURNING_CLEAR: f64 = 1e-9;
+
+/// Relative room for the rounding of the interval operations that bound θ′ and θ (a few
+/// dozen operations on ranges carrying their own rounding): far above it, far below what
+/// decides a sign.
+const BOUND_ROOM: f64 = 1e-9;
+
+/// Relative rounding of `|r|` at the ends of a stretch, computed from two points.
+const DISTANCE_ROUNDING: f64 = 1e-12;
 
 #[cfg(test)]
 pub(crate) mod tests {

@@ -213,7 +213,7 @@ pub(crate) fn opposite_pair<'a>(
         }
     }
     let (lo, hi, shift) = best?;
-    if hi - lo <= 1e-12 {
+    if hi - lo <= ANGLE_OVERLAP {
         return None;
     }
     // Angles within rounding of a piece end snap to that end (its own normal there).
@@ -441,9 +441,17 @@ pub(crate) fn polish_tangent(
         best = nr;
         s = ns;
         t = nt;
-        if ds.abs() + dt.abs() <= 1e-17 * (1.0 + s.abs() + t.abs()) {
+        if ds.abs() + dt.abs() <= STEP_ROUNDING * (1.0 + s.abs() + t.abs()) {
             break;
         }
     }
     Some((s, t))
 }
+
+/// The overlap (in radians) of two pieces' ranges of opposite normal angles below which it is
+/// rounding of the angles: no section.
+const ANGLE_OVERLAP: f64 = 1e-12;
+
+/// A Newton step on the common-tangent system below this part of the parameters is below
+/// their rounding: converged.
+const STEP_ROUNDING: f64 = 1e-17;

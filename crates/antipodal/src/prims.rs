@@ -111,7 +111,7 @@ impl View<'_> {
             None => {
                 // A root exactly at an end can escape isolation (its coefficient is within
                 // rounding of zero and has no trusted sign): take the end itself then.
-                let small = 1e-13 * (flo.abs() + fhi.abs());
+                let small = END_ROOT * (flo.abs() + fhi.abs());
                 if flo.abs() <= small && accept(lo) {
                     self.uncertify(Doubt::RootAtEnd);
                     Some(lo)
@@ -405,9 +405,9 @@ fn sampled(
         hi
     } else if (flo < 0.0) != (fhi < 0.0) {
         solve_in(f, (lo, hi), (flo, fhi), tol, hint)
-    } else if flo.abs() <= 1e-12 * fhi.abs() {
+    } else if flo.abs() <= END_ZERO * fhi.abs() {
         lo
-    } else if fhi.abs() <= 1e-12 * flo.abs() {
+    } else if fhi.abs() <= END_ZERO * flo.abs() {
         hi
     } else {
         return None;
@@ -424,7 +424,7 @@ fn polish(f: &impl Fn(f64) -> (f64, f64, f64), u: f64, lo: f64, hi: f64) -> f64 
             break;
         }
         let nx = (x - v / d).clamp(lo, hi);
-        if (nx - x).abs() <= 1e-16 * (1.0 + x.abs()) {
+        if (nx - x).abs() <= NEWTON_STALL * (1.0 + x.abs()) {
             x = nx;
             break;
         }
@@ -432,6 +432,17 @@ fn polish(f: &impl Fn(f64) -> (f64, f64, f64), u: f64, lo: f64, hi: f64) -> f64 
     }
     x
 }
+
+/// A value at an end (relative to the two end values) within rounding of zero: a root there
+/// that escaped isolation.
+const END_ROOT: f64 = 1e-13;
+
+/// Jia's sampled test: an end value this small beside the other is a root at that end (the
+/// primitive touches zero there; its sign is rounding).
+const END_ZERO: f64 = 1e-12;
+
+/// A Newton step below this part of the parameter is below its rounding.
+const NEWTON_STALL: f64 = 1e-16;
 
 #[cfg(test)]
 mod tests {

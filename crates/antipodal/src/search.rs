@@ -200,7 +200,7 @@ fn remainders<'a>(
                 p.sub(se, te, p.sb, p.tb)
             }
         };
-        let mut eps = (1e-6 * (p.sb - p.sa)).max(min_eps);
+        let mut eps = (FIRST_EPS * (p.sb - p.sa)).max(min_eps);
         // The closest cut seen with the wrong sign: (ε, s, t).
         let mut wrong: Option<(f64, f64, f64)> = None;
         let mut decided = false;
@@ -262,7 +262,7 @@ fn remainders<'a>(
 /// would need): the march that follows then starts farther from `s*` and escapes from it in
 /// fewer steps. Returns the (possibly unchanged) cut.
 fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f64, f64) {
-    let limit = 1e-2 * (p.sb - p.sa);
+    let limit = WIDEN_LIMIT * (p.sb - p.sa);
     let (mut eps, mut th, mut cut) = (eps, th, (se, te));
     while eps * 64.0 <= limit {
         let e2 = eps * 64.0;
@@ -285,3 +285,10 @@ fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f6
 /// Steps (predicted from θ at a section's ends) from which a march is worth sparing by a
 /// proof that the section holds no pair: shorter ones end by themselves for less.
 const LONG_MARCH: f64 = 3.0;
+
+/// Table 1's ε at first, relative to the section: the escape from the found pair then takes
+/// few march steps, and ε comes closer wherever θ shows another pair within it.
+const FIRST_EPS: f64 = 1e-6;
+
+/// How far (relative to the section) [`widen`] may move a cut away from its pair.
+const WIDEN_LIMIT: f64 = 1e-2;

@@ -75,7 +75,7 @@ impl Arc {
             V2::new(self.p0.x.min(self.p1.x), self.p0.y.min(self.p1.y)),
             V2::new(self.p0.x.max(self.p1.x), self.p0.y.max(self.p1.y)),
         );
-        let sag = if sin.abs() > 1e-9 {
+        let sag = if sin.abs() > APEX_MIN_SIN {
             let apex = self.p0 + t0 * (chord.cross(t1) / sin);
             lo = V2::new(lo.x.min(apex.x), lo.y.min(apex.y));
             hi = V2::new(hi.x.max(apex.x), hi.y.max(apex.y));
@@ -122,7 +122,7 @@ impl View<'_> {
             return self.check_polygon(tr);
         }
         let arcs = self.monotone_arcs(tr, zeros);
-        let pad = 1e-12 * self.scale;
+        let pad = HULL_ROUNDING * self.scale;
         let hulls: Vec<Hull> = arcs.iter().map(|a| a.hull(pad)).collect();
         let mut order: Vec<usize> = (0..arcs.len()).collect();
         order.sort_by(|&i, &j| hulls[i].lo.x.total_cmp(&hulls[j].lo.x));
@@ -309,7 +309,7 @@ fn joined_by_graph(arcs: &[Arc], turn: f64, i: usize, j: usize) -> bool {
             let a = &arcs[k];
             min = min.min(a.psi0.min(a.psi1) + shift);
             max = max.max(a.psi0.max(a.psi1) + shift);
-            if max - min >= PI - 1e-9 {
+            if max - min >= PI - TURN_MARGIN {
                 return false;
             }
         }
@@ -333,3 +333,14 @@ fn crosses(p: V2, q: V2, r: V2, s: V2) -> bool {
         && d3 != 0.0
         && d4 != 0.0
 }
+
+/// The sine of the turn between an arc's end tangents above which their meet bounds the arc
+/// (below, the division by it is ill-conditioned: the chord's sag bound is used).
+const APEX_MIN_SIN: f64 = 1e-9;
+
+/// Room (relative to the size) around each arc's hull for the rounding of its points.
+const HULL_ROUNDING: f64 = 1e-12;
+
+/// How far below π the tangent's turn over a run of arcs must stay (radians) for the run to
+/// be monotone in direction: far above the rounding of the angles.
+const TURN_MARGIN: f64 = 1e-9;

@@ -80,7 +80,7 @@ fn d_one_signed(p: &Pair) -> bool {
     };
     let (lo, hi) = (t_lo - s_hi, t_hi - s_lo);
     let corners = [lo, V2::new(lo.x, hi.y), V2::new(hi.x, lo.y), hi];
-    let room = 1e-9 * p.vs.scale.max(p.vt.scale);
+    let room = LINE_ROUNDING * p.vs.scale.max(p.vt.scale);
     let (mut pos, mut neg) = (true, true);
     for n in [p.vs.normal(p.sa), p.vs.normal(p.sb)] {
         for c in corners {
@@ -140,7 +140,7 @@ fn verify(p: &Pair, s: f64, t: f64) -> bool {
     let (tl, th) = p.t_range();
     let inside_t = t > tl - p.vt.tol && t < th + p.vt.tol;
     let scale = p.vs.scale.max(p.vt.scale);
-    inside_s && inside_t && p.d(s, t).abs() <= 1e-9 * scale
+    inside_s && inside_t && p.d(s, t).abs() <= LINE_ROUNDING * scale
 }
 
 /// Bisection on `d` over a bracket with a sign change (never fails).
@@ -187,7 +187,7 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
         return false;
     }
     let den = ja.d1.cross(jb.d1);
-    if den.abs() <= 1e-14 * ja.d1.norm() * jb.d1.norm() {
+    if den.abs() <= PARALLEL_SIN * ja.d1.norm() * jb.d1.norm() {
         return false;
     }
     let o = ja.p + ja.d1 * ((jb.p - ja.p).cross(jb.d1) / den);
@@ -217,6 +217,14 @@ fn in_r0(v: &View, a: f64, b: f64, convex: bool, pt: V2) -> bool {
     let j = v.jet_to(u, 2);
     (pt - j.p).dot(j.normal() * j.curvature()) < 0.0
 }
+
+/// A distance between tangent lines (relative to the curves' size) within the rounding of the
+/// points and directions it is computed from: the lines are one.
+const LINE_ROUNDING: f64 = 1e-9;
+
+/// The sine of the angle between two tangents below which they are parallel to rounding (no
+/// meet to compute).
+const PARALLEL_SIN: f64 = 1e-14;
 
 #[cfg(test)]
 mod tests {

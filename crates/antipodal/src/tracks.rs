@@ -3,6 +3,7 @@
 //! (the tangent numerator's control points on each interval lie in an open half-plane).
 //! Dissection reads the curve's turning from it.
 
+use crate::enclosure::HALF_PLANE_MARGIN;
 use crate::error::{Error, Result};
 use crate::view::View;
 use curve::{wrap_pi, V2};
@@ -88,7 +89,7 @@ impl View<'_> {
         us.extend(knots.iter().copied().filter(|&k| k > self.a && k < self.b));
         us.sort_by(f64::total_cmp);
         us.dedup();
-        let speed_floor = 1e-13 * self.scale / self.period.max(1e-300);
+        let speed_floor = SPEED_FLOOR * self.scale / self.period.max(f64::MIN_POSITIVE);
         let jet = |x: f64| -> Result<curve::Jet> {
             let j = self.jet_to(x, 1);
             if j.d1.norm() <= speed_floor {
@@ -170,10 +171,14 @@ impl View<'_> {
             let reach = err[0] * axis.x.abs() + err[1] * axis.y.abs();
             ok = pts.chunks_exact(2).all(|c| {
                 let v = V2::new(c[0], c[1]);
-                v.dot(axis) > reach + 1e-9 * v.norm().max(f64::MIN_POSITIVE)
+                v.dot(axis) > reach + HALF_PLANE_MARGIN * v.norm().max(f64::MIN_POSITIVE)
             });
             ok
         });
         ok
     }
 }
+
+/// The speed (relative to the size over the period) below which a track's point is a cusp to
+/// within rounding: the tangent's direction there is noise.
+const SPEED_FLOOR: f64 = 1e-13;

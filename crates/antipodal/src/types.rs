@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 /// Options of the algorithms.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
-    /// Parameter tolerance relative to the domain length (default `1e-12`).
+    /// Parameter tolerance relative to the domain length (default [`DEFAULT_TOL`]).
     pub tol: f64,
     /// Use certified root isolation for spline curves (default `true`).
     pub certify: bool,
@@ -17,7 +17,7 @@ pub struct Options {
 /// The finest parameter tolerance (relative to the domain's length): a few units of rounding
 /// of a parameter. (Brackets are as narrow as the tolerance or as the rounding of the sign
 /// tests allows, whichever is wider.)
-const MIN_TOL: f64 = 1e-15;
+pub(crate) const MIN_TOL: f64 = 1e-15;
 /// The coarsest: brackets wider than this merge distinct pairs and inflections of ordinary
 /// curves.
 const MAX_TOL: f64 = 1e-3;
@@ -25,7 +25,7 @@ const MAX_TOL: f64 = 1e-3;
 impl Default for Options {
     fn default() -> Self {
         Self {
-            tol: 1e-12,
+            tol: DEFAULT_TOL,
             certify: true,
             max_sections: 100_000,
         }
@@ -224,3 +224,7 @@ macro_rules! provenance {
 provenance!(Antipodal);
 provenance!(Inflections);
 provenance!(Tangents);
+
+/// The default parameter tolerance (relative to the domain's length): some thousand units of
+/// rounding, so that the sign tests near a pair are far above their noise.
+pub const DEFAULT_TOL: f64 = 1e-12;

@@ -7,6 +7,7 @@
 
 use crate::doubt::Doubt;
 use crate::forms::SymbolicForms;
+use crate::types::MIN_TOL;
 use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
 use bspline::Piecewise;
 use curve::circle::Angle;
@@ -196,7 +197,7 @@ impl<'a> View<'a> {
         };
         let cert = forms.map(|forms| Cert {
             forms,
-            opts: RootOptions::default().tolerance(tol.max(1e-15)),
+            opts: RootOptions::default().tolerance(tol.max(MIN_TOL)),
         });
         let doubt = match cert {
             Some(_) => None,

@@ -23,6 +23,17 @@ pub use sign_changes::{
     sign_changes, sign_changes_in, Flat, SignChange, SignChangeKind, SignChanges, FLAT_WIDTH,
 };
 
+/// The default parameter tolerance of [`RootOptions`]: brackets 1e-12 wide on a domain of
+/// size ~1 (the unit-size frame the callers work in) are some 500 times the few ulps
+/// [`RootOptions`] allows at the least, so decisions stay above rounding, and far finer than
+/// any feature of a curve.
+pub const DEFAULT_TOL: f64 = 1e-12;
+
+/// How close the values at the two ends of a domain must be, relative to the largest
+/// coefficient, for a function to count as periodic: the two ends are evaluated separately,
+/// so a periodic function's end values differ by rounding, far below this.
+const PERIODIC_MATCH: f64 = 1e-9;
+
 /// Options for [`find_roots`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RootOptions {
@@ -37,7 +48,7 @@ pub struct RootOptions {
 impl Default for RootOptions {
     fn default() -> Self {
         Self {
-            tol: 1e-12,
+            tol: DEFAULT_TOL,
             max_depth: 80,
             max_pieces: 200_000,
         }
@@ -262,7 +273,7 @@ pub fn find_roots_periodic(f: &BSpline, opts: &RootOptions) -> Result<Vec<Root>>
     require_scalar(f.dim())?;
     let (a, b) = f.domain();
     let (fa, fb) = (f.eval_scalar(a), f.eval_scalar(b));
-    if (fa - fb).abs() > 1e-9 * f.max_abs_coef().max(f64::MIN_POSITIVE) {
+    if (fa - fb).abs() > PERIODIC_MATCH * f.max_abs_coef().max(f64::MIN_POSITIVE) {
         return Err(Error::NotPeriodic { start: fa, end: fb });
     }
     find_roots_periodic_in(&computed(f).with_periodic_seam(0), opts)

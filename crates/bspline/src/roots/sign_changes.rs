@@ -12,6 +12,7 @@
 
 use super::{
     find_roots_in, find_roots_periodic_in, require_scalar, value, Root, RootKind, RootOptions,
+    PERIODIC_MATCH,
 };
 use crate::error::Result;
 use crate::piecewise::Piecewise;
@@ -21,6 +22,11 @@ use serde::{Deserialize, Serialize};
 /// A cluster of roots wider than this fraction of the domain length is a [`Flat`]: the function
 /// is within rounding of zero all along it.
 pub const FLAT_WIDTH: f64 = 1e-6;
+
+/// A sign change within this fraction of the domain length of a flat counts as at its end,
+/// which is the flat's business: the reduction modulo the period moves a parameter by
+/// rounding, far less than this.
+const FLAT_SLACK: f64 = 1e-9;
 
 /// How a sign change was found.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -173,7 +179,8 @@ pub fn sign_changes(f: &BSpline, closed: bool, opts: &RootOptions) -> Result<Sig
     // as continuous across the seam.
     let (a, b) = f.domain();
     let (fa, fb) = (f.eval_scalar(a), f.eval_scalar(b));
-    let periodic = closed && (fa - fb).abs() <= 1e-9 * f.max_abs_coef().max(f64::MIN_POSITIVE);
+    let periodic =
+        closed && (fa - fb).abs() <= PERIODIC_MATCH * f.max_abs_coef().max(f64::MIN_POSITIVE);
     let pieces = if periodic {
         pieces.with_periodic_seam(0)
     } else {
@@ -331,7 +338,7 @@ pub fn sign_changes_in(f: &Piecewise, closed: bool, opts: &RootOptions) -> Resul
     }
 
     // Sign changes at the ends of flats are the flats' business.
-    let slack = 1e-9 * period;
+    let slack = FLAT_SLACK * period;
     let flats = &out.flats;
     out.changes.retain(|c| {
         !flats.iter().any(|fl| {

@@ -18,6 +18,45 @@ pub enum Error {
         /// What is required.
         why: &'static str,
     },
+    /// A profile with no segments.
+    #[error("a profile needs at least one segment")]
+    EmptyProfile,
+    /// A segment does not start where the previous one ends (segment 0: a closed profile's
+    /// last segment does not end where the first starts).
+    #[error(
+        "segment {segment} starts {gap:e} away from where the previous one ends (at ({x}, {y})): \
+         more than 1e-9 of the profile's size",
+        x = at[0],
+        y = at[1]
+    )]
+    Gap {
+        /// The segment that should start there.
+        segment: usize,
+        /// The distance between the two ends.
+        gap: f64,
+        /// Where the previous segment ends.
+        at: [f64; 2],
+    },
+    /// A segment with no direction at an end (all its points at one place).
+    #[error("segment {segment} has zero length")]
+    ZeroLength {
+        /// The segment.
+        segment: usize,
+    },
+    /// Two segments meet head on: the profile turns back on itself.
+    #[error("the profile turns back on itself where segment {segment} starts (at ({x}, {y}))", x = at[0], y = at[1])]
+    Cusp {
+        /// The segment starting there.
+        segment: usize,
+        /// Where.
+        at: [f64; 2],
+    },
+    /// A closed profile that encloses no area.
+    #[error("the closed profile encloses no area (signed area {area:e})")]
+    FlatProfile {
+        /// Its signed area.
+        area: f64,
+    },
 }
 
 /// Shorthand for results of this crate.

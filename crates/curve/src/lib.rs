@@ -6,6 +6,8 @@
 //! - [`SplineCurve`]: B-spline and NURBS curves; [`shapes`]: the analytic shapes of the curve
 //!   files, each defined once, with their exact rational forms on the rational circle
 //!   ([`circle`]) and their view in its parameter ([`OnCircle`]).
+//! - [`Profile`]: chains of [`Segment`]s (lines, arcs, Bézier and open B-spline curves) joined
+//!   at corners or smoothly, as part outlines are drawn.
 //! - [`Frame`]: exact changes of coordinates into a frame of about unit size near the curve.
 //! - [`exact`]: exact predicates on the data (collinear points, parallel stretches).
 //! - [`V2`], [`Jet`]: the small geometric types the algorithms share.
@@ -25,6 +27,8 @@ mod geom;
 mod on_circle;
 mod param;
 mod plane;
+mod profile;
+mod segment;
 pub mod shapes;
 mod spline;
 
@@ -34,4 +38,6 @@ pub use geom::{wrap_pi, Jet, V2};
 pub use on_circle::OnCircle;
 pub use param::ParamCurve;
 pub use plane::{Exact, Local, PlaneCurve};
+pub use profile::{Joint, JointKind, Profile, CORNER_TURN, JOIN_GAP};
+pub use segment::{Segment, SegmentKind};
 pub use spline::{rational_derivs, SplineCurve, StraightSpan};

@@ -1,0 +1,429 @@
+//! Profiles: chains of segments ([`Segment`]) joined end to end, as part outlines are drawn —
+//! lines, arcs and splines meeting at corners or tangentially. A profile is a curve with
+//! parameter `[0, n)` for `n` segments (`u ∈ [i, i+1]` is segment `i` at its own parameter
+//! mapped linearly); its joints are classified as smooth (G1), convex or reflex corners.
+
+use crate::error::{Error, Result};
+use crate::geom::{Jet, V2};
+use crate::param::ParamCurve;
+use crate::segment::Segment;
+
+/// Where two segments meet, or the seam of a closed profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Joint {
+    /// The profile parameter there (the index of the segment that starts there).
+    pub u: f64,
+    /// The signed angle from the incoming to the outgoing tangent (radians, positive turning
+    /// left); within [`CORNER_TURN`] of zero the joint is smooth.
+    pub turn: f64,
+    /// Smooth, or a corner and which kind.
+    pub kind: JointKind,
+}
+
+/// The kind of a joint.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum JointKind {
+    /// The tangent direction is continuous (G1).
+    Smooth,
+    /// A corner that turns the way the profile runs round its region (for an open profile:
+    /// turning left); its inward normals form a cone.
+    Convex,
+    /// A corner turning against the profile's way round (for an open profile: right).
+    Reflex,
+}
+
+/// How far apart (relative to the profile's size) the end of a segment and the start of the
+/// next may be: the interface contract's tolerance for drawings whose end points were rounded.
+pub const JOIN_GAP: f64 = 1e-9;
+
+/// The jump of the tangent direction (radians) above which a joint is a corner: the interface
+/// contract's, far above the rounding of tangents computed from control points.
+pub const CORNER_TURN: f64 = 1e-9;
+
+/// Samples per segment of the polygon whose signed area gives a closed profile's orientation.
+const AREA_SAMPLES: usize = 32;
+
+/// The area (relative to the size squared) below which a closed profile encloses nothing.
+const FLAT_AREA: f64 = 1e-12;
+
+/// A chain of segments, closed or open, with its joints.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Profile {
+    segments: Vec<Segment>,
+    closed: bool,
+    joints: Vec<Joint>,
+    /// +1 counterclockwise, −1 clockwise (a closed profile), 0 open.
+    orientation: f64,
+}
+
+impl Profile {
+    /// The profile of `segments`, each starting where the previous one ends (within
+    /// [`JOIN_GAP`] of the size); closed when `closed` says so, or, when it is `None`, when
+    /// the last segment ends where the first starts.
+    ///
+    /// ```
+    /// use curve::{JointKind, ParamCurve, Profile, Segment};
+    /// // A unit square, counterclockwise: four convex corners.
+    /// let c = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+    /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+    /// let sq = Profile::new(sides, None).unwrap();
+    /// assert!(sq.is_closed() && sq.domain() == (0.0, 4.0));
+    /// assert!(sq.joints().iter().all(|j| j.kind == JointKind::Convex));
+    /// ```
+    pub fn new(segments: Vec<Segment>, closed: Option<bool>) -> Result<Self> {
+        if segments.is_empty() {
+            return Err(Error::EmptyProfile);
+        }
+        let size = size_of(&segments);
+        let room = JOIN_GAP * size;
+        // (NaN fails too.)
+        let joined = |gap: f64| gap <= room;
+        for (i, w) in segments.windows(2).enumerate() {
+            let gap = (w[1].start() - w[0].end()).norm();
+            if !joined(gap) {
+                return Err(Error::Gap {
+                    segment: i + 1,
+                    gap,
+                    at: w[0].end().arr(),
+                });
+            }
+        }
+        let n = segments.len();
+        let seam_gap = (segments[0].start() - segments[n - 1].end()).norm();
+        let closed = match closed {
+            Some(true) if !joined(seam_gap) => {
+                return Err(Error::Gap {
+                    segment: 0,
+                    gap: seam_gap,
+                    at: segments[n - 1].end().arr(),
+                })
+            }
+            Some(c) => c,
+            None => joined(seam_gap),
+        };
+        let orientation = if closed {
+            let area = signed_area(&segments);
+            if area.abs().partial_cmp(&(FLAT_AREA * size * size))
+                != Some(std::cmp::Ordering::Greater)
+            {
+                return Err(Error::FlatProfile { area });
+            }
+            area.signum()
+        } else {
+            0.0
+        };
+        let mut joints = Vec::with_capacity(n);
+        let first = if closed { 0 } else { 1 };
+        for i in first..n {
+            let before = &segments[(i + n - 1) % n];
+            let (Some(din), Some(dout)) = (before.end_direction(), segments[i].start_direction())
+            else {
+                return Err(Error::ZeroLength { segment: i });
+            };
+            let turn = din.cross(dout).atan2(din.dot(dout));
+            if turn.abs() >= std::f64::consts::PI - CORNER_TURN {
+                return Err(Error::Cusp {
+                    segment: i,
+                    at: segments[i].start().arr(),
+                });
+            }
+            let left = if closed { orientation > 0.0 } else { true };
+            let kind = if turn.abs() <= CORNER_TURN {
+                JointKind::Smooth
+            } else if (turn > 0.0) == left {
+                JointKind::Convex
+            } else {
+                JointKind::Reflex
+            };
+            joints.push(Joint {
+                u: i as f64,
+                turn,
+                kind,
+            });
+        }
+        Ok(Self {
+            segments,
+            closed,
+            joints,
+            orientation,
+        })
+    }
+
+    /// The segments in order.
+    pub fn segments(&self) -> &[Segment] {
+        &self.segments
+    }
+
+    /// The joints in order of their parameter (the seam, at `u = 0`, first on a closed
+    /// profile; an open profile's ends are not joints).
+    pub fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    /// The corners (joints that are not smooth).
+    pub fn corners(&self) -> impl Iterator<Item = &Joint> {
+        self.joints.iter().filter(|j| j.kind != JointKind::Smooth)
+    }
+
+    /// `+1` for a closed profile running counterclockwise round its region, `−1` clockwise,
+    /// `0` for an open one.
+    pub fn orientation(&self) -> f64 {
+        self.orientation
+    }
+
+    /// The segment holding the profile parameter `u` and the share `x ∈ [0, 1]` of it (a joint
+    /// belongs to the segment starting there; the domain's end to the last segment).
+    pub fn locate(&self, u: f64) -> (usize, f64) {
+        let n = self.segments.len();
+        let u = u.clamp(0.0, n as f64);
+        let i = (u.floor() as usize).min(n - 1);
+        (i, u - i as f64)
+    }
+
+    /// The profile parameter of segment `i`'s own parameter `v`.
+    pub fn profile_param(&self, i: usize, v: f64) -> f64 {
+        let (a, b) = self.segments[i].curve().domain();
+        i as f64 + (v - a) / (b - a)
+    }
+}
+
+impl ParamCurve for Profile {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, self.segments.len() as f64)
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
+        let (i, x) = self.locate(u);
+        self.segments[i].jet_in_unit(x, order)
+    }
+}
+
+/// The diagonal of the box of the segments' control points.
+fn size_of(segments: &[Segment]) -> f64 {
+    let mut lo = V2::new(f64::INFINITY, f64::INFINITY);
+    let mut hi = V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for p in segments.iter().flat_map(|s| s.curve().control_points()) {
+        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
+        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
+    }
+    (hi - lo).norm()
+}
+
+/// The signed area of the polygon through samples of the segments (positive
+/// counterclockwise), about the first point (for the precision of shapes far from the origin).
+fn signed_area(segments: &[Segment]) -> f64 {
+    let origin = segments[0].start();
+    let mut last = V2::new(0.0, 0.0);
+    let mut twice = 0.0;
+    for s in segments {
+        for k in 1..=AREA_SAMPLES {
+            let p = s.jet_in_unit(k as f64 / AREA_SAMPLES as f64, 0).p - origin;
+            twice += last.cross(p);
+            last = p;
+        }
+    }
+    0.5 * twice
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::segment::SegmentKind;
+    use crate::spline::SplineCurve;
+    use proptest::prelude::*;
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    /// A rectangle `w × h` with its corners rounded by arcs of radius `r` (`r = 0`: sharp),
+    /// counterclockwise unless `reverse`.
+    pub(crate) fn rounded_rectangle(w: f64, h: f64, r: f64, reverse: bool) -> Profile {
+        let mut segs = Vec::new();
+        let corners = [[w, 0.0], [w, h], [0.0, h], [0.0, 0.0]];
+        for (k, c) in corners.iter().enumerate() {
+            let dir = V2::polar(FRAC_PI_2 * k as f64);
+            let prev = V2::from_arr(corners[(k + 3) % 4]);
+            let c = V2::from_arr(*c);
+            segs.push(Segment::line((prev + dir * r).arr(), (c - dir * r).arr()).unwrap());
+            if r > 0.0 {
+                let centre = c - dir * r + dir.perp() * r;
+                let a = FRAC_PI_2 * k as f64 - FRAC_PI_2;
+                segs.push(Segment::arc(centre.arr(), r, a, a + FRAC_PI_2).unwrap());
+            }
+        }
+        if reverse {
+            segs = segs.into_iter().rev().map(reversed).collect();
+        }
+        Profile::new(segs, None).unwrap()
+    }
+
+    /// The segment run backwards.
+    fn reversed(s: Segment) -> Segment {
+        let c = s.curve();
+        let pts: Vec<[f64; 2]> = c.control_points().into_iter().rev().collect();
+        let w: Vec<f64> = c.curve().weights().into_iter().rev().collect();
+        let (a, b) = c.domain();
+        let knots: Vec<f64> = c
+            .curve()
+            .homogeneous()
+            .knots()
+            .iter()
+            .rev()
+            .map(|k| a + b - k)
+            .collect();
+        let curve = SplineCurve::clamped(c.curve().degree(), &pts, Some(&w), Some(knots)).unwrap();
+        Segment::spline(s.kind(), curve).unwrap()
+    }
+
+    #[test]
+    fn rounded_rectangles_have_smooth_joints_and_sharp_ones_convex_corners() {
+        for reverse in [false, true] {
+            let p = rounded_rectangle(4.0, 2.0, 0.5, reverse);
+            assert_eq!(p.segments().len(), 8);
+            assert!(p.is_closed());
+            assert_eq!(p.orientation(), if reverse { -1.0 } else { 1.0 });
+            assert!(
+                p.joints().iter().all(|j| j.kind == JointKind::Smooth),
+                "{:?}",
+                p.joints()
+            );
+            let q = rounded_rectangle(4.0, 2.0, 0.0, reverse);
+            assert_eq!(q.corners().count(), 4);
+            for j in q.joints() {
+                assert_eq!(j.kind, JointKind::Convex);
+                let want = if reverse { -FRAC_PI_2 } else { FRAC_PI_2 };
+                assert!((j.turn - want).abs() < 1e-15, "{j:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn an_l_shape_has_one_reflex_corner() {
+        let pts = [
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
+        let segs = (0..6)
+            .map(|i| Segment::line(pts[i], pts[(i + 1) % 6]).unwrap())
+            .collect();
+        let p = Profile::new(segs, None).unwrap();
+        let reflex: Vec<f64> = p
+            .joints()
+            .iter()
+            .filter(|j| j.kind == JointKind::Reflex)
+            .map(|j| j.u)
+            .collect();
+        assert_eq!(reflex, vec![3.0]);
+        assert_eq!(p.corners().count(), 6);
+    }
+
+    #[test]
+    fn bad_chains_are_refused_naming_the_segment() {
+        let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
+        let gap = Profile::new(
+            vec![l([0.0, 0.0], [1.0, 0.0]), l([1.0, 1e-6], [1.0, 1.0])],
+            None,
+        );
+        assert!(matches!(gap, Err(Error::Gap { segment: 1, .. })), "{gap:?}");
+        // Within the contract's tolerance: joined.
+        let near = Profile::new(
+            vec![l([0.0, 0.0], [1.0, 0.0]), l([1.0, 1e-10], [1.0, 1.0])],
+            None,
+        );
+        assert!(near.is_ok());
+        let back = Profile::new(
+            vec![l([0.0, 0.0], [1.0, 0.0]), l([1.0, 0.0], [0.5, 0.0])],
+            None,
+        );
+        assert!(
+            matches!(back, Err(Error::Cusp { segment: 1, .. })),
+            "{back:?}"
+        );
+        let open = Profile::new(
+            vec![l([0.0, 0.0], [1.0, 0.0]), l([1.0, 0.0], [1.0, 1.0])],
+            Some(true),
+        );
+        assert!(
+            matches!(open, Err(Error::Gap { segment: 0, .. })),
+            "{open:?}"
+        );
+        let flat = Profile::new(
+            vec![l([0.0, 0.0], [1.0, 0.0]), l([1.0, 0.0], [0.0, 0.0])],
+            None,
+        );
+        assert!(flat.is_err());
+        assert!(matches!(
+            Profile::new(Vec::new(), None),
+            Err(Error::EmptyProfile)
+        ));
+    }
+
+    #[test]
+    fn an_arc_joined_tangentially_to_an_arc_bent_the_other_way_is_smooth() {
+        // An S: two half circles.
+        let a = Segment::arc([1.0, 0.0], 1.0, PI, 0.0).unwrap();
+        let b = Segment::arc([3.0, 0.0], 1.0, PI, TAU_PLUS).unwrap();
+        let s = Profile::new(vec![a, b], None).unwrap();
+        assert!(!s.is_closed());
+        assert_eq!(s.joints().len(), 1);
+        assert_eq!(s.joints()[0].kind, JointKind::Smooth);
+    }
+    const TAU_PLUS: f64 = 2.0 * PI;
+
+    proptest! {
+        /// The profile's jets are its segments' jets, scaled by the linear map of parameters,
+        /// and agree with finite differences of its points inside each segment.
+        #[test]
+        fn jets_are_the_segments_scaled(
+            w in 0.5f64..10.0, h in 0.5f64..10.0, frac in 0.05f64..0.45,
+            u in 0.0f64..8.0, reverse in any::<bool>(),
+        ) {
+            let p = rounded_rectangle(w, h, frac * w.min(h), reverse);
+            let (i, x) = p.locate(u);
+            prop_assume!(x > 1e-3 && x < 1.0 - 1e-3);
+            let j = p.jet(u);
+            let e = 1e-6;
+            let (a, b) = (p.jet_to(u - e, 0).p, p.jet_to(u + e, 0).p);
+            let d1 = (b - a) * (0.5 / e);
+            prop_assert!((d1 - j.d1).norm() <= 1e-6 * (1.0 + j.d1.norm()), "{d1:?} {:?}", j.d1);
+            let seg = &p.segments()[i];
+            let (s0, s1) = seg.curve().domain();
+            let own = seg.curve().jet(s0 + x * (s1 - s0));
+            prop_assert!((own.p - j.p).norm() <= 1e-12 * (w + h));
+            prop_assert!((own.d1 * (s1 - s0) - j.d1).norm() <= 1e-12 * (1.0 + j.d1.norm()));
+            prop_assert_eq!(p.profile_param(i, s0 + x * (s1 - s0)), u);
+        }
+    }
+
+    #[test]
+    fn open_bezier_chains_take_the_side_of_their_turn() {
+        let b1 = SplineCurve::clamped(
+            3,
+            &[[0.0, 0.0], [1.0, 0.0], [2.0, 0.5], [3.0, 0.0]],
+            None,
+            None,
+        )
+        .unwrap();
+        let b2 =
+            SplineCurve::clamped(2, &[[3.0, 0.0], [3.5, -1.0], [4.0, -1.0]], None, None).unwrap();
+        let p = Profile::new(
+            vec![
+                Segment::spline(SegmentKind::Bezier, b1).unwrap(),
+                Segment::spline(SegmentKind::Bezier, b2).unwrap(),
+            ],
+            None,
+        )
+        .unwrap();
+        // Arriving heading down-right at 45°, leaving at atan(−2): a right turn.
+        assert_eq!(p.joints().len(), 1);
+        assert_eq!(p.joints()[0].kind, JointKind::Reflex);
+        assert!(p.joints()[0].turn < 0.0);
+    }
+}

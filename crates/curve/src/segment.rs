@@ -1,0 +1,342 @@
+//! The segments a profile is made of (see [`crate::Profile`]): straight lines and circular
+//! arcs, each with an exact rational form (a linear Bézier curve; rational quadratic pieces),
+//! and open Bézier and B-spline curves. Every segment is an open [`SplineCurve`], so each
+//! algorithm that runs on a spline runs on a segment.
+
+use crate::error::{Error, Result};
+use crate::geom::{Jet, V2};
+use crate::param::ParamCurve;
+use crate::spline::SplineCurve;
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+/// What a segment was given as (its exact form is a [`SplineCurve`] in every case).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SegmentKind {
+    /// A straight line from one point to another.
+    Line,
+    /// A circular arc.
+    Arc,
+    /// A Bézier curve.
+    Bezier,
+    /// An open B-spline or NURBS curve.
+    BSpline,
+}
+
+impl SegmentKind {
+    /// The kind's name in curve files.
+    pub fn name(self) -> &'static str {
+        match self {
+            SegmentKind::Line => "line",
+            SegmentKind::Arc => "arc",
+            SegmentKind::Bezier => "bezier",
+            SegmentKind::BSpline => "bspline",
+        }
+    }
+}
+
+/// One segment of a profile: an open curve with its kind.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment {
+    kind: SegmentKind,
+    curve: SplineCurve,
+}
+
+/// The widest angle one rational quadratic piece of an arc spans: a quarter turn keeps its
+/// middle weight `cos(δ/2)` at least `cos(π/4)` and its middle control point near the arc.
+const ARC_PIECE: f64 = FRAC_PI_2;
+
+/// Room for the rounding of `|end − start|` against a full turn (radians).
+const FULL_TURN_ROUNDING: f64 = 1e-12;
+
+impl Segment {
+    /// The straight line from `from` to `to` (parameter `[0, 1]`, uniform speed).
+    ///
+    /// ```
+    /// use curve::{ParamCurve, Segment};
+    /// let l = Segment::line([0.0, 0.0], [2.0, 0.0]).unwrap();
+    /// assert_eq!(l.jet(0.5).p.arr(), [1.0, 0.0]);
+    /// ```
+    pub fn line(from: [f64; 2], to: [f64; 2]) -> Result<Self> {
+        finite_point("from", from)?;
+        finite_point("to", to)?;
+        if from == to {
+            return Err(Error::InvalidShape {
+                field: "to",
+                value: to[0],
+                why: "a line needs two distinct points",
+            });
+        }
+        Ok(Self {
+            kind: SegmentKind::Line,
+            curve: SplineCurve::clamped(1, &[from, to], None, None)?,
+        })
+    }
+
+    /// The arc of the circle about `center` with radius `r` from the angle `start` to `end`
+    /// (radians; counterclockwise when `end > start`, clockwise when `end < start`, at most a
+    /// full turn). Its exact form is `k ≤ 4` rational quadratic pieces of equal angle, with
+    /// knots at `i/k` on `[0, 1]`: the parameter is that form's (at `i/k` the point is at the
+    /// angle `start + (i/k)(end − start)`; between knots it runs within a few percent of the
+    /// angle's share). The points are the circle's rounded to doubles.
+    ///
+    /// ```
+    /// use curve::{ParamCurve, Segment};
+    /// let a = Segment::arc([0.0, 0.0], 2.0, 0.0, std::f64::consts::PI).unwrap();
+    /// let top = a.jet(0.5).p;
+    /// assert!((top.x - 0.0).abs() < 1e-15 && (top.y - 2.0).abs() < 1e-15);
+    /// ```
+    pub fn arc(center: [f64; 2], r: f64, start: f64, end: f64) -> Result<Self> {
+        finite_point("center", center)?;
+        if !(r.is_finite() && r > 0.0) {
+            return Err(Error::InvalidShape {
+                field: "r",
+                value: r,
+                why: "must be finite and > 0",
+            });
+        }
+        for (field, a) in [("start", start), ("end", end)] {
+            if !a.is_finite() {
+                return Err(Error::InvalidShape {
+                    field,
+                    value: a,
+                    why: "must be finite",
+                });
+            }
+        }
+        let sweep = end - start;
+        if sweep == 0.0 {
+            return Err(Error::InvalidShape {
+                field: "end",
+                value: end,
+                why: "an arc needs end ≠ start",
+            });
+        }
+        if sweep.abs() > TAU + FULL_TURN_ROUNDING {
+            return Err(Error::InvalidShape {
+                field: "end",
+                value: end,
+                why: "|end − start| must be at most 2π",
+            });
+        }
+        let full = sweep.abs() >= TAU - FULL_TURN_ROUNDING;
+        let k = ((sweep.abs() / ARC_PIECE).ceil() as usize).clamp(1, 4);
+        let step = sweep / k as f64;
+        let at = |a: f64, radius: f64| {
+            let (s, c) = a.sin_cos();
+            [center[0] + radius * c, center[1] + radius * s]
+        };
+        let mid_weight = (0.5 * step).cos();
+        let mut points = Vec::with_capacity(2 * k + 1);
+        let mut weights = Vec::with_capacity(2 * k + 1);
+        for j in 0..k {
+            let a = start + step * j as f64;
+            points.push(at(a, r));
+            weights.push(1.0);
+            points.push(at(a + 0.5 * step, r / mid_weight));
+            weights.push(mid_weight);
+        }
+        // A full turn ends exactly where it starts (the angle's rounding would leave a gap).
+        points.push(if full { points[0] } else { at(end, r) });
+        weights.push(1.0);
+        let mut knots = vec![0.0; 3];
+        for j in 1..k {
+            let x = j as f64 / k as f64;
+            knots.extend([x, x]);
+        }
+        knots.extend([1.0; 3]);
+        Ok(Self {
+            kind: SegmentKind::Arc,
+            curve: SplineCurve::clamped(2, &points, Some(&weights), Some(knots))?,
+        })
+    }
+
+    /// An open Bézier or B-spline curve as a segment (`kind` says which it was given as).
+    /// A periodic curve has no ends to join: refused.
+    pub fn spline(kind: SegmentKind, curve: SplineCurve) -> Result<Self> {
+        if curve.periodic_order().is_some() {
+            return Err(Error::InvalidShape {
+                field: "periodic",
+                value: 1.0,
+                why: "a profile's segments are open curves",
+            });
+        }
+        Ok(Self { kind, curve })
+    }
+
+    /// What the segment was given as.
+    pub fn kind(&self) -> SegmentKind {
+        self.kind
+    }
+
+    /// Its exact form.
+    pub fn curve(&self) -> &SplineCurve {
+        &self.curve
+    }
+
+    /// The first point.
+    pub fn start(&self) -> V2 {
+        self.curve.jet_to(self.curve.domain().0, 0).p
+    }
+
+    /// The last point.
+    pub fn end(&self) -> V2 {
+        self.curve.jet_to(self.curve.domain().1, 0).p
+    }
+
+    /// The unit tangent leaving the first point (from the first control point that differs from
+    /// it: a repeated end point leaves the first derivative zero there).
+    pub fn start_direction(&self) -> Option<V2> {
+        let pts = self.curve.control_points();
+        let first = V2::from_arr(pts[0]);
+        pts.iter()
+            .map(|&p| V2::from_arr(p) - first)
+            .find(|d| d.norm() > 0.0)
+            .map(V2::unit)
+    }
+
+    /// The unit tangent arriving at the last point.
+    pub fn end_direction(&self) -> Option<V2> {
+        let pts = self.curve.control_points();
+        let last = V2::from_arr(pts[pts.len() - 1]);
+        pts.iter()
+            .rev()
+            .map(|&p| last - V2::from_arr(p))
+            .find(|d| d.norm() > 0.0)
+            .map(V2::unit)
+    }
+
+    /// The jet at `x ∈ [0, 1]`, the segment's share of a profile's parameter (mapped linearly
+    /// onto its own domain).
+    pub(crate) fn jet_in_unit(&self, x: f64, order: usize) -> Jet {
+        let (a, b) = self.curve.domain();
+        let w = b - a;
+        let j = self.curve.jet_to(a + x * w, order);
+        Jet {
+            p: j.p,
+            d1: j.d1 * w,
+            d2: j.d2 * (w * w),
+            d3: j.d3 * (w * w * w),
+        }
+    }
+}
+
+/// A segment evaluates as its exact form, in that form's parameter.
+impl ParamCurve for Segment {
+    fn domain(&self) -> (f64, f64) {
+        self.curve.domain()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.curve.is_closed()
+    }
+
+    fn jet_to(&self, u: f64, order: usize) -> Jet {
+        self.curve.jet_to(u, order)
+    }
+}
+
+fn finite_point(field: &'static str, p: [f64; 2]) -> Result<()> {
+    match p.iter().find(|x| !x.is_finite()) {
+        Some(&x) => Err(Error::InvalidShape {
+            field,
+            value: x,
+            why: "coordinates must be finite",
+        }),
+        None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use proptest::prelude::*;
+    use std::f64::consts::PI;
+
+    proptest! {
+        /// Every point of an arc's exact form lies on its circle, its ends at the angles given,
+        /// its tangent turns the way the arc runs, and the knots sit at equal shares of the
+        /// angle.
+        #[test]
+        fn arcs_lie_on_their_circles(
+            cx in -1e3f64..1e3, cy in -1e3f64..1e3,
+            r in 1e-3f64..1e3,
+            start in -10.0f64..10.0,
+            sweep in prop_oneof![-TAU..-1e-3, 1e-3..TAU, Just(TAU), Just(-TAU)],
+        ) {
+            let a = Segment::arc([cx, cy], r, start, start + sweep).unwrap();
+            let c = V2::new(cx, cy);
+            let size = r + cx.abs().max(cy.abs());
+            for i in 0..=64 {
+                let j = a.curve().jet(i as f64 / 64.0);
+                prop_assert!(((j.p - c).norm() - r).abs() <= 1e-13 * size);
+                // Counterclockwise: the tangent turns left of the radius.
+                prop_assert!((j.p - c).cross(j.d1) * sweep > 0.0);
+            }
+            let end = c + V2::polar(start + sweep) * r;
+            prop_assert!((a.end() - end).norm() <= 1e-12 * size);
+            let k = ((sweep.abs() / ARC_PIECE).ceil() as usize).clamp(1, 4);
+            for i in 0..=k {
+                let p = a.curve().jet(i as f64 / k as f64).p;
+                let want = c + V2::polar(start + sweep * i as f64 / k as f64) * r;
+                prop_assert!((p - want).norm() <= 1e-12 * size, "{p:?} {want:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_full_turn_is_closed_and_half_turns_are_not() {
+        let full = Segment::arc([1.0, 2.0], 3.0, 0.3, 0.3 + TAU).unwrap();
+        assert_eq!(full.start(), full.end());
+        assert!(full.curve().is_closed());
+        let half = Segment::arc([1.0, 2.0], 3.0, 0.3, 0.3 - PI).unwrap();
+        assert!(!half.curve().is_closed());
+    }
+
+    #[test]
+    fn bad_lines_and_arcs_name_their_field() {
+        let field = |e: Error| match e {
+            Error::InvalidShape { field, .. } => field,
+            e => panic!("{e}"),
+        };
+        assert_eq!(
+            field(Segment::line([1.0, 1.0], [1.0, 1.0]).unwrap_err()),
+            "to"
+        );
+        assert_eq!(
+            field(Segment::line([f64::NAN, 1.0], [1.0, 1.0]).unwrap_err()),
+            "from"
+        );
+        assert_eq!(
+            field(Segment::arc([0.0, 0.0], 0.0, 0.0, 1.0).unwrap_err()),
+            "r"
+        );
+        assert_eq!(
+            field(Segment::arc([0.0, 0.0], 1.0, 0.0, 0.0).unwrap_err()),
+            "end"
+        );
+        assert_eq!(
+            field(Segment::arc([0.0, 0.0], 1.0, 0.0, 7.0).unwrap_err()),
+            "end"
+        );
+        assert_eq!(
+            field(Segment::arc([0.0, 0.0], 1.0, f64::INFINITY, 1.0).unwrap_err()),
+            "start"
+        );
+    }
+
+    #[test]
+    fn end_directions_skip_repeated_points() {
+        let c = SplineCurve::clamped(
+            3,
+            &[[0.0, 0.0], [0.0, 0.0], [1.0, 1.0], [2.0, 1.0]],
+            None,
+            None,
+        )
+        .unwrap();
+        let s = Segment::spline(SegmentKind::Bezier, c).unwrap();
+        let d = s.start_direction().unwrap();
+        assert!((d.x - d.y).abs() < 1e-15 && d.x > 0.0);
+        assert_eq!(s.end_direction().unwrap().arr(), [1.0, 0.0]);
+    }
+}

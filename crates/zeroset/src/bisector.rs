@@ -21,7 +21,7 @@ pub use point::{bisector_point, RESIDUAL};
 use crate::error::{Error, Result};
 use crate::patch::Patch;
 use crate::symbolic::{bisector_function_scaled, Method};
-use crate::zeroset::{run_cells, ZeroSetOptions};
+use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
 use bspline::Rational;
 use curve::Frame;
 use point::bbox;
@@ -35,10 +35,11 @@ const DIVISIBLE: f64 = 1e-8;
 pub struct BisectorOptions {
     /// Which function of §3 to use (default `F3`).
     pub method: Method,
-    /// Parameter tolerance relative to the domains (default 1e-12).
+    /// Parameter tolerance relative to the domains (default [`DEFAULT_TOL`], 1e-12).
     pub tol: f64,
-    /// Chord tolerance relative to the curves' bounding-box diagonal (default 1e-3): the
-    /// bisector polylines stay this close to the bisector in the plane.
+    /// Chord tolerance relative to the curves' bounding-box diagonal (default
+    /// [`DEFAULT_CHORD_TOL`], 1e-3): the bisector polylines stay this close to the bisector in
+    /// the plane.
     pub chord_tol: f64,
     /// Keep only points whose foot points are the nearest points of the curves.
     pub trimmed: bool,
@@ -50,8 +51,8 @@ impl Default for BisectorOptions {
     fn default() -> Self {
         Self {
             method: Method::F3,
-            tol: 1e-12,
-            chord_tol: 1e-3,
+            tol: DEFAULT_TOL,
+            chord_tol: DEFAULT_CHORD_TOL,
             trimmed: false,
             max_patches: 200_000,
         }

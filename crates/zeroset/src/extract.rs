@@ -91,6 +91,10 @@ const UNEVEN: f64 = 4.0;
 const TANGENT_STEP: f64 = 1e-7;
 /// Bisection depth toward the edge of the valid set (one new vertex pair per level).
 const MAX_EDGE_DEPTH: usize = 48;
+/// Bisection toward the edge of the valid set stops at segments this short (relative to the
+/// domain in each parameter): the edge is then located as finely as arc ends are matched
+/// (`MATCH_TOL` of the assembly), far above the parameters' rounding.
+const EDGE_RESOLUTION: f64 = 1e-7;
 
 impl Tracer<'_> {
     /// Runs the subdivision on every cell (`cells` are the function's Bézier patches).
@@ -362,8 +366,8 @@ impl Tracer<'_> {
         // bisect toward the boundary so the branch gets as close as the mapping allows.
         let toward_edge =
             (a.m.is_some() != b.m.is_some()) || (a.m.is_some() && b.m.is_some() && mm.is_none());
-        let tiny = (b.p[0] - a.p[0]).abs() <= 1e-7 * self.extent[0]
-            && (b.p[1] - a.p[1]).abs() <= 1e-7 * self.extent[1];
+        let tiny = (b.p[0] - a.p[0]).abs() <= EDGE_RESOLUTION * self.extent[0]
+            && (b.p[1] - a.p[1]).abs() <= EDGE_RESOLUTION * self.extent[1];
         // The quarter points, when the chord test computed them: the children's midpoints.
         let mut quarters: (Option<Sample>, Option<Sample>) = (None, None);
         let need = if toward_edge {

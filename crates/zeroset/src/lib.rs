@@ -25,4 +25,4 @@ pub use bisector::{
 pub use error::{Error, Result};
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};
-pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions};
+pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};

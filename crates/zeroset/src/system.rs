@@ -9,6 +9,7 @@
 
 use crate::error::Result;
 use crate::patch::{common_sign, Patch, EPS};
+use crate::zeroset::{DEFAULT_TOL, TOL_FLOOR};
 use bspline::tensor::TensorBSpline;
 use serde::{Deserialize, Serialize};
 
@@ -24,7 +25,7 @@ pub struct SystemOptions {
 impl Default for SystemOptions {
     fn default() -> Self {
         Self {
-            tol: 1e-12,
+            tol: DEFAULT_TOL,
             max_boxes: 1_000_000,
         }
     }
@@ -59,7 +60,7 @@ pub fn solve_system(
     let ext = [dt.1 - dt.0, dr.1 - dr.0];
     let min = [opts.tol * ext[0], opts.tol * ext[1]];
     let max_depth = 2
-        * ((1.0 / opts.tol.max(1e-300))
+        * ((1.0 / opts.tol.max(TOL_FLOOR))
             .log2()
             .ceil()
             .clamp(1.0, 1100.0) as usize
@@ -165,6 +166,11 @@ fn imul(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
     )
 }
 
+/// The margin by which the determinant interval must exclude 0, relative to the magnitudes of
+/// its two products: each end is a few roundings of products of scaled coefficient ranges
+/// (units of 1e-16), and a determinant within this of 0 is not trusted as regular.
+const DET_SLACK: f64 = 1e-12;
+
 /// Whether the interval Jacobian over the box is regular (its determinant excludes 0). The
 /// coefficient differences are positive multiples of the partials' coefficients; the common
 /// factors do not change the sign of the determinant.
@@ -179,7 +185,7 @@ fn unique(f: &Patch, g: &Patch) -> bool {
     let b = imul(sc(fr, kr_f), sc(gt, kt_g));
     let lo = a.0 - b.1;
     let hi = a.1 - b.0;
-    let slack = 1e-12 * (a.0.abs().max(a.1.abs()) + b.0.abs().max(b.1.abs()));
+    let slack = DET_SLACK * (a.0.abs().max(a.1.abs()) + b.0.abs().max(b.1.abs()));
     lo > slack || hi < -slack
 }
 

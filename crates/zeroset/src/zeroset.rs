@@ -6,6 +6,25 @@ use crate::extract::{Pieces, Tracer};
 use crate::patch::Patch;
 use bspline::tensor::TensorBSpline;
 use serde::{Deserialize, Serialize};
+use std::sync::OnceLock;
+
+/// The default parameter tolerance (relative to the domain) of [`ZeroSetOptions`],
+/// [`BisectorOptions`](crate::BisectorOptions) and [`SystemOptions`](crate::SystemOptions):
+/// patches of 1e-12 of the domain are a thousand times what double precision resolves (the
+/// least accepted, 1e-15), so they are decided above rounding, and far below any feature of
+/// ordinary curves.
+pub const DEFAULT_TOL: f64 = 1e-12;
+
+/// The default chord tolerance (relative to the size: the domain diagonal of a zero set, the
+/// curves' bounding-box diagonal of a bisector). It sets the vertices' spacing, not their
+/// accuracy (each is refined onto the zero set to rounding): a thousandth of the size draws
+/// smoothly; denser polylines cost in proportion to their vertices (1e-6: ~10×).
+pub const DEFAULT_CHORD_TOL: f64 = 1e-3;
+
+/// The least tolerance whose reciprocal gives a depth limit: a zero, negative or NaN
+/// tolerance (the system options are not range-checked) then means the deepest subdivision
+/// (~1000 halvings) rather than a NaN depth.
+pub(crate) const TOL_FLOOR: f64 = 1e-300;
 
 /// Options for [`zero_set`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,8 +42,8 @@ pub struct ZeroSetOptions {
 impl Default for ZeroSetOptions {
     fn default() -> Self {
         Self {
-            tol: 1e-12,
-            chord_tol: 1e-3,
+            tol: DEFAULT_TOL,
+            chord_tol: DEFAULT_CHORD_TOL,
             max_patches: 200_000,
         }
     }
@@ -58,8 +77,7 @@ impl ZeroSetOptions {
             return Err(Error::BadOption {
                 field: "tol",
                 value: self.tol,
-                why: "must be at least 1e-15 (what double precision resolves of a domain) and \
-                      below 1e-3",
+                why: why_tol(),
             });
         }
         if !(self.chord_tol.is_finite()
@@ -68,8 +86,7 @@ impl ZeroSetOptions {
             return Err(Error::BadOption {
                 field: "chord_tol",
                 value: self.chord_tol,
-                why: "must be at least 1e-9 (finer polylines run to millions of points, past \
-                      the accuracy of their vertices) and at most 0.5",
+                why: why_chord_tol(),
             });
         }
         Ok(())
@@ -77,12 +94,35 @@ impl ZeroSetOptions {
 
     /// Depth limit implied by the tolerance: halving both sides down to `tol`, plus slack.
     pub(crate) fn max_depth(&self) -> usize {
-        let halvings = (1.0 / self.tol.max(1e-300))
+        let halvings = (1.0 / self.tol.max(TOL_FLOOR))
             .log2()
             .ceil()
             .clamp(1.0, 1100.0) as usize;
         2 * (halvings + 4)
     }
+}
+
+/// What `tol` must satisfy, in words, with the limits quoted from [`MIN_TOL`] and [`MAX_TOL`].
+fn why_tol() -> &'static str {
+    static WHY: OnceLock<String> = OnceLock::new();
+    WHY.get_or_init(|| {
+        format!(
+            "must be at least {MIN_TOL:e} (what double precision resolves of a domain) and \
+             below {MAX_TOL:e}"
+        )
+    })
+}
+
+/// What `chord_tol` must satisfy, with the limits quoted from [`MIN_CHORD_TOL`] and
+/// [`MAX_CHORD_TOL`].
+fn why_chord_tol() -> &'static str {
+    static WHY: OnceLock<String> = OnceLock::new();
+    WHY.get_or_init(|| {
+        format!(
+            "must be at least {MIN_CHORD_TOL:e} (finer polylines run to millions of points, \
+             past the accuracy of their vertices) and at most {MAX_CHORD_TOL}"
+        )
+    })
 }
 
 /// One connected piece of a zero set, as a polyline in `(t, r)`.
@@ -184,5 +224,23 @@ pub(crate) fn finish(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> ZeroSet
         isolated: a.isolated,
         complete: !pieces.truncated,
         patches: pieces.patches,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn range_messages_quote_the_limits() {
+        assert_eq!(
+            why_tol(),
+            "must be at least 1e-15 (what double precision resolves of a domain) and below 1e-3"
+        );
+        assert_eq!(
+            why_chord_tol(),
+            "must be at least 1e-9 (finer polylines run to millions of points, past the \
+             accuracy of their vertices) and at most 0.5"
+        );
     }
 }

@@ -5,6 +5,25 @@
 use crate::extract::{End, Leaf};
 use crate::patch::{Patch, EPS};
 
+/// Leaf boxes closer than this fraction of the domain count as touching: neighbours in the
+/// subdivision meet exactly (split values are shared bit for bit), and leaves this close are
+/// one point at the resolution at which two arc ends are one root (`SAME_POINT`).
+const TOUCH: f64 = 1e-9;
+
+/// Least width of a leaf box in the limits of Newton's search for a critical point: a
+/// degenerate (zero-width) leaf still gets limits around it, and no width the subdivision
+/// makes is this small, so no other box changes.
+const TINY_WIDTH: f64 = 1e-300;
+
+/// Step of the central differences of the exact gradient for the Hessian, relative to the
+/// cell: truncation (~step², 1e-8) and rounding (~ε / step, 1e-12) leave a Hessian that only
+/// slows Newton from quadratic convergence to a contraction of ~1e-8 per step.
+const HESSIAN_STEP: f64 = 1e-4;
+
+/// Newton on `∇F = 0` has converged when its step is this small relative to the cell: a few
+/// units of rounding of a parameter of the cell's size, below which steps are noise.
+const CRITICAL_STEP: f64 = 1e-15;
+
 /// Leaf boxes sorted by `t0`, to find the leaf holding a point.
 pub(super) struct LeafIndex<'a> {
     leaves: &'a [Leaf],
@@ -116,9 +135,15 @@ pub(super) fn no_critical_point(cells: &[Patch], g: [f64; 4], at: [f64; 2]) -> b
 /// gradient; `None` if it leaves the (doubled) box. (At a degenerate critical point, where
 /// F vanishes to higher order, it only creeps; the last iterate is returned.)
 fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
-    let (wt, wr) = ((bx[1] - bx[0]).max(1e-300), (bx[3] - bx[2]).max(1e-300));
+    let (wt, wr) = (
+        (bx[1] - bx[0]).max(TINY_WIDTH),
+        (bx[3] - bx[2]).max(TINY_WIDTH),
+    );
     let lim = [bx[0] - wt, bx[1] + wt, bx[2] - wr, bx[3] + wr];
-    let (ht, hr) = (1e-4 * (cell.t1 - cell.t0), 1e-4 * (cell.r1 - cell.r0));
+    let (ht, hr) = (
+        HESSIAN_STEP * (cell.t1 - cell.t0),
+        HESSIAN_STEP * (cell.r1 - cell.r0),
+    );
     let mut p = x;
     for _ in 0..30 {
         let g = cell.eval_grad(p[0], p[1]);
@@ -143,7 +168,9 @@ fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
         if !(p[0] >= lim[0] && p[0] <= lim[1] && p[1] >= lim[2] && p[1] <= lim[3]) {
             return None;
         }
-        if dt.abs() <= 1e-15 * (cell.t1 - cell.t0) && dr.abs() <= 1e-15 * (cell.r1 - cell.r0) {
+        if dt.abs() <= CRITICAL_STEP * (cell.t1 - cell.t0)
+            && dr.abs() <= CRITICAL_STEP * (cell.r1 - cell.r0)
+        {
             return Some(p);
         }
     }
@@ -181,7 +208,7 @@ pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) ->
     }
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| leaves[a].bx[0].total_cmp(&leaves[b].bx[0]));
-    let slack = [1e-9 * ext[0], 1e-9 * ext[1]];
+    let slack = [TOUCH * ext[0], TOUCH * ext[1]];
     let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx[1] - l.bx[0]));
     for (ia, &a) in order.iter().enumerate() {
         let la = leaves[a].bx;

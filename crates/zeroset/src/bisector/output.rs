@@ -15,6 +15,33 @@ const CORNER_REACH: f64 = 1e-3;
 /// Halvings toward a knot corner at most (from ~1e-5 of the domain down to ~1e-11).
 const MAX_CORNER_STEPS: usize = 20;
 
+/// Slack on "in step" toward a knot corner, relative to the bounding-box diagonal: the
+/// bisector points carry rounding of ~1e-16 of the size, so steps that have shrunk to that
+/// noise still count as in step.
+const STEP_SLACK: f64 = 1e-12;
+
+/// Singular and isolated points of a self-bisector within this fraction of the domain of the
+/// diagonal are taken for leaf clusters at the cells' diagonal corners, where the undivided
+/// function has its trivial double zero: artefacts, not bisector points (a wide margin: the
+/// flat region at a corner reaches ~1e-5 of the domain, see `reach_knot_corners`).
+const DIAGONAL_ARTEFACT: f64 = 1e-3;
+
+/// Two branch ends on the two borders of the seam are one foot-point pair when their
+/// parameters agree to this fraction of the domain: both are zero-set vertices refined to
+/// rounding, which agree far closer than this.
+const SEAM_MATCH: f64 = 1e-9;
+
+/// Newton along a line through the diagonal has converged when its step is this small
+/// relative to the cell: it converges quadratically, so the error after such a step is far
+/// below rounding, while the steps themselves need not fall below the rounding noise of `G`
+/// (1e-15 of the cell is about one ulp: asking for it can fail to converge).
+const DIAGONAL_NEWTON_STEP: f64 = 1e-12;
+
+/// A branch cut at the diagonal ends this far off it (relative to the domain), on the
+/// zero set: far outside [`DIAGONAL_MARGIN`], so the end is kept as a vertex, and close
+/// enough that the branch reaches the diagonal as drawn.
+const DIAGONAL_OFFSET: f64 = 1e-6;
+
 /// One branch: matched foot-point parameters and the bisector points they give.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Branch {
@@ -85,9 +112,9 @@ impl Ctx<'_> {
         let ext = dom[1] - dom[0];
         let special = |v: &[[f64; 2]]| -> Vec<BisectorPoint> {
             v.iter()
-                .filter(|q| !self.selfb || q[1] - q[0] > 1e-3 * ext)
+                .filter(|q| !self.selfb || q[1] - q[0] > DIAGONAL_ARTEFACT * ext)
                 // For a closed curve the corner (start, end) is the diagonal across the seam.
-                .filter(|q| !closed || q[1] - q[0] < (1.0 - 1e-3) * ext)
+                .filter(|q| !closed || q[1] - q[0] < (1.0 - DIAGONAL_ARTEFACT) * ext)
                 .filter_map(|q| {
                     self.accept(q[0], q[1])
                         .map(|(tr, xy)| BisectorPoint { tr, xy })
@@ -161,7 +188,7 @@ impl Ctx<'_> {
                     let off = (tr[0] - g[0]).hypot(tr[1] - g[1]);
                     let moved = (xy[0] - last[0]).hypot(xy[1] - last[1]);
                     if off > 0.25 * f * (q[0] - k).hypot(q[1] - k)
-                        || moved > 2.0 * step + 1e-12 * self.diag
+                        || moved > 2.0 * step + STEP_SLACK * self.diag
                     {
                         break;
                     }
@@ -203,7 +230,7 @@ fn flush(cur: &mut Branch, out: &mut Vec<Branch>) {
 /// is the same foot-point pair as `(ρ, end)` on the border `r = end` (parameters modulo the
 /// period, mirrored into `t ≤ r`).
 fn join_seam(mut v: Vec<Branch>, dom: [f64; 4]) -> Vec<Branch> {
-    let tol = 1e-9 * (dom[1] - dom[0]);
+    let tol = SEAM_MATCH * (dom[1] - dom[0]);
     let on_top = |q: [f64; 2]| q[1] == dom[3];
     let on_left = |q: [f64; 2]| q[0] == dom[0];
     let ends = |b: &Branch| [b.tr[0], b.tr[b.tr.len() - 1]];
@@ -297,17 +324,14 @@ fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Opt
             }
             let step = g[0] / slope;
             mu -= step;
-            // Newton converges quadratically: after a step this small the error is far below
-            // rounding, while the steps themselves need not fall below the rounding noise of
-            // G (1e-15 of the cell is about one ulp: asking for it can fail to converge).
-            if step.abs() <= 1e-12 * (hi - lo) {
+            if step.abs() <= DIAGONAL_NEWTON_STEP * (hi - lo) {
                 return Some(mu);
             }
         }
         None
     };
     let s = solve([0.0, 0.0], c)?;
-    let delta = 1e-6 * (dom[1] - dom[0]);
+    let delta = DIAGONAL_OFFSET * (dom[1] - dom[0]);
     let base = [s - delta, s + delta];
     let mu = solve(base, 0.0)?;
     let e = [base[0] + mu, base[1] + mu];

@@ -18,6 +18,22 @@ const MOVE: f64 = 1e-6;
 /// dropped: their foot points (nearly) coincide.
 pub(super) const DIAGONAL_MARGIN: f64 = 1e-9;
 
+/// The (self-bisector) curve closes when its end points agree to this fraction of the
+/// bounding-box diagonal: a closed curve's ends are one control point, evaluated to rounding
+/// (~1e-16 of the size) from either end.
+const CLOSED_POINT: f64 = 1e-12;
+
+/// The curve closes only if its end tangents also agree to this fraction of their length:
+/// they come from different control points at either end and carry more rounding than the
+/// points.
+const CLOSED_TANGENT: f64 = 1e-9;
+
+/// A trimmed bisector drops a point when a curve comes nearer to it than its foot point by
+/// more than this (relative to the bounding-box diagonal): the point holds the bisector
+/// conditions only to [`RESIDUAL`] of the distances, so the nearest foot point may seem
+/// farther by about that.
+const TRIM_SLACK: f64 = 1e-9;
+
 /// Context shared by the two entry points.
 pub(super) struct Ctx<'a> {
     pub(super) c1: &'a Rational,
@@ -33,9 +49,10 @@ impl Ctx<'_> {
     pub(super) fn is_closed(&self) -> bool {
         let (a, b) = self.c1.domain();
         let ((p, d), (q, e)) = (pd(self.c1, a), pd(self.c1, b));
-        let tol = 1e-12 * self.diag;
+        let tol = CLOSED_POINT * self.diag;
         let dn = d[0].hypot(d[1]).max(f64::MIN_POSITIVE);
-        (p[0] - q[0]).hypot(p[1] - q[1]) <= tol && (d[0] - e[0]).hypot(d[1] - e[1]) <= 1e-9 * dn
+        (p[0] - q[0]).hypot(p[1] - q[1]) <= tol
+            && (d[0] - e[0]).hypot(d[1] - e[1]) <= CLOSED_TANGENT * dn
     }
 
     pub(super) fn map(&self, t: f64, r: f64) -> Option<[f64; 2]> {
@@ -113,7 +130,7 @@ impl Ctx<'_> {
         if self.trimmed {
             let (q1, _) = pd(self.c1, q[0]);
             let rho = (p[0] - q1[0]).hypot(p[1] - q1[1]);
-            let slack = 1e-9 * self.diag;
+            let slack = TRIM_SLACK * self.diag;
             if min_dist(self.c1, p) < rho - slack || min_dist(self.c2, p) < rho - slack {
                 return None;
             }

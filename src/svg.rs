@@ -6,6 +6,10 @@ use std::fmt::Write as _;
 /// Colors of the figure elements (curves cycle through the first ones).
 const PALETTE: [&str; 4] = ["#1f4e9c", "#2a8c4a", "#8c2a7a", "#b05a00"];
 
+/// Least size of a panel's content (user units): a panel of one point, of size 0, still gets
+/// a view box of nonzero width and height (else its pixel size is 0 / 0).
+const MIN_SIZE: f64 = 1e-9;
+
 enum Item {
     Polyline {
         points: Vec<[f64; 2]>,
@@ -25,6 +29,9 @@ enum Item {
     Text {
         at: [f64; 2],
         text: String,
+    },
+    Corner {
+        at: [f64; 2],
     },
 }
 
@@ -73,6 +80,11 @@ impl Figure {
         });
     }
 
+    /// A marked corner of a profile (a hollow square, set apart from the inflections' dots).
+    pub fn corner(&mut self, at: [f64; 2]) {
+        self.items.push(Item::Corner { at });
+    }
+
     /// A segment between two points, optionally numbered at its middle (antipodal pairs).
     pub fn segment(&mut self, from: [f64; 2], to: [f64; 2], label: Option<String>) {
         self.items.push(Item::Segment { from, to, label });
@@ -107,7 +119,7 @@ impl Figure {
     /// and height in pixels. A nested `<svg>` clips what lies outside its view box.
     fn panel(&self, x: f64) -> (String, f64, f64) {
         let (lo, hi) = self.frame.unwrap_or_else(|| self.bounds());
-        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-9);
+        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(MIN_SIZE);
         let pad = 0.06 * size;
         let (x0, y0) = (lo[0] - pad, -hi[1] - pad);
         let (w, h) = (hi[0] - lo[0] + 2.0 * pad, hi[1] - lo[1] + 2.0 * pad);
@@ -164,6 +176,17 @@ impl Figure {
                         num(r)
                     );
                 }
+                Item::Corner { at } => {
+                    let _ = writeln!(
+                        s,
+                        r##"<rect x="{}" y="{}" width="{}" height="{}" fill="none" stroke="#1f5fbf" stroke-width="{}"/>"##,
+                        num(at[0] - 1.5 * r),
+                        num(-at[1] - 1.5 * r),
+                        num(3.0 * r),
+                        num(3.0 * r),
+                        num(0.5 * r)
+                    );
+                }
                 Item::Segment { from, to, label } => {
                     let _ = writeln!(
                         s,
@@ -210,7 +233,7 @@ impl Figure {
         for item in &self.items {
             match item {
                 Item::Polyline { points, .. } => points.iter().for_each(&mut add),
-                Item::Dot { at, .. } | Item::Text { at, .. } => add(at),
+                Item::Dot { at, .. } | Item::Text { at, .. } | Item::Corner { at } => add(at),
                 Item::Segment { from, to, .. } => {
                     add(from);
                     add(to);

@@ -8,6 +8,7 @@ use common::{curvekit, fixture, fixtures_dir, json_files};
 
 /// Every file in `fixtures/bad/` with the field its message must name.
 const BAD: &[(&str, &str)] = &[
+    ("arc_sweep_too_large.json", "end"),
     ("bezier_one_point.json", "points"),
     ("center_arity.json", "center"),
     ("coincident_points.json", "points"),
@@ -28,6 +29,7 @@ const BAD: &[(&str, &str)] = &[
     ("lemniscate_b_zero.json", "b"),
     ("limacon_a_le_b.json", "a"),
     ("limacon_b_negative.json", "b"),
+    ("line_zero_length.json", "to"),
     ("m_not_integer.json", "m"),
     ("m_too_small.json", "m"),
     ("missing_field.json", "r"),
@@ -39,6 +41,11 @@ const BAD: &[(&str, &str)] = &[
     ("periodic_not_bool.json", "periodic"),
     ("point_arity.json", "points[1]"),
     ("point_not_number.json", "points[1][1]"),
+    ("profile_gap.json", "segments[1]"),
+    ("profile_nested_duplicate.json", "segments[0].to"),
+    ("profile_segment_field.json", "segments[1].radius"),
+    ("profile_segment_kind.json", "segments[0].kind"),
+    ("profile_turns_back.json", "segments[1]"),
     ("radius_zero.json", "r"),
     ("too_few_points.json", "points"),
     ("unknown_field.json", "radius"),

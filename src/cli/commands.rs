@@ -9,6 +9,9 @@ use std::path::Path;
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     let curve = read_curve(path)?;
+    if let Shape::Profile(profile) = &curve.shape {
+        return run_profile_inflections(&curve, profile, common);
+    }
     let plane = curve.plane_curve();
     let opts = common.options();
     let prepared = antipodal::prepare(plane);
@@ -39,9 +42,61 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
     })
 }
 
+/// `inflections` on a profile: inflections at smooth points and joints, and the corners.
+fn run_profile_inflections(
+    curve: &Curve,
+    profile: &curvekit::curve::Profile,
+    common: &Common,
+) -> Result<(), Failure> {
+    let opts = common.options();
+    let found = antipodal::profile_inflections(profile, &opts)
+        .map_err(|e| antipodal_failure(e, &[curve]))?;
+    let stats = common.time.then(|| {
+        let run = || antipodal::profile_inflections(profile, &opts);
+        timing::measure_both(run, run)
+    });
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, curve);
+        found.inflections.iter().for_each(|i| fig.dot(i.p));
+        for c in &found.corners {
+            fig.corner(c.p);
+        }
+        fig.title(format!(
+            "{}: {} inflections, {} corners",
+            curve.file,
+            found.inflections.len(),
+            found.corners.len()
+        ));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &[curve], stats.as_ref())
+    } else {
+        report::profile_inflections_text(curve, &found, stats.as_ref())
+    })
+}
+
+/// Antipodal pairs and common tangents of profiles (corner cones, pairs at corners) are not
+/// implemented yet: a profile is refused by name rather than searched as a smooth curve.
+fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
+    match curves.iter().find(|c| matches!(c.shape, Shape::Profile(_))) {
+        Some(c) => Err(Failure::Input(CurveFileError {
+            file: c.file.clone(),
+            field: "kind".into(),
+            problem: Problem::Unsupported(format!(
+                "{command} on profiles is not implemented yet (inflections is); \
+                 give a smooth curve, a line or an arc"
+            )),
+        })),
+        None => Ok(()),
+    }
+}
+
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     let curve = read_curve(path)?;
+    smooth_only(&[&curve], "antipodal")?;
     let plane = curve.plane_curve();
     let opts = common.options();
     let prepared = antipodal::prepare(plane);
@@ -74,6 +129,7 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
     common.validate()?;
     let (c1, c2) = (read_curve(path1)?, read_curve(path2)?);
     let both = [&c1, &c2];
+    smooth_only(&both, "tangents")?;
     let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
     let opts = common.options();
     let (a, b) = antipodal::prepare_pair(p1, p2);
@@ -154,7 +210,7 @@ fn spline_of(c: &Curve) -> Result<&bspline::Rational, Failure> {
             file: c.file.clone(),
             field: "kind".into(),
             problem: Problem::Unsupported(format!(
-                "bisector needs a bezier or bspline curve, got {}",
+                "bisector needs a bezier, bspline, line or arc curve, got {}",
                 c.kind()
             )),
         })
@@ -176,12 +232,14 @@ pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failu
         | E::Corner { .. }
         | E::SelfIntersecting { .. }
         | E::Winding { .. }
+        | E::InSegment { .. }
         | E::Curve(_) => match blame(curves) {
             Some(culprit) => Failure::Input(CurveFileError {
                 file: culprit.file.clone(),
                 field: match culprit.shape {
                     Shape::Spline(_) => "points",
-                    Shape::Analytic(_) => "kind",
+                    Shape::Analytic(_) | Shape::Segment(_) => "kind",
+                    Shape::Profile(_) => "segments",
                 }
                 .into(),
                 problem: Problem::Geometry(e.to_string()),

@@ -74,7 +74,7 @@ pub(crate) struct BisectorArgs {
     #[arg(long)]
     pub(crate) trimmed: bool,
     /// Chord tolerance of the bisector polylines, relative to the curves' bounding-box diagonal.
-    #[arg(long, value_name = "C", default_value_t = 1e-3, value_parser = parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
     pub(crate) chord_tol: f64,
 }
 
@@ -116,7 +116,7 @@ pub(crate) struct Common {
     #[arg(long, value_name = "FILE")]
     pub(crate) svg: Option<PathBuf>,
     /// Parameter tolerance.
-    #[arg(long, value_name = "T", default_value_t = 1e-12, value_parser = parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
     pub(crate) tol: f64,
     /// Repeat the computation for at least 0.5 s and report the median time of one run.
     #[arg(long)]
@@ -212,4 +212,14 @@ pub(crate) fn print_out(text: &str) -> Result<(), Failure> {
     out.write_all(text.as_bytes())
         .and_then(|()| out.flush())
         .map_err(|e| Failure::Other(format!("cannot write to stdout: {e}")))
+}
+
+#[cfg(test)]
+mod tests {
+    /// `--tol` is one option for every command: its default (antipodal's) must be the
+    /// bisector's too.
+    #[test]
+    fn one_default_tolerance_for_every_command() {
+        assert_eq!(antipodal::DEFAULT_TOL, zeroset::DEFAULT_TOL);
+    }
 }

@@ -1,7 +1,7 @@
 //! Text and JSON reports, and drawing a curve into a figure.
 
 use super::timing::Stats;
-use antipodal::{Antipodal, InflectionKind, Inflections, Tangents};
+use antipodal::{Antipodal, CornerKind, InflectionKind, Inflections, ProfileInflections, Tangents};
 use curvekit::io::{Curve, Shape};
 use curvekit::svg::{side_by_side, Figure};
 use serde::Serialize;
@@ -13,7 +13,8 @@ use zeroset::Bisector;
 pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
     let n = match &curve.shape {
         Shape::Spline(s) => (24 * s.n_points).clamp(600, 20_000),
-        Shape::Analytic(_) => 1200,
+        Shape::Analytic(_) | Shape::Segment(_) => 1200,
+        Shape::Profile(p) => (200 * p.segments().len()).clamp(600, 20_000),
     };
     fig.curve(curve.polyline(n), curve.is_closed());
 }
@@ -37,7 +38,12 @@ pub(crate) fn describe(curve: &Curve) -> String {
             }
             d
         }
-        Shape::Analytic(_) => curve.kind().to_string(),
+        Shape::Analytic(_) | Shape::Segment(_) => curve.kind().to_string(),
+        Shape::Profile(p) => format!(
+            "profile, {} segments, {} corners",
+            p.segments().len(),
+            p.corners().count()
+        ),
     };
     let closed = if curve.is_closed() { "closed" } else { "open" };
     format!("{shape}, {closed}, domain [{a}, {b}]")
@@ -102,6 +108,55 @@ pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&St
             n(f.u),
             n(f.p[0]),
             n(f.p[1])
+        );
+    }
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+    s
+}
+
+/// The text report of `inflections` on a profile: its inflections, then its corners.
+pub(crate) fn profile_inflections_text(
+    curve: &Curve,
+    r: &ProfileInflections,
+    stats: Option<&Stats>,
+) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "curve:       {} ({})", curve.file, describe(curve));
+    let _ = writeln!(
+        s,
+        "inflections: {} ({})",
+        r.inflections.len(),
+        certified_word(r.certified)
+    );
+    for (i, f) in r.inflections.iter().enumerate() {
+        let seg = f
+            .segment
+            .map_or(String::new(), |k| format!("  segment {k}"));
+        let _ = writeln!(
+            s,
+            "  {:>3}  u = {:<22}  p = ({}, {}){seg}",
+            i + 1,
+            n(f.u),
+            n(f.p[0]),
+            n(f.p[1])
+        );
+    }
+    let _ = writeln!(s, "corners:     {}", r.corners.len());
+    for (i, c) in r.corners.iter().enumerate() {
+        let kind = match c.kind {
+            CornerKind::Convex => "convex",
+            CornerKind::Reflex => "reflex",
+        };
+        let _ = writeln!(
+            s,
+            "  {:>3}  u = {:<22}  p = ({}, {})  turn {} rad, {kind}",
+            i + 1,
+            n(c.u),
+            n(c.p[0]),
+            n(c.p[1]),
+            n(c.turn)
         );
     }
     if let Some(st) = stats {
@@ -332,9 +387,13 @@ pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) ->
     side_by_side(&[&plane, &params])
 }
 
+/// Magnitudes that text reports print in plain decimals; outside, in scientific form (not a
+/// tolerance: plain form would run to many zeros before or after the digits that matter).
+const PLAIN: std::ops::Range<f64> = 1e-4..1e7;
+
 /// A number for text reports: shortest round-trip form, scientific when tiny or huge.
 fn n(x: f64) -> String {
-    if x != 0.0 && !(1e-4..1e7).contains(&x.abs()) {
+    if x != 0.0 && !PLAIN.contains(&x.abs()) {
         format!("{x:e}")
     } else {
         format!("{x}")

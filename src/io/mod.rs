@@ -6,12 +6,15 @@
 
 use bspline::Rational;
 use curve::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape as Analytic};
-use curve::PlaneCurve;
+use curve::{ParamCurve, PlaneCurve};
 use serde_json::{Map, Value};
 use std::path::Path;
 use thiserror::Error;
 
+mod profile;
 mod spline;
+
+pub use profile::MAX_SEGMENTS;
 
 /// Largest accepted magnitude of any number: keeps products of several coordinates (curvature
 /// numerators are cubic in the homogeneous points) far from overflow.
@@ -108,7 +111,8 @@ pub enum Problem {
     Overflow,
 }
 
-const KINDS: &str = "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities";
+const KINDS: &str =
+    "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities, line, arc, profile";
 
 /// Which spline kind a file used.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -145,6 +149,10 @@ pub enum Shape {
     Spline(Box<SplineCurve>),
     /// One of the analytic kinds (all closed).
     Analytic(Analytic),
+    /// `line` or `arc`: one segment of the kinds profiles are made of.
+    Segment(Box<curve::Segment>),
+    /// `profile`: a chain of segments.
+    Profile(Box<curve::Profile>),
 }
 
 /// A validated curve with the name of the file it came from.
@@ -163,6 +171,8 @@ impl Curve {
             Shape::Spline(s) if s.kind == SplineKind::Bezier => "bezier",
             Shape::Spline(_) => "bspline",
             Shape::Analytic(a) => a.kind(),
+            Shape::Segment(s) => s.kind().name(),
+            Shape::Profile(_) => "profile",
         }
     }
 
@@ -171,6 +181,8 @@ impl Curve {
         match &self.shape {
             Shape::Spline(s) => s.closed,
             Shape::Analytic(_) => true,
+            Shape::Segment(s) => s.is_closed(),
+            Shape::Profile(p) => p.is_closed(),
         }
     }
 
@@ -179,6 +191,8 @@ impl Curve {
         match &self.shape {
             Shape::Spline(s) => s.curve.domain(),
             Shape::Analytic(_) => (0.0, std::f64::consts::TAU),
+            Shape::Segment(s) => s.domain(),
+            Shape::Profile(p) => p.domain(),
         }
     }
 
@@ -187,6 +201,8 @@ impl Curve {
         match &self.shape {
             Shape::Spline(s) => &s.plane,
             Shape::Analytic(a) => a,
+            Shape::Segment(s) => s.curve(),
+            Shape::Profile(p) => p.as_ref(),
         }
     }
 
@@ -194,7 +210,8 @@ impl Curve {
     pub fn rational(&self) -> Option<&Rational> {
         match &self.shape {
             Shape::Spline(s) => Some(&s.curve),
-            Shape::Analytic(_) => None,
+            Shape::Segment(s) => Some(s.curve().curve()),
+            Shape::Analytic(_) | Shape::Profile(_) => None,
         }
     }
 
@@ -261,33 +278,78 @@ pub fn parse_curve(file: &str, text: &str) -> Result<Curve, CurveFileError> {
     })
 }
 
-/// The first key the top-level object of `text` (valid JSON) gives twice, if any. (serde_json
-/// keeps the last silently; another reader may keep the first and compute another curve.)
+/// The first key an object of `text` (valid JSON) gives twice, if any, as its path
+/// (`segments[2].to`). (serde_json keeps the last silently; another reader may keep the
+/// first and compute another curve.)
 fn duplicate_key(text: &str) -> Option<String> {
-    struct Keys(Option<String>);
-    impl<'de> serde::Deserialize<'de> for Keys {
-        fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-            d.deserialize_map(Keys(None))
+    use serde::de::{DeserializeSeed, MapAccess, SeqAccess, Visitor};
+    /// Looks for a duplicate key in the value at `path`.
+    struct Seek {
+        path: String,
+    }
+    impl<'de> DeserializeSeed<'de> for Seek {
+        type Value = Option<String>;
+        fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
+            d.deserialize_any(self)
         }
     }
-    impl<'de> serde::de::Visitor<'de> for Keys {
-        type Value = Keys;
+    impl<'de> Visitor<'de> for Seek {
+        type Value = Option<String>;
         fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-            f.write_str("a JSON object")
+            f.write_str("any JSON value")
         }
-        fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Keys, A::Error> {
-            let (mut seen, mut twice) = (std::collections::HashSet::new(), None);
+        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+            let (mut seen, mut found) = (std::collections::HashSet::new(), None);
             // (The whole object is read: the parser checks its end.)
             while let Some(key) = map.next_key::<String>()? {
-                map.next_value::<serde::de::IgnoredAny>()?;
-                if !seen.insert(key.clone()) && twice.is_none() {
-                    twice = Some(key);
+                let path = match self.path.is_empty() {
+                    true => key.clone(),
+                    false => format!("{}.{key}", self.path),
+                };
+                let inner = map.next_value_seed(Seek { path: path.clone() })?;
+                if found.is_none() {
+                    found = if seen.insert(key) { inner } else { Some(path) };
                 }
             }
-            Ok(Keys(twice))
+            Ok(found)
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+            let mut found = None;
+            for i in 0.. {
+                let path = format!("{}[{i}]", self.path);
+                match seq.next_element_seed(Seek { path })? {
+                    Some(inner) => found = found.or(inner),
+                    None => break,
+                }
+            }
+            Ok(found)
+        }
+        fn visit_bool<E>(self, _: bool) -> Result<Self::Value, E> {
+            Ok(None)
+        }
+        fn visit_i64<E>(self, _: i64) -> Result<Self::Value, E> {
+            Ok(None)
+        }
+        fn visit_u64<E>(self, _: u64) -> Result<Self::Value, E> {
+            Ok(None)
+        }
+        fn visit_f64<E>(self, _: f64) -> Result<Self::Value, E> {
+            Ok(None)
+        }
+        fn visit_str<E>(self, _: &str) -> Result<Self::Value, E> {
+            Ok(None)
+        }
+        fn visit_unit<E>(self) -> Result<Self::Value, E> {
+            Ok(None)
         }
     }
-    serde_json::from_str::<Keys>(text).ok().and_then(|k| k.0)
+    let mut de = serde_json::Deserializer::from_str(text);
+    Seek {
+        path: String::new(),
+    }
+    .deserialize(&mut de)
+    .ok()
+    .flatten()
 }
 
 /// An error before the file name is attached: (field, problem).
@@ -306,6 +368,9 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
         "ellipse" => &["a", "b", "center"],
         "limacon" | "elliptic_lemniscate" => &["a", "b"],
         "convexities" => &["p", "eps", "m"],
+        "line" => &["from", "to"],
+        "arc" => &["center", "r", "start", "end"],
+        "profile" => &["segments", "closed"],
         other => return Err(("kind".into(), Problem::UnknownKind(other.to_string()))),
     };
     // Reject unknown fields first: a typo'd optional field must not pass silently.
@@ -326,6 +391,10 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
         "bezier" | "bspline" => {
             return spline::parse_spline(kind, &f).map(|s| Shape::Spline(Box::new(s)))
         }
+        "line" | "arc" => {
+            return profile::parse_segment_kind(kind, &f).map(|s| Shape::Segment(Box::new(s)))
+        }
+        "profile" => return profile::parse_profile(&f).map(|p| Shape::Profile(Box::new(p))),
         "circle" => {
             let center = f.opt_point("center")?.unwrap_or([0.0, 0.0]);
             Analytic::Circle(shape("r", Circle::new(f.positive("r")?, center))?)
@@ -380,6 +449,7 @@ fn shape<T>(default: &str, made: curve::Result<T>) -> Result<T, FieldError> {
             },
         ),
         curve::Error::Spline(e) => (default.to_string(), Problem::Spline(e)),
+        e => (default.to_string(), Problem::Geometry(e.to_string())),
     })
 }
 

@@ -108,6 +108,7 @@ fn inflection_list(v: &View, zeros: &Zeros) -> Vec<Inflection> {
                 false => InflectionKind::Simple,
             },
             bracket: z.bracket.map(|(lo, hi)| v.bracket_to_curve(lo, hi)),
+            segment: None,
         })
         .collect();
     out.sort_by(|a, b| a.u.total_cmp(&b.u));

@@ -28,6 +28,14 @@ pub enum Error {
         /// The number of lobes.
         lobes: usize,
     },
+    /// A segment of a profile was refused.
+    #[error("segment {segment}: {source}")]
+    InSegment {
+        /// The segment.
+        segment: usize,
+        /// Why.
+        source: Box<Error>,
+    },
     /// The operation needs a closed curve.
     #[error("the curve is not closed (its ends are {gap} apart)")]
     NotClosed {

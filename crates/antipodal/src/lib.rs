@@ -51,6 +51,7 @@ mod monotone;
 mod pairs;
 mod prepare;
 mod prims;
+mod profiles;
 mod radius_rates;
 mod search;
 mod simple;
@@ -60,11 +61,12 @@ mod tracks;
 mod types;
 mod view;
 
-pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, SplineCurve, V2};
+pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, SplineCurve, V2};
 pub use error::{Error, Result};
 pub use forms::SymbolicForms;
 pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
+pub use profiles::profile_inflections;
 pub use types::{
-    Antipodal, AntipodalPair, Family, Inflection, InflectionKind, Inflections, Options, PairType,
-    TangentLine, Tangents, DEFAULT_TOL,
+    Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,
+    Options, PairType, ProfileInflections, TangentLine, Tangents, DEFAULT_TOL,
 };

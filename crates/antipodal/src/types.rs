@@ -123,6 +123,9 @@ pub struct Inflection {
     /// was found by sampling.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub bracket: Option<[f64; 2]>,
+    /// On a profile, the segment it lies on (at a smooth joint: the segment starting there).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub segment: Option<usize>,
 }
 
 /// How an inflection was found.
@@ -169,6 +172,44 @@ pub struct Inflections {
     pub inflections: Vec<Inflection>,
     /// True when every inflection is certified and none was missed for certain: isolated by
     /// certified root finding over the whole domain.
+    pub certified: bool,
+    /// Why the result is not certified, where one reason stands out.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub reason: Option<String>,
+}
+
+/// A corner of a profile (see [`curve::Joint`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Corner {
+    /// The profile parameter there.
+    pub u: f64,
+    /// The point.
+    pub p: [f64; 2],
+    /// The signed angle from the incoming to the outgoing tangent (radians, positive turning
+    /// left).
+    pub turn: f64,
+    /// `convex` (turning the way the profile runs round its region) or `reflex`.
+    pub kind: CornerKind,
+}
+
+/// Whether a corner is convex or reflex.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CornerKind {
+    /// Turning the way the profile runs round its region (an open profile: left).
+    Convex,
+    /// Turning against it.
+    Reflex,
+}
+
+/// Result of [`crate::profile_inflections`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ProfileInflections {
+    /// Inflections at smooth points and smooth joints, sorted by `u`.
+    pub inflections: Vec<Inflection>,
+    /// The corners, sorted by `u` (not inflections).
+    pub corners: Vec<Corner>,
+    /// True when every inflection is certified and none was missed for certain.
     pub certified: bool,
     /// Why the result is not certified, where one reason stands out.
     #[serde(skip_serializing_if = "Option::is_none", default)]
@@ -224,6 +265,7 @@ macro_rules! provenance {
 provenance!(Antipodal);
 provenance!(Inflections);
 provenance!(Tangents);
+provenance!(ProfileInflections);
 
 /// The default parameter tolerance (relative to the domain's length): some thousand units of
 /// rounding, so that the sign tests near a pair are far above their noise.

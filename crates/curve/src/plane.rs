@@ -98,3 +98,7 @@ impl PlaneCurve for SplineCurve {
 /// A shape in the rational circle's parameter is known to the algorithms by evaluation: its
 /// exact form is its shape's.
 impl PlaneCurve for OnCircle {}
+
+/// A profile is known to the algorithms of smooth curves by evaluation only: its segments'
+/// exact forms are taken segment by segment by the algorithms that know of profiles.
+impl PlaneCurve for crate::Profile {}

@@ -63,7 +63,7 @@ impl Segment {
             return Err(Error::InvalidShape {
                 field: "to",
                 value: to[0],
-                why: "a line needs two distinct points",
+                why: "a point other than `from`",
             });
         }
         Ok(Self {
@@ -91,7 +91,7 @@ impl Segment {
             return Err(Error::InvalidShape {
                 field: "r",
                 value: r,
-                why: "must be finite and > 0",
+                why: "finite and > 0",
             });
         }
         for (field, a) in [("start", start), ("end", end)] {
@@ -99,7 +99,7 @@ impl Segment {
                 return Err(Error::InvalidShape {
                     field,
                     value: a,
-                    why: "must be finite",
+                    why: "finite",
                 });
             }
         }
@@ -108,14 +108,14 @@ impl Segment {
             return Err(Error::InvalidShape {
                 field: "end",
                 value: end,
-                why: "an arc needs end ≠ start",
+                why: "other than start",
             });
         }
         if sweep.abs() > TAU + FULL_TURN_ROUNDING {
             return Err(Error::InvalidShape {
                 field: "end",
                 value: end,
-                why: "|end − start| must be at most 2π",
+                why: "within 2π of start",
             });
         }
         let full = sweep.abs() >= TAU - FULL_TURN_ROUNDING;
@@ -157,7 +157,7 @@ impl Segment {
             return Err(Error::InvalidShape {
                 field: "periodic",
                 value: 1.0,
-                why: "a profile's segments are open curves",
+                why: "false: a profile's segments are open curves",
             });
         }
         Ok(Self { kind, curve })
@@ -240,7 +240,7 @@ fn finite_point(field: &'static str, p: [f64; 2]) -> Result<()> {
         Some(&x) => Err(Error::InvalidShape {
             field,
             value: x,
-            why: "coordinates must be finite",
+            why: "finite",
         }),
         None => Ok(()),
     }

@@ -1,0 +1,139 @@
+//! Beyond the papers' smooth curves: the commands on profiles (chains of segments joined at
+//! corners or smoothly, [`Profile`]). Jia (2004, §9.2) notes that the method extends to
+//! piecewise C² curves; this module runs it segment by segment and decides at the joints.
+
+use crate::error::{Error, Result};
+use crate::prepare::inflections;
+use crate::types::{Corner, CornerKind, Inflection, InflectionKind, Options, ProfileInflections};
+use curve::{JointKind, ParamCurve, Profile, SegmentKind};
+
+/// The curvature (times the profile's size) beside a smooth joint below which its sign is
+/// not clear of the rounding of the jets it is computed from.
+const JOINT_CURVATURE_NOISE: f64 = 1e-9;
+
+/// The inflections of a profile: inside each curved segment (certified where the segment's
+/// are), and at smooth joints where the curvature changes sign across the joint (an arc joined
+/// tangentially to an arc bent the other way); and its corners, which are not inflections.
+/// A straight segment has no single inflection: none is reported on it.
+///
+/// ```
+/// use antipodal::{profile_inflections, Options};
+/// use curve::{Profile, Segment};
+/// use std::f64::consts::PI;
+/// // An S of two half circles: one inflection, at the joint.
+/// let s = Profile::new(
+///     vec![
+///         Segment::arc([1.0, 0.0], 1.0, PI, 0.0).unwrap(),
+///         Segment::arc([3.0, 0.0], 1.0, PI, 2.0 * PI).unwrap(),
+///     ],
+///     None,
+/// )
+/// .unwrap();
+/// let r = profile_inflections(&s, &Options::default()).unwrap();
+/// assert_eq!(r.inflections.len(), 1);
+/// assert_eq!((r.inflections[0].u, r.inflections[0].segment), (1.0, Some(1)));
+/// assert!(r.corners.is_empty());
+/// ```
+pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileInflections> {
+    opts.validate()?;
+    let mut out = ProfileInflections {
+        inflections: Vec::new(),
+        corners: Vec::new(),
+        certified: true,
+        reason: None,
+    };
+    for (i, seg) in profile.segments().iter().enumerate() {
+        if seg.kind() == SegmentKind::Line {
+            continue;
+        }
+        let found = inflections(seg.curve(), opts).map_err(|e| Error::InSegment {
+            segment: i,
+            source: Box::new(e),
+        })?;
+        if !found.certified && out.certified {
+            out.certified = false;
+            out.reason = found.reason.clone();
+        }
+        let (a, b) = seg.curve().domain();
+        for f in found.inflections {
+            // At a segment's end the joint decides (a corner is no inflection).
+            if f.u <= a || f.u >= b {
+                continue;
+            }
+            out.inflections.push(Inflection {
+                u: profile.profile_param(i, f.u),
+                bracket: f
+                    .bracket
+                    .map(|[lo, hi]| [profile.profile_param(i, lo), profile.profile_param(i, hi)]),
+                segment: Some(i),
+                ..f
+            });
+        }
+    }
+    let size = profile_size(profile);
+    let n = profile.segments().len();
+    for joint in profile.joints() {
+        let i = joint.u as usize;
+        let p = profile.jet_to(joint.u, 0).p.arr();
+        if joint.kind != JointKind::Smooth {
+            out.corners.push(Corner {
+                u: joint.u,
+                p,
+                turn: joint.turn,
+                kind: match joint.kind {
+                    JointKind::Reflex => CornerKind::Reflex,
+                    _ => CornerKind::Convex,
+                },
+            });
+            continue;
+        }
+        let (before, after) = (&profile.segments()[(i + n - 1) % n], &profile.segments()[i]);
+        if before.kind() == SegmentKind::Line || after.kind() == SegmentKind::Line {
+            continue;
+        }
+        let k_before = before.jet(before.curve().domain().1).curvature();
+        let k_after = after.jet(after.curve().domain().0).curvature();
+        let clear = |k: f64| (k * size).abs() > JOINT_CURVATURE_NOISE;
+        if !(clear(k_before) && clear(k_after)) {
+            // A segment ending in a zero of its curvature: whether the profile inflects
+            // there is not decided.
+            if out.certified {
+                out.certified = false;
+                out.reason = Some(format!(
+                    "the curvature vanishes within rounding at the smooth joint at u = {}",
+                    joint.u
+                ));
+            }
+            continue;
+        }
+        if (k_before > 0.0) != (k_after > 0.0) {
+            out.inflections.push(Inflection {
+                u: joint.u,
+                p,
+                certified: true,
+                kind: InflectionKind::Simple,
+                bracket: Some([joint.u, joint.u]),
+                segment: Some(i),
+            });
+        }
+    }
+    out.inflections.sort_by(|a, b| a.u.total_cmp(&b.u));
+    Ok(out)
+}
+
+/// The diagonal of the box of the profile's control points.
+fn profile_size(profile: &Profile) -> f64 {
+    let pts: Vec<[f64; 2]> = profile
+        .segments()
+        .iter()
+        .flat_map(|s| s.curve().control_points())
+        .collect();
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in &pts {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (hi[0] - lo[0]).hypot(hi[1] - lo[1])
+}

@@ -1,0 +1,222 @@
+//! Inflections and corners of profiles against an independent oracle (dense sampling of the
+//! curvature of each segment, corners from the control points), on random closed chains of
+//! cubic Bézier segments joined smoothly or at corners, both ways round.
+
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
+
+use antipodal::{profile_inflections, CornerKind, Options, Profile, Segment};
+use curve::{ParamCurve, SegmentKind, SplineCurve, V2};
+use proptest::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A closed chain of `n` cubic Béziers round a star: joint `i` at radius `radii[i]` and angle
+/// `2πi/n`, inner control points from `wobble`; a joint is smooth (G1: the control points
+/// beside it collinear with it) where `smooth[i]`.
+fn chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool], reverse: bool) -> Profile {
+    let n = radii.len();
+    let joint =
+        |i: usize| V2::polar(std::f64::consts::TAU * (i % n) as f64 / n as f64) * radii[i % n];
+    // Per joint, the tangent direction used where it is smooth.
+    let dir = |i: usize| (joint(i + 1) - joint(i + n - 1)).unit();
+    let mut segs = Vec::new();
+    for i in 0..n {
+        let (a, b) = (joint(i), joint(i + 1));
+        let len = (b - a).norm();
+        let (w0, w1) = wobble[i];
+        let c1 = if smooth[i] {
+            a + dir(i) * (0.3 * len)
+        } else {
+            a + (b - a) * 0.3 + (b - a).perp() * w0
+        };
+        let c2 = if smooth[(i + 1) % n] {
+            b - dir(i + 1) * (0.3 * len)
+        } else {
+            a + (b - a) * 0.7 + (b - a).perp() * w1
+        };
+        let mut pts = vec![a.arr(), c1.arr(), c2.arr(), b.arr()];
+        if reverse {
+            pts.reverse();
+        }
+        let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
+        segs.push(Segment::spline(SegmentKind::Bezier, c).unwrap());
+    }
+    if reverse {
+        segs.reverse();
+    }
+    Profile::new(segs, None).unwrap()
+}
+
+/// Sign changes of the curvature by dense sampling: inside each segment, and across smooth
+/// joints; with the smallest |κ| (times the size) beside any of them, to tell whether the
+/// sampling resolves them.
+fn sampled_inflections(p: &Profile, size: f64) -> (Vec<f64>, f64) {
+    const N: usize = 2000;
+    let mut out = Vec::new();
+    let mut least = f64::INFINITY;
+    let n = p.segments().len();
+    for (i, seg) in p.segments().iter().enumerate() {
+        let (a, b) = seg.curve().domain();
+        let k = |x: f64| seg.jet(a + (b - a) * x).curvature();
+        let mut prev = k(0.0);
+        for j in 1..=N {
+            let x = j as f64 / N as f64;
+            let cur = k(x);
+            if (cur > 0.0) != (prev > 0.0) && j < N {
+                out.push(i as f64 + x);
+                least = least.min(cur.abs().min(prev.abs()) * size);
+            }
+            prev = cur;
+        }
+        // Across the joint at the start of the next segment, where it is smooth.
+        let next = &p.segments()[(i + 1) % n];
+        let smooth = p
+            .joints()
+            .iter()
+            .any(|jt| jt.u as usize == (i + 1) % n && jt.kind == curve::JointKind::Smooth);
+        if smooth {
+            let (na, _) = next.curve().domain();
+            let kn = next.jet(na).curvature();
+            let kb = k(1.0);
+            if (kn > 0.0) != (kb > 0.0) {
+                out.push(((i + 1) % n) as f64);
+            }
+            least = least.min(kn.abs().min(kb.abs()) * size);
+        }
+    }
+    out.sort_by(f64::total_cmp);
+    (out, least)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Every inflection the sampling resolves is found, nothing else; the corners are the
+    /// joints where the control points turn, convex where they turn the profile's way.
+    fn profile_inflections_match_dense_sampling(
+        radii in proptest::collection::vec(1.0f64..2.0, 3..8),
+        wobble in proptest::collection::vec((-0.4f64..0.4, -0.4f64..0.4), 8),
+        smooth in proptest::collection::vec(any::<bool>(), 8),
+        reverse in any::<bool>(),
+    ) {
+        let n = radii.len();
+        let p = chain(&radii, &wobble[..n], &smooth[..n], reverse);
+        let r = profile_inflections(&p, &Options::default()).unwrap();
+        let size = 4.0;
+        let (want, least) = sampled_inflections(&p, size);
+        // Resolved: every sign change clear of the sampling's own noise.
+        prop_assume!(least > 1e-6);
+        prop_assert_eq!(r.inflections.len(), want.len(), "found {:?}, sampled {:?}", r.inflections, want);
+        if !want.is_empty() {
+            WITH_INFLECTIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        if want.iter().any(|&u| u.fract() == 0.0) {
+            AT_JOINTS.fetch_add(1, Ordering::Relaxed);
+        }
+        for (f, w) in r.inflections.iter().zip(&want) {
+            prop_assert!((f.u - w).abs() <= 2e-3, "{} against {}", f.u, w);
+            let on = p.jet(f.u).p;
+            prop_assert!((on.x - f.p[0]).abs() < 1e-12 && (on.y - f.p[1]).abs() < 1e-12);
+        }
+        // Corners: the joints built sharp (their control points turn by more than 1e-9).
+        let sharp: Vec<f64> = (0..n)
+            .filter(|&i| {
+                let k = if reverse { (n - i) % n } else { i };
+                !smooth[k]
+            })
+            .map(|i| i as f64)
+            .collect();
+        let mut got: Vec<f64> = r.corners.iter().map(|c| c.u).collect();
+        got.sort_by(f64::total_cmp);
+        let mut sharp = sharp;
+        sharp.sort_by(f64::total_cmp);
+        prop_assert_eq!(&got, &sharp);
+        for c in &r.corners {
+            let convex = c.turn * p.orientation() > 0.0;
+            prop_assert_eq!(c.kind == CornerKind::Convex, convex);
+        }
+    }
+}
+
+static WITH_INFLECTIONS: AtomicUsize = AtomicUsize::new(0);
+static AT_JOINTS: AtomicUsize = AtomicUsize::new(0);
+
+/// Runs the property and checks that it is not vacuous: profiles with inflections, some of
+/// them at smooth joints.
+#[test]
+fn profile_inflections_match_dense_sampling_and_many() {
+    profile_inflections_match_dense_sampling();
+    let (w, j) = (
+        WITH_INFLECTIONS.load(Ordering::Relaxed),
+        AT_JOINTS.load(Ordering::Relaxed),
+    );
+    assert!(w >= 100 && j >= 10, "with inflections {w}, at joints {j}");
+}
+
+/// A smooth closed curve given as a one-segment profile has the curve's inflections exactly.
+#[test]
+fn one_segment_profiles_have_the_curves_inflections() {
+    let pts = [
+        [0.0, 0.0],
+        [2.0, -1.0],
+        [4.0, 0.0],
+        [4.5, 2.0],
+        [2.0, 0.5],
+        [-0.5, 2.0],
+        [0.0, 0.0],
+    ];
+    let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
+    let alone = antipodal::inflections(&c, &Options::default()).unwrap();
+    let p = Profile::new(
+        vec![Segment::spline(SegmentKind::BSpline, c).unwrap()],
+        None,
+    )
+    .unwrap();
+    let r = profile_inflections(&p, &Options::default()).unwrap();
+    let inside: Vec<f64> = alone
+        .inflections
+        .iter()
+        .map(|i| i.u)
+        .filter(|&u| u > 0.0 && u < 1.0)
+        .collect();
+    let got: Vec<f64> = r.inflections.iter().map(|i| i.u).collect();
+    assert_eq!(got, inside);
+    assert!(!inside.is_empty());
+}
+
+/// Corners are listed, not taken for inflections; lines carry none; a bad segment is named.
+#[test]
+fn corners_lines_and_bad_segments() {
+    use std::f64::consts::PI;
+    // A D shape: a line and a half circle, two convex corners.
+    let d = Profile::new(
+        vec![
+            Segment::line([0.0, 1.0], [0.0, -1.0]).unwrap(),
+            Segment::arc([0.0, 0.0], 1.0, -PI / 2.0, PI / 2.0).unwrap(),
+        ],
+        None,
+    )
+    .unwrap();
+    let r = profile_inflections(&d, &Options::default()).unwrap();
+    assert!(r.inflections.is_empty() && r.certified);
+    assert_eq!(r.corners.len(), 2);
+    assert!(r.corners.iter().all(|c| c.kind == CornerKind::Convex));
+    assert!((r.corners[0].turn - PI / 2.0).abs() < 1e-12);
+    // A cusp inside a Bézier segment is refused, naming the segment.
+    let cusp = SplineCurve::clamped(
+        3,
+        &[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]],
+        None,
+        None,
+    )
+    .unwrap();
+    let p = Profile::new(
+        vec![
+            Segment::line([1.0, 0.0], [0.0, 0.0]).unwrap(),
+            Segment::spline(SegmentKind::Bezier, cusp).unwrap(),
+        ],
+        None,
+    )
+    .unwrap();
+    let e = profile_inflections(&p, &Options::default()).unwrap_err();
+    assert!(e.to_string().starts_with("segment 1:"), "{e}");
+}

@@ -41,6 +41,7 @@ const BAD: &[(&str, &str)] = &[
     ("periodic_not_bool.json", "periodic"),
     ("point_arity.json", "points[1]"),
     ("point_not_number.json", "points[1][1]"),
+    ("profile_crossing.json", "segments[3]"),
     ("profile_gap.json", "segments[1]"),
     ("profile_nested_duplicate.json", "segments[0].to"),
     ("profile_segment_field.json", "segments[1].radius"),

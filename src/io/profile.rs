@@ -64,7 +64,10 @@ pub(super) fn parse_profile(f: &Fields<'_>) -> Result<Profile, FieldError> {
         let field = match e {
             curve::Error::Gap { segment, .. }
             | curve::Error::ZeroLength { segment }
-            | curve::Error::Cusp { segment, .. } => format!("segments[{segment}]"),
+            | curve::Error::Cusp { segment, .. }
+            | curve::Error::SelfCrossing {
+                second: segment, ..
+            } => format!("segments[{segment}]"),
             _ => "segments".to_string(),
         };
         (field, Problem::Geometry(e.to_string()))

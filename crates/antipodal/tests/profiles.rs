@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// A closed chain of `n` cubic Béziers round a star: joint `i` at radius `radii[i]` and angle
 /// `2πi/n`, inner control points from `wobble`; a joint is smooth (G1: the control points
 /// beside it collinear with it) where `smooth[i]`.
-fn chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool], reverse: bool) -> Profile {
+fn chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool], reverse: bool) -> Option<Profile> {
     let n = radii.len();
     let joint =
         |i: usize| V2::polar(std::f64::consts::TAU * (i % n) as f64 / n as f64) * radii[i % n];
@@ -43,7 +43,8 @@ fn chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool], reverse: bool) -
     if reverse {
         segs.reverse();
     }
-    Profile::new(segs, None).unwrap()
+    // (A wobble may make the chain cross itself: no profile.)
+    Profile::new(segs, None).ok()
 }
 
 /// Sign changes of the curvature by dense sampling: inside each segment, and across smooth
@@ -99,7 +100,9 @@ proptest! {
         reverse in any::<bool>(),
     ) {
         let n = radii.len();
-        let p = chain(&radii, &wobble[..n], &smooth[..n], reverse);
+        let Some(p) = chain(&radii, &wobble[..n], &smooth[..n], reverse) else {
+            return Ok(());
+        };
         let r = profile_inflections(&p, &Options::default()).unwrap();
         let size = 4.0;
         let (want, least) = sampled_inflections(&p, size);

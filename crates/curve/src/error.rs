@@ -51,6 +51,16 @@ pub enum Error {
         /// Where.
         at: [f64; 2],
     },
+    /// Two segments of a profile cross or touch away from their joint.
+    #[error("the profile crosses itself: segments {first} and {second} meet at ({x}, {y})", x = at[0], y = at[1])]
+    SelfCrossing {
+        /// The first segment along the profile.
+        first: usize,
+        /// The second.
+        second: usize,
+        /// A point where they meet.
+        at: [f64; 2],
+    },
     /// A closed profile that encloses no area.
     #[error("the closed profile encloses no area (signed area {area:e})")]
     FlatProfile {

@@ -20,6 +20,7 @@
 //! ```
 
 pub mod circle;
+mod crossing;
 mod error;
 pub mod exact;
 mod frame;

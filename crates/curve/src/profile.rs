@@ -3,6 +3,7 @@
 //! parameter `[0, n)` for `n` segments (`u ∈ [i, i+1]` is segment `i` at its own parameter
 //! mapped linearly); its joints are classified as smooth (G1), convex or reflex corners.
 
+use crate::crossing::first_crossing;
 use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
 use crate::param::ParamCurve;
@@ -101,6 +102,14 @@ impl Profile {
             Some(c) => c,
             None => joined(seam_gap),
         };
+        // (Before the area: a bow tie encloses none, and its crossing is the cause.)
+        if let Some(c) = first_crossing(&segments, closed, size) {
+            return Err(Error::SelfCrossing {
+                first: c.first,
+                second: c.second,
+                at: c.at,
+            });
+        }
         let orientation = if closed {
             let area = signed_area(&segments);
             if area.abs().partial_cmp(&(FLAT_AREA * size * size))
@@ -363,6 +372,83 @@ mod tests {
             Profile::new(Vec::new(), None),
             Err(Error::EmptyProfile)
         ));
+    }
+
+    #[test]
+    fn crossing_chains_are_refused_naming_both_segments() {
+        let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
+        // A bow tie: its second and fourth sides cross at (1, 1).
+        let tie = Profile::new(
+            vec![
+                l([0.0, 0.0], [2.0, 0.0]),
+                l([2.0, 0.0], [0.0, 2.0]),
+                l([0.0, 2.0], [2.0, 2.0]),
+                l([2.0, 2.0], [0.0, 0.0]),
+            ],
+            None,
+        );
+        match tie {
+            Err(Error::SelfCrossing {
+                first: 1,
+                second: 3,
+                at,
+            }) => {
+                assert!(
+                    (at[0] - 1.0).abs() < 1e-12 && (at[1] - 1.0).abs() < 1e-12,
+                    "{at:?}"
+                );
+            }
+            other => panic!("{other:?}"),
+        }
+        // An arc cutting through a line of the same profile.
+        let cut = Profile::new(
+            vec![
+                l([0.0, 0.0], [4.0, 0.0]),
+                l([4.0, 0.0], [4.0, 2.0]),
+                Segment::arc([2.0, 2.0], 2.0, 0.0, -PI).unwrap(),
+            ],
+            None,
+        );
+        assert!(matches!(cut, Err(Error::SelfCrossing { .. })), "{cut:?}");
+        // Rounded and sharp rectangles, both ways round, do not cross.
+        for r in [0.0, 0.3, 0.9] {
+            for reverse in [false, true] {
+                let _ = rounded_rectangle(4.0, 2.0, r, reverse);
+            }
+        }
+    }
+
+    proptest! {
+        /// On random polygons (exact as polylines) the crossing test agrees with testing every
+        /// pair of sides that are not neighbours by the signs of four cross products.
+        #[test]
+        fn polygon_crossings_match_brute_force(
+            pts in proptest::collection::vec((-1.0f64..1.0, -1.0f64..1.0), 4..10),
+        ) {
+            let v: Vec<V2> = pts.iter().map(|&(x, y)| V2::new(x, y)).collect();
+            let n = v.len();
+            let side = |p: V2, q: V2, r: V2| (q - p).cross(r - p);
+            let proper = |a: V2, b: V2, c: V2, d: V2| {
+                side(c, d, a) * side(c, d, b) < 0.0 && side(a, b, c) * side(a, b, d) < 0.0
+            };
+            let crossing = (0..n).any(|i| {
+                (i + 2..n).any(|j| {
+                    !(i == 0 && j == n - 1) && proper(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n])
+                })
+            });
+            let segs: Vec<Segment> = (0..n)
+                .map(|k| Segment::line(v[k].arr(), v[(k + 1) % n].arr()).unwrap())
+                .collect();
+            match Profile::new(segs, None) {
+                Ok(_) => prop_assert!(!crossing),
+                Err(Error::SelfCrossing { first, second, .. }) => {
+                    prop_assert!(crossing);
+                    prop_assert!(first < second);
+                }
+                // (Turning back exactly, or no area: not from random points.)
+                Err(e) => prop_assert!(false, "{e}"),
+            }
+        }
     }
 
     #[test]

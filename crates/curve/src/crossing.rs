@@ -1,0 +1,204 @@
+//! Whether a chain of segments crosses itself: each segment flattened into a polyline within
+//! [`FLATNESS`] of the profile's size, and the polylines' edges tested pairwise over a sweep
+//! of their boxes. Two stretches that come closer than the flatness without crossing may be
+//! judged either way; anything farther apart is judged right.
+
+use crate::geom::V2;
+use crate::param::ParamCurve;
+use crate::segment::Segment;
+
+/// How far (relative to the profile's size) a flattened edge may stray from its segment.
+pub(crate) const FLATNESS: f64 = 1e-7;
+
+/// Samples per Bézier piece a segment starts its flattening with (a wiggle narrower than an
+/// eighth of a piece and shallower than the flatness can escape it).
+const FIRST_SAMPLES: usize = 8;
+
+/// Halvings of a parameter interval in the flattening.
+const MAX_DEPTH: usize = 24;
+
+/// A crossing: the two segments and a point where they cross.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Crossing {
+    pub(crate) first: usize,
+    pub(crate) second: usize,
+    pub(crate) at: [f64; 2],
+}
+
+/// One edge of the flattened chain: its ends and its position along the chain.
+#[derive(Debug, Clone, Copy)]
+struct Edge {
+    a: V2,
+    b: V2,
+    segment: usize,
+    /// Index along the whole chain (neighbours share an end).
+    index: usize,
+}
+
+/// The first crossing of the chain (`closed`: its last segment joins its first), if any.
+pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> Option<Crossing> {
+    let delta = FLATNESS * size;
+    let mut edges = Vec::new();
+    for (i, s) in segments.iter().enumerate() {
+        let mut points = flatten(s, delta);
+        // (A repeated point would make its neighbours' edges touch without being neighbours.)
+        points.dedup();
+        for (a, b) in points.windows(2).map(|w| (w[0], w[1])) {
+            let index = edges.len();
+            edges.push(Edge {
+                a,
+                b,
+                segment: i,
+                index,
+            });
+        }
+    }
+    let n = edges.len();
+    let neighbours = |i: usize, j: usize| {
+        let d = i.abs_diff(j);
+        d <= 1 || (closed && d == n - 1)
+    };
+    // Sweep along x over the edges' boxes.
+    let mut order: Vec<usize> = (0..n).collect();
+    let lo_x = |e: &Edge| e.a.x.min(e.b.x);
+    let hi_x = |e: &Edge| e.a.x.max(e.b.x);
+    order.sort_by(|&i, &j| lo_x(&edges[i]).total_cmp(&lo_x(&edges[j])));
+    let mut active: Vec<usize> = Vec::new();
+    let mut found: Option<Crossing> = None;
+    for &i in &order {
+        let e = edges[i];
+        active.retain(|&j| hi_x(&edges[j]) >= lo_x(&e));
+        for &j in &active {
+            let f = edges[j];
+            if neighbours(e.index, f.index) {
+                continue;
+            }
+            if let Some(at) = meet(e.a, e.b, f.a, f.b) {
+                let (first, second) = (e.segment.min(f.segment), e.segment.max(f.segment));
+                let c = Crossing {
+                    first,
+                    second,
+                    at: at.arr(),
+                };
+                // (The first along the chain, whatever the sweep's order.)
+                if found.is_none_or(|x| (first, second) < (x.first, x.second)) {
+                    found = Some(c);
+                }
+            }
+        }
+        active.push(i);
+    }
+    found
+}
+
+/// The points of a polyline within `delta` of the segment (its chords' midpoints checked
+/// against the curve, halving where they stray).
+fn flatten(s: &Segment, delta: f64) -> Vec<V2> {
+    let c = s.curve();
+    let (a, b) = c.domain();
+    if s.kind() == crate::segment::SegmentKind::Line {
+        return vec![s.start(), s.end()];
+    }
+    let pieces = c.control_points().len().max(2);
+    let first = FIRST_SAMPLES * pieces;
+    let at = |u: f64| c.jet_to(u, 0).p;
+    let mut out = vec![at(a)];
+    for k in 0..first {
+        let (u0, u1) = (
+            a + (b - a) * k as f64 / first as f64,
+            a + (b - a) * (k + 1) as f64 / first as f64,
+        );
+        refine(&at, (u0, at(u0)), (u1, at(u1)), delta, 0, &mut out);
+    }
+    out
+}
+
+/// Appends the points after `p0` up to `p1` of the flattening of `[u0, u1]`.
+fn refine(
+    at: &impl Fn(f64) -> V2,
+    (u0, p0): (f64, V2),
+    (u1, p1): (f64, V2),
+    delta: f64,
+    depth: usize,
+    out: &mut Vec<V2>,
+) {
+    let um = 0.5 * (u0 + u1);
+    let pm = at(um);
+    // Distance of the middle point from the chord (from its end where the chord is a point).
+    let chord = p1 - p0;
+    let off = match chord.norm() {
+        0.0 => (pm - p0).norm(),
+        len => chord.cross(pm - p0).abs() / len,
+    };
+    if off <= delta || depth >= MAX_DEPTH {
+        out.push(p1);
+        return;
+    }
+    refine(at, (u0, p0), (um, pm), delta, depth + 1, out);
+    refine(at, (um, pm), (u1, p1), delta, depth + 1, out);
+}
+
+/// Where edges `ab` and `cd` meet, when they do (touching or overlapping included).
+fn meet(a: V2, b: V2, c: V2, d: V2) -> Option<V2> {
+    let (lo1, hi1) = (
+        V2::new(a.x.min(b.x), a.y.min(b.y)),
+        V2::new(a.x.max(b.x), a.y.max(b.y)),
+    );
+    let (lo2, hi2) = (
+        V2::new(c.x.min(d.x), c.y.min(d.y)),
+        V2::new(c.x.max(d.x), c.y.max(d.y)),
+    );
+    if hi1.x < lo2.x || hi2.x < lo1.x || hi1.y < lo2.y || hi2.y < lo1.y {
+        return None;
+    }
+    let side = |p: V2, q: V2, r: V2| (q - p).cross(r - p);
+    let (d1, d2) = (side(c, d, a), side(c, d, b));
+    let (d3, d4) = (side(a, b, c), side(a, b, d));
+    if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+        let t = d1 / (d1 - d2);
+        return Some(a + (b - a) * t);
+    }
+    // Touching or collinear: an end on the other edge.
+    let on = |p: V2, q: V2, r: V2| {
+        side(p, q, r) == 0.0
+            && r.x >= p.x.min(q.x)
+            && r.x <= p.x.max(q.x)
+            && r.y >= p.y.min(q.y)
+            && r.y <= p.y.max(q.y)
+    };
+    [(c, d, a), (c, d, b), (a, b, c), (a, b, d)]
+        .into_iter()
+        .find(|&(p, q, r)| on(p, q, r))
+        .map(|(_, _, r)| r)
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The edge test agrees with solving for the meet in exact-enough arithmetic away from
+        /// touching configurations.
+        #[test]
+        fn edges_meet_where_their_lines_cross_inside_both(
+            p in proptest::collection::vec(-10.0f64..10.0, 8),
+        ) {
+            let (a, b, c, d) = (V2::new(p[0], p[1]), V2::new(p[2], p[3]), V2::new(p[4], p[5]), V2::new(p[6], p[7]));
+            let den = (b - a).cross(d - c);
+            prop_assume!(den.abs() > 1e-6);
+            let t = (c - a).cross(d - c) / den;
+            let u = (c - a).cross(b - a) / den;
+            prop_assume!((t - 0.5).abs() < 0.5 - 1e-6 || (t - 0.5).abs() > 0.5 + 1e-6);
+            prop_assume!((u - 0.5).abs() < 0.5 - 1e-6 || (u - 0.5).abs() > 0.5 + 1e-6);
+            let inside = (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u);
+            let got = meet(a, b, c, d);
+            prop_assert_eq!(got.is_some(), inside);
+            if let Some(m) = got {
+                let want = a + (b - a) * t;
+                prop_assert!((m - want).norm() < 1e-9 * (1.0 + want.norm()));
+            }
+        }
+    }
+}

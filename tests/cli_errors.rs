@@ -48,6 +48,9 @@ const BAD: &[(&str, &str)] = &[
     ("profile_segment_kind.json", "segments[0].kind"),
     ("profile_turns_back.json", "segments[1]"),
     ("radius_zero.json", "r"),
+    ("region_boundaries_cross.json", "holes[0]"),
+    ("region_hole_outside.json", "holes[0]"),
+    ("region_open_boundary.json", "outer"),
     ("too_few_points.json", "points"),
     ("unknown_field.json", "radius"),
     ("unknown_kind.json", "kind"),
@@ -182,5 +185,23 @@ fn help_and_version_succeed() {
         let r = curvekit(&args);
         assert_eq!(r.code, 0, "{args:?}");
         assert!(!r.stdout.is_empty());
+    }
+}
+
+/// A region is read (its outer boundary and holes validated) and refused by the commands on
+/// curves, by name.
+#[test]
+fn regions_are_read_and_refused_by_curve_commands() {
+    let path = fixture("region-pocket.json");
+    for cmd in ["inflections", "antipodal"] {
+        assert_usage_error(&[cmd, &path], &[&path, ": kind: ", "not a region"]);
+    }
+    let r = curvekit::io::read_curve(std::path::Path::new(&path)).unwrap();
+    match r.shape {
+        curvekit::io::Shape::Region(region) => {
+            assert_eq!(region.holes().len(), 1);
+            assert_eq!(region.outer().segments().len(), 8);
+        }
+        other => panic!("{other:?}"),
     }
 }

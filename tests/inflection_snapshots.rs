@@ -12,6 +12,10 @@ fn inflections_of_every_fixture() {
     assert!(files.len() >= 15);
     for path in files {
         let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+        // (A region is no curve: `inflections` refuses it, tested in cli_errors.)
+        if name.starts_with("region-") {
+            continue;
+        }
         let mut doc = curvekit_json(&["inflections", path.to_str().unwrap()]);
         // The absolute path differs between machines.
         doc["curve"]["file"] = serde_json::json!(format!("{name}.json"));

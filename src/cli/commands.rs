@@ -9,6 +9,7 @@ use std::path::Path;
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     let curve = read_curve(path)?;
+    one_curve(&[&curve], "inflections")?;
     if let Shape::Profile(profile) = &curve.shape {
         return run_profile_inflections(&curve, profile, common);
     }
@@ -77,9 +78,25 @@ fn run_profile_inflections(
     })
 }
 
+/// A region is no curve: the commands on curves refuse it by name (the medial axis, to come,
+/// takes regions).
+fn one_curve(curves: &[&Curve], command: &str) -> Result<(), Failure> {
+    match curves.iter().find(|c| matches!(c.shape, Shape::Region(_))) {
+        Some(c) => Err(Failure::Input(CurveFileError {
+            file: c.file.clone(),
+            field: "kind".into(),
+            problem: Problem::Unsupported(format!(
+                "{command} takes a curve or a profile, not a region"
+            )),
+        })),
+        None => Ok(()),
+    }
+}
+
 /// Antipodal pairs and common tangents of profiles (corner cones, pairs at corners) are not
 /// implemented yet: a profile is refused by name rather than searched as a smooth curve.
 fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
+    one_curve(curves, command)?;
     match curves.iter().find(|c| matches!(c.shape, Shape::Profile(_))) {
         Some(c) => Err(Failure::Input(CurveFileError {
             file: c.file.clone(),
@@ -240,6 +257,7 @@ pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failu
                     Shape::Spline(_) => "points",
                     Shape::Analytic(_) | Shape::Segment(_) => "kind",
                     Shape::Profile(_) => "segments",
+                    Shape::Region(_) => "outer",
                 }
                 .into(),
                 problem: Problem::Geometry(e.to_string()),

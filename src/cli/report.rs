@@ -2,6 +2,7 @@
 
 use super::timing::Stats;
 use antipodal::{Antipodal, CornerKind, InflectionKind, Inflections, ProfileInflections, Tangents};
+use curvekit::curve::ParamCurve;
 use curvekit::io::{Curve, Shape};
 use curvekit::svg::{side_by_side, Figure};
 use serde::Serialize;
@@ -15,6 +16,17 @@ pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
         Shape::Spline(s) => (24 * s.n_points).clamp(600, 20_000),
         Shape::Analytic(_) | Shape::Segment(_) => 1200,
         Shape::Profile(p) => (200 * p.segments().len()).clamp(600, 20_000),
+        Shape::Region(r) => {
+            for b in std::iter::once(r.outer()).chain(r.holes()) {
+                let n = (200 * b.segments().len()).clamp(600, 20_000);
+                let (lo, hi) = b.domain();
+                let pts = (0..=n)
+                    .map(|i| b.jet_to(lo + (hi - lo) * i as f64 / n as f64, 0).p.arr())
+                    .collect();
+                fig.curve(pts, true);
+            }
+            return;
+        }
     };
     fig.curve(curve.polyline(n), curve.is_closed());
 }
@@ -44,6 +56,7 @@ pub(crate) fn describe(curve: &Curve) -> String {
             p.segments().len(),
             p.corners().count()
         ),
+        Shape::Region(r) => format!("region, {} holes", r.holes().len()),
     };
     let closed = if curve.is_closed() { "closed" } else { "open" };
     format!("{shape}, {closed}, domain [{a}, {b}]")

@@ -14,7 +14,7 @@ use thiserror::Error;
 mod profile;
 mod spline;
 
-pub use profile::MAX_SEGMENTS;
+pub use profile::{MAX_HOLES, MAX_SEGMENTS};
 
 /// Largest accepted magnitude of any number: keeps products of several coordinates (curvature
 /// numerators are cubic in the homogeneous points) far from overflow.
@@ -112,7 +112,7 @@ pub enum Problem {
 }
 
 const KINDS: &str =
-    "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities, line, arc, profile";
+    "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities, line, arc, profile, region";
 
 /// Which spline kind a file used.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -153,6 +153,8 @@ pub enum Shape {
     Segment(Box<curve::Segment>),
     /// `profile`: a chain of segments.
     Profile(Box<curve::Profile>),
+    /// `region`: an outer closed boundary and holes.
+    Region(Box<curve::Region>),
 }
 
 /// A validated curve with the name of the file it came from.
@@ -173,6 +175,7 @@ impl Curve {
             Shape::Analytic(a) => a.kind(),
             Shape::Segment(s) => s.kind().name(),
             Shape::Profile(_) => "profile",
+            Shape::Region(_) => "region",
         }
     }
 
@@ -183,6 +186,7 @@ impl Curve {
             Shape::Analytic(_) => true,
             Shape::Segment(s) => s.is_closed(),
             Shape::Profile(p) => p.is_closed(),
+            Shape::Region(_) => true,
         }
     }
 
@@ -193,6 +197,7 @@ impl Curve {
             Shape::Analytic(_) => (0.0, std::f64::consts::TAU),
             Shape::Segment(s) => s.domain(),
             Shape::Profile(p) => p.domain(),
+            Shape::Region(r) => r.outer().domain(),
         }
     }
 
@@ -203,6 +208,9 @@ impl Curve {
             Shape::Analytic(a) => a,
             Shape::Segment(s) => s.curve(),
             Shape::Profile(p) => p.as_ref(),
+            // (Commands that need one curve refuse a region; figures draw its outer boundary
+            // here and its holes beside it.)
+            Shape::Region(r) => r.outer(),
         }
     }
 
@@ -211,7 +219,7 @@ impl Curve {
         match &self.shape {
             Shape::Spline(s) => Some(&s.curve),
             Shape::Segment(s) => Some(s.curve().curve()),
-            Shape::Analytic(_) | Shape::Profile(_) => None,
+            Shape::Analytic(_) | Shape::Profile(_) | Shape::Region(_) => None,
         }
     }
 
@@ -355,7 +363,7 @@ fn duplicate_key(text: &str) -> Option<String> {
 /// An error before the file name is attached: (field, problem).
 type FieldError = (String, Problem);
 
-fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
+pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
     let kind = match map.get("kind") {
         None => return Err(("kind".into(), Problem::Missing)),
         Some(Value::String(s)) => s.as_str(),
@@ -371,6 +379,7 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
         "line" => &["from", "to"],
         "arc" => &["center", "r", "start", "end"],
         "profile" => &["segments", "closed"],
+        "region" => &["outer", "holes"],
         other => return Err(("kind".into(), Problem::UnknownKind(other.to_string()))),
     };
     // Reject unknown fields first: a typo'd optional field must not pass silently.
@@ -395,6 +404,7 @@ fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
             return profile::parse_segment_kind(kind, &f).map(|s| Shape::Segment(Box::new(s)))
         }
         "profile" => return profile::parse_profile(&f).map(|p| Shape::Profile(Box::new(p))),
+        "region" => return profile::parse_region(&f).map(|r| Shape::Region(Box::new(r))),
         "circle" => {
             let center = f.opt_point("center")?.unwrap_or([0.0, 0.0]);
             Analytic::Circle(shape("r", Circle::new(f.positive("r")?, center))?)

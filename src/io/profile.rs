@@ -3,7 +3,7 @@
 //! drawing files").
 
 use super::{spline, wrong_type, FieldError, Fields, Problem};
-use curve::{Profile, Segment, SegmentKind};
+use curve::{ParamCurve, Profile, Region, Segment, SegmentKind};
 use serde_json::Value;
 
 /// Most segments a profile may have: keeps every command's work (quadratic in the pieces for
@@ -123,4 +123,99 @@ fn parse_segment(f: &Fields<'_>) -> Result<Segment, FieldError> {
 fn point(f: &Fields<'_>, key: &str) -> Result<[f64; 2], FieldError> {
     f.opt_point(key)?
         .ok_or_else(|| (key.to_string(), Problem::Missing))
+}
+
+/// Most holes a region may have (each is a boundary the commands visit).
+pub const MAX_HOLES: usize = 10_000;
+
+/// A `region` object (unknown fields were already rejected): `outer` and `holes`, each a
+/// closed `profile`, a closed `bezier` or `bspline`, a `circle` or a full-turn `arc`.
+pub(super) fn parse_region(f: &Fields<'_>) -> Result<Region, FieldError> {
+    let outer = boundary("outer", f.require("outer")?)?;
+    let holes = match f.get("holes") {
+        None => Vec::new(),
+        Some(Value::Array(items)) if items.len() <= MAX_HOLES => items
+            .iter()
+            .enumerate()
+            .map(|(i, v)| boundary(&format!("holes[{i}]"), v))
+            .collect::<Result<Vec<_>, _>>()?,
+        Some(Value::Array(items)) => {
+            return Err((
+                "holes".into(),
+                Problem::OutOfRange {
+                    rule: format!("at most {MAX_HOLES} holes"),
+                    value: items.len() as f64,
+                },
+            ))
+        }
+        Some(v) => return Err(wrong_type("holes", "an array of closed curves", v)),
+    };
+    Region::new(outer, holes).map_err(|e| {
+        let name = |b: usize| match b {
+            0 => "outer".to_string(),
+            b => format!("holes[{}]", b - 1),
+        };
+        let field = match e {
+            curve::Error::OpenBoundary { boundary } => name(boundary),
+            curve::Error::BoundariesCross { second, .. } => name(second),
+            curve::Error::HoleOutside { hole } | curve::Error::HoleInHole { hole, .. } => {
+                format!("holes[{hole}]")
+            }
+            _ => "outer".to_string(),
+        };
+        (field, Problem::Geometry(e.to_string()))
+    })
+}
+
+/// One boundary of a region, as a closed profile; `key` names it in errors.
+fn boundary(key: &str, v: &Value) -> Result<Profile, FieldError> {
+    let at = |(field, problem): FieldError| (format!("{key}.{field}"), problem);
+    let Value::Object(map) = v else {
+        return Err(wrong_type(key, "a closed curve object", v));
+    };
+    let shape = super::parse_shape(map).map_err(at)?;
+    let not_closed = || {
+        (
+            key.to_string(),
+            Problem::Geometry("a region's boundaries are closed curves".into()),
+        )
+    };
+    let profile = match shape {
+        super::Shape::Profile(p) => *p,
+        super::Shape::Segment(s) => Profile::new(vec![*s], Some(true)).map_err(|_| not_closed())?,
+        super::Shape::Spline(s) if s.closed => {
+            // A periodic curve is restricted to its domain: the same curve, clamped.
+            let (a, b) = s.curve.domain();
+            let geometry = |e: String| at(("points".into(), Problem::Geometry(e)));
+            let clamped = s
+                .curve
+                .restrict(a, b)
+                .map_err(|e| geometry(e.to_string()))
+                .and_then(|c| curve::SplineCurve::new(c).map_err(|e| geometry(e.to_string())))?;
+            let kind = match s.kind {
+                super::SplineKind::Bezier => SegmentKind::Bezier,
+                super::SplineKind::BSpline => SegmentKind::BSpline,
+            };
+            let seg = Segment::spline(kind, clamped).map_err(|e| at(("points".into(), Problem::Geometry(e.to_string()))))?;
+            Profile::new(vec![seg], Some(true)).map_err(|e| at(("points".into(), Problem::Geometry(e.to_string()))))?
+        }
+        super::Shape::Analytic(curve::shapes::Shape::Circle(c)) => {
+            let seg = Segment::arc(c.center(), c.r(), 0.0, std::f64::consts::TAU)
+                .map_err(|e| at(("r".into(), Problem::Geometry(e.to_string()))))?;
+            Profile::new(vec![seg], Some(true)).map_err(|e| at(("r".into(), Problem::Geometry(e.to_string()))))?
+        }
+        super::Shape::Analytic(_) => {
+            return Err(at((
+                "kind".into(),
+                Problem::Unsupported(
+                    "a region's boundaries are profiles, closed bezier or bspline curves, circles or full-turn arcs".into(),
+                ),
+            )))
+        }
+        super::Shape::Spline(_) | super::Shape::Region(_) => return Err(not_closed()),
+    };
+    if !profile.is_closed() {
+        return Err(not_closed());
+    }
+    Ok(profile)
 }

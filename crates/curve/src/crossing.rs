@@ -17,49 +17,68 @@ const FIRST_SAMPLES: usize = 8;
 /// Halvings of a parameter interval in the flattening.
 const MAX_DEPTH: usize = 24;
 
-/// A crossing: the two segments and a point where they cross.
+/// A crossing: the two segments (of chains `chains`, the same for a chain crossing itself)
+/// and a point where they meet.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Crossing {
+    pub(crate) chains: (usize, usize),
     pub(crate) first: usize,
     pub(crate) second: usize,
     pub(crate) at: [f64; 2],
 }
 
-/// One edge of the flattened chain: its ends and its position along the chain.
+/// One edge of a flattened chain: its ends and its position along the chain.
 #[derive(Debug, Clone, Copy)]
 struct Edge {
     a: V2,
     b: V2,
+    chain: usize,
     segment: usize,
-    /// Index along the whole chain (neighbours share an end).
+    /// Index along its chain (neighbours share an end).
     index: usize,
 }
 
-/// The first crossing of the chain (`closed`: its last segment joins its first), if any.
+/// A chain of segments to test: its segments and whether its last joins its first.
+pub(crate) type Chain<'a> = (&'a [Segment], bool);
+
+/// The first crossing of a chain with itself (`closed`: its last segment joins its first).
 pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> Option<Crossing> {
+    first_crossing_among(&[(segments, closed)], size)
+}
+
+/// The first crossing among chains, of one with itself or of two with each other (first by
+/// chain, then by segment).
+pub(crate) fn first_crossing_among(chains: &[Chain<'_>], size: f64) -> Option<Crossing> {
     let delta = FLATNESS * size;
     let mut edges = Vec::new();
-    for (i, s) in segments.iter().enumerate() {
-        let mut points = flatten(s, delta);
-        // (A repeated point would make its neighbours' edges touch without being neighbours.)
-        points.dedup();
-        for (a, b) in points.windows(2).map(|w| (w[0], w[1])) {
-            let index = edges.len();
-            edges.push(Edge {
-                a,
-                b,
-                segment: i,
-                index,
-            });
+    let mut lengths = Vec::with_capacity(chains.len());
+    for (c, &(segments, _)) in chains.iter().enumerate() {
+        let start = edges.len();
+        for (i, s) in segments.iter().enumerate() {
+            let mut points = flatten(s, delta);
+            // (A repeated point would make its neighbours' edges touch without being
+            // neighbours.)
+            points.dedup();
+            for (a, b) in points.windows(2).map(|w| (w[0], w[1])) {
+                let index = edges.len() - start;
+                edges.push(Edge {
+                    a,
+                    b,
+                    chain: c,
+                    segment: i,
+                    index,
+                });
+            }
         }
+        lengths.push(edges.len() - start);
     }
-    let n = edges.len();
-    let neighbours = |i: usize, j: usize| {
-        let d = i.abs_diff(j);
-        d <= 1 || (closed && d == n - 1)
+    let neighbours = |e: &Edge, f: &Edge| {
+        let (n, closed) = (lengths[e.chain], chains[e.chain].1);
+        let d = e.index.abs_diff(f.index);
+        e.chain == f.chain && (d <= 1 || (closed && d == n - 1))
     };
     // Sweep along x over the edges' boxes.
-    let mut order: Vec<usize> = (0..n).collect();
+    let mut order: Vec<usize> = (0..edges.len()).collect();
     let lo_x = |e: &Edge| e.a.x.min(e.b.x);
     let hi_x = |e: &Edge| e.a.x.max(e.b.x);
     order.sort_by(|&i, &j| lo_x(&edges[i]).total_cmp(&lo_x(&edges[j])));
@@ -70,18 +89,24 @@ pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> O
         active.retain(|&j| hi_x(&edges[j]) >= lo_x(&e));
         for &j in &active {
             let f = edges[j];
-            if neighbours(e.index, f.index) {
+            if neighbours(&e, &f) {
                 continue;
             }
             if let Some(at) = meet(e.a, e.b, f.a, f.b) {
-                let (first, second) = (e.segment.min(f.segment), e.segment.max(f.segment));
+                let (x, y) = if (e.chain, e.segment) <= (f.chain, f.segment) {
+                    (e, f)
+                } else {
+                    (f, e)
+                };
                 let c = Crossing {
-                    first,
-                    second,
+                    chains: (x.chain, y.chain),
+                    first: x.segment,
+                    second: y.segment,
                     at: at.arr(),
                 };
-                // (The first along the chain, whatever the sweep's order.)
-                if found.is_none_or(|x| (first, second) < (x.first, x.second)) {
+                let key = |c: &Crossing| (c.chains, c.first, c.second);
+                // (The first along the chains, whatever the sweep's order.)
+                if found.is_none_or(|f| key(&c) < key(&f)) {
                     found = Some(c);
                 }
             }
@@ -89,6 +114,34 @@ pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> O
         active.push(i);
     }
     found
+}
+
+/// The closed polygon of a closed chain, flattened within [`FLATNESS`] of `size`.
+pub(crate) fn polygon(segments: &[Segment], size: f64) -> Vec<V2> {
+    let mut out: Vec<V2> = Vec::new();
+    for s in segments {
+        let pts = flatten(s, FLATNESS * size);
+        out.extend(pts.into_iter().skip(usize::from(!out.is_empty())));
+    }
+    out
+}
+
+/// The winding number of `polygon` (closed, last point joined to the first) about `p`.
+pub(crate) fn winding(polygon: &[V2], p: V2) -> i32 {
+    let n = polygon.len();
+    let mut w = 0;
+    for k in 0..n {
+        let (a, b) = (polygon[k], polygon[(k + 1) % n]);
+        let side = (b - a).cross(p - a);
+        if a.y <= p.y {
+            if b.y > p.y && side > 0.0 {
+                w += 1;
+            }
+        } else if b.y <= p.y && side < 0.0 {
+            w -= 1;
+        }
+    }
+    w
 }
 
 /// The points of a polyline within `delta` of the segment (its chords' midpoints checked

@@ -61,6 +61,36 @@ pub enum Error {
         /// A point where they meet.
         at: [f64; 2],
     },
+    /// A boundary of a region that is not closed (0: the outer one, `1 + i`: hole `i`).
+    #[error("boundary {boundary} of the region is not closed")]
+    OpenBoundary {
+        /// The boundary.
+        boundary: usize,
+    },
+    /// Two boundaries of a region cross or touch (0: the outer one, `1 + i`: hole `i`).
+    #[error("boundaries {first} and {second} of the region meet at ({x}, {y})", x = at[0], y = at[1])]
+    BoundariesCross {
+        /// The first boundary.
+        first: usize,
+        /// The second.
+        second: usize,
+        /// A point where they meet.
+        at: [f64; 2],
+    },
+    /// A hole not inside the outer boundary.
+    #[error("hole {hole} is not inside the outer boundary")]
+    HoleOutside {
+        /// The hole.
+        hole: usize,
+    },
+    /// A hole inside another hole.
+    #[error("hole {hole} lies inside hole {other}")]
+    HoleInHole {
+        /// The hole.
+        hole: usize,
+        /// The hole around it.
+        other: usize,
+    },
     /// A closed profile that encloses no area.
     #[error("the closed profile encloses no area (signed area {area:e})")]
     FlatProfile {

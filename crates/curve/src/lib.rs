@@ -7,7 +7,8 @@
 //!   files, each defined once, with their exact rational forms on the rational circle
 //!   ([`circle`]) and their view in its parameter ([`OnCircle`]).
 //! - [`Profile`]: chains of [`Segment`]s (lines, arcs, Bézier and open B-spline curves) joined
-//!   at corners or smoothly, as part outlines are drawn.
+//!   at corners or smoothly, as part outlines are drawn; [`Region`]: an outer profile and
+//!   holes (a pocket with islands).
 //! - [`Frame`]: exact changes of coordinates into a frame of about unit size near the curve.
 //! - [`exact`]: exact predicates on the data (collinear points, parallel stretches).
 //! - [`V2`], [`Jet`]: the small geometric types the algorithms share.
@@ -29,6 +30,7 @@ mod on_circle;
 mod param;
 mod plane;
 mod profile;
+mod region;
 mod segment;
 pub mod shapes;
 mod spline;
@@ -40,5 +42,6 @@ pub use on_circle::OnCircle;
 pub use param::ParamCurve;
 pub use plane::{Exact, Local, PlaneCurve};
 pub use profile::{Joint, JointKind, Profile, CORNER_TURN, JOIN_GAP};
+pub use region::Region;
 pub use segment::{Segment, SegmentKind};
 pub use spline::{rational_derivs, SplineCurve, StraightSpan};

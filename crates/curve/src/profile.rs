@@ -55,6 +55,8 @@ pub struct Profile {
     joints: Vec<Joint>,
     /// +1 counterclockwise, −1 clockwise (a closed profile), 0 open.
     orientation: f64,
+    /// The diagonal of the box of the control points.
+    size: f64,
 }
 
 impl Profile {
@@ -155,7 +157,14 @@ impl Profile {
             closed,
             joints,
             orientation,
+            size,
         })
+    }
+
+    /// The diagonal of the box of the segments' control points: the scale of the profile's
+    /// tolerances.
+    pub fn size(&self) -> f64 {
+        self.size
     }
 
     /// The segments in order.

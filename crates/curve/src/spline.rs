@@ -66,11 +66,8 @@ impl SplineCurve {
                 got: curve.dim(),
             }));
         }
-        let (a, b) = curve.domain();
-        let (pa, pb) = (curve.point(a), curve.point(b));
         let size = control_size(&curve);
-        let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
-        let closed = gap <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
+        let closed = end_gap(&curve) <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
         Ok(Self::from_rational(curve, closed, None, None))
     }
 
@@ -322,6 +319,42 @@ impl SplineCurve {
 }
 
 /// Diagonal of the control points' bounding box.
+/// The distance between the curve's end points, beyond the rounding of their evaluation: the
+/// curve is evaluated relative to its first control point, so that a curve far from the
+/// origin is judged on its own scale (evaluated in place, the ends of a quadratic 8 units apart
+/// at 7e16 from the origin came out equal, and an open curve was taken for closed, its one
+/// inflection certified). A rational curve's points carry the rounding of `X / w`: the gap is
+/// reduced by it.
+fn end_gap(curve: &Rational) -> f64 {
+    let h = curve.homogeneous();
+    let pts = curve.control_points();
+    let first = [pts[0][0], pts[0][1]];
+    let far = pts
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    let coefs: Vec<f64> = pts
+        .iter()
+        .flat_map(|p| [p[0] - first[0], p[1] - first[1]])
+        .collect();
+    let weights = curve.weights();
+    let moved = BSpline::new(h.degree(), h.knots().to_vec(), 2, coefs)
+        .and_then(|d| Rational::new(d, curve.is_rational().then_some(&weights[..])));
+    let Ok(moved) = moved else {
+        // (Not expected: the same knots and weights made the curve.)
+        let (a, b) = curve.domain();
+        let (pa, pb) = (curve.point(a), curve.point(b));
+        return (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
+    };
+    let (a, b) = moved.domain();
+    let (pa, pb) = (moved.point(a), moved.point(b));
+    let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
+    let rounding = match curve.is_rational() {
+        true => 8.0 * UNIT_ROUNDOFF * far,
+        false => 0.0,
+    };
+    (gap - rounding).max(0.0)
+}
+
 pub(crate) fn control_size(c: &Rational) -> f64 {
     let pts = c.control_points();
     let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));

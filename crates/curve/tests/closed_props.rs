@@ -1,0 +1,52 @@
+//! Whether a clamped curve is closed is judged on its own scale, however far from the origin.
+
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
+
+use curve::{ParamCurve, SplineCurve};
+use proptest::prelude::*;
+
+/// A quadratic B-spline on uniform unclamped knots whose ends are 8 units apart (3 % of its
+/// size), 2^56 units from the origin: open. (Evaluated in place, the ends rounded to the same
+/// point, and the curve was taken for closed; found by fuzzing.)
+#[test]
+fn an_open_curve_far_from_the_origin_is_open() {
+    let far = 2f64.powi(56);
+    let pts: Vec<[f64; 2]> = [
+        (0.0, 0.0),
+        (-32.0, -16.0),
+        (0.0, -112.0),
+        (104.0, 104.0),
+        (0.0, 0.0),
+        (-32.0, 0.0),
+    ]
+    .iter()
+    .map(|&(x, y)| [x - far, y - far])
+    .collect();
+    let knots: Vec<f64> = (1..=9).map(|i| i as f64 / 16.0).collect();
+    let c = SplineCurve::clamped(2, &pts, None, Some(knots)).unwrap();
+    assert!(!c.is_closed());
+}
+
+proptest! {
+    /// A clamped curve with equal first and last points is closed, and one whose last point is
+    /// moved by a thousandth of its size is open, at any offset a double can carry the shape at.
+    #[test]
+    fn closedness_survives_translation(
+        pts in proptest::collection::vec((-1.0f64..1.0, -1.0f64..1.0), 4..9),
+        w in proptest::collection::vec(0.5f64..2.0, 9),
+        rational in any::<bool>(),
+        exp in 0i32..40,
+        sx in -1.0f64..1.0, sy in -1.0f64..1.0,
+    ) {
+        let off = [sx * 2f64.powi(exp), sy * 2f64.powi(exp)];
+        let mut p: Vec<[f64; 2]> = pts.iter().map(|&(x, y)| [x + off[0], y + off[1]]).collect();
+        let n = p.len();
+        p[n - 1] = p[0];
+        let weights = rational.then(|| w[..n].to_vec());
+        let closed = SplineCurve::clamped(3, &p, weights.as_deref(), None).unwrap();
+        prop_assert!(closed.is_closed());
+        p[n - 1] = [p[0][0] + 2e-3, p[0][1]];
+        let open = SplineCurve::clamped(3, &p, weights.as_deref(), None).unwrap();
+        prop_assert!(!open.is_closed());
+    }
+}

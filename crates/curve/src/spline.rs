@@ -67,7 +67,7 @@ impl SplineCurve {
             }));
         }
         let size = control_size(&curve);
-        let closed = end_gap(&curve) <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
+        let closed = end_gap_of(&curve) <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
         Ok(Self::from_rational(curve, closed, None, None))
     }
 
@@ -131,6 +131,10 @@ impl SplineCurve {
             None => BSpline::clamped_uniform(degree, 2, flat)?,
         };
         let mut c = Self::new(Rational::new(spline.clone(), weights)?)?;
+        // Judged again on the points as given, which carry no rounding of `X / w`.
+        if let Some(gap) = end_gap(degree, spline.knots(), points, weights, 0.0) {
+            c.closed = gap <= CLOSED_GAP * control_size(&c.curve).max(f64::MIN_POSITIVE);
+        }
         c.data = Some(Data {
             points: spline,
             weights: weights.map(<[f64]>::to_vec),
@@ -319,16 +323,20 @@ impl SplineCurve {
 }
 
 /// Diagonal of the control points' bounding box.
-/// The distance between the curve's end points, beyond the rounding of their evaluation: the
-/// curve is evaluated relative to its first control point, so that a curve far from the
-/// origin is judged on its own scale (evaluated in place, the ends of a quadratic 8 units apart
-/// at 7e16 from the origin came out equal, and an open curve was taken for closed, its one
-/// inflection certified). A rational curve's points carry the rounding of `X / w`: the gap is
-/// reduced by it.
-fn end_gap(curve: &Rational) -> f64 {
-    let h = curve.homogeneous();
-    let pts = curve.control_points();
-    let first = [pts[0][0], pts[0][1]];
+/// The distance between the end points of the curve with `degree`, `knots`, Euclidean control
+/// points `pts` and `weights` (none: polynomial), beyond the rounding of the points
+/// (`rounding`, in units of their largest coordinate): the curve is evaluated relative to its
+/// first control point, so that a curve far from the origin is judged on its own scale
+/// (evaluated in place, the ends of a quadratic 8 units apart at 7e16 from the origin came out
+/// equal, and an open curve was taken for closed, its one inflection certified).
+fn end_gap(
+    degree: usize,
+    knots: &[f64],
+    pts: &[[f64; 2]],
+    weights: Option<&[f64]>,
+    rounding: f64,
+) -> Option<f64> {
+    let first = pts[0];
     let far = pts
         .iter()
         .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
@@ -336,23 +344,40 @@ fn end_gap(curve: &Rational) -> f64 {
         .iter()
         .flat_map(|p| [p[0] - first[0], p[1] - first[1]])
         .collect();
-    let weights = curve.weights();
-    let moved = BSpline::new(h.degree(), h.knots().to_vec(), 2, coefs)
-        .and_then(|d| Rational::new(d, curve.is_rational().then_some(&weights[..])));
-    let Ok(moved) = moved else {
-        // (Not expected: the same knots and weights made the curve.)
-        let (a, b) = curve.domain();
-        let (pa, pb) = (curve.point(a), curve.point(b));
-        return (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
-    };
+    let moved = BSpline::new(degree, knots.to_vec(), 2, coefs)
+        .and_then(|d| Rational::new(d, weights))
+        .ok()?;
     let (a, b) = moved.domain();
     let (pa, pb) = (moved.point(a), moved.point(b));
     let gap = (pa[0] - pb[0]).hypot(pa[1] - pb[1]);
-    let rounding = match curve.is_rational() {
-        true => 8.0 * UNIT_ROUNDOFF * far,
-        false => 0.0,
-    };
-    (gap - rounding).max(0.0)
+    Some((gap - rounding * far).max(0.0))
+}
+
+/// [`end_gap`] of a rational curve known by its homogeneous form: its Euclidean points carry
+/// the rounding of `X / w` (a few units of the largest coordinate) unless it is polynomial.
+fn end_gap_of(curve: &Rational) -> f64 {
+    let h = curve.homogeneous();
+    let pts: Vec<[f64; 2]> = curve
+        .control_points()
+        .iter()
+        .map(|p| [p[0], p[1]])
+        .collect();
+    let weights = curve.weights();
+    let rational = curve.is_rational();
+    let rounding = if rational { 8.0 * UNIT_ROUNDOFF } else { 0.0 };
+    end_gap(
+        h.degree(),
+        h.knots(),
+        &pts,
+        rational.then_some(&weights[..]),
+        rounding,
+    )
+    .unwrap_or_else(|| {
+        // (Not expected: the same knots and weights made the curve.)
+        let (a, b) = curve.domain();
+        let (pa, pb) = (curve.point(a), curve.point(b));
+        (pa[0] - pb[0]).hypot(pa[1] - pb[1])
+    })
 }
 
 pub(crate) fn control_size(c: &Rational) -> f64 {

@@ -27,6 +27,30 @@ fn an_open_curve_far_from_the_origin_is_open() {
     assert!(!c.is_closed());
 }
 
+/// The same with a weight of 2^-14.25 at 8e16 from the origin: the ends are 24 units apart,
+/// within the rounding of `X / w` there, but the points as given are exact. (Judged on the
+/// homogeneous form, the curve was taken for closed; found by fuzzing.)
+#[test]
+fn an_open_rational_curve_far_from_the_origin_is_open() {
+    let far = 2f64.powi(50);
+    let pts: Vec<[f64; 2]> = [
+        (0.0, 103.0),
+        (-1.0, -1.0),
+        (-27.0, -1.0),
+        (3.0, -22.0),
+        (0.0, 71.0),
+    ]
+    .iter()
+    .map(|&(x, y)| [x + 71.0 * far, y - 33.0 * far])
+    .collect();
+    let knots = vec![
+        7.1875, 23.125, 39.0625, 55.0, 70.9375, 86.875, 102.8125, 118.75,
+    ];
+    let w = [2f64.powf(-14.25), 1.0, 1.0, 1.0, 1.0];
+    let c = SplineCurve::clamped(2, &pts, Some(&w), Some(knots)).unwrap();
+    assert!(!c.is_closed());
+}
+
 proptest! {
     /// A clamped curve with equal first and last points is closed, and one whose last point is
     /// moved by a thousandth of its size is open, at any offset a double can carry the shape at.

@@ -1,7 +1,9 @@
 //! Text and JSON reports, and drawing a curve into a figure.
 
 use super::timing::Stats;
-use antipodal::{Antipodal, CornerKind, InflectionKind, Inflections, ProfileInflections, Tangents};
+use antipodal::{
+    Antipodal, CornerKind, Inflection, InflectionKind, Inflections, ProfileInflections, Tangents,
+};
 use curvekit::curve::ParamCurve;
 use curvekit::io::{Curve, Shape};
 use curvekit::svg::{side_by_side, Figure};
@@ -100,31 +102,40 @@ pub(crate) fn json_doc(
 
 /// The readable inflection report.
 pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&Stats>) -> String {
+    let mut s = inflection_lines(curve, &r.inflections, r.certified);
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+    s
+}
+
+/// The curve, then a line per inflection (with its segment on a profile).
+fn inflection_lines(curve: &Curve, inflections: &[Inflection], certified: bool) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "curve:       {} ({})", curve.file, describe(curve));
     let _ = writeln!(
         s,
         "inflections: {} ({})",
-        r.inflections.len(),
-        certified_word(r.certified)
+        inflections.len(),
+        certified_word(certified)
     );
-    for (i, f) in r.inflections.iter().enumerate() {
+    for (i, f) in inflections.iter().enumerate() {
         let note = match (f.certified, f.kind) {
             (true, _) => "",
             (false, InflectionKind::Cluster) => "  cluster, not certified",
             (false, _) => "  not certified",
         };
+        let seg = f
+            .segment
+            .map_or(String::new(), |k| format!("  segment {k}"));
         let _ = writeln!(
             s,
-            "  {:>3}  u = {:<22}  p = ({}, {}){note}",
+            "  {:>3}  u = {:<22}  p = ({}, {}){seg}{note}",
             i + 1,
             n(f.u),
             n(f.p[0]),
             n(f.p[1])
         );
-    }
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
     }
     s
 }
@@ -135,27 +146,7 @@ pub(crate) fn profile_inflections_text(
     r: &ProfileInflections,
     stats: Option<&Stats>,
 ) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "curve:       {} ({})", curve.file, describe(curve));
-    let _ = writeln!(
-        s,
-        "inflections: {} ({})",
-        r.inflections.len(),
-        certified_word(r.certified)
-    );
-    for (i, f) in r.inflections.iter().enumerate() {
-        let seg = f
-            .segment
-            .map_or(String::new(), |k| format!("  segment {k}"));
-        let _ = writeln!(
-            s,
-            "  {:>3}  u = {:<22}  p = ({}, {}){seg}",
-            i + 1,
-            n(f.u),
-            n(f.p[0]),
-            n(f.p[1])
-        );
-    }
+    let mut s = inflection_lines(curve, &r.inflections, r.certified);
     let _ = writeln!(s, "corners:     {}", r.corners.len());
     for (i, c) in r.corners.iter().enumerate() {
         let kind = match c.kind {

@@ -310,18 +310,7 @@ pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError>
         other => return Err(("kind".into(), Problem::UnknownKind(other.to_string()))),
     };
     // Reject unknown fields first: a typo'd optional field must not pass silently.
-    if let Some(key) = map
-        .keys()
-        .find(|k| k.as_str() != "kind" && !allowed.contains(&k.as_str()))
-    {
-        return Err((
-            key.clone(),
-            Problem::UnknownField {
-                kind: kind.to_string(),
-                allowed: allowed.join(", "),
-            },
-        ));
-    }
+    reject_unknown(map, kind, allowed)?;
     let f = Fields(map);
     let analytic = match kind {
         "bezier" | "bspline" => {
@@ -372,6 +361,27 @@ pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError>
         }
     };
     Ok(Shape::Analytic(analytic))
+}
+
+/// The first field of `map` besides `kind` that `kind` does not have, as an error naming it.
+pub(super) fn reject_unknown(
+    map: &Map<String, Value>,
+    kind: &str,
+    allowed: &[&str],
+) -> Result<(), FieldError> {
+    match map
+        .keys()
+        .find(|k| k.as_str() != "kind" && !allowed.contains(&k.as_str()))
+    {
+        Some(key) => Err((
+            key.clone(),
+            Problem::UnknownField {
+                kind: kind.to_string(),
+                allowed: allowed.join(", "),
+            },
+        )),
+        None => Ok(()),
+    }
 }
 
 /// A shape the reader validated already: a refusal by the curve model (not expected) names its

@@ -94,18 +94,7 @@ fn parse_segment(f: &Fields<'_>) -> Result<Segment, FieldError> {
             ))
         }
     };
-    if let Some(key) =
-        f.0.keys()
-            .find(|k| k.as_str() != "kind" && !allowed.contains(&k.as_str()))
-    {
-        return Err((
-            key.clone(),
-            Problem::UnknownField {
-                kind: kind.to_string(),
-                allowed: allowed.join(", "),
-            },
-        ));
-    }
+    super::reject_unknown(f.0, kind, allowed)?;
     match kind {
         "line" | "arc" => parse_segment_kind(kind, f),
         _ => {

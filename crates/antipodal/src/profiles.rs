@@ -70,7 +70,7 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
             });
         }
     }
-    let size = profile_size(profile);
+    let size = profile.size();
     let n = profile.segments().len();
     for joint in profile.joints() {
         let i = joint.u as usize;
@@ -119,21 +119,4 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
     }
     out.inflections.sort_by(|a, b| a.u.total_cmp(&b.u));
     Ok(out)
-}
-
-/// The diagonal of the box of the profile's control points.
-fn profile_size(profile: &Profile) -> f64 {
-    let pts: Vec<[f64; 2]> = profile
-        .segments()
-        .iter()
-        .flat_map(|s| s.curve().control_points())
-        .collect();
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in &pts {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }

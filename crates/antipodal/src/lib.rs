@@ -29,7 +29,8 @@
 //! `prims` (Appendix A: the primitives); `tangent` (§2.5: common tangents); `pairs` (a pair
 //! of pieces and its sections); `bisect` (§4.1); `search` (Table 1) and `march` (§4.2);
 //! `finish`, `monotone`, `radius_rates` and `families` (beyond the paper: proofs that spare
-//! marches, that θ is monotone or of one sign on a stretch, and continua of pairs). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
+//! marches, that θ is monotone or of one sign on a stretch, and continua of pairs); `profiles`
+//! (beyond the papers: profiles of segments joined at corners, segment by segment). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
 //! `taylor` and `interval`; `doubt` names every reason a result is not certified.
 

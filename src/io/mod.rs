@@ -386,7 +386,7 @@ pub(super) fn reject_unknown(
 
 /// A shape the reader validated already: a refusal by the curve model (not expected) names its
 /// field, or `default` where it names none.
-fn shape<T>(default: &str, made: curve::Result<T>) -> Result<T, FieldError> {
+pub(super) fn shape<T>(default: &str, made: curve::Result<T>) -> Result<T, FieldError> {
     made.map_err(|e| match e {
         curve::Error::InvalidShape { field, value, why } => (
             field.to_string(),

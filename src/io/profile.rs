@@ -21,16 +21,7 @@ pub(super) fn parse_segment_kind(kind: &str, f: &Fields<'_>) -> Result<Segment, 
         let (start, end) = (f.number("start")?, f.number("end")?);
         Segment::arc(center, r, start, end)
     };
-    made.map_err(|e| match e {
-        curve::Error::InvalidShape { field, value, why } => (
-            field.to_string(),
-            Problem::OutOfRange {
-                rule: why.to_string(),
-                value,
-            },
-        ),
-        e => ("kind".to_string(), Problem::Geometry(e.to_string())),
-    })
+    super::shape("kind", made)
 }
 
 /// A `profile` object (unknown fields were already rejected).

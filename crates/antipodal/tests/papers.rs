@@ -200,16 +200,9 @@ fn float_residual_bound(c: &dyn PlaneCurve, s: f64, t: f64) -> f64 {
 /// to the tolerance leaving the sign of θ to noise.)
 #[test]
 fn slender_elliptic_lemniscates_at_loose_tolerances_find_no_false_pairs() {
-    use std::f64::consts::{FRAC_PI_2, PI, TAU};
     for a in [100.0, 206.0, 300.0] {
         let c = EllipticLemniscate::new(a, 1.0).unwrap();
-        let top = lobe_top(&c);
-        let expected = [
-            (0.0, PI),
-            (top, TAU - top),
-            (FRAC_PI_2, 3.0 * FRAC_PI_2),
-            (PI - top, PI + top),
-        ];
+        let expected = lemniscate_pairs(&c);
         for tol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10] {
             let r = antipodal(&c, &Options::default().tolerance(tol)).unwrap();
             assert!(r.complete, "a = {a}, tol = {tol}");
@@ -251,6 +244,19 @@ fn slender_elliptic_lemniscates_at_loose_tolerances_find_no_false_pairs() {
     }
 }
 
+/// The four antipodal pairs of an elliptic lemniscate: the two axes and the lobes' tops paired
+/// across the long axis.
+fn lemniscate_pairs(c: &dyn PlaneCurve) -> [(f64, f64); 4] {
+    use std::f64::consts::{FRAC_PI_2, PI, TAU};
+    let top = lobe_top(c);
+    [
+        (0.0, PI),
+        (top, TAU - top),
+        (FRAC_PI_2, 3.0 * FRAC_PI_2),
+        (PI - top, PI + top),
+    ]
+}
+
 /// Top of the right lobe (where the tangent is horizontal), by bisection on y′ — a well
 /// conditioned equation, unlike the antipodal system there.
 fn lobe_top(c: &dyn PlaneCurve) -> f64 {
@@ -278,7 +284,6 @@ fn lobe_top(c: &dyn PlaneCurve) -> f64 {
 /// top, a well conditioned equation).
 #[test]
 fn slender_elliptic_lemniscates_are_complete() {
-    use std::f64::consts::{FRAC_PI_2, PI, TAU};
     for (a, b, tol, param_tol, oracle) in [
         (2.0, 1.0, 1e-12, 1e-9, true),
         (6.0, 3.0, 1e-12, 1e-9, true),
@@ -300,13 +305,7 @@ fn slender_elliptic_lemniscates_are_complete() {
                 "a = {a}: {p:?} {res:e}"
             );
         }
-        let top = lobe_top(&c);
-        let expected = [
-            (0.0, PI),
-            (top, TAU - top),
-            (FRAC_PI_2, 3.0 * FRAC_PI_2),
-            (PI - top, PI + top),
-        ];
+        let expected = lemniscate_pairs(&c);
         for (s, t) in expected {
             assert!(
                 r.pairs

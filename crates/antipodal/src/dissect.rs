@@ -324,10 +324,25 @@ impl View<'_> {
                 }
             }
         } else {
+            // Cut at inflections and at both ends of every straight stretch, as above.
             let mut cuts = vec![self.a];
             cuts.extend(zs.iter().copied().filter(|&z| z > self.a && z < self.b));
+            for &(l, h) in &zeros.flats {
+                let (l, h) = (l.max(self.a), h.min(self.b));
+                if h > l {
+                    cuts.extend([l, h]);
+                    flat_pieces.push((l, h));
+                }
+            }
             cuts.push(self.b);
-            arcs.extend(cuts.windows(2).map(|w| (w[0], w[1])));
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup_by(|x, y| (*x - *y).abs() <= 4.0 * self.tol);
+            for w in cuts.windows(2) {
+                let mid = 0.5 * (w[0] + w[1]);
+                if !flat_pieces.iter().any(|&(l, h)| mid > l && mid < h) {
+                    arcs.push((w[0], w[1]));
+                }
+            }
         }
         let mut out = Vec::with_capacity(2 * arcs.len() + flat_pieces.len());
         // (Consecutive arcs share an end: its angle is taken once.)

@@ -179,7 +179,7 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
         for j in i + 1..n {
             let (p, q) = (&prep.pieces[i], &prep.pieces[j]);
             if p.flat || q.flat {
-                flat_pairs(v, p, q, &mut raw, &mut families);
+                flat_pairs(v, p, v, q, &mut raw, &mut families);
                 continue;
             }
             let Some(pair) = opposite_pair(v, p, v, q) else {
@@ -216,7 +216,7 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
 
 /// §5.3: the sections of a pair where `N(s) · r(s) > 0` (condition (v)), cut at the common
 /// tangents.
-fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
+pub(crate) fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
     let tangents = tangent::common_tangents(p);
     let mut cuts: SmallVec<[(f64, f64); 4]> = SmallVec::new();
     cuts.push((p.sa, p.ta));
@@ -257,7 +257,7 @@ fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
 /// Condition (iv): an end that is itself antipodal is reported and cut off: on curves with
 /// symbolic forms as far as θ is proven monotone from it (as beside any found pair), else
 /// where θ first shows a sign beyond its noise.
-fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pair<'a>> {
+pub(crate) fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pair<'a>> {
     let mut q = *p;
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     for at_a in [true, false] {
@@ -301,8 +301,9 @@ fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pa
     Some(q)
 }
 
-fn classify(v: &View, s: f64, t: f64) -> PairType {
-    let (js, jt) = (v.jet_to(s, 2), v.jet_to(t, 2));
+/// The type of the pair of `vs` at `s` and `vt` at `t` (Jia 2004, §3.3).
+pub(crate) fn classify(vs: &View, vt: &View, s: f64, t: f64) -> PairType {
+    let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
     let (ks, kt) = (js.curvature(), jt.curvature());
     let r = (jt.p - js.p).norm();
     let radii = 1.0 / ks + 1.0 / kt;
@@ -369,7 +370,7 @@ fn finish_pairs(
     let mut out: Vec<AntipodalPair> = keep
         .into_iter()
         .map(|(s, t)| {
-            let kind = classify(v, s, t);
+            let kind = classify(v, v, s, t);
             let (cs, ct) = (v.to_curve(s), v.to_curve(t));
             let (cs, ct, s, t) = if cs <= ct {
                 (cs, ct, s, t)

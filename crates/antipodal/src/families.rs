@@ -11,82 +11,91 @@ use std::cmp::Ordering;
 
 /// Pairs involving a straight stretch: two facing parallel stretches make a family; a curved
 /// piece pairs with a stretch where its normal is opposite to the stretch's and the normal line
-/// meets the stretch.
+/// meets the stretch. The pieces may lie on two views of one curve's stretches (the segments of
+/// a profile); pairs and families come out with the straight piece's side first (`p`'s where
+/// both are straight).
 pub(crate) fn flat_pairs(
-    v: &View,
+    vp: &View,
     p: &Piece,
+    vq: &View,
     q: &Piece,
     raw: &mut Vec<(f64, f64)>,
     families: &mut Vec<(f64, f64, f64, f64)>,
 ) {
-    let (f, g) = if p.flat { (p, q) } else { (q, p) };
-    let nf = v.normal(0.5 * (f.lo + f.hi));
-    let pf = v.point(f.lo);
+    let ((vf, f), (vg, g)) = if !p.flat {
+        ((vq, q), (vp, p))
+    } else {
+        ((vp, p), (vq, q))
+    };
+    let nf = vf.normal(0.5 * (f.lo + f.hi));
+    let pf = vf.point(f.lo);
+    let scale = vf.scale.max(vg.scale);
     if g.flat {
-        let ng = v.normal(0.5 * (g.lo + g.hi));
-        if (nf + ng).norm() > OPPOSITE_NORMALS || nf.dot(v.point(g.lo) - pf) <= 0.0 {
+        let ng = vg.normal(0.5 * (g.lo + g.hi));
+        if (nf + ng).norm() > OPPOSITE_NORMALS || nf.dot(vg.point(g.lo) - pf) <= 0.0 {
             return;
         }
         // A continuum of pairs only between exactly parallel stretches: proven on the data
         // where both are proven straight, a judgement elsewhere.
-        let parallel = match (v.straight_span(f.lo, f.hi), v.straight_span(g.lo, g.hi)) {
+        let parallel = match (vf.straight_span(f.lo, f.hi), vg.straight_span(g.lo, g.hi)) {
             (Some(a), Some(b)) => cross_sign(a.from, a.to, b.from, b.to) == Some(Ordering::Equal),
             _ => false,
         };
         if !parallel {
-            v.uncertify(Doubt::Continuum);
+            vf.uncertify(Doubt::Continuum);
         }
         // Coordinates along the stretch direction.
         let dir = nf.perp();
-        let x = |u: f64| (v.point(u) - pf).dot(dir);
-        let (f0, f1) = (x(f.lo), x(f.hi));
-        let (g0, g1) = (x(g.lo), x(g.hi));
+        let x = |v: &View, u: f64| (v.point(u) - pf).dot(dir);
+        let (f0, f1) = (x(vf, f.lo), x(vf, f.hi));
+        let (g0, g1) = (x(vg, g.lo), x(vg, g.hi));
         let lo = f0.min(f1).max(g0.min(g1));
         let hi = f0.max(f1).min(g0.max(g1));
-        if hi - lo <= OVERLAP_ROUNDING * v.scale {
+        if hi - lo <= OVERLAP_ROUNDING * scale {
             return;
         }
         // Parameter on a stretch at coordinate c: where the line across it meets it.
-        let at = |piece: &Piece, c: f64| {
+        let at = |v: &View, piece: &Piece, c: f64| {
             v.point_on_ray(
                 piece.lo,
                 piece.hi,
-                pf + dir * c - nf * v.scale,
+                pf + dir * c - nf * scale,
                 nf,
                 crate::prims::Prefer::Low,
                 f64::NAN,
             )
-            .unwrap_or(if (x(piece.lo) - c).abs() < (x(piece.hi) - c).abs() {
+            .unwrap_or(if (x(v, piece.lo) - c).abs() < (x(v, piece.hi) - c).abs() {
                 piece.lo
             } else {
                 piece.hi
             })
         };
-        let (s0, s1) = (at(f, lo), at(f, hi));
-        let (t0, t1) = (at(g, lo), at(g, hi));
-        families.push((
+        let (s0, s1) = (at(vf, f, lo), at(vf, f, hi));
+        let (t0, t1) = (at(vg, g, lo), at(vg, g, hi));
+        let family = (
             s0.min(s1),
             s0.max(s1),
             if s0 <= s1 { t0 } else { t1 },
             if s0 <= s1 { t1 } else { t0 },
-        ));
+        );
+        families.push(family);
         return;
     }
-    let Some(t) = v.point_with_normal(g.lo, g.hi, -nf) else {
+    let Some(t) = vg.point_with_normal(g.lo, g.hi, -nf) else {
         return;
     };
-    let pt = v.point(t);
-    let Some(s) = v.point_on_ray(
+    let pt = vg.point(t);
+    let Some(s) = vf.point_on_ray(
         f.lo,
         f.hi,
         pt,
-        v.normal(t),
+        vg.normal(t),
         crate::prims::Prefer::Low,
         f64::NAN,
     ) else {
         return;
     };
-    if nf.dot(pt - v.point(s)) > 0.0 {
+    if nf.dot(pt - vf.point(s)) > 0.0 {
         raw.push((s, t));
     }
 }

@@ -38,6 +38,7 @@ mod arcs;
 mod bisect;
 mod bounds;
 mod cells;
+mod corner_pairs;
 mod dissect;
 mod doubt;
 mod driver;
@@ -52,6 +53,7 @@ mod monotone;
 mod pairs;
 mod prepare;
 mod prims;
+mod profile_pairs;
 mod profiles;
 mod radius_rates;
 mod search;
@@ -66,8 +68,10 @@ pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, Sp
 pub use error::{Error, Result};
 pub use forms::SymbolicForms;
 pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
+pub use profile_pairs::profile_antipodal;
 pub use profiles::profile_inflections;
 pub use types::{
     Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,
-    Options, PairType, ProfileInflections, TangentLine, Tangents, DEFAULT_TOL,
+    Options, PairType, ProfileAntipodal, ProfileFamily, ProfileInflections, ProfilePair,
+    TangentLine, Tangents, DEFAULT_TOL,
 };

@@ -26,6 +26,10 @@ pub(crate) fn solve_in(
     bracketed(f, bracket, ends, Accuracy::param(tol).hint(hint))
 }
 
+/// How close (relative to the size) a point of the curve is to a given point to be that point:
+/// the gap a profile's joint may leave between its segments, and more.
+const SAME_POINT: f64 = 1e-8;
+
 /// Which root to take when several qualify.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub(crate) enum Prefer {
@@ -210,6 +214,15 @@ impl View<'_> {
 
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
     pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
+        // `p` at an end of the segment (two segments of a profile meeting at a corner): the
+        // tangency there is `p` itself, a double root, and no other tangent line of a
+        // monotone segment (turning by less than π, curved) passes through its own end point.
+        if [lo, hi]
+            .iter()
+            .any(|&u| (self.point(u) - p).norm() <= SAME_POINT * self.scale)
+        {
+            return None;
+        }
         let f = |u: f64| {
             let j = self.jet_to(u, 3);
             let r = j.p - p;

@@ -216,6 +216,63 @@ pub struct ProfileInflections {
     pub reason: Option<String>,
 }
 
+/// One antipodal pair of a profile (see [`crate::profile_antipodal`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ProfilePair {
+    /// Profile parameter of the first point (`s ≤ t`).
+    pub s: f64,
+    /// Profile parameter of the second point.
+    pub t: f64,
+    /// The first point.
+    pub p: [f64; 2],
+    /// The second point.
+    pub q: [f64; 2],
+    /// `|q − p|`.
+    pub distance: f64,
+    /// Type A–E where both ends are smooth points of curved segments; `null` with a corner or
+    /// a straight end (the types need the curvature at both ends).
+    #[serde(rename = "type")]
+    pub kind: Option<PairType>,
+    /// Whether the point at `s`, and the one at `t`, is a corner.
+    pub corner: [bool; 2],
+    /// The segments of the two points (at a joint: the segment starting there, for a corner).
+    pub segment: [usize; 2],
+}
+
+/// A continuum of antipodal pairs of a profile, with its end points (a drawing's parameters
+/// depend on how its reader chained it).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ProfileFamily {
+    /// Profile parameters on one side.
+    pub s: [f64; 2],
+    /// The matching parameters on the other (`s[k]` pairs with `t[k]`).
+    pub t: [f64; 2],
+    /// The points at `s[0]` and `s[1]`.
+    pub p: [[f64; 2]; 2],
+    /// The points at `t[0]` and `t[1]`.
+    pub q: [[f64; 2]; 2],
+}
+
+/// Result of [`crate::profile_antipodal`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ProfileAntipodal {
+    /// Isolated antipodal pairs, sorted by `s`.
+    pub pairs: Vec<ProfilePair>,
+    /// Inflections at smooth points and smooth joints, sorted by `u`.
+    pub inflections: Vec<Inflection>,
+    /// The corners, sorted by `u`.
+    pub corners: Vec<Corner>,
+    /// Continua of pairs (facing parallel lines, concentric arcs).
+    pub families: Vec<ProfileFamily>,
+    /// True when every decision followed from certified sign tests.
+    pub certified: bool,
+    /// False when a work limit was hit (the result may then be incomplete).
+    pub complete: bool,
+    /// Why the result is not certified, where one reason stands out.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub reason: Option<String>,
+}
+
 /// A line tangent to the first curve at `s` and to the second at `t`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct TangentLine {

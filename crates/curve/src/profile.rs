@@ -37,6 +37,11 @@ pub enum JointKind {
 /// next may be: the interface contract's tolerance for drawings whose end points were rounded.
 pub const JOIN_GAP: f64 = 1e-9;
 
+/// A joint's gap (relative to the largest coordinate) that is rounding of the coordinates,
+/// whatever the size: end points computed far from the origin (an arc's, from its centre and
+/// angles) round by a few units there.
+const JOIN_ROUNDING: f64 = 16.0 * f64::EPSILON;
+
 /// The jump of the tangent direction (radians) above which a joint is a corner: the interface
 /// contract's, far above the rounding of tangents computed from control points.
 pub const CORNER_TURN: f64 = 1e-9;
@@ -61,7 +66,8 @@ pub struct Profile {
 
 impl Profile {
     /// The profile of `segments`, each starting where the previous one ends (within
-    /// [`JOIN_GAP`] of the size); closed when `closed` says so, or, when it is `None`, when
+    /// [`JOIN_GAP`] of the size, or a few units of rounding of the coordinates far from the
+    /// origin); closed when `closed` says so, or, when it is `None`, when
     /// the last segment ends where the first starts.
     ///
     /// ```
@@ -78,7 +84,9 @@ impl Profile {
             return Err(Error::EmptyProfile);
         }
         let size = size_of(&segments);
-        let room = JOIN_GAP * size;
+        // (Far from the origin a joint's two ends may round apart by more than that: a few
+        // units of rounding of the coordinates are no gap.)
+        let room = (JOIN_GAP * size).max(JOIN_ROUNDING * magnitude_of(&segments));
         // (NaN fails too.)
         let joined = |gap: f64| gap <= room;
         for (i, w) in segments.windows(2).enumerate() {
@@ -229,6 +237,14 @@ fn size_of(segments: &[Segment]) -> f64 {
         hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
     }
     (hi - lo).norm()
+}
+
+/// The largest coordinate of the segments' control points.
+fn magnitude_of(segments: &[Segment]) -> f64 {
+    segments
+        .iter()
+        .flat_map(|s| s.curve().control_points())
+        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()))
 }
 
 /// The signed area of the polygon through samples of the segments (positive

@@ -1,0 +1,225 @@
+//! Antipodal pairs with a corner (beyond the papers; the contract's definition). At a convex
+//! corner the inward normals form a cone, between the inward normals of the two segments
+//! meeting there; reflex corners take no part.
+//!
+//! - Corner and corner: the segment between them lies inside both cones (pointing inward).
+//! - Corner `C` and a smooth point `P(s)`: `P(s)` is a foot point of `C`, a root of
+//!   `(P(s) − C) · P′(s)`, isolated by certified root finding on that function's exact
+//!   numerator; then `C − P(s)` points along the inward normal at `s`, and `P(s) − C` lies
+//!   inside `C`'s cone.
+//!
+//! A direction within rounding of a cone's edge is the contract's limit case (it may be
+//! reported or not): such candidates are left out. Every other decision is clear of rounding.
+
+use crate::profile_pairs::ordered;
+use crate::types::{Options, ProfilePair};
+use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
+use bspline::Piecewise;
+use curve::{Frame, ParamCurve, Profile, SplineCurve, V2};
+
+/// How far inside a cone (the sine of the angle to its nearer edge) a direction must be to be
+/// inside it rather than on its edge: far above the rounding of the unit directions compared,
+/// far below any drawn angle.
+const CONE_EDGE: f64 = 1e-9;
+
+/// How close (relative to the profile's size) a foot point may come to its corner and still be
+/// the corner itself: the root at the end of a segment that meets the corner, or a joint's gap.
+const AT_CORNER: f64 = 1e-8;
+
+/// A convex corner, in the frame's coordinates.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CornerSite {
+    /// The profile parameter of the joint.
+    pub(crate) u: f64,
+    /// The segment that starts there.
+    pub(crate) segment: usize,
+    /// The point.
+    pub(crate) p: V2,
+    /// The inward unit normals of the incoming and outgoing segments: the cone's edges.
+    pub(crate) cone: [V2; 2],
+}
+
+impl CornerSite {
+    /// Whether `d` points strictly inside the cone (clear of its edges by [`CONE_EDGE`]).
+    fn holds(&self, d: V2) -> bool {
+        let d = d.unit();
+        let [a, b] = self.cone;
+        // The cone of a convex corner spans less than π: inside means on the inner side of
+        // both edges.
+        let turn = a.cross(b).signum();
+        turn * a.cross(d) > CONE_EDGE && turn * d.cross(b) > CONE_EDGE
+    }
+}
+
+/// The pairs with a corner, and why they are not certified where they are not.
+pub(crate) struct CornerPairs {
+    pub(crate) pairs: Vec<ProfilePair>,
+    pub(crate) reason: Option<String>,
+}
+
+/// Every pair with a convex corner at one end or both (see the module documentation), with
+/// `curves` the profile's segments in `frame`.
+pub(crate) fn corner_pairs(
+    profile: &Profile,
+    frame: &Frame,
+    sites: &[CornerSite],
+    curves: &[&SplineCurve],
+    opts: &Options,
+) -> CornerPairs {
+    let mut out = CornerPairs {
+        pairs: Vec::new(),
+        reason: None,
+    };
+    let global = |p: V2| frame.to_global(p.arr());
+    for (k, a) in sites.iter().enumerate() {
+        for b in &sites[k + 1..] {
+            let d = b.p - a.p;
+            if a.holds(d) && b.holds(-d) {
+                let (p, q) = (global(a.p), global(b.p));
+                out.pairs.push(ordered(ProfilePair {
+                    s: a.u,
+                    t: b.u,
+                    p,
+                    q,
+                    distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
+                    kind: None,
+                    corner: [true, true],
+                    segment: [a.segment, b.segment],
+                }));
+            }
+        }
+    }
+    let size = frame.length_to_local(profile.size());
+    for site in sites {
+        for (i, c) in curves.iter().enumerate() {
+            match foot_points(c, site.p, opts) {
+                Ok(feet) => {
+                    for foot in feet {
+                        let s = foot.u;
+                        if ends_at_corner(profile, i, c, s) {
+                            // (A corner at the other end too: decided as a pair of corners.)
+                            continue;
+                        }
+                        let j = c.jet_to(s, 1);
+                        let d = j.p - site.p;
+                        if d.norm() <= AT_CORNER * size {
+                            continue;
+                        }
+                        if !foot.separated {
+                            out.reason.get_or_insert_with(|| {
+                                format!(
+                                    "a foot point of the corner at u = {} on segment {i} is \
+                                     not separated from another within rounding",
+                                    site.u
+                                )
+                            });
+                            continue;
+                        }
+                        // Inward at the smooth point: the corner lies on the side of its
+                        // inward normal (left on a counterclockwise profile).
+                        let inward = j.d1.perp() * profile.orientation();
+                        if inward.dot(-d) <= 0.0 || !site.holds(d) {
+                            continue;
+                        }
+                        let (p, q) = (global(site.p), global(j.p));
+                        out.pairs.push(ordered(ProfilePair {
+                            s: site.u,
+                            t: profile.profile_param(i, s),
+                            p,
+                            q,
+                            distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
+                            kind: None,
+                            corner: [true, false],
+                            segment: [site.segment, i],
+                        }));
+                    }
+                }
+                Err(e) => {
+                    out.reason.get_or_insert_with(|| {
+                        format!("the foot points of a corner on segment {i} were not found: {e}")
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// A root of the foot-point function.
+struct Foot {
+    /// Its parameter (a cluster's middle).
+    u: f64,
+    /// One simple root, proven (or certification is off), not a cluster of roots.
+    separated: bool,
+}
+
+/// The roots of `(C(u) − q) · C′(u)` on the curve's domain (the points whose normal line
+/// passes through `q`). With `R = X − q w` the homogeneous difference, the numerator is
+/// `w (R · R′) − w′ |R|²` (`R · R′` for a polynomial curve); its coefficients carry their
+/// rounding bounds into the root isolation.
+fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Foot>> {
+    let pieces = c.exact_pieces();
+    let hom = &pieces.hom;
+    let rx = hom.weighted(&[1.0, 0.0, -q.x]);
+    let ry = hom.weighted(&[0.0, 1.0, -q.y]);
+    let r = Piecewise::stack(&[&rx, &ry])?;
+    let dr = r.derivative();
+    let f = if pieces.polynomial {
+        r.dot(&dr)?
+    } else {
+        let w = hom.components(&[2])?;
+        let dw = w.derivative();
+        w.mul(&r.dot(&dr)?)?.sub(&dw.mul(&r.dot(&r)?)?)?
+    };
+    let (a, b) = f.domain();
+    let ropts = RootOptions::default().tolerance(opts.tol);
+    let roots = find_roots_in(&f, a, b, &ropts)?;
+    let df = f.derivative();
+    let mut feet = Vec::with_capacity(roots.len());
+    for r in roots {
+        let proven = r.kind == RootKind::Simple && r.certified;
+        let (lo, hi) = r.bracket;
+        // A root at an end of the domain (a foot point at a joint, found from the segments
+        // on both sides) shows no sign change there: it is one root, at the end to within
+        // the bracket, where the function is proven monotone across the bracket.
+        let at_end = (lo <= a || hi >= b) && hi > lo;
+        let monotone = || {
+            let pos = prove_positive_in(&df, lo, hi, &ropts);
+            let neg = prove_positive_in(&df.scale(-1.0), lo, hi, &ropts);
+            matches!(pos, Ok(None)) || matches!(neg, Ok(None))
+        };
+        if !proven && at_end && monotone() {
+            feet.push(Foot {
+                u: if lo <= a { a } else { b },
+                separated: true,
+            });
+            continue;
+        }
+        feet.push(Foot {
+            u: r.u,
+            separated: (r.kind == RootKind::Simple && r.certified) || !opts.certify,
+        });
+    }
+    Ok(feet)
+}
+
+/// How close (relative to a segment's domain) to its end a foot point lies at the joint there.
+const AT_JOINT: f64 = 1e-9;
+
+/// Whether `u` on segment `i` (curve `c`) is at one of its ends where the profile has a corner.
+fn ends_at_corner(profile: &Profile, i: usize, c: &SplineCurve, u: f64) -> bool {
+    let (a, b) = c.domain();
+    let share = (u - a) / (b - a);
+    let n = profile.segments().len();
+    let joint = if share <= AT_JOINT {
+        i
+    } else if share >= 1.0 - AT_JOINT {
+        (i + 1) % n
+    } else {
+        return false;
+    };
+    profile
+        .joints()
+        .iter()
+        .any(|j| j.u as usize == joint && j.kind != curve::JointKind::Smooth)
+}

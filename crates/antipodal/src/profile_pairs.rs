@@ -1,0 +1,397 @@
+//! Antipodal pairs of a closed profile (Jia 2004 §9.2: the method extends to piecewise `C²`
+//! curves). Each segment is dissected on its own into monotone pieces, all in one frame and
+//! oriented the way the profile runs counterclockwise; every pair of pieces, of one segment or
+//! of two, is then searched exactly as the pieces of one smooth curve are (§5). The pairs with
+//! a corner at one end or both come from [`crate::corner_pairs`].
+
+use crate::corner_pairs::{corner_pairs, CornerSite};
+use crate::dissect::Piece;
+use crate::driver::{classify, dissect, sections, trim_antipodal_ends, Dissected};
+use crate::error::{Error, Result};
+use crate::families::{flat_pairs, is_family};
+use crate::forms::SymbolicForms;
+use crate::pairs::{opposite_pair, polish, THETA_NOISE};
+use crate::profiles::profile_inflections;
+use crate::search::{antipodal_points, Budget};
+use crate::types::{Options, ProfileAntipodal, ProfileFamily, ProfilePair};
+use crate::view::{Source, View};
+use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, StraightSpan, V2};
+
+/// Samples per segment of a sampled track (certification off): a segment of a drawing turns
+/// little; Jia's sampling resolves a few oscillations with this many.
+const SEGMENT_SAMPLES: usize = 96;
+
+/// How far (relative to a segment's domain) the final polish of a pair may move it.
+const FINAL_POLISH_REACH: f64 = 1e-4;
+
+/// Two pairs whose points are closer than this (relative to the profile's size) are one: a
+/// pair at a smooth joint is found from the segments on both sides.
+const SAME_PAIR: f64 = 1e-7;
+
+/// Room (in profile parameters, a segment's domain being 1) for a pair on a family's end to
+/// count as one of its pairs.
+const FAMILY_SLACK: f64 = 1e-9;
+
+/// How far (in profile parameters) from the family's match a pair's other end may lie and
+/// still be one of its pairs: a pair at a family's end meets the match to the tolerance it
+/// was solved to; any other pair is a whole stretch away.
+const FAMILY_MATCH: f64 = 1e-6;
+
+/// How close (relative to a segment's domain) to a segment's end a pair's point lies at the
+/// joint there.
+const AT_JOINT: f64 = 1e-9;
+
+/// A family between segments `i` and `j`, in their views' parameters `(sa, sb, ta, tb)`.
+type SegmentFamily = (usize, usize, (f64, f64, f64, f64));
+
+/// A segment in the frame, with what its views borrow.
+struct Local {
+    curve: SplineCurve,
+    forms: Option<SymbolicForms>,
+    straight: Vec<StraightSpan>,
+}
+
+/// One pair of segment points in view parameters: segment `i` at `s`, segment `j` at `t`.
+#[derive(Debug, Clone, Copy)]
+struct Raw {
+    i: usize,
+    s: f64,
+    j: usize,
+    t: f64,
+}
+
+/// Every antipodal pair of a closed profile, with a corner at one end or both where the
+/// segment between them lies inside the corner's cone of inward normals (see the contract),
+/// and the continua of pairs (facing parallel lines, concentric arcs) as families. Certified
+/// where every segment's decisions are (lines and arcs are exact rational curves).
+///
+/// ```
+/// use antipodal::{profile_antipodal, Options};
+/// use curve::{Profile, Segment};
+/// // A right triangle: the right-angle corner pairs with the foot of its perpendicular on
+/// // the hypotenuse; the two sharp corners pair along the hypotenuse (a corner sharper than
+/// // a right angle has its edges' directions inside its cone).
+/// let c = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
+/// let sides = (0..3).map(|i| Segment::line(c[i], c[(i + 1) % 3]).unwrap()).collect();
+/// let t = Profile::new(sides, None).unwrap();
+/// let r = profile_antipodal(&t, &Options::default()).unwrap();
+/// assert!(r.certified);
+/// assert_eq!(r.pairs.len(), 2);
+/// let foot = &r.pairs[0];
+/// assert_eq!((foot.corner, foot.kind), ([true, false], None));
+/// assert!((foot.q[0] - 2.0).abs() < 1e-12 && (foot.q[1] - 2.0).abs() < 1e-12);
+/// assert_eq!(r.pairs[1].corner, [true, true]);
+/// ```
+pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAntipodal> {
+    opts.validate()?;
+    if !profile.is_closed() {
+        let (a, b) = profile.domain();
+        return Err(Error::NotClosed {
+            gap: (profile.jet(b).p - profile.jet(a).p).norm(),
+        });
+    }
+    let segs = profile.segments();
+    let points: Vec<[f64; 2]> = segs
+        .iter()
+        .flat_map(|s| s.curve().control_points())
+        .collect();
+    let frame = Frame::for_points(&points);
+    let locals: Vec<Local> = segs
+        .iter()
+        .map(|s| {
+            let curve = s.curve().in_frame(&frame);
+            let forms = opts
+                .certify
+                .then(|| SymbolicForms::new(curve.exact_pieces()).ok())
+                .flatten();
+            let straight = curve.straight_spans();
+            Local {
+                curve,
+                forms,
+                straight,
+            }
+        })
+        .collect();
+    // Every segment runs the way a counterclockwise profile does.
+    let rev = profile.orientation() < 0.0;
+    let mut parts: Vec<Dissected> = Vec::with_capacity(locals.len());
+    for (i, l) in locals.iter().enumerate() {
+        let src = Source {
+            curve: &l.curve,
+            forms: l.forms.as_ref(),
+            simple: false,
+            report: None,
+            samples: SEGMENT_SAMPLES,
+            straight: &l.straight,
+            exact_circle: false,
+        };
+        let d = dissect(src, opts, Some(rev)).map_err(|e| Error::InSegment {
+            segment: i,
+            source: Box::new(e),
+        })?;
+        parts.push(d);
+    }
+    let mut raw: Vec<Raw> = Vec::new();
+    let mut families: Vec<SegmentFamily> = Vec::new();
+    let mut budget = Budget {
+        sections: opts.max_sections,
+        exhausted: false,
+    };
+    let mut stack = Vec::with_capacity(16);
+    let mut found = Vec::new();
+    let mut flats = Vec::new();
+    for (i, di) in parts.iter().enumerate() {
+        for (j, dj) in parts.iter().enumerate().skip(i) {
+            for p in &di.pieces {
+                for q in &dj.pieces {
+                    if i == j && q.id <= p.id {
+                        continue;
+                    }
+                    let (vi, vj) = (&di.view, &dj.view);
+                    found.clear();
+                    if p.flat || q.flat {
+                        flats.clear();
+                        flat_pairs(vi, p, vj, q, &mut found, &mut flats);
+                        // (The straight piece's side first.)
+                        let (a, b) = if p.flat { (i, j) } else { (j, i) };
+                        raw.extend(found.iter().map(|&(s, t)| Raw { i: a, s, j: b, t }));
+                        families.extend(flats.iter().map(|&f| (a, b, f)));
+                        continue;
+                    }
+                    search_pieces(vi, p, vj, q, &mut found, &mut budget, &mut stack, |f| {
+                        families.push((i, j, f))
+                    });
+                    raw.extend(found.iter().map(|&(s, t)| Raw { i, s, j, t }));
+                }
+            }
+        }
+    }
+    let views: Vec<&View> = parts.iter().map(|d| &d.view).collect();
+    let sites = corner_sites(profile, &locals);
+    let mut pairs = finish(profile, &views, &frame, raw);
+    let curves: Vec<&SplineCurve> = locals.iter().map(|l| &l.curve).collect();
+    let corner = corner_pairs(profile, &frame, &sites, &curves, opts);
+    for c in corner.pairs {
+        if !pairs.iter().any(|p| same_pair(profile, p, &c)) {
+            pairs.push(c);
+        }
+    }
+    pairs.sort_by(|a, b| a.s.total_cmp(&b.s));
+    let families: Vec<ProfileFamily> = families
+        .into_iter()
+        .map(|(i, j, f)| family(profile, &views, &frame, i, j, f))
+        .collect();
+    // A pair on a family (at its end, say) is one of its pairs.
+    pairs.retain(|p| !families.iter().any(|f| on_family(f, p)));
+    let inflections = profile_inflections(profile, opts)?;
+    let mut out = ProfileAntipodal {
+        pairs,
+        inflections: inflections.inflections,
+        corners: inflections.corners,
+        families,
+        certified: true,
+        complete: !budget.exhausted,
+        reason: None,
+    };
+    let doubts = views
+        .iter()
+        .find_map(|v| v.reason())
+        .or(corner.reason)
+        .or(inflections.reason.filter(|_| !inflections.certified));
+    if let Some(reason) = doubts {
+        out.certified = false;
+        out.reason = Some(reason);
+    }
+    Ok(out)
+}
+
+/// The search of one pair of curved pieces (as for one smooth curve): continua go to
+/// `family`, isolated pairs to `out`.
+#[allow(clippy::too_many_arguments)]
+fn search_pieces<'a>(
+    vi: &'a View<'a>,
+    p: &Piece,
+    vj: &'a View<'a>,
+    q: &Piece,
+    out: &mut Vec<(f64, f64)>,
+    budget: &mut Budget,
+    stack: &mut Vec<crate::pairs::Pair<'a>>,
+    mut family: impl FnMut((f64, f64, f64, f64)),
+) {
+    let Some(pair) = opposite_pair(vi, p, vj, q) else {
+        return;
+    };
+    if is_family(&pair) {
+        // (θ vanishing within rounding all along: concentric arcs are proven only by their
+        // definition, which the segments no longer carry.)
+        vi.uncertify(crate::doubt::Doubt::Continuum);
+        family((pair.sa, pair.sb, pair.ta, pair.tb));
+        return;
+    }
+    for sec in sections(&pair) {
+        if let Some(sec) = trim_antipodal_ends(&sec, out) {
+            antipodal_points(&sec, out, budget, stack);
+        }
+    }
+}
+
+/// The convex corners with their cones of inward normals, in the frame.
+fn corner_sites(profile: &Profile, locals: &[Local]) -> Vec<CornerSite> {
+    let n = profile.segments().len();
+    let inward = |t: V2| t.perp() * profile.orientation();
+    profile
+        .joints()
+        .iter()
+        .filter(|j| j.kind == JointKind::Convex)
+        .filter_map(|j| {
+            let i = j.u as usize;
+            let before = &profile.segments()[(i + n - 1) % n];
+            let after = &profile.segments()[i];
+            let (din, dout) = (before.end_direction()?, after.start_direction()?);
+            let c = &locals[i].curve;
+            Some(CornerSite {
+                u: j.u,
+                segment: i,
+                p: c.jet(c.domain().0).p,
+                cone: [inward(din), inward(dout)],
+            })
+        })
+        .collect()
+}
+
+/// Polishes, validates (inward normals facing each other), deduplicates, classifies and maps
+/// the pairs to profile parameters and global points.
+fn finish(profile: &Profile, views: &[&View], frame: &Frame, raw: Vec<Raw>) -> Vec<ProfilePair> {
+    let mut out: Vec<ProfilePair> = Vec::with_capacity(raw.len());
+    for r in raw {
+        let (vs, vt) = (views[r.i], views[r.j]);
+        let clamp = |v: &View, u: f64| u.clamp(v.a, v.b);
+        let reach = FINAL_POLISH_REACH * vs.period.max(vt.period);
+        let (s, t) = polish(vs, vt, r.s, r.t, reach)
+            .map(|(s, t)| (clamp(vs, s), clamp(vt, t)))
+            .unwrap_or((r.s, r.t));
+        let (js, jt) = (vs.jet_to(s, 1), vt.jet_to(t, 1));
+        let d = jt.p - js.p;
+        if js.normal().dot(d) <= 0.0 || js.d1.dot(jt.d1) >= 0.0 {
+            continue;
+        }
+        if js.normal().cross(d).abs() > THETA_NOISE * d.norm() {
+            vs.uncertify(crate::doubt::Doubt::NotAPair);
+            continue;
+        }
+        let pair = profile_pair(profile, views, frame, (r.i, s), (r.j, t));
+        if !out.iter().any(|p| same_pair(profile, p, &pair)) {
+            out.push(pair);
+        }
+    }
+    out
+}
+
+/// The pair of segment `i` at view parameter `s` and segment `j` at `t`, in profile terms.
+fn profile_pair(
+    profile: &Profile,
+    views: &[&View],
+    frame: &Frame,
+    (i, s): (usize, f64),
+    (j, t): (usize, f64),
+) -> ProfilePair {
+    let (vs, vt) = (views[i], views[j]);
+    let at_corner = |k: usize, v: &View, x: f64| {
+        let share = (v.to_curve(x) - v.reported_domain().0) / v.period;
+        let joint = if share <= AT_JOINT {
+            Some(k)
+        } else if share >= 1.0 - AT_JOINT {
+            Some((k + 1) % profile.segments().len())
+        } else {
+            None
+        };
+        joint.is_some_and(|u| {
+            profile
+                .joints()
+                .iter()
+                .any(|jt| jt.u as usize == u && jt.kind != JointKind::Smooth)
+        })
+    };
+    let corner = [at_corner(i, vs, s), at_corner(j, vt, t)];
+    let straight = |k: usize| profile.segments()[k].kind() == SegmentKind::Line;
+    let kind =
+        (!corner[0] && !corner[1] && !straight(i) && !straight(j)).then(|| classify(vs, vt, s, t));
+    let (p, q) = (
+        frame.to_global(vs.point(s).arr()),
+        frame.to_global(vt.point(t).arr()),
+    );
+    let us = profile.profile_param(i, vs.to_curve(s));
+    let ut = profile.profile_param(j, vt.to_curve(t));
+    ordered(ProfilePair {
+        s: us,
+        t: ut,
+        p,
+        q,
+        distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
+        kind,
+        corner,
+        segment: [i, j],
+    })
+}
+
+/// The pair with `s ≤ t`.
+pub(crate) fn ordered(p: ProfilePair) -> ProfilePair {
+    if p.s <= p.t {
+        p
+    } else {
+        ProfilePair {
+            s: p.t,
+            t: p.s,
+            p: p.q,
+            q: p.p,
+            corner: [p.corner[1], p.corner[0]],
+            segment: [p.segment[1], p.segment[0]],
+            ..p
+        }
+    }
+}
+
+/// The same pair found twice (from two segments meeting at a smooth joint, or as a corner
+/// pair and a smooth one on the cone's edge).
+fn same_pair(profile: &Profile, a: &ProfilePair, b: &ProfilePair) -> bool {
+    let room = SAME_PAIR * profile.size();
+    let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
+    (near(a.p, b.p) && near(a.q, b.q)) || (near(a.p, b.q) && near(a.q, b.p))
+}
+
+/// A family in view parameters as profile parameters and end points.
+fn family(
+    profile: &Profile,
+    views: &[&View],
+    frame: &Frame,
+    i: usize,
+    j: usize,
+    f: (f64, f64, f64, f64),
+) -> ProfileFamily {
+    let (vs, vt) = (views[i], views[j]);
+    let su = |x: f64| profile.profile_param(i, vs.to_curve(x));
+    let tu = |x: f64| profile.profile_param(j, vt.to_curve(x));
+    let ps = |x: f64| frame.to_global(vs.point(x).arr());
+    let pt = |x: f64| frame.to_global(vt.point(x).arr());
+    ProfileFamily {
+        s: [su(f.0), su(f.1)],
+        t: [tu(f.2), tu(f.3)],
+        p: [ps(f.0), ps(f.1)],
+        q: [pt(f.2), pt(f.3)],
+    }
+}
+
+/// Whether the pair is one of the family's: `s` inside one side's range and `t` where the
+/// family matches it (interpolated: exact on straight sides, and at a family's ends, where
+/// the pairs it absorbs lie).
+fn on_family(f: &ProfileFamily, p: &ProfilePair) -> bool {
+    let matches = |s: f64, t: f64, fs: [f64; 2], ft: [f64; 2]| {
+        let (lo, hi) = (fs[0].min(fs[1]), fs[0].max(fs[1]));
+        if s < lo - FAMILY_SLACK || s > hi + FAMILY_SLACK || hi <= lo {
+            return false;
+        }
+        let x = (s - fs[0]) / (fs[1] - fs[0]);
+        (ft[0] + x * (ft[1] - ft[0]) - t).abs() <= FAMILY_MATCH
+    };
+    matches(p.s, p.t, f.s, f.t) || matches(p.t, p.s, f.s, f.t)
+}

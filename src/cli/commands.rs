@@ -93,8 +93,8 @@ fn one_curve(curves: &[&Curve], command: &str) -> Result<(), Failure> {
     }
 }
 
-/// Antipodal pairs and common tangents of profiles (corner cones, pairs at corners) are not
-/// implemented yet: a profile is refused by name rather than searched as a smooth curve.
+/// Common tangents of profiles (lines through corners) are not implemented yet: a profile is
+/// refused by name rather than searched as a smooth curve.
 fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
     one_curve(curves, command)?;
     match curves.iter().find(|c| matches!(c.shape, Shape::Profile(_))) {
@@ -102,8 +102,8 @@ fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
             file: c.file.clone(),
             field: "kind".into(),
             problem: Problem::Unsupported(format!(
-                "{command} on profiles is not implemented yet (inflections is); \
-                 give a smooth curve, a line or an arc"
+                "{command} on profiles is not implemented yet (inflections and antipodal \
+                 are); give a smooth curve, a line or an arc"
             )),
         })),
         None => Ok(()),
@@ -113,7 +113,10 @@ fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     let curve = read_curve(path)?;
-    smooth_only(&[&curve], "antipodal")?;
+    one_curve(&[&curve], "antipodal")?;
+    if let Shape::Profile(profile) = &curve.shape {
+        return run_profile_antipodal(&curve, profile, common);
+    }
     let plane = curve.plane_curve();
     let opts = common.options();
     let prepared = antipodal::prepare(plane);
@@ -139,6 +142,36 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
         report::json_doc(&found, &[&curve], stats.as_ref())
     } else {
         report::antipodal_text(&curve, &found, stats.as_ref())
+    })
+}
+
+/// `antipodal` on a profile: pairs with corners, families with end points, inflections and
+/// corners.
+fn run_profile_antipodal(
+    curve: &Curve,
+    profile: &curvekit::curve::Profile,
+    common: &Common,
+) -> Result<(), Failure> {
+    let opts = common.options();
+    let found =
+        antipodal::profile_antipodal(profile, &opts).map_err(|e| antipodal_failure(e, &[curve]))?;
+    let stats = common.time.then(|| {
+        let run = || antipodal::profile_antipodal(profile, &opts);
+        timing::measure_both(run, run)
+    });
+    if let Some(svg) = &common.svg {
+        let title = format!(
+            "{}: {} antipodal pairs, {} corners",
+            curve.file,
+            found.pairs.len(),
+            found.corners.len()
+        );
+        write_file(svg, &report::profile_antipodal_figure(curve, &found, title))?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &[curve], stats.as_ref())
+    } else {
+        report::profile_antipodal_text(curve, &found, stats.as_ref())
     })
 }
 

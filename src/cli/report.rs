@@ -2,7 +2,8 @@
 
 use super::timing::Stats;
 use antipodal::{
-    Antipodal, CornerKind, Inflection, InflectionKind, Inflections, ProfileInflections, Tangents,
+    Antipodal, CornerKind, Inflection, InflectionKind, Inflections, ProfileAntipodal,
+    ProfileInflections, Tangents,
 };
 use curvekit::curve::ParamCurve;
 use curvekit::io::{Curve, Shape};
@@ -250,6 +251,80 @@ pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>
     s
 }
 
+/// The readable antipodal report of a profile: pairs (with their corners and segments),
+/// families with their end points, inflections and corners.
+pub(crate) fn profile_antipodal_text(
+    curve: &Curve,
+    r: &ProfileAntipodal,
+    stats: Option<&Stats>,
+) -> String {
+    let mut s = String::new();
+    curve_line(&mut s, "curve:", curve);
+    let complete = if r.complete { "" } else { ", INCOMPLETE" };
+    let _ = writeln!(
+        s,
+        "pairs:       {} ({}{complete})",
+        r.pairs.len(),
+        certified_word(r.certified)
+    );
+    if let Some(why) = r.reason.as_ref().filter(|_| !r.certified) {
+        let _ = writeln!(s, "  (why: {why})");
+    }
+    for (k, p) in r.pairs.iter().enumerate() {
+        let kind = p.kind.map_or("-".to_string(), |t| format!("{t:?}"));
+        let end = |corner: bool, segment: usize| {
+            if corner {
+                format!("corner {segment}")
+            } else {
+                format!("segment {segment}")
+            }
+        };
+        let _ = writeln!(
+            s,
+            "  {:>3}  type {kind}  s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})  distance {}  ({}, {})",
+            k + 1,
+            n(p.s),
+            n(p.t),
+            n(p.p[0]),
+            n(p.p[1]),
+            n(p.q[0]),
+            n(p.q[1]),
+            n(p.distance),
+            end(p.corner[0], p.segment[0]),
+            end(p.corner[1], p.segment[1]),
+        );
+    }
+    let _ = writeln!(s, "families:    {}", r.families.len());
+    for f in &r.families {
+        let _ = writeln!(
+            s,
+            "       s in [{}, {}]  t in [{}, {}]  from ({}, {})-({}, {}) to ({}, {})-({}, {})",
+            n(f.s[0]),
+            n(f.s[1]),
+            n(f.t[0]),
+            n(f.t[1]),
+            n(f.p[0][0]),
+            n(f.p[0][1]),
+            n(f.q[0][0]),
+            n(f.q[0][1]),
+            n(f.p[1][0]),
+            n(f.p[1][1]),
+            n(f.q[1][0]),
+            n(f.q[1][1]),
+        );
+    }
+    let corners = ProfileInflections {
+        inflections: r.inflections.clone(),
+        corners: r.corners.clone(),
+        certified: r.certified,
+        reason: None,
+    };
+    // (Its first line names the curve again.)
+    let rest = profile_inflections_text(curve, &corners, stats);
+    s.push_str(rest.split_once('\n').map_or("", |(_, rest)| rest));
+    s
+}
+
 /// The readable common-tangent report.
 pub(crate) fn tangents_text(curves: &[&Curve], r: &Tangents, stats: Option<&Stats>) -> String {
     let mut s = String::new();
@@ -328,6 +403,28 @@ pub(crate) fn antipodal_figure(curve: &Curve, found: &Antipodal, title: String) 
         fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
     }
     found.inflections.iter().for_each(|i| fig.dot(i.p));
+    fig.title(title);
+    fig.render()
+}
+
+/// The antipodal figure of a profile: as for a curve, with the corners marked and each
+/// family's end pairs drawn.
+pub(crate) fn profile_antipodal_figure(
+    curve: &Curve,
+    found: &ProfileAntipodal,
+    title: String,
+) -> String {
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, curve);
+    for (k, pair) in found.pairs.iter().enumerate() {
+        fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
+    }
+    for f in &found.families {
+        fig.segment(f.p[0], f.q[0], None);
+        fig.segment(f.p[1], f.q[1], None);
+    }
+    found.inflections.iter().for_each(|i| fig.dot(i.p));
+    found.corners.iter().for_each(|c| fig.corner(c.p));
     fig.title(title);
     fig.render()
 }

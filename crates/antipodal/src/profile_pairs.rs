@@ -279,6 +279,13 @@ fn finish(profile: &Profile, views: &[&View], frame: &Frame, raw: Vec<Raw>) -> V
             vs.uncertify(crate::doubt::Doubt::NotAPair);
             continue;
         }
+        // A reflex corner takes no part: a pair found there by one segment's normal is the
+        // limit of smooth pairs beside it (the contract's limit case), left out.
+        let reflex =
+            |k: usize, v: &View, x: f64| joint_at(profile, k, v, x) == Some(JointKind::Reflex);
+        if reflex(r.i, vs, s) || reflex(r.j, vt, t) {
+            continue;
+        }
         let pair = profile_pair(profile, views, frame, (r.i, s), (r.j, t));
         if !out.iter().any(|p| same_pair(profile, p, &pair)) {
             out.push(pair);
@@ -297,20 +304,7 @@ fn profile_pair(
 ) -> ProfilePair {
     let (vs, vt) = (views[i], views[j]);
     let at_corner = |k: usize, v: &View, x: f64| {
-        let share = (v.to_curve(x) - v.reported_domain().0) / v.period;
-        let joint = if share <= AT_JOINT {
-            Some(k)
-        } else if share >= 1.0 - AT_JOINT {
-            Some((k + 1) % profile.segments().len())
-        } else {
-            None
-        };
-        joint.is_some_and(|u| {
-            profile
-                .joints()
-                .iter()
-                .any(|jt| jt.u as usize == u && jt.kind != JointKind::Smooth)
-        })
+        joint_at(profile, k, v, x).is_some_and(|kind| kind != JointKind::Smooth)
     };
     let corner = [at_corner(i, vs, s), at_corner(j, vt, t)];
     let straight = |k: usize| profile.segments()[k].kind() == SegmentKind::Line;
@@ -332,6 +326,24 @@ fn profile_pair(
         corner,
         segment: [i, j],
     })
+}
+
+/// The kind of the joint where segment `k`'s view `v` is at `x`, if `x` is at one of its ends.
+fn joint_at(profile: &Profile, k: usize, v: &View, x: f64) -> Option<JointKind> {
+    let share = (v.to_curve(x) - v.reported_domain().0) / v.period;
+    let n = profile.segments().len();
+    let at = if share <= AT_JOINT {
+        k
+    } else if share >= 1.0 - AT_JOINT {
+        (k + 1) % n
+    } else {
+        return None;
+    };
+    profile
+        .joints()
+        .iter()
+        .find(|jt| jt.u as usize == at)
+        .map(|jt| jt.kind)
 }
 
 /// The pair with `s ≤ t`.

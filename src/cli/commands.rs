@@ -2,13 +2,13 @@
 
 use super::report::{self, draw_curve};
 use super::{print_out, timing, write_file, BisectorArgs, Common, Failure};
-use curvekit::io::{read_curve, Curve, CurveFileError, Problem, Shape};
+use curvekit::io::{read_curve_picked, Curve, CurveFileError, Problem, Shape};
 use curvekit::svg::Figure;
 use std::path::Path;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let curve = read_curve(path)?;
+    let curve = read_curve_picked(path, common.pick)?;
     one_curve(&[&curve], "inflections")?;
     if let Shape::Profile(profile) = &curve.shape {
         return run_profile_inflections(&curve, profile, common);
@@ -112,7 +112,7 @@ fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let curve = read_curve(path)?;
+    let curve = read_curve_picked(path, common.pick)?;
     one_curve(&[&curve], "antipodal")?;
     if let Shape::Profile(profile) = &curve.shape {
         return run_profile_antipodal(&curve, profile, common);
@@ -177,7 +177,10 @@ fn run_profile_antipodal(
 
 pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let (c1, c2) = (read_curve(path1)?, read_curve(path2)?);
+    let (c1, c2) = (
+        read_curve_picked(path1, common.pick)?,
+        read_curve_picked(path2, common.pick)?,
+    );
     let both = [&c1, &c2];
     smooth_only(&both, "tangents")?;
     let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
@@ -217,8 +220,10 @@ pub(super) fn run_bisector(
 ) -> Result<(), Failure> {
     let opts = args.options(common.tol);
     opts.validate().map_err(zeroset_failure)?;
-    let c1 = read_curve(path1)?;
-    let c2 = path2.map(read_curve).transpose()?;
+    let c1 = read_curve_picked(path1, common.pick)?;
+    let c2 = path2
+        .map(|p| read_curve_picked(p, common.pick))
+        .transpose()?;
     let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
     let r1 = spline_of(&c1)?;
     let r2 = c2.as_ref().map(spline_of).transpose()?;

@@ -121,6 +121,9 @@ pub(crate) struct Common {
     /// Repeat the computation for at least 0.5 s and report the median time of one run.
     #[arg(long)]
     pub(crate) time: bool,
+    /// In a drawing (.svg, .dxf) that holds several profiles, the one to take (from 0).
+    #[arg(long, value_name = "N")]
+    pub(crate) pick: Option<usize>,
 }
 
 impl Common {

@@ -11,10 +11,14 @@ use serde_json::{Map, Value};
 use std::path::Path;
 use thiserror::Error;
 
+mod drawing;
 mod duplicates;
+mod dxf;
 mod profile;
 mod spline;
+mod svg;
 
+pub use drawing::{Chain, MAX_CHAINS};
 pub use profile::{MAX_HOLES, MAX_SEGMENTS};
 
 /// Largest accepted magnitude of any number: keeps products of several coordinates (curvature
@@ -47,6 +51,9 @@ pub enum Problem {
     /// The text is not JSON (or a number is out of the f64 range).
     #[error("invalid JSON: {0}")]
     Json(String),
+    /// A drawing file's syntax is broken (XML, path data, a transform, DXF group codes).
+    #[error("{0}")]
+    Syntax(String),
     /// A required field is absent.
     #[error("missing required field")]
     Missing,
@@ -235,15 +242,42 @@ impl Curve {
     }
 }
 
-/// Reads and validates a curve file.
+/// Reads and validates a curve file, or a drawing (see [`read_curve_picked`]).
 pub fn read_curve(path: &Path) -> Result<Curve, CurveFileError> {
+    read_curve_picked(path, None)
+}
+
+/// Reads and validates a curve file (JSON), or a drawing by its extension: `.svg` (every
+/// path's subpaths) or `.dxf` (ASCII DXF entities chained end to end). A drawing's profiles
+/// are numbered from 0 in file order; `pick` chooses one where it holds several.
+pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| CurveFileError {
-        file: file.clone(),
-        field: "document".into(),
-        problem: Problem::Unreadable(e.to_string()),
-    })?;
-    parse_curve(&file, &text)
+    let unreadable =
+        |e: std::io::Error| drawing::error(&file, "document", Problem::Unreadable(e.to_string()));
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let chains = match ext.as_deref() {
+        Some("svg") => svg::chains(&file, &std::fs::read_to_string(path).map_err(unreadable)?)?,
+        Some("dxf") => dxf::chains(&file, &std::fs::read(path).map_err(unreadable)?)?,
+        _ => {
+            if pick.is_some() {
+                return Err(drawing::error(
+                    &file,
+                    "--pick",
+                    Problem::Unsupported(
+                        "a curve file holds one curve: --pick chooses among a drawing's \
+                         profiles (.svg, .dxf)"
+                            .into(),
+                    ),
+                ));
+            }
+            let text = std::fs::read_to_string(path).map_err(unreadable)?;
+            return parse_curve(&file, &text);
+        }
+    };
+    drawing::pick_profile(&file, drawing::profiles(&file, chains)?, pick)
 }
 
 /// Validates the text of a curve file; `file` names it in errors.

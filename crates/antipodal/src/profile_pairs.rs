@@ -158,9 +158,19 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
                         families.extend(flats.iter().map(|&f| (a, b, f)));
                         continue;
                     }
-                    search_pieces(vi, p, vj, q, &mut found, &mut budget, &mut stack, |f| {
-                        families.push((i, j, f))
-                    });
+                    let centre = |k: usize| segs[k].circle().map(|(c, _)| c);
+                    let concentric = centre(i).is_some() && centre(i) == centre(j);
+                    search_pieces(
+                        vi,
+                        p,
+                        vj,
+                        q,
+                        concentric,
+                        &mut found,
+                        &mut budget,
+                        &mut stack,
+                        |f| families.push((i, j, f)),
+                    );
                     raw.extend(found.iter().map(|&(s, t)| Raw { i, s, j, t }));
                 }
             }
@@ -177,10 +187,13 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
         }
     }
     pairs.sort_by(|a, b| a.s.total_cmp(&b.s));
-    let families: Vec<ProfileFamily> = families
-        .into_iter()
-        .map(|(i, j, f)| family(profile, &views, &frame, i, j, f))
-        .collect();
+    let families = merged(
+        profile,
+        families
+            .into_iter()
+            .map(|(i, j, f)| family(profile, &views, &frame, i, j, f))
+            .collect(),
+    );
     // A pair on a family (at its end, say) is one of its pairs.
     pairs.retain(|p| !families.iter().any(|f| on_family(f, p)));
     let inflections = profile_inflections(profile, opts)?;
@@ -206,13 +219,15 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
 }
 
 /// The search of one pair of curved pieces (as for one smooth curve): continua go to
-/// `family`, isolated pairs to `out`.
+/// `family` (proven where the pieces lie on arcs `concentric` by definition), isolated
+/// pairs to `out`.
 #[allow(clippy::too_many_arguments)]
 fn search_pieces<'a>(
     vi: &'a View<'a>,
     p: &Piece,
     vj: &'a View<'a>,
     q: &Piece,
+    concentric: bool,
     out: &mut Vec<(f64, f64)>,
     budget: &mut Budget,
     stack: &mut Vec<crate::pairs::Pair<'a>>,
@@ -222,9 +237,11 @@ fn search_pieces<'a>(
         return;
     };
     if is_family(&pair) {
-        // (θ vanishing within rounding all along: concentric arcs are proven only by their
-        // definition, which the segments no longer carry.)
-        vi.uncertify(crate::doubt::Doubt::Continuum);
+        // (θ vanishing within rounding all along: a continuum is proven only for arcs defined
+        // on one centre.)
+        if !concentric {
+            vi.uncertify(crate::doubt::Doubt::Continuum);
+        }
         family((pair.sa, pair.sb, pair.ta, pair.tb));
         return;
     }
@@ -406,4 +423,30 @@ fn on_family(f: &ProfileFamily, p: &ProfilePair) -> bool {
         (ft[0] + x * (ft[1] - ft[0]) - t).abs() <= FAMILY_MATCH
     };
     matches(p.s, p.t, f.s, f.t) || matches(p.t, p.s, f.s, f.t)
+}
+
+/// Families that continue each other (the pieces of one arc, a circle's halves) joined into
+/// one: where one ends, at both sides, the other starts.
+fn merged(profile: &Profile, mut fs: Vec<ProfileFamily>) -> Vec<ProfileFamily> {
+    let room = SAME_PAIR * profile.size();
+    let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
+    // (Each join removes one family: at most as many rounds as families.)
+    for _ in 0..fs.len() {
+        let found = (0..fs.len()).find_map(|a| {
+            (0..fs.len())
+                .find(|&b| b != a && near(fs[a].p[1], fs[b].p[0]) && near(fs[a].q[1], fs[b].q[0]))
+                .map(|b| (a, b))
+        });
+        let Some((a, b)) = found else {
+            break;
+        };
+        let next = fs[b];
+        let f = &mut fs[a];
+        f.s[1] = next.s[1];
+        f.t[1] = next.t[1];
+        f.p[1] = next.p[1];
+        f.q[1] = next.q[1];
+        fs.remove(b);
+    }
+    fs
 }

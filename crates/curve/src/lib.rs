@@ -20,6 +20,7 @@
 //! assert!(e.exact().is_some());
 //! ```
 
+mod affine;
 pub mod circle;
 mod crossing;
 mod error;
@@ -35,6 +36,7 @@ mod segment;
 pub mod shapes;
 mod spline;
 
+pub use affine::Affine;
 pub use error::{Error, Result};
 pub use frame::Frame;
 pub use geom::{wrap_pi, Jet, V2};

@@ -16,6 +16,8 @@ pub enum SegmentKind {
     Line,
     /// A circular arc.
     Arc,
+    /// An elliptical arc (an SVG arc, a DXF `ELLIPSE`): a circular arc moved by an affine map.
+    EllipticArc,
     /// A Bézier curve.
     Bezier,
     /// An open B-spline or NURBS curve.
@@ -28,6 +30,7 @@ impl SegmentKind {
         match self {
             SegmentKind::Line => "line",
             SegmentKind::Arc => "arc",
+            SegmentKind::EllipticArc => "elliptic_arc",
             SegmentKind::Bezier => "bezier",
             SegmentKind::BSpline => "bspline",
         }
@@ -39,6 +42,9 @@ impl SegmentKind {
 pub struct Segment {
     kind: SegmentKind,
     curve: SplineCurve,
+    /// The centre and radius of a circular arc, as defined (arcs of one circle share them
+    /// exactly: a continuum of antipodal pairs between them is proven by their definition).
+    circle: Option<([f64; 2], f64)>,
 }
 
 /// The widest angle one rational quadratic piece of an arc spans: a quarter turn keeps its
@@ -69,6 +75,7 @@ impl Segment {
         Ok(Self {
             kind: SegmentKind::Line,
             curve: SplineCurve::clamped(1, &[from, to], None, None)?,
+            circle: None,
         })
     }
 
@@ -147,6 +154,7 @@ impl Segment {
         Ok(Self {
             kind: SegmentKind::Arc,
             curve: SplineCurve::clamped(2, &points, Some(&weights), Some(knots))?,
+            circle: Some((center, r)),
         })
     }
 
@@ -160,7 +168,31 @@ impl Segment {
                 why: "false: a profile's segments are open curves",
             });
         }
-        Ok(Self { kind, curve })
+        Ok(Self {
+            kind,
+            curve,
+            circle: None,
+        })
+    }
+
+    /// A segment from its parts (the caller vouches that `curve` is open, of `kind`, and on
+    /// `circle` where one is given).
+    pub(crate) fn from_parts(
+        kind: SegmentKind,
+        curve: SplineCurve,
+        circle: Option<([f64; 2], f64)>,
+    ) -> Self {
+        Self {
+            kind,
+            curve,
+            circle,
+        }
+    }
+
+    /// The centre and radius of a circular arc as defined (`None` for other kinds): arcs of
+    /// one circle carry the same ones exactly.
+    pub fn circle(&self) -> Option<([f64; 2], f64)> {
+        self.circle
     }
 
     /// What the segment was given as.

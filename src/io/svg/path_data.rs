@@ -1,0 +1,354 @@
+//! SVG path data (`d`) as subpaths of exact segments: lines, quadratic and cubic Béziers, and
+//! elliptical arcs converted from SVG's endpoint form to their centre form (SVG 1.1, Appendix
+//! F.6.5, with the out-of-range radii corrected as F.6.6 says) and made exact rational
+//! quadratic pieces. The syntax is `svgtypes`'; the geometry is ours.
+
+use curve::{Segment, SegmentKind, SplineCurve, V2};
+use std::f64::consts::TAU;
+use svgtypes::{PathParser, PathSegment};
+
+/// One subpath: its segments, and whether it was closed by `Z`.
+#[derive(Debug)]
+pub(super) struct Subpath {
+    pub(super) segments: Vec<Segment>,
+    pub(super) closed: bool,
+}
+
+/// Why path data could not be used: a message for the reader's error.
+pub(super) type PathError = String;
+
+/// The subpaths of path data `d`, in the element's own coordinates. Zero-length pieces are
+/// dropped (design tools write them); `max_segments` bounds the work.
+pub(super) fn subpaths(d: &str, max_segments: usize) -> Result<Vec<Subpath>, PathError> {
+    let mut b = Builder::default();
+    for (k, item) in PathParser::from(d).enumerate() {
+        let seg = item.map_err(|e| format!("invalid path data: {e}"))?;
+        b.command(seg).map_err(|e| format!("command {k}: {e}"))?;
+        if b.count > max_segments {
+            return Err(format!("more than {max_segments} segments"));
+        }
+    }
+    b.finish_subpath(false);
+    Ok(b.out)
+}
+
+/// The state of the path data walk.
+#[derive(Default)]
+struct Builder {
+    out: Vec<Subpath>,
+    current: Vec<Segment>,
+    /// The current point and the current subpath's start.
+    at: V2,
+    start: V2,
+    /// The last control point of a previous cubic (for `S`) or quadratic (for `T`).
+    last_cubic: Option<V2>,
+    last_quad: Option<V2>,
+    count: usize,
+}
+
+impl Builder {
+    fn command(&mut self, seg: PathSegment) -> Result<(), String> {
+        let at = self.at;
+        let pt = |abs: bool, x: f64, y: f64| -> Result<V2, String> {
+            let p = if abs {
+                V2::new(x, y)
+            } else {
+                V2::new(at.x + x, at.y + y)
+            };
+            finite(p)
+        };
+        let (mut cubic, mut quad) = (None, None);
+        match seg {
+            PathSegment::MoveTo { abs, x, y } => {
+                self.finish_subpath(false);
+                let p = pt(abs, x, y)?;
+                self.at = p;
+                self.start = p;
+            }
+            PathSegment::LineTo { abs, x, y } => self.line(pt(abs, x, y)?)?,
+            PathSegment::HorizontalLineTo { abs, x } => {
+                let to = if abs { x } else { at.x + x };
+                self.line(finite(V2::new(to, at.y))?)?;
+            }
+            PathSegment::VerticalLineTo { abs, y } => {
+                let to = if abs { y } else { at.y + y };
+                self.line(finite(V2::new(at.x, to))?)?;
+            }
+            PathSegment::CurveTo {
+                abs,
+                x1,
+                y1,
+                x2,
+                y2,
+                x,
+                y,
+            } => {
+                let (c1, c2, to) = (pt(abs, x1, y1)?, pt(abs, x2, y2)?, pt(abs, x, y)?);
+                self.bezier(&[at, c1, c2, to])?;
+                cubic = Some(c2);
+            }
+            PathSegment::SmoothCurveTo { abs, x2, y2, x, y } => {
+                // The first control point mirrors the previous cubic's second one.
+                let c1 = self.last_cubic.map_or(at, |c| at * 2.0 - c);
+                let (c2, to) = (pt(abs, x2, y2)?, pt(abs, x, y)?);
+                self.bezier(&[at, c1, c2, to])?;
+                cubic = Some(c2);
+            }
+            PathSegment::Quadratic { abs, x1, y1, x, y } => {
+                let (c, to) = (pt(abs, x1, y1)?, pt(abs, x, y)?);
+                self.bezier(&[at, c, to])?;
+                quad = Some(c);
+            }
+            PathSegment::SmoothQuadratic { abs, x, y } => {
+                let c = self.last_quad.map_or(at, |c| at * 2.0 - c);
+                let to = pt(abs, x, y)?;
+                self.bezier(&[at, c, to])?;
+                quad = Some(c);
+            }
+            PathSegment::EllipticalArc {
+                abs,
+                rx,
+                ry,
+                x_axis_rotation,
+                large_arc,
+                sweep,
+                x,
+                y,
+            } => {
+                let to = pt(abs, x, y)?;
+                self.arc(to, rx, ry, x_axis_rotation, large_arc, sweep)?;
+            }
+            PathSegment::ClosePath { .. } => {
+                let start = self.start;
+                if self.at != start {
+                    self.line(start)?;
+                }
+                self.finish_subpath(true);
+                self.at = start;
+            }
+        }
+        self.last_cubic = cubic;
+        self.last_quad = quad;
+        Ok(())
+    }
+
+    fn push(&mut self, seg: Segment, to: V2) {
+        self.current.push(seg);
+        self.count += 1;
+        self.at = to;
+    }
+
+    fn line(&mut self, to: V2) -> Result<(), String> {
+        if to == self.at {
+            return Ok(());
+        }
+        let seg = Segment::line(self.at.arr(), to.arr()).map_err(|e| e.to_string())?;
+        self.push(seg, to);
+        Ok(())
+    }
+
+    fn bezier(&mut self, pts: &[V2]) -> Result<(), String> {
+        let to = pts[pts.len() - 1];
+        // (All control points at one place: nothing drawn.)
+        if pts.iter().all(|&p| p == self.at) {
+            return Ok(());
+        }
+        let arr: Vec<[f64; 2]> = pts.iter().map(|p| p.arr()).collect();
+        let c = SplineCurve::clamped(arr.len() - 1, &arr, None, None).map_err(|e| e.to_string())?;
+        let seg = Segment::spline(SegmentKind::Bezier, c).map_err(|e| e.to_string())?;
+        self.push(seg, to);
+        Ok(())
+    }
+
+    /// SVG's elliptical arc from the current point to `to` (F.6.5, F.6.6).
+    fn arc(
+        &mut self,
+        to: V2,
+        rx: f64,
+        ry: f64,
+        rotation_deg: f64,
+        large: bool,
+        sweep: bool,
+    ) -> Result<(), String> {
+        let from = self.at;
+        if from == to {
+            return Ok(());
+        }
+        let (mut rx, mut ry) = (rx.abs(), ry.abs());
+        if !(rx.is_finite() && ry.is_finite() && rotation_deg.is_finite()) {
+            return Err("an arc's radii and rotation must be finite".into());
+        }
+        // A zero radius makes the arc a straight line (F.6.6).
+        if rx == 0.0 || ry == 0.0 {
+            return self.line(to);
+        }
+        let phi = rotation_deg.to_radians();
+        let (s, c) = phi.sin_cos();
+        let half = (from - to) * 0.5;
+        let x1 = c * half.x + s * half.y;
+        let y1 = -s * half.x + c * half.y;
+        // Radii too small to reach: scaled up until they just do.
+        let lambda = (x1 / rx).powi(2) + (y1 / ry).powi(2);
+        if lambda > 1.0 {
+            let k = lambda.sqrt();
+            rx *= k;
+            ry *= k;
+        }
+        let (rx2, ry2) = (rx * rx, ry * ry);
+        let num = rx2 * ry2 - rx2 * y1 * y1 - ry2 * x1 * x1;
+        let den = rx2 * y1 * y1 + ry2 * x1 * x1;
+        let mut coef = (num / den).max(0.0).sqrt();
+        if large == sweep {
+            coef = -coef;
+        }
+        let (cx1, cy1) = (coef * rx * y1 / ry, -coef * ry * x1 / rx);
+        let mid = (from + to) * 0.5;
+        let center = V2::new(c * cx1 - s * cy1 + mid.x, s * cx1 + c * cy1 + mid.y);
+        let angle = |ux: f64, uy: f64| uy.atan2(ux);
+        let theta1 = angle((x1 - cx1) / rx, (y1 - cy1) / ry);
+        let theta2 = angle((-x1 - cx1) / rx, (-y1 - cy1) / ry);
+        let mut delta = (theta2 - theta1).rem_euclid(TAU);
+        if !sweep && delta > 0.0 {
+            delta -= TAU;
+        }
+        let seg = Segment::elliptic_arc(center.arr(), rx, ry, phi, theta1, theta1 + delta)
+            .map_err(|e| e.to_string())?;
+        self.push(seg, to);
+        Ok(())
+    }
+
+    fn finish_subpath(&mut self, closed: bool) {
+        if !self.current.is_empty() {
+            self.out.push(Subpath {
+                segments: std::mem::take(&mut self.current),
+                closed,
+            });
+        }
+    }
+}
+
+/// A point with finite coordinates.
+fn finite(p: V2) -> Result<V2, String> {
+    if p.x.is_finite() && p.y.is_finite() {
+        Ok(p)
+    } else {
+        Err(format!(
+            "coordinates must be finite, got ({}, {})",
+            p.x, p.y
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use curve::ParamCurve;
+
+    fn one(d: &str) -> Vec<Subpath> {
+        subpaths(d, 1000).unwrap_or_else(|e| panic!("{d}: {e}"))
+    }
+
+    #[test]
+    fn relative_and_absolute_commands_agree() {
+        let abs = one(
+            "M 10 10 L 20 10 H 30 V 20 C 30 30 20 30 20 20 S 10 10 10 15 Q 5 15 5 10 T 10 10 Z",
+        );
+        let rel = one(
+            "m 10 10 l 10 0 h 10 v 10 c 0 10 -10 10 -10 0 s -10 -10 -10 -5 q -5 0 -5 -5 t 5 0 z",
+        );
+        assert_eq!(abs.len(), 1);
+        assert!(abs[0].closed && rel[0].closed);
+        assert_eq!(abs[0].segments.len(), rel[0].segments.len());
+        for (a, r) in abs[0].segments.iter().zip(&rel[0].segments) {
+            for k in 0..=4 {
+                let x = k as f64 / 4.0;
+                let (pa, pr) = (a.jet(x).p, r.jet(x).p);
+                assert!((pa - pr).norm() < 1e-12, "{pa:?} {pr:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn smooth_commands_mirror_the_previous_control_point() {
+        let s = one("M 0 0 C 0 1 1 1 1 0 S 2 -1 2 0");
+        let second = s[0].segments[1].curve().control_points();
+        assert_eq!(second[1], [1.0, -1.0]);
+        // After a non-curve command the first control point is the current point.
+        let s = one("M 0 0 L 1 0 S 2 1 3 0");
+        assert_eq!(s[0].segments[1].curve().control_points()[1], [1.0, 0.0]);
+    }
+
+    #[test]
+    fn arcs_follow_the_flags_and_reach_their_end() {
+        // A half circle of radius 1 from (0,0) to (2,0), each sweep, and the large-arc cases
+        // of a radius-2 circle.
+        for (d, y_mid) in [
+            ("M 0 0 A 1 1 0 0 1 2 0", -1.0),
+            ("M 0 0 A 1 1 0 0 0 2 0", 1.0),
+        ] {
+            let s = one(d);
+            let arc = &s[0].segments[0];
+            assert_eq!(arc.kind(), SegmentKind::Arc);
+            let m = arc.jet(0.5).p;
+            assert!(
+                (m.x - 1.0).abs() < 1e-12 && (m.y - y_mid).abs() < 1e-12,
+                "{d}: {m:?}"
+            );
+            assert!((arc.end() - V2::new(2.0, 0.0)).norm() < 1e-12);
+        }
+        let small = one("M 0 0 A 2 2 0 0 1 2 0");
+        let large = one("M 0 0 A 2 2 0 1 1 2 0");
+        let len = |s: &Segment| {
+            (0..4096)
+                .map(|k| (s.jet((k + 1) as f64 / 4096.0).p - s.jet(k as f64 / 4096.0).p).norm())
+                .sum::<f64>()
+        };
+        let (a, b) = (len(&small[0].segments[0]), len(&large[0].segments[0]));
+        assert!(
+            (a + b - 2.0 * std::f64::consts::PI * 2.0).abs() < 1e-5,
+            "{a} + {b}"
+        );
+        assert!((a - 2.0 * std::f64::consts::PI / 3.0).abs() < 1e-5, "{a}");
+        // Radii too small are scaled up: a half circle.
+        let s = one("M 0 0 A 0.1 0.1 0 0 1 2 0");
+        assert!((s[0].segments[0].jet(0.5).p - V2::new(1.0, -1.0)).norm() < 1e-12);
+        // Zero radius: a line.
+        let s = one("M 0 0 A 0 1 0 0 1 2 0");
+        assert_eq!(s[0].segments[0].kind(), SegmentKind::Line);
+    }
+
+    #[test]
+    fn rotated_elliptic_arcs_pass_through_their_ends() {
+        let s = one("M 3 1 A 4 2 30 1 0 -1 2");
+        let e = &s[0].segments[0];
+        assert_eq!(e.kind(), SegmentKind::EllipticArc);
+        assert!((e.start() - V2::new(3.0, 1.0)).norm() < 1e-12);
+        assert!((e.end() - V2::new(-1.0, 2.0)).norm() < 1e-12);
+    }
+
+    #[test]
+    fn subpaths_split_at_moves_and_closes() {
+        let s = one("M 0 0 L 1 0 L 1 1 Z M 5 5 L 6 5 L 6 6 z L 7 7");
+        assert_eq!(s.len(), 3);
+        assert!(s[0].closed && s[1].closed && !s[2].closed);
+        // After Z the next command starts from the closed subpath's start.
+        assert_eq!(s[2].segments[0].start(), V2::new(5.0, 5.0));
+        // Zero-length pieces are dropped; the closing line is drawn only where needed.
+        let s = one("M 0 0 L 0 0 L 1 0 L 0 1 L 0 0 Z");
+        assert_eq!(s[0].segments.len(), 3);
+    }
+
+    #[test]
+    fn bad_path_data_is_an_error_not_a_panic() {
+        for d in [
+            "L 1 1",
+            "M 0 0 L",
+            "M 0 0 X 1 1",
+            "M 1e400 0 L 1 1",
+            "M 0 0 A 1 1 0 2 0 1 1",
+        ] {
+            assert!(subpaths(d, 1000).is_err(), "{d}");
+        }
+        assert!(subpaths("M 0 0 L 1 0 L 2 0 L 3 0", 2).is_err());
+    }
+}

@@ -1,9 +1,9 @@
 //! `curvekit demo`: the built-in examples (embedded, so it runs from any directory): the shapes
 //! of Jia's papers and a few B-spline/NURBS curves (inflections, antipodal pairs), then the
-//! bisector figures of Elber & Kim.
+//! bisector figures of Elber & Kim, then part outlines with corners (`demo_profiles`).
 
 use super::report::{antipodal_figure, bisector_figure, curve_json, draw_curve, time_line};
-use super::{print_out, timing, write_file, Common, Failure};
+use super::{demo_profiles, print_out, timing, write_file, Common, Failure};
 use antipodal::Inflections;
 use curvekit::io::{parse_curve, Curve};
 use curvekit::svg::Figure;
@@ -114,6 +114,7 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         .iter()
         .map(|(name, c1, c2)| bisector_row(name, *c1, *c2, out, common))
         .collect::<Result<Vec<_>, _>>()?;
+    let profiles = demo_profiles::rows(out, common)?;
     let stats = common.time.then(|| {
         timing::measure(|| {
             shapes
@@ -125,13 +126,16 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         })
     });
     let text = if common.json {
-        demo_json(&shapes, &bisectors, stats.as_ref())
+        demo_json(&shapes, &bisectors, &profiles, stats.as_ref())
     } else {
-        table(&shapes, &bisectors, out, stats.as_ref())
+        table(&shapes, &bisectors, &profiles, out, stats.as_ref())
     };
     print_out(&text)?;
     // The demo shows the state of every example; one that fails is reported, not fatal.
-    for e in errors(&shapes, &bisectors) {
+    for e in errors(&shapes, &bisectors)
+        .into_iter()
+        .chain(demo_profiles::errors(&profiles))
+    {
         eprintln!("curvekit: warning: demo example {e}");
     }
     Ok(())
@@ -298,6 +302,7 @@ fn cell<T>(c: &Cell<T>, show: impl Fn(&T) -> String) -> String {
 fn table(
     shapes: &[ShapeRow],
     bisectors: &[BisectorRow],
+    profiles: &[demo_profiles::ProfileRow],
     out: &Path,
     stats: Option<&timing::Stats>,
 ) -> String {
@@ -343,7 +348,11 @@ fn table(
             branches
         );
     }
-    for e in errors(shapes, bisectors) {
+    s.push_str(&demo_profiles::table(profiles));
+    for e in errors(shapes, bisectors)
+        .into_iter()
+        .chain(demo_profiles::errors(profiles))
+    {
         let _ = writeln!(s, "failed: {e}");
     }
     let _ = writeln!(s, "figures written to {}", out.display());
@@ -356,6 +365,7 @@ fn table(
 fn demo_json(
     shapes: &[ShapeRow],
     bisectors: &[BisectorRow],
+    profiles: &[demo_profiles::ProfileRow],
     stats: Option<&timing::Stats>,
 ) -> String {
     let err = |e: &String| json!({ "error": e });
@@ -384,7 +394,8 @@ fn demo_json(
             })
         })
         .collect();
-    let mut doc = json!({ "shapes": shapes, "bisectors": bisectors });
+    let profiles = demo_profiles::json(profiles);
+    let mut doc = json!({ "shapes": shapes, "bisectors": bisectors, "profiles": profiles });
     if let (Some(s), Some(map)) = (stats, doc.as_object_mut()) {
         map.insert("stats".into(), json!(s));
     }

@@ -2,6 +2,7 @@
 
 mod commands;
 mod demo;
+mod demo_profiles;
 mod report;
 mod timing;
 

@@ -258,9 +258,9 @@ pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, Curv
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    let chains = match ext.as_deref() {
-        Some("svg") => svg::chains(&file, &std::fs::read_to_string(path).map_err(unreadable)?)?,
-        Some("dxf") => dxf::chains(&file, &std::fs::read(path).map_err(unreadable)?)?,
+    let format = match ext.as_deref() {
+        Some("svg") => DrawingFormat::Svg,
+        Some("dxf") => DrawingFormat::Dxf,
         _ => {
             if pick.is_some() {
                 return Err(drawing::error(
@@ -277,7 +277,44 @@ pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, Curv
             return parse_curve(&file, &text);
         }
     };
-    drawing::pick_profile(&file, drawing::profiles(&file, chains)?, pick)
+    let bytes = std::fs::read(path).map_err(unreadable)?;
+    parse_drawing(&file, format, &bytes, pick)
+}
+
+/// The formats of drawing files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DrawingFormat {
+    /// SVG (UTF-8 XML).
+    Svg,
+    /// ASCII DXF.
+    Dxf,
+}
+
+/// The profile a command takes from a drawing's bytes (see [`read_curve_picked`]); `file`
+/// names it in errors.
+///
+/// ```
+/// use curvekit::io::{parse_drawing, DrawingFormat, Shape};
+/// let svg = br#"<svg xmlns="http://www.w3.org/2000/svg"><rect width="4" height="2"/></svg>"#;
+/// let c = parse_drawing("r.svg", DrawingFormat::Svg, svg, None).unwrap();
+/// assert!(matches!(c.shape, Shape::Profile(ref p) if p.segments().len() == 4));
+/// ```
+pub fn parse_drawing(
+    file: &str,
+    format: DrawingFormat,
+    bytes: &[u8],
+    pick: Option<usize>,
+) -> Result<Curve, CurveFileError> {
+    let chains = match format {
+        DrawingFormat::Svg => {
+            let text = std::str::from_utf8(bytes).map_err(|e| {
+                drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
+            })?;
+            svg::chains(file, text)?
+        }
+        DrawingFormat::Dxf => dxf::chains(file, bytes)?,
+    };
+    drawing::pick_profile(file, drawing::profiles(file, chains)?, pick)
 }
 
 /// Validates the text of a curve file; `file` names it in errors.

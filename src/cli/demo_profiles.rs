@@ -1,0 +1,174 @@
+//! The profile section of `curvekit demo`: part outlines with corners, from curve files and
+//! drawings (embedded), with their antipodal pairs (corner pairs included), families,
+//! inflections and corners.
+
+use super::report::{curve_json, profile_antipodal_figure};
+use super::{write_file, Common, Failure};
+use antipodal::ProfileAntipodal;
+use curvekit::io::{parse_curve, parse_drawing, Curve, DrawingFormat, Shape};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// An embedded profile: name, format (`None`: a curve file), file text.
+type Embedded = (&'static str, Option<DrawingFormat>, &'static str);
+
+/// The examples: curve files, then drawings as design tools write them.
+const PROFILES: &[Embedded] = &[
+    (
+        "profile-cam",
+        None,
+        include_str!("../../fixtures/profile-cam.json"),
+    ),
+    (
+        "profile-bracket",
+        None,
+        include_str!("../../fixtures/profile-bracket.json"),
+    ),
+    (
+        "profile-rounded-slot",
+        None,
+        include_str!("../../fixtures/profile-rounded-slot.json"),
+    ),
+    (
+        "drawing-glyph-d",
+        Some(DrawingFormat::Svg),
+        include_str!("../../fixtures/drawing-glyph-d.svg"),
+    ),
+    (
+        "drawing-pocket",
+        Some(DrawingFormat::Svg),
+        include_str!("../../fixtures/drawing-pocket.svg"),
+    ),
+    (
+        "drawing-gear",
+        Some(DrawingFormat::Svg),
+        include_str!("../../fixtures/drawing-gear.svg"),
+    ),
+];
+
+/// One example's results.
+pub(super) struct ProfileRow {
+    name: &'static str,
+    curve: Curve,
+    result: Result<ProfileAntipodal, String>,
+    svg: String,
+}
+
+/// Runs every profile example, writing its figure into `out`.
+pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<ProfileRow>, Failure> {
+    PROFILES
+        .iter()
+        .map(|&(name, format, text)| {
+            let file = format!("demo:{name}");
+            // (A drawing's first profile: the outer contour of the glyph and the pocket.)
+            let curve = match format {
+                None => parse_curve(&file, text)?,
+                Some(f) => parse_drawing(&file, f, text.as_bytes(), Some(0))?,
+            };
+            let result = match &curve.shape {
+                Shape::Profile(p) => {
+                    antipodal::profile_antipodal(p, &common.options()).map_err(|e| e.to_string())
+                }
+                _ => Err("not a profile".to_string()),
+            };
+            let svg = out.join(format!("{name}.svg"));
+            if let Ok(r) = &result {
+                let title = format!(
+                    "{name}: {} antipodal pairs, {} families, {} corners",
+                    r.pairs.len(),
+                    r.families.len(),
+                    r.corners.len()
+                );
+                write_file(&svg, &profile_antipodal_figure(&curve, r, title))?;
+            }
+            Ok(ProfileRow {
+                name,
+                curve,
+                result,
+                svg: svg.display().to_string(),
+            })
+        })
+        .collect()
+}
+
+/// The table of the profile section.
+pub(super) fn table(rows: &[ProfileRow]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\n{:<22} {:>8} {:>7} {:>11} {:>5} {:>12} {:>8} {:>9}",
+        "profile",
+        "segments",
+        "corners",
+        "inflections",
+        "pairs",
+        "corner pairs",
+        "families",
+        "certified"
+    );
+    for r in rows {
+        let segments = match &r.curve.shape {
+            Shape::Profile(p) => p.segments().len(),
+            _ => 0,
+        };
+        match &r.result {
+            Ok(a) => {
+                let corner_pairs = a.pairs.iter().filter(|p| p.corner.contains(&true)).count();
+                let _ = writeln!(
+                    s,
+                    "{:<22} {:>8} {:>7} {:>11} {:>5} {:>12} {:>8} {:>9}",
+                    r.name,
+                    segments,
+                    a.corners.len(),
+                    a.inflections.len(),
+                    a.pairs.len(),
+                    corner_pairs,
+                    a.families.len(),
+                    if a.certified { "yes" } else { "no" }
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(s, "{:<22} {:>8} failed: {e}", r.name, segments);
+            }
+        }
+    }
+    s
+}
+
+/// The failures of the profile section, one line each.
+pub(super) fn errors(rows: &[ProfileRow]) -> Vec<String> {
+    rows.iter()
+        .filter_map(|r| {
+            r.result
+                .as_ref()
+                .err()
+                .map(|e| format!("{}: antipodal: {e}", r.name))
+        })
+        .collect()
+}
+
+/// The profile section of the JSON document.
+pub(super) fn json(rows: &[ProfileRow]) -> Value {
+    rows.iter()
+        .map(|r| {
+            let result = match &r.result {
+                Ok(a) => json!({
+                    "pairs": a.pairs.len(),
+                    "corner_pairs": a.pairs.iter().filter(|p| p.corner.contains(&true)).count(),
+                    "families": a.families.len(),
+                    "inflections": a.inflections.len(),
+                    "corners": a.corners.len(),
+                    "certified": a.certified,
+                }),
+                Err(e) => json!({ "error": e }),
+            };
+            json!({
+                "name": r.name,
+                "curve": curve_json(&r.curve),
+                "antipodal": result,
+                "svg": r.svg,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,114 @@
+//! Antipodal pairs of profiles (issue 18): a profile of 8 to 20 segments should answer in the
+//! same order of time per pair as a smooth B-spline of the same complexity. Profiles: the
+//! rounded slot (8 segments: lines and arcs), the bracket (7: lines, a fillet arc, a Bézier),
+//! a 12-segment chain of cubic Béziers with corners, and the gear drawing (48 segments); against
+//! periodic cubic B-splines of 8 and 12 spans. Each is reported with its number of pairs so
+//! that the time per pair can be compared.
+#![allow(missing_docs, clippy::unwrap_used)]
+
+use antipodal::{antipodal, profile_antipodal, Options, Profile, Segment, SplineCurve};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use curve::{SegmentKind, V2};
+use curvekit::io::{read_curve_picked, Shape};
+use std::path::Path;
+use std::time::Duration;
+
+fn fixture(name: &str) -> Profile {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fixtures")
+        .join(name);
+    let pick = (!name.ends_with(".json")).then_some(0);
+    match read_curve_picked(&path, pick).unwrap().shape {
+        Shape::Profile(p) => *p,
+        _ => unreachable!(),
+    }
+}
+
+/// Deterministic pseudo-random numbers in [0, 1).
+fn rng(seed: u64) -> impl FnMut() -> f64 {
+    let mut x = seed;
+    move || {
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// A closed chain of `n` cubic Béziers round a star, with corners at every joint.
+fn bezier_chain(n: usize) -> Profile {
+    let mut rnd = rng(7);
+    let joints: Vec<V2> = (0..n)
+        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * (1.0 + 0.5 * rnd()))
+        .collect();
+    let segs = (0..n)
+        .map(|i| {
+            let (a, b) = (joints[i], joints[(i + 1) % n]);
+            let w = 0.3 * (rnd() - 0.5);
+            let pts = [
+                a.arr(),
+                (a + (b - a) * 0.3 + (b - a).perp() * w).arr(),
+                (a + (b - a) * 0.7 - (b - a).perp() * w).arr(),
+                b.arr(),
+            ];
+            let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
+            Segment::spline(SegmentKind::Bezier, c).unwrap()
+        })
+        .collect();
+    Profile::new(segs, None).unwrap()
+}
+
+/// A random star-shaped periodic cubic B-spline with `n` control points.
+fn star(n: usize, seed: u64) -> SplineCurve {
+    let mut rnd = rng(seed);
+    let pts: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (i as f64 + 0.8 * (rnd() - 0.5)) / n as f64;
+            let r = 0.35 + 0.65 * rnd();
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    SplineCurve::periodic(3, &pts, None).unwrap()
+}
+
+fn profiles(c: &mut Criterion) {
+    let opts = Options::default();
+    let cases = [
+        (
+            "profile_rounded_slot_8",
+            fixture("profile-rounded-slot.json"),
+        ),
+        ("profile_bracket_7", fixture("profile-bracket.json")),
+        ("profile_bezier_chain_12", bezier_chain(12)),
+        ("profile_gear_48", fixture("drawing-gear.svg")),
+    ];
+    for (name, p) in &cases {
+        let r = profile_antipodal(p, &opts).unwrap();
+        assert!(r.complete, "{name}");
+        eprintln!(
+            "{name}: {} pairs, {} families",
+            r.pairs.len(),
+            r.families.len()
+        );
+        c.bench_function(name, |b| {
+            b.iter(|| profile_antipodal(black_box(p), &opts).unwrap())
+        });
+    }
+    for (name, s) in [
+        ("bspline_star_8", star(8, 3)),
+        ("bspline_star_12", star(12, 5)),
+    ] {
+        let r = antipodal(&s, &opts).unwrap();
+        eprintln!("{name}: {} pairs", r.pairs.len());
+        c.bench_function(&format!("{name}_cold"), |b| {
+            b.iter(|| antipodal(black_box(&s), &opts).unwrap())
+        });
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().measurement_time(Duration::from_secs(3)).warm_up_time(Duration::from_secs(1));
+    targets = profiles
+}
+criterion_main!(benches);

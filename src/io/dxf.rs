@@ -91,9 +91,11 @@ const PLAN_NORMAL: f64 = 1e-12;
 /// radius `c (|b| + 1/|b|) / 4` would be so large that its computed ends miss the vertices.
 const FLAT_BULGE: f64 = 1e-9;
 
-/// Room for the rounding of a sweep (radians) against a full turn: an arc or ellipse whose
-/// sweep is within this of 2π is a closed one (as `Segment::arc` takes it).
-const FULL_TURN: f64 = 1e-12;
+/// How near (radians) a sweep may come to nothing or to a full turn and be a full turn: writers
+/// round angles (the `dxf` crate's writer to 12 decimals, putting 2π at 6.28318530718, past
+/// it by 4e-13), so an arc or ellipse from 0 to 2π may come out a sliver or a turn short. An
+/// arc of a billionth of a radian is not drawn on purpose.
+const ANGLE_ROUNDING: f64 = 1e-9;
 
 /// The mirror `x ↦ −x`: the object coordinate system of extrusion direction (0, 0, −1).
 const MIRROR: Affine = Affine([-1.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
@@ -346,7 +348,10 @@ fn type_name(e: &EntityType) -> Option<&'static str> {
 enum Shape {
     /// One segment: open (joined to others) or closed (a profile by itself); `flagged`: a
     /// spline flagged closed or periodic, which must end where it starts.
-    Segment { segment: Box<Segment>, flagged: bool },
+    Segment {
+        segment: Box<Segment>,
+        flagged: bool,
+    },
     /// A polyline's vertices `(point, bulge)` in its object coordinates, mirrored in x or not,
     /// and whether it is closed.
     Polyline {
@@ -465,13 +470,10 @@ fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Option<Shape>, Entit
             let start = number("start angle", a.start_angle)?.rem_euclid(360.0);
             let end = number("end angle", a.end_angle)?;
             // Counterclockwise from start to end; equal angles are a full turn.
-            let mut sweep = (end - a.start_angle).rem_euclid(360.0);
-            if sweep == 0.0 {
-                sweep = 360.0;
-            }
+            let sweep = full_turn((end - a.start_angle).rem_euclid(360.0).to_radians());
             let start = start.to_radians();
-            let seg = Segment::arc(center, r, start, start + sweep.to_radians())
-                .map_err(|e| curve_error("", e))?;
+            let seg =
+                Segment::arc(center, r, start, start + sweep).map_err(|e| curve_error("", e))?;
             placed(seg, mirror)?
         }
         EntityType::Circle(c) => {
@@ -558,6 +560,16 @@ fn polyline(
     }))
 }
 
+/// A counterclockwise sweep in `[0, 2π)` (radians), or the full turn where it is within
+/// [`ANGLE_ROUNDING`] of nothing or of a full turn.
+fn full_turn(sweep: f64) -> f64 {
+    if sweep <= ANGLE_ROUNDING || sweep >= TAU - ANGLE_ROUNDING {
+        TAU
+    } else {
+        sweep
+    }
+}
+
 /// An `ELLIPSE` in world coordinates.
 fn ellipse(e: &dxf::entities::Ellipse) -> Result<Segment, EntityError> {
     let flip = mirrored([e.normal.x, e.normal.y, e.normal.z])?;
@@ -574,10 +586,7 @@ fn ellipse(e: &dxf::entities::Ellipse) -> Result<Segment, EntityError> {
     let end = number("end parameter", e.end_parameter)?;
     // Counterclockwise about the extrusion direction from start to end; equal parameters
     // (or a whole turn apart) are the full ellipse.
-    let mut sweep = (end - start).rem_euclid(TAU);
-    if sweep == 0.0 || sweep >= TAU - FULL_TURN {
-        sweep = TAU;
-    }
+    let sweep = full_turn((end - start).rem_euclid(TAU));
     let start = start.rem_euclid(TAU);
     // With extrusion (0, 0, −1) the minor axis is (0, 0, −1) × major: the point at eccentric
     // angle t is the counterclockwise ellipse's at −t.

@@ -93,23 +93,6 @@ fn one_curve(curves: &[&Curve], command: &str) -> Result<(), Failure> {
     }
 }
 
-/// Common tangents of profiles (lines through corners) are not implemented yet: a profile is
-/// refused by name rather than searched as a smooth curve.
-fn smooth_only(curves: &[&Curve], command: &str) -> Result<(), Failure> {
-    one_curve(curves, command)?;
-    match curves.iter().find(|c| matches!(c.shape, Shape::Profile(_))) {
-        Some(c) => Err(Failure::Input(CurveFileError {
-            file: c.file.clone(),
-            field: "kind".into(),
-            problem: Problem::Unsupported(format!(
-                "{command} on profiles is not implemented yet (inflections and antipodal \
-                 are); give a smooth curve, a line or an arc"
-            )),
-        })),
-        None => Ok(()),
-    }
-}
-
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     let curve = read_curve_picked(path, common.pick)?;
@@ -182,7 +165,10 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
         read_curve_picked(path2, common.pick)?,
     );
     let both = [&c1, &c2];
-    smooth_only(&both, "tangents")?;
+    one_curve(&both, "tangents")?;
+    if both.iter().any(|c| matches!(c.shape, Shape::Profile(_))) {
+        return run_profile_tangents(&c1, &c2, common);
+    }
     let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
     let opts = common.options();
     let (a, b) = antipodal::prepare_pair(p1, p2);
@@ -210,6 +196,69 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
     } else {
         report::tangents_text(&both, &found, stats.as_ref())
     })
+}
+
+/// `tangents` where one curve or both are profiles: the other is taken as a one-segment
+/// profile (a line, an arc, an open or clamped spline).
+fn run_profile_tangents(c1: &Curve, c2: &Curve, common: &Common) -> Result<(), Failure> {
+    let both = [c1, c2];
+    let (a, b) = (as_profile(c1)?, as_profile(c2)?);
+    let opts = common.options();
+    let run = || antipodal::profile_tangents(&a, &b, &opts);
+    let found = run().map_err(|e| antipodal_failure(e, &both))?;
+    let stats = common.time.then(|| timing::measure_both(run, run));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, c1);
+        draw_curve(&mut fig, c2);
+        for p in [&a, &b] {
+            p.corners()
+                .for_each(|j| fig.corner(curvekit::curve::ParamCurve::jet(p, j.u).p.arr()));
+        }
+        for (k, line) in found.lines.iter().enumerate() {
+            fig.segment(line.p, line.q, Some((k + 1).to_string()));
+        }
+        fig.title(format!("{} common tangent lines", found.lines.len()));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, &both, stats.as_ref())
+    } else {
+        report::profile_tangents_text(&both, &found, stats.as_ref())
+    })
+}
+
+/// A curve as a profile: itself, or one segment (a line, an arc, a spline that is not
+/// periodic); an analytic shape or a periodic spline is refused by name.
+fn as_profile(c: &Curve) -> Result<curvekit::curve::Profile, Failure> {
+    use curvekit::curve::{Profile, Segment, SegmentKind};
+    let refuse = |why: &str| {
+        Failure::Input(CurveFileError {
+            file: c.file.clone(),
+            field: "kind".into(),
+            problem: Problem::Unsupported(format!(
+                "tangents with a profile: {why}; give it as a profile or an open or clamped \
+                 spline"
+            )),
+        })
+    };
+    let segment = match &c.shape {
+        Shape::Profile(p) => return Ok(p.as_ref().clone()),
+        Shape::Segment(s) => s.as_ref().clone(),
+        Shape::Spline(s) if !s.periodic => Segment::spline(SegmentKind::BSpline, s.plane.clone())
+            .map_err(|e| refuse(&e.to_string()))?,
+        Shape::Spline(_) => {
+            return Err(refuse("a periodic spline has no ends to make a segment of"))
+        }
+        Shape::Analytic(a) => {
+            return Err(refuse(&format!(
+                "an analytic {} is not a segment",
+                a.kind()
+            )))
+        }
+        Shape::Region(_) => return Err(refuse("a region is not a curve")),
+    };
+    Profile::new(vec![segment], None).map_err(|e| refuse(&e.to_string()))
 }
 
 pub(super) fn run_bisector(

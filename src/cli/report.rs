@@ -3,7 +3,7 @@
 use super::timing::Stats;
 use antipodal::{
     Antipodal, CornerKind, Inflection, InflectionKind, Inflections, ProfileAntipodal,
-    ProfileInflections, Tangents,
+    ProfileInflections, ProfileTangents, Tangents,
 };
 use curvekit::curve::ParamCurve;
 use curvekit::io::{Curve, Shape};
@@ -348,6 +348,53 @@ pub(crate) fn tangents_text(curves: &[&Curve], r: &Tangents, stats: Option<&Stat
             n(l.p[1]),
             n(l.q[0]),
             n(l.q[1])
+        );
+    }
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+    s
+}
+
+/// The readable common-tangent report of profiles: each line with its corners and segments.
+pub(crate) fn profile_tangents_text(
+    curves: &[&Curve],
+    r: &ProfileTangents,
+    stats: Option<&Stats>,
+) -> String {
+    let mut s = String::new();
+    for (k, c) in curves.iter().enumerate() {
+        curve_line(&mut s, &format!("curve {}:", k + 1), c);
+    }
+    let _ = writeln!(
+        s,
+        "lines:       {} ({})",
+        r.lines.len(),
+        certified_word(r.certified)
+    );
+    if let Some(why) = r.reason.as_ref().filter(|_| !r.certified) {
+        let _ = writeln!(s, "  (why: {why})");
+    }
+    let end = |corner: bool, segment: usize| {
+        if corner {
+            format!("corner {segment}")
+        } else {
+            format!("segment {segment}")
+        }
+    };
+    for (k, l) in r.lines.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "  {:>3}  s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})  ({}, {})",
+            k + 1,
+            n(l.s),
+            n(l.t),
+            n(l.p[0]),
+            n(l.p[1]),
+            n(l.q[0]),
+            n(l.q[1]),
+            end(l.corner[0], l.segment[0]),
+            end(l.corner[1], l.segment[1]),
         );
     }
     if let Some(st) = stats {

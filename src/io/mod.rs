@@ -249,7 +249,8 @@ pub fn read_curve(path: &Path) -> Result<Curve, CurveFileError> {
 
 /// Reads and validates a curve file (JSON), or a drawing by its extension: `.svg` (every
 /// path's subpaths) or `.dxf` (ASCII DXF entities chained end to end). A drawing's profiles
-/// are numbered from 0 in file order; `pick` chooses one where it holds several.
+/// are numbered from 0 in file order; `pick` chooses one where it holds several (a curve
+/// file, holding one curve, ignores it).
 pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
     let file = path.display().to_string();
     let unreadable =
@@ -261,18 +262,8 @@ pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, Curv
     let format = match ext.as_deref() {
         Some("svg") => DrawingFormat::Svg,
         Some("dxf") => DrawingFormat::Dxf,
+        // (A curve file holds one curve: `pick` is for drawings.)
         _ => {
-            if pick.is_some() {
-                return Err(drawing::error(
-                    &file,
-                    "--pick",
-                    Problem::Unsupported(
-                        "a curve file holds one curve: --pick chooses among a drawing's \
-                         profiles (.svg, .dxf)"
-                            .into(),
-                    ),
-                ));
-            }
             let text = std::fs::read_to_string(path).map_err(unreadable)?;
             return parse_curve(&file, &text);
         }

@@ -29,8 +29,9 @@
 //! `prims` (Appendix A: the primitives); `tangent` (§2.5: common tangents); `pairs` (a pair
 //! of pieces and its sections); `bisect` (§4.1); `search` (Table 1) and `march` (§4.2);
 //! `finish`, `monotone`, `radius_rates` and `families` (beyond the paper: proofs that spare
-//! marches, that θ is monotone or of one sign on a stretch, and continua of pairs); `profiles`
-//! (beyond the papers: profiles of segments joined at corners, segment by segment). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
+//! marches, that θ is monotone or of one sign on a stretch, and continua of pairs); `profiles`,
+//! `profile_pairs`, `corner_pairs` and `profile_tangents` (beyond the papers: profiles of
+//! segments joined at corners, segment by segment, and the corners' cones). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
 //! `taylor` and `interval`; `doubt` names every reason a result is not certified.
 
@@ -54,6 +55,7 @@ mod pairs;
 mod prepare;
 mod prims;
 mod profile_pairs;
+mod profile_tangents;
 mod profiles;
 mod radius_rates;
 mod search;
@@ -69,9 +71,10 @@ pub use error::{Error, Result};
 pub use forms::SymbolicForms;
 pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
 pub use profile_pairs::profile_antipodal;
+pub use profile_tangents::profile_tangents;
 pub use profiles::profile_inflections;
 pub use types::{
     Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,
     Options, PairType, ProfileAntipodal, ProfileFamily, ProfileInflections, ProfilePair,
-    TangentLine, Tangents, DEFAULT_TOL,
+    ProfileTangentLine, ProfileTangents, TangentLine, Tangents, DEFAULT_TOL,
 };

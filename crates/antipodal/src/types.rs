@@ -286,6 +286,35 @@ pub struct TangentLine {
     pub q: [f64; 2],
 }
 
+/// A common tangent line of two profiles (see [`crate::profile_tangents`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ProfileTangentLine {
+    /// Profile parameter on the first profile (a corner's, where the line passes through one).
+    pub s: f64,
+    /// Profile parameter on the second.
+    pub t: f64,
+    /// The point of tangency (or the corner) on the first profile.
+    pub p: [f64; 2],
+    /// The point of tangency (or the corner) on the second.
+    pub q: [f64; 2],
+    /// Whether the line passes through a corner of the first profile, and of the second.
+    pub corner: [bool; 2],
+    /// The segments of the two points (a corner's: the segment starting there).
+    pub segment: [usize; 2],
+}
+
+/// Result of [`crate::profile_tangents`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ProfileTangents {
+    /// The lines, sorted by `s`.
+    pub lines: Vec<ProfileTangentLine>,
+    /// True when every decision followed from certified sign tests.
+    pub certified: bool,
+    /// Why the result is not certified, where one reason stands out.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub reason: Option<String>,
+}
+
 /// Result of [`common_tangents()`](crate::common_tangents()).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Tangents {

@@ -2,6 +2,8 @@
 //! changes, then Newton. Deliberately shares no code with the crate's algorithms.
 #![allow(dead_code, unreachable_pub, missing_docs)]
 
+pub mod profiles;
+
 use antipodal::{Jet, PlaneCurve, V2};
 
 /// Proptest cases: `n`, scaled by the environment variable `CURVEKIT_CASES_SCALE` (a longer

@@ -1,0 +1,302 @@
+//! Common tangent lines of two profiles (the contract's definition): lines tangent to both at
+//! smooth points (Jia §2.5, segment by segment), and lines through a corner whose direction,
+//! either way along the line, lies strictly between the corner's incoming and outgoing
+//! tangent directions (its tangent cone), convex and reflex corners alike: through a corner of
+//! one profile and tangent to the other at a smooth point (a root of `(Q(t) − C) × Q′(t)`,
+//! isolated by certified root finding), or through a corner of each.
+//!
+//! A straight segment's tangent line is the segment's own line: it takes part through its end
+//! corners only (a line along a straight segment and tangent elsewhere is a limit case). A
+//! tangency at a segment's end where the profile has a corner has its direction on the cone's
+//! edge: a limit case, left out.
+
+use crate::error::{Error, Result};
+use crate::prepare::common_tangents;
+use crate::types::{Options, ProfileTangentLine, ProfileTangents};
+use bspline::roots::{find_roots, RootKind, RootOptions};
+use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
+
+/// How far inside a corner's tangent cone (the sine of the angle to its nearer edge) a
+/// direction must be: far above the rounding of unit directions, far below any drawn angle.
+const CONE_EDGE: f64 = 1e-9;
+
+/// How close (relative to a segment's domain) to its end a point of tangency is at the joint.
+const AT_JOINT: f64 = 1e-9;
+
+/// Two lines whose points of tangency are this close (relative to the size) are one.
+const SAME_LINE: f64 = 1e-7;
+
+/// A corner in the frame: where, and its incoming and outgoing unit tangents.
+struct Corner {
+    u: f64,
+    segment: usize,
+    at: V2,
+    tangents: [V2; 2],
+}
+
+impl Corner {
+    /// Whether the line along `d` (either way) lies strictly inside the tangent cone.
+    fn holds(&self, d: V2) -> bool {
+        let [tin, tout] = self.tangents;
+        let turn = tin.cross(tout).atan2(tin.dot(tout));
+        let inside = |u: V2| {
+            let u = u.unit();
+            let a = tin.cross(u).atan2(tin.dot(u));
+            // (Angles measured from the incoming tangent the way the corner turns.)
+            let a = a * turn.signum();
+            let edge = CONE_EDGE.asin();
+            a > edge && a < turn.abs() - edge
+        };
+        inside(d) || inside(-d)
+    }
+}
+
+/// One side: its segments in the frame and its corners.
+struct Side<'p> {
+    profile: &'p Profile,
+    curves: Vec<SplineCurve>,
+    corners: Vec<Corner>,
+}
+
+impl<'p> Side<'p> {
+    fn new(profile: &'p Profile, frame: &Frame) -> Self {
+        let curves: Vec<SplineCurve> = profile
+            .segments()
+            .iter()
+            .map(|s| s.curve().in_frame(frame))
+            .collect();
+        let n = curves.len();
+        let corners = profile
+            .joints()
+            .iter()
+            .filter(|j| j.kind != JointKind::Smooth)
+            .filter_map(|j| {
+                let i = j.u as usize;
+                let segs = profile.segments();
+                let (tin, tout) = (
+                    segs[(i + n - 1) % n].end_direction()?,
+                    segs[i].start_direction()?,
+                );
+                let c = &curves[i];
+                Some(Corner {
+                    u: j.u,
+                    segment: i,
+                    at: c.jet(c.domain().0).p,
+                    tangents: [tin, tout],
+                })
+            })
+            .collect();
+        Self {
+            profile,
+            curves,
+            corners,
+        }
+    }
+
+    /// Whether segment `i`'s parameter `v` is at a joint that is a corner.
+    fn at_corner(&self, i: usize, v: f64) -> bool {
+        let (a, b) = self.curves[i].domain();
+        let share = (v - a) / (b - a);
+        let n = self.curves.len();
+        let joint = if share <= AT_JOINT {
+            i
+        } else if share >= 1.0 - AT_JOINT {
+            (i + 1) % n
+        } else {
+            return false;
+        };
+        self.profile
+            .joints()
+            .iter()
+            .any(|j| j.u as usize == joint && j.kind != JointKind::Smooth)
+    }
+}
+
+/// Every common tangent line of two profiles (open or closed), with its corners and
+/// segments; certified where every decision is.
+///
+/// ```
+/// use antipodal::{profile_tangents, Options};
+/// use curve::{Profile, Segment};
+/// // Two squares side by side: the lines through opposite corners (the diagonals' cross
+/// // tangents) and the lines along the top and bottom edges (limit cases, left out).
+/// let square = |x: f64| {
+///     let c = [[x, 0.0], [x + 1.0, 0.0], [x + 1.0, 1.0], [x, 1.0]];
+///     Profile::new((0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect(), None)
+///         .unwrap()
+/// };
+/// let r = profile_tangents(&square(0.0), &square(3.0), &Options::default()).unwrap();
+/// assert!(r.certified);
+/// assert_eq!(r.lines.len(), 2);
+/// assert!(r.lines.iter().all(|l| l.corner == [true, true]));
+/// ```
+pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<ProfileTangents> {
+    opts.validate()?;
+    let points: Vec<[f64; 2]> = [a, b]
+        .iter()
+        .flat_map(|p| p.segments().iter().flat_map(|s| s.curve().control_points()))
+        .collect();
+    let frame = Frame::for_points(&points);
+    let (sa, sb) = (Side::new(a, &frame), Side::new(b, &frame));
+    let mut out = ProfileTangents {
+        lines: Vec::new(),
+        certified: true,
+        reason: None,
+    };
+    let size = frame.length_to_local(a.size().max(b.size()));
+    smooth_lines(&sa, &sb, &frame, opts, &mut out)?;
+    for (from, to, flip) in [(&sa, &sb, false), (&sb, &sa, true)] {
+        corner_lines(from, to, &frame, opts, size, flip, &mut out)?;
+    }
+    for ca in &sa.corners {
+        for cb in &sb.corners {
+            let d = cb.at - ca.at;
+            if d.norm() > SAME_LINE * size && ca.holds(d) && cb.holds(d) {
+                push(
+                    &mut out,
+                    line(
+                        &frame,
+                        (ca.u, ca.at),
+                        (cb.u, cb.at),
+                        [true, true],
+                        [ca.segment, cb.segment],
+                    ),
+                    size,
+                    &frame,
+                );
+            }
+        }
+    }
+    out.lines
+        .sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
+    Ok(out)
+}
+
+/// Lines tangent to both at smooth points: each pair of curved segments by Jia's method.
+fn smooth_lines(
+    sa: &Side,
+    sb: &Side,
+    frame: &Frame,
+    opts: &Options,
+    out: &mut ProfileTangents,
+) -> Result<()> {
+    let size = frame.length_to_local(sa.profile.size().max(sb.profile.size()));
+    let curved = |s: &Side, i: usize| s.profile.segments()[i].kind() != SegmentKind::Line;
+    for i in (0..sa.curves.len()).filter(|&i| curved(sa, i)) {
+        for j in (0..sb.curves.len()).filter(|&j| curved(sb, j)) {
+            let found = common_tangents(&sa.curves[i], &sb.curves[j], opts).map_err(|e| {
+                Error::InSegment {
+                    segment: i,
+                    source: Box::new(e),
+                }
+            })?;
+            if !found.certified && out.certified {
+                out.certified = false;
+                out.reason = found.reason.clone();
+            }
+            for l in found.lines {
+                if sa.at_corner(i, l.s) || sb.at_corner(j, l.t) {
+                    continue;
+                }
+                let (s, t) = (
+                    sa.profile.profile_param(i, l.s),
+                    sb.profile.profile_param(j, l.t),
+                );
+                let new = line(
+                    frame,
+                    (s, V2::from_arr(l.p)),
+                    (t, V2::from_arr(l.q)),
+                    [false, false],
+                    [i, j],
+                );
+                push(out, new, size, frame);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Lines through a corner of `from` tangent to `to` at a smooth point (`flip`: `from` is the
+/// second profile).
+fn corner_lines(
+    from: &Side,
+    to: &Side,
+    frame: &Frame,
+    opts: &Options,
+    size: f64,
+    flip: bool,
+    out: &mut ProfileTangents,
+) -> Result<()> {
+    let ropts = RootOptions::default().tolerance(opts.tol);
+    for c in &from.corners {
+        for (j, curve) in to.curves.iter().enumerate() {
+            if to.profile.segments()[j].kind() == SegmentKind::Line {
+                continue;
+            }
+            let f = bspline::symbolic::tangency_from(curve.curve(), c.at.arr()).map_err(|e| {
+                Error::InSegment {
+                    segment: j,
+                    source: Box::new(e.into()),
+                }
+            })?;
+            let (lo, hi) = curve.domain();
+            let roots = find_roots(&f, lo, hi, &ropts).map_err(|e| Error::InSegment {
+                segment: j,
+                source: Box::new(e.into()),
+            })?;
+            for r in roots {
+                if to.at_corner(j, r.u) {
+                    continue;
+                }
+                let q = curve.jet(r.u).p;
+                let d = q - c.at;
+                if d.norm() <= SAME_LINE * size || !c.holds(d) {
+                    continue;
+                }
+                if !(r.kind == RootKind::Simple && r.certified) && opts.certify && out.certified {
+                    out.certified = false;
+                    out.reason = Some(format!(
+                        "a point of tangency from the corner at u = {} on segment {j} is not \
+                         separated from another within rounding",
+                        c.u
+                    ));
+                }
+                let t = to.profile.profile_param(j, r.u);
+                let new = if flip {
+                    line(frame, (t, q), (c.u, c.at), [false, true], [j, c.segment])
+                } else {
+                    line(frame, (c.u, c.at), (t, q), [true, false], [c.segment, j])
+                };
+                push(out, new, size, frame);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The line through the first profile's point at `s` and the second's at `t` (frame points).
+fn line(
+    frame: &Frame,
+    (s, p): (f64, V2),
+    (t, q): (f64, V2),
+    corner: [bool; 2],
+    segment: [usize; 2],
+) -> ProfileTangentLine {
+    ProfileTangentLine {
+        s,
+        t,
+        p: frame.to_global(p.arr()),
+        q: frame.to_global(q.arr()),
+        corner,
+        segment,
+    }
+}
+
+/// Adds `l` unless it is already there (found from both segments at a smooth joint).
+fn push(out: &mut ProfileTangents, l: ProfileTangentLine, size: f64, frame: &Frame) {
+    let room = frame.length_to_global(SAME_LINE * size);
+    let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
+    if !out.lines.iter().any(|m| near(m.p, l.p) && near(m.q, l.q)) {
+        out.lines.push(l);
+    }
+}

@@ -1,0 +1,103 @@
+//! Random profiles for the property tests: polygons with some corners rounded by arcs, and
+//! closed chains of cubic Béziers with corners.
+#![allow(dead_code, unreachable_pub, missing_docs, clippy::unwrap_used)]
+
+use antipodal::{Profile, Segment};
+use curve::{ParamCurve, SegmentKind, SplineCurve, V2};
+use std::f64::consts::TAU;
+
+/// A star-shaped polygon (vertex `i` at angle `angles[i]` and radius `radii[i]`) with the
+/// corners where `round[i] > 0` rounded by a tangent arc of that share of the shorter edge.
+pub fn filleted_polygon(angles: &[f64], radii: &[f64], round: &[f64]) -> Option<Vec<Segment>> {
+    let n = angles.len();
+    let v: Vec<V2> = (0..n).map(|i| V2::polar(angles[i]) * radii[i]).collect();
+    // Per corner: where the incoming edge ends and the outgoing one starts, and the arc.
+    let mut cuts: Vec<(V2, V2, Option<Segment>)> = Vec::with_capacity(n);
+    for i in 0..n {
+        let (a, b, c) = (v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+        let (din, dout) = ((b - a).unit(), (c - b).unit());
+        let turn = din.cross(dout).atan2(din.dot(dout));
+        if round[i] <= 0.0 || turn.abs() < 0.05 {
+            cuts.push((b, b, None));
+            continue;
+        }
+        let reach = round[i] * 0.45 * (b - a).norm().min((c - b).norm());
+        let r = reach / (0.5 * turn.abs()).tan();
+        let (p0, p1) = (b - din * reach, b + dout * reach);
+        let center = p0 + din.perp() * (r * turn.signum());
+        let start = (p0 - center).angle();
+        let arc = Segment::arc(center.arr(), r, start, start + turn).ok()?;
+        cuts.push((p0, p1, Some(arc)));
+    }
+    let mut segs = Vec::new();
+    for i in 0..n {
+        let (_, from, _) = cuts[i];
+        let (to, _, _) = cuts[(i + 1) % n];
+        segs.push(Segment::line(from.arr(), to.arr()).ok()?);
+        if let Some(arc) = cuts[(i + 1) % n].2.clone() {
+            segs.push(arc);
+        }
+    }
+    Some(segs)
+}
+
+/// A closed chain of cubic Béziers round a star (joint `i` at radius `radii[i]`), smooth
+/// (G1) at joint `i` where `smooth[i]`, its inner control points pushed off the chord by
+/// `wobble`.
+pub fn bezier_chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool]) -> Option<Vec<Segment>> {
+    let n = radii.len();
+    let joint = |i: usize| V2::polar(TAU * (i % n) as f64 / n as f64) * radii[i % n];
+    let dir = |i: usize| (joint(i + 1) - joint(i + n - 1)).unit();
+    let mut segs = Vec::new();
+    for i in 0..n {
+        let (a, b) = (joint(i), joint(i + 1));
+        let len = (b - a).norm();
+        let (w0, w1) = wobble[i];
+        let c1 = if smooth[i] {
+            a + dir(i) * (0.3 * len)
+        } else {
+            a + (b - a) * 0.3 + (b - a).perp() * w0
+        };
+        let c2 = if smooth[(i + 1) % n] {
+            b - dir(i + 1) * (0.3 * len)
+        } else {
+            a + (b - a) * 0.7 + (b - a).perp() * w1
+        };
+        let pts = [a.arr(), c1.arr(), c2.arr(), b.arr()];
+        let c = SplineCurve::clamped(3, &pts, None, None).ok()?;
+        segs.push(Segment::spline(SegmentKind::Bezier, c).ok()?);
+    }
+    Some(segs)
+}
+
+/// The segments as a profile, started at segment `start`, run backwards when `reverse`.
+pub fn assemble(mut segs: Vec<Segment>, start: usize, reverse: bool) -> Option<Profile> {
+    let n = segs.len();
+    segs.rotate_left(start % n);
+    if reverse {
+        segs = segs.into_iter().rev().map(|s| reversed(&s)).collect();
+    }
+    Profile::new(segs, None).ok()
+}
+
+/// A segment run backwards (same kind).
+pub fn reversed(s: &Segment) -> Segment {
+    let c = s.curve();
+    let mut pts = c.control_points();
+    pts.reverse();
+    let mut w = c.curve().weights();
+    w.reverse();
+    let (a, b) = c.domain();
+    let knots: Vec<f64> = c
+        .curve()
+        .homogeneous()
+        .knots()
+        .iter()
+        .rev()
+        .map(|k| a + b - k)
+        .collect();
+    let degree = c.curve().degree();
+    let weights = c.curve().is_rational().then_some(&w[..]);
+    let rc = SplineCurve::clamped(degree, &pts, weights, Some(knots)).unwrap();
+    Segment::spline(s.kind(), rc).unwrap()
+}

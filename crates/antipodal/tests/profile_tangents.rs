@@ -1,0 +1,327 @@
+//! Common tangents of two profiles against an independent oracle, on random pairs of
+//! profiles (filleted polygons and Bézier chains with corners, either way round) set apart.
+//!
+//! The oracle shares no code with the crate: lines tangent at smooth points by a grid over
+//! every pair of curved segments (sign changes of `T(s) × r` and `T(t) × r`, then Newton);
+//! lines through a corner by dense sampling of `(Q(t) − C) × Q′(t)` on each curved segment,
+//! then bisection; lines through two corners by the definition. Directions within 1e-6 of a
+//! cone's edge and tangencies within 1e-6 of a corner are the contract's limit cases, left out
+//! of the comparison.
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use antipodal::{profile_tangents, Options, Profile, ProfileTangentLine};
+use common::profiles::{assemble, bezier_chain, filleted_polygon};
+use curve::{Affine, JointKind, ParamCurve, SegmentKind, V2};
+use proptest::prelude::*;
+use std::f64::consts::TAU;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+fn jet(p: &Profile, i: usize, x: f64, order: usize) -> curve::Jet {
+    let c = p.segments()[i].curve();
+    let (a, b) = c.domain();
+    let mut j = c.jet_to(a + (b - a) * x, order);
+    j.d1 = j.d1 * (b - a);
+    j.d2 = j.d2 * ((b - a) * (b - a));
+    j
+}
+
+fn corner_end(p: &Profile, i: usize, x: f64) -> bool {
+    let n = p.segments().len();
+    let joint = if x <= 1e-6 {
+        i
+    } else if x >= 1.0 - 1e-6 {
+        (i + 1) % n
+    } else {
+        return false;
+    };
+    p.joints()
+        .iter()
+        .any(|j| j.u as usize == joint && j.kind != JointKind::Smooth)
+}
+
+fn curved(p: &Profile, i: usize) -> bool {
+    p.segments()[i].kind() != SegmentKind::Line
+}
+
+/// Corners: point and (incoming, outgoing) unit tangents.
+fn corners(p: &Profile) -> Vec<(V2, V2, V2)> {
+    let n = p.segments().len();
+    p.joints()
+        .iter()
+        .filter(|j| j.kind != JointKind::Smooth)
+        .map(|j| {
+            let i = j.u as usize;
+            let tin = jet(p, (i + n - 1) % n, 1.0, 1).d1.unit();
+            let tout = jet(p, i, 0.0, 1).d1.unit();
+            (jet(p, i, 0.0, 0).p, tin, tout)
+        })
+        .collect()
+}
+
+/// How far inside the tangent cone the line along `d` lies (either way): positive inside.
+fn cone_margin(tin: V2, tout: V2, d: V2) -> f64 {
+    let turn = tin.cross(tout).atan2(tin.dot(tout));
+    let m = |u: V2| {
+        let u = u.unit();
+        let a = tin.cross(u).atan2(tin.dot(u)) * turn.signum();
+        a.min(turn.abs() - a)
+    };
+    m(d).max(m(-d))
+}
+
+#[derive(Default)]
+struct Expected {
+    lines: Vec<(V2, V2)>,
+    limits: Vec<(V2, V2)>,
+}
+
+fn same(a: (V2, V2), b: (V2, V2)) -> bool {
+    (a.0 - b.0).norm() < 1e-6 && (a.1 - b.1).norm() < 1e-6
+}
+
+fn oracle(a: &Profile, b: &Profile) -> Expected {
+    const GRID: usize = 40;
+    let mut out = Expected::default();
+    let xs: Vec<f64> = (0..=GRID).map(|k| k as f64 / GRID as f64).collect();
+    for i in (0..a.segments().len()).filter(|&i| curved(a, i)) {
+        for j in (0..b.segments().len()).filter(|&j| curved(b, j)) {
+            let fg = |s: f64, t: f64| {
+                let (js, jt) = (jet(a, i, s, 1), jet(b, j, t, 1));
+                let r = jt.p - js.p;
+                (js.d1.unit().cross(r), jt.d1.unit().cross(r))
+            };
+            let vals: Vec<Vec<(f64, f64)>> = xs
+                .iter()
+                .map(|&s| xs.iter().map(|&t| fg(s, t)).collect())
+                .collect();
+            for x in 0..GRID {
+                for y in 0..GRID {
+                    let c = [
+                        vals[x][y],
+                        vals[x + 1][y],
+                        vals[x][y + 1],
+                        vals[x + 1][y + 1],
+                    ];
+                    let spans = |f: &dyn Fn(&(f64, f64)) -> f64| {
+                        c.iter().map(f).fold(f64::INFINITY, f64::min) <= 0.0
+                            && c.iter().map(f).fold(f64::NEG_INFINITY, f64::max) >= 0.0
+                    };
+                    if !(spans(&|v| v.0) && spans(&|v| v.1)) {
+                        continue;
+                    }
+                    let (s0, t0) = (0.5 * (xs[x] + xs[x + 1]), 0.5 * (xs[y] + xs[y + 1]));
+                    let Some((s, t)) = newton(a, i, b, j, s0, t0) else {
+                        continue;
+                    };
+                    if (s - s0).abs() > 2.0 / GRID as f64 || (t - t0).abs() > 2.0 / GRID as f64 {
+                        continue;
+                    }
+                    let l = (jet(a, i, s, 0).p, jet(b, j, t, 0).p);
+                    if corner_end(a, i, s) || corner_end(b, j, t) {
+                        out.limits.push(l);
+                    } else if !out.lines.iter().any(|&m| same(m, l)) {
+                        out.lines.push(l);
+                    }
+                }
+            }
+        }
+    }
+    // Through a corner of one, tangent to the other.
+    for (from, to, flip) in [(a, b, false), (b, a, true)] {
+        for (c, tin, tout) in corners(from) {
+            for j in (0..to.segments().len()).filter(|&j| curved(to, j)) {
+                let h = |x: f64| {
+                    let jt = jet(to, j, x, 1);
+                    (jt.p - c).cross(jt.d1.unit())
+                };
+                const N: usize = 3000;
+                let mut prev = h(0.0);
+                for k in 1..=N {
+                    let x1 = k as f64 / N as f64;
+                    let cur = h(x1);
+                    if (prev < 0.0) != (cur < 0.0) {
+                        let (mut lo, mut hi) = ((k - 1) as f64 / N as f64, x1);
+                        for _ in 0..80 {
+                            let m = 0.5 * (lo + hi);
+                            if (h(lo) < 0.0) == (h(m) < 0.0) {
+                                lo = m;
+                            } else {
+                                hi = m;
+                            }
+                        }
+                        let x = 0.5 * (lo + hi);
+                        let q = jet(to, j, x, 0).p;
+                        let m = cone_margin(tin, tout, q - c);
+                        let l = if flip { (q, c) } else { (c, q) };
+                        if corner_end(to, j, x) || m.abs() <= 1e-6 {
+                            out.limits.push(l);
+                        } else if m > 0.0 && !out.lines.iter().any(|&o| same(o, l)) {
+                            out.lines.push(l);
+                        }
+                    }
+                    prev = cur;
+                }
+            }
+        }
+    }
+    for (ca, ta, ua) in corners(a) {
+        for (cb, tb, ub) in corners(b) {
+            let d = cb - ca;
+            let m = cone_margin(ta, ua, d).min(cone_margin(tb, ub, d));
+            if m > 1e-6 {
+                out.lines.push((ca, cb));
+            } else if m > -1e-6 {
+                out.limits.push((ca, cb));
+            }
+        }
+    }
+    out
+}
+
+fn newton(
+    a: &Profile,
+    i: usize,
+    b: &Profile,
+    j: usize,
+    mut s: f64,
+    mut t: f64,
+) -> Option<(f64, f64)> {
+    for _ in 0..60 {
+        let (js, jt) = (jet(a, i, s, 2), jet(b, j, t, 2));
+        let r = jt.p - js.p;
+        let (f, g) = (js.d1.cross(r), jt.d1.cross(r));
+        let (fs, ft) = (js.d2.cross(r) - js.d1.cross(js.d1), js.d1.cross(jt.d1));
+        let (gs, gt) = (-jt.d1.cross(js.d1), jt.d2.cross(r));
+        let det = fs * gt - ft * gs;
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let (ds, dt) = ((f * gt - g * ft) / det, (fs * g - gs * f) / det);
+        s -= ds;
+        t -= dt;
+        if !(-1e-9..=1.0 + 1e-9).contains(&s) || !(-1e-9..=1.0 + 1e-9).contains(&t) {
+            return None;
+        }
+        if ds.abs() < 1e-15 && dt.abs() < 1e-15 {
+            return Some((s.clamp(0.0, 1.0), t.clamp(0.0, 1.0)));
+        }
+    }
+    None
+}
+
+/// A reported line satisfies the definition: through the two points, tangent at smooth ones,
+/// inside the cone at corners.
+fn satisfies(a: &Profile, b: &Profile, l: &ProfileTangentLine) -> Result<(), String> {
+    let (p, q) = (V2::from_arr(l.p), V2::from_arr(l.q));
+    let d = (q - p).unit();
+    for (prof, at, u, corner) in [(a, p, l.s, l.corner[0]), (b, q, l.t, l.corner[1])] {
+        if corner {
+            let (_, tin, tout) = corners(prof)
+                .into_iter()
+                .find(|c| (c.0 - at).norm() < 1e-9)
+                .ok_or(format!("no corner at {at:?}"))?;
+            if cone_margin(tin, tout, d) < -1e-9 {
+                return Err(format!("outside the cone at {at:?}"));
+            }
+        } else {
+            let j = prof.jet(u);
+            if (j.p - at).norm() > 1e-9 || j.d1.unit().cross(d).abs() > 1e-7 {
+                return Err(format!("not tangent at {u}"));
+            }
+        }
+    }
+    Ok(())
+}
+
+static CASES: AtomicUsize = AtomicUsize::new(0);
+static THROUGH_CORNERS: AtomicUsize = AtomicUsize::new(0);
+static SMOOTH: AtomicUsize = AtomicUsize::new(0);
+
+fn check(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
+    let r = profile_tangents(a, b, &Options::default()).unwrap();
+    let want = oracle(a, b);
+    for w in &want.lines {
+        let found = r
+            .lines
+            .iter()
+            .any(|l| same((V2::from_arr(l.p), V2::from_arr(l.q)), *w));
+        prop_assert!(found, "missed {:?}; found {:?}", w, r.lines);
+    }
+    for l in &r.lines {
+        let got = (V2::from_arr(l.p), V2::from_arr(l.q));
+        if want.limits.iter().any(|&m| same(m, got)) {
+            continue;
+        }
+        if let Err(e) = satisfies(a, b, l) {
+            return Err(TestCaseError::fail(format!("{l:?}: {e}")));
+        }
+    }
+    CASES.fetch_add(1, Ordering::Relaxed);
+    if r.lines.iter().any(|l| l.corner.contains(&true)) {
+        THROUGH_CORNERS.fetch_add(1, Ordering::Relaxed);
+    }
+    if r.lines.iter().any(|l| l.corner == [false, false]) {
+        SMOOTH.fetch_add(1, Ordering::Relaxed);
+    }
+    Ok(())
+}
+
+/// The profile moved by `(dx, dy)` after a turn by `angle`.
+fn moved(p: &Profile, angle: f64, dx: f64, dy: f64) -> Option<Profile> {
+    let (s, c) = angle.sin_cos();
+    let map = Affine([c, s, -s, c, dx, dy]);
+    let segs = p
+        .segments()
+        .iter()
+        .map(|g| g.transformed(&map).ok())
+        .collect::<Option<Vec<_>>>()?;
+    Profile::new(segs, None).ok()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: common::cases(100), ..ProptestConfig::default() })]
+
+    fn tangents_of_profile_pairs_match_the_oracle(
+        steps in proptest::collection::vec(0.5f64..1.5, 3..6),
+        radii in proptest::collection::vec(1.0f64..2.0, 6),
+        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 6),
+        chain_radii in proptest::collection::vec(1.0f64..2.0, 3..6),
+        wobble in proptest::collection::vec((0.05f64..0.4, -0.4f64..-0.05), 6),
+        smooth in proptest::collection::vec(any::<bool>(), 6),
+        angle in 0.0f64..TAU,
+        reverse in any::<bool>(),
+    ) {
+        let n = steps.len();
+        let total: f64 = steps.iter().sum();
+        let mut acc = 0.0;
+        let angles: Vec<f64> = steps.iter().map(|s| { let a = TAU * acc / total; acc += s; a }).collect();
+        let Some(a) = filleted_polygon(&angles, &radii[..n], &round[..n])
+            .and_then(|s| assemble(s, 1, reverse)) else { return Ok(()); };
+        let m = chain_radii.len();
+        let Some(b) = bezier_chain(&chain_radii, &wobble[..m], &smooth[..m])
+            .and_then(|s| assemble(s, 0, !reverse))
+            .and_then(|p| moved(&p, angle, 6.0 * angle.cos(), 6.0 * angle.sin())) else {
+            return Ok(());
+        };
+        check(&a, &b)?;
+    }
+}
+
+/// Runs the property and checks that it is not vacuous: lines through corners and lines
+/// tangent at two smooth points both occur, on most cases.
+#[test]
+fn tangents_of_profile_pairs_match_the_oracle_and_many() {
+    tangents_of_profile_pairs_match_the_oracle();
+    let (n, c, s) = (
+        CASES.load(Ordering::Relaxed),
+        THROUGH_CORNERS.load(Ordering::Relaxed),
+        SMOOTH.load(Ordering::Relaxed),
+    );
+    assert!(
+        n >= 60 && c >= 50 && s >= 30,
+        "{n} cases, {c} through corners, {s} smooth"
+    );
+}

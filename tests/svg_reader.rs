@@ -306,3 +306,21 @@ fn profiles_survive_a_round_trip_through_path_data_and_many() {
     );
     assert!(n >= 150 && arcs >= 100, "{n} round trips, {arcs} with arcs");
 }
+
+/// Found by fuzzing: a drawing moved 1e63 away (far beyond its size) made the self-crossing
+/// test halve chords to its depth limit everywhere (the points round by more than the
+/// flatness asked for). It now reads at once: the flatness never goes below the rounding of
+/// the coordinates.
+#[test]
+fn drawings_far_from_the_origin_read_at_once() {
+    let f = write_svg(
+        r#"<g transform="matrix(8 0 0 -1 1e63 0)"><path d="M100 0V700H300Q430 700 490 610T5503 50Q550 180 490 90T300 0Z"/></g>"#,
+    );
+    // (The profile or a refusal: either is an answer.)
+    let _ = read_curve_picked(f.path(), Some(0));
+    let far = profile_of(
+        r#"<path transform="translate(1e12 -3e12)" d="M 0 0 L 4 0 A 2 2 0 0 1 4 4 Q 2 6 0 4 Z"/>"#,
+        None,
+    );
+    assert_eq!(far.segments().len(), 4);
+}

@@ -49,7 +49,7 @@ pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> O
 /// The first crossing among chains, of one with itself or of two with each other (first by
 /// chain, then by segment).
 pub(crate) fn first_crossing_among(chains: &[Chain<'_>], size: f64) -> Option<Crossing> {
-    let delta = FLATNESS * size;
+    let delta = flatness(chains.iter().flat_map(|c| c.0.iter()), size);
     let mut edges = Vec::new();
     let mut lengths = Vec::with_capacity(chains.len());
     for (c, &(segments, _)) in chains.iter().enumerate() {
@@ -119,8 +119,9 @@ pub(crate) fn first_crossing_among(chains: &[Chain<'_>], size: f64) -> Option<Cr
 /// The closed polygon of a closed chain, flattened within [`FLATNESS`] of `size`.
 pub(crate) fn polygon(segments: &[Segment], size: f64) -> Vec<V2> {
     let mut out: Vec<V2> = Vec::new();
+    let delta = flatness(segments.iter(), size);
     for s in segments {
-        let pts = flatten(s, FLATNESS * size);
+        let pts = flatten(s, delta);
         out.extend(pts.into_iter().skip(usize::from(!out.is_empty())));
     }
     out
@@ -143,6 +144,23 @@ pub(crate) fn winding(polygon: &[V2], p: V2) -> i32 {
     }
     w
 }
+
+/// The flattening tolerance for segments of `size`: [`FLATNESS`] of it, but never below what
+/// the coordinates' rounding resolves (far from the origin a curve's points are known only
+/// to a few units of rounding of their coordinates: finer chords never meet the tolerance and
+/// the halving would run to its depth limit everywhere).
+fn flatness<'s>(segments: impl Iterator<Item = &'s Segment>, size: f64) -> f64 {
+    let magnitude = segments
+        .flat_map(|s| s.curve().control_points())
+        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    (FLATNESS * size).max(FLAT_ROUNDING * magnitude)
+}
+
+/// Units of rounding of the largest coordinate below which a flattening's tolerance is noise.
+const FLAT_ROUNDING: f64 = 64.0 * f64::EPSILON;
+
+/// Most points of one segment's polyline: a bound on the work whatever the curve.
+const MAX_POINTS: usize = 1 << 16;
 
 /// The points of a polyline within `delta` of the segment (its chords' midpoints checked
 /// against the curve, halving where they stray).
@@ -183,7 +201,7 @@ fn refine(
         0.0 => (pm - p0).norm(),
         len => chord.cross(pm - p0).abs() / len,
     };
-    if off <= delta || depth >= MAX_DEPTH {
+    if off <= delta || depth >= MAX_DEPTH || out.len() >= MAX_POINTS {
         out.push(p1);
         return;
     }

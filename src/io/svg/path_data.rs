@@ -7,6 +7,11 @@ use curve::{Segment, SegmentKind, SplineCurve, V2};
 use std::f64::consts::TAU;
 use svgtypes::{PathParser, PathSegment};
 
+/// How close (in units of rounding of the largest coordinate) the current point must come to
+/// the subpath's start for `Z` to draw no closing line: relative commands accumulate a
+/// rounding per command.
+const CLOSING_ROUNDING: f64 = 1024.0 * f64::EPSILON;
+
 /// One subpath: its segments, and whether it was closed by `Z`.
 #[derive(Debug)]
 pub(super) struct Subpath {
@@ -120,7 +125,9 @@ impl Builder {
             }
             PathSegment::ClosePath { .. } => {
                 let start = self.start;
-                if self.at != start {
+                // (Relative commands that come back to the start do so to within rounding:
+                // no sliver of a closing line then; the profile closes within its gap.)
+                if !self.near(start) {
                     self.line(start)?;
                 }
                 self.finish_subpath(true);
@@ -215,6 +222,18 @@ impl Builder {
             .map_err(|e| e.to_string())?;
         self.push(seg, to);
         Ok(())
+    }
+
+    /// Whether `p` is the current point to within rounding of the subpath's coordinates.
+    fn near(&self, p: V2) -> bool {
+        let magnitude = self
+            .current
+            .iter()
+            .flat_map(|s| s.curve().control_points())
+            .fold(p.x.abs().max(p.y.abs()), |m, q| {
+                m.max(q[0].abs()).max(q[1].abs())
+            });
+        (self.at - p).norm() <= CLOSING_ROUNDING * magnitude
     }
 
     fn finish_subpath(&mut self, closed: bool) {

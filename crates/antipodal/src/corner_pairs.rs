@@ -12,6 +12,7 @@
 //! reported or not): such candidates are left out. Every other decision is clear of rounding.
 
 use crate::profile_pairs::ordered;
+use crate::profiles::at_corner;
 use crate::types::{Options, ProfilePair};
 use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
 use bspline::Piecewise;
@@ -96,7 +97,7 @@ pub(crate) fn corner_pairs(
                 Ok(feet) => {
                     for foot in feet {
                         let s = foot.u;
-                        if ends_at_corner(profile, i, c, s) {
+                        if at_corner(profile, i, s) {
                             // (A corner at the other end too: decided as a pair of corners.)
                             continue;
                         }
@@ -201,25 +202,4 @@ fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Fo
         });
     }
     Ok(feet)
-}
-
-/// How close (relative to a segment's domain) to its end a foot point lies at the joint there.
-const AT_JOINT: f64 = 1e-9;
-
-/// Whether `u` on segment `i` (curve `c`) is at one of its ends where the profile has a corner.
-fn ends_at_corner(profile: &Profile, i: usize, c: &SplineCurve, u: f64) -> bool {
-    let (a, b) = c.domain();
-    let share = (u - a) / (b - a);
-    let n = profile.segments().len();
-    let joint = if share <= AT_JOINT {
-        i
-    } else if share >= 1.0 - AT_JOINT {
-        (i + 1) % n
-    } else {
-        return false;
-    };
-    profile
-        .joints()
-        .iter()
-        .any(|j| j.u as usize == joint && j.kind != curve::JointKind::Smooth)
 }

@@ -37,10 +37,6 @@ const FAMILY_SLACK: f64 = 1e-9;
 /// was solved to; any other pair is a whole stretch away.
 const FAMILY_MATCH: f64 = 1e-6;
 
-/// How close (relative to a segment's domain) to a segment's end a pair's point lies at the
-/// joint there.
-const AT_JOINT: f64 = 1e-9;
-
 /// A family between segments `i` and `j`, in their views' parameters `(sa, sb, ta, tb)`.
 type SegmentFamily = (usize, usize, (f64, f64, f64, f64));
 
@@ -348,19 +344,7 @@ fn profile_pair(
 /// The kind of the joint where segment `k`'s view `v` is at `x`, if `x` is at one of its ends.
 fn joint_at(profile: &Profile, k: usize, v: &View, x: f64) -> Option<JointKind> {
     let share = (v.to_curve(x) - v.reported_domain().0) / v.period;
-    let n = profile.segments().len();
-    let at = if share <= AT_JOINT {
-        k
-    } else if share >= 1.0 - AT_JOINT {
-        (k + 1) % n
-    } else {
-        return None;
-    };
-    profile
-        .joints()
-        .iter()
-        .find(|jt| jt.u as usize == at)
-        .map(|jt| jt.kind)
+    crate::profiles::joint_at(profile, k, share)
 }
 
 /// The pair with `s ≤ t`.

@@ -12,6 +12,7 @@
 
 use crate::error::{Error, Result};
 use crate::prepare::common_tangents;
+use crate::profiles::at_corner;
 use crate::types::{Options, ProfileTangentLine, ProfileTangents};
 use bspline::roots::{find_roots, RootKind, RootOptions};
 use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
@@ -19,9 +20,6 @@ use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2}
 /// How far inside a corner's tangent cone (the sine of the angle to its nearer edge) a
 /// direction must be: far above the rounding of unit directions, far below any drawn angle.
 const CONE_EDGE: f64 = 1e-9;
-
-/// How close (relative to a segment's domain) to its end a point of tangency is at the joint.
-const AT_JOINT: f64 = 1e-9;
 
 /// Two lines whose points of tangency are this close (relative to the size) are one.
 const SAME_LINE: f64 = 1e-7;
@@ -91,24 +89,6 @@ impl<'p> Side<'p> {
             curves,
             corners,
         }
-    }
-
-    /// Whether segment `i`'s parameter `v` is at a joint that is a corner.
-    fn at_corner(&self, i: usize, v: f64) -> bool {
-        let (a, b) = self.curves[i].domain();
-        let share = (v - a) / (b - a);
-        let n = self.curves.len();
-        let joint = if share <= AT_JOINT {
-            i
-        } else if share >= 1.0 - AT_JOINT {
-            (i + 1) % n
-        } else {
-            return false;
-        };
-        self.profile
-            .joints()
-            .iter()
-            .any(|j| j.u as usize == joint && j.kind != JointKind::Smooth)
     }
 }
 
@@ -195,7 +175,7 @@ fn smooth_lines(
                 out.reason = found.reason.clone();
             }
             for l in found.lines {
-                if sa.at_corner(i, l.s) || sb.at_corner(j, l.t) {
+                if at_corner(sa.profile, i, l.s) || at_corner(sb.profile, j, l.t) {
                     continue;
                 }
                 let (s, t) = (
@@ -245,7 +225,7 @@ fn corner_lines(
                 source: Box::new(e.into()),
             })?;
             for r in roots {
-                if to.at_corner(j, r.u) {
+                if at_corner(to.profile, j, r.u) {
                     continue;
                 }
                 let q = curve.jet(r.u).p;

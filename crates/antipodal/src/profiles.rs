@@ -120,3 +120,32 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
     out.inflections.sort_by(|a, b| a.u.total_cmp(&b.u));
     Ok(out)
 }
+
+/// How close (relative to a segment's domain) to its end a point lies at the joint there:
+/// far below any feature, far above the rounding of a parameter solved to the tolerance.
+const AT_JOINT: f64 = 1e-9;
+
+/// The kind of the joint where segment `i` is at the share `share ∈ [0, 1]` of its domain, if
+/// that is one of its ends (`None` inside, or at an open profile's end).
+pub(crate) fn joint_at(profile: &Profile, i: usize, share: f64) -> Option<JointKind> {
+    let n = profile.segments().len();
+    let at = if share <= AT_JOINT {
+        i
+    } else if share >= 1.0 - AT_JOINT {
+        (i + 1) % n
+    } else {
+        return None;
+    };
+    profile
+        .joints()
+        .iter()
+        .find(|j| j.u as usize == at)
+        .map(|j| j.kind)
+}
+
+/// Whether segment `i`'s own parameter `v` is at one of its ends where the profile has a
+/// corner.
+pub(crate) fn at_corner(profile: &Profile, i: usize, v: f64) -> bool {
+    let (a, b) = profile.segments()[i].curve().domain();
+    joint_at(profile, i, (v - a) / (b - a)).is_some_and(|k| k != JointKind::Smooth)
+}

@@ -863,6 +863,21 @@ fn ends_within_the_tolerance_join_and_a_gap_beyond_it_is_refused() {
 }
 
 #[test]
+fn a_short_open_line_is_no_gap() {
+    // A centre mark 0.05 long beside a part 1000 across: its ends are 5e-5 of the drawing
+    // apart, but its whole length apart: an open profile of its own.
+    let mut d = drawing();
+    add(
+        &mut d,
+        EntityType::Circle(Circle::new(p3(500.0, 500.0), 500.0)),
+    );
+    add(&mut d, line(500.0, 500.0, 500.05, 500.0));
+    let path = saved(&d);
+    assert!(read_path(&path, 0).unwrap().is_closed());
+    assert!(!read_path(&path, 1).unwrap().is_closed());
+}
+
+#[test]
 fn a_branch_point_is_refused_naming_the_entities() {
     let mut d = drawing();
     let a = add(&mut d, line(0.0, 0.0, 1.0, 0.0));

@@ -52,8 +52,9 @@
 //! point are a branch: refused, naming the entities. A chain starts at the first unused piece
 //! in file order and grows at its end, then at its start, taking each piece forwards or
 //! reversed; it is closed when it comes back to its own start. Two open ends of the drawing
-//! nearer than [`NEAR_MISS`] of its size are a gap in an outline that was meant to close:
-//! refused, naming the entity and where the gap is. Profiles are ordered by the position of
+//! nearer than [`NEAR_MISS`] of its size (and [`NEAR_MISS_OWN`] of their chains' sizes) are a
+//! gap in an outline that was meant to close: refused, naming the entity and where the gap
+//! is. Profiles are ordered by the position of
 //! their first entity in the file and named after it: its type and handle (`LINE 2F`), or its
 //! place in the `ENTITIES` section when it has no handle (`LINE #3`, from 1).
 
@@ -62,7 +63,8 @@ use super::{CurveFileError, Problem, MAX_ABS, MAX_DEGREE, MAX_SEGMENTS};
 use bspline::{BSpline, Rational};
 use curve::{Affine, Segment, SegmentKind, SplineCurve, JOIN_GAP, V2};
 use dxf::entities::{Entity, EntityType};
-use std::collections::{HashMap, VecDeque};
+use std::borrow::Cow;
+use std::collections::VecDeque;
 use std::f64::consts::TAU;
 
 /// Most entity records the `ENTITIES` section may hold: bounds the reader's work and memory.
@@ -81,6 +83,11 @@ const COORDINATE_ROUNDING: f64 = 16.0 * f64::EPSILON;
 /// tolerance are a gap in an outline meant to close: a drawing error to report. Ends drawn
 /// apart on purpose (an open profile) are far farther apart than 1e-4 of the drawing.
 pub(super) const NEAR_MISS: f64 = 1e-4;
+
+/// Open ends are a gap only when also nearer than this, relative to the size of the chains
+/// they end: an outline that misses closing by a thousandth of itself is a gap; a short line
+/// whose two ends are its whole length apart is not.
+const NEAR_MISS_OWN: f64 = 1e-3;
 
 /// How far from (0, 0, ±1) an extrusion direction may be (each of its x and y relative to its
 /// length): the rounding of a unit vector written with 15 or more digits, no tilt.
@@ -121,15 +128,9 @@ pub(super) fn chains(file: &str, bytes: &[u8]) -> Result<Vec<Chain>, CurveFileEr
             Problem::Unsupported("a binary DXF (or DXB) file: only ASCII DXF is read".into()),
         ));
     }
-    let text = String::from_utf8_lossy(bytes);
-    let records = entity_records(&text).map_err(|p| fail("document", p))?;
-    let drawing = dxf::Drawing::load(&mut &bytes[..]).map_err(|e| {
-        fail(
-            "document",
-            Problem::Unsupported(format!("not a readable ASCII DXF file: {e}")),
-        )
-    })?;
-    let entities = pair_up(&drawing, &records).map_err(|(field, p)| fail(&field, p))?;
+    let section = entity_records(bytes).map_err(|p| fail("document", p))?;
+    let drawing = load_entities(bytes, &section).map_err(|p| fail("document", p))?;
+    let entities = pair_up(&drawing, &section.records).map_err(|(field, p)| fail(&field, p))?;
 
     let mut shapes = Vec::with_capacity(entities.len());
     for (order, (entity, record)) in entities.iter().enumerate() {
@@ -168,46 +169,63 @@ type Failure = (String, Problem);
 #[derive(Debug)]
 struct Record<'a> {
     /// Its type (`LINE`).
-    kind: &'a str,
+    kind: Cow<'a, str>,
     /// Its handle (code 5), if given.
-    handle: Option<&'a str>,
+    handle: Option<Cow<'a, str>>,
     /// Its place among the section's records, from 1.
     place: usize,
     /// Its groups after the type, kept for `SPLINE` only (the crate loses some of them).
-    groups: Vec<(i32, &'a str)>,
+    groups: Vec<(i32, Cow<'a, str>)>,
 }
 
 impl Record<'_> {
     /// `LINE 2F`, or `LINE #3` without a handle.
     fn name(&self) -> String {
-        match self.handle {
-            Some(h) => format!("{} {h}", self.kind),
+        match &self.handle {
+            Some(h) => format!("{} {}", self.kind, h.trim()),
             None => format!("{} #{}", self.kind, self.place),
         }
     }
 }
 
-/// The records of the `ENTITIES` section, in order (at most [`MAX_ENTITIES`]). The text is
-/// read as code/value line pairs, as the `dxf` crate reads it (codes trimmed, values without
-/// their line ends, comments (999) skipped).
-fn entity_records(text: &str) -> Result<Vec<Record<'_>>, Problem> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    // (Lines end at `\n`, less one `\r` before it, as the crate reads them.)
-    let mut lines = text
-        .split('\n')
-        .map(|l| l.strip_suffix('\r').unwrap_or(l))
+/// The `ENTITIES` section: its records, and where it lies in the file's bytes.
+#[derive(Debug, Default)]
+struct Section<'a> {
+    records: Vec<Record<'a>>,
+    /// From its `0 SECTION` to the end of its `0 ENDSEC` (or of the file).
+    range: Option<(usize, Option<usize>)>,
+}
+
+/// Reads the `ENTITIES` section's records, in order (at most [`MAX_ENTITIES`]). The bytes
+/// are read as code/value line pairs, as the `dxf` crate reads them (lines end at `\n`, less
+/// one `\r` before it; codes trimmed; comments (999) skipped), up to the section's end.
+fn entity_records(bytes: &[u8]) -> Result<Section<'_>, Problem> {
+    let mut section = Section::default();
+    let mut offset = 0;
+    if bytes.starts_with(b"\xEF\xBB\xBF") {
+        offset = 3;
+    }
+    let mut lines = bytes
+        .get(offset..)
+        .unwrap_or_default()
+        .split(|&b| b == b'\n')
+        .scan(offset, |at, line| {
+            let start = *at;
+            *at += line.len() + 1;
+            Some((start, line.strip_suffix(b"\r").unwrap_or(line)))
+        })
         .enumerate();
-    let mut records: Vec<Record<'_>> = Vec::new();
-    let mut section: Option<&str> = None;
-    let mut opening = false;
+    // Where the last `0 SECTION` started, and whether its name is to come next.
+    let mut opening: Option<usize> = None;
     let mut in_entities = false;
     let malformed = |line: usize, what: &str| {
         Problem::Unsupported(format!(
             "not a readable ASCII DXF file: line {line}: {what}"
         ))
     };
-    // Each turn takes two lines: the loop ends with the text.
-    while let Some((i, code_line)) = lines.next() {
+    // Each turn takes two lines: the loop ends with the bytes.
+    while let Some((i, (at, code_line))) = lines.next() {
+        let code_line = String::from_utf8_lossy(code_line);
         let code_line = code_line.trim();
         if code_line.is_empty() {
             // (The crate stops at a blank code line, as at the end of the file.)
@@ -219,45 +237,49 @@ fn entity_records(text: &str) -> Result<Vec<Record<'_>>, Problem> {
                 &format!("`{code_line}` is not a group code"),
             ));
         };
-        let Some((_, value)) = lines.next() else {
+        let Some((_, (_, value))) = lines.next() else {
             return Err(malformed(i + 1, "the file ends after a group code"));
         };
         if code == 999 {
             continue;
         }
-        if opening {
-            opening = false;
+        if let Some(section_start) = opening.take() {
             if code == 2 {
-                section = Some(value.trim());
-                in_entities = value.trim() == "ENTITIES";
+                in_entities = value.trim_ascii() == b"ENTITIES";
+                if in_entities {
+                    section.range = Some((section_start, None));
+                }
                 continue;
             }
         }
         if code == 0 {
             match value {
-                "SECTION" => {
-                    opening = true;
+                b"SECTION" => {
+                    opening = Some(at);
                     in_entities = false;
                 }
-                "ENDSEC" => {
-                    if section == Some("ENTITIES") {
-                        break;
+                b"ENDSEC" if in_entities => {
+                    // The end of this value line: the next line's start.
+                    let end = lines.clone().next().map(|(_, (next, _))| next);
+                    if let Some((start, _)) = section.range {
+                        section.range = Some((start, end.or(Some(bytes.len()))));
                     }
-                    section = None;
-                    in_entities = false;
+                    break;
                 }
-                "EOF" => break,
+                b"ENDSEC" => in_entities = false,
+                b"EOF" => break,
                 kind if in_entities => {
-                    if records.len() == MAX_ENTITIES {
+                    if section.records.len() == MAX_ENTITIES {
                         return Err(Problem::OutOfRange {
                             rule: format!("at most {MAX_ENTITIES} entities"),
                             value: (MAX_ENTITIES + 1) as f64,
                         });
                     }
-                    records.push(Record {
-                        kind,
+                    let place = section.records.len() + 1;
+                    section.records.push(Record {
+                        kind: String::from_utf8_lossy(kind),
                         handle: None,
-                        place: records.len() + 1,
+                        place,
                         groups: Vec::new(),
                     });
                 }
@@ -268,16 +290,36 @@ fn entity_records(text: &str) -> Result<Vec<Record<'_>>, Problem> {
         if !in_entities {
             continue;
         }
-        if let Some(r) = records.last_mut() {
+        if let Some(r) = section.records.last_mut() {
             if code == 5 && r.handle.is_none() {
-                r.handle = Some(value.trim());
+                r.handle = Some(String::from_utf8_lossy(value));
             }
             if r.kind == "SPLINE" {
-                r.groups.push((code, value));
+                r.groups.push((code, String::from_utf8_lossy(value)));
             }
         }
     }
-    Ok(records)
+    Ok(section)
+}
+
+/// The `dxf` crate's reading of the `ENTITIES` section (the rest of the file is not the
+/// reader's concern: its tables and objects are neither read nor checked).
+fn load_entities(bytes: &[u8], section: &Section<'_>) -> Result<dxf::Drawing, Problem> {
+    let Some((start, end)) = section.range else {
+        return Ok(dxf::Drawing::new());
+    };
+    let mut text = bytes
+        .get(start..end.unwrap_or(bytes.len()))
+        .unwrap_or_default()
+        .to_vec();
+    if end.is_some() {
+        text.extend_from_slice(b"0\nEOF\n");
+    }
+    dxf::Drawing::load(&mut &text[..]).map_err(|e| {
+        Problem::Unsupported(format!(
+            "not a readable ASCII DXF file: in its ENTITIES section: {e}"
+        ))
+    })
 }
 
 /// The crate's entities of the types read, each with its record; refused when the two
@@ -288,7 +330,7 @@ fn pair_up<'d, 'r>(
 ) -> Result<Vec<(&'d Entity, &'r Record<'r>)>, Failure> {
     let ours: Vec<&Record<'_>> = records
         .iter()
-        .filter(|r| READ_TYPES.contains(&r.kind))
+        .filter(|r| READ_TYPES.contains(&r.kind.as_ref()))
         .collect();
     let theirs: Vec<&Entity> = drawing
         .entities()
@@ -301,7 +343,7 @@ fn pair_up<'d, 'r>(
         };
         // (Handles are the records': the crate gives one of its own to an entity written
         // without, or with handle 0.)
-        if type_name(&entity.specific) != Some(record.kind) {
+        if type_name(&entity.specific) != Some(record.kind.as_ref()) {
             return Err(unreadable(record));
         }
         out.push((*entity, *record));
@@ -560,6 +602,17 @@ fn polyline(
     }))
 }
 
+/// More than [`MAX_SPLINE_POINTS`] control points (or weights, or their knots).
+fn too_many(what: &str, count: usize) -> EntityError {
+    (
+        what.to_string(),
+        Problem::OutOfRange {
+            rule: format!("at most {MAX_SPLINE_POINTS} control points"),
+            value: count as f64,
+        },
+    )
+}
+
 /// A counterclockwise sweep in `[0, 2π)` (radians), or the full turn where it is within
 /// [`ANGLE_ROUNDING`] of nothing or of a full turn.
 fn full_turn(sweep: f64) -> f64 {
@@ -600,7 +653,10 @@ fn ellipse(e: &dxf::entities::Ellipse) -> Result<Segment, EntityError> {
 
 /// A `SPLINE` from its groups as written (see the module documentation).
 /// Returns the segment and whether it is flagged closed or periodic (70 bits 1, 2).
-fn spline(groups: &[(i32, &str)]) -> Result<(Segment, bool), EntityError> {
+///
+/// The curve's derivatives are checked as a `bspline` curve file's are: knots packed far too
+/// tightly for the coordinates overflow them, and nothing after could be trusted.
+fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), EntityError> {
     let mut flags = 0i64;
     let mut degree = None;
     let mut knots = Vec::new();
@@ -609,7 +665,8 @@ fn spline(groups: &[(i32, &str)]) -> Result<(Segment, bool), EntityError> {
     let mut has_y = Vec::new();
     let mut fit_points = 0usize;
     let mut normal = [0.0, 0.0, 1.0];
-    for &(code, value) in groups {
+    for (code, value) in groups {
+        let (code, value) = (*code, value.as_ref());
         let float = |what: &str| {
             value
                 .trim()
@@ -626,14 +683,15 @@ fn spline(groups: &[(i32, &str)]) -> Result<(Segment, bool), EntityError> {
         match code {
             70 => flags = integer("flags")?,
             71 => degree = Some(integer("degree")?),
-            40 | 41 | 10 if knots.len() + weights.len() + points.len() >= 3 * MAX_SPLINE_POINTS => {
-                return Err((
-                    "control points".into(),
-                    Problem::OutOfRange {
-                        rule: format!("at most {MAX_SPLINE_POINTS} control points"),
-                        value: (points.len().max(knots.len()).max(weights.len()) + 1) as f64,
-                    },
-                ))
+            // (Bounded as they come: knots number the control points and the order at most.)
+            40 if knots.len() > MAX_SPLINE_POINTS + MAX_DEGREE => {
+                return Err(too_many("knots", knots.len() + 1))
+            }
+            41 if weights.len() >= MAX_SPLINE_POINTS => {
+                return Err(too_many("weights", weights.len() + 1))
+            }
+            10 if points.len() >= MAX_SPLINE_POINTS => {
+                return Err(too_many("control points", points.len() + 1))
             }
             40 => knots.push(float("knots")?),
             41 => weights.push(float("weights")?),
@@ -760,6 +818,16 @@ fn spline(groups: &[(i32, &str)]) -> Result<(Segment, bool), EntityError> {
     if points.iter().all(|p| *p == points[0]) {
         return Err(("control points".into(), Problem::Degenerate));
     }
+    let hom = curve.curve().homogeneous();
+    let d1 = hom.deriv();
+    if !d1
+        .coefs()
+        .iter()
+        .chain(d1.deriv().coefs())
+        .all(|x| x.is_finite())
+    {
+        return Err(("knots".into(), Problem::Overflow));
+    }
     let seg = Segment::spline(SegmentKind::BSpline, curve)
         .map_err(|e| curve_error("control points", e))?;
     // (Whether a spline flagged closed does close is judged with the drawing's tolerance.)
@@ -841,6 +909,9 @@ struct Piece {
     order: usize,
     name: String,
     segments: Vec<Segment>,
+    /// The first segment's start and the last one's end.
+    start: V2,
+    end: V2,
     /// `Some(true)` closed (a profile by itself), `None` for a polyline that the profile
     /// decides, `Some(false)` for a piece whose ends join others.
     closed: Option<bool>,
@@ -898,10 +969,16 @@ impl Item {
                 (segs, if shut { Some(true) } else { Some(false) })
             }
         };
+        let (Some(first), Some(last)) = (segments.first(), segments.last()) else {
+            return Ok(None);
+        };
+        let (start, end) = (first.start(), last.end());
         Ok(Some(Piece {
             order: self.order,
             name,
             segments,
+            start,
+            end,
             closed,
         }))
     }
@@ -964,18 +1041,27 @@ struct End {
 /// A chain of open pieces in order, each taken forwards (`true`) or reversed.
 type Run = VecDeque<(usize, bool)>;
 
-/// A grid of cells of side `cell` over points, each cell listing the indices of its points.
+/// A grid of square cells over points: their cell keys, sorted (no hashing: the work is
+/// `O(n log n)` whatever the coordinates).
 struct Grid {
     cell: f64,
-    cells: HashMap<(i64, i64), Vec<usize>>,
+    /// `(cell key, point index)`, sorted.
+    keys: Vec<((i64, i64), usize)>,
 }
 
 impl Grid {
-    fn new(cell: f64) -> Self {
-        Self {
+    fn new(cell: f64, points: &[V2]) -> Self {
+        let mut g = Self {
             cell,
-            cells: HashMap::new(),
-        }
+            keys: Vec::with_capacity(points.len()),
+        };
+        g.keys = points
+            .iter()
+            .enumerate()
+            .map(|(i, &p)| (g.key(p), i))
+            .collect();
+        g.keys.sort_unstable();
+        g
     }
 
     fn key(&self, p: V2) -> (i64, i64) {
@@ -986,27 +1072,48 @@ impl Grid {
         )
     }
 
-    /// Adds point `i` at `p`; returns the points already in its cell.
-    fn insert(&mut self, i: usize, p: V2) -> &[usize] {
-        let list = self.cells.entry(self.key(p)).or_default();
-        list.push(i);
-        let k = list.len() - 1;
-        &list[..k]
+    /// The points of each cell that holds more than `most`.
+    fn crowded(&self, most: usize) -> Option<Vec<usize>> {
+        self.keys
+            .chunk_by(|a, b| a.0 == b.0)
+            .find(|run| run.len() > most)
+            .map(|run| run.iter().map(|&(_, i)| i).collect())
     }
 
     /// The points in the cells within two of `p`'s (all points within `2 · cell` of `p`).
     fn around(&self, p: V2) -> impl Iterator<Item = usize> + '_ {
         let (kx, ky) = self.key(p);
         (-2i64..=2).flat_map(move |dx| {
-            (-2i64..=2).flat_map(move |dy| {
-                self.cells
-                    .get(&(kx.saturating_add(dx), ky.saturating_add(dy)))
-                    .into_iter()
-                    .flatten()
-                    .copied()
-            })
+            let row = kx.saturating_add(dx);
+            let (lo, hi) = ((row, ky.saturating_sub(2)), (row, ky.saturating_add(2)));
+            let a = self.keys.partition_point(|(k, _)| *k < lo);
+            let b = self.keys.partition_point(|(k, _)| *k <= hi);
+            self.keys
+                .get(a..b.max(a))
+                .unwrap_or_default()
+                .iter()
+                .map(|&(_, i)| i)
         })
     }
+}
+
+/// The box `[x0, y0, x1, y1]` of the segments' control points.
+fn box_of(segments: &[Segment]) -> [f64; 4] {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in segments.iter().flat_map(|s| s.curve().control_points()) {
+        b = [
+            b[0].min(p[0]),
+            b[1].min(p[1]),
+            b[2].max(p[0]),
+            b[3].max(p[1]),
+        ];
+    }
+    b
 }
 
 fn point_text(p: V2) -> String {
@@ -1015,38 +1122,23 @@ fn point_text(p: V2) -> String {
 
 /// The chains of the drawing's pieces (see the module documentation).
 fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain>, Failure> {
-    let pieces: Vec<Piece> = pieces.into_iter().flatten().collect();
     let mut chains: Vec<(usize, Chain)> = Vec::new();
-    let mut open: Vec<&Piece> = Vec::new();
-    for p in &pieces {
+    let mut open: Vec<Piece> = Vec::new();
+    for p in pieces.into_iter().flatten() {
         match p.closed {
             Some(false) => open.push(p),
             closed => chains.push((
                 p.order,
                 Chain {
-                    name: p.name.clone(),
-                    segments: p.segments.clone(),
+                    name: p.name,
+                    segments: p.segments,
                     closed,
                 },
             )),
         }
     }
-    let ends_of = |piece: &Piece| -> (V2, V2) {
-        let first = piece.segments.first().map(|s| s.start());
-        let last = piece.segments.last().map(|s| s.end());
-        (
-            first.unwrap_or(V2::new(0.0, 0.0)),
-            last.unwrap_or(V2::new(0.0, 0.0)),
-        )
-    };
     // End 2k is piece k's start, 2k + 1 its end.
-    let points: Vec<V2> = open
-        .iter()
-        .flat_map(|p| {
-            let (a, b) = ends_of(p);
-            [a, b]
-        })
-        .collect();
+    let points: Vec<V2> = open.iter().flat_map(|p| [p.start, p.end]).collect();
     let end = |i: usize| End {
         piece: i / 2,
         at_end: i % 2 == 1,
@@ -1068,14 +1160,10 @@ fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain
             )),
         )
     };
-    let mut grid = Grid::new(tol.join * 0.5);
-    for (i, &p) in points.iter().enumerate() {
-        let before = grid.insert(i, p);
-        if before.len() >= 2 {
-            let mut ids = before.to_vec();
-            ids.push(i);
-            return Err(branch(&ids, p));
-        }
+    let grid = Grid::new(tol.join * 0.5, &points);
+    if let Some(ids) = grid.crowded(2) {
+        let at = ids.first().and_then(|&i| points.get(i)).copied();
+        return Err(branch(&ids, at.unwrap_or_default()));
     }
     let mut partner: Vec<Option<usize>> = vec![None; points.len()];
     for (i, &p) in points.iter().enumerate() {
@@ -1161,33 +1249,53 @@ fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain
         loose_chains.push((start, run, closed));
     }
 
-    // Open ends nearer than the near-miss distance: a gap.
-    let mut free: Vec<(usize, V2)> = Vec::new();
+    // Open ends nearer than the near-miss distance: a gap. (Each chain's own size bounds it
+    // too: a short open line's two ends are not a gap.)
+    let mut free: Vec<(usize, V2, f64)> = Vec::new();
     for (_, run, closed) in &loose_chains {
         if *closed {
             continue;
         }
+        let b = run
+            .iter()
+            .filter_map(|&(k, _)| open.get(k).map(|p| box_of(&p.segments)))
+            .fold(
+                [
+                    f64::INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::NEG_INFINITY,
+                ],
+                |a, b| {
+                    [
+                        a[0].min(b[0]),
+                        a[1].min(b[1]),
+                        a[2].max(b[2]),
+                        a[3].max(b[3]),
+                    ]
+                },
+            );
+        let size = (b[2] - b[0]).hypot(b[3] - b[1]);
         if let (Some(&(first, fwd_first)), Some(&(last, fwd_last))) = (run.front(), run.back()) {
             let start_end = if fwd_first { 2 * first } else { 2 * first + 1 };
             let last_end = if fwd_last { 2 * last + 1 } else { 2 * last };
             for i in [start_end, last_end] {
                 if let Some(&p) = points.get(i) {
-                    free.push((i, p));
+                    free.push((i, p, size));
                 }
             }
         }
     }
-    let mut near = Grid::new(tol.near * 0.5);
-    for (k, &(_, p)) in free.iter().enumerate() {
-        near.insert(k, p);
-    }
-    for (k, &(i, p)) in free.iter().enumerate() {
+    let free_points: Vec<V2> = free.iter().map(|&(_, p, _)| p).collect();
+    let near = Grid::new(tol.near * 0.5, &free_points);
+    for (k, &(i, p, own)) in free.iter().enumerate() {
         let other = near
             .around(p)
             .filter(|&m| m != k)
             .filter_map(|m| free.get(m))
-            .find(|(_, q)| (*q - p).norm() <= tol.near);
-        if let Some(&(j, q)) = other {
+            .find(|(_, q, other)| (*q - p).norm() <= tol.near.min(NEAR_MISS_OWN * own.min(*other)))
+            .map(|&(j, q, _)| (j, q));
+        if let Some((j, q)) = other {
             let (a, b) = if i < j { (i, j) } else { (j, i) };
             let (pa, pb) = if i < j { (p, q) } else { (q, p) };
             let gap = (pb - pa).norm();
@@ -1209,28 +1317,36 @@ fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain
         }
     }
 
+    // (Each piece is in one chain: its segments move there.)
+    let mut parts: Vec<(usize, String, Vec<Segment>)> = open
+        .into_iter()
+        .map(|p| (p.order, p.name, p.segments))
+        .collect();
     for (start, run, closed) in loose_chains {
         let mut segments = Vec::new();
         for (k, forwards) in run {
-            let Some(piece) = open.get(k) else { continue };
+            let Some((_, name, piece)) = parts.get_mut(k) else {
+                continue;
+            };
+            let piece = std::mem::take(piece);
             if forwards {
-                segments.extend(piece.segments.iter().cloned());
+                segments.extend(piece);
             } else {
-                for s in piece.segments.iter().rev() {
+                for s in piece.iter().rev() {
                     segments.push(
                         s.reversed()
-                            .map_err(|e| (piece.name.clone(), Problem::Geometry(e.to_string())))?,
+                            .map_err(|e| (name.clone(), Problem::Geometry(e.to_string())))?,
                     );
                 }
             }
         }
-        let Some(first) = open.get(start) else {
+        let Some((order, name, _)) = parts.get(start) else {
             continue;
         };
         chains.push((
-            first.order,
+            *order,
             Chain {
-                name: first.name.clone(),
+                name: name.clone(),
                 segments,
                 closed: closed.then_some(true),
             },
@@ -1238,4 +1354,202 @@ fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain
     }
     chains.sort_by_key(|(order, _)| *order);
     Ok(chains.into_iter().map(|(_, c)| c).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use curve::ParamCurve;
+    use std::f64::consts::PI;
+
+    fn text(groups: &[(i32, &str)]) -> String {
+        groups.iter().map(|(c, v)| format!("{c}\n{v}\n")).collect()
+    }
+
+    #[test]
+    fn the_tokenizer_reads_the_entities_section_only() {
+        let t = text(&[
+            (999, "a comment"),
+            (0, "SECTION"),
+            (2, "HEADER"),
+            (0, "LINE"), // (not an entity: the HEADER section)
+            (0, "ENDSEC"),
+            (0, "SECTION"),
+            (2, "ENTITIES"),
+            (0, "LINE"),
+            (5, "2F"),
+            (0, "SPLINE"),
+            (71, "3"),
+            (999, "skipped"),
+            (10, "1.5"),
+            (0, "TEXT"),
+            (0, "ENDSEC"),
+            (0, "SECTION"),
+            (2, "OBJECTS"),
+            (0, "LINE"),
+        ])
+        .replace('\n', "\r\n");
+        let section = entity_records(t.as_bytes()).unwrap();
+        let r = &section.records;
+        let kinds: Vec<&str> = r.iter().map(|r| r.kind.as_ref()).collect();
+        assert_eq!(kinds, ["LINE", "SPLINE", "TEXT"]);
+        assert_eq!(r[0].name(), "LINE 2F");
+        assert_eq!(r[1].name(), "SPLINE #2");
+        let groups: Vec<(i32, &str)> = r[1].groups.iter().map(|(c, v)| (*c, v.as_ref())).collect();
+        assert_eq!(groups, [(71, "3"), (10, "1.5")]);
+        assert!(r[0].groups.is_empty(), "groups are kept for splines only");
+        // The section's bytes, as the crate is given them.
+        let (a, b) = section.range.unwrap();
+        assert!(t[a..].starts_with("0\r\nSECTION\r\n2\r\nENTITIES\r\n"));
+        assert!(t[..b.unwrap()].ends_with("0\r\nTEXT\r\n0\r\nENDSEC\r\n"));
+        // A code line that is not a number, and a file ending after a code: refused.
+        assert!(entity_records(b"0\nSECTION\nx\nENTITIES\n").is_err());
+        assert!(entity_records(b"0\nSECTION\n2").is_err());
+    }
+
+    #[test]
+    fn extrusion_directions() {
+        assert_eq!(mirrored([0.0, 0.0, 1.0]), Ok(false));
+        assert_eq!(mirrored([0.0, 0.0, -2.0]), Ok(true));
+        assert_eq!(mirrored([1e-13, 0.0, -1.0]), Ok(true));
+        assert_eq!(mirrored([0.0, 0.0, 0.0]), Ok(false));
+        assert!(mirrored([0.0, 1e-9, 1.0]).is_err());
+        assert!(mirrored([f64::NAN, 0.0, 1.0]).is_err());
+    }
+
+    #[test]
+    fn sweeps_within_rounding_of_a_turn_are_full() {
+        assert_eq!(full_turn(0.0), TAU);
+        assert_eq!(full_turn(4e-13), TAU);
+        assert_eq!(full_turn(TAU - 4e-13), TAU);
+        assert_eq!(full_turn(1.0), 1.0);
+        assert_eq!(full_turn(2e-9), 2e-9);
+    }
+
+    #[test]
+    fn bulge_arcs() {
+        // Bulge 1: the half circle from (1, 0) counterclockwise to (−1, 0), through (0, 1).
+        let a = bulge_arc([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap();
+        let top = a.jet(0.5).p;
+        assert!((top - V2::new(0.0, 1.0)).norm() < 1e-15, "{top:?}");
+        // Its middle as the tolerance's box takes it, and the other sign.
+        assert_eq!(bulge_middle([1.0, 0.0], [-1.0, 0.0], 1.0), [0.0, 1.0]);
+        let b = bulge_arc([1.0, 0.0], [-1.0, 0.0], -1.0).unwrap();
+        assert!((b.jet(0.5).p - V2::new(0.0, -1.0)).norm() < 1e-15);
+        // A quarter circle (bulge tan(π/8)) from (1, 0) to (0, 1) about the origin.
+        let q = bulge_arc([1.0, 0.0], [0.0, 1.0], (PI / 8.0).tan()).unwrap();
+        for k in 0..=8 {
+            assert!((q.jet(k as f64 / 8.0).p.norm() - 1.0).abs() < 1e-15);
+        }
+        // A large bulge: nearly the full circle, still through both ends.
+        let big = bulge_arc([0.0, 0.0], [1e-3, 0.0], 1e6).unwrap();
+        assert!((big.start() - V2::new(0.0, 0.0)).norm() < 1e-12);
+        assert!((big.end() - V2::new(1e-3, 0.0)).norm() < 1e-12);
+    }
+
+    /// A piece of one segment.
+    fn piece(order: usize, seg: Segment) -> Option<Piece> {
+        Some(Piece {
+            order,
+            name: format!("LINE #{}", order + 1),
+            start: seg.start(),
+            end: seg.end(),
+            segments: vec![seg],
+            closed: Some(false),
+        })
+    }
+
+    fn tol(join: f64) -> Tolerance {
+        Tolerance {
+            join,
+            near: join * 1e5,
+        }
+    }
+
+    #[test]
+    fn chaining_reverses_pieces_and_closes() {
+        let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
+        let pieces = vec![
+            piece(0, l([0.0, 0.0], [1.0, 0.0])),
+            piece(1, l([0.0, 1.0], [1.0, 1.0])), // backwards
+            piece(2, l([1.0, 0.0], [1.0, 1.0])),
+            piece(3, l([0.0, 0.0], [0.0, 1.0])), // backwards
+        ];
+        let chains = chain_pieces(pieces, &tol(1e-9)).unwrap();
+        assert_eq!(chains.len(), 1);
+        let c = &chains[0];
+        assert_eq!((c.name.as_str(), c.closed), ("LINE #1", Some(true)));
+        let ends: Vec<[f64; 2]> = c.segments.iter().map(|s| s.start().arr()).collect();
+        assert_eq!(ends, [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+        // An open chain grows at both ends of its first piece.
+        let pieces = vec![
+            piece(0, l([1.0, 0.0], [2.0, 0.0])),
+            piece(1, l([0.0, 0.0], [1.0, 0.0])),
+            piece(2, l([3.0, 0.0], [2.0, 0.0])),
+        ];
+        let chains = chain_pieces(pieces, &tol(1e-9)).unwrap();
+        assert_eq!(chains.len(), 1);
+        assert_eq!(chains[0].closed, None);
+        assert_eq!(chains[0].segments[0].start().arr(), [0.0, 0.0]);
+        assert_eq!(chains[0].segments[2].end().arr(), [3.0, 0.0]);
+    }
+
+    #[test]
+    fn three_ends_at_a_point_are_a_branch() {
+        let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
+        // Three ends in one cell of the grid, and three ends in neighbouring cells.
+        for eps in [0.0, 0.9e-9] {
+            let pieces = vec![
+                piece(0, l([0.0, 0.0], [1.0, 0.0])),
+                piece(1, l([1.0 + eps, 0.0], [2.0, 0.0])),
+                piece(2, l([1.0, eps], [1.0, 1.0])),
+            ];
+            let (field, p) = chain_pieces(pieces, &tol(1e-9)).unwrap_err();
+            assert_eq!(field, "LINE #1");
+            assert!(p.to_string().contains("branch"), "{p}");
+        }
+    }
+
+    #[test]
+    fn near_misses_are_gaps_and_far_ends_are_open() {
+        let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
+        let open = || {
+            vec![
+                piece(0, l([0.0, 0.0], [1.0, 0.0])),
+                piece(1, l([1.0, 0.0], [1.0, 1.0])),
+                piece(2, l([1.0, 1.0], [0.0, 1e-6])),
+            ]
+        };
+        let (field, p) = chain_pieces(open(), &tol(1e-9)).unwrap_err();
+        assert_eq!(field, "LINE #1");
+        assert!(p.to_string().contains("gap of 1e-6"), "{p}");
+        // With a looser near-miss distance below the gap: an open chain.
+        let t = Tolerance {
+            join: 1e-9,
+            near: 1e-7,
+        };
+        let chains = chain_pieces(open(), &t).unwrap();
+        assert_eq!(chains.len(), 1);
+        assert_eq!(chains[0].closed, None);
+    }
+
+    #[test]
+    fn the_tolerance_follows_the_drawing() {
+        let item = |seg: Segment| Item {
+            order: 0,
+            name: String::new(),
+            shape: Shape::Segment {
+                segment: Box::new(seg),
+                flagged: false,
+            },
+        };
+        let items = vec![item(Segment::line([0.0, 0.0], [3.0, 4.0]).unwrap())];
+        let t = Tolerance::of(&items);
+        assert_eq!(t.join, 5e-9);
+        assert_eq!(t.near, 5e-4);
+        // Far from the origin the rounding of the coordinates rules.
+        let items = vec![item(Segment::line([1e9, 0.0], [1e9 + 3.0, 4.0]).unwrap())];
+        let t = Tolerance::of(&items);
+        assert!(t.join > 1e-6, "{}", t.join);
+    }
 }

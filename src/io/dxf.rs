@@ -792,7 +792,13 @@ fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), EntityError
     let r = Rational::new(b, weights.as_deref())
         .map_err(|e| ("weights".to_string(), Problem::Spline(e)))?;
     let (a, z) = r.domain();
-    let clamped = knots[..=degree].iter().all(|&k| k == a) && knots[n..].iter().all(|&k| k == z);
+    // (The counts were checked: the slices are whole; an empty one would not be clamped.)
+    let first = knots.get(..=degree).unwrap_or_default();
+    let last = knots.get(n..).unwrap_or_default();
+    let clamped = !first.is_empty()
+        && !last.is_empty()
+        && first.iter().all(|&k| k == a)
+        && last.iter().all(|&k| k == z);
     let curve = if clamped {
         SplineCurve::clamped(degree, &points, weights.as_deref(), Some(knots))
     } else {
@@ -815,7 +821,7 @@ fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), EntityError
         SplineCurve::clamped(degree, &pts, w.as_deref(), Some(k))
     }
     .map_err(|e| curve_error("control points", e))?;
-    if points.iter().all(|p| *p == points[0]) {
+    if points.iter().all(|p| Some(p) == points.first()) {
         return Err(("control points".into(), Problem::Degenerate));
     }
     let hom = curve.curve().homogeneous();

@@ -3,10 +3,11 @@
 //!
 //! What the `dxf` crate gets wrong, and each case tested here: it drops every control point of
 //! a `SPLINE` written without z groups (30), and silently drops an entity whose last group
-//! value is malformed. Its writer leaves out `LWPOLYLINE`, `SPLINE` and `ELLIPSE` entities at
-//! its default version (R12): every drawing here is written as R2013. And it writes every
-//! number to 12 decimals (2π as 6.28318530718, 1e-13 as 0.0): drawings written with it are
-//! compared within that rounding, or made of numbers it writes exactly.
+//! value is malformed or that a blank line interrupts. Its writer leaves out `LWPOLYLINE`,
+//! `SPLINE` and `ELLIPSE` entities at its default version (R12): every drawing here is
+//! written as R2013. And it writes every number to 12 decimals (2π as 6.28318530718, 1e-13
+//! as 0.0): drawings written with it are compared within that rounding, or made of numbers
+//! it writes exactly.
 #![allow(clippy::unwrap_used)]
 
 mod common;
@@ -971,6 +972,17 @@ fn an_entity_the_crate_drops_silently_is_refused() {
     assert_eq!(crate_view.entities().count(), 2, "the crate was fixed");
     let e = read_text(&text).unwrap_err();
     assert_eq!(e.field, "LINE #3", "{e}");
+    // A blank line where a group code should be, before the section's end: the crate drops
+    // the entity it interrupts, and reads on.
+    let lines = [
+        ("LINE", g(&[(10, 0.0), (20, 0.0), (11, 1.0), (21, 0.0)])),
+        ("LINE", g(&[(10, 1.0), (20, 0.0), (11, 0.0), (21, 1.0)])),
+    ];
+    let text = dxf_text(&lines).replace("  0\nENDSEC", "\n  0\nENDSEC");
+    let crate_view = Drawing::load(&mut text.as_bytes()).unwrap();
+    assert_eq!(crate_view.entities().count(), 1, "the crate was fixed");
+    let e = read_text(&text).unwrap_err();
+    assert!(e.to_string().contains("empty line"), "{e}");
 }
 
 #[test]

@@ -2,18 +2,19 @@
 //! model-space entities `LINE`, `ARC`, `CIRCLE`, `ELLIPSE`, `LWPOLYLINE`, `POLYLINE` (with
 //! bulges) and `SPLINE` of the `ENTITIES` section, chained end to end into profiles.
 //!
-//! **What is read.** The file is parsed with the `dxf` crate, except `SPLINE` entities, whose
-//! group codes are read here from the text: the crate drops every control point of a spline
-//! written without `30` (z) groups, as 2D writers do, and keeps the rest only up to the
-//! shortest of the `10`/`20`/`30` lists. A small tokenizer of the `ENTITIES` section's
-//! code/value line pairs gives the splines' groups, each entity's handle (code `5`) as written,
-//! and a check that the crate read every entity: it silently drops an entity whose last group
-//! is malformed, which is refused here instead.
+//! **What is read.** The `ENTITIES` section is parsed with the `dxf` crate, except `SPLINE`
+//! entities, whose group codes are read here from the text: the crate drops every control
+//! point of a spline written without `30` (z) groups, as 2D writers do, and keeps the rest
+//! only up to the shortest of the `10`/`20`/`30` lists. A small tokenizer of the file's
+//! code/value line pairs finds the section, gives the splines' groups and each entity's
+//! handle (code `5`) as written, and checks that the crate read every entity: it silently
+//! drops an entity interrupted by a malformed value or a blank line, which is refused here
+//! instead. The rest of the file (header, tables, blocks, objects) is not read.
 //!
 //! - `LINE`: a line (zero-length lines, within the tolerance below, are skipped).
 //! - `ARC`: angles in degrees, counterclockwise from start to end (an end below the start
-//!   goes once more round; equal angles are a full circle). `CIRCLE`: a closed profile of one
-//!   full-turn arc.
+//!   goes once more round; equal angles, or a sweep within [`ANGLE_ROUNDING`] of nothing or of
+//!   a full turn, make a full circle). `CIRCLE`: a closed profile of one full-turn arc.
 //! - `ELLIPSE`: centre, major axis end point (relative to the centre), ratio of the minor axis
 //!   to the major, and start and end eccentric angles in radians, counterclockwise about the
 //!   extrusion direction; a full turn is a closed profile by itself.
@@ -228,8 +229,20 @@ fn entity_records(bytes: &[u8]) -> Result<Section<'_>, Problem> {
         let code_line = String::from_utf8_lossy(code_line);
         let code_line = code_line.trim();
         if code_line.is_empty() {
-            // (The crate stops at a blank code line, as at the end of the file.)
-            break;
+            // The crate stops at a blank code line as at the end of the file, and would
+            // silently leave out whatever follows: only blank lines may.
+            if bytes
+                .get(at..)
+                .unwrap_or_default()
+                .iter()
+                .all(u8::is_ascii_whitespace)
+            {
+                break;
+            }
+            return Err(malformed(
+                i + 1,
+                "an empty line where a group code should be",
+            ));
         }
         let Ok(code) = code_line.parse::<i32>() else {
             return Err(malformed(
@@ -1411,6 +1424,9 @@ mod tests {
         // A code line that is not a number, and a file ending after a code: refused.
         assert!(entity_records(b"0\nSECTION\nx\nENTITIES\n").is_err());
         assert!(entity_records(b"0\nSECTION\n2").is_err());
+        // A blank code line ends the file only where nothing but blank lines follows it.
+        assert!(entity_records(b"0\nSECTION\n2\nENTITIES\n\n0\nLINE\n").is_err());
+        assert!(entity_records(b"0\nSECTION\n2\nENTITIES\n0\nLINE\n\n \r\n\n").is_ok());
     }
 
     #[test]

@@ -45,6 +45,16 @@ const PROFILES: &[Embedded] = &[
         Some(DrawingFormat::Svg),
         include_str!("../../fixtures/drawing-gear.svg"),
     ),
+    (
+        "drawing-bracket",
+        Some(DrawingFormat::Dxf),
+        include_str!("../../fixtures/drawing-bracket.dxf"),
+    ),
+    (
+        "drawing-plate",
+        Some(DrawingFormat::Dxf),
+        include_str!("../../fixtures/drawing-plate.dxf"),
+    ),
 ];
 
 /// One example's results.

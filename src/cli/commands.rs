@@ -353,6 +353,15 @@ pub(super) fn antipodal_failure(e: antipodal::Error, curves: &[&Curve]) -> Failu
         },
         E::Spline(e) => Failure::Other(format!("spline arithmetic failed: {e}")),
         E::TooComplex { .. } => Failure::Other(e.to_string()),
+        // (A refusal of the two profiles together: the first names them.)
+        E::TooManySegmentPairs { .. } => match curves.first() {
+            Some(c) => Failure::Input(CurveFileError {
+                file: c.file.clone(),
+                field: "segments".into(),
+                problem: Problem::Unsupported(e.to_string()),
+            }),
+            None => Failure::Other(e.to_string()),
+        },
     }
 }
 

@@ -28,6 +28,17 @@ pub enum Error {
         /// The number of lobes.
         lobes: usize,
     },
+    /// Two profiles with more pairs of curved segments than the common tangents search takes.
+    #[error(
+        "{pairs} pairs of curved segments: the common tangents of profiles search at most \
+         {limit} (each pair is a search of its own)"
+    )]
+    TooManySegmentPairs {
+        /// The pairs the profiles have.
+        pairs: usize,
+        /// The most searched.
+        limit: usize,
+    },
     /// A segment of a profile was refused.
     #[error("segment {segment}: {source}")]
     InSegment {

@@ -71,7 +71,7 @@ pub use error::{Error, Result};
 pub use forms::SymbolicForms;
 pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
 pub use profile_pairs::profile_antipodal;
-pub use profile_tangents::profile_tangents;
+pub use profile_tangents::{profile_tangents, MAX_SEGMENT_PAIRS};
 pub use profiles::profile_inflections;
 pub use types::{
     Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,

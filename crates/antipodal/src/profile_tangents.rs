@@ -21,6 +21,10 @@ use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2}
 /// direction must be: far above the rounding of unit directions, far below any drawn angle.
 const CONE_EDGE: f64 = 1e-9;
 
+/// Most pairs of curved segments searched for common tangents (each pair is one run of the
+/// two-curve search, some tens of microseconds): keeps a run within seconds.
+pub const MAX_SEGMENT_PAIRS: usize = 40_000;
+
 /// Two lines whose points of tangency are this close (relative to the size) are one.
 const SAME_LINE: f64 = 1e-7;
 
@@ -112,6 +116,19 @@ impl<'p> Side<'p> {
 /// ```
 pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<ProfileTangents> {
     opts.validate()?;
+    let curved = |p: &Profile| {
+        p.segments()
+            .iter()
+            .filter(|s| s.kind() != SegmentKind::Line)
+            .count()
+    };
+    let pairs = curved(a).saturating_mul(curved(b));
+    if pairs > MAX_SEGMENT_PAIRS {
+        return Err(Error::TooManySegmentPairs {
+            pairs,
+            limit: MAX_SEGMENT_PAIRS,
+        });
+    }
     let points: Vec<[f64; 2]> = [a, b]
         .iter()
         .flat_map(|p| p.segments().iter().flat_map(|s| s.curve().control_points()))

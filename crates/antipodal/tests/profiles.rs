@@ -62,7 +62,9 @@ fn sampled_inflections(p: &Profile, size: f64) -> (Vec<f64>, f64) {
         for j in 1..=N {
             let x = j as f64 / N as f64;
             let cur = k(x);
-            if (cur > 0.0) != (prev > 0.0) && j < N {
+            // (Also in the last step: a root there is inside the segment, before the joint,
+            // whose own comparison takes the sign at the very end.)
+            if (cur > 0.0) != (prev > 0.0) {
                 out.push(i as f64 + x);
                 least = least.min(cur.abs().min(prev.abs()) * size);
             }

@@ -205,6 +205,63 @@ fn bisector_methods_and_trimming_agree() {
     assert_eq!(bad.code, 2);
 }
 
+/// A curve written as a one-segment profile has exactly the curve's bisector (branches,
+/// parameters and points), with the sites of each branch added.
+#[test]
+fn one_segment_profiles_have_their_curves_bisector() {
+    let dir = tempfile::tempdir().unwrap();
+    let (c1, c2) = (
+        fixture("bisector-fig3-quadratic1.json"),
+        fixture("bisector-fig3-quadratic2.json"),
+    );
+    let wrap = |name: &str, curve: &str| {
+        let text = std::fs::read_to_string(curve).unwrap();
+        let path = dir.path().join(name);
+        std::fs::write(
+            &path,
+            format!("{{\"kind\":\"profile\",\"segments\":[{text}]}}"),
+        )
+        .unwrap();
+        path.to_string_lossy().into_owned()
+    };
+    let (p1, p2) = (wrap("p1.json", &c1), wrap("p2.json", &c2));
+    for (curves, profiles) in [
+        (
+            vec![c1.as_str(), c2.as_str()],
+            vec![p1.as_str(), p2.as_str()],
+        ),
+        (vec![c1.as_str()], vec![p1.as_str()]),
+    ] {
+        let plain = curvekit_json(&[&["bisector"], &curves[..]].concat());
+        let profile = curvekit_json(&[&["bisector"], &profiles[..]].concat());
+        let (a, b) = (
+            plain["branches"].as_array().unwrap(),
+            profile["branches"].as_array().unwrap(),
+        );
+        assert!(!a.is_empty() && a.len() == b.len(), "{curves:?}");
+        for (x, y) in a.iter().zip(b) {
+            assert_eq!(x["xy"], y["xy"]);
+            assert_eq!(x["tr"], y["tr"]);
+            assert_eq!(y["segment"], serde_json::json!([0, 0]));
+            assert_eq!(y["corner"], serde_json::json!([false, false]));
+        }
+        assert_eq!(plain["isolated"], profile["isolated"]);
+        assert_eq!(plain["singular"], profile["singular"]);
+    }
+}
+
+/// The self-bisector of a drawing's outline, trimmed: its reflex corners take part as point
+/// sites, and every vertex is at the same distance from its two foot points.
+#[test]
+fn a_drawings_trimmed_self_bisector_has_corner_branches() {
+    let d = curvekit_json(&["bisector", &fixture("profile-bracket.json"), "--trimmed"]);
+    let branches = d["branches"].as_array().unwrap();
+    assert!(branches
+        .iter()
+        .any(|b| b["corner"].as_array().unwrap().iter().any(|c| c == true)));
+    assert_eq!(d["complete"], true);
+}
+
 #[test]
 fn time_reports_stats() {
     let d = curvekit_json(&["inflections", &fixture("bezier_s.json"), "--time"]);

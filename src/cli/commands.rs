@@ -202,7 +202,7 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
 /// profile (a line, an arc, an open or clamped spline).
 fn run_profile_tangents(c1: &Curve, c2: &Curve, common: &Common) -> Result<(), Failure> {
     let both = [c1, c2];
-    let (a, b) = (as_profile(c1)?, as_profile(c2)?);
+    let (a, b) = (as_profile(c1, "tangents")?, as_profile(c2, "tangents")?);
     let opts = common.options();
     let run = || antipodal::profile_tangents(&a, &b, &opts);
     let found = run().map_err(|e| antipodal_failure(e, &both))?;
@@ -230,14 +230,14 @@ fn run_profile_tangents(c1: &Curve, c2: &Curve, common: &Common) -> Result<(), F
 
 /// A curve as a profile: itself, or one segment (a line, an arc, a spline that is not
 /// periodic); an analytic shape or a periodic spline is refused by name.
-fn as_profile(c: &Curve) -> Result<curvekit::curve::Profile, Failure> {
+fn as_profile(c: &Curve, command: &str) -> Result<curvekit::curve::Profile, Failure> {
     use curvekit::curve::{Profile, Segment, SegmentKind};
     let refuse = |why: &str| {
         Failure::Input(CurveFileError {
             file: c.file.clone(),
             field: "kind".into(),
             problem: Problem::Unsupported(format!(
-                "tangents with a profile: {why}; give it as a profile or an open or clamped \
+                "{command} with a profile: {why}; give it as a profile or an open or clamped \
                  spline"
             )),
         })
@@ -274,6 +274,10 @@ pub(super) fn run_bisector(
         .map(|p| read_curve_picked(p, common.pick))
         .transpose()?;
     let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
+    one_curve(&curves, "bisector")?;
+    if curves.iter().any(|c| matches!(c.shape, Shape::Profile(_))) {
+        return run_profile_bisector(&curves, &opts, common);
+    }
     let r1 = spline_of(&c1)?;
     let r2 = c2.as_ref().map(spline_of).transpose()?;
     let compute = || match r2 {
@@ -290,6 +294,38 @@ pub(super) fn run_bisector(
         report::json_doc(&found, &curves, stats.as_ref())
     } else {
         report::bisector_text(&curves, &found, stats.as_ref())
+    })
+}
+
+/// `bisector` where one curve or both are profiles: the other is taken as a one-segment
+/// profile (a line, an arc, an open or clamped spline).
+fn run_profile_bisector(
+    curves: &[&Curve],
+    opts: &zeroset::BisectorOptions,
+    common: &Common,
+) -> Result<(), Failure> {
+    let profiles = curves
+        .iter()
+        .map(|c| as_profile(c, "bisector"))
+        .collect::<Result<Vec<_>, _>>()?;
+    let compute = || match &profiles[..] {
+        [one] => zeroset::profile_self_bisector(one, opts),
+        [a, b, ..] => zeroset::profile_bisector(a, b, opts),
+        [] => unreachable!("one curve at least"),
+    };
+    let found = compute().map_err(zeroset_failure)?;
+    let stats = common.time.then(|| timing::measure(compute));
+    if let Some(svg) = &common.svg {
+        let title = format!("{} bisector branches", found.branches.len());
+        write_file(
+            svg,
+            &report::profile_bisector_figure(curves, &profiles, &found, title),
+        )?;
+    }
+    print_out(&if common.json {
+        report::json_doc(&found, curves, stats.as_ref())
+    } else {
+        report::profile_bisector_text(curves, &found, stats.as_ref())
     })
 }
 

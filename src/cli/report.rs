@@ -6,12 +6,13 @@ use antipodal::{
     ProfileInflections, ProfileTangents, Tangents,
 };
 use curvekit::curve::ParamCurve;
+use curvekit::curve::Profile;
 use curvekit::io::{Curve, Shape};
 use curvekit::svg::{side_by_side, Figure};
 use serde::Serialize;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
-use zeroset::Bisector;
+use zeroset::{Bisector, Branch, ProfileBisector, ProfileBranch};
 
 /// The curve as a dense polyline in a figure.
 pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
@@ -405,23 +406,55 @@ pub(crate) fn profile_tangents_text(
 
 /// The readable bisector report (branch ends; the full polylines are in the JSON).
 pub(crate) fn bisector_text(curves: &[&Curve], r: &Bisector, stats: Option<&Stats>) -> String {
+    let branches = r.branches.iter().map(|b| (&b.xy[..], String::new()));
+    let counts = [r.singular.len(), r.isolated.len()];
+    bisector_lines(curves, r.complete, branches, counts, stats)
+}
+
+/// The readable bisector report of profiles: as for curves, with the sites of each branch.
+pub(crate) fn profile_bisector_text(
+    curves: &[&Curve],
+    r: &ProfileBisector,
+    stats: Option<&Stats>,
+) -> String {
+    let site = |k: usize, b: &ProfileBranch| {
+        let what = if b.corner[k] { "corner" } else { "segment" };
+        format!("{what} {}", b.segment[k])
+    };
+    let branches = r
+        .branches
+        .iter()
+        .map(|b| (&b.xy[..], format!(", {} and {}", site(0, b), site(1, b))));
+    let counts = [r.singular.len(), r.isolated.len()];
+    bisector_lines(curves, r.complete, branches, counts, stats)
+}
+
+/// The lines of a bisector report: the curves, each branch's ends (and what follows them),
+/// the counts of singular and isolated points.
+fn bisector_lines<'a>(
+    curves: &[&Curve],
+    complete: bool,
+    branches: impl ExactSizeIterator<Item = (&'a [[f64; 2]], String)>,
+    [singular, isolated]: [usize; 2],
+    stats: Option<&Stats>,
+) -> String {
     let mut s = String::new();
     for (k, c) in curves.iter().enumerate() {
         curve_line(&mut s, &format!("curve {}:", k + 1), c);
     }
-    let complete = if r.complete {
+    let complete = if complete {
         ""
     } else {
         " (INCOMPLETE: search limit hit)"
     };
-    let _ = writeln!(s, "branches:    {}{complete}", r.branches.len());
-    for (k, b) in r.branches.iter().enumerate() {
-        if let (Some(first), Some(last)) = (b.xy.first(), b.xy.last()) {
+    let _ = writeln!(s, "branches:    {}{complete}", branches.len());
+    for (k, (xy, sites)) in branches.enumerate() {
+        if let (Some(first), Some(last)) = (xy.first(), xy.last()) {
             let _ = writeln!(
                 s,
-                "  {:>3}  {} points, from ({}, {}) to ({}, {})",
+                "  {:>3}  {} points, from ({}, {}) to ({}, {}){sites}",
                 k + 1,
-                b.xy.len(),
+                xy.len(),
                 n(first[0]),
                 n(first[1]),
                 n(last[0]),
@@ -429,12 +462,7 @@ pub(crate) fn bisector_text(curves: &[&Curve], r: &Bisector, stats: Option<&Stat
             );
         }
     }
-    let _ = writeln!(
-        s,
-        "singular:    {}\nisolated:    {}",
-        r.singular.len(),
-        r.isolated.len()
-    );
+    let _ = writeln!(s, "singular:    {singular}\nisolated:    {isolated}");
     if let Some(st) = stats {
         let _ = writeln!(s, "{}", time_line(st));
     }
@@ -486,6 +514,62 @@ pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) ->
         [c1, c2, ..] => (*c1, *c2),
         [] => return Figure::new().render(),
     };
+    let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
+    let foot = |k: usize, u: f64| if k == 0 { p1.jet(u) } else { p2.jet(u) }.p.arr();
+    let domains = [c1.domain(), c2.domain()];
+    plane_and_parameters(curves, r, &foot, domains, &[], title)
+}
+
+/// The bisector figure of profiles: as for curves, the corners marked, the foot points and
+/// the parameter square the profiles'.
+pub(crate) fn profile_bisector_figure(
+    curves: &[&Curve],
+    profiles: &[Profile],
+    r: &ProfileBisector,
+    title: String,
+) -> String {
+    let (Some(a), Some(b)) = (profiles.first(), profiles.last()) else {
+        return Figure::new().render();
+    };
+    let plain = Bisector {
+        branches: r
+            .branches
+            .iter()
+            .map(|b| Branch {
+                tr: b.tr.clone(),
+                xy: b.xy.clone(),
+            })
+            .collect(),
+        singular: Vec::new(),
+        isolated: Vec::new(),
+        complete: r.complete,
+    };
+    let foot = |k: usize, u: f64| if k == 0 { a.jet(u) } else { b.jet(u) }.p.arr();
+    let corners: Vec<[f64; 2]> = profiles
+        .iter()
+        .flat_map(|p| p.corners().map(|j| p.jet(j.u).p.arr()))
+        .collect();
+    plane_and_parameters(
+        curves,
+        &plain,
+        &foot,
+        [a.domain(), b.domain()],
+        &corners,
+        title,
+    )
+}
+
+/// The curves, the bisector branches and thin lines from a few bisector points to their foot
+/// points (`foot(k, u)` on curve `k`), corners marked, framed around the curves; beside it
+/// the zero set in the parameter square of `domains`.
+fn plane_and_parameters(
+    curves: &[&Curve],
+    r: &Bisector,
+    foot: &dyn Fn(usize, f64) -> [f64; 2],
+    domains: [(f64, f64); 2],
+    corners: &[[f64; 2]],
+    title: String,
+) -> String {
     let mut plane = Figure::new();
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
@@ -502,23 +586,18 @@ pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) ->
         let pad = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
         plane.frame([lo[0] - pad, lo[1] - pad], [hi[0] + pad, hi[1] + pad]);
     }
-    {
-        let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
-        for b in &r.branches {
-            plane.thin(b.xy.clone(), "#d62020");
-            let step = (b.xy.len() / 6).max(1);
-            for (tr, xy) in b.tr.iter().zip(&b.xy).step_by(step) {
-                plane.thin(
-                    vec![p1.jet(tr[0]).p.arr(), *xy, p2.jet(tr[1]).p.arr()],
-                    "#999999",
-                );
-            }
+    for b in &r.branches {
+        plane.thin(b.xy.clone(), "#d62020");
+        let step = (b.xy.len() / 6).max(1);
+        for (tr, xy) in b.tr.iter().zip(&b.xy).step_by(step) {
+            plane.thin(vec![foot(0, tr[0]), *xy, foot(1, tr[1])], "#999999");
         }
     }
+    corners.iter().for_each(|&c| plane.corner(c));
     plane.title(title);
 
     // The parameter square, scaled to a unit square so that both domains read alike.
-    let ((t0, t1), (r0, r1)) = (c1.domain(), c2.domain());
+    let [(t0, t1), (r0, r1)] = domains;
     let unit = |tr: &[f64; 2]| [(tr[0] - t0) / (t1 - t0), (tr[1] - r0) / (r1 - r0)];
     let mut params = Figure::new();
     params.thin(

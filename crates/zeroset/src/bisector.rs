@@ -25,7 +25,9 @@ use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
 use bspline::Rational;
 use curve::Frame;
 use point::bbox;
+pub(crate) use point::bbox_of_points;
 use vertices::Ctx;
+pub(crate) use vertices::{min_dist, FAR, TRIM_SLACK};
 
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
 const DIVISIBLE: f64 = 1e-8;
@@ -154,19 +156,26 @@ fn local_curves(curves: &[&Rational]) -> Result<(Frame, Vec<Rational>)> {
     let frame = Frame::for_all(&sets);
     let local = curves
         .iter()
-        .zip(&points)
-        .map(|(c, pts)| {
-            let mut at = pts.iter();
-            let moved = c.homogeneous().map_points(2, |_, dst| {
-                if let Some(&p) = at.next() {
-                    dst.copy_from_slice(&frame.to_local(p));
-                }
-            });
-            let weights = c.weights();
-            Rational::new(moved, c.is_rational().then_some(&weights[..]))
-        })
-        .collect::<std::result::Result<Vec<_>, _>>()?;
+        .map(|c| in_frame(c, &frame))
+        .collect::<Result<Vec<_>>>()?;
     Ok((frame, local))
+}
+
+/// A planar curve in a frame's local coordinates (the same weights, the control points
+/// moved).
+pub(crate) fn in_frame(c: &Rational, frame: &Frame) -> Result<Rational> {
+    let pts = c.control_points();
+    let mut at = pts.iter();
+    let moved = c.homogeneous().map_points(2, |_, dst| {
+        if let Some(p) = at.next() {
+            dst.copy_from_slice(&frame.to_local([p[0], p[1]]));
+        }
+    });
+    let weights = c.weights();
+    Ok(Rational::new(
+        moved,
+        c.is_rational().then_some(&weights[..]),
+    )?)
 }
 
 /// A bisector found in a frame, in global coordinates (the parameters are the same).

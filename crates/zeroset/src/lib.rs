@@ -7,12 +7,15 @@
 //! - [`bisector`], [`self_bisector`]: the bisector as branches of matched foot points `(t, r)`
 //!   and bisector points `P(t, r)` (Eq. 16), from the functions `F1`, `F2`, `F3` of §3
 //!   ([`bisector_function`]).
+//! - [`profile_bisector`], [`profile_self_bisector`]: the same for profiles (chains of
+//!   segments with corners), corners acting as point sites inside their cones.
 
 mod assemble;
 mod bisector;
 mod error;
 mod extract;
 mod patch;
+mod profile_bisector;
 mod solve1;
 mod symbolic;
 mod system;
@@ -23,6 +26,9 @@ pub use bisector::{
     RESIDUAL,
 };
 pub use error::{Error, Result};
+pub use profile_bisector::{
+    profile_bisector, profile_self_bisector, ProfileBisector, ProfileBranch, ProfilePoint,
+};
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};
 pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};

@@ -58,7 +58,7 @@ const MAX_TOL: f64 = 1e-3;
 /// (and gigabytes), closer than its vertices are computed.
 const MIN_CHORD_TOL: f64 = 1e-9;
 /// The coarsest: a polyline half the size away from the curve it stands for.
-const MAX_CHORD_TOL: f64 = 0.5;
+pub(crate) const MAX_CHORD_TOL: f64 = 0.5;
 
 impl ZeroSetOptions {
     /// Sets the parameter tolerance.

@@ -2,8 +2,8 @@
 //! closed chains of cubic Béziers with corners.
 #![allow(dead_code, unreachable_pub, missing_docs, clippy::unwrap_used)]
 
-use antipodal::{Profile, Segment};
 use curve::{ParamCurve, SegmentKind, SplineCurve, V2};
+use curve::{Profile, Segment};
 use std::f64::consts::TAU;
 
 /// A star-shaped polygon (vertex `i` at angle `angles[i]` and radius `radii[i]`) with the
@@ -80,8 +80,12 @@ pub fn assemble(mut segs: Vec<Segment>, start: usize, reverse: bool) -> Option<P
     Profile::new(segs, None).ok()
 }
 
-/// A segment run backwards (same kind).
+/// A segment run backwards (same kind; an arc on the same circle, which the bisectors of
+/// arcs of one circle need).
 pub fn reversed(s: &Segment) -> Segment {
+    if s.circle().is_some() {
+        return s.reversed().unwrap();
+    }
     let c = s.curve();
     let mut pts = c.control_points();
     pts.reverse();

@@ -138,13 +138,21 @@ pub fn bisector_point(c1: &Rational, c2: &Rational, t: f64, r: f64) -> Option<[f
 
 /// Bounding box of the control points: (centre, diagonal).
 pub(super) fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
+    let pts: Vec<[f64; 2]> = curves
+        .iter()
+        .flat_map(|c| c.control_points())
+        .map(|p| [p[0], p[1]])
+        .collect();
+    bbox_of_points(&pts)
+}
+
+/// The centre and diagonal of the box of `points` (a diagonal of 1 for a single point).
+pub(crate) fn bbox_of_points(points: &[[f64; 2]]) -> ([f64; 2], f64) {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for c in curves {
-        for p in c.control_points() {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
+    for p in points {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
         }
     }
     let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);

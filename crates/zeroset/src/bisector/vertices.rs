@@ -6,7 +6,7 @@ use super::point::{pd, point_and_residual, psi, FLOOR, RESIDUAL};
 use bspline::Rational;
 
 /// Points farther than this many bounding-box diagonals count as points at infinity.
-const FAR: f64 = 1e3;
+pub(crate) const FAR: f64 = 1e3;
 
 /// Newton steps when polishing a vertex on the bisector condition.
 const MAX_POLISH: usize = 8;
@@ -32,7 +32,7 @@ const CLOSED_TANGENT: f64 = 1e-9;
 /// more than this (relative to the bounding-box diagonal): the point holds the bisector
 /// conditions only to [`RESIDUAL`] of the distances, so the nearest foot point may seem
 /// farther by about that.
-const TRIM_SLACK: f64 = 1e-9;
+pub(crate) const TRIM_SLACK: f64 = 1e-9;
 
 /// Context shared by the two entry points.
 pub(super) struct Ctx<'a> {
@@ -141,7 +141,7 @@ impl Ctx<'_> {
 
 /// Distance from `p` to the curve: dense samples, then Newton on `⟨C − p, C'⟩ = 0` from every
 /// sampled local minimum (not certified: a feature narrower than the sampling can be missed).
-fn min_dist(c: &Rational, p: [f64; 2]) -> f64 {
+pub(crate) fn min_dist(c: &Rational, p: [f64; 2]) -> f64 {
     let (a, b) = c.domain();
     let n = 64 * c.homogeneous().breakpoints().len().max(2);
     let dist = |u: f64| {

@@ -1,0 +1,559 @@
+//! Bisectors of profiles: chains of lines, arcs and splines joined at corners or smoothly
+//! ([`curve::Profile`]).
+//!
+//! A profile's sites are its segments and its corners. A segment contributes foot points on
+//! its normals, as a smooth curve does; a corner is a point site for the directions of its
+//! cone, the wedge between the normals of its two segments on the side the chain bends away
+//! from (for the region a closed profile encloses: its reflex corners; outside it: its convex
+//! ones). The bisector of two profiles is the union of the bisectors of every site of one
+//! with every site of the other; the self-bisector of a profile that of every pair of its
+//! sites and the self-bisector of each segment. Each branch says which sites its two foot
+//! points lie on; its parameters are the profiles' (`[0, n)`, a corner at its joint's `u`).
+//!
+//! Two pieces of one circle have every normal through its centre: their bisector is that one
+//! point (reported as isolated), as is the self-bisector of an arc. Two pieces of one line
+//! have none.
+
+mod point_site;
+mod polyline;
+
+use crate::bisector::{bbox_of_points, bisector, min_dist, self_bisector, FAR};
+use crate::bisector::{Bisector, BisectorOptions, TRIM_SLACK};
+use crate::error::Result;
+use crate::zeroset::MAX_CHORD_TOL;
+use bspline::Rational;
+use curve::{JointKind, ParamCurve, Profile, SegmentKind};
+use point_site::{corner_corner, corner_curve, Corner, Reach, SharedEnd};
+use serde::{Deserialize, Serialize};
+
+/// Two straight segments are on one line when the cross products of their directions with
+/// each other and with the line between them are this small relative to their lengths.
+const COLLINEAR: f64 = 1e-12;
+
+/// One branch of a profile bisector.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ProfileBranch {
+    /// `[t, r]` per vertex: the foot points' profile parameters (a corner's is constant).
+    pub tr: Vec<[f64; 2]>,
+    /// The bisector point per vertex.
+    pub xy: Vec<[f64; 2]>,
+    /// The segment of each foot point (for a corner, the segment starting there).
+    pub segment: [usize; 2],
+    /// Whether each foot point is a corner.
+    pub corner: [bool; 2],
+}
+
+/// A special point of a profile bisector.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ProfilePoint {
+    /// Foot-point parameters.
+    pub tr: [f64; 2],
+    /// The bisector point.
+    pub xy: [f64; 2],
+    /// The segment of each foot point.
+    pub segment: [usize; 2],
+    /// Whether each foot point is a corner (always false: special points come from segments).
+    pub corner: [bool; 2],
+}
+
+/// The bisector of two profiles, or the self-bisector of one.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ProfileBisector {
+    /// The branches, site pair by site pair.
+    pub branches: Vec<ProfileBranch>,
+    /// Where branches of one pair of segments cross.
+    pub singular: Vec<ProfilePoint>,
+    /// Isolated bisector points (among them the centres of arcs of one circle).
+    pub isolated: Vec<ProfilePoint>,
+    /// False when a search limit was hit.
+    pub complete: bool,
+}
+
+/// A site of a profile.
+#[derive(Debug, Clone, Copy)]
+enum Site<'a> {
+    Segment {
+        index: usize,
+        curve: &'a Rational,
+    },
+    Corner {
+        /// The segment starting at the corner.
+        index: usize,
+        /// The segment arriving there.
+        before: usize,
+        u: f64,
+        corner: Corner,
+    },
+}
+
+fn sites(p: &Profile) -> Vec<Site<'_>> {
+    let segs = p.segments();
+    let n = segs.len();
+    let mut out: Vec<Site<'_>> = segs
+        .iter()
+        .enumerate()
+        .map(|(index, s)| Site::Segment {
+            index,
+            curve: s.curve().curve(),
+        })
+        .collect();
+    for j in p.joints().iter().filter(|j| j.kind != JointKind::Smooth) {
+        let index = (j.u as usize).min(n - 1);
+        let before = (index + n - 1) % n;
+        let (Some(arriving), Some(leaving)) =
+            (segs[before].end_direction(), segs[index].start_direction())
+        else {
+            continue;
+        };
+        out.push(Site::Corner {
+            index,
+            before,
+            u: j.u,
+            corner: Corner {
+                p: segs[index].start().arr(),
+                arriving: arriving.arr(),
+                leaving: leaving.arr(),
+            },
+        });
+    }
+    out
+}
+
+/// The bisector of two profiles: every point with a foot point on each, at equal distance,
+/// on the normal of a segment or inside the cone of a corner.
+///
+/// ```
+/// use curve::{Profile, Segment};
+/// use zeroset::{profile_bisector, BisectorOptions};
+/// // Two right angles 4 apart, their corners' cones both above: their bisector is a ray of x = 2.
+/// let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
+/// let left = Profile::new(vec![l([0., -1.], [0., 0.]), l([0., 0.], [-1., 0.])], None).unwrap();
+/// let right = Profile::new(vec![l([4., -1.], [4., 0.]), l([4., 0.], [5., 0.])], None).unwrap();
+/// let b = profile_bisector(&left, &right, &BisectorOptions::default()).unwrap();
+/// assert!(b.complete);
+/// let corners = b.branches.iter().find(|br| br.corner == [true, true]).unwrap();
+/// assert!(corners.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-12));
+/// ```
+pub fn profile_bisector(
+    a: &Profile,
+    b: &Profile,
+    opts: &BisectorOptions,
+) -> Result<ProfileBisector> {
+    opts.validate()?;
+    let run = Run::new(&[a, b], opts);
+    let (sa, sb) = (sites(a), sites(b));
+    let mut out = run.empty();
+    for s in &sa {
+        for t in &sb {
+            run.pair(s, t, None, &mut out)?;
+        }
+    }
+    run.trim(&mut out, [a, b]);
+    Ok(out)
+}
+
+/// The self-bisector of a profile: pairs of distinct foot points on it, on different sites
+/// or on one segment.
+///
+/// ```
+/// use curve::{Profile, Segment};
+/// use zeroset::{profile_self_bisector, BisectorOptions};
+/// // An L-shaped room: its reflex corner is a point site inside.
+/// let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
+/// let sides = (0..6).map(|i| Segment::line(c[i], c[(i + 1) % 6]).unwrap()).collect();
+/// let room = Profile::new(sides, None).unwrap();
+/// let opts = BisectorOptions { trimmed: true, ..Default::default() };
+/// let b = profile_self_bisector(&room, &opts).unwrap();
+/// assert!(b.branches.iter().any(|br| br.corner.contains(&true)));
+/// ```
+pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<ProfileBisector> {
+    opts.validate()?;
+    let run = Run::new(&[p], opts);
+    let s = sites(p);
+    let mut out = run.empty();
+    for (i, x) in s.iter().enumerate() {
+        if let Site::Segment { index, curve } = x {
+            run.segment_self(*index, curve, p, &mut out)?;
+        }
+        for y in &s[i + 1..] {
+            run.pair(x, y, Some(p), &mut out)?;
+        }
+    }
+    run.trim(&mut out, [p, p]);
+    Ok(out)
+}
+
+/// What one computation shares: the options, the profiles' size and reach.
+struct Run<'a> {
+    profiles: [&'a Profile; 2],
+    opts: BisectorOptions,
+    center: [f64; 2],
+    size: f64,
+}
+
+impl<'a> Run<'a> {
+    fn new(profiles: &[&'a Profile], opts: &BisectorOptions) -> Self {
+        let pts: Vec<[f64; 2]> = profiles
+            .iter()
+            .flat_map(|p| p.segments())
+            .flat_map(|s| s.curve().control_points())
+            .collect();
+        let (center, size) = bbox_of_points(&pts);
+        Self {
+            profiles: [profiles[0], profiles[profiles.len() - 1]],
+            opts: *opts,
+            center,
+            size,
+        }
+    }
+
+    fn empty(&self) -> ProfileBisector {
+        ProfileBisector {
+            branches: Vec::new(),
+            singular: Vec::new(),
+            isolated: Vec::new(),
+            complete: true,
+        }
+    }
+
+    fn reach(&self) -> Reach {
+        Reach {
+            center: self.center,
+            far: FAR * self.size,
+            chord: self.opts.chord_tol * self.size,
+            tol: self.opts.tol,
+        }
+    }
+
+    /// Options for the bisector of two segments: untrimmed (trimming is the profiles'), the
+    /// chord tolerance relative to the profiles' size rather than the pair's.
+    fn pair_options(&self, curves: &[&Rational]) -> BisectorOptions {
+        let pts: Vec<[f64; 2]> = curves
+            .iter()
+            .flat_map(|c| c.control_points())
+            .map(|p| [p[0], p[1]])
+            .collect();
+        let (_, diag) = bbox_of_points(&pts);
+        let chord =
+            (self.opts.chord_tol * self.size / diag).clamp(self.opts.chord_tol, MAX_CHORD_TOL);
+        BisectorOptions {
+            chord_tol: chord,
+            trimmed: false,
+            ..self.opts
+        }
+    }
+
+    /// The profile parameter of segment `i`'s own parameter `v` on profile `which`.
+    fn param(&self, which: usize, i: usize, v: f64) -> f64 {
+        self.profiles[which].profile_param(i, v)
+    }
+
+    /// The bisector of one pair of sites (`own` is the profile when both are its own).
+    fn pair(
+        &self,
+        x: &Site<'_>,
+        y: &Site<'_>,
+        own: Option<&Profile>,
+        out: &mut ProfileBisector,
+    ) -> Result<()> {
+        match (x, y) {
+            (
+                Site::Segment {
+                    index: i,
+                    curve: c1,
+                },
+                Site::Segment {
+                    index: j,
+                    curve: c2,
+                },
+            ) => self.segments(*i, c1, *j, c2, out),
+            (
+                Site::Corner {
+                    index,
+                    before,
+                    u,
+                    corner,
+                },
+                Site::Segment { index: j, curve },
+            ) => {
+                let shared = own.and_then(|_| shared_end(*index, *before, *j));
+                self.corner_segment(*index, *u, corner, *j, curve, shared, false, out)
+            }
+            (
+                Site::Segment { index: j, curve },
+                Site::Corner {
+                    index,
+                    before,
+                    u,
+                    corner,
+                },
+            ) => {
+                let shared = own.and_then(|_| shared_end(*index, *before, *j));
+                self.corner_segment(*index, *u, corner, *j, curve, shared, true, out)
+            }
+            (
+                Site::Corner {
+                    index: i,
+                    u: u1,
+                    corner: k1,
+                    ..
+                },
+                Site::Corner {
+                    index: j,
+                    u: u2,
+                    corner: k2,
+                    ..
+                },
+            ) => {
+                if let Some(ends) = corner_corner(k1, k2, &self.reach()) {
+                    out.branches.push(ProfileBranch {
+                        tr: vec![[*u1, *u2]; 2],
+                        xy: ends.to_vec(),
+                        segment: [*i, *j],
+                        corner: [true, true],
+                    });
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn segments(
+        &self,
+        i: usize,
+        c1: &Rational,
+        j: usize,
+        c2: &Rational,
+        out: &mut ProfileBisector,
+    ) -> Result<()> {
+        let (s1, s2) = (
+            &self.profiles[0].segments()[i],
+            &self.profiles[1].segments()[j],
+        );
+        if s1.kind() == SegmentKind::Line && s2.kind() == SegmentKind::Line && collinear(c1, c2) {
+            return Ok(());
+        }
+        if let (Some(k1), Some(k2)) = (s1.circle(), s2.circle()) {
+            if k1 == k2 {
+                out.isolated.push(ProfilePoint {
+                    tr: [self.param(0, i, mid(c1)), self.param(1, j, mid(c2))],
+                    xy: k1.0,
+                    segment: [i, j],
+                    corner: [false, false],
+                });
+                return Ok(());
+            }
+        }
+        let found = bisector(c1, c2, &self.pair_options(&[c1, c2]))?;
+        self.add(found, [i, j], out);
+        Ok(())
+    }
+
+    fn segment_self(
+        &self,
+        i: usize,
+        c: &Rational,
+        p: &Profile,
+        out: &mut ProfileBisector,
+    ) -> Result<()> {
+        let s = &p.segments()[i];
+        match (s.kind(), s.circle()) {
+            (SegmentKind::Line, _) => Ok(()),
+            (_, Some((centre, _))) => {
+                out.isolated.push(ProfilePoint {
+                    tr: [i as f64, (i + 1) as f64],
+                    xy: centre,
+                    segment: [i, i],
+                    corner: [false, false],
+                });
+                Ok(())
+            }
+            _ => {
+                let found = self_bisector(c, &self.pair_options(&[c]))?;
+                self.add(found, [i, i], out);
+                Ok(())
+            }
+        }
+    }
+
+    /// A bisector of two segments, in the profiles' parameters.
+    fn add(&self, found: Bisector, seg: [usize; 2], out: &mut ProfileBisector) {
+        let map = |tr: [f64; 2]| [self.param(0, seg[0], tr[0]), self.param(1, seg[1], tr[1])];
+        out.complete &= found.complete;
+        for b in found.branches {
+            out.branches.push(ProfileBranch {
+                tr: b.tr.into_iter().map(map).collect(),
+                xy: b.xy,
+                segment: seg,
+                corner: [false, false],
+            });
+        }
+        let point = |p: crate::BisectorPoint| ProfilePoint {
+            tr: map(p.tr),
+            xy: p.xy,
+            segment: seg,
+            corner: [false, false],
+        };
+        out.singular.extend(found.singular.into_iter().map(point));
+        out.isolated.extend(found.isolated.into_iter().map(point));
+    }
+
+    /// The bisector of a corner (site `index`, at `u`) and segment `j`; `swapped` when the
+    /// segment is the first site.
+    #[allow(clippy::too_many_arguments)]
+    fn corner_segment(
+        &self,
+        index: usize,
+        u: f64,
+        corner: &Corner,
+        j: usize,
+        c: &Rational,
+        shared: Option<SharedEnd>,
+        swapped: bool,
+        out: &mut ProfileBisector,
+    ) -> Result<()> {
+        let (which, corner_side) = if swapped { (0, 1) } else { (1, 0) };
+        let (runs, complete) = corner_curve(corner, c, shared, &self.reach())?;
+        out.complete &= complete;
+        for run in runs {
+            let mut tr = Vec::with_capacity(run.len());
+            let mut xy = Vec::with_capacity(run.len());
+            for (r, x) in run {
+                let v = self.param(which, j, r);
+                tr.push(if swapped { [v, u] } else { [u, v] });
+                xy.push(x);
+            }
+            let mut segment = [0; 2];
+            let mut is_corner = [false; 2];
+            segment[corner_side] = index;
+            segment[which] = j;
+            is_corner[corner_side] = true;
+            out.branches.push(ProfileBranch {
+                tr,
+                xy,
+                segment,
+                corner: is_corner,
+            });
+        }
+        Ok(())
+    }
+
+    /// With `trimmed`, keeps only the vertices whose foot points are nearest points of the
+    /// profiles, splitting branches where others are dropped.
+    fn trim(&self, out: &mut ProfileBisector, profiles: [&Profile; 2]) {
+        if !self.opts.trimmed {
+            return;
+        }
+        let near = [Nearest::new(profiles[0]), Nearest::new(profiles[1])];
+        let slack = TRIM_SLACK * self.size;
+        let foot = |k: usize, u: f64| profiles[k].jet(u).p.arr();
+        let keeps = |tr: [f64; 2], x: [f64; 2]| {
+            let f = foot(0, tr[0]);
+            let rho = (x[0] - f[0]).hypot(x[1] - f[1]);
+            near.iter()
+                .all(|n| n.distance(x, rho - slack) >= rho - slack)
+        };
+        let mut branches = Vec::new();
+        for b in out.branches.drain(..) {
+            let mut cur: Option<ProfileBranch> = None;
+            for (tr, xy) in b.tr.iter().zip(&b.xy) {
+                if keeps(*tr, *xy) {
+                    let c = cur.get_or_insert_with(|| ProfileBranch {
+                        tr: Vec::new(),
+                        xy: Vec::new(),
+                        ..b.clone()
+                    });
+                    c.tr.push(*tr);
+                    c.xy.push(*xy);
+                } else if let Some(c) = cur.take() {
+                    if c.xy.len() >= 2 {
+                        branches.push(c);
+                    }
+                }
+            }
+            if let Some(c) = cur.filter(|c| c.xy.len() >= 2) {
+                branches.push(c);
+            }
+        }
+        out.branches = branches;
+        for list in [&mut out.singular, &mut out.isolated] {
+            list.retain(|p| keeps(p.tr, p.xy));
+        }
+    }
+}
+
+/// Which end of segment `j` is the corner between segments `before` and `index`.
+fn shared_end(index: usize, before: usize, j: usize) -> Option<SharedEnd> {
+    if j == index {
+        Some(SharedEnd::Start)
+    } else if j == before {
+        Some(SharedEnd::End)
+    } else {
+        None
+    }
+}
+
+/// The middle of a curve's domain.
+fn mid(c: &Rational) -> f64 {
+    let (a, b) = c.domain();
+    0.5 * (a + b)
+}
+
+/// Whether two straight curves lie on one line.
+fn collinear(c1: &Rational, c2: &Rational) -> bool {
+    let ends = |c: &Rational| {
+        let (a, b) = c.domain();
+        let (p, q) = (c.point(a), c.point(b));
+        ([p[0], p[1]], [q[0], q[1]])
+    };
+    let ((p1, q1), (p2, q2)) = (ends(c1), ends(c2));
+    let d1 = [q1[0] - p1[0], q1[1] - p1[1]];
+    let len = d1[0].hypot(d1[1]);
+    let off = |p: [f64; 2]| ((p[0] - p1[0]) * d1[1] - (p[1] - p1[1]) * d1[0]).abs() / len;
+    let size = len.max((p2[0] - p1[0]).hypot(p2[1] - p1[1]));
+    off(p2) <= COLLINEAR * size && off(q2) <= COLLINEAR * size
+}
+
+/// The distance from points to a profile, segment by segment, skipping segments whose box
+/// is farther than what is asked about.
+struct Nearest<'a> {
+    parts: Vec<(&'a Rational, [f64; 2], [f64; 2])>,
+}
+
+impl<'a> Nearest<'a> {
+    fn new(p: &'a Profile) -> Self {
+        let parts = p
+            .segments()
+            .iter()
+            .map(|s| {
+                let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+                for q in s.curve().control_points() {
+                    for k in 0..2 {
+                        lo[k] = lo[k].min(q[k]);
+                        hi[k] = hi[k].max(q[k]);
+                    }
+                }
+                (s.curve().curve(), lo, hi)
+            })
+            .collect();
+        Self { parts }
+    }
+
+    /// The distance from `x` to the profile, or some distance below `enough` when there is
+    /// one (enough to tell that a point is nearer than that).
+    fn distance(&self, x: [f64; 2], enough: f64) -> f64 {
+        let mut best = f64::INFINITY;
+        for (c, lo, hi) in &self.parts {
+            let dx = (lo[0] - x[0]).max(x[0] - hi[0]).max(0.0);
+            let dy = (lo[1] - x[1]).max(x[1] - hi[1]).max(0.0);
+            if dx.hypot(dy) >= best {
+                continue; // the segment's box is no nearer than a point already found
+            }
+            best = best.min(min_dist(c, x));
+            if best < enough {
+                break;
+            }
+        }
+        best
+    }
+}

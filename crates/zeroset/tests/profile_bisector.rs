@@ -1,0 +1,409 @@
+//! Bisectors of profiles against an independent oracle, on random profiles (polygons with
+//! some corners rounded by arcs, closed chains of cubic Béziers with corners, both ways round,
+//! the seam anywhere).
+//!
+//! The oracle shares no code with the crate: distances to a profile by dense sampling refined
+//! by golden-section search on the profile's own evaluation. Between two profiles, every
+//! point where the distances to both are equal (found on a grid, then by bisection) must lie
+//! within the chord tolerance of the reported bisector, and every vertex of the trimmed
+//! bisector must be at equal distance from both. Inside one profile, every point where the
+//! nearest boundary point jumps (the medial axis) must lie within the chord tolerance of the
+//! self-bisector, and every vertex of the trimmed self-bisector must have its foot points at
+//! the distance of the boundary.
+
+#![allow(clippy::unwrap_used, missing_docs)]
+
+#[path = "../../antipodal/tests/common/profiles.rs"]
+mod profiles;
+
+use curve::{ParamCurve, Profile};
+use profiles::{assemble, bezier_chain, filleted_polygon};
+use proptest::prelude::*;
+use std::f64::consts::TAU;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
+
+/// Samples per segment of the oracle's distance.
+const PER_SEGMENT: usize = 300;
+
+/// Grid nodes per side.
+const GRID: usize = 40;
+
+/// Dense samples of a profile with their parameters.
+struct Oracle<'a> {
+    p: &'a Profile,
+    u: Vec<f64>,
+    pts: Vec<[f64; 2]>,
+}
+
+impl<'a> Oracle<'a> {
+    fn new(p: &'a Profile) -> Self {
+        let n = p.segments().len();
+        let u: Vec<f64> = (0..n * PER_SEGMENT)
+            .map(|k| k as f64 / PER_SEGMENT as f64)
+            .chain([n as f64])
+            .collect();
+        let pts = u.iter().map(|&u| p.jet(u).p.arr()).collect();
+        Self { p, u, pts }
+    }
+
+    /// The distance from `x` to the profile and the parameter of the nearest point.
+    fn nearest(&self, x: [f64; 2]) -> (f64, f64) {
+        let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
+        let (k, _) = self
+            .pts
+            .iter()
+            .enumerate()
+            .map(|(k, q)| (k, d(*q)))
+            .fold((0, f64::INFINITY), |b, c| if c.1 < b.1 { c } else { b });
+        // Golden-section search on the stretches to either side of the nearest sample (the
+        // last sample is the first one again: a closed profile's seam has both sides).
+        let last = self.u.len() - 1;
+        let before = if k == 0 { last - 1 } else { k - 1 };
+        let after = if k == last { 1 } else { k + 1 };
+        let f = |u: f64| d(self.p.jet(u).p.arr());
+        let mut best = (d(self.pts[k]), self.u[k]);
+        for (a, b) in [(before, before + 1), (after - 1, after)] {
+            let (mut a, mut b) = (self.u[a], self.u[b]);
+            let g = 0.5 * (5f64.sqrt() - 1.0);
+            for _ in 0..60 {
+                let (c, e) = (b - g * (b - a), a + g * (b - a));
+                if f(c) < f(e) {
+                    b = e;
+                } else {
+                    a = c;
+                }
+            }
+            let u = 0.5 * (a + b);
+            if f(u) < best.0 {
+                best = (f(u), u);
+            }
+        }
+        best
+    }
+}
+
+/// The distance from `x` to the reported branches (as polylines).
+fn to_branches(b: &ProfileBisector, x: [f64; 2]) -> f64 {
+    let mut best = f64::INFINITY;
+    for br in &b.branches {
+        for w in br.xy.windows(2) {
+            best = best.min(off_segment(x, w[0], w[1]));
+        }
+        if let [one] = br.xy[..] {
+            best = best.min((one[0] - x[0]).hypot(one[1] - x[1]));
+        }
+    }
+    for p in &b.isolated {
+        best = best.min((p.xy[0] - x[0]).hypot(p.xy[1] - x[1]));
+    }
+    best
+}
+
+fn off_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let v = [p[0] - a[0], p[1] - a[1]];
+    let len2 = d[0] * d[0] + d[1] * d[1];
+    let s = if len2 > 0.0 {
+        ((v[0] * d[0] + v[1] * d[1]) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (v[0] - s * d[0]).hypot(v[1] - s * d[1])
+}
+
+fn bbox(ps: &[&Profile]) -> ([f64; 2], [f64; 2], f64) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in ps {
+        for q in p.segments().iter().flat_map(|s| s.curve().control_points()) {
+            for k in 0..2 {
+                lo[k] = lo[k].min(q[k]);
+                hi[k] = hi[k].max(q[k]);
+            }
+        }
+    }
+    (lo, hi, (hi[0] - lo[0]).hypot(hi[1] - lo[1]))
+}
+
+fn grid(lo: [f64; 2], hi: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
+    (0..=GRID)
+        .map(|i| {
+            (0..=GRID)
+                .map(|j| {
+                    let s = |k: usize, t: usize| lo[k] + (hi[k] - lo[k]) * t as f64 / GRID as f64;
+                    [s(0, i), s(1, j)]
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The grid's edges (pairs of neighbouring nodes).
+fn edges(g: &[Vec<[f64; 2]>]) -> Vec<([f64; 2], [f64; 2])> {
+    let mut out = Vec::new();
+    for i in 0..=GRID {
+        for j in 0..=GRID {
+            if i < GRID {
+                out.push((g[i][j], g[i + 1][j]));
+            }
+            if j < GRID {
+                out.push((g[i][j], g[i][j + 1]));
+            }
+        }
+    }
+    out
+}
+
+fn lerp(a: [f64; 2], b: [f64; 2], s: f64) -> [f64; 2] {
+    [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])]
+}
+
+static FOUND: AtomicUsize = AtomicUsize::new(0);
+static CORNER_BRANCHES: AtomicUsize = AtomicUsize::new(0);
+
+const CHORD: f64 = 1e-3;
+
+fn options(trimmed: bool) -> BisectorOptions {
+    BisectorOptions {
+        chord_tol: CHORD,
+        trimmed,
+        ..Default::default()
+    }
+}
+
+/// Two profiles: the oracle's equidistant points against the untrimmed bisector, the
+/// trimmed bisector's vertices against the oracle's distances.
+fn check_pair(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
+    let (lo, hi, size) = bbox(&[a, b]);
+    let full = profile_bisector(a, b, &options(false)).unwrap();
+    let trimmed = profile_bisector(a, b, &options(true)).unwrap();
+    prop_assert!(full.complete && trimmed.complete);
+    let (oa, ob) = (Oracle::new(a), Oracle::new(b));
+    let f = |x: [f64; 2]| oa.nearest(x).0 - ob.nearest(x).0;
+    let g = grid(lo, hi);
+    let room = CHORD * size * 1.01 + 1e-6 * size;
+    let mut found = 0;
+    for (p, q) in edges(&g) {
+        let (fp, fq) = (f(p), f(q));
+        if fp.signum() == fq.signum() {
+            continue;
+        }
+        let (mut s0, mut s1) = (0.0, 1.0);
+        for _ in 0..40 {
+            let m = 0.5 * (s0 + s1);
+            if f(lerp(p, q, m)).signum() == fp.signum() {
+                s0 = m;
+            } else {
+                s1 = m;
+            }
+        }
+        let y = lerp(p, q, 0.5 * (s0 + s1));
+        found += 1;
+        let off = to_branches(&full, y);
+        prop_assert!(
+            off <= room,
+            "equidistant point {y:?} is {off} off the bisector"
+        );
+    }
+    FOUND.fetch_add(found.min(1), Ordering::Relaxed);
+    prop_assert!(found == 0 || !trimmed.branches.is_empty());
+    for br in &trimmed.branches {
+        if br.corner.contains(&true) {
+            CORNER_BRANCHES.fetch_add(1, Ordering::Relaxed);
+        }
+        for x in &br.xy {
+            let (da, db) = (oa.nearest(*x).0, ob.nearest(*x).0);
+            prop_assert!(
+                (da - db).abs() <= 1e-7 * size,
+                "trimmed vertex {x:?}: distances {da} and {db} (sites {:?} corner {:?})",
+                br.segment,
+                br.corner
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Inside one closed profile: where the nearest boundary point jumps between two grid nodes,
+/// the medial axis crosses; it must lie on the self-bisector. Every vertex of the trimmed
+/// self-bisector is at the boundary's distance from its foot points.
+fn check_self(p: &Profile) -> Result<(), TestCaseError> {
+    let (lo, hi, size) = bbox(&[p]);
+    let full = profile_self_bisector(p, &options(false)).unwrap();
+    let trimmed = profile_self_bisector(p, &options(true)).unwrap();
+    prop_assert!(full.complete && trimmed.complete);
+    let o = Oracle::new(p);
+    let polygon: Vec<[f64; 2]> = o.pts.clone();
+    let inside = |x: [f64; 2]| winding(&polygon, x) != 0;
+    let foot = |x: [f64; 2]| p.jet(o.nearest(x).1).p.arr();
+    let apart = |x: [f64; 2], y: [f64; 2]| {
+        let (a, b) = (foot(x), foot(y));
+        (a[0] - b[0]).hypot(a[1] - b[1]) > 0.1 * size
+    };
+    let room = CHORD * size * 1.01 + 1e-6 * size;
+    let mut found = 0;
+    for (a, b) in edges(&grid(lo, hi)) {
+        if !(inside(a) && inside(b) && apart(a, b)) {
+            continue;
+        }
+        let (mut x, mut y) = (a, b);
+        for _ in 0..40 {
+            let m = lerp(x, y, 0.5);
+            if apart(x, m) {
+                y = m;
+            } else {
+                x = m;
+            }
+        }
+        if !apart(x, y) {
+            continue; // the feet slid round a bend without jumping
+        }
+        let z = lerp(x, y, 0.5);
+        // The jump is the axis only where both feet are at one distance (not where the
+        // nearest point slides fast round a tight bend without jumping).
+        let (d, _) = o.nearest(z);
+        let (dx, dy) = (o.nearest(x).0, o.nearest(y).0);
+        if (dx - dy).abs() > 1e-6 * size || (d - dx).abs() > 1e-6 * size {
+            continue;
+        }
+        found += 1;
+        let off = to_branches(&full, z);
+        prop_assert!(
+            off <= room,
+            "medial point {z:?} is {off} off the self-bisector; feet at {} and {}; corners {:?}",
+            o.nearest(x).1,
+            o.nearest(y).1,
+            p.corners().map(|j| (j.u, j.kind)).collect::<Vec<_>>()
+        );
+    }
+    FOUND.fetch_add(found.min(1), Ordering::Relaxed);
+    for br in &trimmed.branches {
+        if br.corner.contains(&true) {
+            CORNER_BRANCHES.fetch_add(1, Ordering::Relaxed);
+        }
+        for (tr, x) in br.tr.iter().zip(&br.xy) {
+            let (d, _) = o.nearest(*x);
+            for u in tr {
+                let f = p.jet(*u).p.arr();
+                let rho = (x[0] - f[0]).hypot(x[1] - f[1]);
+                prop_assert!(
+                    (rho - d).abs() <= 1e-7 * size,
+                    "trimmed vertex {x:?}: foot at {rho}, boundary at {d}"
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The winding number of a closed polygon about `x`.
+fn winding(poly: &[[f64; 2]], x: [f64; 2]) -> i32 {
+    let mut w = 0;
+    for k in 0..poly.len() {
+        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+        let side = (b[0] - a[0]) * (x[1] - a[1]) - (x[0] - a[0]) * (b[1] - a[1]);
+        if a[1] <= x[1] && b[1] > x[1] && side > 0.0 {
+            w += 1;
+        } else if a[1] > x[1] && b[1] <= x[1] && side < 0.0 {
+            w -= 1;
+        }
+    }
+    w
+}
+
+fn polygon(steps: &[f64], radii: &[f64], round: &[f64]) -> Option<Vec<curve::Segment>> {
+    let total: f64 = steps.iter().sum();
+    let mut acc = 0.0;
+    let angles: Vec<f64> = steps
+        .iter()
+        .map(|s| {
+            let a = TAU * acc / total;
+            acc += s;
+            a
+        })
+        .collect();
+    filleted_polygon(&angles, &radii[..steps.len()], &round[..steps.len()])
+}
+
+fn moved(p: &Profile, by: [f64; 2]) -> Profile {
+    let segs = p
+        .segments()
+        .iter()
+        .map(|s| {
+            s.transformed(&curve::Affine([1.0, 0.0, 0.0, 1.0, by[0], by[1]]))
+                .unwrap()
+        })
+        .collect();
+    Profile::new(segs, None).unwrap()
+}
+
+fn wobble() -> impl Strategy<Value = f64> {
+    prop_oneof![-0.4f64..-0.05, 0.05f64..0.4]
+}
+
+fn cases(n: u32) -> u32 {
+    let scale: f64 = std::env::var("CURVEKIT_CASES_SCALE")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1.0);
+    ((n as f64 * scale).round() as u32).max(1)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(24), ..ProptestConfig::default() })]
+
+    fn filleted_polygon_pairs(
+        steps in proptest::collection::vec(0.5f64..1.5, 3..6),
+        radii in proptest::collection::vec(1.0f64..2.0, 6),
+        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 6),
+        start in 0usize..12,
+        reverse in any::<bool>(),
+        dy in -2.0f64..2.0,
+    ) {
+        let Some(segs) = polygon(&steps, &radii, &round) else { return Ok(()) };
+        let Some(a) = assemble(segs, start, reverse) else { return Ok(()) };
+        let b = moved(&a, [5.0, dy]);
+        check_pair(&a, &b)?;
+    }
+
+    fn filleted_polygons_inside(
+        steps in proptest::collection::vec(0.5f64..1.5, 3..7),
+        radii in proptest::collection::vec(1.0f64..2.0, 7),
+        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 7),
+        start in 0usize..12,
+        reverse in any::<bool>(),
+    ) {
+        let Some(segs) = polygon(&steps, &radii, &round) else { return Ok(()) };
+        let Some(p) = assemble(segs, start, reverse) else { return Ok(()) };
+        check_self(&p)?;
+    }
+
+    fn bezier_chains_inside(
+        radii in proptest::collection::vec(1.0f64..2.0, 3..6),
+        wobble in proptest::collection::vec((wobble(), wobble()), 6),
+        smooth in proptest::collection::vec(any::<bool>(), 6),
+        start in 0usize..6,
+        reverse in any::<bool>(),
+    ) {
+        let n = radii.len();
+        let Some(segs) = bezier_chain(&radii, &wobble[..n], &smooth[..n]) else { return Ok(()) };
+        let Some(p) = assemble(segs, start, reverse) else { return Ok(()) };
+        check_self(&p)?;
+    }
+}
+
+/// Runs the properties and checks that they are not vacuous: equidistant or medial points
+/// were found, and corners took part as point sites.
+#[test]
+fn profile_bisectors_match_the_oracle() {
+    filleted_polygon_pairs();
+    filleted_polygons_inside();
+    bezier_chains_inside();
+    let found = FOUND.load(Ordering::Relaxed);
+    let corners = CORNER_BRANCHES.load(Ordering::Relaxed);
+    assert!(
+        found >= 3 * cases(24) as usize / 2,
+        "only {found} cases with oracle points"
+    );
+    assert!(corners > 0, "no trimmed branch with a corner");
+}

@@ -25,7 +25,7 @@ use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
 use bspline::Rational;
 use curve::Frame;
 use point::bbox;
-pub(crate) use point::bbox_of_points;
+pub(crate) use point::{bbox_of_points, bounds};
 use vertices::Ctx;
 pub(crate) use vertices::{min_dist, FAR, TRIM_SLACK};
 

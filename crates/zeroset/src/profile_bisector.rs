@@ -17,7 +17,7 @@
 mod point_site;
 mod polyline;
 
-use crate::bisector::{bbox_of_points, bisector, min_dist, self_bisector, FAR};
+use crate::bisector::{bbox_of_points, bisector, bounds, min_dist, self_bisector, FAR};
 use crate::bisector::{Bisector, BisectorOptions, TRIM_SLACK};
 use crate::error::Result;
 use crate::zeroset::MAX_CHORD_TOL;
@@ -145,7 +145,7 @@ pub fn profile_bisector(
     let mut out = run.empty();
     for s in &sa {
         for t in &sb {
-            run.pair(s, t, None, &mut out)?;
+            run.pair(s, t, false, &mut out)?;
         }
     }
     run.trim(&mut out, [a, b]);
@@ -176,7 +176,7 @@ pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<Prof
             run.segment_self(*index, curve, p, &mut out)?;
         }
         for y in &s[i + 1..] {
-            run.pair(x, y, Some(p), &mut out)?;
+            run.pair(x, y, true, &mut out)?;
         }
     }
     run.trim(&mut out, [p, p]);
@@ -248,12 +248,13 @@ impl<'a> Run<'a> {
         self.profiles[which].profile_param(i, v)
     }
 
-    /// The bisector of one pair of sites (`own` is the profile when both are its own).
+    /// The bisector of one pair of sites (`one_profile` when both are sites of one profile:
+    /// a corner is then an end of its two segments).
     fn pair(
         &self,
         x: &Site<'_>,
         y: &Site<'_>,
-        own: Option<&Profile>,
+        one_profile: bool,
         out: &mut ProfileBisector,
     ) -> Result<()> {
         match (x, y) {
@@ -276,7 +277,9 @@ impl<'a> Run<'a> {
                 },
                 Site::Segment { index: j, curve },
             ) => {
-                let shared = own.and_then(|_| shared_end(*index, *before, *j));
+                let shared = one_profile
+                    .then(|| shared_end(*index, *before, *j))
+                    .flatten();
                 self.corner_segment(*index, *u, corner, *j, curve, shared, false, out)
             }
             (
@@ -288,7 +291,9 @@ impl<'a> Run<'a> {
                     corner,
                 },
             ) => {
-                let shared = own.and_then(|_| shared_end(*index, *before, *j));
+                let shared = one_profile
+                    .then(|| shared_end(*index, *before, *j))
+                    .flatten();
                 self.corner_segment(*index, *u, corner, *j, curve, shared, true, out)
             }
             (
@@ -526,13 +531,7 @@ impl<'a> Nearest<'a> {
             .segments()
             .iter()
             .map(|s| {
-                let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-                for q in s.curve().control_points() {
-                    for k in 0..2 {
-                        lo[k] = lo[k].min(q[k]);
-                        hi[k] = hi[k].max(q[k]);
-                    }
-                }
+                let (lo, hi) = bounds(&s.curve().control_points());
                 (s.curve().curve(), lo, hi)
             })
             .collect();

@@ -148,6 +148,16 @@ pub(super) fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
 
 /// The centre and diagonal of the box of `points` (a diagonal of 1 for a single point).
 pub(crate) fn bbox_of_points(points: &[[f64; 2]]) -> ([f64; 2], f64) {
+    let (lo, hi) = bounds(points);
+    let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    (
+        [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],
+        if diag > 0.0 { diag } else { 1.0 },
+    )
+}
+
+/// The lower and upper corners of the box of `points`.
+pub(crate) fn bounds(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in points {
         for k in 0..2 {
@@ -155,9 +165,5 @@ pub(crate) fn bbox_of_points(points: &[[f64; 2]]) -> ([f64; 2], f64) {
             hi[k] = hi[k].max(p[k]);
         }
     }
-    let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
-    (
-        [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],
-        if diag > 0.0 { diag } else { 1.0 },
-    )
+    (lo, hi)
 }

@@ -30,6 +30,11 @@ use serde::{Deserialize, Serialize};
 /// each other and with the line between them are this small relative to their lengths.
 const COLLINEAR: f64 = 1e-12;
 
+/// A branch of two segments' bisector whose vertices all lie within this share of the
+/// profiles' size of one another is one point (reported as isolated): the contract's
+/// tolerance for points of a drawing that meet.
+const POINT_EXTENT: f64 = 1e-9;
+
 /// One branch of a profile bisector.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ProfileBranch {
@@ -385,7 +390,25 @@ impl<'a> Run<'a> {
     fn add(&self, found: Bisector, seg: [usize; 2], out: &mut ProfileBisector) {
         let map = |tr: [f64; 2]| [self.param(0, seg[0], tr[0]), self.param(1, seg[1], tr[1])];
         out.complete &= found.complete;
+        let extent = POINT_EXTENT * self.size;
         for b in found.branches {
+            let Some(&first) = b.xy.first() else {
+                continue;
+            };
+            let spread = b.xy.iter().fold(0.0f64, |m, p| {
+                m.max((p[0] - first[0]).hypot(p[1] - first[1]))
+            });
+            if spread <= extent {
+                // Two straight segments whose feet meet at one end of each (parallel lines
+                // whose spans touch): one point, found or not as rounding falls.
+                out.isolated.push(ProfilePoint {
+                    tr: map(b.tr[0]),
+                    xy: first,
+                    segment: seg,
+                    corner: [false, false],
+                });
+                continue;
+            }
             out.branches.push(ProfileBranch {
                 tr: b.tr.into_iter().map(map).collect(),
                 xy: b.xy,

@@ -407,3 +407,112 @@ fn profile_bisectors_match_the_oracle() {
     );
     assert!(corners > 0, "no trimmed branch with a corner");
 }
+
+/// The self-bisector moves with the profile: an L-shaped room (a reflex corner) and
+/// a chain of Béziers with corners, rotated, scaled by 2^10 and moved 1e6 of their sizes
+/// from the origin, or run the other way round, have the moved bisector (each vertex of one
+/// within the chord tolerance of the other's polylines, both ways), as many corner branches.
+#[test]
+fn profile_bisectors_move_with_the_profile() {
+    let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
+    let sides: Vec<curve::Segment> = (0..6)
+        .map(|i| curve::Segment::line(c[i], c[(i + 1) % 6]).unwrap())
+        .collect();
+    let room = Profile::new(sides, None).unwrap();
+    let chain = assemble(
+        bezier_chain(
+            &[1.5, 1.0, 1.8, 1.2, 1.6],
+            &[
+                (0.2, -0.3),
+                (0.3, 0.25),
+                (-0.2, 0.1),
+                (0.35, -0.1),
+                (0.1, 0.3),
+            ],
+            &[true, false, true, false, false],
+        )
+        .unwrap(),
+        0,
+        false,
+    )
+    .unwrap();
+    for shape in [&room, &chain] {
+        moves_with_the_profile(shape);
+    }
+}
+
+fn moves_with_the_profile(shape: &Profile) {
+    // Untrimmed: the trimmed bisector drops whole polyline edges where its vertices stop
+    // being nearest, so its branch ends depend on where the vertices fall.
+    let opts = options(false);
+    let base = profile_self_bisector(shape, &opts).unwrap();
+    assert!(base.complete && !base.branches.is_empty());
+    let (s, (sin, cos)) = (1024.0, 0.6f64.sin_cos());
+    let (lo, hi, size) = bbox(&[shape]);
+    let far = 1e6 * size * s;
+    let map = curve::Affine([s * cos, s * sin, -s * sin, s * cos, far, -0.5 * far]);
+    for reverse in [false, true] {
+        let mut segs: Vec<curve::Segment> = shape
+            .segments()
+            .iter()
+            .map(|seg| seg.transformed(&map).unwrap())
+            .collect();
+        if reverse {
+            segs = segs
+                .iter()
+                .rev()
+                .map(|seg| seg.reversed().unwrap())
+                .collect();
+        }
+        let moved = profile_self_bisector(&Profile::new(segs, None).unwrap(), &opts).unwrap();
+        assert!(moved.complete);
+        let expected = ProfileBisector {
+            branches: base
+                .branches
+                .iter()
+                .map(|b| zeroset::ProfileBranch {
+                    xy: b.xy.iter().map(|p| map.apply(*p)).collect(),
+                    ..b.clone()
+                })
+                .collect(),
+            ..base.clone()
+        };
+        // Both polylines within the chord tolerance of the bisector, and the moved data
+        // rounded at 1e6 sizes from the origin (~1e-10 of the size).
+        let room = 2.0 * CHORD * size * s + 1e-6 * size * s;
+        // Rays are cut at 1e3 box diagonals from the box's centre, and the box of a rotated
+        // shape is another: compare within 10 sizes of the shape.
+        let centre = map.apply([0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])]);
+        let near = |x: &[f64; 2]| (x[0] - centre[0]).hypot(x[1] - centre[1]) <= 10.0 * size * s;
+        for (a, b) in [(&moved, &expected), (&expected, &moved)] {
+            for br in &a.branches {
+                for x in br.xy.iter().filter(|x| near(x)) {
+                    let off = to_branches(b, *x);
+                    assert!(off <= room, "reverse {reverse}: {x:?} is {off} off");
+                }
+            }
+        }
+        // The corners' branches alone also match (a corner site on one side is a corner
+        // site on the other).
+        let corners_only = |b: &ProfileBisector| ProfileBisector {
+            branches: b
+                .branches
+                .iter()
+                .filter(|br| br.corner.contains(&true))
+                .cloned()
+                .collect(),
+            isolated: Vec::new(),
+            ..b.clone()
+        };
+        let (cm, ce) = (corners_only(&moved), corners_only(&expected));
+        assert_eq!(cm.branches.is_empty(), ce.branches.is_empty());
+        for (a, b) in [(&cm, &ce), (&ce, &cm)] {
+            for br in &a.branches {
+                for x in br.xy.iter().filter(|x| near(x)) {
+                    let off = to_branches(b, *x);
+                    assert!(off <= room, "reverse {reverse}: corner {x:?} is {off} off");
+                }
+            }
+        }
+    }
+}

@@ -232,6 +232,11 @@ impl SplineCurve {
         spans
     }
 
+    /// The number of polynomial (or rational) pieces: the spans between distinct knots.
+    pub fn piece_count(&self) -> usize {
+        self.pieces.pieces()
+    }
+
     /// The curve's exact form in pieces, with bounds on its coefficients and its seam.
     pub fn exact_pieces(&self) -> CurvePieces {
         let pieces = homogeneous_pieces(&self.curve);

@@ -25,9 +25,9 @@ use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
 use bspline::Rational;
 use curve::Frame;
 use point::bbox;
-pub(crate) use point::{bbox_of_points, bounds};
+pub(crate) use point::bbox_of_points;
 use vertices::Ctx;
-pub(crate) use vertices::{min_dist, FAR, TRIM_SLACK};
+pub(crate) use vertices::{FAR, TRIM_SLACK};
 
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
 const DIVISIBLE: f64 = 1e-8;

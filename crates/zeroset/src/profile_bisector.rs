@@ -17,7 +17,7 @@
 mod point_site;
 mod polyline;
 
-use crate::bisector::{bbox_of_points, bisector, bounds, min_dist, self_bisector, FAR};
+use crate::bisector::{bbox_of_points, bisector, self_bisector, FAR};
 use crate::bisector::{Bisector, BisectorOptions, TRIM_SLACK};
 use crate::error::Result;
 use crate::zeroset::MAX_CHORD_TOL;
@@ -472,14 +472,14 @@ impl<'a> Run<'a> {
         if !self.opts.trimmed {
             return;
         }
-        let near = [Nearest::new(profiles[0]), Nearest::new(profiles[1])];
         let slack = TRIM_SLACK * self.size;
         let foot = |k: usize, u: f64| profiles[k].jet(u).p.arr();
         let keeps = |tr: [f64; 2], x: [f64; 2]| {
             let f = foot(0, tr[0]);
             let rho = (x[0] - f[0]).hypot(x[1] - f[1]);
-            near.iter()
-                .all(|n| n.distance(x, rho - slack) >= rho - slack)
+            profiles
+                .iter()
+                .all(|p| p.nearest(x, rho - slack).distance >= rho - slack)
         };
         let mut branches = Vec::new();
         for b in out.branches.drain(..) {
@@ -540,42 +540,4 @@ fn collinear(c1: &Rational, c2: &Rational) -> bool {
     let off = |p: [f64; 2]| ((p[0] - p1[0]) * d1[1] - (p[1] - p1[1]) * d1[0]).abs() / len;
     let size = len.max((p2[0] - p1[0]).hypot(p2[1] - p1[1]));
     off(p2) <= COLLINEAR * size && off(q2) <= COLLINEAR * size
-}
-
-/// The distance from points to a profile, segment by segment, skipping segments whose box
-/// is farther than what is asked about.
-struct Nearest<'a> {
-    parts: Vec<(&'a Rational, [f64; 2], [f64; 2])>,
-}
-
-impl<'a> Nearest<'a> {
-    fn new(p: &'a Profile) -> Self {
-        let parts = p
-            .segments()
-            .iter()
-            .map(|s| {
-                let (lo, hi) = bounds(&s.curve().control_points());
-                (s.curve().curve(), lo, hi)
-            })
-            .collect();
-        Self { parts }
-    }
-
-    /// The distance from `x` to the profile, or some distance below `enough` when there is
-    /// one (enough to tell that a point is nearer than that).
-    fn distance(&self, x: [f64; 2], enough: f64) -> f64 {
-        let mut best = f64::INFINITY;
-        for (c, lo, hi) in &self.parts {
-            let dx = (lo[0] - x[0]).max(x[0] - hi[0]).max(0.0);
-            let dy = (lo[1] - x[1]).max(x[1] - hi[1]).max(0.0);
-            if dx.hypot(dy) >= best {
-                continue; // the segment's box is no nearer than a point already found
-            }
-            best = best.min(min_dist(c, x));
-            if best < enough {
-                break;
-            }
-        }
-        best
-    }
 }

@@ -157,7 +157,7 @@ pub(crate) fn bbox_of_points(points: &[[f64; 2]]) -> ([f64; 2], f64) {
 }
 
 /// The lower and upper corners of the box of `points`.
-pub(crate) fn bounds(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+fn bounds(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in points {
         for k in 0..2 {

@@ -141,7 +141,7 @@ impl Ctx<'_> {
 
 /// Distance from `p` to the curve: dense samples, then Newton on `⟨C − p, C'⟩ = 0` from every
 /// sampled local minimum (not certified: a feature narrower than the sampling can be missed).
-pub(crate) fn min_dist(c: &Rational, p: [f64; 2]) -> f64 {
+fn min_dist(c: &Rational, p: [f64; 2]) -> f64 {
     let (a, b) = c.domain();
     let n = 64 * c.homogeneous().breakpoints().len().max(2);
     let dist = |u: f64| {

@@ -2,11 +2,13 @@
 //!
 //! The crates do the geometry ([`bspline`]: exact B-spline algebra and certified roots;
 //! [`curve`]: the curve model and the analytic shapes; [`zeroset`]: zero sets and bisectors;
-//! [`antipodal`]: inflections, antipodal points and common tangents). This crate adds what
+//! [`antipodal`]: inflections, antipodal points and common tangents; [`medial`]: the medial
+//! axis of regions). This crate adds what
 //! the `curvekit` tool needs around them: reading curve files ([`io`]) and figures ([`svg`]).
 pub use antipodal;
 pub use bspline;
 pub use curve;
+pub use medial;
 pub use zeroset;
 
 pub mod io;

@@ -3,6 +3,7 @@
 mod commands;
 mod demo;
 mod demo_profiles;
+mod medial;
 mod report;
 mod timing;
 
@@ -59,6 +60,16 @@ enum Command {
         curve2: Option<PathBuf>,
         #[command(flatten)]
         options: BisectorArgs,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// The medial axis (skeleton) of a region, or of the area inside a closed curve.
+    Medial {
+        /// Region file (JSON), or a closed curve or profile.
+        region: PathBuf,
+        /// Chord tolerance of the edges, relative to the region's size.
+        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        chord_tol: f64,
         #[command(flatten)]
         common: Common,
     },
@@ -200,6 +211,11 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             options,
             common,
         } => commands::run_bisector(&curve1, curve2.as_deref(), &options, &common),
+        Command::Medial {
+            region,
+            chord_tol,
+            common,
+        } => medial::run(&region, chord_tol, &common),
     }
 }
 

@@ -242,6 +242,26 @@ impl Curve {
     }
 }
 
+/// The region a command on regions takes from a curve file: a `region` as it is, any other
+/// closed curve with an exact form (a closed profile, a closed `bezier` or `bspline`, a
+/// circle, a full-turn arc) as the region it encloses; anything else is bad input naming
+/// the file.
+pub fn region_of(c: &Curve) -> Result<curve::Region, CurveFileError> {
+    let fail = |(field, problem): FieldError| CurveFileError {
+        file: c.file.clone(),
+        field,
+        problem,
+    };
+    match &c.shape {
+        Shape::Region(r) => Ok(r.as_ref().clone()),
+        shape => {
+            let outer = profile::boundary_of("curve", shape.clone()).map_err(fail)?;
+            curve::Region::new(outer, Vec::new())
+                .map_err(|e| fail(("curve".into(), Problem::Geometry(e.to_string()))))
+        }
+    }
+}
+
 /// Reads and validates a curve file, or a drawing (see [`read_curve_picked`]).
 pub fn read_curve(path: &Path) -> Result<Curve, CurveFileError> {
     read_curve_picked(path, None)

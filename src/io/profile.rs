@@ -154,6 +154,14 @@ fn boundary(key: &str, v: &Value) -> Result<Profile, FieldError> {
         return Err(wrong_type(key, "a closed curve object", v));
     };
     let shape = super::parse_shape(map).map_err(at)?;
+    boundary_of(key, shape)
+}
+
+/// A closed curve of any kind that has an exact form, as one boundary of a region: a closed
+/// profile, a closed `bezier` or `bspline` (a periodic one clamped), a circle, a full-turn
+/// arc. `key` names it in errors.
+pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, FieldError> {
+    let at = |(field, problem): FieldError| (format!("{key}.{field}"), problem);
     let not_closed = || {
         (
             key.to_string(),

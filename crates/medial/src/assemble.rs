@@ -1,0 +1,225 @@
+//! The graph of the axis from its stretches: ends that meet become one node (a junction
+//! where three or more meet, a leaf at a centre of curvature or a convex corner), and
+//! stretches that continue each other through a node of two are joined into one edge.
+
+use crate::candidates::Candidate;
+use crate::sites::Sites;
+use crate::stretches::{Stretch, Vertex};
+use crate::{Edge, MedialAxis, Node, NodeKind};
+
+/// Ends of stretches within this share of the region's size are one node: junctions found on
+/// different branches, and branches continuing each other, agree to ~1e-12 of the size.
+const MERGE: f64 = 1e-7;
+
+/// A leaf whose radius is at most this share of the size is a corner of the boundary.
+const CORNER_RADIUS: f64 = 1e-9;
+
+/// One edge while the graph is assembled: its nodes (clusters) and vertices.
+struct Chain {
+    ends: [usize; 2],
+    vertices: Vec<Vertex>,
+    boundary: Vec<[usize; 2]>,
+}
+
+pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candidate]) -> MedialAxis {
+    let merge = MERGE * sites.size;
+    // A stretch within one node's reach is a point: the bisector of an arc and the line
+    // tangent to it at their joint maps a whole run of feet to the arc's centre.
+    let pieces: Vec<Stretch> = pieces
+        .into_iter()
+        .map(|mut p| {
+            let first = p.vertices[0].xy;
+            let spread = p.vertices.iter().fold(0.0f64, |m, v| {
+                m.max((v.xy[0] - first[0]).hypot(v.xy[1] - first[1]))
+            });
+            if spread <= merge {
+                p.vertices.truncate(1);
+            }
+            p
+        })
+        // A single point on the boundary (radius 0) is no node unless an edge reaches it.
+        .filter(|p| p.vertices.len() > 1 || p.vertices[0].radius > CORNER_RADIUS * sites.size)
+        .collect();
+    // Every end (two per stretch, one per single point), clustered by distance.
+    let mut points: Vec<Vertex> = Vec::new();
+    for p in &pieces {
+        points.push(p.vertices[0]);
+        if p.vertices.len() > 1 {
+            points.push(p.vertices[p.vertices.len() - 1]);
+        }
+    }
+    let cluster = clusters(&points, merge);
+    let mut chains: Vec<Option<Chain>> = Vec::new();
+    let mut k = 0;
+    let mut lone: Vec<usize> = Vec::new(); // single points, by index in `points`
+    for p in pieces {
+        if p.vertices.len() == 1 {
+            lone.push(k);
+            k += 1;
+            continue;
+        }
+        let b = found[p.candidate].boundary;
+        chains.push(Some(Chain {
+            ends: [cluster[k], cluster[k + 1]],
+            boundary: vec![b; p.vertices.len()],
+            vertices: p.vertices,
+        }));
+        k += 2;
+    }
+    let clusters_n = cluster.iter().copied().max().map_or(0, |m| m + 1);
+    let mut kinds: Vec<Option<NodeKind>> = vec![None; clusters_n];
+    join_through_twos(&mut chains, clusters_n, &mut kinds);
+    let chains: Vec<Chain> = chains.into_iter().flatten().collect();
+
+    // Nodes: the clusters still in use, numbered in order of first use.
+    let mut degree = vec![0usize; clusters_n];
+    for c in &chains {
+        degree[c.ends[0]] += 1;
+        degree[c.ends[1]] += 1;
+    }
+    let mut id = vec![usize::MAX; clusters_n];
+    let mut nodes: Vec<Node> = Vec::new();
+    let mut node_of = |c: usize, at: Vertex, nodes: &mut Vec<Node>| -> usize {
+        if id[c] == usize::MAX {
+            id[c] = nodes.len();
+            let kind = kinds[c].unwrap_or(match degree[c] {
+                0 => NodeKind::End,
+                1 if at.radius <= CORNER_RADIUS * sites.size => NodeKind::Corner,
+                1 => NodeKind::End,
+                _ => NodeKind::Junction,
+            });
+            nodes.push(Node {
+                id: nodes.len(),
+                xy: at.xy,
+                radius: at.radius,
+                kind,
+            });
+        }
+        id[c]
+    };
+    let mut edges = Vec::with_capacity(chains.len());
+    for c in &chains {
+        let first = c.vertices[0];
+        let last = c.vertices[c.vertices.len() - 1];
+        let from = node_of(c.ends[0], first, &mut nodes);
+        let to = node_of(c.ends[1], last, &mut nodes);
+        edges.push(Edge {
+            from,
+            to,
+            xy: c.vertices.iter().map(|v| v.xy).collect(),
+            radius: c.vertices.iter().map(|v| v.radius).collect(),
+            feet: c.vertices.iter().map(|v| v.tr).collect(),
+            boundary: c.boundary.clone(),
+        });
+    }
+    // Single points that no edge reaches: the centre of a disk.
+    for &k in &lone {
+        node_of(cluster[k], points[k], &mut nodes);
+    }
+    MedialAxis {
+        nodes,
+        edges,
+        certified: false,
+        complete: true,
+    }
+}
+
+/// Cluster indices of points, those within `merge` of each other (transitively) together,
+/// numbered in order of first appearance.
+fn clusters(points: &[Vertex], merge: f64) -> Vec<usize> {
+    let n = points.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    // Sorted by x, each point is compared with those within `merge` in x after it.
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| points[a].xy[0].total_cmp(&points[b].xy[0]));
+    for (k, &a) in order.iter().enumerate() {
+        for &b in &order[k + 1..] {
+            if points[b].xy[0] - points[a].xy[0] > merge {
+                break;
+            }
+            let (p, q) = (points[a].xy, points[b].xy);
+            if (p[0] - q[0]).hypot(p[1] - q[1]) <= merge {
+                let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+                parent[ra.max(rb)] = ra.min(rb);
+            }
+        }
+    }
+    let mut number = vec![usize::MAX; n];
+    let mut next = 0;
+    (0..n)
+        .map(|i| {
+            let r = root(&mut parent, i);
+            if number[r] == usize::MAX {
+                number[r] = next;
+                next += 1;
+            }
+            number[r]
+        })
+        .collect()
+}
+
+/// Joins the chains meeting at a node of two into one; a cycle left with one node of two (an
+/// annulus's) keeps it as a joint.
+fn join_through_twos(
+    chains: &mut [Option<Chain>],
+    clusters: usize,
+    kinds: &mut [Option<NodeKind>],
+) {
+    // Bounded: each join removes a chain.
+    for _ in 0..chains.len() {
+        let mut at: Vec<Vec<(usize, usize)>> = vec![Vec::new(); clusters];
+        for (i, c) in chains.iter().enumerate() {
+            if let Some(c) = c {
+                at[c.ends[0]].push((i, 0));
+                at[c.ends[1]].push((i, 1));
+            }
+        }
+        let Some((node, a, b)) = (0..clusters).find_map(|n| match at[n][..] {
+            [(a, ea), (b, eb)] if a != b && kinds[n].is_none() => Some((n, (a, ea), (b, eb))),
+            _ => None,
+        }) else {
+            break;
+        };
+        let (Some(mut first), Some(mut second)) = (chains[a.0].take(), chains[b.0].take()) else {
+            break;
+        };
+        // first ends at the node, second starts there.
+        if a.1 == 0 {
+            reverse(&mut first);
+        }
+        if b.1 == 1 {
+            reverse(&mut second);
+        }
+        debug_assert!(first.ends[1] == node && second.ends[0] == node);
+        first.vertices.extend_from_slice(&second.vertices[1..]);
+        first.boundary.extend_from_slice(&second.boundary[1..]);
+        first.ends[1] = second.ends[1];
+        chains[a.0] = Some(first);
+    }
+    // A chain from a node back to it, the node's only chain: a cycle without junctions.
+    for c in chains.iter().flatten() {
+        if c.ends[0] == c.ends[1] {
+            let others = chains
+                .iter()
+                .flatten()
+                .filter(|d| d.ends.contains(&c.ends[0]))
+                .count();
+            if others == 1 {
+                kinds[c.ends[0]] = Some(NodeKind::Joint);
+            }
+        }
+    }
+}
+
+fn reverse(c: &mut Chain) {
+    c.vertices.reverse();
+    c.boundary.reverse();
+    c.ends.reverse();
+}

@@ -1,0 +1,72 @@
+//! The candidates the axis is cut from: the untrimmed bisector of every boundary with itself
+//! and of every pair of boundaries.
+
+use crate::error::Result;
+use crate::sites::Sites;
+use crate::MedialOptions;
+use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
+
+/// One candidate branch (or point): the bisector of two sites.
+#[derive(Debug, Clone)]
+pub(crate) struct Candidate {
+    /// The boundaries of the two sites.
+    pub(crate) boundary: [usize; 2],
+    /// Whether each site is a corner.
+    pub(crate) corner: [bool; 2],
+    /// The feet's profile parameters per vertex.
+    pub(crate) tr: Vec<[f64; 2]>,
+    /// The bisector points.
+    pub(crate) xy: Vec<[f64; 2]>,
+}
+
+/// Every candidate branch and isolated point, and whether every bisector was complete.
+pub(crate) fn candidates(
+    sites: &Sites<'_>,
+    opts: &MedialOptions,
+) -> Result<(Vec<Candidate>, bool)> {
+    // The bisectors' chord tolerance is relative to their own profiles' box diagonal; the
+    // axis's to the region's max(width, height), which is at most that of the outer box.
+    let bisector_opts = BisectorOptions {
+        tol: opts.tol,
+        chord_tol: opts.chord_tol,
+        trimmed: false,
+        ..BisectorOptions::default()
+    };
+    bisector_opts.validate()?;
+    let b = &sites.boundaries;
+    let mut out = Vec::new();
+    let mut complete = true;
+    for i in 0..b.len() {
+        for j in i..b.len() {
+            let found = if i == j {
+                profile_self_bisector(b[i], &bisector_opts)?
+            } else {
+                profile_bisector(b[i], b[j], &bisector_opts)?
+            };
+            complete &= found.complete;
+            add(&mut out, found, [i, j]);
+        }
+    }
+    Ok((out, complete))
+}
+
+fn add(out: &mut Vec<Candidate>, found: ProfileBisector, boundary: [usize; 2]) {
+    for br in found.branches {
+        out.push(Candidate {
+            boundary,
+            corner: br.corner,
+            tr: br.tr,
+            xy: br.xy,
+        });
+    }
+    // Isolated points (the centre of an arc, of arcs of one circle): single-vertex
+    // candidates, nodes of their own where no edge reaches them (a disk).
+    for p in found.isolated {
+        out.push(Candidate {
+            boundary,
+            corner: p.corner,
+            tr: vec![p.tr],
+            xy: vec![p.xy],
+        });
+    }
+}

@@ -1,0 +1,13 @@
+//! Errors of the medial axis.
+
+/// Why a medial axis could not be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// The bisectors it is made of could not be computed (an option out of range, a curve
+    /// the exact algebra refuses).
+    #[error(transparent)]
+    Bisector(#[from] zeroset::Error),
+}
+
+/// Shorthand for results of this crate.
+pub type Result<T> = std::result::Result<T, Error>;

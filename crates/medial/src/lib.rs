@@ -1,0 +1,128 @@
+//! The medial axis (skeleton) of a planar region bounded by profiles: every point inside with
+//! at least two nearest boundary points, as a graph whose points carry the radius of the
+//! largest inscribed disk centred there.
+//!
+//! The axis is made of pieces of bisectors (Elber & Kim): between two segments of the
+//! boundary, a segment and a reflex corner, or two reflex corners. The candidates are the
+//! bisectors of every pair of sites of every boundary and of every pair of boundaries
+//! ([`zeroset::profile_self_bisector`], [`zeroset::profile_bisector`]); a point of one lies on
+//! the axis where it is inside the region and its disk is empty (no boundary point nearer than
+//! its foot points). Each candidate branch is cut to its stretches with empty disks; where a
+//! stretch ends inside a branch a third boundary point reached the disk: the end is refined on
+//! the exact branch to that tri-tangent disk, a junction. The stretches are joined into a graph
+//! at their common ends: junctions, ends at centres of curvature, convex corners; stretches
+//! that continue each other (a foot passing from one segment to the next) are one edge.
+//!
+//! Emptiness is decided with sampled nearest-point searches ([`curve::Profile::nearest`]),
+//! so results say `certified: false`.
+
+mod assemble;
+mod candidates;
+mod error;
+mod sites;
+mod stretches;
+
+pub use error::{Error, Result};
+
+use curve::Region;
+use serde::{Deserialize, Serialize};
+
+/// Options of [`medial_axis`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MedialOptions {
+    /// Parameter tolerance relative to the domains (default 1e-12, as the bisectors').
+    pub tol: f64,
+    /// Chord tolerance of the edges' polylines relative to the region's size (default
+    /// 1e-3).
+    pub chord_tol: f64,
+}
+
+impl Default for MedialOptions {
+    fn default() -> Self {
+        Self {
+            tol: zeroset::DEFAULT_TOL,
+            chord_tol: zeroset::DEFAULT_CHORD_TOL,
+        }
+    }
+}
+
+/// What a node of the axis is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum NodeKind {
+    /// Three or more edges meet: a disk touching the boundary at three or more points.
+    Junction,
+    /// A leaf at a centre of curvature of a curvature maximum (or the centre of a disk).
+    End,
+    /// A leaf at a convex corner.
+    Corner,
+    /// The one node of a cycle without junctions (an annulus).
+    Joint,
+}
+
+/// A node of the axis.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Node {
+    /// Its index in [`MedialAxis::nodes`].
+    pub id: usize,
+    /// Where it is.
+    pub xy: [f64; 2],
+    /// The radius of the largest inscribed disk there.
+    pub radius: f64,
+    /// What it is.
+    pub kind: NodeKind,
+}
+
+/// An edge of the axis: a polyline from one node to another.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Edge {
+    /// The node it starts at.
+    pub from: usize,
+    /// The node it ends at.
+    pub to: usize,
+    /// The vertices.
+    pub xy: Vec<[f64; 2]>,
+    /// The radius at each vertex.
+    pub radius: Vec<f64>,
+    /// Per vertex, the parameters of its two nearest boundary points.
+    pub feet: Vec<[f64; 2]>,
+    /// Per vertex, the boundaries of those points (0 outer, 1.. holes).
+    pub boundary: Vec<[usize; 2]>,
+}
+
+/// The medial axis of a region.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct MedialAxis {
+    /// The nodes.
+    pub nodes: Vec<Node>,
+    /// The edges.
+    pub edges: Vec<Edge>,
+    /// Whether every junction and trimming decision followed from sign tests (not yet: the
+    /// emptiness of disks is sampled).
+    pub certified: bool,
+    /// False when a search limit was hit.
+    pub complete: bool,
+}
+
+/// The medial axis of `region`.
+///
+/// ```
+/// use curve::{Profile, Region, Segment};
+/// use medial::{medial_axis, MedialOptions, NodeKind};
+/// // A 4 × 2 rectangle: two junctions joined by the middle line, four corner leaves.
+/// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+/// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+/// let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+/// let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+/// let count = |k| axis.nodes.iter().filter(|n| n.kind == k).count();
+/// assert_eq!((count(NodeKind::Junction), count(NodeKind::Corner)), (2, 4));
+/// assert_eq!(axis.edges.len(), 5);
+/// ```
+pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
+    let sites = sites::Sites::new(region);
+    let (found, complete) = candidates::candidates(&sites, opts)?;
+    let pieces = stretches::stretches(&sites, &found);
+    let mut axis = assemble::assemble(&sites, pieces, &found);
+    axis.complete &= complete;
+    Ok(axis)
+}

@@ -1,0 +1,104 @@
+//! The region's boundaries as the medial axis reads them: foot points by boundary and
+//! profile parameter, which side of a boundary is inside, and the distance from a point to
+//! the whole boundary.
+
+use curve::{JointKind, ParamCurve, Profile, Region};
+
+/// A disk counts as empty when no boundary point is nearer its centre than its radius by
+/// more than this share of the region's size: the radius and the distances carry rounding
+/// of ~1e-16 of the coordinates, and the nearest-point search converges to ~1e-15.
+pub(crate) const EMPTY_SLACK: f64 = 1e-9;
+
+/// The boundaries of a region: 0 the outer one, 1.. the holes.
+pub(crate) struct Sites<'a> {
+    pub(crate) boundaries: Vec<&'a Profile>,
+    /// +1 where the region lies left of a boundary as it runs, −1 where right.
+    inside_left: Vec<f64>,
+    /// max(width, height) of the region's box, the scale of the relative tolerances.
+    pub(crate) size: f64,
+}
+
+impl<'a> Sites<'a> {
+    pub(crate) fn new(region: &'a Region) -> Self {
+        let boundaries: Vec<&Profile> = std::iter::once(region.outer())
+            .chain(region.holes())
+            .collect();
+        let inside_left = boundaries
+            .iter()
+            .enumerate()
+            .map(|(k, b)| {
+                if k == 0 {
+                    b.orientation()
+                } else {
+                    -b.orientation()
+                }
+            })
+            .collect();
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in region
+            .outer()
+            .segments()
+            .iter()
+            .flat_map(|s| s.curve().control_points())
+        {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        Self {
+            boundaries,
+            inside_left,
+            size,
+        }
+    }
+
+    /// The boundary point at profile parameter `u` of boundary `b`.
+    pub(crate) fn foot(&self, b: usize, u: f64) -> [f64; 2] {
+        self.boundaries[b].jet_to(u, 0).p.arr()
+    }
+
+    /// The distance from `x` to the boundary, or some distance below `enough` when there is
+    /// one; with the boundary and parameter of the point found.
+    pub(crate) fn nearest(&self, x: [f64; 2], enough: f64) -> (f64, usize, f64) {
+        let mut best = (f64::INFINITY, 0, 0.0);
+        for (k, b) in self.boundaries.iter().enumerate() {
+            let n = b.nearest(x, enough);
+            if n.distance < best.0 {
+                best = (n.distance, k, n.u);
+                if n.distance < enough {
+                    break;
+                }
+            }
+        }
+        best
+    }
+
+    /// How far the disk centred at `x` of radius `rho` is from holding a boundary point
+    /// inside: the distance to the boundary less the radius (≥ 0 for an empty disk, about 0
+    /// on the axis where the foot points are the nearest points).
+    pub(crate) fn margin(&self, x: [f64; 2], rho: f64) -> f64 {
+        let slack = EMPTY_SLACK * self.size;
+        self.nearest(x, rho - slack).0 - rho
+    }
+
+    /// Whether `x`, the bisector point of the foot at `u` on boundary `b`, lies inside the
+    /// region: on the inner side of the boundary there (a corner's foot: where the corner is
+    /// reflex for the region, its cone lies inside).
+    pub(crate) fn inside_of(&self, b: usize, u: f64, corner: bool, x: [f64; 2]) -> bool {
+        let p = self.boundaries[b];
+        if corner {
+            let reflex_for_region = match p.joints().iter().find(|j| j.u == u) {
+                Some(j) if b == 0 => j.kind == JointKind::Reflex,
+                Some(j) => j.kind == JointKind::Convex,
+                None => false,
+            };
+            return reflex_for_region;
+        }
+        let j = p.jet_to(u, 1);
+        let v = [x[0] - j.p.x, x[1] - j.p.y];
+        let side = j.d1.x * v[1] - j.d1.y * v[0];
+        side * self.inside_left[b] > 0.0
+    }
+}

@@ -1,0 +1,250 @@
+//! The stretches of each candidate branch that belong to the axis: inside the region, with
+//! empty disks. Where a stretch ends inside its branch, the end is refined on the exact
+//! branch to the point where a third boundary point reaches the disk: a tri-tangent disk.
+
+use crate::candidates::Candidate;
+use crate::sites::{Sites, EMPTY_SLACK};
+use curve::ParamCurve;
+
+/// Halvings that bracket where a stretch ends (from a polyline step to rounding).
+const BRACKET_STEPS: usize = 60;
+
+/// Secant steps that solve for the tri-tangent disk inside the bracket.
+const SECANT_STEPS: usize = 60;
+
+/// Newton steps of a foot-point solve.
+const FOOT_STEPS: usize = 30;
+
+/// A vertex of the axis: its foot parameters, point and radius.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Vertex {
+    pub(crate) tr: [f64; 2],
+    pub(crate) xy: [f64; 2],
+    pub(crate) radius: f64,
+}
+
+/// A stretch of one candidate on the axis.
+#[derive(Debug, Clone)]
+pub(crate) struct Stretch {
+    /// The candidate it lies on.
+    pub(crate) candidate: usize,
+    pub(crate) vertices: Vec<Vertex>,
+}
+
+/// The stretches of every candidate.
+pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> {
+    let mut out = Vec::new();
+    for (k, c) in found.iter().enumerate() {
+        let branch = Branch { sites, c };
+        let pass: Vec<Option<Vertex>> =
+            c.tr.iter()
+                .zip(&c.xy)
+                .map(|(tr, xy)| branch.vertex(*tr, *xy).filter(|v| branch.on_axis(v)))
+                .collect();
+        let n = pass.len();
+        let mut i = 0;
+        while i < n {
+            if pass[i].is_none() {
+                i += 1;
+                continue;
+            }
+            let start = i;
+            while i < n && pass[i].is_some() {
+                i += 1;
+            }
+            let mut vertices: Vec<Vertex> = pass[start..i].iter().flatten().copied().collect();
+            if start > 0 {
+                if let Some(v) = branch.junction(vertices[0], c.tr[start - 1], c.xy[start - 1]) {
+                    vertices.insert(0, v);
+                }
+            }
+            if i < n {
+                if let Some(v) = branch.junction(vertices[vertices.len() - 1], c.tr[i], c.xy[i]) {
+                    vertices.push(v);
+                }
+            }
+            if vertices.len() >= 2 || n == 1 {
+                out.push(Stretch {
+                    candidate: k,
+                    vertices,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// One candidate branch with the region: exact points on it, and the test of the axis.
+struct Branch<'s, 'a> {
+    sites: &'s Sites<'a>,
+    c: &'s Candidate,
+}
+
+impl Branch<'_, '_> {
+    /// The vertex of feet `tr` at `xy`, with its radius.
+    fn vertex(&self, tr: [f64; 2], xy: [f64; 2]) -> Option<Vertex> {
+        let f = self.sites.foot(self.c.boundary[0], tr[0]);
+        let radius = (xy[0] - f[0]).hypot(xy[1] - f[1]);
+        radius.is_finite().then_some(Vertex { tr, xy, radius })
+    }
+
+    /// Whether a vertex lies on the axis: inside the region, its disk empty.
+    fn on_axis(&self, v: &Vertex) -> bool {
+        self.inside(v) && self.sites.margin(v.xy, v.radius) >= -EMPTY_SLACK * self.sites.size
+    }
+
+    fn inside(&self, v: &Vertex) -> bool {
+        // A vertex on the boundary (a corner's end of the axis) is inside.
+        if v.radius <= EMPTY_SLACK * self.sites.size {
+            return true;
+        }
+        // The side of a segment's foot decides; two corners: their cones.
+        let s = if self.c.corner[0] { 1 } else { 0 };
+        self.sites
+            .inside_of(self.c.boundary[s], v.tr[s], self.c.corner[s], v.xy)
+    }
+
+    /// The end of a stretch between its last vertex `from` (on the axis) and the next
+    /// vertex's feet `beyond` (off it): bracketed by halving on the exact branch, then solved
+    /// for the disk that also touches the boundary point that enters beyond it.
+    fn junction(&self, from: Vertex, beyond: [f64; 2], beyond_xy: [f64; 2]) -> Option<Vertex> {
+        let lerp =
+            |a: [f64; 2], b: [f64; 2], s: f64| [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
+        let at = |s: f64| -> Option<Vertex> {
+            let guess = lerp(from.tr, beyond, s);
+            self.snap(guess, lerp(from.xy, beyond_xy, s), from.tr, beyond)
+        };
+        let ok = |v: &Vertex| self.on_axis(v);
+        let (mut lo, mut hi) = (0.0, 1.0);
+        let mut last = from;
+        let mut outside: Option<Vertex> = None;
+        for _ in 0..BRACKET_STEPS {
+            let m = 0.5 * (lo + hi);
+            match at(m) {
+                Some(v) if ok(&v) => {
+                    lo = m;
+                    last = v;
+                }
+                other => {
+                    hi = m;
+                    if other.is_some() {
+                        outside = other;
+                    }
+                }
+            }
+        }
+        // The tri-tangent disk: where the distance to the entering point equals the radius.
+        let Some(out) = outside else {
+            return (lo > 0.0).then_some(last);
+        };
+        let (_, k, u) = self.sites.nearest(out.xy, 0.0);
+        let third = |v: &Vertex| local_distance(self.sites, k, u, v.xy) - v.radius;
+        let (mut a, mut fa) = (lo, third(&last));
+        let (mut b, mut fb) = (hi, third(&out));
+        if !(fa >= 0.0 && fb < 0.0) {
+            return (lo > 0.0).then_some(last);
+        }
+        let mut best = last;
+        for _ in 0..SECANT_STEPS {
+            // Regula falsi with the Illinois rule: the bracket always holds the root.
+            let s = (a * fb - b * fa) / (fb - fa);
+            if !(s > a && s < b) {
+                break;
+            }
+            let Some(v) = at(s) else { break };
+            let f = third(&v);
+            if f >= 0.0 {
+                (a, fa) = (s, f);
+                best = v;
+                fb *= 0.5;
+            } else {
+                (b, fb) = (s, f);
+                fa *= 0.5;
+            }
+            if b - a <= f64::EPSILON * 4.0 {
+                break;
+            }
+        }
+        Some(best)
+    }
+
+    /// The exact bisector vertex near the feet `guess` and point `near` (between the
+    /// vertices with feet `p` and `q`): the foot on a segment that moves most between them is
+    /// kept, the other solved for; two corners' bisector is the straight line through `near`.
+    fn snap(&self, guess: [f64; 2], near: [f64; 2], p: [f64; 2], q: [f64; 2]) -> Option<Vertex> {
+        let c = self.c;
+        let jet = |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_to(u, 2);
+        let keep = match c.corner {
+            [true, true] => return self.vertex(guess, near),
+            [true, false] => 1,
+            [false, true] => 0,
+            [false, false] => usize::from((q[0] - p[0]).abs() < (q[1] - p[1]).abs()),
+        };
+        let other = 1 - keep;
+        let jk = jet(keep, guess[keep]);
+        let n = jk.d1.perp().unit();
+        // On the normal at the kept foot, as far from it as from `o`.
+        let point_for = |o: curve::V2| {
+            let d = o - jk.p;
+            jk.p + n * (d.dot(d) / (2.0 * n.dot(d)))
+        };
+        if c.corner[other] {
+            return self.vertex(guess, point_for(jet(other, guess[other]).p).arr());
+        }
+        // The other foot: where the bisector point is on the normal there too (secant
+        // steps from the two vertices' feet).
+        let (lo, hi) = (p[other].min(q[other]), p[other].max(q[other]));
+        let g = |u: f64| {
+            let jo = jet(other, u);
+            let x = point_for(jo.p);
+            ((x - jo.p).dot(jo.d1) / jo.d1.norm(), x)
+        };
+        let (mut u0, mut u1) = (lo, hi);
+        let (mut g0, mut g1) = (g(u0).0, g(u1).0);
+        for _ in 0..FOOT_STEPS {
+            if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
+                break;
+            }
+            let next = u1 - g1 * (u1 - u0) / (g1 - g0);
+            if !next.is_finite() {
+                return None;
+            }
+            (u0, g0) = (u1, g1);
+            u1 = next;
+            g1 = g(u1).0;
+        }
+        // The secant may leave the bracket a little (a branch bends between its vertices);
+        // not far.
+        let span = (hi - lo).max(f64::EPSILON);
+        if !(u1 >= lo - span && u1 <= hi + span) {
+            return None;
+        }
+        let mut tr = guess;
+        tr[other] = u1;
+        self.vertex(tr, g(u1).1.arr())
+    }
+}
+
+/// The distance from `x` to boundary `k` near its parameter `u`: Newton's method on the
+/// foot-point condition inside the segment holding `u`.
+fn local_distance(sites: &Sites<'_>, k: usize, u: f64, x: [f64; 2]) -> f64 {
+    let p = sites.boundaries[k];
+    let (i, _) = p.locate(u);
+    let (lo, hi) = (i as f64, (i + 1) as f64);
+    let x = curve::V2::from_arr(x);
+    let mut u = u;
+    for _ in 0..FOOT_STEPS {
+        let j = p.jet_to(u, 2);
+        let v = j.p - x;
+        let h = j.d1.dot(j.d1) + v.dot(j.d2);
+        if h.is_nan() || h <= 0.0 {
+            break;
+        }
+        let next = (u - v.dot(j.d1) / h).clamp(lo, hi);
+        if next == u {
+            break;
+        }
+        u = next;
+    }
+    (p.jet_to(u, 0).p - x).norm()
+}

@@ -1,0 +1,91 @@
+//! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
+
+use super::report::{draw_curve, json_doc, time_line};
+use super::{print_out, timing, write_file, Common, Failure};
+use curvekit::io::{read_curve_picked, region_of};
+use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
+use curvekit::svg::Figure;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Maximal disks drawn in the figure: the largest few, enough to show what the radius means.
+const DISKS_DRAWN: usize = 6;
+
+pub(super) fn run(path: &Path, chord_tol: f64, common: &Common) -> Result<(), Failure> {
+    let opts = MedialOptions {
+        tol: common.tol,
+        chord_tol,
+    };
+    let bisector_opts = zeroset::BisectorOptions {
+        tol: opts.tol,
+        chord_tol: opts.chord_tol,
+        ..Default::default()
+    };
+    bisector_opts
+        .validate()
+        .map_err(|e| Failure::Usage(format!("medial: {e}")))?;
+    let curve = read_curve_picked(path, common.pick)?;
+    let region = region_of(&curve)?;
+    let compute = || medial_axis(&region, &opts);
+    let axis = compute().map_err(|e| Failure::Other(format!("medial: {e}")))?;
+    let stats = common.time.then(|| timing::measure(compute));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, &curve);
+        draw_axis(&mut fig, &axis);
+        fig.title(format!(
+            "medial axis: {} nodes, {} edges",
+            axis.nodes.len(),
+            axis.edges.len()
+        ));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        json_doc(&axis, &[&curve], stats.as_ref())
+    } else {
+        let mut s = String::new();
+        let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
+        let _ = writeln!(s, "region:      {}", curve.file);
+        let _ = writeln!(
+            s,
+            "nodes:       {} ({} junctions, {} ends, {} corners, {} joints)",
+            axis.nodes.len(),
+            count(NodeKind::Junction),
+            count(NodeKind::End),
+            count(NodeKind::Corner),
+            count(NodeKind::Joint)
+        );
+        let vertices: usize = axis.edges.iter().map(|e| e.xy.len()).sum();
+        let _ = writeln!(s, "edges:       {} ({vertices} vertices)", axis.edges.len());
+        let _ = writeln!(
+            s,
+            "certified:   {}\ncomplete:    {}",
+            axis.certified, axis.complete
+        );
+        if let Some(st) = &stats {
+            let _ = writeln!(s, "{}", time_line(st));
+        }
+        s
+    })
+}
+
+/// The axis's edges, and the maximal disks of its widest nodes.
+fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
+    for e in &axis.edges {
+        fig.thin(e.xy.clone(), "#d62020");
+    }
+    let mut widest: Vec<_> = axis.nodes.iter().collect();
+    widest.sort_by(|a, b| b.radius.total_cmp(&a.radius));
+    for n in widest.iter().take(DISKS_DRAWN) {
+        let circle = (0..=64)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / 64.0;
+                [n.xy[0] + n.radius * a.cos(), n.xy[1] + n.radius * a.sin()]
+            })
+            .collect();
+        fig.thin(circle, "#999999");
+    }
+    for n in &axis.nodes {
+        fig.dot(n.xy);
+    }
+}

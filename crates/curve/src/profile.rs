@@ -206,6 +206,13 @@ impl Profile {
         (i, u - i as f64)
     }
 
+    /// The jet of segment `i` at the profile parameter `u` (clamped to the segment's
+    /// `[i, i + 1]`): at a joint, the segment asked for, not the one starting there.
+    pub fn jet_on(&self, i: usize, u: f64, order: usize) -> Jet {
+        let x = (u - i as f64).clamp(0.0, 1.0);
+        self.segments[i].jet_in_unit(x, order)
+    }
+
     /// The profile parameter of segment `i`'s own parameter `v`.
     pub fn profile_param(&self, i: usize, v: f64) -> f64 {
         let (a, b) = self.segments[i].curve().domain();

@@ -9,7 +9,7 @@ use crate::{Edge, MedialAxis, Node, NodeKind};
 
 /// Ends of stretches within this share of the region's size are one node: junctions found on
 /// different branches, and branches continuing each other, agree to ~1e-12 of the size.
-const MERGE: f64 = 1e-7;
+const MERGE: f64 = 1e-6;
 
 /// A leaf whose radius is at most this share of the size is a corner of the boundary.
 const CORNER_RADIUS: f64 = 1e-9;

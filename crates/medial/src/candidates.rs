@@ -6,11 +6,17 @@ use crate::sites::Sites;
 use crate::MedialOptions;
 use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
 
+/// The finest chord tolerance the bisectors take (relative to their box's diagonal): the
+/// axis's finest, 1e-9 of the size, scaled to the diagonal may fall below it.
+const MIN_CHORD: f64 = 1e-9;
+
 /// One candidate branch (or point): the bisector of two sites.
 #[derive(Debug, Clone)]
 pub(crate) struct Candidate {
     /// The boundaries of the two sites.
     pub(crate) boundary: [usize; 2],
+    /// The segment of each site (for a corner, the segment starting there).
+    pub(crate) segment: [usize; 2],
     /// Whether each site is a corner.
     pub(crate) corner: [bool; 2],
     /// The feet's profile parameters per vertex.
@@ -24,11 +30,12 @@ pub(crate) fn candidates(
     sites: &Sites<'_>,
     opts: &MedialOptions,
 ) -> Result<(Vec<Candidate>, bool)> {
-    // The bisectors' chord tolerance is relative to their own profiles' box diagonal; the
-    // axis's to the region's max(width, height), which is at most that of the outer box.
+    // The bisectors' chord tolerance is relative to their own profiles' box diagonal, at
+    // most the outer box's; the axis's to the region's max(width, height).
+    let chord_tol = (opts.chord_tol * sites.size / sites.diagonal).max(MIN_CHORD);
     let bisector_opts = BisectorOptions {
         tol: opts.tol,
-        chord_tol: opts.chord_tol,
+        chord_tol,
         trimmed: false,
         ..BisectorOptions::default()
     };
@@ -54,6 +61,7 @@ fn add(out: &mut Vec<Candidate>, found: ProfileBisector, boundary: [usize; 2]) {
     for br in found.branches {
         out.push(Candidate {
             boundary,
+            segment: br.segment,
             corner: br.corner,
             tr: br.tr,
             xy: br.xy,
@@ -64,6 +72,7 @@ fn add(out: &mut Vec<Candidate>, found: ProfileBisector, boundary: [usize; 2]) {
     for p in found.isolated {
         out.push(Candidate {
             boundary,
+            segment: p.segment,
             corner: p.corner,
             tr: vec![p.tr],
             xy: vec![p.xy],

@@ -16,6 +16,8 @@ pub(crate) struct Sites<'a> {
     inside_left: Vec<f64>,
     /// max(width, height) of the region's box, the scale of the relative tolerances.
     pub(crate) size: f64,
+    /// The diagonal of that box.
+    pub(crate) diagonal: f64,
 }
 
 impl<'a> Sites<'a> {
@@ -51,6 +53,7 @@ impl<'a> Sites<'a> {
             boundaries,
             inside_left,
             size,
+            diagonal: (hi[0] - lo[0]).hypot(hi[1] - lo[1]),
         }
     }
 
@@ -83,20 +86,19 @@ impl<'a> Sites<'a> {
         self.nearest(x, rho - slack).0 - rho
     }
 
-    /// Whether `x`, the bisector point of the foot at `u` on boundary `b`, lies inside the
-    /// region: on the inner side of the boundary there (a corner's foot: where the corner is
-    /// reflex for the region, its cone lies inside).
-    pub(crate) fn inside_of(&self, b: usize, u: f64, corner: bool, x: [f64; 2]) -> bool {
+    /// Whether `x`, the bisector point of the foot at `u` on segment `i` of boundary `b`,
+    /// lies inside the region: on the inner side of the segment there (a corner's foot:
+    /// where the corner is reflex for the region, its cone lies inside).
+    pub(crate) fn inside_of(&self, b: usize, i: usize, u: f64, corner: bool, x: [f64; 2]) -> bool {
         let p = self.boundaries[b];
         if corner {
-            let reflex_for_region = match p.joints().iter().find(|j| j.u == u) {
+            return match p.joints().iter().find(|j| j.u == u) {
                 Some(j) if b == 0 => j.kind == JointKind::Reflex,
                 Some(j) => j.kind == JointKind::Convex,
                 None => false,
             };
-            return reflex_for_region;
         }
-        let j = p.jet_to(u, 1);
+        let j = p.jet_on(i, u, 1);
         let v = [x[0] - j.p.x, x[1] - j.p.y];
         let side = j.d1.x * v[1] - j.d1.y * v[0];
         side * self.inside_left[b] > 0.0

@@ -12,6 +12,22 @@ const BRACKET_STEPS: usize = 60;
 /// Secant steps that solve for the tri-tangent disk inside the bracket.
 const SECANT_STEPS: usize = 60;
 
+/// Halvings that look for a stretch on the axis hidden between two polyline vertices off
+/// it (down to 2^-20 of the step).
+const HIDDEN_DEPTH: usize = 20;
+
+/// Feet closer than this share of the radius are one point: where they meet the axis ends,
+/// at a centre of curvature (bisector points whose feet close in on a smooth joint, where the
+/// bisector function vanishes to high order, are no part of the axis either).
+const FEET_APART: f64 = 1e-4;
+
+/// A curvature below this (times the size) is a straight boundary: no centre of curvature
+/// within 1e12 sizes for the axis to end at.
+const STRAIGHT: f64 = 1e-12;
+
+/// Halvings that find a curvature extremum between two feet.
+const EXTREMUM_STEPS: usize = 60;
+
 /// Newton steps of a foot-point solve.
 const FOOT_STEPS: usize = 30;
 
@@ -36,30 +52,29 @@ pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> 
     let mut out = Vec::new();
     for (k, c) in found.iter().enumerate() {
         let branch = Branch { sites, c };
-        let pass: Vec<Option<Vertex>> =
-            c.tr.iter()
-                .zip(&c.xy)
-                .map(|(tr, xy)| branch.vertex(*tr, *xy).filter(|v| branch.on_axis(v)))
-                .collect();
-        let n = pass.len();
+        let samples = branch.samples();
+        let n = samples.len();
         let mut i = 0;
         while i < n {
-            if pass[i].is_none() {
+            if samples[i].on_axis.is_none() {
                 i += 1;
                 continue;
             }
             let start = i;
-            while i < n && pass[i].is_some() {
+            while i < n && samples[i].on_axis.is_some() {
                 i += 1;
             }
-            let mut vertices: Vec<Vertex> = pass[start..i].iter().flatten().copied().collect();
+            let mut vertices: Vec<Vertex> =
+                samples[start..i].iter().filter_map(|s| s.on_axis).collect();
             if start > 0 {
-                if let Some(v) = branch.junction(vertices[0], c.tr[start - 1], c.xy[start - 1]) {
+                let before = &samples[start - 1];
+                if let Some(v) = branch.junction(vertices[0], before.tr, before.xy) {
                     vertices.insert(0, v);
                 }
             }
             if i < n {
-                if let Some(v) = branch.junction(vertices[vertices.len() - 1], c.tr[i], c.xy[i]) {
+                let after = &samples[i];
+                if let Some(v) = branch.junction(vertices[vertices.len() - 1], after.tr, after.xy) {
                     vertices.push(v);
                 }
             }
@@ -74,6 +89,13 @@ pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> 
     out
 }
 
+/// A point of a candidate branch: feet, point, and the vertex when it is on the axis.
+struct Sample {
+    tr: [f64; 2],
+    xy: [f64; 2],
+    on_axis: Option<Vertex>,
+}
+
 /// One candidate branch with the region: exact points on it, and the test of the axis.
 struct Branch<'s, 'a> {
     sites: &'s Sites<'a>,
@@ -81,6 +103,125 @@ struct Branch<'s, 'a> {
 }
 
 impl Branch<'_, '_> {
+    /// The candidate's vertices, tested; between two vertices off the axis whose disks are
+    /// entered by different boundary sites, a stretch on the axis shorter than the polyline's
+    /// step may lie (two junctions close together): it is searched for by halving.
+    fn samples(&self) -> Vec<Sample> {
+        let c = self.c;
+        let mut out: Vec<Sample> = Vec::with_capacity(c.tr.len());
+        let mut last_intruder: Option<(usize, usize)> = None;
+        for (&tr, &xy) in c.tr.iter().zip(&c.xy) {
+            let on_axis = self.vertex(tr, xy).filter(|v| self.on_axis(v));
+            let intruder = on_axis.is_none().then(|| self.intruder(xy));
+            if let (Some(a), Some(b), Some(prev)) = (last_intruder, intruder, out.last()) {
+                if a != b {
+                    let (ptr, pxy) = (prev.tr, prev.xy);
+                    if let Some(v) = self.between((ptr, pxy, a), (tr, xy, b), HIDDEN_DEPTH) {
+                        out.push(Sample {
+                            tr: v.tr,
+                            xy: v.xy,
+                            on_axis: Some(v),
+                        });
+                    }
+                }
+            }
+            last_intruder = intruder;
+            out.push(Sample { tr, xy, on_axis });
+        }
+        out
+    }
+
+    /// A vertex on the axis strictly between two points of the branch off it (feet, point
+    /// and the site entering their disks), by halving where the entering sites differ.
+    fn between(
+        &self,
+        a: ([f64; 2], [f64; 2], (usize, usize)),
+        b: ([f64; 2], [f64; 2], (usize, usize)),
+        depth: usize,
+    ) -> Option<Vertex> {
+        if depth == 0 || a.2 == b.2 {
+            return None;
+        }
+        let tr = [0.5 * (a.0[0] + b.0[0]), 0.5 * (a.0[1] + b.0[1])];
+        let xy = [0.5 * (a.1[0] + b.1[0]), 0.5 * (a.1[1] + b.1[1])];
+        let v = self.snap(tr, xy, a.0, b.0)?;
+        if self.on_axis(&v) {
+            return Some(v);
+        }
+        let m = (v.tr, v.xy, self.intruder(v.xy));
+        self.between(a, m, depth - 1)
+            .or_else(|| self.between(m, b, depth - 1))
+    }
+
+    /// The boundary site nearest `x`: boundary and segment.
+    fn intruder(&self, x: [f64; 2]) -> (usize, usize) {
+        let (_, k, u) = self.sites.nearest(x, 0.0);
+        (k, self.sites.boundaries[k].locate(u).0)
+    }
+
+    /// The end of the axis where the feet of `v` close in: the centre of curvature at the
+    /// curvature extremum between them (the foot of larger curvature where there is no sign
+    /// change of the curvature's rate between them); `None` where the boundary is straight.
+    fn end_at_curvature_centre(&self, v: &Vertex) -> Option<Vertex> {
+        let c = self.c;
+        let jet =
+            |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_on(c.segment[s], u, 3);
+        // (Along the boundary, across joints: the extremum may lie on either segment.)
+        let rate = |u: f64| self.sites.boundaries[c.boundary[0]].jet(u).curvature_rate();
+        let kappa = |s: usize, u: f64| jet(s, u).curvature();
+        let (s, u, j) = if c.boundary[0] == c.boundary[1]
+            && !c.corner.contains(&true)
+            && rate(v.tr[0]).signum() != rate(v.tr[1]).signum()
+        {
+            let (mut a, mut b) = (v.tr[0].min(v.tr[1]), v.tr[0].max(v.tr[1]));
+            let ra = rate(a);
+            for _ in 0..EXTREMUM_STEPS {
+                let m = 0.5 * (a + b);
+                if rate(m).signum() == ra.signum() {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+            let u = 0.5 * (a + b);
+            (0, u, self.sites.boundaries[c.boundary[0]].jet(u))
+        } else {
+            let s = if c.corner[0] {
+                1
+            } else if c.corner[1] || kappa(0, v.tr[0]).abs() >= kappa(1, v.tr[1]).abs() {
+                0
+            } else {
+                1
+            };
+            (s, v.tr[s], jet(s, v.tr[s]))
+        };
+        let k = j.curvature();
+        if k.is_nan() || k.abs() * self.sites.size <= STRAIGHT {
+            return None;
+        }
+        let centre = j.p + j.d1.perp().unit() * (1.0 / k);
+        let mut tr = v.tr;
+        tr[0] = if s == 0 { u } else { tr[0] };
+        tr[1] = if s == 1 { u } else { tr[1] };
+        if c.boundary[0] == c.boundary[1] && !c.corner.contains(&true) {
+            tr = [u, u];
+        }
+        Some(Vertex {
+            tr,
+            xy: centre.arr(),
+            radius: 1.0 / k.abs(),
+        })
+    }
+
+    /// How far apart the two feet of a vertex are.
+    fn feet_apart(&self, v: &Vertex) -> f64 {
+        let (p, q) = (
+            self.sites.foot(self.c.boundary[0], v.tr[0]),
+            self.sites.foot(self.c.boundary[1], v.tr[1]),
+        );
+        (p[0] - q[0]).hypot(p[1] - q[1])
+    }
+
     /// The vertex of feet `tr` at `xy`, with its radius.
     fn vertex(&self, tr: [f64; 2], xy: [f64; 2]) -> Option<Vertex> {
         let f = self.sites.foot(self.c.boundary[0], tr[0]);
@@ -88,9 +229,18 @@ impl Branch<'_, '_> {
         radius.is_finite().then_some(Vertex { tr, xy, radius })
     }
 
-    /// Whether a vertex lies on the axis: inside the region, its disk empty.
+    /// Whether a vertex lies on the axis: inside the region, its disk empty, its two feet
+    /// apart (else its point has one nearest point: the axis ends where the feet meet).
     fn on_axis(&self, v: &Vertex) -> bool {
+        self.disk_empty(v) && self.feet_part(v)
+    }
+
+    fn disk_empty(&self, v: &Vertex) -> bool {
         self.inside(v) && self.sites.margin(v.xy, v.radius) >= -EMPTY_SLACK * self.sites.size
+    }
+
+    fn feet_part(&self, v: &Vertex) -> bool {
+        v.radius <= EMPTY_SLACK * self.sites.size || self.feet_apart(v) > FEET_APART * v.radius
     }
 
     fn inside(&self, v: &Vertex) -> bool {
@@ -100,8 +250,9 @@ impl Branch<'_, '_> {
         }
         // The side of a segment's foot decides; two corners: their cones.
         let s = if self.c.corner[0] { 1 } else { 0 };
+        let c = self.c;
         self.sites
-            .inside_of(self.c.boundary[s], v.tr[s], self.c.corner[s], v.xy)
+            .inside_of(c.boundary[s], c.segment[s], v.tr[s], c.corner[s], v.xy)
     }
 
     /// The end of a stretch between its last vertex `from` (on the axis) and the next
@@ -133,18 +284,26 @@ impl Branch<'_, '_> {
                 }
             }
         }
-        // The tri-tangent disk: where the distance to the entering point equals the radius.
         let Some(out) = outside else {
             return (lo > 0.0).then_some(last);
         };
+        if self.disk_empty(&out) {
+            // The feet met: the axis ends at the centre of curvature between them.
+            return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
+        }
+        // The tri-tangent disk: where the distance to the entering point equals the radius.
         let (_, k, u) = self.sites.nearest(out.xy, 0.0);
         let third = |v: &Vertex| local_distance(self.sites, k, u, v.xy) - v.radius;
-        let (mut a, mut fa) = (lo, third(&last));
+        // The bracket's passing end holds the disk empty only to the slack: the root may lie
+        // before it, down to the stretch's last vertex.
+        let (mut a, mut fa, mut best) = match third(&last) {
+            f if f >= 0.0 => (lo, f, last),
+            _ => (0.0, third(&from), from),
+        };
         let (mut b, mut fb) = (hi, third(&out));
         if !(fa >= 0.0 && fb < 0.0) {
             return (lo > 0.0).then_some(last);
         }
-        let mut best = last;
         for _ in 0..SECANT_STEPS {
             // Regula falsi with the Illinois rule: the bracket always holds the root.
             let s = (a * fb - b * fa) / (fb - fa);
@@ -173,7 +332,8 @@ impl Branch<'_, '_> {
     /// kept, the other solved for; two corners' bisector is the straight line through `near`.
     fn snap(&self, guess: [f64; 2], near: [f64; 2], p: [f64; 2], q: [f64; 2]) -> Option<Vertex> {
         let c = self.c;
-        let jet = |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_to(u, 2);
+        let jet =
+            |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_on(c.segment[s], u, 2);
         let keep = match c.corner {
             [true, true] => return self.vertex(guess, near),
             [true, false] => 1,

@@ -18,7 +18,7 @@ mod point_site;
 mod polyline;
 
 use crate::bisector::{bbox_of_points, bisector, self_bisector, FAR};
-use crate::bisector::{Bisector, BisectorOptions, TRIM_SLACK};
+use crate::bisector::{Bisector, BisectorOptions, Branch, TRIM_SLACK};
 use crate::error::Result;
 use crate::zeroset::MAX_CHORD_TOL;
 use bspline::Rational;
@@ -371,7 +371,9 @@ impl<'a> Run<'a> {
             (SegmentKind::Line, _) => Ok(()),
             (_, Some((centre, _))) => {
                 out.isolated.push(ProfilePoint {
-                    tr: [i as f64, (i + 1) as f64],
+                    // Any two points of the arc are feet of its centre: a quarter and three
+                    // quarters along (distinct, also on a full circle).
+                    tr: [i as f64 + 0.25, i as f64 + 0.75],
                     xy: centre,
                     segment: [i, i],
                     corner: [false, false],
@@ -391,7 +393,43 @@ impl<'a> Run<'a> {
         let map = |tr: [f64; 2]| [self.param(0, seg[0], tr[0]), self.param(1, seg[1], tr[1])];
         out.complete &= found.complete;
         let extent = POINT_EXTENT * self.size;
-        for b in found.branches {
+        let feet = |tr: [f64; 2]| {
+            [
+                self.profiles[0].jet_to(tr[0], 0).p,
+                self.profiles[1].jet_to(tr[1], 0).p,
+            ]
+        };
+        // Feet that coincide leave the bisector point undetermined (0/0): where two
+        // segments meet smoothly the zero set reaches the joint with an arbitrary point.
+        // Such a vertex is dropped unless it is the feet's point itself (a corner's).
+        let determined = |tr: [f64; 2], xy: [f64; 2]| {
+            let [p, q] = feet(map(tr));
+            (p - q).norm() > extent || (curve::V2::from_arr(xy) - p).norm() <= extent
+        };
+        let pieces = found.branches.into_iter().flat_map(|b| {
+            let mut runs: Vec<Branch> = Vec::new();
+            let mut cur = Branch {
+                tr: Vec::new(),
+                xy: Vec::new(),
+            };
+            for (tr, xy) in b.tr.into_iter().zip(b.xy) {
+                if determined(tr, xy) {
+                    cur.tr.push(tr);
+                    cur.xy.push(xy);
+                } else if !cur.xy.is_empty() {
+                    runs.push(std::mem::replace(
+                        &mut cur,
+                        Branch {
+                            tr: Vec::new(),
+                            xy: Vec::new(),
+                        },
+                    ));
+                }
+            }
+            runs.push(cur);
+            runs
+        });
+        for b in pieces {
             let Some(&first) = b.xy.first() else {
                 continue;
             };
@@ -400,7 +438,8 @@ impl<'a> Run<'a> {
             });
             if spread <= extent {
                 // Two straight segments whose feet meet at one end of each (parallel lines
-                // whose spans touch): one point, found or not as rounding falls.
+                // whose spans touch), an arc and the line tangent to it at their joint (every
+                // foot on the arc with the joint): one point.
                 out.isolated.push(ProfilePoint {
                     tr: map(b.tr[0]),
                     xy: first,

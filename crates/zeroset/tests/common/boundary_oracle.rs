@@ -1,0 +1,92 @@
+//! An oracle of distances to a profile that shares no code with the crates: dense samples
+//! refined by golden-section search on the profile's own evaluation; and plain polygon
+//! helpers. Included by path by the tests that need it.
+#![allow(dead_code, unreachable_pub)]
+
+use curve::{ParamCurve, Profile};
+
+/// Samples per segment of the oracle's distance.
+const PER_SEGMENT: usize = 300;
+
+/// Dense samples of a profile with their parameters.
+pub struct Oracle<'a> {
+    p: &'a Profile,
+    u: Vec<f64>,
+    /// The samples.
+    pub pts: Vec<[f64; 2]>,
+}
+
+impl<'a> Oracle<'a> {
+    pub fn new(p: &'a Profile) -> Self {
+        let n = p.segments().len();
+        let u: Vec<f64> = (0..n * PER_SEGMENT)
+            .map(|k| k as f64 / PER_SEGMENT as f64)
+            .chain([n as f64])
+            .collect();
+        let pts = u.iter().map(|&u| p.jet(u).p.arr()).collect();
+        Self { p, u, pts }
+    }
+
+    /// The distance from `x` to the profile and the parameter of the nearest point.
+    pub fn nearest(&self, x: [f64; 2]) -> (f64, f64) {
+        let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
+        let (k, _) = self
+            .pts
+            .iter()
+            .enumerate()
+            .map(|(k, q)| (k, d(*q)))
+            .fold((0, f64::INFINITY), |b, c| if c.1 < b.1 { c } else { b });
+        // Golden-section search on the stretches to either side of the nearest sample (the
+        // last sample is the first one again: a closed profile's seam has both sides).
+        let last = self.u.len() - 1;
+        let before = if k == 0 { last - 1 } else { k - 1 };
+        let after = if k == last { 1 } else { k + 1 };
+        let f = |u: f64| d(self.p.jet(u).p.arr());
+        let mut best = (d(self.pts[k]), self.u[k]);
+        for (a, b) in [(before, before + 1), (after - 1, after)] {
+            let (mut a, mut b) = (self.u[a], self.u[b]);
+            let g = 0.5 * (5f64.sqrt() - 1.0);
+            for _ in 0..60 {
+                let (c, e) = (b - g * (b - a), a + g * (b - a));
+                if f(c) < f(e) {
+                    b = e;
+                } else {
+                    a = c;
+                }
+            }
+            let u = 0.5 * (a + b);
+            if f(u) < best.0 {
+                best = (f(u), u);
+            }
+        }
+        best
+    }
+}
+
+/// The distance from `p` to the segment `a b`.
+pub fn off_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let v = [p[0] - a[0], p[1] - a[1]];
+    let len2 = d[0] * d[0] + d[1] * d[1];
+    let s = if len2 > 0.0 {
+        ((v[0] * d[0] + v[1] * d[1]) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (v[0] - s * d[0]).hypot(v[1] - s * d[1])
+}
+
+/// The winding number of a closed polygon about `x`.
+pub fn winding(poly: &[[f64; 2]], x: [f64; 2]) -> i32 {
+    let mut w = 0;
+    for k in 0..poly.len() {
+        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+        let side = (b[0] - a[0]) * (x[1] - a[1]) - (x[0] - a[0]) * (b[1] - a[1]);
+        if a[1] <= x[1] && b[1] > x[1] && side > 0.0 {
+            w += 1;
+        } else if a[1] > x[1] && b[1] <= x[1] && side < 0.0 {
+            w -= 1;
+        }
+    }
+    w
+}

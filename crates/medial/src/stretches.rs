@@ -25,6 +25,11 @@ const FEET_APART: f64 = 1e-4;
 /// within 1e12 sizes for the axis to end at.
 const STRAIGHT: f64 = 1e-12;
 
+/// Widest window (share of the boundary's parameter length) searched for the curvature
+/// extremum where the axis ends, and how many times the window doubles to reach it.
+const EXTREMUM_WINDOW: f64 = 1e-2;
+const WIDENINGS: usize = 64;
+
 /// Halvings that find a curvature extremum between two feet.
 const EXTREMUM_STEPS: usize = 60;
 
@@ -166,14 +171,40 @@ impl Branch<'_, '_> {
         let c = self.c;
         let jet =
             |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_on(c.segment[s], u, 3);
-        // (Along the boundary, across joints: the extremum may lie on either segment.)
-        let rate = |u: f64| self.sites.boundaries[c.boundary[0]].jet(u).curvature_rate();
+        // (Along the boundary, across joints: the extremum may lie on either segment; on a
+        // closed boundary across the seam too, the parameter taken modulo its length.)
+        let boundary = self.sites.boundaries[c.boundary[0]];
+        let n = boundary.domain().1;
+        let rate = |u: f64| boundary.jet(u.rem_euclid(n)).curvature_rate();
         let kappa = |s: usize, u: f64| jet(s, u).curvature();
-        let (s, u, j) = if c.boundary[0] == c.boundary[1]
-            && !c.corner.contains(&true)
-            && rate(v.tr[0]).signum() != rate(v.tr[1]).signum()
-        {
-            let (mut a, mut b) = (v.tr[0].min(v.tr[1]), v.tr[0].max(v.tr[1]));
+        // The extremum between the feet, or just beside them: near the end of the axis the
+        // feet found may both lie on one side of it (the feet of the trivial solution, both
+        // at one point, are near), so the window widens until the rate changes sign.
+        let window = (c.boundary[0] == c.boundary[1] && !c.corner.contains(&true))
+            .then(|| {
+                let (mut a, mut b) = (v.tr[0].min(v.tr[1]), v.tr[0].max(v.tr[1]));
+                if boundary.is_closed() && b - a > 0.5 * n {
+                    (a, b) = (b, a + n); // the short way round, across the seam
+                }
+                let widest = EXTREMUM_WINDOW * n;
+                let mut w = (b - a).max(f64::EPSILON * n);
+                for _ in 0..WIDENINGS {
+                    if rate(a).signum() != rate(b).signum() {
+                        return Some((a, b));
+                    }
+                    if w > widest {
+                        break;
+                    }
+                    (a, b) = (a - w, b + w);
+                    if !boundary.is_closed() {
+                        (a, b) = (a.max(0.0), b.min(n));
+                    }
+                    w *= 2.0;
+                }
+                None
+            })
+            .flatten();
+        let (s, u, j) = if let Some((mut a, mut b)) = window {
             let ra = rate(a);
             for _ in 0..EXTREMUM_STEPS {
                 let m = 0.5 * (a + b);
@@ -183,8 +214,8 @@ impl Branch<'_, '_> {
                     b = m;
                 }
             }
-            let u = 0.5 * (a + b);
-            (0, u, self.sites.boundaries[c.boundary[0]].jet(u))
+            let u = (0.5 * (a + b)).rem_euclid(n);
+            (0, u, boundary.jet(u))
         } else {
             let s = if c.corner[0] {
                 1

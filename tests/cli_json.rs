@@ -333,3 +333,25 @@ fn demo_writes_figures() {
         assert!(std::path::Path::new(b["svg"].as_str().unwrap()).exists());
     }
 }
+
+/// `medial` prints the contract's document, and refuses what encloses no region by name.
+#[test]
+fn medial_json() {
+    let d = curvekit_json(&["medial", &fixture("region-pocket.json")]);
+    let nodes = d["nodes"].as_array().unwrap();
+    let edges = d["edges"].as_array().unwrap();
+    // One cycle round the island: a connected graph with as many edges as nodes.
+    assert_eq!(nodes.len(), edges.len());
+    for e in edges {
+        let n = e["xy"].as_array().unwrap().len();
+        for key in ["radius", "feet", "boundary"] {
+            assert_eq!(e[key].as_array().unwrap().len(), n, "{key}");
+        }
+    }
+    assert!(nodes.iter().all(|n| n["radius"].as_f64().unwrap() > 0.0));
+    assert_eq!(d["complete"], true);
+    for open in ["profile-s-curve.json", "limacon.json"] {
+        let run = curvekit(&["medial", &fixture(open)]);
+        assert_eq!(run.code, 2, "{open}");
+    }
+}

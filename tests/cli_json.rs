@@ -350,6 +350,14 @@ fn medial_json() {
     }
     assert!(nodes.iter().all(|n| n["radius"].as_f64().unwrap() > 0.0));
     assert_eq!(d["complete"], true);
+    // A drawing's outlines nested inside each other make a region: the glyph's bowl is a
+    // hole, so the axis has one cycle.
+    let glyph = curvekit_json(&["medial", &fixture("drawing-glyph-d.svg")]);
+    let (n, e) = (
+        glyph["nodes"].as_array().unwrap().len(),
+        glyph["edges"].as_array().unwrap().len(),
+    );
+    assert_eq!(e + 1 - n, 1);
     for open in ["profile-s-curve.json", "limacon.json"] {
         let run = curvekit(&["medial", &fixture(open)]);
         assert_eq!(run.code, 2, "{open}");

@@ -2,7 +2,7 @@
 
 use super::report::{draw_curve, json_doc, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
-use curvekit::io::{read_curve_picked, region_of};
+use curvekit::io::{read_region, Shape};
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use curvekit::svg::Figure;
 use std::fmt::Write as _;
@@ -24,9 +24,11 @@ pub(super) fn run(path: &Path, chord_tol: f64, common: &Common) -> Result<(), Fa
     bisector_opts
         .validate()
         .map_err(|e| Failure::Usage(format!("medial: {e}")))?;
-    let curve = read_curve_picked(path, common.pick)?;
-    let region = region_of(&curve)?;
-    let compute = || medial_axis(&region, &opts);
+    let curve = read_region(path, common.pick)?;
+    let Shape::Region(region) = &curve.shape else {
+        return Err(Failure::Other("medial: the file gave no region".into()));
+    };
+    let compute = || medial_axis(region, &opts);
     let axis = compute().map_err(|e| Failure::Other(format!("medial: {e}")))?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {

@@ -15,6 +15,7 @@ mod drawing;
 mod duplicates;
 mod dxf;
 mod profile;
+mod regions;
 mod spline;
 mod svg;
 
@@ -242,24 +243,35 @@ impl Curve {
     }
 }
 
-/// The region a command on regions takes from a curve file: a `region` as it is, any other
+/// The region a command on regions takes from a file: a `region` file as it is; any other
 /// closed curve with an exact form (a closed profile, a closed `bezier` or `bspline`, a
-/// circle, a full-turn arc) as the region it encloses; anything else is bad input naming
-/// the file.
-pub fn region_of(c: &Curve) -> Result<curve::Region, CurveFileError> {
+/// circle, a full-turn arc) as the region it encloses; from a drawing, its closed profiles
+/// nested inside each other (even-odd), `pick` choosing among several regions. The curve
+/// returned is the region's (`Shape::Region`); anything else is bad input naming the file.
+pub fn read_region(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
+    let file = path.display().to_string();
+    if let Some((format, bytes)) = drawing_bytes(path, &file)? {
+        let profiles = drawing::profiles(&file, drawing_chains(&file, format, &bytes)?)?;
+        return regions::pick_region(&file, profiles, pick);
+    }
+    let c = read_curve_picked(path, pick)?;
     let fail = |(field, problem): FieldError| CurveFileError {
         file: c.file.clone(),
         field,
         problem,
     };
-    match &c.shape {
-        Shape::Region(r) => Ok(r.as_ref().clone()),
+    let region = match &c.shape {
+        Shape::Region(r) => r.as_ref().clone(),
         shape => {
             let outer = profile::boundary_of("curve", shape.clone()).map_err(fail)?;
             curve::Region::new(outer, Vec::new())
-                .map_err(|e| fail(("curve".into(), Problem::Geometry(e.to_string()))))
+                .map_err(|e| fail(("curve".into(), Problem::Geometry(e.to_string()))))?
         }
-    }
+    };
+    Ok(Curve {
+        file: c.file,
+        shape: Shape::Region(Box::new(region)),
+    })
 }
 
 /// Reads and validates a curve file, or a drawing (see [`read_curve_picked`]).
@@ -273,8 +285,26 @@ pub fn read_curve(path: &Path) -> Result<Curve, CurveFileError> {
 /// file, holding one curve, ignores it).
 pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
     let file = path.display().to_string();
-    let unreadable =
-        |e: std::io::Error| drawing::error(&file, "document", Problem::Unreadable(e.to_string()));
+    match drawing_bytes(path, &file)? {
+        Some((format, bytes)) => parse_drawing(&file, format, &bytes, pick),
+        // (A curve file holds one curve: `pick` is for drawings.)
+        None => {
+            let text = std::fs::read_to_string(path).map_err(|e| unreadable(&file, e))?;
+            parse_curve(&file, &text)
+        }
+    }
+}
+
+fn unreadable(file: &str, e: std::io::Error) -> CurveFileError {
+    drawing::error(file, "document", Problem::Unreadable(e.to_string()))
+}
+
+/// A drawing's format and bytes, by the file's extension (`.svg`, `.dxf`); `None` for a
+/// curve file.
+fn drawing_bytes(
+    path: &Path,
+    file: &str,
+) -> Result<Option<(DrawingFormat, Vec<u8>)>, CurveFileError> {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -282,14 +312,10 @@ pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, Curv
     let format = match ext.as_deref() {
         Some("svg") => DrawingFormat::Svg,
         Some("dxf") => DrawingFormat::Dxf,
-        // (A curve file holds one curve: `pick` is for drawings.)
-        _ => {
-            let text = std::fs::read_to_string(path).map_err(unreadable)?;
-            return parse_curve(&file, &text);
-        }
+        _ => return Ok(None),
     };
-    let bytes = std::fs::read(path).map_err(unreadable)?;
-    parse_drawing(&file, format, &bytes, pick)
+    let bytes = std::fs::read(path).map_err(|e| unreadable(file, e))?;
+    Ok(Some((format, bytes)))
 }
 
 /// The formats of drawing files.
@@ -316,16 +342,25 @@ pub fn parse_drawing(
     bytes: &[u8],
     pick: Option<usize>,
 ) -> Result<Curve, CurveFileError> {
-    let chains = match format {
+    let chains = drawing_chains(file, format, bytes)?;
+    drawing::pick_profile(file, drawing::profiles(file, chains)?, pick)
+}
+
+/// The chains of a drawing's bytes.
+fn drawing_chains(
+    file: &str,
+    format: DrawingFormat,
+    bytes: &[u8],
+) -> Result<Vec<Chain>, CurveFileError> {
+    match format {
         DrawingFormat::Svg => {
             let text = std::str::from_utf8(bytes).map_err(|e| {
                 drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
             })?;
-            svg::chains(file, text)?
+            svg::chains(file, text)
         }
-        DrawingFormat::Dxf => dxf::chains(file, bytes)?,
-    };
-    drawing::pick_profile(file, drawing::profiles(file, chains)?, pick)
+        DrawingFormat::Dxf => dxf::chains(file, bytes),
+    }
 }
 
 /// Validates the text of a curve file; `file` names it in errors.

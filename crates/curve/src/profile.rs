@@ -175,6 +175,11 @@ impl Profile {
         self.size
     }
 
+    /// The first point.
+    pub fn start(&self) -> V2 {
+        self.segments[0].start()
+    }
+
     /// The segments in order.
     pub fn segments(&self) -> &[Segment] {
         &self.segments

@@ -65,6 +65,47 @@ impl Region {
         Ok(Self { outer, holes })
     }
 
+    /// The regions of closed profiles nested inside each other (even-odd): each profile at
+    /// an even depth an outer boundary, with the profiles directly inside it as its holes;
+    /// in the order of their outer boundaries. Open profiles are left out. Each region is
+    /// validated as [`Region::new`] does (boundaries that cross are an error).
+    ///
+    /// ```
+    /// use curve::{Profile, Region, Segment};
+    /// let circle = |r: f64| {
+    ///     Profile::new(vec![Segment::arc([0.0, 0.0], r, 0.0, std::f64::consts::TAU).unwrap()], None)
+    ///         .unwrap()
+    /// };
+    /// // A washer with a disk in its hole: two regions.
+    /// let regions = Region::nested(vec![circle(1.0), circle(3.0), circle(2.0)]).unwrap();
+    /// assert_eq!(regions.len(), 2);
+    /// assert_eq!(regions[1].holes().len(), 1); // the washer (outer r = 3) comes second
+    /// ```
+    pub fn nested(profiles: Vec<Profile>) -> Result<Vec<Region>> {
+        let closed: Vec<Profile> = profiles.into_iter().filter(|p| p.is_closed()).collect();
+        let polygons: Vec<Vec<V2>> = closed
+            .iter()
+            .map(|p| polygon(p.segments(), p.size()))
+            .collect();
+        let n = closed.len();
+        let inside = |i: usize, j: usize| i != j && winding(&polygons[j], closed[i].start()) != 0;
+        let depth: Vec<usize> = (0..n)
+            .map(|i| (0..n).filter(|&j| inside(i, j)).count())
+            .collect();
+        let mut slots: Vec<Option<Profile>> = closed.iter().cloned().map(Some).collect();
+        let mut out = Vec::new();
+        for o in (0..n).filter(|&o| depth[o] % 2 == 0) {
+            let holes: Vec<Profile> = (0..n)
+                .filter(|&h| depth[h] == depth[o] + 1 && inside(h, o))
+                .filter_map(|h| slots[h].take())
+                .collect();
+            if let Some(outer) = slots[o].take() {
+                out.push(Region::new(outer, holes)?);
+            }
+        }
+        Ok(out)
+    }
+
     /// The outer boundary.
     pub fn outer(&self) -> &Profile {
         &self.outer

@@ -112,9 +112,12 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
             boundary: c.boundary.clone(),
         });
     }
-    // Single points that no edge reaches: the centre of a disk.
-    for &k in &lone {
-        node_of(cluster[k], points[k], &mut nodes);
+    // Single points make the axis only where it has no edge (the centre of a disk): the
+    // axis is connected, so with edges a single point lies on one of them.
+    if edges.is_empty() {
+        for &k in &lone {
+            node_of(cluster[k], points[k], &mut nodes);
+        }
     }
     MedialAxis {
         nodes,

@@ -332,6 +332,24 @@ fn demo_writes_figures() {
     for b in d["bisectors"].as_array().unwrap() {
         assert!(std::path::Path::new(b["svg"].as_str().unwrap()).exists());
     }
+    // The medial axes of the pockets: each drawn, the pockets with their island's cycle.
+    let medial = d["medial"].as_array().unwrap();
+    assert!(medial.len() >= 4);
+    for m in medial {
+        assert!(
+            std::path::Path::new(m["svg"].as_str().unwrap()).exists(),
+            "{m}"
+        );
+        assert!(m["medial"]["nodes"].as_u64().unwrap() > 0, "{m}");
+    }
+    for pocket in ["medial-region-pocket", "medial-drawing-pocket"] {
+        let m = medial.iter().find(|m| m["name"] == pocket).unwrap();
+        let (n, e) = (
+            m["medial"]["nodes"].as_u64().unwrap(),
+            m["medial"]["edges"].as_u64().unwrap(),
+        );
+        assert_eq!(e + 1 - n, 1, "{m}");
+    }
 }
 
 /// `medial` prints the contract's document, and refuses what encloses no region by name.

@@ -3,7 +3,7 @@
 //! bisector figures of Elber & Kim, then part outlines with corners (`demo_profiles`).
 
 use super::report::{antipodal_figure, bisector_figure, curve_json, draw_curve, time_line};
-use super::{demo_profiles, print_out, timing, write_file, Common, Failure};
+use super::{demo_medial, demo_profiles, print_out, timing, write_file, Common, Failure};
 use antipodal::Inflections;
 use curvekit::io::{parse_curve, Curve};
 use curvekit::svg::Figure;
@@ -115,6 +115,7 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         .map(|(name, c1, c2)| bisector_row(name, *c1, *c2, out, common))
         .collect::<Result<Vec<_>, _>>()?;
     let profiles = demo_profiles::rows(out, common)?;
+    let medial = demo_medial::rows(out, common)?;
     let stats = common.time.then(|| {
         timing::measure(|| {
             shapes
@@ -126,15 +127,16 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         })
     });
     let text = if common.json {
-        demo_json(&shapes, &bisectors, &profiles, stats.as_ref())
+        demo_json(&shapes, &bisectors, &profiles, &medial, stats.as_ref())
     } else {
-        table(&shapes, &bisectors, &profiles, out, stats.as_ref())
+        table(&shapes, &bisectors, &profiles, &medial, out, stats.as_ref())
     };
     print_out(&text)?;
     // The demo shows the state of every example; one that fails is reported, not fatal.
     for e in errors(&shapes, &bisectors)
         .into_iter()
         .chain(demo_profiles::errors(&profiles))
+        .chain(demo_medial::errors(&medial))
     {
         eprintln!("curvekit: warning: demo example {e}");
     }
@@ -303,6 +305,7 @@ fn table(
     shapes: &[ShapeRow],
     bisectors: &[BisectorRow],
     profiles: &[demo_profiles::ProfileRow],
+    medial: &[demo_medial::MedialRow],
     out: &Path,
     stats: Option<&timing::Stats>,
 ) -> String {
@@ -349,9 +352,11 @@ fn table(
         );
     }
     s.push_str(&demo_profiles::table(profiles));
+    s.push_str(&demo_medial::table(medial));
     for e in errors(shapes, bisectors)
         .into_iter()
         .chain(demo_profiles::errors(profiles))
+        .chain(demo_medial::errors(medial))
     {
         let _ = writeln!(s, "failed: {e}");
     }
@@ -366,6 +371,7 @@ fn demo_json(
     shapes: &[ShapeRow],
     bisectors: &[BisectorRow],
     profiles: &[demo_profiles::ProfileRow],
+    medial: &[demo_medial::MedialRow],
     stats: Option<&timing::Stats>,
 ) -> String {
     let err = |e: &String| json!({ "error": e });
@@ -395,7 +401,13 @@ fn demo_json(
         })
         .collect();
     let profiles = demo_profiles::json(profiles);
-    let mut doc = json!({ "shapes": shapes, "bisectors": bisectors, "profiles": profiles });
+    let medial = demo_medial::json(medial);
+    let mut doc = json!({
+        "shapes": shapes,
+        "bisectors": bisectors,
+        "profiles": profiles,
+        "medial": medial,
+    });
     if let (Some(s), Some(map)) = (stats, doc.as_object_mut()) {
         map.insert("stats".into(), json!(s));
     }

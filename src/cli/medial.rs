@@ -2,7 +2,7 @@
 
 use super::report::{draw_curve, json_doc, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
-use curvekit::io::{read_region, Shape};
+use curvekit::io::{read_region, Curve, Shape};
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use curvekit::svg::Figure;
 use std::fmt::Write as _;
@@ -32,15 +32,7 @@ pub(super) fn run(path: &Path, chord_tol: f64, common: &Common) -> Result<(), Fa
     let axis = compute().map_err(|e| Failure::Other(format!("medial: {e}")))?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
-        let mut fig = Figure::new();
-        draw_curve(&mut fig, &curve);
-        draw_axis(&mut fig, &axis);
-        fig.title(format!(
-            "medial axis: {} nodes, {} edges",
-            axis.nodes.len(),
-            axis.edges.len()
-        ));
-        write_file(svg, &fig.render())?;
+        write_file(svg, &axis_figure(&curve, &axis))?;
     }
     print_out(&if common.json {
         json_doc(&axis, &[&curve], stats.as_ref())
@@ -69,6 +61,19 @@ pub(super) fn run(path: &Path, chord_tol: f64, common: &Common) -> Result<(), Fa
         }
         s
     })
+}
+
+/// The figure of a region's medial axis: the region, the axis, the widest maximal disks.
+pub(super) fn axis_figure(region: &Curve, axis: &MedialAxis) -> String {
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, region);
+    draw_axis(&mut fig, axis);
+    fig.title(format!(
+        "medial axis: {} nodes, {} edges",
+        axis.nodes.len(),
+        axis.edges.len()
+    ));
+    fig.render()
 }
 
 /// The axis's edges, and the maximal disks of its widest nodes.

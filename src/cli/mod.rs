@@ -2,6 +2,7 @@
 
 mod commands;
 mod demo;
+mod demo_medial;
 mod demo_profiles;
 mod medial;
 mod report;

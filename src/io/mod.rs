@@ -250,11 +250,31 @@ impl Curve {
 /// returned is the region's (`Shape::Region`); anything else is bad input naming the file.
 pub fn read_region(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
     let file = path.display().to_string();
-    if let Some((format, bytes)) = drawing_bytes(path, &file)? {
-        let profiles = drawing::profiles(&file, drawing_chains(&file, format, &bytes)?)?;
-        return regions::pick_region(&file, profiles, pick);
+    match drawing_bytes(path, &file)? {
+        Some((format, bytes)) => parse_region(&file, Some(format), &bytes, pick),
+        None => {
+            let text = std::fs::read(path).map_err(|e| unreadable(&file, e))?;
+            parse_region(&file, None, &text, pick)
+        }
     }
-    let c = read_curve_picked(path, pick)?;
+}
+
+/// [`read_region`] on a file's bytes: a drawing of `format`, or a curve file (`None`);
+/// `file` names it in errors.
+pub fn parse_region(
+    file: &str,
+    format: Option<DrawingFormat>,
+    bytes: &[u8],
+    pick: Option<usize>,
+) -> Result<Curve, CurveFileError> {
+    if let Some(format) = format {
+        let profiles = drawing::profiles(file, drawing_chains(file, format, bytes)?)?;
+        return regions::pick_region(file, profiles, pick);
+    }
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
+    })?;
+    let c = parse_curve(file, text)?;
     let fail = |(field, problem): FieldError| CurveFileError {
         file: c.file.clone(),
         field,

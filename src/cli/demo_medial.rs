@@ -1,0 +1,143 @@
+//! The medial-axis section of `curvekit demo`: the skeletons of the shipped pockets and
+//! outlines (embedded), with their figures.
+
+use super::medial::axis_figure;
+use super::{write_file, Common, Failure};
+use curvekit::io::{parse_region, Curve, DrawingFormat, Shape};
+use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// An embedded region: name, format (`None`: a curve file), file text.
+type Embedded = (&'static str, Option<DrawingFormat>, &'static str);
+
+const REGIONS: &[Embedded] = &[
+    (
+        "medial-region-pocket",
+        None,
+        include_str!("../../fixtures/region-pocket.json"),
+    ),
+    (
+        "medial-drawing-pocket",
+        Some(DrawingFormat::Svg),
+        include_str!("../../fixtures/drawing-pocket.svg"),
+    ),
+    (
+        "medial-drawing-glyph-d",
+        Some(DrawingFormat::Svg),
+        include_str!("../../fixtures/drawing-glyph-d.svg"),
+    ),
+    (
+        "medial-drawing-plate",
+        Some(DrawingFormat::Dxf),
+        include_str!("../../fixtures/drawing-plate.dxf"),
+    ),
+    (
+        "medial-periodic-cubic",
+        None,
+        include_str!("../../fixtures/periodic_cubic.json"),
+    ),
+];
+
+/// One example's results.
+pub(super) struct MedialRow {
+    name: &'static str,
+    result: Result<MedialAxis, String>,
+    svg: String,
+}
+
+/// Runs every example, writing its figure into `out`.
+pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failure> {
+    REGIONS
+        .iter()
+        .map(|&(name, format, text)| {
+            let curve: Curve =
+                parse_region(&format!("demo:{name}"), format, text.as_bytes(), None)?;
+            let opts = MedialOptions {
+                tol: common.tol,
+                ..MedialOptions::default()
+            };
+            let result = match &curve.shape {
+                Shape::Region(r) => medial_axis(r, &opts).map_err(|e| e.to_string()),
+                _ => Err("not a region".to_string()),
+            };
+            let svg = out.join(format!("{name}.svg"));
+            if let Ok(axis) = &result {
+                write_file(&svg, &axis_figure(&curve, axis))?;
+            }
+            Ok(MedialRow {
+                name,
+                result,
+                svg: svg.display().to_string(),
+            })
+        })
+        .collect()
+}
+
+fn count(a: &MedialAxis, k: NodeKind) -> usize {
+    a.nodes.iter().filter(|n| n.kind == k).count()
+}
+
+/// The table of the section.
+pub(super) fn table(rows: &[MedialRow]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\n{:<24} {:>5} {:>5} {:>9} {:>4} {:>7} {:>6} {:>9}",
+        "medial axis", "nodes", "edges", "junctions", "ends", "corners", "cycles", "complete"
+    );
+    for r in rows {
+        match &r.result {
+            Ok(a) => {
+                let _ = writeln!(
+                    s,
+                    "{:<24} {:>5} {:>5} {:>9} {:>4} {:>7} {:>6} {:>9}",
+                    r.name,
+                    a.nodes.len(),
+                    a.edges.len(),
+                    count(a, NodeKind::Junction),
+                    count(a, NodeKind::End),
+                    count(a, NodeKind::Corner),
+                    (a.edges.len() + 1).saturating_sub(a.nodes.len()),
+                    if a.complete { "yes" } else { "no" }
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(s, "{:<24} failed: {e}", r.name);
+            }
+        }
+    }
+    s
+}
+
+/// The failures of the section, one line each.
+pub(super) fn errors(rows: &[MedialRow]) -> Vec<String> {
+    rows.iter()
+        .filter_map(|r| {
+            r.result
+                .as_ref()
+                .err()
+                .map(|e| format!("{}: medial: {e}", r.name))
+        })
+        .collect()
+}
+
+/// The section of the JSON document.
+pub(super) fn json(rows: &[MedialRow]) -> Value {
+    rows.iter()
+        .map(|r| {
+            let result = match &r.result {
+                Ok(a) => json!({
+                    "nodes": a.nodes.len(),
+                    "edges": a.edges.len(),
+                    "junctions": count(a, NodeKind::Junction),
+                    "complete": a.complete,
+                    "certified": a.certified,
+                }),
+                Err(e) => json!({ "error": e }),
+            };
+            json!({ "name": r.name, "medial": result, "svg": r.svg })
+        })
+        .collect()
+}

@@ -100,6 +100,34 @@ fn an_annulus_is_one_cycle_through_a_joint() {
     assert!((turn.abs() - TAU).abs() < 1e-9, "{turn}");
 }
 
+/// A four-centre oval (arcs of radius 1 and 3.5 joined tangentially: the curvature jumps at
+/// the joints): one edge between the small arcs' centres, its radius that of the disk
+/// touching both large arcs, 3.5 − |X − (0, ±1.5)|.
+#[test]
+fn a_four_centre_oval_has_one_edge_between_its_small_centres() {
+    let t = 0.6f64.atan2(0.8);
+    let segs = vec![
+        Segment::arc([2.0, 0.0], 1.0, -t, t).unwrap(),
+        Segment::arc([0.0, -1.5], 3.5, t, PI - t).unwrap(),
+        Segment::arc([-2.0, 0.0], 1.0, PI - t, PI + t).unwrap(),
+        Segment::arc([0.0, 1.5], 3.5, PI + t, TAU - t).unwrap(),
+    ];
+    let a = axis(&Region::new(Profile::new(segs, None).unwrap(), vec![]).unwrap());
+    assert_eq!((a.nodes.len(), a.edges.len()), (2, 1), "{a:?}");
+    assert_eq!(kinds(&a, NodeKind::End), 2);
+    for n in &a.nodes {
+        assert!(
+            (n.xy[0].abs() - 2.0).abs() < 1e-9 && n.xy[1].abs() < 1e-9,
+            "{n:?}"
+        );
+        assert!((n.radius - 1.0).abs() < 1e-9);
+    }
+    for (p, r) in a.edges[0].xy.iter().zip(&a.edges[0].radius) {
+        assert!(p[1].abs() < 1e-9, "{p:?}");
+        assert!((r - (3.5 - p[0].hypot(1.5))).abs() < 1e-9, "{p:?} {r}");
+    }
+}
+
 #[test]
 fn an_l_shaped_room_has_its_reflex_corner_in_the_axis() {
     let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];

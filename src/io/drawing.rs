@@ -64,25 +64,41 @@ pub(super) fn profiles(file: &str, chains: Vec<Chain>) -> Result<Vec<Profile>, C
 /// The curve a command takes from a drawing: its one profile, or the `pick`-th (from 0).
 pub(super) fn pick_profile(
     file: &str,
-    mut profiles: Vec<Profile>,
+    profiles: Vec<Profile>,
     pick: Option<usize>,
 ) -> Result<Curve, CurveFileError> {
-    let n = profiles.len();
+    let p = pick_one(
+        file,
+        profiles,
+        pick,
+        "profiles",
+        "the file holds no usable geometry",
+    )?;
+    Ok(Curve {
+        file: file.to_string(),
+        shape: Shape::Profile(Box::new(p)),
+    })
+}
+
+/// The one item of a drawing (`what`: what they are, plural), or the `pick`-th (from 0);
+/// `none` says why there is none.
+pub(super) fn pick_one<T>(
+    file: &str,
+    mut items: Vec<T>,
+    pick: Option<usize>,
+    what: &str,
+    none: &str,
+) -> Result<T, CurveFileError> {
+    let n = items.len();
     let chosen = match (pick, n) {
-        (_, 0) => {
-            return Err(error(
-                file,
-                "document",
-                Problem::Geometry("the file holds no usable geometry".into()),
-            ))
-        }
+        (_, 0) => return Err(error(file, "document", Problem::Geometry(none.into()))),
         (None, 1) => 0,
         (None, _) => {
             return Err(error(
                 file,
                 "document",
                 Problem::Unsupported(format!(
-                    "the file holds {n} profiles: choose one with --pick N (0 to {})",
+                    "the file holds {n} {what}: choose one with --pick N (0 to {})",
                     n - 1
                 )),
             ))
@@ -93,16 +109,13 @@ pub(super) fn pick_profile(
                 file,
                 "--pick",
                 Problem::OutOfRange {
-                    rule: format!("below {n}, the number of profiles in the file"),
+                    rule: format!("below {n}, the number of {what} in the file"),
                     value: k as f64,
                 },
             ))
         }
     };
-    Ok(Curve {
-        file: file.to_string(),
-        shape: Shape::Profile(Box::new(profiles.swap_remove(chosen))),
-    })
+    Ok(items.swap_remove(chosen))
 }
 
 pub(super) fn error(file: &str, field: &str, problem: Problem) -> CurveFileError {

@@ -3,7 +3,7 @@
 //! ([`curve::Region::nested`]); a command that takes a region gets the one the file holds,
 //! or the one `--pick N` chooses.
 
-use super::drawing::error;
+use super::drawing::{error, pick_one};
 use super::{Curve, CurveFileError, Problem, Shape};
 use curve::{Profile, Region};
 
@@ -13,42 +13,12 @@ pub(super) fn pick_region(
     profiles: Vec<Profile>,
     pick: Option<usize>,
 ) -> Result<Curve, CurveFileError> {
-    let mut regions = Region::nested(profiles)
+    let regions = Region::nested(profiles)
         .map_err(|e| error(file, "document", Problem::Geometry(e.to_string())))?;
-    let n = regions.len();
-    let chosen = match (pick, n) {
-        (_, 0) => {
-            return Err(error(
-                file,
-                "document",
-                Problem::Geometry("the file holds no closed outline to make a region of".into()),
-            ))
-        }
-        (None, 1) => 0,
-        (None, _) => {
-            return Err(error(
-                file,
-                "document",
-                Problem::Unsupported(format!(
-                    "the file holds {n} regions: choose one with --pick N (0 to {})",
-                    n - 1
-                )),
-            ))
-        }
-        (Some(k), _) if k < n => k,
-        (Some(k), _) => {
-            return Err(error(
-                file,
-                "--pick",
-                Problem::OutOfRange {
-                    rule: format!("below {n}, the number of regions in the file"),
-                    value: k as f64,
-                },
-            ))
-        }
-    };
+    let none = "the file holds no closed outline to make a region of";
+    let region = pick_one(file, regions, pick, "regions", none)?;
     Ok(Curve {
         file: file.to_string(),
-        shape: Shape::Region(Box::new(regions.swap_remove(chosen))),
+        shape: Shape::Region(Box::new(region)),
     })
 }

@@ -63,6 +63,21 @@ impl Profile {
     }
 }
 
+impl Profile {
+    /// The nearest point to `x` near the parameter `u`: Newton's method on the foot-point
+    /// condition from `u`, inside the segment holding it (a local search, for a point known
+    /// to be near: a junction's third contact, followed as the disk moves).
+    pub fn nearest_near(&self, x: [f64; 2], u: f64) -> Nearest {
+        let (i, _) = self.locate(u);
+        let x = V2::from_arr(x);
+        let u = polish(self, x, u, i as f64, (i + 1) as f64);
+        Nearest {
+            distance: (self.jet_to(u, 0).p - x).norm(),
+            u,
+        }
+    }
+}
+
 /// A lower bound on the distance from `x` to the segment: to its control points' box.
 fn box_distance(s: &Segment, x: V2) -> f64 {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
@@ -131,7 +146,7 @@ fn golden(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 
 /// Newton's method on `⟨C − x, C'⟩ = 0` from `u` within `[lo, hi]`, kept only while it
 /// brings the curve nearer.
-fn polish(c: &crate::spline::SplineCurve, x: V2, mut u: f64, lo: f64, hi: f64) -> f64 {
+fn polish(c: &impl ParamCurve, x: V2, mut u: f64, lo: f64, hi: f64) -> f64 {
     let dist = |u: f64| (c.jet_to(u, 0).p - x).norm();
     for _ in 0..NEWTON_STEPS {
         let j = c.jet_to(u, 2);

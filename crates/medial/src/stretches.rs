@@ -324,7 +324,8 @@ impl Branch<'_, '_> {
         }
         // The tri-tangent disk: where the distance to the entering point equals the radius.
         let (_, k, u) = self.sites.nearest(out.xy, 0.0);
-        let third = |v: &Vertex| local_distance(self.sites, k, u, v.xy) - v.radius;
+        let entering = self.sites.boundaries[k];
+        let third = |v: &Vertex| entering.nearest_near(v.xy, u).distance - v.radius;
         // The bracket's passing end holds the disk empty only to the slack: the root may lie
         // before it, down to the stretch's last vertex.
         let (mut a, mut fa, mut best) = match third(&last) {
@@ -414,28 +415,4 @@ impl Branch<'_, '_> {
         tr[other] = u1;
         self.vertex(tr, g(u1).1.arr())
     }
-}
-
-/// The distance from `x` to boundary `k` near its parameter `u`: Newton's method on the
-/// foot-point condition inside the segment holding `u`.
-fn local_distance(sites: &Sites<'_>, k: usize, u: f64, x: [f64; 2]) -> f64 {
-    let p = sites.boundaries[k];
-    let (i, _) = p.locate(u);
-    let (lo, hi) = (i as f64, (i + 1) as f64);
-    let x = curve::V2::from_arr(x);
-    let mut u = u;
-    for _ in 0..FOOT_STEPS {
-        let j = p.jet_to(u, 2);
-        let v = j.p - x;
-        let h = j.d1.dot(j.d1) + v.dot(j.d2);
-        if h.is_nan() || h <= 0.0 {
-            break;
-        }
-        let next = (u - v.dot(j.d1) / h).clamp(lo, hi);
-        if next == u {
-            break;
-        }
-        u = next;
-    }
-    (p.jet_to(u, 0).p - x).norm()
 }

@@ -44,11 +44,17 @@ impl Profile {
             distance: f64::INFINITY,
             u: 0.0,
         };
-        for (i, s) in self.segments().iter().enumerate() {
-            if box_distance(s, x) >= best.distance {
-                continue;
+        // Nearest boxes first: once a point is found, every segment whose box is no nearer
+        // is passed over.
+        let mut order: Vec<(f64, usize)> = (0..self.segments().len())
+            .map(|i| (box_distance(self.segment_box(i), x), i))
+            .collect();
+        order.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for (below, i) in order {
+            if below >= best.distance {
+                break;
             }
-            let (d, v) = nearest_on(s, x);
+            let (d, v) = nearest_on(&self.segments()[i], x);
             if d < best.distance {
                 best = Nearest {
                     distance: d,
@@ -78,17 +84,10 @@ impl Profile {
     }
 }
 
-/// A lower bound on the distance from `x` to the segment: to its control points' box.
-fn box_distance(s: &Segment, x: V2) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in s.curve().control_points() {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let dx = (lo[0] - x.x).max(x.x - hi[0]).max(0.0);
-    let dy = (lo[1] - x.y).max(x.y - hi[1]).max(0.0);
+/// A lower bound on the distance from `x` to a segment: to the box of its control points.
+fn box_distance(b: [f64; 4], x: V2) -> f64 {
+    let dx = (b[0] - x.x).max(x.x - b[2]).max(0.0);
+    let dy = (b[1] - x.y).max(x.y - b[3]).max(0.0);
     dx.hypot(dy)
 }
 
@@ -114,6 +113,7 @@ fn nearest_on(s: &Segment, x: V2) -> (f64, f64) {
         if !(below(k.checked_sub(1)) && below((k < n).then_some(k + 1))) {
             continue;
         }
+
         let (lo, hi) = (at(k.saturating_sub(1)), at((k + 1).min(n)));
         // Golden-section search on the window first: near a centre of curvature the
         // distance is flat and Newton's step has no sign to go by; then Newton's method

@@ -62,6 +62,9 @@ pub struct Profile {
     orientation: f64,
     /// The diagonal of the box of the control points.
     size: f64,
+    /// Per segment, the box of its control points (`[lo x, lo y, hi x, hi y]`): it holds
+    /// the segment, and bounds the distance from a point to it from below.
+    boxes: Vec<[f64; 4]>,
 }
 
 impl Profile {
@@ -160,13 +163,20 @@ impl Profile {
                 kind,
             });
         }
+        let boxes = segments.iter().map(control_box).collect();
         Ok(Self {
             segments,
             closed,
             joints,
             orientation,
             size,
+            boxes,
         })
+    }
+
+    /// The box of segment `i`'s control points, `[lo x, lo y, hi x, hi y]`.
+    pub(crate) fn segment_box(&self, i: usize) -> [f64; 4] {
+        self.boxes[i]
     }
 
     /// The diagonal of the box of the segments' control points: the scale of the profile's
@@ -238,6 +248,26 @@ impl ParamCurve for Profile {
         let (i, x) = self.locate(u);
         self.segments[i].jet_in_unit(x, order)
     }
+}
+
+/// The box of a segment's control points, `[lo x, lo y, hi x, hi y]`.
+fn control_box(s: &Segment) -> [f64; 4] {
+    s.curve().control_points().iter().fold(
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, p| {
+            [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ]
+        },
+    )
 }
 
 /// The diagonal of the box of the segments' control points.

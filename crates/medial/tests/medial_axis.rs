@@ -274,7 +274,7 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
         let (p, q) = (b.nearest(x).1, b.nearest(y).1);
         (p[0] - q[0]).hypot(p[1] - q[1]) > 0.1 * size
     };
-    let room = CHORD * size * 1.01 + 1e-6 * size;
+    let room = CHORD * size + 1e-6 * size;
     let lerp =
         |a: [f64; 2], c: [f64; 2], s: f64| [a[0] + s * (c[0] - a[0]), a[1] + s * (c[1] - a[1])];
     let mut found = 0;

@@ -399,13 +399,11 @@ impl Tracer<'_> {
                                 };
                                 let (q1, q3) = (sample(0.25), sample(0.75));
                                 quarters = (Some(q1), Some(q3));
-                                let d = |q: Sample, w: f64| match q.1 {
-                                    Some(z) => dist_to_chord(z, x, y, w),
-                                    None => 0.0,
-                                };
-                                dist_to_chord(m, x, y, 0.5) > self.chord_tol
-                                    || d(q1, 0.25) > self.chord_tol
-                                    || d(q3, 0.75) > self.chord_tol
+                                let off = |q: Sample| q.1.map_or(0.0, |z| dist_to_chord(z, x, y));
+                                let sampled = [off(q1), dist_to_chord(m, x, y), off(q3)];
+                                let deviation = |w: f64| off(sample(w));
+                                measured_deviation(&deviation, sampled, self.chord_tol)
+                                    > self.chord_tol
                             }
                         }
                         _ => false,
@@ -462,18 +460,87 @@ fn polygon_crossing(a: f64, b: f64, c: &[f64], err: f64) -> f64 {
     a + (b - a) * (i as f64 + w) / n as f64
 }
 
-/// Distance of `z` from the chord `x`–`y` point at fraction `w`, or from the chord line when
-/// the mapping is far from uniform (the parameter need not be proportional to arc length).
-fn dist_to_chord(z: [f64; 2], x: [f64; 2], y: [f64; 2], w: f64) -> f64 {
+/// Distance of `z` from the chord `x`–`y` (the segment: the parameter need not be
+/// proportional to arc length, so the nearest chord point is not at the sample's fraction).
+fn dist_to_chord(z: [f64; 2], x: [f64; 2], y: [f64; 2]) -> f64 {
     let (dx, dy) = (y[0] - x[0], y[1] - x[1]);
     let len2 = dx * dx + dy * dy;
-    let _ = w;
     if len2 == 0.0 {
         return (z[0] - x[0]).hypot(z[1] - x[1]);
     }
-    // Distance to the segment.
     let s = (((z[0] - x[0]) * dx + (z[1] - x[1]) * dy) / len2).clamp(0.0, 1.0);
     (z[0] - x[0] - s * dx).hypot(z[1] - x[1] - s * dy)
+}
+
+/// Below this fraction of the tolerance at the quarter points, an arc is taken to be within
+/// it without further samples: its image is a single bump between the chord's ends (the fold
+/// and `UNEVEN` tests halve anything else), and the image of either half of the parameter
+/// holds at least 1/(1 + UNEVEN) of it, so the middle sample sits at a fraction in [0.2, 0.8]
+/// of the bump, where a parabolic bump has at least 0.64 of its peak.
+const UNSEEN_PEAK: f64 = 0.5;
+
+/// Parabolic steps toward the largest deviation of an arc from its chord, after the samples
+/// at the quarter points.
+const DEVIATION_STEPS: usize = 4;
+
+/// The steps stop when a step changes the deviation by less than this fraction of the
+/// tolerance.
+const DEVIATION_CONVERGED: f64 = 0.01;
+
+/// The largest deviation of an arc from its chord, measured rather than assumed from three
+/// samples when they come near the tolerance: `sampled` holds `deviation` at `w` = 1/4, 1/2,
+/// 3/4 (it is 0 at both ends), and successive parabolic interpolation climbs from the largest
+/// toward the maximum between its neighbours. Returns as soon as the tolerance is exceeded
+/// (the segment is halved anyway).
+fn measured_deviation(deviation: &dyn Fn(f64) -> f64, sampled: [f64; 3], tol: f64) -> f64 {
+    let k = (0..3).fold(0, |k, i| if sampled[i] > sampled[k] { i } else { k });
+    let mut best = sampled[k];
+    if best > tol || best <= UNSEEN_PEAK * tol {
+        return best;
+    }
+    // A bracket (w, f) around the largest sample: its neighbours, the chord's ends giving 0.
+    let at = |i: usize| match i {
+        0 => (0.0, 0.0),
+        4 => (1.0, 0.0),
+        i => (0.25 * i as f64, sampled[i - 1]),
+    };
+    let (mut lo, mut mid, mut hi) = (at(k), at(k + 1), at(k + 2));
+    for _ in 0..DEVIATION_STEPS {
+        // Vertex of the parabola through the three points.
+        let (d1, d2) = (mid.0 - lo.0, mid.0 - hi.0);
+        let (g1, g2) = (mid.1 - lo.1, mid.1 - hi.1);
+        let den = d1 * g2 - d2 * g1;
+        if den == 0.0 {
+            break;
+        }
+        let w = mid.0 - 0.5 * (d1 * d1 * g2 - d2 * d2 * g1) / den;
+        if !(w > lo.0 && w < hi.0) || w == mid.0 {
+            break;
+        }
+        let f = deviation(w);
+        best = best.max(f);
+        if best > tol {
+            return best;
+        }
+        let gain = (f - mid.1).abs();
+        // Keep the larger of the new point and the middle as the middle of the bracket.
+        if f >= mid.1 {
+            if w < mid.0 {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+            mid = (w, f);
+        } else if w < mid.0 {
+            lo = (w, f);
+        } else {
+            hi = (w, f);
+        }
+        if gain < DEVIATION_CONVERGED * tol {
+            break;
+        }
+    }
+    best
 }
 
 enum Class {

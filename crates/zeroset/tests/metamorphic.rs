@@ -85,12 +85,12 @@ fn same_moved(
     prop_assert_eq!(b.complete, bm.complete);
     let all: Vec<[f64; 2]> = sets.iter().flatten().copied().collect();
     let diag = diagonal(&all);
-    // The chord tolerance on both sides (each set of branches lies within it of the exact
-    // bisector, sampled at three points per segment), and the data's rounding when moved
+    // The chord tolerance (each vertex lies on the exact bisector, to rounding, which the
+    // other set of branches keeps within the tolerance), and the data's rounding when moved
     // (an ulp of the offset and of the data, in units of the scale), which moves a point
     // of the bisector at distance R from the curves by about (R / size)² times as much:
     // the normals meeting there are nearly parallel.
-    let chord = 4.0 * BisectorOptions::default().chord_tol * diag;
+    let chord = BisectorOptions::default().chord_tol * diag;
     let moved_rounding = 2.0 * f64::EPSILON * ((o[0].abs() + o[1].abs()) / s + diag);
     // (Beyond `FAR` sizes from the curves the branches head for infinity, where the normals
     // are parallel, and no perturbation bound is tight: those points are not compared.)

@@ -22,6 +22,7 @@
 
 mod affine;
 pub mod circle;
+mod clearance;
 mod crossing;
 mod error;
 pub mod exact;
@@ -38,6 +39,7 @@ pub mod shapes;
 mod spline;
 
 pub use affine::Affine;
+pub use clearance::Clearance;
 pub use error::{Error, Result};
 pub use frame::Frame;
 pub use geom::{wrap_pi, Jet, V2};

@@ -3,6 +3,7 @@
 //! included; segments whose control-point box is no nearer than a point already found are
 //! skipped. A sampled search: a feature narrower than the sampling can be missed.
 
+use crate::clearance::box_distance;
 use crate::geom::V2;
 use crate::param::ParamCurve;
 use crate::profile::Profile;
@@ -82,13 +83,6 @@ impl Profile {
             u,
         }
     }
-}
-
-/// A lower bound on the distance from `x` to a segment: to the box of its control points.
-fn box_distance(b: [f64; 4], x: V2) -> f64 {
-    let dx = (b[0] - x.x).max(x.x - b[2]).max(0.0);
-    let dy = (b[1] - x.y).max(x.y - b[3]).max(0.0);
-    dx.hypot(dy)
 }
 
 /// The nearest point of one segment: its distance and the segment's own parameter.

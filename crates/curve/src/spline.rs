@@ -237,6 +237,12 @@ impl SplineCurve {
         self.pieces.pieces()
     }
 
+    /// The homogeneous Bézier pieces `(X, Y, w)` (point-major), each with the bound on its
+    /// coefficients' error from their extraction.
+    pub(crate) fn bezier_pieces(&self) -> &Piecewise {
+        &self.pieces
+    }
+
     /// The curve's exact form in pieces, with bounds on its coefficients and its seam.
     pub fn exact_pieces(&self) -> CurvePieces {
         let pieces = homogeneous_pieces(&self.curve);

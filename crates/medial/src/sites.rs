@@ -2,12 +2,21 @@
 //! profile parameter, which side of a boundary is inside, and the distance from a point to
 //! the whole boundary.
 
-use curve::{JointKind, ParamCurve, Profile, Region};
+use curve::{Clearance, JointKind, ParamCurve, Profile, Region};
 
 /// A disk counts as empty when no boundary point is nearer its centre than its radius by
 /// more than this share of the region's size: the radius and the distances carry rounding
 /// of ~1e-16 of the coordinates, and the nearest-point search converges to ~1e-15.
 pub(crate) const EMPTY_SLACK: f64 = 1e-9;
+
+/// What a disk holds of the boundary.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Disk {
+    /// No point nearer its centre than its radius (less the slack).
+    Empty,
+    /// The point of boundary `.0` at profile parameter `.1` lies nearer.
+    Entered(usize, f64),
+}
 
 /// The boundaries of a region: 0 the outer one, 1.. the holes.
 pub(crate) struct Sites<'a> {
@@ -78,12 +87,27 @@ impl<'a> Sites<'a> {
         best
     }
 
-    /// How far the disk centred at `x` of radius `rho` is from holding a boundary point
-    /// inside: the distance to the boundary less the radius (≥ 0 for an empty disk, about 0
-    /// on the axis where the foot points are the nearest points).
-    pub(crate) fn margin(&self, x: [f64; 2], rho: f64) -> f64 {
-        let slack = EMPTY_SLACK * self.size;
-        self.nearest(x, rho - slack).0 - rho
+    /// What the disk centred at `x` of radius `rho` holds: no boundary point nearer its
+    /// centre than the radius less the slack, or one such point. Proven on the boundaries'
+    /// control hulls ([`Profile::clearance`], nearest segments first) where rounding allows,
+    /// else decided by the nearest point found.
+    pub(crate) fn disk(&self, x: [f64; 2], rho: f64) -> Disk {
+        let r = rho - EMPTY_SLACK * self.size;
+        let mut undecided = false;
+        for (k, b) in self.boundaries.iter().enumerate() {
+            match b.clearance(x, r) {
+                Clearance::Clear => {}
+                Clearance::Entered { u, .. } => return Disk::Entered(k, u),
+                Clearance::Unresolved => undecided = true,
+            }
+        }
+        if !undecided {
+            return Disk::Empty;
+        }
+        match self.nearest(x, r) {
+            (d, _, _) if d >= r => Disk::Empty,
+            (_, k, u) => Disk::Entered(k, u),
+        }
     }
 
     /// Whether `x`, the bisector point of the foot at `u` on segment `i` of boundary `b`,

@@ -3,7 +3,7 @@
 //! branch to the point where a third boundary point reaches the disk: a tri-tangent disk.
 
 use crate::candidates::Candidate;
-use crate::sites::{Sites, EMPTY_SLACK};
+use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::ParamCurve;
 
 /// Halvings that bracket where a stretch ends (from a polyline step to rounding).
@@ -116,8 +116,13 @@ impl Branch<'_, '_> {
         let mut out: Vec<Sample> = Vec::with_capacity(c.tr.len());
         let mut last_intruder: Option<(usize, usize)> = None;
         for (&tr, &xy) in c.tr.iter().zip(&c.xy) {
-            let on_axis = self.vertex(tr, xy).filter(|v| self.on_axis(v));
-            let intruder = on_axis.is_none().then(|| self.intruder(xy));
+            let (on_axis, intruder) = match self.vertex(tr, xy) {
+                Some(v) => match self.classify(&v) {
+                    Ok(()) => (Some(v), None),
+                    Err(site) => (None, Some(site)),
+                },
+                None => (None, Some(self.nearest_site(xy))),
+            };
             if let (Some(a), Some(b), Some(prev)) = (last_intruder, intruder, out.last()) {
                 if a != b {
                     let (ptr, pxy) = (prev.tr, prev.xy);
@@ -150,18 +155,37 @@ impl Branch<'_, '_> {
         let tr = [0.5 * (a.0[0] + b.0[0]), 0.5 * (a.0[1] + b.0[1])];
         let xy = [0.5 * (a.1[0] + b.1[0]), 0.5 * (a.1[1] + b.1[1])];
         let v = self.snap(tr, xy, a.0, b.0)?;
-        if self.on_axis(&v) {
-            return Some(v);
-        }
-        let m = (v.tr, v.xy, self.intruder(v.xy));
+        let site = match self.classify(&v) {
+            Ok(()) => return Some(v),
+            Err(site) => site,
+        };
+        let m = (v.tr, v.xy, site);
         self.between(a, m, depth - 1)
             .or_else(|| self.between(m, b, depth - 1))
     }
 
     /// The boundary site nearest `x`: boundary and segment.
-    fn intruder(&self, x: [f64; 2]) -> (usize, usize) {
+    fn nearest_site(&self, x: [f64; 2]) -> (usize, usize) {
         let (_, k, u) = self.sites.nearest(x, 0.0);
+        self.site_of(k, u)
+    }
+
+    /// The site holding profile parameter `u` of boundary `k`: boundary and segment.
+    fn site_of(&self, k: usize, u: f64) -> (usize, usize) {
         (k, self.sites.boundaries[k].locate(u).0)
+    }
+
+    /// Whether a vertex lies on the axis, or else the site that keeps it off: one entering
+    /// its disk, or (outside the region, or with its feet together) the nearest.
+    fn classify(&self, v: &Vertex) -> Result<(), (usize, usize)> {
+        if !self.inside(v) {
+            return Err(self.nearest_site(v.xy));
+        }
+        match self.sites.disk(v.xy, v.radius) {
+            Disk::Entered(k, u) => Err(self.site_of(k, u)),
+            Disk::Empty if self.feet_part(v) => Ok(()),
+            Disk::Empty => Err(self.nearest_site(v.xy)),
+        }
     }
 
     /// The end of the axis where the feet of `v` close in: the centre of curvature at the
@@ -267,7 +291,7 @@ impl Branch<'_, '_> {
     }
 
     fn disk_empty(&self, v: &Vertex) -> bool {
-        self.inside(v) && self.sites.margin(v.xy, v.radius) >= -EMPTY_SLACK * self.sites.size
+        self.inside(v) && self.sites.disk(v.xy, v.radius) == Disk::Empty
     }
 
     fn feet_part(&self, v: &Vertex) -> bool {

@@ -171,7 +171,7 @@ fn run_pair(
     prop_assert!(b.complete);
     check_points(&c1, &c2, &b, size).map_err(TestCaseError::fail)?;
     // The chord tolerance itself: the tracer measures each segment's deviation.
-    let tol = 1.0 * opts.chord_tol * diag;
+    let tol = opts.chord_tol * diag;
     nothing_missed(&c1, &c2, &b, center, diag, tol, false)
 }
 
@@ -186,7 +186,7 @@ fn run_self(p: &[[f64; 2]], c: Rational) -> Result<(), TestCaseError> {
         .iter()
         .all(|br| br.tr.iter().all(|q| q[0] < q[1])));
     check_points(&c, &c, &b, size).map_err(TestCaseError::fail)?;
-    let tol = 1.0 * opts.chord_tol * diag;
+    let tol = opts.chord_tol * diag;
     nothing_missed(&c, &c, &b, center, diag, tol, true)
 }
 

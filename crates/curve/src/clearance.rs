@@ -1,0 +1,320 @@
+//! Whether a disk holds a point of a profile, decided by bounds rather than samples: each
+//! segment's Bézier pieces are halved until the hull of a piece's control points is proven
+//! outside the disk, or one of its end points (a point of the curve) is proven inside.
+//!
+//! A rational Bézier piece with positive weights lies in the convex hull of its Euclidean
+//! control points, so the hull's distance from the centre bounds the piece's from below:
+//! taken as the larger of the distance to the points' box and the least extent of the points
+//! towards the centre (a slab bound, which tightens quadratically as pieces shrink about a
+//! point where the circle touches the curve). Every comparison allows for the rounding of the
+//! coefficients and of the arithmetic, so a verdict holds for the exact curve.
+
+use crate::geom::V2;
+use crate::param::ParamCurve;
+use crate::profile::Profile;
+use crate::segment::Segment;
+use bspline::Piecewise;
+
+/// Halvings of one Bézier piece before it is left undecided: a piece 2^-40 of its span is
+/// far below any slack a caller may leave between the disk and the curve.
+const MAX_DEPTH: usize = 40;
+
+/// Pieces tested in one call before the answer is left undecided: a curve hugging the
+/// circle over a long stretch (an arc about the centre) would otherwise be halved into
+/// ever more pieces, each still within the slack of the circle.
+const MAX_PIECES: usize = 4096;
+
+/// Units of rounding allowed per comparison: the Euclidean points (a division), the bounds
+/// (a few products and sums) and one more per halving of the piece.
+const ROUNDING_ULPS: f64 = 16.0;
+
+/// What a disk holds of a profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Clearance {
+    /// No point of the profile lies inside the disk (its open interior): proven.
+    Clear,
+    /// The point of the profile at parameter `u`, at `distance` from the centre, lies inside
+    /// the disk by more than the rounding of its computation.
+    Entered {
+        /// Profile parameter of the point.
+        u: f64,
+        /// Its distance from the centre.
+        distance: f64,
+    },
+    /// Neither proven: some piece of the profile lies within rounding of the circle (or
+    /// carries a weight that is not positive), and none was found inside.
+    Unresolved,
+}
+
+/// A Bézier piece under test: its homogeneous control points `(X, Y, w)`, its interval of
+/// the segment's parameter, and how many halvings made it.
+struct Piece {
+    coefs: Vec<f64>,
+    lo: f64,
+    hi: f64,
+    depth: usize,
+}
+
+impl Profile {
+    /// Whether the disk of centre `x` and radius `r` holds a point of the profile.
+    ///
+    /// ```
+    /// use curve::{Clearance, Profile, Segment};
+    /// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+    /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+    /// let box_ = Profile::new(sides, None).unwrap();
+    /// assert_eq!(box_.clearance([1.0, 1.0], 0.999), Clearance::Clear);
+    /// assert!(matches!(box_.clearance([1.0, 1.0], 1.001), Clearance::Entered { .. }));
+    /// ```
+    pub fn clearance(&self, x: [f64; 2], r: f64) -> Clearance {
+        let x = V2::from_arr(x);
+        let mut unresolved = false;
+        let mut stack: Vec<Piece> = Vec::new();
+        let mut tested = 0;
+        // Nearest boxes first: the point found inside is then likely the deepest.
+        let near = 1.0 - ROUNDING_ULPS * f64::EPSILON;
+        let mut order: Vec<(f64, usize)> = (0..self.segments().len())
+            .map(|i| (box_distance(self.segment_box(i), x) * near, i))
+            .filter(|&(d, _)| d < r)
+            .collect();
+        order.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for (_, i) in order {
+            let seg = &self.segments()[i];
+            if let Some((c, radius)) = seg.circle() {
+                // An arc is decided on its circle, where its hull would be halved for long:
+                // a disk about its centre stays within the slack of the whole arc.
+                if arc_distance(seg, V2::from_arr(c), radius, x) >= r {
+                    continue;
+                }
+            }
+            let pieces = seg.curve().bezier_pieces();
+            let dim = pieces.dim();
+            let given = seg.curve().curve().coefficient_error();
+            for k in 0..pieces.pieces() {
+                let (lo, hi) = pieces.piece_span(k);
+                stack.push(Piece {
+                    coefs: pieces.piece(k).to_vec(),
+                    lo,
+                    hi,
+                    depth: 0,
+                });
+                let err = coefficient_error(pieces, k, given);
+                while let Some(piece) = stack.pop() {
+                    tested += 1;
+                    if tested > MAX_PIECES {
+                        return Clearance::Unresolved;
+                    }
+                    match test_piece(&piece, dim, x, r, err) {
+                        Verdict::Outside => {}
+                        Verdict::Inside { at_end, distance } => {
+                            let v = if at_end { piece.hi } else { piece.lo };
+                            return Clearance::Entered {
+                                u: self.profile_param(i, v),
+                                distance,
+                            };
+                        }
+                        Verdict::Split if piece.depth < MAX_DEPTH => {
+                            let (a, b) = halve(&piece, dim);
+                            stack.push(b);
+                            stack.push(a);
+                        }
+                        Verdict::Split | Verdict::Undecided => unresolved = true,
+                    }
+                }
+            }
+        }
+        if unresolved {
+            Clearance::Unresolved
+        } else {
+            Clearance::Clear
+        }
+    }
+}
+
+enum Verdict {
+    Outside,
+    Inside {
+        at_end: bool,
+        distance: f64,
+    },
+    Split,
+    /// Within rounding of the circle.
+    Undecided,
+}
+
+/// Bounds on the error of piece `k`'s homogeneous coefficients: of the points' `X, Y` (with
+/// `given` added: the curve's own, the rounding of `w·x`) and of the weights.
+fn coefficient_error(pieces: &Piecewise, k: usize, given: f64) -> Errors {
+    let e = pieces.errors(k);
+    Errors {
+        point: e[0].max(e[1]) + given,
+        weight: e[2],
+    }
+}
+
+/// Bounds on the error of a piece's homogeneous coefficients.
+#[derive(Clone, Copy)]
+struct Errors {
+    point: f64,
+    weight: f64,
+}
+
+/// The piece's verdict against the disk of centre `x` and radius `r`; `err` bounds the error
+/// of its homogeneous coefficients.
+fn test_piece(piece: &Piece, dim: usize, x: V2, r: f64, err: Errors) -> Verdict {
+    let n = piece.coefs.len() / dim;
+    let mut pts = Vec::with_capacity(n);
+    let (mut w_min, mut mag) = (f64::INFINITY, x.x.abs().max(x.y.abs()));
+    for c in piece.coefs.chunks_exact(dim) {
+        let w = c[2];
+        w_min = w_min.min(w);
+        let p = V2::new(c[0] / w, c[1] / w);
+        mag = mag.max(p.x.abs()).max(p.y.abs());
+        pts.push(p);
+    }
+    if w_min.is_nan() || w_min <= 2.0 * err.weight {
+        // A weight that may not be positive: the hull says nothing.
+        return Verdict::Split;
+    }
+    // What the points may be off by: `X / w` moves by (δX + |X / w| δw) / w for errors δX,
+    // δw ≤ w / 2 of its coefficients (to first order; twice that covers the rest), and the
+    // arithmetic's rounding.
+    let room = 4.0 * (err.point + mag * err.weight) / w_min
+        + (ROUNDING_ULPS + piece.depth as f64) * f64::EPSILON * mag;
+    // The end points lie on the curve: one inside the disk, past all rounding, decides.
+    for (at_end, p) in [(false, pts[0]), (true, pts[n - 1])] {
+        let d = (p - x).norm();
+        if d + room < r {
+            return Verdict::Inside {
+                at_end,
+                distance: d,
+            };
+        }
+    }
+    let (mut lo, mut hi) = (
+        V2::new(f64::INFINITY, f64::INFINITY),
+        -V2::new(f64::INFINITY, f64::INFINITY),
+    );
+    let mut centroid = V2::new(0.0, 0.0);
+    for p in &pts {
+        lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
+        centroid = centroid + *p;
+    }
+    let boxed = box_distance([lo.x, lo.y, hi.x, hi.y], x);
+    // The slab bound: every hull point lies at least this far along the direction from the
+    // points' centroid to the centre.
+    let towards = x - centroid * (1.0 / n as f64);
+    let len = towards.norm();
+    let slab = if len > 0.0 {
+        let d = towards * (1.0 / len);
+        pts.iter()
+            .map(|p| (x - *p).dot(d))
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        0.0
+    };
+    if boxed.max(slab) - room >= r {
+        return Verdict::Outside;
+    }
+    // A piece straight to within rounding whose chord does not pass clearly inside the disk
+    // is where the circle touches the curve to within rounding: halving it again would only
+    // make more such pieces.
+    let chord = pts[n - 1] - pts[0];
+    let len = chord.norm();
+    if len > 0.0 {
+        let sag = pts
+            .iter()
+            .map(|p| chord.cross(*p - pts[0]).abs() / len)
+            .fold(0.0, f64::max);
+        let along = ((x - pts[0]).dot(chord) / (len * len)).clamp(0.0, 1.0);
+        let to_chord = (pts[0] + chord * along - x).norm();
+        if sag <= room && to_chord + sag + room >= r {
+            return Verdict::Undecided;
+        }
+    }
+    Verdict::Split
+}
+
+/// The two halves of a piece by de Casteljau's algorithm on its homogeneous coefficients.
+fn halve(piece: &Piece, dim: usize) -> (Piece, Piece) {
+    let n = piece.coefs.len() / dim;
+    let mut work = piece.coefs.clone();
+    let mut left = Vec::with_capacity(work.len());
+    let mut right = vec![0.0; work.len()];
+    left.extend_from_slice(&work[..dim]);
+    right[(n - 1) * dim..].copy_from_slice(&work[(n - 1) * dim..]);
+    for level in 1..n {
+        for j in 0..n - level {
+            for c in 0..dim {
+                work[j * dim + c] = 0.5 * (work[j * dim + c] + work[(j + 1) * dim + c]);
+            }
+        }
+        left.extend_from_slice(&work[..dim]);
+        let k = n - 1 - level;
+        right[k * dim..(k + 1) * dim].copy_from_slice(&work[k * dim..(k + 1) * dim]);
+    }
+    let mid = 0.5 * (piece.lo + piece.hi);
+    let depth = piece.depth + 1;
+    (
+        Piece {
+            coefs: left,
+            lo: piece.lo,
+            hi: mid,
+            depth,
+        },
+        Piece {
+            coefs: right,
+            lo: mid,
+            hi: piece.hi,
+            depth,
+        },
+    )
+}
+
+/// Units of rounding allowed between an arc's rational form and its circle: its control
+/// points and weights are rounded from the circle's centre, radius and angles.
+const ARC_ROUNDING_ULPS: f64 = 64.0;
+
+/// A lower bound on the distance from `x` to the arc `seg` of the circle about `c`: to its
+/// nearer end where the circle's nearest point lies clearly off the arc (on the other side
+/// of its chord than its middle), else to the circle; less the rounding of the computation
+/// and of the arc's form.
+fn arc_distance(seg: &Segment, c: V2, radius: f64, x: V2) -> f64 {
+    let (a, b) = (seg.start(), seg.end());
+    let mag = x.x.abs().max(x.y.abs()) + c.x.abs().max(c.y.abs()) + radius;
+    let room =
+        ARC_ROUNDING_ULPS * f64::EPSILON * mag + 4.0 * seg.curve().curve().coefficient_error();
+    let v = x - c;
+    let len = v.norm();
+    let to_circle = (len - radius).abs();
+    let to_ends = (x - a).norm().min((x - b).norm());
+    let (lo, hi) = seg.curve().domain();
+    let m = seg.curve().jet_to(0.5 * (lo + hi), 0).p;
+    let chord = b - a;
+    // The side of the chord of the circle's nearest point, and of the arc's middle, in
+    // units of the chord length times the radius (the rounding is ~mag of those).
+    let side = |q: V2| chord.cross(q - a);
+    let tol = 8.0 * f64::EPSILON * mag * (chord.norm() + radius);
+    // The circle's distance bounds the arc's everywhere; where the circle's nearest point
+    // lies clearly off the arc, the arc's nearest point is an end.
+    let bound = if len <= room || chord.norm() <= room {
+        to_circle // at the centre, or a full circle
+    } else {
+        let q = c + v * (radius / len);
+        let (sq, sm) = (side(q), side(m));
+        if sq * sm < 0.0 && sq.abs() > tol && sm.abs() > tol {
+            to_ends
+        } else {
+            to_circle
+        }
+    };
+    bound - room
+}
+
+/// A lower bound on the distance from `x` to a box `[lo x, lo y, hi x, hi y]`.
+pub(crate) fn box_distance(b: [f64; 4], x: V2) -> f64 {
+    let dx = (b[0] - x.x).max(x.x - b[2]).max(0.0);
+    let dy = (b[1] - x.y).max(x.y - b[3]).max(0.0);
+    dx.hypot(dy)
+}

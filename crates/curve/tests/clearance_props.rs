@@ -1,0 +1,153 @@
+//! `Profile::clearance` against an independent distance: dense samples of every segment,
+//! refined by golden-section search about the least. A disk a little smaller than the
+//! distance must be clear, a little larger entered (at a point that really is inside), on
+//! random profiles of lines, arcs and rational cubic Béziers, scaled and moved far from the
+//! origin; where rounding leaves it undecided the answer must say so, never be wrong.
+
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
+
+use curve::{Clearance, ParamCurve, Profile, Segment, SegmentKind, SplineCurve};
+use proptest::prelude::*;
+
+/// Samples per segment of the oracle.
+const SAMPLES: usize = 4000;
+
+/// The distance from `x` to the profile: the least sample, then golden-section search on
+/// the two sample steps about it, segment by segment.
+fn oracle_distance(p: &Profile, x: [f64; 2]) -> f64 {
+    let mut best = f64::INFINITY;
+    for s in p.segments() {
+        let c = s.curve();
+        let (a, b) = c.domain();
+        let d = |u: f64| {
+            let q = c.jet_to(u, 0).p;
+            (q.x - x[0]).hypot(q.y - x[1])
+        };
+        let at = |k: usize| a + (b - a) * k as f64 / SAMPLES as f64;
+        let k = (0..=SAMPLES)
+            .min_by(|&i, &j| d(at(i)).total_cmp(&d(at(j))))
+            .unwrap();
+        let (mut lo, mut hi) = (at(k.saturating_sub(1)), at((k + 1).min(SAMPLES)));
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..80 {
+            let (l, r) = (hi - g * (hi - lo), lo + g * (hi - lo));
+            if d(l) < d(r) {
+                hi = r;
+            } else {
+                lo = l;
+            }
+        }
+        best = best.min(d(at(k))).min(d(0.5 * (lo + hi)));
+    }
+    best
+}
+
+/// A closed profile round a star: at each of `n` joints a line, an arc bulging outwards or a
+/// rational cubic Bézier, scaled by `s` and moved by `o`.
+/// (`None` where the bends make it cross itself.)
+fn profile(kinds: &[u8], bend: &[f64], w: &[f64], s: f64, o: [f64; 2]) -> Option<Profile> {
+    let n = kinds.len();
+    let at = |i: usize| {
+        let a = std::f64::consts::TAU * i as f64 / n as f64;
+        let r = 1.0 + 0.4 * bend[i % bend.len()].abs();
+        [o[0] + s * r * a.cos(), o[1] + s * r * a.sin()]
+    };
+    let segs = (0..n)
+        .map(|i| {
+            let (p, q) = (at(i), at((i + 1) % n));
+            let d = [q[0] - p[0], q[1] - p[1]];
+            let nrm = [d[1], -d[0]]; // outwards for a counterclockwise star
+            let b = bend[i];
+            match kinds[i] % 3 {
+                0 => Segment::line(p, q).unwrap(),
+                1 => {
+                    // An arc through p and q bulging by |b|/4 of the chord.
+                    let h = 0.05 + 0.2 * b.abs();
+                    let chord = d[0].hypot(d[1]);
+                    let sag = h * chord;
+                    let radius = (0.25 * chord * chord + sag * sag) / (2.0 * sag);
+                    let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
+                    let back = (radius - sag) / chord;
+                    let c = [mid[0] - nrm[0] * back, mid[1] - nrm[1] * back];
+                    let a0 = (p[1] - c[1]).atan2(p[0] - c[0]);
+                    let mut a1 = (q[1] - c[1]).atan2(q[0] - c[0]);
+                    if a1 > a0 {
+                        a1 -= std::f64::consts::TAU;
+                    }
+                    Segment::arc(c, radius, a0, a1).unwrap()
+                }
+                _ => {
+                    let pts = [
+                        p,
+                        [
+                            p[0] + d[0] / 3.0 + b * nrm[0],
+                            p[1] + d[1] / 3.0 + b * nrm[1],
+                        ],
+                        [
+                            p[0] + 2.0 * d[0] / 3.0 - b * nrm[0],
+                            p[1] + 2.0 * d[1] / 3.0 - b * nrm[1],
+                        ],
+                        q,
+                    ];
+                    let c =
+                        SplineCurve::clamped(3, &pts, Some(&[1.0, w[0], w[1], 1.0]), None).unwrap();
+                    Segment::spline(SegmentKind::Bezier, c).unwrap()
+                }
+            }
+        })
+        .collect();
+    Profile::new(segs, None).ok()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn clearance_agrees_with_dense_distances(
+        kinds in prop::collection::vec(0u8..3, 4..9),
+        bend in prop::collection::vec(-0.4..0.4f64, 8),
+        w in prop::collection::vec(0.3..3.0f64, 2),
+        scale in prop_oneof![Just(1.0), Just(1e-6), Just(3e5), (-40i32..40).prop_map(|k| 2f64.powi(k))],
+        far in prop_oneof![Just(0.0), Just(1e3), Just(1e6), Just(1e9)],
+        xs in prop::collection::vec((-1.8..1.8f64, -1.8..1.8f64), 12),
+    ) {
+        let o = [far * scale, -0.5 * far * scale];
+        let p = profile(&kinds, &bend, &w, scale, o);
+        prop_assume!(p.is_some());
+        let p = p.unwrap();
+        let size = 2.8 * scale;
+        // What rounding of the coordinates allows: beyond it no verdict may be wrong, within
+        // it the answer may be undecided.
+        let rounding = 1e-13 * (size + far * scale);
+        let gap = 1e-9 * size;
+        let mut decided = 0;
+        for &(a, b) in &xs {
+            let x = [o[0] + scale * a, o[1] + scale * b];
+            let d = oracle_distance(&p, x);
+            prop_assume!(d > 1e-3 * size);
+            // (The oracle's own error: its golden search stops at rounding, ~1e-16 of the size.)
+            match p.clearance(x, d - gap - rounding) {
+                Clearance::Clear => decided += 1,
+                Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
+                Clearance::Entered { u, distance } => {
+                    return Err(TestCaseError::fail(format!(
+                        "entered at u {u} ({distance}) below the distance {d}")));
+                }
+            }
+            match p.clearance(x, d + gap + rounding) {
+                Clearance::Entered { u, distance } => {
+                    decided += 1;
+                    let q = p.jet_to(u, 0).p;
+                    let actual = (q.x - x[0]).hypot(q.y - x[1]);
+                    prop_assert!((actual - distance).abs() <= rounding + 1e-12 * size);
+                    prop_assert!(actual < d + gap + rounding);
+                }
+                Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
+                Clearance::Clear => {
+                    return Err(TestCaseError::fail(format!("clear above the distance {d}")));
+                }
+            }
+        }
+        prop_assert!(decided > 0 || gap < 1e3 * rounding);
+    }
+}

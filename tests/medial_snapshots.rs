@@ -119,3 +119,86 @@ fn every_vertex_is_at_its_radius_from_the_boundary() {
         }
     }
 }
+
+/// Every `end` node of every shipped shape's axis is a centre of curvature at a curvature
+/// extremum: among dense samples of the boundaries (4,000 a segment), the centre of curvature
+/// nearest the node is within 1e-6 of the size of it, the radius of curvature there is the
+/// node's radius, and the curvature's rate changes sign within three samples (or vanishes: an
+/// arc, whose centre is every point's).
+#[test]
+fn every_end_is_a_centre_of_curvature_at_an_extremum() {
+    use curvekit::curve::ParamCurve;
+    for name in [
+        "region-pocket.json",
+        "profile-rounded-slot.json",
+        "profile-bracket.json",
+        "drawing-pocket.svg",
+        "drawing-glyph-d.svg",
+        "drawing-bracket.dxf",
+        "drawing-plate.dxf",
+    ] {
+        let path = std::path::PathBuf::from(fixture(name));
+        let curve = curvekit::io::read_region(&path, None).unwrap();
+        let curvekit::io::Shape::Region(region) = &curve.shape else {
+            panic!("{name}: no region");
+        };
+        // Per sample: centre of curvature, radius of curvature, curvature rate, and the
+        // index of the boundary and of the segment (rates compare within one segment).
+        let mut samples = Vec::new();
+        let mut size = 0.0f64;
+        for (k, b) in std::iter::once(region.outer())
+            .chain(region.holes())
+            .enumerate()
+        {
+            size = size.max(b.size());
+            for i in 0..b.segments().len() {
+                for s in 0..=4000 {
+                    let j = b.jet_on(i, i as f64 + s as f64 / 4000.0, 3);
+                    let kappa = j.curvature();
+                    if kappa.abs() < 1e-12 {
+                        continue;
+                    }
+                    let c = j.p + j.d1.perp().unit() * (1.0 / kappa);
+                    samples.push((c.arr(), 1.0 / kappa.abs(), j.curvature_rate(), (k, i, s)));
+                }
+            }
+        }
+        let out = curvekit_json(&["medial", &fixture(name)]);
+        for node in out["nodes"].as_array().unwrap() {
+            if node["kind"] != "end" {
+                continue;
+            }
+            let p = [
+                node["xy"][0].as_f64().unwrap(),
+                node["xy"][1].as_f64().unwrap(),
+            ];
+            let r = node["radius"].as_f64().unwrap();
+            let (at, (c, rc, rate, id)) = samples
+                .iter()
+                .enumerate()
+                .min_by(|a, b| {
+                    let d = |c: [f64; 2]| (c[0] - p[0]).hypot(c[1] - p[1]);
+                    d(a.1 .0).total_cmp(&d(b.1 .0))
+                })
+                .unwrap();
+            let off = (c[0] - p[0]).hypot(c[1] - p[1]);
+            assert!(
+                off <= 1e-6 * size,
+                "{name}: end {p:?} is {off} from the evolute"
+            );
+            assert!(
+                (rc - r).abs() <= 1e-6 * size,
+                "{name}: end {p:?} radius {r}, {rc}"
+            );
+            let same = |j: usize| samples.get(j).filter(|s| s.3 .0 == id.0 && s.3 .1 == id.1);
+            let turns = (at.saturating_sub(3)..at + 3).any(|j| match (same(j), same(j + 1)) {
+                (Some(a), Some(b)) => a.2.signum() != b.2.signum(),
+                _ => false,
+            });
+            assert!(
+                turns || rate.abs() <= 1e-9 / (rc * rc),
+                "{name}: end {p:?}: the curvature's rate {rate} does not change sign near it"
+            );
+        }
+    }
+}

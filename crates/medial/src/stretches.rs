@@ -6,8 +6,10 @@ use crate::candidates::Candidate;
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::ParamCurve;
 
-/// Halvings that bracket where a stretch ends (from a polyline step to rounding).
-const BRACKET_STEPS: usize = 60;
+/// Halvings that bracket where a stretch ends: to 2^-32 of a polyline step, which tells the
+/// site entering beyond it; the tri-tangent disk is then solved for on that site (halving on
+/// to rounding would test disks within rounding of touching it, which bounds cannot decide).
+const BRACKET_STEPS: usize = 32;
 
 /// Secant steps that solve for the tri-tangent disk inside the bracket.
 const SECANT_STEPS: usize = 60;
@@ -339,11 +341,21 @@ impl Branch<'_, '_> {
                 }
             }
         }
+        let feet_meet_beyond = self
+            .vertex(beyond, beyond_xy)
+            .is_some_and(|v| !self.feet_part(&v));
         let Some(out) = outside else {
+            // No exact point beyond: where the branch runs into its feet's meeting (a
+            // self-bisector's end on its diagonal), the axis ends at the centre of curvature.
+            if feet_meet_beyond && lo > 0.0 {
+                return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
+            }
             return (lo > 0.0).then_some(last);
         };
-        if self.disk_empty(&out) {
-            // The feet met: the axis ends at the centre of curvature between them.
+        if !self.feet_part(&out) || self.disk_empty(&out) {
+            // The feet met: the axis ends at the centre of curvature between them. (Beside
+            // that centre the boundary may reach into the disk by more than the slack: the
+            // circle osculates it there, so the feet, not the disk, decide.)
             return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
         }
         // The tri-tangent disk: where the distance to the entering point equals the radius.
@@ -434,6 +446,14 @@ impl Branch<'_, '_> {
         let span = (hi - lo).max(f64::EPSILON);
         if !(u1 >= lo - span && u1 <= hi + span) {
             return None;
+        }
+        // Two feet on one segment keep their order: beside the feet's meeting the secant
+        // may find the trivial solution, both feet at one point, or pass it.
+        if c.boundary[0] == c.boundary[1] && c.segment[0] == c.segment[1] {
+            let before = p[other] - p[keep];
+            if (u1 - guess[keep]) * before <= 0.0 {
+                return None;
+            }
         }
         let mut tr = guess;
         tr[other] = u1;

@@ -127,7 +127,6 @@ fn every_vertex_is_at_its_radius_from_the_boundary() {
 /// arc, whose centre is every point's).
 #[test]
 fn every_end_is_a_centre_of_curvature_at_an_extremum() {
-    use curvekit::curve::ParamCurve;
     for name in [
         "region-pocket.json",
         "profile-rounded-slot.json",

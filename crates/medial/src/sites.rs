@@ -14,8 +14,9 @@ pub(crate) const EMPTY_SLACK: f64 = 1e-9;
 pub(crate) enum Disk {
     /// No point nearer its centre than its radius (less the slack).
     Empty,
-    /// The point of boundary `.0` at profile parameter `.1` lies nearer.
-    Entered(usize, f64),
+    /// The point of boundary `.0` at profile parameter `.1` lies nearer, by `.2` (at least
+    /// the slack).
+    Entered(usize, f64, f64),
 }
 
 /// The boundaries of a region: 0 the outer one, 1.. the holes.
@@ -97,7 +98,7 @@ impl<'a> Sites<'a> {
         for (k, b) in self.boundaries.iter().enumerate() {
             match b.clearance(x, r) {
                 Clearance::Clear => {}
-                Clearance::Entered { u, .. } => return Disk::Entered(k, u),
+                Clearance::Entered { u, distance } => return Disk::Entered(k, u, rho - distance),
                 Clearance::Unresolved => undecided = true,
             }
         }
@@ -106,7 +107,7 @@ impl<'a> Sites<'a> {
         }
         match self.nearest(x, r) {
             (d, _, _) if d >= r => Disk::Empty,
-            (_, k, u) => Disk::Entered(k, u),
+            (d, k, u) => Disk::Entered(k, u, rho - d),
         }
     }
 

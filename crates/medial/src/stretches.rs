@@ -18,6 +18,14 @@ const SECANT_STEPS: usize = 60;
 /// it (down to 2^-20 of the step).
 const HIDDEN_DEPTH: usize = 20;
 
+/// What the site entering a disk is taken to be: boundary and segment, and how deep it
+/// reaches into the disk (0 where no site enters: the nearest site then).
+type Intruder = ((usize, usize), f64);
+
+/// How much longer than the chord between two of its points a stretch of a candidate
+/// branch may be, when the search for a hidden stretch bounds what lies between them.
+const LENGTH_SLACK: f64 = 1.5;
+
 /// Feet closer than this share of the radius are one point: where they meet the axis ends,
 /// at a centre of curvature (bisector points whose feet close in on a smooth joint, where the
 /// bisector function vanishes to high order, are no part of the axis either).
@@ -116,17 +124,17 @@ impl Branch<'_, '_> {
     fn samples(&self) -> Vec<Sample> {
         let c = self.c;
         let mut out: Vec<Sample> = Vec::with_capacity(c.tr.len());
-        let mut last_intruder: Option<(usize, usize)> = None;
+        let mut last_intruder: Option<Intruder> = None;
         for (&tr, &xy) in c.tr.iter().zip(&c.xy) {
             let (on_axis, intruder) = match self.vertex(tr, xy) {
                 Some(v) => match self.classify(&v) {
                     Ok(()) => (Some(v), None),
                     Err(site) => (None, Some(site)),
                 },
-                None => (None, Some(self.nearest_site(xy))),
+                None => (None, Some((self.nearest_site(xy), 0.0))),
             };
             if let (Some(a), Some(b), Some(prev)) = (last_intruder, intruder, out.last()) {
-                if a != b {
+                if a.0 != b.0 {
                     let (ptr, pxy) = (prev.tr, prev.xy);
                     if let Some(v) = self.between((ptr, pxy, a), (tr, xy, b), HIDDEN_DEPTH) {
                         out.push(Sample {
@@ -147,11 +155,18 @@ impl Branch<'_, '_> {
     /// and the site entering their disks), by halving where the entering sites differ.
     fn between(
         &self,
-        a: ([f64; 2], [f64; 2], (usize, usize)),
-        b: ([f64; 2], [f64; 2], (usize, usize)),
+        a: ([f64; 2], [f64; 2], Intruder),
+        b: ([f64; 2], [f64; 2], Intruder),
         depth: usize,
     ) -> Option<Vertex> {
-        if depth == 0 || a.2 == b.2 {
+        if depth == 0 || a.2 .0 == b.2 .0 {
+            return None;
+        }
+        // How far the boundary is inside the disk less its radius changes at most twice as
+        // fast as the point moves: where the two ends are too deep for their distance, no
+        // disk between them is empty.
+        let apart = (b.1[0] - a.1[0]).hypot(b.1[1] - a.1[1]);
+        if 2.0 * LENGTH_SLACK * apart < a.2 .1 + b.2 .1 {
             return None;
         }
         let tr = [0.5 * (a.0[0] + b.0[0]), 0.5 * (a.0[1] + b.0[1])];
@@ -178,15 +193,13 @@ impl Branch<'_, '_> {
     }
 
     /// Whether a vertex lies on the axis, or else the site that keeps it off: one entering
-    /// its disk, or (outside the region, or with its feet together) the nearest.
-    fn classify(&self, v: &Vertex) -> Result<(), (usize, usize)> {
-        if !self.inside(v) {
-            return Err(self.nearest_site(v.xy));
-        }
+    /// its disk, with how deep, or (an empty disk outside the region, or with its feet
+    /// together) the nearest, at depth 0.
+    fn classify(&self, v: &Vertex) -> Result<(), Intruder> {
         match self.sites.disk(v.xy, v.radius) {
-            Disk::Entered(k, u) => Err(self.site_of(k, u)),
-            Disk::Empty if self.feet_part(v) => Ok(()),
-            Disk::Empty => Err(self.nearest_site(v.xy)),
+            Disk::Entered(k, u, depth) => Err((self.site_of(k, u), depth)),
+            Disk::Empty if self.inside(v) && self.feet_part(v) => Ok(()),
+            Disk::Empty => Err((self.nearest_site(v.xy), 0.0)),
         }
     }
 

@@ -1,0 +1,77 @@
+//! The medial axis (issue 19), one core. Targets: the periodic cubic of the issue at chord
+//! 1e-3 in 1 ms; the 10×6 rounded-rectangle pocket (corner radius 1) with a round island of
+//! radius 1 in 0.14 ms; a profile of 100 segments in 30 ms, growing about linearly with the
+//! number of segments (chains of 12, 25 and 50 cubic Béziers with corners show the growth);
+//! the smooth 250-point periodic cubic in 50 ms (too slow yet to sit in a benchmark: it is
+//! timed with `curvekit medial --time`, see README). Each shape is measured warm (the region
+//! built) and the first two cold (read from the file's bytes, then the axis).
+#![allow(missing_docs, clippy::unwrap_used)]
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use curve::Region;
+use curvekit::io::{parse_region, Shape};
+use curvekit::medial::{medial_axis, MedialOptions};
+use std::time::Duration;
+
+mod common;
+use common::bezier_chain;
+
+const PERIODIC_CUBIC: &str = r#"{"kind":"bspline","degree":3,"periodic":true,
+    "points":[[0,0],[2,-1],[4,0],[4,2],[2,1.2],[0,2]]}"#;
+
+const POCKET: &str = r#"{"kind":"region",
+ "outer":{"kind":"profile","segments":[
+  {"kind":"line","from":[1,0],"to":[9,0]},
+  {"kind":"arc","center":[9,1],"r":1,"start":-1.5707963267948966,"end":0},
+  {"kind":"line","from":[10,1],"to":[10,5]},
+  {"kind":"arc","center":[9,5],"r":1,"start":0,"end":1.5707963267948966},
+  {"kind":"line","from":[9,6],"to":[1,6]},
+  {"kind":"arc","center":[1,5],"r":1,"start":1.5707963267948966,"end":3.141592653589793},
+  {"kind":"line","from":[0,5],"to":[0,1]},
+  {"kind":"arc","center":[1,1],"r":1,"start":3.141592653589793,"end":4.71238898038469}]},
+ "holes":[{"kind":"circle","center":[6.5,3],"r":1}]}"#;
+
+fn region_of(text: &str) -> Region {
+    match parse_region("bench", None, text.as_bytes(), None)
+        .unwrap()
+        .shape
+    {
+        Shape::Region(r) => *r,
+        _ => unreachable!(),
+    }
+}
+
+fn medial(c: &mut Criterion) {
+    let opts = MedialOptions::default();
+    for (name, text) in [
+        ("medial_periodic_cubic", PERIODIC_CUBIC),
+        ("medial_pocket_island", POCKET),
+    ] {
+        let region = region_of(text);
+        let axis = medial_axis(&region, &opts).unwrap();
+        eprintln!(
+            "{name}: {} nodes, {} edges",
+            axis.nodes.len(),
+            axis.edges.len()
+        );
+        c.bench_function(name, |b| {
+            b.iter(|| medial_axis(black_box(&region), &opts).unwrap())
+        });
+        c.bench_function(&format!("{name}_cold"), |b| {
+            b.iter(|| medial_axis(&region_of(black_box(text)), &opts).unwrap())
+        });
+    }
+    for n in [12, 25, 50] {
+        let region = Region::new(bezier_chain(n), Vec::new()).unwrap();
+        c.bench_function(&format!("medial_bezier_chain_{n}"), |b| {
+            b.iter(|| medial_axis(black_box(&region), &opts).unwrap())
+        });
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(10).measurement_time(Duration::from_secs(3)).warm_up_time(Duration::from_secs(1));
+    targets = medial
+}
+criterion_main!(benches);

@@ -6,9 +6,8 @@
 //! that the time per pair can be compared.
 #![allow(missing_docs, clippy::unwrap_used)]
 
-use antipodal::{antipodal, profile_antipodal, Options, Profile, Segment, SplineCurve};
+use antipodal::{antipodal, profile_antipodal, Options, Profile, SplineCurve};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use curve::{SegmentKind, V2};
 use curvekit::io::{read_curve_picked, Shape};
 use std::path::Path;
 use std::time::Duration;

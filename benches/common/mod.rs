@@ -5,7 +5,7 @@ use antipodal::{Profile, Segment, SplineCurve};
 use curve::{SegmentKind, V2};
 
 /// Deterministic pseudo-random numbers in [0, 1).
-pub fn rng(seed: u64) -> impl FnMut() -> f64 {
+pub(crate) fn rng(seed: u64) -> impl FnMut() -> f64 {
     let mut x = seed;
     move || {
         x = x
@@ -16,7 +16,7 @@ pub fn rng(seed: u64) -> impl FnMut() -> f64 {
 }
 
 /// A closed chain of `n` cubic Béziers round a star, with corners at every joint.
-pub fn bezier_chain(n: usize) -> Profile {
+pub(crate) fn bezier_chain(n: usize) -> Profile {
     let mut rnd = rng(7);
     let joints: Vec<V2> = (0..n)
         .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * (1.0 + 0.5 * rnd()))

@@ -1,6 +1,7 @@
 //! A small SVG writer for result figures: polylines, dots, numbered segments and labels,
 //! with the view box fitted to the content and y pointing up.
 
+use std::borrow::Cow;
 use std::fmt::Write as _;
 
 /// Colors of the figure elements (curves cycle through the first ones).
@@ -13,7 +14,7 @@ const MIN_SIZE: f64 = 1e-9;
 enum Item {
     Polyline {
         points: Vec<[f64; 2]>,
-        color: &'static str,
+        color: Cow<'static, str>,
         width: f64,
         closed: bool,
     },
@@ -56,7 +57,7 @@ impl Figure {
         self.curves += 1;
         self.items.push(Item::Polyline {
             points,
-            color,
+            color: color.into(),
             width: 2.0,
             closed,
         });
@@ -66,8 +67,19 @@ impl Figure {
     pub fn thin(&mut self, points: Vec<[f64; 2]>, color: &'static str) {
         self.items.push(Item::Polyline {
             points,
-            color,
+            color: color.into(),
             width: 0.6,
+            closed: false,
+        });
+    }
+
+    /// A polyline of a computed color (`#rrggbb`), drawn between the thin and the curve
+    /// widths (a medial axis coloured by radius).
+    pub fn colored(&mut self, points: Vec<[f64; 2]>, color: String) {
+        self.items.push(Item::Polyline {
+            points,
+            color: color.into(),
+            width: 1.4,
             closed: false,
         });
     }

@@ -68,18 +68,72 @@ pub(super) fn axis_figure(region: &Curve, axis: &MedialAxis) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, region);
     draw_axis(&mut fig, axis);
+    let widest = widest_radius(axis);
     fig.title(format!(
-        "medial axis: {} nodes, {} edges",
+        "{} nodes, {} edges; radius 0 (blue) to {widest:.3} (yellow)",
         axis.nodes.len(),
         axis.edges.len()
     ));
     fig.render()
 }
 
-/// The axis's edges, and the maximal disks of its widest nodes.
+/// Shades of the radius scale: the axis is drawn in runs of one shade.
+const SHADES: usize = 16;
+
+/// The color of a radius at fraction `t` of the largest: dark blue through teal to yellow.
+fn shade(t: f64) -> String {
+    const STOPS: [[f64; 3]; 3] = [
+        [40.0, 30.0, 140.0],
+        [30.0, 150.0, 140.0],
+        [240.0, 210.0, 20.0],
+    ];
+    let t = t.clamp(0.0, 1.0) * (STOPS.len() - 1) as f64;
+    let i = (t.floor() as usize).min(STOPS.len() - 2);
+    let f = t - i as f64;
+    let c = |k: usize| (STOPS[i][k] + f * (STOPS[i + 1][k] - STOPS[i][k])).round() as u8;
+    format!("#{:02x}{:02x}{:02x}", c(0), c(1), c(2))
+}
+
+/// The largest radius on the axis.
+fn widest_radius(axis: &MedialAxis) -> f64 {
+    axis.edges
+        .iter()
+        .flat_map(|e| e.radius.iter().copied())
+        .chain(axis.nodes.iter().map(|n| n.radius))
+        .fold(0.0, f64::max)
+}
+
+/// The axis's edges coloured by radius, and the maximal disks of its widest nodes.
 fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
+    let widest = widest_radius(axis);
+    let bucket = |r: f64| {
+        if widest > 0.0 {
+            ((r / widest * SHADES as f64) as usize).min(SHADES - 1)
+        } else {
+            0
+        }
+    };
     for e in &axis.edges {
-        fig.thin(e.xy.clone(), "#d62020");
+        // Runs of vertices whose steps share a shade (a step takes its middle radius).
+        let mut run: Vec<[f64; 2]> = Vec::new();
+        let mut current = None;
+        for (w, r) in e.xy.windows(2).zip(e.radius.windows(2)) {
+            let b = bucket(0.5 * (r[0] + r[1]));
+            if current != Some(b) {
+                if let Some(prev) = current {
+                    fig.colored(
+                        std::mem::take(&mut run),
+                        shade((prev as f64 + 0.5) / SHADES as f64),
+                    );
+                }
+                run.push(w[0]);
+                current = Some(b);
+            }
+            run.push(w[1]);
+        }
+        if let Some(prev) = current {
+            fig.colored(run, shade((prev as f64 + 0.5) / SHADES as f64));
+        }
     }
     let mut widest: Vec<_> = axis.nodes.iter().collect();
     widest.sort_by(|a, b| b.radius.total_cmp(&a.radius));

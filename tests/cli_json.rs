@@ -368,6 +368,25 @@ fn medial_json() {
     }
     assert!(nodes.iter().all(|n| n["radius"].as_f64().unwrap() > 0.0));
     assert_eq!(d["complete"], true);
+    assert!(edges.iter().all(|e| e.get("bspline").is_none()));
+    // With --fit, every edge also as a B-spline: clamped knots, as many axis as radius
+    // control points, ends at the edge's ends, within half the chord tolerance (1e-3 of the
+    // size, 10) of the polyline.
+    let fitted = curvekit_json(&["medial", &fixture("region-pocket.json"), "--fit"]);
+    for e in fitted["edges"].as_array().unwrap() {
+        let b = &e["bspline"];
+        let degree = b["degree"].as_u64().unwrap() as usize;
+        let knots = b["knots"].as_array().unwrap();
+        let points = b["points"].as_array().unwrap();
+        assert_eq!(knots.len(), points.len() + degree + 1);
+        assert_eq!(b["radius_points"].as_array().unwrap().len(), points.len());
+        assert_eq!(points[0], e["xy"][0]);
+        assert_eq!(
+            points[points.len() - 1],
+            e["xy"][e["xy"].as_array().unwrap().len() - 1]
+        );
+        assert!(b["error"].as_f64().unwrap() <= 0.5 * 1e-3 * 10.0);
+    }
     // A drawing's outlines nested inside each other make a region: the glyph's bowl is a
     // hole, so the axis has one cycle.
     let glyph = curvekit_json(&["medial", &fixture("drawing-glyph-d.svg")]);

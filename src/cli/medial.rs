@@ -11,10 +11,11 @@ use std::path::Path;
 /// Maximal disks drawn in the figure: the largest few, enough to show what the radius means.
 const DISKS_DRAWN: usize = 6;
 
-pub(super) fn run(path: &Path, chord_tol: f64, common: &Common) -> Result<(), Failure> {
+pub(super) fn run(path: &Path, chord_tol: f64, fit: bool, common: &Common) -> Result<(), Failure> {
     let opts = MedialOptions {
         tol: common.tol,
         chord_tol,
+        fit,
     };
     let bisector_opts = zeroset::BisectorOptions {
         tol: opts.tol,
@@ -51,6 +52,16 @@ pub(super) fn run(path: &Path, chord_tol: f64, common: &Common) -> Result<(), Fa
         );
         let vertices: usize = axis.edges.iter().map(|e| e.xy.len()).sum();
         let _ = writeln!(s, "edges:       {} ({vertices} vertices)", axis.edges.len());
+        if fit {
+            let splines = axis.edges.iter().filter_map(|e| e.bspline.as_ref());
+            let (points, error) = splines.fold((0, 0.0f64), |(n, m), b| {
+                (n + b.points.len(), m.max(b.error))
+            });
+            let _ = writeln!(
+                s,
+                "fitted:      {points} control points, at most {error:.3e} from the polylines"
+            );
+        }
         let _ = writeln!(
             s,
             "certified:   {}\ncomplete:    {}",

@@ -71,6 +71,9 @@ enum Command {
         /// Chord tolerance of the edges, relative to the region's size.
         #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
         chord_tol: f64,
+        /// Each edge also as a B-spline of the axis and the radius, within the chord tolerance.
+        #[arg(long)]
+        fit: bool,
         #[command(flatten)]
         common: Common,
     },
@@ -215,8 +218,9 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
         Command::Medial {
             region,
             chord_tol,
+            fit,
             common,
-        } => medial::run(&region, chord_tol, &common),
+        } => medial::run(&region, chord_tol, fit, &common),
     }
 }
 

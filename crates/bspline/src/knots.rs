@@ -96,6 +96,23 @@ pub fn multiplicity(knots: &[f64], u: f64) -> usize {
     knots[start..].iter().take_while(|&&k| k == u).count()
 }
 
+/// The basis functions of degree `degree` on `knots` that do not vanish at `u`: the index
+/// `i` of the first and the values `N_{i, p}(u), …, N_{i+p, p}(u)` (they sum to 1).
+///
+/// ```
+/// let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
+/// let (first, values) = bspline::knots::basis_at(2, &knots, 0.5);
+/// assert_eq!(first, 0);
+/// assert!((values.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+/// ```
+pub fn basis_at(degree: usize, knots: &[f64], u: f64) -> (usize, Vec<f64>) {
+    let n = knots.len() - degree - 1;
+    let span = find_span(degree, n, knots, u);
+    let mut ders = Scratch::new();
+    basis_derivs(span, u, degree, 0, knots, &mut ders);
+    (span - degree, ders[..=degree].to_vec())
+}
+
 /// Non-zero basis functions and their derivatives up to order `nd` at `u` in span `span`
 /// (The NURBS Book, A2.3). `ders[k * (p+1) + j]` is the k-th derivative of `N_{span-p+j, p}`.
 pub(crate) fn basis_derivs(

@@ -110,6 +110,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
             radius: c.vertices.iter().map(|v| v.radius).collect(),
             feet: c.vertices.iter().map(|v| v.tr).collect(),
             boundary: c.boundary.clone(),
+            bspline: None,
         });
     }
     // Single points make the axis only where it has no edge (the centre of a disk): the

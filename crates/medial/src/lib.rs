@@ -13,16 +13,22 @@
 //! at their common ends: junctions, ends at centres of curvature, convex corners; stretches
 //! that continue each other (a foot passing from one segment to the next) are one edge.
 //!
-//! Emptiness is decided with sampled nearest-point searches ([`curve::Profile::nearest`]),
-//! so results say `certified: false`.
+//! Emptiness is proven on the boundaries' control hulls ([`curve::Profile::clearance`]), and
+//! decided by the nearest point found only within rounding; junctions are solved numerically
+//! (regula falsi on the third contact), not yet certified, so results say `certified: false`.
+//!
+//! With [`MedialOptions::fit`] each edge also comes as one B-spline of the axis and the radius
+//! ([`EdgeSpline`]), fitted by least squares within the chord tolerance.
 
 mod assemble;
 mod candidates;
 mod error;
+mod fit;
 mod sites;
 mod stretches;
 
 pub use error::{Error, Result};
+pub use fit::EdgeSpline;
 
 use curve::Region;
 use serde::{Deserialize, Serialize};
@@ -35,6 +41,10 @@ pub struct MedialOptions {
     /// Chord tolerance of the edges' polylines relative to the region's size (default
     /// 1e-3).
     pub chord_tol: f64,
+    /// Whether each edge also comes as a B-spline ([`Edge::bspline`]), within the chord
+    /// tolerance of the axis: the polylines are then traced to half of it, and the fit kept
+    /// within the other half of them.
+    pub fit: bool,
 }
 
 impl Default for MedialOptions {
@@ -42,6 +52,7 @@ impl Default for MedialOptions {
         Self {
             tol: zeroset::DEFAULT_TOL,
             chord_tol: zeroset::DEFAULT_CHORD_TOL,
+            fit: false,
         }
     }
 }
@@ -88,6 +99,9 @@ pub struct Edge {
     pub feet: Vec<[f64; 2]>,
     /// Per vertex, the boundaries of those points (0 outer, 1.. holes).
     pub boundary: Vec<[usize; 2]>,
+    /// The edge as a B-spline of the axis and the radius (with [`MedialOptions::fit`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bspline: Option<EdgeSpline>,
 }
 
 /// The medial axis of a region.
@@ -98,7 +112,7 @@ pub struct MedialAxis {
     /// The edges.
     pub edges: Vec<Edge>,
     /// Whether every junction and trimming decision followed from sign tests (not yet: the
-    /// emptiness of disks is sampled).
+    /// junctions are solved numerically).
     pub certified: bool,
     /// False when a search limit was hit.
     pub complete: bool,
@@ -120,9 +134,23 @@ pub struct MedialAxis {
 /// ```
 pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
     let sites = sites::Sites::new(region);
-    let (found, complete) = candidates::candidates(&sites, opts)?;
+    let traced = MedialOptions {
+        chord_tol: if opts.fit {
+            0.5 * opts.chord_tol
+        } else {
+            opts.chord_tol
+        },
+        ..*opts
+    };
+    let (found, complete) = candidates::candidates(&sites, &traced)?;
     let pieces = stretches::stretches(&sites, &found);
     let mut axis = assemble::assemble(&sites, pieces, &found);
     axis.complete &= complete;
+    if opts.fit {
+        let tol = traced.chord_tol * sites.size;
+        for e in &mut axis.edges {
+            e.bspline = Some(fit::fit_edge(&e.xy, &e.radius, tol));
+        }
+    }
     Ok(axis)
 }

@@ -208,9 +208,45 @@ fn size_of(region: &Region) -> f64 {
     (hi[0] - lo[0]).max(hi[1] - lo[1])
 }
 
+/// Every this many random regions, the axis is also fitted (`fit`) and the oracle's points
+/// checked against the fitted curves.
+const FIT_EVERY: usize = 4;
+
+static CHECKED: AtomicUsize = AtomicUsize::new(0);
+
+/// The fitted curves of an axis, sampled: 32 points per step of the edge's polyline.
+fn fitted_samples(a: &MedialAxis) -> Vec<Vec<[f64; 2]>> {
+    a.edges
+        .iter()
+        .map(|e| {
+            let f = e.bspline.as_ref().unwrap();
+            let n = 32 * e.xy.len();
+            (0..=n).map(|k| f.eval(k as f64 / n as f64).0).collect()
+        })
+        .collect()
+}
+
 fn check(region: &Region) -> Result<(), TestCaseError> {
     let a = axis(region);
     prop_assert!(a.complete);
+    let fitted = (CHECKED.fetch_add(1, Ordering::Relaxed) % FIT_EVERY == 0).then(|| {
+        let opts = MedialOptions {
+            chord_tol: CHORD,
+            fit: true,
+            ..Default::default()
+        };
+        medial_axis(region, &opts).unwrap()
+    });
+    let fitted_curves = fitted.as_ref().map(fitted_samples);
+    if let Some(f) = &fitted {
+        // The fitted curves start and end at their edges' nodes, within their bound.
+        for e in &f.edges {
+            let s = e.bspline.as_ref().unwrap();
+            prop_assert!(s.error <= 0.5 * CHORD * size_of(region));
+            prop_assert_eq!(s.points[0], e.xy[0]);
+            prop_assert_eq!(s.points[s.points.len() - 1], e.xy[e.xy.len() - 1]);
+        }
+    }
     let b = Boundaries::new(region);
     let size = size_of(region);
     // Every vertex on the axis: its radius the boundary's distance, attained at both feet.
@@ -311,6 +347,16 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
                     .flat_map(|e| e.xy.windows(2).map(|w| off_segment(z, w[0], w[1])))
                     .fold(f64::INFINITY, f64::min);
                 prop_assert!(off <= room, "medial point {z:?} is {off} off the axis");
+                if let Some(curves) = &fitted_curves {
+                    let off = curves
+                        .iter()
+                        .flat_map(|c| c.windows(2).map(|w| off_segment(z, w[0], w[1])))
+                        .fold(f64::INFINITY, f64::min);
+                    prop_assert!(
+                        off <= room,
+                        "medial point {z:?} is {off} off the fitted axis"
+                    );
+                }
             }
         }
     }

@@ -387,6 +387,14 @@ fn medial_json() {
         );
         assert!(b["error"].as_f64().unwrap() <= 0.5 * 1e-3 * 10.0);
     }
+    // --exterior: the pocket's outline is convex, so all there is outside is the island's
+    // own axis, its centre (6.5, 3) at radius 1.2.
+    let outside = curvekit_json(&["medial", &fixture("region-pocket.json"), "--exterior"]);
+    assert_eq!(outside["edges"].as_array().unwrap().len(), 0);
+    let nodes = outside["nodes"].as_array().unwrap();
+    assert_eq!(nodes.len(), 1);
+    assert_eq!(nodes[0]["kind"], "end");
+    assert!((nodes[0]["radius"].as_f64().unwrap() - 1.2).abs() < 1e-12);
     // A drawing's outlines nested inside each other make a region: the glyph's bowl is a
     // hole, so the axis has one cycle.
     let glyph = curvekit_json(&["medial", &fixture("drawing-glyph-d.svg")]);

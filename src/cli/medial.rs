@@ -11,11 +11,18 @@ use std::path::Path;
 /// Maximal disks drawn in the figure: the largest few, enough to show what the radius means.
 const DISKS_DRAWN: usize = 6;
 
-pub(super) fn run(path: &Path, chord_tol: f64, fit: bool, common: &Common) -> Result<(), Failure> {
+/// `flags`: `--fit`, `--exterior`.
+pub(super) fn run(
+    path: &Path,
+    chord_tol: f64,
+    (fit, exterior): (bool, bool),
+    common: &Common,
+) -> Result<(), Failure> {
     let opts = MedialOptions {
         tol: common.tol,
         chord_tol,
         fit,
+        exterior,
     };
     let bisector_opts = zeroset::BisectorOptions {
         tol: opts.tol,
@@ -43,12 +50,17 @@ pub(super) fn run(path: &Path, chord_tol: f64, fit: bool, common: &Common) -> Re
         let _ = writeln!(s, "region:      {}", curve.file);
         let _ = writeln!(
             s,
-            "nodes:       {} ({} junctions, {} ends, {} corners, {} joints)",
+            "nodes:       {} ({} junctions, {} ends, {} corners, {} joints{})",
             axis.nodes.len(),
             count(NodeKind::Junction),
             count(NodeKind::End),
             count(NodeKind::Corner),
-            count(NodeKind::Joint)
+            count(NodeKind::Joint),
+            if exterior {
+                format!(", {} at the clip box", count(NodeKind::Clip))
+            } else {
+                String::new()
+            }
         );
         let vertices: usize = axis.edges.iter().map(|e| e.xy.len()).sum();
         let _ = writeln!(s, "edges:       {} ({vertices} vertices)", axis.edges.len());

@@ -74,6 +74,10 @@ enum Command {
         /// Each edge also as a B-spline of the axis and the radius, within the chord tolerance.
         #[arg(long)]
         fit: bool,
+        /// The exterior axis instead: outside the outer boundary and inside the holes, clipped
+        /// to the region's box grown by half its size.
+        #[arg(long)]
+        exterior: bool,
         #[command(flatten)]
         common: Common,
     },
@@ -219,8 +223,9 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             region,
             chord_tol,
             fit,
+            exterior,
             common,
-        } => medial::run(&region, chord_tol, fit, &common),
+        } => medial::run(&region, chord_tol, (fit, exterior), &common),
     }
 }
 

@@ -14,6 +14,19 @@ const MERGE: f64 = 1e-6;
 /// A leaf whose radius is at most this share of the size is a corner of the boundary.
 const CORNER_RADIUS: f64 = 1e-9;
 
+/// A leaf within this share of the size of the box the exterior axis is clipped to ends
+/// there: the stretch's end is bracketed to 2^-32 of a polyline step from the box.
+const ON_CLIP: f64 = 1e-9;
+
+/// Whether `x` lies on the edge of the box the exterior axis is clipped to.
+fn on_clip(sites: &Sites<'_>, x: [f64; 2]) -> bool {
+    sites.clip.is_some_and(|c| {
+        let room = ON_CLIP * sites.size;
+        let near = |a: f64, b: f64| (a - b).abs() <= room;
+        near(x[0], c[0]) || near(x[0], c[2]) || near(x[1], c[1]) || near(x[1], c[3])
+    })
+}
+
 /// One edge while the graph is assembled: its nodes (clusters) and vertices.
 struct Chain {
     ends: [usize; 2],
@@ -85,6 +98,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
             let kind = kinds[c].unwrap_or(match degree[c] {
                 0 => NodeKind::End,
                 1 if at.radius <= CORNER_RADIUS * sites.size => NodeKind::Corner,
+                1 if on_clip(sites, at.xy) => NodeKind::Clip,
                 1 => NodeKind::End,
                 _ => NodeKind::Junction,
             });

@@ -45,6 +45,10 @@ pub struct MedialOptions {
     /// tolerance of the axis: the polylines are then traced to half of it, and the fit kept
     /// within the other half of them.
     pub fit: bool,
+    /// Whether the axis sought is the exterior one: of the plane outside the region (beyond
+    /// its outer boundary and inside its holes), clipped to the region's box grown by half
+    /// its size on every side.
+    pub exterior: bool,
 }
 
 impl Default for MedialOptions {
@@ -53,6 +57,7 @@ impl Default for MedialOptions {
             tol: zeroset::DEFAULT_TOL,
             chord_tol: zeroset::DEFAULT_CHORD_TOL,
             fit: false,
+            exterior: false,
         }
     }
 }
@@ -69,6 +74,8 @@ pub enum NodeKind {
     Corner,
     /// The one node of a cycle without junctions (an annulus).
     Joint,
+    /// A leaf where the exterior axis leaves the box it is clipped to.
+    Clip,
 }
 
 /// A node of the axis.
@@ -133,7 +140,7 @@ pub struct MedialAxis {
 /// assert_eq!(axis.edges.len(), 5);
 /// ```
 pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
-    let sites = sites::Sites::new(region);
+    let sites = sites::Sites::new(region, opts.exterior);
     let traced = MedialOptions {
         chord_tol: if opts.fit {
             0.5 * opts.chord_tol

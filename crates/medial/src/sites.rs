@@ -19,11 +19,20 @@ pub(crate) enum Disk {
     Entered(usize, f64, f64),
 }
 
+/// How far the box the exterior axis is clipped to reaches beyond the region's box, as a
+/// share of the region's size (the contract's half).
+const CLIP_GROWTH: f64 = 0.5;
+
 /// The boundaries of a region: 0 the outer one, 1.. the holes.
 pub(crate) struct Sites<'a> {
     pub(crate) boundaries: Vec<&'a Profile>,
-    /// +1 where the region lies left of a boundary as it runs, −1 where right.
+    /// +1 where the part of the plane whose axis is sought (the region, or its exterior)
+    /// lies left of a boundary as it runs, −1 where right.
     inside_left: Vec<f64>,
+    /// Whether that part is the exterior.
+    exterior: bool,
+    /// The box the exterior axis is clipped to, `[lo x, lo y, hi x, hi y]`.
+    pub(crate) clip: Option<[f64; 4]>,
     /// max(width, height) of the region's box, the scale of the relative tolerances.
     pub(crate) size: f64,
     /// The diagonal of that box.
@@ -31,7 +40,9 @@ pub(crate) struct Sites<'a> {
 }
 
 impl<'a> Sites<'a> {
-    pub(crate) fn new(region: &'a Region) -> Self {
+    /// The sites of `region`, for its axis inside or, with `exterior`, outside it (beyond
+    /// the outer boundary and inside the holes), clipped to its box grown by half its size.
+    pub(crate) fn new(region: &'a Region, exterior: bool) -> Self {
         let boundaries: Vec<&Profile> = std::iter::once(region.outer())
             .chain(region.holes())
             .collect();
@@ -39,10 +50,15 @@ impl<'a> Sites<'a> {
             .iter()
             .enumerate()
             .map(|(k, b)| {
-                if k == 0 {
+                let side = if k == 0 {
                     b.orientation()
                 } else {
                     -b.orientation()
+                };
+                if exterior {
+                    -side
+                } else {
+                    side
                 }
             })
             .collect();
@@ -59,9 +75,12 @@ impl<'a> Sites<'a> {
             }
         }
         let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let grow = CLIP_GROWTH * size;
         Self {
             boundaries,
             inside_left,
+            exterior,
+            clip: exterior.then_some([lo[0] - grow, lo[1] - grow, hi[0] + grow, hi[1] + grow]),
             size,
             diagonal: (hi[0] - lo[0]).hypot(hi[1] - lo[1]),
         }
@@ -111,14 +130,22 @@ impl<'a> Sites<'a> {
         }
     }
 
+    /// Whether `x` lies in the box the axis is clipped to (always, inside the region).
+    pub(crate) fn in_clip(&self, x: [f64; 2]) -> bool {
+        self.clip
+            .is_none_or(|c| x[0] >= c[0] && x[0] <= c[2] && x[1] >= c[1] && x[1] <= c[3])
+    }
+
     /// Whether `x`, the bisector point of the foot at `u` on segment `i` of boundary `b`,
     /// lies inside the region: on the inner side of the segment there (a corner's foot:
     /// where the corner is reflex for the region, its cone lies inside).
     pub(crate) fn inside_of(&self, b: usize, i: usize, u: f64, corner: bool, x: [f64; 2]) -> bool {
         let p = self.boundaries[b];
         if corner {
+            // A reflex corner of the outer boundary (a convex one of a hole, as the hole runs)
+            // points into the region; the others into the exterior.
             return match p.joints().iter().find(|j| j.u == u) {
-                Some(j) if b == 0 => j.kind == JointKind::Reflex,
+                Some(j) if (b == 0) != self.exterior => j.kind == JointKind::Reflex,
                 Some(j) => j.kind == JointKind::Convex,
                 None => false,
             };

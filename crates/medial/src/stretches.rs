@@ -22,6 +22,12 @@ const HIDDEN_DEPTH: usize = 20;
 /// reaches into the disk (0 where no site enters: the nearest site then).
 type Intruder = ((usize, usize), f64);
 
+/// Further halvings that put the end of an exterior stretch on the box it is clipped to.
+const CLIP_STEPS: usize = 30;
+
+/// The "site" beyond the box the exterior axis is clipped to.
+const CLIPPED: (usize, usize) = (usize::MAX, usize::MAX);
+
 /// How much longer than the chord between two of its points a stretch of a candidate
 /// branch may be, when the search for a hidden stretch bounds what lies between them.
 const LENGTH_SLACK: f64 = 1.5;
@@ -196,6 +202,9 @@ impl Branch<'_, '_> {
     /// its disk, with how deep, or (an empty disk outside the region, or with its feet
     /// together) the nearest, at depth 0.
     fn classify(&self, v: &Vertex) -> Result<(), Intruder> {
+        if !self.sites.in_clip(v.xy) {
+            return Err((CLIPPED, 0.0));
+        }
         match self.sites.disk(v.xy, v.radius) {
             Disk::Entered(k, u, depth) => Err((self.site_of(k, u), depth)),
             Disk::Empty if self.inside(v) && self.feet_part(v) => Ok(()),
@@ -243,6 +252,19 @@ impl Branch<'_, '_> {
                 None
             })
             .flatten();
+        // A change of the rate's sign across a corner is no extremum: the feet meet at the
+        // corner, and the axis ends where the stretch does.
+        let across_corner = |a: f64, b: f64| {
+            boundary.corners().any(|j| {
+                (-1..=1).any(|k| {
+                    let u = j.u + k as f64 * n;
+                    u > a && u < b
+                })
+            })
+        };
+        if window.is_some_and(|(a, b)| across_corner(a, b)) {
+            return None;
+        }
         let (s, u, j) = if let Some((mut a, mut b)) = window {
             let ra = rate(a);
             for _ in 0..EXTREMUM_STEPS {
@@ -302,7 +324,7 @@ impl Branch<'_, '_> {
     /// Whether a vertex lies on the axis: inside the region, its disk empty, its two feet
     /// apart (else its point has one nearest point: the axis ends where the feet meet).
     fn on_axis(&self, v: &Vertex) -> bool {
-        self.disk_empty(v) && self.feet_part(v)
+        self.sites.in_clip(v.xy) && self.disk_empty(v) && self.feet_part(v)
     }
 
     fn disk_empty(&self, v: &Vertex) -> bool {
@@ -357,6 +379,21 @@ impl Branch<'_, '_> {
         let feet_meet_beyond = self
             .vertex(beyond, beyond_xy)
             .is_some_and(|v| !self.feet_part(&v));
+        if outside.is_some_and(|o| !self.sites.in_clip(o.xy)) {
+            // The exterior axis leaves the box it is clipped to: it ends at the box, found by
+            // halving on to rounding (the box test is exact; a step may be long, far out).
+            for _ in 0..CLIP_STEPS {
+                let m = 0.5 * (lo + hi);
+                match at(m) {
+                    Some(v) if self.sites.in_clip(v.xy) => {
+                        lo = m;
+                        last = v;
+                    }
+                    _ => hi = m,
+                }
+            }
+            return (lo > 0.0).then_some(last);
+        }
         let Some(out) = outside else {
             // No exact point beyond: where the branch runs into its feet's meeting (a
             // self-bisector's end on its diagonal), the axis ends at the centre of curvature.
@@ -468,8 +505,17 @@ impl Branch<'_, '_> {
                 return None;
             }
         }
-        let mut tr = guess;
-        tr[other] = u1;
-        self.vertex(tr, g(u1).1.arr())
+        // The secant converged to a foot: the point is as far from it as from the kept one
+        // (else, beside a corner where the feet close in, it stopped short: no vertex).
+        let (gap, x) = g(u1);
+        let v = self.vertex(
+            {
+                let mut tr = guess;
+                tr[other] = u1;
+                tr
+            },
+            x.arr(),
+        )?;
+        (gap.abs() <= EMPTY_SLACK * self.sites.size.max(v.radius)).then_some(v)
     }
 }

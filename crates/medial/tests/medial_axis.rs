@@ -128,6 +128,45 @@ fn a_four_centre_oval_has_one_edge_between_its_small_centres() {
     }
 }
 
+/// The exterior axis of an L-shaped room: the diagonal from its reflex corner (2, 2) to the
+/// clip box's corner (6, 6), at distance t − 2 from both sides of the notch, then from their
+/// ends.
+#[test]
+fn the_exterior_of_an_l_shaped_room_is_the_notch_diagonal() {
+    let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
+    let sides = (0..6)
+        .map(|i| Segment::line(c[i], c[(i + 1) % 6]).unwrap())
+        .collect();
+    let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+    let opts = MedialOptions {
+        exterior: true,
+        ..Default::default()
+    };
+    let a = medial_axis(&region, &opts).unwrap();
+    assert_eq!(a.edges.len(), 1);
+    assert_eq!(
+        (kinds(&a, NodeKind::Corner), kinds(&a, NodeKind::Clip)),
+        (1, 1)
+    );
+    let e = &a.edges[0];
+    for (x, r) in e.xy.iter().zip(&e.radius) {
+        assert!((x[0] - x[1]).abs() < 1e-12, "{x:?}");
+        let want = if x[0] <= 4.0 {
+            x[0] - 2.0
+        } else {
+            (x[0] - 4.0).hypot(x[1] - 2.0)
+        };
+        assert!((r - want).abs() < 1e-12, "{x:?}: {r} against {want}");
+    }
+    let ends = [e.xy[0], e.xy[e.xy.len() - 1]];
+    assert!(ends.contains(&[2.0, 2.0]));
+    assert!(ends
+        .iter()
+        .any(|p| (p[0] - 6.0).abs() < 1e-12 && (p[1] - 6.0).abs() < 1e-12));
+    // Inside, the same room has no clip node.
+    assert_eq!(kinds(&axis(&region), NodeKind::Clip), 0);
+}
+
 #[test]
 fn an_l_shaped_room_has_its_reflex_corner_in_the_axis() {
     let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
@@ -209,7 +248,8 @@ fn size_of(region: &Region) -> f64 {
 }
 
 /// Every this many random regions, the axis is also fitted (`fit`) and the oracle's points
-/// checked against the fitted curves.
+/// checked against the fitted curves; and another one in as many, the exterior axis is
+/// checked.
 const FIT_EVERY: usize = 4;
 
 static CHECKED: AtomicUsize = AtomicUsize::new(0);
@@ -226,10 +266,93 @@ fn fitted_samples(a: &MedialAxis) -> Vec<Vec<[f64; 2]>> {
         .collect()
 }
 
+/// The exterior axis of a random region: every vertex outside the region (to the slack of
+/// the boundary's own points) and in the clip box, at its radius from the boundary, attained
+/// at both feet; every leaf at the box is on its edge.
+fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseError> {
+    let opts = MedialOptions {
+        chord_tol: CHORD,
+        exterior: true,
+        ..Default::default()
+    };
+    let a = medial_axis(region, &opts).unwrap();
+    prop_assert!(a.complete);
+    let size = size_of(region);
+    let (lo, hi) = control_box(region);
+    let clip = [
+        lo[0] - 0.5 * size,
+        lo[1] - 0.5 * size,
+        hi[0] + 0.5 * size,
+        hi[1] + 0.5 * size,
+    ];
+    let slack = 1e-9 * size;
+    for e in &a.edges {
+        for (k, (&x, &r)) in e.xy.iter().zip(&e.radius).enumerate() {
+            let (d, _) = b.nearest(x);
+            prop_assert!(
+                (d - r).abs() <= slack,
+                "exterior vertex {x:?}: radius {r}, distance {d}, vertex {k} of {}, nodes {:?} {:?}, feet {:?} on {:?}",
+                e.xy.len(),
+                a.nodes[e.from],
+                a.nodes[e.to],
+                e.feet[k],
+                e.boundary[k]
+            );
+            prop_assert!(
+                r <= slack || !b.inside(x),
+                "exterior vertex {x:?} inside the region"
+            );
+            prop_assert!(
+                x[0] >= clip[0] - slack
+                    && x[0] <= clip[2] + slack
+                    && x[1] >= clip[1] - slack
+                    && x[1] <= clip[3] + slack,
+                "exterior vertex {x:?} outside the clip box {clip:?}"
+            );
+            for s in 0..2 {
+                let f = b.profiles[e.boundary[k][s]].jet(e.feet[k][s]).p.arr();
+                let to_foot = (x[0] - f[0]).hypot(x[1] - f[1]);
+                prop_assert!(
+                    (to_foot - r).abs() <= slack,
+                    "exterior vertex {x:?}: foot {s} at {to_foot}, radius {r}, vertex {k} of {}, nodes {:?} {:?}, feet {:?}",
+                    e.xy.len(), a.nodes[e.from], a.nodes[e.to], e.feet[k]
+                );
+            }
+        }
+    }
+    for n in a.nodes.iter().filter(|n| n.kind == NodeKind::Clip) {
+        let edge = (0..2)
+            .any(|k| (n.xy[k] - clip[k]).abs() <= slack || (n.xy[k] - clip[k + 2]).abs() <= slack);
+        prop_assert!(edge, "clip node {:?} not on the box {clip:?}", n.xy);
+    }
+    Ok(())
+}
+
+/// The box of the outer boundary's control points.
+fn control_box(region: &Region) -> ([f64; 2], [f64; 2]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in region
+        .outer()
+        .segments()
+        .iter()
+        .flat_map(|s| s.curve().control_points())
+    {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    (lo, hi)
+}
+
 fn check(region: &Region) -> Result<(), TestCaseError> {
     let a = axis(region);
     prop_assert!(a.complete);
-    let fitted = (CHECKED.fetch_add(1, Ordering::Relaxed) % FIT_EVERY == 0).then(|| {
+    let case = CHECKED.fetch_add(1, Ordering::Relaxed);
+    if case % FIT_EVERY == 1 {
+        check_exterior(region, &Boundaries::new(region))?;
+    }
+    let fitted = (case % FIT_EVERY == 0).then(|| {
         let opts = MedialOptions {
             chord_tol: CHORD,
             fit: true,

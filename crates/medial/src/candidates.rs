@@ -41,18 +41,30 @@ pub(crate) fn candidates(
     };
     bisector_opts.validate()?;
     let b = &sites.boundaries;
+    let pairs: Vec<[usize; 2]> = (0..b.len())
+        .flat_map(|i| (i..b.len()).map(move |j| [i, j]))
+        .collect();
+    let bisect = |&[i, j]: &[usize; 2]| {
+        if i == j {
+            profile_self_bisector(b[i], &bisector_opts)
+        } else {
+            profile_bisector(b[i], b[j], &bisector_opts)
+        }
+    };
+    // (In the pairs' order either way: the output never depends on the threads.)
+    #[cfg(feature = "parallel")]
+    let found: Vec<_> = {
+        use rayon::prelude::*;
+        pairs.par_iter().map(bisect).collect()
+    };
+    #[cfg(not(feature = "parallel"))]
+    let found: Vec<_> = pairs.iter().map(bisect).collect();
     let mut out = Vec::new();
     let mut complete = true;
-    for i in 0..b.len() {
-        for j in i..b.len() {
-            let found = if i == j {
-                profile_self_bisector(b[i], &bisector_opts)?
-            } else {
-                profile_bisector(b[i], b[j], &bisector_opts)?
-            };
-            complete &= found.complete;
-            add(&mut out, found, [i, j]);
-        }
+    for (pair, found) in pairs.into_iter().zip(found) {
+        let found = found?;
+        complete &= found.complete;
+        add(&mut out, found, pair);
     }
     Ok((out, complete))
 }

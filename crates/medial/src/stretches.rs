@@ -68,10 +68,31 @@ pub(crate) struct Stretch {
     pub(crate) vertices: Vec<Vertex>,
 }
 
-/// The stretches of every candidate.
+/// The stretches of every candidate, in the candidates' order (on all cores with the
+/// `parallel` feature).
 pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> {
+    #[cfg(feature = "parallel")]
+    let per_candidate: Vec<Vec<Stretch>> = {
+        use rayon::prelude::*;
+        found
+            .par_iter()
+            .enumerate()
+            .map(|(k, c)| stretches_of(sites, k, c))
+            .collect()
+    };
+    #[cfg(not(feature = "parallel"))]
+    let per_candidate: Vec<Vec<Stretch>> = found
+        .iter()
+        .enumerate()
+        .map(|(k, c)| stretches_of(sites, k, c))
+        .collect();
+    per_candidate.concat()
+}
+
+/// The stretches of candidate `k`.
+fn stretches_of(sites: &Sites<'_>, k: usize, c: &Candidate) -> Vec<Stretch> {
     let mut out = Vec::new();
-    for (k, c) in found.iter().enumerate() {
+    {
         let branch = Branch { sites, c };
         let samples = branch.samples();
         let n = samples.len();

@@ -128,6 +128,53 @@ fn a_four_centre_oval_has_one_edge_between_its_small_centres() {
     }
 }
 
+/// The axis does not depend on the threads: one thread and the default pool give the same
+/// graph, to the bit, on the rounded pocket with an island and a chain of Béziers.
+#[test]
+fn the_axis_is_the_same_on_one_thread() {
+    let chain = assemble(
+        bezier_chain(
+            &[1.5, 1.0, 1.8, 1.2, 1.6],
+            &[
+                (0.2, -0.3),
+                (0.3, 0.25),
+                (-0.2, 0.1),
+                (0.35, -0.1),
+                (0.1, 0.3),
+            ],
+            &[false; 5],
+        )
+        .unwrap(),
+        0,
+        false,
+    )
+    .unwrap();
+    // The 10 × 6 pocket with corners of radius 1 and an island of radius 1.
+    let h = std::f64::consts::FRAC_PI_2;
+    let outline = vec![
+        Segment::line([1.0, 0.0], [9.0, 0.0]).unwrap(),
+        Segment::arc([9.0, 1.0], 1.0, -h, 0.0).unwrap(),
+        Segment::line([10.0, 1.0], [10.0, 5.0]).unwrap(),
+        Segment::arc([9.0, 5.0], 1.0, 0.0, h).unwrap(),
+        Segment::line([9.0, 6.0], [1.0, 6.0]).unwrap(),
+        Segment::arc([1.0, 5.0], 1.0, h, 2.0 * h).unwrap(),
+        Segment::line([0.0, 5.0], [0.0, 1.0]).unwrap(),
+        Segment::arc([1.0, 1.0], 1.0, 2.0 * h, 3.0 * h).unwrap(),
+    ];
+    let pocket = Region::new(
+        Profile::new(outline, None).unwrap(),
+        vec![circle([6.5, 3.0], 1.0)],
+    );
+    for region in [Region::new(chain, vec![]).unwrap(), pocket.unwrap()] {
+        let one = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap()
+            .install(|| axis(&region));
+        assert_eq!(one, axis(&region));
+    }
+}
+
 /// The exterior axis of an L-shaped room: the diagonal from its reflex corner (2, 2) to the
 /// clip box's corner (6, 6), at distance t − 2 from both sides of the notch, then from their
 /// ends.

@@ -44,7 +44,9 @@ fn region_of(text: &str) -> Region {
 fn medial(c: &mut Criterion) {
     // One core, as the targets are given (the crate's `parallel` feature would use them all;
     // the global pool is built once, here, before anything runs on it).
-    let _ = rayon::ThreadPoolBuilder::new().num_threads(1).build_global();
+    let _ = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build_global();
     let opts = MedialOptions::default();
     for (name, text) in [
         ("medial_periodic_cubic", PERIODIC_CUBIC),

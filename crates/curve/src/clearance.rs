@@ -229,8 +229,14 @@ fn test_piece(piece: &Piece, dim: usize, x: V2, r: f64, err: Errors) -> Verdict 
             .fold(0.0, f64::max);
         let along = ((x - pts[0]).dot(chord) / (len * len)).clamp(0.0, 1.0);
         let to_chord = (pts[0] + chord * along - x).norm();
-        if sag <= room && to_chord + sag + room >= r {
-            return Verdict::Undecided;
+        if sag <= room {
+            // Within `sag` of its chord: as far as the chord, to that and rounding.
+            if to_chord - sag - room >= r {
+                return Verdict::Outside;
+            }
+            if to_chord + sag + room >= r {
+                return Verdict::Undecided;
+            }
         }
     }
     Verdict::Split

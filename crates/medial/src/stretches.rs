@@ -28,6 +28,10 @@ const CLIP_STEPS: usize = 30;
 /// The "site" beyond the box the exterior axis is clipped to.
 const CLIPPED: (usize, usize) = (usize::MAX, usize::MAX);
 
+/// The "site" of a point on the wrong side of its own foot (outside the region, for the
+/// inner axis): no site enters its disk that a search between two such points could follow.
+const OUTSIDE: (usize, usize) = (usize::MAX, usize::MAX - 1);
+
 /// How much longer than the chord between two of its points a stretch of a candidate
 /// branch may be, when the search for a hidden stretch bounds what lies between them.
 const LENGTH_SLACK: f64 = 1.5;
@@ -220,15 +224,18 @@ impl Branch<'_, '_> {
     }
 
     /// Whether a vertex lies on the axis, or else the site that keeps it off: one entering
-    /// its disk, with how deep, or (an empty disk outside the region, or with its feet
-    /// together) the nearest, at depth 0.
+    /// its disk, with how deep; for an empty disk with its feet together the nearest, at
+    /// depth 0; outside the region (or the clip box) a mark of its own.
     fn classify(&self, v: &Vertex) -> Result<(), Intruder> {
         if !self.sites.in_clip(v.xy) {
             return Err((CLIPPED, 0.0));
         }
+        if !self.inside(v) {
+            return Err((OUTSIDE, 0.0));
+        }
         match self.sites.disk(v.xy, v.radius) {
             Disk::Entered(k, u, depth) => Err((self.site_of(k, u), depth)),
-            Disk::Empty if self.inside(v) && self.feet_part(v) => Ok(()),
+            Disk::Empty if self.feet_part(v) => Ok(()),
             Disk::Empty => Err((self.nearest_site(v.xy), 0.0)),
         }
     }

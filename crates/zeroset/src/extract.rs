@@ -490,8 +490,8 @@ const DEVIATION_CONVERGED: f64 = 0.01;
 /// The largest deviation of an arc from its chord, measured rather than assumed from three
 /// samples when they come near the tolerance: `sampled` holds `deviation` at `w` = 1/4, 1/2,
 /// 3/4 (it is 0 at both ends), and successive parabolic interpolation climbs from the largest
-/// toward the maximum between its neighbours. Returns as soon as the tolerance is exceeded
-/// (the segment is halved anyway).
+/// toward the maximum between its neighbours, the last step's change added for what the
+/// climb leaves. Returns as soon as the tolerance is exceeded (the segment is halved anyway).
 fn measured_deviation(deviation: &dyn Fn(f64) -> f64, sampled: [f64; 3], tol: f64) -> f64 {
     let k = (0..3).fold(0, |k, i| if sampled[i] > sampled[k] { i } else { k });
     let mut best = sampled[k];
@@ -505,6 +505,8 @@ fn measured_deviation(deviation: &dyn Fn(f64) -> f64, sampled: [f64; 3], tol: f6
         i => (0.25 * i as f64, sampled[i - 1]),
     };
     let (mut lo, mut mid, mut hi) = (at(k), at(k + 1), at(k + 2));
+    // What the last step changed: about what the climb leaves unmeasured when it stops.
+    let mut left = tol;
     for _ in 0..DEVIATION_STEPS {
         // Vertex of the parabola through the three points.
         let (d1, d2) = (mid.0 - lo.0, mid.0 - hi.0);
@@ -523,6 +525,7 @@ fn measured_deviation(deviation: &dyn Fn(f64) -> f64, sampled: [f64; 3], tol: f6
             return best;
         }
         let gain = (f - mid.1).abs();
+        left = gain;
         // Keep the larger of the new point and the middle as the middle of the bracket.
         if f >= mid.1 {
             if w < mid.0 {
@@ -540,7 +543,8 @@ fn measured_deviation(deviation: &dyn Fn(f64) -> f64, sampled: [f64; 3], tol: f6
             break;
         }
     }
-    best
+    // The maximum may lie above the best sample by about the last step's change.
+    best + left.max(DEVIATION_CONVERGED * tol)
 }
 
 enum Class {

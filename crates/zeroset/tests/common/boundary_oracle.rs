@@ -30,33 +30,38 @@ impl<'a> Oracle<'a> {
     /// The distance from `x` to the profile and the parameter of the nearest point.
     pub fn nearest(&self, x: [f64; 2]) -> (f64, f64) {
         let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
-        let (k, _) = self
-            .pts
-            .iter()
-            .enumerate()
-            .map(|(k, q)| (k, d(*q)))
-            .fold((0, f64::INFINITY), |b, c| if c.1 < b.1 { c } else { b });
-        // Golden-section search on the stretches to either side of the nearest sample (the
-        // last sample is the first one again: a closed profile's seam has both sides).
+        let ds: Vec<f64> = self.pts.iter().map(|q| d(*q)).collect();
+        // Golden-section search on the stretches to either side of every sampled local
+        // minimum (not only the least sample: at a point of the medial axis two or three
+        // minima are equal, and the least sample may lie beside the one that is not). The
+        // last sample is the first one again: a closed profile's seam has both sides.
         let last = self.u.len() - 1;
-        let before = if k == 0 { last - 1 } else { k - 1 };
-        let after = if k == last { 1 } else { k + 1 };
         let f = |u: f64| d(self.p.jet(u).p.arr());
-        let mut best = (d(self.pts[k]), self.u[k]);
-        for (a, b) in [(before, before + 1), (after - 1, after)] {
-            let (mut a, mut b) = (self.u[a], self.u[b]);
-            let g = 0.5 * (5f64.sqrt() - 1.0);
-            for _ in 0..60 {
-                let (c, e) = (b - g * (b - a), a + g * (b - a));
-                if f(c) < f(e) {
-                    b = e;
-                } else {
-                    a = c;
-                }
+        let mut best = (f64::INFINITY, 0.0);
+        for k in 0..=last {
+            let before = if k == 0 { last - 1 } else { k - 1 };
+            let after = if k == last { 1 } else { k + 1 };
+            if ds[k] > ds[before] || ds[k] > ds[after] {
+                continue;
             }
-            let u = 0.5 * (a + b);
-            if f(u) < best.0 {
-                best = (f(u), u);
+            if ds[k] < best.0 {
+                best = (ds[k], self.u[k]);
+            }
+            for (a, b) in [(before, before + 1), (after - 1, after)] {
+                let (mut a, mut b) = (self.u[a], self.u[b]);
+                let g = 0.5 * (5f64.sqrt() - 1.0);
+                for _ in 0..60 {
+                    let (c, e) = (b - g * (b - a), a + g * (b - a));
+                    if f(c) < f(e) {
+                        b = e;
+                    } else {
+                        a = c;
+                    }
+                }
+                let u = 0.5 * (a + b);
+                if f(u) < best.0 {
+                    best = (f(u), u);
+                }
             }
         }
         best

@@ -62,26 +62,34 @@ fn medial_axes_of_the_shipped_shapes() {
     }
 }
 
+/// The shipped shapes whose axes are checked against dense samples.
+const CHECKED_SHAPES: [&str; 7] = [
+    "region-pocket.json",
+    "profile-rounded-slot.json",
+    "profile-bracket.json",
+    "drawing-pocket.svg",
+    "drawing-glyph-d.svg",
+    "drawing-bracket.dxf",
+    "drawing-plate.dxf",
+];
+
+/// The region of a shipped shape.
+fn shipped_region(name: &str) -> curvekit::curve::Region {
+    let path = std::path::PathBuf::from(fixture(name));
+    match curvekit::io::read_region(&path, None).unwrap().shape {
+        curvekit::io::Shape::Region(region) => *region,
+        _ => panic!("{name}: no region"),
+    }
+}
+
 /// Every vertex of every shipped shape's axis is at its radius from the boundary: the
 /// distance by dense sampling of every boundary (4,000 samples a segment), which can only
 /// overestimate it, by at most what half a sample step adds, √(r² + (h/2)²) − r.
 #[test]
 fn every_vertex_is_at_its_radius_from_the_boundary() {
     use curvekit::curve::ParamCurve;
-    for name in [
-        "region-pocket.json",
-        "profile-rounded-slot.json",
-        "profile-bracket.json",
-        "drawing-pocket.svg",
-        "drawing-glyph-d.svg",
-        "drawing-bracket.dxf",
-        "drawing-plate.dxf",
-    ] {
-        let path = std::path::PathBuf::from(fixture(name));
-        let curve = curvekit::io::read_region(&path, None).unwrap();
-        let curvekit::io::Shape::Region(region) = &curve.shape else {
-            panic!("{name}: no region");
-        };
+    for name in CHECKED_SHAPES {
+        let region = &shipped_region(name);
         let mut samples: Vec<[f64; 2]> = Vec::new();
         let mut size = 0.0f64;
         let mut step = 0.0f64;
@@ -127,20 +135,8 @@ fn every_vertex_is_at_its_radius_from_the_boundary() {
 /// arc, whose centre is every point's).
 #[test]
 fn every_end_is_a_centre_of_curvature_at_an_extremum() {
-    for name in [
-        "region-pocket.json",
-        "profile-rounded-slot.json",
-        "profile-bracket.json",
-        "drawing-pocket.svg",
-        "drawing-glyph-d.svg",
-        "drawing-bracket.dxf",
-        "drawing-plate.dxf",
-    ] {
-        let path = std::path::PathBuf::from(fixture(name));
-        let curve = curvekit::io::read_region(&path, None).unwrap();
-        let curvekit::io::Shape::Region(region) = &curve.shape else {
-            panic!("{name}: no region");
-        };
+    for name in CHECKED_SHAPES {
+        let region = &shipped_region(name);
         // Per sample: centre of curvature, radius of curvature, curvature rate, and the
         // index of the boundary and of the segment (rates compare within one segment).
         let mut samples = Vec::new();

@@ -279,18 +279,7 @@ static MEDIAL_POINTS: AtomicUsize = AtomicUsize::new(0);
 static WITH_HOLES: AtomicUsize = AtomicUsize::new(0);
 
 fn size_of(region: &Region) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for q in region
-        .outer()
-        .segments()
-        .iter()
-        .flat_map(|s| s.curve().control_points())
-    {
-        for k in 0..2 {
-            lo[k] = lo[k].min(q[k]);
-            hi[k] = hi[k].max(q[k]);
-        }
-    }
+    let (lo, hi) = control_box(region);
     (hi[0] - lo[0]).max(hi[1] - lo[1])
 }
 

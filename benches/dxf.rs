@@ -11,16 +11,8 @@ use curvekit::io::{parse_drawing, read_curve_picked, DrawingFormat, Shape};
 use std::io::Write;
 use std::time::Duration;
 
-/// Deterministic pseudo-random numbers in [0, 1).
-fn rng(seed: u64) -> impl FnMut() -> f64 {
-    let mut x = seed;
-    move || {
-        x = x
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+mod common;
+use common::rng;
 
 /// The drawing's text: `outlines` outlines of `teeth` arcs and `teeth` chords each.
 fn drawing(outlines: usize, teeth: usize) -> String {

@@ -96,40 +96,38 @@ pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> 
 /// The stretches of candidate `k`.
 fn stretches_of(sites: &Sites<'_>, k: usize, c: &Candidate) -> Vec<Stretch> {
     let mut out = Vec::new();
-    {
-        let branch = Branch { sites, c };
-        let samples = branch.samples();
-        let n = samples.len();
-        let mut i = 0;
-        while i < n {
-            if samples[i].on_axis.is_none() {
-                i += 1;
-                continue;
+    let branch = Branch { sites, c };
+    let samples = branch.samples();
+    let n = samples.len();
+    let mut i = 0;
+    while i < n {
+        if samples[i].on_axis.is_none() {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < n && samples[i].on_axis.is_some() {
+            i += 1;
+        }
+        let mut vertices: Vec<Vertex> =
+            samples[start..i].iter().filter_map(|s| s.on_axis).collect();
+        if start > 0 {
+            let before = &samples[start - 1];
+            if let Some(v) = branch.junction(vertices[0], before.tr, before.xy) {
+                vertices.insert(0, v);
             }
-            let start = i;
-            while i < n && samples[i].on_axis.is_some() {
-                i += 1;
+        }
+        if i < n {
+            let after = &samples[i];
+            if let Some(v) = branch.junction(vertices[vertices.len() - 1], after.tr, after.xy) {
+                vertices.push(v);
             }
-            let mut vertices: Vec<Vertex> =
-                samples[start..i].iter().filter_map(|s| s.on_axis).collect();
-            if start > 0 {
-                let before = &samples[start - 1];
-                if let Some(v) = branch.junction(vertices[0], before.tr, before.xy) {
-                    vertices.insert(0, v);
-                }
-            }
-            if i < n {
-                let after = &samples[i];
-                if let Some(v) = branch.junction(vertices[vertices.len() - 1], after.tr, after.xy) {
-                    vertices.push(v);
-                }
-            }
-            if vertices.len() >= 2 || n == 1 {
-                out.push(Stretch {
-                    candidate: k,
-                    vertices,
-                });
-            }
+        }
+        if vertices.len() >= 2 || n == 1 {
+            out.push(Stretch {
+                candidate: k,
+                vertices,
+            });
         }
     }
     out

@@ -11,6 +11,10 @@ use curve::ParamCurve;
 /// to rounding would test disks within rounding of touching it, which bounds cannot decide).
 const BRACKET_STEPS: usize = 32;
 
+/// Doublings of the step back from the bracket to where the entering point is outside the
+/// disk (from 2^-32 of a polyline step to all of it).
+const BACK_STEPS: usize = BRACKET_STEPS + 1;
+
 /// Secant steps that solve for the tri-tangent disk inside the bracket.
 const SECANT_STEPS: usize = 60;
 
@@ -439,12 +443,29 @@ impl Branch<'_, '_> {
         let entering = self.sites.boundaries[k];
         let third = |v: &Vertex| entering.nearest_near(v.xy, u).distance - v.radius;
         // The bracket's passing end holds the disk empty only to the slack: the root may lie
-        // before it, down to the stretch's last vertex.
-        let (mut a, mut fa, mut best) = match third(&last) {
-            f if f >= 0.0 => (lo, f, last),
-            _ => (0.0, third(&from), from),
-        };
+        // a little before it. Step back from it, doubling, until the third point is outside
+        // the disk (not straight back to the stretch's last vertex: where the entering point
+        // is on a foot's own segment, a search from there may find that foot instead).
+        let (mut a, mut fa, mut best) = (lo, third(&last), last);
         let (mut b, mut fb) = (hi, third(&out));
+        let mut back = hi - lo;
+        for _ in 0..BACK_STEPS {
+            if fa >= 0.0 || a <= 0.0 {
+                break;
+            }
+            (b, fb) = (a, fa);
+            back *= 2.0;
+            a = (lo - back).max(0.0);
+            best = if a > 0.0 {
+                match at(a) {
+                    Some(v) => v,
+                    None => break,
+                }
+            } else {
+                from
+            };
+            fa = third(&best);
+        }
         if !(fa >= 0.0 && fb < 0.0) {
             return (lo > 0.0).then_some(last);
         }

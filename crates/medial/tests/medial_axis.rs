@@ -618,3 +618,31 @@ fn medial_axes_match_the_oracle() {
     assert!(MEDIAL_POINTS.load(Ordering::Relaxed) >= cases(16) as usize);
     assert!(WITH_HOLES.load(Ordering::Relaxed) >= 3);
 }
+
+/// CI's random case: a hole's bisector with a cubic runs past the cubic's curvature maximum,
+/// where the cubic itself enters the disks by up to 2e-5; the junction's third contact is on
+/// the foot's own segment, and its solve must not fall back into that foot.
+#[test]
+fn a_junction_whose_third_contact_is_on_a_feet_segment() {
+    let radii = [
+        1.6727626012002006,
+        1.0,
+        1.7651561410569272,
+        1.0343275269823962,
+    ];
+    let wobble = [
+        (-0.05, -0.05),
+        (-0.05, -0.05),
+        (-0.05, -0.17367561327226244),
+        (-0.2006562983337941, 0.17490760724839632),
+    ];
+    let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
+    let outer = assemble(segs, 0, false).unwrap();
+    let hole = (
+        [-0.8707659644847356, 0.8174766831175151],
+        0.20672370399983253,
+    );
+    let region = with_holes(outer, &[hole]).unwrap();
+    assert_eq!(region.holes().len(), 1);
+    check(&region).unwrap();
+}

@@ -166,6 +166,15 @@ impl Branch<'_, '_> {
                 },
                 None => (None, Some((self.nearest_site(xy), 0.0))),
             };
+            if let (Some(v), Some(prev)) = (on_axis, out.last().and_then(|p| p.on_axis)) {
+                if let Some(m) = self.past_evolute(&prev, &v) {
+                    out.push(Sample {
+                        tr: m.tr,
+                        xy: m.xy,
+                        on_axis: None,
+                    });
+                }
+            }
             if let (Some(a), Some(b), Some(prev)) = (last_intruder, intruder, out.last()) {
                 if a.0 != b.0 {
                     let (ptr, pxy) = (prev.tr, prev.xy);
@@ -182,6 +191,41 @@ impl Branch<'_, '_> {
             out.push(Sample { tr, xy, on_axis });
         }
         out
+    }
+
+    /// Between two vertices on the axis, a point of the branch off it where a foot passes a
+    /// curvature maximum whose centre lies nearer the foot than the branch: there the
+    /// boundary beside the foot enters the disk (the branch crosses the evolute and back,
+    /// between two junctions with one disk), a window too narrow for the polyline's steps.
+    /// The vertex with its foot at the maximum, if its disk is entered.
+    fn past_evolute(&self, a: &Vertex, b: &Vertex) -> Option<Vertex> {
+        let c = self.c;
+        (0..2).filter(|&s| !c.corner[s]).find_map(|s| {
+            let boundary = self.sites.boundaries[c.boundary[s]];
+            let rate = |u: f64| boundary.jet_on(c.segment[s], u, 3).curvature_rate();
+            let (mut lo, mut hi) = (a.tr[s].min(b.tr[s]), a.tr[s].max(b.tr[s]));
+            let r_lo = rate(lo);
+            if !(r_lo.signum() != rate(hi).signum() && hi > lo) {
+                return None;
+            }
+            for _ in 0..EXTREMUM_STEPS {
+                let m = 0.5 * (lo + hi);
+                if rate(m).signum() == r_lo.signum() {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            let u = 0.5 * (lo + hi);
+            let share = (u - a.tr[s]) / (b.tr[s] - a.tr[s]);
+            let lerp = |x: [f64; 2], y: [f64; 2]| {
+                [x[0] + share * (y[0] - x[0]), x[1] + share * (y[1] - x[1])]
+            };
+            let mut guess = lerp(a.tr, b.tr);
+            guess[s] = u;
+            let v = self.snap_keeping(s, guess, lerp(a.xy, b.xy), a.tr, b.tr)?;
+            self.classify(&v).is_err().then_some(v)
+        })
     }
 
     /// A vertex on the axis strictly between two points of the branch off it (feet, point
@@ -439,7 +483,15 @@ impl Branch<'_, '_> {
             return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
         }
         // The tri-tangent disk: where the distance to the entering point equals the radius.
-        let (_, k, u) = self.sites.nearest(out.xy, 0.0);
+        // (The point the disk test proved inside, not the nearest point found: beside a
+        // foot the search may return that foot, within rounding as near.)
+        let (k, u) = match self.sites.disk(out.xy, out.radius) {
+            Disk::Entered(k, u, _) => (k, u),
+            Disk::Empty => {
+                let (_, k, u) = self.sites.nearest(out.xy, 0.0);
+                (k, u)
+            }
+        };
         let entering = self.sites.boundaries[k];
         let third = |v: &Vertex| entering.nearest_near(v.xy, u).distance - v.radius;
         // The bracket's passing end holds the disk empty only to the slack: the root may lie
@@ -496,15 +548,30 @@ impl Branch<'_, '_> {
     /// vertices with feet `p` and `q`): the foot on a segment that moves most between them is
     /// kept, the other solved for; two corners' bisector is the straight line through `near`.
     fn snap(&self, guess: [f64; 2], near: [f64; 2], p: [f64; 2], q: [f64; 2]) -> Option<Vertex> {
-        let c = self.c;
-        let jet =
-            |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_on(c.segment[s], u, 2);
-        let keep = match c.corner {
+        let keep = match self.c.corner {
             [true, true] => return self.vertex(guess, near),
             [true, false] => 1,
             [false, true] => 0,
             [false, false] => usize::from((q[0] - p[0]).abs() < (q[1] - p[1]).abs()),
         };
+        self.snap_keeping(keep, guess, near, p, q)
+    }
+
+    /// [`Self::snap`] with foot `keep` (not a corner's) kept at `guess[keep]`.
+    fn snap_keeping(
+        &self,
+        keep: usize,
+        guess: [f64; 2],
+        near: [f64; 2],
+        p: [f64; 2],
+        q: [f64; 2],
+    ) -> Option<Vertex> {
+        let c = self.c;
+        let jet =
+            |s: usize, u: f64| self.sites.boundaries[c.boundary[s]].jet_on(c.segment[s], u, 2);
+        if c.corner == [true, true] {
+            return self.vertex(guess, near);
+        }
         let other = 1 - keep;
         let jk = jet(keep, guess[keep]);
         let n = jk.d1.perp().unit();
@@ -524,8 +591,20 @@ impl Branch<'_, '_> {
             let x = point_for(jo.p);
             ((x - jo.p).dot(jo.d1) / jo.d1.norm(), x)
         };
+        // Two feet on one boundary have the trivial solution too, both at one point (where
+        // the point is the centre of curvature): beside the feet's meeting the secant falls
+        // into it. Divided by the feet's gap, the function keeps only the other solutions.
+        let one_boundary = c.boundary[0] == c.boundary[1];
+        let reduced = |u: f64| {
+            let v = g(u).0;
+            if one_boundary {
+                v / (u - guess[keep])
+            } else {
+                v
+            }
+        };
         let (mut u0, mut u1) = (lo, hi);
-        let (mut g0, mut g1) = (g(u0).0, g(u1).0);
+        let (mut g0, mut g1) = (reduced(u0), reduced(u1));
         for _ in 0..FOOT_STEPS {
             if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
                 break;
@@ -536,7 +615,7 @@ impl Branch<'_, '_> {
             }
             (u0, g0) = (u1, g1);
             u1 = next;
-            g1 = g(u1).0;
+            g1 = reduced(u1);
         }
         // The secant may leave the bracket a little (a branch bends between its vertices);
         // not far.

@@ -646,3 +646,58 @@ fn a_junction_whose_third_contact_is_on_a_feet_segment() {
     assert_eq!(region.holes().len(), 1);
     check(&region).unwrap();
 }
+
+/// CI's random case: a leaf from a cubic's curvature maximum to a junction, short (1.7e-2)
+/// because the disk at the centre of curvature nearly touches the next segment; the foot
+/// solve beside the feet's meeting fell into the trivial solution (both feet at one point)
+/// and the leaf became a loop at the centre, apart from the rest.
+#[test]
+fn a_short_leaf_from_a_curvature_maximum_reaches_its_junction() {
+    let radii = [
+        1.8035314906715636,
+        1.5098684308198518,
+        1.811428679165584,
+        1.3965996105786107,
+    ];
+    let wobble = [
+        (-0.05, -0.05),
+        (-0.05, -0.05),
+        (-0.05, -0.1681011491931554),
+        (-0.268686652326142, 0.27506893294054613),
+    ];
+    let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
+    let region = Region::new(assemble(segs, 0, false).unwrap(), vec![]).unwrap();
+    check(&region).unwrap();
+    assert_eq!(kinds(&axis(&region), NodeKind::End), 1);
+}
+
+/// The same region with a hole beside that leaf: the leaf meets the hole's bisector with
+/// the cubic at a junction whose disk touches the cubic on both sides of its curvature
+/// maximum. Between them the hole's bisector crosses the evolute and back, off the axis for
+/// a stretch narrower than its polyline's step; it must break there too. (From each
+/// segment: from the third, the disk test's point entering beside the junction is no longer
+/// taken to be the nearest point found, which was the foot itself.)
+#[test]
+fn a_branch_past_the_evolute_between_two_vertices_breaks_at_its_junction() {
+    let radii = [
+        1.8035314906715636,
+        1.5098684308198518,
+        1.811428679165584,
+        1.3965996105786107,
+    ];
+    let wobble = [
+        (-0.05, -0.05),
+        (-0.05, -0.05),
+        (-0.05, -0.1681011491931554),
+        (-0.268686652326142, 0.27506893294054613),
+    ];
+    let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
+    let outer = assemble(segs, 0, false).unwrap();
+    let hole = (
+        [-0.6954968030837503, -0.32210892744741626],
+        0.11131415240713867,
+    );
+    let region = with_holes(outer, &[hole]).unwrap();
+    assert_eq!(region.holes().len(), 1);
+    check(&region).unwrap();
+}

@@ -174,8 +174,9 @@ impl Profile {
         })
     }
 
-    /// The box of segment `i`'s control points, `[lo x, lo y, hi x, hi y]`.
-    pub(crate) fn segment_box(&self, i: usize) -> [f64; 4] {
+    /// The box of segment `i`'s control points, `[lo x, lo y, hi x, hi y]`: it holds the
+    /// segment (its weights are positive).
+    pub fn segment_box(&self, i: usize) -> [f64; 4] {
         self.boxes[i]
     }
 

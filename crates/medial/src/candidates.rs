@@ -2,9 +2,12 @@
 //! and of every pair of boundaries.
 
 use crate::error::Result;
+use crate::pairs::{neighbours, Neighbours};
 use crate::sites::Sites;
 use crate::MedialOptions;
-use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
+use zeroset::{
+    profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
+};
 
 /// The finest chord tolerance the bisectors take (relative to their box's diagonal): the
 /// axis's finest, 1e-9 of the size, scaled to the diagonal may fall below it.
@@ -26,9 +29,12 @@ pub(crate) struct Candidate {
 }
 
 /// Every candidate branch and isolated point, and whether every bisector was complete.
+/// With `prune`, only the bisectors of segments that can share an empty disk are computed
+/// ([`crate::pairs`]); without, every pair's (the tests compare the two).
 pub(crate) fn candidates(
     sites: &Sites<'_>,
     opts: &MedialOptions,
+    prune: bool,
 ) -> Result<(Vec<Candidate>, bool)> {
     // The bisectors' chord tolerance is relative to their own profiles' box diagonal, at
     // most the outer box's; the axis's to the region's max(width, height).
@@ -44,11 +50,17 @@ pub(crate) fn candidates(
     let pairs: Vec<[usize; 2]> = (0..b.len())
         .flat_map(|i| (i..b.len()).map(move |j| [i, j]))
         .collect();
+    let near = if prune {
+        neighbours(sites, root_box(sites))
+    } else {
+        Neighbours::All
+    };
     let bisect = |&[i, j]: &[usize; 2]| {
+        let keep = |s: usize, t: usize| near.keep((i, s), (j, t));
         if i == j {
-            profile_self_bisector(b[i], &bisector_opts)
+            profile_self_bisector_of_pairs(b[i], &bisector_opts, &keep)
         } else {
-            profile_bisector(b[i], b[j], &bisector_opts)
+            profile_bisector_of_pairs(b[i], b[j], &bisector_opts, &keep)
         }
     };
     // (In the pairs' order either way: the output never depends on the threads.)
@@ -67,6 +79,32 @@ pub(crate) fn candidates(
         add(&mut out, found, pair);
     }
     Ok((out, complete))
+}
+
+/// The box the axis lies in: the outer boundary's (inside), or the clip box (outside).
+pub(crate) fn root_box(sites: &Sites<'_>) -> [f64; 4] {
+    if let Some(clip) = sites.clip {
+        return clip;
+    }
+    let outer = sites.boundaries[0];
+    (0..outer.segments().len())
+        .map(|i| outer.segment_box(i))
+        .fold(
+            [
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NEG_INFINITY,
+            ],
+            |a, b| {
+                [
+                    a[0].min(b[0]),
+                    a[1].min(b[1]),
+                    a[2].max(b[2]),
+                    a[3].max(b[3]),
+                ]
+            },
+        )
 }
 
 fn add(out: &mut Vec<Candidate>, found: ProfileBisector, boundary: [usize; 2]) {

@@ -24,6 +24,7 @@ mod assemble;
 mod candidates;
 mod error;
 mod fit;
+mod pairs;
 mod sites;
 mod stretches;
 
@@ -140,6 +141,12 @@ pub struct MedialAxis {
 /// assert_eq!(axis.edges.len(), 5);
 /// ```
 pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
+    axis_of(region, opts, true)
+}
+
+/// The medial axis of `region`, from the bisectors of the pairs of segments that can share
+/// an empty disk (`prune`) or of every pair.
+fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialAxis> {
     let sites = sites::Sites::new(region, opts.exterior);
     let traced = MedialOptions {
         chord_tol: if opts.fit {
@@ -149,7 +156,7 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
         },
         ..*opts
     };
-    let (found, complete) = candidates::candidates(&sites, &traced)?;
+    let (found, complete) = candidates::candidates(&sites, &traced, prune)?;
     let pieces = stretches::stretches(&sites, &found);
     let mut axis = assemble::assemble(&sites, pieces, &found);
     axis.complete &= complete;

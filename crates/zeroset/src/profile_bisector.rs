@@ -91,6 +91,22 @@ enum Site<'a> {
     },
 }
 
+impl Site<'_> {
+    /// The segments the site belongs to: its own, or the two a corner joins.
+    fn segments(&self) -> [usize; 2] {
+        match self {
+            Site::Segment { index, .. } => [*index; 2],
+            Site::Corner { index, before, .. } => [*index, *before],
+        }
+    }
+
+    /// Whether `keep` accepts some segment of this site with some segment of `other`.
+    fn kept_with(&self, other: &Site<'_>, keep: &dyn Fn(usize, usize) -> bool) -> bool {
+        let (a, b) = (self.segments(), other.segments());
+        a.iter().any(|&i| b.iter().any(|&j| keep(i, j)))
+    }
+}
+
 fn sites(p: &Profile) -> Vec<Site<'_>> {
     let segs = p.segments();
     let n = segs.len();
@@ -144,13 +160,28 @@ pub fn profile_bisector(
     b: &Profile,
     opts: &BisectorOptions,
 ) -> Result<ProfileBisector> {
+    profile_bisector_of_pairs(a, b, opts, &|_, _| true)
+}
+
+/// [`profile_bisector`] restricted to the pairs of segments `keep(i, j)` accepts (segment `i`
+/// of `a`, `j` of `b`); a corner counts as each of the two segments it joins. For callers
+/// that have shown which pairs can matter (the medial axis keeps the pairs that can share an
+/// empty disk).
+pub fn profile_bisector_of_pairs(
+    a: &Profile,
+    b: &Profile,
+    opts: &BisectorOptions,
+    keep: &dyn Fn(usize, usize) -> bool,
+) -> Result<ProfileBisector> {
     opts.validate()?;
     let run = Run::new(&[a, b], opts);
     let (sa, sb) = (sites(a), sites(b));
     let mut out = run.empty();
     for s in &sa {
         for t in &sb {
-            run.pair(s, t, false, &mut out)?;
+            if s.kept_with(t, keep) {
+                run.pair(s, t, false, &mut out)?;
+            }
         }
     }
     run.trim(&mut out, [a, b]);
@@ -172,16 +203,32 @@ pub fn profile_bisector(
 /// assert!(b.branches.iter().any(|br| br.corner.contains(&true)));
 /// ```
 pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<ProfileBisector> {
+    profile_self_bisector_of_pairs(p, opts, &|_, _| true)
+}
+
+/// [`profile_self_bisector`] restricted to the pairs of segments `keep(i, j)` accepts (`i ≤
+/// j`; a segment's own bisector is `keep(i, i)`); a corner counts as each of the two
+/// segments it joins.
+pub fn profile_self_bisector_of_pairs(
+    p: &Profile,
+    opts: &BisectorOptions,
+    keep: &dyn Fn(usize, usize) -> bool,
+) -> Result<ProfileBisector> {
     opts.validate()?;
     let run = Run::new(&[p], opts);
     let s = sites(p);
     let mut out = run.empty();
+    let ordered = |i: usize, j: usize| keep(i.min(j), i.max(j));
     for (i, x) in s.iter().enumerate() {
         if let Site::Segment { index, curve } = x {
-            run.segment_self(*index, curve, p, &mut out)?;
+            if keep(*index, *index) {
+                run.segment_self(*index, curve, p, &mut out)?;
+            }
         }
         for y in &s[i + 1..] {
-            run.pair(x, y, true, &mut out)?;
+            if x.kept_with(y, &ordered) {
+                run.pair(x, y, true, &mut out)?;
+            }
         }
     }
     run.trim(&mut out, [p, p]);

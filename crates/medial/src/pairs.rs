@@ -1,0 +1,229 @@
+//! The pairs of boundary segments that can share an empty disk, found before any bisector
+//! is computed: a quadtree over the box the axis lies in keeps, per cell, the segments that
+//! may be nearest to some point of it. A point of the axis has its two feet on segments
+//! that are both nearest to it, so both are kept in its cell; a pair kept in no cell has no
+//! bisector point on the axis.
+
+use crate::sites::{Sites, EMPTY_SLACK};
+use std::collections::HashSet;
+
+/// Below this many segments in all, every pair is computed: the tree costs more than it
+/// saves.
+const FEW_SEGMENTS: usize = 8;
+
+/// Points per segment (evenly in its parameter, ends included) whose farthest distance
+/// from a cell bounds the distance from any point of the cell to the segment from above.
+const SAMPLES: usize = 9;
+
+/// Depth of the quadtree: cells where three or more segments stay nearest (beside a
+/// junction) are halved this often at most.
+const MAX_DEPTH: usize = 10;
+
+/// A segment of a boundary: boundary index and segment index.
+pub(crate) type SegmentId = (usize, usize);
+
+/// The pairs of segments that can share an empty disk.
+pub(crate) enum Neighbours {
+    /// Every pair (few segments).
+    All,
+    /// The pairs kept, each in order (smaller first).
+    Only(HashSet<(SegmentId, SegmentId)>),
+}
+
+impl Neighbours {
+    /// Whether segments `a` and `b` can share an empty disk.
+    pub(crate) fn keep(&self, a: SegmentId, b: SegmentId) -> bool {
+        match self {
+            Neighbours::All => true,
+            Neighbours::Only(pairs) => a == b || pairs.contains(&(a.min(b), a.max(b))),
+        }
+    }
+
+    /// How many pairs of distinct segments are kept (`None`: all).
+    #[cfg(test)]
+    pub(crate) fn count(&self) -> Option<usize> {
+        match self {
+            Neighbours::All => None,
+            Neighbours::Only(pairs) => Some(pairs.len()),
+        }
+    }
+}
+
+/// One segment as the tree sees it: the box holding it and points on it.
+struct Site {
+    id: SegmentId,
+    bounds: [f64; 4],
+    samples: [[f64; 2]; SAMPLES],
+    /// The longest step between two samples: how loose the bound from them can be.
+    step: f64,
+}
+
+/// The pairs of segments of `sites` that can share an empty disk centred in `root` (the box
+/// the axis lies in: the outer boundary's, or the clip box outside).
+pub(crate) fn neighbours(sites: &Sites<'_>, root: [f64; 4]) -> Neighbours {
+    let total: usize = sites.boundaries.iter().map(|b| b.segments().len()).sum();
+    if total < FEW_SEGMENTS {
+        return Neighbours::All;
+    }
+    let all: Vec<Site> = sites
+        .boundaries
+        .iter()
+        .enumerate()
+        .flat_map(|(k, b)| {
+            (0..b.segments().len()).map(move |i| {
+                let samples: [[f64; 2]; SAMPLES] = std::array::from_fn(|j| {
+                    let u = i as f64 + j as f64 / (SAMPLES - 1) as f64;
+                    b.jet_on(i, u, 0).p.arr()
+                });
+                let step = samples
+                    .windows(2)
+                    .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+                    .fold(0.0, f64::max);
+                Site {
+                    id: (k, i),
+                    bounds: b.segment_box(i),
+                    samples,
+                    step,
+                }
+            })
+        })
+        .collect();
+    // The bounds carry rounding of ~1e-16 of the coordinates; a disk empty to the axis's
+    // slack still counts as empty, so a segment that far beyond the nearest is kept.
+    let slack = 2.0 * EMPTY_SLACK * sites.size;
+    let mut pairs = HashSet::new();
+    let mut stack: Vec<([f64; 4], Vec<usize>, usize)> = vec![(root, (0..all.len()).collect(), 0)];
+    // Bounded: each cell is popped once, and only cells above MAX_DEPTH are split.
+    while let Some((cell, parent, depth)) = stack.pop() {
+        let farthest = |p: [f64; 2]| {
+            let dx = (p[0] - cell[0]).abs().max((p[0] - cell[2]).abs());
+            let dy = (p[1] - cell[1]).abs().max((p[1] - cell[3]).abs());
+            dx.hypot(dy)
+        };
+        // Every point of the cell is within `reach` of some segment (its farthest from
+        // the nearest sample); a segment farther than that from the whole cell is nowhere
+        // nearest in it. (Only the parent's: a segment dropped there is farther still.)
+        let reach = parent
+            .iter()
+            .flat_map(|&s| all[s].samples.iter())
+            .map(|&p| farthest(p))
+            .fold(f64::INFINITY, f64::min);
+        let kept: Vec<usize> = parent
+            .into_iter()
+            .filter(|&s| box_gap(cell, all[s].bounds) <= reach + slack)
+            .collect();
+        // A cell smaller than the samples' steps gains nothing by halving: the bound from
+        // the samples is that loose.
+        let step = kept.iter().map(|&s| all[s].step).fold(0.0, f64::max);
+        let diagonal = (cell[2] - cell[0]).hypot(cell[3] - cell[1]);
+        if kept.len() <= 2 || depth == MAX_DEPTH || diagonal < step {
+            for (n, &a) in kept.iter().enumerate() {
+                for &b in &kept[n + 1..] {
+                    let (a, b) = (all[a].id, all[b].id);
+                    pairs.insert((a.min(b), a.max(b)));
+                }
+            }
+            continue;
+        }
+        let mid = [0.5 * (cell[0] + cell[2]), 0.5 * (cell[1] + cell[3])];
+        for q in [
+            [cell[0], cell[1], mid[0], mid[1]],
+            [mid[0], cell[1], cell[2], mid[1]],
+            [cell[0], mid[1], mid[0], cell[3]],
+            [mid[0], mid[1], cell[2], cell[3]],
+        ] {
+            stack.push((q, kept.clone(), depth + 1));
+        }
+    }
+    Neighbours::Only(pairs)
+}
+
+/// The least distance between two boxes `[lo x, lo y, hi x, hi y]`.
+fn box_gap(a: [f64; 4], b: [f64; 4]) -> f64 {
+    let dx = (a[0] - b[2]).max(b[0] - a[2]).max(0.0);
+    let dy = (a[1] - b[3]).max(b[1] - a[3]).max(0.0);
+    dx.hypot(dy)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{axis_of, MedialOptions};
+    use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
+    use proptest::prelude::*;
+
+    /// A closed chain of cubic Béziers round a star (corners at the joints), with round
+    /// holes near its middle where they fit.
+    fn star(radii: &[f64], wobble: &[f64], holes: &[([f64; 2], f64)]) -> Option<Region> {
+        let n = radii.len();
+        let joints: Vec<V2> = (0..n)
+            .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
+            .collect();
+        let segs = (0..n)
+            .map(|i| {
+                let (a, b) = (joints[i], joints[(i + 1) % n]);
+                let w = wobble[i];
+                let pts = [
+                    a.arr(),
+                    (a + (b - a) * 0.3 + (b - a).perp() * w).arr(),
+                    (a + (b - a) * 0.7 - (b - a).perp() * w).arr(),
+                    b.arr(),
+                ];
+                let c = SplineCurve::clamped(3, &pts, None, None).ok()?;
+                Segment::spline(SegmentKind::Bezier, c).ok()
+            })
+            .collect::<Option<Vec<_>>>()?;
+        let outer = Profile::new(segs, None).ok()?;
+        let mut kept = Vec::new();
+        for &(c, r) in holes {
+            let hole = Profile::new(
+                vec![Segment::arc(c, r, 0.0, std::f64::consts::TAU).ok()?],
+                None,
+            )
+            .ok()?;
+            let mut trial = kept.clone();
+            trial.push(hole);
+            if Region::new(outer.clone(), trial.clone()).is_ok() {
+                kept = trial;
+            }
+        }
+        Region::new(outer, kept).ok()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+        /// Pruning changes nothing: the axis from the pairs kept is the axis from every pair.
+        #[test]
+        fn pruned_pairs_give_the_same_axis(
+            radii in proptest::collection::vec(1.0f64..1.6, 16..28),
+            wobble in proptest::collection::vec(-0.15f64..0.15, 28),
+            holes in proptest::collection::vec(([-0.4f64..0.4, -0.4f64..0.4], 0.05f64..0.2), 0..3),
+        ) {
+            let Some(region) = star(&radii, &wobble[..radii.len()], &holes) else {
+                return Ok(());
+            };
+            for exterior in [false, true] {
+                let opts = MedialOptions { exterior, ..Default::default() };
+                let pruned = axis_of(&region, &opts, true).unwrap();
+                let every = axis_of(&region, &opts, false).unwrap();
+                prop_assert_eq!(pruned, every);
+            }
+        }
+    }
+
+    /// The tree keeps fewer pairs than all on a long chain, and every pair it keeps is
+    /// within its reach: a 40-segment star keeps at most a third of its 780 pairs.
+    #[test]
+    fn a_long_chain_keeps_few_pairs() {
+        let radii: Vec<f64> = (0..40)
+            .map(|i| 1.0 + 0.3 * ((i * 7 % 11) as f64 / 11.0))
+            .collect();
+        let region = star(&radii, &[0.05; 40], &[]).unwrap();
+        let sites = Sites::new(&region, false);
+        let kept = neighbours(&sites, crate::candidates::root_box(&sites))
+            .count()
+            .unwrap();
+        assert!(kept > 40 && kept < 780 / 3, "{kept}");
+    }
+}

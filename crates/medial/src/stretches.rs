@@ -11,6 +11,10 @@ use curve::ParamCurve;
 /// to rounding would test disks within rounding of touching it, which bounds cannot decide).
 const BRACKET_STEPS: usize = 32;
 
+/// Halvings of the first, coarse bracket (to 2^-12 of a polyline step): where its tri-tangent
+/// disk proves empty, the junction is found without the rest.
+const COARSE_STEPS: usize = 12;
+
 /// Doublings of the step back from the bracket to where the entering point is outside the
 /// disk (from 2^-32 of a polyline step to all of it).
 const BACK_STEPS: usize = BRACKET_STEPS + 1;
@@ -59,6 +63,15 @@ const EXTREMUM_STEPS: usize = 60;
 
 /// Newton steps of a foot-point solve.
 const FOOT_STEPS: usize = 30;
+
+/// Where a stretch ends, bracketed on its branch: from `lo` (on the axis, at `last`) to `hi`
+/// (off it, at `outside` when the branch has a point there).
+struct Bracket {
+    lo: f64,
+    hi: f64,
+    last: Vertex,
+    outside: Option<Vertex>,
+}
 
 /// A vertex of the axis: its foot parameters, point and radius.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -406,12 +419,27 @@ impl Branch<'_, '_> {
     }
 
     fn feet_part(&self, v: &Vertex) -> bool {
-        v.radius <= EMPTY_SLACK * self.sites.size || self.feet_apart(v) > FEET_APART * v.radius
+        self.at_corner(v) || self.feet_apart(v) > FEET_APART * v.radius
+    }
+
+    /// Whether a vertex is a corner of its boundary (an end of the axis there): of radius
+    /// within the slack, at a joint that is no smooth one (where two segments meet smoothly,
+    /// their bisector reaches the joint at radius 0 too, but the axis does not).
+    fn at_corner(&self, v: &Vertex) -> bool {
+        let slack = EMPTY_SLACK * self.sites.size;
+        v.radius <= slack
+            && self.c.boundary.iter().any(|&k| {
+                let b = self.sites.boundaries[k];
+                b.corners().any(|j| {
+                    let p = b.jet(j.u).p;
+                    (p.x - v.xy[0]).hypot(p.y - v.xy[1]) <= slack
+                })
+            })
     }
 
     fn inside(&self, v: &Vertex) -> bool {
         // A vertex on the boundary (a corner's end of the axis) is inside.
-        if v.radius <= EMPTY_SLACK * self.sites.size {
+        if self.at_corner(v) {
             return true;
         }
         // The side of a segment's foot decides; two corners: their cones.
@@ -423,7 +451,8 @@ impl Branch<'_, '_> {
 
     /// The end of a stretch between its last vertex `from` (on the axis) and the next
     /// vertex's feet `beyond` (off it): bracketed by halving on the exact branch, then solved
-    /// for the disk that also touches the boundary point that enters beyond it.
+    /// for the disk that also touches the boundary point that enters beyond it. A coarse
+    /// bracket is tried first; its solution stands if its disk proves empty.
     fn junction(&self, from: Vertex, beyond: [f64; 2], beyond_xy: [f64; 2]) -> Option<Vertex> {
         let lerp =
             |a: [f64; 2], b: [f64; 2], s: f64| [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
@@ -431,25 +460,30 @@ impl Branch<'_, '_> {
             let guess = lerp(from.tr, beyond, s);
             self.snap(guess, lerp(from.xy, beyond_xy, s), from.tr, beyond)
         };
-        let ok = |v: &Vertex| self.on_axis(v);
-        let (mut lo, mut hi) = (0.0, 1.0);
-        let mut last = from;
-        let mut outside: Option<Vertex> = None;
-        for _ in 0..BRACKET_STEPS {
-            let m = 0.5 * (lo + hi);
-            match at(m) {
-                Some(v) if ok(&v) => {
-                    lo = m;
-                    last = v;
-                }
-                other => {
-                    hi = m;
-                    if other.is_some() {
-                        outside = other;
+        let mut b = Bracket {
+            lo: 0.0,
+            hi: 1.0,
+            last: from,
+            outside: None,
+        };
+        self.halve(&mut b, COARSE_STEPS, &at);
+        if let Some(out) = b.outside {
+            let entered = self.sites.in_clip(out.xy) && self.feet_part(&out);
+            if entered && !self.disk_empty(&out) {
+                if let Some(v) = self.tri_tangent(from, &b, out, &at) {
+                    if v.tr != b.last.tr && self.on_axis(&v) {
+                        return Some(v);
                     }
                 }
             }
         }
+        self.halve(&mut b, BRACKET_STEPS - COARSE_STEPS, &at);
+        let Bracket {
+            mut lo,
+            mut hi,
+            mut last,
+            outside,
+        } = b;
         let feet_meet_beyond = self
             .vertex(beyond, beyond_xy)
             .is_some_and(|v| !self.feet_part(&v));
@@ -482,7 +516,45 @@ impl Branch<'_, '_> {
             // circle osculates it there, so the feet, not the disk, decide.)
             return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
         }
-        // The tri-tangent disk: where the distance to the entering point equals the radius.
+        let b = Bracket {
+            lo,
+            hi,
+            last,
+            outside,
+        };
+        self.tri_tangent(from, &b, out, &at)
+            .or_else(|| (lo > 0.0).then_some(last))
+    }
+
+    /// Halves the bracket `steps` times: its low end stays on the axis, its high end off it.
+    fn halve(&self, b: &mut Bracket, steps: usize, at: &dyn Fn(f64) -> Option<Vertex>) {
+        for _ in 0..steps {
+            let m = 0.5 * (b.lo + b.hi);
+            match at(m) {
+                Some(v) if self.on_axis(&v) => {
+                    b.lo = m;
+                    b.last = v;
+                }
+                other => {
+                    b.hi = m;
+                    if other.is_some() {
+                        b.outside = other;
+                    }
+                }
+            }
+        }
+    }
+
+    /// The tri-tangent disk in bracket `b` (from the stretch's last vertex `from`; `out` its
+    /// high end, entered): where the distance to the entering point equals the radius.
+    fn tri_tangent(
+        &self,
+        from: Vertex,
+        b: &Bracket,
+        out: Vertex,
+        at: &dyn Fn(f64) -> Option<Vertex>,
+    ) -> Option<Vertex> {
+        let (lo, hi, last) = (b.lo, b.hi, b.last);
         // (The point the disk test proved inside, not the nearest point found: beside a
         // foot the search may return that foot, within rounding as near.)
         let (k, u) = match self.sites.disk(out.xy, out.radius) {
@@ -519,7 +591,7 @@ impl Branch<'_, '_> {
             fa = third(&best);
         }
         if !(fa >= 0.0 && fb < 0.0) {
-            return (lo > 0.0).then_some(last);
+            return None;
         }
         for _ in 0..SECANT_STEPS {
             // Regula falsi with the Illinois rule: the bracket always holds the root.

@@ -36,6 +36,7 @@ mod profile;
 mod region;
 mod segment;
 pub mod shapes;
+mod spans;
 mod spline;
 
 pub use affine::Affine;
@@ -50,4 +51,5 @@ pub use plane::{Exact, Local, PlaneCurve};
 pub use profile::{Joint, JointKind, Profile, CORNER_TURN, JOIN_GAP};
 pub use region::Region;
 pub use segment::{Segment, SegmentKind};
+pub use spans::SpanOf;
 pub use spline::{rational_derivs, SplineCurve, StraightSpan};

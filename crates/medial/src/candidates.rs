@@ -2,9 +2,10 @@
 //! and of every pair of boundaries.
 
 use crate::error::Result;
-use crate::pairs::{neighbours, Neighbours};
+use crate::pairs::{neighbours, Neighbours, FEW_SEGMENTS};
 use crate::sites::Sites;
 use crate::MedialOptions;
+use curve::{Profile, SegmentKind, SpanOf};
 use zeroset::{
     profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
 };
@@ -46,12 +47,23 @@ pub(crate) fn candidates(
         ..BisectorOptions::default()
     };
     bisector_opts.validate()?;
-    let b = &sites.boundaries;
+    // Spline segments of several spans are cut at their knots: the pairs of spans that
+    // cannot share an empty disk are then skipped too.
+    // (Only where the pieces are then many enough to prune: below that, one bisector of a
+    // whole spline costs less than those of all its pairs of spans.)
+    let count: usize = sites.boundaries.iter().map(|b| spans_of(b)).sum();
+    let cut = count >= FEW_SEGMENTS;
+    let pieces: Vec<Pieces<'_>> = sites
+        .boundaries
+        .iter()
+        .map(|b| Pieces::of(b, cut))
+        .collect();
+    let b: Vec<&Profile> = pieces.iter().map(|p| p.profile()).collect();
     let pairs: Vec<[usize; 2]> = (0..b.len())
         .flat_map(|i| (i..b.len()).map(move |j| [i, j]))
         .collect();
     let near = if prune {
-        neighbours(sites, root_box(sites))
+        neighbours(&b, sites.size, root_box(sites))
     } else {
         Neighbours::All
     };
@@ -76,7 +88,7 @@ pub(crate) fn candidates(
     for (pair, found) in pairs.into_iter().zip(found) {
         let found = found?;
         complete &= found.complete;
-        add(&mut out, found, pair);
+        add(&mut out, found, pair, [&pieces[pair[0]], &pieces[pair[1]]]);
     }
     Ok((out, complete))
 }
@@ -107,24 +119,82 @@ pub(crate) fn root_box(sites: &Sites<'_>) -> [f64; 4] {
         )
 }
 
-fn add(out: &mut Vec<Candidate>, found: ProfileBisector, boundary: [usize; 2]) {
+/// How many pieces `p` has cut at its knots (as [`Profile::split_at_knots`] cuts it).
+fn spans_of(p: &Profile) -> usize {
+    p.segments()
+        .iter()
+        .map(|s| match s.kind() {
+            SegmentKind::Bezier | SegmentKind::BSpline => {
+                s.curve().curve().homogeneous().breakpoints().len().max(2) - 1
+            }
+            _ => 1,
+        })
+        .sum()
+}
+
+/// A boundary as its bisectors are computed on: itself, or cut at its spline knots with
+/// where each span lies on it.
+struct Pieces<'a> {
+    whole: &'a Profile,
+    cut: Option<(Profile, Vec<SpanOf>)>,
+}
+
+impl<'a> Pieces<'a> {
+    /// `p`, with `cut` cut at its knots (left whole where nothing is cut, or where the cut
+    /// profile is refused: a span of no length).
+    fn of(p: &'a Profile, cut: bool) -> Self {
+        Self {
+            whole: p,
+            cut: cut.then(|| p.split_at_knots().ok().flatten()).flatten(),
+        }
+    }
+
+    fn profile(&self) -> &Profile {
+        self.cut.as_ref().map_or(self.whole, |(p, _)| p)
+    }
+
+    /// The segment and profile parameter on the boundary of parameter `w` on segment `i`
+    /// of the profile the bisectors were computed on.
+    fn on_boundary(&self, i: usize, w: f64) -> (usize, f64) {
+        match &self.cut {
+            None => (i, w),
+            Some((_, spans)) => (spans[i].segment, spans[i].param(i, w)),
+        }
+    }
+}
+
+fn add(
+    out: &mut Vec<Candidate>,
+    found: ProfileBisector,
+    boundary: [usize; 2],
+    pieces: [&Pieces<'_>; 2],
+) {
+    // Back on the boundaries: segments and parameters of the spans' profiles mapped.
+    let map = |segment: [usize; 2], tr: [f64; 2]| {
+        let (s0, t) = pieces[0].on_boundary(segment[0], tr[0]);
+        let (s1, r) = pieces[1].on_boundary(segment[1], tr[1]);
+        ([s0, s1], [t, r])
+    };
     for br in found.branches {
+        let segment = map(br.segment, [0.0; 2]).0;
+        let tr = br.tr.iter().map(|&tr| map(br.segment, tr).1).collect();
         out.push(Candidate {
             boundary,
-            segment: br.segment,
+            segment,
             corner: br.corner,
-            tr: br.tr,
+            tr,
             xy: br.xy,
         });
     }
     // Isolated points (the centre of an arc, of arcs of one circle): single-vertex
     // candidates, nodes of their own where no edge reaches them (a disk).
     for p in found.isolated {
+        let (segment, tr) = map(p.segment, p.tr);
         out.push(Candidate {
             boundary,
-            segment: p.segment,
+            segment,
             corner: p.corner,
-            tr: vec![p.tr],
+            tr: vec![tr],
             xy: vec![p.xy],
         });
     }

@@ -4,16 +4,21 @@
 //! that are both nearest to it, so both are kept in its cell; a pair kept in no cell has no
 //! bisector point on the axis.
 
-use crate::sites::{Sites, EMPTY_SLACK};
+use crate::sites::EMPTY_SLACK;
+use curve::{ParamCurve, Profile};
 use std::collections::HashSet;
 
 /// Below this many segments in all, every pair is computed: the tree costs more than it
 /// saves.
-const FEW_SEGMENTS: usize = 8;
+pub(crate) const FEW_SEGMENTS: usize = 8;
 
 /// Points per segment (evenly in its parameter, ends included) whose farthest distance
 /// from a cell bounds the distance from any point of the cell to the segment from above.
 const SAMPLES: usize = 9;
+
+/// The longest run of consecutive segments of one boundary a cell keeps without halving:
+/// a segment and its two neighbours.
+const RUN: usize = 3;
 
 /// Depth of the quadtree: cells where three or more segments stay nearest (beside a
 /// junction) are halved this often at most.
@@ -58,15 +63,15 @@ struct Site {
     step: f64,
 }
 
-/// The pairs of segments of `sites` that can share an empty disk centred in `root` (the box
-/// the axis lies in: the outer boundary's, or the clip box outside).
-pub(crate) fn neighbours(sites: &Sites<'_>, root: [f64; 4]) -> Neighbours {
-    let total: usize = sites.boundaries.iter().map(|b| b.segments().len()).sum();
+/// The pairs of segments of `boundaries` that can share an empty disk centred in `root` (the
+/// box the axis lies in: the outer boundary's, or the clip box outside); `size` is the
+/// region's.
+pub(crate) fn neighbours(boundaries: &[&Profile], size: f64, root: [f64; 4]) -> Neighbours {
+    let total: usize = boundaries.iter().map(|b| b.segments().len()).sum();
     if total < FEW_SEGMENTS {
         return Neighbours::All;
     }
-    let all: Vec<Site> = sites
-        .boundaries
+    let all: Vec<Site> = boundaries
         .iter()
         .enumerate()
         .flat_map(|(k, b)| {
@@ -90,7 +95,7 @@ pub(crate) fn neighbours(sites: &Sites<'_>, root: [f64; 4]) -> Neighbours {
         .collect();
     // The bounds carry rounding of ~1e-16 of the coordinates; a disk empty to the axis's
     // slack still counts as empty, so a segment that far beyond the nearest is kept.
-    let slack = 2.0 * EMPTY_SLACK * sites.size;
+    let slack = 2.0 * EMPTY_SLACK * size;
     let mut pairs = HashSet::new();
     let mut stack: Vec<([f64; 4], Vec<usize>, usize)> = vec![(root, (0..all.len()).collect(), 0)];
     // Bounded: each cell is popped once, and only cells above MAX_DEPTH are split.
@@ -103,20 +108,36 @@ pub(crate) fn neighbours(sites: &Sites<'_>, root: [f64; 4]) -> Neighbours {
         // Every point of the cell is within `reach` of some segment (its farthest from
         // the nearest sample); a segment farther than that from the whole cell is nowhere
         // nearest in it. (Only the parent's: a segment dropped there is farther still.)
-        let reach = parent
-            .iter()
-            .flat_map(|&s| all[s].samples.iter())
-            .map(|&p| farthest(p))
-            .fold(f64::INFINITY, f64::min);
-        let kept: Vec<usize> = parent
+        // Nearest boxes first: a segment whose box is beyond the reach so far has no sample
+        // nearer.
+        let mut gaps: Vec<(f64, usize)> = parent
             .into_iter()
-            .filter(|&s| box_gap(cell, all[s].bounds) <= reach + slack)
+            .map(|s| (box_gap(cell, all[s].bounds), s))
             .collect();
+        gaps.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut reach = f64::INFINITY;
+        for &(gap, s) in &gaps {
+            if gap > reach {
+                break;
+            }
+            reach = all[s]
+                .samples
+                .iter()
+                .map(|&p| farthest(p))
+                .fold(reach, f64::min);
+        }
+        let mut kept: Vec<usize> = gaps
+            .iter()
+            .take_while(|(gap, _)| *gap <= reach + slack)
+            .map(|&(_, s)| s)
+            .collect();
+        kept.sort_unstable();
         // A cell smaller than the samples' steps gains nothing by halving: the bound from
         // the samples is that loose.
         let step = kept.iter().map(|&s| all[s].step).fold(0.0, f64::max);
         let diagonal = (cell[2] - cell[0]).hypot(cell[3] - cell[1]);
-        if kept.len() <= 2 || depth == MAX_DEPTH || diagonal < step {
+        let run = kept.len() <= RUN && one_run(&kept, &all, boundaries);
+        if kept.len() <= 2 || run || depth == MAX_DEPTH || diagonal < step {
             for (n, &a) in kept.iter().enumerate() {
                 for &b in &kept[n + 1..] {
                     let (a, b) = (all[a].id, all[b].id);
@@ -136,6 +157,22 @@ pub(crate) fn neighbours(sites: &Sites<'_>, root: [f64; 4]) -> Neighbours {
         }
     }
     Neighbours::Only(pairs)
+}
+
+/// Whether `kept` are consecutive segments of one boundary (round its seam where closed):
+/// beside a smooth boundary a segment's neighbours stay within the samples' looseness of
+/// it, so halving on cannot drop them; their pairs are all kept.
+fn one_run(kept: &[usize], all: &[Site], boundaries: &[&Profile]) -> bool {
+    let k = all[kept[0]].id.0;
+    if kept.iter().any(|&s| all[s].id.0 != k) {
+        return false;
+    }
+    let n = boundaries[k].segments().len();
+    let mut segs: Vec<usize> = kept.iter().map(|&s| all[s].id.1).collect();
+    segs.sort_unstable();
+    let gaps = segs.windows(2).filter(|w| w[1] != w[0] + 1).count();
+    let wraps = boundaries[k].is_closed() && segs[0] == 0 && segs[segs.len() - 1] == n - 1;
+    gaps == 0 || (gaps == 1 && wraps)
 }
 
 /// The least distance between two boxes `[lo x, lo y, hi x, hi y]`.
@@ -190,8 +227,34 @@ mod tests {
         Region::new(outer, kept).ok()
     }
 
+    /// A closed cubic B-spline through control points round a star, clamped (one segment
+    /// of many spans, cut at its knots for the bisectors).
+    fn spline_star(radii: &[f64]) -> Option<Region> {
+        let n = radii.len();
+        let pts: Vec<[f64; 2]> = (0..n)
+            .map(|i| (V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i]).arr())
+            .collect();
+        let periodic = SplineCurve::periodic(3, &pts, None).ok()?;
+        let (a, b) = curve::ParamCurve::domain(&periodic);
+        let clamped = SplineCurve::new(periodic.curve().restrict(a, b).ok()?).ok()?;
+        let seg = Segment::spline(SegmentKind::BSpline, clamped).ok()?;
+        Region::new(Profile::new(vec![seg], Some(true)).ok()?, vec![]).ok()
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+        /// The same on one B-spline of many spans, cut at its knots.
+        #[test]
+        fn pruned_pairs_of_spans_give_the_same_axis(
+            radii in proptest::collection::vec(1.0f64..1.6, 10..24),
+        ) {
+            let Some(region) = spline_star(&radii) else { return Ok(()) };
+            let opts = MedialOptions::default();
+            let pruned = axis_of(&region, &opts, true).unwrap();
+            let every = axis_of(&region, &opts, false).unwrap();
+            prop_assert_eq!(pruned, every);
+        }
 
         /// Pruning changes nothing: the axis from the pairs kept is the axis from every pair.
         #[test]
@@ -220,8 +283,9 @@ mod tests {
             .map(|i| 1.0 + 0.3 * ((i * 7 % 11) as f64 / 11.0))
             .collect();
         let region = star(&radii, &[0.05; 40], &[]).unwrap();
-        let sites = Sites::new(&region, false);
-        let kept = neighbours(&sites, crate::candidates::root_box(&sites))
+        let sites = crate::sites::Sites::new(&region, false);
+        let root = crate::candidates::root_box(&sites);
+        let kept = neighbours(&sites.boundaries, sites.size, root)
             .count()
             .unwrap();
         assert!(kept > 40 && kept < 780 / 3, "{kept}");

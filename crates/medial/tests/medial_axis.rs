@@ -609,6 +609,45 @@ proptest! {
     }
 }
 
+/// A closed cubic B-spline (NURBS with `weights`) through control points round a star at
+/// `radii`, clamped from its periodic form as the readers do.
+fn closed_spline(radii: &[f64], weights: Option<&[f64]>) -> Option<Profile> {
+    let n = radii.len();
+    let pts: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let a = TAU * i as f64 / n as f64;
+            [radii[i] * a.cos(), radii[i] * a.sin()]
+        })
+        .collect();
+    let periodic = curve::SplineCurve::periodic(3, &pts, weights).ok()?;
+    let (a, b) = periodic.domain();
+    let clamped = curve::SplineCurve::new(periodic.curve().restrict(a, b).ok()?).ok()?;
+    let seg = Segment::spline(curve::SegmentKind::BSpline, clamped).ok()?;
+    Profile::new(vec![seg], Some(true)).ok()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(8), ..ProptestConfig::default() })]
+
+    /// Smooth closed B-splines and NURBS of 8 to 24 spans (cut at their knots, pairs of
+    /// spans pruned), with holes. Not yet right: about one in five loses an edge (a blob of
+    /// 9 control points at radii 1.05 to 1.49, no hole, gives two separate edges between
+    /// four curvature-maximum ends; wigglier ones break a hole's cycle), with or without
+    /// the cut and the pruning; see the README.
+    #[test]
+    #[ignore = "known gap: random closed B-splines lose an edge about one time in five"]
+    fn closed_splines_match_the_oracle(
+        radii in proptest::collection::vec(1.0f64..2.0, 8..24),
+        weights in proptest::option::of(proptest::collection::vec(0.5f64..2.0, 24)),
+        holes in proptest::collection::vec(hole(), 0..3),
+    ) {
+        let w = weights.as_ref().map(|w| &w[..radii.len()]);
+        let Some(p) = closed_spline(&radii, w) else { return Ok(()) };
+        let Some(region) = with_holes(p, &holes) else { return Ok(()) };
+        check(&region)?;
+    }
+}
+
 /// Runs the properties and checks they are not vacuous: medial points found by the oracle,
 /// regions with holes.
 #[test]

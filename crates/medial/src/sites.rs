@@ -33,6 +33,9 @@ pub(crate) struct Sites<'a> {
     exterior: bool,
     /// The box the exterior axis is clipped to, `[lo x, lo y, hi x, hi y]`.
     pub(crate) clip: Option<[f64; 4]>,
+    /// Per boundary, the profile parameters where its pieces start (segments, and the knot
+    /// spans of spline segments), in order.
+    piece_starts: Vec<Vec<f64>>,
     /// max(width, height) of the region's box, the scale of the relative tolerances.
     pub(crate) size: f64,
     /// The diagonal of that box.
@@ -76,14 +79,43 @@ impl<'a> Sites<'a> {
         }
         let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
         let grow = CLIP_GROWTH * size;
+        let piece_starts = boundaries
+            .iter()
+            .map(|b| {
+                b.segments()
+                    .iter()
+                    .enumerate()
+                    .flat_map(|(i, seg)| {
+                        let knots = seg.curve().curve().homogeneous().breakpoints();
+                        let last = knots.len().saturating_sub(1).max(1);
+                        let inner: Vec<f64> = knots[..last.min(knots.len())]
+                            .iter()
+                            .map(|&v| b.profile_param(i, v))
+                            .collect();
+                        if inner.is_empty() {
+                            vec![i as f64]
+                        } else {
+                            inner
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
         Self {
             boundaries,
+            piece_starts,
             inside_left,
             exterior,
             clip: exterior.then_some([lo[0] - grow, lo[1] - grow, hi[0] + grow, hi[1] + grow]),
             size,
             diagonal: (hi[0] - lo[0]).hypot(hi[1] - lo[1]),
         }
+    }
+
+    /// The piece of boundary `k` holding profile parameter `u` (its index in order).
+    pub(crate) fn piece_of(&self, k: usize, u: f64) -> usize {
+        let starts = &self.piece_starts[k];
+        starts.partition_point(|&s| s <= u).max(1) - 1
     }
 
     /// The boundary point at profile parameter `u` of boundary `b`.

@@ -277,9 +277,11 @@ impl Branch<'_, '_> {
         self.site_of(k, u)
     }
 
-    /// The site holding profile parameter `u` of boundary `k`: boundary and segment.
+    /// The site holding profile parameter `u` of boundary `k`: boundary and piece (a
+    /// segment, or a knot span of a spline segment: on a boundary of one long spline, the
+    /// sites entering two disks differ where their pieces do).
     fn site_of(&self, k: usize, u: f64) -> (usize, usize) {
-        (k, self.sites.boundaries[k].locate(u).0)
+        (k, self.sites.piece_of(k, u))
     }
 
     /// Whether a vertex lies on the axis, or else the site that keeps it off: one entering

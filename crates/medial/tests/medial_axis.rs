@@ -630,12 +630,11 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: cases(8), ..ProptestConfig::default() })]
 
     /// Smooth closed B-splines and NURBS of 8 to 24 spans (cut at their knots, pairs of
-    /// spans pruned), with holes. Not yet right: about one in five loses an edge (a blob of
-    /// 9 control points at radii 1.05 to 1.49, no hole, gives two separate edges between
-    /// four curvature-maximum ends; wigglier ones break a hole's cycle), with or without
-    /// the cut and the pruning; see the README.
+    /// spans pruned), with holes. Not yet passing: beside the ends at curvature maxima,
+    /// where the disks osculate the boundary, vertices are off by up to 3e-8 of the size
+    /// (the oracle's distance or the disk test there, not yet told apart); see the README.
     #[test]
-    #[ignore = "known gap: random closed B-splines lose an edge about one time in five"]
+    #[ignore = "known gap: closed B-splines fail near their ends at curvature maxima"]
     fn closed_splines_match_the_oracle(
         radii in proptest::collection::vec(1.0f64..2.0, 8..24),
         weights in proptest::option::of(proptest::collection::vec(0.5f64..2.0, 24)),
@@ -735,6 +734,66 @@ fn a_branch_past_the_evolute_between_two_vertices_breaks_at_its_junction() {
     let hole = (
         [-0.6954968030837503, -0.32210892744741626],
         0.11131415240713867,
+    );
+    let region = with_holes(outer, &[hole]).unwrap();
+    assert_eq!(region.holes().len(), 1);
+    check(&region).unwrap();
+}
+
+/// A random closed cubic B-spline of 9 control points (one segment, no hole): the short
+/// edge joining its two junctions lies between two polyline vertices of its candidates, off
+/// the axis and entered by the same segment; the search for such hidden stretches compared
+/// the entering sites by segment, never different on a one-segment boundary. They are now
+/// compared by piece (knot span).
+#[test]
+fn a_short_edge_hidden_between_vertices_of_one_spline_is_found() {
+    let radii = [
+        1.0511224093873475,
+        1.463754729345834,
+        1.1463382143957017,
+        1.321236160285634,
+        1.460932873881018,
+        1.1117222968797171,
+        1.492016295106644,
+        1.079719207003536,
+        1.3076141591901762,
+    ];
+    let region = Region::new(closed_spline(&radii, None).unwrap(), vec![]).unwrap();
+    check(&region).unwrap();
+    assert_eq!(kinds(&axis(&region), NodeKind::Junction), 2);
+}
+
+/// The same fault on a wiggly one (21 control points at radii 1 to 2) with a hole: the
+/// hole's cycle was broken.
+#[test]
+fn a_hole_in_a_wiggly_spline_keeps_its_cycle() {
+    let radii = [
+        1.334036682899554,
+        1.5532322141124781,
+        1.3077706286700195,
+        1.0727873833733816,
+        1.8171124553644258,
+        1.2430148004209336,
+        1.9938213721982099,
+        1.0235893733004309,
+        1.4460635228037888,
+        1.7743089183678753,
+        1.7397035472896019,
+        1.3297734094239446,
+        1.0484726029267986,
+        1.9687424541153078,
+        1.8509699072228802,
+        1.5731909743782515,
+        1.8382137487092314,
+        1.0974106481374195,
+        1.6387158143762734,
+        1.5202080736959023,
+        1.9952582250289026,
+    ];
+    let outer = closed_spline(&radii, None).unwrap();
+    let hole = (
+        [0.17990307859668112, 0.548683511017336],
+        0.13434422286911718,
     );
     let region = with_holes(outer, &[hole]).unwrap();
     assert_eq!(region.holes().len(), 1);

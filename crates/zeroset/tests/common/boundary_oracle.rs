@@ -5,7 +5,7 @@
 
 use curve::{ParamCurve, Profile};
 
-/// Samples per segment of the oracle's distance.
+/// Samples per segment (per knot span of a spline segment) of the oracle's distance.
 const PER_SEGMENT: usize = 300;
 
 /// Dense samples of a profile with their parameters.
@@ -19,8 +19,17 @@ pub struct Oracle<'a> {
 impl<'a> Oracle<'a> {
     pub fn new(p: &'a Profile) -> Self {
         let n = p.segments().len();
-        let u: Vec<f64> = (0..n * PER_SEGMENT)
-            .map(|k| k as f64 / PER_SEGMENT as f64)
+        // (A closed spline read as one segment has many spans: as densely sampled as so
+        // many segments, so that two minima close together have samples between them.)
+        let u: Vec<f64> = p
+            .segments()
+            .iter()
+            .enumerate()
+            .flat_map(|(i, s)| {
+                let spans = s.curve().curve().homogeneous().breakpoints().len().max(2) - 1;
+                let m = PER_SEGMENT * spans;
+                (0..m).map(move |k| i as f64 + k as f64 / m as f64)
+            })
             .chain([n as f64])
             .collect();
         let pts = u.iter().map(|&u| p.jet(u).p.arr()).collect();

@@ -28,6 +28,21 @@ impl SpanOf {
     }
 }
 
+impl Segment {
+    /// The segment's own parameters where its pieces begin and end, in order: a spline
+    /// segment's distinct knots over its domain, a line's or an arc's ends (kept whole).
+    pub fn piece_breaks(&self) -> Vec<f64> {
+        let knots = self.curve().curve().homogeneous().breakpoints();
+        match self.kind() {
+            SegmentKind::Bezier | SegmentKind::BSpline if knots.len() > 2 => knots,
+            _ => {
+                let (a, b) = self.curve().domain();
+                vec![a, b]
+            }
+        }
+    }
+}
+
 impl Profile {
     /// The profile with every spline segment of several spans cut at its knots into those
     /// spans (the same curve, each span a Bézier segment), and where each span lies on this
@@ -45,10 +60,7 @@ impl Profile {
     /// assert!((spans[1].param(1, 1.5) - 0.5).abs() < 1e-15);
     /// ```
     pub fn split_at_knots(&self) -> Result<Option<(Profile, Vec<SpanOf>)>> {
-        let splits = |s: &Segment| {
-            matches!(s.kind(), SegmentKind::Bezier | SegmentKind::BSpline)
-                && s.curve().curve().homogeneous().breakpoints().len() > 2
-        };
+        let splits = |s: &Segment| s.piece_breaks().len() > 2;
         if !self.segments().iter().any(splits) {
             return Ok(None);
         }
@@ -64,8 +76,7 @@ impl Profile {
                 });
                 continue;
             }
-            let knots = s.curve().curve().homogeneous().breakpoints();
-            for w in knots.windows(2) {
+            for w in s.piece_breaks().windows(2) {
                 let piece = SplineCurve::new(s.curve().curve().restrict(w[0], w[1])?)?;
                 segments.push(Segment::spline(SegmentKind::Bezier, piece)?);
                 spans.push(SpanOf {

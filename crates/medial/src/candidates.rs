@@ -1,11 +1,12 @@
-//! The candidates the axis is cut from: the untrimmed bisector of every boundary with itself
-//! and of every pair of boundaries.
+//! The candidates the axis is cut from: the untrimmed bisectors of the pairs of boundary
+//! pieces (segments, spline segments cut at their knots, corners) that can share an empty
+//! disk.
 
 use crate::error::Result;
 use crate::pairs::{neighbours, Neighbours, FEW_SEGMENTS};
 use crate::sites::Sites;
 use crate::MedialOptions;
-use curve::{Profile, SegmentKind, SpanOf};
+use curve::{Profile, SpanOf};
 use zeroset::{
     profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
 };
@@ -123,12 +124,7 @@ pub(crate) fn root_box(sites: &Sites<'_>) -> [f64; 4] {
 fn spans_of(p: &Profile) -> usize {
     p.segments()
         .iter()
-        .map(|s| match s.kind() {
-            SegmentKind::Bezier | SegmentKind::BSpline => {
-                s.curve().curve().homogeneous().breakpoints().len().max(2) - 1
-            }
-            _ => 1,
-        })
+        .map(|s| s.piece_breaks().len() - 1)
         .sum()
 }
 

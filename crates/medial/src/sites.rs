@@ -86,17 +86,12 @@ impl<'a> Sites<'a> {
                     .iter()
                     .enumerate()
                     .flat_map(|(i, seg)| {
-                        let knots = seg.curve().curve().homogeneous().breakpoints();
-                        let last = knots.len().saturating_sub(1).max(1);
-                        let inner: Vec<f64> = knots[..last.min(knots.len())]
+                        let breaks = seg.piece_breaks();
+                        let starts = &breaks[..breaks.len() - 1];
+                        starts
                             .iter()
                             .map(|&v| b.profile_param(i, v))
-                            .collect();
-                        if inner.is_empty() {
-                            vec![i as f64]
-                        } else {
-                            inner
-                        }
+                            .collect::<Vec<_>>()
                     })
                     .collect()
             })

@@ -96,28 +96,7 @@ pub(crate) fn candidates(
 
 /// The box the axis lies in: the outer boundary's (inside), or the clip box (outside).
 pub(crate) fn root_box(sites: &Sites<'_>) -> [f64; 4] {
-    if let Some(clip) = sites.clip {
-        return clip;
-    }
-    let outer = sites.boundaries[0];
-    (0..outer.segments().len())
-        .map(|i| outer.segment_box(i))
-        .fold(
-            [
-                f64::INFINITY,
-                f64::INFINITY,
-                f64::NEG_INFINITY,
-                f64::NEG_INFINITY,
-            ],
-            |a, b| {
-                [
-                    a[0].min(b[0]),
-                    a[1].min(b[1]),
-                    a[2].max(b[2]),
-                    a[3].max(b[3]),
-                ]
-            },
-        )
+    sites.clip.unwrap_or(sites.outer_box)
 }
 
 /// How many pieces `p` has cut at its knots (as [`Profile::split_at_knots`] cuts it).

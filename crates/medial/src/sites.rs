@@ -33,6 +33,8 @@ pub(crate) struct Sites<'a> {
     exterior: bool,
     /// The box the exterior axis is clipped to, `[lo x, lo y, hi x, hi y]`.
     pub(crate) clip: Option<[f64; 4]>,
+    /// The box of the outer boundary's control points (it holds the region).
+    pub(crate) outer_box: [f64; 4],
     /// Per boundary, the profile parameters where its pieces start (segments, and the knot
     /// spans of spline segments), in order.
     piece_starts: Vec<Vec<f64>>,
@@ -102,6 +104,7 @@ impl<'a> Sites<'a> {
             inside_left,
             exterior,
             clip: exterior.then_some([lo[0] - grow, lo[1] - grow, hi[0] + grow, hi[1] + grow]),
+            outer_box: [lo[0], lo[1], hi[0], hi[1]],
             size,
             diagonal: (hi[0] - lo[0]).hypot(hi[1] - lo[1]),
         }

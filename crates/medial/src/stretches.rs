@@ -64,6 +64,20 @@ const EXTREMUM_STEPS: usize = 60;
 /// Newton steps of a foot-point solve.
 const FOOT_STEPS: usize = 30;
 
+/// Where `f` changes sign between `a` and `b` (of different signs), by halving.
+fn sign_change(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let fa = f(a).signum();
+    for _ in 0..EXTREMUM_STEPS {
+        let m = 0.5 * (a + b);
+        if f(m).signum() == fa {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
 /// Where a stretch ends, bracketed on its branch: from `lo` (on the axis, at `last`) to `hi`
 /// (off it, at `outside` when the branch has a point there).
 struct Bracket {
@@ -216,20 +230,11 @@ impl Branch<'_, '_> {
         (0..2).filter(|&s| !c.corner[s]).find_map(|s| {
             let boundary = self.sites.boundaries[c.boundary[s]];
             let rate = |u: f64| boundary.jet_on(c.segment[s], u, 3).curvature_rate();
-            let (mut lo, mut hi) = (a.tr[s].min(b.tr[s]), a.tr[s].max(b.tr[s]));
-            let r_lo = rate(lo);
-            if !(r_lo.signum() != rate(hi).signum() && hi > lo) {
+            let (lo, hi) = (a.tr[s].min(b.tr[s]), a.tr[s].max(b.tr[s]));
+            if !(rate(lo).signum() != rate(hi).signum() && hi > lo) {
                 return None;
             }
-            for _ in 0..EXTREMUM_STEPS {
-                let m = 0.5 * (lo + hi);
-                if rate(m).signum() == r_lo.signum() {
-                    lo = m;
-                } else {
-                    hi = m;
-                }
-            }
-            let u = 0.5 * (lo + hi);
+            let u = sign_change(&rate, lo, hi);
             let share = (u - a.tr[s]) / (b.tr[s] - a.tr[s]);
             let lerp = |x: [f64; 2], y: [f64; 2]| {
                 [x[0] + share * (y[0] - x[0]), x[1] + share * (y[1] - x[1])]
@@ -354,17 +359,8 @@ impl Branch<'_, '_> {
         if window.is_some_and(|(a, b)| across_corner(a, b)) {
             return None;
         }
-        let (s, u, j) = if let Some((mut a, mut b)) = window {
-            let ra = rate(a);
-            for _ in 0..EXTREMUM_STEPS {
-                let m = 0.5 * (a + b);
-                if rate(m).signum() == ra.signum() {
-                    a = m;
-                } else {
-                    b = m;
-                }
-            }
-            let u = (0.5 * (a + b)).rem_euclid(n);
+        let (s, u, j) = if let Some((a, b)) = window {
+            let u = sign_change(&rate, a, b).rem_euclid(n);
             (0, u, boundary.jet(u))
         } else {
             let s = if c.corner[0] {

@@ -691,20 +691,7 @@ fn a_junction_whose_third_contact_is_on_a_feet_segment() {
 /// and the leaf became a loop at the centre, apart from the rest.
 #[test]
 fn a_short_leaf_from_a_curvature_maximum_reaches_its_junction() {
-    let radii = [
-        1.8035314906715636,
-        1.5098684308198518,
-        1.811428679165584,
-        1.3965996105786107,
-    ];
-    let wobble = [
-        (-0.05, -0.05),
-        (-0.05, -0.05),
-        (-0.05, -0.1681011491931554),
-        (-0.268686652326142, 0.27506893294054613),
-    ];
-    let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
-    let region = Region::new(assemble(segs, 0, false).unwrap(), vec![]).unwrap();
+    let region = Region::new(sharply_bent_cubics(0), vec![]).unwrap();
     check(&region).unwrap();
     assert_eq!(kinds(&axis(&region), NodeKind::End), 1);
 }
@@ -717,6 +704,20 @@ fn a_short_leaf_from_a_curvature_maximum_reaches_its_junction() {
 /// taken to be the nearest point found, which was the foot itself.)
 #[test]
 fn a_branch_past_the_evolute_between_two_vertices_breaks_at_its_junction() {
+    let hole = (
+        [-0.6954968030837503, -0.32210892744741626],
+        0.11131415240713867,
+    );
+    for start in 0..4 {
+        let region = with_holes(sharply_bent_cubics(start), &[hole]).unwrap();
+        assert_eq!(region.holes().len(), 1);
+        check(&region).unwrap();
+    }
+}
+
+/// CI's random chain of four cubics, the last bent sharply (a curvature maximum whose
+/// osculating disk nearly touches the segment before), started at segment `start`.
+fn sharply_bent_cubics(start: usize) -> Profile {
     let radii = [
         1.8035314906715636,
         1.5098684308198518,
@@ -730,14 +731,7 @@ fn a_branch_past_the_evolute_between_two_vertices_breaks_at_its_junction() {
         (-0.268686652326142, 0.27506893294054613),
     ];
     let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
-    let outer = assemble(segs, 0, false).unwrap();
-    let hole = (
-        [-0.6954968030837503, -0.32210892744741626],
-        0.11131415240713867,
-    );
-    let region = with_holes(outer, &[hole]).unwrap();
-    assert_eq!(region.holes().len(), 1);
-    check(&region).unwrap();
+    assemble(segs, start, false).unwrap()
 }
 
 /// A random closed cubic B-spline of 9 control points (one segment, no hole): the short

@@ -466,9 +466,10 @@ impl Branch<'_, '_> {
         };
         self.halve(&mut b, COARSE_STEPS, &at);
         if let Some(out) = b.outside {
+            let disk = self.sites.disk(out.xy, out.radius);
             let entered = self.sites.in_clip(out.xy) && self.feet_part(&out);
-            if entered && !self.disk_empty(&out) {
-                if let Some(v) = self.tri_tangent(from, &b, out, &at) {
+            if entered && !(self.inside(&out) && disk == Disk::Empty) {
+                if let Some(v) = self.tri_tangent(from, &b, out, disk, &at) {
                     if v.tr != b.last.tr && self.on_axis(&v) {
                         return Some(v);
                     }
@@ -508,7 +509,8 @@ impl Branch<'_, '_> {
             }
             return (lo > 0.0).then_some(last);
         };
-        if !self.feet_part(&out) || self.disk_empty(&out) {
+        let disk = self.sites.disk(out.xy, out.radius);
+        if !self.feet_part(&out) || (self.inside(&out) && disk == Disk::Empty) {
             // The feet met: the axis ends at the centre of curvature between them. (Beside
             // that centre the boundary may reach into the disk by more than the slack: the
             // circle osculates it there, so the feet, not the disk, decide.)
@@ -520,7 +522,7 @@ impl Branch<'_, '_> {
             last,
             outside,
         };
-        self.tri_tangent(from, &b, out, &at)
+        self.tri_tangent(from, &b, out, disk, &at)
             .or_else(|| (lo > 0.0).then_some(last))
     }
 
@@ -544,18 +546,20 @@ impl Branch<'_, '_> {
     }
 
     /// The tri-tangent disk in bracket `b` (from the stretch's last vertex `from`; `out` its
-    /// high end, entered): where the distance to the entering point equals the radius.
+    /// high end, entered, and `disk` what its disk holds): where the distance to the
+    /// entering point equals the radius.
     fn tri_tangent(
         &self,
         from: Vertex,
         b: &Bracket,
         out: Vertex,
+        disk: Disk,
         at: &dyn Fn(f64) -> Option<Vertex>,
     ) -> Option<Vertex> {
         let (lo, hi, last) = (b.lo, b.hi, b.last);
         // (The point the disk test proved inside, not the nearest point found: beside a
         // foot the search may return that foot, within rounding as near.)
-        let (k, u) = match self.sites.disk(out.xy, out.radius) {
+        let (k, u) = match disk {
             Disk::Entered(k, u, _) => (k, u),
             Disk::Empty => {
                 let (_, k, u) = self.sites.nearest(out.xy, 0.0);

@@ -3,9 +3,10 @@
 //!
 //! The oracle shares no code with the crates: distances by dense sampling of each boundary
 //! refined by golden-section search. Every vertex must be at the boundary's distance, that
-//! distance attained at both its feet; every point where the nearest boundary point jumps
-//! (found on a grid, then by bisection) must lie within the chord tolerance of an edge; the
-//! graph must be connected with one cycle per hole.
+//! distance attained at both its feet; every point of the Voronoi diagram of a dense sampling
+//! of the boundary whose samples are far apart along it, refined onto the axis, must lie
+//! within the chord tolerance of an edge; the graph must be connected with one cycle per
+//! hole.
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
@@ -13,12 +14,15 @@
 mod boundary_oracle;
 #[path = "../../antipodal/tests/common/profiles.rs"]
 mod profiles;
+#[path = "common/sampled_voronoi.rs"]
+mod sampled_voronoi;
 
 use boundary_oracle::{off_segment, winding, Oracle};
 use curve::{ParamCurve, Profile, Region, Segment};
 use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use profiles::{assemble, bezier_chain, filleted_polygon};
 use proptest::prelude::*;
+use sampled_voronoi::sampled_medial_points;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -446,79 +450,42 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     let components = (0..n).filter(|&i| root(&mut parent, i) == i).count();
     prop_assert_eq!(components, 1, "{:?}", a.nodes);
     prop_assert_eq!(a.edges.len() + 1 - n, region.holes().len());
-    // Nothing missed: where the nearest boundary point jumps between grid nodes, the axis
-    // crosses; the point found by bisection lies within the chord tolerance of an edge.
-    let (lo, hi) = {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in &b.oracles[0].pts {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-        (lo, hi)
-    };
-    let grid = 32;
-    let node = |i: usize, j: usize| {
-        [
-            lo[0] + (hi[0] - lo[0]) * i as f64 / grid as f64,
-            lo[1] + (hi[1] - lo[1]) * j as f64 / grid as f64,
-        ]
-    };
-    let apart = |x: [f64; 2], y: [f64; 2]| {
-        let (p, q) = (b.nearest(x).1, b.nearest(y).1);
-        (p[0] - q[0]).hypot(p[1] - q[1]) > 0.1 * size
-    };
+    // Nothing missed: every point of the sampled boundary's Voronoi diagram, refined onto
+    // the axis, lies within the chord tolerance of an edge (and of the fitted curves).
     let room = CHORD * size + 1e-6 * size;
-    let lerp =
-        |a: [f64; 2], c: [f64; 2], s: f64| [a[0] + s * (c[0] - a[0]), a[1] + s * (c[1] - a[1])];
-    let mut found = 0;
-    for i in 0..=grid {
-        for j in 0..=grid {
-            for (p, q) in [(node(i, j), node(i + 1, j)), (node(i, j), node(i, j + 1))] {
-                if i == grid && q[0] > hi[0] || j == grid && q[1] > hi[1] {
-                    continue;
-                }
-                if !(b.inside(p) && b.inside(q) && apart(p, q)) {
-                    continue;
-                }
-                let (mut x, mut y) = (p, q);
-                for _ in 0..40 {
-                    let m = lerp(x, y, 0.5);
-                    if apart(x, m) {
-                        y = m;
-                    } else {
-                        x = m;
-                    }
-                }
-                if !apart(x, y) {
-                    continue; // the feet slid round a bend without jumping
-                }
-                let z = lerp(x, y, 0.5);
-                let (dx, dy) = (b.nearest(x).0, b.nearest(y).0);
-                if (dx - dy).abs() > 1e-6 * size {
-                    continue;
-                }
-                found += 1;
-                let off = a
-                    .edges
-                    .iter()
-                    .flat_map(|e| e.xy.windows(2).map(|w| off_segment(z, w[0], w[1])))
-                    .fold(f64::INFINITY, f64::min);
-                prop_assert!(off <= room, "medial point {z:?} is {off} off the axis");
-                if let Some(curves) = &fitted_curves {
-                    let off = curves
-                        .iter()
-                        .flat_map(|c| c.windows(2).map(|w| off_segment(z, w[0], w[1])))
-                        .fold(f64::INFINITY, f64::min);
-                    prop_assert!(
-                        off <= room,
-                        "medial point {z:?} is {off} off the fitted axis"
-                    );
-                }
-            }
+    let sampled = sampled_medial_points(&b.profiles, size, |x| b.nearest(x).0, |x| b.inside(x));
+    prop_assert!(
+        sampled.unrefined + sampled.dominated <= sampled.kept / 10,
+        "{} of {} Voronoi edges did not refine, {} were dominated",
+        sampled.unrefined,
+        sampled.kept,
+        sampled.dominated
+    );
+    for z in &sampled.points {
+        let off = a
+            .edges
+            .iter()
+            .flat_map(|e| e.xy.windows(2).map(|w| off_segment(z.xy, w[0], w[1])))
+            .fold(f64::INFINITY, f64::min);
+        prop_assert!(
+            off <= room,
+            "medial point {:?} (radius {}) is {off} off the axis",
+            z.xy,
+            z.radius
+        );
+        if let Some(curves) = &fitted_curves {
+            let off = curves
+                .iter()
+                .flat_map(|c| c.windows(2).map(|w| off_segment(z.xy, w[0], w[1])))
+                .fold(f64::INFINITY, f64::min);
+            prop_assert!(
+                off <= room,
+                "medial point {:?} is {off} off the fitted axis",
+                z.xy
+            );
         }
     }
+    let found = sampled.points.len();
     MEDIAL_POINTS.fetch_add(found.min(1), Ordering::Relaxed);
     Ok(())
 }

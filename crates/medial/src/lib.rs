@@ -22,6 +22,7 @@
 
 mod assemble;
 mod candidates;
+mod curvature;
 mod error;
 mod fit;
 mod pairs;

@@ -3,6 +3,7 @@
 //! branch to the point where a third boundary point reaches the disk: a tri-tangent disk.
 
 use crate::candidates::Candidate;
+use crate::curvature::{curvature_peak, sign_change};
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::ParamCurve;
 
@@ -58,25 +59,8 @@ const STRAIGHT: f64 = 1e-12;
 const EXTREMUM_WINDOW: f64 = 1e-2;
 const WIDENINGS: usize = 64;
 
-/// Halvings that find a curvature extremum between two feet.
-const EXTREMUM_STEPS: usize = 60;
-
 /// Newton steps of a foot-point solve.
 const FOOT_STEPS: usize = 30;
-
-/// Where `f` changes sign between `a` and `b` (of different signs), by halving.
-fn sign_change(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let fa = f(a).signum();
-    for _ in 0..EXTREMUM_STEPS {
-        let m = 0.5 * (a + b);
-        if f(m).signum() == fa {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
-}
 
 /// Where a stretch ends, bracketed on its branch: from `lo` (on the axis, at `last`) to `hi`
 /// (off it, at `outside` when the branch has a point there).
@@ -307,8 +291,8 @@ impl Branch<'_, '_> {
     }
 
     /// The end of the axis where the feet of `v` close in: the centre of curvature at the
-    /// curvature extremum between them (the foot of larger curvature where there is no sign
-    /// change of the curvature's rate between them); `None` where the boundary is straight.
+    /// curvature's peak between them (the foot of larger curvature where no peak is found);
+    /// `None` where the boundary is straight or the feet meet at a corner.
     fn end_at_curvature_centre(&self, v: &Vertex) -> Option<Vertex> {
         let c = self.c;
         let jet =
@@ -317,12 +301,12 @@ impl Branch<'_, '_> {
         // closed boundary across the seam too, the parameter taken modulo its length.)
         let boundary = self.sites.boundaries[c.boundary[0]];
         let n = boundary.domain().1;
-        let rate = |u: f64| boundary.jet(u.rem_euclid(n)).curvature_rate();
         let kappa = |s: usize, u: f64| jet(s, u).curvature();
-        // The extremum between the feet, or just beside them: near the end of the axis the
+        // The peak between the feet, or just beside them: near the end of the axis the
         // feet found may both lie on one side of it (the feet of the trivial solution, both
-        // at one point, are near), so the window widens until the rate changes sign.
-        let window = (c.boundary[0] == c.boundary[1] && !c.corner.contains(&true))
+        // at one point, are near), so the window widens until it holds the peak.
+        let mut across_corner = false;
+        let peak = (c.boundary[0] == c.boundary[1] && !c.corner.contains(&true))
             .then(|| {
                 let (mut a, mut b) = (v.tr[0].min(v.tr[1]), v.tr[0].max(v.tr[1]));
                 if boundary.is_closed() && b - a > 0.5 * n {
@@ -331,8 +315,16 @@ impl Branch<'_, '_> {
                 let widest = EXTREMUM_WINDOW * n;
                 let mut w = (b - a).max(f64::EPSILON * n);
                 for _ in 0..WIDENINGS {
-                    if rate(a).signum() != rate(b).signum() {
-                        return Some((a, b));
+                    if let Some(peak) = curvature_peak(boundary, a, b) {
+                        // A peak across a corner is no end: the feet meet at the corner,
+                        // and the axis ends where the stretch does.
+                        across_corner = boundary.corners().any(|j| {
+                            (-1..=1).any(|k| {
+                                let u = j.u + k as f64 * n;
+                                u > a && u < b
+                            })
+                        });
+                        return Some(peak);
                     }
                     if w > widest {
                         break;
@@ -346,22 +338,11 @@ impl Branch<'_, '_> {
                 None
             })
             .flatten();
-        // A change of the rate's sign across a corner is no extremum: the feet meet at the
-        // corner, and the axis ends where the stretch does.
-        let across_corner = |a: f64, b: f64| {
-            boundary.corners().any(|j| {
-                (-1..=1).any(|k| {
-                    let u = j.u + k as f64 * n;
-                    u > a && u < b
-                })
-            })
-        };
-        if window.is_some_and(|(a, b)| across_corner(a, b)) {
+        if across_corner {
             return None;
         }
-        let (s, u, j) = if let Some((a, b)) = window {
-            let u = sign_change(&rate, a, b).rem_euclid(n);
-            (0, u, boundary.jet(u))
+        let (s, u, j) = if let Some((u, j)) = peak {
+            (0, u, j)
         } else {
             let s = if c.corner[0] {
                 1

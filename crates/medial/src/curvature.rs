@@ -1,0 +1,169 @@
+//! Where a boundary's curvature peaks between two points: where the feet of a branch close
+//! in, the axis ends at the centre of curvature there.
+
+use curve::{Jet, ParamCurve, Profile};
+
+/// Halvings that find a curvature extremum between two points (to 2^-60 of their gap).
+const EXTREMUM_STEPS: usize = 60;
+
+/// Where `f` changes sign between `a` and `b` (of different signs), by halving.
+pub(crate) fn sign_change(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let fa = f(a).signum();
+    for _ in 0..EXTREMUM_STEPS {
+        let m = 0.5 * (a + b);
+        if f(m).signum() == fa {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// The peak of the curvature's magnitude inside `[a, b]` along `boundary` (on a closed
+/// boundary the parameters may run past its ends), with the jet there: the largest of the
+/// maxima inside its segments (where the magnitude's rate changes from rising to falling)
+/// and of the one-sided values at the joints between them. At a smooth joint where the
+/// curvature jumps the peak is the larger side's value, and the jet is that side's.
+/// `None` where the largest value is at `a` or `b` (the peak lies beyond them).
+pub(crate) fn curvature_peak(boundary: &Profile, a: f64, b: f64) -> Option<(f64, Jet)> {
+    let segments = boundary.segments().len();
+    let period = segments as f64;
+    // The joints inside (a, b): at most one a segment round a closed boundary, so the
+    // window holds at most that many and a turn more.
+    let mut cuts = vec![a];
+    cuts.extend(
+        (1..=2 * segments + 1)
+            .map(|k| a.floor() + k as f64)
+            .take_while(|&j| j < b),
+    );
+    cuts.push(b);
+    // (magnitude, inside the window, parameter, jet); an inside value wins a tie with the
+    // window's ends (at a joint met by both feet the ends are within rounding of it).
+    let mut best: Option<(f64, bool, f64, Jet)> = None;
+    let mut offer = |u: f64, j: Jet, inside: bool| {
+        let k = j.curvature().abs();
+        if k.is_nan() {
+            return;
+        }
+        if best
+            .as_ref()
+            .is_none_or(|&(m, i, _, _)| k > m || (k == m && inside && !i))
+        {
+            best = Some((k, inside, u, j));
+        }
+    };
+    for w in cuts.windows(2) {
+        let (t0, t1) = (w[0], w[1]);
+        let whole = (0.5 * (t0 + t1)).floor();
+        let seg = if boundary.is_closed() {
+            (whole as i64).rem_euclid(segments as i64) as usize
+        } else {
+            (whole.max(0.0) as usize).min(segments - 1)
+        };
+        let shift = whole - seg as f64;
+        let jet = |t: f64| boundary.jet_on(seg, t - shift, 3);
+        let rising = |t: f64| {
+            let j = jet(t);
+            j.curvature().signum() * j.curvature_rate()
+        };
+        offer(t0, jet(t0), t0 > a);
+        offer(t1, jet(t1), t1 < b);
+        if t1 > t0 && rising(t0) > 0.0 && rising(t1) < 0.0 {
+            let u = sign_change(&rising, t0, t1);
+            offer(u, jet(u), true);
+        }
+    }
+    let (_, inside, u, j) = best?;
+    inside.then(|| (u.rem_euclid(period), j))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use curve::{Segment, SegmentKind, SplineCurve};
+    use proptest::prelude::*;
+
+    /// A closed chain of cubics with tangent-continuous joints (the curvature jumps there).
+    fn smooth_chain(points: &[[f64; 2]]) -> Option<Profile> {
+        let n = points.len();
+        let at = |i: usize| points[i % n];
+        let mid = |a: [f64; 2], b: [f64; 2]| [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+        let segs = (0..n)
+            .map(|i| {
+                let (p, q, r) = (at(i), at(i + 1), at(i + 2));
+                let pts = [mid(p, q), q, mid(q, r)];
+                // A quadratic lifted to a cubic with its middle points pulled apart.
+                let c1 = [
+                    pts[0][0] + 0.6 * (q[0] - pts[0][0]),
+                    pts[0][1] + 0.6 * (q[1] - pts[0][1]),
+                ];
+                let c2 = [
+                    pts[2][0] + 0.6 * (q[0] - pts[2][0]),
+                    pts[2][1] + 0.6 * (q[1] - pts[2][1]),
+                ];
+                let c = SplineCurve::clamped(3, &[pts[0], c1, c2, pts[2]], None, None).ok()?;
+                Segment::spline(SegmentKind::Bezier, c).ok()
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Profile::new(segs, None).ok()
+    }
+
+    /// The largest |κ| on `[a, b]` by dense sampling, each segment's stretch on its own side
+    /// of the joints, and whether it is at `a` or `b`.
+    fn sampled_peak(p: &Profile, a: f64, b: f64) -> (f64, f64) {
+        let n = p.segments().len();
+        let mut best = (0.0f64, a);
+        let steps = 4000;
+        for k in 0..=steps {
+            let u = a + (b - a) * k as f64 / steps as f64;
+            let seg = (u.floor() as usize).min(n - 1);
+            for s in [seg, seg.saturating_sub(1)] {
+                if u >= s as f64 && u <= (s + 1) as f64 {
+                    let kappa = p.jet_on(s, u, 2).curvature().abs();
+                    if kappa > best.0 {
+                        best = (kappa, u);
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    proptest! {
+        /// The peak is the sampled largest |κ| (never below it), inside the window; where it
+        /// is `None` the sampled largest is at an end of the window.
+        #[test]
+        fn the_peak_is_the_sampled_largest_curvature(
+            radii in proptest::collection::vec(1.0f64..2.0, 5..8),
+            from in 0.0f64..1.0,
+            width in 0.01f64..0.99,
+        ) {
+            let n = radii.len();
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|i| {
+                    let t = std::f64::consts::TAU * i as f64 / n as f64;
+                    [radii[i] * t.cos(), radii[i] * t.sin()]
+                })
+                .collect();
+            let Some(p) = smooth_chain(&points) else { return Ok(()) };
+            let len = n as f64;
+            let (a, b) = (from * len * 0.5, (from * 0.5 + width * 0.5) * len);
+            let (top, at) = sampled_peak(&p, a, b);
+            match curvature_peak(&p, a, b) {
+                Some((u, j)) => {
+                    prop_assert!(u >= a - 1e-12 && u <= b + 1e-12);
+                    let k = j.curvature().abs();
+                    prop_assert!(k >= top * (1.0 - 1e-9), "{k} below the sampled {top} at {at}");
+                    let q = p.jet(u).p.arr();
+                    prop_assert!((j.p.arr()[0] - q[0]).hypot(j.p.arr()[1] - q[1]) < 1e-9);
+                }
+                None => {
+                    let step = (b - a) / 4000.0;
+                    prop_assert!((at - a).abs() <= step || (at - b).abs() <= step,
+                        "no peak, yet the sampled largest {top} is at {at} in [{a}, {b}]");
+                }
+            }
+        }
+    }
+}

@@ -6,8 +6,11 @@
 //! control points, so the hull's distance from the centre bounds the piece's from below:
 //! taken as the larger of the distance to the points' box and the least extent of the points
 //! towards the centre (a slab bound, which tightens quadratically as pieces shrink about a
-//! point where the circle touches the curve). Every comparison allows for the rounding of the
-//! coefficients and of the arithmetic, so a verdict holds for the exact curve.
+//! point where the circle touches the curve). Near such a point a piece is also tried whole
+//! by its squared distance from the centre: where that polynomial is proven convex, its
+//! tangent at its least point bounds it (the hull would need pieces down to the square root
+//! of the margin). Every comparison allows for the rounding of the coefficients and of the
+//! arithmetic, so a verdict holds for the exact curve.
 
 use crate::geom::V2;
 use crate::param::ParamCurve;
@@ -23,6 +26,14 @@ const MAX_DEPTH: usize = 40;
 /// circle over a long stretch (an arc about the centre) would otherwise be halved into
 /// ever more pieces, each still within the slack of the circle.
 const MAX_PIECES: usize = 4096;
+
+/// Halvings of a piece before its squared distance is tried for convexity: where the
+/// circle touches the curve, the hull's bound would need pieces down to the square root of
+/// the caller's slack, while the distance along a piece is convex long before that.
+const CONVEX_FROM: usize = 3;
+
+/// Halvings that find where a convex squared distance is least (to 2^-60 of the piece).
+const LEAST_STEPS: usize = 60;
 
 /// Units of rounding allowed per comparison: the Euclidean points (a division), the bounds
 /// (a few products and sums) and one more per halving of the piece.
@@ -113,6 +124,8 @@ impl Profile {
                                 distance,
                             };
                         }
+                        Verdict::Split
+                            if piece.depth >= CONVEX_FROM && convex_outside(&piece, x, r, err) => {}
                         Verdict::Split if piece.depth < MAX_DEPTH => {
                             let (a, b) = halve(&piece, dim);
                             stack.push(b);
@@ -240,6 +253,98 @@ fn test_piece(piece: &Piece, dim: usize, x: V2, r: f64, err: Errors) -> Verdict 
         }
     }
     Verdict::Split
+}
+
+/// Whether the piece is proven outside the disk by its squared distance from the centre,
+/// `D = |P − x w|² − r² w²` (a polynomial of twice the degree, positive exactly where the
+/// curve is outside): where the second differences of its Bernstein coefficients are all
+/// positive it is convex, and it lies above its tangent at its least point, found by
+/// halving on the sign of its derivative. Every comparison allows for the coefficients'
+/// errors and the rounding of the arithmetic.
+fn convex_outside(piece: &Piece, x: V2, r: f64, err: Errors) -> bool {
+    let n = piece.coefs.len() / 3;
+    if n < 2 {
+        return false;
+    }
+    let (d, m) = (n - 1, 2 * (n - 1));
+    let eps = f64::EPSILON;
+    let (mut h_max, mut w_max) = (0.0f64, 0.0f64);
+    for c in piece.coefs.chunks_exact(3) {
+        h_max = h_max.max(c[0].abs()).max(c[1].abs());
+        w_max = w_max.max(c[2].abs());
+    }
+    // Errors of the homogeneous coefficients (the halvings' roundings added), then of the
+    // coefficients relative to the centre.
+    let xm = x.x.abs().max(x.y.abs());
+    let halvings = (piece.depth + 2) as f64 * eps;
+    let e_w = err.weight + halvings * w_max;
+    let e_rel = err.point + halvings * h_max + xm * e_w + 2.0 * eps * (h_max + xm * w_max);
+    let rel: Vec<[f64; 3]> = piece
+        .coefs
+        .chunks_exact(3)
+        .map(|c| [c[0] - x.x * c[2], c[1] - x.y * c[2], r * c[2]])
+        .collect();
+    let big = rel
+        .iter()
+        .flat_map(|c| c.iter().map(|v| v.abs()))
+        .fold(0.0, f64::max);
+    let binomial = |n: usize| {
+        let mut row = vec![1.0f64; n + 1];
+        for k in 1..n {
+            row[k] = row[k - 1] * (n + 1 - k) as f64 / k as f64;
+        }
+        row
+    };
+    let (cd, cm) = (binomial(d), binomial(m));
+    let mut coef = vec![0.0; m + 1];
+    for (i, a) in rel.iter().enumerate() {
+        for (j, b) in rel.iter().enumerate() {
+            coef[i + j] += cd[i] * cd[j] * (a[0] * b[0] + a[1] * b[1] - a[2] * b[2]);
+        }
+    }
+    for (c, b) in coef.iter_mut().zip(&cm) {
+        *c /= b;
+    }
+    // Each coefficient is a convex combination of products of magnitude at most `big²`.
+    let err_coef =
+        2.0 * (4.0 * big * e_rel + 2.0 * big * r * e_w) + 6.0 * (m + 8) as f64 * eps * big * big;
+    let round = 8.0 * (m + 2) as f64 * eps * big * big;
+    if coef
+        .windows(3)
+        .any(|w| w[2] - 2.0 * w[1] + w[0] <= 4.0 * err_coef + round)
+    {
+        return false;
+    }
+    let casteljau = |c: &[f64], t: f64| {
+        let mut work = c.to_vec();
+        for level in 1..c.len() {
+            for j in 0..c.len() - level {
+                work[j] += t * (work[j + 1] - work[j]);
+            }
+        }
+        work[0]
+    };
+    let slope: Vec<f64> = coef.windows(2).map(|w| w[1] - w[0]).collect();
+    let (mut lo, mut hi) = (0.0, 1.0);
+    let t0 = if slope[0] >= 0.0 {
+        0.0
+    } else if slope[m - 1] <= 0.0 {
+        1.0
+    } else {
+        for _ in 0..LEAST_STEPS {
+            let mid = 0.5 * (lo + hi);
+            if casteljau(&slope, mid) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    };
+    // D(t) ≥ D(t0) + D′(t0)(t − t0) on [0, 1], D′ = m Σ slope Bᵐ⁻¹.
+    let value = casteljau(&coef, t0) - err_coef - round;
+    let rate = m as f64 * (casteljau(&slope, t0).abs() + 2.0 * err_coef + round);
+    value - rate * t0.max(1.0 - t0) > 0.0
 }
 
 /// The two halves of a piece by de Casteljau's algorithm on its homogeneous coefficients.

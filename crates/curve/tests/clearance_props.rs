@@ -1,7 +1,8 @@
 //! `Profile::clearance` against an independent distance: dense samples of every segment,
 //! refined by golden-section search about the least. A disk a little smaller than the
 //! distance must be clear, a little larger entered (at a point that really is inside), on
-//! random profiles of lines, arcs and rational cubic Béziers, scaled and moved far from the
+//! random profiles of lines, arcs and rational cubic Béziers and on rational Béziers of degree
+//! 4 to 40 (where the squared distance is proven convex), scaled and moved far from the
 //! origin; where rounding leaves it undecided the answer must say so, never be wrong.
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
@@ -119,35 +120,82 @@ proptest! {
         // What rounding of the coordinates allows: beyond it no verdict may be wrong, within
         // it the answer may be undecided.
         let rounding = 1e-13 * (size + far * scale);
-        let gap = 1e-9 * size;
-        let mut decided = 0;
-        for &(a, b) in &xs {
-            let x = [o[0] + scale * a, o[1] + scale * b];
-            let d = oracle_distance(&p, x);
-            prop_assume!(d > 1e-3 * size);
-            // (The oracle's own error: its golden search stops at rounding, ~1e-16 of the size.)
-            match p.clearance(x, d - gap - rounding) {
-                Clearance::Clear => decided += 1,
-                Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
-                Clearance::Entered { u, distance } => {
-                    return Err(TestCaseError::fail(format!(
-                        "entered at u {u} ({distance}) below the distance {d}")));
-                }
-            }
-            match p.clearance(x, d + gap + rounding) {
-                Clearance::Entered { u, distance } => {
-                    decided += 1;
-                    let q = p.jet_to(u, 0).p;
-                    let actual = (q.x - x[0]).hypot(q.y - x[1]);
-                    prop_assert!((actual - distance).abs() <= rounding + 1e-12 * size);
-                    prop_assert!(actual < d + gap + rounding);
-                }
-                Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
-                Clearance::Clear => {
-                    return Err(TestCaseError::fail(format!("clear above the distance {d}")));
-                }
+        check_disks(&p, &xs, o, scale, size, rounding)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// One rational Bézier of high degree (its squared distance, twice the degree, proven
+    /// convex near where the disks touch it), wiggling along its chord.
+    #[test]
+    fn clearance_agrees_on_high_degrees(
+        wiggle in prop::collection::vec(-0.5..0.5f64, 5..41),
+        weights in prop::collection::vec(0.3..3.0f64, 41),
+        scale in prop_oneof![Just(1.0), Just(1e-6), (-30i32..30).prop_map(|k| 2f64.powi(k))],
+        far in prop_oneof![Just(0.0), Just(1e3), Just(1e6)],
+        xs in prop::collection::vec((-1.2..1.2f64, -1.0..1.0f64), 12),
+    ) {
+        let o = [far * scale, 0.5 * far * scale];
+        let n = wiggle.len() - 1;
+        let pts: Vec<[f64; 2]> = wiggle
+            .iter()
+            .enumerate()
+            .map(|(i, y)| [o[0] + scale * (2.0 * i as f64 / n as f64 - 1.0), o[1] + scale * y])
+            .collect();
+        let c = SplineCurve::clamped(n, &pts, Some(&weights[..=n]), None).unwrap();
+        let p = Profile::new(vec![Segment::spline(SegmentKind::Bezier, c).unwrap()], None);
+        prop_assume!(p.is_ok());
+        let size = 2.0 * scale;
+        let rounding = 1e-13 * (size + far * scale);
+        check_disks(&p.unwrap(), &xs, o, scale, size, rounding)?;
+    }
+}
+
+/// Disks about each of `xs` (in units of `scale` about `o`) a little smaller and a little
+/// larger than the distance from the profile: clear and entered, or undecided only where
+/// rounding allows; never the wrong verdict.
+fn check_disks(
+    p: &Profile,
+    xs: &[(f64, f64)],
+    o: [f64; 2],
+    scale: f64,
+    size: f64,
+    rounding: f64,
+) -> Result<(), TestCaseError> {
+    let gap = 1e-9 * size;
+    let mut decided = 0;
+    for &(a, b) in xs {
+        let x = [o[0] + scale * a, o[1] + scale * b];
+        let d = oracle_distance(p, x);
+        if d <= 1e-3 * size {
+            continue;
+        }
+        // (The oracle's own error: its golden search stops at rounding, ~1e-16 of the size.)
+        match p.clearance(x, d - gap - rounding) {
+            Clearance::Clear => decided += 1,
+            Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
+            Clearance::Entered { u, distance } => {
+                return Err(TestCaseError::fail(format!(
+                    "entered at u {u} ({distance}) below the distance {d}"
+                )));
             }
         }
-        prop_assert!(decided > 0 || gap < 1e3 * rounding);
+        match p.clearance(x, d + gap + rounding) {
+            Clearance::Entered { u, distance } => {
+                decided += 1;
+                let q = p.jet_to(u, 0).p;
+                let actual = (q.x - x[0]).hypot(q.y - x[1]);
+                prop_assert!((actual - distance).abs() <= rounding + 1e-12 * size);
+                prop_assert!(actual < d + gap + rounding);
+            }
+            Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
+            Clearance::Clear => {
+                return Err(TestCaseError::fail(format!("clear above the distance {d}")));
+            }
+        }
     }
+    prop_assert!(decided > 0 || gap < 1e3 * rounding);
+    Ok(())
 }

@@ -6,6 +6,11 @@ use curve::{Jet, ParamCurve, Profile};
 /// Halvings that find a curvature extremum between two points (to 2^-60 of their gap).
 const EXTREMUM_STEPS: usize = 60;
 
+/// Steps of each segment's stretch of a window on which the curvature's rate is sampled
+/// for its changes from rising to falling: a cubic's curvature may have two maxima in one
+/// segment, with a minimum between.
+const PEAK_STEPS: usize = 8;
+
 /// Where `f` changes sign between `a` and `b` (of different signs), by halving.
 pub(crate) fn sign_change(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     let fa = f(a).signum();
@@ -22,7 +27,8 @@ pub(crate) fn sign_change(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64
 
 /// The peak of the curvature's magnitude inside `[a, b]` along `boundary` (on a closed
 /// boundary the parameters may run past its ends), with the jet there: the largest of the
-/// maxima inside its segments (where the magnitude's rate changes from rising to falling)
+/// maxima inside its segments (where the magnitude's rate, sampled at `PEAK_STEPS` steps of
+/// each segment's stretch, changes from rising to falling)
 /// and of the one-sided values at the joints between them. At a smooth joint where the
 /// curvature jumps the peak is the larger side's value, and the jet is that side's.
 /// `None` where the largest value is at `a` or `b` (the peak lies beyond them).
@@ -69,9 +75,13 @@ pub(crate) fn curvature_peak(boundary: &Profile, a: f64, b: f64) -> Option<(f64,
         };
         offer(t0, jet(t0), t0 > a);
         offer(t1, jet(t1), t1 < b);
-        if t1 > t0 && rising(t0) > 0.0 && rising(t1) < 0.0 {
-            let u = sign_change(&rising, t0, t1);
-            offer(u, jet(u), true);
+        let step = |k: usize| t0 + (t1 - t0) * k as f64 / PEAK_STEPS as f64;
+        for k in 0..PEAK_STEPS {
+            let (s0, s1) = (step(k), step(k + 1));
+            if s1 > s0 && rising(s0) > 0.0 && rising(s1) <= 0.0 {
+                let u = sign_change(&rising, s0, s1);
+                offer(u, jet(u), true);
+            }
         }
     }
     let (_, inside, u, j) = best?;

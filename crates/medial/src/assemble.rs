@@ -11,6 +11,13 @@ use crate::{Edge, MedialAxis, Node, NodeKind};
 /// different branches, and branches continuing each other, agree to ~1e-12 of the size.
 const MERGE: f64 = 1e-6;
 
+/// A stretch whose two ends are one node, its vertices within this many times `MERGE` of
+/// its first, is no cycle (a hole's cycle runs round the hole): it is the tip of a leaf
+/// whose ends fell into one node through a third stretch's end between them (near a
+/// centre of curvature the feet are ill-conditioned, and stretches of neighbouring pieces
+/// end a few `MERGE` apart).
+const STUB: f64 = 16.0;
+
 /// A leaf whose radius is at most this share of the size is a corner of the boundary.
 const CORNER_RADIUS: f64 = 1e-9;
 
@@ -80,6 +87,39 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         k += 2;
     }
     let clusters_n = cluster.iter().copied().max().map_or(0, |m| m + 1);
+    // Stubs go; the tip of each (its least radius: the leaf's end) becomes its node's point.
+    let mut tip: Vec<Option<(Vertex, [usize; 2])>> = vec![None; clusters_n];
+    for slot in chains.iter_mut() {
+        let Some(c) = slot else { continue };
+        let first = c.vertices[0].xy;
+        let extent = c.vertices.iter().fold(0.0f64, |m, v| {
+            m.max((v.xy[0] - first[0]).hypot(v.xy[1] - first[1]))
+        });
+        if c.ends[0] == c.ends[1] && extent <= STUB * merge {
+            tip[c.ends[0]] = c
+                .vertices
+                .iter()
+                .zip(&c.boundary)
+                .min_by(|a, b| a.0.radius.total_cmp(&b.0.radius))
+                .map(|(v, b)| (*v, *b));
+            *slot = None;
+        }
+    }
+    // The chains at a stub's node run on to its tip.
+    for c in chains.iter_mut().flatten() {
+        for end in 0..2 {
+            let Some((t, b)) = tip[c.ends[end]] else {
+                continue;
+            };
+            if end == 0 && c.vertices[0] != t {
+                c.vertices.insert(0, t);
+                c.boundary.insert(0, b);
+            } else if end == 1 && c.vertices[c.vertices.len() - 1] != t {
+                c.vertices.push(t);
+                c.boundary.push(b);
+            }
+        }
+    }
     let mut kinds: Vec<Option<NodeKind>> = vec![None; clusters_n];
     join_through_twos(&mut chains, clusters_n, &mut kinds);
     let chains: Vec<Chain> = chains.into_iter().flatten().collect();
@@ -95,6 +135,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     let mut node_of = |c: usize, at: Vertex, nodes: &mut Vec<Node>| -> usize {
         if id[c] == usize::MAX {
             id[c] = nodes.len();
+            let at = tip[c].map_or(at, |t| t.0);
             let kind = kinds[c].unwrap_or(match degree[c] {
                 0 => NodeKind::End,
                 1 if at.radius <= CORNER_RADIUS * sites.size => NodeKind::Corner,

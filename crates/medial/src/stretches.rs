@@ -390,7 +390,7 @@ impl Branch<'_, '_> {
     /// Whether a vertex lies on the axis: inside the region, its disk empty, its two feet
     /// apart (else its point has one nearest point: the axis ends where the feet meet).
     fn on_axis(&self, v: &Vertex) -> bool {
-        self.sites.in_clip(v.xy) && self.disk_empty(v) && self.feet_part(v)
+        self.sites.in_clip(v.xy) && self.feet_part(v) && self.disk_empty(v)
     }
 
     fn disk_empty(&self, v: &Vertex) -> bool {
@@ -433,6 +433,19 @@ impl Branch<'_, '_> {
     /// for the disk that also touches the boundary point that enters beyond it. A coarse
     /// bracket is tried first; its solution stands if its disk proves empty.
     fn junction(&self, from: Vertex, beyond: [f64; 2], beyond_xy: [f64; 2]) -> Option<Vertex> {
+        let feet_meet_beyond = self
+            .vertex(beyond, beyond_xy)
+            .is_some_and(|v| !self.feet_part(&v));
+        if feet_meet_beyond {
+            // The branch runs into its feet's meeting: where the disk at the centre of
+            // curvature between them is empty, the axis ends there. (The bracket's disks
+            // osculate the boundary near that centre: the longest of all to prove empty.)
+            if let Some(end) = self.end_at_curvature_centre(&from) {
+                if self.sites.in_clip(end.xy) && self.disk_empty(&end) {
+                    return Some(end);
+                }
+            }
+        }
         let lerp =
             |a: [f64; 2], b: [f64; 2], s: f64| [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
         let at = |s: f64| -> Option<Vertex> {
@@ -464,9 +477,6 @@ impl Branch<'_, '_> {
             mut last,
             outside,
         } = b;
-        let feet_meet_beyond = self
-            .vertex(beyond, beyond_xy)
-            .is_some_and(|v| !self.feet_part(&v));
         if outside.is_some_and(|o| !self.sites.in_clip(o.xy)) {
             // The exterior axis leaves the box it is clipped to: it ends at the box, found by
             // halving on to rounding (the box test is exact; a step may be long, far out).
@@ -672,9 +682,10 @@ impl Branch<'_, '_> {
             u1 = next;
             g1 = reduced(u1);
         }
-        // The secant may leave the bracket a little (a branch bends between its vertices);
-        // not far.
-        let span = (hi - lo).max(f64::EPSILON);
+        // The secant may leave the bracket (where the branch turns between its vertices,
+        // the other foot goes past both of theirs and back); by no more than the kept foot
+        // moves between them.
+        let span = (hi - lo).max((q[keep] - p[keep]).abs()).max(f64::EPSILON);
         if !(u1 >= lo - span && u1 <= hi + span) {
             return None;
         }

@@ -789,3 +789,63 @@ fn a_hole_in_a_wiggly_spline_keeps_its_cycle() {
     assert_eq!(region.holes().len(), 1);
     check(&region).unwrap();
 }
+
+/// A random chain with two smooth joints and a hole (a wider random run's case): the hole's
+/// bisector with the segment after a joint turns between two of its polyline vertices (the
+/// hole's foot goes past both of theirs and back) on its way to the junction with the
+/// segment before the joint; the exact vertices there were refused as too far from the
+/// vertices' feet, and the branch stopped 6e-4 short of its junction, breaking the hole's
+/// cycle.
+#[test]
+fn a_branch_turning_between_its_vertices_reaches_its_junction() {
+    let radii = [1.4458403445253272, 1.9907059228053479, 1.1323003324290553];
+    let segs = bezier_chain(&radii, &[(-0.05, -0.05); 3], &[true, false, true]).unwrap();
+    let hole = (
+        [-0.15635263822222772, -0.08988750577444202],
+        0.09570641978321387,
+    );
+    let region = with_holes(assemble(segs, 0, false).unwrap(), &[hole]).unwrap();
+    assert_eq!(region.holes().len(), 1);
+    check(&region).unwrap();
+    assert_eq!(kinds(&axis(&region), NodeKind::Junction), 3);
+}
+
+/// A random closed NURBS whose curvature peaks just before a knot: the leaf to that peak's
+/// centre is cut at the knot, and the two stretches there end 2e-6 apart (the feet are
+/// ill-conditioned beside a centre of curvature), so the leaf's tip, 4e-6 long, had both its
+/// ends in one node and became a loop (a cycle without a hole). It is a stub: the leaf
+/// ends at the tip.
+#[test]
+fn a_leaf_tip_cut_at_a_knot_is_no_loop() {
+    let radii = [
+        1.479133819623651,
+        1.0570018362329054,
+        1.8108436538105146,
+        1.8814003504955212,
+        1.8088165370835616,
+        1.616860332363555,
+        1.517638183258671,
+        1.198090876029087,
+        1.0897072408724409,
+        1.1763633862742156,
+        1.4899631445465806,
+    ];
+    let weights = [
+        1.5046744967382513,
+        0.6694067193137289,
+        0.8832749632857433,
+        1.0888617116539767,
+        1.6362735628711187,
+        1.550846791899508,
+        0.9253587655197315,
+        1.8469327049001967,
+        0.7440691955233469,
+        1.0389430425540485,
+        0.7086053176434862,
+    ];
+    let region = Region::new(closed_spline(&radii, Some(&weights)).unwrap(), vec![]).unwrap();
+    check(&region).unwrap();
+    let a = axis(&region);
+    let tip = a.nodes.iter().find(|n| (n.xy[0] - 0.1547016).abs() < 1e-6).unwrap();
+    assert_eq!(tip.kind, NodeKind::End);
+}

@@ -124,8 +124,25 @@ impl Profile {
                                 distance,
                             };
                         }
-                        Verdict::Split
-                            if piece.depth >= CONVEX_FROM && convex_outside(&piece, x, r, err) => {}
+                        Verdict::Split if piece.depth >= CONVEX_FROM => {
+                            match convex_verdict(&piece, x, r, err) {
+                                Some(Convex::Outside) => {}
+                                Some(Convex::Inside(t)) => {
+                                    let v = piece.lo + t * (piece.hi - piece.lo);
+                                    let p = seg.curve().jet_to(v, 0).p;
+                                    return Clearance::Entered {
+                                        u: self.profile_param(i, v),
+                                        distance: (p - x).norm(),
+                                    };
+                                }
+                                None if piece.depth < MAX_DEPTH => {
+                                    let (a, b) = halve(&piece, dim);
+                                    stack.push(b);
+                                    stack.push(a);
+                                }
+                                None => unresolved = true,
+                            }
+                        }
                         Verdict::Split if piece.depth < MAX_DEPTH => {
                             let (a, b) = halve(&piece, dim);
                             stack.push(b);
@@ -255,16 +272,17 @@ fn test_piece(piece: &Piece, dim: usize, x: V2, r: f64, err: Errors) -> Verdict 
     Verdict::Split
 }
 
-/// Whether the piece is proven outside the disk by its squared distance from the centre,
+/// What the piece's squared distance from the centre proves,
 /// `D = |P − x w|² − r² w²` (a polynomial of twice the degree, positive exactly where the
 /// curve is outside): where the second differences of its Bernstein coefficients are all
 /// positive it is convex, and it lies above its tangent at its least point, found by
-/// halving on the sign of its derivative. Every comparison allows for the coefficients'
-/// errors and the rounding of the arithmetic.
-fn convex_outside(piece: &Piece, x: V2, r: f64, err: Errors) -> bool {
+/// halving on the sign of its derivative: outside where that bound is positive, a point
+/// inside where the least value is negative. Every comparison allows for the coefficients'
+/// errors and the rounding of the arithmetic; `None` where neither is proven.
+fn convex_verdict(piece: &Piece, x: V2, r: f64, err: Errors) -> Option<Convex> {
     let n = piece.coefs.len() / 3;
     if n < 2 {
-        return false;
+        return None;
     }
     let (d, m) = (n - 1, 2 * (n - 1));
     let eps = f64::EPSILON;
@@ -313,7 +331,7 @@ fn convex_outside(piece: &Piece, x: V2, r: f64, err: Errors) -> bool {
         .windows(3)
         .any(|w| w[2] - 2.0 * w[1] + w[0] <= 4.0 * err_coef + round)
     {
-        return false;
+        return None;
     }
     let casteljau = |c: &[f64], t: f64| {
         let mut work = c.to_vec();
@@ -342,9 +360,25 @@ fn convex_outside(piece: &Piece, x: V2, r: f64, err: Errors) -> bool {
         lo
     };
     // D(t) ≥ D(t0) + D′(t0)(t − t0) on [0, 1], D′ = m Σ slope Bᵐ⁻¹.
-    let value = casteljau(&coef, t0) - err_coef - round;
+    let least = casteljau(&coef, t0);
+    let value = least - err_coef - round;
     let rate = m as f64 * (casteljau(&slope, t0).abs() + 2.0 * err_coef + round);
-    value - rate * t0.max(1.0 - t0) > 0.0
+    if value - rate * t0.max(1.0 - t0) > 0.0 {
+        Some(Convex::Outside)
+    } else if least + err_coef + round < 0.0 {
+        // The curve's point there is inside, past every error.
+        Some(Convex::Inside(t0))
+    } else {
+        None
+    }
+}
+
+/// What a piece's convex squared distance proves.
+enum Convex {
+    /// The piece lies outside the disk.
+    Outside,
+    /// Its point at this share of the piece lies inside.
+    Inside(f64),
 }
 
 /// The two halves of a piece by de Casteljau's algorithm on its homogeneous coefficients.

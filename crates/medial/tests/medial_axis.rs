@@ -846,6 +846,10 @@ fn a_leaf_tip_cut_at_a_knot_is_no_loop() {
     let region = Region::new(closed_spline(&radii, Some(&weights)).unwrap(), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
-    let tip = a.nodes.iter().find(|n| (n.xy[0] - 0.1547016).abs() < 1e-6).unwrap();
+    let tip = a
+        .nodes
+        .iter()
+        .find(|n| (n.xy[0] - 0.1547016).abs() < 1e-6)
+        .unwrap();
     assert_eq!(tip.kind, NodeKind::End);
 }

@@ -399,11 +399,28 @@ impl Tracer<'_> {
                                 };
                                 let (q1, q3) = (sample(0.25), sample(0.75));
                                 quarters = (Some(q1), Some(q3));
+                                // The quarters' images as uneven as the halves' may be:
+                                // a bump between samples then escapes the parabolic climb.
+                                let quarter_uneven = match (q1.1, q3.1) {
+                                    (Some(z1), Some(z3)) => {
+                                        let len = |p: [f64; 2], q: [f64; 2]| {
+                                            (p[0] - q[0]).hypot(p[1] - q[1])
+                                        };
+                                        let steps =
+                                            [len(x, z1), len(z1, m), len(m, z3), len(z3, y)];
+                                        let most = steps.iter().fold(0.0f64, |a, &b| a.max(b));
+                                        let least =
+                                            steps.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+                                        big && most > UNEVEN * least
+                                    }
+                                    _ => false,
+                                };
                                 let off = |q: Sample| q.1.map_or(0.0, |z| dist_to_chord(z, x, y));
                                 let sampled = [off(q1), dist_to_chord(m, x, y), off(q3)];
                                 let deviation = |w: f64| off(sample(w));
-                                measured_deviation(&deviation, sampled, self.chord_tol)
-                                    > self.chord_tol
+                                quarter_uneven
+                                    || measured_deviation(&deviation, sampled, self.chord_tol)
+                                        > self.chord_tol
                             }
                         }
                         _ => false,

@@ -11,12 +11,19 @@ use crate::{Edge, MedialAxis, Node, NodeKind};
 /// different branches, and branches continuing each other, agree to ~1e-12 of the size.
 const MERGE: f64 = 1e-6;
 
-/// A stretch whose two ends are one node, its vertices within this many times `MERGE` of
-/// its first, is no cycle (a hole's cycle runs round the hole): it is the tip of a leaf
-/// whose ends fell into one node through a third stretch's end between them (near a
-/// centre of curvature the feet are ill-conditioned, and stretches of neighbouring pieces
-/// end a few `MERGE` apart).
-const STUB: f64 = 16.0;
+/// Ends of stretches whose feet lie within this share of their radius of each other are
+/// beside a centre of curvature, where the feet are ill-conditioned: stretches of
+/// neighbouring pieces (cut at a knot or a joint) end up to ~2e-5 of the size apart there,
+/// every one of their vertices on the axis. Two such ends within `TIP_MERGE` of the size
+/// are one node.
+const TIP_FEET: f64 = 0.05;
+const TIP_MERGE: f64 = 1e-4;
+
+/// A stretch whose two ends are one node, with an end beside a centre of curvature and its
+/// vertices within this share of the size of its first, is no cycle (a hole's cycle runs
+/// round the hole, its feet on two boundaries): it is the tip of a leaf whose ends fell into
+/// one node (twice `TIP_MERGE`: two ends that far apart can be one node through a third).
+const STUB: f64 = 2.0 * TIP_MERGE;
 
 /// A leaf whose radius is at most this share of the size is a corner of the boundary.
 const CORNER_RADIUS: f64 = 1e-9;
@@ -37,6 +44,8 @@ fn on_clip(sites: &Sites<'_>, x: [f64; 2]) -> bool {
 /// One edge while the graph is assembled: its nodes (clusters) and vertices.
 struct Chain {
     ends: [usize; 2],
+    /// Whether an end is beside a centre of curvature (its feet within `TIP_FEET`).
+    at_tip: bool,
     vertices: Vec<Vertex>,
     boundary: Vec<[usize; 2]>,
 }
@@ -62,13 +71,27 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         .collect();
     // Every end (two per stretch, one per single point), clustered by distance.
     let mut points: Vec<Vertex> = Vec::new();
+    let mut point_boundary: Vec<[usize; 2]> = Vec::new();
     for p in &pieces {
+        let b = found[p.candidate].boundary;
         points.push(p.vertices[0]);
+        point_boundary.push(b);
         if p.vertices.len() > 1 {
             points.push(p.vertices[p.vertices.len() - 1]);
+            point_boundary.push(b);
         }
     }
-    let cluster = clusters(&points, merge);
+    // Beside a centre of curvature the feet are ill-conditioned: ends there (feet within
+    // `TIP_FEET` of the radius) meet within `TIP_MERGE`.
+    let tip_end: Vec<bool> = points
+        .iter()
+        .zip(&point_boundary)
+        .map(|(v, b)| {
+            let (p, q) = (sites.foot(b[0], v.tr[0]), sites.foot(b[1], v.tr[1]));
+            (p[0] - q[0]).hypot(p[1] - q[1]) <= TIP_FEET * v.radius
+        })
+        .collect();
+    let cluster = clusters(&points, &tip_end, merge, TIP_MERGE * sites.size);
     let mut chains: Vec<Option<Chain>> = Vec::new();
     let mut k = 0;
     let mut lone: Vec<usize> = Vec::new(); // single points, by index in `points`
@@ -81,6 +104,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         let b = found[p.candidate].boundary;
         chains.push(Some(Chain {
             ends: [cluster[k], cluster[k + 1]],
+            at_tip: tip_end[k] || tip_end[k + 1],
             boundary: vec![b; p.vertices.len()],
             vertices: p.vertices,
         }));
@@ -95,7 +119,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         let extent = c.vertices.iter().fold(0.0f64, |m, v| {
             m.max((v.xy[0] - first[0]).hypot(v.xy[1] - first[1]))
         });
-        if c.ends[0] == c.ends[1] && extent <= STUB * merge {
+        if c.ends[0] == c.ends[1] && c.at_tip && extent <= STUB * sites.size {
             tip[c.ends[0]] = c
                 .vertices
                 .iter()
@@ -184,8 +208,8 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
 }
 
 /// Cluster indices of points, those within `merge` of each other (transitively) together,
-/// numbered in order of first appearance.
-fn clusters(points: &[Vertex], merge: f64) -> Vec<usize> {
+/// and two tips (`tip`) within `tip_merge`, numbered in order of first appearance.
+fn clusters(points: &[Vertex], tip: &[bool], merge: f64, tip_merge: f64) -> Vec<usize> {
     let n = points.len();
     let mut parent: Vec<usize> = (0..n).collect();
     fn root(parent: &mut [usize], mut i: usize) -> usize {
@@ -198,13 +222,15 @@ fn clusters(points: &[Vertex], merge: f64) -> Vec<usize> {
     // Sorted by x, each point is compared with those within `merge` in x after it.
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| points[a].xy[0].total_cmp(&points[b].xy[0]));
+    let reach = merge.max(tip_merge);
     for (k, &a) in order.iter().enumerate() {
         for &b in &order[k + 1..] {
-            if points[b].xy[0] - points[a].xy[0] > merge {
+            if points[b].xy[0] - points[a].xy[0] > reach {
                 break;
             }
             let (p, q) = (points[a].xy, points[b].xy);
-            if (p[0] - q[0]).hypot(p[1] - q[1]) <= merge {
+            let within = if tip[a] && tip[b] { reach } else { merge };
+            if (p[0] - q[0]).hypot(p[1] - q[1]) <= within {
                 let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
                 parent[ra.max(rb)] = ra.min(rb);
             }

@@ -853,3 +853,28 @@ fn a_leaf_tip_cut_at_a_knot_is_no_loop() {
         .unwrap();
     assert_eq!(tip.kind, NodeKind::End);
 }
+
+/// A random chain whose curvature peaks just before a smooth joint: the leaf to that peak's
+/// centre is made of the bisector of the two segments at the joint and the self-bisector of
+/// the first, whose ends beside the centre (the feet ill-conditioned there) lay 2.3e-5 of
+/// the size apart, every vertex on the axis; the leaf's tip was a piece of its own, apart
+/// from the rest of the axis.
+#[test]
+fn a_leaf_to_a_peak_beside_a_smooth_joint_is_one_edge() {
+    let radii = [
+        1.0,
+        1.9663460010865133,
+        1.084056684050446,
+        1.7325378671521632,
+    ];
+    let wobble = [
+        (-0.05, -0.05),
+        (0.25552091945791006, -0.05),
+        (-0.05, -0.05),
+        (-0.05, -0.05),
+    ];
+    let segs = bezier_chain(&radii, &wobble, &[false, false, true, false]).unwrap();
+    let region = Region::new(assemble(segs, 0, false).unwrap(), vec![]).unwrap();
+    check(&region).unwrap();
+    assert_eq!(kinds(&axis(&region), NodeKind::End), 1);
+}

@@ -88,7 +88,9 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         .zip(&point_boundary)
         .map(|(v, b)| {
             let (p, q) = (sites.foot(b[0], v.tr[0]), sites.foot(b[1], v.tr[1]));
-            (p[0] - q[0]).hypot(p[1] - q[1]) <= TIP_FEET * v.radius
+            // (Not a corner's end: radius and feet's gap both nil there.)
+            v.radius > CORNER_RADIUS * sites.size
+                && (p[0] - q[0]).hypot(p[1] - q[1]) <= TIP_FEET * v.radius
         })
         .collect();
     let cluster = clusters(&points, &tip_end, merge, TIP_MERGE * sites.size);
@@ -219,7 +221,7 @@ fn clusters(points: &[Vertex], tip: &[bool], merge: f64, tip_merge: f64) -> Vec<
         }
         i
     }
-    // Sorted by x, each point is compared with those within `merge` in x after it.
+    // Sorted by x, each point is compared with those within reach in x after it.
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| points[a].xy[0].total_cmp(&points[b].xy[0]));
     let reach = merge.max(tip_merge);

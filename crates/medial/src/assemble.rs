@@ -114,7 +114,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     }
     let clusters_n = cluster.iter().copied().max().map_or(0, |m| m + 1);
     // Stubs go; the tip of each (its least radius: the leaf's end) becomes its node's point.
-    let mut tip: Vec<Option<(Vertex, [usize; 2])>> = vec![None; clusters_n];
+    let mut stub_tip: Vec<Option<(Vertex, [usize; 2])>> = vec![None; clusters_n];
     for slot in chains.iter_mut() {
         let Some(c) = slot else { continue };
         let first = c.vertices[0].xy;
@@ -122,7 +122,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
             m.max((v.xy[0] - first[0]).hypot(v.xy[1] - first[1]))
         });
         if c.ends[0] == c.ends[1] && c.at_tip && extent <= STUB * sites.size {
-            tip[c.ends[0]] = c
+            stub_tip[c.ends[0]] = c
                 .vertices
                 .iter()
                 .zip(&c.boundary)
@@ -134,7 +134,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     // The chains at a stub's node run on to its tip.
     for c in chains.iter_mut().flatten() {
         for end in 0..2 {
-            let Some((t, b)) = tip[c.ends[end]] else {
+            let Some((t, b)) = stub_tip[c.ends[end]] else {
                 continue;
             };
             if end == 0 && c.vertices[0] != t {
@@ -161,7 +161,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     let mut node_of = |c: usize, at: Vertex, nodes: &mut Vec<Node>| -> usize {
         if id[c] == usize::MAX {
             id[c] = nodes.len();
-            let at = tip[c].map_or(at, |t| t.0);
+            let at = stub_tip[c].map_or(at, |t| t.0);
             let kind = kinds[c].unwrap_or(match degree[c] {
                 0 => NodeKind::End,
                 1 if at.radius <= CORNER_RADIUS * sites.size => NodeKind::Corner,

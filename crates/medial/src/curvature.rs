@@ -75,10 +75,15 @@ pub(crate) fn curvature_peak(boundary: &Profile, a: f64, b: f64) -> Option<(f64,
         };
         offer(t0, jet(t0), t0 > a);
         offer(t1, jet(t1), t1 < b);
-        let step = |k: usize| t0 + (t1 - t0) * k as f64 / PEAK_STEPS as f64;
-        for k in 0..PEAK_STEPS {
-            let (s0, s1) = (step(k), step(k + 1));
-            if s1 > s0 && rising(s0) > 0.0 && rising(s1) <= 0.0 {
+        let steps: Vec<(f64, f64)> = (0..=PEAK_STEPS)
+            .map(|k| {
+                let s = t0 + (t1 - t0) * k as f64 / PEAK_STEPS as f64;
+                (s, rising(s))
+            })
+            .collect();
+        for w in steps.windows(2) {
+            let ((s0, r0), (s1, r1)) = (w[0], w[1]);
+            if s1 > s0 && r0 > 0.0 && r1 <= 0.0 {
                 let u = sign_change(&rising, s0, s1);
                 offer(u, jet(u), true);
             }

@@ -95,7 +95,7 @@ impl<'a> Sampled<'a> {
         (self.u[i] + (at - k as f64) * (next - self.u[i])).rem_euclid(period)
     }
 
-    /// The samples between two, along the boundary the short way.
+    /// The length of the boundary between two samples, the short way round.
     fn gap(&self, a: usize, b: usize) -> f64 {
         let d = (self.arc[a] - self.arc[b]).abs();
         d.min(self.length - d)

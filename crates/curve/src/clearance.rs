@@ -124,8 +124,11 @@ impl Profile {
                                 distance,
                             };
                         }
-                        Verdict::Split if piece.depth >= CONVEX_FROM => {
-                            match convex_verdict(&piece, x, r, err) {
+                        Verdict::Split => {
+                            let convex = (piece.depth >= CONVEX_FROM)
+                                .then(|| convex_verdict(&piece, x, r, err))
+                                .flatten();
+                            match convex {
                                 Some(Convex::Outside) => {}
                                 Some(Convex::Inside(t)) => {
                                     let v = piece.lo + t * (piece.hi - piece.lo);
@@ -143,12 +146,7 @@ impl Profile {
                                 None => unresolved = true,
                             }
                         }
-                        Verdict::Split if piece.depth < MAX_DEPTH => {
-                            let (a, b) = halve(&piece, dim);
-                            stack.push(b);
-                            stack.push(a);
-                        }
-                        Verdict::Split | Verdict::Undecided => unresolved = true,
+                        Verdict::Undecided => unresolved = true,
                     }
                 }
             }

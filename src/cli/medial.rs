@@ -74,11 +74,11 @@ pub(super) fn run(
                 "fitted:      {points} control points, at most {error:.3e} from the polylines"
             );
         }
-        let _ = writeln!(
-            s,
-            "certified:   {}\ncomplete:    {}",
-            axis.certified, axis.complete
-        );
+        let _ = writeln!(s, "certified:   {}", axis.certified);
+        if let Some(why) = &axis.reason {
+            let _ = writeln!(s, "  (why: {why})");
+        }
+        let _ = writeln!(s, "complete:    {}", axis.complete);
         if let Some(st) = &stats {
             let _ = writeln!(s, "{}", time_line(st));
         }

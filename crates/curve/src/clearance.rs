@@ -78,6 +78,51 @@ impl Profile {
     /// assert!(matches!(box_.clearance([1.0, 1.0], 1.001), Clearance::Entered { .. }));
     /// ```
     pub fn clearance(&self, x: [f64; 2], r: f64) -> Clearance {
+        self.clearance_in(x, r, None)
+    }
+
+    /// Whether the disk of centre `x` and radius `r` holds a point of the profile whose
+    /// parameter lies in `[lo, hi]` (on a closed profile the window may run past either end
+    /// of the domain, once round): the other points are not looked at.
+    ///
+    /// ```
+    /// use curve::{Clearance, Profile, Segment};
+    /// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+    /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+    /// let box_ = Profile::new(sides, None).unwrap();
+    /// // The disk about (1, 0.5) of radius 1 holds points of the bottom side (0), not of
+    /// // the top side (2) or the left one (3).
+    /// assert_eq!(box_.clearance_between([1.0, 0.5], 1.0, 1.9, 3.1), Clearance::Clear);
+    /// assert!(matches!(
+    ///     box_.clearance_between([1.0, 0.5], 1.0, -0.5, 0.5),
+    ///     Clearance::Entered { .. }
+    /// ));
+    /// ```
+    pub fn clearance_between(&self, x: [f64; 2], r: f64, lo: f64, hi: f64) -> Clearance {
+        let n = self.segments().len() as f64;
+        if lo > hi || lo.is_nan() || hi.is_nan() {
+            return Clearance::Clear; // an empty window
+        }
+        if hi - lo >= n {
+            return self.clearance(x, r);
+        }
+        let window = if self.is_closed() {
+            // Shifted into the domain: one interval, or two where it runs past the seam.
+            let shift = (lo / n).floor() * n;
+            let (a, b) = (lo - shift, hi - shift);
+            if b <= n {
+                Window::new(&[[a, b]])
+            } else {
+                Window::new(&[[a, n], [0.0, b - n]])
+            }
+        } else {
+            Window::new(&[[lo.max(0.0), hi.min(n)]])
+        };
+        self.clearance_in(x, r, Some(&window))
+    }
+
+    /// [`Self::clearance`] for the points with parameters in `window` (all where `None`).
+    fn clearance_in(&self, x: [f64; 2], r: f64, window: Option<&Window>) -> Clearance {
         let x = V2::from_arr(x);
         let mut unresolved = false;
         let mut stack: Vec<Piece> = Vec::new();
@@ -85,6 +130,7 @@ impl Profile {
         // Nearest boxes first: the point found inside is then likely the deepest.
         let near = 1.0 - ROUNDING_ULPS * f64::EPSILON;
         let mut order: Vec<(f64, usize)> = (0..self.segments().len())
+            .filter(|&i| window.is_none_or(|w| w.cover(i as f64, i as f64 + 1.0) != Cover::None))
             .map(|i| (box_distance(self.segment_box(i), x) * near, i))
             .filter(|&(d, _)| d < r)
             .collect();
@@ -98,6 +144,14 @@ impl Profile {
                     continue;
                 }
             }
+            // How much of a piece lies in the window, and whether its point at segment
+            // parameter `v` does.
+            let cover = |p: &Piece| {
+                window.map_or(Cover::Whole, |w| {
+                    w.cover(self.profile_param(i, p.lo), self.profile_param(i, p.hi))
+                })
+            };
+            let within = |v: f64| window.is_none_or(|w| w.holds(self.profile_param(i, v)));
             let pieces = seg.curve().bezier_pieces();
             let dim = pieces.dim();
             let given = seg.curve().curve().coefficient_error();
@@ -111,26 +165,41 @@ impl Profile {
                 });
                 let err = coefficient_error(pieces, k, given);
                 while let Some(piece) = stack.pop() {
+                    let cover = cover(&piece);
+                    if cover == Cover::None {
+                        continue;
+                    }
                     tested += 1;
                     if tested > MAX_PIECES {
                         return Clearance::Unresolved;
                     }
-                    match test_piece(&piece, dim, x, r, err) {
-                        Verdict::Outside => {}
+                    // A piece reaching out of the window is halved until its halves lie in
+                    // it or out of it, unless it is proven outside the disk whole.
+                    let verdict = match test_piece(&piece, dim, x, r, err) {
                         Verdict::Inside { at_end, distance } => {
                             let v = if at_end { piece.hi } else { piece.lo };
-                            return Clearance::Entered {
-                                u: self.profile_param(i, v),
-                                distance,
-                            };
+                            if within(v) {
+                                return Clearance::Entered {
+                                    u: self.profile_param(i, v),
+                                    distance,
+                                };
+                            }
+                            Verdict::Split
                         }
+                        Verdict::Undecided if cover == Cover::Part => Verdict::Split,
+                        other => other,
+                    };
+                    match verdict {
+                        Verdict::Outside => {}
                         Verdict::Split => {
                             let convex = (piece.depth >= CONVEX_FROM)
                                 .then(|| convex_verdict(&piece, x, r, err))
                                 .flatten();
                             match convex {
                                 Some(Convex::Outside) => {}
-                                Some(Convex::Inside(t)) => {
+                                Some(Convex::Inside(t))
+                                    if within(piece.lo + t * (piece.hi - piece.lo)) =>
+                                {
                                     let v = piece.lo + t * (piece.hi - piece.lo);
                                     let p = seg.curve().jet_to(v, 0).p;
                                     return Clearance::Entered {
@@ -138,15 +207,15 @@ impl Profile {
                                         distance: (p - x).norm(),
                                     };
                                 }
-                                None if piece.depth < MAX_DEPTH => {
+                                _ if piece.depth < MAX_DEPTH => {
                                     let (a, b) = halve(&piece, dim);
                                     stack.push(b);
                                     stack.push(a);
                                 }
-                                None => unresolved = true,
+                                _ => unresolved = true,
                             }
                         }
-                        Verdict::Undecided => unresolved = true,
+                        _ => unresolved = true,
                     }
                 }
             }
@@ -155,6 +224,41 @@ impl Profile {
             Clearance::Unresolved
         } else {
             Clearance::Clear
+        }
+    }
+}
+
+/// The profile parameters a clearance looks at: one or two closed intervals.
+struct Window {
+    parts: Vec<[f64; 2]>,
+}
+
+/// How much of a stretch of parameters a window holds.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Cover {
+    Whole,
+    Part,
+    None,
+}
+
+impl Window {
+    fn new(parts: &[[f64; 2]]) -> Self {
+        Self {
+            parts: parts.to_vec(),
+        }
+    }
+
+    fn holds(&self, u: f64) -> bool {
+        self.parts.iter().any(|&[a, b]| u >= a && u <= b)
+    }
+
+    fn cover(&self, lo: f64, hi: f64) -> Cover {
+        if self.parts.iter().any(|&[a, b]| lo >= a && hi <= b) {
+            Cover::Whole
+        } else if self.parts.iter().any(|&[a, b]| hi > a && lo < b) {
+            Cover::Part
+        } else {
+            Cover::None
         }
     }
 }

@@ -43,6 +43,32 @@ fn oracle_distance(p: &Profile, x: [f64; 2]) -> f64 {
     best
 }
 
+/// The distance from `x` to the points of the closed profile with parameters in `[lo,
+/// hi]`: the least of dense samples, then golden-section search about it.
+fn oracle_distance_between(p: &Profile, x: [f64; 2], lo: f64, hi: f64) -> f64 {
+    let n = p.segments().len() as f64;
+    let d = |u: f64| {
+        let q = p.jet_to(u.rem_euclid(n).min(n), 0).p;
+        (q.x - x[0]).hypot(q.y - x[1])
+    };
+    let steps = (SAMPLES as f64 * (hi - lo)).ceil().max(2.0) as usize;
+    let at = |k: usize| lo + (hi - lo) * k as f64 / steps as f64;
+    let k = (0..=steps)
+        .min_by(|&i, &j| d(at(i)).total_cmp(&d(at(j))))
+        .unwrap();
+    let (mut a, mut b) = (at(k.saturating_sub(1)), at((k + 1).min(steps)));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..80 {
+        let (l, r) = (b - g * (b - a), a + g * (b - a));
+        if d(l) < d(r) {
+            b = r;
+        } else {
+            a = l;
+        }
+    }
+    d(at(k)).min(d(0.5 * (a + b)))
+}
+
 /// A closed profile round a star: at each of `n` joints a line, an arc bulging outwards or a
 /// rational cubic Bézier, scaled by `s` and moved by `o`.
 /// (`None` where the bends make it cross itself.)
@@ -121,6 +147,60 @@ proptest! {
         // it the answer may be undecided.
         let rounding = 1e-13 * (size + far * scale);
         check_disks(&p, &xs, o, scale, size, rounding)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// A window of the profile's parameters (running past the seam or not): the disks are
+    /// judged against the points in it only, the distance taken over it alone.
+    #[test]
+    fn clearance_between_agrees_with_dense_distances_in_the_window(
+        kinds in prop::collection::vec(0u8..3, 4..9),
+        bend in prop::collection::vec(-0.4..0.4f64, 8),
+        w in prop::collection::vec(0.3..3.0f64, 2),
+        scale in prop_oneof![Just(1.0), (-30i32..30).prop_map(|k| 2f64.powi(k))],
+        far in prop_oneof![Just(0.0), Just(1e6)],
+        start in -1.0..9.0f64,
+        length in 0.05..4.0f64,
+        xs in prop::collection::vec((-1.8..1.8f64, -1.8..1.8f64), 8),
+    ) {
+        let o = [far * scale, -0.5 * far * scale];
+        let p = profile(&kinds, &bend, &w, scale, o);
+        prop_assume!(p.is_some());
+        let p = p.unwrap();
+        let (lo, hi) = (start, start + length);
+        let size = 2.8 * scale;
+        let rounding = 1e-13 * (size + far * scale);
+        let gap = 1e-9 * size;
+        let n = p.segments().len() as f64;
+        for &(a, b) in &xs {
+            let x = [o[0] + scale * a, o[1] + scale * b];
+            let d = oracle_distance_between(&p, x, lo, hi);
+            if d <= 1e-3 * size {
+                continue;
+            }
+            match p.clearance_between(x, d - gap - rounding, lo, hi) {
+                Clearance::Clear => {}
+                Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
+                Clearance::Entered { u, distance } => {
+                    return Err(TestCaseError::fail(format!(
+                        "entered at u {u} ({distance}) below the distance {d} in the window"
+                    )));
+                }
+            }
+            match p.clearance_between(x, d + gap + rounding, lo, hi) {
+                Clearance::Entered { u, .. } => {
+                    let shifted = lo + (u - lo).rem_euclid(n);
+                    prop_assert!(shifted <= hi + 1e-12, "entered at {u} outside [{lo}, {hi}]");
+                }
+                Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),
+                Clearance::Clear => {
+                    return Err(TestCaseError::fail(format!("clear above the distance {d}")));
+                }
+            }
+        }
     }
 }
 

@@ -205,6 +205,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         nodes,
         edges,
         certified: false,
+        reason: None,
         complete: true,
     }
 }

@@ -13,15 +13,21 @@
 //! at their common ends: junctions, ends at centres of curvature, convex corners; stretches
 //! that continue each other (a foot passing from one segment to the next) are one edge.
 //!
-//! Emptiness is proven on the boundaries' control hulls ([`curve::Profile::clearance`]), and
-//! decided by the nearest point found only within rounding; junctions are solved numerically
-//! (regula falsi on the third contact), not yet certified, so results say `certified: false`.
+//! Emptiness is proven on the boundaries' control hulls ([`curve::Profile::clearance`]);
+//! where rounding leaves a disk undecided, the nearest point found decides it and the
+//! result is not certified. Junctions are solved numerically (regula falsi on the third
+//! contact) and then proven: a disk of radius 1e-10 (or 1e-9) of the size about each holds a
+//! point equidistant from three stretches of the boundary, by the winding of the distances'
+//! differences round it. Ends at arcs' centres and corners are exact data. An end at a
+//! spline's centre of curvature is not proven yet: such an axis says `certified: false`, with
+//! the reason.
 //!
 //! With [`MedialOptions::fit`] each edge also comes as one B-spline of the axis and the radius
 //! ([`EdgeSpline`]), fitted by least squares within the chord tolerance.
 
 mod assemble;
 mod candidates;
+mod certificate;
 mod curvature;
 mod error;
 mod fit;
@@ -120,9 +126,12 @@ pub struct MedialAxis {
     pub nodes: Vec<Node>,
     /// The edges.
     pub edges: Vec<Edge>,
-    /// Whether every junction and trimming decision followed from sign tests (not yet: the
-    /// junctions are solved numerically).
+    /// Whether every trimming decision and the place of every node followed from sign
+    /// tests on bounds (see the crate's documentation).
     pub certified: bool,
+    /// Why not, where `certified` is false.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
     /// False when a search limit was hit.
     pub complete: bool,
 }
@@ -161,6 +170,15 @@ fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialA
     let pieces = stretches::stretches(&sites, &found);
     let mut axis = assemble::assemble(&sites, pieces, &found);
     axis.complete &= complete;
+    let doubt = if !axis.complete {
+        Some("a search limit was hit")
+    } else if sites.some_disk_undecided() {
+        Some(certificate::Doubt::Disk.reason())
+    } else {
+        certificate::doubt(&sites, &axis).map(certificate::Doubt::reason)
+    };
+    axis.certified = doubt.is_none();
+    axis.reason = doubt.map(str::to_string);
     if opts.fit {
         let tol = traced.chord_tol * sites.size;
         for e in &mut axis.edges {

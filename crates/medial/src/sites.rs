@@ -3,6 +3,7 @@
 //! the whole boundary.
 
 use curve::{Clearance, JointKind, ParamCurve, Profile, Region};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A disk counts as empty when no boundary point is nearer its centre than its radius by
 /// more than this share of the region's size: the radius and the distances carry rounding
@@ -42,6 +43,9 @@ pub(crate) struct Sites<'a> {
     pub(crate) size: f64,
     /// The diagonal of that box.
     pub(crate) diagonal: f64,
+    /// Whether some disk was decided by the nearest point found, not proven (set from any
+    /// thread).
+    undecided: AtomicBool,
 }
 
 impl<'a> Sites<'a> {
@@ -107,6 +111,7 @@ impl<'a> Sites<'a> {
             outer_box: [lo[0], lo[1], hi[0], hi[1]],
             size,
             diagonal: (hi[0] - lo[0]).hypot(hi[1] - lo[1]),
+            undecided: AtomicBool::new(false),
         }
     }
 
@@ -154,10 +159,16 @@ impl<'a> Sites<'a> {
         if !undecided {
             return Disk::Empty;
         }
+        self.undecided.store(true, Ordering::Relaxed);
         match self.nearest(x, r) {
             (d, _, _) if d >= r => Disk::Empty,
             (d, k, u) => Disk::Entered(k, u, rho - d),
         }
+    }
+
+    /// Whether some disk's verdict was not proven by bounds.
+    pub(crate) fn some_disk_undecided(&self) -> bool {
+        self.undecided.load(Ordering::Relaxed)
     }
 
     /// Whether `x` lies in the box the axis is clipped to (always, inside the region).

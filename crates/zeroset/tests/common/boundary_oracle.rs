@@ -38,24 +38,31 @@ impl<'a> Oracle<'a> {
 
     /// The distance from `x` to the profile and the parameter of the nearest point.
     pub fn nearest(&self, x: [f64; 2]) -> (f64, f64) {
+        self.minima(x).into_iter().fold(
+            (f64::INFINITY, 0.0),
+            |best, m| if m.0 < best.0 { m } else { best },
+        )
+    }
+
+    /// The local minima of the distance from `x` along the profile (distance, parameter):
+    /// golden-section search on the stretches to either side of every sampled local minimum
+    /// (not only the least sample: at a point of the medial axis two or three minima are
+    /// equal, and the least sample may lie beside the one that is not). The last sample is
+    /// the first one again: a closed profile's seam has both sides.
+    #[allow(dead_code)] // (each test crate uses what it needs)
+    pub fn minima(&self, x: [f64; 2]) -> Vec<(f64, f64)> {
         let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
         let ds: Vec<f64> = self.pts.iter().map(|q| d(*q)).collect();
-        // Golden-section search on the stretches to either side of every sampled local
-        // minimum (not only the least sample: at a point of the medial axis two or three
-        // minima are equal, and the least sample may lie beside the one that is not). The
-        // last sample is the first one again: a closed profile's seam has both sides.
         let last = self.u.len() - 1;
         let f = |u: f64| d(self.p.jet(u).p.arr());
-        let mut best = (f64::INFINITY, 0.0);
+        let mut out = Vec::new();
         for k in 0..=last {
             let before = if k == 0 { last - 1 } else { k - 1 };
             let after = if k == last { 1 } else { k + 1 };
             if ds[k] > ds[before] || ds[k] > ds[after] {
                 continue;
             }
-            if ds[k] < best.0 {
-                best = (ds[k], self.u[k]);
-            }
+            let mut best = (ds[k], self.u[k]);
             for (a, b) in [(before, before + 1), (after - 1, after)] {
                 let (mut a, mut b) = (self.u[a], self.u[b]);
                 let g = 0.5 * (5f64.sqrt() - 1.0);
@@ -72,8 +79,9 @@ impl<'a> Oracle<'a> {
                     best = (f(u), u);
                 }
             }
+            out.push(best);
         }
-        best
+        out
     }
 }
 

@@ -1,0 +1,406 @@
+//! What an axis's `certified` rests on, node by node, decided by sign tests on bounds.
+//!
+//! - A **junction**: a disk about it of radius `h` (a tiny share of the size) holds a point
+//!   equidistant from three stretches of the boundary, one about each of three of its feet.
+//!   With `dA, dB, dC` the distances to those stretches (each 1-Lipschitz), the map
+//!   `(dA − dB, dA − dC)` is shown to wind round zero along a polygon in that disk (Brouwer's
+//!   degree): every distance at a polygon's corner is enclosed by proven disks (one clear of
+//!   the stretch, one entered by it), and along each side one component keeps its sign
+//!   within the Lipschitz bound.
+//! - An **end** on an arc: at the arc's centre, its radius the arc's (exact data).
+//! - A **corner**, the **joint** of an annulus and a **clip** leaf: at a corner of the
+//!   boundary, anywhere on a cycle, on the clip box (exact data or no claim of place).
+//!
+//! An end at a spline's centre of curvature is found numerically (its curvature extremum is
+//! not proven yet): such an axis says `certified: false`.
+
+use crate::sites::Sites;
+use crate::{MedialAxis, Node, NodeKind};
+use curve::{Clearance, ParamCurve};
+
+/// Radii of the disks about a junction searched for its exact point, as shares of the size:
+/// the first well above the enclosures' rounding (~1e-15 of the coordinates), the second
+/// for junctions far from the origin; no more than the contract's claim of place for a
+/// vertex.
+const JUNCTION_ROOM: [f64; 2] = [1e-10, 1e-9];
+
+/// How much wider than the junction's room every enclosure of a distance is (its proven
+/// disks lie this share of the room inside and outside the distance to the foot).
+const ENCLOSURE: f64 = 1e-3;
+
+/// Corners of the first polygon about a junction, and the most it may be refined to: sides
+/// where no component of the map is proven of one sign are halved.
+const FIRST_CORNERS: usize = 8;
+const MOST_CORNERS: usize = 64;
+
+/// Feet of a node's edges within this share of the size are one contact with the boundary
+/// (the stretches meeting at a junction found it to ~1e-12 of the size each).
+const SAME_FOOT: f64 = 1e-6;
+
+/// Why an axis is not certified.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Doubt {
+    /// A disk was decided by the nearest point found (within rounding of the boundary).
+    Disk,
+    /// A junction's exact point was not proven near it.
+    Junction,
+    /// An end's curvature extremum was not proven.
+    End,
+}
+
+impl Doubt {
+    /// The reason, as the result states it.
+    pub(crate) fn reason(self) -> &'static str {
+        match self {
+            Doubt::Disk => {
+                "a disk's emptiness was decided by the nearest point found, within rounding of \
+                 the boundary"
+            }
+            Doubt::Junction => {
+                "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
+            }
+            Doubt::End => {
+                "an end at a spline's centre of curvature: its curvature extremum is found \
+                 numerically, not proven"
+            }
+        }
+    }
+}
+
+/// The first node of `axis` whose place is not proven, as a doubt.
+pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis) -> Option<Doubt> {
+    axis.nodes.iter().find_map(|node| {
+        let proven = match node.kind {
+            NodeKind::Junction => junction_proven(sites, node, &feet_of(sites, axis, node.id)),
+            NodeKind::End => end_on_arc(sites, node, &feet_of(sites, axis, node.id)),
+            NodeKind::Corner => at_corner(sites, node),
+            NodeKind::Joint | NodeKind::Clip => true,
+        };
+        (!proven).then_some(if node.kind == NodeKind::Junction {
+            Doubt::Junction
+        } else {
+            Doubt::End
+        })
+    })
+}
+
+/// A contact of a node's disk with the boundary: boundary, profile parameter, point.
+#[derive(Debug, Clone, Copy)]
+struct Foot {
+    boundary: usize,
+    u: f64,
+    xy: [f64; 2],
+}
+
+/// The distinct feet of the edges' ends at node `id`.
+fn feet_of(sites: &Sites<'_>, axis: &MedialAxis, id: usize) -> Vec<Foot> {
+    let same = SAME_FOOT * sites.size;
+    let mut out: Vec<Foot> = Vec::new();
+    for e in &axis.edges {
+        let ends = [(e.from == id, 0), (e.to == id, e.feet.len() - 1)];
+        for (at, k) in ends {
+            if !at {
+                continue;
+            }
+            for s in 0..2 {
+                let (b, u) = (e.boundary[k][s], e.feet[k][s]);
+                let xy = sites.foot(b, u);
+                if !out
+                    .iter()
+                    .any(|f| f.boundary == b && distance(f.xy, xy) <= same)
+                {
+                    out.push(Foot { boundary: b, u, xy });
+                }
+            }
+        }
+    }
+    out
+}
+
+fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// Whether an end lies at the centre of an arc one of its feet is on (any arc where it has
+/// no edge: the centre of a disk), with its radius.
+fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
+    let room = JUNCTION_ROOM[1] * sites.size;
+    let centre_of = |s: &curve::Segment| {
+        s.circle()
+            .is_some_and(|(c, r)| distance(c, node.xy) <= room && (r - node.radius).abs() <= room)
+    };
+    if feet.is_empty() {
+        return sites
+            .boundaries
+            .iter()
+            .any(|b| b.segments().iter().any(centre_of));
+    }
+    feet.iter().any(|f| {
+        let b = sites.boundaries[f.boundary];
+        centre_of(&b.segments()[b.locate(f.u).0])
+    })
+}
+
+/// Whether a corner leaf lies at a corner of the boundary.
+fn at_corner(sites: &Sites<'_>, node: &Node) -> bool {
+    let room = JUNCTION_ROOM[1] * sites.size;
+    sites.boundaries.iter().any(|b| {
+        b.corners().any(|j| {
+            let p = b.jet(j.u).p;
+            distance([p.x, p.y], node.xy) <= room
+        })
+    })
+}
+
+/// Whether a point equidistant from three stretches of the boundary about three of the
+/// junction's feet is proven within `JUNCTION_ROOM` of it.
+fn junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
+    if feet.len() < 3 {
+        return false;
+    }
+    let contacts: Vec<Contact> = feet[..3]
+        .iter()
+        .map(|f| Contact::new(sites, f, feet))
+        .collect();
+    JUNCTION_ROOM.iter().any(|&room| {
+        let h = room * sites.size;
+        winds_round_zero(sites, node.xy, h, &contacts)
+    })
+}
+
+/// A stretch of the boundary about one foot: from halfway to the feet beside it on its
+/// boundary (the whole boundary where it has no other), so the three are apart.
+struct Contact {
+    boundary: usize,
+    lo: f64,
+    hi: f64,
+    xy: [f64; 2],
+}
+
+impl Contact {
+    fn new(sites: &Sites<'_>, f: &Foot, feet: &[Foot]) -> Self {
+        let b = sites.boundaries[f.boundary];
+        let n = b.domain().1;
+        let apart = |u: f64| {
+            let d = (u - f.u).abs();
+            if b.is_closed() {
+                d.min(n - d)
+            } else {
+                d
+            }
+        };
+        let half = feet
+            .iter()
+            .filter(|g| g.boundary == f.boundary && g.u != f.u)
+            .map(|g| 0.5 * apart(g.u))
+            .fold(n, f64::min);
+        Self {
+            boundary: f.boundary,
+            lo: f.u - half,
+            hi: f.u + half,
+            xy: f.xy,
+        }
+    }
+
+    /// Bounds on the distance from `x` to the stretch: disks proven clear of it and entered
+    /// by it, `room` inside and outside the distance to the foot (`None` where either is not
+    /// proven).
+    fn enclose(&self, sites: &Sites<'_>, x: [f64; 2], room: f64) -> Option<[f64; 2]> {
+        let b = sites.boundaries[self.boundary];
+        let d = distance(x, self.xy);
+        let clear = b.clearance_between(x, d - room, self.lo, self.hi) == Clearance::Clear;
+        let entered = matches!(
+            b.clearance_between(x, d + room, self.lo, self.hi),
+            Clearance::Entered { .. }
+        );
+        (clear && entered).then_some([d - room, d + room])
+    }
+}
+
+/// A corner of the polygon about the junction: its angle, point and the enclosures of the
+/// map's two components there.
+#[derive(Clone, Copy)]
+struct Corner {
+    angle: f64,
+    xy: [f64; 2],
+    map: [[f64; 2]; 2],
+}
+
+impl Corner {
+    /// The quadrant of the map's value (0 to 3, counterclockwise from both positive), if
+    /// both components are proven of one sign.
+    fn quadrant(&self) -> Option<i32> {
+        let sign = |e: [f64; 2]| {
+            if e[0] > 0.0 {
+                Some(true)
+            } else if e[1] < 0.0 {
+                Some(false)
+            } else {
+                None
+            }
+        };
+        Some(match (sign(self.map[0])?, sign(self.map[1])?) {
+            (true, true) => 0,
+            (false, true) => 1,
+            (false, false) => 2,
+            (true, false) => 3,
+        })
+    }
+}
+
+/// Whether the map `(dA − dB, dA − dC)` winds round zero along a polygon inscribed in the
+/// circle of radius `h` about `centre`: a zero inside, the point equidistant from the three.
+fn winds_round_zero(sites: &Sites<'_>, centre: [f64; 2], h: f64, contacts: &[Contact]) -> bool {
+    let room = ENCLOSURE * h;
+    let corner = |angle: f64| -> Option<Corner> {
+        let xy = [centre[0] + h * angle.cos(), centre[1] + h * angle.sin()];
+        let d: Vec<[f64; 2]> = contacts
+            .iter()
+            .map(|c| c.enclose(sites, xy, room))
+            .collect::<Option<_>>()?;
+        let minus = |a: [f64; 2], b: [f64; 2]| [a[0] - b[1], a[1] - b[0]];
+        Some(Corner {
+            angle,
+            xy,
+            map: [minus(d[0], d[1]), minus(d[0], d[2])],
+        })
+    };
+    let tau = std::f64::consts::TAU;
+    let mut ring: Vec<Corner> = Vec::with_capacity(MOST_CORNERS);
+    for k in 0..FIRST_CORNERS {
+        match corner(tau * k as f64 / FIRST_CORNERS as f64) {
+            Some(c) => ring.push(c),
+            None => return false,
+        }
+    }
+    // Refined until every corner has a quadrant (one without is moved a third of the way
+    // to the next) and every side keeps one component's sign (one that does not is halved).
+    let (mut k, mut evaluations) = (0, FIRST_CORNERS);
+    while k < ring.len() {
+        let next = (k + 1) % ring.len();
+        let angle_after = |j: usize| {
+            let after = ring[(j + 1) % ring.len()].angle;
+            if j + 1 == ring.len() {
+                after + tau
+            } else {
+                after
+            }
+        };
+        let (a, b) = (ring[k], ring[next]);
+        let (at, moved) = if a.quadrant().is_none() {
+            (k, a.angle + (angle_after(k) - a.angle) / 3.0)
+        } else if b.quadrant().is_none() {
+            (next, b.angle + (angle_after(next) - b.angle) / 3.0)
+        } else if !side_keeps_a_sign(&a, &b) {
+            (usize::MAX, 0.5 * (a.angle + angle_after(k)))
+        } else {
+            k += 1;
+            continue;
+        };
+        evaluations += 1;
+        if ring.len() >= MOST_CORNERS || evaluations > 2 * MOST_CORNERS {
+            return false;
+        }
+        let Some(c) = corner(moved) else {
+            return false;
+        };
+        if at == usize::MAX {
+            ring.insert(k + 1, c);
+        } else {
+            ring[at] = c;
+        }
+    }
+    // Each side moves the map to the same or a neighbouring quadrant.
+    let turns: i32 = (0..ring.len())
+        .map(|k| {
+            let (a, b) = (&ring[k], &ring[(k + 1) % ring.len()]);
+            match (b.quadrant().unwrap_or(0) - a.quadrant().unwrap_or(0)).rem_euclid(4) {
+                1 => 1,
+                3 => -1,
+                _ => 0,
+            }
+        })
+        .sum();
+    turns != 0
+}
+
+/// Whether one component of the map keeps its sign along the side from `a` to `b`: each
+/// distance is 1-Lipschitz, so each component changes by at most twice the way along.
+fn side_keeps_a_sign(a: &Corner, b: &Corner) -> bool {
+    // (The length's rounding allowed for, generously.)
+    let length = distance(a.xy, b.xy) * (1.0 + 1e-12);
+    (0..2).any(|i| {
+        a.map[i][0] + b.map[i][0] > 2.0 * length || a.map[i][1] + b.map[i][1] < -2.0 * length
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{medial_axis, MedialOptions};
+    use curve::{Profile, Region, Segment};
+
+    /// A 10 × 6 pocket with rounded corners of radius 1: four ends at the arcs' centres, two
+    /// junctions.
+    fn pocket() -> Region {
+        let (w, h, r) = (10.0, 6.0, 1.0);
+        let q = std::f64::consts::FRAC_PI_2;
+        let segs = vec![
+            Segment::line([r, 0.0], [w - r, 0.0]),
+            Segment::arc([w - r, r], r, -q, 0.0),
+            Segment::line([w, r], [w, h - r]),
+            Segment::arc([w - r, h - r], r, 0.0, q),
+            Segment::line([w - r, h], [r, h]),
+            Segment::arc([r, h - r], r, q, 2.0 * q),
+            Segment::line([0.0, h - r], [0.0, r]),
+            Segment::arc([r, r], r, 2.0 * q, 3.0 * q),
+        ];
+        let segs = segs
+            .into_iter()
+            .collect::<Result<Vec<_>, _>>()
+            .expect("segments");
+        Region::new(Profile::new(segs, None).expect("profile"), vec![]).expect("region")
+    }
+
+    #[test]
+    fn a_pocket_of_lines_and_arcs_is_certified() {
+        let region = pocket();
+        let axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
+        assert!(axis.certified, "{:?}", axis.reason);
+        assert_eq!(doubt(&Sites::new(&region, false), &axis), None);
+    }
+
+    #[test]
+    fn a_junction_moved_off_its_place_is_not_proven() {
+        let region = pocket();
+        let sites = Sites::new(&region, false);
+        let axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
+        let j = axis
+            .nodes
+            .iter()
+            .position(|n| n.kind == NodeKind::Junction)
+            .expect("a junction");
+        // 2e-9 of the size off: the exact point lies outside both disks searched about it.
+        let mut moved = axis.clone();
+        moved.nodes[j].xy[1] += 2e-9 * sites.size;
+        assert_eq!(doubt(&sites, &moved), Some(Doubt::Junction));
+        // Within the first disk's room it stays proven.
+        let mut nudged = axis.clone();
+        nudged.nodes[j].xy[1] += 0.2 * JUNCTION_ROOM[0] * sites.size;
+        assert_eq!(doubt(&sites, &nudged), None);
+    }
+
+    #[test]
+    fn an_end_off_its_arcs_centre_is_not_proven() {
+        let region = pocket();
+        let sites = Sites::new(&region, false);
+        let mut axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
+        let e = axis
+            .nodes
+            .iter()
+            .position(|n| n.kind == NodeKind::End)
+            .expect("an end");
+        axis.nodes[e].xy[0] += 2e-9 * sites.size;
+        assert_eq!(doubt(&sites, &axis), Some(Doubt::End));
+    }
+}

@@ -109,6 +109,82 @@ pub fn linear(terms: usize, magnitude: f64, carried: f64) -> f64 {
     (gamma(terms + 1) * magnitude + carried) * (1.0 + gamma(1))
 }
 
+/// A value computed in floating point with a bound on its distance from the exact value it
+/// stands for: `|value − exact| ≤ error`. Sums and products carry the operands' errors and
+/// add their own rounding, so a sign read off the result ([`Bounded::sign`]) holds for the
+/// exact value.
+///
+/// ```
+/// use bspline::rounding::Bounded;
+/// // 0.1 is stored within half an ulp of one tenth; 3 × 0.1 − 0.3 is then known only to a
+/// // few units of rounding, with no trusted sign.
+/// let tenth = Bounded::new(0.1, 0.1 * f64::EPSILON);
+/// let d = Bounded::exact(3.0).mul(tenth).sub(Bounded::new(0.3, 0.3 * f64::EPSILON));
+/// assert_eq!(d.sign(), None);
+/// assert_eq!(Bounded::exact(2.0).mul(tenth).sign(), Some(1.0));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bounded {
+    /// The computed value.
+    pub value: f64,
+    /// The bound on its error.
+    pub error: f64,
+}
+
+impl Bounded {
+    /// A value known to within `error`.
+    pub fn new(value: f64, error: f64) -> Self {
+        Self { value, error }
+    }
+
+    /// A value known exactly.
+    pub fn exact(value: f64) -> Self {
+        Self::new(value, 0.0)
+    }
+
+    /// The sum: the operands' errors and the sum's rounding.
+    #[allow(clippy::should_implement_trait)] // (named calls read as the bounds they carry)
+    pub fn add(self, o: Bounded) -> Bounded {
+        let value = self.value + o.value;
+        Self::new(
+            value,
+            up(self.error + o.error + UNIT_ROUNDOFF * value.abs()),
+        )
+    }
+
+    /// The difference.
+    #[allow(clippy::should_implement_trait)]
+    pub fn sub(self, o: Bounded) -> Bounded {
+        self.add(Bounded::new(-o.value, o.error))
+    }
+
+    /// The product: `|a| e_b + |b| e_a + e_a e_b` carried, and the product's rounding.
+    #[allow(clippy::should_implement_trait)]
+    pub fn mul(self, o: Bounded) -> Bounded {
+        let value = self.value * o.value;
+        let carried =
+            self.value.abs() * o.error + o.value.abs() * self.error + self.error * o.error;
+        Self::new(value, up(carried + UNIT_ROUNDOFF * value.abs()))
+    }
+
+    /// The sign of the exact value (+1 or −1) where the bound proves it.
+    pub fn sign(self) -> Option<f64> {
+        if self.value > self.error {
+            Some(1.0)
+        } else if self.value < -self.error {
+            Some(-1.0)
+        } else {
+            None
+        }
+    }
+}
+
+/// A bound computed in floating point, raised past its own rounding (a few operations, each
+/// within `u`, and the `|value|` it was taken from within `u` of the exact result).
+fn up(bound: f64) -> f64 {
+    bound * (1.0 + 8.0 * UNIT_ROUNDOFF)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -418,3 +418,49 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases(256)))]
+
+    /// `rounding::Bounded` through sums and products (with cancellations: the second product
+    /// near the first) holds its bound on the exact value of the same expression of exact
+    /// inputs anywhere within the inputs' errors.
+    #[test]
+    fn bounded_arithmetic_holds_its_bound(
+        x in prop::collection::vec(-1.0..1.0f64, 6),
+        scale in prop::collection::vec(-60i32..60, 6),
+        near in any::<bool>(),
+        rel_err in prop::collection::vec(prop_oneof![Just(0.0), 0.0..1e-10f64], 6),
+        at in prop::collection::vec(-1.0..1.0f64, 6),
+    ) {
+        use bspline::rounding::Bounded;
+        let mut v: Vec<f64> = x.iter().zip(&scale).map(|(a, k)| a * 2f64.powi(*k)).collect();
+        if near {
+            // x2 x3 within rounding of x0 x1.
+            v[2] = v[0];
+            v[3] = v[1] * (1.0 + 1e-15);
+        }
+        let errs: Vec<f64> = v.iter().zip(&rel_err).map(|(a, e)| a.abs() * e).collect();
+        let b: Vec<Bounded> = v.iter().zip(&errs).map(|(&a, &e)| Bounded::new(a, e)).collect();
+        let got = b[0]
+            .mul(b[1])
+            .sub(b[2].mul(b[3]))
+            .mul(b[4].add(b[5]))
+            .sub(b[0].mul(b[0]).mul(b[5]));
+        // The exact inputs: each value moved by a share `at` of its error.
+        let e: Vec<Q> = v
+            .iter()
+            .zip(&errs)
+            .zip(&at)
+            .map(|((&a, &err), &t)| q(a) + q(err) * q(t))
+            .collect();
+        let want = (&e[0] * &e[1] - &e[2] * &e[3]) * (&e[4] + &e[5]) - &e[0] * &e[0] * &e[5];
+        prop_assert!(
+            !exact::exceeds(&want, got.value, got.error),
+            "{} vs exact {} (bound {:e})",
+            got.value,
+            exact::f(&want),
+            got.error
+        );
+    }
+}

@@ -7,14 +7,16 @@
 //!   degree): every distance at a polygon's corner is enclosed by proven disks (one clear of
 //!   the stretch, one entered by it), and along each side one component keeps its sign
 //!   within the Lipschitz bound.
-//! - An **end** on an arc: at the arc's centre, its radius the arc's (exact data).
+//! - An **end** on an arc: at the arc's centre, its radius the arc's (exact data). An end on
+//!   a spline: at the centre of curvature of one of its feet, the curvature's magnitude
+//!   proven rising `tol` (the parameter tolerance) before that foot and falling `tol` after
+//!   it, by bounds on the rate's numerator ([`proven_rate_sign`]): a peak lies within `tol`
+//!   of the foot.
 //! - A **corner**, the **joint** of an annulus and a **clip** leaf: at a corner of the
 //!   boundary, anywhere on a cycle, on the clip box (exact data or no claim of place).
-//!
-//! An end at a spline's centre of curvature is found numerically (its curvature extremum is
-//! not proven yet): such an axis says `certified: false`.
 
-use crate::sites::Sites;
+use crate::curvature::proven_rate_sign;
+use crate::sites::{Disk, Sites};
 use crate::{MedialAxis, Node, NodeKind};
 use curve::{Clearance, ParamCurve};
 
@@ -60,19 +62,29 @@ impl Doubt {
                 "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
             }
             Doubt::End => {
-                "an end at a spline's centre of curvature: its curvature extremum is found \
-                 numerically, not proven"
+                "an end was not proven at an arc's centre, or at a centre of curvature within \
+                 the tolerance of a proven peak of the curvature"
             }
         }
     }
 }
 
-/// The first node of `axis` whose place is not proven, as a doubt.
-pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis) -> Option<Doubt> {
+/// The first node of `axis` whose place is not proven, as a doubt; `tol` is the parameter
+/// tolerance an end's peak of curvature is proven to.
+pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis, tol: f64) -> Option<Doubt> {
     axis.nodes.iter().find_map(|node| {
+        // A junction's or an end's disk is empty (to the slack): the node is on the axis.
+        let empty = || sites.disk(node.xy, node.radius) == Disk::Empty;
         let proven = match node.kind {
-            NodeKind::Junction => junction_proven(sites, node, &feet_of(sites, axis, node.id)),
-            NodeKind::End => end_on_arc(sites, node, &feet_of(sites, axis, node.id)),
+            NodeKind::Junction => {
+                empty() && junction_proven(sites, node, &feet_of(sites, axis, node.id))
+            }
+            NodeKind::End => {
+                let feet = feet_of(sites, axis, node.id);
+                empty()
+                    && (end_on_arc(sites, node, &feet)
+                        || end_at_curvature_peak(sites, node, &feet, tol))
+            }
             NodeKind::Corner => at_corner(sites, node),
             NodeKind::Joint | NodeKind::Clip => true,
         };
@@ -138,6 +150,44 @@ fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
     feet.iter().any(|f| {
         let b = sites.boundaries[f.boundary];
         centre_of(&b.segments()[b.locate(f.u).0])
+    })
+}
+
+/// Whether an end lies at the centre of curvature of one of its feet (on either segment at
+/// a joint), with that radius, where the curvature's magnitude is proven to rise `tol`
+/// before the foot and to fall `tol` after it.
+fn end_at_curvature_peak(sites: &Sites<'_>, node: &Node, feet: &[Foot], tol: f64) -> bool {
+    let room = JUNCTION_ROOM[1] * sites.size;
+    feet.iter().any(|f| {
+        let b = sites.boundaries[f.boundary];
+        let n = b.domain().1;
+        let (i, _) = b.locate(f.u);
+        let beside = if f.u == i as f64 && (i > 0 || b.is_closed()) {
+            Some((i + b.segments().len() - 1) % b.segments().len())
+        } else {
+            None
+        };
+        let at_centre = |s: usize| {
+            let j = b.jet_on(s, f.u, 2);
+            let k = j.curvature();
+            let centre = j.p + j.d1.perp().unit() * (1.0 / k);
+            k != 0.0
+                && distance(centre.arr(), node.xy) <= room
+                && (1.0 / k.abs() - node.radius).abs() <= room
+        };
+        if !(at_centre(i) || beside.is_some_and(at_centre)) {
+            return false;
+        }
+        let (before, after) = (f.u - tol, f.u + tol);
+        let on = |u: f64| {
+            if b.is_closed() {
+                Some(u.rem_euclid(n))
+            } else {
+                (0.0..=n).contains(&u).then_some(u)
+            }
+        };
+        let rate = |u: Option<f64>| u.and_then(|u| proven_rate_sign(b, b.locate(u).0, u));
+        rate(on(before)) == Some(1.0) && rate(on(after)) == Some(-1.0)
     })
 }
 
@@ -340,6 +390,8 @@ mod tests {
     use crate::{medial_axis, MedialOptions};
     use curve::{Profile, Region, Segment};
 
+    const TOL: f64 = zeroset::DEFAULT_TOL;
+
     /// A 10 × 6 pocket with rounded corners of radius 1: four ends at the arcs' centres, two
     /// junctions.
     fn pocket() -> Region {
@@ -367,7 +419,7 @@ mod tests {
         let region = pocket();
         let axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
         assert!(axis.certified, "{:?}", axis.reason);
-        assert_eq!(doubt(&Sites::new(&region, false), &axis), None);
+        assert_eq!(doubt(&Sites::new(&region, false), &axis, TOL), None);
     }
 
     #[test]
@@ -383,11 +435,11 @@ mod tests {
         // 2e-9 of the size off: the exact point lies outside both disks searched about it.
         let mut moved = axis.clone();
         moved.nodes[j].xy[1] += 2e-9 * sites.size;
-        assert_eq!(doubt(&sites, &moved), Some(Doubt::Junction));
+        assert_eq!(doubt(&sites, &moved, TOL), Some(Doubt::Junction));
         // Within the first disk's room it stays proven.
         let mut nudged = axis.clone();
         nudged.nodes[j].xy[1] += 0.2 * JUNCTION_ROOM[0] * sites.size;
-        assert_eq!(doubt(&sites, &nudged), None);
+        assert_eq!(doubt(&sites, &nudged, TOL), None);
     }
 
     #[test]
@@ -401,6 +453,56 @@ mod tests {
             .position(|n| n.kind == NodeKind::End)
             .expect("an end");
         axis.nodes[e].xy[0] += 2e-9 * sites.size;
-        assert_eq!(doubt(&sites, &axis), Some(Doubt::End));
+        assert_eq!(doubt(&sites, &axis, TOL), Some(Doubt::End));
+    }
+
+    /// The issue's periodic cubic: two ends at centres of curvature of its sharpest points.
+    fn periodic_cubic() -> Region {
+        let pts = [
+            [0.0, 0.0],
+            [2.0, -1.0],
+            [4.0, 0.0],
+            [4.0, 2.0],
+            [2.0, 1.2],
+            [0.0, 2.0],
+        ];
+        let periodic = curve::SplineCurve::periodic(3, &pts, None).expect("spline");
+        let (a, b) = periodic.domain();
+        let one_turn = periodic.curve().restrict(a, b).expect("restricted");
+        let c = curve::SplineCurve::new(one_turn).expect("spline");
+        let seg = Segment::spline(curve::SegmentKind::BSpline, c).expect("segment");
+        let outline = Profile::new(vec![seg], Some(true)).expect("profile");
+        Region::new(outline, vec![]).expect("region")
+    }
+
+    #[test]
+    fn ends_at_proven_peaks_of_a_splines_curvature_are_certified() {
+        let region = periodic_cubic();
+        let sites = Sites::new(&region, false);
+        let axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
+        assert!(axis.certified, "{:?}", axis.reason);
+        assert_eq!(axis.nodes.len(), 2);
+        // The same end moved to the centre of curvature 1e-6 along the boundary from its
+        // foot: a centre of curvature, but no peak within the tolerance of its foot.
+        let mut moved = axis.clone();
+        let (e, edge) = (0, &mut moved.edges[0]);
+        let (k, u) = if edge.from == e {
+            (0, edge.feet[0][0])
+        } else {
+            (edge.feet.len() - 1, edge.feet[edge.feet.len() - 1][0])
+        };
+        let b = sites.boundaries[0];
+        let v = u + 1e-6;
+        let j = b.jet_on(b.locate(v).0, v, 2);
+        let centre = j.p + j.d1.perp().unit() * (1.0 / j.curvature());
+        edge.feet[k] = [v, v];
+        moved.nodes[e].xy = centre.arr();
+        moved.nodes[e].radius = 1.0 / j.curvature().abs();
+        assert_eq!(doubt(&sites, &moved, TOL), Some(Doubt::End));
+        // Its disk is still empty: the rates decided.
+        assert_eq!(
+            sites.disk(moved.nodes[e].xy, moved.nodes[e].radius),
+            Disk::Empty
+        );
     }
 }

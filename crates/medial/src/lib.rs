@@ -175,7 +175,7 @@ fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialA
     } else if sites.some_disk_undecided() {
         Some(certificate::Doubt::Disk.reason())
     } else {
-        certificate::doubt(&sites, &axis).map(certificate::Doubt::reason)
+        certificate::doubt(&sites, &axis, opts.tol).map(certificate::Doubt::reason)
     };
     axis.certified = doubt.is_none();
     axis.reason = doubt.map(str::to_string);

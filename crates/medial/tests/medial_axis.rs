@@ -469,6 +469,39 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
                 "certified junction {node:?}: {touching} contacts, distance {least}"
             );
         }
+        // A certified end off an arc's centre is at a peak of the curvature: the largest of
+        // dense samples about its foot lies next to it.
+        for node in a.nodes.iter().filter(|n| n.kind == NodeKind::End) {
+            let Some((u, k)) = end_foot(&a, node.id) else {
+                continue;
+            };
+            let p = b.profiles[k];
+            let n = p.segments().len() as f64;
+            // (An end at an arc's centre, or at a joint with an arc, is exact data.)
+            let (i, _) = p.locate(u.rem_euclid(n));
+            let before = p.locate((u - 1e-9).rem_euclid(n)).0;
+            if p.segments()[i].circle().is_some() || p.segments()[before].circle().is_some() {
+                continue;
+            }
+            let kappa = |v: f64| {
+                let v = if p.is_closed() {
+                    v.rem_euclid(n)
+                } else {
+                    v.clamp(0.0, n)
+                };
+                let s = p.locate(v).0;
+                p.jet_on(s, v, 2).curvature().abs()
+            };
+            let (reach, steps) = (1e-3, 4000);
+            let top = (0..=steps)
+                .map(|j| u - reach + 2.0 * reach * j as f64 / steps as f64)
+                .max_by(|x, y| kappa(*x).total_cmp(&kappa(*y)))
+                .unwrap();
+            prop_assert!(
+                (top - u).abs() <= 2.0 * reach / steps as f64 + 1e-9,
+                "certified end {node:?} at foot {u}: the curvature peaks at {top}"
+            );
+        }
     }
     // Connected, with one cycle per hole.
     let n = a.nodes.len();
@@ -524,6 +557,20 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     let found = sampled.points.len();
     MEDIAL_POINTS.fetch_add(found.min(1), Ordering::Relaxed);
     Ok(())
+}
+
+/// The foot (parameter, boundary) of the edge's end at node `id`.
+fn end_foot(a: &MedialAxis, id: usize) -> Option<(f64, usize)> {
+    a.edges.iter().find_map(|e| {
+        let k = if e.from == id {
+            0
+        } else if e.to == id {
+            e.feet.len() - 1
+        } else {
+            return None;
+        };
+        Some((e.feet[k][0], e.boundary[k][0]))
+    })
 }
 
 fn polygon(steps: &[f64], radii: &[f64], round: &[f64]) -> Option<Vec<Segment>> {

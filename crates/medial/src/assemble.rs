@@ -6,6 +6,7 @@ use crate::candidates::Candidate;
 use crate::sites::Sites;
 use crate::stretches::{Stretch, Vertex};
 use crate::{Edge, MedialAxis, Node, NodeKind};
+use curve::ParamCurve;
 
 /// Ends of stretches within this share of the region's size are one node: junctions found on
 /// different branches, and branches continuing each other, agree to ~1e-12 of the size.
@@ -15,7 +16,8 @@ const MERGE: f64 = 1e-6;
 /// beside a centre of curvature, where the feet are ill-conditioned: stretches of
 /// neighbouring pieces (cut at a knot or a joint) end up to ~2e-5 of the size apart there,
 /// every one of their vertices on the axis. Two such ends within `TIP_MERGE` of the size
-/// are one node.
+/// whose feet close in on one foot (their stretches of the boundary between the feet meet)
+/// are one node: two leaves' tips beside one smooth joint stay two.
 const TIP_FEET: f64 = 0.05;
 const TIP_MERGE: f64 = 1e-4;
 
@@ -93,7 +95,15 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
                 && (p[0] - q[0]).hypot(p[1] - q[1]) <= TIP_FEET * v.radius
         })
         .collect();
-    let cluster = clusters(&points, &tip_end, merge, TIP_MERGE * sites.size);
+    // Where a tip end's feet lie along its boundary (the short way round): ends beside one
+    // centre of curvature have feet closing in on one foot from either side.
+    let feet_span: Vec<Option<FeetSpan>> = points
+        .iter()
+        .zip(&point_boundary)
+        .zip(&tip_end)
+        .map(|((v, b), &tip)| (tip && b[0] == b[1]).then(|| FeetSpan::new(sites, b[0], v.tr)))
+        .collect();
+    let cluster = clusters(&points, &feet_span, merge, TIP_MERGE * sites.size);
     let mut chains: Vec<Option<Chain>> = Vec::new();
     let mut k = 0;
     let mut lone: Vec<usize> = Vec::new(); // single points, by index in `points`
@@ -210,9 +220,57 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     }
 }
 
+/// The stretch of a boundary between an end's two feet, the short way round on a closed
+/// one.
+#[derive(Debug, Clone, Copy)]
+struct FeetSpan {
+    boundary: usize,
+    lo: f64,
+    hi: f64,
+    /// The boundary's parameter length where it is closed.
+    period: Option<f64>,
+}
+
+impl FeetSpan {
+    fn new(sites: &Sites<'_>, boundary: usize, tr: [f64; 2]) -> Self {
+        let b = sites.boundaries[boundary];
+        let n = b.domain().1;
+        let (mut lo, mut hi) = (tr[0].min(tr[1]), tr[0].max(tr[1]));
+        if b.is_closed() && hi - lo > 0.5 * n {
+            (lo, hi) = (hi, lo + n);
+        }
+        Self {
+            boundary,
+            lo,
+            hi,
+            period: b.is_closed().then_some(n),
+        }
+    }
+
+    /// Whether the two stretches share a point (both ends close in on one foot).
+    fn meets(&self, o: &FeetSpan) -> bool {
+        if self.boundary != o.boundary {
+            return false;
+        }
+        let shifts: &[f64] = match self.period {
+            Some(n) => &[-n, 0.0, n],
+            None => &[0.0],
+        };
+        shifts
+            .iter()
+            .any(|s| o.lo + s <= self.hi && o.hi + s >= self.lo)
+    }
+}
+
 /// Cluster indices of points, those within `merge` of each other (transitively) together,
-/// and two tips (`tip`) within `tip_merge`, numbered in order of first appearance.
-fn clusters(points: &[Vertex], tip: &[bool], merge: f64, tip_merge: f64) -> Vec<usize> {
+/// and two tips (with their feet's stretches, `feet`) within `tip_merge` whose feet close in
+/// on one foot, numbered in order of first appearance.
+fn clusters(
+    points: &[Vertex],
+    feet: &[Option<FeetSpan>],
+    merge: f64,
+    tip_merge: f64,
+) -> Vec<usize> {
     let n = points.len();
     let mut parent: Vec<usize> = (0..n).collect();
     fn root(parent: &mut [usize], mut i: usize) -> usize {
@@ -232,7 +290,11 @@ fn clusters(points: &[Vertex], tip: &[bool], merge: f64, tip_merge: f64) -> Vec<
                 break;
             }
             let (p, q) = (points[a].xy, points[b].xy);
-            let within = if tip[a] && tip[b] { reach } else { merge };
+            let one_tip = match (&feet[a], &feet[b]) {
+                (Some(x), Some(y)) => x.meets(y),
+                _ => false,
+            };
+            let within = if one_tip { reach } else { merge };
             if (p[0] - q[0]).hypot(p[1] - q[1]) <= within {
                 let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
                 parent[ra.max(rb)] = ra.min(rb);

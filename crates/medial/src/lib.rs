@@ -18,8 +18,9 @@
 //! result is not certified. Junctions are solved numerically (regula falsi on the third
 //! contact) and then proven: a disk of radius 1e-10 (or 1e-9) of the size about each holds a
 //! point equidistant from three stretches of the boundary, by the winding of the distances'
-//! differences round it. Ends at arcs' centres and corners are exact data. An end at a
-//! spline's centre of curvature is not proven yet: such an axis says `certified: false`, with
+//! differences round it. Ends at arcs' centres and corners are exact data; an end at a
+//! spline's centre of curvature is proven by the sign of the curvature's rate, with bounds,
+//! on either side of its foot. Where a proof fails the axis says `certified: false`, with
 //! the reason.
 //!
 //! With [`MedialOptions::fit`] each edge also comes as one B-spline of the axis and the radius

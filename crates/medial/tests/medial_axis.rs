@@ -964,3 +964,27 @@ fn a_leaf_to_a_peak_beside_a_smooth_joint_is_one_edge() {
     check(&region).unwrap();
     assert_eq!(kinds(&axis(&region), NodeKind::End), 1);
 }
+
+/// A random chain with a smooth joint where the curvature jumps, and a peak of the
+/// curvature 0.018 past it: two leaves end 1.9e-3 apart, at the joint's sharper side's centre
+/// and at the peak's. The peak's tip lay 1.2e-4 from where two stretches of the other leaf
+/// meet (feet apart, beside the joint): merged as ends beside one centre of curvature, it
+/// closed a cycle in a region without holes. Tip ends are one node only where their feet
+/// close in on one foot.
+#[test]
+fn two_leaf_tips_beside_a_smooth_joint_are_two_nodes() {
+    let radii = [1.1734166947687361, 1.358203108478783, 1.5105291489044317];
+    let wobble = [
+        (-0.05, -0.17253932115048498),
+        (-0.05, -0.05),
+        (-0.05, -0.05),
+    ];
+    let segs = bezier_chain(&radii, &wobble, &[true, false, true]).unwrap();
+    let region = Region::new(assemble(segs, 1, false).unwrap(), vec![]).unwrap();
+    check(&region).unwrap();
+    let a = axis(&region);
+    assert_eq!(
+        (kinds(&a, NodeKind::End), kinds(&a, NodeKind::Junction)),
+        (3, 2)
+    );
+}

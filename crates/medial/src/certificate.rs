@@ -48,6 +48,8 @@ pub(crate) enum Doubt {
     Junction,
     /// An end's curvature extremum was not proven.
     End,
+    /// The graph is not one piece with a cycle per hole (the axis inside a region is).
+    Graph,
 }
 
 impl Doubt {
@@ -61,6 +63,7 @@ impl Doubt {
             Doubt::Junction => {
                 "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
             }
+            Doubt::Graph => "the graph is not one connected piece with one cycle per hole",
             Doubt::End => {
                 "an end was not proven at an arc's centre, or at a centre of curvature within \
                  the tolerance of a proven peak of the curvature"
@@ -94,6 +97,26 @@ pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis, tol: f64) -> Option<Do
             Doubt::End
         })
     })
+}
+
+/// Whether the graph is connected with `holes` independent cycles, as the axis inside a
+/// region with that many holes is (a deformation retract of it).
+pub(crate) fn shaped_like_the_region(axis: &MedialAxis, holes: usize) -> bool {
+    let n = axis.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for e in &axis.edges {
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        parent[a] = b;
+    }
+    let pieces = (0..n).filter(|&i| root(&mut parent, i) == i).count();
+    pieces == 1 && axis.edges.len() + 1 == n + holes
 }
 
 /// A contact of a node's disk with the boundary: boundary, profile parameter, point.
@@ -440,6 +463,20 @@ mod tests {
         let mut nudged = axis.clone();
         nudged.nodes[j].xy[1] += 0.2 * JUNCTION_ROOM[0] * sites.size;
         assert_eq!(doubt(&sites, &nudged, TOL), None);
+    }
+
+    #[test]
+    fn a_graph_missing_an_edge_or_with_a_cycle_too_many_is_no_region_axis() {
+        let axis = medial_axis(&pocket(), &MedialOptions::default()).expect("axis");
+        assert!(shaped_like_the_region(&axis, 0));
+        let mut cut = axis.clone();
+        cut.edges.pop();
+        assert!(!shaped_like_the_region(&cut, 0));
+        let mut looped = axis.clone();
+        let twin = looped.edges[0].clone();
+        looped.edges.push(twin);
+        assert!(!shaped_like_the_region(&looped, 0));
+        assert!(shaped_like_the_region(&looped, 1));
     }
 
     #[test]

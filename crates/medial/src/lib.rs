@@ -175,6 +175,8 @@ fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialA
         Some("a search limit was hit")
     } else if sites.some_disk_undecided() {
         Some(certificate::Doubt::Disk.reason())
+    } else if !opts.exterior && !certificate::shaped_like_the_region(&axis, region.holes().len()) {
+        Some(certificate::Doubt::Graph.reason())
     } else {
         certificate::doubt(&sites, &axis, opts.tol).map(certificate::Doubt::reason)
     };

@@ -274,13 +274,18 @@ impl<'a> Boundaries<'a> {
     }
 
     /// How many distinct boundary points (`apart` from each other) are within `spread` of
-    /// the least distance from `x`, and that distance.
-    fn contacts(&self, x: [f64; 2], spread: f64, apart: f64) -> (usize, f64) {
+    /// the least distance from `x`, and that distance (searched in the sample steps within
+    /// `near` of it).
+    fn contacts(&self, x: [f64; 2], spread: f64, apart: f64, near: f64) -> (usize, f64) {
         let minima: Vec<(f64, [f64; 2])> = self
             .profiles
             .iter()
             .zip(&self.oracles)
-            .flat_map(|(p, o)| o.minima(x).into_iter().map(|(d, u)| (d, p.jet(u).p.arr())))
+            .flat_map(|(p, o)| {
+                o.minima_near(x, near)
+                    .into_iter()
+                    .map(|(d, u)| (d, p.jet(u).p.arr()))
+            })
             .collect();
         let least = minima.iter().map(|m| m.0).fold(f64::INFINITY, f64::min);
         let mut points: Vec<[f64; 2]> = Vec::new();
@@ -463,7 +468,12 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     if a.certified {
         CERTIFIED.fetch_add(1, Ordering::Relaxed);
         for node in a.nodes.iter().filter(|n| n.kind == NodeKind::Junction) {
-            let (touching, least) = b.contacts(node.xy, 2e-9 * size + 1e-12 * size, 1e-6 * size);
+            let (touching, least) = b.contacts(
+                node.xy,
+                2e-9 * size + 1e-12 * size,
+                1e-6 * size,
+                1e-3 * size,
+            );
             prop_assert!(
                 touching >= 3 && (least - node.radius).abs() <= 1e-9 * size,
                 "certified junction {node:?}: {touching} contacts, distance {least}"

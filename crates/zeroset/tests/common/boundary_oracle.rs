@@ -49,7 +49,6 @@ impl<'a> Oracle<'a> {
     /// (not only the least sample: at a point of the medial axis two or three minima are
     /// equal, and the least sample may lie beside the one that is not). The last sample is
     /// the first one again: a closed profile's seam has both sides.
-    #[allow(dead_code)] // (each test crate uses what it needs)
     pub fn minima(&self, x: [f64; 2]) -> Vec<(f64, f64)> {
         let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
         let ds: Vec<f64> = self.pts.iter().map(|q| d(*q)).collect();
@@ -64,17 +63,7 @@ impl<'a> Oracle<'a> {
             }
             let mut best = (ds[k], self.u[k]);
             for (a, b) in [(before, before + 1), (after - 1, after)] {
-                let (mut a, mut b) = (self.u[a], self.u[b]);
-                let g = 0.5 * (5f64.sqrt() - 1.0);
-                for _ in 0..60 {
-                    let (c, e) = (b - g * (b - a), a + g * (b - a));
-                    if f(c) < f(e) {
-                        b = e;
-                    } else {
-                        a = c;
-                    }
-                }
-                let u = 0.5 * (a + b);
+                let u = golden(&f, self.u[a], self.u[b]);
                 if f(u) < best.0 {
                     best = (f(u), u);
                 }
@@ -83,6 +72,51 @@ impl<'a> Oracle<'a> {
         }
         out
     }
+
+    /// Every local minimum of the distance from `x` within `within` of the least sampled
+    /// distance, with near-duplicates: each sample step whose ends are that near is sampled
+    /// 64 times more finely and searched about its fine local minima (two minima within one
+    /// step of each other, either side of a corner, say, are both found).
+    #[allow(dead_code)] // (each test crate uses what it needs)
+    pub fn minima_near(&self, x: [f64; 2], within: f64) -> Vec<(f64, f64)> {
+        const FINE: usize = 64;
+        let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
+        let f = |u: f64| d(self.p.jet(u).p.arr());
+        let ds: Vec<f64> = self.pts.iter().map(|q| d(*q)).collect();
+        let least = ds.iter().copied().fold(f64::INFINITY, f64::min);
+        let mut out = Vec::new();
+        for k in 0..self.u.len() - 1 {
+            if ds[k].min(ds[k + 1]) > least + within {
+                continue;
+            }
+            let (a, b) = (self.u[k], self.u[k + 1]);
+            let at = |j: usize| a + (b - a) * j as f64 / FINE as f64;
+            let fine: Vec<f64> = (0..=FINE).map(|j| f(at(j))).collect();
+            for j in 0..=FINE {
+                let left = j == 0 || fine[j] <= fine[j - 1];
+                let right = j == FINE || fine[j] <= fine[j + 1];
+                if left && right {
+                    let u = golden(&f, at(j.saturating_sub(1)), at((j + 1).min(FINE)));
+                    out.push((f(u), u));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The least of `f` on `[a, b]` by golden-section search (where it has one minimum there).
+fn golden(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..60 {
+        let (c, e) = (b - g * (b - a), a + g * (b - a));
+        if f(c) < f(e) {
+            b = e;
+        } else {
+            a = c;
+        }
+    }
+    0.5 * (a + b)
 }
 
 /// The distance from `p` to the segment `a b`.

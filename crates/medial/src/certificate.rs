@@ -214,13 +214,15 @@ fn end_at_curvature_peak(sites: &Sites<'_>, node: &Node, feet: &[Foot], tol: f64
     })
 }
 
-/// Whether a corner leaf lies at a corner of the boundary.
+/// Whether a corner leaf lies at a corner of the boundary that is convex for the part of
+/// the plane whose axis is sought (a reflex one's cone points into it: no leaf ends there).
 fn at_corner(sites: &Sites<'_>, node: &Node) -> bool {
     let room = JUNCTION_ROOM[1] * sites.size;
-    sites.boundaries.iter().any(|b| {
+    sites.boundaries.iter().enumerate().any(|(k, b)| {
         b.corners().any(|j| {
             let p = b.jet(j.u).p;
-            distance([p.x, p.y], node.xy) <= room
+            let cone_inside = sites.inside_of(k, 0, j.u, true, node.xy);
+            distance([p.x, p.y], node.xy) <= room && !cone_inside
         })
     })
 }
@@ -477,6 +479,26 @@ mod tests {
         looped.edges.push(twin);
         assert!(!shaped_like_the_region(&looped, 0));
         assert!(shaped_like_the_region(&looped, 1));
+    }
+
+    #[test]
+    fn a_corner_leaf_at_a_reflex_corner_is_not_proven() {
+        let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
+        let sides = (0..6)
+            .map(|i| Segment::line(c[i], c[(i + 1) % 6]))
+            .collect::<Result<Vec<_>, _>>()
+            .expect("sides");
+        let room = Region::new(Profile::new(sides, None).expect("profile"), vec![]).expect("room");
+        let sites = Sites::new(&room, false);
+        let mut axis = medial_axis(&room, &MedialOptions::default()).expect("axis");
+        assert!(axis.certified, "{:?}", axis.reason);
+        let k = axis
+            .nodes
+            .iter()
+            .position(|n| n.kind == NodeKind::Corner)
+            .expect("a corner");
+        axis.nodes[k].xy = [2.0, 2.0]; // the reflex corner
+        assert_eq!(doubt(&sites, &axis, TOL), Some(Doubt::End));
     }
 
     #[test]

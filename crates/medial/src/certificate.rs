@@ -48,6 +48,8 @@ pub(crate) enum Doubt {
     Junction,
     /// An end's curvature extremum was not proven.
     End,
+    /// A corner leaf is not at a corner convex for the region.
+    Corner,
     /// The graph is not one piece with a cycle per hole (the axis inside a region is).
     Graph,
 }
@@ -64,6 +66,9 @@ impl Doubt {
                 "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
             }
             Doubt::Graph => "the graph is not one connected piece with one cycle per hole",
+            Doubt::Corner => {
+                "a corner leaf is not at a corner of the boundary convex for the region"
+            }
             Doubt::End => {
                 "an end was not proven at an arc's centre, or at a centre of curvature within \
                  the tolerance of a proven peak of the curvature"
@@ -91,10 +96,10 @@ pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis, tol: f64) -> Option<Do
             NodeKind::Corner => at_corner(sites, node),
             NodeKind::Joint | NodeKind::Clip => true,
         };
-        (!proven).then_some(if node.kind == NodeKind::Junction {
-            Doubt::Junction
-        } else {
-            Doubt::End
+        (!proven).then_some(match node.kind {
+            NodeKind::Junction => Doubt::Junction,
+            NodeKind::Corner => Doubt::Corner,
+            _ => Doubt::End,
         })
     })
 }
@@ -498,7 +503,7 @@ mod tests {
             .position(|n| n.kind == NodeKind::Corner)
             .expect("a corner");
         axis.nodes[k].xy = [2.0, 2.0]; // the reflex corner
-        assert_eq!(doubt(&sites, &axis, TOL), Some(Doubt::End));
+        assert_eq!(doubt(&sites, &axis, TOL), Some(Doubt::Corner));
     }
 
     #[test]

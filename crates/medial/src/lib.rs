@@ -173,12 +173,16 @@ fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialA
     axis.complete &= complete;
     let doubt = if !axis.complete {
         Some("a search limit was hit")
-    } else if sites.some_disk_undecided() {
-        Some(certificate::Doubt::Disk.reason())
     } else if !opts.exterior && !certificate::shaped_like_the_region(&axis, region.holes().len()) {
         Some(certificate::Doubt::Graph.reason())
     } else {
-        certificate::doubt(&sites, &axis, opts.tol).map(certificate::Doubt::reason)
+        // (The nodes' proofs test disks too: whether any disk was undecided is asked after.)
+        let at_node = certificate::doubt(&sites, &axis, opts.tol);
+        if sites.some_disk_undecided() {
+            Some(certificate::Doubt::Disk.reason())
+        } else {
+            at_node.map(certificate::Doubt::reason)
+        }
     };
     axis.certified = doubt.is_none();
     axis.reason = doubt.map(str::to_string);

@@ -28,19 +28,24 @@ fn oracle_distance(p: &Profile, x: [f64; 2]) -> f64 {
         let k = (0..=SAMPLES)
             .min_by(|&i, &j| d(at(i)).total_cmp(&d(at(j))))
             .unwrap();
-        let (mut lo, mut hi) = (at(k.saturating_sub(1)), at((k + 1).min(SAMPLES)));
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..80 {
-            let (l, r) = (hi - g * (hi - lo), lo + g * (hi - lo));
-            if d(l) < d(r) {
-                hi = r;
-            } else {
-                lo = l;
-            }
-        }
-        best = best.min(d(at(k))).min(d(0.5 * (lo + hi)));
+        let u = golden(&d, at(k.saturating_sub(1)), at((k + 1).min(SAMPLES)));
+        best = best.min(d(at(k))).min(d(u));
     }
     best
+}
+
+/// The least of `f` on `[lo, hi]` by golden-section search (to rounding).
+fn golden(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..80 {
+        let (l, r) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if f(l) < f(r) {
+            hi = r;
+        } else {
+            lo = l;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 /// The distance from `x` to the points of the closed profile with parameters in `[lo,
@@ -56,17 +61,8 @@ fn oracle_distance_between(p: &Profile, x: [f64; 2], lo: f64, hi: f64) -> f64 {
     let k = (0..=steps)
         .min_by(|&i, &j| d(at(i)).total_cmp(&d(at(j))))
         .unwrap();
-    let (mut a, mut b) = (at(k.saturating_sub(1)), at((k + 1).min(steps)));
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..80 {
-        let (l, r) = (b - g * (b - a), a + g * (b - a));
-        if d(l) < d(r) {
-            b = r;
-        } else {
-            a = l;
-        }
-    }
-    d(at(k)).min(d(0.5 * (a + b)))
+    let u = golden(&d, at(k.saturating_sub(1)), at((k + 1).min(steps)));
+    d(at(k)).min(d(u))
 }
 
 /// A closed profile round a star: at each of `n` joints a line, an arc bulging outwards or a

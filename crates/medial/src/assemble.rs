@@ -273,13 +273,6 @@ fn clusters(
 ) -> Vec<usize> {
     let n = points.len();
     let mut parent: Vec<usize> = (0..n).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
     // Sorted by x, each point is compared with those within reach in x after it.
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| points[a].xy[0].total_cmp(&points[b].xy[0]));
@@ -313,6 +306,16 @@ fn clusters(
             number[r]
         })
         .collect()
+}
+
+/// The representative of `i`'s set in the disjoint-set forest `parent` (paths halved on
+/// the way).
+pub(crate) fn root(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
 }
 
 /// Joins the chains meeting at a node of two into one; a cycle left with one node of two (an

@@ -15,6 +15,7 @@
 //! - A **corner**, the **joint** of an annulus and a **clip** leaf: at a corner of the
 //!   boundary, anywhere on a cycle, on the clip box (exact data or no claim of place).
 
+use crate::assemble::root;
 use crate::curvature::proven_rate_sign;
 use crate::sites::{Disk, Sites};
 use crate::{MedialAxis, Node, NodeKind};
@@ -109,13 +110,6 @@ pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis, tol: f64) -> Option<Do
 pub(crate) fn shaped_like_the_region(axis: &MedialAxis, holes: usize) -> bool {
     let n = axis.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
     for e in &axis.edges {
         let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
         parent[a] = b;

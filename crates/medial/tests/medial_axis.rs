@@ -1030,3 +1030,100 @@ fn two_leaf_tips_beside_a_smooth_joint_are_two_nodes() {
         (3, 2)
     );
 }
+
+/// The region moved by `map` (every segment, holes too).
+fn mapped(region: &Region, map: &curve::Affine) -> Region {
+    let profile = |p: &Profile| {
+        let segs = p
+            .segments()
+            .iter()
+            .map(|s| s.transformed(map).unwrap())
+            .collect();
+        Profile::new(segs, Some(p.is_closed())).unwrap()
+    };
+    let holes = region.holes().iter().map(profile).collect();
+    Region::new(profile(region.outer()), holes).unwrap()
+}
+
+/// Metamorphic: an axis certified after the region is moved far from the origin, scaled by
+/// 2^±20 or 1e±6, or rotated, is the moved axis (every node, of its kind, within 1e-9 of the
+/// size of a moved node of the axis at unit size), on a pocket of lines and arcs with a hole
+/// and on the periodic cubic; at least the unit size, the scalings and the rotation
+/// are certified.
+#[test]
+fn a_certified_axis_moved_scaled_or_rotated_is_the_same_axis() {
+    let q = std::f64::consts::FRAC_PI_2;
+    let pocket_segs = vec![
+        Segment::line([1.0, 0.0], [9.0, 0.0]).unwrap(),
+        Segment::arc([9.0, 1.0], 1.0, -q, 0.0).unwrap(),
+        Segment::line([10.0, 1.0], [10.0, 5.0]).unwrap(),
+        Segment::arc([9.0, 5.0], 1.0, 0.0, q).unwrap(),
+        Segment::line([9.0, 6.0], [1.0, 6.0]).unwrap(),
+        Segment::arc([1.0, 5.0], 1.0, q, 2.0 * q).unwrap(),
+        Segment::line([0.0, 5.0], [0.0, 1.0]).unwrap(),
+        Segment::arc([1.0, 1.0], 1.0, 2.0 * q, 3.0 * q).unwrap(),
+    ];
+    let pocket = Region::new(
+        Profile::new(pocket_segs, None).unwrap(),
+        vec![circle([6.5, 3.0], 1.2)],
+    )
+    .unwrap();
+    let cubic = {
+        let pts = [
+            [0.0, 0.0],
+            [2.0, -1.0],
+            [4.0, 0.0],
+            [4.0, 2.0],
+            [2.0, 1.2],
+            [0.0, 2.0],
+        ];
+        let periodic = curve::SplineCurve::periodic(3, &pts, None).unwrap();
+        let (a, b) = periodic.domain();
+        let c = curve::SplineCurve::new(periodic.curve().restrict(a, b).unwrap()).unwrap();
+        let seg = Segment::spline(curve::SegmentKind::BSpline, c).unwrap();
+        Region::new(Profile::new(vec![seg], Some(true)).unwrap(), vec![]).unwrap()
+    };
+    let (c, s) = (0.6f64, 0.8f64); // a rotation with exact sine and cosine
+    let maps: [(curve::Affine, bool); 7] = [
+        (curve::Affine([1.0, 0.0, 0.0, 1.0, 1e3, -2e3]), false),
+        (curve::Affine([1.0, 0.0, 0.0, 1.0, 1e6, 1e6]), false),
+        (
+            curve::Affine([2f64.powi(-20), 0.0, 0.0, 2f64.powi(-20), 0.0, 0.0]),
+            true,
+        ),
+        (
+            curve::Affine([2f64.powi(20), 0.0, 0.0, 2f64.powi(20), 0.0, 0.0]),
+            true,
+        ),
+        (curve::Affine([1e-6, 0.0, 0.0, 1e-6, 3e-6, 0.0]), true),
+        (curve::Affine([1e6, 0.0, 0.0, 1e6, 0.0, -7e6]), true),
+        (curve::Affine([c, s, -s, c, 0.25, 0.5]), true),
+    ];
+    for region in [&pocket, &cubic] {
+        let base = axis(region);
+        assert!(base.certified, "{:?}", base.reason);
+        let size = size_of(region);
+        for (map, must_certify) in &maps {
+            let moved = axis(&mapped(region, map));
+            assert!(
+                moved.certified || !must_certify,
+                "{map:?}: {:?}",
+                moved.reason
+            );
+            if !moved.certified {
+                continue;
+            }
+            let scale = map.determinant().abs().sqrt();
+            assert_eq!(moved.nodes.len(), base.nodes.len(), "{map:?}");
+            for n in &moved.nodes {
+                let near = base.nodes.iter().any(|b| {
+                    let p = map.apply(b.xy);
+                    b.kind == n.kind
+                        && (p[0] - n.xy[0]).hypot(p[1] - n.xy[1]) <= 1e-9 * size * scale
+                        && (b.radius * scale - n.radius).abs() <= 1e-9 * size * scale
+                });
+                assert!(near, "{map:?}: node {n:?} is no moved node");
+            }
+        }
+    }
+}

@@ -154,21 +154,7 @@ fn the_axis_is_the_same_on_one_thread() {
     )
     .unwrap();
     // The 10 × 6 pocket with corners of radius 1 and an island of radius 1.
-    let h = std::f64::consts::FRAC_PI_2;
-    let outline = vec![
-        Segment::line([1.0, 0.0], [9.0, 0.0]).unwrap(),
-        Segment::arc([9.0, 1.0], 1.0, -h, 0.0).unwrap(),
-        Segment::line([10.0, 1.0], [10.0, 5.0]).unwrap(),
-        Segment::arc([9.0, 5.0], 1.0, 0.0, h).unwrap(),
-        Segment::line([9.0, 6.0], [1.0, 6.0]).unwrap(),
-        Segment::arc([1.0, 5.0], 1.0, h, 2.0 * h).unwrap(),
-        Segment::line([0.0, 5.0], [0.0, 1.0]).unwrap(),
-        Segment::arc([1.0, 1.0], 1.0, 2.0 * h, 3.0 * h).unwrap(),
-    ];
-    let pocket = Region::new(
-        Profile::new(outline, None).unwrap(),
-        vec![circle([6.5, 3.0], 1.0)],
-    );
+    let pocket = Region::new(pocket_outline(), vec![circle([6.5, 3.0], 1.0)]);
     for region in [Region::new(chain, vec![]).unwrap(), pocket.unwrap()] {
         let one = rayon::ThreadPoolBuilder::new()
             .num_threads(1)
@@ -708,11 +694,33 @@ fn closed_spline(radii: &[f64], weights: Option<&[f64]>) -> Option<Profile> {
             [radii[i] * a.cos(), radii[i] * a.sin()]
         })
         .collect();
-    let periodic = curve::SplineCurve::periodic(3, &pts, weights).ok()?;
+    closed_cubic(&pts, weights)
+}
+
+/// The closed profile of the periodic cubic B-spline of control points `pts`: one turn of
+/// it, clamped.
+fn closed_cubic(pts: &[[f64; 2]], weights: Option<&[f64]>) -> Option<Profile> {
+    let periodic = curve::SplineCurve::periodic(3, pts, weights).ok()?;
     let (a, b) = periodic.domain();
     let clamped = curve::SplineCurve::new(periodic.curve().restrict(a, b).ok()?).ok()?;
     let seg = Segment::spline(curve::SegmentKind::BSpline, clamped).ok()?;
     Profile::new(vec![seg], Some(true)).ok()
+}
+
+/// The 10 × 6 pocket outline with corners of radius 1.
+fn pocket_outline() -> Profile {
+    let h = std::f64::consts::FRAC_PI_2;
+    let outline = vec![
+        Segment::line([1.0, 0.0], [9.0, 0.0]).unwrap(),
+        Segment::arc([9.0, 1.0], 1.0, -h, 0.0).unwrap(),
+        Segment::line([10.0, 1.0], [10.0, 5.0]).unwrap(),
+        Segment::arc([9.0, 5.0], 1.0, 0.0, h).unwrap(),
+        Segment::line([9.0, 6.0], [1.0, 6.0]).unwrap(),
+        Segment::arc([1.0, 5.0], 1.0, h, 2.0 * h).unwrap(),
+        Segment::line([0.0, 5.0], [0.0, 1.0]).unwrap(),
+        Segment::arc([1.0, 1.0], 1.0, 2.0 * h, 3.0 * h).unwrap(),
+    ];
+    Profile::new(outline, None).unwrap()
 }
 
 proptest! {
@@ -1052,37 +1060,16 @@ fn mapped(region: &Region, map: &curve::Affine) -> Region {
 /// are certified.
 #[test]
 fn a_certified_axis_moved_scaled_or_rotated_is_the_same_axis() {
-    let q = std::f64::consts::FRAC_PI_2;
-    let pocket_segs = vec![
-        Segment::line([1.0, 0.0], [9.0, 0.0]).unwrap(),
-        Segment::arc([9.0, 1.0], 1.0, -q, 0.0).unwrap(),
-        Segment::line([10.0, 1.0], [10.0, 5.0]).unwrap(),
-        Segment::arc([9.0, 5.0], 1.0, 0.0, q).unwrap(),
-        Segment::line([9.0, 6.0], [1.0, 6.0]).unwrap(),
-        Segment::arc([1.0, 5.0], 1.0, q, 2.0 * q).unwrap(),
-        Segment::line([0.0, 5.0], [0.0, 1.0]).unwrap(),
-        Segment::arc([1.0, 1.0], 1.0, 2.0 * q, 3.0 * q).unwrap(),
+    let pocket = Region::new(pocket_outline(), vec![circle([6.5, 3.0], 1.2)]).unwrap();
+    let pts = [
+        [0.0, 0.0],
+        [2.0, -1.0],
+        [4.0, 0.0],
+        [4.0, 2.0],
+        [2.0, 1.2],
+        [0.0, 2.0],
     ];
-    let pocket = Region::new(
-        Profile::new(pocket_segs, None).unwrap(),
-        vec![circle([6.5, 3.0], 1.2)],
-    )
-    .unwrap();
-    let cubic = {
-        let pts = [
-            [0.0, 0.0],
-            [2.0, -1.0],
-            [4.0, 0.0],
-            [4.0, 2.0],
-            [2.0, 1.2],
-            [0.0, 2.0],
-        ];
-        let periodic = curve::SplineCurve::periodic(3, &pts, None).unwrap();
-        let (a, b) = periodic.domain();
-        let c = curve::SplineCurve::new(periodic.curve().restrict(a, b).unwrap()).unwrap();
-        let seg = Segment::spline(curve::SegmentKind::BSpline, c).unwrap();
-        Region::new(Profile::new(vec![seg], Some(true)).unwrap(), vec![]).unwrap()
-    };
+    let cubic = Region::new(closed_cubic(&pts, None).unwrap(), vec![]).unwrap();
     let (c, s) = (0.6f64, 0.8f64); // a rotation with exact sine and cosine
     let maps: [(curve::Affine, bool); 7] = [
         (curve::Affine([1.0, 0.0, 0.0, 1.0, 1e3, -2e3]), false),

@@ -11,6 +11,7 @@
 //! symbolically (`(t − r)⁴` for F3, `(t − r)⁵` for F1 and F2), only the half `t ≤ r` is
 //! searched, and mirrored parts are clipped at the diagonal.
 
+mod knot_corners;
 mod output;
 mod point;
 mod vertices;
@@ -110,6 +111,7 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         diag,
         selfb: false,
         trimmed: opts.trimmed,
+        chord: opts.chord_tol * diag,
     };
     let cells: Vec<Patch> = f
         .bezier_patches()
@@ -212,6 +214,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
         diag,
         selfb: true,
         trimmed: opts.trimmed,
+        chord: opts.chord_tol * diag,
     };
     let mut cells: Vec<Patch> = Vec::new();
     for b in f.bezier_patches() {

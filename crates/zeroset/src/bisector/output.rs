@@ -8,22 +8,10 @@ use crate::patch::Patch;
 use crate::zeroset::finish;
 use serde::{Deserialize, Serialize};
 
-/// A self-bisector branch ending this close (relative to the domain) to a knot corner of the
-/// diagonal, on the cell across it, is extended to the corner.
-const CORNER_REACH: f64 = 1e-3;
-
-/// Halvings toward a knot corner at most (from ~1e-5 of the domain down to ~1e-11).
-const MAX_CORNER_STEPS: usize = 20;
-
-/// Slack on "in step" toward a knot corner, relative to the bounding-box diagonal: the
-/// bisector points carry rounding of ~1e-16 of the size, so steps that have shrunk to that
-/// noise still count as in step.
-const STEP_SLACK: f64 = 1e-12;
-
 /// Singular and isolated points of a self-bisector within this fraction of the domain of the
 /// diagonal are taken for leaf clusters at the cells' diagonal corners, where the undivided
 /// function has its trivial double zero: artefacts, not bisector points (a wide margin: the
-/// flat region at a corner reaches ~1e-5 of the domain, see `reach_knot_corners`).
+/// flat region at a corner reaches ~1e-3 of the domain, see `knot_corners`).
 const DIAGONAL_ARTEFACT: f64 = 1e-3;
 
 /// Two branch ends on the two borders of the seam are one foot-point pair when their
@@ -130,87 +118,6 @@ impl Ctx<'_> {
     }
 }
 
-impl Ctx<'_> {
-    /// Extends self-bisector branches that end beside a knot corner `(k, k)` of the diagonal
-    /// up to it.
-    ///
-    /// Where the curvature has an extremum exactly at a knot (its derivative changes sign
-    /// there, common for B-splines), a branch ends at the corner `(k, k)`, reached through the
-    /// cell `t < k < r`. That cell is not divided by `(t − r)⁴` (its two foot points lie on
-    /// different polynomial pieces), so `F` is flat to fourth order around the corner and the
-    /// zero set stops where the flat region begins, ~1e-5 of the domain short (in the plane,
-    /// ~1e-5 of the size short of the branch's end). Near the corner the branch is a ray;
-    /// points along it, halving the distance each time, are polished onto the bisector
-    /// condition ψ (whose rounding error shrinks with the distances) while they stay valid
-    /// and in step. On the demo's periodic NURBS this takes the branches to ~1e-8 of the
-    /// corner (their images to 2e-8–6e-8 of the limit point, the centre of curvature there).
-    fn reach_knot_corners(&self, branches: &mut [Branch], cells: &[Patch], dom: [f64; 4]) {
-        let ext = dom[1] - dom[0];
-        let mut knots: Vec<f64> = cells
-            .iter()
-            .filter(|p| p.t0 == p.r0 && p.t0 > dom[0])
-            .map(|p| p.t0)
-            .collect();
-        knots.sort_by(f64::total_cmp);
-        knots.dedup();
-        for b in branches.iter_mut() {
-            for front in [false, true] {
-                let Some(&q) = (if front { b.tr.first() } else { b.tr.last() }) else {
-                    continue;
-                };
-                let Some(&k) = knots.iter().find(|&&k| {
-                    q[0] <= k
-                        && k < q[1]
-                        && k - q[0] <= CORNER_REACH * ext
-                        && q[1] - k <= CORNER_REACH * ext
-                }) else {
-                    continue;
-                };
-                let n = b.xy.len();
-                let (p0, p1) = if front {
-                    (b.xy[0], b.xy[1.min(n - 1)])
-                } else {
-                    (b.xy[n - 1], b.xy[n.saturating_sub(2)])
-                };
-                // The image converges along the ray; each new point must stay in step (its
-                // move at most twice the previous one), and the polish may not leave the ray
-                // by more than a quarter of the distance to the corner — else it found another
-                // zero of ψ (ψ has three near the corner) and the extension stops.
-                let (mut last, mut step) = (p0, (p0[0] - p1[0]).hypot(p0[1] - p1[1]));
-                let mut extra: Vec<([f64; 2], [f64; 2])> = Vec::new();
-                let mut f = 1.0;
-                for _ in 0..MAX_CORNER_STEPS {
-                    f *= 0.5;
-                    let g = [k + f * (q[0] - k), k + f * (q[1] - k)];
-                    let Some((tr, xy)) = self.accept(g[0], g[1]) else {
-                        break;
-                    };
-                    let off = (tr[0] - g[0]).hypot(tr[1] - g[1]);
-                    let moved = (xy[0] - last[0]).hypot(xy[1] - last[1]);
-                    if off > 0.25 * f * (q[0] - k).hypot(q[1] - k)
-                        || moved > 2.0 * step + STEP_SLACK * self.diag
-                    {
-                        break;
-                    }
-                    extra.push((tr, xy));
-                    (last, step) = (xy, moved);
-                }
-                if front {
-                    for (tr, xy) in extra {
-                        b.tr.insert(0, tr);
-                        b.xy.insert(0, xy);
-                    }
-                } else {
-                    for (tr, xy) in extra {
-                        b.tr.push(tr);
-                        b.xy.push(xy);
-                    }
-                }
-            }
-        }
-    }
-}
-
 fn flush(cur: &mut Branch, out: &mut Vec<Branch>) {
     if cur.tr.len() >= 2 {
         out.push(std::mem::replace(
@@ -305,7 +212,8 @@ fn clip_diagonal(
 /// Where the segment from `a` (`t ≤ r`) to `b` (`t > r`) meets the diagonal, the zero set of
 /// the divided function crosses it at right angles (it is symmetric). Find that crossing
 /// `(s, s)` by Newton along the diagonal, then the zero-set point at a small offset from it
-/// on the `t < r` side (Newton along the diagonal direction).
+/// on the `t < r` side (Newton along the diagonal direction). `None` where no crossing lies
+/// beside the segment.
 fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Option<[f64; 2]> {
     let (da, db) = (a[1] - a[0], b[1] - b[0]);
     let w = da / (da - db);
@@ -331,6 +239,11 @@ fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Opt
         None
     };
     let s = solve([0.0, 0.0], c)?;
+    // A crossing far from the segment is another zero of the divided function on the
+    // diagonal (the segment may end at a knot corner, where the cell's piece has none).
+    if (s - c).abs() > (b[0] - a[0]).abs() + (b[1] - a[1]).abs() {
+        return None;
+    }
     let delta = DIAGONAL_OFFSET * (dom[1] - dom[0]);
     let base = [s - delta, s + delta];
     let mu = solve(base, 0.0)?;

@@ -49,9 +49,18 @@ fn residual(
 
 /// The bisector point `P(t, r)` for matched foot points, with its relative residual.
 ///
-/// Three candidates: the intersection of the normal lines (Eq. 16, Cramer's rule) and the
-/// equidistant point along each normal line (accurate where the normals nearly coincide); the
-/// one with the smallest residual wins.
+/// Three candidates, each `P = C + λ N` on a normal line: the intersection of the two normal
+/// lines (Eq. 16, solved on the first normal line so far coordinates do not enter), and the
+/// equidistant point along each normal line (accurate where the normals nearly coincide).
+///
+/// Each formula divides by a quantity that can vanish: the intersection by the sine of the
+/// angle between the normals, the equidistant points by the component of the chord
+/// `C1 − C2` along the normal, which is second order in the gap where the two foot points
+/// close in on one point of a curve. The residual cannot tell the candidates apart there:
+/// moving `P` along the normal changes `|P − C1| − |P − C2|` only by the angle squared, so
+/// a point 1e-2 of the size off passed the residual test beside a self-bisector's end. So
+/// among the candidates that meet [`RESIDUAL`], the one with the least estimated rounding
+/// error wins; failing that, the least residual (which the caller then rejects).
 pub(super) fn point_and_residual(
     c1: &Rational,
     c2: &Rational,
@@ -61,42 +70,60 @@ pub(super) fn point_and_residual(
 ) -> Option<([f64; 2], f64)> {
     let (p1, d1) = pd(c1, t);
     let (p2, d2) = pd(c2, r);
+    let dot = |x: [f64; 2], y: [f64; 2]| x[0] * y[0] + x[1] * y[1];
+    let norm = |x: [f64; 2]| dot(x, x).sqrt();
     let d = [p1[0] - p2[0], p1[1] - p2[1]];
-    let dd = d[0] * d[0] + d[1] * d[1];
-    let mut cands: [Option<[f64; 2]>; 3] = [None; 3];
-    let den = d1[0] * d2[1] - d1[1] * d2[0];
+    let dd = dot(d, d);
+    let (n1, n2) = ([-d1[1], d1[0]], [-d2[1], d2[0]]);
+    // Rounding of the evaluated points (their coordinates' size) and of the chord.
+    let point_err =
+        EVAL_ROUNDING * (p1[0].abs().max(p1[1].abs()) + p2[0].abs().max(p2[1].abs()) + norm(d));
+    let at = |c: [f64; 2], n: [f64; 2], lambda: f64| [c[0] + lambda * n[0], c[1] + lambda * n[1]];
+    // (point, estimated error of the point)
+    let mut cands: [Option<([f64; 2], f64)>; 3] = [None; 3];
+    let den = dot(n1, d2);
     if den != 0.0 {
-        let a1 = p1[0] * d1[0] + p1[1] * d1[1];
-        let a2 = p2[0] * d2[0] + p2[1] * d2[1];
-        cands[0] = Some([
-            (a1 * d2[1] - a2 * d1[1]) / den,
-            (d1[0] * a2 - d2[0] * a1) / den,
-        ]);
+        // (C1 − C2 + λ N1) · C2' = 0.
+        let lambda = -dot(d, d2) / den;
+        let (nn1, nd2) = (norm(n1), norm(d2));
+        let err = nn1 * (point_err * nd2 + EVAL_ROUNDING * lambda.abs() * nn1 * nd2) / den.abs();
+        cands[0] = Some((at(p1, n1, lambda), err));
     }
     if dd == 0.0 {
-        cands[1] = Some(p1);
+        cands[1] = Some((p1, point_err));
     } else {
-        // P = C1 + α N1 with |α N1|² = |P − C2|²  ⇒  α = −|d|² / (2 ⟨N1, d⟩).
-        let n1 = [-d1[1], d1[0]];
-        let s1 = n1[0] * d[0] + n1[1] * d[1];
-        if s1 != 0.0 {
-            let al = -dd / (2.0 * s1);
-            cands[1] = Some([p1[0] + al * n1[0], p1[1] + al * n1[1]]);
-        }
-        let n2 = [-d2[1], d2[0]];
-        let s2 = n2[0] * d[0] + n2[1] * d[1];
-        if s2 != 0.0 {
-            let be = dd / (2.0 * s2);
-            cands[2] = Some([p2[0] + be * n2[0], p2[1] + be * n2[1]]);
+        // P = C1 + α N1 with |α N1|² = |P − C2|²  ⇒  α = −|d|² / (2 ⟨N1, d⟩); likewise on N2.
+        for (k, c, n, sign) in [(1, p1, n1, -1.0), (2, p2, n2, 1.0)] {
+            let s = dot(n, d);
+            if s != 0.0 {
+                let alpha = sign * dd / (2.0 * s);
+                let nn = norm(n);
+                let rel = 2.0 * point_err / norm(d) + nn * point_err / s.abs();
+                cands[k] = Some((at(c, n, alpha), alpha.abs() * nn * rel));
+            }
         }
     }
-    cands
-        .iter()
-        .flatten()
-        .filter(|p| p[0].is_finite() && p[1].is_finite())
-        .map(|&p| (p, residual(p, p1, d1, p2, d2, floor)))
-        .min_by(|a, b| a.1.total_cmp(&b.1))
+    // In order of estimated error, the first to meet the residual test.
+    let rank = |c: &Option<([f64; 2], f64)>| c.map_or(f64::INFINITY, |c| c.1);
+    cands.sort_by(|a, b| rank(a).total_cmp(&rank(b)));
+    let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
+    let mut least: Option<([f64; 2], f64)> = None;
+    for (p, _) in cands.into_iter().flatten().filter(|(p, _)| finite(p)) {
+        let res = residual(p, p1, d1, p2, d2, floor);
+        if res <= RESIDUAL {
+            return Some((p, res));
+        }
+        if least.is_none_or(|l| res < l.1) {
+            least = Some((p, res));
+        }
+    }
+    least
 }
+
+/// Relative rounding of an evaluated point or derivative, for comparing the candidates of
+/// [`point_and_residual`]: a few units of rounding (de Boor's recurrence is a chain of convex
+/// combinations); only the candidates' ratios matter, not the constant.
+const EVAL_ROUNDING: f64 = 4.0 * f64::EPSILON;
 
 /// The bisector condition `ψ = 2 ⟨N1, d⟩ ⟨d, C2'⟩ − |d|² ⟨N1, C2'⟩` (with `d = C1 − C2`,
 /// `N1` the normal of `C1`: the equidistant point on the normal line of `C1(t)` lies on the

@@ -42,6 +42,8 @@ pub(super) struct Ctx<'a> {
     pub(super) diag: f64,
     pub(super) selfb: bool,
     pub(super) trimmed: bool,
+    /// The chord tolerance (absolute).
+    pub(super) chord: f64,
 }
 
 impl Ctx<'_> {

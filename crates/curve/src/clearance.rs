@@ -17,6 +17,7 @@ use crate::param::ParamCurve;
 use crate::profile::Profile;
 use crate::segment::Segment;
 use bspline::Piecewise;
+use smallvec::{smallvec, SmallVec};
 
 /// Halvings of one Bézier piece before it is left undecided: a piece 2^-40 of its span is
 /// far below any slack a caller may leave between the disk and the curve.
@@ -32,8 +33,14 @@ const MAX_PIECES: usize = 4096;
 /// the caller's slack, while the distance along a piece is convex long before that.
 const CONVEX_FROM: usize = 3;
 
-/// Halvings that find where a convex squared distance is least (to 2^-60 of the piece).
+/// Steps that find where a convex squared distance is least: Newton, or a halving where it
+/// would leave the bracket (to 2^-60 of the piece at worst).
 const LEAST_STEPS: usize = 60;
+
+/// The search for the least point stops at a step this small (a share of the piece): the
+/// tangent there bounds the distance however near the least point it is; nearer makes the
+/// bound tighter, and Newton gets there from 1e-8 in one more step.
+const LEAST_STEP: f64 = 1e-15;
 
 /// Units of rounding allowed per comparison: the Euclidean points (a division), the bounds
 /// (a few products and sums) and one more per halving of the piece.
@@ -57,13 +64,47 @@ pub enum Clearance {
     Unresolved,
 }
 
+/// Coefficients of a squared distance held in place (up to degree 30): they are built for
+/// tens of pieces in each disk test.
+type Row = SmallVec<[f64; 32]>;
+
 /// A Bézier piece under test: its homogeneous control points `(X, Y, w)`, its interval of
 /// the segment's parameter, and how many halvings made it.
-struct Piece {
-    coefs: Vec<f64>,
+struct Piece<'a> {
+    coefs: &'a [f64],
     lo: f64,
     hi: f64,
     depth: usize,
+}
+
+/// The pieces still to test, last in first out, their coefficients in one buffer: a disk
+/// test halves tens of pieces, and an allocation for each had been a fifth of a medial
+/// axis' time.
+#[derive(Default)]
+struct Pending {
+    coefs: Vec<f64>,
+    /// Per piece: its interval and depth.
+    spans: Vec<(f64, f64, usize)>,
+    /// Coefficients per piece (the same for all pieces of a segment).
+    len: usize,
+}
+
+impl Pending {
+    fn push(&mut self, coefs: &[f64], lo: f64, hi: f64, depth: usize) {
+        self.len = coefs.len();
+        self.coefs.extend_from_slice(coefs);
+        self.spans.push((lo, hi, depth));
+    }
+
+    /// Moves the last piece's coefficients into `into`; its interval and depth.
+    fn pop(&mut self, into: &mut Vec<f64>) -> Option<(f64, f64, usize)> {
+        let span = self.spans.pop()?;
+        let start = self.coefs.len() - self.len;
+        into.clear();
+        into.extend_from_slice(&self.coefs[start..]);
+        self.coefs.truncate(start);
+        Some(span)
+    }
 }
 
 impl Profile {
@@ -125,7 +166,8 @@ impl Profile {
     fn clearance_in(&self, x: [f64; 2], r: f64, window: Option<&Window>) -> Clearance {
         let x = V2::from_arr(x);
         let mut unresolved = false;
-        let mut stack: Vec<Piece> = Vec::new();
+        let mut pending = Pending::default();
+        let (mut current, mut work) = (Vec::new(), Vec::new());
         let mut tested = 0;
         // Nearest boxes first: the point found inside is then likely the deepest.
         let near = 1.0 - ROUNDING_ULPS * f64::EPSILON;
@@ -146,7 +188,7 @@ impl Profile {
             }
             // How much of a piece lies in the window, and whether its point at segment
             // parameter `v` does.
-            let cover = |p: &Piece| {
+            let cover = |p: &Piece<'_>| {
                 window.map_or(Cover::Whole, |w| {
                     w.cover(self.profile_param(i, p.lo), self.profile_param(i, p.hi))
                 })
@@ -157,14 +199,15 @@ impl Profile {
             let given = seg.curve().curve().coefficient_error();
             for k in 0..pieces.pieces() {
                 let (lo, hi) = pieces.piece_span(k);
-                stack.push(Piece {
-                    coefs: pieces.piece(k).to_vec(),
-                    lo,
-                    hi,
-                    depth: 0,
-                });
+                pending.push(pieces.piece(k), lo, hi, 0);
                 let err = coefficient_error(pieces, k, given);
-                while let Some(piece) = stack.pop() {
+                while let Some((lo, hi, depth)) = pending.pop(&mut current) {
+                    let piece = Piece {
+                        coefs: &current,
+                        lo,
+                        hi,
+                        depth,
+                    };
                     let cover = cover(&piece);
                     if cover == Cover::None {
                         continue;
@@ -208,9 +251,7 @@ impl Profile {
                                     };
                                 }
                                 _ if piece.depth < MAX_DEPTH => {
-                                    let (a, b) = halve(&piece, dim);
-                                    stack.push(b);
-                                    stack.push(a);
+                                    halve(&piece, dim, &mut work, &mut pending);
                                 }
                                 _ => unresolved = true,
                             }
@@ -293,9 +334,9 @@ struct Errors {
 
 /// The piece's verdict against the disk of centre `x` and radius `r`; `err` bounds the error
 /// of its homogeneous coefficients.
-fn test_piece(piece: &Piece, dim: usize, x: V2, r: f64, err: Errors) -> Verdict {
+fn test_piece(piece: &Piece<'_>, dim: usize, x: V2, r: f64, err: Errors) -> Verdict {
     let n = piece.coefs.len() / dim;
-    let mut pts = Vec::with_capacity(n);
+    let mut pts: SmallVec<[V2; 16]> = SmallVec::with_capacity(n);
     let (mut w_min, mut mag) = (f64::INFINITY, x.x.abs().max(x.y.abs()));
     for c in piece.coefs.chunks_exact(dim) {
         let w = c[2];
@@ -381,7 +422,7 @@ fn test_piece(piece: &Piece, dim: usize, x: V2, r: f64, err: Errors) -> Verdict 
 /// halving on the sign of its derivative: outside where that bound is positive, a point
 /// inside where the least value is negative. Every comparison allows for the coefficients'
 /// errors and the rounding of the arithmetic; `None` where neither is proven.
-fn convex_verdict(piece: &Piece, x: V2, r: f64, err: Errors) -> Option<Convex> {
+fn convex_verdict(piece: &Piece<'_>, x: V2, r: f64, err: Errors) -> Option<Convex> {
     let n = piece.coefs.len() / 3;
     if n < 2 {
         return None;
@@ -399,7 +440,7 @@ fn convex_verdict(piece: &Piece, x: V2, r: f64, err: Errors) -> Option<Convex> {
     let halvings = (piece.depth + 2) as f64 * eps;
     let e_w = err.weight + halvings * w_max;
     let e_rel = err.point + halvings * h_max + xm * e_w + 2.0 * eps * (h_max + xm * w_max);
-    let rel: Vec<[f64; 3]> = piece
+    let rel: SmallVec<[[f64; 3]; 16]> = piece
         .coefs
         .chunks_exact(3)
         .map(|c| [c[0] - x.x * c[2], c[1] - x.y * c[2], r * c[2]])
@@ -409,14 +450,14 @@ fn convex_verdict(piece: &Piece, x: V2, r: f64, err: Errors) -> Option<Convex> {
         .flat_map(|c| c.iter().map(|v| v.abs()))
         .fold(0.0, f64::max);
     let binomial = |n: usize| {
-        let mut row = vec![1.0f64; n + 1];
+        let mut row: Row = smallvec![1.0f64; n + 1];
         for k in 1..n {
             row[k] = row[k - 1] * (n + 1 - k) as f64 / k as f64;
         }
         row
     };
     let (cd, cm) = (binomial(d), binomial(m));
-    let mut coef = vec![0.0; m + 1];
+    let mut coef: Row = smallvec![0.0; m + 1];
     for (i, a) in rel.iter().enumerate() {
         for (j, b) in rel.iter().enumerate() {
             coef[i + j] += cd[i] * cd[j] * (a[0] * b[0] + a[1] * b[1] - a[2] * b[2]);
@@ -435,36 +476,40 @@ fn convex_verdict(piece: &Piece, x: V2, r: f64, err: Errors) -> Option<Convex> {
     {
         return None;
     }
-    let casteljau = |c: &[f64], t: f64| {
-        let mut work = c.to_vec();
-        for level in 1..c.len() {
-            for j in 0..c.len() - level {
-                work[j] += t * (work[j + 1] - work[j]);
-            }
-        }
-        work[0]
-    };
-    let slope: Vec<f64> = coef.windows(2).map(|w| w[1] - w[0]).collect();
-    let (mut lo, mut hi) = (0.0, 1.0);
+    let slope: Row = coef.windows(2).map(|w| w[1] - w[0]).collect();
+    // Where D′ = m Σ slope Bᵐ⁻¹ changes sign (D is convex: D′ rises), by Newton on it,
+    // kept in a bracket that halves wherever a step would leave it.
     let t0 = if slope[0] >= 0.0 {
         0.0
     } else if slope[m - 1] <= 0.0 {
         1.0
     } else {
+        let (mut lo, mut hi, mut t) = (0.0, 1.0, 0.5);
         for _ in 0..LEAST_STEPS {
-            let mid = 0.5 * (lo + hi);
-            if casteljau(&slope, mid) < 0.0 {
-                lo = mid;
+            let (s, ds) = value_and_derivative(&slope, t);
+            if s < 0.0 {
+                lo = t;
             } else {
-                hi = mid;
+                hi = t;
+            }
+            let newton = t - s / ds;
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let step = (next - t).abs();
+            t = next;
+            if step <= LEAST_STEP {
+                break;
             }
         }
-        lo
+        t
     };
     // D(t) ≥ D(t0) + D′(t0)(t − t0) on [0, 1], D′ = m Σ slope Bᵐ⁻¹.
-    let least = casteljau(&coef, t0);
+    let least = value_and_derivative(&coef, t0).0;
     let value = least - err_coef - round;
-    let rate = m as f64 * (casteljau(&slope, t0).abs() + 2.0 * err_coef + round);
+    let rate = m as f64 * (value_and_derivative(&slope, t0).0.abs() + 2.0 * err_coef + round);
     if value - rate * t0.max(1.0 - t0) > 0.0 {
         Some(Convex::Outside)
     } else if least + err_coef + round < 0.0 {
@@ -475,6 +520,35 @@ fn convex_verdict(piece: &Piece, x: V2, r: f64, err: Errors) -> Option<Convex> {
     }
 }
 
+/// The value and derivative at `t` of the polynomial with Bernstein coefficients `c` on
+/// `[0, 1]`, by de Casteljau's algorithm.
+fn value_and_derivative(c: &[f64], t: f64) -> (f64, f64) {
+    let n = c.len() - 1;
+    if n == 0 {
+        return (c[0], 0.0);
+    }
+    // (In place up to degree 31, as every squared distance of a piece up to degree 15.)
+    let mut inline = [0.0; 32];
+    let mut spilled = Vec::new();
+    let work: &mut [f64] = if c.len() <= inline.len() {
+        inline[..c.len()].copy_from_slice(c);
+        &mut inline[..c.len()]
+    } else {
+        spilled.extend_from_slice(c);
+        &mut spilled
+    };
+    for level in 1..n {
+        for j in 0..=n - level {
+            work[j] += t * (work[j + 1] - work[j]);
+        }
+    }
+    // The last two values span the derivative.
+    (
+        work[0] + t * (work[1] - work[0]),
+        n as f64 * (work[1] - work[0]),
+    )
+}
+
 /// What a piece's convex squared distance proves.
 enum Convex {
     /// The piece lies outside the disk.
@@ -483,40 +557,35 @@ enum Convex {
     Inside(f64),
 }
 
-/// The two halves of a piece by de Casteljau's algorithm on its homogeneous coefficients.
-fn halve(piece: &Piece, dim: usize) -> (Piece, Piece) {
-    let n = piece.coefs.len() / dim;
-    let mut work = piece.coefs.clone();
-    let mut left = Vec::with_capacity(work.len());
-    let mut right = vec![0.0; work.len()];
-    left.extend_from_slice(&work[..dim]);
-    right[(n - 1) * dim..].copy_from_slice(&work[(n - 1) * dim..]);
+/// The two halves of a piece by de Casteljau's algorithm on its homogeneous coefficients,
+/// pushed onto `pending`, the first half last (it is tested first); `work` is scratch.
+fn halve(piece: &Piece<'_>, dim: usize, work: &mut Vec<f64>, pending: &mut Pending) {
+    let len = piece.coefs.len();
+    let n = len / dim;
+    work.clear();
+    work.extend_from_slice(piece.coefs);
+    let right = pending.coefs.len();
+    let left = right + len;
+    pending.coefs.resize(left + len, 0.0);
+    let out = &mut pending.coefs;
+    out[left..left + dim].copy_from_slice(&work[..dim]);
+    out[right + (n - 1) * dim..left].copy_from_slice(&work[(n - 1) * dim..]);
     for level in 1..n {
         for j in 0..n - level {
             for c in 0..dim {
                 work[j * dim + c] = 0.5 * (work[j * dim + c] + work[(j + 1) * dim + c]);
             }
         }
-        left.extend_from_slice(&work[..dim]);
-        let k = n - 1 - level;
-        right[k * dim..(k + 1) * dim].copy_from_slice(&work[k * dim..(k + 1) * dim]);
+        let l = left + level * dim;
+        out[l..l + dim].copy_from_slice(&work[..dim]);
+        let k = (n - 1 - level) * dim;
+        out[right + k..right + k + dim].copy_from_slice(&work[k..k + dim]);
     }
     let mid = 0.5 * (piece.lo + piece.hi);
     let depth = piece.depth + 1;
-    (
-        Piece {
-            coefs: left,
-            lo: piece.lo,
-            hi: mid,
-            depth,
-        },
-        Piece {
-            coefs: right,
-            lo: mid,
-            hi: piece.hi,
-            depth,
-        },
-    )
+    pending.len = len;
+    pending.spans.push((mid, piece.hi, depth));
+    pending.spans.push((piece.lo, mid, depth));
 }
 
 /// Units of rounding allowed between an arc's rational form and its circle: its control

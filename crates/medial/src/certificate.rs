@@ -155,8 +155,8 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
-/// Whether an end lies at the centre of an arc one of its feet is on (any arc where it has
-/// no edge: the centre of a disk), with its radius.
+/// Whether an end lies at the centre of an arc one of its feet is on (at a joint, either
+/// segment there; any arc where it has no edge: the centre of a disk), with its radius.
 fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
     let room = JUNCTION_ROOM[1] * sites.size;
     let centre_of = |s: &curve::Segment| {
@@ -171,7 +171,21 @@ fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
     }
     feet.iter().any(|f| {
         let b = sites.boundaries[f.boundary];
-        centre_of(&b.segments()[b.locate(f.u).0])
+        let (i, n) = (b.locate(f.u).0, b.segments().len());
+        // A foot at a joint is on both segments there (which one its parameter locates is
+        // a matter of rounding): the neighbour across is tried too.
+        let seg = &b.segments()[i];
+        let at = |p: curve::V2| distance(p.arr(), f.xy) <= room;
+        let before = (i > 0 || b.is_closed()).then(|| (i + n - 1) % n);
+        let after = (i + 1 < n || b.is_closed()).then(|| (i + 1) % n);
+        [
+            Some(i),
+            before.filter(|_| at(seg.start())),
+            after.filter(|_| at(seg.end())),
+        ]
+        .into_iter()
+        .flatten()
+        .any(|j| centre_of(&b.segments()[j]))
     })
 }
 

@@ -516,7 +516,11 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
             // (An end at an arc's centre, or at a joint with an arc, is exact data.)
             let (i, _) = p.locate(u.rem_euclid(n));
             let before = p.locate((u - 1e-9).rem_euclid(n)).0;
-            if p.segments()[i].circle().is_some() || p.segments()[before].circle().is_some() {
+            let after = p.locate((u + 1e-9).rem_euclid(n)).0;
+            if [i, before, after]
+                .iter()
+                .any(|&j| p.segments()[j].circle().is_some())
+            {
                 continue;
             }
             let kappa = |v: f64| {
@@ -1113,4 +1117,27 @@ fn a_certified_axis_moved_scaled_or_rotated_is_the_same_axis() {
             }
         }
     }
+}
+
+/// A filleted triangle whose two straight sides' bisector ends at a fillet's centre: the
+/// end's feet are the sides' tangent points, at the joints with the arc, which the
+/// certificate (and the oracle check) take as on the arc (found by a random sweep once the
+/// two sides' bisector came in closed form, its end no longer met on the arc).
+#[test]
+fn an_end_at_a_fillet_centre_with_its_feet_at_the_joints() {
+    let steps = [1.2848230929075242, 0.8138003385839884, 1.379317469934494];
+    let radii = [
+        1.8340827039167142,
+        1.166597570924415,
+        1.08728821403208,
+        1.0,
+        1.0,
+        1.0,
+        1.0,
+    ];
+    let round = [0.9157530236956428, 0.2, 0.0, 0.0, 0.0, 0.0, 0.0];
+    let segs = polygon(&steps, &radii, &round).unwrap();
+    let region = with_holes(assemble(segs, 2, false).unwrap(), &[]).unwrap();
+    check(&region).unwrap();
+    assert!(axis(&region).certified);
 }

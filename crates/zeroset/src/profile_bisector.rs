@@ -14,6 +14,7 @@
 //! point (reported as isolated), as is the self-bisector of an arc. Two pieces of one line
 //! have none.
 
+mod lines;
 mod point_site;
 mod polyline;
 
@@ -387,8 +388,14 @@ impl<'a> Run<'a> {
             &self.profiles[0].segments()[i],
             &self.profiles[1].segments()[j],
         );
-        if s1.kind() == SegmentKind::Line && s2.kind() == SegmentKind::Line && collinear(c1, c2) {
-            return Ok(());
+        if s1.kind() == SegmentKind::Line && s2.kind() == SegmentKind::Line {
+            if collinear(c1, c2) {
+                return Ok(());
+            }
+            if let Some(found) = lines::line_bisector(c1, c2, &self.reach()) {
+                self.add(found, [i, j], out);
+                return Ok(());
+            }
         }
         if let (Some(k1), Some(k2)) = (s1.circle(), s2.circle()) {
             if k1 == k2 {

@@ -49,7 +49,7 @@ pub(crate) struct Reach {
 }
 
 impl Reach {
-    fn within(&self, x: [f64; 2]) -> bool {
+    pub(crate) fn within(&self, x: [f64; 2]) -> bool {
         x[0].is_finite()
             && x[1].is_finite()
             && (x[0] - self.center[0]).hypot(x[1] - self.center[1]) <= self.far

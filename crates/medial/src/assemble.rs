@@ -74,13 +74,21 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     // Every end (two per stretch, one per single point), clustered by distance.
     let mut points: Vec<Vertex> = Vec::new();
     let mut point_boundary: Vec<[usize; 2]> = Vec::new();
+    // Per end, the other end of its stretch where that stretch is longer than a stub.
+    let mut far_partner: Vec<Option<usize>> = Vec::new();
     for p in &pieces {
         let b = found[p.candidate].boundary;
+        let k = points.len();
         points.push(p.vertices[0]);
         point_boundary.push(b);
         if p.vertices.len() > 1 {
             points.push(p.vertices[p.vertices.len() - 1]);
             point_boundary.push(b);
+            let long = extent(&p.vertices) > STUB * sites.size;
+            far_partner.push(long.then_some(k + 1));
+            far_partner.push(long.then_some(k));
+        } else {
+            far_partner.push(None);
         }
     }
     // Beside a centre of curvature the feet are ill-conditioned: ends there (feet within
@@ -103,7 +111,13 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         .zip(&tip_end)
         .map(|((v, b), &tip)| (tip && b[0] == b[1]).then(|| FeetSpan::new(sites, b[0], v.tr)))
         .collect();
-    let cluster = clusters(&points, &feet_span, merge, TIP_MERGE * sites.size);
+    let cluster = clusters(
+        &points,
+        &feet_span,
+        &far_partner,
+        merge,
+        TIP_MERGE * sites.size,
+    );
     let mut chains: Vec<Option<Chain>> = Vec::new();
     let mut k = 0;
     let mut lone: Vec<usize> = Vec::new(); // single points, by index in `points`
@@ -127,11 +141,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     let mut stub_tip: Vec<Option<(Vertex, [usize; 2])>> = vec![None; clusters_n];
     for slot in chains.iter_mut() {
         let Some(c) = slot else { continue };
-        let first = c.vertices[0].xy;
-        let extent = c.vertices.iter().fold(0.0f64, |m, v| {
-            m.max((v.xy[0] - first[0]).hypot(v.xy[1] - first[1]))
-        });
-        if c.ends[0] == c.ends[1] && c.at_tip && extent <= STUB * sites.size {
+        if c.ends[0] == c.ends[1] && c.at_tip && extent(&c.vertices) <= STUB * sites.size {
             stub_tip[c.ends[0]] = c
                 .vertices
                 .iter()
@@ -220,6 +230,14 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
     }
 }
 
+/// How far a stretch's vertices reach from its first.
+fn extent(vertices: &[Vertex]) -> f64 {
+    let first = vertices[0].xy;
+    vertices.iter().fold(0.0f64, |m, v| {
+        m.max((v.xy[0] - first[0]).hypot(v.xy[1] - first[1]))
+    })
+}
+
 /// The stretch of a boundary between an end's two feet, the short way round on a closed
 /// one.
 #[derive(Debug, Clone, Copy)]
@@ -268,6 +286,7 @@ impl FeetSpan {
 fn clusters(
     points: &[Vertex],
     feet: &[Option<FeetSpan>],
+    far_partner: &[Option<usize>],
     merge: f64,
     tip_merge: f64,
 ) -> Vec<usize> {
@@ -283,10 +302,13 @@ fn clusters(
                 break;
             }
             let (p, q) = (points[a].xy, points[b].xy);
-            let one_tip = match (&feet[a], &feet[b]) {
-                (Some(x), Some(y)) => x.meets(y),
-                _ => false,
-            };
+            // (Not the two ends of one stretch longer than a stub: they would close it into
+            // a loop; two junctions that near each other are joined by it.)
+            let one_tip = far_partner[a] != Some(b)
+                && match (&feet[a], &feet[b]) {
+                    (Some(x), Some(y)) => x.meets(y),
+                    _ => false,
+                };
             let within = if one_tip { reach } else { merge };
             if (p[0] - q[0]).hypot(p[1] - q[1]) <= within {
                 let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));

@@ -62,6 +62,10 @@ const WIDENINGS: usize = 64;
 /// Newton steps of a foot-point solve.
 const FOOT_STEPS: usize = 30;
 
+/// The secant of a foot-point solve starts from the guessed foot and one this share of the
+/// bracket beside it.
+const START_STEP: f64 = 1e-3;
+
 /// Where a stretch ends, bracketed on its branch: from `lo` (on the axis, at `last`) to `hi`
 /// (off it, at `outside` when the branch has a point there).
 struct Bracket {
@@ -668,46 +672,68 @@ impl Branch<'_, '_> {
                 v
             }
         };
-        let (mut u0, mut u1) = (lo, hi);
-        let (mut g0, mut g1) = (reduced(u0), reduced(u1));
-        for _ in 0..FOOT_STEPS {
-            if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
-                break;
+        // Secant steps from two feet; the foot they converge to, if it is one.
+        let secant = |mut u0: f64, mut u1: f64| -> Option<Vertex> {
+            let (mut g0, mut g1) = (reduced(u0), reduced(u1));
+            for _ in 0..FOOT_STEPS {
+                if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
+                    break;
+                }
+                let next = u1 - g1 * (u1 - u0) / (g1 - g0);
+                if !next.is_finite() {
+                    return None;
+                }
+                (u0, g0) = (u1, g1);
+                u1 = next;
+                g1 = reduced(u1);
             }
-            let next = u1 - g1 * (u1 - u0) / (g1 - g0);
-            if !next.is_finite() {
-                return None;
-            }
-            (u0, g0) = (u1, g1);
-            u1 = next;
-            g1 = reduced(u1);
-        }
+            self.foot_solved(keep, guess, p, q, (lo, hi), u1, &g)
+        };
+        // From the two vertices' feet; failing that, from the guess and a foot a little
+        // beside it (beside a corner on the kept foot's own line the equidistant point of
+        // the corner is at infinity, and a secant from there strays).
+        secant(lo, hi).or_else(|| {
+            let u = guess[other];
+            secant(u, u + START_STEP * (hi - lo).max(f64::EPSILON))
+        })
+    }
+
+    /// The vertex with foot `keep` at `guess[keep]` and the other at `u`, where the secant
+    /// of [`Self::snap_keeping`] (bracketed by the feet `lo`, `hi` of the vertices `p`, `q`;
+    /// `g` the equidistance's gap and point) left it: if that is a foot.
+    #[allow(clippy::too_many_arguments)]
+    fn foot_solved(
+        &self,
+        keep: usize,
+        guess: [f64; 2],
+        p: [f64; 2],
+        q: [f64; 2],
+        (lo, hi): (f64, f64),
+        u: f64,
+        g: &dyn Fn(f64) -> (f64, curve::V2),
+    ) -> Option<Vertex> {
+        let (c, other) = (self.c, 1 - keep);
         // The secant may leave the bracket (where the branch turns between its vertices,
         // the other foot goes past both of theirs and back); by no more than the kept foot
         // moves between them.
         let span = (hi - lo).max((q[keep] - p[keep]).abs()).max(f64::EPSILON);
-        if !(u1 >= lo - span && u1 <= hi + span) {
+        if !(u >= lo - span && u <= hi + span) {
             return None;
         }
         // Two feet on one segment keep their order: beside the feet's meeting the secant
         // may find the trivial solution, both feet at one point, or pass it.
         if c.boundary[0] == c.boundary[1] && c.segment[0] == c.segment[1] {
             let before = p[other] - p[keep];
-            if (u1 - guess[keep]) * before <= 0.0 {
+            if (u - guess[keep]) * before <= 0.0 {
                 return None;
             }
         }
         // The secant converged to a foot: the point is as far from it as from the kept one
         // (else, beside a corner where the feet close in, it stopped short: no vertex).
-        let (gap, x) = g(u1);
-        let v = self.vertex(
-            {
-                let mut tr = guess;
-                tr[other] = u1;
-                tr
-            },
-            x.arr(),
-        )?;
+        let (gap, x) = g(u);
+        let mut tr = guess;
+        tr[other] = u;
+        let v = self.vertex(tr, x.arr())?;
         (gap.abs() <= EMPTY_SLACK * self.sites.size.max(v.radius)).then_some(v)
     }
 }

@@ -1141,3 +1141,66 @@ fn an_end_at_a_fillet_centre_with_its_feet_at_the_joints() {
     check(&region).unwrap();
     assert!(axis(&region).certified);
 }
+
+/// A chain of Béziers with a reflex corner where the bisector of the segment after the
+/// corner and the corner itself has a stretch 9e-4 long, its feet closing in on the corner
+/// at both ends: its two ends had been merged as one leaf's tip, which closed it into a loop
+/// (the graph then said a region without holes had a cycle). The two ends of a stretch
+/// longer than a stub stay apart now (found by a random sweep).
+#[test]
+fn a_short_stretch_beside_a_reflex_corner_is_no_loop() {
+    let radii = [
+        1.667916643291305,
+        1.8662456717342735,
+        1.5069512226395496,
+        1.059050185545153,
+        1.4543446782390808,
+    ];
+    let wobble = [
+        (-0.05, -0.05),
+        (-0.2864027286765499, -0.05),
+        (-0.05, -0.11954445407404432),
+        (-0.14240106738110647, -0.10247399197300341),
+        (0.09959707074505725, -0.05),
+        (-0.05, -0.05),
+    ];
+    let smooth = [true, false, false, false, false, false];
+    let segs = bezier_chain(&radii, &wobble[..5], &smooth[..5]).unwrap();
+    let region = with_holes(assemble(segs, 0, false).unwrap(), &[]).unwrap();
+    check(&region).unwrap();
+    assert!(axis(&region).edges.iter().all(|e| e.from != e.to));
+}
+
+/// A filleted polygon with a small hole, whose corner between two straight sides starts a
+/// stretch of their closed-form bisector with no vertex before its junction: the points the
+/// junction's bracket snapped onto the bisector came from a secant started at the corner,
+/// on the kept side's own line, where the equidistant point is at infinity; half of them
+/// failed, and the stretch ended as a leaf 0.3 short of its junction, the graph in two
+/// pieces (found by a random sweep). The secant now tries again from the guessed foot.
+#[test]
+fn a_corners_stretch_reaches_its_junction_with_no_vertex_between() {
+    let steps = [
+        0.5513225361150629,
+        1.01982154142017,
+        1.1988542953645818,
+        1.193994751493873,
+        0.9016869774460274,
+        1.2414604812853327,
+    ];
+    let radii = [
+        1.568992751251152,
+        1.196578677621842,
+        1.8170164169116163,
+        1.0,
+        1.0,
+        1.0,
+        1.0,
+    ];
+    let round = [0.2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+    let segs = polygon(&steps, &radii, &round).unwrap();
+    let outer = assemble(segs, 0, false).unwrap();
+    let region = with_holes(outer, &[([0.0, 0.0], 0.05)]).unwrap();
+    assert_eq!(region.holes().len(), 1);
+    check(&region).unwrap();
+    assert!(axis(&region).certified);
+}

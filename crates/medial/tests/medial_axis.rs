@@ -554,10 +554,13 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     let room = CHORD * size + 1e-6 * size;
     let sampled = sampled_medial_points(&b.profiles, size, |x| b.nearest(x).0, |x| b.inside(x));
     prop_assert!(
-        sampled.unrefined + sampled.dominated <= sampled.kept / 10,
-        "{} of {} Voronoi edges did not refine, {} were dominated",
+        sampled.unrefined + sampled.dominated <= sampled.kept / 10
+            && sampled.unresolved <= sampled.kept / 4,
+        "{} of {} Voronoi edges did not refine, {} had a foot beyond the widest window, {} \
+         were dominated",
         sampled.unrefined,
         sampled.kept,
+        sampled.unresolved,
         sampled.dominated
     );
     for z in &sampled.points {

@@ -101,6 +101,28 @@ impl<'a> Sampled<'a> {
         d.min(self.length - d)
     }
 
+    /// [`Self::local_distance`], its window doubled up to `widest` samples while the least
+    /// sample is at the window's end.
+    fn widening_distance(
+        &self,
+        x: [f64; 2],
+        k: usize,
+        window: usize,
+        widest: usize,
+    ) -> (f64, FootSearch) {
+        let mut w = window;
+        loop {
+            let (d, inside) = self.local_distance(x, k, w);
+            if inside {
+                return (d, FootSearch::Inside);
+            }
+            if w >= widest {
+                return (d, FootSearch::Widest);
+            }
+            w = (2 * w).min(widest);
+        }
+    }
+
     /// The distance from `x` to the boundary within `window` samples of sample `k`, and
     /// whether its minimum is inside the window (not at its ends).
     fn local_distance(&self, x: [f64; 2], k: usize, window: usize) -> (f64, bool) {
@@ -137,6 +159,14 @@ impl<'a> Sampled<'a> {
     }
 }
 
+/// Where a foot search ended: its least point inside its window, or at the end of the
+/// widest window.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum FootSearch {
+    Inside,
+    Widest,
+}
+
 /// A point of the medial axis found from the samples' Voronoi diagram.
 pub struct MedialPoint {
     pub xy: [f64; 2],
@@ -144,12 +174,15 @@ pub struct MedialPoint {
 }
 
 /// What the sampled diagram gave: the refined points of the axis, and how many kept edges
-/// there were, how many did not refine (no sign change, a foot at a search window's end)
-/// and how many refined to a point a third stretch of boundary is closer to.
+/// there were, how many did not refine (no sign change, no convergence), how many had a
+/// foot beyond the widest search window (beside nearly concentric arcs the distance barely
+/// changes along the boundary, and a foot may lie anywhere on it) and how many refined to a
+/// point a third stretch of boundary is closer to.
 pub struct Approximation {
     pub points: Vec<MedialPoint>,
     pub kept: usize,
     pub unrefined: usize,
+    pub unresolved: usize,
     pub dominated: usize,
 }
 
@@ -180,6 +213,7 @@ pub fn sampled_medial_points(
         points: Vec::new(),
         kept: 0,
         unrefined: 0,
+        unresolved: 0,
         dominated: 0,
     };
     for edge in triangulation.undirected_edges() {
@@ -200,24 +234,32 @@ pub fn sampled_medial_points(
             continue;
         }
         out.kept += 1;
-        let window = if same {
-            let gap = va.index.abs_diff(vb.index);
-            let gap = gap.min(sampled[va.boundary].pts.len() - gap);
-            WINDOW.min(gap / 3)
-        } else {
-            WINDOW
+        // The widest window: a third of the gap between the samples on one boundary (so
+        // that the two searches never meet), else half the boundary.
+        let widest = |k: usize| {
+            if same {
+                let gap = va.index.abs_diff(vb.index);
+                gap.min(sampled[va.boundary].pts.len() - gap) / 3
+            } else {
+                sampled[k].pts.len() / 2
+            }
         };
         let (pa, pb) = (va.at, vb.at);
         let half = 0.5 * (pb.x - pa.x).hypot(pb.y - pa.y);
         let dir = [(pb.x - pa.x) / (2.0 * half), (pb.y - pa.y) / (2.0 * half)];
         let at = |t: f64| [mid[0] + t * dir[0], mid[1] + t * dir[1]];
         let sides = |t: f64| {
-            let (da, ia) = sampled[va.boundary].local_distance(at(t), va.index, window);
-            let (db, ib) = sampled[vb.boundary].local_distance(at(t), vb.index, window);
-            (da - db, da, ia && ib)
+            let foot = |v: &Sample| {
+                let widest = widest(v.boundary);
+                sampled[v.boundary].widening_distance(at(t), v.index, WINDOW.min(widest), widest)
+            };
+            let ((da, ia), (db, ib)) = (foot(va), foot(vb));
+            (da - db, da, [ia, ib])
         };
         match illinois(&sides, -half, half, size) {
-            Some((t, r)) => {
+            Err(Miss::BeyondWindows) => out.unresolved += 1,
+            Err(Miss::Unrefined) => out.unrefined += 1,
+            Ok((t, r)) => {
                 let z = at(t);
                 if distance(z) < r - DOMINATED * size {
                     out.dominated += 1;
@@ -225,31 +267,43 @@ pub fn sampled_medial_points(
                     out.points.push(MedialPoint { xy: z, radius: r });
                 }
             }
-            None => out.unrefined += 1,
         }
     }
     out
 }
 
-/// The root of `sides(t).0` in `[a, b]` by the Illinois method, with the distance there;
-/// `None` without a sign change, without convergence or with a foot at a window's end.
+/// Why an edge did not refine.
+enum Miss {
+    /// No sign change, no convergence, or a foot at the end of a window that could widen.
+    Unrefined,
+    /// A foot at the end of the widest window.
+    BeyondWindows,
+}
+
+/// The root of `sides(t).0` in `[a, b]` by the Illinois method, with the distance there
+/// (`sides(t).2`: per foot, whether it lies inside its window, and if not, whether that
+/// window could not widen further).
 fn illinois(
-    sides: &impl Fn(f64) -> (f64, f64, bool),
+    sides: &impl Fn(f64) -> (f64, f64, [FootSearch; 2]),
     mut a: f64,
     mut b: f64,
     size: f64,
-) -> Option<(f64, f64)> {
+) -> Result<(f64, f64), Miss> {
     let (mut fa, _, _) = sides(a);
     let (mut fb, _, _) = sides(b);
     if fa.signum() == fb.signum() {
-        return None;
+        return Err(Miss::Unrefined);
     }
     let mut side = 0;
     for _ in 0..100 {
         let t = (a * fb - b * fa) / (fb - fa);
-        let (ft, r, inside) = sides(t);
+        let (ft, r, feet) = sides(t);
         if ft.abs() <= 1e-13 * size || (b - a).abs() <= 1e-15 * size {
-            return (inside && ft.abs() <= 1e-10 * size).then_some((t, r));
+            return match feet {
+                _ if feet.contains(&FootSearch::Widest) => Err(Miss::BeyondWindows),
+                [FootSearch::Inside, FootSearch::Inside] if ft.abs() <= 1e-10 * size => Ok((t, r)),
+                _ => Err(Miss::Unrefined),
+            };
         }
         if ft.signum() == fb.signum() {
             (b, fb) = (t, ft);
@@ -265,5 +319,5 @@ fn illinois(
             side = 1;
         }
     }
-    None
+    Err(Miss::Unrefined)
 }

@@ -38,27 +38,39 @@ struct Edge {
     index: usize,
 }
 
-/// A chain of segments to test: its segments and whether its last joins its first.
-pub(crate) type Chain<'a> = (&'a [Segment], bool);
+/// A chain to test: its segments' polylines (from [`flattened`]) and whether its last
+/// segment joins its first.
+pub(crate) type Chain<'a> = (&'a [Vec<V2>], bool);
 
-/// The first crossing of a chain with itself (`closed`: its last segment joins its first).
-pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> Option<Crossing> {
-    first_crossing_among(&[(segments, closed)], size)
-}
-
-/// The first crossing among chains, of one with itself or of two with each other (first by
-/// chain, then by segment).
-pub(crate) fn first_crossing_among(chains: &[Chain<'_>], size: f64) -> Option<Crossing> {
-    let delta = flatness(chains.iter().flat_map(|c| c.0.iter()), size);
-    let mut edges = Vec::new();
-    let mut lengths = Vec::with_capacity(chains.len());
-    for (c, &(segments, _)) in chains.iter().enumerate() {
-        let start = edges.len();
-        for (i, s) in segments.iter().enumerate() {
+/// The polylines of `segments`, each within [`FLATNESS`] of `size` of its segment (and no
+/// finer than the rounding of the coordinates), without repeated points.
+pub(crate) fn flattened(segments: &[Segment], size: f64) -> Vec<Vec<V2>> {
+    let delta = flatness(segments.iter(), size);
+    segments
+        .iter()
+        .map(|s| {
             let mut points = flatten(s, delta);
             // (A repeated point would make its neighbours' edges touch without being
             // neighbours.)
             points.dedup();
+            points
+        })
+        .collect()
+}
+
+/// The first crossing of a chain with itself (`closed`: its last segment joins its first).
+pub(crate) fn first_crossing(polylines: &[Vec<V2>], closed: bool) -> Option<Crossing> {
+    first_crossing_among(&[(polylines, closed)], false)
+}
+
+/// The first crossing among chains (first by chain, then by segment): of one with itself
+/// or of two with each other, or only the latter (`apart`: each chain is known simple).
+pub(crate) fn first_crossing_among(chains: &[Chain<'_>], apart: bool) -> Option<Crossing> {
+    let mut edges = Vec::new();
+    let mut lengths = Vec::with_capacity(chains.len());
+    for (c, &(polylines, _)) in chains.iter().enumerate() {
+        let start = edges.len();
+        for (i, points) in polylines.iter().enumerate() {
             for (a, b) in points.windows(2).map(|w| (w[0], w[1])) {
                 let index = edges.len() - start;
                 edges.push(Edge {
@@ -89,7 +101,7 @@ pub(crate) fn first_crossing_among(chains: &[Chain<'_>], size: f64) -> Option<Cr
         active.retain(|&j| hi_x(&edges[j]) >= lo_x(&e));
         for &j in &active {
             let f = edges[j];
-            if neighbours(&e, &f) {
+            if neighbours(&e, &f) || (apart && e.chain == f.chain) {
                 continue;
             }
             if let Some(at) = meet(e.a, e.b, f.a, f.b) {
@@ -116,13 +128,11 @@ pub(crate) fn first_crossing_among(chains: &[Chain<'_>], size: f64) -> Option<Cr
     found
 }
 
-/// The closed polygon of a closed chain, flattened within [`FLATNESS`] of `size`.
-pub(crate) fn polygon(segments: &[Segment], size: f64) -> Vec<V2> {
+/// The closed polygon of a closed chain's polylines (from [`flattened`]).
+pub(crate) fn polygon(polylines: &[Vec<V2>]) -> Vec<V2> {
     let mut out: Vec<V2> = Vec::new();
-    let delta = flatness(segments.iter(), size);
-    for s in segments {
-        let pts = flatten(s, delta);
-        out.extend(pts.into_iter().skip(usize::from(!out.is_empty())));
+    for pts in polylines {
+        out.extend(pts.iter().skip(usize::from(!out.is_empty())));
     }
     out
 }

@@ -33,9 +33,10 @@ impl Region {
         if let Some(b) = boundaries.iter().position(|p| !p.is_closed()) {
             return Err(Error::OpenBoundary { boundary: b });
         }
-        let size = boundaries.iter().map(|p| p.size()).fold(0.0f64, f64::max);
-        let chains: Vec<Chain<'_>> = boundaries.iter().map(|p| (p.segments(), true)).collect();
-        if let Some(c) = first_crossing_among(&chains, size) {
+        // (Each boundary is simple, proven when it was made: only pairs of boundaries are
+        // tested, on their own polylines, each as fine as this test needs or finer.)
+        let chains: Vec<Chain<'_>> = boundaries.iter().map(|p| (p.polylines(), true)).collect();
+        if let Some(c) = first_crossing_among(&chains, true) {
             return Err(Error::BoundariesCross {
                 first: c.chains.0,
                 second: c.chains.1,
@@ -43,10 +44,7 @@ impl Region {
             });
         }
         // No crossings: a boundary lies inside another exactly when one of its points does.
-        let polygons: Vec<Vec<V2>> = boundaries
-            .iter()
-            .map(|p| polygon(p.segments(), size))
-            .collect();
+        let polygons: Vec<Vec<V2>> = boundaries.iter().map(|p| polygon(p.polylines())).collect();
         let inside = |b: usize, of: usize| {
             let p = boundaries[b].jet_to(0.0, 0).p;
             winding(&polygons[of], p) != 0
@@ -83,10 +81,7 @@ impl Region {
     /// ```
     pub fn nested(profiles: Vec<Profile>) -> Result<Vec<Region>> {
         let closed: Vec<Profile> = profiles.into_iter().filter(|p| p.is_closed()).collect();
-        let polygons: Vec<Vec<V2>> = closed
-            .iter()
-            .map(|p| polygon(p.segments(), p.size()))
-            .collect();
+        let polygons: Vec<Vec<V2>> = closed.iter().map(|p| polygon(p.polylines())).collect();
         let n = closed.len();
         let inside = |i: usize, j: usize| i != j && winding(&polygons[j], closed[i].start()) != 0;
         let depth: Vec<usize> = (0..n)

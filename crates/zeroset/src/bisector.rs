@@ -14,6 +14,7 @@
 mod knot_corners;
 mod output;
 mod point;
+mod straight_spans;
 mod vertices;
 
 pub use output::{Bisector, BisectorPoint, Branch};
@@ -27,6 +28,7 @@ use bspline::Rational;
 use curve::Frame;
 use point::bbox;
 pub(crate) use point::bbox_of_points;
+use straight_spans::StraightSpans;
 use vertices::Ctx;
 pub(crate) use vertices::{FAR, TRIM_SLACK};
 
@@ -113,10 +115,13 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         trimmed: opts.trimmed,
         chord: opts.chord_tol * diag,
     };
+    // (Cells pairing two pieces of one line hold no bisector point: skipped.)
+    let (s1, s2) = (StraightSpans::of(c1, diag), StraightSpans::of(c2, diag));
     let cells: Vec<Patch> = f
         .bezier_patches()
         .iter()
         .map(|b| within_rounding_as_zero(Patch::from_bezier(b), terms))
+        .filter(|p| !s1.on_one_line([p.t0, p.t1], &s2, [p.r0, p.r1]))
         .collect();
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = [dt.0, dt.1, dr.0, dr.1];
@@ -216,11 +221,15 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
         trimmed: opts.trimmed,
         chord: opts.chord_tol * diag,
     };
+    let spans = StraightSpans::of(c, diag);
     let mut cells: Vec<Patch> = Vec::new();
     for b in f.bezier_patches() {
         let mut p = within_rounding_as_zero(Patch::from_bezier(&b), terms);
         if p.t0 >= p.r1 {
             continue; // entirely below the diagonal: the mirror of a cell above it
+        }
+        if spans.on_one_line([p.t0, p.t1], &spans, [p.r0, p.r1]) {
+            continue; // two pieces of one line (or one with itself): no bisector point
         }
         // Diagonal cells: divide (t − r) out as often as it divides. For F3 that is four
         // times: F3 = den · F̂3 with den = C'(t) × C'(r) = O(t − r) and F̂3 = O((t − r)³)

@@ -6,6 +6,7 @@
 use crate::geom::V2;
 use crate::param::ParamCurve;
 use crate::segment::Segment;
+use std::f64::consts::{PI, TAU};
 
 /// How far (relative to the profile's size) a flattened edge may stray from its segment.
 pub(crate) const FLATNESS: f64 = 1e-7;
@@ -180,6 +181,9 @@ fn flatten(s: &Segment, delta: f64) -> Vec<V2> {
     if s.kind() == crate::segment::SegmentKind::Line {
         return vec![s.start(), s.end()];
     }
+    if let Some((center, radius)) = s.circle() {
+        return flatten_arc(s, V2::from_arr(center), radius, delta);
+    }
     let pieces = c.control_points().len().max(2);
     let first = FIRST_SAMPLES * pieces;
     let at = |u: f64| c.jet_to(u, 0).p;
@@ -191,6 +195,38 @@ fn flatten(s: &Segment, delta: f64) -> Vec<V2> {
         );
         refine(&at, (u0, at(u0)), (u1, at(u1)), delta, 0, &mut out);
     }
+    out
+}
+
+/// Parameter steps over which an arc's sweep is summed: each step turns by less than half a
+/// turn (an arc turns at most a full turn, and its Bézier spans less than half of one).
+const SWEEP_STEPS: usize = 8;
+
+/// The polyline of an arc in closed form: points of its circle at equal angles, as many as
+/// keep the sagitta `r (1 − cos(θ/2))` of each chord within `delta`, its ends the curve's own.
+fn flatten_arc(s: &Segment, center: V2, radius: f64, delta: f64) -> Vec<V2> {
+    let c = s.curve();
+    let (a, b) = c.domain();
+    let angle = |p: V2| (p.y - center.y).atan2(p.x - center.x);
+    let at = |k: usize| c.jet_to(a + (b - a) * k as f64 / SWEEP_STEPS as f64, 0).p;
+    let (start, end) = (at(0), at(SWEEP_STEPS));
+    let a0 = angle(start);
+    let mut sweep = 0.0;
+    let mut prev = a0;
+    for k in 1..=SWEEP_STEPS {
+        let next = angle(at(k));
+        sweep += (next - prev + PI).rem_euclid(TAU) - PI;
+        prev = next;
+    }
+    let step = 2.0 * (1.0 - (delta / radius).min(1.0)).acos();
+    let n = ((sweep.abs() / step).ceil() as usize).clamp(1, MAX_POINTS);
+    let mut out = Vec::with_capacity(n + 1);
+    out.push(start);
+    for k in 1..n {
+        let (sin, cos) = (a0 + sweep * k as f64 / n as f64).sin_cos();
+        out.push(center + V2::new(cos, sin) * radius);
+    }
+    out.push(end);
     out
 }
 
@@ -279,6 +315,58 @@ mod tests {
             if let Some(m) = got {
                 let want = a + (b - a) * t;
                 prop_assert!((m - want).norm() < 1e-9 * (1.0 + want.norm()));
+            }
+        }
+
+        /// An arc's closed-form polyline starts and ends at the curve's ends, has its points
+        /// on the circle in order along the arc, and chords within the flatness of it: every
+        /// point of the curve (sampled densely) is within `delta` of the polyline, and the
+        /// chords are no shorter than needed by more than one step in the count.
+        #[test]
+        fn an_arc_is_flattened_within_the_flatness_in_closed_form(
+            center in (-1e3f64..1e3, -1e3f64..1e3),
+            radius in 1e-3f64..1e2,
+            start in -7.0f64..7.0,
+            sweep in prop_oneof![-6.3f64..-0.01, 0.01f64..6.3, Just(TAU), Just(-TAU)],
+            flat in 1e-8f64..1e-2,
+        ) {
+            let c = [center.0, center.1];
+            // (A full turn from a start whose sum rounds past 2π is refused.)
+            let Ok(s) = Segment::arc(c, radius, start, start + sweep) else { return Ok(()) };
+            let sweep = (start + sweep) - start;
+            let delta = flat * radius;
+            let pts = flatten_arc(&s, V2::from_arr(c), radius, delta);
+            let curve = s.curve();
+            let (a, b) = curve.domain();
+            prop_assert_eq!(pts[0], curve.jet_to(a, 0).p);
+            prop_assert_eq!(*pts.last().unwrap(), curve.jet_to(b, 0).p);
+            let size = radius + c[0].abs().max(c[1].abs());
+            let rounding = 1e-12 * size;
+            let mut turned = 0.0;
+            for w in pts.windows(2) {
+                let (u, v) = (w[0] - V2::from_arr(c), w[1] - V2::from_arr(c));
+                prop_assert!((v.norm() - radius).abs() <= rounding);
+                turned += u.cross(v).atan2(u.dot(v));
+            }
+            prop_assert!((turned - sweep).abs() <= 1e-9, "turned {turned} of {sweep}");
+            let step = 2.0 * (1.0 - flat.min(1.0)).acos();
+            prop_assert!(pts.len() - 1 <= (sweep.abs() / step).ceil() as usize);
+            // The curve between the points: within delta of its chord.
+            let steps = 4000;
+            let mut k = 0;
+            for j in 0..=steps {
+                let p = curve.jet_to(a + (b - a) * j as f64 / steps as f64, 0).p;
+                let off = |k: usize| {
+                    let (x, y) = (pts[k], pts[k + 1]);
+                    let d = y - x;
+                    let t = ((p - x).dot(d) / d.dot(d)).clamp(0.0, 1.0);
+                    (p - (x + d * t)).norm()
+                };
+                // The nearest chord is this one or a later one (the points are in order).
+                while k + 2 < pts.len() && off(k + 1) < off(k) {
+                    k += 1;
+                }
+                prop_assert!(off(k) <= delta + rounding, "{} off at {j}", off(k));
             }
         }
     }

@@ -479,12 +479,14 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
-        // An arc cutting through a line of the same profile.
+        // An arc cutting through two lines of the same profile (x = 4 at y = 0.4, y = 0 at
+        // x = 2 ± 1.79).
+        let a0 = 0.8f64.atan2(2.0);
         let cut = Profile::new(
             vec![
                 l([0.0, 0.0], [4.0, 0.0]),
                 l([4.0, 0.0], [4.0, 2.0]),
-                Segment::arc([2.0, 2.0], 2.0, 0.0, -PI).unwrap(),
+                Segment::arc([2.0, 1.2], 4.64f64.sqrt(), a0, -PI - a0).unwrap(),
             ],
             None,
         );

@@ -14,16 +14,19 @@
 //! point (reported as isolated), as is the self-bisector of an arc. Two pieces of one line
 //! have none.
 
+mod arcs;
 mod lines;
 mod point_site;
 mod polyline;
+mod stretches;
 
 use crate::bisector::{bbox_of_points, bisector, self_bisector, FAR};
 use crate::bisector::{Bisector, BisectorOptions, Branch, TRIM_SLACK};
 use crate::error::Result;
 use crate::zeroset::MAX_CHORD_TOL;
+use arcs::{arc_bisector, Carrier};
 use bspline::Rational;
-use curve::{JointKind, ParamCurve, Profile, SegmentKind};
+use curve::{JointKind, ParamCurve, Profile, Segment, SegmentKind};
 use point_site::{corner_corner, corner_curve, Corner, Reach, SharedEnd};
 use serde::{Deserialize, Serialize};
 
@@ -408,6 +411,12 @@ impl<'a> Run<'a> {
                 return Ok(());
             }
         }
+        if let (Some(k1), Some(k2)) = (carrier(s1), carrier(s2)) {
+            if let Some(found) = arc_bisector(c1, k1, c2, k2, &self.reach())? {
+                self.add(found, [i, j], out);
+                return Ok(());
+            }
+        }
         let found = bisector(c1, c2, &self.pair_options(&[c1, c2]))?;
         self.add(found, [i, j], out);
         Ok(())
@@ -611,6 +620,15 @@ fn shared_end(index: usize, before: usize, j: usize) -> Option<SharedEnd> {
         Some(SharedEnd::End)
     } else {
         None
+    }
+}
+
+/// What a line or an arc lies on (`None` for other segments).
+fn carrier(s: &Segment) -> Option<Carrier> {
+    match (s.kind(), s.circle()) {
+        (SegmentKind::Line, _) => Some(Carrier::Line),
+        (_, Some((center, radius))) => Some(Carrier::Circle { center, radius }),
+        _ => None,
     }
 }
 

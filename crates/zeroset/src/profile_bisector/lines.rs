@@ -78,7 +78,7 @@ pub(crate) fn line_bisector(c1: &Rational, c2: &Rational, reach: &Reach) -> Opti
 }
 
 /// Vertices of a branch per domain length of the line whose foot moves faster.
-const STEPS: usize = 64;
+pub(super) const STEPS: usize = 64;
 
 /// The part of `[from, to]` where the affine point `x(t)` is within reach (a disk: one
 /// interval, by the quadratic `|x(t) − centre|² = far²`).

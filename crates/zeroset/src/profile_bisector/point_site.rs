@@ -17,8 +17,9 @@
 //! points, cut by both cones.
 
 use super::polyline::{sample_runs, Run};
+use super::stretches::{Cut, Cuts, Stretch};
 use crate::error::Result;
-use bspline::roots::{find_roots_in, RootOptions};
+use bspline::roots::RootOptions;
 use bspline::{Piecewise, Rational, JUMP};
 use curve::Frame;
 
@@ -139,13 +140,6 @@ pub(crate) fn corner_corner(c1: &Corner, c2: &Corner, reach: &Reach) -> Option<[
     })
 }
 
-/// A stretch of the domain on which the foot counts and the bisector point is finite.
-#[derive(Debug, Clone, Copy)]
-struct Stretch {
-    from: f64,
-    to: f64,
-}
-
 /// `E`, `Num`, `Num·a`, `Num·b` and `w` on each Bézier piece of the curve (the shared end's
 /// piece with the double root divided out).
 struct Parts {
@@ -228,45 +222,21 @@ impl Parts {
     }
 
     /// The stretches where the foot counts (inside the cone, bisector point finite), each
-    /// maximal: stretches meeting where no pole separates them are joined.
+    /// maximal.
     fn stretches(&self, opts: &RootOptions) -> Result<Vec<Stretch>> {
-        let mut out: Vec<Stretch> = Vec::new();
-        let mut open_end: Option<f64> = None; // a stretch reaching the end of the last piece
+        let (Some(first), Some(last)) = (self.pieces.first(), self.pieces.last()) else {
+            return Ok(Vec::new());
+        };
+        let mut cuts = Cuts::new(first.span.0, last.span.1, *opts);
         for p in &self.pieces {
             let (a, b) = p.span;
-            let mut cuts: Vec<(f64, bool)> = vec![(a, false), (b, false)];
-            for (f, pole) in [(&p.e, true), (&p.num_a, false), (&p.num_b, false)] {
-                for root in find_roots_in(f, a, b, opts)? {
-                    cuts.push((root.u, pole));
-                    if pole {
-                        // The whole bracket of a pole is out.
-                        cuts.push((root.bracket.0, true));
-                        cuts.push((root.bracket.1, true));
-                    }
-                }
-            }
-            cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
-            for pair in cuts.windows(2) {
-                let ((x0, pole0), (x1, _)) = (pair[0], pair[1]);
-                if x1 <= x0 {
-                    continue;
-                }
-                let mid = 0.5 * (x0 + x1);
-                let keep = counts(p, mid);
-                match (keep, open_end) {
-                    (true, Some(end)) if end == x0 && !pole0 => {
-                        if let Some(last) = out.last_mut() {
-                            last.to = x1;
-                        }
-                    }
-                    (true, _) => out.push(Stretch { from: x0, to: x1 }),
-                    (false, _) => {}
-                }
-                open_end = keep.then_some(x1);
-            }
-            // (A pole exactly at a piece's end is also a root of the next piece's E.)
+            cuts.add_end(a);
+            cuts.add_end(b);
+            cuts.add_roots(&p.e, a, b, Cut::Pole)?;
+            cuts.add_roots(&p.num_a, a, b, Cut::Sign)?;
+            cuts.add_roots(&p.num_b, a, b, Cut::Sign)?;
         }
-        Ok(out)
+        Ok(cuts.stretches(|r| counts(self.piece_at(r), r)))
     }
 }
 

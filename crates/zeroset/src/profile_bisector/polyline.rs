@@ -124,14 +124,22 @@ impl Sampler<'_> {
                 self.push(s2);
                 self.span(s2, b, depth + 1);
             }
+            // The run ends between: the edge of reach found, and the stretch up to it
+            // refined as any other.
             (Some(_), None) => {
                 let last = self.edge(a.0, b.0);
-                self.push(last);
+                if last.0 != a.0 {
+                    self.span(a, last, depth + 1);
+                    self.push(last);
+                }
             }
             (None, Some(_)) => {
                 let first = self.edge(b.0, a.0);
                 self.push((a.0, None));
-                self.push(first);
+                if first.0 != b.0 {
+                    self.push(first);
+                    self.span(first, b, depth + 1);
+                }
             }
             (None, None) => {
                 if depth < PROBE_DEPTH {

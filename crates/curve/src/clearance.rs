@@ -6,10 +6,10 @@
 //! control points, so the hull's distance from the centre bounds the piece's from below:
 //! taken as the larger of the distance to the points' box and the least extent of the points
 //! towards the centre (a slab bound, which tightens quadratically as pieces shrink about a
-//! point where the circle touches the curve). Near such a point a piece is also tried whole
-//! by its squared distance from the centre: where that polynomial is proven convex, its
-//! tangent at its least point bounds it (the hull would need pieces down to the square root
-//! of the margin). Every comparison allows for the rounding of the coefficients and of the
+//! point where the circle touches the curve). A piece the hull leaves undecided is tried
+//! whole by its squared distance from the centre: positive where its Bernstein coefficients
+//! are, and where that polynomial is proven convex its tangent at its least point bounds it
+//! (the hull would need pieces down to the square root of the margin). Every comparison allows for the rounding of the coefficients and of the
 //! arithmetic, so a verdict holds for the exact curve.
 
 use crate::geom::V2;
@@ -27,11 +27,6 @@ const MAX_DEPTH: usize = 40;
 /// circle over a long stretch (an arc about the centre) would otherwise be halved into
 /// ever more pieces, each still within the slack of the circle.
 const MAX_PIECES: usize = 4096;
-
-/// Halvings of a piece before its squared distance is tried for convexity: where the
-/// circle touches the curve, the hull's bound would need pieces down to the square root of
-/// the caller's slack, while the distance along a piece is convex long before that.
-const CONVEX_FROM: usize = 3;
 
 /// Steps that find where a convex squared distance is least: Newton, or a halving where it
 /// would leave the bracket (to 2^-60 of the piece at worst).
@@ -234,28 +229,23 @@ impl Profile {
                     };
                     match verdict {
                         Verdict::Outside => {}
-                        Verdict::Split => {
-                            let convex = (piece.depth >= CONVEX_FROM)
-                                .then(|| convex_verdict(&piece, x, r, err))
-                                .flatten();
-                            match convex {
-                                Some(Convex::Outside) => {}
-                                Some(Convex::Inside(t))
-                                    if within(piece.lo + t * (piece.hi - piece.lo)) =>
-                                {
-                                    let v = piece.lo + t * (piece.hi - piece.lo);
-                                    let p = seg.curve().jet_to(v, 0).p;
-                                    return Clearance::Entered {
-                                        u: self.profile_param(i, v),
-                                        distance: (p - x).norm(),
-                                    };
-                                }
-                                _ if piece.depth < MAX_DEPTH => {
-                                    halve(&piece, dim, &mut work, &mut pending);
-                                }
-                                _ => unresolved = true,
+                        Verdict::Split => match distance_verdict(&piece, x, r, err) {
+                            Some(Convex::Outside) => {}
+                            Some(Convex::Inside(t))
+                                if within(piece.lo + t * (piece.hi - piece.lo)) =>
+                            {
+                                let v = piece.lo + t * (piece.hi - piece.lo);
+                                let p = seg.curve().jet_to(v, 0).p;
+                                return Clearance::Entered {
+                                    u: self.profile_param(i, v),
+                                    distance: (p - x).norm(),
+                                };
                             }
-                        }
+                            _ if piece.depth < MAX_DEPTH => {
+                                halve(&piece, dim, &mut work, &mut pending);
+                            }
+                            _ => unresolved = true,
+                        },
                         _ => unresolved = true,
                     }
                 }
@@ -417,12 +407,14 @@ fn test_piece(piece: &Piece<'_>, dim: usize, x: V2, r: f64, err: Errors) -> Verd
 
 /// What the piece's squared distance from the centre proves,
 /// `D = |P − x w|² − r² w²` (a polynomial of twice the degree, positive exactly where the
-/// curve is outside): where the second differences of its Bernstein coefficients are all
-/// positive it is convex, and it lies above its tangent at its least point, found by
-/// halving on the sign of its derivative: outside where that bound is positive, a point
-/// inside where the least value is negative. Every comparison allows for the coefficients'
+/// curve is outside): outside where its Bernstein coefficients are all positive (a bound
+/// that closes in quadratically as pieces shrink, where the hull's closes in linearly on
+/// a curved piece); else, where their second differences are all positive it is convex,
+/// and it lies above its tangent at its least point, found by halving on the sign of its
+/// derivative: outside where that bound is positive, a point inside where the least value
+/// is negative. Every comparison allows for the coefficients'
 /// errors and the rounding of the arithmetic; `None` where neither is proven.
-fn convex_verdict(piece: &Piece<'_>, x: V2, r: f64, err: Errors) -> Option<Convex> {
+fn distance_verdict(piece: &Piece<'_>, x: V2, r: f64, err: Errors) -> Option<Convex> {
     let n = piece.coefs.len() / 3;
     if n < 2 {
         return None;
@@ -470,6 +462,10 @@ fn convex_verdict(piece: &Piece<'_>, x: V2, r: f64, err: Errors) -> Option<Conve
     let err_coef =
         2.0 * (4.0 * big * e_rel + 2.0 * big * r * e_w) + 6.0 * (m + 8) as f64 * eps * big * big;
     let round = 8.0 * (m + 2) as f64 * eps * big * big;
+    // D lies above its least Bernstein coefficient.
+    if coef.iter().fold(f64::INFINITY, |a, &c| a.min(c)) > err_coef + round {
+        return Some(Convex::Outside);
+    }
     if coef
         .windows(3)
         .any(|w| w[2] - 2.0 * w[1] + w[0] <= 4.0 * err_coef + round)
@@ -549,7 +545,7 @@ fn value_and_derivative(c: &[f64], t: f64) -> (f64, f64) {
     )
 }
 
-/// What a piece's convex squared distance proves.
+/// What a piece's squared distance proves.
 enum Convex {
     /// The piece lies outside the disk.
     Outside,

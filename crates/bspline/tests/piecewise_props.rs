@@ -19,7 +19,7 @@ fn assert_derivs_match(f: &BSpline, n: usize, tol: f64) {
     let len = 4 * f.dim();
     for i in 0..=n {
         let u = i as f64 / n as f64;
-        let (mut a, mut b) = ([0.0; 12], [0.0; 12]);
+        let (mut a, mut b) = ([0.0; 40], [0.0; 40]);
         f.eval_derivs(u, 3, &mut a[..len]);
         pw.eval_derivs(u, 3, &mut b[..len]);
         for j in 0..len {
@@ -77,6 +77,20 @@ fn derivatives_match_bspline_in_dimension_3() {
             .collect();
         let f = BSpline::clamped_uniform(p, 3, coefs).unwrap();
         assert_derivs_match(&f, 40, 1e-9);
+    }
+}
+
+#[test]
+fn derivatives_match_bspline_in_higher_dimensions() {
+    // Functions stacked for one evaluation (the general path, its levels off the stack past
+    // dimension 3).
+    for (p, dim) in [(2usize, 4usize), (4, 7), (6, 10)] {
+        let n = p + 3;
+        let coefs: Vec<f64> = (0..dim * n)
+            .map(|i| ((i as f64) * 0.41).sin() * 3.0)
+            .collect();
+        let f = BSpline::clamped_uniform(p, dim, coefs).unwrap();
+        assert_derivs_match(&f, 40, 1e-10);
     }
 }
 

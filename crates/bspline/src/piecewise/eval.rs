@@ -6,8 +6,8 @@ use super::Piecewise;
 use crate::rounding;
 
 impl Piecewise {
-    /// Value and derivatives up to order `k ≤ 3` at `u` (clamped into the domain), for
-    /// dimensions up to 3: `out[j·dim + c]` is the j-th derivative of component `c`. Derivatives above the degree
+    /// Value and derivatives up to order `k ≤ 3` at `u` (clamped into the domain), in any
+    /// dimension: `out[j·dim + c]` is the j-th derivative of component `c`. Derivatives above the degree
     /// are zero. De Casteljau: the j-th derivative is `p!/(p−j)! Δʲ` of the points of level
     /// `p − j`, over `hʲ`.
     #[inline]
@@ -43,15 +43,24 @@ impl Piecewise {
         for v in out[..(k + 1) * d].iter_mut() {
             *v = 0.0;
         }
-        // Levels p, p−1, p−2, p−3 hold 1, 2, 3, 4 points.
-        let mut lv: [[f64; 12]; 4] = [[0.0; 12]; 4];
-        let keep = |lv: &mut [[f64; 12]; 4], w: &[f64], pts: usize| {
+        // Levels p, p−1, p−2, p−3 hold 1, 2, 3, 4 points: level j at `j·4·d` (on the stack
+        // up to dimension 3).
+        let mut lv_stack = [0.0f64; 48];
+        let mut lv_heap = Vec::new();
+        let lv: &mut [f64] = if 16 * d <= lv_stack.len() {
+            &mut lv_stack[..16 * d]
+        } else {
+            lv_heap.resize(16 * d, 0.0);
+            &mut lv_heap
+        };
+        let keep = |lv: &mut [f64], w: &[f64], pts: usize| {
             // pts = number of points left (p − level + 1); keep the last four levels.
             if pts <= 4 {
-                lv[pts - 1][..pts * d].copy_from_slice(&w[..pts * d]);
+                let at = (pts - 1) * 4 * d;
+                lv[at..at + pts * d].copy_from_slice(&w[..pts * d]);
             }
         };
-        keep(&mut lv, w, p + 1);
+        keep(lv, w, p + 1);
         // (As `(1 − s) x + s y`: exact at both ends, where `x + s(y − x)` cancels at s = 1,
         // as with weights 1e82 and 1 side by side.)
         let t = 1.0 - s;
@@ -61,14 +70,14 @@ impl Piecewise {
                     w[j * d + c] = w[j * d + c] * t + w[(j + 1) * d + c] * s;
                 }
             }
-            keep(&mut lv, w, p - level + 1);
+            keep(lv, w, p - level + 1);
         }
-        out[..d].copy_from_slice(&lv[0][..d]);
+        out[..d].copy_from_slice(&lv[..d]);
         let mut fact = 1.0;
         for j in 1..=k.min(p) {
             fact *= (p + 1 - j) as f64 / h;
             // j-th forward difference of the j + 1 points of level p − j.
-            let pts = &lv[j];
+            let pts = &lv[j * 4 * d..(j + 1) * 4 * d];
             for c in 0..d {
                 let mut acc = 0.0;
                 let mut binom = 1.0;

@@ -220,16 +220,6 @@ impl First {
         };
         Ok(Some(Self { p, w, m, rho }))
     }
-
-    /// `P`, `n` at `t`.
-    fn point_normal(&self, t: f64) -> ([f64; 2], [f64; 2]) {
-        let (mut p, mut w, mut m) = ([0.0; 2], [0.0], [0.0; 2]);
-        self.p.eval(t, &mut p);
-        self.w.eval(t, &mut w);
-        self.m.eval(t, &mut m);
-        let k = self.rho * w[0];
-        ([p[0] / w[0], p[1] / w[0]], [m[0] / k, m[1] / k])
-    }
 }
 
 /// The second segment: its carrier and where its foot may lie (in the local frame). (One per
@@ -434,8 +424,9 @@ fn barycentric(s: &Span, foot: [f64; 2]) -> f64 {
 /// `N`, `D` and the cut functions for one sign `τ`.
 struct Signed {
     tau: f64,
-    n: Piecewise,
     d: Piecewise,
+    /// `N`, `D`, `p`, `w` and `m` stacked: one evaluation per point.
+    values: Piecewise,
     /// `k D` (a circle's): where the foot jumps to the antipode.
     k: Option<Piecewise>,
     /// The sign functions of the foot's planes, one per edge point in order.
@@ -508,10 +499,11 @@ impl Signed {
                     .collect::<std::result::Result<_, _>>()?
             }
         };
+        let values = Piecewise::stack(&[&n, &d, &a.p, &a.w, &a.m])?;
         Ok(Some(Self {
             tau,
-            n,
             d,
+            values,
             k,
             edges,
         }))
@@ -519,12 +511,12 @@ impl Signed {
 
     /// The bisector point at `t` and, for a circle, `k = ρ₂ + τ s` (`None` at infinity).
     fn point(&self, a: &First, b: &Second, t: f64) -> Option<([f64; 2], f64)> {
-        let (mut n, mut d) = ([0.0], [0.0]);
-        self.n.eval(t, &mut n);
-        self.d.eval(t, &mut d);
-        let s = n[0] / d[0];
-        let (p, normal) = a.point_normal(t);
-        let x = [p[0] + s * normal[0], p[1] + s * normal[1]];
+        let mut v = [0.0; 7];
+        self.values.eval(t, &mut v);
+        let [n, d, px, py, w, mx, my] = v;
+        let s = n / d;
+        let k = a.rho * w;
+        let x = [px / w + s * (mx / k), py / w + s * (my / k)];
         if !(x[0].is_finite() && x[1].is_finite()) {
             return None;
         }

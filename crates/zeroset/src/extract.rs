@@ -426,7 +426,10 @@ impl Tracer<'_> {
                         _ => false,
                     })
         };
-        if need {
+        // Always keep one interior vertex (a patch-sized chord can hide a bulge in tr), and
+        // test the two chords it makes: the arc within the tolerance of the whole chord may
+        // stray from a half's (an S about the whole chord, the middle on one side).
+        if need || depth == 0 {
             let vm = Vtx {
                 s: sm,
                 p: pm,
@@ -436,9 +439,6 @@ impl Tracer<'_> {
             self.refine(point, tangent, a, vm, quarters.0, depth + 1, out);
             out.push(pm);
             self.refine(point, tangent, vm, b, quarters.1, depth + 1, out);
-        } else if depth == 0 {
-            // Always keep one interior vertex: a patch-sized chord can hide a bulge in tr.
-            out.push(pm);
         }
     }
 }

@@ -325,3 +325,29 @@ fn polygon_splines_have_complete_self_bisectors() {
         .count();
     assert!(on_midline >= 2, "{:?}", b.branches);
 }
+
+/// A random cubic whose self-bisector had a chord 2.14e-3 from the bisector against a
+/// tolerance of 2.0e-3 (found by `random_self_bisectors`): an arc within the tolerance of its
+/// whole chord kept its middle vertex without testing the two chords that made, and the arc
+/// strayed from one of them.
+#[test]
+fn an_arcs_middle_vertex_leaves_both_chords_within_the_tolerance() {
+    let a = [
+        0.0,
+        0.833969048458461,
+        0.0,
+        -0.9916149387678939,
+        -0.38292087543760794,
+        0.0,
+        0.08964741203720579,
+        -0.059768861466809854,
+        0.2749042932402898,
+        0.6325967938941798,
+        -0.5421086075615271,
+        -0.846077199270479,
+        -0.11737368254191326,
+        0.16040832192568555,
+    ];
+    let p = pts(&a);
+    run_self(&p, bsp(3, &p)).unwrap();
+}

@@ -15,6 +15,8 @@
 //! have none.
 
 mod arcs;
+#[cfg(test)]
+mod closed_form_checks;
 mod lines;
 mod point_site;
 mod polyline;

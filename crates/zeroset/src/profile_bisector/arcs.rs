@@ -605,8 +605,7 @@ fn cross(a: [f64; 2], b: [f64; 2]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bisector::{bisector, BisectorOptions};
-    use crate::profile_bisector::polyline::off_chord;
+    use crate::profile_bisector::closed_form_checks::{agrees_with_traced, check_vertices};
     use curve::Segment;
     use proptest::prelude::*;
 
@@ -625,56 +624,6 @@ mod tests {
     fn line(a: [f64; 2], b: [f64; 2]) -> (Rational, Carrier) {
         let s = Segment::line(a, b).expect("line");
         (s.curve().curve().clone(), Carrier::Line)
-    }
-
-    fn off_polylines(x: [f64; 2], branches: &[Branch]) -> f64 {
-        branches
-            .iter()
-            .flat_map(|b| b.xy.windows(2).map(move |w| off_chord(x, w[0], w[1])))
-            .fold(f64::INFINITY, f64::min)
-    }
-
-    /// Every vertex is a bisector point with its feet on the segments; no foot moves more
-    /// than a `STEPS`-th of its domain between vertices.
-    fn check_vertices(
-        c1: &Rational,
-        c2: &Rational,
-        found: &Bisector,
-    ) -> std::result::Result<(), TestCaseError> {
-        let ext = |c: &Rational| c.domain().1 - c.domain().0;
-        for br in &found.branches {
-            for w in br.tr.windows(2) {
-                for (k, e) in [ext(c1), ext(c2)].into_iter().enumerate() {
-                    prop_assert!(
-                        (w[1][k] - w[0][k]).abs() <= (1.0 + 1e-9) * e / STEPS as f64,
-                        "foot {k} moves {} between vertices",
-                        (w[1][k] - w[0][k]).abs()
-                    );
-                }
-            }
-            for (tr, x) in br.tr.iter().zip(&br.xy) {
-                let scale = 1.0 + x[0].hypot(x[1]);
-                let (mut o1, mut o2) = ([0.0; 4], [0.0; 4]);
-                c1.eval_derivs(tr[0], 1, &mut o1);
-                c2.eval_derivs(tr[1], 1, &mut o2);
-                let to = |o: [f64; 4]| (x[0] - o[0]).hypot(x[1] - o[1]);
-                let along =
-                    |o: [f64; 4]| ((x[0] - o[0]) * o[2] + (x[1] - o[1]) * o[3]) / o[2].hypot(o[3]);
-                prop_assert!(
-                    (to(o1) - to(o2)).abs() <= 1e-9 * scale,
-                    "{tr:?} {x:?}: {} {}",
-                    to(o1),
-                    to(o2)
-                );
-                prop_assert!(
-                    along(o1).abs() <= 1e-9 * scale && along(o2).abs() <= 1e-9 * scale,
-                    "{tr:?} {x:?}: off the normals by {} {}",
-                    along(o1),
-                    along(o2)
-                );
-            }
-        }
-        Ok(())
     }
 
     fn pair_strategy() -> impl Strategy<Value = ((Rational, Carrier), (Rational, Carrier))> {
@@ -710,25 +659,8 @@ mod tests {
             let reach = Reach { center: [0.0, 0.0], far: 20.0, chord, tol: 1e-12 };
             let closed = arc_bisector(&c1, k1, &c2, k2, &reach).expect("algebra").expect("applies");
             prop_assert!(closed.complete);
-            check_vertices(&c1, &c2, &closed)?;
-            let opts = BisectorOptions { chord_tol: chord / 8.0, trimmed: false, ..BisectorOptions::default() };
-            let traced = bisector(&c1, &c2, &opts).expect("traced");
-            prop_assume!(traced.complete);
-            let size = 8.0;
-            for br in &traced.branches {
-                for x in &br.xy {
-                    if x[0].hypot(x[1]) < 0.9 * reach.far {
-                        prop_assert!(off_polylines(*x, &closed.branches) <= 2.0 * chord * size,
-                            "traced point {x:?} off the closed form");
-                    }
-                }
-            }
-            for br in &closed.branches {
-                for x in &br.xy {
-                    prop_assert!(off_polylines(*x, &traced.branches) <= 2.0 * chord * size,
-                        "closed-form point {x:?} off the traced zero set");
-                }
-            }
+            check_vertices(&c1, &c2, &closed, |x| 1e-9 * (1.0 + x[0].hypot(x[1])))?;
+            agrees_with_traced(&c1, &c2, &closed, chord, reach.far, 8.0)?;
         }
     }
 }

@@ -168,21 +168,13 @@ impl Straight {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bisector::{bisector, BisectorOptions};
-    use crate::profile_bisector::polyline::off_chord;
+    use crate::profile_bisector::closed_form_checks::{agrees_with_traced, check_vertices};
     use bspline::BSpline;
     use proptest::prelude::*;
 
     fn line(a: [f64; 2], b: [f64; 2], lo: f64, hi: f64) -> Rational {
         let c = BSpline::new(1, vec![lo, lo, hi, hi], 2, vec![a[0], a[1], b[0], b[1]]);
         Rational::polynomial(&c.expect("line"))
-    }
-
-    fn off_polylines(x: [f64; 2], branches: &[Branch]) -> f64 {
-        branches
-            .iter()
-            .flat_map(|b| b.xy.windows(2).map(move |w| off_chord(x, w[0], w[1])))
-            .fold(f64::INFINITY, f64::min)
     }
 
     proptest! {
@@ -218,49 +210,8 @@ mod tests {
             let chord = 1e-4;
             let reach = Reach { center: [0.0, 0.0], far: 20.0, chord, tol: 1e-12 };
             let closed = line_bisector(&l1, &l2, &reach).expect("two segments");
-            // As dense as a traced zero set in either foot: the axis brackets its junctions
-            // between vertices.
-            for br in &closed.branches {
-                for w in br.tr.windows(2) {
-                    for (k, ext) in [domains[0].1, domains[1].1].into_iter().enumerate() {
-                        prop_assert!(
-                            (w[1][k] - w[0][k]).abs() <= (1.0 + 1e-9) * ext / STEPS as f64,
-                            "foot {k} moves {} between vertices", (w[1][k] - w[0][k]).abs()
-                        );
-                    }
-                }
-            }
-            for br in &closed.branches {
-                for (tr, x) in br.tr.iter().zip(&br.xy) {
-                    let (mut o1, mut o2) = ([0.0; 4], [0.0; 4]);
-                    l1.eval_derivs(tr[0], 1, &mut o1);
-                    l2.eval_derivs(tr[1], 1, &mut o2);
-                    let to = |o: [f64; 4]| (x[0] - o[0]).hypot(x[1] - o[1]);
-                    let along = |o: [f64; 4]| {
-                        ((x[0] - o[0]) * o[2] + (x[1] - o[1]) * o[3]) / o[2].hypot(o[3])
-                    };
-                    prop_assert!((to(o1) - to(o2)).abs() <= 1e-9, "{tr:?}: {} {}", to(o1), to(o2));
-                    prop_assert!(along(o1).abs() <= 1e-9 && along(o2).abs() <= 1e-9);
-                }
-            }
-            let opts = BisectorOptions { chord_tol: chord / 8.0, trimmed: false, ..BisectorOptions::default() };
-            let traced = bisector(&l1, &l2, &opts).expect("traced");
-            prop_assume!(traced.complete);
-            let size = 8.0;
-            for br in &traced.branches {
-                for x in &br.xy {
-                    if x[0].hypot(x[1]) < 0.9 * reach.far {
-                        prop_assert!(off_polylines(*x, &closed.branches) <= 2.0 * chord * size,
-                            "traced point {x:?} off the closed form");
-                    }
-                }
-            }
-            for br in &closed.branches {
-                for x in &br.xy {
-                    prop_assert!(off_polylines(*x, &traced.branches) <= 2.0 * chord * size,
-                        "closed-form point {x:?} off the traced zero set");
-                }
-            }
+            check_vertices(&l1, &l2, &closed, |_| 1e-9)?;
+            agrees_with_traced(&l1, &l2, &closed, chord, reach.far, 8.0)?;
         }
     }
 }

@@ -13,7 +13,8 @@ pub(crate) struct Stretch {
     pub(crate) to: f64,
 }
 
-/// What a root does to the stretches on either side of it.
+/// What a root does to the stretches on either side of it, weakest first: where several fall
+/// on one value, the strongest (the greatest in this order) holds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) enum Cut {
     /// A sign that decides whether the foot counts may change here: stretches on both sides

@@ -13,23 +13,34 @@ use proptest::prelude::*;
 /// Samples per segment of the oracle.
 const SAMPLES: usize = 4000;
 
-/// The distance from `x` to the profile: the least sample, then golden-section search on
-/// the two sample steps about it, segment by segment.
+/// The distance from `x` to the profile: the least of [`least_sampled`] over its segments.
 fn oracle_distance(p: &Profile, x: [f64; 2]) -> f64 {
-    let mut best = f64::INFINITY;
-    for s in p.segments() {
-        let c = s.curve();
-        let (a, b) = c.domain();
-        let d = |u: f64| {
-            let q = c.jet_to(u, 0).p;
-            (q.x - x[0]).hypot(q.y - x[1])
-        };
-        let at = |k: usize| a + (b - a) * k as f64 / SAMPLES as f64;
-        let k = (0..=SAMPLES)
-            .min_by(|&i, &j| d(at(i)).total_cmp(&d(at(j))))
-            .unwrap();
-        let u = golden(&d, at(k.saturating_sub(1)), at((k + 1).min(SAMPLES)));
-        best = best.min(d(at(k))).min(d(u));
+    p.segments()
+        .iter()
+        .map(|s| {
+            let c = s.curve();
+            let (a, b) = c.domain();
+            let d = |u: f64| {
+                let q = c.jet_to(u, 0).p;
+                (q.x - x[0]).hypot(q.y - x[1])
+            };
+            least_sampled(&d, a, b, SAMPLES)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The least of `f` on `[lo, hi]`: `steps` even samples, then golden-section search about
+/// every sample no greater than its neighbours (refining only the least sample misses a
+/// deeper minimum whose samples fell a little higher).
+fn least_sampled(f: &dyn Fn(f64) -> f64, lo: f64, hi: f64, steps: usize) -> f64 {
+    let at = |k: usize| lo + (hi - lo) * k as f64 / steps as f64;
+    let values: Vec<f64> = (0..=steps).map(|k| f(at(k))).collect();
+    let mut best = values.iter().copied().fold(f64::INFINITY, f64::min);
+    for k in 0..=steps {
+        let (before, after) = (k.saturating_sub(1), (k + 1).min(steps));
+        if values[k] <= values[before] && values[k] <= values[after] {
+            best = best.min(f(golden(f, at(before), at(after))));
+        }
     }
     best
 }
@@ -49,7 +60,7 @@ fn golden(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 }
 
 /// The distance from `x` to the points of the closed profile with parameters in `[lo,
-/// hi]`: the least of dense samples, then golden-section search about it.
+/// hi]`, by [`least_sampled`].
 fn oracle_distance_between(p: &Profile, x: [f64; 2], lo: f64, hi: f64) -> f64 {
     let n = p.segments().len() as f64;
     let d = |u: f64| {
@@ -57,12 +68,7 @@ fn oracle_distance_between(p: &Profile, x: [f64; 2], lo: f64, hi: f64) -> f64 {
         (q.x - x[0]).hypot(q.y - x[1])
     };
     let steps = (SAMPLES as f64 * (hi - lo)).ceil().max(2.0) as usize;
-    let at = |k: usize| lo + (hi - lo) * k as f64 / steps as f64;
-    let k = (0..=steps)
-        .min_by(|&i, &j| d(at(i)).total_cmp(&d(at(j))))
-        .unwrap();
-    let u = golden(&d, at(k.saturating_sub(1)), at((k + 1).min(steps)));
-    d(at(k)).min(d(u))
+    least_sampled(&d, lo, hi, steps)
 }
 
 /// A closed profile round a star: at each of `n` joints a line, an arc bulging outwards or a

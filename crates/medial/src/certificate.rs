@@ -11,7 +11,8 @@
 //!   a spline: at the centre of curvature of one of its feet, the curvature's magnitude
 //!   proven rising `tol` (the parameter tolerance) before that foot and falling `tol` after
 //!   it, by bounds on the rate's numerator ([`proven_rate_sign`]): a peak lies within `tol`
-//!   of the foot.
+//!   of the foot. At a corner, where the leaf ends as the foot on one segment closes in on
+//!   the corner's point, on that segment's side only.
 //! - A **corner**, the **joint** of an annulus and a **clip** leaf: at a corner of the
 //!   boundary, anywhere on a cycle, on the clip box (exact data or no claim of place).
 
@@ -191,7 +192,7 @@ fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
 
 /// Whether an end lies at the centre of curvature of one of its feet (on either segment at
 /// a joint), with that radius, where the curvature's magnitude is proven to rise `tol`
-/// before the foot and to fall `tol` after it.
+/// before the foot and to fall `tol` after it; at a corner, on that segment's side only.
 fn end_at_curvature_peak(sites: &Sites<'_>, node: &Node, feet: &[Foot], tol: f64) -> bool {
     let room = JUNCTION_ROOM[1] * sites.size;
     feet.iter().any(|f| {
@@ -211,9 +212,9 @@ fn end_at_curvature_peak(sites: &Sites<'_>, node: &Node, feet: &[Foot], tol: f64
                 && distance(centre.arr(), node.xy) <= room
                 && (1.0 / k.abs() - node.radius).abs() <= room
         };
-        if !(at_centre(i) || beside.is_some_and(at_centre)) {
-            return false;
-        }
+        // At a corner the branch ends as the foot on one segment closes in on the corner's
+        // point: the curvature need peak on that segment's side only.
+        let corner = f.u == i as f64 && b.corners().any(|j| j.u == f.u);
         let (before, after) = (f.u - tol, f.u + tol);
         let on = |u: f64| {
             if b.is_closed() {
@@ -223,7 +224,14 @@ fn end_at_curvature_peak(sites: &Sites<'_>, node: &Node, feet: &[Foot], tol: f64
             }
         };
         let rate = |u: Option<f64>| u.and_then(|u| proven_rate_sign(b, b.locate(u).0, u));
-        rate(on(before)) == Some(1.0) && rate(on(after)) == Some(-1.0)
+        let rises_before = || rate(on(before)) == Some(1.0);
+        let falls_after = || rate(on(after)) == Some(-1.0);
+        // On the segment holding the foot (starting there at a corner), or on the one
+        // ending there.
+        let on_this = at_centre(i) && (corner || rises_before()) && falls_after();
+        let on_beside =
+            beside.is_some_and(at_centre) && rises_before() && (corner || falls_after());
+        on_this || on_beside
     })
 }
 

@@ -355,7 +355,8 @@ impl Branch<'_, '_> {
             } else {
                 1
             };
-            (s, v.tr[s], jet(s, v.tr[s]))
+            let u = self.corner_beside(s, v).unwrap_or(v.tr[s]);
+            (s, u, jet(s, u))
         };
         let k = j.curvature();
         if k.is_nan() || k.abs() * self.sites.size <= STRAIGHT {
@@ -373,6 +374,28 @@ impl Branch<'_, '_> {
             xy: centre.arr(),
             radius: 1.0 / k.abs(),
         })
+    }
+
+    /// Where the foot of site `s` on a segment closes in on the other site, a corner at one
+    /// of that segment's ends: the corner's parameter (the bisector of a point and a curve
+    /// ends, as the foot reaches the point, at the centre of curvature there).
+    fn corner_beside(&self, s: usize, v: &Vertex) -> Option<f64> {
+        let c = self.c;
+        let o = 1 - s;
+        if c.corner[s] || !c.corner[o] || c.boundary[0] != c.boundary[1] {
+            return None;
+        }
+        let boundary = self.sites.boundaries[c.boundary[s]];
+        let n = boundary.domain().1;
+        let (start, corner) = (c.segment[s] as f64, v.tr[o]);
+        if corner == start {
+            Some(start)
+        } else if corner == start + 1.0 || boundary.is_closed() && corner == 0.0 && start + 1.0 == n
+        {
+            Some(start + 1.0)
+        } else {
+            None
+        }
     }
 
     /// How far apart the two feet of a vertex are.

@@ -1207,3 +1207,65 @@ fn a_corners_stretch_reaches_its_junction_with_no_vertex_between() {
     check(&region).unwrap();
     assert!(axis(&region).certified);
 }
+
+/// A closed chain of `n` S-shaped cubic Béziers round a star, with corners at every joint
+/// (the benchmarks' shape, from the same pseudo-random numbers).
+fn star_of_s_cubics(n: usize) -> Profile {
+    let mut x: u64 = 7;
+    let mut rnd = move || {
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let joints: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let a = TAU * i as f64 / n as f64;
+            let r = 1.0 + 0.5 * rnd();
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    let segs = (0..n)
+        .map(|i| {
+            let (a, b) = (joints[i], joints[(i + 1) % n]);
+            let d = [b[0] - a[0], b[1] - a[1]];
+            let w = 0.3 * (rnd() - 0.5);
+            let at = |s: f64, t: f64| [a[0] + s * d[0] - t * d[1], a[1] + s * d[1] + t * d[0]];
+            let pts = [a, at(0.3, w), at(0.7, -w), b];
+            let c = curve::SplineCurve::clamped(3, &pts, None, None).unwrap();
+            Segment::spline(curve::SegmentKind::Bezier, c).unwrap()
+        })
+        .collect();
+    Profile::new(segs, None).unwrap()
+}
+
+/// Beside a reflex corner a segment's curvature peaks at the corner: the leaf where its
+/// foot closes in on the corner's point ends at the segment's centre of curvature there
+/// (it had stopped 4e-5 of the parameter short, at the last foot traced, and was not
+/// certified), proven by the curvature falling away from the corner on that side only.
+#[test]
+fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
+    let outline = star_of_s_cubics(12);
+    let region = Region::new(outline.clone(), vec![]).unwrap();
+    check(&region).unwrap();
+    let a = axis(&region);
+    assert!(a.certified, "{:?}", a.reason);
+    let ends: Vec<_> = a.nodes.iter().filter(|n| n.kind == NodeKind::End).collect();
+    assert_eq!(ends.len(), 4);
+    for end in ends {
+        let (u, _) = end_foot(&a, end.id).unwrap();
+        assert_eq!(u, u.round(), "{end:?} has its foot off the corners");
+        let k = u.round() as usize;
+        // The centre of curvature at the corner on either side.
+        let at_centre = [k, (k + 11) % 12].iter().any(|&s| {
+            let j = outline.jet_on(s, u, 2);
+            let c = j.p + j.d1.perp().unit() * (1.0 / j.curvature());
+            (c.x - end.xy[0]).hypot(c.y - end.xy[1]) < 1e-12
+                && (1.0 / j.curvature().abs() - end.radius).abs() < 1e-12
+        });
+        assert!(
+            at_centre,
+            "{end:?} is not at a centre of curvature at corner {k}"
+        );
+    }
+}

@@ -50,6 +50,12 @@ const LENGTH_SLACK: f64 = 1.5;
 /// bisector function vanishes to high order, are no part of the axis either).
 const FEET_APART: f64 = 1e-4;
 
+/// Most distance (a share of the region's size) between the points tested along the
+/// bisector of two corners: a stretch of it on the axis between two junctions (at the
+/// circumcentre of three reflex corners, the bisectors of two pairs of them run on from the
+/// third's) is found where it is longer than that.
+const CORNER_LINE_STEP: f64 = 1e-2;
+
 /// A curvature below this (times the size) is a straight boundary: no centre of curvature
 /// within 1e12 sizes for the axis to end at.
 const STRAIGHT: f64 = 1e-12;
@@ -173,7 +179,7 @@ impl Branch<'_, '_> {
         let c = self.c;
         let mut out: Vec<Sample> = Vec::with_capacity(c.tr.len());
         let mut last_intruder: Option<Intruder> = None;
-        for (&tr, &xy) in c.tr.iter().zip(&c.xy) {
+        for (tr, xy) in self.points() {
             let (on_axis, intruder) = match self.vertex(tr, xy) {
                 Some(v) => match self.classify(&v) {
                     Ok(()) => (Some(v), None),
@@ -206,6 +212,32 @@ impl Branch<'_, '_> {
             out.push(Sample { tr, xy, on_axis });
         }
         out
+    }
+
+    /// The candidate's points to test: its vertices, but for the bisector of two corners
+    /// (a line given by its two ends) points along it within the box the axis lies in, at
+    /// most [`CORNER_LINE_STEP`] of the size apart: a stretch between two points whose disks
+    /// one site enters is not searched for, and the line's ends lie far apart.
+    fn points(&self) -> Vec<([f64; 2], [f64; 2])> {
+        let c = self.c;
+        let line = c.corner == [true, true] && c.xy.len() == 2;
+        let clipped = line
+            .then(|| clip_to_box(c.xy[0], c.xy[1], crate::candidates::root_box(self.sites)))
+            .flatten();
+        let Some((a, b)) = clipped else {
+            return c.tr.iter().copied().zip(c.xy.iter().copied()).collect();
+        };
+        let length = (b[0] - a[0]).hypot(b[1] - a[1]);
+        let steps = ((length / (CORNER_LINE_STEP * self.sites.size)).ceil() as usize).max(1);
+        (0..=steps)
+            .map(|k| {
+                let s = k as f64 / steps as f64;
+                (
+                    c.tr[0],
+                    [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])],
+                )
+            })
+            .collect()
     }
 
     /// Between two vertices on the axis, a point of the branch off it where a foot passes a
@@ -758,5 +790,57 @@ impl Branch<'_, '_> {
         tr[other] = u;
         let v = self.vertex(tr, x.arr())?;
         (gap.abs() <= EMPTY_SLACK * self.sites.size.max(v.radius)).then_some(v)
+    }
+}
+
+/// The part of the segment `a`–`b` inside the box `[lo x, lo y, hi x, hi y]` (Liang and
+/// Barsky), `None` where it misses the box.
+fn clip_to_box(a: [f64; 2], b: [f64; 2], bx: [f64; 4]) -> Option<([f64; 2], [f64; 2])> {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-d[0], a[0] - bx[0]),
+        (d[0], bx[2] - a[0]),
+        (-d[1], a[1] - bx[1]),
+        (d[1], bx[3] - a[1]),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    let at = |t: f64| [a[0] + t * d[0], a[1] + t * d[1]];
+    (t0 <= t1).then(|| (at(t0), at(t1)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::clip_to_box;
+
+    #[test]
+    fn a_segment_is_clipped_to_the_box() {
+        let bx = [0.0, 0.0, 2.0, 1.0];
+        // Across the box, inside it, and beside it.
+        assert_eq!(
+            clip_to_box([-1.0, 0.5], [3.0, 0.5], bx),
+            Some(([0.0, 0.5], [2.0, 0.5]))
+        );
+        assert_eq!(
+            clip_to_box([0.5, 0.5], [1.0, 0.75], bx),
+            Some(([0.5, 0.5], [1.0, 0.75]))
+        );
+        assert_eq!(clip_to_box([-1.0, 2.0], [3.0, 2.0], bx), None);
+        assert_eq!(clip_to_box([-1.0, -1.0], [-0.5, 3.0], bx), None);
+        // A diagonal through a corner of the box.
+        let (a, b) = clip_to_box([-1.0, -1.0], [3.0, 3.0], bx).unwrap();
+        assert_eq!((a, b), ([0.0, 0.0], [1.0, 1.0]));
     }
 }

@@ -1269,3 +1269,15 @@ fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
         );
     }
 }
+
+/// The benchmarks' chain of 50 cubics: at the circumcentre of three reflex corners the
+/// bisector of the outer two meets those of each with the middle one; the line of two
+/// corners was tested at its two ends only, far apart and entered by one site, and its
+/// stretch between them was missed (a leaf ended there, uncertified).
+#[test]
+fn three_reflex_corners_on_one_disk_make_a_junction() {
+    let region = Region::new(star_of_s_cubics(50), vec![]).unwrap();
+    check(&region).unwrap();
+    let a = axis(&region);
+    assert!(a.certified, "{:?}", a.reason);
+}

@@ -617,7 +617,13 @@ impl Branch<'_, '_> {
             }
         };
         let entering = self.sites.boundaries[k];
-        let third = |v: &Vertex| entering.nearest_near(v.xy, u).distance - v.radius;
+        // A corner of a foot's own segment entering the disk is a site of its own: the
+        // distance to the boundary near it is that foot's, the radius itself, all along.
+        let corner = self.own_corner_inside(k, &out);
+        let third = |v: &Vertex| match corner {
+            Some(p) => (v.xy[0] - p[0]).hypot(v.xy[1] - p[1]) - v.radius,
+            None => entering.nearest_near(v.xy, u).distance - v.radius,
+        };
         // The bracket's passing end holds the disk empty only to the slack: the root may lie
         // a little before it. Step back from it, doubling, until the third point is outside
         // the disk (not straight back to the stretch's last vertex: where the entering point
@@ -666,6 +672,30 @@ impl Branch<'_, '_> {
             }
         }
         Some(best)
+    }
+
+    /// A corner at an end of the segment of one of the branch's (non-corner) feet on
+    /// boundary `k`, pointing into the region and lying inside the disk of `out`: its point.
+    fn own_corner_inside(&self, k: usize, out: &Vertex) -> Option<[f64; 2]> {
+        let c = self.c;
+        let boundary = self.sites.boundaries[k];
+        let n = boundary.domain().1;
+        (0..2)
+            .filter(|&s| !c.corner[s] && c.boundary[s] == k)
+            .flat_map(|s| [c.segment[s] as f64, c.segment[s] as f64 + 1.0])
+            .map(|u| if boundary.is_closed() { u % n } else { u })
+            // (A corner pointing into the region, not the branch's own corner site: a site of
+            // its own for the axis.)
+            .filter(|&u| {
+                let own = (0..2).any(|s| c.corner[s] && c.boundary[s] == k && out.tr[s] == u);
+                !own && boundary.corners().any(|j| j.u == u)
+                    && self.sites.inside_of(k, 0, u, true, out.xy)
+            })
+            .map(|u| {
+                let p = boundary.jet(u).p;
+                [p.x, p.y]
+            })
+            .find(|p| (p[0] - out.xy[0]).hypot(p[1] - out.xy[1]) < out.radius)
     }
 
     /// The exact bisector vertex near the feet `guess` and point `near` (between the

@@ -1281,3 +1281,16 @@ fn three_reflex_corners_on_one_disk_make_a_junction() {
     let a = axis(&region);
     assert!(a.certified, "{:?}", a.reason);
 }
+
+/// The benchmarks' chain of 75 cubics: a junction's disk touches a reflex corner and, 9e-3
+/// along the corner's own segment, a foot on it. The junction was solved for on the
+/// distance to that segment near the corner, which is the foot's (the radius) all along:
+/// found 1e-5 apart on two of its branches, it was two leaves, and the graph came apart.
+/// The corner is now the third site.
+#[test]
+fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
+    let region = Region::new(star_of_s_cubics(75), vec![]).unwrap();
+    check(&region).unwrap();
+    let a = axis(&region);
+    assert!(shaped_like_the_region(&a, 0), "the graph came apart");
+}

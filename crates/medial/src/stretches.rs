@@ -56,6 +56,11 @@ const FEET_APART: f64 = 1e-4;
 /// third's) is found where it is longer than that.
 const CORNER_LINE_STEP: f64 = 1e-2;
 
+/// A foot within this share of the radius of a corner at its segment's end is closing in on
+/// it: the axis ends at the segment's centre of curvature there (the feet of the leaves of
+/// the benchmark chains' reflex corners are ~1e-4 of the radius apart at their last vertex).
+const CLOSING_IN: f64 = 0.05;
+
 /// A curvature below this (times the size) is a straight boundary: no centre of curvature
 /// within 1e12 sizes for the axis to end at.
 const STRAIGHT: f64 = 1e-12;
@@ -420,6 +425,15 @@ impl Branch<'_, '_> {
         let boundary = self.sites.boundaries[c.boundary[s]];
         let n = boundary.domain().1;
         let (start, corner) = (c.segment[s] as f64, v.tr[o]);
+        // (The foot must be closing in on the corner: at the branch's other end, where its
+        // disk shrinks to the corner's point, the axis does not end at the centre.)
+        let (p, q) = (
+            self.sites.foot(c.boundary[s], v.tr[s]),
+            self.sites.foot(c.boundary[o], corner),
+        );
+        if (p[0] - q[0]).hypot(p[1] - q[1]) > CLOSING_IN * v.radius {
+            return None;
+        }
         if corner == start {
             Some(start)
         } else if corner == start + 1.0 || boundary.is_closed() && corner == 0.0 && start + 1.0 == n

@@ -1293,4 +1293,13 @@ fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
     check(&region).unwrap();
     let a = axis(&region);
     assert!(shaped_like_the_region(&a, 0), "the graph came apart");
+    // The 100-segment chain: the branch of a corner and its own segment starts where its
+    // disk shrinks to the corner's point; that start had been taken for the leaf's end at
+    // the segment's centre of curvature (the foot 0.7 of the radius from the corner), and
+    // the branch closed on itself, apart from the rest.
+    let region = Region::new(star_of_s_cubics(100), vec![]).unwrap();
+    assert!(
+        shaped_like_the_region(&axis(&region), 0),
+        "the graph came apart"
+    );
 }

@@ -13,10 +13,11 @@
 //! Near the corner the branch is a graph `θ(ρ)` in polar coordinates about it, tending to a
 //! fixed angle. So the branch is followed by halving `ρ` and solving the bisector condition
 //! ψ (whose rounding shrinks with the distances, unlike `F`'s) for the angle, by Newton from
-//! the angle before. Each point must stay in step (its image converges, moving at most twice
-//! as far as the step before), and between two points the branch is sampled at the middle
-//! radius: where it strays from the chord by more than the chord tolerance, that point is
-//! kept too.
+//! the angle before. Each point must stay in step: its image converges, moving at most twice
+//! as far as the step before (the first, as far as the centres of curvature at the feet
+//! allow, unless ψ decides its angle). Between two points the branch is sampled at the
+//! middle radius: where it strays from the chord by more than the chord tolerance, that
+//! point is kept too.
 
 use super::output::Branch;
 use super::point::psi;

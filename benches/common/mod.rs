@@ -1,8 +1,8 @@
-//! Shapes the benchmarks share.
+//! Shapes the benchmarks share (the medial axis tests take the chain of Béziers from here
+//! too, so a fault found on a benchmark shape is tested on that very shape).
 #![allow(dead_code)] // each benchmark takes what it needs
 
-use antipodal::{Profile, Segment, SplineCurve};
-use curve::{SegmentKind, V2};
+use curve::{Profile, Segment, SegmentKind, SplineCurve, V2};
 
 /// Deterministic pseudo-random numbers in [0, 1).
 pub(crate) fn rng(seed: u64) -> impl FnMut() -> f64 {

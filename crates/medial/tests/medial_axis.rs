@@ -10,6 +10,8 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
+#[path = "../../../benches/common/mod.rs"]
+mod bench_shapes;
 #[path = "../../zeroset/tests/common/boundary_oracle.rs"]
 mod boundary_oracle;
 #[path = "../../antipodal/tests/common/profiles.rs"]
@@ -1208,44 +1210,13 @@ fn a_corners_stretch_reaches_its_junction_with_no_vertex_between() {
     assert!(axis(&region).certified);
 }
 
-/// A closed chain of `n` S-shaped cubic Béziers round a star, with corners at every joint
-/// (the benchmarks' shape, from the same pseudo-random numbers).
-fn star_of_s_cubics(n: usize) -> Profile {
-    let mut x: u64 = 7;
-    let mut rnd = move || {
-        x = x
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let joints: Vec<[f64; 2]> = (0..n)
-        .map(|i| {
-            let a = TAU * i as f64 / n as f64;
-            let r = 1.0 + 0.5 * rnd();
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect();
-    let segs = (0..n)
-        .map(|i| {
-            let (a, b) = (joints[i], joints[(i + 1) % n]);
-            let d = [b[0] - a[0], b[1] - a[1]];
-            let w = 0.3 * (rnd() - 0.5);
-            let at = |s: f64, t: f64| [a[0] + s * d[0] - t * d[1], a[1] + s * d[1] + t * d[0]];
-            let pts = [a, at(0.3, w), at(0.7, -w), b];
-            let c = curve::SplineCurve::clamped(3, &pts, None, None).unwrap();
-            Segment::spline(curve::SegmentKind::Bezier, c).unwrap()
-        })
-        .collect();
-    Profile::new(segs, None).unwrap()
-}
-
 /// Beside a reflex corner a segment's curvature peaks at the corner: the leaf where its
 /// foot closes in on the corner's point ends at the segment's centre of curvature there
 /// (it had stopped 4e-5 of the parameter short, at the last foot traced, and was not
 /// certified), proven by the curvature falling away from the corner on that side only.
 #[test]
 fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
-    let outline = star_of_s_cubics(12);
+    let outline = bench_shapes::bezier_chain(12);
     let region = Region::new(outline.clone(), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
@@ -1276,7 +1247,7 @@ fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
 /// stretch between them was missed (a leaf ended there, uncertified).
 #[test]
 fn three_reflex_corners_on_one_disk_make_a_junction() {
-    let region = Region::new(star_of_s_cubics(50), vec![]).unwrap();
+    let region = Region::new(bench_shapes::bezier_chain(50), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
     assert!(a.certified, "{:?}", a.reason);
@@ -1289,7 +1260,7 @@ fn three_reflex_corners_on_one_disk_make_a_junction() {
 /// The corner is now the third site.
 #[test]
 fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
-    let region = Region::new(star_of_s_cubics(75), vec![]).unwrap();
+    let region = Region::new(bench_shapes::bezier_chain(75), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
     assert!(shaped_like_the_region(&a, 0), "the graph came apart");
@@ -1297,7 +1268,7 @@ fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
     // disk shrinks to the corner's point; that start had been taken for the leaf's end at
     // the segment's centre of curvature (the foot 0.7 of the radius from the corner), and
     // the branch closed on itself, apart from the rest.
-    let region = Region::new(star_of_s_cubics(100), vec![]).unwrap();
+    let region = Region::new(bench_shapes::bezier_chain(100), vec![]).unwrap();
     assert!(
         shaped_like_the_region(&axis(&region), 0),
         "the graph came apart"

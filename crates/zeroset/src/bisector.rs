@@ -11,6 +11,7 @@
 //! symbolically (`(t − r)⁴` for F3, `(t − r)⁵` for F1 and F2), only the half `t ≤ r` is
 //! searched, and mirrored parts are clipped at the diagonal.
 
+mod jets;
 mod knot_corners;
 mod output;
 mod point;
@@ -26,6 +27,7 @@ use crate::symbolic::{bisector_function_scaled, Method};
 use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
 use bspline::Rational;
 use curve::Frame;
+use jets::Jets;
 use point::bbox;
 pub(crate) use point::bbox_of_points;
 use straight_spans::StraightSpans;
@@ -109,6 +111,8 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
     let ctx = Ctx {
         c1,
         c2,
+        jets1: Jets::of(c1),
+        jets2: Jets::of(c2),
         center,
         diag,
         selfb: false,
@@ -215,6 +219,8 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let ctx = Ctx {
         c1: c,
         c2: c,
+        jets1: Jets::of(c),
+        jets2: Jets::of(c),
         center,
         diag,
         selfb: true,

@@ -244,7 +244,7 @@ impl Ctx<'_> {
         let mut th = theta;
         for _ in 0..ANGLE_STEPS {
             let (s, c) = th.sin_cos();
-            let (v, gt, gr) = psi(self.c1, self.c2, k + rho * c, k + rho * s);
+            let (v, gt, gr) = psi(&self.jets1, &self.jets2, k + rho * c, k + rho * s);
             let turn = v / (rho * (gr * c - gt * s));
             if !turn.is_finite() || (th - turn - theta).abs() > MAX_TURN {
                 return None;
@@ -266,8 +266,7 @@ impl Ctx<'_> {
     /// parameter: `|dρ/du|` for the radius of curvature `ρ` (the centre moves along the
     /// normal); infinite at an inflection.
     fn evolute_speed(&self, u: f64) -> f64 {
-        let mut o = [0.0; 8];
-        self.c1.eval_derivs(u, 3, &mut o);
+        let o = self.jets1.derivs(u, 3);
         let (a, b, c) = ([o[2], o[3]], [o[4], o[5]], [o[6], o[7]]);
         let g = a[0] * a[0] + a[1] * a[1];
         let w = a[0] * b[1] - a[1] * b[0];

@@ -1,6 +1,7 @@
 //! The bisector point of two matched foot points and the residual of the three bisector
 //! conditions there: plain geometry of the curves, apart from the zero-set search and cleaning.
 
+use super::jets::Jets;
 use bspline::Rational;
 
 /// Largest relative residual of the three bisector conditions for a reported point: the
@@ -16,13 +17,6 @@ pub const RESIDUAL: f64 = 1e-9;
 /// that size, so where the curves cross (distances → 0) a purely relative test would ask for
 /// more than doubles hold. 1e-6 keeps the absolute requirement there at 1e-15 of the size.
 pub(super) const FLOOR: f64 = 1e-6;
-
-/// Point, first derivative of a planar rational curve at `u`.
-pub(super) fn pd(c: &Rational, u: f64) -> ([f64; 2], [f64; 2]) {
-    let mut o = [0.0; 4];
-    c.eval_derivs(u, 1, &mut o);
-    ([o[0], o[1]], [o[2], o[3]])
-}
 
 /// The largest relative residual of the three bisector conditions at `P` for the foot points
 /// `c1` (tangent `d1`) and `c2` (tangent `d2`); `floor` keeps it finite where the foot points
@@ -62,14 +56,14 @@ fn residual(
 /// among the candidates that meet [`RESIDUAL`], the one with the least estimated rounding
 /// error wins; failing that, the least residual (which the caller then rejects).
 pub(super) fn point_and_residual(
-    c1: &Rational,
-    c2: &Rational,
+    c1: &Jets,
+    c2: &Jets,
     t: f64,
     r: f64,
     floor: f64,
 ) -> Option<([f64; 2], f64)> {
-    let (p1, d1) = pd(c1, t);
-    let (p2, d2) = pd(c2, r);
+    let (p1, d1) = c1.point_tangent(t);
+    let (p2, d2) = c2.point_tangent(r);
     let dot = |x: [f64; 2], y: [f64; 2]| x[0] * y[0] + x[1] * y[1];
     let norm = |x: [f64; 2]| dot(x, x).sqrt();
     let d = [p1[0] - p2[0], p1[1] - p2[1]];
@@ -122,17 +116,15 @@ pub(super) fn point_and_residual(
 
 /// Relative rounding of an evaluated point or derivative, for comparing the candidates of
 /// [`point_and_residual`]: a few units of rounding (de Boor's recurrence is a chain of convex
-/// combinations); only the candidates' ratios matter, not the constant.
+/// combinations, as is de Casteljau's); only the candidates' ratios matter, not the constant.
 const EVAL_ROUNDING: f64 = 4.0 * f64::EPSILON;
 
 /// The bisector condition `ψ = 2 ⟨N1, d⟩ ⟨d, C2'⟩ − |d|² ⟨N1, C2'⟩` (with `d = C1 − C2`,
 /// `N1` the normal of `C1`: the equidistant point on the normal line of `C1(t)` lies on the
 /// normal line of `C2(r)`) and its partial derivatives. Cubic in `d`, so its rounding error
 /// shrinks with `d` where the curves cross, unlike that of F3.
-pub(super) fn psi(c1: &Rational, c2: &Rational, t: f64, r: f64) -> (f64, f64, f64) {
-    let (mut a, mut b) = ([0.0; 6], [0.0; 6]);
-    c1.eval_derivs(t, 2, &mut a);
-    c2.eval_derivs(r, 2, &mut b);
+pub(super) fn psi(c1: &Jets, c2: &Jets, t: f64, r: f64) -> (f64, f64, f64) {
+    let (a, b) = (c1.derivs(t, 2), c2.derivs(r, 2));
     let dot = |x: [f64; 2], y: [f64; 2]| x[0] * y[0] + x[1] * y[1];
     let d = [a[0] - b[0], a[1] - b[1]];
     let (d1, e1) = ([a[2], a[3]], [a[4], a[5]]);
@@ -160,7 +152,8 @@ pub(super) fn psi(c1: &Rational, c2: &Rational, t: f64, r: f64) -> (f64, f64, f6
 pub fn bisector_point(c1: &Rational, c2: &Rational, t: f64, r: f64) -> Option<[f64; 2]> {
     let (center, diag) = bbox(&[c1, c2]);
     let floor = FLOOR * (diag + center[0].hypot(center[1]));
-    point_and_residual(c1, c2, t, r, floor).and_then(|(p, res)| (res <= RESIDUAL).then_some(p))
+    point_and_residual(&Jets::of(c1), &Jets::of(c2), t, r, floor)
+        .and_then(|(p, res)| (res <= RESIDUAL).then_some(p))
 }
 
 /// Bounding box of the control points: (centre, diagonal).

@@ -2,7 +2,8 @@
 //! residual test with its Newton polish on ψ, the half `t < r` and the trimming. One vertex at
 //! a time; the branches built from them are in `output`.
 
-use super::point::{pd, point_and_residual, psi, FLOOR, RESIDUAL};
+use super::jets::Jets;
+use super::point::{point_and_residual, psi, FLOOR, RESIDUAL};
 use bspline::Rational;
 
 /// Points farther than this many bounding-box diagonals count as points at infinity.
@@ -38,6 +39,9 @@ pub(crate) const TRIM_SLACK: f64 = 1e-9;
 pub(super) struct Ctx<'a> {
     pub(super) c1: &'a Rational,
     pub(super) c2: &'a Rational,
+    /// The two curves prepared for evaluation (the same curve twice for a self-bisector).
+    pub(super) jets1: Jets,
+    pub(super) jets2: Jets,
     pub(super) center: [f64; 2],
     pub(super) diag: f64,
     pub(super) selfb: bool,
@@ -50,7 +54,7 @@ impl Ctx<'_> {
     /// Whether the (self-bisector) curve closes: start and end points and tangents agree.
     pub(super) fn is_closed(&self) -> bool {
         let (a, b) = self.c1.domain();
-        let ((p, d), (q, e)) = (pd(self.c1, a), pd(self.c1, b));
+        let ((p, d), (q, e)) = (self.jets1.point_tangent(a), self.jets1.point_tangent(b));
         let tol = CLOSED_POINT * self.diag;
         let dn = d[0].hypot(d[1]).max(f64::MIN_POSITIVE);
         (p[0] - q[0]).hypot(p[1] - q[1]) <= tol
@@ -79,7 +83,7 @@ impl Ctx<'_> {
         let floor = self.floor();
         let far =
             |p: [f64; 2]| (p[0] - self.center[0]).hypot(p[1] - self.center[1]) > FAR * self.diag;
-        if let Some((p, res)) = point_and_residual(self.c1, self.c2, t, r, floor) {
+        if let Some((p, res)) = point_and_residual(&self.jets1, &self.jets2, t, r, floor) {
             if res <= RESIDUAL {
                 return (!far(p)).then_some(([t, r], p));
             }
@@ -87,7 +91,7 @@ impl Ctx<'_> {
         let (e1, e2) = (d1.1 - d1.0, d2.1 - d2.0);
         let mut q = [t, r];
         for _ in 0..MAX_POLISH {
-            let (v, gt, gr) = psi(self.c1, self.c2, q[0], q[1]);
+            let (v, gt, gr) = psi(&self.jets1, &self.jets2, q[0], q[1]);
             // Newton toward ψ = 0 along its gradient, in coordinates scaled by the domains.
             let (st, sr) = (gt * e1, gr * e2);
             let g2 = st * st + sr * sr;
@@ -101,7 +105,8 @@ impl Ctx<'_> {
             if ((q[0] - t) / e1).hypot((q[1] - r) / e2) > MOVE {
                 return None;
             }
-            if let Some((p, res)) = point_and_residual(self.c1, self.c2, q[0], q[1], floor) {
+            if let Some((p, res)) = point_and_residual(&self.jets1, &self.jets2, q[0], q[1], floor)
+            {
                 if res <= RESIDUAL {
                     return (!far(p)).then_some((q, p));
                 }
@@ -130,7 +135,7 @@ impl Ctx<'_> {
             return None;
         }
         if self.trimmed {
-            let (q1, _) = pd(self.c1, q[0]);
+            let (q1, _) = self.jets1.point_tangent(q[0]);
             let rho = (p[0] - q1[0]).hypot(p[1] - q1[1]);
             let slack = TRIM_SLACK * self.diag;
             if min_dist(self.c1, p) < rho - slack || min_dist(self.c2, p) < rho - slack {

@@ -9,8 +9,11 @@
 //! point where the circle touches the curve). A piece the hull leaves undecided is tried
 //! whole by its squared distance from the centre: positive where its Bernstein coefficients
 //! are, and where that polynomial is proven convex its tangent at its least point bounds it
-//! (the hull would need pieces down to the square root of the margin). Every comparison allows for the rounding of the coefficients and of the
-//! arithmetic, so a verdict holds for the exact curve.
+//! (the hull would need pieces down to the square root of the margin). Before any halving,
+//! the ends of the pieces near the disk are looked at: most disks a medial axis tests are
+//! entered deep, and the deepest end inside is then the witness. Every comparison allows for
+//! the rounding of the coefficients and of the arithmetic, so a verdict holds for the exact
+//! curve.
 
 use crate::geom::V2;
 use crate::param::ParamCurve;
@@ -172,6 +175,11 @@ impl Profile {
             .filter(|&(d, _)| d < r)
             .collect();
         order.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Most disks a caller tests are entered deep: the ends of the Bézier pieces (points
+        // of the curve) mostly show it at once, and the deepest of them is the best witness.
+        if let Some(entered) = self.deepest_piece_end(x, r, &order, window) {
+            return entered;
+        }
         for (_, i) in order {
             let seg = &self.segments()[i];
             if let Some((c, radius)) = seg.circle() {
@@ -256,6 +264,53 @@ impl Profile {
         } else {
             Clearance::Clear
         }
+    }
+}
+
+impl Profile {
+    /// Of the ends of the Bézier pieces of the segments `order` (within `window`), the
+    /// nearest `x`, if it lies inside the disk of radius `r` past the rounding of its
+    /// coordinates.
+    fn deepest_piece_end(
+        &self,
+        x: V2,
+        r: f64,
+        order: &[(f64, usize)],
+        window: Option<&Window>,
+    ) -> Option<Clearance> {
+        let mut best: Option<(f64, f64, f64)> = None; // (distance + room, distance, u)
+        for &(_, i) in order {
+            let seg = &self.segments()[i];
+            let pieces = seg.curve().bezier_pieces();
+            let dim = pieces.dim();
+            let given = seg.curve().curve().coefficient_error();
+            for k in 0..pieces.pieces() {
+                let coefs = pieces.piece(k);
+                let err = coefficient_error(pieces, k, given);
+                let (lo, hi) = pieces.piece_span(k);
+                for (v, c) in [(lo, &coefs[..dim]), (hi, &coefs[coefs.len() - dim..])] {
+                    let w = c[2];
+                    if w.is_nan() || w <= 2.0 * err.weight {
+                        continue;
+                    }
+                    let p = V2::new(c[0] / w, c[1] / w);
+                    let mag = p.x.abs().max(p.y.abs()).max(x.x.abs()).max(x.y.abs());
+                    // As in `test_piece`: the point's error from its coefficients', and the
+                    // arithmetic's rounding.
+                    let room = 4.0 * (err.point + mag * err.weight) / w
+                        + ROUNDING_ULPS * f64::EPSILON * mag;
+                    let d = (p - x).norm();
+                    let u = self.profile_param(i, v);
+                    if d + room < r
+                        && best.is_none_or(|b| d + room < b.0)
+                        && window.is_none_or(|w| w.holds(u))
+                    {
+                        best = Some((d + room, d, u));
+                    }
+                }
+            }
+        }
+        best.map(|(_, distance, u)| Clearance::Entered { u, distance })
     }
 }
 

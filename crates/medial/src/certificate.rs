@@ -28,14 +28,36 @@ use curve::{Clearance, ParamCurve};
 /// vertex.
 const JUNCTION_ROOM: [f64; 2] = [1e-10, 1e-9];
 
-/// How much wider than the junction's room every enclosure of a distance is (its proven
-/// disks lie this share of the room inside and outside the distance to the foot).
-const ENCLOSURE: f64 = 1e-3;
+/// The polygons a junction is proven with, tried in turn: the share of the room about it
+/// by which every enclosure of a distance is wider than the distance to the foot (its
+/// proven disks lie that far inside and outside), and the most corners the polygon may be
+/// refined to (sides where no component of the map is proven of one sign are halved). Most
+/// junctions are proven by the first. Where two feet are close as seen from the junction (a
+/// foot beside a corner that is a third), the difference of their distances changes over
+/// the polygon only by their angle times the room, a few hundredths of it: its sign needs
+/// enclosures narrower still (at 1e-4 of the smaller room, still 45 units of rounding of
+/// the coordinates wide), and only sides shorter than half its value keep it, so the sides
+/// about where the other component changes sign are halved some ten times more.
+const POLYGONS: [Polygon; 2] = [
+    Polygon {
+        enclosure: 1e-3,
+        most_corners: 64,
+    },
+    Polygon {
+        enclosure: 1e-4,
+        most_corners: 256,
+    },
+];
 
-/// Corners of the first polygon about a junction, and the most it may be refined to: sides
-/// where no component of the map is proven of one sign are halved.
+/// How a junction's polygon is built: see [`POLYGONS`].
+#[derive(Clone, Copy)]
+struct Polygon {
+    enclosure: f64,
+    most_corners: usize,
+}
+
+/// Corners of the first polygon about a junction.
 const FIRST_CORNERS: usize = 8;
-const MOST_CORNERS: usize = 64;
 
 /// Feet of a node's edges within this share of the size are one contact with the boundary
 /// (the stretches meeting at a junction found it to ~1e-12 of the size each).
@@ -258,9 +280,11 @@ fn junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
         .iter()
         .map(|f| Contact::new(sites, f, feet))
         .collect();
-    JUNCTION_ROOM.iter().any(|&room| {
-        let h = room * sites.size;
-        winds_round_zero(sites, node.xy, h, &contacts)
+    POLYGONS.iter().any(|polygon| {
+        JUNCTION_ROOM.iter().any(|&room| {
+            let h = room * sites.size;
+            winds_round_zero(sites, node.xy, h, polygon, &contacts)
+        })
     })
 }
 
@@ -346,8 +370,15 @@ impl Corner {
 
 /// Whether the map `(dA − dB, dA − dC)` winds round zero along a polygon inscribed in the
 /// circle of radius `h` about `centre`: a zero inside, the point equidistant from the three.
-fn winds_round_zero(sites: &Sites<'_>, centre: [f64; 2], h: f64, contacts: &[Contact]) -> bool {
-    let room = ENCLOSURE * h;
+fn winds_round_zero(
+    sites: &Sites<'_>,
+    centre: [f64; 2],
+    h: f64,
+    polygon: &Polygon,
+    contacts: &[Contact],
+) -> bool {
+    let room = polygon.enclosure * h;
+    let most_corners = polygon.most_corners;
     let corner = |angle: f64| -> Option<Corner> {
         let xy = [centre[0] + h * angle.cos(), centre[1] + h * angle.sin()];
         let d: Vec<[f64; 2]> = contacts
@@ -362,7 +393,7 @@ fn winds_round_zero(sites: &Sites<'_>, centre: [f64; 2], h: f64, contacts: &[Con
         })
     };
     let tau = std::f64::consts::TAU;
-    let mut ring: Vec<Corner> = Vec::with_capacity(MOST_CORNERS);
+    let mut ring: Vec<Corner> = Vec::with_capacity(most_corners);
     for k in 0..FIRST_CORNERS {
         match corner(tau * k as f64 / FIRST_CORNERS as f64) {
             Some(c) => ring.push(c),
@@ -394,7 +425,7 @@ fn winds_round_zero(sites: &Sites<'_>, centre: [f64; 2], h: f64, contacts: &[Con
             continue;
         };
         evaluations += 1;
-        if ring.len() >= MOST_CORNERS || evaluations > 2 * MOST_CORNERS {
+        if ring.len() >= most_corners || evaluations > 2 * most_corners {
             return false;
         }
         let Some(c) = corner(moved) else {

@@ -147,23 +147,44 @@ impl<'a> Sites<'a> {
     /// control hulls ([`Profile::clearance`], nearest segments first) where rounding allows,
     /// else decided by the nearest point found.
     pub(crate) fn disk(&self, x: [f64; 2], rho: f64) -> Disk {
+        let (disk, decided) = self.disk_verdict(x, rho);
+        if !decided {
+            self.undecided.store(true, Ordering::Relaxed);
+        }
+        disk
+    }
+
+    /// [`Sites::disk`] for a search whose outcome is proven again: the search for where a
+    /// stretch ends, whose node (a junction's or an end's place, and its disk) the
+    /// certificate proves by itself. A verdict left to the nearest point is not recorded: a
+    /// bracket of the search that closes in on where the boundary touches the disk meets
+    /// disks within rounding of touching it, and the worst it does is move the bracket by
+    /// that much.
+    pub(crate) fn probe(&self, x: [f64; 2], rho: f64) -> Disk {
+        self.disk_verdict(x, rho).0
+    }
+
+    /// What the disk holds, and whether the bounds proved it.
+    fn disk_verdict(&self, x: [f64; 2], rho: f64) -> (Disk, bool) {
         let r = rho - EMPTY_SLACK * self.size;
         let mut undecided = false;
         for (k, b) in self.boundaries.iter().enumerate() {
             match b.clearance(x, r) {
                 Clearance::Clear => {}
-                Clearance::Entered { u, distance } => return Disk::Entered(k, u, rho - distance),
+                Clearance::Entered { u, distance } => {
+                    return (Disk::Entered(k, u, rho - distance), true)
+                }
                 Clearance::Unresolved => undecided = true,
             }
         }
         if !undecided {
-            return Disk::Empty;
+            return (Disk::Empty, true);
         }
-        self.undecided.store(true, Ordering::Relaxed);
-        match self.nearest(x, r) {
+        let disk = match self.nearest(x, r) {
             (d, _, _) if d >= r => Disk::Empty,
             (d, k, u) => Disk::Entered(k, u, rho - d),
-        }
+        };
+        (disk, false)
     }
 
     /// Whether some disk's verdict was not proven by bounds.

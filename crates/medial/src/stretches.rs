@@ -466,8 +466,9 @@ impl Branch<'_, '_> {
         self.sites.in_clip(v.xy) && self.feet_part(v) && self.disk_empty(v)
     }
 
+    /// (Only in the search for where a stretch ends: see [`Sites::probe`].)
     fn disk_empty(&self, v: &Vertex) -> bool {
-        self.inside(v) && self.sites.disk(v.xy, v.radius) == Disk::Empty
+        self.inside(v) && self.sites.probe(v.xy, v.radius) == Disk::Empty
     }
 
     fn feet_part(&self, v: &Vertex) -> bool {
@@ -533,7 +534,7 @@ impl Branch<'_, '_> {
         };
         self.halve(&mut b, COARSE_STEPS, &at);
         if let Some(out) = b.outside {
-            let disk = self.sites.disk(out.xy, out.radius);
+            let disk = self.sites.probe(out.xy, out.radius);
             let entered = self.sites.in_clip(out.xy) && self.feet_part(&out);
             if entered && !(self.inside(&out) && disk == Disk::Empty) {
                 if let Some(v) = self.tri_tangent(from, &b, out, disk, &at) {
@@ -573,7 +574,7 @@ impl Branch<'_, '_> {
             }
             return (lo > 0.0).then_some(last);
         };
-        let disk = self.sites.disk(out.xy, out.radius);
+        let disk = self.sites.probe(out.xy, out.radius);
         if !self.feet_part(&out) || (self.inside(&out) && disk == Disk::Empty) {
             // The feet met: the axis ends at the centre of curvature between them. (Beside
             // that centre the boundary may reach into the disk by more than the slack: the

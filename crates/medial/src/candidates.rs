@@ -70,10 +70,16 @@ pub(crate) fn candidates(
     };
     let bisect = |&[i, j]: &[usize; 2]| {
         let keep = |s: usize, t: usize| near.keep((i, s), (j, t));
+        // (Only the axis's side of each boundary: a point on the other side of a foot is
+        // outside, where its disk meets the boundary at that foot.)
+        let opts = BisectorOptions {
+            sides: Some([sites.side(i), sites.side(j)]),
+            ..bisector_opts
+        };
         if i == j {
-            profile_self_bisector_of_pairs(b[i], &bisector_opts, &keep)
+            profile_self_bisector_of_pairs(b[i], &opts, &keep)
         } else {
-            profile_bisector_of_pairs(b[i], b[j], &bisector_opts, &keep)
+            profile_bisector_of_pairs(b[i], b[j], &opts, &keep)
         }
     };
     // (In the pairs' order either way: the output never depends on the threads.)

@@ -115,6 +115,15 @@ impl<'a> Sites<'a> {
         }
     }
 
+    /// The side of boundary `k` (as it runs) the axis is sought on.
+    pub(crate) fn side(&self, k: usize) -> zeroset::Side {
+        if self.inside_left[k] > 0.0 {
+            zeroset::Side::Left
+        } else {
+            zeroset::Side::Right
+        }
+    }
+
     /// The piece of boundary `k` holding profile parameter `u` (its index in order).
     pub(crate) fn piece_of(&self, k: usize, u: f64) -> usize {
         let starts = &self.piece_starts[k];

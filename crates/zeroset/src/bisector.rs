@@ -15,11 +15,13 @@ mod jets;
 mod knot_corners;
 mod output;
 mod point;
+mod sides;
 mod straight_spans;
 mod vertices;
 
 pub use output::{Bisector, BisectorPoint, Branch};
 pub use point::{bisector_point, RESIDUAL};
+pub use sides::Side;
 
 use crate::error::{Error, Result};
 use crate::patch::Patch;
@@ -30,6 +32,7 @@ use curve::Frame;
 use jets::Jets;
 use point::bbox;
 pub(crate) use point::bbox_of_points;
+use sides::SideFilter;
 use straight_spans::StraightSpans;
 use vertices::Ctx;
 pub(crate) use vertices::{FAR, TRIM_SLACK};
@@ -52,6 +55,11 @@ pub struct BisectorOptions {
     pub trimmed: bool,
     /// Patch limit of the zero-set search.
     pub max_patches: usize,
+    /// Only the bisector points on these sides of the two curves (as they run), or every
+    /// point (`None`, the default). Patches of the search where a foot is proven to have
+    /// the bisector point on its other side are skipped (for polynomial curves; rational
+    /// ones are searched whole, and their points on the other side are still reported).
+    pub sides: Option<[Side; 2]>,
 }
 
 impl Default for BisectorOptions {
@@ -62,6 +70,7 @@ impl Default for BisectorOptions {
             chord_tol: DEFAULT_CHORD_TOL,
             trimmed: false,
             max_patches: 200_000,
+            sides: None,
         }
     }
 }
@@ -130,7 +139,8 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
-    let keep = |_: &Patch| true;
+    let sides = opts.sides.and_then(|s| SideFilter::new(c1, c2, s));
+    let keep = |p: &Patch| sides.as_ref().is_none_or(|f| f.may_hold(p));
     let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &|_| {
         false
     });
@@ -255,7 +265,8 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
-    let keep = |p: &Patch| p.t0 < p.r1;
+    let sides = opts.sides.and_then(|s| SideFilter::new(c, c, s));
+    let keep = |p: &Patch| p.t0 < p.r1 && sides.as_ref().is_none_or(|f| f.may_hold(p));
     // Cells touching the diagonal at a corner (t1 = r0), and for a closed curve the cell at
     // the corner (start, end) — the diagonal across the seam: F vanishes to fourth order at
     // that corner (see `lax` in the tracer).

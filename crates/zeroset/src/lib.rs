@@ -23,7 +23,7 @@ mod zeroset;
 
 pub use bisector::{
     bisector, bisector_point, self_bisector, Bisector, BisectorOptions, BisectorPoint, Branch,
-    RESIDUAL,
+    Side, RESIDUAL,
 };
 pub use error::{Error, Result};
 pub use profile_bisector::{

@@ -58,7 +58,9 @@ pub struct BisectorOptions {
     /// Only the bisector points on these sides of the two curves (as they run), or every
     /// point (`None`, the default). Patches of the search where a foot is proven to have
     /// the bisector point on its other side are skipped (for polynomial curves; rational
-    /// ones are searched whole, and their points on the other side are still reported).
+    /// ones are searched whole, and their points on the other side are still reported). In
+    /// profile bisectors the sides are the two profiles', and a corner's bisector with a
+    /// segment keeps exactly the points on the segment's side.
     pub sides: Option<[Side; 2]>,
 }
 

@@ -545,7 +545,8 @@ impl<'a> Run<'a> {
         out: &mut ProfileBisector,
     ) -> Result<()> {
         let (which, corner_side) = if swapped { (0, 1) } else { (1, 0) };
-        let (runs, complete) = corner_curve(corner, c, shared, &self.reach())?;
+        let side = self.opts.sides.map(|s| s[which]);
+        let (runs, complete) = corner_curve(corner, c, shared, side, &self.reach())?;
         out.complete &= complete;
         for run in runs {
             let mut tr = Vec::with_capacity(run.len());

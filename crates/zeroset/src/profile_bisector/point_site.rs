@@ -18,6 +18,7 @@
 
 use super::polyline::{sample_runs, Run};
 use super::stretches::{Cut, Cuts, Stretch};
+use crate::bisector::Side;
 use crate::error::Result;
 use bspline::roots::RootOptions;
 use bspline::{Piecewise, Rational, JUMP};
@@ -58,12 +59,14 @@ impl Reach {
 }
 
 /// The bisector of a corner and a curve (in the curve's parameter), as runs of vertices;
-/// `shared` says when the corner is one of the curve's ends. `false` in the flag when a
-/// polyline hit its vertex limit.
+/// `shared` says when the corner is one of the curve's ends; with `side`, only its points on
+/// that side of the curve (`λ` above has the sign of `E`, `J` turning left). `false` in the
+/// flag when a polyline hit its vertex limit.
 pub(crate) fn corner_curve(
     corner: &Corner,
     c: &Rational,
     shared: Option<SharedEnd>,
+    side: Option<Side>,
     reach: &Reach,
 ) -> Result<(Vec<Run>, bool)> {
     let pts: Vec<[f64; 2]> = c.control_points().iter().map(|p| [p[0], p[1]]).collect();
@@ -81,7 +84,7 @@ pub(crate) fn corner_curve(
     };
     let (lo, hi) = c.domain();
     let opts = RootOptions::default().tolerance((reach.tol * (hi - lo)).max(f64::MIN_POSITIVE));
-    let stretches = parts.stretches(&opts)?;
+    let stretches = parts.stretches(&opts, side)?;
     let point = |r: f64| -> Option<[f64; 2]> {
         let x = frame.to_global(parts.local_point(r)?);
         reach.within(x).then_some(x)
@@ -223,7 +226,7 @@ impl Parts {
 
     /// The stretches where the foot counts (inside the cone, bisector point finite), each
     /// maximal.
-    fn stretches(&self, opts: &RootOptions) -> Result<Vec<Stretch>> {
+    fn stretches(&self, opts: &RootOptions, side: Option<Side>) -> Result<Vec<Stretch>> {
         let (Some(first), Some(last)) = (self.pieces.first(), self.pieces.last()) else {
             return Ok(Vec::new());
         };
@@ -236,18 +239,19 @@ impl Parts {
             cuts.add_roots(&p.num_a, a, b, Cut::Sign)?;
             cuts.add_roots(&p.num_b, a, b, Cut::Sign)?;
         }
-        Ok(cuts.stretches(|r| counts(self.piece_at(r), r)))
+        Ok(cuts.stretches(|r| counts(self.piece_at(r), r, side)))
     }
 }
 
 /// Whether the foot at `r` (inside a stretch where `E`, `Num·a` and `Num·b` keep their signs)
-/// counts: bisector point finite and strictly inside the cone.
-fn counts(p: &PieceParts, r: f64) -> bool {
+/// counts: bisector point finite, strictly inside the cone, and on `side` of the curve.
+fn counts(p: &PieceParts, r: f64, side: Option<Side>) -> bool {
     let (mut e, mut na, mut nb) = ([0.0], [0.0], [0.0]);
     p.e.eval(r, &mut e);
     p.num_a.eval(r, &mut na);
     p.num_b.eval(r, &mut nb);
-    e[0] != 0.0 && e[0] * na[0] > 0.0 && e[0] * nb[0] < 0.0
+    let on_side = side.is_none_or(|s| (e[0] > 0.0) == (s == Side::Left));
+    e[0] != 0.0 && e[0] * na[0] > 0.0 && e[0] * nb[0] < 0.0 && on_side
 }
 
 /// Piece `i` of `f` as a function of its own.
@@ -375,7 +379,7 @@ mod tests {
             leaving: [0.0, -1.0],
         };
         // Cone: d·(0,1) > 0 and d·(0,−1) < 0, the upper half-plane: all of the quarter.
-        let (runs, complete) = corner_curve(&corner, &quarter, None, &reach()).unwrap();
+        let (runs, complete) = corner_curve(&corner, &quarter, None, None, &reach()).unwrap();
         assert!(complete);
         assert_eq!(runs.len(), 1);
         check(&corner, &quarter, &runs);
@@ -383,6 +387,11 @@ mod tests {
             assert!((x[0].hypot(x[1]) - 1.0).abs() < 1e-12);
         }
         assert!(runs[0].first().unwrap().0 < 1e-9 && runs[0].last().unwrap().0 > 1.0 - 1e-9);
+        // The arc runs counterclockwise about the centre: its bisector points lie on its
+        // left, and none on its right.
+        let on = |side| corner_curve(&corner, &quarter, None, Some(side), &reach()).unwrap();
+        assert_eq!(on(Side::Left), (runs, true));
+        assert!(on(Side::Right).0.is_empty());
     }
 
     /// A corner at the start of the parabola `y = x²/2`, its cone the quadrant `x < 0 < y`:
@@ -397,7 +406,8 @@ mod tests {
             arriving: [0.0, 1.0],
             leaving: [1.0, 0.0],
         };
-        let (runs, complete) = corner_curve(&corner, &q, Some(SharedEnd::Start), &reach()).unwrap();
+        let (runs, complete) =
+            corner_curve(&corner, &q, Some(SharedEnd::Start), None, &reach()).unwrap();
         assert!(complete);
         assert_eq!(runs.len(), 1, "{runs:?}");
         check(&corner, &q, &runs);
@@ -405,6 +415,10 @@ mod tests {
         assert_eq!(r0, 0.0);
         assert!(x0[0].abs() < 1e-12 && (x0[1] - 1.0).abs() < 1e-12, "{x0:?}");
         assert!(runs[0].last().unwrap().0 > 1.0 - 1e-9);
+        // The parabola bends left (up): so does its bisector with the corner.
+        let on = |side| corner_curve(&corner, &q, Some(SharedEnd::Start), Some(side), &reach());
+        assert_eq!(on(Side::Left).unwrap(), (runs, true));
+        assert!(on(Side::Right).unwrap().0.is_empty());
     }
 
     #[test]

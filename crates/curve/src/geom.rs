@@ -112,6 +112,35 @@ pub fn wrap_pi(a: f64) -> f64 {
     r
 }
 
+/// Distance from `x` to the segment `a`–`b` (to `a` where the two coincide).
+///
+/// ```
+/// assert_eq!(curve::distance_to_segment([1.0, 2.0], [0.0, 0.0], [4.0, 0.0]), 2.0);
+/// assert_eq!(curve::distance_to_segment([7.0, 4.0], [0.0, 0.0], [4.0, 0.0]), 5.0);
+/// ```
+pub fn distance_to_segment(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (ex, ey) = offset_from_segment(x, a, b);
+    ex.hypot(ey)
+}
+
+/// The square of [`distance_to_segment`], without its root (for the least of many).
+pub fn squared_distance_to_segment(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (ex, ey) = offset_from_segment(x, a, b);
+    ex * ex + ey * ey
+}
+
+/// `x` less its nearest point on the segment `a`–`b`.
+fn offset_from_segment(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> (f64, f64) {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let s = if len2 > 0.0 {
+        (((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (x[0] - a[0] - s * dx, x[1] - a[1] - s * dy)
+}
+
 /// Point, first, second and third derivative of a curve at one parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Jet {

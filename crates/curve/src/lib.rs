@@ -43,7 +43,7 @@ pub use affine::Affine;
 pub use clearance::Clearance;
 pub use error::{Error, Result};
 pub use frame::Frame;
-pub use geom::{wrap_pi, Jet, V2};
+pub use geom::{distance_to_segment, squared_distance_to_segment, wrap_pi, Jet, V2};
 pub use nearest::Nearest;
 pub use on_circle::OnCircle;
 pub use param::ParamCurve;

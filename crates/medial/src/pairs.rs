@@ -11,7 +11,7 @@
 //! size is that of the sag.
 
 use crate::sites::EMPTY_SLACK;
-use curve::{ParamCurve, Profile};
+use curve::{distance_to_segment, squared_distance_to_segment, ParamCurve, Profile};
 use std::collections::HashSet;
 
 /// Below this many segments in all, every pair is computed: the tree costs more than it
@@ -92,7 +92,7 @@ impl Site {
             let (a, b) = (euclidean[0], euclidean[euclidean.len() - 1]);
             sag = euclidean
                 .iter()
-                .map(|&p| distance_to_chord(p, a, b))
+                .map(|&p| distance_to_segment(p, a, b))
                 .fold(sag, f64::max);
             if k == 0 {
                 points.push(a);
@@ -112,7 +112,7 @@ impl Site {
         let d = self
             .points
             .windows(2)
-            .map(|w| squared_distance_to_chord(x, w[0], w[1]))
+            .map(|w| squared_distance_to_segment(x, w[0], w[1]))
             .fold(f64::INFINITY, f64::min)
             .sqrt();
         (d - self.sag, d + self.sag)
@@ -189,24 +189,6 @@ pub(crate) fn neighbours(boundaries: &[&Profile], size: f64, root: [f64; 4]) -> 
         }
     }
     Neighbours::Only(pairs)
-}
-
-/// Distance of `x` from the segment `a`–`b`.
-fn distance_to_chord(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    squared_distance_to_chord(x, a, b).sqrt()
-}
-
-/// The square of [`distance_to_chord`] (the least of many is taken before the root).
-fn squared_distance_to_chord(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let s = if len2 > 0.0 {
-        (((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let (ex, ey) = (x[0] - a[0] - s * dx, x[1] - a[1] - s * dy);
-    ex * ex + ey * ey
 }
 
 /// Whether `kept` are consecutive segments of one boundary (round its seam where closed):

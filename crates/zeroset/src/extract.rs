@@ -11,6 +11,7 @@
 
 use crate::patch::{common_sign, tsign, variations, vsign, Patch, EPS};
 use crate::solve1::{bracketed_from, bracketed_or_end};
+use curve::distance_to_segment;
 
 /// Where an arc ends: on a patch edge.
 #[derive(Debug, Clone, Copy)]
@@ -415,8 +416,12 @@ impl Tracer<'_> {
                                     }
                                     _ => false,
                                 };
-                                let off = |q: Sample| q.1.map_or(0.0, |z| dist_to_chord(z, x, y));
-                                let sampled = [off(q1), dist_to_chord(m, x, y), off(q3)];
+                                // (From the chord as a segment: the parameter need not be
+                                // proportional to arc length, so the nearest chord point is
+                                // not at the sample's fraction.)
+                                let off =
+                                    |q: Sample| q.1.map_or(0.0, |z| distance_to_segment(z, x, y));
+                                let sampled = [off(q1), distance_to_segment(m, x, y), off(q3)];
                                 let deviation = |w: f64| off(sample(w));
                                 quarter_uneven
                                     || measured_deviation(&deviation, sampled, self.chord_tol)
@@ -475,18 +480,6 @@ fn polygon_crossing(a: f64, b: f64, c: &[f64], err: f64) -> f64 {
         (c[i] / (c[i] - c[i + 1])).clamp(0.0, 1.0)
     };
     a + (b - a) * (i as f64 + w) / n as f64
-}
-
-/// Distance of `z` from the chord `x`–`y` (the segment: the parameter need not be
-/// proportional to arc length, so the nearest chord point is not at the sample's fraction).
-fn dist_to_chord(z: [f64; 2], x: [f64; 2], y: [f64; 2]) -> f64 {
-    let (dx, dy) = (y[0] - x[0], y[1] - x[1]);
-    let len2 = dx * dx + dy * dy;
-    if len2 == 0.0 {
-        return (z[0] - x[0]).hypot(z[1] - x[1]);
-    }
-    let s = (((z[0] - x[0]) * dx + (z[1] - x[1]) * dy) / len2).clamp(0.0, 1.0);
-    (z[0] - x[0] - s * dx).hypot(z[1] - x[1] - s * dy)
 }
 
 /// Below this fraction of the tolerance at the quarter points, an arc is taken to be within

@@ -23,6 +23,7 @@ use super::output::Branch;
 use super::point::psi;
 use super::vertices::Ctx;
 use crate::patch::Patch;
+use curve::distance_to_segment;
 
 /// A self-bisector branch ending this close (relative to the domain) to a knot corner of the
 /// diagonal, on the cell across it, is traced on to the corner. The flat region of `F`
@@ -275,16 +276,4 @@ impl Ctx<'_> {
         // ρ = g^{3/2} / w, so ρ' = (3 g^{1/2} (a·b) w − g^{3/2} w') / w².
         (3.0 * g.sqrt() * ab * w - g * g.sqrt() * w_dot).abs() / (w * w)
     }
-}
-
-/// Distance of `z` from the segment `x`–`y`.
-fn distance_to_segment(z: [f64; 2], x: [f64; 2], y: [f64; 2]) -> f64 {
-    let (dx, dy) = (y[0] - x[0], y[1] - x[1]);
-    let len2 = dx * dx + dy * dy;
-    let s = if len2 > 0.0 {
-        (((z[0] - x[0]) * dx + (z[1] - x[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (z[0] - x[0] - s * dx).hypot(z[1] - x[1] - s * dy)
 }

@@ -295,10 +295,7 @@ impl Profile {
                     }
                     let p = V2::new(c[0] / w, c[1] / w);
                     let mag = p.x.abs().max(p.y.abs()).max(x.x.abs()).max(x.y.abs());
-                    // As in `test_piece`: the point's error from its coefficients', and the
-                    // arithmetic's rounding.
-                    let room = 4.0 * (err.point + mag * err.weight) / w
-                        + ROUNDING_ULPS * f64::EPSILON * mag;
+                    let room = err.room(w, mag, 0);
                     let d = (p - x).norm();
                     let u = self.profile_param(i, v);
                     if d + room < r
@@ -377,6 +374,17 @@ struct Errors {
     weight: f64,
 }
 
+impl Errors {
+    /// What a Euclidean control point `X / w` (coordinates up to `mag`, weights at least
+    /// `w`, of a piece halved `depth` times) may be off by: `X / w` moves by
+    /// (δX + |X / w| δw) / w for errors δX, δw ≤ w / 2 of its coefficients (to first order;
+    /// twice that covers the rest), and the arithmetic's rounding.
+    fn room(self, w: f64, mag: f64, depth: usize) -> f64 {
+        4.0 * (self.point + mag * self.weight) / w
+            + (ROUNDING_ULPS + depth as f64) * f64::EPSILON * mag
+    }
+}
+
 /// The piece's verdict against the disk of centre `x` and radius `r`; `err` bounds the error
 /// of its homogeneous coefficients.
 fn test_piece(piece: &Piece<'_>, dim: usize, x: V2, r: f64, err: Errors) -> Verdict {
@@ -394,11 +402,7 @@ fn test_piece(piece: &Piece<'_>, dim: usize, x: V2, r: f64, err: Errors) -> Verd
         // A weight that may not be positive: the hull says nothing.
         return Verdict::Split;
     }
-    // What the points may be off by: `X / w` moves by (δX + |X / w| δw) / w for errors δX,
-    // δw ≤ w / 2 of its coefficients (to first order; twice that covers the rest), and the
-    // arithmetic's rounding.
-    let room = 4.0 * (err.point + mag * err.weight) / w_min
-        + (ROUNDING_ULPS + piece.depth as f64) * f64::EPSILON * mag;
+    let room = err.room(w_min, mag, piece.depth);
     // The end points lie on the curve: one inside the disk, past all rounding, decides.
     for (at_end, p) in [(false, pts[0]), (true, pts[n - 1])] {
         let d = (p - x).norm();

@@ -141,7 +141,10 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
-    let sides = opts.sides.and_then(|s| SideFilter::new(c1, c2, s));
+    let pieces = [ctx.jets1.pieces(), ctx.jets2.pieces()];
+    let sides = opts
+        .sides
+        .and_then(|s| SideFilter::new([c1, c2], pieces, s));
     let keep = |p: &Patch| sides.as_ref().is_none_or(|f| f.may_hold(p));
     let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &|_| {
         false
@@ -267,7 +270,8 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = [dt.0, dt.1, dr.0, dr.1];
     let map = |t: f64, r: f64| ctx.map(t, r);
-    let sides = opts.sides.and_then(|s| SideFilter::new(c, c, s));
+    let pieces = [ctx.jets1.pieces(), ctx.jets1.pieces()];
+    let sides = opts.sides.and_then(|s| SideFilter::new([c, c], pieces, s));
     let keep = |p: &Patch| p.t0 < p.r1 && sides.as_ref().is_none_or(|f| f.may_hold(p));
     // Cells touching the diagonal at a corner (t1 = r0), and for a closed curve the cell at
     // the corner (start, end) — the diagonal across the seam: F vanishes to fourth order at

@@ -26,6 +26,11 @@ impl Jets {
         out
     }
 
+    /// The homogeneous form's Bézier pieces.
+    pub(super) fn pieces(&self) -> &Piecewise {
+        &self.hom
+    }
+
     /// Point and first derivative at `u`.
     pub(super) fn point_tangent(&self, u: f64) -> ([f64; 2], [f64; 2]) {
         let o = self.derivs(u, 1);

@@ -28,24 +28,27 @@ pub enum Side {
 const ROUNDING: f64 = 1e-12;
 
 /// The two curves' Bézier pieces and the wanted side of each.
-pub(super) struct SideFilter {
-    pieces: [Piecewise; 2],
+pub(super) struct SideFilter<'a> {
+    pieces: [&'a Piecewise; 2],
     /// +1 for the left, −1 for the right.
     signs: [f64; 2],
 }
 
-impl SideFilter {
-    /// `None` for rational curves (their hodographs are not the hull's differences).
-    pub(super) fn new(c1: &Rational, c2: &Rational, sides: [Side; 2]) -> Option<Self> {
-        if c1.is_rational() || c2.is_rational() {
+impl<'a> SideFilter<'a> {
+    /// For the curves `curves` with homogeneous Bézier pieces `pieces` (the ones their
+    /// points are evaluated on); `None` for rational curves (their hodographs are not the
+    /// hull's differences).
+    pub(super) fn new(
+        curves: [&Rational; 2],
+        pieces: [&'a Piecewise; 2],
+        sides: [Side; 2],
+    ) -> Option<Self> {
+        if curves.iter().any(|c| c.is_rational()) {
             return None;
         }
         let sign = |s: Side| if s == Side::Left { 1.0 } else { -1.0 };
         Some(Self {
-            pieces: [
-                Piecewise::from_bspline(c1.homogeneous()),
-                Piecewise::from_bspline(c2.homogeneous()),
-            ],
+            pieces,
             signs: [sign(sides[0]), sign(sides[1])],
         })
     }
@@ -61,7 +64,7 @@ impl SideFilter {
 
     /// The Euclidean control points of curve `k` over `[lo, hi]` (within one piece).
     fn control_points(&self, k: usize, lo: f64, hi: f64) -> Points {
-        let pieces = &self.pieces[k];
+        let pieces = self.pieces[k];
         let i = pieces.piece_at(0.5 * (lo + hi));
         let (a, b) = pieces.piece_span(i);
         let mut pts: Points = pieces

@@ -9,6 +9,7 @@
 //! with no edge sign change holds no zero. Everything else is split; what is still unresolved at
 //! the size tolerance (crossings, isolated points, loops below the tolerance) becomes a leaf.
 
+use crate::deviation::measured_deviation;
 use crate::patch::{common_sign, tsign, variations, vsign, Patch, EPS};
 use crate::solve1::{bracketed_from, bracketed_or_end};
 use curve::distance_to_segment;
@@ -82,6 +83,12 @@ pub(crate) struct Pieces {
 /// parameters (and on the diagonal of a square domain) rarely land on corners.
 const SPLIT_T: f64 = 0.498_763_4;
 const SPLIT_R: f64 = 0.501_349_7;
+/// Samples on both sides of a chord farther than this fraction of the tolerance make an S
+/// (halved); below it, the smaller bump's peak stays within the tolerance: it is the image of
+/// at most half the parameter (one sample lies on it), where the `UNEVEN` bound makes its peak
+/// at most a few times its sample.
+const TWO_BUMPS_FLOOR: f64 = 0.1;
+
 /// Longest segment in `(t, r)`, relative to the domain.
 const MAX_SEG: f64 = 1.0 / 16.0;
 /// Vertex refinement depth per arc for the chord test.
@@ -423,7 +430,21 @@ impl Tracer<'_> {
                                     |q: Sample| q.1.map_or(0.0, |z| distance_to_segment(z, x, y));
                                 let sampled = [off(q1), distance_to_segment(m, x, y), off(q3)];
                                 let deviation = |w: f64| off(sample(w));
+                                // An arc seen on both sides of its chord is an S, two bumps:
+                                // a peak may hide beside either, where neither the unseen-peak
+                                // bound nor the climb (both for one bump) looks.
+                                let side = |z: [f64; 2]| {
+                                    (y[0] - x[0]) * (z[1] - x[1]) - (y[1] - x[1]) * (z[0] - x[0])
+                                };
+                                let lobes = [q1.1, Some(m), q3.1];
+                                let seen = |positive: bool| {
+                                    (0..3).any(|i| {
+                                        lobes[i].is_some_and(|z| (side(z) > 0.0) == positive)
+                                            && sampled[i] > TWO_BUMPS_FLOOR * self.chord_tol
+                                    })
+                                };
                                 quarter_uneven
+                                    || (seen(true) && seen(false))
                                     || measured_deviation(&deviation, sampled, self.chord_tol)
                                         > self.chord_tol
                             }
@@ -480,81 +501,6 @@ fn polygon_crossing(a: f64, b: f64, c: &[f64], err: f64) -> f64 {
         (c[i] / (c[i] - c[i + 1])).clamp(0.0, 1.0)
     };
     a + (b - a) * (i as f64 + w) / n as f64
-}
-
-/// Below this fraction of the tolerance at the quarter points, an arc is taken to be within
-/// it without further samples: its image is a single bump between the chord's ends (the fold
-/// and `UNEVEN` tests halve anything else), and the image of either half of the parameter
-/// holds at least 1/(1 + UNEVEN) of it, so the middle sample sits at a fraction in [0.2, 0.8]
-/// of the bump, where a parabolic bump has at least 0.64 of its peak.
-const UNSEEN_PEAK: f64 = 0.5;
-
-/// Parabolic steps toward the largest deviation of an arc from its chord, after the samples
-/// at the quarter points.
-const DEVIATION_STEPS: usize = 4;
-
-/// The steps stop when a step changes the deviation by less than this fraction of the
-/// tolerance.
-const DEVIATION_CONVERGED: f64 = 0.01;
-
-/// The largest deviation of an arc from its chord, measured rather than assumed from three
-/// samples when they come near the tolerance: `sampled` holds `deviation` at `w` = 1/4, 1/2,
-/// 3/4 (it is 0 at both ends), and successive parabolic interpolation climbs from the largest
-/// toward the maximum between its neighbours, the last step's change added for what the
-/// climb leaves. Returns as soon as the tolerance is exceeded (the segment is halved anyway).
-fn measured_deviation(deviation: &dyn Fn(f64) -> f64, sampled: [f64; 3], tol: f64) -> f64 {
-    let k = (0..3).fold(0, |k, i| if sampled[i] > sampled[k] { i } else { k });
-    let mut best = sampled[k];
-    if best > tol || best <= UNSEEN_PEAK * tol {
-        return best;
-    }
-    // A bracket (w, f) around the largest sample: its neighbours, the chord's ends giving 0.
-    let at = |i: usize| match i {
-        0 => (0.0, 0.0),
-        4 => (1.0, 0.0),
-        i => (0.25 * i as f64, sampled[i - 1]),
-    };
-    let (mut lo, mut mid, mut hi) = (at(k), at(k + 1), at(k + 2));
-    // What the last step changed: about what the climb leaves unmeasured when it stops.
-    let mut left = tol;
-    for _ in 0..DEVIATION_STEPS {
-        // Vertex of the parabola through the three points.
-        let (d1, d2) = (mid.0 - lo.0, mid.0 - hi.0);
-        let (g1, g2) = (mid.1 - lo.1, mid.1 - hi.1);
-        let den = d1 * g2 - d2 * g1;
-        if den == 0.0 {
-            break;
-        }
-        let w = mid.0 - 0.5 * (d1 * d1 * g2 - d2 * d2 * g1) / den;
-        if !(w > lo.0 && w < hi.0) || w == mid.0 {
-            break;
-        }
-        let f = deviation(w);
-        best = best.max(f);
-        if best > tol {
-            return best;
-        }
-        let gain = (f - mid.1).abs();
-        left = gain;
-        // Keep the larger of the new point and the middle as the middle of the bracket.
-        if f >= mid.1 {
-            if w < mid.0 {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-            mid = (w, f);
-        } else if w < mid.0 {
-            lo = (w, f);
-        } else {
-            hi = (w, f);
-        }
-        if gain < DEVIATION_CONVERGED * tol {
-            break;
-        }
-    }
-    // The maximum may lie above the best sample by about the last step's change.
-    best + left.max(DEVIATION_CONVERGED * tol)
 }
 
 enum Class {

@@ -12,6 +12,7 @@
 
 mod assemble;
 mod bisector;
+mod deviation;
 mod error;
 mod extract;
 mod patch;

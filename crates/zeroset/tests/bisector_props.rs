@@ -418,3 +418,38 @@ proptest! {
         run_self_on(&p, bsp(3, &p), Some(side(left[0])))?;
     }
 }
+
+/// A NURBS self-bisector with an S-shaped arc beside a pole: the chord between two vertices
+/// crosses the arc, which strays 1.15 tolerances on its far side with the peak near 7/8 of
+/// the segment. The parabola through the samples at 1/2, 3/4 and 1 put the peak at the 3/4
+/// sample and its step's small gain had ended the climb there (missing 1 of 217 points).
+#[test]
+fn a_skewed_deviation_between_samples_is_measured() {
+    let a = [
+        0.05258377352093078,
+        0.3695672624106853,
+        0.7357175609105328,
+        -0.570092156130914,
+        -0.5513672842285983,
+        0.9373818196920634,
+        0.29530675567597325,
+        -0.78925090519518,
+        -0.09638535646462291,
+        0.8050449257657056,
+        0.09001597431971636,
+        -0.9443567557070487,
+        0.0,
+        -0.5117191943844134,
+    ];
+    let w = [
+        1.7802999909839892,
+        0.5540554256020749,
+        1.5934767761175965,
+        1.869644107669878,
+        0.8020836892249443,
+        0.8327349571388244,
+        0.5,
+    ];
+    let p = pts(&a);
+    run_self(&p, nurbs(&p, &w)).unwrap();
+}

@@ -31,10 +31,13 @@ mod candidates;
 mod certificate;
 mod curvature;
 mod error;
+mod fans;
 mod fit;
 mod pairs;
 mod sites;
 mod stretches;
+#[cfg(test)]
+mod test_shapes;
 
 pub use error::{Error, Result};
 pub use fit::EdgeSpline;

@@ -8,8 +8,11 @@
 //! strays from them (its sag), so the distance from a cell's centre to it is known to
 //! within the sag; the distance from any point of the cell to within half the cell's
 //! diagonal more (distances are 1-Lipschitz). Halving a cell tightens its bounds until its
-//! size is that of the sag.
+//! size is that of the sag. Where more than two segments stay, those whose normal fans miss
+//! the cell go too ([`crate::fans`]): beside a smooth boundary the distances part its short
+//! segments too slowly for halving to.
 
+use crate::fans::Fan;
 use crate::sites::EMPTY_SLACK;
 use curve::{distance_to_segment, squared_distance_to_segment, ParamCurve, Profile};
 use std::collections::HashSet;
@@ -69,10 +72,12 @@ struct Site {
     /// No point of the segment lies farther than this from its chords, nor any point of a
     /// chord from the segment.
     sag: f64,
+    /// Where it can hold a nearest point (`None`: anywhere).
+    fan: Option<Fan>,
 }
 
 impl Site {
-    fn new(boundary: &Profile, k: usize, i: usize) -> Self {
+    fn new(boundary: &Profile, k: usize, i: usize, fan: Option<Fan>) -> Self {
         let pieces = boundary.segments()[i].curve().exact_pieces().hom;
         let per_piece = CHORDS.div_ceil(pieces.pieces());
         let pieces = pieces.subdivided(per_piece);
@@ -104,6 +109,7 @@ impl Site {
             bounds: boundary.segment_box(i),
             points,
             sag,
+            fan,
         }
     }
 
@@ -127,10 +133,16 @@ pub(crate) fn neighbours(boundaries: &[&Profile], size: f64, root: [f64; 4]) -> 
     if total < FEW_SEGMENTS {
         return Neighbours::All;
     }
+    let origin = [0.5 * (root[0] + root[2]), 0.5 * (root[1] + root[3])];
     let all: Vec<Site> = boundaries
         .iter()
         .enumerate()
-        .flat_map(|(k, b)| (0..b.segments().len()).map(move |i| Site::new(b, k, i)))
+        .flat_map(|(k, b)| {
+            Fan::of_all(b, origin)
+                .into_iter()
+                .enumerate()
+                .map(move |(i, fan)| Site::new(b, k, i, fan))
+        })
         .collect();
     // The bounds carry rounding of ~1e-16 of the coordinates; a disk empty to the axis's
     // slack still counts as empty, so a segment that far beyond the nearest is kept.
@@ -165,6 +177,12 @@ pub(crate) fn neighbours(boundaries: &[&Profile], size: f64, root: [f64; 4]) -> 
             .filter(|(least, _)| *least <= reach + slack)
             .map(|&(_, s)| s)
             .collect();
+        // Beside a smooth boundary distances part its segments slowly (module docs of
+        // `fans`): those that cannot hold a nearest point of the cell go. (Two or fewer make
+        // at most one pair, kept without halving: not worth the test.)
+        if kept.len() > 2 {
+            kept.retain(|&s| all[s].fan.as_ref().is_none_or(|f| f.may_hold_foot(cell)));
+        }
         kept.sort_unstable();
         // A cell smaller than the sag of its segments gains little by halving: its bounds
         // are that loose.
@@ -217,71 +235,23 @@ fn box_gap(a: [f64; 4], b: [f64; 4]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_shapes::{spline_star, star};
     use crate::{axis_of, MedialOptions};
-    use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
     use proptest::prelude::*;
-
-    /// A closed chain of cubic Béziers round a star (corners at the joints), with round
-    /// holes near its middle where they fit.
-    fn star(radii: &[f64], wobble: &[f64], holes: &[([f64; 2], f64)]) -> Option<Region> {
-        let n = radii.len();
-        let joints: Vec<V2> = (0..n)
-            .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
-            .collect();
-        let segs = (0..n)
-            .map(|i| {
-                let (a, b) = (joints[i], joints[(i + 1) % n]);
-                let w = wobble[i];
-                let pts = [
-                    a.arr(),
-                    (a + (b - a) * 0.3 + (b - a).perp() * w).arr(),
-                    (a + (b - a) * 0.7 - (b - a).perp() * w).arr(),
-                    b.arr(),
-                ];
-                let c = SplineCurve::clamped(3, &pts, None, None).ok()?;
-                Segment::spline(SegmentKind::Bezier, c).ok()
-            })
-            .collect::<Option<Vec<_>>>()?;
-        let outer = Profile::new(segs, None).ok()?;
-        let mut kept = Vec::new();
-        for &(c, r) in holes {
-            let hole = Profile::new(
-                vec![Segment::arc(c, r, 0.0, std::f64::consts::TAU).ok()?],
-                None,
-            )
-            .ok()?;
-            let mut trial = kept.clone();
-            trial.push(hole);
-            if Region::new(outer.clone(), trial.clone()).is_ok() {
-                kept = trial;
-            }
-        }
-        Region::new(outer, kept).ok()
-    }
-
-    /// A closed cubic B-spline through control points round a star, clamped (one segment
-    /// of many spans, cut at its knots for the bisectors).
-    fn spline_star(radii: &[f64]) -> Option<Region> {
-        let n = radii.len();
-        let pts: Vec<[f64; 2]> = (0..n)
-            .map(|i| (V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i]).arr())
-            .collect();
-        let periodic = SplineCurve::periodic(3, &pts, None).ok()?;
-        let (a, b) = curve::ParamCurve::domain(&periodic);
-        let clamped = SplineCurve::new(periodic.curve().restrict(a, b).ok()?).ok()?;
-        let seg = Segment::spline(SegmentKind::BSpline, clamped).ok()?;
-        Region::new(Profile::new(vec![seg], Some(true)).ok()?, vec![]).ok()
-    }
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
 
-        /// The same on one B-spline of many spans, cut at its knots.
+        /// The same on one B-spline of many spans, cut at its knots (polynomial or rational:
+        /// the fans of rational spans are built on their homogeneous form).
         #[test]
         fn pruned_pairs_of_spans_give_the_same_axis(
             radii in proptest::collection::vec(1.0f64..1.6, 10..24),
+            weights in proptest::collection::vec(0.4f64..2.5, 24),
+            rational in any::<bool>(),
         ) {
-            let Some(region) = spline_star(&radii) else { return Ok(()) };
+            let w = rational.then_some(&weights[..radii.len()]);
+            let Some(region) = spline_star(&radii, w) else { return Ok(()) };
             let opts = MedialOptions::default();
             let pruned = axis_of(&region, &opts, true).unwrap();
             let every = axis_of(&region, &opts, false).unwrap();

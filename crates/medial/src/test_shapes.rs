@@ -1,0 +1,56 @@
+//! Regions the unit tests share: stars of cubic Béziers with corners and round holes, and
+//! closed B-splines round a star.
+
+use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
+
+/// A closed chain of cubic Béziers round a star (corners at the joints), with round
+/// holes near its middle where they fit.
+pub(crate) fn star(radii: &[f64], wobble: &[f64], holes: &[([f64; 2], f64)]) -> Option<Region> {
+    let n = radii.len();
+    let joints: Vec<V2> = (0..n)
+        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
+        .collect();
+    let segs = (0..n)
+        .map(|i| {
+            let (a, b) = (joints[i], joints[(i + 1) % n]);
+            let w = wobble[i];
+            let pts = [
+                a.arr(),
+                (a + (b - a) * 0.3 + (b - a).perp() * w).arr(),
+                (a + (b - a) * 0.7 - (b - a).perp() * w).arr(),
+                b.arr(),
+            ];
+            let c = SplineCurve::clamped(3, &pts, None, None).ok()?;
+            Segment::spline(SegmentKind::Bezier, c).ok()
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let outer = Profile::new(segs, None).ok()?;
+    let mut kept = Vec::new();
+    for &(c, r) in holes {
+        let hole = Profile::new(
+            vec![Segment::arc(c, r, 0.0, std::f64::consts::TAU).ok()?],
+            None,
+        )
+        .ok()?;
+        let mut trial = kept.clone();
+        trial.push(hole);
+        if Region::new(outer.clone(), trial.clone()).is_ok() {
+            kept = trial;
+        }
+    }
+    Region::new(outer, kept).ok()
+}
+
+/// A closed cubic B-spline through control points round a star, clamped (one segment
+/// of many spans, cut at its knots for the bisectors).
+pub(crate) fn spline_star(radii: &[f64], weights: Option<&[f64]>) -> Option<Region> {
+    let n = radii.len();
+    let pts: Vec<[f64; 2]> = (0..n)
+        .map(|i| (V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i]).arr())
+        .collect();
+    let periodic = SplineCurve::periodic(3, &pts, weights).ok()?;
+    let (a, b) = curve::ParamCurve::domain(&periodic);
+    let clamped = SplineCurve::new(periodic.curve().restrict(a, b).ok()?).ok()?;
+    let seg = Segment::spline(SegmentKind::BSpline, clamped).ok()?;
+    Region::new(Profile::new(vec![seg], Some(true)).ok()?, vec![]).ok()
+}

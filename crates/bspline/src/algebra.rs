@@ -80,41 +80,37 @@ fn product(a: &BSpline, b: &BSpline, form: &Bilinear<'_>) -> Result<BSpline> {
     } else {
         b
     };
-    let (p, q) = (a.degree(), b.degree());
-    let deg = p + q;
+    let deg = a.degree() + b.degree();
+    let dout = form.out_dim;
+    // One piece: its Bernstein coefficients are the B-spline coefficients on the clamped
+    // knots, as the blossoms below would give them (less their rounding).
+    let one_piece = |coefs: Vec<f64>| {
+        let mut knots = vec![lo; deg + 1];
+        knots.extend(std::iter::repeat_n(hi, deg + 1));
+        BSpline::from_raw(deg, dout, knots, coefs)
+    };
+    if a.is_clamped_bezier() && b.is_clamped_bezier() {
+        // (Their coefficients are their Bernstein coefficients already.)
+        let whole = |f: &BSpline| Bezier {
+            a: lo,
+            b: hi,
+            degree: f.degree(),
+            dim: f.dim(),
+            coefs: f.coefs().to_vec(),
+        };
+        return Ok(one_piece(bezier_product(&whole(a), &whole(b), form).coefs));
+    }
     let breaks = union_breaks(a, b);
     let pa = a.bezier_pieces_at(&breaks);
     let pb = b.bezier_pieces_at(&breaks);
-    let (da, db, dout) = (a.dim(), b.dim(), form.out_dim);
-
-    // Product of Bézier pieces: h_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) f_i g_j.
-    let (cp, cq, cd) = (binomials(p), binomials(q), binomials(deg));
-    let pieces: Vec<Bezier> = pa
+    let mut pieces: Vec<Bezier> = pa
         .iter()
         .zip(&pb)
-        .map(|(fa, fb)| {
-            let mut h = vec![0.0; (deg + 1) * dout];
-            for i in 0..=p {
-                let ai = &fa.coefs[i * da..(i + 1) * da];
-                for j in 0..=q {
-                    let bj = &fb.coefs[j * db..(j + 1) * db];
-                    let w = cp[i] * cq[j] / cd[i + j];
-                    let hk = &mut h[(i + j) * dout..(i + j + 1) * dout];
-                    for &(ia, ib, k, c) in form.terms {
-                        hk[k] += w * c * ai[ia] * bj[ib];
-                    }
-                }
-            }
-            Bezier {
-                a: fa.a,
-                b: fa.b,
-                degree: deg,
-                dim: dout,
-                coefs: h,
-            }
-        })
+        .map(|(fa, fb)| bezier_product(fa, fb, form))
         .collect();
-
+    if pieces.len() == 1 {
+        return Ok(one_piece(pieces.swap_remove(0).coefs));
+    }
     // Minimal knot vector: continuity of the product is the smaller of the factors'.
     let mut knots = vec![lo; deg + 1];
     for &x in &breaks[1..breaks.len() - 1] {
@@ -124,6 +120,33 @@ fn product(a: &BSpline, b: &BSpline, form: &Bilinear<'_>) -> Result<BSpline> {
     }
     knots.extend(std::iter::repeat_n(hi, deg + 1));
     Ok(from_pieces(deg, dout, knots, &breaks, &pieces))
+}
+
+/// The product of two Bézier pieces on one interval, combined by `form`:
+/// `h_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) f_i g_j`.
+fn bezier_product(fa: &Bezier, fb: &Bezier, form: &Bilinear<'_>) -> Bezier {
+    let (p, q, da, db, dout) = (fa.degree, fb.degree, fa.dim, fb.dim, form.out_dim);
+    let deg = p + q;
+    let (cp, cq, cd) = (binomials(p), binomials(q), binomials(deg));
+    let mut h = vec![0.0; (deg + 1) * dout];
+    for i in 0..=p {
+        let ai = &fa.coefs[i * da..(i + 1) * da];
+        for j in 0..=q {
+            let bj = &fb.coefs[j * db..(j + 1) * db];
+            let w = cp[i] * cq[j] / cd[i + j];
+            let hk = &mut h[(i + j) * dout..(i + j + 1) * dout];
+            for &(ia, ib, k, c) in form.terms {
+                hk[k] += w * c * ai[ia] * bj[ib];
+            }
+        }
+    }
+    Bezier {
+        a: fa.a,
+        b: fa.b,
+        degree: deg,
+        dim: dout,
+        coefs: h,
+    }
 }
 
 /// B-spline coefficients on `knots` of the piecewise polynomial given by `pieces` (one per
@@ -289,6 +312,9 @@ impl BSpline {
         if times == 0 {
             return self.clone();
         }
+        if self.is_clamped_bezier() {
+            return self.elevated_bezier(times);
+        }
         let (a, b) = self.domain();
         // The product with the constant 1 of degree `times` is exactly the degree elevation.
         match BSpline::constant(&[1.0], times, a, b).and_then(|one| one.mul(self)) {
@@ -297,9 +323,48 @@ impl BSpline {
         }
     }
 
+    /// Whether the spline is one polynomial piece on clamped knots: its coefficients are
+    /// then its Bernstein coefficients on its domain.
+    fn is_clamped_bezier(&self) -> bool {
+        let (p, k) = (self.degree(), self.knots());
+        self.n_ctrl() == p + 1 && k[0] == k[p] && k[p + 1] == k[2 * p + 1]
+    }
+
+    /// [`BSpline::elevate`] of a clamped Bézier: `c'_k = Σ_i C(p, i) C(t, k − i) / C(p + t, k)
+    /// c_i`, the product with the constant 1 of degree `t` without the general product's
+    /// passes.
+    fn elevated_bezier(&self, times: usize) -> BSpline {
+        let (p, dim) = (self.degree(), self.dim());
+        let deg = p + times;
+        let (cp, ct, cd) = (binomials(p), binomials(times), binomials(deg));
+        let mut coefs = vec![0.0; (deg + 1) * dim];
+        for i in 0..=p {
+            let ci = self.ctrl(i);
+            for j in 0..=times {
+                let w = cp[i] * ct[j] / cd[i + j];
+                let out = &mut coefs[(i + j) * dim..(i + j + 1) * dim];
+                for (o, &c) in out.iter_mut().zip(ci) {
+                    *o += w * c;
+                }
+            }
+        }
+        let (lo, hi) = self.domain();
+        let mut knots = vec![lo; deg + 1];
+        knots.extend(std::iter::repeat_n(hi, deg + 1));
+        BSpline::from_raw(deg, dim, knots, coefs)
+    }
+
     /// Brings two functions into one spline space (common degree, merged knot vector).
     pub fn harmonize(&self, other: &BSpline) -> Result<(BSpline, BSpline)> {
         let (lo, hi) = check_same_domain(self, other)?;
+        if self.is_clamped_bezier() && other.is_clamped_bezier() && other.domain() == (lo, hi) {
+            // One span each, on the same interval: the common space is the higher degree's.
+            let deg = self.degree().max(other.degree());
+            return Ok((
+                self.elevate(deg - self.degree()),
+                other.elevate(deg - other.degree()),
+            ));
+        }
         let other = if other.domain() != (lo, hi) {
             other.reparam(lo, hi)?
         } else {

@@ -95,6 +95,28 @@ proptest! {
         }
     }
 
+    /// One span each (the fast paths of product, elevation and a common space): the same
+    /// functions pointwise, and one space for both.
+    #[test]
+    fn one_span_algebra_matches_pointwise((a, b) in pair(6, 0, 1, 2), t in 0usize..4) {
+        let h = a.mul(&b).unwrap();
+        let e = b.elevate(t);
+        let (ha, hb) = a.harmonize(&b).unwrap();
+        prop_assert_eq!(h.degree(), a.degree() + b.degree());
+        prop_assert_eq!(e.degree(), b.degree() + t);
+        prop_assert_eq!(ha.degree(), a.degree().max(b.degree()));
+        prop_assert_eq!(ha.knots(), hb.knots());
+        let scale = a.max_abs_coef() * b.max_abs_coef().max(1.0);
+        for u in sample_params(&h, 30) {
+            prop_assert!(close(ha.eval(u)[0], a.eval(u)[0], a.max_abs_coef(), TOL));
+            for k in 0..2 {
+                prop_assert!(close(h.eval(u)[k], a.eval(u)[0] * b.eval(u)[k], scale, TOL));
+                prop_assert!(close(e.eval(u)[k], b.eval(u)[k], b.max_abs_coef(), TOL));
+                prop_assert!(close(hb.eval(u)[k], b.eval(u)[k], b.max_abs_coef(), TOL));
+            }
+        }
+    }
+
     #[test]
     fn elevation_keeps_function_and_continuity(f in spline(5, 12, 2), t in 1usize..4) {
         let g = f.elevate(t);

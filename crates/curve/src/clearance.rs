@@ -201,6 +201,9 @@ impl Profile {
             let dim = pieces.dim();
             let given = seg.curve().curve().coefficient_error();
             for k in 0..pieces.pieces() {
+                if box_distance(self.piece_box(i, k), x) >= r {
+                    continue;
+                }
                 let (lo, hi) = pieces.piece_span(k);
                 pending.push(pieces.piece(k), lo, hi, 0);
                 let err = coefficient_error(pieces, k, given);
@@ -285,6 +288,9 @@ impl Profile {
             let dim = pieces.dim();
             let given = seg.curve().curve().coefficient_error();
             for k in 0..pieces.pieces() {
+                if box_distance(self.piece_box(i, k), x) >= r {
+                    continue;
+                }
                 let coefs = pieces.piece(k);
                 let err = coefficient_error(pieces, k, given);
                 let (lo, hi) = pieces.piece_span(k);
@@ -309,6 +315,46 @@ impl Profile {
         }
         best.map(|(_, distance, u)| Clearance::Entered { u, distance })
     }
+}
+
+/// Per Bézier piece of `seg`, the box of its Euclidean control points grown by the room their
+/// rounding may take ([`Errors::room`]): the piece lies in it, so a disk farther from it
+/// holds no point of the piece. Unbounded where a weight may not be positive.
+pub(crate) fn piece_boxes(seg: &Segment) -> Vec<[f64; 4]> {
+    let pieces = seg.curve().bezier_pieces();
+    let given = seg.curve().curve().coefficient_error();
+    let dim = pieces.dim();
+    (0..pieces.pieces())
+        .map(|k| {
+            let err = coefficient_error(pieces, k, given);
+            let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+            let mut w_min = f64::INFINITY;
+            for c in pieces.piece(k).chunks_exact(dim) {
+                w_min = w_min.min(c[2]);
+                for j in 0..2 {
+                    let v = c[j] / c[2];
+                    lo[j] = lo[j].min(v);
+                    hi[j] = hi[j].max(v);
+                }
+            }
+            if w_min.is_nan()
+                || w_min <= 2.0 * err.weight
+                || lo.iter().chain(&hi).any(|v| v.is_nan())
+            {
+                return [
+                    f64::NEG_INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::INFINITY,
+                    f64::INFINITY,
+                ];
+            }
+            let mag = lo.iter().chain(&hi).fold(0.0f64, |m, v| m.max(v.abs()));
+            // (The centre's own size enters the disk test's rounding: a box distance is
+            // computed from it, which `box_distance` rounds by a few units of it at most.)
+            let room = 2.0 * err.room(w_min, mag, 0);
+            [lo[0] - room, lo[1] - room, hi[0] + room, hi[1] + room]
+        })
+        .collect()
 }
 
 /// The profile parameters a clearance looks at: one or two closed intervals.

@@ -65,6 +65,9 @@ pub struct Profile {
     /// Per segment, the box of its control points (`[lo x, lo y, hi x, hi y]`): it holds
     /// the segment, and bounds the distance from a point to it from below.
     boxes: Vec<[f64; 4]>,
+    /// Per segment and Bézier piece, the box of the piece's Euclidean control points grown by
+    /// what their rounding may hide: the disk tests pass over the pieces it keeps far.
+    piece_boxes: Vec<Vec<[f64; 4]>>,
     /// Per segment, a polyline within the crossing test's flatness of it: the profile's
     /// own crossings and a region's tests of its boundaries (crossings, nesting) share it.
     polylines: Vec<Vec<V2>>,
@@ -168,6 +171,7 @@ impl Profile {
             });
         }
         let boxes = segments.iter().map(control_box).collect();
+        let piece_boxes = segments.iter().map(crate::clearance::piece_boxes).collect();
         Ok(Self {
             segments,
             closed,
@@ -175,6 +179,7 @@ impl Profile {
             orientation,
             size,
             boxes,
+            piece_boxes,
             polylines,
         })
     }
@@ -189,6 +194,12 @@ impl Profile {
     /// segment (its weights are positive).
     pub fn segment_box(&self, i: usize) -> [f64; 4] {
         self.boxes[i]
+    }
+
+    /// The box of Bézier piece `k` of segment `i`, grown by what the rounding of its
+    /// Euclidean control points may hide (see [`crate::clearance`]).
+    pub(crate) fn piece_box(&self, i: usize, k: usize) -> [f64; 4] {
+        self.piece_boxes[i][k]
     }
 
     /// The diagonal of the box of the segments' control points: the scale of the profile's

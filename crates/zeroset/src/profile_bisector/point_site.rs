@@ -143,6 +143,23 @@ pub(crate) fn corner_corner(c1: &Corner, c2: &Corner, reach: &Reach) -> Option<[
     })
 }
 
+/// A function constant on every piece (a polynomial curve's weight) as pieces of degree 0
+/// on the same breaks, with the same error bounds.
+fn constant_of(w: &Piecewise) -> Result<Piecewise> {
+    let n = w.pieces();
+    let coefs = (0..n).map(|i| w.piece(i)[0]).collect();
+    let err = (0..n).map(|i| w.error(i)).collect();
+    let smooth = (0..=n).map(|_| i32::MAX).collect();
+    Ok(Piecewise::from_parts(
+        0,
+        1,
+        w.breaks().to_vec(),
+        coefs,
+        err,
+        smooth,
+    )?)
+}
+
 /// `E`, `Num`, `Num·a`, `Num·b` and `w` on each Bézier piece of the curve (the shared end's
 /// piece with the double root divided out).
 struct Parts {
@@ -166,6 +183,9 @@ impl Parts {
         let hom = Piecewise::from_bspline_with_error(c.homogeneous(), c.coefficient_error());
         let h = hom.components(&[0, 1])?;
         let w = hom.components(&[2])?;
+        // A polynomial curve's weight is one constant: as a constant, `q = W h'` keeps the
+        // degree of `h'` (held at `h`'s degree it would raise every part below by `p`).
+        let w = if c.is_rational() { w } else { constant_of(&w)? };
         let q = w.mul(&h.derivative())?.sub(&w.derivative().mul(&h)?)?;
         let e = h.cross(&q)?;
         let jq = Piecewise::stack(&[&q.components(&[1])?.scale(-1.0), &q.components(&[0])?])?;

@@ -177,7 +177,10 @@ impl Profile {
         order.sort_by(|a, b| a.0.total_cmp(&b.0));
         // Most disks a caller tests are entered deep: the ends of the Bézier pieces (points
         // of the curve) mostly show it at once, and the deepest of them is the best witness.
-        if let Some(entered) = self.deepest_piece_end(x, r, &order, window) {
+        // A piece box's distance rounds by a few units of the centre's and the radius's size,
+        // which the boxes' own growth (their coordinates' size) does not cover.
+        let far = r + ROUNDING_ULPS * f64::EPSILON * x.x.abs().max(x.y.abs()).max(r);
+        if let Some(entered) = self.deepest_piece_end(x, r, far, &order, window) {
             return entered;
         }
         for (_, i) in order {
@@ -201,7 +204,7 @@ impl Profile {
             let dim = pieces.dim();
             let given = seg.curve().curve().coefficient_error();
             for k in 0..pieces.pieces() {
-                if box_distance(self.piece_box(i, k), x) >= r {
+                if box_distance(self.piece_box(i, k), x) >= far {
                     continue;
                 }
                 let (lo, hi) = pieces.piece_span(k);
@@ -273,11 +276,12 @@ impl Profile {
 impl Profile {
     /// Of the ends of the Bézier pieces of the segments `order` (within `window`), the
     /// nearest `x`, if it lies inside the disk of radius `r` past the rounding of its
-    /// coordinates.
+    /// coordinates; pieces whose boxes are `far` from `x` are passed over.
     fn deepest_piece_end(
         &self,
         x: V2,
         r: f64,
+        far: f64,
         order: &[(f64, usize)],
         window: Option<&Window>,
     ) -> Option<Clearance> {
@@ -288,7 +292,7 @@ impl Profile {
             let dim = pieces.dim();
             let given = seg.curve().curve().coefficient_error();
             for k in 0..pieces.pieces() {
-                if box_distance(self.piece_box(i, k), x) >= r {
+                if box_distance(self.piece_box(i, k), x) >= far {
                     continue;
                 }
                 let coefs = pieces.piece(k);
@@ -349,8 +353,8 @@ pub(crate) fn piece_boxes(seg: &Segment) -> Vec<[f64; 4]> {
                 ];
             }
             let mag = lo.iter().chain(&hi).fold(0.0f64, |m, v| m.max(v.abs()));
-            // (The centre's own size enters the disk test's rounding: a box distance is
-            // computed from it, which `box_distance` rounds by a few units of it at most.)
+            // (The rounding of a box's distance from a centre, a few units of the centre's
+            // and the radius's size, is allowed for where the box is used.)
             let room = 2.0 * err.room(w_min, mag, 0);
             [lo[0] - room, lo[1] - room, hi[0] + room, hi[1] + room]
         })

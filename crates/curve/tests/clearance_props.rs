@@ -322,3 +322,19 @@ fn check_disks(
     prop_assert!(decided > 0 || gap < 1e3 * rounding);
     Ok(())
 }
+
+/// A disk far larger than the profile, its circle passing a fraction of an ulp of its radius
+/// beyond a side: the distance from its centre to a piece's box rounds by units of the
+/// radius, not of the box's coordinates, and the side's point inside must not be passed over
+/// (it was called clear when the box test allowed for the box's size only).
+#[test]
+fn a_huge_disk_grazing_a_side_is_not_called_clear() {
+    let p = -0.75 * 2f64.powi(-33);
+    let c = [[-1.0, p], [1.0, p], [0.0, -1.0]];
+    let sides = (0..3)
+        .map(|i| Segment::line(c[i], c[(i + 1) % 3]).unwrap())
+        .collect();
+    let triangle = Profile::new(sides, None).unwrap();
+    let verdict = triangle.clearance([0.0, 1e6], 1e6 + 2f64.powi(-33));
+    assert_ne!(verdict, Clearance::Clear);
+}

@@ -130,8 +130,16 @@ impl Fan {
         // behind along the one after (G ≤ 0 at its start): the two conditions are tested on
         // the cell apart (a box meeting both half-planes may miss their wedge: kept).
         let (first, last) = (&self.pieces[0], &self.pieces[self.pieces.len() - 1]);
-        let ahead = |c: &Coefficient| range(c).1 >= 0.0;
-        let behind = |c: &Coefficient| range(c).0 <= 0.0;
+        // (Written so that a NaN, from coefficients past the range of doubles, keeps the
+        // segment: nothing is proven there.)
+        let ahead = |c: &Coefficient| {
+            let hi = range(c).1;
+            hi.is_nan() || hi >= 0.0
+        };
+        let behind = |c: &Coefficient| {
+            let lo = range(c).0;
+            lo.is_nan() || lo <= 0.0
+        };
         if self.corner[0].is_some_and(|before| ahead(&before) && behind(&first[0]))
             || self.corner[1].is_some_and(|after| ahead(&last[last.len() - 1]) && behind(&after))
         {
@@ -143,8 +151,8 @@ impl Fan {
             let (mut up, mut down) = (false, false);
             piece.iter().any(|c| {
                 let (lo, hi) = range(c);
-                up |= hi >= 0.0;
-                down |= lo <= 0.0;
+                up |= hi.is_nan() || hi >= 0.0;
+                down |= lo.is_nan() || lo <= 0.0;
                 up && down
             })
         })

@@ -15,6 +15,7 @@
 //! `3p − 1` whose Bernstein coefficients `(A_k, B_k)` are affine in `x`: over a box each
 //! ranges over an interval, and where all are of one sign, so is `G`.
 
+use bspline::Piecewise;
 use curve::Profile;
 
 /// Half-width of the band about zero in which a coefficient's sign is not trusted, relative to
@@ -79,30 +80,35 @@ impl Fan {
     /// The fan of segment `i` of `boundary` (no corners yet).
     fn of(boundary: &Profile, i: usize, origin: [f64; 2]) -> Option<Fan> {
         let hom = boundary.segments()[i].curve().exact_pieces().hom;
-        let mut pieces = Vec::with_capacity(hom.pieces());
-        for k in 0..hom.pieces() {
-            let c = hom.piece(k);
-            if c.chunks_exact(3).any(|p| p[2].is_nan() || p[2] <= 0.0) {
-                return None;
-            }
-            let x: Vec<f64> = c.chunks_exact(3).map(|p| p[0] - origin[0] * p[2]).collect();
-            let y: Vec<f64> = c.chunks_exact(3).map(|p| p[1] - origin[1] * p[2]).collect();
-            let w: Vec<f64> = c.chunks_exact(3).map(|p| p[2]).collect();
-            let (dx, dy, dw) = (derivative(&x), derivative(&y), derivative(&w));
-            // q = P'W − PW', A = W q, B = P·q.
-            let qx = difference(&product(&dx, &w), &product(&x, &dw));
-            let qy = difference(&product(&dy, &w), &product(&y, &dw));
-            let (ax, ay) = (product(&w, &qx), product(&w, &qy));
-            let b = sum(&product(&x, &qx), &product(&y, &qy));
-            pieces.push(
-                (0..b.len())
-                    .map(|k| Coefficient {
-                        a: [ax[k], ay[k]],
-                        b: b[k],
-                    })
-                    .collect(),
-            );
+        let weights_positive = (0..hom.pieces()).all(|k| {
+            hom.piece(k)
+                .chunks_exact(3)
+                .all(|p| !p[2].is_nan() && p[2] > 0.0)
+        });
+        if !weights_positive {
+            return None;
         }
+        // P relative to the origin (X − o W), q = P'W − PW', A = W q, B = P·q.
+        let w = hom.components(&[2]).ok()?;
+        let along = |c: usize| -> Option<Piecewise> {
+            hom.components(&[c]).ok()?.lincomb(1.0, &w, -origin[c]).ok()
+        };
+        let p = Piecewise::stack(&[&along(0)?, &along(1)?]).ok()?;
+        let q = w
+            .mul(&p.derivative())
+            .ok()?
+            .sub(&w.derivative().mul(&p).ok()?)
+            .ok()?;
+        let (a, b) = (w.mul(&q).ok()?, p.dot(&q).ok()?);
+        let pieces = (0..b.pieces())
+            .map(|k| {
+                a.piece(k)
+                    .chunks_exact(2)
+                    .zip(b.piece(k))
+                    .map(|(a, &b)| Coefficient { a: [a[0], a[1]], b })
+                    .collect()
+            })
+            .collect();
         Some(Fan {
             origin,
             pieces,
@@ -157,40 +163,6 @@ impl Fan {
             })
         })
     }
-}
-
-/// Bernstein coefficients of the derivative, on the same interval as the coefficients `c`
-/// are given on (its length folded in by the caller's sign tests: any positive factor does).
-fn derivative(c: &[f64]) -> Vec<f64> {
-    let p = (c.len() - 1) as f64;
-    if c.len() < 2 {
-        return vec![0.0];
-    }
-    c.windows(2).map(|w| p * (w[1] - w[0])).collect()
-}
-
-/// Bernstein coefficients of the product of two polynomials given by theirs.
-fn product(a: &[f64], b: &[f64]) -> Vec<f64> {
-    let (m, n) = (a.len() - 1, b.len() - 1);
-    let mut out = vec![0.0; m + n + 1];
-    for (i, &ai) in a.iter().enumerate() {
-        for (j, &bj) in b.iter().enumerate() {
-            out[i + j] += binomial(m, i) * binomial(n, j) / binomial(m + n, i + j) * ai * bj;
-        }
-    }
-    out
-}
-
-fn difference(a: &[f64], b: &[f64]) -> Vec<f64> {
-    a.iter().zip(b).map(|(x, y)| x - y).collect()
-}
-
-fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
-    a.iter().zip(b).map(|(x, y)| x + y).collect()
-}
-
-fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, j| acc * (n - j) as f64 / (j + 1) as f64)
 }
 
 #[cfg(test)]

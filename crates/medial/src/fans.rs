@@ -26,10 +26,10 @@ use curve::Profile;
 const UNTRUSTED: f64 = 4.0 * curve::CORNER_TURN;
 
 /// The normal fan of one segment: the coefficients of `G` per Bézier piece, in coordinates
-/// relative to `origin`, and whether each end is a corner.
+/// relative to `origin`, and at each end that is a corner the neighbour's `G` there.
 pub(crate) struct Fan {
     origin: [f64; 2],
-    /// Per piece, the coefficients `(A_k, B_k)` of `G` and their magnitudes.
+    /// Per piece, the Bernstein coefficients `(A_k, B_k)` of `G`.
     pieces: Vec<Vec<Coefficient>>,
     /// At a corner start, the last coefficient of the segment before (its `G` at the
     /// corner); at a corner end, the first of the segment after.

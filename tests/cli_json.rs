@@ -161,15 +161,7 @@ fn distance_to_branches(d: &Value, p: [f64; 2]) -> f64 {
             .map(|q| [num(&q[0]), num(&q[1])])
             .collect();
         for w in xy.windows(2) {
-            let (a, c) = (w[0], w[1]);
-            let (dx, dy) = (c[0] - a[0], c[1] - a[1]);
-            let len2 = dx * dx + dy * dy;
-            let s = if len2 > 0.0 {
-                (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            best = best.min((p[0] - a[0] - s * dx).hypot(p[1] - a[1] - s * dy));
+            best = best.min(curve::distance_to_segment(p, w[0], w[1]));
         }
     }
     best

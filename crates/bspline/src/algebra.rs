@@ -312,9 +312,6 @@ impl BSpline {
         if times == 0 {
             return self.clone();
         }
-        if self.is_clamped_bezier() {
-            return self.elevated_bezier(times);
-        }
         let (a, b) = self.domain();
         // The product with the constant 1 of degree `times` is exactly the degree elevation.
         match BSpline::constant(&[1.0], times, a, b).and_then(|one| one.mul(self)) {
@@ -328,30 +325,6 @@ impl BSpline {
     fn is_clamped_bezier(&self) -> bool {
         let (p, k) = (self.degree(), self.knots());
         self.n_ctrl() == p + 1 && k[0] == k[p] && k[p + 1] == k[2 * p + 1]
-    }
-
-    /// [`BSpline::elevate`] of a clamped Bézier: `c'_k = Σ_i C(p, i) C(t, k − i) / C(p + t, k)
-    /// c_i`, the product with the constant 1 of degree `t` without the general product's
-    /// passes.
-    fn elevated_bezier(&self, times: usize) -> BSpline {
-        let (p, dim) = (self.degree(), self.dim());
-        let deg = p + times;
-        let (cp, ct, cd) = (binomials(p), binomials(times), binomials(deg));
-        let mut coefs = vec![0.0; (deg + 1) * dim];
-        for i in 0..=p {
-            let ci = self.ctrl(i);
-            for j in 0..=times {
-                let w = cp[i] * ct[j] / cd[i + j];
-                let out = &mut coefs[(i + j) * dim..(i + j + 1) * dim];
-                for (o, &c) in out.iter_mut().zip(ci) {
-                    *o += w * c;
-                }
-            }
-        }
-        let (lo, hi) = self.domain();
-        let mut knots = vec![lo; deg + 1];
-        knots.extend(std::iter::repeat_n(hi, deg + 1));
-        BSpline::from_raw(deg, dim, knots, coefs)
     }
 
     /// Brings two functions into one spline space (common degree, merged knot vector).

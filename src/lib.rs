@@ -4,12 +4,15 @@
 //! [`curve`]: the curve model and the analytic shapes; [`zeroset`]: zero sets and bisectors;
 //! [`antipodal`]: inflections, antipodal points and common tangents; [`medial`]: the medial
 //! axis of regions). This crate adds what
-//! the `curvekit` tool needs around them: reading curve files ([`io`]) and figures ([`svg`]).
+//! the `curvekit` tool needs around them: reading curve files ([`io`]), the commands as calls on
+//! the curves read ([`commands`]: the command line, its batch mode and the Python package share
+//! them) and figures ([`svg`]).
 pub use antipodal;
 pub use bspline;
 pub use curve;
 pub use medial;
 pub use zeroset;
 
+pub mod commands;
 pub mod io;
 pub mod svg;

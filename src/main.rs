@@ -23,7 +23,7 @@ fn main() -> ExitCode {
         Ok(Ok(())) => ExitCode::SUCCESS,
         Ok(Err(failure)) => {
             eprintln!("curvekit: {}", failure.message());
-            ExitCode::from(failure.code())
+            ExitCode::from(failure.exit_code())
         }
         Err(_) => ExitCode::from(1),
     }
@@ -38,7 +38,7 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         }
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
             eprintln!(
-                "curvekit: no command given (one of: demo, antipodal, inflections, tangents, bisector; see --help)"
+                "curvekit: no command given (one of: demo, antipodal, inflections, tangents, bisector, medial, batch; see --help)"
             );
             ExitCode::from(2)
         }

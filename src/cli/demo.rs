@@ -2,9 +2,10 @@
 //! of Jia's papers and a few B-spline/NURBS curves (inflections, antipodal pairs), then the
 //! bisector figures of Elber & Kim, then part outlines with corners (`demo_profiles`).
 
-use super::report::{antipodal_figure, bisector_figure, curve_json, draw_curve, time_line};
+use super::report::{antipodal_figure, bisector_figure, draw_curve, time_line};
 use super::{demo_medial, demo_profiles, print_out, timing, write_file, Common, Failure};
 use antipodal::Inflections;
+use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, Curve};
 use curvekit::svg::Figure;
 use serde_json::{json, Value};
@@ -380,7 +381,7 @@ fn demo_json(
         .map(|r| {
             json!({
                 "name": r.name,
-                "curve": curve_json(&r.curve),
+                "curve": CurveSummary::of(&r.curve),
                 "inflections": r.inflections.as_ref().map(|x| x.as_ref().map_or_else(err, |i| json!(i.inflections))),
                 "certified": r.inflections.as_ref().and_then(|x| x.as_ref().ok()).map(|i| i.certified),
                 "pairs": r.pairs.as_ref().map(|x| x.as_ref().map_or_else(err, |n| json!(n))),
@@ -394,7 +395,7 @@ fn demo_json(
         .map(|r| {
             json!({
                 "name": r.name,
-                "curves": r.curves.iter().map(curve_json).collect::<Vec<_>>(),
+                "curves": r.curves.iter().map(CurveSummary::of).collect::<Vec<_>>(),
                 "branches": r.result.as_ref().map_or_else(err, |b| json!(b.branches.len())),
                 "svg": r.svg,
             })

@@ -2,9 +2,10 @@
 //! drawings (embedded), with their antipodal pairs (corner pairs included), families,
 //! inflections and corners.
 
-use super::report::{curve_json, profile_antipodal_figure};
+use super::report::profile_antipodal_figure;
 use super::{write_file, Common, Failure};
 use antipodal::ProfileAntipodal;
+use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, parse_drawing, Curve, DrawingFormat, Shape};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
@@ -175,7 +176,7 @@ pub(super) fn json(rows: &[ProfileRow]) -> Value {
             };
             json!({
                 "name": r.name,
-                "curve": curve_json(&r.curve),
+                "curve": CurveSummary::of(&r.curve),
                 "antipodal": result,
                 "svg": r.svg,
             })

@@ -1,9 +1,10 @@
 //! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
 
-use super::report::{draw_curve, json_doc, time_line};
+use super::report::{draw_curve, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
-use curvekit::io::{read_region, Curve, Shape};
-use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
+use curvekit::commands;
+use curvekit::io::{read_region, Curve};
+use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
 use curvekit::svg::Figure;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -24,26 +25,16 @@ pub(super) fn run(
         fit,
         exterior,
     };
-    let bisector_opts = zeroset::BisectorOptions {
-        tol: opts.tol,
-        chord_tol: opts.chord_tol,
-        ..Default::default()
-    };
-    bisector_opts
-        .validate()
-        .map_err(|e| Failure::Usage(format!("medial: {e}")))?;
+    commands::validate_medial_options(&opts)?;
     let curve = read_region(path, common.pick)?;
-    let Shape::Region(region) = &curve.shape else {
-        return Err(Failure::Other("medial: the file gave no region".into()));
-    };
-    let compute = || medial_axis(region, &opts);
-    let axis = compute().map_err(|e| Failure::Other(format!("medial: {e}")))?;
+    let compute = || commands::medial(&curve, &opts);
+    let axis = compute()?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
         write_file(svg, &axis_figure(&curve, &axis))?;
     }
     print_out(&if common.json {
-        json_doc(&axis, &[&curve], stats.as_ref())
+        commands::json_document(&axis, &[&curve], stats.as_ref())
     } else {
         let mut s = String::new();
         let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();

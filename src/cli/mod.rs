@@ -1,5 +1,6 @@
 //! Command-line arguments, dispatch, and the exit status of each kind of failure.
 
+mod batch;
 mod commands;
 mod demo;
 mod demo_medial;
@@ -9,7 +10,6 @@ mod report;
 mod timing;
 
 use clap::{Args, Parser, Subcommand};
-use curvekit::io::CurveFileError;
 use std::path::{Path, PathBuf};
 
 /// Certified geometry on planar freeform curves.
@@ -80,6 +80,43 @@ enum Command {
         exterior: bool,
         #[command(flatten)]
         common: Common,
+    },
+    /// One command over many inputs, on several threads: one JSON line per input, in input
+    /// order; an input that fails becomes an error line and the run goes on.
+    Batch {
+        /// The command to run on each input.
+        #[arg(value_enum)]
+        command: batch::BatchCommand,
+        /// Curve, region or drawing files; a `.jsonl` file holds one curve document a line.
+        #[arg(required = true, value_name = "INPUTS")]
+        inputs: Vec<PathBuf>,
+        /// Threads (default: one per core).
+        #[arg(long, value_name = "N")]
+        jobs: Option<usize>,
+        /// Write the JSON lines to FILE instead of stdout.
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
+        /// Parameter tolerance.
+        #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        tol: f64,
+        /// Chord tolerance (bisector, medial), relative to the size.
+        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        chord_tol: f64,
+        /// Bisector function (bisector).
+        #[arg(long, value_enum, default_value_t = MethodArg::F3)]
+        method: MethodArg,
+        /// Only the trimmed bisector (bisector).
+        #[arg(long)]
+        trimmed: bool,
+        /// Edges also as fitted B-splines (medial).
+        #[arg(long)]
+        fit: bool,
+        /// The exterior axis (medial).
+        #[arg(long)]
+        exterior: bool,
+        /// In a drawing that holds several profiles or regions, the one to take (from 0).
+        #[arg(long, value_name = "N")]
+        pick: Option<usize>,
     },
 }
 
@@ -154,9 +191,7 @@ impl Common {
 
     /// Checks the options before any file is read (a usage error comes first).
     pub(crate) fn validate(&self) -> Result<(), Failure> {
-        self.options()
-            .validate()
-            .map_err(|e| commands::antipodal_failure(e, &[]))
+        curvekit::commands::validate_options(&self.options())
     }
 }
 
@@ -169,38 +204,7 @@ fn parse_tol(s: &str) -> Result<f64, String> {
 }
 
 /// Why a command failed, and so its exit status.
-#[derive(Debug)]
-pub(crate) enum Failure {
-    /// Bad input file (exit 2).
-    Input(CurveFileError),
-    /// Bad option value (exit 2).
-    Usage(String),
-    /// Anything else (exit 1).
-    Other(String),
-}
-
-impl Failure {
-    pub(crate) fn code(&self) -> u8 {
-        match self {
-            Failure::Input(_) | Failure::Usage(_) => 2,
-            Failure::Other(_) => 1,
-        }
-    }
-
-    pub(crate) fn message(&self) -> String {
-        match self {
-            Failure::Input(e) => e.to_string(),
-            Failure::Usage(m) | Failure::Other(m) => m.clone(),
-        }
-        .replace('\n', " ")
-    }
-}
-
-impl From<CurveFileError> for Failure {
-    fn from(e: CurveFileError) -> Self {
-        Failure::Input(e)
-    }
-}
+pub(crate) use curvekit::commands::CommandError as Failure;
 
 /// Runs one command.
 pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
@@ -226,6 +230,31 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             exterior,
             common,
         } => medial::run(&region, chord_tol, (fit, exterior), &common),
+        Command::Batch {
+            command,
+            inputs,
+            jobs,
+            out,
+            tol,
+            chord_tol,
+            method,
+            trimmed,
+            fit,
+            exterior,
+            pick,
+        } => batch::run(&batch::Batch {
+            command,
+            inputs,
+            jobs,
+            out,
+            pick,
+            tol,
+            chord_tol,
+            method,
+            trimmed,
+            fit,
+            exterior,
+        }),
     }
 }
 

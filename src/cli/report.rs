@@ -9,8 +9,6 @@ use curvekit::curve::ParamCurve;
 use curvekit::curve::Profile;
 use curvekit::io::{Curve, Shape};
 use curvekit::svg::{side_by_side, Figure};
-use serde::Serialize;
-use serde_json::{json, Value};
 use std::fmt::Write as _;
 use zeroset::{Bisector, Branch, ProfileBisector, ProfileBranch};
 
@@ -64,42 +62,6 @@ pub(crate) fn describe(curve: &Curve) -> String {
     };
     let closed = if curve.is_closed() { "closed" } else { "open" };
     format!("{shape}, {closed}, domain [{a}, {b}]")
-}
-
-/// The `curve` object of JSON reports (an extension: which curve the numbers belong to).
-pub(crate) fn curve_json(curve: &Curve) -> Value {
-    let (a, b) = curve.domain();
-    json!({
-        "file": curve.file,
-        "kind": curve.kind(),
-        "closed": curve.is_closed(),
-        "domain": [a, b],
-    })
-}
-
-/// One JSON document: the result's own fields (as the contract names them), then the
-/// extensions `curve` (or `curves`) and, with `--time`, `stats`.
-pub(crate) fn json_doc(
-    result: &impl Serialize,
-    curves: &[&Curve],
-    stats: Option<&Stats>,
-) -> String {
-    let mut doc = serde_json::to_value(result).unwrap_or(Value::Null);
-    if let Some(map) = doc.as_object_mut() {
-        match curves {
-            [one] => {
-                map.insert("curve".into(), curve_json(one));
-            }
-            many => {
-                let list: Vec<Value> = many.iter().map(|c| curve_json(c)).collect();
-                map.insert("curves".into(), Value::Array(list));
-            }
-        }
-        if let Some(s) = stats {
-            map.insert("stats".into(), json!(s));
-        }
-    }
-    format!("{doc}\n")
 }
 
 /// The readable inflection report.

@@ -1,22 +1,10 @@
 //! `--time`: repeat a computation in-process and report the median time of one run.
 
-use serde::Serialize;
+pub(crate) use curvekit::commands::Stats;
 use std::time::{Duration, Instant};
 
 /// How long the repetitions run at least.
 const BUDGET: Duration = Duration::from_millis(500);
-
-/// Median time of one run and the number of runs it is taken over: warm (on a prepared curve)
-/// and, as an extension, cold (preparing the curve read and answering once).
-#[derive(Debug, Clone, Copy, Serialize)]
-pub(crate) struct Stats {
-    pub(crate) median_us: f64,
-    pub(crate) runs: usize,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(crate) cold_median_us: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(crate) cold_runs: Option<usize>,
-}
 
 /// [`measure`] of a warm run and of a cold one, each for the whole budget.
 pub(crate) fn measure_both<T, U>(warm: impl FnMut() -> T, cold: impl FnMut() -> U) -> Stats {

@@ -9,12 +9,13 @@ use curvekit::commands::{
 use curvekit::io::{read_curve_picked, Curve, Shape};
 use curvekit::svg::Figure;
 use std::path::Path;
+use std::sync::Arc;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let curve = read_curve_picked(path, common.pick)?;
+    let curve = Arc::new(read_curve_picked(path, common.pick)?);
     let opts = common.options();
-    let prepared = Prepared::new(&curve, "inflections")?;
+    let prepared = Prepared::new(curve.clone(), "inflections")?;
     let found = prepared.inflections(&opts)?;
     let stats = common.time.then(|| {
         timing::measure_both(
@@ -52,9 +53,9 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let curve = read_curve_picked(path, common.pick)?;
+    let curve = Arc::new(read_curve_picked(path, common.pick)?);
     let opts = common.options();
-    let prepared = Prepared::new(&curve, "antipodal")?;
+    let prepared = Prepared::new(curve.clone(), "antipodal")?;
     let found = prepared.antipodal(&opts)?;
     let stats = common.time.then(|| {
         timing::measure_both(

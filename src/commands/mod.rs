@@ -7,11 +7,12 @@
 //! ```
 //! use curvekit::commands::{self, Prepared};
 //! use curvekit::io::parse_curve;
+//! use std::sync::Arc;
 //!
 //! let text = r#"{"kind":"bspline","degree":3,"periodic":true,
 //!                "points":[[0,0],[2,-1],[4,0],[4,2],[2,1.2],[0,2]]}"#;
-//! let curve = parse_curve("cubic.json", text).unwrap();
-//! let prepared = Prepared::new(&curve, "antipodal").unwrap();
+//! let curve = Arc::new(parse_curve("cubic.json", text).unwrap());
+//! let prepared = Prepared::new(curve.clone(), "antipodal").unwrap();
 //! let found = prepared.antipodal(&antipodal::Options::default()).unwrap();
 //! let doc = commands::json_document(&found, &[&curve], None);
 //! assert!(doc.starts_with("{\"certified\":true"));
@@ -23,9 +24,10 @@ pub use errors::CommandError;
 use errors::{antipodal_error, refuse, zeroset_error};
 
 use crate::io::{Curve, Shape};
-use curve::{Profile, Segment, SegmentKind};
+use curve::{ParamCurve, PlaneCurve, Profile, Segment, SegmentKind};
 use serde::Serialize;
 use serde_json::{json, Value};
+use std::sync::Arc;
 
 /// What `inflections` found: on a smooth curve, or on a profile (with its corners).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -86,50 +88,100 @@ pub struct Stats {
 /// A curve made ready for the one-curve commands: a spline or an analytic shape is prepared
 /// once (its frame, symbolic forms and enclosures; [`antipodal::prepare`]), so that later
 /// calls answer warm; a profile needs no preparation. A region is refused: the one-curve
-/// commands take curves.
-pub struct Prepared<'c> {
-    curve: &'c Curve,
-    smooth: Option<antipodal::Prepared<'c>>,
+/// commands take curves. It shares the curve, so it can be kept and sent between threads.
+pub struct Prepared {
+    curve: Arc<Curve>,
+    smooth: Option<antipodal::Prepared<'static>>,
 }
 
-impl<'c> Prepared<'c> {
+impl Prepared {
     /// Prepares `curve` for `command` (named in the refusal of a region).
-    pub fn new(curve: &'c Curve, command: &str) -> Result<Self, CommandError> {
-        one_curve(&[curve], command)?;
+    pub fn new(curve: Arc<Curve>, command: &str) -> Result<Self, CommandError> {
+        one_curve(&[&curve], command)?;
         let smooth = match &curve.shape {
             Shape::Profile(_) => None,
-            _ => Some(antipodal::prepare(curve.plane_curve())),
+            _ => Some(antipodal::prepare_shared(Arc::new(Shared(curve.clone())))),
         };
         Ok(Self { curve, smooth })
     }
 
     /// The curve prepared.
-    pub fn curve(&self) -> &'c Curve {
-        self.curve
+    pub fn curve(&self) -> &Curve {
+        &self.curve
     }
 
     /// The inflections (and a profile's corners).
     pub fn inflections(&self, opts: &antipodal::Options) -> Result<InflectionsFound, CommandError> {
-        let found = match (&self.smooth, &self.curve.shape) {
-            (_, Shape::Profile(p)) => {
-                antipodal::profile_inflections(p, opts).map(InflectionsFound::Profile)
-            }
-            (Some(prepared), _) => prepared.inflections(opts).map(InflectionsFound::Curve),
-            (None, _) => unreachable!("a curve that is no profile is prepared"),
-        };
-        found.map_err(|e| antipodal_error(e, &[self.curve]))
+        inflections_of(&self.curve, self.smooth.as_ref(), opts)
     }
 
     /// The antipodal pairs, inflections and families (and a profile's corners).
     pub fn antipodal(&self, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-        let found = match (&self.smooth, &self.curve.shape) {
-            (_, Shape::Profile(p)) => {
-                antipodal::profile_antipodal(p, opts).map(AntipodalFound::Profile)
-            }
-            (Some(prepared), _) => prepared.antipodal(opts).map(AntipodalFound::Curve),
-            (None, _) => unreachable!("a curve that is no profile is prepared"),
-        };
-        found.map_err(|e| antipodal_error(e, &[self.curve]))
+        antipodal_of(&self.curve, self.smooth.as_ref(), opts)
+    }
+}
+
+/// A curve that is no profile, prepared on a borrow (for one answer: no copy of the curve).
+fn prepare_borrowed(curve: &Curve) -> Option<antipodal::Prepared<'_>> {
+    match &curve.shape {
+        Shape::Profile(_) => None,
+        _ => Some(antipodal::prepare(curve.plane_curve())),
+    }
+}
+
+/// `inflections` of `curve`, prepared as `smooth` unless it is a profile.
+fn inflections_of(
+    curve: &Curve,
+    smooth: Option<&antipodal::Prepared<'_>>,
+    opts: &antipodal::Options,
+) -> Result<InflectionsFound, CommandError> {
+    let found = match (smooth, &curve.shape) {
+        (_, Shape::Profile(p)) => {
+            antipodal::profile_inflections(p, opts).map(InflectionsFound::Profile)
+        }
+        (Some(prepared), _) => prepared.inflections(opts).map(InflectionsFound::Curve),
+        (None, _) => unreachable!("a curve that is no profile is prepared"),
+    };
+    found.map_err(|e| antipodal_error(e, &[curve]))
+}
+
+/// `antipodal` of `curve`, prepared as `smooth` unless it is a profile.
+fn antipodal_of(
+    curve: &Curve,
+    smooth: Option<&antipodal::Prepared<'_>>,
+    opts: &antipodal::Options,
+) -> Result<AntipodalFound, CommandError> {
+    let found = match (smooth, &curve.shape) {
+        (_, Shape::Profile(p)) => {
+            antipodal::profile_antipodal(p, opts).map(AntipodalFound::Profile)
+        }
+        (Some(prepared), _) => prepared.antipodal(opts).map(AntipodalFound::Curve),
+        (None, _) => unreachable!("a curve that is no profile is prepared"),
+    };
+    found.map_err(|e| antipodal_error(e, &[curve]))
+}
+
+/// A curve read, shared with its prepared form: the plane curve of its shape.
+struct Shared(Arc<Curve>);
+
+impl ParamCurve for Shared {
+    fn domain(&self) -> (f64, f64) {
+        self.0.plane_curve().domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.0.plane_curve().is_closed()
+    }
+    fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
+        self.0.plane_curve().jet_to(u, order)
+    }
+    fn jet(&self, u: f64) -> curve::Jet {
+        self.0.plane_curve().jet(u)
+    }
+}
+
+impl PlaneCurve for Shared {
+    fn exact(&self) -> Option<curve::Exact<'_>> {
+        self.0.plane_curve().exact()
     }
 }
 
@@ -139,13 +191,15 @@ pub fn inflections(
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
     validate_options(opts)?;
-    Prepared::new(curve, "inflections")?.inflections(opts)
+    one_curve(&[curve], "inflections")?;
+    inflections_of(curve, prepare_borrowed(curve).as_ref(), opts)
 }
 
 /// `antipodal` of a curve read: [`Prepared::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
     validate_options(opts)?;
-    Prepared::new(curve, "antipodal")?.antipodal(opts)
+    one_curve(&[curve], "antipodal")?;
+    antipodal_of(curve, prepare_borrowed(curve).as_ref(), opts)
 }
 
 /// The lines tangent to two curves; where one is a profile, the other is taken as a

@@ -69,7 +69,9 @@ mod view;
 pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, SplineCurve, V2};
 pub use error::{Error, Result};
 pub use forms::SymbolicForms;
-pub use prepare::{antipodal, common_tangents, inflections, prepare, prepare_pair, Prepared};
+pub use prepare::{
+    antipodal, common_tangents, inflections, prepare, prepare_pair, prepare_shared, Prepared,
+};
 pub use profile_pairs::profile_antipodal;
 pub use profile_tangents::{profile_tangents, MAX_SEGMENT_PAIRS};
 pub use profiles::profile_inflections;

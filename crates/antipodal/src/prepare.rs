@@ -11,11 +11,12 @@ use crate::types::{Antipodal, Inflections, Options, Provenance, Tangents};
 use crate::view::Source;
 use curve::circle::Angle;
 use curve::{Frame, Local, OnCircle, ParamCurve, PlaneCurve, StraightSpan};
+use std::sync::Arc;
 
 /// A curve prepared for the algorithms of this crate (see [`prepare`]).
 pub struct Prepared<'c> {
     /// The curve as given.
-    given: &'c dyn PlaneCurve,
+    given: Given<'c>,
     /// The frame the curve is computed in.
     frame: Frame,
     /// The curve moved into the frame (`None`: a curve known only by evaluation, used as
@@ -36,16 +37,34 @@ pub struct Prepared<'c> {
     exact_circle: bool,
 }
 
+/// The curve as given: borrowed for the prepared curve's life, or shared with it (a prepared
+/// curve kept beyond its caller's borrow, as a Python object keeps it).
+#[derive(Clone)]
+enum Given<'c> {
+    Borrowed(&'c dyn PlaneCurve),
+    Shared(Arc<dyn PlaneCurve>),
+}
+
+impl Given<'_> {
+    fn curve(&self) -> &dyn PlaneCurve {
+        match self {
+            Given::Borrowed(c) => *c,
+            Given::Shared(c) => c.as_ref(),
+        }
+    }
+}
+
 /// Samples of a sampled track per oscillation of the curvature: Jia's sampling of the
 /// inflections resolves a few per lobe (96 for the papers' shapes, as in the paper).
 const SAMPLES_PER_LOBE: usize = 96;
 
 impl<'c> Prepared<'c> {
     /// The curve in `frame` (one of this crate's kinds; any other curve stays as given).
-    fn new(curve: &'c dyn PlaneCurve, frame: Frame) -> Self {
+    fn new(given: Given<'c>, frame: Frame) -> Self {
+        let curve = given.curve();
         let Some(exact) = curve.exact() else {
             return Self {
-                given: curve,
+                given,
                 frame: Frame::IDENTITY,
                 local: None,
                 circle: None,
@@ -75,7 +94,7 @@ impl<'c> Prepared<'c> {
             },
         };
         Self {
-            given: curve,
+            given,
             frame,
             local: Some(local),
             circle,
@@ -96,7 +115,7 @@ impl<'c> Prepared<'c> {
             match (&self.circle, forms, &self.local) {
                 (Some(c), Some(_), _) => (c, Some(c.angle())),
                 (_, _, Some(l)) => (l.curve(), None),
-                (_, _, None) => (self.given, None),
+                (_, _, None) => (self.given.curve(), None),
             };
         Source {
             curve,
@@ -191,10 +210,10 @@ impl<'c> Prepared<'c> {
         let other = if other.frame == self.frame {
             other
         } else {
-            again = Prepared::new(other.given, self.frame);
+            again = Prepared::new(other.given.clone(), self.frame);
             &again
         };
-        let same = std::ptr::addr_eq(self.given, other.given);
+        let same = std::ptr::addr_eq(self.given.curve(), other.given.curve());
         let mut r = tangents_of(
             self.source(opts.certify),
             other.source(opts.certify),
@@ -231,10 +250,31 @@ impl<'c> Prepared<'c> {
 /// assert!(r.certified);
 /// ```
 pub fn prepare(curve: &dyn PlaneCurve) -> Prepared<'_> {
-    let frame = curve
+    let frame = frame_of(curve);
+    Prepared::new(Given::Borrowed(curve), frame)
+}
+
+/// [`prepare`] on a curve shared with the prepared curve, which then borrows nothing: it can be
+/// kept as long as needed and moved between threads (as a Python object keeps it).
+///
+/// ```
+/// use antipodal::{prepare_shared, shapes::Ellipse, Options};
+/// use std::sync::Arc;
+/// let e = Arc::new(Ellipse::new(3.0, 2.0, [1.0, 2.0]).unwrap());
+/// let p = std::thread::spawn(move || prepare_shared(e)).join().unwrap();
+/// assert_eq!(p.antipodal(&Options::default()).unwrap().pairs.len(), 2);
+/// ```
+pub fn prepare_shared(curve: Arc<dyn PlaneCurve>) -> Prepared<'static> {
+    let frame = frame_of(curve.as_ref());
+    Prepared::new(Given::Shared(curve), frame)
+}
+
+/// The frame a curve is prepared in: one fitted to its control points, or the identity for
+/// a curve known only by evaluation.
+fn frame_of(curve: &dyn PlaneCurve) -> Frame {
+    curve
         .exact()
-        .map_or(Frame::IDENTITY, |e| Frame::for_points(&e.extent()));
-    Prepared::new(curve, frame)
+        .map_or(Frame::IDENTITY, |e| Frame::for_points(&e.extent()))
 }
 
 /// Every pair of antipodal points of a simple closed curve (Jia 2004): prepares the curve and
@@ -265,7 +305,10 @@ pub fn prepare_pair<'c>(
         (Some(a), Some(b)) => Frame::for_all(&[&a.extent(), &b.extent()]),
         _ => Frame::IDENTITY,
     };
-    (Prepared::new(c1, frame), Prepared::new(c2, frame))
+    (
+        Prepared::new(Given::Borrowed(c1), frame),
+        Prepared::new(Given::Borrowed(c2), frame),
+    )
 }
 
 /// Every line tangent to both curves (Jia §2.5): prepares them in one frame and runs once (see
@@ -311,6 +354,6 @@ pub(crate) mod tests {
 
     /// `curve` prepared as it is (the identity frame: the views evaluate the curve itself).
     pub(crate) fn as_given(curve: &dyn PlaneCurve) -> Prepared<'_> {
-        Prepared::new(curve, Frame::IDENTITY)
+        Prepared::new(super::Given::Borrowed(curve), Frame::IDENTITY)
     }
 }

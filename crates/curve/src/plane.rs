@@ -9,8 +9,9 @@ use crate::param::ParamCurve;
 use crate::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape};
 use crate::spline::SplineCurve;
 
-/// A curve the algorithms take: evaluation, and what else it offers.
-pub trait PlaneCurve: ParamCurve {
+/// A curve the algorithms take: evaluation, and what else it offers. Curves are data, so they
+/// are `Send` and `Sync`: a prepared curve may keep one and move between threads.
+pub trait PlaneCurve: ParamCurve + Send + Sync {
     /// The curve's exact description, when it has one (the curve kinds of this crate do): the
     /// algorithms then decide by sign tests on its exact rational form, in a frame of their
     /// choosing. `None` (a curve known only by evaluation): Jia's sampled method, uncertified.

@@ -25,7 +25,7 @@ use errors::{antipodal_error, refuse, zeroset_error};
 
 use crate::io::{Curve, Shape};
 use curve::{ParamCurve, PlaneCurve, Profile, Segment, SegmentKind};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::sync::Arc;
 
@@ -274,15 +274,25 @@ pub fn medial(
 /// contract names them), then the extensions `curve` (or `curves`, for two) and, when timed,
 /// `stats`; one line, ending in a newline.
 pub fn json_document(result: &impl Serialize, curves: &[&Curve], stats: Option<&Stats>) -> String {
+    let summaries: Vec<CurveSummary> = curves.iter().map(|c| CurveSummary::of(c)).collect();
+    json_document_of(result, &summaries, stats)
+}
+
+/// [`json_document`] with the curves given by their summaries (a result kept apart from its
+/// curves, as a Python result is).
+pub fn json_document_of(
+    result: &impl Serialize,
+    curves: &[CurveSummary],
+    stats: Option<&Stats>,
+) -> String {
     let mut doc = serde_json::to_value(result).unwrap_or(Value::Null);
     if let Some(map) = doc.as_object_mut() {
         match curves {
             [one] => {
-                map.insert("curve".into(), json!(CurveSummary::of(one)));
+                map.insert("curve".into(), json!(one));
             }
             many => {
-                let list: Vec<Value> = many.iter().map(|c| json!(CurveSummary::of(c))).collect();
-                map.insert("curves".into(), Value::Array(list));
+                map.insert("curves".into(), json!(many));
             }
         }
         if let Some(s) = stats {
@@ -293,12 +303,12 @@ pub fn json_document(result: &impl Serialize, curves: &[&Curve], stats: Option<&
 }
 
 /// The `curve` object of JSON reports (an extension: which curve the numbers belong to).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CurveSummary {
     /// The file as named (or the name given to a curve made in memory).
     pub file: String,
     /// Its `kind`.
-    pub kind: &'static str,
+    pub kind: String,
     /// Closed or open.
     pub closed: bool,
     /// The parameter domain.
@@ -311,7 +321,7 @@ impl CurveSummary {
         let (a, b) = curve.domain();
         Self {
             file: curve.file.clone(),
-            kind: curve.kind(),
+            kind: curve.kind().into(),
             closed: curve.is_closed(),
             domain: [a, b],
         }

@@ -1,0 +1,110 @@
+"""Type stubs of the native module (the classes and functions `curvekit` re-exports)."""
+
+from os import PathLike
+from typing import Any, Literal, Optional, Union
+
+import numpy as np
+import numpy.typing as npt
+
+class InputError(ValueError):
+    """Bad input: the message names the file (or the name given), the field and the problem."""
+
+class CurvekitError(Exception):
+    """A computation that could not be carried out (the tool's exit status 1)."""
+
+class Curve:
+    """A curve, profile or region as the tool reads it; immutable; pickles as its source."""
+
+    @staticmethod
+    def from_json(text: str, name: str = "curve") -> Curve: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def closed(self) -> bool: ...
+    @property
+    def domain(self) -> tuple[float, float]: ...
+    def evaluate(self, u: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+        """Points at the parameters `u`, an (n, 2) array."""
+
+class PreparedCurve:
+    """A curve prepared once for many antipodal and inflection runs (they answer warm)."""
+
+    @property
+    def curve(self) -> Curve: ...
+
+class _Result:
+    def to_json(self) -> str:
+        """The tool's --json document, as one JSON text."""
+    def to_dict(self) -> dict[str, Any]:
+        """The tool's --json document."""
+
+class Antipodal(_Result):
+    certified: bool
+    complete: bool
+    reason: Optional[str]
+    pairs: npt.NDArray[np.float64]
+    """(n, 2): the parameters (s, t) of each pair, sorted by s."""
+    points: npt.NDArray[np.float64]
+    """(n, 2, 2): the points (p, q) of each pair."""
+    distances: npt.NDArray[np.float64]
+    types: list[Optional[str]]
+    inflections: npt.NDArray[np.float64]
+    families: npt.NDArray[np.float64]
+    """(k, 2, 2): [[s0, s1], [t0, t1]] of each family of non-isolated pairs."""
+    def __len__(self) -> int: ...
+
+class Inflections(_Result):
+    certified: bool
+    params: npt.NDArray[np.float64]
+    points: npt.NDArray[np.float64]
+    corners: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+
+class Tangents(_Result):
+    certified: bool
+    params: npt.NDArray[np.float64]
+    points: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+
+class Bisector(_Result):
+    complete: bool
+    branches: list[tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]
+    """Each branch as (tr, xy): foot-point parameters and bisector points, (k, 2) each."""
+    def __len__(self) -> int: ...
+
+class MedialAxis(_Result):
+    certified: bool
+    complete: bool
+    reason: Optional[str]
+    nodes: npt.NDArray[np.float64]
+    node_radii: npt.NDArray[np.float64]
+    node_kinds: list[str]
+    edges: list[tuple[int, int, npt.NDArray[np.float64], npt.NDArray[np.float64]]]
+    """Each edge as (from, to, xy (k, 2), radius (k,))."""
+
+OneCurve = Union[Curve, PreparedCurve]
+
+def read(path: Union[str, PathLike[str]], *, pick: Optional[int] = None) -> Curve: ...
+def prepare(curve: Curve) -> PreparedCurve: ...
+def antipodal(curve: OneCurve, *, tol: float = 1e-12) -> Antipodal: ...
+def inflections(curve: OneCurve, *, tol: float = 1e-12) -> Inflections: ...
+def tangents(curve1: Curve, curve2: Curve, *, tol: float = 1e-12) -> Tangents: ...
+def bisector(
+    curve1: Curve,
+    curve2: Optional[Curve] = None,
+    *,
+    method: Literal["f1", "f2", "f3"] = "f3",
+    trimmed: bool = False,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> Bisector: ...
+def medial(
+    region: Curve,
+    *,
+    chord_tol: float = 1e-3,
+    fit: bool = False,
+    exterior: bool = False,
+    tol: float = 1e-12,
+) -> MedialAxis: ...

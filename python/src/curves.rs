@@ -1,0 +1,347 @@
+//! `curvekit.Curve`: a curve (or profile, or region) read from a JSON document, a file or a
+//! drawing, kept with its source so that it pickles as that source and is read again.
+
+use crate::detached;
+use curvekit::commands::{CommandError, CurveSummary, Prepared};
+use curvekit::io::{self, Curve, DrawingFormat, Shape};
+use numpy::{PyArray2, PyReadonlyArray1};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use std::path::Path;
+use std::sync::{Arc, OnceLock};
+
+/// Where a curve came from: what it is read again from when unpickled.
+#[derive(Clone)]
+struct Source {
+    /// The name in messages and reports (a file's path, or the name given).
+    name: String,
+    /// The document or drawing.
+    bytes: Vec<u8>,
+    /// A drawing's format; `None`: a JSON curve document.
+    format: Option<DrawingFormat>,
+    /// Which of a drawing's profiles or regions.
+    pick: Option<usize>,
+}
+
+impl Source {
+    fn format_name(&self) -> Option<&'static str> {
+        self.format.map(|f| match f {
+            DrawingFormat::Svg => "svg",
+            DrawingFormat::Dxf => "dxf",
+        })
+    }
+
+    fn with_format_name(mut self, name: Option<&str>) -> PyResult<Self> {
+        self.format = match name {
+            None => None,
+            Some("svg") => Some(DrawingFormat::Svg),
+            Some("dxf") => Some(DrawingFormat::Dxf),
+            Some(other) => {
+                return Err(PyValueError::new_err(format!(
+                    "format: {other:?} is not one of \"svg\", \"dxf\""
+                )))
+            }
+        };
+        Ok(self)
+    }
+
+    /// The curve it holds, as the tool reads it.
+    fn read(&self) -> Result<Curve, CommandError> {
+        Ok(match self.format {
+            Some(format) => io::parse_drawing(&self.name, format, &self.bytes, self.pick)?,
+            None => io::parse_curve(&self.name, &self.text()?)?,
+        })
+    }
+
+    /// The region it holds or encloses, as `medial` reads it.
+    fn read_region(&self) -> Result<Curve, CommandError> {
+        Ok(io::parse_region(
+            &self.name,
+            self.format,
+            &self.bytes,
+            self.pick,
+        )?)
+    }
+
+    fn text(&self) -> Result<String, CommandError> {
+        String::from_utf8(self.bytes.clone()).map_err(|e| {
+            CommandError::Input(io::CurveFileError {
+                file: self.name.clone(),
+                field: "document".into(),
+                problem: io::Problem::Syntax(format!("not UTF-8: {e}")),
+            })
+        })
+    }
+}
+
+/// A curve, profile or region, as the tool reads it: from a JSON document (`Curve.from_json`,
+/// `curvekit.from_dict`, the constructors `BSpline`, `Bezier`, `Circle`, …) or a file
+/// (`curvekit.read`: `.json`, `.svg`, `.dxf`). Immutable; pickles as its source. Each run on
+/// it prepares it afresh and lets the preparation go; `curvekit.prepare` keeps one for runs
+/// that answer warm.
+#[pyclass(name = "Curve", module = "curvekit", frozen)]
+pub(crate) struct PyCurve {
+    curve: Arc<Curve>,
+    source: Source,
+    region: OnceLock<Result<Curve, CommandError>>,
+}
+
+impl PyCurve {
+    /// The curve of `source`; a drawing that holds no one curve but a region (nested closed
+    /// profiles: a pocket and its islands) is that region, as `medial` reads it.
+    fn from_source(source: Source) -> Result<Self, CommandError> {
+        let curve = match source.read() {
+            Ok(curve) => curve,
+            Err(e) if source.format.is_some() => source.read_region().map_err(|_| e)?,
+            Err(e) => return Err(e),
+        };
+        Ok(Self {
+            curve: Arc::new(curve),
+            source,
+            region: OnceLock::new(),
+        })
+    }
+
+    /// The curve read.
+    pub(crate) fn curve(&self) -> &Curve {
+        &self.curve
+    }
+
+    /// The `curve` object of the JSON reports.
+    pub(crate) fn summary(&self) -> CurveSummary {
+        CurveSummary::of(&self.curve)
+    }
+
+    /// The curve shared (for a prepared curve to keep).
+    pub(crate) fn shared(&self) -> Arc<Curve> {
+        self.curve.clone()
+    }
+
+    /// The region the curve is, or encloses (a closed curve or profile), once.
+    pub(crate) fn region(&self) -> Result<&Curve, CommandError> {
+        self.region
+            .get_or_init(|| match self.curve.shape {
+                Shape::Region(_) => Ok(self.curve.as_ref().clone()),
+                _ => self.source.read_region(),
+            })
+            .as_ref()
+            .map_err(Clone::clone)
+    }
+}
+
+#[pymethods]
+impl PyCurve {
+    /// A curve from one JSON curve document (the tool's format); `name` stands for the file
+    /// name in messages and reports.
+    #[staticmethod]
+    #[pyo3(signature = (text, name = "curve"))]
+    fn from_json(py: Python<'_>, text: &str, name: &str) -> PyResult<Self> {
+        let source = Source {
+            name: name.into(),
+            bytes: text.as_bytes().to_vec(),
+            format: None,
+            pick: None,
+        };
+        detached(py, || Self::from_source(source))
+    }
+
+    /// `kind` of the document: `bspline`, `circle`, `profile`, `region`, ….
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.curve.kind()
+    }
+
+    /// The file's path, or the name given.
+    #[getter]
+    fn name(&self) -> &str {
+        &self.curve.file
+    }
+
+    /// Whether the curve is closed.
+    #[getter]
+    fn closed(&self) -> bool {
+        self.curve.is_closed()
+    }
+
+    /// The parameter domain `(a, b)`.
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        self.curve.domain()
+    }
+
+    /// Points at the parameters `u` (an array of `n` values in the domain), as an `(n, 2)`
+    /// array; a region has no single parameter and is refused.
+    fn evaluate<'py>(
+        &self,
+        py: Python<'py>,
+        u: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        if let Shape::Region(_) = self.curve.shape {
+            return Err(PyValueError::new_err(
+                "evaluate: a region has no single parameter; evaluate its boundaries",
+            ));
+        }
+        let (a, b) = self.curve.domain();
+        let curve = self.curve.plane_curve();
+        let mut points = Vec::with_capacity(u.len()?);
+        for (k, &t) in u.as_array().iter().enumerate() {
+            if !(a..=b).contains(&t) {
+                return Err(PyValueError::new_err(format!(
+                    "evaluate: u[{k}] = {t} is outside the domain [{a}, {b}]"
+                )));
+            }
+            points.push(curve.jet_to(t, 0).p.arr().to_vec());
+        }
+        if points.is_empty() {
+            return Ok(PyArray2::zeros(py, [0, 2], false));
+        }
+        Ok(PyArray2::from_vec2(py, &points)?)
+    }
+
+    fn __repr__(&self) -> String {
+        let (a, b) = self.curve.domain();
+        format!(
+            "Curve(kind={:?}, name={:?}, closed={}, domain=({a}, {b}))",
+            self.curve.kind(),
+            self.curve.file,
+            if self.curve.is_closed() {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+
+    /// Pickles as the source it was read from.
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let rebuild = py
+            .import("curvekit._curvekit")?
+            .getattr("_curve_from_source")?;
+        let s = &self.source;
+        let args = (
+            s.name.clone(),
+            pyo3::types::PyBytes::new(py, &s.bytes),
+            s.format_name(),
+            s.pick,
+        )
+            .into_pyobject(py)?;
+        Ok((rebuild, args))
+    }
+}
+
+/// A curve prepared once for many antipodal and inflection runs (its frame, exact forms and
+/// enclosures), as a compiled regular expression is for many matches: runs on it answer warm.
+/// It holds much more memory than its curve (about a megabyte for a cubic of a dozen points):
+/// keep the ones asked again. Pickles as its curve, prepared again where it lands.
+#[pyclass(name = "PreparedCurve", module = "curvekit", frozen)]
+pub(crate) struct PyPrepared {
+    curve: Py<PyCurve>,
+    prepared: Prepared,
+}
+
+impl PyPrepared {
+    /// The preparation.
+    pub(crate) fn prepared(&self) -> &Prepared {
+        &self.prepared
+    }
+}
+
+#[pymethods]
+impl PyPrepared {
+    /// The curve prepared.
+    #[getter]
+    fn curve(&self, py: Python<'_>) -> Py<PyCurve> {
+        self.curve.clone_ref(py)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("PreparedCurve({})", self.curve.get().__repr__())
+    }
+
+    /// Pickles as its curve, prepared again when unpickled.
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let prepare = py.import("curvekit._curvekit")?.getattr("prepare")?;
+        let args = (self.curve.clone_ref(py),).into_pyobject(py)?;
+        Ok((prepare, args))
+    }
+}
+
+/// Prepares a curve (or profile) for many runs of `antipodal` and `inflections`; a region is
+/// refused.
+#[pyfunction]
+fn prepare(py: Python<'_>, curve: Bound<'_, PyCurve>) -> PyResult<PyPrepared> {
+    let shared = curve.get().shared();
+    let prepared = detached(py, || Prepared::new(shared, "antipodal"))?;
+    Ok(PyPrepared {
+        curve: curve.unbind(),
+        prepared,
+    })
+}
+
+/// Reads a curve, profile or region file (`.json`), or a drawing (`.svg`, `.dxf`; `pick`
+/// chooses among its profiles), as the tool does.
+#[pyfunction]
+#[pyo3(signature = (path, *, pick = None))]
+fn read(py: Python<'_>, path: std::path::PathBuf, pick: Option<usize>) -> PyResult<PyCurve> {
+    detached(py, || {
+        let name = path.display().to_string();
+        let bytes = std::fs::read(&path).map_err(|e| {
+            CommandError::Input(io::CurveFileError {
+                file: name.clone(),
+                field: "document".into(),
+                problem: io::Problem::Unreadable(e.to_string()),
+            })
+        })?;
+        PyCurve::from_source(Source {
+            name,
+            bytes,
+            format: drawing_format(&path),
+            pick,
+        })
+    })
+}
+
+/// A drawing's format by its extension, as the tool tells them.
+fn drawing_format(path: &Path) -> Option<DrawingFormat> {
+    let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+    match ext.as_str() {
+        "svg" => Some(DrawingFormat::Svg),
+        "dxf" => Some(DrawingFormat::Dxf),
+        _ => None,
+    }
+}
+
+/// Unpickling: the curve read again from its source.
+#[pyfunction]
+fn _curve_from_source(
+    py: Python<'_>,
+    name: String,
+    bytes: Vec<u8>,
+    format: Option<&str>,
+    pick: Option<usize>,
+) -> PyResult<PyCurve> {
+    let source = Source {
+        name,
+        bytes,
+        format: None,
+        pick,
+    }
+    .with_format_name(format)?;
+    detached(py, || PyCurve::from_source(source))
+}
+
+/// Registers `read` and the unpickling function.
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyPrepared>()?;
+    m.add_function(wrap_pyfunction!(read, m)?)?;
+    m.add_function(wrap_pyfunction!(prepare, m)?)?;
+    m.add_function(wrap_pyfunction!(_curve_from_source, m)?)?;
+    Ok(())
+}

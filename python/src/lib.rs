@@ -1,0 +1,224 @@
+//! The Python package `curvekit` (its native module `curvekit._curvekit`): curves read from
+//! the tool's documents, files and arrays, the tool's commands as functions that release the
+//! GIL, and their results as small objects with numpy arrays whose `to_dict()` is the tool's
+//! JSON. The geometry is the library's (`curvekit::commands`); this crate only translates.
+
+mod curves;
+mod results;
+
+use curvekit::commands::{self, CommandError};
+use curves::{PyCurve, PyPrepared};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyException, PyValueError};
+use pyo3::prelude::*;
+use results::{PyAntipodal, PyBisector, PyInflections, PyMedialAxis, PyTangents};
+
+create_exception!(
+    curvekit,
+    InputError,
+    PyValueError,
+    "Bad input: the message names the file (or the name given), the field and what is wrong, \
+     as the tool's does."
+);
+create_exception!(
+    curvekit,
+    CurvekitError,
+    PyException,
+    "A computation that could not be carried out (the tool's exit status 1)."
+);
+
+/// The library's failure as a Python exception: bad input `InputError` (a `ValueError`), an
+/// option out of range `ValueError`, anything else `CurvekitError`.
+pub(crate) fn to_py_err(e: CommandError) -> PyErr {
+    match e {
+        CommandError::Input(_) => InputError::new_err(e.message()),
+        CommandError::Usage(_) => PyValueError::new_err(as_keyword(&e.message())),
+        CommandError::Other(_) => CurvekitError::new_err(e.message()),
+    }
+}
+
+/// A usage message as Python spells the option: `--chord-tol: …` is `chord_tol: …`.
+fn as_keyword(message: &str) -> String {
+    match message.strip_prefix("--").and_then(|m| m.split_once(':')) {
+        Some((flag, rest)) => format!("{}:{rest}", flag.replace('-', "_")),
+        None => message.to_string(),
+    }
+}
+
+/// Runs `work` without the GIL (other Python threads go on meanwhile); a panic, a defect never
+/// expected, becomes a `CurvekitError` instead of ending the interpreter's thread.
+pub(crate) fn detached<T: Send>(
+    py: Python<'_>,
+    work: impl FnOnce() -> Result<T, CommandError> + Send,
+) -> PyResult<T> {
+    py.detach(|| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
+            .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
+    })
+    .map_err(to_py_err)
+}
+
+/// A curve as the one-curve commands take it: prepared (warm) or not (prepared for this run).
+#[derive(FromPyObject)]
+enum OneCurve<'py> {
+    Prepared(Bound<'py, PyPrepared>),
+    Curve(Bound<'py, PyCurve>),
+}
+
+impl OneCurve<'_> {
+    /// Runs `warm` on the prepared curve, or `cold` on the curve.
+    fn run<T: Send>(
+        &self,
+        py: Python<'_>,
+        warm: impl FnOnce(&commands::Prepared) -> Result<T, CommandError> + Send,
+        cold: impl FnOnce(&curvekit::io::Curve) -> Result<T, CommandError> + Send,
+    ) -> PyResult<(T, commands::CurveSummary)> {
+        match self {
+            OneCurve::Prepared(p) => {
+                let prepared = p.get().prepared();
+                let found = detached(py, || warm(prepared))?;
+                Ok((found, commands::CurveSummary::of(prepared.curve())))
+            }
+            OneCurve::Curve(c) => {
+                let c = c.get();
+                Ok((detached(py, || cold(c.curve()))?, c.summary()))
+            }
+        }
+    }
+}
+
+/// The antipodal point pairs of a closed curve or profile (Jia 2004): grasps of a two-finger
+/// gripper. `tol` is the parameter tolerance relative to the domain's length.
+#[pyfunction(name = "antipodal")]
+#[pyo3(signature = (curve, *, tol = ::antipodal::DEFAULT_TOL))]
+fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAntipodal> {
+    let opts = ::antipodal::Options::default().tolerance(tol);
+    let (found, summary) = curve.run(
+        py,
+        |p| {
+            commands::validate_options(&opts)?;
+            p.antipodal(&opts)
+        },
+        |c| commands::antipodal(c, &opts),
+    )?;
+    Ok(PyAntipodal::new(found, vec![summary]))
+}
+
+/// The inflections of a curve (and the corners of a profile).
+#[pyfunction(name = "inflections")]
+#[pyo3(signature = (curve, *, tol = ::antipodal::DEFAULT_TOL))]
+fn inflections_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyInflections> {
+    let opts = ::antipodal::Options::default().tolerance(tol);
+    let (found, summary) = curve.run(
+        py,
+        |p| {
+            commands::validate_options(&opts)?;
+            p.inflections(&opts)
+        },
+        |c| commands::inflections(c, &opts),
+    )?;
+    Ok(PyInflections::new(found, vec![summary]))
+}
+
+/// The lines tangent to two curves.
+#[pyfunction(name = "tangents")]
+#[pyo3(signature = (curve1, curve2, *, tol = ::antipodal::DEFAULT_TOL))]
+fn tangents_of(
+    py: Python<'_>,
+    curve1: &Bound<'_, PyCurve>,
+    curve2: &Bound<'_, PyCurve>,
+    tol: f64,
+) -> PyResult<PyTangents> {
+    let opts = ::antipodal::Options::default().tolerance(tol);
+    let (a, b) = (curve1.get(), curve2.get());
+    let found = detached(py, || commands::tangents(a.curve(), b.curve(), &opts))?;
+    Ok(PyTangents::new(found, vec![a.summary(), b.summary()]))
+}
+
+/// The bisector of two curves, or the self-bisector of one (`curve2` omitted), as polylines
+/// within `chord_tol` (relative to the curves' size) of the true bisector.
+#[pyfunction(name = "bisector")]
+#[pyo3(signature = (curve1, curve2 = None, *, method = "f3", trimmed = false,
+                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+fn bisector_of(
+    py: Python<'_>,
+    curve1: &Bound<'_, PyCurve>,
+    curve2: Option<&Bound<'_, PyCurve>>,
+    method: &str,
+    trimmed: bool,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<PyBisector> {
+    let method = match method {
+        "f1" => zeroset::Method::F1,
+        "f2" => zeroset::Method::F2,
+        "f3" => zeroset::Method::F3,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "method: {other:?} is not one of \"f1\", \"f2\", \"f3\""
+            )))
+        }
+    };
+    let opts = zeroset::BisectorOptions {
+        method,
+        tol,
+        chord_tol,
+        trimmed,
+        ..zeroset::BisectorOptions::default()
+    };
+    let a = curve1.get();
+    let b = curve2.map(|c| c.get());
+    let found = detached(py, || {
+        commands::bisector(a.curve(), b.map(PyCurve::curve), &opts)
+    })?;
+    let summaries = std::iter::once(a).chain(b).map(PyCurve::summary).collect();
+    Ok(PyBisector::new(found, summaries))
+}
+
+/// The medial axis of a region (a region, or the area inside a closed curve or profile).
+#[pyfunction(name = "medial")]
+#[pyo3(signature = (region, *, chord_tol = zeroset::DEFAULT_CHORD_TOL, fit = false,
+                    exterior = false, tol = zeroset::DEFAULT_TOL))]
+fn medial_of(
+    py: Python<'_>,
+    region: &Bound<'_, PyCurve>,
+    chord_tol: f64,
+    fit: bool,
+    exterior: bool,
+    tol: f64,
+) -> PyResult<PyMedialAxis> {
+    let opts = ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit,
+        exterior,
+    };
+    let c = region.get();
+    let (axis, summary) = detached(py, || {
+        commands::validate_medial_options(&opts)?;
+        let region = c.region()?;
+        Ok((
+            commands::medial(region, &opts)?,
+            commands::CurveSummary::of(region),
+        ))
+    })?;
+    Ok(PyMedialAxis::new(axis, vec![summary]))
+}
+
+/// The native module: classes, functions and exceptions (the package `curvekit` re-exports
+/// them beside its curve constructors).
+#[pymodule]
+fn _curvekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("InputError", py.get_type::<InputError>())?;
+    m.add("CurvekitError", py.get_type::<CurvekitError>())?;
+    m.add_class::<PyCurve>()?;
+    results::register(m)?;
+    curves::register(m)?;
+    m.add_function(wrap_pyfunction!(antipodal_of, m)?)?;
+    m.add_function(wrap_pyfunction!(inflections_of, m)?)?;
+    m.add_function(wrap_pyfunction!(tangents_of, m)?)?;
+    m.add_function(wrap_pyfunction!(bisector_of, m)?)?;
+    m.add_function(wrap_pyfunction!(medial_of, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,517 @@
+//! The results: each keeps the library's result as computed (nothing is converted until asked
+//! for), gives numpy arrays of its main fields, `to_dict()`/`to_json()` as the tool's `--json`
+//! document, and pickles as that document.
+
+use curvekit::commands::{
+    json_document_of, AntipodalFound, BisectorFound, CurveSummary, InflectionsFound, TangentsFound,
+};
+use medial::MedialAxis;
+use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+
+/// A result kept as the library gave it, with the variant it is (a curve's or a profile's), so
+/// that its document can be read back into the same type.
+pub(crate) trait Kept: Serialize + Sized {
+    /// Which variant, for reading the document back.
+    fn variant(&self) -> &'static str;
+    /// The result of `variant` from its document.
+    fn from_document(variant: &str, json: &str) -> serde_json::Result<Self>;
+}
+
+/// Reads `json` as `T` (a result type), for [`Kept::from_document`].
+fn read<T: DeserializeOwned>(json: &str) -> serde_json::Result<T> {
+    serde_json::from_str(json)
+}
+
+macro_rules! kept_two_ways {
+    ($found:ident) => {
+        impl Kept for $found {
+            fn variant(&self) -> &'static str {
+                match self {
+                    $found::Curve(_) => "curve",
+                    $found::Profile(_) => "profile",
+                }
+            }
+            fn from_document(variant: &str, json: &str) -> serde_json::Result<Self> {
+                Ok(match variant {
+                    "profile" => $found::Profile(read(json)?),
+                    _ => $found::Curve(read(json)?),
+                })
+            }
+        }
+    };
+}
+
+kept_two_ways!(AntipodalFound);
+kept_two_ways!(InflectionsFound);
+kept_two_ways!(TangentsFound);
+kept_two_ways!(BisectorFound);
+
+impl Kept for MedialAxis {
+    fn variant(&self) -> &'static str {
+        "region"
+    }
+    fn from_document(_: &str, json: &str) -> serde_json::Result<Self> {
+        read(json)
+    }
+}
+
+/// The `(n, 2)` array of points.
+fn points2<'py>(py: Python<'py>, points: &[[f64; 2]]) -> Bound<'py, PyArray2<f64>> {
+    let flat: Vec<f64> = points.iter().flatten().copied().collect();
+    let n = points.len();
+    PyArray1::from_vec(py, flat)
+        .reshape([n, 2])
+        .unwrap_or_else(|_| PyArray2::zeros(py, [0, 2], false))
+}
+
+/// The `(n, 2, 2)` array of point pairs.
+fn pairs2<'py>(py: Python<'py>, pairs: &[[[f64; 2]; 2]]) -> Bound<'py, PyArray3<f64>> {
+    let flat: Vec<f64> = pairs.iter().flatten().flatten().copied().collect();
+    let n = pairs.len();
+    PyArray1::from_vec(py, flat)
+        .reshape([n, 2, 2])
+        .unwrap_or_else(|_| PyArray3::zeros(py, [0, 2, 2], false))
+}
+
+/// The common methods of a result class: its document, pickling, and the shared fields.
+macro_rules! result_class {
+    ($class:ident, $name:literal, $found:ty, { $($extra:tt)* }) => {
+        #[doc = concat!("The result of `curvekit.", $name, "`.")]
+        #[pyclass(name = $name, module = "curvekit", frozen)]
+        pub(crate) struct $class {
+            found: $found,
+            curves: Vec<CurveSummary>,
+        }
+
+        impl $class {
+            pub(crate) fn new(found: $found, curves: Vec<CurveSummary>) -> Self {
+                Self { found, curves }
+            }
+        }
+
+        #[pymethods]
+        impl $class {
+            /// The tool's `--json` document, as one JSON text.
+            fn to_json(&self) -> String {
+                json_document_of(&self.found, &self.curves, None).trim_end().to_string()
+            }
+
+            /// The tool's `--json` document, as a dict.
+            fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                py.import("json")?.call_method1("loads", (self.to_json(),))
+            }
+
+            /// Pickles as its document.
+            fn __reduce__<'py>(
+                &self,
+                py: Python<'py>,
+            ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+                let rebuild = py.import("curvekit._curvekit")?.getattr("_result_from_json")?;
+                let found = serde_json::to_string(&self.found)
+                    .map_err(|e| PyValueError::new_err(e.to_string()))?;
+                let curves = serde_json::to_string(&self.curves)
+                    .map_err(|e| PyValueError::new_err(e.to_string()))?;
+                let args = ($name, self.found.variant(), found, curves).into_pyobject(py)?;
+                Ok((rebuild, args))
+            }
+
+            fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+                other
+                    .cast::<$class>()
+                    .is_ok_and(|o| o.get().found == self.found && o.get().curves == self.curves)
+            }
+
+            $($extra)*
+        }
+    };
+}
+
+result_class!(PyAntipodal, "Antipodal", AntipodalFound, {
+    /// Every pair proven (sign tests on exact forms) to be antipodal, and nothing missed.
+    #[getter]
+    fn certified(&self) -> bool {
+        match &self.found {
+            AntipodalFound::Curve(f) => f.certified,
+            AntipodalFound::Profile(f) => f.certified,
+        }
+    }
+
+    /// No search limit was hit.
+    #[getter]
+    fn complete(&self) -> bool {
+        match &self.found {
+            AntipodalFound::Curve(f) => f.complete,
+            AntipodalFound::Profile(f) => f.complete,
+        }
+    }
+
+    /// Why the result is not certified, when it is not.
+    #[getter]
+    fn reason(&self) -> Option<String> {
+        match &self.found {
+            AntipodalFound::Curve(f) => f.reason.clone(),
+            AntipodalFound::Profile(f) => f.reason.clone(),
+        }
+    }
+
+    /// The pairs' parameters `(s, t)`, an `(n, 2)` array sorted by `s`.
+    #[getter]
+    fn pairs<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        points2(
+            py,
+            &self.pair_fields().iter().map(|p| p.0).collect::<Vec<_>>(),
+        )
+    }
+
+    /// The pairs' points `(p, q)`, an `(n, 2, 2)` array.
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
+        pairs2(
+            py,
+            &self.pair_fields().iter().map(|p| p.1).collect::<Vec<_>>(),
+        )
+    }
+
+    /// The pairs' distances `|q − p|`, an `(n,)` array.
+    #[getter]
+    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.pair_fields().iter().map(|p| p.2).collect())
+    }
+
+    /// The pairs' types (`"A"` to `"E"`, Jia 2004 §3.3; `None` at a corner or a straight end).
+    #[getter]
+    fn types(&self) -> Vec<Option<String>> {
+        let name = |k: &antipodal::PairType| format!("{k:?}");
+        match &self.found {
+            AntipodalFound::Curve(f) => f.pairs.iter().map(|p| Some(name(&p.kind))).collect(),
+            AntipodalFound::Profile(f) => {
+                f.pairs.iter().map(|p| p.kind.as_ref().map(name)).collect()
+            }
+        }
+    }
+
+    /// The inflections' parameters, an `(m,)` array.
+    #[getter]
+    fn inflections<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let list = match &self.found {
+            AntipodalFound::Curve(f) => &f.inflections,
+            AntipodalFound::Profile(f) => &f.inflections,
+        };
+        PyArray1::from_vec(py, list.iter().map(|i| i.u).collect())
+    }
+
+    /// The families (arcs of non-isolated pairs): `[[s0, s1], [t0, t1]]` each, a `(k, 2, 2)`
+    /// array.
+    #[getter]
+    fn families<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
+        let ranges: Vec<[[f64; 2]; 2]> = match &self.found {
+            AntipodalFound::Curve(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
+            AntipodalFound::Profile(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
+        };
+        pairs2(py, &ranges)
+    }
+
+    fn __len__(&self) -> usize {
+        self.pair_fields().len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Antipodal({} pairs, certified={})",
+            self.pair_fields().len(),
+            if self.certified() { "True" } else { "False" }
+        )
+    }
+});
+
+impl PyAntipodal {
+    /// Each pair's `([s, t], [p, q], distance)`, for both variants.
+    fn pair_fields(&self) -> Vec<([f64; 2], [[f64; 2]; 2], f64)> {
+        match &self.found {
+            AntipodalFound::Curve(f) => f
+                .pairs
+                .iter()
+                .map(|p| ([p.s, p.t], [p.p, p.q], p.distance))
+                .collect(),
+            AntipodalFound::Profile(f) => f
+                .pairs
+                .iter()
+                .map(|p| ([p.s, p.t], [p.p, p.q], p.distance))
+                .collect(),
+        }
+    }
+}
+
+result_class!(PyInflections, "Inflections", InflectionsFound, {
+    /// Every inflection proven, and nothing missed.
+    #[getter]
+    fn certified(&self) -> bool {
+        match &self.found {
+            InflectionsFound::Curve(f) => f.certified,
+            InflectionsFound::Profile(f) => f.certified,
+        }
+    }
+
+    /// The inflections' parameters, an `(m,)` array.
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.list().iter().map(|i| i.u).collect())
+    }
+
+    /// The inflection points, an `(m, 2)` array.
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        points2(py, &self.list().iter().map(|i| i.p).collect::<Vec<_>>())
+    }
+
+    /// A profile's corners' parameters (empty for a smooth curve), a `(c,)` array.
+    #[getter]
+    fn corners<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let us = match &self.found {
+            InflectionsFound::Curve(_) => Vec::new(),
+            InflectionsFound::Profile(f) => f.corners.iter().map(|c| c.u).collect(),
+        };
+        PyArray1::from_vec(py, us)
+    }
+
+    fn __len__(&self) -> usize {
+        self.list().len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Inflections({} inflections, certified={})",
+            self.list().len(),
+            if self.certified() { "True" } else { "False" }
+        )
+    }
+});
+
+impl PyInflections {
+    fn list(&self) -> &[antipodal::Inflection] {
+        match &self.found {
+            InflectionsFound::Curve(f) => &f.inflections,
+            InflectionsFound::Profile(f) => &f.inflections,
+        }
+    }
+}
+
+result_class!(PyTangents, "Tangents", TangentsFound, {
+    /// Every line proven, and nothing missed.
+    #[getter]
+    fn certified(&self) -> bool {
+        match &self.found {
+            TangentsFound::Curve(f) => f.certified,
+            TangentsFound::Profile(f) => f.certified,
+        }
+    }
+
+    /// The lines' parameters `(s, t)` on the two curves, an `(n, 2)` array.
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        points2(py, &self.lines().iter().map(|l| l.0).collect::<Vec<_>>())
+    }
+
+    /// The lines' points of tangency `(p, q)`, an `(n, 2, 2)` array.
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
+        pairs2(py, &self.lines().iter().map(|l| l.1).collect::<Vec<_>>())
+    }
+
+    fn __len__(&self) -> usize {
+        self.lines().len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Tangents({} lines, certified={})",
+            self.lines().len(),
+            if self.certified() { "True" } else { "False" }
+        )
+    }
+});
+
+impl PyTangents {
+    fn lines(&self) -> Vec<([f64; 2], [[f64; 2]; 2])> {
+        match &self.found {
+            TangentsFound::Curve(f) => f.lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect(),
+            TangentsFound::Profile(f) => f.lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect(),
+        }
+    }
+}
+
+result_class!(PyBisector, "Bisector", BisectorFound, {
+    /// No search limit was hit.
+    #[getter]
+    fn complete(&self) -> bool {
+        match &self.found {
+            BisectorFound::Curve(f) => f.complete,
+            BisectorFound::Profile(f) => f.complete,
+        }
+    }
+
+    /// The branches, each `(tr, xy)`: the foot-point parameters `(t, r)` and the bisector
+    /// points, two `(k, 2)` arrays.
+    #[getter]
+    #[allow(clippy::type_complexity)]
+    fn branches<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> Vec<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
+        let pair = |tr: &[[f64; 2]], xy: &[[f64; 2]]| (points2(py, tr), points2(py, xy));
+        match &self.found {
+            BisectorFound::Curve(f) => f.branches.iter().map(|b| pair(&b.tr, &b.xy)).collect(),
+            BisectorFound::Profile(f) => f.branches.iter().map(|b| pair(&b.tr, &b.xy)).collect(),
+        }
+    }
+
+    fn __len__(&self) -> usize {
+        match &self.found {
+            BisectorFound::Curve(f) => f.branches.len(),
+            BisectorFound::Profile(f) => f.branches.len(),
+        }
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Bisector({} branches)", self.__len__())
+    }
+});
+
+result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
+    /// Every junction and trimming decision followed from sign tests.
+    #[getter]
+    fn certified(&self) -> bool {
+        self.found.certified
+    }
+
+    /// No search limit was hit.
+    #[getter]
+    fn complete(&self) -> bool {
+        self.found.complete
+    }
+
+    /// Why the axis is not certified, when it is not.
+    #[getter]
+    fn reason(&self) -> Option<String> {
+        self.found.reason.clone()
+    }
+
+    /// The nodes' points, an `(n, 2)` array (row `i` is node `i`).
+    #[getter]
+    fn nodes<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        points2(
+            py,
+            &self.found.nodes.iter().map(|n| n.xy).collect::<Vec<_>>(),
+        )
+    }
+
+    /// The nodes' radii (of the largest inscribed disks there), an `(n,)` array.
+    #[getter]
+    fn node_radii<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.found.nodes.iter().map(|n| n.radius).collect())
+    }
+
+    /// The nodes' kinds: `"junction"`, `"end"`, `"corner"`, `"joint"` or `"clip"`.
+    #[getter]
+    fn node_kinds(&self) -> PyResult<Vec<String>> {
+        self.found
+            .nodes
+            .iter()
+            .map(|n| match serde_json::to_value(n.kind) {
+                Ok(serde_json::Value::String(s)) => Ok(s),
+                _ => Err(PyValueError::new_err("a node kind without a name")),
+            })
+            .collect()
+    }
+
+    /// The edges, each `(from, to, xy, radius)`: node indices, the polyline as a `(k, 2)`
+    /// array and the radius at each vertex as a `(k,)` array.
+    #[getter]
+    #[allow(clippy::type_complexity)]
+    fn edges<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> Vec<(
+        usize,
+        usize,
+        Bound<'py, PyArray2<f64>>,
+        Bound<'py, PyArray1<f64>>,
+    )> {
+        self.found
+            .edges
+            .iter()
+            .map(|e| {
+                (
+                    e.from,
+                    e.to,
+                    points2(py, &e.xy),
+                    PyArray1::from_vec(py, e.radius.clone()),
+                )
+            })
+            .collect()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "MedialAxis({} nodes, {} edges, certified={})",
+            self.found.nodes.len(),
+            self.found.edges.len(),
+            if self.found.certified {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+});
+
+/// Unpickling: a result read back from its document.
+#[pyfunction]
+fn _result_from_json(
+    py: Python<'_>,
+    class: &str,
+    variant: &str,
+    found: &str,
+    curves: &str,
+) -> PyResult<Py<PyAny>> {
+    let bad = |e: serde_json::Error| PyValueError::new_err(format!("{class}: {e}"));
+    let curves: Vec<CurveSummary> = serde_json::from_str(curves).map_err(bad)?;
+    fn make<T: Kept>(variant: &str, found: &str) -> serde_json::Result<T> {
+        T::from_document(variant, found)
+    }
+    let object = match class {
+        "Antipodal" => PyAntipodal::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
+        "Inflections" => PyInflections::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
+        "Tangents" => PyTangents::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
+        "Bisector" => PyBisector::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
+        "MedialAxis" => PyMedialAxis::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
+        other => return Err(PyValueError::new_err(format!("no result class {other:?}"))),
+    };
+    Ok(object.unbind())
+}
+
+/// Registers the result classes and the unpickling function.
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyAntipodal>()?;
+    m.add_class::<PyInflections>()?;
+    m.add_class::<PyTangents>()?;
+    m.add_class::<PyBisector>()?;
+    m.add_class::<PyMedialAxis>()?;
+    m.add_function(wrap_pyfunction!(_result_from_json, m)?)?;
+    Ok(())
+}

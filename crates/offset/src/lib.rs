@@ -1,0 +1,234 @@
+//! Inward offsets of planar regions from their medial axis: the boundary of the points of the
+//! region at distance at least `d` from its boundary, as closed loops of lines, arcs and
+//! curves.
+//!
+//! The medial axis knows the offset's shape before any curve is drawn. A point of the axis
+//! with radius `d` is where the offset meets itself (a *seam*): there the offsets of the two
+//! boundary points nearest to it coincide. Every boundary point whose inscribed disk (the
+//! largest empty one touching it) is wider than `d` offsets to a point of the result, and no
+//! other does. So each loop is made of stretches of boundary between seams, each offset as it
+//! is (a line stays a line, an arc an arc about the same centre, a reflex corner becomes an
+//! arc of radius `d` about it), joined across the seams. Nothing is intersected, and nothing
+//! can cross.
+//!
+//! ```
+//! use curve::{Profile, Region, Segment};
+//! use medial::{medial_axis, MedialOptions};
+//! use offset::{offsets, OffsetOptions};
+//! // A 4 × 2 rectangle offset by 0.5: a 3 × 1 rectangle of four lines.
+//! let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+//! let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+//! let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+//! let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+//! let found = offsets(&region, &axis, &[0.5], &OffsetOptions::default()).unwrap();
+//! assert_eq!(found.offsets[0].loops.len(), 1);
+//! assert_eq!(found.offsets[0].loops[0].segments.len(), 4);
+//! ```
+
+mod loops;
+mod pieces;
+mod seams;
+mod walk;
+
+use curve::{ParamCurve, Region};
+use medial::MedialAxis;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+use walk::Walk;
+
+/// Options of the offsets.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OffsetOptions {
+    /// The largest distance between an offset curve of a spline and the exact offset,
+    /// relative to the region's size (lines and arcs are offset exactly).
+    pub chord_tol: f64,
+}
+
+impl Default for OffsetOptions {
+    fn default() -> Self {
+        Self { chord_tol: 1e-3 }
+    }
+}
+
+/// One piece of an offset loop.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum OffsetSegment {
+    /// A straight line.
+    Line {
+        /// Start.
+        from: [f64; 2],
+        /// End.
+        to: [f64; 2],
+    },
+    /// A circular arc, counterclockwise when `end > start`.
+    Arc {
+        /// Centre.
+        center: [f64; 2],
+        /// Radius.
+        r: f64,
+        /// Start angle (radians).
+        start: f64,
+        /// End angle.
+        end: f64,
+    },
+    /// The offset of a spline, as a B-spline within the chord tolerance of it where
+    /// measured (today of degree 1: a polyline whose vertices lie on the exact offset).
+    #[serde(rename = "bspline")]
+    BSpline {
+        /// The degree.
+        degree: usize,
+        /// The control points (clamped, uniform knots on `[0, 1]`).
+        points: Vec<[f64; 2]>,
+    },
+}
+
+/// A closed loop of an offset: counterclockwise round an outer part, clockwise round a hole.
+/// In JSON, a closed `profile` document.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename = "profile")]
+pub struct OffsetLoop {
+    /// The pieces, each starting where the one before ends.
+    pub segments: Vec<OffsetSegment>,
+}
+
+/// The offset at one distance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Offset {
+    /// The distance.
+    pub distance: f64,
+    /// The loops (none: the region vanishes at this distance).
+    pub loops: Vec<OffsetLoop>,
+}
+
+/// The offsets at several distances of one region.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Offsets {
+    /// One per distance asked, in the order asked.
+    pub offsets: Vec<Offset>,
+    /// Whether the axis was certified and every seam closed by Newton's method.
+    pub certified: bool,
+    /// Why not, where `certified` is false.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    /// Whether the axis was complete and the seams joined into loops.
+    pub complete: bool,
+}
+
+/// Why offsets could not be computed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum Error {
+    /// A distance or an option out of range.
+    #[error("{field}: {value} is out of range: {why}")]
+    BadOption {
+        /// The option.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+        /// What it must be.
+        why: &'static str,
+    },
+}
+
+/// The inward offsets of `region` at each of `distances`, from its medial axis `axis`
+/// (computed by [`medial::medial_axis`], not the exterior one).
+pub fn offsets(
+    region: &Region,
+    axis: &MedialAxis,
+    distances: &[f64],
+    opts: &OffsetOptions,
+) -> Result<Offsets, Error> {
+    if !(opts.chord_tol.is_finite() && opts.chord_tol > 0.0 && opts.chord_tol <= 0.5) {
+        return Err(Error::BadOption {
+            field: "chord_tol",
+            value: opts.chord_tol,
+            why: "must be in (0, 0.5]",
+        });
+    }
+    if let Some(&bad) = distances.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
+        return Err(Error::BadOption {
+            field: "distance",
+            value: bad,
+            why: "must be a finite number > 0",
+        });
+    }
+    let walks: Vec<Walk<'_>> = std::iter::once(Walk::new(region.outer(), false))
+        .chain(region.holes().iter().map(|h| Walk::new(h, true)))
+        .collect();
+    let size = region_size(region);
+    let chord = opts.chord_tol * size;
+    let widest = widest_per_boundary(axis, walks.len());
+    let mut all_closed = true;
+    let mut consistent = true;
+    let mut found = Vec::with_capacity(distances.len());
+    for &d in distances {
+        let seams = seams::seams(axis, &walks, d, size);
+        all_closed &= seams.iter().all(|s| s.refined);
+        let kept_whole: Vec<bool> = widest
+            .iter()
+            .map(|&w| w > d + seams::TOUCHING * size)
+            .collect();
+        let assembled = loops::loops(&walks, &seams, &kept_whole);
+        consistent &= assembled.consistent;
+        let loops = assembled
+            .loops
+            .iter()
+            .map(|stretches| {
+                let mut segments = Vec::new();
+                for stretch in stretches {
+                    pieces::pieces(&walks[stretch.boundary], stretch, d, chord, &mut segments);
+                }
+                OffsetLoop { segments }
+            })
+            .collect();
+        found.push(Offset { distance: d, loops });
+    }
+    let reason = if !axis.certified {
+        Some("the medial axis is not certified".to_string())
+    } else if !all_closed {
+        Some("a seam's feet did not converge".to_string())
+    } else {
+        None
+    };
+    Ok(Offsets {
+        offsets: found,
+        certified: reason.is_none(),
+        reason,
+        complete: axis.complete && consistent,
+    })
+}
+
+/// The region's size: the larger side of its outer boundary's box.
+fn region_size(region: &Region) -> f64 {
+    let outer = region.outer();
+    let (a, b) = outer.domain();
+    let n = 64 * outer.segments().len();
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for k in 0..=n {
+        let p = outer.jet_to(a + (b - a) * k as f64 / n as f64, 0).p;
+        lo = [lo[0].min(p.x), lo[1].min(p.y)];
+        hi = [hi[0].max(p.x), hi[1].max(p.y)];
+    }
+    (hi[0] - lo[0]).max(hi[1] - lo[1])
+}
+
+/// Per boundary, the widest radius of the axis points with a foot on it (a disk's single node
+/// for an axis without edges).
+fn widest_per_boundary(axis: &MedialAxis, boundaries: usize) -> Vec<f64> {
+    let mut widest = vec![f64::NEG_INFINITY; boundaries];
+    for edge in &axis.edges {
+        for (k, pair) in edge.boundary.iter().enumerate() {
+            for &b in pair {
+                if let Some(w) = widest.get_mut(b) {
+                    *w = w.max(edge.radius[k]);
+                }
+            }
+        }
+    }
+    if axis.edges.is_empty() {
+        if let (Some(node), Some(w)) = (axis.nodes.first(), widest.first_mut()) {
+            *w = node.radius;
+        }
+    }
+    widest
+}

@@ -1,0 +1,219 @@
+//! The geometry of a kept stretch at the distance: each segment's offset (a line of a line, an
+//! arc of an arc, a curve within the chord tolerance of a spline's) and, at each reflex
+//! corner it passes, the arc about the corner.
+
+use crate::loops::{incoming_segment, outgoing_segment, Stretch};
+use crate::walk::{Foot, Walk};
+use crate::OffsetSegment;
+use curve::{SegmentKind, V2};
+use std::f64::consts::TAU;
+
+/// Halvings of a spline's span before its offset polyline is taken as it is (2^16 chords).
+const MAX_HALVINGS: usize = 16;
+
+/// The offset pieces of `stretch` at distance `d`, its spline pieces within `chord` of the
+/// exact offset at the points measured; appended to `out`.
+pub(crate) fn pieces(
+    walk: &Walk<'_>,
+    stretch: &Stretch,
+    d: f64,
+    chord: f64,
+    out: &mut Vec<OffsetSegment>,
+) {
+    let n = walk.profile.segments().len();
+    let (mut at, mut segment) = match stretch.from {
+        Foot::OnSegment { segment, u } => (u, segment),
+        Foot::Fan { u, angle } => {
+            let outgoing = outgoing_segment(walk, u);
+            let end = match stretch.to {
+                Foot::Fan { u: v, angle: a } if !stretch.whole && same(walk, u, v) => {
+                    if fan_place(walk, u, a) >= fan_place(walk, u, angle) {
+                        out.push(corner_arc(walk, u, angle, a, d));
+                        return;
+                    }
+                    walk.normal(outgoing, u).angle()
+                }
+                _ => walk.normal(outgoing, u).angle(),
+            };
+            out.push(corner_arc(walk, u, angle, end, d));
+            (u, outgoing)
+        }
+    };
+    let target = if stretch.whole {
+        walk.period
+    } else {
+        walk.ahead(param(stretch.from), param(stretch.to))
+    };
+    let mut walked = 0.0;
+    // (Each step is one segment: the walk passes every segment at most once more.)
+    for _ in 0..=n + 1 {
+        let leave = if walk.side > 0.0 {
+            segment as f64 + 1.0
+        } else {
+            segment as f64
+        };
+        let enter = if walk.side > 0.0 {
+            segment as f64
+        } else {
+            segment as f64 + 1.0
+        };
+        // (Standing where a segment is entered, the walk crosses all of it: on a boundary of
+        // one segment, entering and leaving are the same parameter.)
+        let span = match walk.ahead(at, leave) {
+            0.0 if walk.ahead(enter, at) == 0.0 => 1.0,
+            span => span,
+        };
+        let ends_here = match stretch.to {
+            Foot::OnSegment { segment: s, .. } => s == segment && walked + span >= target - 1e-12,
+            Foot::Fan { .. } => false,
+        } || (stretch.whole && walked + span >= target - 1e-12);
+        if ends_here {
+            let to = if stretch.whole {
+                leave
+            } else {
+                param(stretch.to)
+            };
+            segment_piece(walk, segment, at, to, d, chord, out);
+            return;
+        }
+        segment_piece(walk, segment, at, leave, d, chord, out);
+        walked += span;
+        at = leave.rem_euclid(walk.period);
+        let next = outgoing_segment(walk, at);
+        if walk.reflex_corner_at(at).is_some() {
+            let from = walk.normal(segment, at).angle();
+            match stretch.to {
+                Foot::Fan { u, angle } if same(walk, u, at) && walked >= target - 1e-12 => {
+                    out.push(corner_arc(walk, at, from, angle, d));
+                    return;
+                }
+                _ => out.push(corner_arc(walk, at, from, walk.normal(next, at).angle(), d)),
+            }
+        }
+        segment = next;
+    }
+}
+
+/// A foot's profile parameter.
+fn param(foot: Foot) -> f64 {
+    match foot {
+        Foot::OnSegment { u, .. } | Foot::Fan { u, .. } => u,
+    }
+}
+
+/// Whether two parameters name the same joint.
+fn same(walk: &Walk<'_>, u: f64, v: f64) -> bool {
+    let d = (u - v).rem_euclid(walk.period);
+    d.min(walk.period - d) < 1e-9
+}
+
+/// How far clockwise from the incoming normal `angle` is in the fan at `u`.
+fn fan_place(walk: &Walk<'_>, u: f64, angle: f64) -> f64 {
+    let start = walk.normal(incoming_segment(walk, u), u).angle();
+    (start - angle).rem_euclid(TAU)
+}
+
+/// The arc of radius `d` about the corner at `u`, clockwise (the walk turns right there) from
+/// the direction `from` to `to`.
+fn corner_arc(walk: &Walk<'_>, u: f64, from: f64, to: f64, d: f64) -> OffsetSegment {
+    let sweep = (from - to).rem_euclid(TAU);
+    OffsetSegment::Arc {
+        center: walk.point(u).arr(),
+        r: d,
+        start: from,
+        end: from - sweep,
+    }
+}
+
+/// The offset of segment `segment` from `from` to `to` (profile parameters, in the walk's
+/// direction).
+fn segment_piece(
+    walk: &Walk<'_>,
+    segment: usize,
+    from: f64,
+    to: f64,
+    d: f64,
+    chord: f64,
+    out: &mut Vec<OffsetSegment>,
+) {
+    // (The walk enters a segment at one end and leaves at the other: a parameter on the
+    // period's seam is 0 at the first segment's start and the period at the last one's end.)
+    let (enter, leave) = if walk.side > 0.0 {
+        (segment as f64, segment as f64 + 1.0)
+    } else {
+        (segment as f64 + 1.0, segment as f64)
+    };
+    let on_segment = |u: f64, end: f64| {
+        let u = u.rem_euclid(walk.period);
+        let v = if (u - end).abs() <= 1e-12 || (u + walk.period - end).abs() <= 1e-12 {
+            end
+        } else {
+            u
+        };
+        v.clamp(segment as f64, segment as f64 + 1.0)
+    };
+    let (from, to) = (on_segment(from, enter), on_segment(to, leave));
+    let point = |u: f64| walk.offset(Foot::OnSegment { segment, u }, d).0;
+    let seg = &walk.profile.segments()[segment];
+    match (seg.kind(), seg.circle()) {
+        (SegmentKind::Line, _) => out.push(OffsetSegment::Line {
+            from: point(from).arr(),
+            to: point(to).arr(),
+        }),
+        (SegmentKind::Arc, Some((center, _))) => {
+            let c = V2::from_arr(center);
+            let (p, q) = (point(from) - c, point(to) - c);
+            let radius = p.norm();
+            // (Counterclockwise when the walk goes round the centre that way.)
+            let tangent = walk.profile.jet_on(segment, from, 1).d1 * walk.side;
+            let counterclockwise =
+                (walk.profile.jet_on(segment, from, 0).p - c).cross(tangent) > 0.0;
+            let (a, b) = (p.angle(), q.angle());
+            let mut sweep = if counterclockwise {
+                (b - a).rem_euclid(TAU)
+            } else {
+                (a - b).rem_euclid(TAU)
+            };
+            if sweep < 1e-12 && (to - from).abs() > 0.5 {
+                sweep = TAU;
+            }
+            out.push(OffsetSegment::Arc {
+                center,
+                r: radius,
+                start: a,
+                end: if counterclockwise {
+                    a + sweep
+                } else {
+                    a - sweep
+                },
+            });
+        }
+        _ => out.push(OffsetSegment::BSpline {
+            degree: 1,
+            points: polyline(&point, from, to, chord),
+        }),
+    }
+}
+
+/// The offset curve between `from` and `to` as a polyline whose chords are within `chord` of
+/// it at each chord's middle and quarter points (measured, halving where they are not).
+fn polyline(point: &dyn Fn(f64) -> V2, from: f64, to: f64, chord: f64) -> Vec<[f64; 2]> {
+    let mut points = vec![point(from).arr()];
+    let mut stack = vec![(from, to, 0usize)];
+    while let Some((a, b, depth)) = stack.pop() {
+        let (pa, pb) = (point(a), point(b));
+        let off = |t: f64| {
+            let p = point(a + (b - a) * t);
+            curve::distance_to_segment(p.arr(), pa.arr(), pb.arr())
+        };
+        let deviation = off(0.25).max(off(0.5)).max(off(0.75));
+        if deviation > chord && depth < MAX_HALVINGS {
+            let m = 0.5 * (a + b);
+            stack.push((m, b, depth + 1));
+            stack.push((a, m, depth + 1));
+        } else {
+            points.push(pb.arr());
+        }
+    }
+    points
+}

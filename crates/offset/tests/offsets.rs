@@ -1,0 +1,244 @@
+//! Offsets against closed forms (rectangles, disks, annuli) and against an independent
+//! distance (the boundary sampled densely): every offset point lies at the distance, the loops
+//! close, run the right way round, and their number follows the region's shape.
+#![allow(clippy::unwrap_used)]
+
+use curve::{ParamCurve, Profile, Region, Segment};
+use medial::{medial_axis, MedialOptions};
+use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+fn polygon(c: &[[f64; 2]]) -> Profile {
+    let n = c.len();
+    let sides = (0..n)
+        .map(|i| Segment::line(c[i], c[(i + 1) % n]).unwrap())
+        .collect();
+    Profile::new(sides, None).unwrap()
+}
+
+fn circle(center: [f64; 2], r: f64) -> Profile {
+    Profile::new(vec![Segment::arc(center, r, 0.0, TAU).unwrap()], None).unwrap()
+}
+
+/// The 10 × 6 pocket with corner radius 1 and a round island of radius 1 (the issue's).
+fn pocket() -> Region {
+    let q = FRAC_PI_2;
+    let outer = Profile::new(
+        vec![
+            Segment::line([1.0, 0.0], [9.0, 0.0]).unwrap(),
+            Segment::arc([9.0, 1.0], 1.0, -q, 0.0).unwrap(),
+            Segment::line([10.0, 1.0], [10.0, 5.0]).unwrap(),
+            Segment::arc([9.0, 5.0], 1.0, 0.0, q).unwrap(),
+            Segment::line([9.0, 6.0], [1.0, 6.0]).unwrap(),
+            Segment::arc([1.0, 5.0], 1.0, q, PI).unwrap(),
+            Segment::line([0.0, 5.0], [0.0, 1.0]).unwrap(),
+            Segment::arc([1.0, 1.0], 1.0, PI, PI + q).unwrap(),
+        ],
+        None,
+    )
+    .unwrap();
+    Region::new(outer, vec![circle([6.5, 3.0], 1.0)]).unwrap()
+}
+
+fn offsets_of(region: &Region, distances: &[f64]) -> Offsets {
+    let axis = medial_axis(region, &MedialOptions::default()).unwrap();
+    assert!(axis.certified, "{:?}", axis.reason);
+    offsets(region, &axis, distances, &OffsetOptions::default()).unwrap()
+}
+
+/// Points along an offset segment (its ends included).
+fn samples(s: &OffsetSegment, n: usize) -> Vec<[f64; 2]> {
+    match s {
+        OffsetSegment::Line { from, to } => (0..=n)
+            .map(|k| {
+                let t = k as f64 / n as f64;
+                [
+                    from[0] + t * (to[0] - from[0]),
+                    from[1] + t * (to[1] - from[1]),
+                ]
+            })
+            .collect(),
+        OffsetSegment::Arc {
+            center,
+            r,
+            start,
+            end,
+        } => (0..=n)
+            .map(|k| {
+                let a = start + (end - start) * k as f64 / n as f64;
+                [center[0] + r * a.cos(), center[1] + r * a.sin()]
+            })
+            .collect(),
+        OffsetSegment::BSpline { points, .. } => points.clone(),
+    }
+}
+
+fn ends(s: &OffsetSegment) -> ([f64; 2], [f64; 2]) {
+    let p = samples(s, 1);
+    (p[0], p[p.len() - 1])
+}
+
+/// The distance from `p` to the region's boundary, by dense sampling (independent of the
+/// code under test): exact for lines, within the sagitta of 4,000 chords per arc.
+fn distance_to_boundary(region: &Region, p: [f64; 2]) -> f64 {
+    let mut best = f64::INFINITY;
+    for b in std::iter::once(region.outer()).chain(region.holes()) {
+        for (i, s) in b.segments().iter().enumerate() {
+            let n = if s.circle().is_some() { 4000 } else { 1 };
+            let at = |k: usize| b.jet_to(i as f64 + k as f64 / n as f64, 0).p.arr();
+            for k in 0..n {
+                best = best.min(curve::distance_to_segment(p, at(k), at(k + 1)));
+            }
+        }
+    }
+    best
+}
+
+/// Every loop closes, every sampled point is at the distance (within `tol`), and the signed
+/// area of each loop says which way it runs.
+fn check(region: &Region, found: &Offsets, tol: f64) -> Vec<Vec<f64>> {
+    let mut areas = Vec::new();
+    for o in &found.offsets {
+        let mut per = Vec::new();
+        for l in &o.loops {
+            assert!(!l.segments.is_empty());
+            let mut area = 0.0;
+            for (k, s) in l.segments.iter().enumerate() {
+                let (_, end) = ends(s);
+                let (next, _) = ends(&l.segments[(k + 1) % l.segments.len()]);
+                let gap = ((end[0] - next[0]).powi(2) + (end[1] - next[1]).powi(2)).sqrt();
+                assert!(
+                    gap < 1e-9,
+                    "d = {}: piece {k} ends {gap} from the next",
+                    o.distance
+                );
+                let fine = samples(s, 2000);
+                for w in fine.windows(2) {
+                    area += 0.5 * (w[0][0] * w[1][1] - w[1][0] * w[0][1]);
+                }
+                for p in samples(s, 24) {
+                    let dist = distance_to_boundary(region, p);
+                    assert!(
+                        (dist - o.distance).abs() < tol,
+                        "d = {}: {p:?} is {dist} from the boundary",
+                        o.distance
+                    );
+                }
+            }
+            per.push(area);
+        }
+        areas.push(per);
+    }
+    areas
+}
+
+#[test]
+fn a_rectangle_shrinks_to_a_rectangle_until_it_vanishes() {
+    let region = Region::new(
+        polygon(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]),
+        vec![],
+    )
+    .unwrap();
+    let found = offsets_of(&region, &[0.25, 0.5, 0.9, 1.1]);
+    let areas = check(&region, &found, 1e-9);
+    for (k, d) in [0.25, 0.5, 0.9].iter().enumerate() {
+        assert_eq!(found.offsets[k].loops.len(), 1);
+        assert_eq!(found.offsets[k].loops[0].segments.len(), 4);
+        let expected = (4.0 - 2.0 * d) * (2.0 - 2.0 * d);
+        assert!(
+            (areas[k][0] - expected).abs() < 1e-9,
+            "{} vs {expected}",
+            areas[k][0]
+        );
+    }
+    assert!(
+        found.offsets[3].loops.is_empty(),
+        "beyond half the width nothing is left"
+    );
+    assert!(found.certified && found.complete);
+}
+
+#[test]
+fn an_annulus_gives_two_circles_each_way_round() {
+    let region = Region::new(circle([1.0, 2.0], 3.0), vec![circle([1.0, 2.0], 1.0)]).unwrap();
+    let found = offsets_of(&region, &[0.5, 0.99, 1.01]);
+    let areas = check(&region, &found, 1e-6);
+    for (k, d) in [0.5_f64, 0.99].iter().enumerate() {
+        let mut got = areas[k].clone();
+        got.sort_by(f64::total_cmp);
+        // (Clockwise round the hole: negative area.)
+        let (hole, outer) = (-PI * (1.0 + d).powi(2), PI * (3.0 - d).powi(2));
+        assert!((got[0] - hole).abs() < 1e-3 * hole.abs(), "{got:?}");
+        assert!((got[1] - outer).abs() < 1e-3 * outer, "{got:?}");
+    }
+    assert!(found.offsets[2].loops.is_empty());
+}
+
+#[test]
+fn the_pocket_keeps_its_island_then_splits_then_vanishes() {
+    let region = pocket();
+    let distances: Vec<f64> = (1..=12).map(|k| 0.25 * k as f64).collect();
+    let found = offsets_of(&region, &distances);
+    check(&region, &found, 1e-6);
+    let counts: Vec<usize> = found.offsets.iter().map(|o| o.loops.len()).collect();
+    // Two loops (round the pocket, round the island) while the island's gap to the right
+    // wall (2.5 wide) is open; then one loop left of the island; then none.
+    assert_eq!(counts[0], 2, "{counts:?}");
+    assert_eq!(counts.last(), Some(&0), "{counts:?}");
+    assert!(found.certified && found.complete, "{:?}", found.reason);
+}
+
+#[test]
+fn reflex_corners_become_arcs_of_the_distance() {
+    // An L-shaped room: its one reflex corner at (2, 2).
+    let region = Region::new(
+        polygon(&[
+            [0.0, 0.0],
+            [6.0, 0.0],
+            [6.0, 2.0],
+            [2.0, 2.0],
+            [2.0, 6.0],
+            [0.0, 6.0],
+        ]),
+        vec![],
+    )
+    .unwrap();
+    let found = offsets_of(&region, &[0.5]);
+    check(&region, &found, 1e-9);
+    let arcs: Vec<&OffsetSegment> = found.offsets[0].loops[0]
+        .segments
+        .iter()
+        .filter(|s| matches!(s, OffsetSegment::Arc { .. }))
+        .collect();
+    assert_eq!(arcs.len(), 1);
+    let OffsetSegment::Arc {
+        center,
+        r,
+        start,
+        end,
+    } = arcs[0]
+    else {
+        unreachable!()
+    };
+    assert_eq!((*center, *r), ([2.0, 2.0], 0.5));
+    assert!(
+        (start - end - FRAC_PI_2).abs() < 1e-9,
+        "a quarter turn clockwise"
+    );
+}
+
+#[test]
+fn a_stretch_across_a_round_islands_seam_is_one_arc() {
+    // The island's parameter starts at angle 0, where the offset at 1 crosses it (the
+    // fixture region-pocket.json).
+    let mut region = pocket();
+    region = Region::new(region.outer().clone(), vec![circle([6.5, 3.0], 1.2)]).unwrap();
+    let found = offsets_of(&region, &[1.0, 1.1]);
+    check(&region, &found, 1e-6);
+    for o in &found.offsets {
+        let arcs = o.loops.iter().flat_map(|l| &l.segments).filter(|s| {
+            matches!(s, OffsetSegment::Arc { r, .. } if (r - (1.2 + o.distance)).abs() < 1e-9)
+        });
+        assert!(arcs.count() <= 3, "d = {}: the island's offset in a few arcs", o.distance);
+    }
+}

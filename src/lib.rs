@@ -3,7 +3,7 @@
 //! The crates do the geometry ([`bspline`]: exact B-spline algebra and certified roots;
 //! [`curve`]: the curve model and the analytic shapes; [`zeroset`]: zero sets and bisectors;
 //! [`antipodal`]: inflections, antipodal points and common tangents; [`medial`]: the medial
-//! axis of regions). This crate adds what
+//! axis of regions; [`offset`]: offsets of regions from it). This crate adds what
 //! the `curvekit` tool needs around them: reading curve files ([`io`]), the commands as calls on
 //! the curves read ([`commands`]: the command line, its batch mode and the Python package share
 //! them) and figures ([`svg`]).
@@ -11,6 +11,7 @@ pub use antipodal;
 pub use bspline;
 pub use curve;
 pub use medial;
+pub use offset;
 pub use zeroset;
 
 pub mod commands;

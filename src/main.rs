@@ -38,7 +38,7 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         }
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
             eprintln!(
-                "curvekit: no command given (one of: demo, antipodal, inflections, tangents, bisector, medial, batch; see --help)"
+                "curvekit: no command given (one of: demo, antipodal, inflections, tangents, bisector, medial, offset, batch; see --help)"
             );
             ExitCode::from(2)
         }

@@ -118,13 +118,13 @@ impl PyCurve {
         self.curve.clone()
     }
 
-    /// The region the curve is, or encloses (a closed curve or profile), once.
+    /// The region the curve is, or encloses (a closed curve or profile: read once as one).
     pub(crate) fn region(&self) -> Result<&Curve, CommandError> {
+        if let Shape::Region(_) = self.curve.shape {
+            return Ok(&self.curve);
+        }
         self.region
-            .get_or_init(|| match self.curve.shape {
-                Shape::Region(_) => Ok(self.curve.as_ref().clone()),
-                _ => self.source.read_region(),
-            })
+            .get_or_init(|| self.source.read_region())
             .as_ref()
             .map_err(Clone::clone)
     }

@@ -6,6 +6,7 @@ mod demo;
 mod demo_medial;
 mod demo_profiles;
 mod medial;
+mod offset;
 mod report;
 mod timing;
 
@@ -78,6 +79,36 @@ enum Command {
         /// to the region's box grown by half its size.
         #[arg(long)]
         exterior: bool,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// The inward offsets of a region: the boundary of its points at distance at least D from
+    /// its boundary (pocketing tool paths), from its medial axis.
+    Offset {
+        /// Region file (JSON), or a closed curve or profile, or a drawing.
+        region: PathBuf,
+        /// One distance.
+        #[arg(long, value_name = "D", allow_hyphen_values = true, conflicts_with_all = ["distances", "step"], required_unless_present_any = ["distances", "step"])]
+        distance: Option<f64>,
+        /// Several distances, comma-separated, sharing one medial axis.
+        #[arg(
+            long,
+            value_name = "D1,D2,…",
+            value_delimiter = ',',
+            allow_hyphen_values = true,
+            conflicts_with = "step"
+        )]
+        distances: Option<Vec<f64>>,
+        /// Every multiple of S while the region lasts.
+        #[arg(long, value_name = "S", allow_hyphen_values = true)]
+        step: Option<f64>,
+        /// Outward offsets (from the exterior medial axis).
+        #[arg(long)]
+        outward: bool,
+        /// Chord tolerance of the medial axis and of the offsets of splines, relative to the
+        /// region's size.
+        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        chord_tol: f64,
         #[command(flatten)]
         common: Common,
     },
@@ -230,6 +261,28 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             exterior,
             common,
         } => medial::run(&region, chord_tol, (fit, exterior), &common),
+        Command::Offset {
+            region,
+            distance,
+            distances,
+            step,
+            outward,
+            chord_tol,
+            common,
+        } => {
+            if outward {
+                return Err(Failure::Usage(
+                    "--outward: outward offsets are not available yet (issue 21 is open)".into(),
+                ));
+            }
+            let asked = match (distance, distances, step) {
+                (Some(d), _, _) => curvekit::commands::Distances::List(vec![d]),
+                (_, Some(list), _) => curvekit::commands::Distances::List(list),
+                (_, _, Some(s)) => curvekit::commands::Distances::Step(s),
+                _ => curvekit::commands::Distances::List(Vec::new()),
+            };
+            offset::run(&region, &asked, chord_tol, &common)
+        }
         Command::Batch {
             command,
             inputs,

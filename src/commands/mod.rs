@@ -270,6 +270,75 @@ pub fn medial(
     medial::medial_axis(r, opts).map_err(|e| CommandError::Other(format!("medial: {e}")))
 }
 
+/// The distances `offset` is asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Distances {
+    /// These, in this order.
+    List(Vec<f64>),
+    /// Every multiple of the step while the region lasts (up to its widest inscribed disk).
+    Step(f64),
+}
+
+/// Most offsets one call computes (`--step` against the widest disk): beyond, a pocketing
+/// operation of that many passes is a typo.
+pub const MAX_OFFSETS: usize = 10_000;
+
+/// The distances checked on their own (as [`validate_options`]): each finite and positive.
+pub fn validate_distances(distances: &Distances) -> Result<(), CommandError> {
+    let positive = |flag: &str, d: f64| {
+        if d.is_finite() && d > 0.0 {
+            Ok(())
+        } else {
+            Err(CommandError::Usage(format!(
+                "--{flag}: {d} is out of range: must be a finite number > 0"
+            )))
+        }
+    };
+    match distances {
+        Distances::List(list) if list.is_empty() => {
+            Err(CommandError::Usage("offset: no distance given".into()))
+        }
+        Distances::List(list) => list.iter().try_for_each(|&d| positive("distance", d)),
+        Distances::Step(s) => positive("step", *s),
+    }
+}
+
+/// The inward offsets of a region read (as [`crate::io::read_region`] gives it), from its
+/// medial axis computed with `medial_opts`.
+pub fn offset(
+    region: &Curve,
+    distances: &Distances,
+    opts: &offset::OffsetOptions,
+    medial_opts: &medial::MedialOptions,
+) -> Result<offset::Offsets, CommandError> {
+    validate_distances(distances)?;
+    validate_medial_options(medial_opts)?;
+    let axis = medial(region, medial_opts)?;
+    let Shape::Region(r) = &region.shape else {
+        return Err(refuse(region, "kind", "offset takes a region"));
+    };
+    let list = match distances {
+        Distances::List(list) => list.clone(),
+        Distances::Step(step) => {
+            let widest = axis
+                .edges
+                .iter()
+                .flat_map(|e| e.radius.iter().copied())
+                .chain(axis.nodes.iter().map(|n| n.radius))
+                .fold(0.0, f64::max);
+            let count = (widest / step).floor();
+            if count > MAX_OFFSETS as f64 {
+                return Err(CommandError::Usage(format!(
+                    "--step: {step} is out of range: gives more than {MAX_OFFSETS} offsets in \
+                     this region"
+                )));
+            }
+            (1..=count as usize).map(|k| k as f64 * step).collect()
+        }
+    };
+    offset::offsets(r, &axis, &list, opts).map_err(|e| CommandError::Usage(format!("offset: {e}")))
+}
+
 /// One JSON document, as the tool prints it with `--json`: the result's own fields (as the
 /// contract names them), then the extensions `curve` (or `curves`, for two) and, when timed,
 /// `stats`; one line, ending in a newline.

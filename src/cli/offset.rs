@@ -1,0 +1,101 @@
+//! `curvekit offset`: the inward offsets of a region at one or several distances, as text,
+//! JSON (closed profile documents) or a figure.
+
+use super::report::{draw_curve, time_line};
+use super::{print_out, timing, write_file, Common, Failure};
+use curvekit::commands::{self, Distances};
+use curvekit::io::read_region;
+use curvekit::medial::MedialOptions;
+use curvekit::offset::{OffsetOptions, OffsetSegment, Offsets};
+use curvekit::svg::Figure;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Points drawn per arc of an offset in the figure.
+const ARC_POINTS: usize = 64;
+
+/// Runs `offset` on the region at `path`.
+pub(super) fn run(
+    path: &Path,
+    distances: &Distances,
+    chord_tol: f64,
+    common: &Common,
+) -> Result<(), Failure> {
+    let medial_opts = MedialOptions {
+        tol: common.tol,
+        chord_tol,
+        fit: false,
+        exterior: false,
+    };
+    commands::validate_medial_options(&medial_opts)?;
+    commands::validate_distances(distances)?;
+    let opts = OffsetOptions { chord_tol };
+    let curve = read_region(path, common.pick)?;
+    let compute = || commands::offset(&curve, distances, &opts, &medial_opts);
+    let found = compute()?;
+    let stats = common.time.then(|| timing::measure(compute));
+    if let Some(svg) = &common.svg {
+        let mut fig = Figure::new();
+        draw_curve(&mut fig, &curve);
+        for o in &found.offsets {
+            for l in &o.loops {
+                fig.thin(loop_points(&l.segments), "#c0392b");
+            }
+        }
+        fig.title(format!("{}: {} offsets", curve.file, found.offsets.len()));
+        write_file(svg, &fig.render())?;
+    }
+    print_out(&if common.json {
+        commands::json_document(&found, &[&curve], stats.as_ref())
+    } else {
+        text(&curve.file, &found, stats.as_ref())
+    })
+}
+
+/// The readable report: per distance, its loops and their pieces.
+fn text(file: &str, found: &Offsets, stats: Option<&commands::Stats>) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "region:      {file}");
+    for o in &found.offsets {
+        let pieces: usize = o.loops.iter().map(|l| l.segments.len()).sum();
+        let _ = writeln!(
+            s,
+            "distance {:<10} {} loops, {pieces} pieces",
+            o.distance,
+            o.loops.len()
+        );
+    }
+    let _ = writeln!(s, "certified:   {}", found.certified);
+    if let Some(why) = &found.reason {
+        let _ = writeln!(s, "  (why: {why})");
+    }
+    let _ = writeln!(s, "complete:    {}", found.complete);
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+    s
+}
+
+/// A loop as points, for drawing.
+fn loop_points(segments: &[OffsetSegment]) -> Vec<[f64; 2]> {
+    let mut points = Vec::new();
+    for s in segments {
+        match s {
+            OffsetSegment::Line { from, to } => points.extend([*from, *to]),
+            OffsetSegment::Arc {
+                center,
+                r,
+                start,
+                end,
+            } => points.extend((0..=ARC_POINTS).map(|k| {
+                let a = start + (end - start) * k as f64 / ARC_POINTS as f64;
+                [center[0] + r * a.cos(), center[1] + r * a.sin()]
+            })),
+            OffsetSegment::BSpline { points: p, .. } => points.extend(p.iter().copied()),
+        }
+    }
+    if let Some(&first) = points.first() {
+        points.push(first);
+    }
+    points
+}

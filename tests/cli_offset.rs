@@ -1,0 +1,58 @@
+//! `curvekit offset`: the contract's document, whose loops are closed profiles the tool reads
+//! back, and options checked before the region is read.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{curvekit, curvekit_json, fixture};
+
+#[test]
+fn each_loop_is_a_closed_profile_the_tool_reads_back() {
+    let doc = curvekit_json(&["offset", &fixture("region-pocket.json"), "--step", "0.5"]);
+    assert_eq!(doc["certified"], true);
+    assert_eq!(doc["complete"], true);
+    let offsets = doc["offsets"].as_array().unwrap();
+    let distances: Vec<f64> = offsets
+        .iter()
+        .map(|o| o["distance"].as_f64().unwrap())
+        .collect();
+    assert_eq!(distances, [0.5, 1.0, 1.5, 2.0, 2.5]);
+    let dir = tempfile::tempdir().unwrap();
+    for (k, o) in offsets.iter().enumerate() {
+        for (j, l) in o["loops"].as_array().unwrap().iter().enumerate() {
+            assert_eq!(l["kind"], "profile");
+            let path = dir.path().join(format!("loop-{k}-{j}.json"));
+            std::fs::write(&path, l.to_string()).unwrap();
+            let back = curvekit_json(&["inflections", path.to_str().unwrap()]);
+            assert_eq!(back["curve"]["closed"], true, "{l}");
+        }
+    }
+    // (Round the island and round the pocket at first; nothing beyond the widest disk.)
+    assert_eq!(offsets[0]["loops"].as_array().unwrap().len(), 2);
+    let past = curvekit_json(&["offset", &fixture("region-pocket.json"), "--distance", "9"]);
+    assert!(past["offsets"][0]["loops"].as_array().unwrap().is_empty());
+}
+
+#[test]
+fn distances_are_checked_before_the_region_is_read() {
+    let missing = fixture("no-such-file.json");
+    for args in [
+        vec!["--distance", "0"],
+        vec!["--distance", "-1"],
+        vec!["--distances", "1,nan"],
+        vec!["--step", "0"],
+        vec!["--distance", "1", "--outward"],
+    ] {
+        let mut all = vec!["offset", &missing];
+        all.extend(args.iter().copied());
+        let run = curvekit(&all);
+        assert_eq!(run.code, 2, "{all:?}: {}", run.stderr);
+        assert!(
+            !run.stderr.contains("no-such-file"),
+            "{all:?}: {}",
+            run.stderr
+        );
+    }
+    let run = curvekit(&["offset", &fixture("region-pocket.json")]);
+    assert_eq!(run.code, 2, "a distance is required");
+}

@@ -7,8 +7,6 @@ examples/dask_antipodal.py), on one thread and on two: curves per second and the
 from __future__ import annotations
 
 import json
-import math
-import random
 import subprocess
 import sys
 import tempfile
@@ -16,21 +14,8 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def outline_documents(n: int, seed: int = 1) -> list:
-    """The example's outlines as curve documents (the same generator, without the package)."""
-    rng = random.Random(seed)
-    docs = []
-    for _ in range(n):
-        k = rng.randint(8, 20)
-        points = []
-        for i in range(k):
-            a = 2 * math.pi * (i + rng.uniform(-0.3, 0.3)) / k
-            r = rng.uniform(0.6, 1.4)
-            points.append([r * math.cos(a), r * math.sin(a)])
-        docs.append({"kind": "bspline", "degree": 3, "periodic": True, "points": points})
-    return docs
+sys.path.insert(0, str(ROOT / "python" / "examples"))
+from outlines import outline_documents  # noqa: E402
 
 
 def main(n: int, tool: str) -> None:

@@ -10,8 +10,6 @@ releases the GIL, so the same code runs on a process pool, a thread pool, or a D
 
 from __future__ import annotations
 
-import math
-import random
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -19,17 +17,7 @@ from concurrent.futures import ThreadPoolExecutor
 import dask.bag as db
 
 import curvekit
-
-
-def random_outline(rng: random.Random) -> curvekit.Curve:
-    """A periodic cubic B-spline on 8 to 20 points around a star-shaped polygon."""
-    k = rng.randint(8, 20)
-    points = []
-    for i in range(k):
-        a = 2 * math.pi * (i + rng.uniform(-0.3, 0.3)) / k
-        r = rng.uniform(0.6, 1.4)
-        points.append([r * math.cos(a), r * math.sin(a)])
-    return curvekit.BSpline(points, degree=3, periodic=True)
+from outlines import outline_documents
 
 
 def grasp_count(curve: curvekit.Curve) -> tuple[int, bool]:
@@ -55,10 +43,8 @@ def with_threads(curves: list, workers: int) -> list:
 
 
 def outlines(n: int, seed: int) -> list:
-    """``n`` generated outlines, freshly made (a curve keeps what its first run prepares, so
-    each way of running gets its own)."""
-    rng = random.Random(seed)
-    return [random_outline(rng) for _ in range(n)]
+    """``n`` generated outlines as curves (each way of running gets its own, made alike)."""
+    return [curvekit.from_dict(doc) for doc in outline_documents(n, seed)]
 
 
 def main(n: int = 2000, workers: int = 2, seed: int = 1) -> dict:

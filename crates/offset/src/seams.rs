@@ -2,6 +2,7 @@
 //! the offsets of the two sides of the axis meet, and each side's kept stretch of boundary
 //! begins or ends.
 
+use crate::loops::{incoming_segment, outgoing_segment};
 use crate::walk::{Foot, Walk};
 use curve::V2;
 use medial::{Edge, MedialAxis};
@@ -58,9 +59,27 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
     let guess = x0 + (x1 - x0) * share;
     let toward_wider = if r1 > r0 { x1 - x0 } else { x0 - x1 };
+    // The axis lists each vertex's two feet in no fixed order: here they are paired by the
+    // side of the step they lie on (left first).
+    let step = x1 - x0;
+    let sided = |j: usize| -> Option<[(usize, f64); 2]> {
+        let feet = [0, 1].map(|i| (edge.boundary[j][i], edge.feet[j][i]));
+        let left = |(b, u): (usize, f64)| -> Option<f64> {
+            Some(step.cross(walks.get(b)?.point(u) - V2::from_arr(edge.xy[j])))
+        };
+        Some(if left(feet[0])? >= left(feet[1])? {
+            feet
+        } else {
+            [feet[1], feet[0]]
+        })
+    };
+    let (before, after) = (sided(k - 1)?, sided(k)?);
     let foot_on = |side: usize| -> Option<(usize, Foot)> {
-        let b = edge.boundary[k][side];
-        let (u0, u1) = (edge.feet[k - 1][side], edge.feet[k][side]);
+        let (b, u0) = before[side];
+        let (b1, u1) = after[side];
+        if b != b1 {
+            return None;
+        }
         Some((b, foot_between(walks.get(b)?, u0, u1, share, guess)))
     };
     let feet = [foot_on(0)?, foot_on(1)?];
@@ -133,22 +152,76 @@ fn refine(
         }
         let step_a = -(gap.x * -db.y - -db.x * gap.y) / det;
         let step_b = -(da.x * gap.y - gap.x * da.y) / det;
-        current[0].1 = moved(current[0].1, step_a);
-        current[1].1 = moved(current[1].1, step_b);
+        current[0].1 = moved(&walks[current[0].0], current[0].1, step_a);
+        current[1].1 = moved(&walks[current[1].0], current[1].1, step_b);
     }
     (feet, false)
 }
 
-/// A foot moved by `step` in its variable, staying on its segment.
-fn moved(foot: Foot, step: f64) -> Foot {
+/// A foot moved by `step` in its variable. A foot leaving its segment goes on to the next one
+/// past a smooth joint, or into the fan of a reflex corner; one leaving a fan goes on to the
+/// segment on that side (so a seam whose bracketing feet straddle a corner is still found).
+fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
+    let n = walk.profile.segments().len();
     match foot {
-        Foot::OnSegment { segment, u } => Foot::OnSegment {
-            segment,
-            u: (u + step).clamp(segment as f64, segment as f64 + 1.0),
-        },
-        Foot::Fan { u, angle } => Foot::Fan {
-            u,
-            angle: (angle + step).rem_euclid(TAU),
-        },
+        Foot::OnSegment { segment, u } => {
+            let (lo, hi) = (segment as f64, segment as f64 + 1.0);
+            let v = u + step;
+            if (lo..=hi).contains(&v) {
+                return Foot::OnSegment { segment, u: v };
+            }
+            let joint = if v < lo { lo } else { hi };
+            let at = joint.rem_euclid(walk.period);
+            if walk.reflex_corner_at(at).is_some() {
+                return Foot::Fan {
+                    u: at,
+                    angle: walk.normal(segment, joint).angle(),
+                };
+            }
+            if walk
+                .joint_at(at)
+                .is_some_and(|j| j.kind == curve::JointKind::Smooth)
+            {
+                let next = if v < lo {
+                    (segment + n - 1) % n
+                } else {
+                    (segment + 1) % n
+                };
+                let entry = if v < lo {
+                    next as f64 + 1.0
+                } else {
+                    next as f64
+                };
+                return Foot::OnSegment {
+                    segment: next,
+                    u: entry,
+                };
+            }
+            Foot::OnSegment {
+                segment,
+                u: v.clamp(lo, hi),
+            }
+        }
+        Foot::Fan { u, angle } => {
+            let angle = angle + step;
+            let incoming = incoming_segment(walk, u);
+            let outgoing = outgoing_segment(walk, u);
+            let start = walk.normal(incoming, u).angle();
+            let sweep = (start - walk.normal(outgoing, u).angle()).rem_euclid(TAU);
+            let into = (start - angle).rem_euclid(TAU);
+            if into <= sweep {
+                return Foot::Fan { u, angle };
+            }
+            // (Past the fan: on the side it left by, the nearer of its two edges.)
+            let beyond_end = into - sweep < 0.5 * (TAU - sweep);
+            let segment = if beyond_end { outgoing } else { incoming };
+            // (The segment starting at the corner meets it at its start, the other at its end.)
+            let end = if segment == (u.round() as usize) % n {
+                segment as f64
+            } else {
+                segment as f64 + 1.0
+            };
+            Foot::OnSegment { segment, u: end }
+        }
     }
 }

@@ -236,9 +236,106 @@ fn a_stretch_across_a_round_islands_seam_is_one_arc() {
     let found = offsets_of(&region, &[1.0, 1.1]);
     check(&region, &found, 1e-6);
     for o in &found.offsets {
-        let arcs = o.loops.iter().flat_map(|l| &l.segments).filter(|s| {
-            matches!(s, OffsetSegment::Arc { r, .. } if (r - (1.2 + o.distance)).abs() < 1e-9)
-        });
-        assert!(arcs.count() <= 3, "d = {}: the island's offset in a few arcs", o.distance);
+        let arcs = o.loops.iter().flat_map(|l| &l.segments).filter(
+            |s| matches!(s, OffsetSegment::Arc { r, .. } if (r - (1.2 + o.distance)).abs() < 1e-9),
+        );
+        assert!(
+            arcs.count() <= 3,
+            "d = {}: the island's offset in a few arcs",
+            o.distance
+        );
     }
+}
+
+mod random_regions {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A star-shaped polygon (simple by construction, with reflex corners where its radii
+    /// dip), and maybe a round hole about its centre.
+    pub(super) fn region(radii: &[f64], turns: &[f64], hole: bool) -> Region {
+        let n = radii.len();
+        let corners: Vec<[f64; 2]> = (0..n)
+            .map(|i| {
+                let a = TAU * (i as f64 + 0.4 * turns[i]) / n as f64;
+                [radii[i] * a.cos(), radii[i] * a.sin()]
+            })
+            .collect();
+        let holes = if hole {
+            vec![circle([0.0, 0.0], 0.15)]
+        } else {
+            vec![]
+        };
+        Region::new(polygon(&corners), holes).unwrap()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Every offset point is at the distance from the boundary (dense independent
+        /// distance), every loop closes, and no two loops cross.
+        #[test]
+        fn offsets_of_random_polygons_are_at_the_distance(
+            radii in proptest::collection::vec(0.6..1.4f64, 5..11),
+            turns in proptest::collection::vec(-1.0..1.0f64, 11),
+            hole in any::<bool>(),
+            distances in proptest::collection::vec(0.02..0.45f64, 1..4),
+        ) {
+            let region = region(&radii, &turns, hole);
+            let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+            prop_assume!(axis.certified);
+            let found = offsets(&region, &axis, &distances, &OffsetOptions::default()).unwrap();
+            prop_assert!(found.complete);
+            check(&region, &found, 1e-6);
+            for o in &found.offsets {
+                let polylines: Vec<Vec<[f64; 2]>> = o
+                    .loops
+                    .iter()
+                    .map(|l| l.segments.iter().flat_map(|s| samples(s, 16)).collect())
+                    .collect();
+                for (i, a) in polylines.iter().enumerate() {
+                    for b in &polylines[i + 1..] {
+                        prop_assert!(!cross(a, b), "d = {}: two loops cross", o.distance);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether two polylines cross (a proper crossing of two of their chords).
+    fn cross(a: &[[f64; 2]], b: &[[f64; 2]]) -> bool {
+        let orient = |p: [f64; 2], q: [f64; 2], r: [f64; 2]| {
+            (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+        };
+        a.windows(2).any(|s| {
+            b.windows(2).any(|t| {
+                orient(s[0], s[1], t[0]) * orient(s[0], s[1], t[1]) < 0.0
+                    && orient(t[0], t[1], s[0]) * orient(t[0], t[1], s[1]) < 0.0
+            })
+        })
+    }
+}
+
+/// A case the random test found: an axis edge whose vertices list their two feet in the other
+/// order after a reflex corner takes over one side (seams must pair feet by side).
+#[test]
+fn feet_listed_in_either_order_are_paired_by_side() {
+    let radii = [
+        0.8934658253940653,
+        0.6,
+        0.6,
+        0.6,
+        0.6,
+        0.6,
+        1.2262237539045797,
+        0.7837112724784945,
+        1.341901869548578,
+    ];
+    let mut turns = [0.0; 11];
+    turns[7] = 0.7892853767185828;
+    turns[8] = -0.47010607440650237;
+    let region = random_regions::region(&radii, &turns, false);
+    let found = offsets_of(&region, &[0.43051319204881144]);
+    assert!(found.certified && found.complete, "{:?}", found.reason);
+    check(&region, &found, 1e-6);
 }

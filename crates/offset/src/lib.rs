@@ -30,7 +30,7 @@ mod pieces;
 mod seams;
 mod walk;
 
-use curve::{ParamCurve, Region};
+use curve::{ParamCurve, Profile, Region, Segment};
 use medial::MedialAxis;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -90,6 +90,31 @@ pub enum OffsetSegment {
 pub struct OffsetLoop {
     /// The pieces, each starting where the one before ends.
     pub segments: Vec<OffsetSegment>,
+}
+
+impl OffsetLoop {
+    /// The loop as a closed profile (a B-spline piece as its chords), to be measured, drawn or
+    /// offset again (with [`curve::Region::nested`] for the regions the loops bound).
+    pub fn profile(&self) -> Result<Profile, curve::Error> {
+        let mut segments = Vec::new();
+        for s in &self.segments {
+            match s {
+                OffsetSegment::Line { from, to } => segments.push(Segment::line(*from, *to)?),
+                OffsetSegment::Arc {
+                    center,
+                    r,
+                    start,
+                    end,
+                } => segments.push(Segment::arc(*center, *r, *start, *end)?),
+                OffsetSegment::BSpline { points, .. } => {
+                    for w in points.windows(2) {
+                        segments.push(Segment::line(w[0], w[1])?);
+                    }
+                }
+            }
+        }
+        Profile::new(segments, Some(true))
+    }
 }
 
 /// The offset at one distance.

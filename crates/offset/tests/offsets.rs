@@ -339,3 +339,83 @@ fn feet_listed_in_either_order_are_paired_by_side() {
     assert!(found.certified && found.complete, "{:?}", found.reason);
     check(&region, &found, 1e-6);
 }
+
+/// Offsetting by D1, then the result by D2, gives the offset by D1 + D2 (the loops as point
+/// sets, within 1e-7): on the pocket, whose offsets are lines and arcs.
+#[test]
+fn offsets_compose() {
+    let region = pocket();
+    let first = offsets_of(&region, &[0.5]);
+    let profiles: Vec<Profile> = first.offsets[0]
+        .loops
+        .iter()
+        .map(|l| l.profile().unwrap())
+        .collect();
+    let inner = Region::nested(profiles).unwrap();
+    assert_eq!(
+        inner.len(),
+        1,
+        "the pocket at 0.5 is one region with its island"
+    );
+    for d2 in [0.25, 0.5, 0.6] {
+        let again = offsets_of(&inner[0], &[d2]);
+        let direct = offsets_of(&region, &[0.5 + d2]);
+        assert_eq!(
+            again.offsets[0].loops.len(),
+            direct.offsets[0].loops.len(),
+            "d2 = {d2}"
+        );
+        // (Each one's sampled points lie on the other's exact pieces.)
+        for (from, onto) in [(&again, &direct), (&direct, &again)] {
+            let pieces: Vec<&OffsetSegment> = onto.offsets[0]
+                .loops
+                .iter()
+                .flat_map(|l| &l.segments)
+                .collect();
+            for l in &from.offsets[0].loops {
+                for p in l.segments.iter().flat_map(|s| samples(s, 40)) {
+                    let off = pieces
+                        .iter()
+                        .map(|s| distance_to_piece(p, s))
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(off < 1e-7, "d2 = {d2}: {p:?} is {off} off");
+                }
+            }
+        }
+    }
+}
+
+/// The distance from `p` to an offset piece (exact for lines and arcs).
+fn distance_to_piece(p: [f64; 2], s: &OffsetSegment) -> f64 {
+    match s {
+        OffsetSegment::Line { from, to } => curve::distance_to_segment(p, *from, *to),
+        OffsetSegment::Arc {
+            center,
+            r,
+            start,
+            end,
+        } => {
+            let a = (p[1] - center[1]).atan2(p[0] - center[0]);
+            let (lo, hi) = if start <= end {
+                (*start, *end)
+            } else {
+                (*end, *start)
+            };
+            let within = (a - lo).rem_euclid(TAU) <= hi - lo + 1e-12;
+            let ends = samples(s, 1);
+            let to_end = |q: [f64; 2]| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+            let by_ends = to_end(ends[0]).min(to_end(ends[1]));
+            if within {
+                ((p[0] - center[0]).hypot(p[1] - center[1]) - r)
+                    .abs()
+                    .min(by_ends)
+            } else {
+                by_ends
+            }
+        }
+        OffsetSegment::BSpline { points, .. } => points
+            .windows(2)
+            .map(|w| curve::distance_to_segment(p, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min),
+    }
+}

@@ -34,6 +34,7 @@ from ._curvekit import (
     Inflections,
     InputError,
     MedialAxis,
+    Offsets,
     PreparedCurve,
     Tangents,
     prepare,
@@ -57,6 +58,7 @@ __all__ = [
     "Limacon",
     "Line",
     "MedialAxis",
+    "Offsets",
     "PreparedCurve",
     "Tangents",
     "antipodal",
@@ -64,6 +66,7 @@ __all__ = [
     "from_dict",
     "inflections",
     "medial",
+    "offset",
     "prepare",
     "read",
     "tangents",
@@ -297,4 +300,29 @@ def medial(
     edge as a B-spline; ``exterior`` gives the Voronoi diagram outside instead."""
     return _curvekit.medial(
         _curve(region), chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol
+    )
+
+
+def offset(
+    region: CurveLike,
+    *,
+    distance: Optional[float] = None,
+    distances: Optional[Sequence[float]] = None,
+    step: Optional[float] = None,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> Offsets:
+    """The inward offsets of a region (pocketing tool paths) at ``distance``, at each of
+    ``distances``, or at every multiple of ``step`` while the region lasts: closed loops
+    (``to_dict()``: the tool's profile documents; ``polylines(k)`` for drawing), from the
+    region's medial axis, so that they never cross."""
+    if distances is not None:
+        distances = [float(d) for d in distances]
+    return _curvekit.offset(
+        _curve(region),
+        distance=distance,
+        distances=distances,
+        step=step,
+        chord_tol=chord_tol,
+        tol=tol,
     )

@@ -84,6 +84,14 @@ class MedialAxis(_Result):
     edges: list[tuple[int, int, npt.NDArray[np.float64], npt.NDArray[np.float64]]]
     """Each edge as (from, to, xy (k, 2), radius (k,))."""
 
+class Offsets(_Result):
+    certified: bool
+    complete: bool
+    distances: npt.NDArray[np.float64]
+    def polylines(self, k: int, arc_points: int = 32) -> list[npt.NDArray[np.float64]]:
+        """The loops at the k-th distance as closed (n, 2) polylines."""
+    def __len__(self) -> int: ...
+
 OneCurve = Union[Curve, PreparedCurve]
 
 def read(path: Union[str, PathLike[str]], *, pick: Optional[int] = None) -> Curve: ...
@@ -108,3 +116,12 @@ def medial(
     exterior: bool = False,
     tol: float = 1e-12,
 ) -> MedialAxis: ...
+def offset(
+    region: Curve,
+    *,
+    distance: Optional[float] = None,
+    distances: Optional[list[float]] = None,
+    step: Optional[float] = None,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> Offsets: ...

@@ -11,7 +11,7 @@ use curves::{PyCurve, PyPrepared};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
 use pyo3::prelude::*;
-use results::{PyAntipodal, PyBisector, PyInflections, PyMedialAxis, PyTangents};
+use results::{PyAntipodal, PyBisector, PyInflections, PyMedialAxis, PyOffsets, PyTangents};
 
 create_exception!(
     curvekit,
@@ -205,6 +205,49 @@ fn medial_of(
     Ok(PyMedialAxis::new(axis, vec![summary]))
 }
 
+/// The inward offsets of a region at `distance`, at each of `distances`, or at every multiple
+/// of `step` while the region lasts (one of them), from its medial axis.
+#[pyfunction(name = "offset")]
+#[pyo3(signature = (region, *, distance = None, distances = None, step = None,
+                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+fn offset_of(
+    py: Python<'_>,
+    region: &Bound<'_, PyCurve>,
+    distance: Option<f64>,
+    distances: Option<Vec<f64>>,
+    step: Option<f64>,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<PyOffsets> {
+    let asked = match (distance, distances, step) {
+        (Some(d), None, None) => commands::Distances::List(vec![d]),
+        (None, Some(list), None) => commands::Distances::List(list),
+        (None, None, Some(s)) => commands::Distances::Step(s),
+        _ => {
+            return Err(PyValueError::new_err(
+                "offset: give one of distance, distances and step",
+            ))
+        }
+    };
+    let medial_opts = ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit: false,
+        exterior: false,
+    };
+    let opts = ::offset::OffsetOptions { chord_tol };
+    let c = region.get();
+    let (found, summary) = detached(py, || {
+        commands::validate_distances(&asked)?;
+        let region = c.region()?;
+        Ok((
+            commands::offset(region, &asked, &opts, &medial_opts)?,
+            commands::CurveSummary::of(region),
+        ))
+    })?;
+    Ok(PyOffsets::new(found, vec![summary]))
+}
+
 /// The native module: classes, functions and exceptions (the package `curvekit` re-exports
 /// them beside its curve constructors).
 #[pymodule]
@@ -220,5 +263,6 @@ fn _curvekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tangents_of, m)?)?;
     m.add_function(wrap_pyfunction!(bisector_of, m)?)?;
     m.add_function(wrap_pyfunction!(medial_of, m)?)?;
+    m.add_function(wrap_pyfunction!(offset_of, m)?)?;
     Ok(())
 }

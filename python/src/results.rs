@@ -7,6 +7,7 @@ use curvekit::commands::{
 };
 use medial::MedialAxis;
 use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
+use offset::{OffsetSegment, Offsets};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -50,6 +51,15 @@ kept_two_ways!(AntipodalFound);
 kept_two_ways!(InflectionsFound);
 kept_two_ways!(TangentsFound);
 kept_two_ways!(BisectorFound);
+
+impl Kept for Offsets {
+    fn variant(&self) -> &'static str {
+        "region"
+    }
+    fn from_document(_: &str, json: &str) -> serde_json::Result<Self> {
+        read(json)
+    }
+}
 
 impl Kept for MedialAxis {
     fn variant(&self) -> &'static str {
@@ -470,6 +480,82 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
     }
 });
 
+result_class!(PyOffsets, "Offsets", Offsets, {
+    /// The axis was certified and every seam closed by Newton's method.
+    #[getter]
+    fn certified(&self) -> bool {
+        self.found.certified
+    }
+
+    /// The axis was complete and the seams joined into loops.
+    #[getter]
+    fn complete(&self) -> bool {
+        self.found.complete
+    }
+
+    /// The distances, in the order asked, an `(m,)` array.
+    #[getter]
+    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.found.offsets.iter().map(|o| o.distance).collect())
+    }
+
+    /// The loops at the `k`-th distance as closed polylines, `(n, 2)` arrays (arcs drawn with
+    /// `arc_points` points; lines and the splines' vertices as they are).
+    #[pyo3(signature = (k, arc_points = 32))]
+    fn polylines<'py>(
+        &self,
+        py: Python<'py>,
+        k: usize,
+        arc_points: usize,
+    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+        let offset = self
+            .found
+            .offsets
+            .get(k)
+            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
+        let arc_points = arc_points.max(2);
+        Ok(offset
+            .loops
+            .iter()
+            .map(|l| {
+                let mut points: Vec<[f64; 2]> = Vec::new();
+                for s in &l.segments {
+                    match s {
+                        OffsetSegment::Line { from, to } => points.extend([*from, *to]),
+                        OffsetSegment::Arc {
+                            center,
+                            r,
+                            start,
+                            end,
+                        } => points.extend((0..=arc_points).map(|i| {
+                            let a = start + (end - start) * i as f64 / arc_points as f64;
+                            [center[0] + r * a.cos(), center[1] + r * a.sin()]
+                        })),
+                        OffsetSegment::BSpline { points: p, .. } => points.extend(p),
+                    }
+                }
+                points2(py, &points)
+            })
+            .collect())
+    }
+
+    fn __len__(&self) -> usize {
+        self.found.offsets.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Offsets({} distances, certified={})",
+            self.found.offsets.len(),
+            if self.found.certified {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+});
+
 /// Unpickling: a result read back from its document.
 #[pyfunction]
 fn _result_from_json(
@@ -500,6 +586,9 @@ fn _result_from_json(
         "MedialAxis" => PyMedialAxis::new(make(variant, found).map_err(bad)?, curves)
             .into_pyobject(py)?
             .into_any(),
+        "Offsets" => PyOffsets::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
         other => return Err(PyValueError::new_err(format!("no result class {other:?}"))),
     };
     Ok(object.unbind())
@@ -512,6 +601,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyTangents>()?;
     m.add_class::<PyBisector>()?;
     m.add_class::<PyMedialAxis>()?;
+    m.add_class::<PyOffsets>()?;
     m.add_function(wrap_pyfunction!(_result_from_json, m)?)?;
     Ok(())
 }

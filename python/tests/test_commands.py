@@ -138,3 +138,21 @@ def test_a_json_text_gives_the_files_answer():
     assert curvekit.antipodal(from_text) == curvekit.antipodal(
         curvekit.read(path("periodic_cubic.json"))
     )
+
+
+@pytest.mark.parametrize(
+    "name, options, flags",
+    [
+        ("region-pocket.json", {"step": 0.5}, ["--step", "0.5"]),
+        ("drawing-pocket.svg", {"distances": [0.1, 0.3]}, ["--distances", "0.1,0.3"]),
+        ("periodic_cubic.json", {"distance": 0.2}, ["--distance", "0.2"]),
+    ],
+)
+def test_offset_is_the_tools_document(name, options, flags):
+    result = curvekit.offset(path(name), **options)
+    assert result.to_dict() == tool_json("offset", path(name), *flags)
+    for k, d in enumerate(result.distances):
+        for loop in result.polylines(k):
+            assert loop.shape[1] == 2 and len(loop) >= 2
+    with pytest.raises(ValueError, match="one of"):
+        curvekit.offset(path(name), distance=1.0, step=0.5)

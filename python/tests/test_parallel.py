@@ -50,6 +50,7 @@ def test_results_pickle_as_their_documents():
         curvekit.bisector(cubic, chord_tol=1e-2),
         curvekit.bisector(cam),
         curvekit.medial(cubic, fit=True),
+        curvekit.offset(cubic, step=0.2),
     ]
     for result in results:
         again = pickle.loads(pickle.dumps(result))
@@ -71,10 +72,13 @@ def test_threads_run_faster_than_one():
             list(pool.map(dask_antipodal.grasp_count, curves))
         return time.perf_counter() - t0
 
-    # (Best of three each, so that a busy moment of the machine does not decide.)
-    serial = min(timed(1) for _ in range(3))
-    threaded = min(timed(2) for _ in range(3))
-    assert serial / threaded > 1.3, f"one thread {serial:.3f} s, two {threaded:.3f} s"
+    # (Best of five each, alternating, so that a busy moment of the machine does not decide;
+    # with the GIL held, two threads could not beat one at all.)
+    serial, threaded = float("inf"), float("inf")
+    for _ in range(5):
+        serial = min(serial, timed(1))
+        threaded = min(threaded, timed(2))
+    assert serial / threaded > 1.25, f"one thread {serial:.3f} s, two {threaded:.3f} s"
 
 
 def test_the_dask_example_gives_the_serial_answers():

@@ -2,9 +2,11 @@
 //! outlines (embedded), with their figures.
 
 use super::medial::axis_figure;
+use super::offset::figure as offset_figure;
 use super::{write_file, Common, Failure};
 use curvekit::io::{parse_region, Curve, DrawingFormat, Shape};
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
+use curvekit::offset::{offsets, OffsetOptions};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -40,11 +42,18 @@ const REGIONS: &[Embedded] = &[
     ),
 ];
 
+/// Pocketing passes drawn per example: offsets at every multiple of the widest inscribed
+/// disk's radius over this.
+const PASSES: f64 = 6.0;
+
 /// One example's results.
 pub(super) struct MedialRow {
     name: &'static str,
     result: Result<MedialAxis, String>,
     svg: String,
+    /// The pocketing offsets (loops per pass), and their figure.
+    pocketing: Result<Vec<usize>, String>,
+    pocketing_svg: String,
 }
 
 /// Runs every example, writing its figure into `out`.
@@ -66,10 +75,30 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failur
             if let Ok(axis) = &result {
                 write_file(&svg, &axis_figure(&curve, axis))?;
             }
+            let pocketing_svg = out.join(format!("{}.svg", name.replace("medial-", "pocketing-")));
+            let pocketing = match (&result, &curve.shape) {
+                (Ok(axis), Shape::Region(r)) => {
+                    let widest = axis.nodes.iter().map(|n| n.radius).fold(0.0, f64::max);
+                    let step = widest / PASSES;
+                    let distances: Vec<f64> =
+                        (1..PASSES as usize).map(|k| k as f64 * step).collect();
+                    match offsets(r, axis, &distances, &OffsetOptions::default()) {
+                        Ok(found) => {
+                            write_file(&pocketing_svg, &offset_figure(&curve, &found))?;
+                            Ok(found.offsets.iter().map(|o| o.loops.len()).collect())
+                        }
+                        Err(e) => Err(e.to_string()),
+                    }
+                }
+                (Err(e), _) => Err(e.clone()),
+                _ => Err("not a region".to_string()),
+            };
             Ok(MedialRow {
                 name,
                 result,
                 svg: svg.display().to_string(),
+                pocketing,
+                pocketing_svg: pocketing_svg.display().to_string(),
             })
         })
         .collect()
@@ -84,15 +113,19 @@ pub(super) fn table(rows: &[MedialRow]) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "\n{:<24} {:>5} {:>5} {:>9} {:>4} {:>7} {:>6} {:>9}",
-        "medial axis", "nodes", "edges", "junctions", "ends", "corners", "cycles", "complete"
+        "\n{:<24} {:>5} {:>5} {:>9} {:>4} {:>7} {:>6} {:>9}  pocketing loops per pass",
+        "medial axis", "nodes", "edges", "junctions", "ends", "corners", "cycles", "complete",
     );
     for r in rows {
         match &r.result {
             Ok(a) => {
+                let passes = match &r.pocketing {
+                    Ok(loops) => format!("{loops:?}"),
+                    Err(e) => format!("failed: {e}"),
+                };
                 let _ = writeln!(
                     s,
-                    "{:<24} {:>5} {:>5} {:>9} {:>4} {:>7} {:>6} {:>9}",
+                    "{:<24} {:>5} {:>5} {:>9} {:>4} {:>7} {:>6} {:>9}  {passes}",
                     r.name,
                     a.nodes.len(),
                     a.edges.len(),
@@ -137,7 +170,11 @@ pub(super) fn json(rows: &[MedialRow]) -> Value {
                 }),
                 Err(e) => json!({ "error": e }),
             };
-            json!({ "name": r.name, "medial": result, "svg": r.svg })
+            let pocketing = match &r.pocketing {
+                Ok(loops) => json!({ "loops_per_pass": loops, "svg": r.pocketing_svg }),
+                Err(e) => json!({ "error": e }),
+            };
+            json!({ "name": r.name, "medial": result, "svg": r.svg, "pocketing": pocketing })
         })
         .collect()
 }

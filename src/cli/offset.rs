@@ -4,7 +4,7 @@
 use super::report::{draw_curve, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
 use curvekit::commands::{self, Distances};
-use curvekit::io::read_region;
+use curvekit::io::{read_region, Curve};
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, OffsetSegment, Offsets};
 use curvekit::svg::Figure;
@@ -35,21 +35,26 @@ pub(super) fn run(
     let found = compute()?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
-        let mut fig = Figure::new();
-        draw_curve(&mut fig, &curve);
-        for o in &found.offsets {
-            for l in &o.loops {
-                fig.thin(loop_points(&l.segments), "#c0392b");
-            }
-        }
-        fig.title(format!("{}: {} offsets", curve.file, found.offsets.len()));
-        write_file(svg, &fig.render())?;
+        write_file(svg, &figure(&curve, &found))?;
     }
     print_out(&if common.json {
         commands::json_document(&found, &[&curve], stats.as_ref())
     } else {
         text(&curve.file, &found, stats.as_ref())
     })
+}
+
+/// The figure of a region's offsets: the region and each offset loop.
+pub(super) fn figure(region: &Curve, found: &Offsets) -> String {
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, region);
+    for o in &found.offsets {
+        for l in &o.loops {
+            fig.thin(loop_points(&l.segments), "#c0392b");
+        }
+    }
+    fig.title(format!("{}: {} offsets", region.file, found.offsets.len()));
+    fig.render()
 }
 
 /// The readable report: per distance, its loops and their pieces.

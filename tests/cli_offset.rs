@@ -41,7 +41,6 @@ fn distances_are_checked_before_the_region_is_read() {
         vec!["--distance", "-1"],
         vec!["--distances", "1,nan"],
         vec!["--step", "0"],
-        vec!["--distance", "1", "--outward"],
     ] {
         let mut all = vec!["offset", &missing];
         all.extend(args.iter().copied());
@@ -55,4 +54,30 @@ fn distances_are_checked_before_the_region_is_read() {
     }
     let run = curvekit(&["offset", &fixture("region-pocket.json")]);
     assert_eq!(run.code, 2, "a distance is required");
+}
+
+#[test]
+fn outward_offsets_grow_the_region() {
+    let doc = curvekit_json(&[
+        "offset",
+        &fixture("region-pocket.json"),
+        "--distances",
+        "0.5,2",
+        "--outward",
+    ]);
+    let loops = |k: usize| doc["offsets"][k]["loops"].as_array().unwrap().len();
+    // (Round the pocket and inside the island's hole; at 2 the hole is filled.)
+    assert_eq!((loops(0), loops(1)), (2, 1));
+    let far = curvekit(&[
+        "offset",
+        &fixture("region-pocket.json"),
+        "--distance",
+        "9",
+        "--outward",
+    ]);
+    assert_eq!(
+        far.code, 2,
+        "beyond the exterior axis's margin: {}",
+        far.stderr
+    );
 }

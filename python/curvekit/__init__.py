@@ -309,13 +309,15 @@ def offset(
     distance: Optional[float] = None,
     distances: Optional[Sequence[float]] = None,
     step: Optional[float] = None,
+    outward: bool = False,
     chord_tol: float = 1e-3,
     tol: float = 1e-12,
 ) -> Offsets:
     """The inward offsets of a region (pocketing tool paths) at ``distance``, at each of
     ``distances``, or at every multiple of ``step`` while the region lasts: closed loops
     (``to_dict()``: the tool's profile documents; ``polylines(k)`` for drawing), from the
-    region's medial axis, so that they never cross."""
+    region's medial axis, so that they never cross; ``outward`` grows the region instead (from
+    its exterior axis, for distances below half its size)."""
     if distances is not None:
         distances = [float(d) for d in distances]
     return _curvekit.offset(
@@ -323,6 +325,7 @@ def offset(
         distance=distance,
         distances=distances,
         step=step,
+        outward=outward,
         chord_tol=chord_tol,
         tol=tol,
     )

@@ -122,6 +122,7 @@ def offset(
     distance: Optional[float] = None,
     distances: Optional[list[float]] = None,
     step: Optional[float] = None,
+    outward: bool = False,
     chord_tol: float = 1e-3,
     tol: float = 1e-12,
 ) -> Offsets: ...

@@ -205,17 +205,21 @@ fn medial_of(
     Ok(PyMedialAxis::new(axis, vec![summary]))
 }
 
-/// The inward offsets of a region at `distance`, at each of `distances`, or at every multiple
-/// of `step` while the region lasts (one of them), from its medial axis.
+/// The inward (or `outward`) offsets of a region at `distance`, at each of `distances`, or at
+/// every multiple of `step` while the region lasts (one of them), from its medial axis.
 #[pyfunction(name = "offset")]
 #[pyo3(signature = (region, *, distance = None, distances = None, step = None,
-                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+                    outward = false, chord_tol = zeroset::DEFAULT_CHORD_TOL,
+                    tol = zeroset::DEFAULT_TOL))]
+// (One argument per keyword of the Python function.)
+#[allow(clippy::too_many_arguments)]
 fn offset_of(
     py: Python<'_>,
     region: &Bound<'_, PyCurve>,
     distance: Option<f64>,
     distances: Option<Vec<f64>>,
     step: Option<f64>,
+    outward: bool,
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyOffsets> {
@@ -233,7 +237,7 @@ fn offset_of(
         tol,
         chord_tol,
         fit: false,
-        exterior: false,
+        exterior: outward,
     };
     let opts = ::offset::OffsetOptions { chord_tol };
     let c = region.get();

@@ -146,6 +146,8 @@ def test_a_json_text_gives_the_files_answer():
         ("region-pocket.json", {"step": 0.5}, ["--step", "0.5"]),
         ("drawing-pocket.svg", {"distances": [0.1, 0.3]}, ["--distances", "0.1,0.3"]),
         ("periodic_cubic.json", {"distance": 0.2}, ["--distance", "0.2"]),
+        ("region-pocket.json", {"distances": [0.5, 2.0], "outward": True},
+         ["--distances", "0.5,2", "--outward"]),
     ],
 )
 def test_offset_is_the_tools_document(name, options, flags):

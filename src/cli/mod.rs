@@ -270,18 +270,13 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             chord_tol,
             common,
         } => {
-            if outward {
-                return Err(Failure::Usage(
-                    "--outward: outward offsets are not available yet (issue 21 is open)".into(),
-                ));
-            }
             let asked = match (distance, distances, step) {
                 (Some(d), _, _) => curvekit::commands::Distances::List(vec![d]),
                 (_, Some(list), _) => curvekit::commands::Distances::List(list),
                 (_, _, Some(s)) => curvekit::commands::Distances::Step(s),
                 _ => curvekit::commands::Distances::List(Vec::new()),
             };
-            offset::run(&region, &asked, chord_tol, &common)
+            offset::run(&region, &asked, (chord_tol, outward), &common)
         }
         Command::Batch {
             command,

@@ -1,4 +1,4 @@
-//! `curvekit offset`: the inward offsets of a region at one or several distances, as text,
+//! `curvekit offset`: the inward (or outward) offsets of a region at one or several distances, as text,
 //! JSON (closed profile documents) or a figure.
 
 use super::report::{draw_curve, time_line};
@@ -14,18 +14,18 @@ use std::path::Path;
 /// Points drawn per arc of an offset in the figure.
 const ARC_POINTS: usize = 64;
 
-/// Runs `offset` on the region at `path`.
+/// Runs `offset` on the region at `path` (outward from the exterior axis with `outward`).
 pub(super) fn run(
     path: &Path,
     distances: &Distances,
-    chord_tol: f64,
+    (chord_tol, outward): (f64, bool),
     common: &Common,
 ) -> Result<(), Failure> {
     let medial_opts = MedialOptions {
         tol: common.tol,
         chord_tol,
         fit: false,
-        exterior: false,
+        exterior: outward,
     };
     commands::validate_medial_options(&medial_opts)?;
     commands::validate_distances(distances)?;

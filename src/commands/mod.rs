@@ -303,8 +303,9 @@ pub fn validate_distances(distances: &Distances) -> Result<(), CommandError> {
     }
 }
 
-/// The inward offsets of a region read (as [`crate::io::read_region`] gives it), from its
-/// medial axis computed with `medial_opts`.
+/// The offsets of a region read (as [`crate::io::read_region`] gives it), from its medial
+/// axis computed with `medial_opts`: inward, or outward with `medial_opts.exterior` (from the
+/// exterior axis).
 pub fn offset(
     region: &Curve,
     distances: &Distances,
@@ -336,7 +337,12 @@ pub fn offset(
             (1..=count as usize).map(|k| k as f64 * step).collect()
         }
     };
-    offset::offsets(r, &axis, &list, opts).map_err(|e| CommandError::Usage(format!("offset: {e}")))
+    let found = if medial_opts.exterior {
+        offset::outward_offsets(r, &axis, &list, opts)
+    } else {
+        offset::offsets(r, &axis, &list, opts)
+    };
+    found.map_err(|e| CommandError::Usage(format!("offset: {e}")))
 }
 
 /// One JSON document, as the tool prints it with `--json`: the result's own fields (as the

@@ -163,6 +163,53 @@ pub fn offsets(
     distances: &[f64],
     opts: &OffsetOptions,
 ) -> Result<Offsets, Error> {
+    offsets_on(region, axis, distances, opts, false)
+}
+
+/// The outward offsets of `region` at each of `distances` (the boundary of the points within
+/// the distance of the region: round its outer boundary, and inside its holes), from its
+/// exterior medial axis `exterior` (computed by [`medial::medial_axis`] with
+/// `exterior: true`). That axis is clipped to the region's box grown by half its size, so the
+/// distances must stay below half the size.
+pub fn outward_offsets(
+    region: &Region,
+    exterior: &MedialAxis,
+    distances: &[f64],
+    opts: &OffsetOptions,
+) -> Result<Offsets, Error> {
+    let half = 0.5 * region_size(region);
+    if let Some(&far) = distances.iter().find(|&&d| d >= half) {
+        return Err(Error::BadOption {
+            field: "distance",
+            value: far,
+            why: "outward, must stay below half the region's size (the exterior axis's margin)",
+        });
+    }
+    let mut found = offsets_on(region, exterior, distances, opts, true)?;
+    // (Walked with the outside on the left: turned round, the grown region is on the left.)
+    for o in &mut found.offsets {
+        for l in &mut o.loops {
+            l.segments.reverse();
+            for s in &mut l.segments {
+                match s {
+                    OffsetSegment::Line { from, to } => std::mem::swap(from, to),
+                    OffsetSegment::Arc { start, end, .. } => std::mem::swap(start, end),
+                    OffsetSegment::BSpline { points, .. } => points.reverse(),
+                }
+            }
+        }
+    }
+    Ok(found)
+}
+
+/// The offsets inward, or `outward`, from the axis on that side.
+fn offsets_on(
+    region: &Region,
+    axis: &MedialAxis,
+    distances: &[f64],
+    opts: &OffsetOptions,
+    outward: bool,
+) -> Result<Offsets, Error> {
     if !(opts.chord_tol.is_finite() && opts.chord_tol > 0.0 && opts.chord_tol <= 0.5) {
         return Err(Error::BadOption {
             field: "chord_tol",
@@ -177,12 +224,29 @@ pub fn offsets(
             why: "must be a finite number > 0",
         });
     }
-    let walks: Vec<Walk<'_>> = std::iter::once(Walk::new(region.outer(), false))
-        .chain(region.holes().iter().map(|h| Walk::new(h, true)))
+    let walks: Vec<Walk<'_>> = std::iter::once(Walk::new(region.outer(), false, outward))
+        .chain(region.holes().iter().map(|h| Walk::new(h, true, outward)))
         .collect();
     let size = region_size(region);
     let chord = opts.chord_tol * size;
-    let widest = widest_per_boundary(axis, walks.len());
+    let mut widest = widest_per_boundary(axis, walks.len(), outward);
+    if outward {
+        // (A round hole's part of the exterior axis is one node at its centre, with no edge to
+        // say which boundary it touches: the hole holding it.)
+        for node in isolated_nodes(axis) {
+            if let Some(k) = region.holes().iter().position(|h| encloses(h, node.xy)) {
+                widest[k + 1] = node.radius;
+            }
+        }
+        // (The exterior axis may leave that node out: a round hole's widest disk is itself.)
+        for (k, hole) in region.holes().iter().enumerate() {
+            if let ([only], true) = (hole.segments(), widest[k + 1].is_infinite()) {
+                if let Some((_, r)) = only.circle() {
+                    widest[k + 1] = r;
+                }
+            }
+        }
+    }
     let mut all_closed = true;
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
@@ -223,6 +287,31 @@ pub fn offsets(
     })
 }
 
+/// The nodes no edge reaches.
+fn isolated_nodes(axis: &MedialAxis) -> impl Iterator<Item = &medial::Node> {
+    axis.nodes
+        .iter()
+        .filter(|n| !axis.edges.iter().any(|e| e.from == n.id || e.to == n.id))
+}
+
+/// Whether the closed profile winds round `p` (its winding number on a fine polygon of it: a
+/// node at a hole's centre is far from its boundary).
+fn encloses(profile: &Profile, p: [f64; 2]) -> bool {
+    let (a, b) = profile.domain();
+    let n = 64 * profile.segments().len();
+    let at = |k: usize| {
+        let q = profile.jet_to(a + (b - a) * (k % n) as f64 / n as f64, 0).p;
+        (q.x - p[0]).atan2(q.y - p[1])
+    };
+    let mut turned = 0.0;
+    for k in 0..n {
+        let step = at(k + 1) - at(k);
+        turned +=
+            (step + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
+    }
+    turned.abs() > std::f64::consts::PI
+}
+
 /// The region's size: the larger side of its outer boundary's box.
 fn region_size(region: &Region) -> f64 {
     let outer = region.outer();
@@ -238,8 +327,9 @@ fn region_size(region: &Region) -> f64 {
 }
 
 /// Per boundary, the widest radius of the axis points with a foot on it (a disk's single node
-/// for an axis without edges).
-fn widest_per_boundary(axis: &MedialAxis, boundaries: usize) -> Vec<f64> {
+/// for an inner axis without edges; outside, a boundary no axis point reaches, as a convex
+/// outline's, has no bound at all).
+fn widest_per_boundary(axis: &MedialAxis, boundaries: usize, outward: bool) -> Vec<f64> {
     let mut widest = vec![f64::NEG_INFINITY; boundaries];
     for edge in &axis.edges {
         for (k, pair) in edge.boundary.iter().enumerate() {
@@ -250,7 +340,13 @@ fn widest_per_boundary(axis: &MedialAxis, boundaries: usize) -> Vec<f64> {
             }
         }
     }
-    if axis.edges.is_empty() {
+    if outward {
+        for w in &mut widest {
+            if *w == f64::NEG_INFINITY {
+                *w = f64::INFINITY;
+            }
+        }
+    } else if axis.edges.is_empty() {
         if let (Some(node), Some(w)) = (axis.nodes.first(), widest.first_mut()) {
             *w = node.radius;
         }

@@ -53,7 +53,17 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
     for (b, list) in events.iter_mut().enumerate() {
         if list.is_empty() {
             if kept_whole.get(b).copied().unwrap_or(false) {
-                let start = Foot::OnSegment { segment: 0, u: 0.0 };
+                // (From where the walk enters a segment: the first one's start, or walking
+                // against the parameter, the last one's end.)
+                let last = walks[b].profile.segments().len() - 1;
+                let start = if walks[b].side > 0.0 {
+                    Foot::OnSegment { segment: 0, u: 0.0 }
+                } else {
+                    Foot::OnSegment {
+                        segment: last,
+                        u: walks[b].period,
+                    }
+                };
                 loops.push(vec![Stretch {
                     boundary: b,
                     from: start,

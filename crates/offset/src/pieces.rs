@@ -74,6 +74,13 @@ pub(crate) fn pieces(
                 param(stretch.to)
             };
             segment_piece(walk, segment, at, to, d, chord, out);
+            // (A whole boundary closes at the joint it started from: its corner's arc too.)
+            let at = leave.rem_euclid(walk.period);
+            if stretch.whole && walk.reflex_corner_at(at).is_some() {
+                let from = walk.normal(segment, at).angle();
+                let next = outgoing_segment(walk, at);
+                out.push(corner_arc(walk, at, from, walk.normal(next, at).angle(), d));
+            }
             return;
         }
         segment_piece(walk, segment, at, leave, d, chord, out);
@@ -153,6 +160,10 @@ fn segment_piece(
         v.clamp(segment as f64, segment as f64 + 1.0)
     };
     let (from, to) = (on_segment(from, enter), on_segment(to, leave));
+    // (A stretch that only touches a segment at its end has nothing of it.)
+    if from == to {
+        return;
+    }
     let point = |u: f64| walk.offset(Foot::OnSegment { segment, u }, d).0;
     let seg = &walk.profile.segments()[segment];
     match (seg.kind(), seg.circle()) {

@@ -1,5 +1,6 @@
-//! A boundary of the region as the offsets walk it: with the region on the left, so that the
-//! outer boundary runs counterclockwise and each hole clockwise whatever their parameters do.
+//! A boundary of the region as the offsets walk it: with the side offset into on the left (the
+//! region for inward offsets, so that the outer boundary runs counterclockwise and each hole
+//! clockwise whatever their parameters do; the outside for outward ones).
 
 use curve::{JointKind, ParamCurve, Profile, V2};
 
@@ -25,9 +26,10 @@ pub(crate) enum Foot {
 }
 
 impl<'r> Walk<'r> {
-    /// The outer boundary (`hole` false) or a hole.
-    pub(crate) fn new(profile: &'r Profile, hole: bool) -> Self {
-        let side = if hole {
+    /// The outer boundary (`hole` false) or a hole, walked for inward offsets or (`outward`)
+    /// outward ones.
+    pub(crate) fn new(profile: &'r Profile, hole: bool, outward: bool) -> Self {
+        let side = if hole != outward {
             -profile.orientation()
         } else {
             profile.orientation()

@@ -87,6 +87,7 @@ class MedialAxis(_Result):
 class Offsets(_Result):
     certified: bool
     complete: bool
+    reason: Optional[str]
     distances: npt.NDArray[np.float64]
     def polylines(self, k: int, arc_points: int = 32) -> list[npt.NDArray[np.float64]]:
         """The loops at the k-th distance as closed (n, 2) polylines."""

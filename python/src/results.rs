@@ -7,7 +7,7 @@ use curvekit::commands::{
 };
 use medial::MedialAxis;
 use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
-use offset::{OffsetSegment, Offsets};
+use offset::Offsets;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -493,6 +493,12 @@ result_class!(PyOffsets, "Offsets", Offsets, {
         self.found.complete
     }
 
+    /// Why the offsets are not certified, when they are not.
+    #[getter]
+    fn reason(&self) -> Option<String> {
+        self.found.reason.clone()
+    }
+
     /// The distances, in the order asked, an `(m,)` array.
     #[getter]
     fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
@@ -500,7 +506,7 @@ result_class!(PyOffsets, "Offsets", Offsets, {
     }
 
     /// The loops at the `k`-th distance as closed polylines, `(n, 2)` arrays (arcs drawn with
-    /// `arc_points` points; lines and the splines' vertices as they are).
+    /// `arc_points` chords; lines and the splines' vertices as they are).
     #[pyo3(signature = (k, arc_points = 32))]
     fn polylines<'py>(
         &self,
@@ -513,29 +519,10 @@ result_class!(PyOffsets, "Offsets", Offsets, {
             .offsets
             .get(k)
             .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
-        let arc_points = arc_points.max(2);
         Ok(offset
             .loops
             .iter()
-            .map(|l| {
-                let mut points: Vec<[f64; 2]> = Vec::new();
-                for s in &l.segments {
-                    match s {
-                        OffsetSegment::Line { from, to } => points.extend([*from, *to]),
-                        OffsetSegment::Arc {
-                            center,
-                            r,
-                            start,
-                            end,
-                        } => points.extend((0..=arc_points).map(|i| {
-                            let a = start + (end - start) * i as f64 / arc_points as f64;
-                            [center[0] + r * a.cos(), center[1] + r * a.sin()]
-                        })),
-                        OffsetSegment::BSpline { points: p, .. } => points.extend(p),
-                    }
-                }
-                points2(py, &points)
-            })
+            .map(|l| points2(py, &l.polyline(arc_points)))
             .collect())
     }
 

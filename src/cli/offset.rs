@@ -6,7 +6,7 @@ use super::{print_out, timing, write_file, Common, Failure};
 use curvekit::commands::{self, Distances};
 use curvekit::io::{read_region, Curve};
 use curvekit::medial::MedialOptions;
-use curvekit::offset::{OffsetOptions, OffsetSegment, Offsets};
+use curvekit::offset::{OffsetOptions, Offsets};
 use curvekit::svg::Figure;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -50,7 +50,7 @@ pub(super) fn figure(region: &Curve, found: &Offsets) -> String {
     draw_curve(&mut fig, region);
     for o in &found.offsets {
         for l in &o.loops {
-            fig.thin(loop_points(&l.segments), "#c0392b");
+            fig.thin(l.polyline(ARC_POINTS), "#c0392b");
         }
     }
     fig.title(format!("{}: {} offsets", region.file, found.offsets.len()));
@@ -79,28 +79,4 @@ fn text(file: &str, found: &Offsets, stats: Option<&commands::Stats>) -> String 
         let _ = writeln!(s, "{}", time_line(st));
     }
     s
-}
-
-/// A loop as points, for drawing.
-fn loop_points(segments: &[OffsetSegment]) -> Vec<[f64; 2]> {
-    let mut points = Vec::new();
-    for s in segments {
-        match s {
-            OffsetSegment::Line { from, to } => points.extend([*from, *to]),
-            OffsetSegment::Arc {
-                center,
-                r,
-                start,
-                end,
-            } => points.extend((0..=ARC_POINTS).map(|k| {
-                let a = start + (end - start) * k as f64 / ARC_POINTS as f64;
-                [center[0] + r * a.cos(), center[1] + r * a.sin()]
-            })),
-            OffsetSegment::BSpline { points: p, .. } => points.extend(p.iter().copied()),
-        }
-    }
-    if let Some(&first) = points.first() {
-        points.push(first);
-    }
-    points
 }

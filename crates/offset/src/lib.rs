@@ -93,6 +93,32 @@ pub struct OffsetLoop {
 }
 
 impl OffsetLoop {
+    /// The loop as a closed polyline for drawing: lines and the B-splines' points as they are,
+    /// each arc by `arc_points` chords; the first point again at the end.
+    pub fn polyline(&self, arc_points: usize) -> Vec<[f64; 2]> {
+        let arc_points = arc_points.max(1);
+        let mut points = Vec::new();
+        for s in &self.segments {
+            match s {
+                OffsetSegment::Line { from, to } => points.extend([*from, *to]),
+                OffsetSegment::Arc {
+                    center,
+                    r,
+                    start,
+                    end,
+                } => points.extend((0..=arc_points).map(|k| {
+                    let a = start + (end - start) * k as f64 / arc_points as f64;
+                    [center[0] + r * a.cos(), center[1] + r * a.sin()]
+                })),
+                OffsetSegment::BSpline { points: p, .. } => points.extend(p.iter().copied()),
+            }
+        }
+        if let Some(&first) = points.first() {
+            points.push(first);
+        }
+        points
+    }
+
     /// The loop as a closed profile (a B-spline piece as its chords), to be measured, drawn or
     /// offset again (with [`curve::Region::nested`] for the regions the loops bound).
     pub fn profile(&self) -> Result<Profile, curve::Error> {

@@ -156,6 +156,9 @@ fn a_rectangle_shrinks_to_a_rectangle_until_it_vanishes() {
         "beyond half the width nothing is left"
     );
     assert!(found.certified && found.complete);
+    let drawn = found.offsets[0].loops[0].polyline(8);
+    assert_eq!(drawn.len(), 9, "four lines, closed");
+    assert_eq!(drawn.first(), drawn.last());
 }
 
 #[test]

@@ -277,7 +277,14 @@ fn offsets_on(
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
-        let seams = seams::seams(axis, &walks, d, size);
+        let Some(seams) = seams::seams(axis, &walks, d, size) else {
+            consistent = false;
+            found.push(Offset {
+                distance: d,
+                loops: Vec::new(),
+            });
+            continue;
+        };
         all_closed &= seams.iter().all(|s| s.refined);
         let kept_whole: Vec<bool> = widest
             .iter()

@@ -6,13 +6,15 @@ use crate::walk::{Foot, Walk};
 use std::f64::consts::TAU;
 
 /// A stretch of one boundary, walked from one foot to another (the whole boundary when
-/// `whole`).
+/// `whole`), `length` in parameter along the walk (taken from the order of the seams' feet, so
+/// that a stretch from a foot round the whole boundary to the same place is the whole length).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Stretch {
     pub(crate) boundary: usize,
     pub(crate) from: Foot,
     pub(crate) to: Foot,
     pub(crate) whole: bool,
+    pub(crate) length: f64,
 }
 
 /// The loops, and whether the seams made sense together (each kept stretch begins at a seam
@@ -69,6 +71,7 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
                     from: start,
                     to: start,
                     whole: true,
+                    length: walks[b].period,
                 }]);
             }
             continue;
@@ -76,25 +79,33 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
         // (At one place, a stretch ending comes before one beginning: the offset touches
         // itself there, where the axis's radius is the distance exactly.)
         list.sort_by(|a, c| {
-            a.place
-                .partial_cmp(&c.place)
-                .unwrap_or(std::cmp::Ordering::Equal)
+            (a.place.0.total_cmp(&c.place.0))
+                .then(a.place.1.total_cmp(&c.place.1))
                 .then(a.begins.cmp(&c.begins))
         });
         for (k, e) in list.iter().enumerate() {
             if !e.begins {
                 continue;
             }
-            let next = &list[(k + 1) % list.len()];
+            let at = (k + 1) % list.len();
+            let next = &list[at];
             if next.begins {
                 consistent = false;
                 continue;
+            }
+            let period = walks[b].period;
+            let mut length = (next.place.0 - e.place.0).rem_euclid(period);
+            // (The next foot reached only round the whole boundary, at the same place: all of
+            // it.)
+            if at <= k && length == 0.0 {
+                length = period;
             }
             let stretch = Stretch {
                 boundary: b,
                 from: seams[e.seam].feet[e.side].1,
                 to: seams[next.seam].feet[next.side].1,
                 whole: false,
+                length,
             };
             stretch_at[e.seam][e.side] = Some((stretch, (next.seam, next.side)));
         }

@@ -39,11 +39,7 @@ pub(crate) fn pieces(
             (u, outgoing)
         }
     };
-    let target = if stretch.whole {
-        walk.period
-    } else {
-        walk.ahead(param(stretch.from), param(stretch.to))
-    };
+    let target = stretch.length;
     let mut walked = 0.0;
     // (Each step is one segment: the walk passes every segment at most once more.)
     for _ in 0..=n + 1 {
@@ -123,7 +119,16 @@ fn fan_place(walk: &Walk<'_>, u: f64, angle: f64) -> f64 {
 /// The arc of radius `d` about the corner at `u`, clockwise (the walk turns right there) from
 /// the direction `from` to `to`.
 fn corner_arc(walk: &Walk<'_>, u: f64, from: f64, to: f64, d: f64) -> OffsetSegment {
-    let sweep = (from - to).rem_euclid(TAU);
+    // (Within the corner's own fan: an end an ulp outside it is at its edge, not a turn
+    // round.)
+    let fan = (walk.normal(incoming_segment(walk, u), u).angle()
+        - walk.normal(outgoing_segment(walk, u), u).angle())
+    .rem_euclid(TAU);
+    let sweep = match (from - to).rem_euclid(TAU) {
+        s if s <= fan => s,
+        s if TAU - s < s - fan => 0.0,
+        _ => fan,
+    };
     OffsetSegment::Arc {
         center: walk.point(u).arr(),
         r: d,

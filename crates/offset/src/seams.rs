@@ -35,21 +35,20 @@ pub(crate) struct Seam {
 }
 
 /// The seams of the offset at distance `d`: where an edge's radius crosses `d` between two
-/// vertices (a vertex within [`TOUCHING`] of `d` counts as below it).
-pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> Vec<Seam> {
+/// vertices (a vertex within [`TOUCHING`] of `d` counts as below it); `None` where a crossing
+/// gave no seam (its feet on two boundaries, or on none), so the loops cannot be trusted.
+pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> Option<Vec<Seam>> {
     let above = |r: f64| r > d + TOUCHING * size;
     let mut found = Vec::new();
     for edge in &axis.edges {
         for k in 1..edge.xy.len() {
             let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
             if above(r0) != above(r1) {
-                if let Some(seam) = seam_between(edge, k, walks, d, size) {
-                    found.push(seam);
-                }
+                found.push(seam_between(edge, k, walks, d, size)?);
             }
         }
     }
-    found
+    Some(found)
 }
 
 /// The seam on `edge` between vertices `k − 1` and `k`.
@@ -83,7 +82,13 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
         Some((b, foot_between(walks.get(b)?, u0, u1, share, guess)))
     };
     let feet = [foot_on(0)?, foot_on(1)?];
-    let (refined_feet, refined) = refine(walks, feet, d, size);
+    let (refined_feet, mut refined) = refine(walks, feet, d, size);
+    // (Both feet at one point of one boundary solve the equations trivially: no seam.)
+    if refined_feet[0].0 == refined_feet[1].0 {
+        let walk = &walks[refined_feet[0].0];
+        let gap = foot_point(walk, refined_feet[0].1) - foot_point(walk, refined_feet[1].1);
+        refined &= gap.norm() > SEAM_CLOSURE * size;
+    }
     let point = walks[refined_feet[0].0].offset(refined_feet[0].1, d).0;
     let begins = refined_feet.map(|(b, foot)| {
         let normal = (point - foot_point(&walks[b], foot)).unit();

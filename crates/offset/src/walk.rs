@@ -92,8 +92,15 @@ impl<'r> Walk<'r> {
         }
     }
 
-    /// The inward unit normal of segment `segment` at `u`.
+    /// The unit normal of segment `segment` at `u`, toward the side offset into (`u` may name
+    /// the joint at 0 of the last segment).
     pub(crate) fn normal(&self, segment: usize, u: f64) -> V2 {
+        // (The joint at 0 is the last segment's end, the period.)
+        let u = if u < segment as f64 - 0.5 {
+            u + self.period
+        } else {
+            u
+        };
         self.profile.jet_on(segment, u, 1).d1.unit().perp() * self.side
     }
 }

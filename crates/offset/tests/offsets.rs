@@ -533,3 +533,24 @@ fn a_square_hole_grows_rounded_corners_inward() {
         "{areas:?}"
     );
 }
+
+/// A hole whose last segment is an arc ending at a corner at the parameter 0: the corner's
+/// arc is turned from that arc's end normal, not its start's (a review found it).
+#[test]
+fn a_d_shaped_hole_closes_round_its_corners() {
+    let outer = polygon(&[[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]);
+    let hole = Profile::new(
+        vec![
+            Segment::line([0.0, 1.0], [0.0, -1.0]).unwrap(),
+            Segment::arc([0.0, 0.0], 1.0, -FRAC_PI_2, FRAC_PI_2).unwrap(),
+        ],
+        None,
+    )
+    .unwrap();
+    let region = Region::new(outer, vec![hole]).unwrap();
+    for d in [0.3, 0.5, 1.0] {
+        let found = offsets_of(&region, &[d]);
+        check(&region, &found, 1e-6);
+        assert_eq!(found.offsets[0].loops.len(), 2, "d = {d}");
+    }
+}

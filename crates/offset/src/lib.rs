@@ -274,6 +274,7 @@ fn offsets_on(
         }
     }
     let mut all_closed = true;
+    let mut necks_resolved = true;
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
@@ -286,6 +287,7 @@ fn offsets_on(
             continue;
         };
         all_closed &= seams.iter().all(|s| s.refined);
+        necks_resolved &= !seams::may_dip_between(axis, &walks, d, size);
         let kept_whole: Vec<bool> = widest
             .iter()
             .map(|&w| w > d + seams::TOUCHING * size)
@@ -309,6 +311,12 @@ fn offsets_on(
         Some("the medial axis is not certified".to_string())
     } else if !all_closed {
         Some("a seam's feet did not converge".to_string())
+    } else if !necks_resolved {
+        Some(
+            "the axis's radius may dip to a distance between two of its vertices (a neck they \
+             do not resolve)"
+                .to_string(),
+        )
     } else {
         None
     };

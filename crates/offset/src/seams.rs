@@ -51,6 +51,37 @@ pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) ->
     Some(found)
 }
 
+/// Whether the radius may dip to `d` between two vertices both above it: where it falls at
+/// one end of a step and rises at the other (a neck between them, which the axis's vertices
+/// need not resolve: the axis between two equal round bosses is straight), and the bound
+/// from its slope (at most 1) does not keep it above `d`.
+pub(crate) fn may_dip_between(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> bool {
+    let above = |r: f64| r > d + TOUCHING * size;
+    axis.edges.iter().any(|edge| {
+        (1..edge.xy.len()).any(|k| {
+            let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
+            if !(above(r0) && above(r1)) {
+                return false;
+            }
+            let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
+            let step = x1 - x0;
+            let length = step.norm();
+            if (r0 + r1 - length) * 0.5 > d + TOUCHING * size {
+                return false;
+            }
+            // The slope of the radius along the step at each end: the step's direction on the
+            // way from the foot (1-Lipschitz; its sign says falling or rising).
+            let slope = |j: usize, x: V2| {
+                let b = edge.boundary[j][0];
+                walks
+                    .get(b)
+                    .map_or(0.0, |w| step.dot(x - w.point(edge.feet[j][0])))
+            };
+            !(slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0)
+        })
+    })
+}
+
 /// The seam on `edge` between vertices `k − 1` and `k`.
 fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) -> Option<Seam> {
     let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);

@@ -554,3 +554,26 @@ fn a_d_shaped_hole_closes_round_its_corners() {
         assert_eq!(found.offsets[0].loops.len(), 2, "d = {d}");
     }
 }
+
+/// Between two equal round holes the axis is straight, and its radius is least at the neck
+/// between them, where it need have no vertex: a distance just above the neck's radius must
+/// not keep a passage that is not there (or must not be certified).
+#[test]
+fn a_neck_between_two_round_holes_closes() {
+    let outer = polygon(&[[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]);
+    let region = Region::new(
+        outer,
+        vec![circle([-1.5, 0.0], 1.0), circle([1.5, 0.0], 1.0)],
+    )
+    .unwrap();
+    for d in [0.45, 0.5005, 0.55, 0.8] {
+        let found = offsets_of(&region, &[d]);
+        check(&region, &found, 1e-6);
+        // (Round the pocket and each hole while the neck is open, then round both holes.)
+        assert_eq!(
+            found.offsets[0].loops.len(),
+            if d < 0.5 { 3 } else { 2 },
+            "d = {d}"
+        );
+    }
+}

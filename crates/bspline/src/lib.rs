@@ -19,6 +19,7 @@
 
 mod algebra;
 mod error;
+pub mod fit;
 pub mod knots;
 mod piecewise;
 mod rational;

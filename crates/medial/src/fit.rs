@@ -1,23 +1,14 @@
 //! Each edge as one cubic B-spline of the axis point and the radius, `(x, y, r)`: fitted by
-//! least squares (faer's QR) to the edge's vertices, which lie on the axis, with its ends
-//! fixed at the edge's nodes so that fitted edges meet where the edges do. Knots are added
-//! in the spans where the fit strays, until it is within the tolerance of the edge's polyline,
-//! measured at every vertex and at points between them.
+//! least squares ([`bspline::fit`]) to the edge's vertices, which lie on the axis, with its
+//! ends fixed at the edge's nodes so that fitted edges meet where the edges do, within the
+//! tolerance of the edge's polyline, measured at every vertex and at points between them.
 
+use bspline::fit::fit_samples;
 use bspline::knots::basis_at;
-use faer::linalg::solvers::SolveLstsq;
-use faer::Mat;
 use serde::{Deserialize, Serialize};
 
 /// The degree of the fitted curves (lower for edges of fewer vertices).
 const DEGREE: usize = 3;
-
-/// Rounds of knot insertion before the fit is returned as it is (with its measured error).
-const MAX_ROUNDS: usize = 40;
-
-/// Knots stay this far apart (in the parameter over `[0, 1]`): closer, the least-squares
-/// system loses rank.
-const KNOT_GAP: f64 = 1e-9;
 
 /// Points of the fitted curve compared with the polyline in each step between two vertices
 /// (the vertices' own parameters included).
@@ -65,64 +56,25 @@ pub(crate) fn fit_edge(xy: &[[f64; 2]], radius: &[f64], tol: f64) -> EdgeSpline 
         .map(|(p, &r)| [p[0], p[1], r])
         .collect();
     let t = chord_parameters(&data);
-    let degree = DEGREE.min(data.len() - 1);
-    let mut interior: Vec<f64> = Vec::new();
-    let mut best: Option<EdgeSpline> = None;
-    for _ in 0..MAX_ROUNDS {
-        let knots = clamped(degree, &interior);
-        let Some(points) = least_squares(&data, &t, degree, &knots) else {
-            break;
-        };
-        let mut fit = EdgeSpline {
-            degree,
-            knots,
-            points: points.iter().map(|p| [p[0], p[1]]).collect(),
-            radius_points: points.iter().map(|p| p[2]).collect(),
-            error: 0.0,
-        };
-        let span_errors = measure(&fit, &data, &t);
-        fit.error = span_errors.iter().map(|e| e.1).fold(0.0, f64::max);
-        let done = fit.error <= tol;
-        let better = best.as_ref().is_none_or(|b| fit.error < b.error);
-        if better {
-            best = Some(fit);
-        }
-        if done {
-            break;
-        }
-        // A knot at the middle data parameter of every span that strays (each span keeps
-        // data inside, so the least-squares system keeps full rank).
-        let before = interior.len();
-        for &(span_lo, e, worst) in &span_errors {
-            if e <= tol {
-                continue;
-            }
-            let span_hi = next_knot(&interior, span_lo);
-            let inside: Vec<f64> = t
-                .iter()
-                .copied()
-                .filter(|&s| s > span_lo && s < span_hi)
-                .collect();
-            // (Where the span holds too few data to split them, at the worst point: the
-            // least-squares system only needs data under every basis function's support.)
-            let knot = if inside.len() >= 2 {
-                inside[inside.len() / 2]
-            } else {
-                worst
-            };
-            if knot - span_lo > KNOT_GAP && span_hi - knot > KNOT_GAP {
-                interior.push(knot);
-            }
-        }
-        if interior.len() == before || interior.len() + degree + 1 > data.len() {
-            break;
-        }
-        interior.sort_by(f64::total_cmp);
-    }
-    match best {
-        Some(fit) if fit.error <= tol => fit,
+    // (How far a fitted point between vertices `i` and `i + 1` is from the polyline there:
+    // that step and its neighbours.)
+    let deviation = |i: usize, _: f64, q: [f64; 3]| {
+        let lo = i.saturating_sub(1);
+        let hi = (i + 2).min(data.len() - 1);
+        (lo..hi)
+            .map(|j| to_segment(q, data[j], data[j + 1]))
+            .fold(f64::INFINITY, f64::min)
+    };
+    match fit_samples(&data, &t, DEGREE, tol, CHECKS_PER_STEP, &deviation) {
+        Some(fit) => EdgeSpline {
+            degree: fit.degree,
+            knots: fit.knots,
+            points: fit.points.iter().map(|p| [p[0], p[1]]).collect(),
+            radius_points: fit.points.iter().map(|p| p[2]).collect(),
+            error: fit.error,
+        },
         // The polyline itself, as a B-spline of degree 1: always within the tolerance.
-        _ => polyline(&data, &t),
+        None => polyline(&data, &t),
     }
 }
 
@@ -143,95 +95,6 @@ fn chord_parameters(data: &[[f64; 3]]) -> Vec<f64> {
         .enumerate()
         .map(|(i, &s)| if total > 0.0 { s / total } else { i as f64 / n })
         .collect()
-}
-
-/// The clamped knot vector on `[0, 1]` with the given interior knots.
-fn clamped(degree: usize, interior: &[f64]) -> Vec<f64> {
-    let mut k = vec![0.0; degree + 1];
-    k.extend_from_slice(interior);
-    k.extend(std::iter::repeat_n(1.0, degree + 1));
-    k
-}
-
-/// The knot after `lo` (1 past the last interior one).
-fn next_knot(interior: &[f64], lo: f64) -> f64 {
-    interior.iter().copied().find(|&k| k > lo).unwrap_or(1.0)
-}
-
-/// The control points of the least-squares fit with the first and last fixed at the ends of
-/// the data; `None` where the system is not solved to finite values.
-fn least_squares(
-    data: &[[f64; 3]],
-    t: &[f64],
-    degree: usize,
-    knots: &[f64],
-) -> Option<Vec<[f64; 3]>> {
-    let n = knots.len() - degree - 1;
-    let m = data.len();
-    let (first, last) = (data[0], data[m - 1]);
-    let mut points = vec![first; n];
-    points[n - 1] = last;
-    if n <= 2 {
-        return Some(points);
-    }
-    let unknowns = n - 2;
-    let rows = m - 2;
-    let mut a = Mat::<f64>::zeros(rows, unknowns);
-    let mut b = Mat::<f64>::zeros(rows, 3);
-    for i in 1..m - 1 {
-        let (f, values) = basis_at(degree, knots, t[i]);
-        let mut rhs = data[i];
-        for (j, &v) in values.iter().enumerate() {
-            let col = f + j;
-            if col == 0 || col == n - 1 {
-                let end = if col == 0 { first } else { last };
-                for k in 0..3 {
-                    rhs[k] -= v * end[k];
-                }
-            } else {
-                a[(i - 1, col - 1)] = v;
-            }
-        }
-        for k in 0..3 {
-            b[(i - 1, k)] = rhs[k];
-        }
-    }
-    let x = a.qr().solve_lstsq(&b);
-    for j in 0..unknowns {
-        let p = [x[(j, 0)], x[(j, 1)], x[(j, 2)]];
-        if !p.iter().all(|c| c.is_finite()) {
-            return None;
-        }
-        points[j + 1] = p;
-    }
-    Some(points)
-}
-
-/// Per knot span (its lower knot), the largest distance between the fitted curve and the
-/// polyline, at every vertex and between them, and the parameter where it is.
-fn measure(fit: &EdgeSpline, data: &[[f64; 3]], t: &[f64]) -> Vec<(f64, f64, f64)> {
-    let degree = fit.degree;
-    let spans: Vec<f64> = fit.knots[degree..fit.knots.len() - degree - 1].to_vec();
-    let mut errors: Vec<(f64, f64, f64)> = spans.iter().map(|&k| (k, 0.0, k)).collect();
-    for i in 0..data.len() - 1 {
-        for c in 0..CHECKS_PER_STEP {
-            let s = t[i] + (t[i + 1] - t[i]) * c as f64 / CHECKS_PER_STEP as f64;
-            let (p, r) = fit.eval(s);
-            let q = [p[0], p[1], r];
-            // The polyline near the step: it and its neighbours.
-            let lo = i.saturating_sub(1);
-            let hi = (i + 2).min(data.len() - 1);
-            let d = (lo..hi)
-                .map(|j| to_segment(q, data[j], data[j + 1]))
-                .fold(f64::INFINITY, f64::min);
-            let k = spans.iter().rposition(|&k| k <= s).unwrap_or(0);
-            if d > errors[k].1 {
-                errors[k].1 = d;
-                errors[k].2 = s;
-            }
-        }
-    }
-    errors
 }
 
 /// Distance from `q` to the segment `a`–`b` in `(x, y, r)`.

@@ -472,7 +472,32 @@ impl Branch<'_, '_> {
     }
 
     fn feet_part(&self, v: &Vertex) -> bool {
-        self.at_corner(v) || self.feet_apart(v) > FEET_APART * v.radius
+        self.at_corner(v)
+            || self.feet_apart(v) > FEET_APART * v.radius
+            || self.corner_between_feet(v)
+    }
+
+    /// Whether a corner of the boundary lies between the vertex's two feet, which are not one
+    /// point: then they are two nearest points however close (the axis from a corner that
+    /// turns by θ has its feet θ times the radius apart, below [`FEET_APART`] for a nearly
+    /// flat corner, and does not end there).
+    fn corner_between_feet(&self, v: &Vertex) -> bool {
+        let c = self.c;
+        if c.boundary[0] != c.boundary[1] || self.feet_apart(v) <= EMPTY_SLACK * self.sites.size {
+            return false;
+        }
+        let boundary = self.sites.boundaries[c.boundary[0]];
+        let period = boundary.domain().1;
+        let (a, b) = (v.tr[0].min(v.tr[1]), v.tr[0].max(v.tr[1]));
+        // (The short way round a closed boundary: feet so close are close along it.)
+        let wraps = boundary.is_closed() && b - a > 0.5 * period;
+        boundary.corners().any(|j| {
+            if wraps {
+                j.u > b || j.u < a
+            } else {
+                j.u > a && j.u < b
+            }
+        })
     }
 
     /// Whether a vertex is a corner of its boundary (an end of the axis there): of radius

@@ -46,6 +46,45 @@ fn kinds(a: &MedialAxis, k: NodeKind) -> usize {
     a.nodes.iter().filter(|n| n.kind == k).count()
 }
 
+/// A nearly flat corner (its sides turning by 1e-5 to 1e-3 rad) is a corner all the same:
+/// inside, a convex one has its edge of the axis; outside, a reflex one has its edge of the
+/// exterior axis (its feet are the turn times the radius apart, less than the share at which
+/// feet on a smooth boundary count as one point, and the edge was lost, the axis certified).
+#[test]
+fn a_nearly_flat_corner_has_its_edge() {
+    for turn in [1e-5_f64, 1e-4, 1e-3] {
+        for convex in [true, false] {
+            // The bottom side of a 4 × 2 rectangle, bent at (2, ∓h): outward, a convex corner.
+            let h = 2.0 * (0.5 * turn).tan();
+            let dip = if convex { -h } else { h };
+            let c = [[0.0, 0.0], [2.0, dip], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+            let sides = (0..5)
+                .map(|i| Segment::line(c[i], c[(i + 1) % 5]).unwrap())
+                .collect();
+            let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+            let a = medial_axis(
+                &region,
+                &MedialOptions {
+                    exterior: !convex,
+                    ..MedialOptions::default()
+                },
+            )
+            .unwrap();
+            let at_corner = a
+                .nodes
+                .iter()
+                .any(|n| n.kind == NodeKind::Corner && (n.xy[0] - 2.0).hypot(n.xy[1] - dip) < 1e-9);
+            assert!(
+                at_corner || !a.certified,
+                "turn {turn:e}, convex {convex}: no edge from the corner, and certified"
+            );
+            if convex {
+                assert!(at_corner, "turn {turn:e}: the corner's edge inside");
+            }
+        }
+    }
+}
+
 #[test]
 fn a_disk_has_one_node_at_its_centre() {
     let a = axis(&Region::new(circle([1.0, -2.0], 2.0), vec![]).unwrap());

@@ -28,9 +28,11 @@
 mod loops;
 mod pieces;
 mod seams;
+mod spline_offset;
 mod walk;
 
-use curve::{ParamCurve, Profile, Region, Segment};
+use bspline::knots::basis_at;
+use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::MedialAxis;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -73,12 +75,15 @@ pub enum OffsetSegment {
         end: f64,
     },
     /// The offset of a spline, as a B-spline within the chord tolerance of it where
-    /// measured (today of degree 1: a polyline whose vertices lie on the exact offset).
+    /// measured: a fitted cubic, or where none fits, the polyline (degree 1) of points on the
+    /// exact offset.
     #[serde(rename = "bspline")]
     BSpline {
         /// The degree.
         degree: usize,
-        /// The control points (clamped, uniform knots on `[0, 1]`).
+        /// The knots on `[0, 1]`, clamped: `points.len() + degree + 1` of them.
+        knots: Vec<f64>,
+        /// The control points.
         points: Vec<[f64; 2]>,
     },
 }
@@ -93,8 +98,9 @@ pub struct OffsetLoop {
 }
 
 impl OffsetLoop {
-    /// The loop as a closed polyline for drawing: lines and the B-splines' points as they are,
-    /// each arc by `arc_points` chords; the first point again at the end.
+    /// The loop as a closed polyline for drawing: lines as they are, each arc by `arc_points`
+    /// chords, each B-spline by `arc_points` chords a knot span (a polyline's by its points);
+    /// the first point again at the end.
     pub fn polyline(&self, arc_points: usize) -> Vec<[f64; 2]> {
         let arc_points = arc_points.max(1);
         let mut points = Vec::new();
@@ -110,7 +116,24 @@ impl OffsetLoop {
                     let a = start + (end - start) * k as f64 / arc_points as f64;
                     [center[0] + r * a.cos(), center[1] + r * a.sin()]
                 })),
-                OffsetSegment::BSpline { points: p, .. } => points.extend(p.iter().copied()),
+                OffsetSegment::BSpline {
+                    degree: 1,
+                    points: p,
+                    ..
+                } => points.extend(p.iter().copied()),
+                OffsetSegment::BSpline {
+                    degree,
+                    knots,
+                    points: p,
+                } => {
+                    let n = arc_points * (p.len() - degree);
+                    points.extend((0..=n).map(|k| {
+                        let (first, basis) = basis_at(*degree, knots, k as f64 / n as f64);
+                        basis.iter().enumerate().fold([0.0; 2], |acc, (j, b)| {
+                            [acc[0] + b * p[first + j][0], acc[1] + b * p[first + j][1]]
+                        })
+                    }));
+                }
             }
         }
         if let Some(&first) = points.first() {
@@ -119,8 +142,8 @@ impl OffsetLoop {
         points
     }
 
-    /// The loop as a closed profile (a B-spline piece as its chords), to be measured, drawn or
-    /// offset again (with [`curve::Region::nested`] for the regions the loops bound).
+    /// The loop as a closed profile, to be measured, drawn or offset again (with
+    /// [`curve::Region::nested`] for the regions the loops bound).
     pub fn profile(&self) -> Result<Profile, curve::Error> {
         let mut segments = Vec::new();
         for s in &self.segments {
@@ -132,11 +155,14 @@ impl OffsetLoop {
                     start,
                     end,
                 } => segments.push(Segment::arc(*center, *r, *start, *end)?),
-                OffsetSegment::BSpline { points, .. } => {
-                    for w in points.windows(2) {
-                        segments.push(Segment::line(w[0], w[1])?);
-                    }
-                }
+                OffsetSegment::BSpline {
+                    degree,
+                    knots,
+                    points,
+                } => segments.push(Segment::spline(
+                    SegmentKind::BSpline,
+                    SplineCurve::clamped(*degree, points, None, Some(knots.clone()))?,
+                )?),
             }
         }
         Profile::new(segments, Some(true))
@@ -150,6 +176,9 @@ pub struct Offset {
     pub distance: f64,
     /// The loops (none: the region vanishes at this distance).
     pub loops: Vec<OffsetLoop>,
+    /// The largest distance measured between a spline's offset piece and the exact offset
+    /// (0 where every piece is a line or an arc, which are exact).
+    pub error: f64,
 }
 
 /// The offsets at several distances of one region.
@@ -220,7 +249,13 @@ pub fn outward_offsets(
                 match s {
                     OffsetSegment::Line { from, to } => std::mem::swap(from, to),
                     OffsetSegment::Arc { start, end, .. } => std::mem::swap(start, end),
-                    OffsetSegment::BSpline { points, .. } => points.reverse(),
+                    OffsetSegment::BSpline { knots, points, .. } => {
+                        points.reverse();
+                        knots.reverse();
+                        for k in knots.iter_mut() {
+                            *k = 1.0 - *k;
+                        }
+                    }
                 }
             }
         }
@@ -275,6 +310,7 @@ fn offsets_on(
     }
     let mut all_closed = true;
     let mut necks_resolved = true;
+    let mut widest_error = 0.0f64;
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
@@ -283,6 +319,7 @@ fn offsets_on(
             found.push(Offset {
                 distance: d,
                 loops: Vec::new(),
+                error: 0.0,
             });
             continue;
         };
@@ -294,23 +331,35 @@ fn offsets_on(
             .collect();
         let assembled = loops::loops(&walks, &seams, &kept_whole);
         consistent &= assembled.consistent;
+        let mut error = 0.0;
         let loops = assembled
             .loops
             .iter()
             .map(|stretches| {
                 let mut segments = Vec::new();
                 for stretch in stretches {
-                    pieces::pieces(&walks[stretch.boundary], stretch, d, chord, &mut segments);
+                    let walk = &walks[stretch.boundary];
+                    pieces::pieces(walk, stretch, d, chord, &mut segments, &mut error);
                 }
                 OffsetLoop { segments }
             })
             .collect();
-        found.push(Offset { distance: d, loops });
+        widest_error = widest_error.max(error);
+        found.push(Offset {
+            distance: d,
+            loops,
+            error,
+        });
     }
     let reason = if !axis.certified {
         Some("the medial axis is not certified".to_string())
     } else if !all_closed {
         Some("a seam's feet did not converge".to_string())
+    } else if widest_error > chord {
+        Some(format!(
+            "a spline's offset is {widest_error:e} from the exact offset where measured, past the \
+             chord tolerance"
+        ))
     } else if !necks_resolved {
         Some(
             "the axis's radius may dip to a distance between two of its vertices (a neck they \

@@ -3,22 +3,22 @@
 //! corner it passes, the arc about the corner.
 
 use crate::loops::{incoming_segment, outgoing_segment, Stretch};
+use crate::spline_offset::spline_offset;
 use crate::walk::{Foot, Walk};
 use crate::OffsetSegment;
 use curve::{SegmentKind, V2};
 use std::f64::consts::TAU;
 
-/// Halvings of a spline's span before its offset polyline is taken as it is (2^16 chords).
-const MAX_HALVINGS: usize = 16;
-
 /// The offset pieces of `stretch` at distance `d`, its spline pieces within `chord` of the
-/// exact offset at the points measured; appended to `out`.
+/// exact offset at the points measured; appended to `out`, the largest distance measured
+/// raising `error`.
 pub(crate) fn pieces(
     walk: &Walk<'_>,
     stretch: &Stretch,
     d: f64,
     chord: f64,
     out: &mut Vec<OffsetSegment>,
+    error: &mut f64,
 ) {
     let n = walk.profile.segments().len();
     let (mut at, mut segment) = match stretch.from {
@@ -69,7 +69,7 @@ pub(crate) fn pieces(
             } else {
                 param(stretch.to)
             };
-            segment_piece(walk, segment, at, to, d, chord, out);
+            segment_piece(walk, segment, [at, to], d, chord, out, error);
             // (A whole boundary closes at the joint it started from: its corner's arc too.)
             let at = leave.rem_euclid(walk.period);
             if stretch.whole && walk.reflex_corner_at(at).is_some() {
@@ -79,7 +79,7 @@ pub(crate) fn pieces(
             }
             return;
         }
-        segment_piece(walk, segment, at, leave, d, chord, out);
+        segment_piece(walk, segment, [at, leave], d, chord, out, error);
         walked += span;
         at = leave.rem_euclid(walk.period);
         let next = outgoing_segment(walk, at);
@@ -138,15 +138,15 @@ fn corner_arc(walk: &Walk<'_>, u: f64, from: f64, to: f64, d: f64) -> OffsetSegm
 }
 
 /// The offset of segment `segment` from `from` to `to` (profile parameters, in the walk's
-/// direction).
+/// direction); a spline's measured distance from the exact offset raises `error`.
 fn segment_piece(
     walk: &Walk<'_>,
     segment: usize,
-    from: f64,
-    to: f64,
+    [from, to]: [f64; 2],
     d: f64,
     chord: f64,
     out: &mut Vec<OffsetSegment>,
+    error: &mut f64,
 ) {
     // (The walk enters a segment at one end and leaves at the other: a parameter on the
     // period's seam is 0 at the first segment's start and the period at the last one's end.)
@@ -204,32 +204,10 @@ fn segment_piece(
                 },
             });
         }
-        _ => out.push(OffsetSegment::BSpline {
-            degree: 1,
-            points: polyline(&point, from, to, chord),
-        }),
-    }
-}
-
-/// The offset curve between `from` and `to` as a polyline whose chords are within `chord` of
-/// it at each chord's middle and quarter points (measured, halving where they are not).
-fn polyline(point: &dyn Fn(f64) -> V2, from: f64, to: f64, chord: f64) -> Vec<[f64; 2]> {
-    let mut points = vec![point(from).arr()];
-    let mut stack = vec![(from, to, 0usize)];
-    while let Some((a, b, depth)) = stack.pop() {
-        let (pa, pb) = (point(a), point(b));
-        let off = |t: f64| {
-            let p = point(a + (b - a) * t);
-            curve::distance_to_segment(p.arr(), pa.arr(), pb.arr())
-        };
-        let deviation = off(0.25).max(off(0.5)).max(off(0.75));
-        if deviation > chord && depth < MAX_HALVINGS {
-            let m = 0.5 * (a + b);
-            stack.push((m, b, depth + 1));
-            stack.push((a, m, depth + 1));
-        } else {
-            points.push(pb.arr());
+        _ => {
+            let (piece, measured) = spline_offset(&point, from, to, chord);
+            out.push(piece);
+            *error = error.max(measured);
         }
     }
-    points
 }

@@ -208,6 +208,10 @@ pub enum Error {
         /// What it must be.
         why: &'static str,
     },
+    /// An axis that is not one of this region's (arrays of unequal lengths, numbers not
+    /// finite, a boundary or a foot out of range).
+    #[error("the medial axis does not fit the region: {0}")]
+    BadAxis(String),
 }
 
 /// The inward offsets of `region` at each of `distances`, from its medial axis `axis`
@@ -285,6 +289,7 @@ fn offsets_on(
             why: "must be a finite number > 0",
         });
     }
+    check_axis(region, axis)?;
     let walks: Vec<Walk<'_>> = std::iter::once(Walk::new(region.outer(), false, outward))
         .chain(region.holes().iter().map(|h| Walk::new(h, true, outward)))
         .collect();
@@ -375,6 +380,57 @@ fn offsets_on(
         reason,
         complete: axis.complete && consistent,
     })
+}
+
+/// Checks that `axis` can be one of `region`'s, so that reading it cannot fail: per edge,
+/// one radius, pair of feet and pair of boundaries per vertex, all numbers finite, radii not
+/// negative, boundaries the region's and feet within their parameter domains.
+fn check_axis(region: &Region, axis: &MedialAxis) -> Result<(), Error> {
+    let boundaries: Vec<&Profile> = std::iter::once(region.outer())
+        .chain(region.holes())
+        .collect();
+    let bad = |what: String| Err(Error::BadAxis(what));
+    for (i, n) in axis.nodes.iter().enumerate() {
+        if !(n.xy.iter().all(|c| c.is_finite()) && n.radius.is_finite() && n.radius >= 0.0) {
+            return bad(format!(
+                "node {i}: a coordinate or its radius is not a finite number"
+            ));
+        }
+    }
+    for (i, e) in axis.edges.iter().enumerate() {
+        let n = e.xy.len();
+        if e.radius.len() != n || e.feet.len() != n || e.boundary.len() != n {
+            return bad(format!(
+                "edge {i}: {n} vertices, {} radii, {} feet, {} boundaries",
+                e.radius.len(),
+                e.feet.len(),
+                e.boundary.len()
+            ));
+        }
+        if e.from >= axis.nodes.len() || e.to >= axis.nodes.len() {
+            return bad(format!("edge {i}: a node out of range"));
+        }
+        for k in 0..n {
+            let finite = e.xy[k].iter().all(|c| c.is_finite()) && e.radius[k].is_finite();
+            if !finite || e.radius[k] < 0.0 {
+                return bad(format!(
+                    "edge {i}, vertex {k}: not a finite point and radius"
+                ));
+            }
+            for (b, u) in e.boundary[k].iter().zip(e.feet[k]) {
+                let Some(profile) = boundaries.get(*b) else {
+                    return bad(format!("edge {i}, vertex {k}: no boundary {b}"));
+                };
+                let (lo, hi) = profile.domain();
+                if !(lo..=hi).contains(&u) {
+                    return bad(format!(
+                        "edge {i}, vertex {k}: foot {u} outside boundary {b}'s [{lo}, {hi}]"
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The nodes no edge reaches.

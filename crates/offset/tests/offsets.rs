@@ -377,10 +377,105 @@ mod random_regions {
         ([centre[0] - 0.5 * side, centre[1] - 0.5 * side], side)
     }
 
+    /// The number of boundary curves of the set at distance ≥ `d` inside the region (or
+    /// `outward`, of the region grown by `d`), on an `n` × `n` grid: its components plus those
+    /// of the rest of the plane (the grid's border all outside) less one, as the components of
+    /// a planar set and of its complement form a tree joined by the curves. `None` where the
+    /// count depends on which of the two sets is taken 8-connected (a part of either a cell
+    /// thin, which the grid does not resolve).
+    fn loops_on_grid(
+        chords: &[([f64; 2], [f64; 2])],
+        d: f64,
+        n: usize,
+        outward: bool,
+    ) -> Option<usize> {
+        let (lo, side) = grid_box(chords, d);
+        let h = side / (n - 1) as f64;
+        let kept: Vec<bool> = (0..n * n)
+            .map(|k| {
+                let p = [lo[0] + (k % n) as f64 * h, lo[1] + (k / n) as f64 * h];
+                if outward {
+                    inside(chords, p) || distance(chords, p) <= d
+                } else {
+                    inside(chords, p) && distance(chords, p) >= d
+                }
+            })
+            .collect();
+        let components = |want: bool, diagonal: bool| {
+            let mut seen = vec![false; n * n];
+            let mut count = 0usize;
+            for start in 0..n * n {
+                if seen[start] || kept[start] != want {
+                    continue;
+                }
+                count += 1;
+                seen[start] = true;
+                let mut stack = vec![start];
+                while let Some(k) = stack.pop() {
+                    let (x, y) = ((k % n) as i64, (k / n) as i64);
+                    for (dx, dy) in [
+                        (1, 0),
+                        (-1, 0),
+                        (0, 1),
+                        (0, -1),
+                        (1, 1),
+                        (1, -1),
+                        (-1, 1),
+                        (-1, -1),
+                    ]
+                    .into_iter()
+                    .take(if diagonal { 8 } else { 4 })
+                    {
+                        let (u, v) = (x + dx, y + dy);
+                        if u < 0 || v < 0 || u >= n as i64 || v >= n as i64 {
+                            continue;
+                        }
+                        let j = v as usize * n + u as usize;
+                        if !seen[j] && kept[j] == want {
+                            seen[j] = true;
+                            stack.push(j);
+                        }
+                    }
+                }
+            }
+            count
+        };
+        let one_way = components(true, false) + components(false, true);
+        let other_way = components(true, true) + components(false, false);
+        (one_way == other_way).then(|| one_way.saturating_sub(1))
+    }
+
+    /// Whether loops sampled as `loops` are all wider than `w`, and apart by more than `w`
+    /// from each other and from themselves across any passage (points more than `3 w` apart
+    /// along a loop): then a grid of cells a quarter of `w` resolves the set they bound.
+    fn resolved(loops: &[Vec<[f64; 2]>], w: f64) -> bool {
+        let gap = |p: [f64; 2], q: [f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]);
+        loops.iter().enumerate().all(|(i, a)| {
+            let mut along = vec![0.0];
+            for pair in a.windows(2) {
+                along.push(along[along.len() - 1] + gap(pair[0], pair[1]));
+            }
+            let length = along[along.len() - 1];
+            let wide = a.iter().any(|&p| a.iter().any(|&q| gap(p, q) > w));
+            let no_passage = (0..a.len()).all(|j| {
+                (j + 1..a.len()).all(|k| {
+                    let apart = (along[k] - along[j]).min(length - along[k] + along[j]);
+                    apart <= 3.0 * w || gap(a[j], a[k]) > w
+                })
+            });
+            let apart = loops[i + 1..]
+                .iter()
+                .all(|b| a.iter().all(|&p| b.iter().all(|&q| gap(p, q) > w)));
+            wide && no_passage && apart
+        })
+    }
+
     /// The independent checks of one region's offsets: every point of each loop at the
     /// distance (dense distance), loops closed, not crossing; nothing at the distance missing
-    /// (each crossing of the distance on a grid lies on a loop). Inward offsets are looked for
-    /// inside the region, `outward` ones outside.
+    /// (each crossing of the distance on a grid lies on a loop); and as many loops as a grid
+    /// counts boundary curves of the set kept, where the loops are wide and apart enough for
+    /// it to resolve them (counted per thread). Inward offsets are looked for inside the
+    /// region, `outward` ones outside.
     fn check_all(
         region: &Region,
         found: &Offsets,
@@ -439,15 +534,60 @@ mod random_regions {
                     }
                 }
             }
+            // As many loops as boundary curves of the set kept, counted on a grid whose cells
+            // are a quarter of the loops' least width and gaps.
+            let n = 100;
+            let h = grid_box(&chords, o.distance).1 / (n - 1) as f64;
+            let coarse: Vec<Vec<[f64; 2]>> = o
+                .loops
+                .iter()
+                .map(|l| l.segments.iter().flat_map(|s| samples(s, 8)).collect())
+                .collect();
+            if resolved(&coarse, 4.0 * h) {
+                if let Some(count) = loops_on_grid(&chords, o.distance, n, outward) {
+                    prop_assert_eq!(
+                        o.loops.len(),
+                        count,
+                        "d = {}: loops against the grid's count (outward: {})",
+                        o.distance,
+                        outward
+                    );
+                    COUNTED.with(|c| c.set(c.get() + 1));
+                }
+            }
+            CHECKED.with(|c| c.set(c.get() + 1));
         }
         Ok(())
+    }
+
+    thread_local! {
+        /// Offsets checked, per test thread.
+        static CHECKED: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+        /// Offsets whose loops were counted against the grid, per test thread.
+        static COUNTED: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    }
+
+    /// Checks that most offsets checked on this thread had their loops counted.
+    fn assert_mostly_counted() {
+        let (checked, counted) = (CHECKED.with(|c| c.get()), COUNTED.with(|c| c.get()));
+        eprintln!("COUNTS {checked} {counted}");
+        assert!(
+            checked >= 24 && 3 * counted >= 2 * checked,
+            "loops counted for {counted} offsets of {checked}"
+        );
+    }
+
+    /// Runs the random polygons' property and checks it was not vacuous.
+    #[test]
+    fn offsets_of_random_polygons_match_the_oracle() {
+        offsets_of_random_polygons_are_at_the_distance();
+        assert_mostly_counted();
     }
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
 
         /// Random polygons, maybe with a hole, inward and outward: see [`check_all`].
-        #[test]
         fn offsets_of_random_polygons_are_at_the_distance(
             radii in proptest::collection::vec(0.6..1.4f64, 5..11),
             turns in proptest::collection::vec(-1.0..1.0f64, 11),
@@ -805,4 +945,33 @@ fn a_neck_between_two_round_holes_closes() {
             "d = {d}"
         );
     }
+}
+
+/// An axis that is not the region's is an error, not a panic: arrays of unequal lengths, a
+/// number that is not finite, a boundary or a foot out of range.
+#[test]
+fn a_malformed_axis_is_an_error() {
+    let region = pocket();
+    let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+    let opts = OffsetOptions::default();
+    let breakages: [&dyn Fn(&mut medial::MedialAxis); 6] = [
+        &|a| {
+            a.edges[0].radius.pop();
+        },
+        &|a| a.edges[0].xy[0][0] = f64::NAN,
+        &|a| a.edges[0].radius[0] = -1.0,
+        &|a| a.edges[0].boundary[0][1] = 7,
+        &|a| a.edges[0].feet[0][0] = 1e9,
+        &|a| a.edges[0].to = 1000,
+    ];
+    for (k, breaks) in breakages.iter().enumerate() {
+        let mut broken = axis.clone();
+        breaks(&mut broken);
+        let got = offsets(&region, &broken, &[0.5], &opts);
+        assert!(
+            matches!(got, Err(offset::Error::BadAxis(_))),
+            "breakage {k}: {got:?}"
+        );
+    }
+    assert!(offsets(&region, &axis, &[0.5], &opts).is_ok());
 }

@@ -26,6 +26,7 @@
 //! ```
 
 mod loops;
+mod necks;
 mod pieces;
 mod seams;
 mod spline_offset;
@@ -329,7 +330,7 @@ fn offsets_on(
             continue;
         };
         all_closed &= seams.iter().all(|s| s.refined);
-        necks_resolved &= !seams::may_dip_between(axis, &walks, d, size);
+        necks_resolved &= !necks::may_dip_between(axis, &walks, d, size);
         let kept_whole: Vec<bool> = widest
             .iter()
             .map(|&w| w > d + seams::TOUCHING * size)

@@ -51,37 +51,6 @@ pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) ->
     Some(found)
 }
 
-/// Whether the radius may dip to `d` between two vertices both above it: where it falls at
-/// one end of a step and rises at the other (a neck between them, which the axis's vertices
-/// need not resolve: the axis between two equal round bosses is straight), and the bound
-/// from its slope (at most 1) does not keep it above `d`.
-pub(crate) fn may_dip_between(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> bool {
-    let above = |r: f64| r > d + TOUCHING * size;
-    axis.edges.iter().any(|edge| {
-        (1..edge.xy.len()).any(|k| {
-            let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
-            if !(above(r0) && above(r1)) {
-                return false;
-            }
-            let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
-            let step = x1 - x0;
-            let length = step.norm();
-            if (r0 + r1 - length) * 0.5 > d + TOUCHING * size {
-                return false;
-            }
-            // The slope of the radius along the step at each end: the step's direction on the
-            // way from the foot (1-Lipschitz; its sign says falling or rising).
-            let slope = |j: usize, x: V2| {
-                let b = edge.boundary[j][0];
-                walks
-                    .get(b)
-                    .map_or(0.0, |w| step.dot(x - w.point(edge.feet[j][0])))
-            };
-            !(slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0)
-        })
-    })
-}
-
 /// The seam on `edge` between vertices `k − 1` and `k`.
 fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) -> Option<Seam> {
     let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
@@ -89,21 +58,9 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
     let guess = x0 + (x1 - x0) * share;
     let toward_wider = if r1 > r0 { x1 - x0 } else { x0 - x1 };
-    // The axis lists each vertex's two feet in no fixed order: here they are paired by the
-    // side of the step they lie on (left first).
     let step = x1 - x0;
-    let sided = |j: usize| -> Option<[(usize, f64); 2]> {
-        let feet = [0, 1].map(|i| (edge.boundary[j][i], edge.feet[j][i]));
-        let left = |(b, u): (usize, f64)| -> Option<f64> {
-            Some(step.cross(walks.get(b)?.point(u) - V2::from_arr(edge.xy[j])))
-        };
-        Some(if left(feet[0])? >= left(feet[1])? {
-            feet
-        } else {
-            [feet[1], feet[0]]
-        })
-    };
-    let (before, after) = (sided(k - 1)?, sided(k)?);
+    let [before, after] = [k - 1, k].map(|j| sided_feet(edge, j, step, walks));
+    let (before, after) = (before?, after?);
     let foot_on = |side: usize| -> Option<(usize, Foot)> {
         let (b, u0) = before[side];
         let (b1, u1) = after[side];
@@ -131,6 +88,25 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
         feet: refined_feet,
         begins,
         refined,
+    })
+}
+
+/// The feet of vertex `j` of `edge` paired by the side of `step` (along the edge) they lie
+/// on, left first: the axis lists them in no fixed order.
+pub(crate) fn sided_feet(
+    edge: &Edge,
+    j: usize,
+    step: V2,
+    walks: &[Walk<'_>],
+) -> Option<[(usize, f64); 2]> {
+    let feet = [0, 1].map(|i| (edge.boundary[j][i], edge.feet[j][i]));
+    let left = |(b, u): (usize, f64)| -> Option<f64> {
+        Some(step.cross(walks.get(b)?.point(u) - V2::from_arr(edge.xy[j])))
+    };
+    Some(if left(feet[0])? >= left(feet[1])? {
+        feet
+    } else {
+        [feet[1], feet[0]]
     })
 }
 

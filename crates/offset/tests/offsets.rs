@@ -445,9 +445,11 @@ mod random_regions {
         (one_way == other_way).then(|| one_way.saturating_sub(1))
     }
 
-    /// Whether loops sampled as `loops` are all wider than `w`, and apart by more than `w`
-    /// from each other and from themselves across any passage (points more than `3 w` apart
-    /// along a loop): then a grid of cells a quarter of `w` resolves the set they bound.
+    /// Whether loops sampled as `loops` are all wider than `w` (their area over their length,
+    /// a quarter of the width of a disk and half of a strip's, at least `w / 2`), and apart
+    /// by more than `w` from each other and from themselves across any passage (points more
+    /// than `3 w` apart along a loop): then a grid of cells a quarter of `w` resolves the set
+    /// they bound.
     fn resolved(loops: &[Vec<[f64; 2]>], w: f64) -> bool {
         let gap = |p: [f64; 2], q: [f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]);
         loops.iter().enumerate().all(|(i, a)| {
@@ -456,7 +458,12 @@ mod random_regions {
                 along.push(along[along.len() - 1] + gap(pair[0], pair[1]));
             }
             let length = along[along.len() - 1];
-            let wide = a.iter().any(|&p| a.iter().any(|&q| gap(p, q) > w));
+            let area = a
+                .windows(2)
+                .map(|s| 0.5 * (s[0][0] * s[1][1] - s[1][0] * s[0][1]))
+                .sum::<f64>()
+                .abs();
+            let wide = area >= 0.5 * w * length;
             let no_passage = (0..a.len()).all(|j| {
                 (j + 1..a.len()).all(|k| {
                     let apart = (along[k] - along[j]).min(length - along[k] + along[j]);
@@ -567,12 +574,12 @@ mod random_regions {
         static COUNTED: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
     }
 
-    /// Checks that most offsets checked on this thread had their loops counted.
-    fn assert_mostly_counted() {
+    /// Checks that at least `share` of the offsets checked on this thread had their loops
+    /// counted.
+    fn assert_counted(share: f64) {
         let (checked, counted) = (CHECKED.with(|c| c.get()), COUNTED.with(|c| c.get()));
-        eprintln!("COUNTS {checked} {counted}");
         assert!(
-            checked >= 24 && 3 * counted >= 2 * checked,
+            checked >= 24 && counted as f64 >= share * checked as f64,
             "loops counted for {counted} offsets of {checked}"
         );
     }
@@ -581,7 +588,8 @@ mod random_regions {
     #[test]
     fn offsets_of_random_polygons_match_the_oracle() {
         offsets_of_random_polygons_are_at_the_distance();
-        assert_mostly_counted();
+        // (Most of the polygons' offsets are wide: 80 % counted with the seed of CI.)
+        assert_counted(0.7);
     }
 
     proptest! {
@@ -621,7 +629,8 @@ mod random_regions {
         static SPLINE_CERTIFIED: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
     }
 
-    /// Runs the spline regions' property and checks that most of its offsets were certified.
+    /// Runs the spline regions' property and checks that most of its offsets were certified
+    /// and had their loops counted.
     #[test]
     fn offsets_of_spline_regions_are_mostly_certified() {
         offsets_of_random_spline_regions_are_at_the_distance();
@@ -633,6 +642,9 @@ mod random_regions {
             cases >= 12 && 2 * certified >= cases,
             "{certified} of {cases} certified"
         );
+        // (The Béziers' offsets at larger distances are often narrow: 62 % counted with the
+        // seed of CI.)
+        assert_counted(0.5);
     }
 
     proptest! {
@@ -926,7 +938,8 @@ fn a_d_shaped_hole_closes_round_its_corners() {
 
 /// Between two equal round holes the axis is straight, and its radius is least at the neck
 /// between them, where it need have no vertex: a distance just above the neck's radius must
-/// not keep a passage that is not there (or must not be certified).
+/// not keep a passage that is not there (or must not be certified), and one just below it
+/// keeps the passage, certified where points along the step show the radius above it.
 #[test]
 fn a_neck_between_two_round_holes_closes() {
     let outer = polygon(&[[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]);
@@ -935,7 +948,7 @@ fn a_neck_between_two_round_holes_closes() {
         vec![circle([-1.5, 0.0], 1.0), circle([1.5, 0.0], 1.0)],
     )
     .unwrap();
-    for d in [0.45, 0.5005, 0.55, 0.8] {
+    for d in [0.45, 0.499, 0.4999999, 0.5005, 0.55, 0.8] {
         let found = offsets_of(&region, &[d]);
         check(&region, &found, 1e-6);
         // (Round the pocket and each hole while the neck is open, then round both holes.)
@@ -944,6 +957,10 @@ fn a_neck_between_two_round_holes_closes() {
             if d < 0.5 { 3 } else { 2 },
             "d = {d}"
         );
+        // The radius along the axis shown above the distance where it is by a little, not
+        // where it is by too little for 256 points on the step to show.
+        let shown = d <= 0.499 || d > 0.5;
+        assert_eq!(found.certified, shown, "d = {d}: {:?}", found.reason);
     }
 }
 

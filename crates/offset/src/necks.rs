@@ -1,7 +1,9 @@
 //! Necks between the axis's vertices: where the radius falls below the distance between two
 //! vertices both above it, the offset pinches off there, though no seam is found. The axis
 //! between two equal round bosses is straight, with vertices only at its ends; its radius is
-//! least at the middle.
+//! least at the middle. A step whose radius falls from one end and rises to the other, and
+//! whose ends are not far enough above the distance for the radius's slope (at most 1) to
+//! keep it above, is sampled: points of it moved onto the axis bound the radius between them.
 
 use crate::seams::{sided_feet, TOUCHING};
 use crate::walk::Walk;
@@ -38,7 +40,19 @@ pub(crate) fn may_dip_between(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, siz
             }
             let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
             // (1-Lipschitz along the chord: no point of it is nearer the boundary.)
-            if (r0 + r1 - (x1 - x0).norm()) * 0.5 > floor {
+            let step = x1 - x0;
+            if (r0 + r1 - step.norm()) * 0.5 > floor {
+                return false;
+            }
+            // A neck falls at one end of the step and rises at the other: the radius's slope
+            // along the step at each end is the step's direction on the way from the foot.
+            let slope = |j: usize, x: V2| {
+                let b = edge.boundary[j][0];
+                walks
+                    .get(b)
+                    .map_or(0.0, |w| step.dot(x - w.point(edge.feet[j][0])))
+            };
+            if slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0 {
                 return false;
             }
             !stays_above(edge, k, walks, floor, size)

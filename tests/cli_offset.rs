@@ -33,6 +33,40 @@ fn each_loop_is_a_closed_profile_the_tool_reads_back() {
     assert!(past["offsets"][0]["loops"].as_array().unwrap().is_empty());
 }
 
+/// A drawing's splines offset to fitted cubics (with their knots) that the tool reads back,
+/// within the chord tolerance where measured.
+#[test]
+fn spline_offsets_are_cubics_the_tool_reads_back() {
+    let doc = curvekit_json(&["offset", &fixture("drawing-glyph-d.svg"), "--step", "30"]);
+    let dir = tempfile::tempdir().unwrap();
+    let mut cubics = 0;
+    for (k, o) in doc["offsets"].as_array().unwrap().iter().enumerate() {
+        let error = o["error"].as_f64().unwrap();
+        assert!(
+            (0.0..1.0).contains(&error),
+            "d = {}: error {error}",
+            o["distance"]
+        );
+        for (j, l) in o["loops"].as_array().unwrap().iter().enumerate() {
+            for s in l["segments"].as_array().unwrap() {
+                if s["kind"] == "bspline" && s["degree"] == 3 {
+                    let (n, knots) = (
+                        s["points"].as_array().unwrap().len(),
+                        s["knots"].as_array().unwrap().len(),
+                    );
+                    assert_eq!(knots, n + 4, "{s}");
+                    cubics += 1;
+                }
+            }
+            let path = dir.path().join(format!("loop-{k}-{j}.json"));
+            std::fs::write(&path, l.to_string()).unwrap();
+            let back = curvekit_json(&["inflections", path.to_str().unwrap()]);
+            assert_eq!(back["curve"]["closed"], true, "{l}");
+        }
+    }
+    assert!(cubics > 0, "no fitted cubic in {doc}");
+}
+
 #[test]
 fn distances_are_checked_before_the_region_is_read() {
     let missing = fixture("no-such-file.json");

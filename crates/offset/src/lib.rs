@@ -25,6 +25,7 @@
 //! assert_eq!(found.offsets[0].loops[0].segments.len(), 4);
 //! ```
 
+mod cusps;
 mod loops;
 mod necks;
 mod pieces;
@@ -347,6 +348,7 @@ fn offsets_on(
                     let walk = &walks[stretch.boundary];
                     pieces::pieces(walk, stretch, d, chord, &mut segments, &mut error);
                 }
+                cusps::blunt(&mut segments, cusps::HORN_CUT * size);
                 OffsetLoop { segments }
             })
             .collect();

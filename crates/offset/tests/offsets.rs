@@ -992,3 +992,31 @@ fn a_malformed_axis_is_an_error() {
     }
     assert!(offsets(&region, &axis, &[0.5], &opts).is_ok());
 }
+
+/// An L of arms exactly twice the distance wide: the arms are closed (they are the distance
+/// from both sides), the elbow is wider, and its loop touches the arms' middles, turning back
+/// there. The horns' tips are cut where they are 1e-8 of the size wide, so that the loop is a
+/// profile (which cannot turn back).
+#[test]
+fn arms_exactly_twice_the_distance_wide_leave_the_elbow() {
+    let region = Region::new(
+        polygon(&[
+            [0.0, 0.0],
+            [6.0, 0.0],
+            [6.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 6.0],
+            [0.0, 6.0],
+        ]),
+        vec![],
+    )
+    .unwrap();
+    let found = offsets_of(&region, &[0.5]);
+    check(&region, &found, 1e-6);
+    assert_eq!(found.offsets[0].loops.len(), 1);
+    let elbow = &found.offsets[0].loops[0];
+    let profile = elbow.profile();
+    assert!(profile.is_ok(), "{profile:?}: {elbow:?}");
+    // (Two lines and the arc about the reflex corner, two cuts.)
+    assert_eq!(elbow.segments.len(), 5, "{elbow:?}");
+}

@@ -34,10 +34,12 @@ fn each_loop_is_a_closed_profile_the_tool_reads_back() {
 }
 
 /// A drawing's splines offset to fitted cubics (with their knots) that the tool reads back,
-/// within the chord tolerance where measured.
+/// within the chord tolerance where measured. At 40, half the glyph's stroke, its bowl leaves
+/// slivers narrower than the tolerance, across which fitted pieces crossed until they were
+/// fitted again, finer.
 #[test]
 fn spline_offsets_are_cubics_the_tool_reads_back() {
-    let doc = curvekit_json(&["offset", &fixture("drawing-glyph-d.svg"), "--step", "30"]);
+    let doc = curvekit_json(&["offset", &fixture("drawing-glyph-d.svg"), "--step", "40"]);
     let dir = tempfile::tempdir().unwrap();
     let mut cubics = 0;
     for (k, o) in doc["offsets"].as_array().unwrap().iter().enumerate() {

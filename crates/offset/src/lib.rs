@@ -40,6 +40,9 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use walk::Walk;
 
+/// Times the chord tolerance is quartered for a loop whose fitted pieces cross.
+const REFITS: usize = 6;
+
 /// Options of the offsets.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct OffsetOptions {
@@ -318,6 +321,7 @@ fn offsets_on(
     let mut all_closed = true;
     let mut necks_resolved = true;
     let mut widest_error = 0.0f64;
+    let mut not_a_profile: Option<curve::Error> = None;
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
@@ -338,20 +342,39 @@ fn offsets_on(
             .collect();
         let assembled = loops::loops(&walks, &seams, &kept_whole);
         consistent &= assembled.consistent;
-        let mut error = 0.0;
-        let loops = assembled
-            .loops
-            .iter()
-            .map(|stretches| {
-                let mut segments = Vec::new();
-                for stretch in stretches {
-                    let walk = &walks[stretch.boundary];
-                    pieces::pieces(walk, stretch, d, chord, &mut segments, &mut error);
-                }
-                cusps::blunt(&mut segments, cusps::HORN_CUT * size);
-                OffsetLoop { segments }
-            })
-            .collect();
+        // The loops within `tolerance` of the exact offset where measured, and that distance.
+        let build = |tolerance: f64| {
+            let mut error = 0.0;
+            let loops: Vec<OffsetLoop> = assembled
+                .loops
+                .iter()
+                .map(|stretches| {
+                    let mut segments = Vec::new();
+                    for stretch in stretches {
+                        let walk = &walks[stretch.boundary];
+                        pieces::pieces(walk, stretch, d, tolerance, &mut segments, &mut error);
+                    }
+                    cusps::blunt(&mut segments, cusps::HORN_CUT * size);
+                    OffsetLoop { segments }
+                })
+                .collect();
+            (loops, error)
+        };
+        // A fitted piece strays from the exact offset by up to the tolerance: across a sliver
+        // narrower than that (between nearly parallel sides) it may cross the piece opposite.
+        // Such loops are fitted again, finer, up to 4^-REFITS of the tolerance.
+        let (mut loops, mut error) = build(chord);
+        let mut tolerance = chord;
+        for _ in 0..REFITS {
+            if !loops.iter().any(crosses_itself) {
+                break;
+            }
+            tolerance *= 0.25;
+            (loops, error) = build(tolerance);
+        }
+        if let Some(bad) = loops.iter().find_map(|l| l.profile().err()) {
+            not_a_profile.get_or_insert(bad);
+        }
         widest_error = widest_error.max(error);
         found.push(Offset {
             distance: d,
@@ -368,6 +391,8 @@ fn offsets_on(
             "a spline's offset is {widest_error:e} from the exact offset where measured, past the \
              chord tolerance"
         ))
+    } else if let Some(bad) = not_a_profile {
+        Some(format!("a loop is not a simple closed profile: {bad}"))
     } else if !necks_resolved {
         Some(
             "the axis's radius may dip to a distance between two of its vertices (a neck they \
@@ -434,6 +459,14 @@ fn check_axis(region: &Region, axis: &MedialAxis) -> Result<(), Error> {
         }
     }
     Ok(())
+}
+
+/// Whether a loop with fitted pieces crosses itself (lines and arcs, exact, cannot).
+fn crosses_itself(l: &OffsetLoop) -> bool {
+    l.segments
+        .iter()
+        .any(|s| matches!(s, OffsetSegment::BSpline { .. }))
+        && matches!(l.profile(), Err(curve::Error::SelfCrossing { .. }))
 }
 
 /// The nodes no edge reaches.

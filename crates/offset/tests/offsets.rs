@@ -502,6 +502,11 @@ mod random_regions {
                     prop_assert!(!cross(a, b), "d = {}: two loops cross", o.distance);
                 }
             }
+            // Each loop is a profile the tool reads back (which it is not if it crosses itself).
+            for l in &o.loops {
+                let read = l.profile();
+                prop_assert!(read.is_ok(), "d = {}: {:?}", o.distance, read.err());
+            }
             let to_loops = |p: [f64; 2]| {
                 o.loops
                     .iter()

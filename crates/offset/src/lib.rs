@@ -322,6 +322,7 @@ fn offsets_on(
     let mut necks_resolved = true;
     let mut widest_error = 0.0f64;
     let mut not_a_profile: Option<curve::Error> = None;
+    let mut loops_apart = true;
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
@@ -362,18 +363,26 @@ fn offsets_on(
         };
         // A fitted piece strays from the exact offset by up to the tolerance: across a sliver
         // narrower than that (between nearly parallel sides) it may cross the piece opposite.
-        // Such loops are fitted again, finer, up to 4^-REFITS of the tolerance.
+        // Such loops are fitted again, finer, up to 4^-REFITS of the tolerance. (Loops of lines
+        // and arcs are exact offsets, simple by construction: only loops with fitted pieces
+        // are read back as the reader would.)
         let (mut loops, mut error) = build(chord);
+        let mut verdict = read_back(&loops);
         let mut tolerance = chord;
         for _ in 0..REFITS {
-            if !loops.iter().any(crosses_itself) {
+            if verdict != ReadBack::Crossing {
                 break;
             }
             tolerance *= 0.25;
             (loops, error) = build(tolerance);
+            verdict = read_back(&loops);
         }
-        if let Some(bad) = loops.iter().find_map(|l| l.profile().err()) {
-            not_a_profile.get_or_insert(bad);
+        match verdict {
+            ReadBack::Simple => {}
+            ReadBack::Crossing => loops_apart = false,
+            ReadBack::Refused(bad) => {
+                not_a_profile.get_or_insert(bad);
+            }
         }
         widest_error = widest_error.max(error);
         found.push(Offset {
@@ -393,6 +402,10 @@ fn offsets_on(
         ))
     } else if let Some(bad) = not_a_profile {
         Some(format!("a loop is not a simple closed profile: {bad}"))
+    } else if !loops_apart {
+        Some(
+            "two loops' fitted pieces cross across a passage narrower than they follow".to_string(),
+        )
     } else if !necks_resolved {
         Some(
             "the axis's radius may dip to a distance between two of its vertices (a neck they \
@@ -461,12 +474,46 @@ fn check_axis(region: &Region, axis: &MedialAxis) -> Result<(), Error> {
     Ok(())
 }
 
-/// Whether a loop with fitted pieces crosses itself (lines and arcs, exact, cannot).
-fn crosses_itself(l: &OffsetLoop) -> bool {
+/// Whether a loop has a fitted piece (the offset of a spline).
+fn has_fitted(l: &OffsetLoop) -> bool {
     l.segments
         .iter()
         .any(|s| matches!(s, OffsetSegment::BSpline { .. }))
-        && matches!(l.profile(), Err(curve::Error::SelfCrossing { .. }))
+}
+
+/// What the tool's reader makes of loops with fitted pieces.
+#[derive(Debug, PartialEq)]
+enum ReadBack {
+    /// Simple closed profiles, no two crossing.
+    Simple,
+    /// A loop crosses itself, or two loops cross.
+    Crossing,
+    /// A loop is refused for another reason.
+    Refused(curve::Error),
+}
+
+/// Reads back the loops with fitted pieces as the tool's reader would (each a profile, and
+/// all of them, where there are several, as the boundaries of regions).
+fn read_back(loops: &[OffsetLoop]) -> ReadBack {
+    if !loops.iter().any(has_fitted) {
+        return ReadBack::Simple;
+    }
+    let mut profiles = Vec::with_capacity(loops.len());
+    for l in loops {
+        match l.profile() {
+            Ok(p) => profiles.push(p),
+            Err(curve::Error::SelfCrossing { .. }) => return ReadBack::Crossing,
+            Err(bad) => return ReadBack::Refused(bad),
+        }
+    }
+    if profiles.len() < 2 {
+        return ReadBack::Simple;
+    }
+    match Region::nested(profiles) {
+        Ok(_) => ReadBack::Simple,
+        Err(curve::Error::BoundariesCross { .. }) => ReadBack::Crossing,
+        Err(bad) => ReadBack::Refused(bad),
+    }
 }
 
 /// The nodes no edge reaches.

@@ -159,8 +159,9 @@ fn check(region: &Region, found: &Offsets, tol: f64) -> Vec<Vec<f64>> {
                 let (_, end) = ends(s);
                 let (next, _) = ends(&l.segments[(k + 1) % l.segments.len()]);
                 let gap = ((end[0] - next[0]).powi(2) + (end[1] - next[1]).powi(2)).sqrt();
+                // (Rounding of the coordinates: relative to their size, far from the origin.)
                 assert!(
-                    gap < 1e-9,
+                    gap < 1e-9 * end[0].abs().max(end[1].abs()).max(1.0),
                     "d = {}: piece {k} ends {gap} from the next",
                     o.distance
                 );
@@ -1024,4 +1025,73 @@ fn arms_exactly_twice_the_distance_wide_leave_the_elbow() {
     assert!(profile.is_ok(), "{profile:?}: {elbow:?}");
     // (Two lines and the arc about the reflex corner, two cuts.)
     assert_eq!(elbow.segments.len(), 5, "{elbow:?}");
+}
+
+/// The region moved by `map` (every segment, holes too).
+fn mapped(region: &Region, map: &curve::Affine) -> Region {
+    let profile = |p: &Profile| {
+        let segs = p
+            .segments()
+            .iter()
+            .map(|s| s.transformed(map).unwrap())
+            .collect();
+        Profile::new(segs, Some(p.is_closed())).unwrap()
+    };
+    let holes = region.holes().iter().map(profile).collect();
+    Region::new(profile(region.outer()), holes).unwrap()
+}
+
+/// Metamorphic: the pocket (lines and arcs) and a chain of Béziers moved far from the origin,
+/// scaled by 1e±6 or rotated have, at the moved distances, as many loops, every point at the
+/// distance (within the tolerance scaled), the spline pieces' errors within it; certified
+/// where the moved axis is (always, but far from the origin).
+#[test]
+fn offsets_moved_scaled_or_rotated_are_the_moved_offsets() {
+    let segs = profiles::bezier_chain(
+        &[1.5, 1.2, 1.8, 1.4],
+        &[(0.2, -0.1), (-0.1, 0.3), (0.15, 0.1), (-0.2, -0.2)],
+        &[true, false, true, false],
+    )
+    .unwrap();
+    let chain = Region::new(profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap();
+    let (c, s) = (0.6f64, 0.8f64); // a rotation with exact sine and cosine
+    let maps = [
+        curve::Affine([1.0, 0.0, 0.0, 1.0, 1e6, -1e6]),
+        curve::Affine([1e-6, 0.0, 0.0, 1e-6, 3e-6, 0.0]),
+        curve::Affine([1e6, 0.0, 0.0, 1e6, 0.0, -7e6]),
+        curve::Affine([c, s, -s, c, 0.25, 0.5]),
+    ];
+    for (region, distances) in [
+        (pocket(), vec![0.5, 1.0, 2.0]),
+        (chain, vec![0.2, 0.5, 0.9]),
+    ] {
+        let base = offsets_of(&region, &distances);
+        assert!(base.certified, "{:?}", base.reason);
+        for map in &maps {
+            let scale = map.determinant().abs().sqrt();
+            let moved_region = mapped(&region, map);
+            let moved_distances: Vec<f64> = distances.iter().map(|d| d * scale).collect();
+            let axis = medial_axis(&moved_region, &MedialOptions::default()).unwrap();
+            // (Far from the origin the axis's digits may run out: uncertified, then said so.)
+            let translated = map.0[..4] == [1.0, 0.0, 0.0, 1.0];
+            assert!(axis.certified || translated, "{map:?}: {:?}", axis.reason);
+            let moved = offsets(
+                &moved_region,
+                &axis,
+                &moved_distances,
+                &OffsetOptions::default(),
+            )
+            .unwrap();
+            if !axis.certified {
+                assert!(!moved.certified);
+                continue;
+            }
+            assert!(moved.certified, "{map:?}: {:?}", moved.reason);
+            for (b, m) in base.offsets.iter().zip(&moved.offsets) {
+                assert_eq!(b.loops.len(), m.loops.len(), "{map:?}, d = {}", b.distance);
+                assert!(m.error <= 1e-3 * 4.0 * scale, "{map:?}: error {}", m.error);
+            }
+            check(&moved_region, &moved, 4e-3 * scale);
+        }
+    }
 }

@@ -6,6 +6,8 @@
 
 use crate::error::{Error, Result};
 use crate::param::ParamCurve;
+use crate::profile::Profile;
+use crate::region::Region;
 use crate::segment::{Segment, SegmentKind};
 use crate::spline::SplineCurve;
 
@@ -60,6 +62,40 @@ impl Affine {
     /// Whether every coefficient is finite and the map is invertible.
     pub fn is_valid(&self) -> bool {
         self.0.iter().all(|x| x.is_finite()) && self.determinant() != 0.0
+    }
+}
+
+impl Profile {
+    /// The profile moved by `map`, segment by segment ([`Segment::transformed`]), open or
+    /// closed as it was. Its corners and joints are those of the moved segments, checked
+    /// anew.
+    ///
+    /// ```
+    /// use curve::{Affine, ParamCurve, Profile, Segment};
+    /// let side = Profile::new(vec![Segment::line([0.0, 0.0], [1.0, 0.0]).unwrap()], None).unwrap();
+    /// let moved = side.transformed(&Affine([0.0, 1.0, -1.0, 0.0, 5.0, 0.0])).unwrap();
+    /// assert_eq!(moved.jet_to(1.0, 0).p.arr(), [5.0, 1.0]);
+    /// ```
+    pub fn transformed(&self, map: &Affine) -> Result<Profile> {
+        let segments = self
+            .segments()
+            .iter()
+            .map(|s| s.transformed(map))
+            .collect::<Result<Vec<_>>>()?;
+        Profile::new(segments, Some(self.is_closed()))
+    }
+}
+
+impl Region {
+    /// The region moved by `map`: its outer boundary and every hole
+    /// ([`Profile::transformed`]), validated anew.
+    pub fn transformed(&self, map: &Affine) -> Result<Region> {
+        let holes = self
+            .holes()
+            .iter()
+            .map(|h| h.transformed(map))
+            .collect::<Result<Vec<_>>>()?;
+        Region::new(self.outer().transformed(map)?, holes)
     }
 }
 

@@ -1112,20 +1112,6 @@ fn two_leaf_tips_beside_a_smooth_joint_are_two_nodes() {
     );
 }
 
-/// The region moved by `map` (every segment, holes too).
-fn mapped(region: &Region, map: &curve::Affine) -> Region {
-    let profile = |p: &Profile| {
-        let segs = p
-            .segments()
-            .iter()
-            .map(|s| s.transformed(map).unwrap())
-            .collect();
-        Profile::new(segs, Some(p.is_closed())).unwrap()
-    };
-    let holes = region.holes().iter().map(profile).collect();
-    Region::new(profile(region.outer()), holes).unwrap()
-}
-
 /// Metamorphic: an axis certified after the region is moved far from the origin, scaled by
 /// 2^±20 or 1e±6, or rotated, is the moved axis (every node, of its kind, within 1e-9 of the
 /// size of a moved node of the axis at unit size), on a pocket of lines and arcs with a hole
@@ -1164,7 +1150,7 @@ fn a_certified_axis_moved_scaled_or_rotated_is_the_same_axis() {
         assert!(base.certified, "{:?}", base.reason);
         let size = size_of(region);
         for (map, must_certify) in &maps {
-            let moved = axis(&mapped(region, map));
+            let moved = axis(&region.transformed(map).unwrap());
             assert!(
                 moved.certified || !must_certify,
                 "{map:?}: {:?}",

@@ -119,36 +119,112 @@ fn ends(s: &OffsetSegment) -> ([f64; 2], [f64; 2]) {
     (p[0], p[p.len() - 1])
 }
 
-/// The region's boundary as chords, for the distance by dense sampling (independent of the
-/// code under test): exact for lines, within the sagitta of 4,000 chords per arc or spline.
-fn boundary_chords(region: &Region) -> Vec<([f64; 2], [f64; 2])> {
-    let mut out = Vec::new();
-    for b in std::iter::once(region.outer()).chain(region.holes()) {
-        for (i, s) in b.segments().iter().enumerate() {
-            let n = if s.kind() == curve::SegmentKind::Line {
-                1
-            } else {
-                4000
-            };
-            let at = |k: usize| b.jet_to(i as f64 + k as f64 / n as f64, 0).p.arr();
-            out.extend((0..n).map(|k| (at(k), at(k + 1))));
-        }
-    }
-    out
+/// Chords a query looks at together: one box stands for them all.
+const RUN: usize = 32;
+
+/// A region's boundary as chords (lines as they are, every other segment by `per_curve`
+/// chords), for the distance and the inside by dense sampling, independent of the code under
+/// test. The chords are kept in runs of [`RUN`] with their boxes, and the queries skip the
+/// runs whose box is too far to matter: brute force with the same answers, several times
+/// quicker.
+struct Chords {
+    chords: Vec<([f64; 2], [f64; 2])>,
+    /// Each run's box (low and high corners).
+    boxes: Vec<([f64; 2], [f64; 2])>,
 }
 
-/// The distance from `p` to the chords.
-fn distance_to_chords(chords: &[([f64; 2], [f64; 2])], p: [f64; 2]) -> f64 {
-    chords
-        .iter()
-        .map(|(a, b)| curve::distance_to_segment(p, *a, *b))
-        .fold(f64::INFINITY, f64::min)
+impl Chords {
+    fn of(region: &Region, per_curve: usize) -> Self {
+        let mut chords = Vec::new();
+        for b in std::iter::once(region.outer()).chain(region.holes()) {
+            for (i, s) in b.segments().iter().enumerate() {
+                let n = if s.kind() == curve::SegmentKind::Line {
+                    1
+                } else {
+                    per_curve
+                };
+                let at = |k: usize| b.jet_to(i as f64 + k as f64 / n as f64, 0).p.arr();
+                chords.extend((0..n).map(|k| (at(k), at(k + 1))));
+            }
+        }
+        let boxes = chords
+            .chunks(RUN)
+            .map(|run| {
+                run.iter().fold(
+                    ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+                    |(lo, hi), (a, b)| {
+                        (
+                            [lo[0].min(a[0]).min(b[0]), lo[1].min(a[1]).min(b[1])],
+                            [hi[0].max(a[0]).max(b[0]), hi[1].max(a[1]).max(b[1])],
+                        )
+                    },
+                )
+            })
+            .collect();
+        Self { chords, boxes }
+    }
+
+    /// The distance from `p` to the boundary: at most that to the nearest run's first point,
+    /// so runs whose box is farther cannot hold a nearer chord.
+    fn distance(&self, p: [f64; 2]) -> f64 {
+        let gap = |q: [f64; 2]| (q[0] - p[0]).hypot(q[1] - p[1]);
+        let mut best = self
+            .chords
+            .iter()
+            .step_by(RUN)
+            .map(|(a, _)| gap(*a))
+            .fold(f64::INFINITY, f64::min);
+        for (run, (lo, hi)) in self.chords.chunks(RUN).zip(&self.boxes) {
+            let dx = (lo[0] - p[0]).max(p[0] - hi[0]).max(0.0);
+            let dy = (lo[1] - p[1]).max(p[1] - hi[1]).max(0.0);
+            if dx.hypot(dy) >= best {
+                continue;
+            }
+            for (a, b) in run {
+                best = best.min(curve::distance_to_segment(p, *a, *b));
+            }
+        }
+        best
+    }
+
+    /// Whether `p` is in the region (even-odd over all its boundaries' chords, counting
+    /// crossings of the ray to its right; a run wholly above, below or left of `p` has none).
+    fn inside(&self, p: [f64; 2]) -> bool {
+        let mut crossings = 0;
+        for (run, (lo, hi)) in self.chords.chunks(RUN).zip(&self.boxes) {
+            if p[1] < lo[1] || p[1] >= hi[1] || p[0] >= hi[0] {
+                continue;
+            }
+            crossings += run
+                .iter()
+                .filter(|(a, b)| {
+                    (a[1] > p[1]) != (b[1] > p[1])
+                        && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0])
+                })
+                .count();
+        }
+        crossings % 2 == 1
+    }
+
+    /// The boundary's box (low and high corners).
+    fn bounds(&self) -> ([f64; 2], [f64; 2]) {
+        self.boxes.iter().fold(
+            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+            |(lo, hi), (a, b)| {
+                (
+                    [lo[0].min(a[0]), lo[1].min(a[1])],
+                    [hi[0].max(b[0]), hi[1].max(b[1])],
+                )
+            },
+        )
+    }
 }
 
 /// Every loop closes, every sampled point is at the distance (within `tol`), and the signed
 /// area of each loop says which way it runs.
 fn check(region: &Region, found: &Offsets, tol: f64) -> Vec<Vec<f64>> {
-    let chords = boundary_chords(region);
+    // (Within the sagitta of 4,000 chords a curve: far below any tolerance asked.)
+    let chords = Chords::of(region, 4000);
     let mut areas = Vec::new();
     for o in &found.offsets {
         let mut per = Vec::new();
@@ -170,7 +246,7 @@ fn check(region: &Region, found: &Offsets, tol: f64) -> Vec<Vec<f64>> {
                     area += 0.5 * (w[0][0] * w[1][1] - w[1][0] * w[0][1]);
                 }
                 for p in samples(s, 24) {
-                    let dist = distance_to_chords(&chords, p);
+                    let dist = chords.distance(p);
                     assert!(
                         (dist - o.distance).abs() < tol,
                         "d = {}: {p:?} is {dist} from the boundary",
@@ -328,51 +404,13 @@ mod random_regions {
         }
     }
 
-    /// The boundary as chords (lines as they are, arcs by 720 chords, splines by 400): the
-    /// independent distance of the oracle, within 1e-5 of the exact one on these shapes.
-    fn chords(region: &Region) -> Vec<([f64; 2], [f64; 2])> {
-        let mut out = Vec::new();
-        for b in std::iter::once(region.outer()).chain(region.holes()) {
-            for (i, s) in b.segments().iter().enumerate() {
-                let n = match (s.kind(), s.circle()) {
-                    (curve::SegmentKind::Line, _) => 1,
-                    (_, Some(_)) => 720,
-                    _ => 400,
-                };
-                let at = |k: usize| b.jet_to(i as f64 + k as f64 / n as f64, 0).p.arr();
-                out.extend((0..n).map(|k| (at(k), at(k + 1))));
-            }
-        }
-        out
-    }
-
-    fn distance(chords: &[([f64; 2], [f64; 2])], p: [f64; 2]) -> f64 {
-        chords
-            .iter()
-            .map(|(a, b)| curve::distance_to_segment(p, *a, *b))
-            .fold(f64::INFINITY, f64::min)
-    }
-
-    /// Whether `p` is in the region (even-odd over all its boundaries' chords).
-    fn inside(chords: &[([f64; 2], [f64; 2])], p: [f64; 2]) -> bool {
-        chords
-            .iter()
-            .filter(|(a, b)| {
-                (a[1] > p[1]) != (b[1] > p[1])
-                    && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0])
-            })
-            .count()
-            % 2
-            == 1
-    }
+    /// Chords a curve of the oracle's boundary: within 1e-5 of the exact distance on these
+    /// shapes.
+    const PER_CURVE: usize = 720;
 
     /// The box of the chords, grown by a tenth and by `reach` each way.
-    fn grid_box(chords: &[([f64; 2], [f64; 2])], reach: f64) -> ([f64; 2], f64) {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for (a, _) in chords {
-            lo = [lo[0].min(a[0]), lo[1].min(a[1])];
-            hi = [hi[0].max(a[0]), hi[1].max(a[1])];
-        }
+    fn grid_box(chords: &Chords, reach: f64) -> ([f64; 2], f64) {
+        let (lo, hi) = chords.bounds();
         let side = (hi[0] - lo[0]).max(hi[1] - lo[1]) * 1.2 + 2.0 * reach;
         let centre = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
         ([centre[0] - 0.5 * side, centre[1] - 0.5 * side], side)
@@ -384,21 +422,16 @@ mod random_regions {
     /// a planar set and of its complement form a tree joined by the curves. `None` where the
     /// count depends on which of the two sets is taken 8-connected (a part of either a cell
     /// thin, which the grid does not resolve).
-    fn loops_on_grid(
-        chords: &[([f64; 2], [f64; 2])],
-        d: f64,
-        n: usize,
-        outward: bool,
-    ) -> Option<usize> {
+    fn loops_on_grid(chords: &Chords, d: f64, n: usize, outward: bool) -> Option<usize> {
         let (lo, side) = grid_box(chords, d);
         let h = side / (n - 1) as f64;
         let kept: Vec<bool> = (0..n * n)
             .map(|k| {
                 let p = [lo[0] + (k % n) as f64 * h, lo[1] + (k / n) as f64 * h];
                 if outward {
-                    inside(chords, p) || distance(chords, p) <= d
+                    chords.inside(p) || chords.distance(p) <= d
                 } else {
-                    inside(chords, p) && distance(chords, p) >= d
+                    chords.inside(p) && chords.distance(p) >= d
                 }
             })
             .collect();
@@ -491,7 +524,7 @@ mod random_regions {
         outward: bool,
     ) -> Result<(), TestCaseError> {
         check(region, found, point_tol);
-        let chords = chords(region);
+        let chords = Chords::of(region, PER_CURVE);
         for o in &found.offsets {
             let loops: Vec<Vec<[f64; 2]>> = o
                 .loops
@@ -518,10 +551,10 @@ mod random_regions {
             // Nothing missing: where the distance crosses d along a grid line on the offset's
             // side of the boundary, the crossing (by bisection) lies on a loop.
             let (lo, side) = grid_box(&chords, o.distance);
-            let on_side = |p: [f64; 2]| inside(&chords, p) != outward;
+            let on_side = |p: [f64; 2]| chords.inside(p) != outward;
             let n = 48;
             let h = side / (n - 1) as f64;
-            let f = |p: [f64; 2]| distance(&chords, p) - o.distance;
+            let f = |p: [f64; 2]| chords.distance(p) - o.distance;
             for k in 0..n * n {
                 let p = [lo[0] + (k % n) as f64 * h, lo[1] + (k / n) as f64 * h];
                 for q in [[p[0] + h, p[1]], [p[0], p[1] + h]] {
@@ -696,12 +729,8 @@ mod random_regions {
 
     /// The region's size as the offsets take it: the larger side of its outer box.
     fn size_of(region: &Region) -> f64 {
-        let chords = chords(&Region::new(region.outer().clone(), vec![]).unwrap());
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for (a, _) in &chords {
-            lo = [lo[0].min(a[0]), lo[1].min(a[1])];
-            hi = [hi[0].max(a[0]), hi[1].max(a[1])];
-        }
+        let outer = Region::new(region.outer().clone(), vec![]).unwrap();
+        let (lo, hi) = Chords::of(&outer, PER_CURVE).bounds();
         (hi[0] - lo[0]).max(hi[1] - lo[1])
     }
 
@@ -1027,20 +1056,6 @@ fn arms_exactly_twice_the_distance_wide_leave_the_elbow() {
     assert_eq!(elbow.segments.len(), 5, "{elbow:?}");
 }
 
-/// The region moved by `map` (every segment, holes too).
-fn mapped(region: &Region, map: &curve::Affine) -> Region {
-    let profile = |p: &Profile| {
-        let segs = p
-            .segments()
-            .iter()
-            .map(|s| s.transformed(map).unwrap())
-            .collect();
-        Profile::new(segs, Some(p.is_closed())).unwrap()
-    };
-    let holes = region.holes().iter().map(profile).collect();
-    Region::new(profile(region.outer()), holes).unwrap()
-}
-
 /// Metamorphic: the pocket (lines and arcs) and a chain of Béziers moved far from the origin,
 /// scaled by 1e±6 or rotated have, at the moved distances, as many loops, every point at the
 /// distance (within the tolerance scaled), the spline pieces' errors within it; certified
@@ -1069,7 +1084,7 @@ fn offsets_moved_scaled_or_rotated_are_the_moved_offsets() {
         assert!(base.certified, "{:?}", base.reason);
         for map in &maps {
             let scale = map.determinant().abs().sqrt();
-            let moved_region = mapped(&region, map);
+            let moved_region = region.transformed(map).unwrap();
             let moved_distances: Vec<f64> = distances.iter().map(|d| d * scale).collect();
             let axis = medial_axis(&moved_region, &MedialOptions::default()).unwrap();
             // (Far from the origin the axis's digits may run out: uncertified, then said so.)

@@ -127,7 +127,7 @@ impl<'a> Sampled<'a> {
     /// whether its minimum is inside the window (not at its ends).
     fn local_distance(&self, x: [f64; 2], k: usize, window: usize) -> (f64, bool) {
         let n = self.pts.len() as isize;
-        let dist = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
+        let dist = |q: [f64; 2]| ((q[0] - x[0]).powi(2) + (q[1] - x[1]).powi(2)).sqrt();
         let w = window as isize;
         let (mut best, mut at) = (f64::INFINITY, 0);
         for o in -w..=w {

@@ -14,6 +14,9 @@ pub struct Oracle<'a> {
     u: Vec<f64>,
     /// The samples.
     pub pts: Vec<[f64; 2]>,
+    /// For each sample, twice the longer chord to a neighbour: more than the profile runs
+    /// between the two, so a point of it there is no nearer than the sample less this.
+    reach: Vec<f64>,
 }
 
 impl<'a> Oracle<'a> {
@@ -32,45 +35,78 @@ impl<'a> Oracle<'a> {
             })
             .chain([n as f64])
             .collect();
-        let pts = u.iter().map(|&u| p.jet(u).p.arr()).collect();
-        Self { p, u, pts }
+        let pts: Vec<[f64; 2]> = u.iter().map(|&u| p.jet(u).p.arr()).collect();
+        let last = pts.len() - 1;
+        let chord = |a: usize, b: usize| (pts[a][0] - pts[b][0]).hypot(pts[a][1] - pts[b][1]);
+        let reach = (0..=last)
+            .map(|k| {
+                let (before, after) = neighbours(k, last);
+                2.0 * chord(before, k).max(chord(k, after))
+            })
+            .collect();
+        Self { p, u, pts, reach }
     }
 
-    /// The distance from `x` to the profile and the parameter of the nearest point.
+    /// The distance from `x` to the profile and the parameter of the nearest point: the
+    /// least of the local minima of the distance along it (as found by the search of
+    /// `minimum_about`), nearest samples first, skipping those whose samples are too far
+    /// to beat the best found.
     pub fn nearest(&self, x: [f64; 2]) -> (f64, f64) {
-        self.minima(x).into_iter().fold(
-            (f64::INFINITY, 0.0),
-            |best, m| if m.0 < best.0 { m } else { best },
-        )
-    }
-
-    /// The local minima of the distance from `x` along the profile (distance, parameter):
-    /// golden-section search on the stretches to either side of every sampled local minimum
-    /// (not only the least sample: at a point of the medial axis two or three minima are
-    /// equal, and the least sample may lie beside the one that is not). The last sample is
-    /// the first one again: a closed profile's seam has both sides.
-    pub fn minima(&self, x: [f64; 2]) -> Vec<(f64, f64)> {
-        let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
-        let ds: Vec<f64> = self.pts.iter().map(|q| d(*q)).collect();
-        let last = self.u.len() - 1;
-        let f = |u: f64| d(self.p.jet(u).p.arr());
-        let mut out = Vec::new();
-        for k in 0..=last {
-            let before = if k == 0 { last - 1 } else { k - 1 };
-            let after = if k == last { 1 } else { k + 1 };
-            if ds[k] > ds[before] || ds[k] > ds[after] {
+        let squared = self.squared_distances(x);
+        let mut candidates = self.sampled_minima(&squared);
+        candidates.sort_by(|&a, &b| squared[a].total_cmp(&squared[b]));
+        let mut best = (f64::INFINITY, 0.0);
+        for k in candidates {
+            if squared[k].sqrt() - self.reach[k] >= best.0 {
                 continue;
             }
-            let mut best = (ds[k], self.u[k]);
-            for (a, b) in [(before, before + 1), (after - 1, after)] {
-                let u = golden(&f, self.u[a], self.u[b]);
-                if f(u) < best.0 {
-                    best = (f(u), u);
-                }
+            let m = self.minimum_about(x, k, squared[k]);
+            if m.0 < best.0 {
+                best = m;
             }
-            out.push(best);
         }
-        out
+        best
+    }
+
+    /// The squared distance from `x` to every sample (squared: the comparisons are the
+    /// same, without a square root each).
+    fn squared_distances(&self, x: [f64; 2]) -> Vec<f64> {
+        self.pts
+            .iter()
+            .map(|q| (q[0] - x[0]).powi(2) + (q[1] - x[1]).powi(2))
+            .collect()
+    }
+
+    /// The samples at local minima of the distance (the last sample is the first one
+    /// again: a closed profile's seam has both sides).
+    fn sampled_minima(&self, squared: &[f64]) -> Vec<usize> {
+        let last = self.u.len() - 1;
+        (0..=last)
+            .filter(|&k| {
+                let (before, after) = neighbours(k, last);
+                squared[k] <= squared[before] && squared[k] <= squared[after]
+            })
+            .collect()
+    }
+
+    /// The least distance from `x` about the sample `k`, a local minimum of the sampled
+    /// distance (`squared` there): golden-section search on the stretches to either side.
+    fn minimum_about(&self, x: [f64; 2], k: usize, squared: f64) -> (f64, f64) {
+        let last = self.u.len() - 1;
+        let (before, after) = neighbours(k, last);
+        let f = |u: f64| {
+            let q = self.p.jet(u).p.arr();
+            (q[0] - x[0]).powi(2) + (q[1] - x[1]).powi(2)
+        };
+        let mut best = (squared, self.u[k]);
+        for (a, b) in [(before, before + 1), (after - 1, after)] {
+            let u = golden(&f, self.u[a], self.u[b]);
+            let value = f(u);
+            if value < best.0 {
+                best = (value, u);
+            }
+        }
+        (best.0.sqrt(), best.1)
     }
 
     /// Every local minimum of the distance from `x` within `within` of the least sampled
@@ -80,7 +116,7 @@ impl<'a> Oracle<'a> {
     #[allow(dead_code)] // (each test crate uses what it needs)
     pub fn minima_near(&self, x: [f64; 2], within: f64) -> Vec<(f64, f64)> {
         const FINE: usize = 64;
-        let d = |q: [f64; 2]| (q[0] - x[0]).hypot(q[1] - x[1]);
+        let d = |q: [f64; 2]| ((q[0] - x[0]).powi(2) + (q[1] - x[1]).powi(2)).sqrt();
         let f = |u: f64| d(self.p.jet(u).p.arr());
         let ds: Vec<f64> = self.pts.iter().map(|q| d(*q)).collect();
         let least = ds.iter().copied().fold(f64::INFINITY, f64::min);
@@ -103,6 +139,15 @@ impl<'a> Oracle<'a> {
         }
         out
     }
+}
+
+/// The samples before and after sample `k` of `0..=last`, the last sample being the first
+/// one again.
+fn neighbours(k: usize, last: usize) -> (usize, usize) {
+    (
+        if k == 0 { last - 1 } else { k - 1 },
+        if k == last { 1 } else { k + 1 },
+    )
 }
 
 /// The least of `f` on `[a, b]` by golden-section search (where it has one minimum there).
@@ -129,7 +174,9 @@ pub fn off_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     } else {
         0.0
     };
-    (v[0] - s * d[0]).hypot(v[1] - s * d[1])
+    // (A square root, not `hypot`: these coordinates cannot overflow when squared, and the
+    // oracle's searches call this millions of times.)
+    ((v[0] - s * d[0]).powi(2) + (v[1] - s * d[1]).powi(2)).sqrt()
 }
 
 /// The winding number of a closed polygon about `x`.

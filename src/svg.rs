@@ -36,6 +36,21 @@ enum Item {
     },
 }
 
+/// The color at fraction `t` (clamped to `[0, 1]`) of a scale of distances, dark blue through
+/// teal to yellow: an axis's radii, offsets' distances, each figure its own range.
+pub fn scale_color(t: f64) -> String {
+    const STOPS: [[f64; 3]; 3] = [
+        [40.0, 30.0, 140.0],
+        [30.0, 150.0, 140.0],
+        [240.0, 210.0, 20.0],
+    ];
+    let t = t.clamp(0.0, 1.0) * (STOPS.len() - 1) as f64;
+    let i = (t.floor() as usize).min(STOPS.len() - 2);
+    let f = t - i as f64;
+    let c = |k: usize| (STOPS[i][k] + f * (STOPS[i + 1][k] - STOPS[i][k])).round() as u8;
+    format!("#{:02x}{:02x}{:02x}", c(0), c(1), c(2))
+}
+
 /// A figure under construction.
 #[derive(Default)]
 pub struct Figure {

@@ -5,7 +5,7 @@ use super::{print_out, timing, write_file, Common, Failure};
 use curvekit::commands;
 use curvekit::io::{read_region, Curve};
 use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
-use curvekit::svg::Figure;
+use curvekit::svg::{scale_color, Figure};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -94,20 +94,6 @@ pub(super) fn axis_figure(region: &Curve, axis: &MedialAxis) -> String {
 /// Shades of the radius scale: the axis is drawn in runs of one shade.
 const SHADES: usize = 16;
 
-/// The color of a radius at fraction `t` of the largest: dark blue through teal to yellow.
-fn shade(t: f64) -> String {
-    const STOPS: [[f64; 3]; 3] = [
-        [40.0, 30.0, 140.0],
-        [30.0, 150.0, 140.0],
-        [240.0, 210.0, 20.0],
-    ];
-    let t = t.clamp(0.0, 1.0) * (STOPS.len() - 1) as f64;
-    let i = (t.floor() as usize).min(STOPS.len() - 2);
-    let f = t - i as f64;
-    let c = |k: usize| (STOPS[i][k] + f * (STOPS[i + 1][k] - STOPS[i][k])).round() as u8;
-    format!("#{:02x}{:02x}{:02x}", c(0), c(1), c(2))
-}
-
 /// The largest radius on the axis.
 fn widest_radius(axis: &MedialAxis) -> f64 {
     axis.edges
@@ -137,7 +123,7 @@ fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
                 if let Some(prev) = current {
                     fig.colored(
                         std::mem::take(&mut run),
-                        shade((prev as f64 + 0.5) / SHADES as f64),
+                        scale_color((prev as f64 + 0.5) / SHADES as f64),
                     );
                 }
                 run.push(w[0]);
@@ -146,7 +132,7 @@ fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
             run.push(w[1]);
         }
         if let Some(prev) = current {
-            fig.colored(run, shade((prev as f64 + 0.5) / SHADES as f64));
+            fig.colored(run, scale_color((prev as f64 + 0.5) / SHADES as f64));
         }
     }
     let mut widest: Vec<_> = axis.nodes.iter().collect();

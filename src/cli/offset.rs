@@ -7,7 +7,7 @@ use curvekit::commands::{self, Distances};
 use curvekit::io::{read_region, Curve};
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
-use curvekit::svg::Figure;
+use curvekit::svg::{scale_color, Figure};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -44,17 +44,50 @@ pub(super) fn run(
     })
 }
 
-/// The figure of a region's offsets: the region and each offset loop.
+/// The figure of a region's offsets: the region, and each offset's loops coloured by its
+/// distance (the scale of the medial axis's figure, from 0 to the largest distance); the
+/// title gives the distances and whether the offsets are certified.
 pub(super) fn figure(region: &Curve, found: &Offsets) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, region);
+    let largest = found.offsets.iter().map(|o| o.distance).fold(0.0, f64::max);
     for o in &found.offsets {
+        let color = scale_color(if largest > 0.0 {
+            o.distance / largest
+        } else {
+            0.0
+        });
         for l in &o.loops {
-            fig.thin(l.polyline(ARC_POINTS), "#c0392b");
+            fig.colored(l.polyline(ARC_POINTS), color.clone());
         }
     }
-    fig.title(format!("{}: {} offsets", region.file, found.offsets.len()));
+    let least = found
+        .offsets
+        .iter()
+        .map(|o| o.distance)
+        .fold(f64::INFINITY, f64::min);
+    let range = match found.offsets.len() {
+        0 => String::new(),
+        1 => format!(" at {}", short(least)),
+        _ => format!(" at {} to {}", short(least), short(largest)),
+    };
+    let loops: usize = found.offsets.iter().map(|o| o.loops.len()).sum();
+    let trust = if found.certified {
+        "certified"
+    } else {
+        "not certified"
+    };
+    fig.title(format!(
+        "{}: {} offsets{range}, {loops} loops, {trust}",
+        region.file,
+        found.offsets.len()
+    ));
     fig.render()
+}
+
+/// A distance for a title: to four significant digits, in the shortest form.
+fn short(d: f64) -> String {
+    format!("{}", format!("{d:.3e}").parse::<f64>().unwrap_or(d))
 }
 
 /// The readable report: per distance, its loops and their pieces.

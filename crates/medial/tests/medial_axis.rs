@@ -14,12 +14,15 @@
 mod bench_shapes;
 #[path = "../../zeroset/tests/common/boundary_oracle.rs"]
 mod boundary_oracle;
+#[path = "../../bspline/tests/common/cases.rs"]
+mod cases;
 #[path = "../../antipodal/tests/common/profiles.rs"]
 mod profiles;
 #[path = "common/sampled_voronoi.rs"]
 mod sampled_voronoi;
 
 use boundary_oracle::{off_segment, winding, Oracle};
+use cases::cases;
 use curve::{ParamCurve, Profile, Region, Segment};
 use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use profiles::{assemble, bezier_chain, filleted_polygon};
@@ -682,14 +685,6 @@ fn with_holes(outer: Profile, holes: &[([f64; 2], f64)]) -> Option<Region> {
         }
     }
     Region::new(outer, kept).ok()
-}
-
-fn cases(n: u32) -> u32 {
-    let scale: f64 = std::env::var("CURVEKIT_CASES_SCALE")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1.0);
-    ((n as f64 * scale).round() as u32).max(1)
 }
 
 fn wobble() -> impl Strategy<Value = f64> {

@@ -26,6 +26,7 @@
 //! ```
 
 mod cusps;
+mod joints;
 mod loops;
 mod necks;
 mod pieces;
@@ -356,6 +357,7 @@ fn offsets_on(
                         pieces::pieces(walk, stretch, d, tolerance, &mut segments, &mut error);
                     }
                     cusps::blunt(&mut segments, cusps::HORN_CUT * size);
+                    joints::close(&mut segments);
                     OffsetLoop { segments }
                 })
                 .collect();

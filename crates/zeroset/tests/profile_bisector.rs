@@ -15,10 +15,13 @@
 
 #[path = "common/boundary_oracle.rs"]
 mod boundary_oracle;
+#[path = "../../bspline/tests/common/cases.rs"]
+mod cases;
 #[path = "../../antipodal/tests/common/profiles.rs"]
 mod profiles;
 
 use boundary_oracle::{off_segment, winding, Oracle};
+use cases::cases;
 use curve::{ParamCurve, Profile};
 use profiles::{assemble, bezier_chain, filleted_polygon};
 use proptest::prelude::*;
@@ -266,14 +269,6 @@ fn moved(p: &Profile, by: [f64; 2]) -> Profile {
 
 fn wobble() -> impl Strategy<Value = f64> {
     prop_oneof![-0.4f64..-0.05, 0.05f64..0.4]
-}
-
-fn cases(n: u32) -> u32 {
-    let scale: f64 = std::env::var("CURVEKIT_CASES_SCALE")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1.0);
-    ((n as f64 * scale).round() as u32).max(1)
 }
 
 proptest! {

@@ -2,19 +2,14 @@
 //! changes, then Newton. Deliberately shares no code with the crate's algorithms.
 #![allow(dead_code, unreachable_pub, missing_docs)]
 
+#[path = "../../../bspline/tests/common/cases.rs"]
+mod cases;
 pub mod profiles;
 
-use antipodal::{Jet, PlaneCurve, V2};
+#[allow(unused_imports)] // (each test crate uses what it needs)
+pub use cases::cases;
 
-/// Proptest cases: `n`, scaled by the environment variable `CURVEKIT_CASES_SCALE` (a longer
-/// run before a release: `CURVEKIT_CASES_SCALE=10`).
-pub fn cases(n: u32) -> u32 {
-    let scale: f64 = std::env::var("CURVEKIT_CASES_SCALE")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1.0);
-    ((n as f64 * scale).round() as u32).max(1)
-}
+use antipodal::{Jet, PlaneCurve, V2};
 
 pub fn jets(c: &dyn PlaneCurve, n: usize) -> (Vec<f64>, Vec<Jet>) {
     let (a, b) = c.domain();

@@ -2,18 +2,11 @@
 #![allow(dead_code, unreachable_pub)]
 #![allow(clippy::unwrap_used)]
 
+mod cases;
 pub mod exact;
 
-/// Proptest cases: `n`, scaled by the environment variable `CURVEKIT_CASES_SCALE` (a number,
-/// default 1): CI runs the default, stress runs (as behind the figures of a closing note) many
-/// times more.
-pub fn cases(n: u32) -> u32 {
-    let scale: f64 = std::env::var("CURVEKIT_CASES_SCALE")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(1.0);
-    ((n as f64 * scale).round() as u32).max(1)
-}
+#[allow(unused_imports)] // (each test crate uses what it needs)
+pub use cases::cases;
 
 use bspline::BSpline;
 use proptest::prelude::*;

@@ -337,7 +337,8 @@ fn offsets_on(
             continue;
         };
         all_closed &= seams.iter().all(|s| s.refined);
-        necks_resolved &= !necks::may_dip_between(axis, &walks, d, size);
+        let neck_here = necks::may_dip_between(axis, &walks, d, size);
+        necks_resolved &= !neck_here;
         let kept_whole: Vec<bool> = widest
             .iter()
             .map(|&w| w > d + seams::TOUCHING * size)
@@ -371,8 +372,9 @@ fn offsets_on(
         let (mut loops, mut error) = build(chord);
         let mut verdict = read_back(&loops);
         let mut tolerance = chord;
+        // (Not where a neck may pinch the loops: they cross there however fine the fit.)
         for _ in 0..REFITS {
-            if verdict != ReadBack::Crossing {
+            if verdict != ReadBack::Crossing || neck_here {
                 break;
             }
             tolerance *= 0.25;
@@ -404,15 +406,16 @@ fn offsets_on(
         ))
     } else if let Some(bad) = not_a_profile {
         Some(format!("a loop is not a simple closed profile: {bad}"))
-    } else if !loops_apart {
-        Some(
-            "two loops' fitted pieces cross across a passage narrower than they follow".to_string(),
-        )
     } else if !necks_resolved {
+        // (Before the loops' crossings: across an unresolved neck they cross in truth.)
         Some(
             "the axis's radius may dip to a distance between two of its vertices (a neck they \
              do not resolve)"
                 .to_string(),
+        )
+    } else if !loops_apart {
+        Some(
+            "two loops' fitted pieces cross across a passage narrower than they follow".to_string(),
         )
     } else {
         None

@@ -29,54 +29,76 @@ const JOINT: f64 = 1e-12;
 /// 1-Lipschitz along the axis, is bounded between them by its values at both ends.
 const ARC_OVER_CHORD: f64 = 1.001;
 
-/// Whether the radius may fall to `d` between two vertices both above it, on any edge.
+/// What the radius does between two vertices of an edge, both above the distance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Between {
+    /// It stays above.
+    Above,
+    /// It falls below at this share of the step (a point of the axis moved across it): the
+    /// offset pinches off there, at two seams either side.
+    Dips(f64),
+    /// Neither is shown with [`MOST_SAMPLES`] points.
+    Unknown,
+}
+
+/// Whether the radius may fall to `d` between two vertices both above it, on some step of
+/// an edge where neither a dip (whose seams are then found) nor the radius staying above is
+/// shown.
 pub(crate) fn may_dip_between(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> bool {
-    let floor = d + TOUCHING * size;
     axis.edges.iter().any(|edge| {
-        (1..edge.xy.len()).any(|k| {
-            let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
-            if !(r0 > floor && r1 > floor) {
-                return false;
-            }
-            let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
-            // (1-Lipschitz along the chord: no point of it is nearer the boundary.)
-            let step = x1 - x0;
-            if (r0 + r1 - step.norm()) * 0.5 > floor {
-                return false;
-            }
-            // A neck falls at one end of the step and rises at the other: the radius's slope
-            // along the step at each end is the step's direction on the way from the foot.
-            let slope = |j: usize, x: V2| {
-                let b = edge.boundary[j][0];
-                walks
-                    .get(b)
-                    .map_or(0.0, |w| step.dot(x - w.point(edge.feet[j][0])))
-            };
-            if slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0 {
-                return false;
-            }
-            !stays_above(edge, k, walks, floor, size)
-        })
+        (1..edge.xy.len()).any(|k| between(edge, k, walks, d, size) == Between::Unknown)
     })
 }
 
-/// Whether the radius stays above `floor` on the axis between vertices `k − 1` and `k` of
-/// `edge`: at points along the step, each moved onto the axis (where the distances to the
-/// two sides, from Newton's method on each side's foot, agree), the radius bounded between
-/// neighbours by its values there (it is 1-Lipschitz), with points added until the bound
-/// holds or [`MOST_SAMPLES`] do not show it.
-fn stays_above(edge: &Edge, k: usize, walks: &[Walk<'_>], floor: f64, size: f64) -> bool {
-    let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
-    let step = x1 - x0;
-    let (Some(before), Some(after)) = (
-        sided_feet(edge, k - 1, step, walks),
-        sided_feet(edge, k, step, walks),
-    ) else {
-        return false;
-    };
-    if before[0].0 != after[0].0 || before[1].0 != after[1].0 {
-        return false;
+/// What the radius does between vertices `k − 1` and `k` of `edge` (both above `d`, else
+/// [`Between::Above`]: a crossing there is a seam of its own).
+pub(crate) fn between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) -> Between {
+    let floor = d + TOUCHING * size;
+    let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
+    if !(r0 > floor && r1 > floor) {
+        return Between::Above;
     }
+    let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
+    // (1-Lipschitz along the chord: no point of it is nearer the boundary.)
+    let step = x1 - x0;
+    if (r0 + r1 - step.norm()) * 0.5 > floor {
+        return Between::Above;
+    }
+    // A neck falls at one end of the step and rises at the other: the radius's slope along
+    // the step at each end is the step's direction on the way from the foot.
+    let slope = |j: usize, x: V2| {
+        let b = edge.boundary[j][0];
+        walks
+            .get(b)
+            .map_or(0.0, |w| step.dot(x - w.point(edge.feet[j][0])))
+    };
+    if slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0 {
+        return Between::Above;
+    }
+    sampled(edge, k, walks, floor, size)
+}
+
+/// The feet of a step's ends on each side (left first), on one boundary per side; `None`
+/// where a side's feet are on two boundaries.
+pub(crate) fn step_feet(edge: &Edge, k: usize, walks: &[Walk<'_>]) -> Option<StepFeet> {
+    let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
+    let before = sided_feet(edge, k - 1, step, walks)?;
+    let after = sided_feet(edge, k, step, walks)?;
+    (before[0].0 == after[0].0 && before[1].0 == after[1].0).then_some([before, after])
+}
+
+/// Per end of a step, per side: the boundary and the foot's parameter.
+pub(crate) type StepFeet = [[(usize, f64); 2]; 2];
+
+/// Points along the step moved onto the axis (where the distances to the two sides, from
+/// Newton's method on each side's foot, agree): a point below `floor` shows a dip; the
+/// radius bounded between neighbours by its values there (it is 1-Lipschitz) shows it stays
+/// above; points are added until one of them is shown or [`MOST_SAMPLES`] show neither.
+fn sampled(edge: &Edge, k: usize, walks: &[Walk<'_>], floor: f64, size: f64) -> Between {
+    let Some(feet) = step_feet(edge, k, walks) else {
+        return Between::Unknown;
+    };
+    let x0 = V2::from_arr(edge.xy[k - 1]);
     let mut samples = 4;
     while samples <= MOST_SAMPLES {
         let mut last = (x0, edge.radius[k - 1]);
@@ -84,40 +106,51 @@ fn stays_above(edge: &Edge, k: usize, walks: &[Walk<'_>], floor: f64, size: f64)
         for i in 1..=samples {
             let t = i as f64 / samples as f64;
             let here = if i == samples {
-                Some((x1, edge.radius[k]))
+                Some((V2::from_arr(edge.xy[k]), edge.radius[k]))
             } else {
-                onto_axis(walks, before, after, x0 + step * t, step, t, size)
+                onto_axis(edge, k, walks, &feet, t, size).map(|p| (p.x, p.radius))
             };
             let Some(here) = here else {
-                return false;
+                return Between::Unknown;
             };
-            let apart = (here.0 - last.0).norm() * ARC_OVER_CHORD;
-            if (last.1 + here.1 - apart) * 0.5 <= floor {
-                holds = false;
-                break;
+            if here.1 < floor {
+                return Between::Dips(t);
             }
+            // (The whole pass is taken: a point further on may show the dip.)
+            let apart = (here.0 - last.0).norm() * ARC_OVER_CHORD;
+            holds &= (last.1 + here.1 - apart) * 0.5 > floor;
             last = here;
         }
         if holds {
-            return true;
+            return Between::Above;
         }
         samples *= 2;
     }
-    false
+    Between::Unknown
 }
 
-/// The point of the axis near `x` (a point of the step, `t` of the way), moved across the
-/// step until the distances to both sides agree, and its radius; `None` where Newton's
-/// method does not get there.
-fn onto_axis(
+/// A point of the axis: where, its radius, and its feet's parameters per side.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct AxisPoint {
+    pub(crate) x: V2,
+    pub(crate) radius: f64,
+    pub(crate) feet: [f64; 2],
+}
+
+/// The point of the axis near the point `t` of the way along step `k` of `edge`, moved
+/// across the step until the distances to both sides agree; `None` where Newton's method
+/// does not get there.
+pub(crate) fn onto_axis(
+    edge: &Edge,
+    k: usize,
     walks: &[Walk<'_>],
-    before: [(usize, f64); 2],
-    after: [(usize, f64); 2],
-    mut x: V2,
-    step: V2,
+    [before, after]: &StepFeet,
     t: f64,
     size: f64,
-) -> Option<(V2, f64)> {
+) -> Option<AxisPoint> {
+    let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
+    let step = x1 - x0;
+    let mut x = x0 + step * t;
     let across = V2::new(-step.y, step.x).unit();
     let mut feet = [0, 1].map(|side| {
         let walk = &walks[before[side].0];
@@ -131,7 +164,11 @@ fn onto_axis(
         feet = [near[0].u, near[1].u];
         let gap = near[0].distance - near[1].distance;
         if gap.abs() <= ON_AXIS * size {
-            return Some((x, near[0].distance.min(near[1].distance)));
+            return Some(AxisPoint {
+                x,
+                radius: near[0].distance.min(near[1].distance),
+                feet,
+            });
         }
         // The gradient of each distance is the unit vector from its foot.
         let from_foot = |side: usize| {

@@ -97,6 +97,10 @@ pub(crate) fn pieces(
     }
 }
 
+/// Steps over which an arc piece's turn is summed: each turns by less than half a turn (an
+/// arc segment turns by at most a whole one).
+const SWEEP_STEPS: usize = 8;
+
 /// A foot's profile parameter.
 fn param(foot: Foot) -> f64 {
     match foot {
@@ -179,29 +183,24 @@ fn segment_piece(
         (SegmentKind::Arc, Some((center, _))) => {
             let c = V2::from_arr(center);
             let (p, q) = (point(from) - c, point(to) - c);
-            let radius = p.norm();
-            // (Counterclockwise when the walk goes round the centre that way.)
-            let tangent = walk.profile.jet_on(segment, from, 1).d1 * walk.side;
-            let counterclockwise =
-                (walk.profile.jet_on(segment, from, 0).p - c).cross(tangent) > 0.0;
-            let (a, b) = (p.angle(), q.angle());
-            let mut sweep = if counterclockwise {
-                (b - a).rem_euclid(TAU)
-            } else {
-                (a - b).rem_euclid(TAU)
-            };
-            if sweep < 1e-12 && (to - from).abs() > 0.5 {
-                sweep = TAU;
+            // The sweep: the angle between the ends, the turn nearest the one summed over
+            // steps of the piece (a whole circle's ends are one point, a nearly whole one's
+            // ends a rounding apart: the steps tell a turn from nothing).
+            let angle_at = |u: f64| (point(u) - c).angle();
+            let mut turned = 0.0;
+            for k in 0..SWEEP_STEPS {
+                let at = |j: usize| from + (to - from) * j as f64 / SWEEP_STEPS as f64;
+                let (u0, u1) = (at(k), at(k + 1));
+                turned += curve::wrap_pi(angle_at(u1) - angle_at(u0));
             }
+            let (a, b) = (p.angle(), q.angle());
+            let between = curve::wrap_pi(b - a);
+            let turns = ((turned - between) / TAU).round();
             out.push(OffsetSegment::Arc {
                 center,
-                r: radius,
+                r: p.norm(),
                 start: a,
-                end: if counterclockwise {
-                    a + sweep
-                } else {
-                    a - sweep
-                },
+                end: a + between + turns * TAU,
             });
         }
         _ => {

@@ -3,6 +3,7 @@
 //! begins or ends.
 
 use crate::loops::{incoming_segment, outgoing_segment};
+use crate::necks::{self, Between};
 use crate::walk::{Foot, Walk};
 use curve::V2;
 use medial::{Edge, MedialAxis};
@@ -15,6 +16,14 @@ const NEWTON_STEPS: usize = 30;
 /// A seam's two offset points agree to this, relative to the region's size: a few roundings
 /// of the coordinates.
 const SEAM_CLOSURE: f64 = 1e-13;
+
+/// The shares of a step between two vertices from which Newton's method starts again when it
+/// left the step from the radius's linear share.
+const RESTARTS: [f64; 6] = [0.5, 0.25, 0.75, 0.1, 0.9, 0.02];
+
+/// A foot's parameter within its vertices' feet beyond the span between them, relative to
+/// the boundary's period: rounding.
+const BRACKET_ROUNDING: f64 = 1e-9;
 
 /// An axis point keeps its boundary points at the distance only when its radius exceeds the
 /// distance by this much, relative to the region's size: where they are within it, the region
@@ -35,8 +44,9 @@ pub(crate) struct Seam {
 }
 
 /// The seams of the offset at distance `d`: where an edge's radius crosses `d` between two
-/// vertices (a vertex within [`TOUCHING`] of `d` counts as below it); `None` where a crossing
-/// gave no seam (its feet on two boundaries, or on none), so the loops cannot be trusted.
+/// vertices (a vertex within [`TOUCHING`] of `d` counts as below it), and either side of a
+/// dip below `d` between two vertices above it (a neck); `None` where a crossing gave no
+/// seam (its feet on two boundaries, or on none), so the loops cannot be trusted.
 pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> Option<Vec<Seam>> {
     let above = |r: f64| r > d + TOUCHING * size;
     let mut found = Vec::new();
@@ -45,6 +55,8 @@ pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) ->
             let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
             if above(r0) != above(r1) {
                 found.push(seam_between(edge, k, walks, d, size)?);
+            } else if let Between::Dips(t) = necks::between(edge, k, walks, d, size) {
+                found.extend(dip_seams(edge, k, walks, d, size, t)?);
             }
         }
     }
@@ -56,39 +68,142 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
     let share = ((d - r0) / (r1 - r0)).clamp(0.0, 1.0);
     let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
-    let guess = x0 + (x1 - x0) * share;
     let toward_wider = if r1 > r0 { x1 - x0 } else { x0 - x1 };
     let step = x1 - x0;
     let [before, after] = [k - 1, k].map(|j| sided_feet(edge, j, step, walks));
     let (before, after) = (before?, after?);
-    let foot_on = |side: usize| -> Option<(usize, Foot)> {
-        let (b, u0) = before[side];
-        let (b1, u1) = after[side];
-        if b != b1 {
-            return None;
-        }
-        Some((b, foot_between(walks.get(b)?, u0, u1, share, guess)))
+    let boundary_of = |side: usize| (before[side].0 == after[side].0).then_some(before[side].0);
+    let boundaries = [boundary_of(0)?, boundary_of(1)?];
+    let feet_at = |share: f64| -> Option<[(usize, Foot); 2]> {
+        let guess = x0 + (x1 - x0) * share;
+        let foot = |side: usize| -> Option<(usize, Foot)> {
+            let b = boundaries[side];
+            let walk = walks.get(b)?;
+            Some((
+                b,
+                foot_between(walk, before[side].1, after[side].1, share, guess),
+            ))
+        };
+        Some([foot(0)?, foot(1)?])
     };
-    let feet = [foot_on(0)?, foot_on(1)?];
-    let (refined_feet, mut refined) = refine(walks, feet, d, size);
+    // Newton's method from the radius's linear share of the step; near a dip of the radius
+    // the two offsets run nearly parallel, the equations are nearly singular, and a first
+    // step may leap to the seam on the dip's far side: a solution with a foot outside its
+    // vertices' feet is that one, and Newton's method starts again from other shares.
+    let bracketed = |found: &[(usize, Foot); 2]| {
+        (0..2).all(|side| {
+            within(
+                &walks[boundaries[side]],
+                before[side].1,
+                after[side].1,
+                param(found[side].1),
+            )
+        })
+    };
+    let interpolated = feet_at(share)?;
+    let mut solved = None;
+    for start in std::iter::once(share).chain(RESTARTS) {
+        let (found, closed) = refine(walks, feet_at(start)?, d, size);
+        if closed && bracketed(&found) {
+            solved = Some(found);
+            break;
+        }
+    }
+    let (refined_feet, refined) = match solved {
+        Some(found) => (found, true),
+        None => (interpolated, false),
+    };
+    Some(seam_of(walks, refined_feet, refined, toward_wider, d, size))
+}
+
+/// The two seams either side of a dip of the radius below `d` at share `t` of step `k` of
+/// `edge`, both of whose vertices are above it: where the radius of points moved onto the
+/// axis crosses `d`, by bisection on the share, each closed by Newton's method within its
+/// part of the step.
+fn dip_seams(
+    edge: &Edge,
+    k: usize,
+    walks: &[Walk<'_>],
+    d: f64,
+    size: f64,
+    t: f64,
+) -> Option<[Seam; 2]> {
+    let feet = necks::step_feet(edge, k, walks)?;
+    let floor = d + TOUCHING * size;
+    let at = |share: f64| necks::onto_axis(edge, k, walks, &feet, share, size);
+    let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
+    // (From each vertex, above, to the dip, below.)
+    let seam = |wide_share: f64, toward_wider: V2| -> Option<Seam> {
+        let (mut wide, mut narrow) = (wide_share, t);
+        for _ in 0..DIP_HALVINGS {
+            let middle = 0.5 * (wide + narrow);
+            if at(middle)?.radius > floor {
+                wide = middle;
+            } else {
+                narrow = middle;
+            }
+        }
+        let point = at(narrow)?;
+        let [before, after] = feet;
+        let start = [0, 1].map(|side| {
+            let b = before[side].0;
+            let u = point.feet[side];
+            (b, foot_between(&walks[b], u, u, 0.0, point.x))
+        });
+        let (found, closed) = refine(walks, start, d, size);
+        let inside = (0..2).all(|side| {
+            within(
+                &walks[before[side].0],
+                before[side].1,
+                after[side].1,
+                param(found[side].1),
+            )
+        });
+        let refined = closed && inside;
+        Some(seam_of(
+            walks,
+            if refined { found } else { start },
+            refined,
+            toward_wider,
+            d,
+            size,
+        ))
+    };
+    Some([seam(0.0, step * -1.0)?, seam(1.0, step)?])
+}
+
+/// Bisections of the share of a step that find where the radius crosses the distance
+/// either side of a dip: to 2^-40 of the step, within Newton's reach of the seam.
+const DIP_HALVINGS: usize = 40;
+
+/// The seam with these feet (`refined`: closed by Newton's method), the kept stretch on each
+/// side beginning or ending there as the radius widens `toward_wider` along the axis.
+fn seam_of(
+    walks: &[Walk<'_>],
+    feet: [(usize, Foot); 2],
+    mut refined: bool,
+    toward_wider: V2,
+    d: f64,
+    size: f64,
+) -> Seam {
     // (Both feet at one point of one boundary solve the equations trivially: no seam.)
-    if refined_feet[0].0 == refined_feet[1].0 {
-        let walk = &walks[refined_feet[0].0];
-        let gap = foot_point(walk, refined_feet[0].1) - foot_point(walk, refined_feet[1].1);
+    if feet[0].0 == feet[1].0 {
+        let walk = &walks[feet[0].0];
+        let gap = foot_point(walk, feet[0].1) - foot_point(walk, feet[1].1);
         refined &= gap.norm() > SEAM_CLOSURE * size;
     }
-    let point = walks[refined_feet[0].0].offset(refined_feet[0].1, d).0;
-    let begins = refined_feet.map(|(b, foot)| {
+    let point = walks[feet[0].0].offset(feet[0].1, d).0;
+    let begins = feet.map(|(b, foot)| {
         let normal = (point - foot_point(&walks[b], foot)).unit();
         // (The walk's tangent has the region, and so the normal, on its left.)
         let tangent = V2::new(normal.y, -normal.x);
         toward_wider.dot(tangent) > 0.0
     });
-    Some(Seam {
-        feet: refined_feet,
+    Seam {
+        feet,
         begins,
         refined,
-    })
+    }
 }
 
 /// The feet of vertex `j` of `edge` paired by the side of `step` (along the edge) they lie
@@ -131,6 +246,23 @@ fn foot_between(walk: &Walk<'_>, u0: f64, u1: f64, share: f64, guess: V2) -> Foo
     Foot::OnSegment {
         segment,
         u: u.clamp(segment as f64, segment as f64 + 1.0),
+    }
+}
+
+/// Whether the boundary parameter `u` lies between `u0` and `u1`, the short way round the
+/// boundary (within rounding).
+fn within(walk: &Walk<'_>, u0: f64, u1: f64, u: f64) -> bool {
+    let period = walk.period;
+    let short = |v: f64| (v - u0 + 0.5 * period).rem_euclid(period) - 0.5 * period;
+    let (span, at) = (short(u1), short(u));
+    let margin = BRACKET_ROUNDING * period;
+    at >= span.min(0.0) - margin && at <= span.max(0.0) + margin
+}
+
+/// A foot's boundary parameter (a corner's, for a fan).
+fn param(foot: Foot) -> f64 {
+    match foot {
+        Foot::OnSegment { u, .. } | Foot::Fan { u, .. } => u,
     }
 }
 

@@ -17,6 +17,9 @@ use bspline::Rational;
 pub(crate) fn line_bisector(c1: &Rational, c2: &Rational, reach: &Reach) -> Option<Bisector> {
     let l1 = Straight::of(c1)?;
     let l2 = Straight::of(c2)?;
+    let corner = common_end(&l1, &l2);
+    // (Within rounding of the domain: the window's ends are solved for.)
+    let near = |v: f64, end: f64, l: &Straight| (v - end).abs() <= END_ROUNDING * (l.hi - l.lo);
     let mut branches = Vec::new();
     for sign in [1.0, -1.0] {
         // The matrix [ε n2 − n1 | L2′] and its determinant (zero only when ε n2 = n1).
@@ -64,7 +67,17 @@ pub(crate) fn line_bisector(c1: &Rational, c2: &Rational, reach: &Reach) -> Opti
                     from + (to - from) * k as f64 / steps as f64
                 };
                 let (x, r) = point(t);
-                ([t, r.clamp(l2.lo, l2.hi)], x)
+                let r = r.clamp(l2.lo, l2.hi);
+                // (An end at the lines' common end is that point: near a nearly flat corner
+                // the solve amplifies the feet's rounding by the inverse of the turn.)
+                match corner {
+                    Some((tc, rc, c))
+                        if (k == 0 || k == steps) && near(t, tc, &l1) && near(r, rc, &l2) =>
+                    {
+                        ([tc, rc], c)
+                    }
+                    _ => ([t, r], x),
+                }
             })
             .unzip();
         branches.push(Branch { tr, xy });
@@ -74,6 +87,21 @@ pub(crate) fn line_bisector(c1: &Rational, c2: &Rational, reach: &Reach) -> Opti
         singular: Vec::new(),
         isolated: Vec::new(),
         complete: true,
+    })
+}
+
+/// A window's end within this share of a line's domain of the line's end is at it.
+const END_ROUNDING: f64 = 1e-9;
+
+/// The end the two lines share, if they do (a corner of a profile): each line's parameter
+/// there, and the point.
+fn common_end(l1: &Straight, l2: &Straight) -> Option<(f64, f64, [f64; 2])> {
+    let ends = |l: &Straight| [(l.lo, l.start), (l.hi, l.end)];
+    ends(l1).into_iter().find_map(|(t, p)| {
+        ends(l2)
+            .into_iter()
+            .find(|(_, q)| p == *q)
+            .map(|(r, _)| (t, r, p))
     })
 }
 
@@ -113,6 +141,8 @@ struct Straight {
     lo: f64,
     hi: f64,
     start: [f64; 2],
+    /// The end point as given (`start + (hi − lo) velocity` only to rounding).
+    end: [f64; 2],
     velocity: [f64; 2],
     normal: [f64; 2],
 }
@@ -134,6 +164,7 @@ impl Straight {
             lo,
             hi,
             start: a,
+            end: b,
             velocity: [d[0] / (hi - lo), d[1] / (hi - lo)],
             normal: [-d[1] / len, d[0] / len],
         })

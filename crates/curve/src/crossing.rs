@@ -91,13 +91,15 @@ pub(crate) fn first_crossing_among(chains: &[Chain<'_>], apart: bool) -> Option<
         e.chain == f.chain && (d <= 1 || (closed && d == n - 1))
     };
     // Sweep along x over the edges' boxes.
-    let mut order: Vec<usize> = (0..edges.len()).collect();
     let lo_x = |e: &Edge| e.a.x.min(e.b.x);
     let hi_x = |e: &Edge| e.a.x.max(e.b.x);
-    order.sort_by(|&i, &j| lo_x(&edges[i]).total_cmp(&lo_x(&edges[j])));
+    // (Keys beside the indices: the sort reads no edge. Any order of equal keys finds the
+    // same first crossing.)
+    let mut order: Vec<(f64, usize)> = edges.iter().map(lo_x).zip(0..).collect();
+    order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
     let mut active: Vec<usize> = Vec::new();
     let mut found: Option<Crossing> = None;
-    for &i in &order {
+    for &(_, i) in &order {
         let e = edges[i];
         active.retain(|&j| hi_x(&edges[j]) >= lo_x(&e));
         for &j in &active {

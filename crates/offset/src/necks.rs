@@ -64,13 +64,25 @@ pub(crate) fn between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f
     if (r0 + r1 - step.norm()) * 0.5 > floor {
         return Between::Above;
     }
-    // A neck falls at one end of the step and rises at the other: the radius's slope along
-    // the step at each end is the step's direction on the way from the foot.
+    // A neck falls at one end of the step and rises at the other. The radius's slope along
+    // the axis at a vertex is the axis's direction (across the chord between the two feet,
+    // the way the step goes) on the way from either foot; along the chord of a curved axis
+    // it would differ from one foot to the other.
     let slope = |j: usize, x: V2| {
-        let b = edge.boundary[j][0];
-        walks
-            .get(b)
-            .map_or(0.0, |w| step.dot(x - w.point(edge.feet[j][0])))
+        let foot = |side: usize| {
+            walks
+                .get(edge.boundary[j][side])
+                .map(|w| w.point(edge.feet[j][side]))
+        };
+        let (Some(f0), Some(f1)) = (foot(0), foot(1)) else {
+            return 0.0;
+        };
+        let between_feet = f1 - f0;
+        let mut along = V2::new(-between_feet.y, between_feet.x);
+        if along.dot(step) < 0.0 {
+            along = along * -1.0;
+        }
+        along.dot(x - f0)
     };
     if slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0 {
         return Between::Above;

@@ -83,11 +83,13 @@ impl Region {
         let closed: Vec<Profile> = profiles.into_iter().filter(|p| p.is_closed()).collect();
         let polygons: Vec<Vec<V2>> = closed.iter().map(|p| polygon(p.polylines())).collect();
         let n = closed.len();
-        let inside = |i: usize, j: usize| i != j && winding(&polygons[j], closed[i].start()) != 0;
+        let starts: Vec<V2> = closed.iter().map(|p| p.start()).collect();
+        let inside = |i: usize, j: usize| i != j && winding(&polygons[j], starts[i]) != 0;
         let depth: Vec<usize> = (0..n)
             .map(|i| (0..n).filter(|&j| inside(i, j)).count())
             .collect();
-        let mut slots: Vec<Option<Profile>> = closed.iter().cloned().map(Some).collect();
+        // (Moved, not copied: a profile carries its polylines.)
+        let mut slots: Vec<Option<Profile>> = closed.into_iter().map(Some).collect();
         let mut out = Vec::new();
         for o in (0..n).filter(|&o| depth[o] % 2 == 0) {
             let holes: Vec<Profile> = (0..n)

@@ -327,7 +327,7 @@ fn offsets_on(
     let mut consistent = true;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
-        let Some(seams) = seams::seams(axis, &walks, d, size) else {
+        let Some((seams, neck_resolved)) = seams::seams(axis, &walks, d, size) else {
             consistent = false;
             found.push(Offset {
                 distance: d,
@@ -337,8 +337,8 @@ fn offsets_on(
             continue;
         };
         all_closed &= seams.iter().all(|s| s.refined);
-        let neck_here = necks::may_dip_between(axis, &walks, d, size);
-        necks_resolved &= !neck_here;
+        let neck_here = !neck_resolved;
+        necks_resolved &= neck_resolved;
         let kept_whole: Vec<bool> = widest
             .iter()
             .map(|&w| w > d + seams::TOUCHING * size)

@@ -8,7 +8,7 @@
 use crate::seams::{sided_feet, TOUCHING};
 use crate::walk::Walk;
 use curve::V2;
-use medial::{Edge, MedialAxis};
+use medial::Edge;
 
 /// Most points taken across a step to show its radius stays above the distance; a neck
 /// nearer the distance than that resolves is taken as possible (the result not certified).
@@ -39,15 +39,6 @@ pub(crate) enum Between {
     Dips(f64),
     /// Neither is shown with [`MOST_SAMPLES`] points.
     Unknown,
-}
-
-/// Whether the radius may fall to `d` between two vertices both above it, on some step of
-/// an edge where neither a dip (whose seams are then found) nor the radius staying above is
-/// shown.
-pub(crate) fn may_dip_between(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> bool {
-    axis.edges.iter().any(|edge| {
-        (1..edge.xy.len()).any(|k| between(edge, k, walks, d, size) == Between::Unknown)
-    })
 }
 
 /// What the radius does between vertices `k − 1` and `k` of `edge` (both above `d`, else
@@ -105,38 +96,42 @@ pub(crate) type StepFeet = [[(usize, f64); 2]; 2];
 /// Points along the step moved onto the axis (where the distances to the two sides, from
 /// Newton's method on each side's foot, agree): a point below `floor` shows a dip; the
 /// radius bounded between neighbours by its values there (it is 1-Lipschitz) shows it stays
-/// above; points are added until one of them is shown or [`MOST_SAMPLES`] show neither.
+/// above; points are added (twice as many each time, the earlier kept) until one of them is
+/// shown or [`MOST_SAMPLES`] show neither.
 fn sampled(edge: &Edge, k: usize, walks: &[Walk<'_>], floor: f64, size: f64) -> Between {
     let Some(feet) = step_feet(edge, k, walks) else {
         return Between::Unknown;
     };
-    let x0 = V2::from_arr(edge.xy[k - 1]);
-    let mut samples = 4;
-    while samples <= MOST_SAMPLES {
-        let mut last = (x0, edge.radius[k - 1]);
-        let mut holds = true;
-        for i in 1..=samples {
-            let t = i as f64 / samples as f64;
-            let here = if i == samples {
-                Some((V2::from_arr(edge.xy[k]), edge.radius[k]))
-            } else {
-                onto_axis(edge, k, walks, &feet, t, size).map(|p| (p.x, p.radius))
-            };
-            let Some(here) = here else {
-                return Between::Unknown;
-            };
-            if here.1 < floor {
-                return Between::Dips(t);
+    // The points of the axis at shares 0, 1/n, …, 1 of the step; doubling n keeps them and
+    // fills in the odd ones.
+    let mut points = vec![
+        (V2::from_arr(edge.xy[k - 1]), edge.radius[k - 1]),
+        (V2::from_arr(edge.xy[k]), edge.radius[k]),
+    ];
+    while points.len() <= MOST_SAMPLES {
+        let n = 2 * (points.len() - 1);
+        let mut finer = Vec::with_capacity(n + 1);
+        for (i, &p) in points.iter().enumerate() {
+            if i > 0 {
+                let t = (2 * i - 1) as f64 / n as f64;
+                let Some(here) = onto_axis(edge, k, walks, &feet, t, size) else {
+                    return Between::Unknown;
+                };
+                if here.radius < floor {
+                    return Between::Dips(t);
+                }
+                finer.push((here.x, here.radius));
             }
-            // (The whole pass is taken: a point further on may show the dip.)
-            let apart = (here.0 - last.0).norm() * ARC_OVER_CHORD;
-            holds &= (last.1 + here.1 - apart) * 0.5 > floor;
-            last = here;
+            finer.push(p);
         }
+        points = finer;
+        let holds = points.windows(2).all(|w| {
+            let apart = (w[1].0 - w[0].0).norm() * ARC_OVER_CHORD;
+            (w[0].1 + w[1].1 - apart) * 0.5 > floor
+        });
         if holds {
             return Between::Above;
         }
-        samples *= 2;
     }
     Between::Unknown
 }

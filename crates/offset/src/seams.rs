@@ -43,24 +43,36 @@ pub(crate) struct Seam {
     pub(crate) refined: bool,
 }
 
-/// The seams of the offset at distance `d`: where an edge's radius crosses `d` between two
-/// vertices (a vertex within [`TOUCHING`] of `d` counts as below it), and either side of a
-/// dip below `d` between two vertices above it (a neck); `None` where a crossing gave no
-/// seam (its feet on two boundaries, or on none), so the loops cannot be trusted.
-pub(crate) fn seams(axis: &MedialAxis, walks: &[Walk<'_>], d: f64, size: f64) -> Option<Vec<Seam>> {
+/// The seams of the offset at distance `d` and whether every step of the axis was resolved:
+/// seams where an edge's radius crosses `d` between two vertices (a vertex within
+/// [`TOUCHING`] of `d` counts as below it), and either side of a dip below `d` between two
+/// vertices above it (a neck); a step where neither a dip nor the radius staying above is
+/// shown is unresolved. `None` where a crossing gave no seam (its feet on two boundaries, or
+/// on none), so the loops cannot be trusted.
+pub(crate) fn seams(
+    axis: &MedialAxis,
+    walks: &[Walk<'_>],
+    d: f64,
+    size: f64,
+) -> Option<(Vec<Seam>, bool)> {
     let above = |r: f64| r > d + TOUCHING * size;
     let mut found = Vec::new();
+    let mut resolved = true;
     for edge in &axis.edges {
         for k in 1..edge.xy.len() {
             let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
             if above(r0) != above(r1) {
                 found.push(seam_between(edge, k, walks, d, size)?);
-            } else if let Between::Dips(t) = necks::between(edge, k, walks, d, size) {
-                found.extend(dip_seams(edge, k, walks, d, size, t)?);
+                continue;
+            }
+            match necks::between(edge, k, walks, d, size) {
+                Between::Above => {}
+                Between::Dips(t) => found.extend(dip_seams(edge, k, walks, d, size, t)?),
+                Between::Unknown => resolved = false,
             }
         }
     }
-    Some(found)
+    Some((found, resolved))
 }
 
 /// The seam on `edge` between vertices `k − 1` and `k`.
@@ -174,7 +186,7 @@ fn dip_seams(
 
 /// Bisections of the share of a step that find where the radius crosses the distance
 /// either side of a dip: to 2^-40 of the step, within Newton's reach of the seam.
-const DIP_HALVINGS: usize = 40;
+const DIP_HALVINGS: usize = 24;
 
 /// The seam with these feet (`refined`: closed by Newton's method), the kept stretch on each
 /// side beginning or ending there as the radius widens `toward_wider` along the axis.

@@ -41,8 +41,10 @@ pub(crate) enum Between {
     Unknown,
 }
 
-/// What the radius does between vertices `k − 1` and `k` of `edge` (both above `d`, else
-/// [`Between::Above`]: a crossing there is a seam of its own).
+/// What the radius does between vertices `k − 1` and `k` of `edge` when both are above `d`.
+/// Otherwise [`Between::Above`], meaning nothing is looked for: where the vertices are on
+/// either side, the crossing is a seam of its own; where both are below, a bump above `d`
+/// between them is not looked for (a known gap, not yet handled).
 pub(crate) fn between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) -> Between {
     let floor = d + TOUCHING * size;
     let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);

@@ -186,13 +186,10 @@ fn segment_piece(
             // The sweep: the angle between the ends, the turn nearest the one summed over
             // steps of the piece (a whole circle's ends are one point, a nearly whole one's
             // ends a rounding apart: the steps tell a turn from nothing).
-            let angle_at = |u: f64| (point(u) - c).angle();
-            let mut turned = 0.0;
-            for k in 0..SWEEP_STEPS {
-                let at = |j: usize| from + (to - from) * j as f64 / SWEEP_STEPS as f64;
-                let (u0, u1) = (at(k), at(k + 1));
-                turned += curve::wrap_pi(angle_at(u1) - angle_at(u0));
-            }
+            let angles: Vec<f64> = (0..=SWEEP_STEPS)
+                .map(|j| (point(from + (to - from) * j as f64 / SWEEP_STEPS as f64) - c).angle())
+                .collect();
+            let turned: f64 = angles.windows(2).map(|w| curve::wrap_pi(w[1] - w[0])).sum();
             let (a, b) = (p.angle(), q.angle());
             let between = curve::wrap_pi(b - a);
             let turns = ((turned - between) / TAU).round();

@@ -409,8 +409,8 @@ fn offsets_on(
     } else if !necks_resolved {
         // (Before the loops' crossings: across an unresolved neck they cross in truth.)
         Some(
-            "the axis's radius may dip to a distance between two of its vertices (a neck they \
-             do not resolve)"
+            "the axis's radius may cross a distance between two of its vertices (a neck or a \
+             bump whose extremum was not found on the axis)"
                 .to_string(),
         )
     } else if !loops_apart {

@@ -1,18 +1,27 @@
-//! Necks between the axis's vertices: where the radius falls below the distance between two
-//! vertices both above it, the offset pinches off there, though no seam is found. The axis
-//! between two equal round bosses is straight, with vertices only at its ends; its radius is
-//! least at the middle. A step whose radius falls from one end and rises to the other, and
-//! whose ends are not far enough above the distance for the radius's slope (at most 1) to
-//! keep it above, is sampled: points of it moved onto the axis bound the radius between them.
+//! Necks and bumps between the axis's vertices. Where the radius falls below the distance
+//! between two vertices both above it (a neck), the offset pinches off there, though no seam
+//! is found between vertices; where it rises above the distance between two vertices both
+//! below it (a bump), a small loop of the offset stands there. The axis between two equal
+//! round bosses is straight, with vertices only at its ends; its radius is least at the
+//! middle.
+//!
+//! The radius's slope along the axis at a point is the axis's direction (across the chord
+//! between its two feet) on the way from either foot. A step whose radius falls at one end
+//! and rises at the other (a neck) or the other way round (a bump), and whose ends are not far
+//! enough from the distance for the radius's slope (at most 1) to keep it on their side, has
+//! its extremum found: by bisection on the slope's sign at points of the step moved onto the
+//! axis, each of whose radius is compared with the distance as it goes. The slopes at the
+//! ends are taken to mean one extremum between them: the axis's vertices lie a chord
+//! tolerance apart, and between them its feet run along a small stretch of each side.
 
 use crate::seams::{sided_feet, TOUCHING};
 use crate::walk::Walk;
 use curve::V2;
 use medial::Edge;
 
-/// Most points taken across a step to show its radius stays above the distance; a neck
-/// nearer the distance than that resolves is taken as possible (the result not certified).
-const MOST_SAMPLES: usize = 256;
+/// Halvings of the share of a step that find its radius's extremum: to 2^-40 of the step,
+/// where the radius (1-Lipschitz) is within rounding of its value at the last point taken.
+const EXTREMUM_HALVINGS: usize = 40;
 
 /// Newton steps that put a point of the step on the axis (where the distances to both sides
 /// agree): from a chord within the axis's chord tolerance, a few suffice.
@@ -24,63 +33,111 @@ const ON_AXIS: f64 = 1e-12;
 /// A foot within this of a joint (relative to the parameter's period) is at the joint.
 const JOINT: f64 = 1e-12;
 
-/// How much longer than its chord the axis between two neighbouring points on it may be
-/// (an arc of a circle of radius `r` over a chord `r / 8` is 0.03 % longer): the radius,
-/// 1-Lipschitz along the axis, is bounded between them by its values at both ends.
+/// How much longer than its chord the axis between two vertices may be (an arc of a circle
+/// of radius `r` over a chord `r / 8` is 0.03 % longer): the radius, 1-Lipschitz along the
+/// axis, is bounded between them by its values at both ends.
 const ARC_OVER_CHORD: f64 = 1.001;
 
-/// What the radius does between two vertices of an edge, both above the distance.
+/// What the radius does between two vertices of an edge on one side of the distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Between {
-    /// It stays above.
-    Above,
-    /// It falls below at this share of the step (a point of the axis moved across it): the
-    /// offset pinches off there, at two seams either side.
-    Dips(f64),
-    /// Neither is shown with [`MOST_SAMPLES`] points.
+    /// It stays on their side.
+    Clear,
+    /// It crosses to the other side at this share of the step (a point of the axis moved
+    /// across it): below, the offset pinches off there (a neck); above, a small loop of the
+    /// offset stands there (a bump). Either way, at two seams either side.
+    Crosses(f64),
+    /// A point of the step was not moved onto the axis.
     Unknown,
 }
 
-/// What the radius does between vertices `k − 1` and `k` of `edge` when both are above `d`.
-/// Otherwise [`Between::Above`], meaning nothing is looked for: where the vertices are on
-/// either side, the crossing is a seam of its own; where both are below, a bump above `d`
-/// between them is not looked for (a known gap, not yet handled).
+/// What the radius does between vertices `k − 1` and `k` of `edge` when both are on one side
+/// of `d` (else [`Between::Clear`]: the crossing there is a seam of its own). A vertex within
+/// [`TOUCHING`] of `d` counts as below it.
 pub(crate) fn between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) -> Between {
     let floor = d + TOUCHING * size;
     let (r0, r1) = (edge.radius[k - 1], edge.radius[k]);
-    if !(r0 > floor && r1 > floor) {
-        return Between::Above;
+    let above = r0 > floor;
+    if above != (r1 > floor) {
+        return Between::Clear;
     }
     let (x0, x1) = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
-    // (1-Lipschitz along the chord: no point of it is nearer the boundary.)
     let step = x1 - x0;
-    if (r0 + r1 - step.norm()) * 0.5 > floor {
-        return Between::Above;
+    // (1-Lipschitz along the axis: no point of it is nearer the boundary, or farther.)
+    let (middle, reach) = (0.5 * (r0 + r1), 0.5 * step.norm() * ARC_OVER_CHORD);
+    if (above && middle - reach > floor) || (!above && middle + reach <= floor) {
+        return Between::Clear;
     }
-    // A neck falls at one end of the step and rises at the other. The radius's slope along
-    // the axis at a vertex is the axis's direction (across the chord between the two feet,
-    // the way the step goes) on the way from either foot; along the chord of a curved axis
-    // it would differ from one foot to the other.
-    let slope = |j: usize, x: V2| {
-        let foot = |side: usize| {
-            walks
-                .get(edge.boundary[j][side])
-                .map(|w| w.point(edge.feet[j][side]))
-        };
-        let (Some(f0), Some(f1)) = (foot(0), foot(1)) else {
-            return 0.0;
-        };
-        let between_feet = f1 - f0;
-        let mut along = V2::new(-between_feet.y, between_feet.x);
-        if along.dot(step) < 0.0 {
-            along = along * -1.0;
-        }
-        along.dot(x - f0)
+    let foot = |j: usize, side: usize| {
+        walks
+            .get(edge.boundary[j][side])
+            .map(|w| w.point(edge.feet[j][side]))
     };
-    if slope(k - 1, x0) > 0.0 || slope(k, x1) < 0.0 {
-        return Between::Above;
+    let slope_at = |j: usize, x: V2| match (foot(j, 0), foot(j, 1)) {
+        (Some(f0), Some(f1)) => slope(x, f0, f1, step),
+        _ => 0.0,
+    };
+    let (s0, s1) = (slope_at(k - 1, x0), slope_at(k, x1));
+    // (A bump rises strictly from both ends: where the feet meet, at a corner or a centre
+    // of curvature, the radius has no slope, and no bump stands beside it.)
+    let (falls_first, rises_last) = (s0 <= 0.0, s1 >= 0.0);
+    let extremum_inside = if above {
+        falls_first && rises_last
+    } else {
+        !falls_first && !rises_last
+    };
+    if !extremum_inside {
+        return Between::Clear;
     }
-    sampled(edge, k, walks, floor, size)
+    extremum(edge, k, walks, floor, size, above)
+}
+
+/// The radius's slope along the axis at `x`, whose feet are `f0` and `f1`, going the way of
+/// `step`, times the radius.
+fn slope(x: V2, f0: V2, f1: V2, step: V2) -> f64 {
+    let between_feet = f1 - f0;
+    let mut along = V2::new(-between_feet.y, between_feet.x);
+    if along.dot(step) < 0.0 {
+        along = along * -1.0;
+    }
+    along.dot(x - f0)
+}
+
+/// The extremum of the radius on step `k` of `edge` (a least one if its ends are `above`
+/// `floor`, else a greatest one): the share of the step is halved toward where the slope of
+/// points moved onto the axis changes sign, and a point on the other side of `floor` than
+/// the ends shows a crossing there; if none does by the extremum, the radius stays on their
+/// side.
+fn extremum(
+    edge: &Edge,
+    k: usize,
+    walks: &[Walk<'_>],
+    floor: f64,
+    size: f64,
+    above: bool,
+) -> Between {
+    let Some(feet) = step_feet(edge, k, walks) else {
+        return Between::Unknown;
+    };
+    let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
+    let (mut before, mut after) = (0.0, 1.0);
+    for _ in 0..EXTREMUM_HALVINGS {
+        let t = 0.5 * (before + after);
+        let Some(here) = onto_axis(edge, k, walks, &feet, t, size) else {
+            return Between::Unknown;
+        };
+        if (here.radius > floor) != above {
+            return Between::Crosses(t);
+        }
+        let [f0, f1] = [0, 1].map(|side| walks[feet[0][side].0].point(here.feet[side]));
+        // (Before a least radius it falls; before a greatest one it rises.)
+        if (slope(here.x, f0, f1, step) > 0.0) != above {
+            before = t;
+        } else {
+            after = t;
+        }
+    }
+    Between::Clear
 }
 
 /// The feet of a step's ends on each side (left first), on one boundary per side; `None`
@@ -94,49 +151,6 @@ pub(crate) fn step_feet(edge: &Edge, k: usize, walks: &[Walk<'_>]) -> Option<Ste
 
 /// Per end of a step, per side: the boundary and the foot's parameter.
 pub(crate) type StepFeet = [[(usize, f64); 2]; 2];
-
-/// Points along the step moved onto the axis (where the distances to the two sides, from
-/// Newton's method on each side's foot, agree): a point below `floor` shows a dip; the
-/// radius bounded between neighbours by its values there (it is 1-Lipschitz) shows it stays
-/// above; points are added (twice as many each time, the earlier kept) until one of them is
-/// shown or [`MOST_SAMPLES`] show neither.
-fn sampled(edge: &Edge, k: usize, walks: &[Walk<'_>], floor: f64, size: f64) -> Between {
-    let Some(feet) = step_feet(edge, k, walks) else {
-        return Between::Unknown;
-    };
-    // The points of the axis at shares 0, 1/n, …, 1 of the step; doubling n keeps them and
-    // fills in the odd ones.
-    let mut points = vec![
-        (V2::from_arr(edge.xy[k - 1]), edge.radius[k - 1]),
-        (V2::from_arr(edge.xy[k]), edge.radius[k]),
-    ];
-    while points.len() <= MOST_SAMPLES {
-        let n = 2 * (points.len() - 1);
-        let mut finer = Vec::with_capacity(n + 1);
-        for (i, &p) in points.iter().enumerate() {
-            if i > 0 {
-                let t = (2 * i - 1) as f64 / n as f64;
-                let Some(here) = onto_axis(edge, k, walks, &feet, t, size) else {
-                    return Between::Unknown;
-                };
-                if here.radius < floor {
-                    return Between::Dips(t);
-                }
-                finer.push((here.x, here.radius));
-            }
-            finer.push(p);
-        }
-        points = finer;
-        let holds = points.windows(2).all(|w| {
-            let apart = (w[1].0 - w[0].0).norm() * ARC_OVER_CHORD;
-            (w[0].1 + w[1].1 - apart) * 0.5 > floor
-        });
-        if holds {
-            return Between::Above;
-        }
-    }
-    Between::Unknown
-}
 
 /// A point of the axis: where, its radius, and its feet's parameters per side.
 #[derive(Debug, Clone, Copy)]

@@ -46,9 +46,9 @@ pub(crate) struct Seam {
 /// The seams of the offset at distance `d` and whether every step of the axis was resolved:
 /// seams where an edge's radius crosses `d` between two vertices (a vertex within
 /// [`TOUCHING`] of `d` counts as below it), and either side of a dip below `d` between two
-/// vertices above it (a neck); a step where neither a dip nor the radius staying above is
-/// shown is unresolved. `None` where a crossing gave no seam (its feet on two boundaries, or
-/// on none), so the loops cannot be trusted.
+/// vertices above it (a neck) or of a rise above `d` between two vertices below it (a bump);
+/// a step whose extremum was not found on the axis is unresolved. `None` where a crossing
+/// gave no seam (its feet on two boundaries, or on none), so the loops cannot be trusted.
 pub(crate) fn seams(
     axis: &MedialAxis,
     walks: &[Walk<'_>],
@@ -66,8 +66,10 @@ pub(crate) fn seams(
                 continue;
             }
             match necks::between(edge, k, walks, d, size) {
-                Between::Above => {}
-                Between::Dips(t) => found.extend(dip_seams(edge, k, walks, d, size, t)?),
+                Between::Clear => {}
+                Between::Crosses(t) => {
+                    found.extend(crossing_seams(edge, k, walks, d, size, t, above(r0))?)
+                }
                 Between::Unknown => resolved = false,
             }
         }
@@ -98,6 +100,13 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
         };
         Some([foot(0)?, foot(1)?])
     };
+    if let Some(leaf) = leaf_seam(edge, k, walks, d, size, [before, after], toward_wider) {
+        return Some(Seam {
+            feet: feet_at(leaf.0)?,
+            begins: leaf.1,
+            refined: true,
+        });
+    }
     // Newton's method from the radius's linear share of the step; near a dip of the radius
     // the two offsets run nearly parallel, the equations are nearly singular, and a first
     // step may leap to the seam on the dip's far side: a solution with a foot outside its
@@ -128,34 +137,35 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     Some(seam_of(walks, refined_feet, refined, toward_wider, d, size))
 }
 
-/// The two seams either side of a dip of the radius below `d` at share `t` of step `k` of
-/// `edge`, both of whose vertices are above it: where the radius of points moved onto the
-/// axis crosses `d`, by bisection on the share, each closed by Newton's method within its
-/// part of the step.
-fn dip_seams(
+/// The two seams either side of share `t` of step `k` of `edge`, where the radius is on the
+/// other side of `d` than at both vertices (`above` it or not: a neck, or a bump): where the
+/// radius of points moved onto the axis crosses `d`, by bisection on the share, each closed
+/// by Newton's method within its part of the step.
+fn crossing_seams(
     edge: &Edge,
     k: usize,
     walks: &[Walk<'_>],
     d: f64,
     size: f64,
     t: f64,
+    above: bool,
 ) -> Option<[Seam; 2]> {
     let feet = necks::step_feet(edge, k, walks)?;
     let floor = d + TOUCHING * size;
     let at = |share: f64| necks::onto_axis(edge, k, walks, &feet, share, size);
     let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
-    // (From each vertex, above, to the dip, below.)
-    let seam = |wide_share: f64, toward_wider: V2| -> Option<Seam> {
-        let (mut wide, mut narrow) = (wide_share, t);
-        for _ in 0..DIP_HALVINGS {
-            let middle = 0.5 * (wide + narrow);
-            if at(middle)?.radius > floor {
-                wide = middle;
+    // (From each vertex to the share across.)
+    let seam = |vertex_share: f64, toward_wider: V2| -> Option<Seam> {
+        let (mut near, mut across) = (vertex_share, t);
+        for _ in 0..CROSSING_HALVINGS {
+            let middle = 0.5 * (near + across);
+            if (at(middle)?.radius > floor) == above {
+                near = middle;
             } else {
-                narrow = middle;
+                across = middle;
             }
         }
-        let point = at(narrow)?;
+        let point = at(if above { across } else { near })?;
         let [before, after] = feet;
         let start = [0, 1].map(|side| {
             let b = before[side].0;
@@ -181,12 +191,50 @@ fn dip_seams(
             size,
         ))
     };
-    Some([seam(0.0, step * -1.0)?, seam(1.0, step)?])
+    // (The radius widens toward the vertices from a neck, toward the middle of a bump.)
+    let outward = if above { -1.0 } else { 1.0 };
+    Some([seam(0.0, step * outward)?, seam(1.0, step * -outward)?])
+}
+
+/// A seam at an end of step `k` of `edge` that is a leaf of the axis (a centre of curvature,
+/// both feet at one point) whose radius is `d` (within [`TOUCHING`]): the offset's swallowtail
+/// shrinks to a point there, and so does the seam, both its feet at the leaf's one foot
+/// (Newton's method would refuse it as the trivial solution of a seam's equations). The share
+/// of the step it is at, and per side whether the kept stretch begins there: as it does at
+/// the other end of the step, where the feet are apart.
+fn leaf_seam(
+    edge: &Edge,
+    k: usize,
+    walks: &[Walk<'_>],
+    d: f64,
+    size: f64,
+    sided: [[(usize, f64); 2]; 2],
+    toward_wider: V2,
+) -> Option<(f64, [bool; 2])> {
+    let at_leaf = |end: usize| {
+        let [(b0, u0), (b1, u1)] = sided[end];
+        let (Some(w0), Some(w1)) = (walks.get(b0), walks.get(b1)) else {
+            return false;
+        };
+        (edge.radius[k - 1 + end] - d).abs() <= TOUCHING * size
+            && b0 == b1
+            && (w0.point(u0) - w1.point(u1)).norm() <= SEAM_CLOSURE * size
+    };
+    let end = (0..2).find(|&end| at_leaf(end))?;
+    let other = 1 - end;
+    let x = V2::from_arr(edge.xy[k - 1 + other]);
+    let begins = sided[other].map(|(b, u)| {
+        let normal = (x - walks[b].point(u)).unit();
+        // (The walk's tangent has the region, and so the normal, on its left.)
+        let tangent = V2::new(normal.y, -normal.x);
+        toward_wider.dot(tangent) > 0.0
+    });
+    Some((end as f64, begins))
 }
 
 /// Bisections of the share of a step that find where the radius crosses the distance
-/// either side of a dip: to 2^-40 of the step, within Newton's reach of the seam.
-const DIP_HALVINGS: usize = 24;
+/// either side of a neck or a bump: to 2^-24 of the step, within reach of Newton's method.
+const CROSSING_HALVINGS: usize = 24;
 
 /// The seam with these feet (`refined`: closed by Newton's method), the kept stretch on each
 /// side beginning or ending there as the radius widens `toward_wider` along the axis.

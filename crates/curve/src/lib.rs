@@ -38,6 +38,7 @@ mod segment;
 pub mod shapes;
 mod spans;
 mod spline;
+mod stretch;
 
 pub use affine::Affine;
 pub use clearance::Clearance;

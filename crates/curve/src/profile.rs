@@ -3,7 +3,7 @@
 //! parameter `[0, n)` for `n` segments (`u ∈ [i, i+1]` is segment `i` at its own parameter
 //! mapped linearly); its joints are classified as smooth (G1), convex or reflex corners.
 
-use crate::crossing::{first_crossing, flattened};
+use crate::crossing::first_crossing;
 use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
 use crate::param::ParamCurve;
@@ -68,9 +68,6 @@ pub struct Profile {
     /// Per segment and Bézier piece, the box of the piece's Euclidean control points grown by
     /// what their rounding may hide: the disk tests pass over the pieces it keeps far.
     piece_boxes: Vec<Vec<[f64; 4]>>,
-    /// Per segment, a polyline within the crossing test's flatness of it: the profile's
-    /// own crossings and a region's tests of its boundaries (crossings, nesting) share it.
-    polylines: Vec<Vec<V2>>,
 }
 
 impl Profile {
@@ -122,8 +119,7 @@ impl Profile {
             None => joined(seam_gap),
         };
         // (Before the area: a bow tie encloses none, and its crossing is the cause.)
-        let polylines = flattened(&segments, size);
-        if let Some(c) = first_crossing(&polylines, closed) {
+        if let Some(c) = first_crossing(&segments, closed, size) {
             return Err(Error::SelfCrossing {
                 first: c.first,
                 second: c.second,
@@ -180,14 +176,7 @@ impl Profile {
             size,
             boxes,
             piece_boxes,
-            polylines,
         })
-    }
-
-    /// Per segment, a polyline within `1e-7` of the size of it (for the tests of crossing
-    /// and nesting).
-    pub(crate) fn polylines(&self) -> &[Vec<V2>] {
-        &self.polylines
     }
 
     /// The box of segment `i`'s control points, `[lo x, lo y, hi x, hi y]`: it holds the

@@ -2,7 +2,7 @@
 //! as the interface contract asks: every boundary closed, holes inside the outer boundary and
 //! outside each other, no two boundaries crossing or touching.
 
-use crate::crossing::{first_crossing_among, polygon, winding, Chain};
+use crate::crossing::{first_crossing_among, winds_round, Chain};
 use crate::error::{Error, Result};
 use crate::geom::V2;
 use crate::param::ParamCurve;
@@ -34,9 +34,9 @@ impl Region {
             return Err(Error::OpenBoundary { boundary: b });
         }
         // (Each boundary is simple, proven when it was made: only pairs of boundaries are
-        // tested, on their own polylines, each as fine as this test needs or finer.)
-        let chains: Vec<Chain<'_>> = boundaries.iter().map(|p| (p.polylines(), true)).collect();
-        if let Some(c) = first_crossing_among(&chains, true) {
+        // tested, to the flatness of the outer boundary's size.)
+        let chains: Vec<Chain<'_>> = boundaries.iter().map(|p| (p.segments(), true)).collect();
+        if let Some(c) = first_crossing_among(&chains, true, outer.size()) {
             return Err(Error::BoundariesCross {
                 first: c.chains.0,
                 second: c.chains.1,
@@ -44,10 +44,9 @@ impl Region {
             });
         }
         // No crossings: a boundary lies inside another exactly when one of its points does.
-        let polygons: Vec<Vec<V2>> = boundaries.iter().map(|p| polygon(p.polylines())).collect();
         let inside = |b: usize, of: usize| {
             let p = boundaries[b].jet_to(0.0, 0).p;
-            winding(&polygons[of], p) != 0
+            winds_round(boundaries[of].segments(), p, boundaries[of].size())
         };
         for h in 1..boundaries.len() {
             if !inside(h, 0) {
@@ -81,14 +80,22 @@ impl Region {
     /// ```
     pub fn nested(profiles: Vec<Profile>) -> Result<Vec<Region>> {
         let closed: Vec<Profile> = profiles.into_iter().filter(|p| p.is_closed()).collect();
-        let polygons: Vec<Vec<V2>> = closed.iter().map(|p| polygon(p.polylines())).collect();
         let n = closed.len();
         let starts: Vec<V2> = closed.iter().map(|p| p.start()).collect();
-        let inside = |i: usize, j: usize| i != j && winding(&polygons[j], starts[i]) != 0;
+        // (Each pair once, before the profiles are moved into their regions.)
+        let within: Vec<Vec<bool>> = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        i != j && winds_round(closed[j].segments(), starts[i], closed[j].size())
+                    })
+                    .collect()
+            })
+            .collect();
+        let inside = |i: usize, j: usize| within[i][j];
         let depth: Vec<usize> = (0..n)
             .map(|i| (0..n).filter(|&j| inside(i, j)).count())
             .collect();
-        // (Moved, not copied: a profile carries its polylines.)
         let mut slots: Vec<Option<Profile>> = closed.into_iter().map(Some).collect();
         let mut out = Vec::new();
         for o in (0..n).filter(|&o| depth[o] % 2 == 0) {
@@ -198,7 +205,7 @@ mod tests {
 
     proptest! {
         /// A circular hole is accepted exactly when it lies strictly inside the outer circle
-        /// (by a margin far above the flattening), and refused when it crosses or lies
+        /// (by a margin far above the flatness), and refused when it crosses or lies
         /// outside.
         #[test]
         fn circular_holes_against_their_distances(

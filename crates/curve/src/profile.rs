@@ -118,6 +118,25 @@ impl Profile {
             Some(c) => c,
             None => joined(seam_gap),
         };
+        // (Before the crossings: a joint that turns back is named as that, not as the
+        // crossing it makes.)
+        let first = if closed { 0 } else { 1 };
+        let mut turns = Vec::with_capacity(n);
+        for i in first..n {
+            let before = &segments[(i + n - 1) % n];
+            let (Some(din), Some(dout)) = (before.end_direction(), segments[i].start_direction())
+            else {
+                return Err(Error::ZeroLength { segment: i });
+            };
+            let turn = din.cross(dout).atan2(din.dot(dout));
+            if turn.abs() >= std::f64::consts::PI - CORNER_TURN {
+                return Err(Error::Cusp {
+                    segment: i,
+                    at: segments[i].start().arr(),
+                });
+            }
+            turns.push((i, turn));
+        }
         // (Before the area: a bow tie encloses none, and its crossing is the cause.)
         if let Some(c) = first_crossing(&segments, closed, size) {
             return Err(Error::SelfCrossing {
@@ -137,35 +156,21 @@ impl Profile {
         } else {
             0.0
         };
-        let mut joints = Vec::with_capacity(n);
-        let first = if closed { 0 } else { 1 };
-        for i in first..n {
-            let before = &segments[(i + n - 1) % n];
-            let (Some(din), Some(dout)) = (before.end_direction(), segments[i].start_direction())
-            else {
-                return Err(Error::ZeroLength { segment: i });
-            };
-            let turn = din.cross(dout).atan2(din.dot(dout));
-            if turn.abs() >= std::f64::consts::PI - CORNER_TURN {
-                return Err(Error::Cusp {
-                    segment: i,
-                    at: segments[i].start().arr(),
-                });
-            }
-            let left = if closed { orientation > 0.0 } else { true };
-            let kind = if turn.abs() <= CORNER_TURN {
-                JointKind::Smooth
-            } else if (turn > 0.0) == left {
-                JointKind::Convex
-            } else {
-                JointKind::Reflex
-            };
-            joints.push(Joint {
+        let left = if closed { orientation > 0.0 } else { true };
+        let joints = turns
+            .into_iter()
+            .map(|(i, turn)| Joint {
                 u: i as f64,
                 turn,
-                kind,
-            });
-        }
+                kind: if turn.abs() <= CORNER_TURN {
+                    JointKind::Smooth
+                } else if (turn > 0.0) == left {
+                    JointKind::Convex
+                } else {
+                    JointKind::Reflex
+                },
+            })
+            .collect();
         let boxes = segments.iter().map(control_box).collect();
         let piece_boxes = segments.iter().map(crate::clearance::piece_boxes).collect();
         Ok(Self {

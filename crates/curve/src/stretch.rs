@@ -25,6 +25,11 @@ const BOX_ROUNDING: f64 = 64.0 * f64::EPSILON;
 /// stretch runs one way: the rounding of the differences' directions, far above it.
 const CONE_MARGIN: f64 = 1e-9;
 
+/// Halvings of a stretch looked at for a retrace, and parts at most: far below the
+/// flatness, and a bound on the work.
+const MAX_RETRACE_DEPTH: usize = 40;
+const MAX_RETRACE_PARTS: usize = 4096;
+
 /// A stretch of one segment of a chain: a Bézier piece or a part of one.
 #[derive(Debug, Clone)]
 pub(crate) struct Stretch {
@@ -211,6 +216,43 @@ impl Stretch {
             && self.points().all(|p| {
                 crate::geom::distance_to_segment(p.arr(), self.start.arr(), self.end.arr()) <= delta
             })
+    }
+
+    /// Where a stretch within `delta` of its chord goes back along it by more than twice
+    /// that (so retracing itself within the flatness): a point of the way back. Its parts
+    /// are halved until each runs one way along the chord (the chord's components of its
+    /// control points' differences not negative) or lies within `delta`, and their ends
+    /// compared with the farthest end before them.
+    pub(crate) fn retrace(&self, delta: f64) -> Option<V2> {
+        let chord = self.end - self.start;
+        if chord.norm() <= delta {
+            return None;
+        }
+        let along = chord.unit();
+        let reach = |p: V2| (p - self.start).dot(along);
+        let mut farthest = 0.0f64;
+        let mut pending = vec![self.clone()];
+        let mut parts = 0;
+        while let Some(part) = pending.pop() {
+            parts += 1;
+            let reaches: SmallVec<[f64; 8]> = part.points().map(reach).collect();
+            let one_way = reaches.windows(2).all(|w| w[1] >= w[0]);
+            let settled = one_way
+                || part.extent() <= delta
+                || part.depth >= MAX_RETRACE_DEPTH
+                || parts > MAX_RETRACE_PARTS;
+            if !settled {
+                let [h0, h1] = part.halves();
+                pending.extend([h1, h0]);
+                continue;
+            }
+            let end = reach(part.end);
+            if end < farthest - 2.0 * delta {
+                return Some(part.end);
+            }
+            farthest = farthest.max(end);
+        }
+        None
     }
 
     /// Whether its box and `other`'s meet (a stretch without a box meets every one).

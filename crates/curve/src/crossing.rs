@@ -22,9 +22,21 @@ const FLAT_ROUNDING: f64 = 64.0 * f64::EPSILON;
 /// Halvings of a Bézier piece before it is taken as flat: a part 2^-24 of a piece.
 const MAX_DEPTH: usize = 24;
 
-/// Pairs and stretches looked at in one test before the rest are judged by their chords: a
-/// bound on the work whatever the curves (two copies of one curve meet all along).
-const MAX_TESTS: usize = 1 << 20;
+/// Pairs and stretches looked at in one test, per Bézier piece of the chains and beyond
+/// them: a bound on the work and the memory whatever the curves (two copies of one curve
+/// meet all along their length). A test that reaches it is left undecided.
+const TESTS_PER_PIECE: usize = 64;
+const MORE_TESTS: usize = 1 << 18;
+
+/// Units of rounding of the largest coordinate within which a stretch's way back is on its
+/// way there (a retrace): the halvings' rounding of points on one line.
+const RETRACE_ROUNDING: f64 = 256.0 * f64::EPSILON;
+
+/// A test that did not finish within its bound on the work.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Undecided {
+    pub(crate) tests: usize,
+}
 
 /// A crossing: the two segments (of chains `chains`, the same for a chain crossing itself)
 /// and a point where they meet.
@@ -41,7 +53,11 @@ pub(crate) type Chain<'a> = (&'a [Segment], bool);
 
 /// The first crossing of a chain with itself (`closed`: its last segment joins its first),
 /// for a chain of `size`.
-pub(crate) fn first_crossing(segments: &[Segment], closed: bool, size: f64) -> Option<Crossing> {
+pub(crate) fn first_crossing(
+    segments: &[Segment],
+    closed: bool,
+    size: f64,
+) -> Result<Option<Crossing>, Undecided> {
     first_crossing_among(&[(segments, closed)], false, size)
 }
 
@@ -60,18 +76,20 @@ pub(crate) fn first_crossing_among(
     chains: &[Chain<'_>],
     apart: bool,
     size: f64,
-) -> Option<Crossing> {
-    let delta = flatness(chains.iter().flat_map(|c| c.0.iter()), size);
+) -> Result<Option<Crossing>, Undecided> {
+    let (delta, magnitude) = flatness(chains.iter().flat_map(|c| c.0.iter()), size);
+    let rounding = RETRACE_ROUNDING * magnitude;
     let mut stretches: Vec<Stretch> = chains
         .iter()
         .enumerate()
         .flat_map(|(c, &(segments, _))| pieces_of(c, segments))
         .collect();
+    let bound = MORE_TESTS + TESTS_PER_PIECE * stretches.len();
     let mut tasks: Vec<Task> = Vec::new();
     if !apart {
         tasks.extend((0..stretches.len()).map(Task::Itself));
     }
-    for (i, j) in boxes_meeting(&stretches) {
+    for (i, j) in boxes_meeting(&stretches, bound)? {
         if !(apart && stretches[i].chain == stretches[j].chain) {
             tasks.push(Task::Pair(i, j));
         }
@@ -88,8 +106,10 @@ pub(crate) fn first_crossing_among(
     let mut tests = 0;
     while let Some(task) = tasks.pop() {
         tests += 1;
-        let exhausted = tests > MAX_TESTS;
-        let settled = |s: &Stretch| exhausted || s.depth >= MAX_DEPTH || s.is_flat(delta);
+        if tests > bound {
+            return Err(Undecided { tests: bound });
+        }
+        let settled = |s: &Stretch| s.depth >= MAX_DEPTH || s.is_flat(delta);
         let mut record = |a: &Stretch, b: &Stretch, at: V2| {
             let (x, y) = if (a.chain, a.segment) <= (b.chain, b.segment) {
                 (a, b)
@@ -115,7 +135,7 @@ pub(crate) fn first_crossing_among(
                 }
                 // (Flat, it may still go back along its chord: a retrace.)
                 if settled(s) {
-                    if let Some(at) = s.retrace(delta) {
+                    if let Some(at) = s.retrace(delta, rounding) {
                         record(s, s, at);
                     }
                     continue;
@@ -140,8 +160,12 @@ pub(crate) fn first_crossing_among(
                 }
                 let (split_a, split_b) = (!settled(a), !settled(b));
                 if !split_a && !split_b {
-                    // (Neighbours' chords share an end: within the flatness of a turn back.)
+                    // (Neighbours' chords share an end: they meet only if one runs back
+                    // along the other.)
                     if touching {
+                        if let Some(at) = a.retraced_by(b, delta, rounding) {
+                            record(a, b, at);
+                        }
                         continue;
                     }
                     if let Some(at) = meet(a.start, a.end, b.start, b.end) {
@@ -159,12 +183,12 @@ pub(crate) fn first_crossing_among(
             }
         }
     }
-    found
+    Ok(found)
 }
 
 /// The pairs of stretches whose boxes meet, by a sweep along x (a stretch without a box
-/// pairs with every other).
-fn boxes_meeting(stretches: &[Stretch]) -> Vec<(usize, usize)> {
+/// pairs with every other); undecided beyond `bound` pairs.
+fn boxes_meeting(stretches: &[Stretch], bound: usize) -> Result<Vec<(usize, usize)>, Undecided> {
     let mut pairs = Vec::new();
     let (mut boxed, mut unboxed): (Vec<(f64, usize)>, Vec<usize>) = (Vec::new(), Vec::new());
     for (i, s) in stretches.iter().enumerate() {
@@ -190,27 +214,34 @@ fn boxes_meeting(stretches: &[Stretch]) -> Vec<(usize, usize)> {
                 pairs.push((j.min(i), j.max(i)));
             }
         }
+        if pairs.len() > bound {
+            return Err(Undecided { tests: bound });
+        }
         active.push(i);
     }
-    pairs
+    Ok(pairs)
 }
 
 /// Whether the closed chain `segments` (of `size`) winds round `p`: the winding number of
 /// the polygon through its stretches' ends, each stretch whose box holds `p` halved until it
 /// does not or lies within the flatness of its chord (the curve and the polygon then bound
 /// no region holding `p`, unless `p` is within the flatness of the chain).
-pub(crate) fn winds_round(segments: &[Segment], p: V2, size: f64) -> bool {
-    let delta = flatness(segments.iter(), size);
+pub(crate) fn winds_round(segments: &[Segment], p: V2, size: f64) -> Result<bool, Undecided> {
+    let delta = flatness(segments.iter(), size).0;
     let mut polygon = Vec::new();
     let mut pending: Vec<Stretch> = pieces_of(0, segments);
+    let bound = MORE_TESTS + TESTS_PER_PIECE * pending.len();
     pending.reverse();
     let mut tests = 0;
     while let Some(s) = pending.pop() {
         tests += 1;
+        if tests > bound {
+            return Err(Undecided { tests: bound });
+        }
         if polygon.is_empty() {
             polygon.push(s.start);
         }
-        let settled = tests > MAX_TESTS || s.depth >= MAX_DEPTH || s.is_flat(delta);
+        let settled = s.depth >= MAX_DEPTH || s.is_flat(delta);
         if s.box_holds(p) && !settled {
             let [h0, h1] = s.halves();
             pending.extend([h1, h0]);
@@ -218,7 +249,7 @@ pub(crate) fn winds_round(segments: &[Segment], p: V2, size: f64) -> bool {
             polygon.push(s.end);
         }
     }
-    winding(&polygon, p) != 0
+    Ok(winding(&polygon, p) != 0)
 }
 
 /// The winding number of `polygon` (closed, last point joined to the first) about `p`.
@@ -239,13 +270,13 @@ fn winding(polygon: &[V2], p: V2) -> i32 {
     w
 }
 
-/// The flatness for segments of `size`: [`FLATNESS`] of it, but never below what the
-/// coordinates' rounding resolves.
-fn flatness<'s>(segments: impl Iterator<Item = &'s Segment>, size: f64) -> f64 {
+/// The flatness for segments of `size` ([`FLATNESS`] of it, but never below what the
+/// coordinates' rounding resolves), and their largest coordinate.
+fn flatness<'s>(segments: impl Iterator<Item = &'s Segment>, size: f64) -> (f64, f64) {
     let magnitude = segments
         .flat_map(|s| s.curve().control_points())
         .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
-    (FLATNESS * size).max(FLAT_ROUNDING * magnitude)
+    ((FLATNESS * size).max(FLAT_ROUNDING * magnitude), magnitude)
 }
 
 /// Where edges `ab` and `cd` meet, when they do (touching or overlapping included).
@@ -464,13 +495,35 @@ mod tests {
             line([1.0, 0.0], [1.0, 1.0]),
             line([1.0, 1.0], [0.0, 0.0]),
         ];
-        assert!(first_crossing(&retracing, true, 2.0).is_some());
+        assert!(first_crossing(&retracing, true, 2.0).unwrap().is_some());
         let sharp = [
             line([0.0, 0.0], [2.0, 0.0]),
             cubic([[2.0, 0.0], [1.0, 0.01], [1.0, 1.0], [0.5, 1.0]]),
             line([0.5, 1.0], [0.0, 0.0]),
         ];
-        assert!(first_crossing(&sharp, true, 2.0).is_none());
+        assert!(first_crossing(&sharp, true, 2.0).unwrap().is_none());
+    }
+
+    /// Where a chain turns back at a knot inside a segment, or where the test halves a
+    /// stretch, it retraces itself; a repeated control point of a polyline spline is no touch.
+    #[test]
+    fn retraces_at_knots_and_halvings_cross_and_repeated_points_do_not() {
+        let spline = |degree: usize, pts: &[[f64; 2]]| {
+            Segment::spline(
+                SegmentKind::BSpline,
+                SplineCurve::clamped(degree, pts, None, None).unwrap(),
+            )
+            .unwrap()
+        };
+        let at_knot = [spline(1, &[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0]])];
+        assert!(first_crossing(&at_knot, false, 2.0).unwrap().is_some());
+        let at_halving = [spline(3, &[[0.0, 0.0], [5.0, 0.0], [3.0, 0.0], [2.0, 0.0]])];
+        assert!(first_crossing(&at_halving, false, 5.0).unwrap().is_some());
+        let repeated = [
+            spline(1, &[[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [1.0, 1.0]]),
+            Segment::line([1.0, 1.0], [0.0, 0.0]).unwrap(),
+        ];
+        assert_eq!(first_crossing(&repeated, true, 1.5).unwrap(), None);
     }
 
     proptest! {
@@ -483,7 +536,7 @@ mod tests {
             let segments = chain_of(&radii, &moves, wild);
             let (fine, unclear) = brute_crossing(&segments, 400);
             prop_assume!(!unclear);
-            let got = first_crossing(&segments, true, 2.0);
+            let got = first_crossing(&segments, true, 2.0).unwrap();
             // (A crossing too small for the samples: looked for finely about it.)
             let confirmed = |g: &Crossing| {
                 let (there, unclear) =
@@ -518,7 +571,7 @@ mod tests {
                 .fold(f64::INFINITY, f64::min);
             prop_assume!(near > 1e-4);
             let want = winding(&pts[..pts.len() - 1], p) != 0;
-            prop_assert_eq!(winds_round(&segments, p, 2.0), want);
+            prop_assert_eq!(winds_round(&segments, p, 2.0).unwrap(), want);
         }
 
         /// Moved far from the origin and scaled, a chain crosses itself where it did.
@@ -544,8 +597,8 @@ mod tests {
                     Segment::spline(SegmentKind::Bezier, c).unwrap()
                 })
                 .collect();
-            let here = first_crossing(&segments, true, 2.0);
-            let there = first_crossing(&far, true, 2.0 * scale);
+            let here = first_crossing(&segments, true, 2.0).unwrap();
+            let there = first_crossing(&far, true, 2.0 * scale).unwrap();
             // (As [`crossings_match_fine_samples`] checks it.)
             prop_assume!(here.is_some() == fine.is_some());
             prop_assert_eq!(there.map(|c| c.first), here.map(|c| c.first));

@@ -97,6 +97,20 @@ pub enum Error {
         /// Its signed area.
         area: f64,
     },
+    /// The test of whether profiles cross, or of which lies inside which, did not finish
+    /// within its bound on the work (curves that run along each other over long stretches,
+    /// closer than a ten-millionth of their size).
+    #[error("whether the profile crosses itself or another was not decided within {tests} tests")]
+    Undecided {
+        /// The bound on the tests.
+        tests: usize,
+    },
+}
+
+impl From<crate::crossing::Undecided> for Error {
+    fn from(u: crate::crossing::Undecided) -> Self {
+        Error::Undecided { tests: u.tests }
+    }
 }
 
 /// Shorthand for results of this crate.

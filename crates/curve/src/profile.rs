@@ -138,7 +138,7 @@ impl Profile {
             turns.push((i, turn));
         }
         // (Before the area: a bow tie encloses none, and its crossing is the cause.)
-        if let Some(c) = first_crossing(&segments, closed, size) {
+        if let Some(c) = first_crossing(&segments, closed, size)? {
             return Err(Error::SelfCrossing {
                 first: c.first,
                 second: c.second,

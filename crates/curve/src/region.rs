@@ -36,7 +36,7 @@ impl Region {
         // (Each boundary is simple, proven when it was made: only pairs of boundaries are
         // tested, to the flatness of the outer boundary's size.)
         let chains: Vec<Chain<'_>> = boundaries.iter().map(|p| (p.segments(), true)).collect();
-        if let Some(c) = first_crossing_among(&chains, true, outer.size()) {
+        if let Some(c) = first_crossing_among(&chains, true, outer.size())? {
             return Err(Error::BoundariesCross {
                 first: c.chains.0,
                 second: c.chains.1,
@@ -49,14 +49,16 @@ impl Region {
             winds_round(boundaries[of].segments(), p, boundaries[of].size())
         };
         for h in 1..boundaries.len() {
-            if !inside(h, 0) {
+            if !inside(h, 0)? {
                 return Err(Error::HoleOutside { hole: h - 1 });
             }
-            if let Some(o) = (1..boundaries.len()).find(|&o| o != h && inside(h, o)) {
-                return Err(Error::HoleInHole {
-                    hole: h - 1,
-                    other: o - 1,
-                });
+            for o in (1..boundaries.len()).filter(|&o| o != h) {
+                if inside(h, o)? {
+                    return Err(Error::HoleInHole {
+                        hole: h - 1,
+                        other: o - 1,
+                    });
+                }
             }
         }
         Ok(Self { outer, holes })
@@ -83,15 +85,18 @@ impl Region {
         let n = closed.len();
         let starts: Vec<V2> = closed.iter().map(|p| p.start()).collect();
         // (Each pair once, before the profiles are moved into their regions.)
-        let within: Vec<Vec<bool>> = (0..n)
+        let within = (0..n)
             .map(|i| {
                 (0..n)
                     .map(|j| {
-                        i != j && winds_round(closed[j].segments(), starts[i], closed[j].size())
+                        if i == j {
+                            return Ok(false);
+                        }
+                        winds_round(closed[j].segments(), starts[i], closed[j].size())
                     })
-                    .collect()
+                    .collect::<std::result::Result<Vec<bool>, _>>()
             })
-            .collect();
+            .collect::<std::result::Result<Vec<Vec<bool>>, _>>()?;
         let inside = |i: usize, j: usize| within[i][j];
         let depth: Vec<usize> = (0..n)
             .map(|i| (0..n).filter(|&j| inside(i, j)).count())

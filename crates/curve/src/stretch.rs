@@ -14,8 +14,9 @@ use crate::segment::Segment;
 use smallvec::SmallVec;
 use std::f64::consts::PI;
 
-/// Homogeneous control points `(X, Y, w)` of a piece, held in place up to degree 7.
-type Coefs = SmallVec<[f64; 24]>;
+/// Homogeneous control points `(X, Y, w)` of a piece, held in place up to degree 3 (the
+/// offsets' fits, arcs and lines; higher degrees spill to the heap).
+type Coefs = SmallVec<[f64; 12]>;
 
 /// Units of rounding of the largest coordinate by which a box is grown: the division
 /// `X / w` of each Euclidean point, and the halvings that made the piece.
@@ -69,21 +70,37 @@ impl Cone {
     }
 }
 
-/// The stretches of chain `chain`'s segments: one per Bézier piece, in order.
+/// The stretches of chain `chain`'s segments: one per Bézier piece, in order, but none for
+/// a piece that is a single point (a repeated control point of a polyline spline): its
+/// neighbours become each other's, so that their common end is not taken for a touch.
 pub(crate) fn pieces_of(chain: usize, segments: &[Segment]) -> Vec<Stretch> {
-    let mut out = Vec::new();
+    let mut out: Vec<Stretch> = Vec::new();
+    let mut point_from: Option<f64> = None;
     for (i, seg) in segments.iter().enumerate() {
         let pieces = seg.curve().bezier_pieces();
         let m = pieces.pieces();
         for k in 0..m {
-            out.push(Stretch::new(
+            let mut s = Stretch::new(
                 chain,
                 i,
                 i as f64 + k as f64 / m as f64,
                 i as f64 + (k + 1) as f64 / m as f64,
                 0,
                 Coefs::from_slice(pieces.piece(k)),
-            ));
+            );
+            if s.is_point() {
+                match out.last_mut() {
+                    Some(last) => last.hi = s.hi,
+                    None => {
+                        point_from.get_or_insert(s.lo);
+                    }
+                }
+                continue;
+            }
+            if let Some(lo) = point_from.take() {
+                s.lo = lo;
+            }
+            out.push(s);
         }
     }
     out
@@ -147,6 +164,11 @@ impl Stretch {
         self.coefs
             .chunks_exact(3)
             .map(|c| V2::new(c[0] / c[2], c[1] / c[2]))
+    }
+
+    /// Whether all its control points are one point.
+    fn is_point(&self) -> bool {
+        self.bounds.is_some() && self.points().all(|p| p == self.start)
     }
 
     /// The two halves (de Casteljau at the middle of its parameter).
@@ -219,11 +241,12 @@ impl Stretch {
     }
 
     /// Where a stretch within `delta` of its chord goes back along it by more than twice
-    /// that (so retracing itself within the flatness): a point of the way back. Its parts
-    /// are halved until each runs one way along the chord (the chord's components of its
-    /// control points' differences not negative) or lies within `delta`, and their ends
-    /// compared with the farthest end before them.
-    pub(crate) fn retrace(&self, delta: f64) -> Option<V2> {
+    /// that, over a way it went before (within `rounding`: a retrace, as of a spline whose
+    /// control points lie on a line; a cusp's way back parts from its way there, and is
+    /// judged by the flatness): a point of the way back. Its parts are halved until each runs
+    /// one way along the chord (the chord's components of its control points' differences
+    /// not negative) or lies within `delta`, and their ends compared with the parts before.
+    pub(crate) fn retrace(&self, delta: f64, rounding: f64) -> Option<V2> {
         let chord = self.end - self.start;
         if chord.norm() <= delta {
             return None;
@@ -231,6 +254,7 @@ impl Stretch {
         let along = chord.unit();
         let reach = |p: V2| (p - self.start).dot(along);
         let mut farthest = 0.0f64;
+        let mut before: Vec<(V2, V2)> = Vec::new();
         let mut pending = vec![self.clone()];
         let mut parts = 0;
         while let Some(part) = pending.pop() {
@@ -247,12 +271,42 @@ impl Stretch {
                 continue;
             }
             let end = reach(part.end);
-            if end < farthest - 2.0 * delta {
+            if end < farthest - 2.0 * delta
+                && before.iter().any(|&(a, b)| {
+                    crate::geom::distance_to_segment(part.end.arr(), a.arr(), b.arr()) <= rounding
+                })
+            {
                 return Some(part.end);
             }
             farthest = farthest.max(end);
+            before.push((part.start, part.end));
         }
         None
+    }
+
+    /// Where neighbours `self` and `next`, each within `delta` of its chord, run back along
+    /// each other from their common end by more than twice that, within `rounding` (a
+    /// retrace at a knot or where a stretch was halved): the far end of the shorter.
+    pub(crate) fn retraced_by(&self, next: &Stretch, delta: f64, rounding: f64) -> Option<V2> {
+        // (The common end: this one's end, or its start across a closed chain's seam.)
+        let (common, mine, theirs) =
+            if (self.end - next.start).norm() <= (self.start - next.end).norm() {
+                (self.end, self.start, next.end)
+            } else {
+                (self.start, self.end, next.start)
+            };
+        let (a, b) = (mine - common, theirs - common);
+        if a.dot(b) <= 0.0 {
+            return None;
+        }
+        let (short, long) = if a.norm() <= b.norm() { (a, b) } else { (b, a) };
+        (short.norm() > 2.0 * delta
+            && crate::geom::distance_to_segment(
+                (common + short).arr(),
+                common.arr(),
+                (common + long).arr(),
+            ) <= rounding)
+            .then_some(common + short)
     }
 
     /// Whether its box and `other`'s meet (a stretch without a box meets every one).

@@ -223,13 +223,17 @@ fn leaf_seam(
     let end = (0..2).find(|&end| at_leaf(end))?;
     let other = 1 - end;
     let x = V2::from_arr(edge.xy[k - 1 + other]);
-    let begins = sided[other].map(|(b, u)| {
-        let normal = (x - walks[b].point(u)).unit();
-        // (The walk's tangent has the region, and so the normal, on its left.)
-        let tangent = V2::new(normal.y, -normal.x);
-        toward_wider.dot(tangent) > 0.0
-    });
+    let begins = sided[other].map(|(b, u)| begins_at(x, walks[b].point(u), toward_wider));
     Some((end as f64, begins))
+}
+
+/// Whether the stretch of boundary kept beside a seam at `x` begins at its foot `foot` (else
+/// it ends there), the radius widening `toward_wider` along the axis.
+fn begins_at(x: V2, foot: V2, toward_wider: V2) -> bool {
+    let normal = (x - foot).unit();
+    // (The walk's tangent has the region, and so the normal, on its left.)
+    let tangent = V2::new(normal.y, -normal.x);
+    toward_wider.dot(tangent) > 0.0
 }
 
 /// Bisections of the share of a step that find where the radius crosses the distance
@@ -253,12 +257,7 @@ fn seam_of(
         refined &= gap.norm() > SEAM_CLOSURE * size;
     }
     let point = walks[feet[0].0].offset(feet[0].1, d).0;
-    let begins = feet.map(|(b, foot)| {
-        let normal = (point - foot_point(&walks[b], foot)).unit();
-        // (The walk's tangent has the region, and so the normal, on its left.)
-        let tangent = V2::new(normal.y, -normal.x);
-        toward_wider.dot(tangent) > 0.0
-    });
+    let begins = feet.map(|(b, foot)| begins_at(point, foot_point(&walks[b], foot), toward_wider));
     Seam {
         feet,
         begins,

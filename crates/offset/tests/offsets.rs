@@ -1045,6 +1045,19 @@ fn a_neck_between_two_round_holes_closes() {
     }
 }
 
+/// A smooth oval of four cubic Béziers about the origin, 2, 1.1, 1.9 and 1 out along the
+/// axes: its medial axis has its widest disk inside an edge, and leaves at centres of
+/// curvature.
+fn oval() -> Region {
+    let segs = profiles::bezier_chain(
+        &[2.0, 1.1, 1.9, 1.0],
+        &[(0.05, 0.05), (0.05, -0.05), (-0.05, 0.05), (0.05, 0.05)],
+        &[true, true, true, true],
+    )
+    .unwrap();
+    Region::new(profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap()
+}
+
 /// An axis that is not the region's is an error, not a panic: arrays of unequal lengths, a
 /// number that is not finite, a boundary or a foot out of range.
 #[test]
@@ -1287,13 +1300,7 @@ fn a_neck_where_the_axis_curves_round_a_hole_is_seen() {
 /// seams found as a neck's are; without them it was missed, and the offsets certified.
 #[test]
 fn a_bump_between_two_vertices_has_its_loop() {
-    let segs = profiles::bezier_chain(
-        &[2.0, 1.1, 1.9, 1.0],
-        &[(0.05, 0.05), (0.05, -0.05), (-0.05, 0.05), (0.05, 0.05)],
-        &[true, true, true, true],
-    )
-    .unwrap();
-    let region = Region::new(profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap();
+    let region = oval();
     let mut axis = medial_axis(&region, &MedialOptions::default()).unwrap();
     assert!(axis.certified, "{:?}", axis.reason);
     // The widest vertex inside an edge, and the edge without it.
@@ -1334,14 +1341,7 @@ fn a_bump_between_two_vertices_has_its_loop() {
 /// certified and at the distance, with as many loops as just below or just above it.
 #[test]
 fn offsets_at_the_axis_vertices_radii_are_certified() {
-    let segs = profiles::bezier_chain(
-        &[2.0, 1.1, 1.9, 1.0],
-        &[(0.05, 0.05), (0.05, -0.05), (-0.05, 0.05), (0.05, 0.05)],
-        &[true, true, true, true],
-    )
-    .unwrap();
-    let oval = Region::new(profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap();
-    for region in [oval, pocket()] {
+    for region in [oval(), pocket()] {
         let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
         let (lo, hi) = Chords::of(&region, 100).bounds();
         let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);

@@ -222,34 +222,49 @@ fn boxes_meeting(stretches: &[Stretch], bound: usize) -> Result<Vec<(usize, usiz
     Ok(pairs)
 }
 
-/// Whether the closed chain `segments` (of `size`) winds round `p`: the winding number of
-/// the polygon through its stretches' ends, each stretch whose box holds `p` halved until it
-/// does not or lies within the flatness of its chord (the curve and the polygon then bound
-/// no region holding `p`, unless `p` is within the flatness of the chain).
-pub(crate) fn winds_round(segments: &[Segment], p: V2, size: f64) -> Result<bool, Undecided> {
-    let delta = flatness(segments.iter(), size).0;
-    let mut polygon = Vec::new();
-    let mut pending: Vec<Stretch> = pieces_of(0, segments);
-    let bound = MORE_TESTS + TESTS_PER_PIECE * pending.len();
-    pending.reverse();
-    let mut tests = 0;
-    while let Some(s) = pending.pop() {
-        tests += 1;
-        if tests > bound {
-            return Err(Undecided { tests: bound });
-        }
-        if polygon.is_empty() {
-            polygon.push(s.start);
-        }
-        let settled = s.depth >= MAX_DEPTH || s.is_flat(delta);
-        if s.box_holds(p) && !settled {
-            let [h0, h1] = s.halves();
-            pending.extend([h1, h0]);
-        } else {
-            polygon.push(s.end);
+/// A closed chain's pieces and flatness, made once for the tests of which points it winds
+/// round (a region asks each boundary about every other's start).
+pub(crate) struct Outline {
+    pieces: Vec<Stretch>,
+    delta: f64,
+}
+
+impl Outline {
+    /// The outline of the closed chain `segments`, of `size`.
+    pub(crate) fn new(segments: &[Segment], size: f64) -> Self {
+        Self {
+            pieces: pieces_of(0, segments),
+            delta: flatness(segments.iter(), size).0,
         }
     }
-    Ok(winding(&polygon, p) != 0)
+
+    /// Whether it winds round `p`: the winding number of the polygon through its
+    /// stretches' ends, each stretch whose box holds `p` halved until it does not or lies
+    /// within the flatness of its chord (the curve and the polygon then bound no region
+    /// holding `p`, unless `p` is within the flatness of the chain).
+    pub(crate) fn winds_round(&self, p: V2) -> Result<bool, Undecided> {
+        let mut polygon = Vec::new();
+        let bound = MORE_TESTS + TESTS_PER_PIECE * self.pieces.len();
+        let mut pending: Vec<Stretch> = self.pieces.iter().rev().cloned().collect();
+        let mut tests = 0;
+        while let Some(s) = pending.pop() {
+            tests += 1;
+            if tests > bound {
+                return Err(Undecided { tests: bound });
+            }
+            if polygon.is_empty() {
+                polygon.push(s.start);
+            }
+            let settled = s.depth >= MAX_DEPTH || s.is_flat(self.delta);
+            if s.box_holds(p) && !settled {
+                let [h0, h1] = s.halves();
+                pending.extend([h1, h0]);
+            } else {
+                polygon.push(s.end);
+            }
+        }
+        Ok(winding(&polygon, p) != 0)
+    }
 }
 
 /// The winding number of `polygon` (closed, last point joined to the first) about `p`.
@@ -571,7 +586,7 @@ mod tests {
                 .fold(f64::INFINITY, f64::min);
             prop_assume!(near > 1e-4);
             let want = winding(&pts[..pts.len() - 1], p) != 0;
-            prop_assert_eq!(winds_round(&segments, p, 2.0).unwrap(), want);
+            prop_assert_eq!(Outline::new(&segments, 2.0).winds_round(p).unwrap(), want);
         }
 
         /// Moved far from the origin and scaled, a chain crosses itself where it did.

@@ -2,7 +2,7 @@
 //! as the interface contract asks: every boundary closed, holes inside the outer boundary and
 //! outside each other, no two boundaries crossing or touching.
 
-use crate::crossing::{first_crossing_among, winds_round, Chain};
+use crate::crossing::{first_crossing_among, Chain, Outline};
 use crate::error::{Error, Result};
 use crate::geom::V2;
 use crate::param::ParamCurve;
@@ -44,10 +44,11 @@ impl Region {
             });
         }
         // No crossings: a boundary lies inside another exactly when one of its points does.
-        let inside = |b: usize, of: usize| {
-            let p = boundaries[b].jet_to(0.0, 0).p;
-            winds_round(boundaries[of].segments(), p, boundaries[of].size())
-        };
+        let outlines: Vec<Outline> = boundaries
+            .iter()
+            .map(|p| Outline::new(p.segments(), p.size()))
+            .collect();
+        let inside = |b: usize, of: usize| outlines[of].winds_round(boundaries[b].jet_to(0.0, 0).p);
         for h in 1..boundaries.len() {
             if !inside(h, 0)? {
                 return Err(Error::HoleOutside { hole: h - 1 });
@@ -85,6 +86,10 @@ impl Region {
         let n = closed.len();
         let starts: Vec<V2> = closed.iter().map(|p| p.start()).collect();
         // (Each pair once, before the profiles are moved into their regions.)
+        let outlines: Vec<Outline> = closed
+            .iter()
+            .map(|p| Outline::new(p.segments(), p.size()))
+            .collect();
         let within = (0..n)
             .map(|i| {
                 (0..n)
@@ -92,7 +97,7 @@ impl Region {
                         if i == j {
                             return Ok(false);
                         }
-                        winds_round(closed[j].segments(), starts[i], closed[j].size())
+                        outlines[j].winds_round(starts[i])
                     })
                     .collect::<std::result::Result<Vec<bool>, _>>()
             })

@@ -108,17 +108,10 @@ pub(crate) fn pieces_of(chain: usize, segments: &[Segment]) -> Vec<Stretch> {
 
 impl Stretch {
     fn new(chain: usize, segment: usize, lo: f64, hi: f64, depth: usize, coefs: Coefs) -> Self {
-        let points = || {
-            coefs
-                .chunks_exact(3)
-                .map(|c| V2::new(c[0] / c[2], c[1] / c[2]))
-        };
+        let points: SmallVec<[V2; 8]> = euclidean(&coefs).collect();
         let positive = coefs.chunks_exact(3).all(|c| c[2] > 0.0);
-        let (mut lo_p, mut hi_p) = (
-            V2::new(f64::INFINITY, f64::INFINITY),
-            V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
-        );
-        for p in points() {
+        let (mut lo_p, mut hi_p) = (points[0], points[0]);
+        for p in &points[1..] {
             lo_p = V2::new(lo_p.x.min(p.x), lo_p.y.min(p.y));
             hi_p = V2::new(hi_p.x.max(p.x), hi_p.y.max(p.y));
         }
@@ -126,26 +119,19 @@ impl Stretch {
             .iter()
             .all(|v| v.is_finite());
         let bounds = (positive && finite).then(|| {
-            let room = BOX_ROUNDING
-                * lo_p
-                    .x
-                    .abs()
-                    .max(lo_p.y.abs())
-                    .max(hi_p.x.abs())
-                    .max(hi_p.y.abs());
+            let magnitude = lo_p
+                .x
+                .abs()
+                .max(lo_p.y.abs())
+                .max(hi_p.x.abs())
+                .max(hi_p.y.abs());
+            let room = BOX_ROUNDING * magnitude;
             [
                 V2::new(lo_p.x - room, lo_p.y - room),
                 V2::new(hi_p.x + room, hi_p.y + room),
             ]
         });
-        let n = coefs.len() / 3;
-        let at = |j: usize| {
-            V2::new(
-                coefs[3 * j] / coefs[3 * j + 2],
-                coefs[3 * j + 1] / coefs[3 * j + 2],
-            )
-        };
-        let (start, end) = (at(0), at(n - 1));
+        let (start, end) = (points[0], points[points.len() - 1]);
         Self {
             chain,
             segment,
@@ -161,9 +147,7 @@ impl Stretch {
 
     /// The Euclidean control points.
     fn points(&self) -> impl Iterator<Item = V2> + '_ {
-        self.coefs
-            .chunks_exact(3)
-            .map(|c| V2::new(c[0] / c[2], c[1] / c[2]))
+        euclidean(&self.coefs)
     }
 
     /// Whether all its control points are one point.
@@ -330,4 +314,11 @@ impl Stretch {
         self.bounds
             .map_or(f64::INFINITY, |[lo, hi]| (hi - lo).norm())
     }
+}
+
+/// The Euclidean points `(X / w, Y / w)` of homogeneous control points.
+fn euclidean(coefs: &[f64]) -> impl Iterator<Item = V2> + '_ {
+    coefs
+        .chunks_exact(3)
+        .map(|c| V2::new(c[0] / c[2], c[1] / c[2]))
 }

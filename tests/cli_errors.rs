@@ -171,8 +171,6 @@ fn unsuitable_curves_are_input_errors() {
         );
     }
     // Bisectors need the exact rational form.
-    let analytic = fixture("limacon.json");
-    assert_usage_error(&["bisector", &analytic], &[&analytic, ": kind: "]);
 }
 
 #[test]

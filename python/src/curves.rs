@@ -183,7 +183,6 @@ impl PyCurve {
             ));
         }
         let (a, b) = self.curve.domain();
-        let curve = self.curve.plane_curve();
         let mut points = Vec::with_capacity(u.len()?);
         for (k, &t) in u.as_array().iter().enumerate() {
             if !(a..=b).contains(&t) {
@@ -191,7 +190,8 @@ impl PyCurve {
                     "evaluate: u[{k}] = {t} is outside the domain [{a}, {b}]"
                 )));
             }
-            points.push(curve.jet_to(t, 0).p.arr().to_vec());
+            // (In the document's parameter, as every result reports them.)
+            points.push(self.curve.point_at(t).to_vec());
         }
         if points.is_empty() {
             return Ok(PyArray2::zeros(py, [0, 2], false));

@@ -476,8 +476,14 @@ pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) ->
         [c1, c2, ..] => (*c1, *c2),
         [] => return Figure::new().render(),
     };
-    let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
-    let foot = |k: usize, u: f64| if k == 0 { p1.jet(u) } else { p2.jet(u) }.p.arr();
+    // (The parameters reported are the documents'.)
+    let foot = |k: usize, u: f64| {
+        if k == 0 {
+            c1.point_at(u)
+        } else {
+            c2.point_at(u)
+        }
+    };
     let domains = [c1.domain(), c2.domain()];
     plane_and_parameters(curves, r, &foot, domains, &[], title)
 }
@@ -506,7 +512,9 @@ pub(crate) fn profile_bisector_figure(
         isolated: Vec::new(),
         complete: r.complete,
     };
-    let foot = |k: usize, u: f64| if k == 0 { a.jet(u) } else { b.jet(u) }.p.arr();
+    // (The parameters reported are the documents'.)
+    let on = |p: &Profile, u: f64| p.jet(p.internal_param(u)).p.arr();
+    let foot = |k: usize, u: f64| if k == 0 { on(a, u) } else { on(b, u) };
     let corners: Vec<[f64; 2]> = profiles
         .iter()
         .flat_map(|p| p.corners().map(|j| p.jet(j.u).p.arr()))
@@ -515,7 +523,7 @@ pub(crate) fn profile_bisector_figure(
         curves,
         &plain,
         &foot,
-        [a.domain(), b.domain()],
+        [a.document_domain(), b.document_domain()],
         &corners,
         title,
     )

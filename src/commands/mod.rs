@@ -19,12 +19,14 @@
 //! ```
 
 mod errors;
+mod params;
 
 pub use errors::CommandError;
 use errors::{antipodal_error, refuse, zeroset_error};
+use params::{DocMap, InDocument};
 
 use crate::io::{Curve, Shape};
-use curve::{ParamCurve, PlaneCurve, Profile, Segment, SegmentKind};
+use curve::{ParamCurve, PlaneCurve, Profile};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::sync::Arc;
@@ -87,22 +89,27 @@ pub struct Stats {
 
 /// A curve made ready for the one-curve commands: a spline or an analytic shape is prepared
 /// once (its frame, symbolic forms and enclosures; [`antipodal::prepare`]), so that later
-/// calls answer warm; a profile needs no preparation. A region is refused: the one-curve
-/// commands take curves. It shares the curve, so it can be kept and sent between threads.
+/// calls answer warm; a profile needs no preparation, and a spline with corners (a degree-1
+/// spline, knots of full multiplicity) is taken as the profile of its pieces. A region is
+/// refused: the one-curve commands take curves. It shares the curve, so it can be kept and
+/// sent between threads.
 pub struct Prepared {
     curve: Arc<Curve>,
     smooth: Option<antipodal::Prepared<'static>>,
+    /// The spline taken as a profile, where it has corners.
+    cut: Option<Profile>,
 }
 
 impl Prepared {
     /// Prepares `curve` for `command` (named in the refusal of a region).
     pub fn new(curve: Arc<Curve>, command: &str) -> Result<Self, CommandError> {
         one_curve(&[&curve], command)?;
-        let smooth = match &curve.shape {
-            Shape::Profile(_) => None,
+        let cut = spline_with_corners(&curve)?;
+        let smooth = match (&curve.shape, &cut) {
+            (Shape::Profile(_), _) | (_, Some(_)) => None,
             _ => Some(antipodal::prepare_shared(Arc::new(Shared(curve.clone())))),
         };
-        Ok(Self { curve, smooth })
+        Ok(Self { curve, smooth, cut })
     }
 
     /// The curve prepared.
@@ -112,51 +119,86 @@ impl Prepared {
 
     /// The inflections (and a profile's corners).
     pub fn inflections(&self, opts: &antipodal::Options) -> Result<InflectionsFound, CommandError> {
-        inflections_of(&self.curve, self.smooth.as_ref(), opts)
+        inflections_of(&self.curve, self.route(), opts)
     }
 
     /// The antipodal pairs, inflections and families (and a profile's corners).
     pub fn antipodal(&self, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-        antipodal_of(&self.curve, self.smooth.as_ref(), opts)
+        antipodal_of(&self.curve, self.route(), opts)
+    }
+
+    fn route(&self) -> Route<'_> {
+        match (&self.curve.shape, &self.cut, &self.smooth) {
+            (Shape::Profile(p), _, _) => Route::Profile(p),
+            (_, Some(p), _) => Route::Profile(p),
+            (_, None, Some(s)) => Route::Smooth(s),
+            (_, None, None) => unreachable!("a curve that is no profile is prepared"),
+        }
     }
 }
 
-/// A curve that is no profile, prepared on a borrow (for one answer: no copy of the curve).
-fn prepare_borrowed(curve: &Curve) -> Option<antipodal::Prepared<'_>> {
+/// Which algorithms a one-curve command runs: a profile's, or a smooth curve's (prepared).
+enum Route<'a> {
+    Profile(&'a Profile),
+    Smooth(&'a antipodal::Prepared<'a>),
+}
+
+/// A spline with corners (a degree-1 spline, a knot of full multiplicity where it turns, a
+/// clamped closed spline with a corner where its ends meet) as the profile of its pieces, in
+/// its own parameter; `None` for a smooth spline and for every other kind.
+fn spline_with_corners(c: &Curve) -> Result<Option<Profile>, CommandError> {
+    if !matches!(c.shape, Shape::Spline(_)) {
+        return Ok(None);
+    }
+    match crate::io::curve_profile(c) {
+        Some(Ok(p)) if p.segments().len() > 1 || p.corners().next().is_some() => Ok(Some(p)),
+        Some(Ok(_)) | None => Ok(None),
+        Some(Err(e)) => Err(CommandError::Input(e)),
+    }
+}
+
+/// How `curve`'s exact form's parameters map to its document's on the smooth path.
+fn smooth_map(curve: &Curve) -> DocMap<'_> {
     match &curve.shape {
-        Shape::Profile(_) => None,
-        _ => Some(antipodal::prepare(curve.plane_curve())),
+        Shape::Segment(s) => DocMap::Segment(s),
+        _ => DocMap::Own,
     }
 }
 
-/// `inflections` of `curve`, prepared as `smooth` unless it is a profile.
+/// `inflections` of `curve` on `route`, in the curve's own parameter.
 fn inflections_of(
     curve: &Curve,
-    smooth: Option<&antipodal::Prepared<'_>>,
+    route: Route<'_>,
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
-    let found = match (smooth, &curve.shape) {
-        (_, Shape::Profile(p)) => {
-            antipodal::profile_inflections(p, opts).map(InflectionsFound::Profile)
-        }
-        (Some(prepared), _) => prepared.inflections(opts).map(InflectionsFound::Curve),
-        (None, _) => unreachable!("a curve that is no profile is prepared"),
+    let found = match route {
+        Route::Profile(p) => antipodal::profile_inflections(p, opts).map(|mut f| {
+            f.in_document(&[DocMap::Profile(p)]);
+            InflectionsFound::Profile(f)
+        }),
+        Route::Smooth(prepared) => prepared.inflections(opts).map(|mut f| {
+            f.in_document(&[smooth_map(curve)]);
+            InflectionsFound::Curve(f)
+        }),
     };
     found.map_err(|e| antipodal_error(e, &[curve]))
 }
 
-/// `antipodal` of `curve`, prepared as `smooth` unless it is a profile.
+/// `antipodal` of `curve` on `route`, in the curve's own parameter.
 fn antipodal_of(
     curve: &Curve,
-    smooth: Option<&antipodal::Prepared<'_>>,
+    route: Route<'_>,
     opts: &antipodal::Options,
 ) -> Result<AntipodalFound, CommandError> {
-    let found = match (smooth, &curve.shape) {
-        (_, Shape::Profile(p)) => {
-            antipodal::profile_antipodal(p, opts).map(AntipodalFound::Profile)
-        }
-        (Some(prepared), _) => prepared.antipodal(opts).map(AntipodalFound::Curve),
-        (None, _) => unreachable!("a curve that is no profile is prepared"),
+    let found = match route {
+        Route::Profile(p) => antipodal::profile_antipodal(p, opts).map(|mut f| {
+            f.in_document(&[DocMap::Profile(p)]);
+            AntipodalFound::Profile(f)
+        }),
+        Route::Smooth(prepared) => prepared.antipodal(opts).map(|mut f| {
+            f.in_document(&[smooth_map(curve)]);
+            AntipodalFound::Curve(f)
+        }),
     };
     found.map_err(|e| antipodal_error(e, &[curve]))
 }
@@ -192,14 +234,30 @@ pub fn inflections(
 ) -> Result<InflectionsFound, CommandError> {
     validate_options(opts)?;
     one_curve(&[curve], "inflections")?;
-    inflections_of(curve, prepare_borrowed(curve).as_ref(), opts)
+    match (&curve.shape, spline_with_corners(curve)?) {
+        (Shape::Profile(p), _) => inflections_of(curve, Route::Profile(p), opts),
+        (_, Some(p)) => inflections_of(curve, Route::Profile(&p), opts),
+        _ => inflections_of(
+            curve,
+            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
+            opts,
+        ),
+    }
 }
 
 /// `antipodal` of a curve read: [`Prepared::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
     validate_options(opts)?;
     one_curve(&[curve], "antipodal")?;
-    antipodal_of(curve, prepare_borrowed(curve).as_ref(), opts)
+    match (&curve.shape, spline_with_corners(curve)?) {
+        (Shape::Profile(p), _) => antipodal_of(curve, Route::Profile(p), opts),
+        (_, Some(p)) => antipodal_of(curve, Route::Profile(&p), opts),
+        _ => antipodal_of(
+            curve,
+            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
+            opts,
+        ),
+    }
 }
 
 /// The lines tangent to two curves; where one is a profile, the other is taken as a
@@ -212,14 +270,31 @@ pub fn tangents(
     validate_options(opts)?;
     let both = [c1, c2];
     one_curve(&both, "tangents")?;
-    let found = if both.iter().any(|c| matches!(c.shape, Shape::Profile(_))) {
+    let found = if needs_profiles(&both)? {
         let (a, b) = (as_profile(c1, "tangents")?, as_profile(c2, "tangents")?);
-        antipodal::profile_tangents(&a, &b, opts).map(TangentsFound::Profile)
+        antipodal::profile_tangents(&a, &b, opts).map(|mut f| {
+            f.in_document(&[DocMap::Profile(&a), DocMap::Profile(&b)]);
+            TangentsFound::Profile(f)
+        })
     } else {
         let (a, b) = antipodal::prepare_pair(c1.plane_curve(), c2.plane_curve());
-        a.common_tangents(&b, opts).map(TangentsFound::Curve)
+        a.common_tangents(&b, opts).map(|mut f| {
+            f.in_document(&[smooth_map(c1), smooth_map(c2)]);
+            TangentsFound::Curve(f)
+        })
     };
     found.map_err(|e| antipodal_error(e, &both))
+}
+
+/// Whether a command on several curves runs on profiles: where one is a profile or a spline
+/// with corners (the others are then taken as profiles of one segment).
+fn needs_profiles(curves: &[&Curve]) -> Result<bool, CommandError> {
+    for c in curves {
+        if matches!(c.shape, Shape::Profile(_)) || spline_with_corners(c)?.is_some() {
+            return Ok(true);
+        }
+    }
+    Ok(false)
 }
 
 /// The bisector of two curves, or the self-bisector of one (`c2` `None`); where one is a
@@ -232,34 +307,59 @@ pub fn bisector(
     validate_bisector_options(opts)?;
     let curves: Vec<&Curve> = std::iter::once(c1).chain(c2).collect();
     one_curve(&curves, "bisector")?;
-    let found = if curves.iter().any(|c| matches!(c.shape, Shape::Profile(_))) {
+    // (An analytic shape has no spline of its own: it is taken as the profile of its exact
+    // form, in its angle.)
+    let analytic = curves.iter().any(|c| matches!(c.shape, Shape::Analytic(_)));
+    let found = if analytic || needs_profiles(&curves)? {
         let profiles = curves
             .iter()
             .map(|c| as_profile(c, "bisector"))
             .collect::<Result<Vec<_>, _>>()?;
+        let maps: Vec<DocMap<'_>> = profiles.iter().map(DocMap::Profile).collect();
         match &profiles[..] {
             [a, b] => zeroset::profile_bisector(a, b, opts),
             [one, ..] => zeroset::profile_self_bisector(one, opts),
             [] => unreachable!("one curve at least"),
         }
-        .map(BisectorFound::Profile)
+        .map(|mut f| {
+            f.in_document(&maps);
+            BisectorFound::Profile(f)
+        })
     } else {
         let rationals = curves
             .iter()
             .map(|c| spline_of(c))
             .collect::<Result<Vec<_>, _>>()?;
+        let maps: Vec<DocMap<'_>> = curves.iter().map(|c| smooth_map(c)).collect();
         match &rationals[..] {
             [a, b] => zeroset::bisector(a, b, opts),
             [one, ..] => zeroset::self_bisector(one, opts),
             [] => unreachable!("one curve at least"),
         }
-        .map(BisectorFound::Curve)
+        .map(|mut f| {
+            f.in_document(&maps);
+            BisectorFound::Curve(f)
+        })
     };
     found.map_err(zeroset_error)
 }
 
-/// The medial axis of a region read (as [`crate::io::read_region`] gives it).
+/// The medial axis of a region read (as [`crate::io::read_region`] gives it), its feet in
+/// each boundary's own parameter.
 pub fn medial(
+    region: &Curve,
+    opts: &medial::MedialOptions,
+) -> Result<medial::MedialAxis, CommandError> {
+    let mut axis = medial_in_profile_params(region, opts)?;
+    if let Shape::Region(r) = &region.shape {
+        axis.in_document(&params::region_maps(r));
+    }
+    Ok(axis)
+}
+
+/// The medial axis with its feet in the boundaries' profile parameters, as the offsets take
+/// it.
+fn medial_in_profile_params(
     region: &Curve,
     opts: &medial::MedialOptions,
 ) -> Result<medial::MedialAxis, CommandError> {
@@ -314,7 +414,7 @@ pub fn offset(
 ) -> Result<offset::Offsets, CommandError> {
     validate_distances(distances)?;
     validate_medial_options(medial_opts)?;
-    let axis = medial(region, medial_opts)?;
+    let axis = medial_in_profile_params(region, medial_opts)?;
     let Shape::Region(r) = &region.shape else {
         return Err(refuse(region, "kind", "offset takes a region"));
     };
@@ -438,38 +538,21 @@ fn one_curve(curves: &[&Curve], command: &str) -> Result<(), CommandError> {
     }
 }
 
-/// A curve as a profile: itself, or one segment (a line, an arc, a spline that is not
-/// periodic); an analytic shape or a periodic spline is refused by name (with `command`).
+/// A curve as a profile: itself, or the profile of one segment in the curve's own parameter
+/// (a line, an arc, a spline, an analytic shape's exact form; cut at its corners).
 pub fn as_profile(c: &Curve, command: &str) -> Result<Profile, CommandError> {
-    let refuse_as = |why: &str| {
-        refuse(
+    match &c.shape {
+        Shape::Profile(p) => Ok(p.as_ref().clone()),
+        Shape::Region(_) => Err(refuse(
             c,
             "kind",
-            &format!(
-                "{command} with a profile: {why}; give it as a profile or an open or clamped \
-                 spline"
-            ),
-        )
-    };
-    let segment = match &c.shape {
-        Shape::Profile(p) => return Ok(p.as_ref().clone()),
-        Shape::Segment(s) => s.as_ref().clone(),
-        Shape::Spline(s) if !s.periodic => Segment::spline(SegmentKind::BSpline, s.plane.clone())
-            .map_err(|e| refuse_as(&e.to_string()))?,
-        Shape::Spline(_) => {
-            return Err(refuse_as(
-                "a periodic spline has no ends to make a segment of",
-            ))
-        }
-        Shape::Analytic(a) => {
-            return Err(refuse_as(&format!(
-                "an analytic {} is not a segment",
-                a.kind()
-            )))
-        }
-        Shape::Region(_) => return Err(refuse_as("a region is not a curve")),
-    };
-    Profile::new(vec![segment], None).map_err(|e| refuse_as(&e.to_string()))
+            &format!("{command} takes a curve or a profile, not a region"),
+        )),
+        _ => match crate::io::curve_profile(c) {
+            Some(made) => made.map_err(CommandError::Input),
+            None => unreachable!("every curve but a profile or a region has a profile"),
+        },
+    }
 }
 
 /// Bisectors are computed on the exact rational form, which only spline kinds have.

@@ -204,9 +204,9 @@ impl Curve {
         match &self.shape {
             Shape::Spline(s) => s.curve.domain(),
             Shape::Analytic(_) => (0.0, std::f64::consts::TAU),
-            Shape::Segment(s) => s.domain(),
-            Shape::Profile(p) => p.domain(),
-            Shape::Region(r) => r.outer().domain(),
+            Shape::Segment(s) => s.own_domain(),
+            Shape::Profile(p) => p.document_domain(),
+            Shape::Region(r) => r.outer().document_domain(),
         }
     }
 
@@ -220,6 +220,17 @@ impl Curve {
             // (Commands that need one curve refuse a region; figures draw its outer boundary
             // here and its holes beside it.)
             Shape::Region(r) => r.outer(),
+        }
+    }
+
+    /// The point at the document's parameter `u` (an arc's angle share, a profile's segments at
+    /// their own parameters): where the parameters a command reports lie.
+    pub fn point_at(&self, u: f64) -> [f64; 2] {
+        match &self.shape {
+            Shape::Segment(s) => s.jet(s.own_param().form(u, s.domain())).p.arr(),
+            Shape::Profile(p) => p.jet(p.internal_param(u)).p.arr(),
+            Shape::Region(r) => r.outer().jet(r.outer().internal_param(u)).p.arr(),
+            Shape::Spline(_) | Shape::Analytic(_) => self.plane_curve().jet(u).p.arr(),
         }
     }
 
@@ -241,6 +252,19 @@ impl Curve {
             .map(|i| c.jet(a + (b - a) * i as f64 / n as f64).p.arr())
             .collect()
     }
+}
+
+/// A curve that is not a profile or a region (a spline, an analytic shape, a line or an arc)
+/// as the profile of one segment in the curve's own parameter, cut at its corners; `None`
+/// for a profile or a region.
+pub fn curve_profile(curve: &Curve) -> Option<Result<curve::Profile, CurveFileError>> {
+    profile::curve_profile(&curve.shape).map(|made| {
+        made.map_err(|(field, problem)| CurveFileError {
+            file: curve.file.clone(),
+            field,
+            problem,
+        })
+    })
 }
 
 /// The region a command on regions takes from a file: a `region` file as it is; any other

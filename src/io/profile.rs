@@ -157,11 +157,12 @@ fn boundary(key: &str, v: &Value) -> Result<Profile, FieldError> {
     boundary_of(key, shape)
 }
 
-/// A closed curve of any kind that has an exact form, as one boundary of a region: a closed
-/// profile, a closed `bezier` or `bspline` (a periodic one clamped), a circle, a full-turn
-/// arc. `key` names it in errors.
+/// A closed curve of any kind as one boundary of a region: a closed profile as it is; any
+/// other closed curve as the profile of one segment whose parameter is the curve's own
+/// ([`curve::Profile::of_curve`]: a spline's knots, `[0, 2π)` for the analytic shapes), cut at
+/// its corners (a degree-1 spline, knots of full multiplicity, a clamped spline closed by its
+/// points with a corner there). `key` names it in errors.
 pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, FieldError> {
-    let at = |(field, problem): FieldError| (format!("{key}.{field}"), problem);
     let not_closed = || {
         (
             key.to_string(),
@@ -170,40 +171,54 @@ pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, Fie
     };
     let profile = match shape {
         super::Shape::Profile(p) => *p,
-        super::Shape::Segment(s) => Profile::new(vec![*s], Some(true)).map_err(|_| not_closed())?,
-        super::Shape::Spline(s) if s.closed => {
-            // A periodic curve is restricted to its domain: the same curve, clamped.
-            let (a, b) = s.curve.domain();
-            let geometry = |e: String| at(("points".into(), Problem::Geometry(e)));
-            let clamped = s
-                .curve
-                .restrict(a, b)
-                .map_err(|e| geometry(e.to_string()))
-                .and_then(|c| curve::SplineCurve::new(c).map_err(|e| geometry(e.to_string())))?;
-            let kind = match s.kind {
-                super::SplineKind::Bezier => SegmentKind::Bezier,
-                super::SplineKind::BSpline => SegmentKind::BSpline,
-            };
-            let seg = Segment::spline(kind, clamped).map_err(|e| at(("points".into(), Problem::Geometry(e.to_string()))))?;
-            Profile::new(vec![seg], Some(true)).map_err(|e| at(("points".into(), Problem::Geometry(e.to_string()))))?
-        }
-        super::Shape::Analytic(curve::shapes::Shape::Circle(c)) => {
-            let seg = Segment::arc(c.center(), c.r(), 0.0, std::f64::consts::TAU)
-                .map_err(|e| at(("r".into(), Problem::Geometry(e.to_string()))))?;
-            Profile::new(vec![seg], Some(true)).map_err(|e| at(("r".into(), Problem::Geometry(e.to_string()))))?
-        }
-        super::Shape::Analytic(_) => {
-            return Err(at((
-                "kind".into(),
-                Problem::Unsupported(
-                    "a region's boundaries are profiles, closed bezier or bspline curves, circles or full-turn arcs".into(),
-                ),
-            )))
-        }
-        super::Shape::Spline(_) | super::Shape::Region(_) => return Err(not_closed()),
+        super::Shape::Region(_) => return Err(not_closed()),
+        shape => match curve_profile(&shape) {
+            Some(made) => made.map_err(|(field, problem)| (format!("{key}.{field}"), problem))?,
+            None => return Err(not_closed()),
+        },
     };
     if !profile.is_closed() {
         return Err(not_closed());
     }
     Ok(profile)
+}
+
+/// A curve that is not a profile (a spline, an analytic shape, a line or an arc) as the
+/// profile of one segment in the curve's own parameter, cut at its corners; `None` for a
+/// profile or a region. A periodic spline is taken clamped over its domain (the same curve).
+pub(crate) fn curve_profile(shape: &super::Shape) -> Option<Result<Profile, FieldError>> {
+    let geometry =
+        |field: &str, e: curve::Error| (field.to_string(), Problem::Geometry(e.to_string()));
+    let made = match shape {
+        super::Shape::Profile(_) | super::Shape::Region(_) => return None,
+        super::Shape::Segment(s) => {
+            let s = s.as_ref().clone();
+            let domain = s.own_domain();
+            Profile::of_curve(s, domain).map_err(|e| geometry("kind", e))
+        }
+        super::Shape::Spline(s) => {
+            let (a, b) = s.curve.domain();
+            let kind = match s.kind {
+                super::SplineKind::Bezier => SegmentKind::Bezier,
+                super::SplineKind::BSpline => SegmentKind::BSpline,
+            };
+            let segment = if s.periodic {
+                s.curve
+                    .restrict(a, b)
+                    .map_err(curve::Error::from)
+                    .and_then(curve::SplineCurve::new)
+            } else {
+                Ok(s.plane.clone())
+            }
+            .and_then(|c| Segment::spline(kind, c));
+            segment
+                .and_then(|seg| Profile::of_curve(seg, (a, b)))
+                .map_err(|e| geometry("points", e))
+        }
+        super::Shape::Analytic(a) => a
+            .boundary_segment()
+            .and_then(|seg| Profile::of_curve(seg, (0.0, std::f64::consts::TAU)))
+            .map_err(|e| geometry("kind", e)),
+    };
+    Some(made)
 }

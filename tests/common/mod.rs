@@ -74,3 +74,4 @@ pub(crate) fn rounded(v: &Value) -> Value {
         _ => v.clone(),
     }
 }
+pub(crate) mod evaluate;

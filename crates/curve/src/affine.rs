@@ -5,6 +5,7 @@
 //! stay).
 
 use crate::error::{Error, Result};
+use crate::own_param::OwnParam;
 use crate::param::ParamCurve;
 use crate::profile::Profile;
 use crate::region::Region;
@@ -82,7 +83,8 @@ impl Profile {
             .iter()
             .map(|s| s.transformed(map))
             .collect::<Result<Vec<_>>>()?;
-        Profile::new(segments, Some(self.is_closed()))
+        Ok(Profile::new(segments, Some(self.is_closed()))?
+            .with_document_spans(self.document_spans().to_vec()))
     }
 }
 
@@ -130,7 +132,7 @@ impl Segment {
             (SegmentKind::Arc, _) => (SegmentKind::EllipticArc, None),
             (k, _) => (k, None),
         };
-        rebuilt(kind, c, points, false, circle)
+        rebuilt(kind, c, points, false, circle, self.own_param())
     }
 
     /// The same segment run backwards (its parameter `v ↦ a + b − v`).
@@ -138,7 +140,13 @@ impl Segment {
         let c = self.curve();
         let mut points = c.control_points();
         points.reverse();
-        rebuilt(self.kind(), c, points, true, self.circle())
+        // (An arc's pieces are symmetric: its map to the angle share is the same backwards.
+        // An analytic shape's angle is not: run backwards it is a spline of its own.)
+        let own = match self.own_param() {
+            OwnParam::Angle(_) => OwnParam::Same,
+            own => own,
+        };
+        rebuilt(self.kind(), c, points, true, self.circle(), own)
     }
 
     /// The arc of the ellipse with centre `center`, semi-axes `rx`, `ry` (the first along the
@@ -187,7 +195,7 @@ impl Segment {
             (SegmentKind::EllipticArc, None)
         };
         let curve = moved.curve().clone();
-        Ok(Segment::from_parts(kind, curve, circle))
+        Ok(Segment::from_parts(kind, curve, circle, unit.own_param()))
     }
 }
 
@@ -199,6 +207,7 @@ fn rebuilt(
     points: Vec<[f64; 2]>,
     backwards: bool,
     circle: Option<([f64; 2], f64)>,
+    own: OwnParam,
 ) -> Result<Segment> {
     let rational = like.curve();
     let (a, b) = like.domain();
@@ -218,7 +227,7 @@ fn rebuilt(
     }
     let weights = rational.is_rational().then_some(&weights[..]);
     let curve = SplineCurve::clamped(rational.degree(), &points, weights, Some(knots))?;
-    Ok(Segment::from_parts(kind, curve, circle))
+    Ok(Segment::from_parts(kind, curve, circle, own))
 }
 
 #[cfg(test)]

@@ -77,6 +77,16 @@ pub enum Error {
         /// A point where they meet.
         at: [f64; 2],
     },
+    /// Two closed outlines of a drawing cross or touch (their indices).
+    #[error("outlines {first} and {second} meet at ({x}, {y})", x = at[0], y = at[1])]
+    OutlinesCross {
+        /// The first outline.
+        first: usize,
+        /// The second.
+        second: usize,
+        /// A point where they meet.
+        at: [f64; 2],
+    },
     /// A hole not inside the outer boundary.
     #[error("hole {hole} is not inside the outer boundary")]
     HoleOutside {

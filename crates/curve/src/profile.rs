@@ -52,10 +52,27 @@ const AREA_SAMPLES: usize = 32;
 /// The area (relative to the size squared) below which a closed profile encloses nothing.
 const FLAT_AREA: f64 = 1e-12;
 
+/// Where a segment of a profile lies in the parameter its document gives the profile: a
+/// `profile` document's `[0, n)` (segment `i` on `[i, i + 1]`, at its own parameter mapped
+/// linearly), or a curve's own domain (a spline's knots, an analytic shape's angle) for a
+/// curve taken as a profile ([`Profile::of_curve`]). A segment cut at a corner inside it
+/// (a knot of full multiplicity) covers its share of the whole segment's span.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DocumentSpan {
+    /// The document's segment it belongs to.
+    pub segment: usize,
+    /// The document parameter where it starts.
+    pub lo: f64,
+    /// The document parameter where it ends.
+    pub hi: f64,
+}
+
 /// A chain of segments, closed or open, with its joints.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Profile {
     segments: Vec<Segment>,
+    /// Per segment, where it lies in the document's parameter.
+    spans: Vec<DocumentSpan>,
     closed: bool,
     joints: Vec<Joint>,
     /// +1 counterclockwise, −1 clockwise (a closed profile), 0 open.
@@ -74,7 +91,10 @@ impl Profile {
     /// The profile of `segments`, each starting where the previous one ends (within
     /// [`JOIN_GAP`] of the size, or a few units of rounding of the coordinates far from the
     /// origin); closed when `closed` says so, or, when it is `None`, when
-    /// the last segment ends where the first starts.
+    /// the last segment ends where the first starts. A spline segment with a corner inside it
+    /// (a knot of full multiplicity where the tangent turns) is cut there into segments
+    /// joined at that corner; [`Profile::document_param`] gives parameters in the segments as
+    /// given. Errors name segments as given.
     ///
     /// ```
     /// use curve::{JointKind, ParamCurve, Profile, Segment};
@@ -86,6 +106,50 @@ impl Profile {
     /// assert!(sq.joints().iter().all(|j| j.kind == JointKind::Convex));
     /// ```
     pub fn new(segments: Vec<Segment>, closed: Option<bool>) -> Result<Self> {
+        let (segments, spans) = crate::corner_knots::cut_at_corner_knots(segments)?;
+        let given: Vec<usize> = spans.iter().map(|s| s.segment).collect();
+        Self::of_pieces(segments, spans, closed).map_err(|e| {
+            crate::corner_knots::named_as_given(e, |i| given.get(i).copied().unwrap_or(i))
+        })
+    }
+
+    /// A curve (one segment: a closed spline or analytic shape, an open spline) as a profile
+    /// whose parameter is the curve's own: each piece between corners covers its stretch of
+    /// the segment's own domain, mapped linearly onto `domain` (the segment's own domain for
+    /// a spline; `[0, 2π]` for a circle or an ellipse made as a full-turn arc).
+    ///
+    /// ```
+    /// use curve::{ParamCurve, Profile, Segment};
+    /// let circle = Segment::arc([0.0, 0.0], 2.0, 0.0, std::f64::consts::TAU).unwrap();
+    /// let p = Profile::of_curve(circle, (0.0, std::f64::consts::TAU)).unwrap();
+    /// assert!(p.is_closed());
+    /// // A quarter of the way round is the angle π/2, at the top.
+    /// let u = p.internal_param(std::f64::consts::FRAC_PI_2);
+    /// assert!((p.jet(u).p.y - 2.0).abs() < 1e-15);
+    /// ```
+    pub fn of_curve(segment: Segment, domain: (f64, f64)) -> Result<Self> {
+        let (segments, shares) = crate::corner_knots::cut_at_corner_knots(vec![segment])?;
+        // (Each piece's span is its share of the segment: a segment is cut only where its own
+        // parameter is the spline's, linear.)
+        let on_domain = |x: f64| domain.0 + (domain.1 - domain.0) * x;
+        let spans = shares
+            .iter()
+            .map(|s| DocumentSpan {
+                segment: 0,
+                lo: on_domain(s.lo),
+                hi: on_domain(s.hi),
+            })
+            .collect();
+        Self::of_pieces(segments, spans, None)
+            .map_err(|e| crate::corner_knots::named_as_given(e, |_| 0))
+    }
+
+    /// The profile of segments without corners inside them, with their document spans.
+    fn of_pieces(
+        segments: Vec<Segment>,
+        spans: Vec<DocumentSpan>,
+        closed: Option<bool>,
+    ) -> Result<Self> {
         if segments.is_empty() {
             return Err(Error::EmptyProfile);
         }
@@ -175,6 +239,7 @@ impl Profile {
         let piece_boxes = segments.iter().map(crate::clearance::piece_boxes).collect();
         Ok(Self {
             segments,
+            spans,
             closed,
             joints,
             orientation,
@@ -243,6 +308,63 @@ impl Profile {
     pub fn jet_on(&self, i: usize, u: f64, order: usize) -> Jet {
         let x = (u - i as f64).clamp(0.0, 1.0);
         self.segments[i].jet_in_unit(x, order)
+    }
+
+    /// Where each segment lies in the document's parameter.
+    pub fn document_spans(&self) -> &[DocumentSpan] {
+        &self.spans
+    }
+
+    /// The same profile with its document parameter moved onto `spans` (one per segment, in
+    /// order, increasing): for a profile made again from moved or rebuilt segments.
+    pub fn with_document_spans(mut self, spans: Vec<DocumentSpan>) -> Self {
+        if spans.len() == self.segments.len() {
+            self.spans = spans;
+        }
+        self
+    }
+
+    /// The domain of the document's parameter.
+    pub fn document_domain(&self) -> (f64, f64) {
+        let n = self.spans.len();
+        (self.spans[0].lo, self.spans[n - 1].hi)
+    }
+
+    /// The document's parameter at the profile parameter `u` (as its file gives it: an arc's
+    /// angle share, a curve's own parameter; see [`DocumentSpan`]).
+    pub fn document_param(&self, u: f64) -> f64 {
+        let (i, x) = self.locate(u);
+        self.document_param_on(i, x)
+    }
+
+    /// The document's parameter at the share `x ∈ [0, 1]` of segment `i`'s exact form.
+    pub fn document_param_on(&self, i: usize, x: f64) -> f64 {
+        let s = &self.segments[i];
+        let (a, b) = s.curve().domain();
+        let (own_lo, own_hi) = s.own_domain();
+        let own = s.own_at(a + x * (b - a));
+        let span = self.spans[i];
+        span.lo + (span.hi - span.lo) * ((own - own_lo) / (own_hi - own_lo))
+    }
+
+    /// The document's segment index of segment `i` (a segment cut at a corner inside it is
+    /// one segment of its document).
+    pub fn document_segment(&self, i: usize) -> usize {
+        self.spans[i].segment
+    }
+
+    /// The profile parameter of the document's parameter `d` (the inverse of
+    /// [`Profile::document_param`]; clamped to the document's domain).
+    pub fn internal_param(&self, d: f64) -> f64 {
+        let n = self.spans.len();
+        let i = self.spans.partition_point(|s| s.hi <= d).min(n - 1);
+        let span = self.spans[i];
+        let s = &self.segments[i];
+        let (own_lo, own_hi) = s.own_domain();
+        let share = ((d - span.lo) / (span.hi - span.lo)).clamp(0.0, 1.0);
+        let dom = s.curve().domain();
+        let v = s.own_param().form(own_lo + share * (own_hi - own_lo), dom);
+        i as f64 + ((v - dom.0) / (dom.1 - dom.0)).clamp(0.0, 1.0)
     }
 
     /// The profile parameter of segment `i`'s own parameter `v`.

@@ -4,7 +4,6 @@
 
 use crate::crossing::{first_crossing_among, Chain, Outline};
 use crate::error::{Error, Result};
-use crate::geom::V2;
 use crate::param::ParamCurve;
 use crate::profile::Profile;
 
@@ -67,8 +66,8 @@ impl Region {
 
     /// The regions of closed profiles nested inside each other (even-odd): each profile at
     /// an even depth an outer boundary, with the profiles directly inside it as its holes;
-    /// in the order of their outer boundaries. Open profiles are left out. Each region is
-    /// validated as [`Region::new`] does (boundaries that cross are an error).
+    /// in the order of their outer boundaries. Open profiles are left out. Profiles that cross
+    /// are an error ([`Region::filled`] with one group filled even-odd).
     ///
     /// ```
     /// use curve::{Profile, Region, Segment};
@@ -82,42 +81,22 @@ impl Region {
     /// assert_eq!(regions[1].holes().len(), 1); // the washer (outer r = 3) comes second
     /// ```
     pub fn nested(profiles: Vec<Profile>) -> Result<Vec<Region>> {
-        let closed: Vec<Profile> = profiles.into_iter().filter(|p| p.is_closed()).collect();
-        let n = closed.len();
-        let starts: Vec<V2> = closed.iter().map(|p| p.start()).collect();
-        // (Each pair once, before the profiles are moved into their regions.)
-        let outlines: Vec<Outline> = closed
-            .iter()
-            .map(|p| Outline::new(p.segments(), p.size()))
-            .collect();
-        let within = (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| {
-                        if i == j {
-                            return Ok(false);
-                        }
-                        outlines[j].winds_round(starts[i])
-                    })
-                    .collect::<std::result::Result<Vec<bool>, _>>()
+        let outlines = profiles
+            .into_iter()
+            .filter(|p| p.is_closed())
+            .map(|profile| crate::FilledOutline {
+                profile,
+                group: 0,
+                rule: crate::FillRule::EvenOdd,
             })
-            .collect::<std::result::Result<Vec<Vec<bool>>, _>>()?;
-        let inside = |i: usize, j: usize| within[i][j];
-        let depth: Vec<usize> = (0..n)
-            .map(|i| (0..n).filter(|&j| inside(i, j)).count())
             .collect();
-        let mut slots: Vec<Option<Profile>> = closed.into_iter().map(Some).collect();
-        let mut out = Vec::new();
-        for o in (0..n).filter(|&o| depth[o] % 2 == 0) {
-            let holes: Vec<Profile> = (0..n)
-                .filter(|&h| depth[h] == depth[o] + 1 && inside(h, o))
-                .filter_map(|h| slots[h].take())
-                .collect();
-            if let Some(outer) = slots[o].take() {
-                out.push(Region::new(outer, holes)?);
-            }
-        }
-        Ok(out)
+        Region::filled(outlines)
+    }
+
+    /// A region of boundaries already proven closed, apart and nested as [`Region::new`]
+    /// requires.
+    pub(crate) fn checked(outer: Profile, holes: Vec<Profile>) -> Self {
+        Self { outer, holes }
     }
 
     /// The outer boundary.

@@ -5,6 +5,7 @@
 
 use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
+use crate::own_param::OwnParam;
 use crate::param::ParamCurve;
 use crate::spline::SplineCurve;
 use std::f64::consts::{FRAC_PI_2, TAU};
@@ -45,6 +46,8 @@ pub struct Segment {
     /// The centre and radius of a circular arc, as defined (arcs of one circle share them
     /// exactly: a continuum of antipodal pairs between them is proven by their definition).
     circle: Option<([f64; 2], f64)>,
+    /// How the exact form's parameter maps to the segment's own (an arc's angle share).
+    own: OwnParam,
 }
 
 /// The widest angle one rational quadratic piece of an arc spans: a quarter turn keeps its
@@ -76,15 +79,17 @@ impl Segment {
             kind: SegmentKind::Line,
             curve: SplineCurve::clamped(1, &[from, to], None, None)?,
             circle: None,
+            own: OwnParam::Same,
         })
     }
 
     /// The arc of the circle about `center` with radius `r` from the angle `start` to `end`
     /// (radians; counterclockwise when `end > start`, clockwise when `end < start`, at most a
     /// full turn). Its exact form is `k ≤ 4` rational quadratic pieces of equal angle, with
-    /// knots at `i/k` on `[0, 1]`: the parameter is that form's (at `i/k` the point is at the
-    /// angle `start + (i/k)(end − start)`; between knots it runs within a few percent of the
-    /// angle's share). The points are the circle's rounded to doubles.
+    /// knots at `i/k` on `[0, 1]`: the form's parameter (at `i/k` the point is at the angle
+    /// `start + (i/k)(end − start)`; between knots it runs within a few percent of the angle's
+    /// share) is not the arc's own, which is proportional to the angle
+    /// ([`Segment::own_param`] converts). The points are the circle's rounded to doubles.
     ///
     /// ```
     /// use curve::{ParamCurve, Segment};
@@ -155,6 +160,10 @@ impl Segment {
             kind: SegmentKind::Arc,
             curve: SplineCurve::clamped(2, &points, Some(&weights), Some(knots))?,
             circle: Some((center, r)),
+            own: OwnParam::Arc {
+                pieces: k,
+                piece_sweep: step,
+            },
         })
     }
 
@@ -172,21 +181,40 @@ impl Segment {
             kind,
             curve,
             circle: None,
+            own: OwnParam::Same,
         })
     }
 
-    /// A segment from its parts (the caller vouches that `curve` is open, of `kind`, and on
-    /// `circle` where one is given).
+    /// A segment from its parts (the caller vouches that `curve` is of `kind`, on `circle`
+    /// where one is given, and that `own` is how its parameter maps to its own).
     pub(crate) fn from_parts(
         kind: SegmentKind,
         curve: SplineCurve,
         circle: Option<([f64; 2], f64)>,
+        own: OwnParam,
     ) -> Self {
         Self {
             kind,
             curve,
             circle,
+            own,
         }
+    }
+
+    /// How the exact form's parameter maps to the segment's own: the identity but for arcs
+    /// (own parameter proportional to the angle) and analytic shapes (their angle φ).
+    pub fn own_param(&self) -> OwnParam {
+        self.own
+    }
+
+    /// The segment's own parameter at the exact form's parameter `v`.
+    pub fn own_at(&self, v: f64) -> f64 {
+        self.own.own(v, self.curve.domain())
+    }
+
+    /// The domain of the segment's own parameter.
+    pub fn own_domain(&self) -> (f64, f64) {
+        self.own.own_domain(self.curve.domain())
     }
 
     /// The centre and radius of a circular arc as defined (`None` for other kinds): arcs of

@@ -4,7 +4,7 @@
 use super::jets::CircleShape;
 use crate::circle::circle_pieces;
 use bspline::rounding::gamma;
-use bspline::Piecewise;
+use bspline::{BSpline, Piecewise};
 
 /// `s · f` for a constant `s` computed with up to `roundings` roundings from the shape's exact
 /// parameters: the rounding of `s` itself is carried as error of the coefficients.
@@ -61,4 +61,30 @@ pub(super) fn circle_form(shape: CircleShape) -> bspline::Result<Piecewise> {
         }
     };
     Piecewise::stack(&[&nx, &ny, &den])
+}
+
+/// The homogeneous form of [`circle_form`] as one B-spline (knots of full multiplicity at the
+/// quarters, where its pieces meet), with a bound on the error of its coefficients: the
+/// pieces' bounds, and where two pieces' shared end points were rounded apart, their gap.
+pub(super) fn circle_form_spline(shape: CircleShape) -> bspline::Result<(BSpline, f64)> {
+    let form = circle_form(shape)?;
+    let (p, dim, n) = (form.degree(), form.dim(), form.pieces());
+    let mut knots = vec![form.breaks()[0]; p + 1];
+    let mut coefs: Vec<f64> = Vec::with_capacity((n * p + 1) * dim);
+    let mut err = form.max_error();
+    for i in 0..n {
+        let piece = form.piece(i);
+        if i == 0 {
+            coefs.extend_from_slice(&piece[..dim]);
+        } else {
+            let shared = coefs.len() - dim;
+            for c in 0..dim {
+                err = err.max((coefs[shared + c] - piece[c]).abs());
+            }
+            knots.extend(std::iter::repeat_n(form.breaks()[i], p));
+        }
+        coefs.extend_from_slice(&piece[dim..]);
+    }
+    knots.extend(std::iter::repeat_n(form.breaks()[n], p + 1));
+    Ok((BSpline::new(p, knots, dim, coefs)?, err))
 }

@@ -83,7 +83,13 @@ fn basic_shapes_are_read() {
     assert_eq!((sharp.segments().len(), sharp.corners().count()), (4, 4));
     let poly = profile_of(r#"<polygon points="0,0 4,0 4,3"/>"#, None);
     assert!(poly.is_closed() && poly.segments().len() == 3);
-    let open = profile_of(r#"<polyline points="0,0 4,0 4,3"/>"#, None);
+    // A filled polyline is filled as closed (SVG's rule); one drawn with a stroke only is open.
+    let filled = profile_of(r#"<polyline points="0,0 4,0 4,3"/>"#, None);
+    assert!(filled.is_closed() && filled.segments().len() == 3);
+    let open = profile_of(
+        r#"<polyline fill="none" stroke="black" points="0,0 4,0 4,3"/>"#,
+        None,
+    );
     assert!(!open.is_closed());
 }
 
@@ -218,6 +224,15 @@ fn path_data(v: &[V2], round: &[f64], relative: &[bool]) -> Option<(String, Prof
         }
         let reach = round[i] * 0.45 * (b - a).norm().min((c - b).norm());
         let r = reach / (0.5 * turn.abs()).tan();
+        // (An arc far smaller than its coordinates: its end points as written, rounded to
+        // doubles, leave its tangents there uncertain by about ε·|b| / (r cos(turn/2)) (SVG's
+        // centre from the chord magnifies the rounding near a half turn). Where that nears the
+        // contract's 1e-9 rad, the file as written has corners there.)
+        let magnitude = b.x.abs().max(b.y.abs());
+        if f64::EPSILON * magnitude / (r * (0.5 * turn).cos().abs()) > 1e-11 {
+            cut.push((b, b, None));
+            continue;
+        }
         cut.push((b - din * reach, b + dout * reach, Some((r, turn))));
     }
     let start = cut[0].1;
@@ -284,7 +299,7 @@ proptest! {
                 prop_assert!((pa - pb).norm() <= 1e-11 * scale, "{:?} against {:?} in {}", pa, pb, d);
             }
         }
-        prop_assert_eq!(got.corners().count(), want.corners().count());
+        prop_assert_eq!(got.corners().count(), want.corners().count(), "{}", d);
         ROUND_TRIPS.fetch_add(1, Ordering::Relaxed);
         if want.segments().iter().any(|s| s.kind() == SegmentKind::Arc) {
             WITH_ARCS.fetch_add(1, Ordering::Relaxed);

@@ -192,6 +192,7 @@ fn medial_of(
         chord_tol,
         fit,
         exterior,
+        size: None,
     };
     let c = region.get();
     let (axis, summary) = detached(py, || {
@@ -238,8 +239,12 @@ fn offset_of(
         chord_tol,
         fit: false,
         exterior: outward,
+        size: None,
     };
-    let opts = ::offset::OffsetOptions { chord_tol };
+    let opts = ::offset::OffsetOptions {
+        chord_tol,
+        size: None,
+    };
     let c = region.get();
     let (found, summary) = detached(py, || {
         commands::validate_distances(&asked)?;

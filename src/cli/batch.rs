@@ -216,6 +216,7 @@ impl Task {
             chord_tol: b.chord_tol,
             fit: b.fit,
             exterior: b.exterior,
+            size: None,
         };
         match b.command {
             BatchCommand::Antipodal | BatchCommand::Inflections => {

@@ -24,6 +24,7 @@ pub(super) fn run(
         chord_tol,
         fit,
         exterior,
+        size: None,
     };
     commands::validate_medial_options(&opts)?;
     let curve = read_region(path, common.pick)?;

@@ -26,10 +26,14 @@ pub(super) fn run(
         chord_tol,
         fit: false,
         exterior: outward,
+        size: None,
     };
     commands::validate_medial_options(&medial_opts)?;
     commands::validate_distances(distances)?;
-    let opts = OffsetOptions { chord_tol };
+    let opts = OffsetOptions {
+        chord_tol,
+        size: None,
+    };
     let curve = read_region(path, common.pick)?;
     let compute = || commands::offset(&curve, distances, &opts, &medial_opts);
     let found = compute()?;

@@ -18,8 +18,12 @@ pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
         Shape::Spline(s) => (24 * s.n_points).clamp(600, 20_000),
         Shape::Analytic(_) | Shape::Segment(_) => 1200,
         Shape::Profile(p) => (200 * p.segments().len()).clamp(600, 20_000),
-        Shape::Region(r) => {
-            for b in std::iter::once(r.outer()).chain(r.holes()) {
+        Shape::Region(_) | Shape::Regions(_) => {
+            let parts = curve.parts();
+            for b in parts
+                .iter()
+                .flat_map(|r| std::iter::once(r.outer()).chain(r.holes()))
+            {
                 let n = (200 * b.segments().len()).clamp(600, 20_000);
                 let (lo, hi) = b.domain();
                 let pts = (0..=n)
@@ -59,6 +63,11 @@ pub(crate) fn describe(curve: &Curve) -> String {
             p.corners().count()
         ),
         Shape::Region(r) => format!("region, {} holes", r.holes().len()),
+        Shape::Regions(parts) => format!(
+            "{} parts, {} holes",
+            parts.len(),
+            parts.iter().map(|r| r.holes().len()).sum::<usize>()
+        ),
     };
     let closed = if curve.is_closed() { "closed" } else { "open" };
     format!("{shape}, {closed}, domain [{a}, {b}]")

@@ -64,7 +64,7 @@ pub(super) fn antipodal_error(e: antipodal::Error, curves: &[&Curve]) -> Command
                     Shape::Spline(_) => "points",
                     Shape::Analytic(_) | Shape::Segment(_) => "kind",
                     Shape::Profile(_) => "segments",
-                    Shape::Region(_) => "outer",
+                    Shape::Region(_) | Shape::Regions(_) => "outer",
                 }
                 .into(),
                 problem: Problem::Geometry(e.to_string()),

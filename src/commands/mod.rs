@@ -20,6 +20,7 @@
 
 mod errors;
 mod params;
+mod parts;
 
 pub use errors::CommandError;
 use errors::{antipodal_error, refuse, zeroset_error};
@@ -137,6 +138,52 @@ impl Prepared {
     }
 }
 
+/// Results that say whether they are certified: a drawing's doubt makes them not.
+trait Doubted {
+    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>);
+
+    /// Not certified, for `doubt` (where there is one and the result has no reason of its
+    /// own).
+    fn doubted(mut self, doubt: Option<String>) -> Self
+    where
+        Self: Sized,
+    {
+        if let Some(why) = doubt {
+            let (certified, reason) = self.certified_mut();
+            *certified = false;
+            reason.get_or_insert(why);
+        }
+        self
+    }
+}
+
+impl Doubted for InflectionsFound {
+    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>) {
+        match self {
+            InflectionsFound::Curve(f) => (&mut f.certified, &mut f.reason),
+            InflectionsFound::Profile(f) => (&mut f.certified, &mut f.reason),
+        }
+    }
+}
+
+impl Doubted for AntipodalFound {
+    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>) {
+        match self {
+            AntipodalFound::Curve(f) => (&mut f.certified, &mut f.reason),
+            AntipodalFound::Profile(f) => (&mut f.certified, &mut f.reason),
+        }
+    }
+}
+
+impl Doubted for TangentsFound {
+    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>) {
+        match self {
+            TangentsFound::Curve(f) => (&mut f.certified, &mut f.reason),
+            TangentsFound::Profile(f) => (&mut f.certified, &mut f.reason),
+        }
+    }
+}
+
 /// Which algorithms a one-curve command runs: a profile's, or a smooth curve's (prepared).
 enum Route<'a> {
     Profile(&'a Profile),
@@ -181,7 +228,9 @@ fn inflections_of(
             InflectionsFound::Curve(f)
         }),
     };
-    found.map_err(|e| antipodal_error(e, &[curve]))
+    found
+        .map(|f| f.doubted(curve.drawing_doubt()))
+        .map_err(|e| antipodal_error(e, &[curve]))
 }
 
 /// `antipodal` of `curve` on `route`, in the curve's own parameter.
@@ -200,7 +249,9 @@ fn antipodal_of(
             AntipodalFound::Curve(f)
         }),
     };
-    found.map_err(|e| antipodal_error(e, &[curve]))
+    found
+        .map(|f| f.doubted(curve.drawing_doubt()))
+        .map_err(|e| antipodal_error(e, &[curve]))
 }
 
 /// A curve read, shared with its prepared form: the plane curve of its shape.
@@ -283,7 +334,10 @@ pub fn tangents(
             TangentsFound::Curve(f)
         })
     };
-    found.map_err(|e| antipodal_error(e, &both))
+    let doubt = c1.drawing_doubt().or_else(|| c2.drawing_doubt());
+    found
+        .map(|f| f.doubted(doubt))
+        .map_err(|e| antipodal_error(e, &both))
 }
 
 /// Whether a command on several curves runs on profiles: where one is a profile or a spline
@@ -345,29 +399,51 @@ pub fn bisector(
 }
 
 /// The medial axis of a region read (as [`crate::io::read_region`] gives it), its feet in
-/// each boundary's own parameter.
+/// each boundary's own parameter; of every part of a multi-part input, each node and edge
+/// saying its part.
 pub fn medial(
     region: &Curve,
     opts: &medial::MedialOptions,
 ) -> Result<medial::MedialAxis, CommandError> {
-    let mut axis = medial_in_profile_params(region, opts)?;
-    if let Shape::Region(r) = &region.shape {
-        axis.in_document(&params::region_maps(r));
+    let mut axes = axes_of_parts(region, opts)?;
+    for (axis, part) in axes.iter_mut().zip(region.parts()) {
+        axis.in_document(&params::region_maps(part));
     }
-    Ok(axis)
+    Ok(parts::joined_axes(axes, region.drawing_doubt()))
 }
 
-/// The medial axis with its feet in the boundaries' profile parameters, as the offsets take
-/// it.
-fn medial_in_profile_params(
+/// The medial axis of each part, its feet in the boundaries' profile parameters (as the
+/// offsets take it), with the tolerances relative to the size of all the parts together.
+fn axes_of_parts(
     region: &Curve,
     opts: &medial::MedialOptions,
-) -> Result<medial::MedialAxis, CommandError> {
+) -> Result<Vec<medial::MedialAxis>, CommandError> {
     validate_medial_options(opts)?;
-    let Shape::Region(r) = &region.shape else {
+    let parts = region.parts();
+    if parts.is_empty() {
         return Err(refuse(region, "kind", "medial takes a region"));
+    }
+    if opts.exterior && parts.len() > 1 {
+        return Err(refuse(
+            region,
+            "document",
+            &format!(
+                "the exterior axis (--exterior, --outward) of {} parts together is not computed:                  choose one with --pick N (0 to {})",
+                parts.len(),
+                parts.len() - 1
+            ),
+        ));
+    }
+    let opts = medial::MedialOptions {
+        size: Some(parts::size_of(&parts)),
+        ..*opts
     };
-    medial::medial_axis(r, opts).map_err(|e| CommandError::Other(format!("medial: {e}")))
+    parts
+        .iter()
+        .map(|r| {
+            medial::medial_axis(r, &opts).map_err(|e| CommandError::Other(format!("medial: {e}")))
+        })
+        .collect()
 }
 
 /// The distances `offset` is asked for.
@@ -414,18 +490,18 @@ pub fn offset(
 ) -> Result<offset::Offsets, CommandError> {
     validate_distances(distances)?;
     validate_medial_options(medial_opts)?;
-    let axis = medial_in_profile_params(region, medial_opts)?;
-    let Shape::Region(r) = &region.shape else {
-        return Err(refuse(region, "kind", "offset takes a region"));
-    };
+    let axes = axes_of_parts(region, medial_opts)?;
     let list = match distances {
         Distances::List(list) => list.clone(),
         Distances::Step(step) => {
-            let widest = axis
-                .edges
+            let widest = axes
                 .iter()
-                .flat_map(|e| e.radius.iter().copied())
-                .chain(axis.nodes.iter().map(|n| n.radius))
+                .flat_map(|axis| {
+                    axis.edges
+                        .iter()
+                        .flat_map(|e| e.radius.iter().copied())
+                        .chain(axis.nodes.iter().map(|n| n.radius))
+                })
                 .fold(0.0, f64::max);
             let count = (widest / step).floor();
             if count > MAX_OFFSETS as f64 {
@@ -437,12 +513,24 @@ pub fn offset(
             (1..=count as usize).map(|k| k as f64 * step).collect()
         }
     };
-    let found = if medial_opts.exterior {
-        offset::outward_offsets(r, &axis, &list, opts)
-    } else {
-        offset::offsets(r, &axis, &list, opts)
+    let parts = region.parts();
+    let opts = offset::OffsetOptions {
+        size: Some(parts::size_of(&parts)),
+        ..*opts
     };
-    found.map_err(|e| CommandError::Usage(format!("offset: {e}")))
+    let found = parts
+        .iter()
+        .zip(&axes)
+        .map(|(r, axis)| {
+            if medial_opts.exterior {
+                offset::outward_offsets(r, axis, &list, &opts)
+            } else {
+                offset::offsets(r, axis, &list, &opts)
+            }
+            .map_err(|e| CommandError::Usage(format!("offset: {e}")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(parts::joined_offsets(found, region.drawing_doubt()))
 }
 
 /// One JSON document, as the tool prints it with `--json`: the result's own fields (as the
@@ -462,6 +550,18 @@ pub fn json_document_of(
 ) -> String {
     let mut doc = serde_json::to_value(result).unwrap_or(Value::Null);
     if let Some(map) = doc.as_object_mut() {
+        // (The contract's "Nothing is dropped silently": for a drawing, what was not read and
+        // its units, beside the result's own fields.)
+        let drawings: Vec<&DrawingSummary> =
+            curves.iter().filter_map(|c| c.drawing.as_ref()).collect();
+        if !drawings.is_empty() {
+            let skipped: Vec<&crate::io::Skipped> =
+                drawings.iter().flat_map(|d| &d.skipped).collect();
+            map.insert("skipped".into(), json!(skipped));
+            if let Some(units) = drawings.iter().find_map(|d| d.units.as_ref()) {
+                map.insert("units".into(), json!(units));
+            }
+        }
         match curves {
             [one] => {
                 map.insert("curve".into(), json!(one));
@@ -488,6 +588,19 @@ pub struct CurveSummary {
     pub closed: bool,
     /// The parameter domain.
     pub domain: [f64; 2],
+    /// For a drawing, what was not read and its units (written beside the result's fields,
+    /// not in the curve's).
+    #[serde(skip)]
+    pub drawing: Option<DrawingSummary>,
+}
+
+/// What a drawing said besides its geometry, as a result carries it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DrawingSummary {
+    /// What was not read, by type.
+    pub skipped: Vec<crate::io::Skipped>,
+    /// The unit of the coordinates, where the drawing says.
+    pub units: Option<String>,
 }
 
 impl CurveSummary {
@@ -499,6 +612,10 @@ impl CurveSummary {
             kind: curve.kind().into(),
             closed: curve.is_closed(),
             domain: [a, b],
+            drawing: curve.drawing.as_ref().map(|d| DrawingSummary {
+                skipped: d.skipped.clone(),
+                units: d.units.clone(),
+            }),
         }
     }
 }
@@ -528,14 +645,31 @@ pub fn validate_medial_options(opts: &medial::MedialOptions) -> Result<(), Comma
 
 /// A region is no curve: the commands on curves refuse it by name.
 fn one_curve(curves: &[&Curve], command: &str) -> Result<(), CommandError> {
-    match curves.iter().find(|c| matches!(c.shape, Shape::Region(_))) {
-        Some(c) => Err(refuse(
-            c,
-            "kind",
-            &format!("{command} takes a curve or a profile, not a region"),
-        )),
-        None => Ok(()),
+    for c in curves {
+        match &c.shape {
+            Shape::Region(_) => {
+                return Err(refuse(
+                    c,
+                    "kind",
+                    &format!("{command} takes a curve or a profile, not a region"),
+                ))
+            }
+            Shape::Regions(parts) => {
+                return Err(refuse(
+                    c,
+                    "kind",
+                    &format!(
+                        "{command} takes one curve, and the input holds {} parts: choose one \
+                         with --pick N (0 to {})",
+                        parts.len(),
+                        parts.len() - 1
+                    ),
+                ))
+            }
+            _ => {}
+        }
     }
+    Ok(())
 }
 
 /// A curve as a profile: itself, or the profile of one segment in the curve's own parameter
@@ -543,7 +677,7 @@ fn one_curve(curves: &[&Curve], command: &str) -> Result<(), CommandError> {
 pub fn as_profile(c: &Curve, command: &str) -> Result<Profile, CommandError> {
     match &c.shape {
         Shape::Profile(p) => Ok(p.as_ref().clone()),
-        Shape::Region(_) => Err(refuse(
+        Shape::Region(_) | Shape::Regions(_) => Err(refuse(
             c,
             "kind",
             &format!("{command} takes a curve or a profile, not a region"),

@@ -4,7 +4,8 @@
 //! `--pick N` chooses.
 
 use super::{Curve, CurveFileError, Problem, Shape, MAX_SEGMENTS};
-use curve::{Profile, Segment};
+use curve::{FillRule, Profile, Segment};
+use serde::Serialize;
 
 /// Chains one file may hold (each is checked, and a command's work grows with them).
 pub const MAX_CHAINS: usize = 10_000;
@@ -18,10 +19,74 @@ pub struct Chain {
     pub segments: Vec<Segment>,
     /// Closed as drawn (an SVG `Z`, a DXF closed flag), or `None` to decide by the ends.
     pub closed: Option<bool>,
+    /// The group it is filled with (an SVG element; 0 for a DXF drawing): a drawing is the
+    /// union of its groups' fills ([`curve::Region::filled`]).
+    pub group: usize,
+    /// The group's fill rule (even-odd nesting for outlines drawn without fill, and DXF).
+    pub rule: FillRule,
+}
+
+/// What a drawing's reader found: its chains, what it did not read, and its units.
+#[derive(Debug, Clone, Default)]
+pub struct DrawingRead {
+    /// The chains, in the order of their first entity or element in the file.
+    pub chains: Vec<Chain>,
+    /// What was not read, by type, in the order first met.
+    pub skipped: Vec<Skipped>,
+    /// The unit of the coordinates, where the drawing says (`mm`, `in`, …).
+    pub units: Option<String>,
+}
+
+/// Entities or elements of one type that a reader did not read (the contract's `skipped`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Skipped {
+    /// The type: a DXF entity type (`TEXT`, `INSERT`), an SVG element (`text`), or what a
+    /// reader left out of the outlines (`open chain`).
+    #[serde(rename = "type")]
+    pub kind: String,
+    /// How many.
+    pub count: usize,
+    /// Whether they could be part of an outline (a curve, a 3D polyline off the plane, a block
+    /// that could not be expanded): then no answer on the drawing is certified.
+    #[serde(skip)]
+    pub outline: bool,
+    /// The first one's name and why it was not read, for the reason an answer gives.
+    #[serde(skip)]
+    pub first: String,
+}
+
+impl DrawingRead {
+    /// Counts one more of `kind` not read (`outline`: it could be part of an outline; `why`:
+    /// its name and why, kept for the first of its type).
+    pub fn skip(&mut self, kind: &str, outline: bool, why: impl FnOnce() -> String) {
+        match self.skipped.iter_mut().find(|s| s.kind == kind) {
+            Some(s) => {
+                s.count += 1;
+                s.outline |= outline;
+            }
+            None => self.skipped.push(Skipped {
+                kind: kind.to_string(),
+                count: 1,
+                outline,
+                first: why(),
+            }),
+        }
+    }
+}
+
+/// A chain's profile, with its name and how it is filled.
+pub(super) struct DrawnProfile {
+    pub(super) profile: Profile,
+    pub(super) name: String,
+    pub(super) group: usize,
+    pub(super) rule: FillRule,
 }
 
 /// The profile of each chain, in order.
-pub(super) fn profiles(file: &str, chains: Vec<Chain>) -> Result<Vec<Profile>, CurveFileError> {
+pub(super) fn profiles(
+    file: &str,
+    chains: Vec<Chain>,
+) -> Result<Vec<DrawnProfile>, CurveFileError> {
     if chains.len() > MAX_CHAINS {
         return Err(error(
             file,
@@ -45,7 +110,7 @@ pub(super) fn profiles(file: &str, chains: Vec<Chain>) -> Result<Vec<Profile>, C
                     },
                 ));
             }
-            Profile::new(c.segments, c.closed).map_err(|e| {
+            let profile = Profile::new(c.segments, c.closed).map_err(|e| {
                 let field = match e {
                     curve::Error::Gap { segment, .. }
                     | curve::Error::ZeroLength { segment }
@@ -56,6 +121,12 @@ pub(super) fn profiles(file: &str, chains: Vec<Chain>) -> Result<Vec<Profile>, C
                     _ => c.name.clone(),
                 };
                 error(file, &field, Problem::Geometry(e.to_string()))
+            })?;
+            Ok(DrawnProfile {
+                profile,
+                name: c.name,
+                group: c.group,
+                rule: c.rule,
             })
         })
         .collect()
@@ -74,10 +145,7 @@ pub(super) fn pick_profile(
         "profiles",
         "the file holds no usable geometry",
     )?;
-    Ok(Curve {
-        file: file.to_string(),
-        shape: Shape::Profile(Box::new(p)),
-    })
+    Ok(Curve::new(file, Shape::Profile(Box::new(p))))
 }
 
 /// The one item of a drawing (`what`: what they are, plural), or the `pick`-th (from 0);

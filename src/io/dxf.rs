@@ -59,10 +59,10 @@
 //! their first entity in the file and named after it: its type and handle (`LINE 2F`), or its
 //! place in the `ENTITIES` section when it has no handle (`LINE #3`, from 1).
 
-use super::drawing::{error, Chain};
+use super::drawing::{error, Chain, DrawingRead};
 use super::{CurveFileError, Problem, MAX_ABS, MAX_DEGREE, MAX_SEGMENTS};
 use bspline::{BSpline, Rational};
-use curve::{Affine, Segment, SegmentKind, SplineCurve, JOIN_GAP, V2};
+use curve::{Affine, FillRule, Segment, SegmentKind, SplineCurve, JOIN_GAP, V2};
 use dxf::entities::{Entity, EntityType};
 use std::borrow::Cow;
 use std::collections::VecDeque;
@@ -120,8 +120,9 @@ const READ_TYPES: [&str; 7] = [
 ];
 
 /// The chains of segments of an ASCII DXF drawing, in the order of their first entities in the
-/// file (see the module documentation); empty when it holds no geometry that is read.
-pub(super) fn chains(file: &str, bytes: &[u8]) -> Result<Vec<Chain>, CurveFileError> {
+/// file (see the module documentation); empty when it holds no geometry that is read. One
+/// group, filled even-odd: outlines nested inside each other alternate between part and hole.
+pub(super) fn read(file: &str, bytes: &[u8]) -> Result<DrawingRead, CurveFileError> {
     let fail = |field: &str, problem: Problem| error(file, field, problem);
     if bytes.starts_with(b"AutoCAD Binary DXF") || bytes.starts_with(b"AutoCAD DXB") {
         return Err(fail(
@@ -157,7 +158,11 @@ pub(super) fn chains(file: &str, bytes: &[u8]) -> Result<Vec<Chain>, CurveFileEr
         .map(|item| item.piece(tol.join))
         .collect::<Result<Vec<_>, _>>()
         .map_err(|(field, p)| fail(&field, p))?;
-    chain_pieces(pieces, &tol).map_err(|(field, p)| fail(&field, p))
+    let chains = chain_pieces(pieces, &tol).map_err(|(field, p)| fail(&field, p))?;
+    Ok(DrawingRead {
+        chains,
+        ..DrawingRead::default()
+    })
 }
 
 /// An error before the file name is attached: (field, problem).
@@ -1152,6 +1157,8 @@ fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain
                     name: p.name,
                     segments: p.segments,
                     closed,
+                    group: 0,
+                    rule: FillRule::EvenOdd,
                 },
             )),
         }
@@ -1368,6 +1375,8 @@ fn chain_pieces(pieces: Vec<Option<Piece>>, tol: &Tolerance) -> Result<Vec<Chain
                 name: name.clone(),
                 segments,
                 closed: closed.then_some(true),
+                group: 0,
+                rule: FillRule::EvenOdd,
             },
         ));
     }

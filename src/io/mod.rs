@@ -19,8 +19,8 @@ mod regions;
 mod spline;
 mod svg;
 
-pub use drawing::{Chain, MAX_CHAINS};
-pub use profile::{MAX_HOLES, MAX_SEGMENTS};
+pub use drawing::{Chain, DrawingRead, Skipped, MAX_CHAINS};
+pub use profile::{MAX_HOLES, MAX_PARTS, MAX_SEGMENTS};
 
 /// Largest accepted magnitude of any number: keeps products of several coordinates (curvature
 /// numerators are cubic in the homogeneous points) far from overflow.
@@ -120,8 +120,8 @@ pub enum Problem {
     Overflow,
 }
 
-const KINDS: &str =
-    "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities, line, arc, profile, region";
+const KINDS: &str = "bezier, bspline, circle, ellipse, limacon, elliptic_lemniscate, convexities, \
+     line, arc, profile, region, regions";
 
 /// Which spline kind a file used.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -164,6 +164,9 @@ pub enum Shape {
     Profile(Box<curve::Profile>),
     /// `region`: an outer closed boundary and holes.
     Region(Box<curve::Region>),
+    /// `regions`, or a drawing of several parts: disjoint regions, each with its holes (two or
+    /// more; one part is a [`Shape::Region`]).
+    Regions(Vec<curve::Region>),
 }
 
 /// A validated curve with the name of the file it came from.
@@ -173,6 +176,64 @@ pub struct Curve {
     pub file: String,
     /// The curve.
     pub shape: Shape,
+    /// What a drawing said besides its geometry (`None` for a curve file).
+    pub drawing: Option<DrawingInfo>,
+}
+
+/// What a drawing says besides the geometry read from it (the contract's "Nothing is dropped
+/// silently").
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DrawingInfo {
+    /// What was not read, by type.
+    pub skipped: Vec<Skipped>,
+    /// The unit of its coordinates, where it says.
+    pub units: Option<String>,
+}
+
+impl DrawingInfo {
+    /// Why no answer on the drawing can be certified: something not read could be part of an
+    /// outline (named, with why).
+    pub fn doubt(&self) -> Option<String> {
+        let names: Vec<&str> = self
+            .skipped
+            .iter()
+            .filter(|s| s.outline)
+            .map(|s| s.first.as_str())
+            .collect();
+        (!names.is_empty()).then(|| {
+            format!(
+                "the drawing holds what could be part of an outline and was not read: {}",
+                names.join("; ")
+            )
+        })
+    }
+}
+
+impl Curve {
+    /// A curve read from a curve file (no drawing information).
+    pub fn new(file: impl Into<String>, shape: Shape) -> Self {
+        Self {
+            file: file.into(),
+            shape,
+            drawing: None,
+        }
+    }
+
+    /// Why no answer on this input can be certified: its drawing held something that could
+    /// be part of an outline and was not read.
+    pub fn drawing_doubt(&self) -> Option<String> {
+        self.drawing.as_ref().and_then(DrawingInfo::doubt)
+    }
+
+    /// The regions of a region input: its one region, or the parts of a multi-part input;
+    /// empty for a curve.
+    pub fn parts(&self) -> Vec<&curve::Region> {
+        match &self.shape {
+            Shape::Region(r) => vec![r.as_ref()],
+            Shape::Regions(parts) => parts.iter().collect(),
+            _ => Vec::new(),
+        }
+    }
 }
 
 impl Curve {
@@ -185,6 +246,7 @@ impl Curve {
             Shape::Segment(s) => s.kind().name(),
             Shape::Profile(_) => "profile",
             Shape::Region(_) => "region",
+            Shape::Regions(_) => "regions",
         }
     }
 
@@ -195,7 +257,7 @@ impl Curve {
             Shape::Analytic(_) => true,
             Shape::Segment(s) => s.is_closed(),
             Shape::Profile(p) => p.is_closed(),
-            Shape::Region(_) => true,
+            Shape::Region(_) | Shape::Regions(_) => true,
         }
     }
 
@@ -207,6 +269,7 @@ impl Curve {
             Shape::Segment(s) => s.own_domain(),
             Shape::Profile(p) => p.document_domain(),
             Shape::Region(r) => r.outer().document_domain(),
+            Shape::Regions(parts) => parts[0].outer().document_domain(),
         }
     }
 
@@ -220,6 +283,7 @@ impl Curve {
             // (Commands that need one curve refuse a region; figures draw its outer boundary
             // here and its holes beside it.)
             Shape::Region(r) => r.outer(),
+            Shape::Regions(parts) => parts[0].outer(),
         }
     }
 
@@ -230,6 +294,10 @@ impl Curve {
             Shape::Segment(s) => s.jet(s.own_param().form(u, s.domain())).p.arr(),
             Shape::Profile(p) => p.jet(p.internal_param(u)).p.arr(),
             Shape::Region(r) => r.outer().jet(r.outer().internal_param(u)).p.arr(),
+            Shape::Regions(parts) => {
+                let outer = parts[0].outer();
+                outer.jet(outer.internal_param(u)).p.arr()
+            }
             Shape::Spline(_) | Shape::Analytic(_) => self.plane_curve().jet(u).p.arr(),
         }
     }
@@ -239,7 +307,7 @@ impl Curve {
         match &self.shape {
             Shape::Spline(s) => Some(&s.curve),
             Shape::Segment(s) => Some(s.curve().curve()),
-            Shape::Analytic(_) | Shape::Profile(_) | Shape::Region(_) => None,
+            Shape::Analytic(_) | Shape::Profile(_) | Shape::Region(_) | Shape::Regions(_) => None,
         }
     }
 
@@ -292,8 +360,8 @@ pub fn parse_region(
     pick: Option<usize>,
 ) -> Result<Curve, CurveFileError> {
     if let Some(format) = format {
-        let profiles = drawing::profiles(file, drawing_chains(file, format, bytes)?)?;
-        return regions::pick_region(file, profiles, pick);
+        let read = drawing_read(file, format, bytes)?;
+        return regions::pick_region(file, read, pick);
     }
     let text = std::str::from_utf8(bytes).map_err(|e| {
         drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
@@ -304,18 +372,17 @@ pub fn parse_region(
         field,
         problem,
     };
-    let region = match &c.shape {
-        Shape::Region(r) => r.as_ref().clone(),
+    let shape = match c.shape {
+        Shape::Region(r) => Shape::Region(r),
+        Shape::Regions(parts) => regions::picked_part(file, parts, pick)?,
         shape => {
-            let outer = profile::boundary_of("curve", shape.clone()).map_err(fail)?;
-            curve::Region::new(outer, Vec::new())
-                .map_err(|e| fail(("curve".into(), Problem::Geometry(e.to_string()))))?
+            let outer = profile::boundary_of("curve", shape).map_err(fail)?;
+            let region = curve::Region::new(outer, Vec::new())
+                .map_err(|e| fail(("curve".into(), Problem::Geometry(e.to_string()))))?;
+            Shape::Region(Box::new(region))
         }
     };
-    Ok(Curve {
-        file: c.file,
-        shape: Shape::Region(Box::new(region)),
-    })
+    Ok(Curve::new(c.file, shape))
 }
 
 /// Reads and validates a curve file, or a drawing (see [`read_curve_picked`]).
@@ -386,24 +453,34 @@ pub fn parse_drawing(
     bytes: &[u8],
     pick: Option<usize>,
 ) -> Result<Curve, CurveFileError> {
-    let chains = drawing_chains(file, format, bytes)?;
-    drawing::pick_profile(file, drawing::profiles(file, chains)?, pick)
+    let read = drawing_read(file, format, bytes)?;
+    let info = DrawingInfo {
+        skipped: read.skipped,
+        units: read.units,
+    };
+    let profiles = drawing::profiles(file, read.chains)?
+        .into_iter()
+        .map(|d| d.profile)
+        .collect();
+    let mut curve = drawing::pick_profile(file, profiles, pick)?;
+    curve.drawing = Some(info);
+    Ok(curve)
 }
 
-/// The chains of a drawing's bytes.
-fn drawing_chains(
+/// What a drawing's bytes hold.
+fn drawing_read(
     file: &str,
     format: DrawingFormat,
     bytes: &[u8],
-) -> Result<Vec<Chain>, CurveFileError> {
+) -> Result<DrawingRead, CurveFileError> {
     match format {
         DrawingFormat::Svg => {
             let text = std::str::from_utf8(bytes).map_err(|e| {
                 drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
             })?;
-            svg::chains(file, text)
+            svg::read(file, text)
         }
-        DrawingFormat::Dxf => dxf::chains(file, bytes),
+        DrawingFormat::Dxf => dxf::read(file, bytes),
     }
 }
 
@@ -442,10 +519,7 @@ pub fn parse_curve(file: &str, text: &str) -> Result<Curve, CurveFileError> {
         return Err(err(&key, Problem::Duplicate));
     }
     let shape = parse_shape(&map).map_err(|(field, problem)| err(&field, problem))?;
-    Ok(Curve {
-        file: file.to_string(),
-        shape,
-    })
+    Ok(Curve::new(file, shape))
 }
 
 /// An error before the file name is attached: (field, problem).
@@ -466,8 +540,10 @@ pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError>
         "convexities" => &["p", "eps", "m"],
         "line" => &["from", "to"],
         "arc" => &["center", "r", "start", "end"],
-        "profile" => &["segments", "closed"],
+        // (`part`: which part of a multi-part input an offset loop belongs to.)
+        "profile" => &["segments", "closed", "part"],
         "region" => &["outer", "holes"],
+        "regions" => &["parts"],
         other => return Err(("kind".into(), Problem::UnknownKind(other.to_string()))),
     };
     // Reject unknown fields first: a typo'd optional field must not pass silently.
@@ -482,6 +558,7 @@ pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError>
         }
         "profile" => return profile::parse_profile(&f).map(|p| Shape::Profile(Box::new(p))),
         "region" => return profile::parse_region(&f).map(|r| Shape::Region(Box::new(r))),
+        "regions" => return profile::parse_regions(&f),
         "circle" => {
             let center = f.opt_point("center")?.unwrap_or([0.0, 0.0]);
             Analytic::Circle(shape("r", Circle::new(f.positive("r")?, center))?)

@@ -147,6 +147,91 @@ pub(super) fn parse_region(f: &Fields<'_>) -> Result<Region, FieldError> {
     })
 }
 
+/// Most parts a `regions` document may have (each a region the commands visit).
+pub const MAX_PARTS: usize = 10_000;
+
+/// A `regions` object (unknown fields were already rejected): `parts`, each a `region` (or a
+/// closed curve), disjoint (a part may lie in another's hole). One part is a region.
+pub(super) fn parse_regions(f: &Fields<'_>) -> Result<super::Shape, FieldError> {
+    let items = match f.require("parts")? {
+        Value::Array(items) if !items.is_empty() && items.len() <= MAX_PARTS => items,
+        Value::Array(items) => {
+            return Err((
+                "parts".into(),
+                Problem::OutOfRange {
+                    rule: format!("1 to {MAX_PARTS} parts"),
+                    value: items.len() as f64,
+                },
+            ))
+        }
+        v => return Err(wrong_type("parts", "an array of regions", v)),
+    };
+    let mut parts = Vec::with_capacity(items.len());
+    for (k, v) in items.iter().enumerate() {
+        let key = format!("parts[{k}]");
+        let at = |(field, problem): FieldError| (format!("{key}.{field}"), problem);
+        let Value::Object(map) = v else {
+            return Err(wrong_type(&key, "a region object", v));
+        };
+        let region = match super::parse_shape(map).map_err(at)? {
+            super::Shape::Region(r) => *r,
+            shape => {
+                let outer = boundary_of(&key, shape)?;
+                Region::new(outer, Vec::new())
+                    .map_err(|e| (key.clone(), Problem::Geometry(e.to_string())))?
+            }
+        };
+        parts.push(region);
+    }
+    disjoint(&parts)?;
+    Ok(match parts.len() {
+        1 => super::Shape::Region(Box::new(parts.swap_remove(0))),
+        _ => super::Shape::Regions(parts),
+    })
+}
+
+/// Checks that parts are disjoint: their boundaries, nested even-odd, give back the parts.
+fn disjoint(parts: &[Region]) -> Result<(), FieldError> {
+    let mut owner = Vec::new();
+    let outlines: Vec<curve::FilledOutline> = parts
+        .iter()
+        .enumerate()
+        .flat_map(|(k, r)| {
+            std::iter::once(r.outer())
+                .chain(r.holes())
+                .map(move |b| (k, b.clone()))
+        })
+        .map(|(k, profile)| {
+            owner.push(k);
+            curve::FilledOutline {
+                profile,
+                group: 0,
+                rule: curve::FillRule::EvenOdd,
+            }
+        })
+        .collect();
+    let nested = Region::filled(outlines).map_err(|e| {
+        let named = match e {
+            curve::Error::OutlinesCross { first, second, at } => format!(
+                "parts {} and {} meet at ({}, {})",
+                owner[first], owner[second], at[0], at[1]
+            ),
+            e => e.to_string(),
+        };
+        ("parts".to_string(), Problem::Geometry(named))
+    })?;
+    let holes = |rs: &[Region]| rs.iter().map(|r| r.holes().len()).sum::<usize>();
+    if nested.len() != parts.len() || holes(&nested) != holes(parts) {
+        return Err((
+            "parts".into(),
+            Problem::Geometry(
+                "the parts overlap: a part lies inside another (outside its holes)".into(),
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// One boundary of a region, as a closed profile; `key` names it in errors.
 fn boundary(key: &str, v: &Value) -> Result<Profile, FieldError> {
     let at = |(field, problem): FieldError| (format!("{key}.{field}"), problem);
@@ -171,7 +256,7 @@ pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, Fie
     };
     let profile = match shape {
         super::Shape::Profile(p) => *p,
-        super::Shape::Region(_) => return Err(not_closed()),
+        super::Shape::Region(_) | super::Shape::Regions(_) => return Err(not_closed()),
         shape => match curve_profile(&shape) {
             Some(made) => made.map_err(|(field, problem)| (format!("{key}.{field}"), problem))?,
             None => return Err(not_closed()),
@@ -190,7 +275,9 @@ pub(crate) fn curve_profile(shape: &super::Shape) -> Option<Result<Profile, Fiel
     let geometry =
         |field: &str, e: curve::Error| (field.to_string(), Problem::Geometry(e.to_string()));
     let made = match shape {
-        super::Shape::Profile(_) | super::Shape::Region(_) => return None,
+        super::Shape::Profile(_) | super::Shape::Region(_) | super::Shape::Regions(_) => {
+            return None
+        }
         super::Shape::Segment(s) => {
             let s = s.as_ref().clone();
             let domain = s.own_domain();

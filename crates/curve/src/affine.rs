@@ -5,6 +5,7 @@
 //! stay).
 
 use crate::error::{Error, Result};
+use crate::geom::V2;
 use crate::own_param::OwnParam;
 use crate::param::ParamCurve;
 use crate::profile::Profile;
@@ -135,6 +136,34 @@ impl Segment {
         rebuilt(kind, c, points, false, circle, self.own_param())
     }
 
+    /// The segment with its first point moved to `start` and its last to `end` (where given):
+    /// how a drawing reader closes a gap within the drawing's tolerance. Only the end control
+    /// points move, weights and knots stay; an arc whose ends move is no longer circular (a
+    /// rational quadratic spline, its parameter its own).
+    pub fn with_ends(&self, start: Option<V2>, end: Option<V2>) -> Result<Segment> {
+        let c = self.curve();
+        let mut points = c.control_points();
+        let n = points.len();
+        let old = (points[0], points[n - 1]);
+        if let Some(p) = start {
+            points[0] = p.arr();
+        }
+        if let Some(p) = end {
+            points[n - 1] = p.arr();
+        }
+        if (points[0], points[n - 1]) == old {
+            return Ok(self.clone());
+        }
+        if self.kind() == SegmentKind::Line {
+            return Segment::line(points[0], points[n - 1]);
+        }
+        let (kind, own) = match self.kind() {
+            SegmentKind::Arc | SegmentKind::EllipticArc => (SegmentKind::BSpline, OwnParam::Same),
+            kind => (kind, self.own_param()),
+        };
+        rebuilt(kind, c, points, false, None, own)
+    }
+
     /// The same segment run backwards (its parameter `v ↦ a + b − v`).
     pub fn reversed(&self) -> Result<Segment> {
         let c = self.curve();
@@ -233,7 +262,6 @@ fn rebuilt(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geom::V2;
     use proptest::prelude::*;
     use std::f64::consts::TAU;
 

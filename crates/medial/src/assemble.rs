@@ -194,6 +194,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
                 xy: at.xy,
                 radius: at.radius,
                 kind,
+                part: None,
             });
         }
         id[c]
@@ -212,6 +213,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
             feet: c.vertices.iter().map(|v| v.tr).collect(),
             boundary: c.boundary.clone(),
             bspline: None,
+            part: None,
         });
     }
     // Single points make the axis only where it has no edge (the centre of a disk): the

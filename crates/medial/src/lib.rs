@@ -61,6 +61,10 @@ pub struct MedialOptions {
     /// its outer boundary and inside its holes), clipped to the region's box grown by half
     /// its size on every side.
     pub exterior: bool,
+    /// The size the relative tolerances are taken of (the contract's: max(width, height) of
+    /// the bounding box of all the input's curves, for one part of a multi-part input);
+    /// `None`: the region's own ([`curve::Region::size`]).
+    pub size: Option<f64>,
 }
 
 impl Default for MedialOptions {
@@ -70,6 +74,7 @@ impl Default for MedialOptions {
             chord_tol: zeroset::DEFAULT_CHORD_TOL,
             fit: false,
             exterior: false,
+            size: None,
         }
     }
 }
@@ -101,6 +106,9 @@ pub struct Node {
     pub radius: f64,
     /// What it is.
     pub kind: NodeKind,
+    /// The part of a multi-part input it belongs to (absent for one part).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub part: Option<usize>,
 }
 
 /// An edge of the axis: a polyline from one node to another.
@@ -121,6 +129,9 @@ pub struct Edge {
     /// The edge as a B-spline of the axis and the radius (with [`MedialOptions::fit`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bspline: Option<EdgeSpline>,
+    /// The part of a multi-part input it belongs to (absent for one part).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub part: Option<usize>,
 }
 
 /// The medial axis of a region.
@@ -161,7 +172,10 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
 /// The medial axis of `region`, from the bisectors of the pairs of segments that can share
 /// an empty disk (`prune`) or of every pair.
 fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialAxis> {
-    let sites = sites::Sites::new(region, opts.exterior);
+    let mut sites = sites::Sites::new(region, opts.exterior);
+    if let Some(size) = opts.size {
+        sites.size = size;
+    }
     let traced = MedialOptions {
         chord_tol: if opts.fit {
             0.5 * opts.chord_tol

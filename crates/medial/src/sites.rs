@@ -39,7 +39,8 @@ pub(crate) struct Sites<'a> {
     /// Per boundary, the profile parameters where its pieces start (segments, and the knot
     /// spans of spline segments), in order.
     piece_starts: Vec<Vec<f64>>,
-    /// max(width, height) of the region's box, the scale of the relative tolerances.
+    /// max(width, height) of the region's box (of its points), the scale of the relative
+    /// tolerances.
     pub(crate) size: f64,
     /// The diagonal of that box.
     pub(crate) diagonal: f64,
@@ -83,7 +84,8 @@ impl<'a> Sites<'a> {
                 hi[k] = hi[k].max(p[k]);
             }
         }
-        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let bounds = region.bounding_box();
+        let size = curve::box_size(bounds);
         let grow = CLIP_GROWTH * size;
         let piece_starts = boundaries
             .iter()
@@ -107,7 +109,12 @@ impl<'a> Sites<'a> {
             piece_starts,
             inside_left,
             exterior,
-            clip: exterior.then_some([lo[0] - grow, lo[1] - grow, hi[0] + grow, hi[1] + grow]),
+            clip: exterior.then_some([
+                bounds[0] - grow,
+                bounds[1] - grow,
+                bounds[2] + grow,
+                bounds[3] + grow,
+            ]),
             outer_box: [lo[0], lo[1], hi[0], hi[1]],
             size,
             diagonal: (hi[0] - lo[0]).hypot(hi[1] - lo[1]),

@@ -413,9 +413,9 @@ fn shaped_like_the_region(a: &MedialAxis, holes: usize) -> bool {
     components == 1 && a.edges.len() + 1 == n + holes
 }
 
+/// The contract's size: max(width, height) of the region's bounding box (of its points).
 fn size_of(region: &Region) -> f64 {
-    let (lo, hi) = control_box(region);
-    (hi[0] - lo[0]).max(hi[1] - lo[1])
+    region.size()
 }
 
 /// Every this many random regions, the axis is also fitted (`fit`) and the oracle's points
@@ -447,12 +447,12 @@ fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseErr
     let a = medial_axis(region, &opts).unwrap();
     prop_assert!(a.complete);
     let size = size_of(region);
-    let (lo, hi) = control_box(region);
+    let [lo_x, lo_y, hi_x, hi_y] = region.bounding_box();
     let clip = [
-        lo[0] - 0.5 * size,
-        lo[1] - 0.5 * size,
-        hi[0] + 0.5 * size,
-        hi[1] + 0.5 * size,
+        lo_x - 0.5 * size,
+        lo_y - 0.5 * size,
+        hi_x + 0.5 * size,
+        hi_y + 0.5 * size,
     ];
     let slack = 1e-9 * size;
     for e in &a.edges {
@@ -497,23 +497,6 @@ fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseErr
         prop_assert!(edge, "clip node {:?} not on the box {clip:?}", n.xy);
     }
     Ok(())
-}
-
-/// The box of the outer boundary's control points.
-fn control_box(region: &Region) -> ([f64; 2], [f64; 2]) {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for q in region
-        .outer()
-        .segments()
-        .iter()
-        .flat_map(|s| s.curve().control_points())
-    {
-        for k in 0..2 {
-            lo[k] = lo[k].min(q[k]);
-            hi[k] = hi[k].max(q[k]);
-        }
-    }
-    (lo, hi)
 }
 
 fn check(region: &Region) -> Result<(), TestCaseError> {

@@ -50,11 +50,18 @@ pub struct OffsetOptions {
     /// The largest distance between an offset curve of a spline and the exact offset,
     /// relative to the region's size (lines and arcs are offset exactly).
     pub chord_tol: f64,
+    /// The size the chord tolerance is taken of (the contract's: max(width, height) of the
+    /// bounding box of all the input's curves, for one part of a multi-part input); `None`:
+    /// the region's own ([`curve::Region::size`]).
+    pub size: Option<f64>,
 }
 
 impl Default for OffsetOptions {
     fn default() -> Self {
-        Self { chord_tol: 1e-3 }
+        Self {
+            chord_tol: 1e-3,
+            size: None,
+        }
     }
 }
 
@@ -101,6 +108,9 @@ pub enum OffsetSegment {
 pub struct OffsetLoop {
     /// The pieces, each starting where the one before ends.
     pub segments: Vec<OffsetSegment>,
+    /// The part of a multi-part input it belongs to (absent for one part).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub part: Option<usize>,
 }
 
 impl OffsetLoop {
@@ -242,7 +252,7 @@ pub fn outward_offsets(
     distances: &[f64],
     opts: &OffsetOptions,
 ) -> Result<Offsets, Error> {
-    let half = 0.5 * region_size(region);
+    let half = 0.5 * region.size();
     if let Some(&far) = distances.iter().find(|&&d| d >= half) {
         return Err(Error::BadOption {
             field: "distance",
@@ -299,7 +309,7 @@ fn offsets_on(
     let walks: Vec<Walk<'_>> = std::iter::once(Walk::new(region.outer(), false, outward))
         .chain(region.holes().iter().map(|h| Walk::new(h, true, outward)))
         .collect();
-    let size = region_size(region);
+    let size = opts.size.unwrap_or_else(|| region.size());
     let chord = opts.chord_tol * size;
     let mut widest = widest_per_boundary(axis, walks.len(), outward);
     if outward {
@@ -359,7 +369,10 @@ fn offsets_on(
                     }
                     cusps::blunt(&mut segments, cusps::HORN_CUT * size);
                     joints::close(&mut segments);
-                    OffsetLoop { segments }
+                    OffsetLoop {
+                        segments,
+                        part: None,
+                    }
                 })
                 .collect();
             (loops, error)
@@ -544,20 +557,6 @@ fn encloses(profile: &Profile, p: [f64; 2]) -> bool {
             (step + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
     }
     turned.abs() > std::f64::consts::PI
-}
-
-/// The region's size: the larger side of its outer boundary's box.
-fn region_size(region: &Region) -> f64 {
-    let outer = region.outer();
-    let (a, b) = outer.domain();
-    let n = 64 * outer.segments().len();
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for k in 0..=n {
-        let p = outer.jet_to(a + (b - a) * k as f64 / n as f64, 0).p;
-        lo = [lo[0].min(p.x), lo[1].min(p.y)];
-        hi = [hi[0].max(p.x), hi[1].max(p.y)];
-    }
-    (hi[0] - lo[0]).max(hi[1] - lo[1])
 }
 
 /// Per boundary, the widest radius of the axis points with a foot on it (a disk's single node

@@ -2,17 +2,41 @@
 //! elliptical arcs converted from SVG's endpoint form to their centre form (SVG 1.1, Appendix
 //! F.6.5, with the out-of-range radii corrected as F.6.6 says) and made exact rational
 //! quadratic pieces. The syntax is `svgtypes`'; the geometry is ours.
+//!
+//! **Closing.** A subpath whose end comes back to its start within the drawing's tolerance is
+//! closed, with or without `Z` (the contract's "Closed chains in drawings"): its last segment
+//! is made to end exactly there. The tolerance is what the numbers as written can hide: a
+//! writer that rounds to `k` decimals leaves each coordinate within half a unit of the last
+//! place, and relative commands add those roundings up, one per command since the last
+//! absolute one ([`Precision`]). It never exceeds [`MOST_GAP`] of the subpath's size, nor
+//! falls below a few units of rounding of its coordinates. Beyond it, `Z` draws the closing
+//! line, and so does a filled element's open subpath (SVG fills it as closed); a subpath of an
+//! element drawn without fill stays open.
+//!
+//! **Degenerate pieces.** Zero-length pieces are dropped (design tools write them), and a
+//! quadratic whose control point repeats an end, or a cubic with three points at one place,
+//! is the straight line it draws (its speed vanishes at that end, which no curvature-based
+//! method can take).
 
 use curve::{Segment, SegmentKind, SplineCurve, V2};
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 use svgtypes::{PathParser, PathSegment};
 
-/// How close (in units of rounding of the largest coordinate) the current point must come to
-/// the subpath's start for `Z` to draw no closing line: relative commands accumulate a
-/// rounding per command.
+/// Room for rounding (in units of the largest coordinate) in any gap: relative commands
+/// accumulate a rounding per command even where the numbers are written in full.
 const CLOSING_ROUNDING: f64 = 1024.0 * f64::EPSILON;
 
-/// One subpath: its segments, and whether it was closed by `Z`.
+/// The largest gap closed, relative to the subpath's size: rounding of the written numbers
+/// beyond a thousandth of the outline is not rounding but a gap drawn.
+const MOST_GAP: f64 = 1e-3;
+
+/// How close to 1 (relative) SVG's radius ratio `Λ` must be for the arc to be taken as
+/// reaching just across its chord (F.6.6): the centre is then the chord's middle exactly.
+/// Below that, the centre's offset `√(1/Λ − 1)` of the radius magnifies the rounding of `Λ`
+/// (a few units) into a tangent off by ~1e-8 rad at the ends, which would read as a corner.
+const HALF_ELLIPSE: f64 = 64.0 * f64::EPSILON;
+
+/// One subpath: its segments, and whether it is closed.
 #[derive(Debug)]
 pub(super) struct Subpath {
     pub(super) segments: Vec<Segment>,
@@ -22,10 +46,30 @@ pub(super) struct Subpath {
 /// Why path data could not be used: a message for the reader's error.
 pub(super) type PathError = String;
 
-/// The subpaths of path data `d`, in the element's own coordinates. Zero-length pieces are
-/// dropped (design tools write them); `max_segments` bounds the work.
-pub(super) fn subpaths(d: &str, max_segments: usize) -> Result<Vec<Subpath>, PathError> {
-    let mut b = Builder::default();
+/// The subpaths of path data `d`, in the element's own coordinates; `filled`: the element is
+/// filled, so an open subpath is closed by a line as SVG fills it. `max_segments` bounds the
+/// work.
+pub(super) fn subpaths(
+    d: &str,
+    filled: bool,
+    max_segments: usize,
+) -> Result<Vec<Subpath>, PathError> {
+    subpaths_written(d, Precision::of(d), filled, max_segments)
+}
+
+/// [`subpaths`] of path data made from numbers written with `precision` (a shape's
+/// attributes, as path data).
+pub(super) fn subpaths_written(
+    d: &str,
+    precision: Precision,
+    filled: bool,
+    max_segments: usize,
+) -> Result<Vec<Subpath>, PathError> {
+    let mut b = Builder {
+        quantum: precision.quantum,
+        filled,
+        ..Builder::default()
+    };
     for (k, item) in PathParser::from(d).enumerate() {
         let seg = item.map_err(|e| format!("invalid path data: {e}"))?;
         b.command(seg).map_err(|e| format!("command {k}: {e}"))?;
@@ -33,8 +77,61 @@ pub(super) fn subpaths(d: &str, max_segments: usize) -> Result<Vec<Subpath>, Pat
             return Err(format!("more than {max_segments} segments"));
         }
     }
-    b.finish_subpath(false);
+    b.finish_subpath(false)?;
     Ok(b.out)
+}
+
+/// How finely the numbers of path data are written.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Precision {
+    /// A unit in the last decimal place written, over all the numbers (`10^−k` for `k`
+    /// decimals at most; 1 when all are integers).
+    pub(super) quantum: f64,
+}
+
+impl Precision {
+    /// The precision of the numbers in `text` (their decimals, less their exponents).
+    pub(super) fn of(text: &str) -> Self {
+        let bytes = text.as_bytes();
+        let mut places = 0i32;
+        let mut i = 0;
+        while i < bytes.len() {
+            if !(bytes[i].is_ascii_digit() || bytes[i] == b'.') {
+                i += 1;
+                continue;
+            }
+            // One number: digits, a point, digits, an exponent.
+            let mut decimals = 0i32;
+            let mut seen_point = false;
+            while i < bytes.len()
+                && (bytes[i].is_ascii_digit() || (bytes[i] == b'.' && !seen_point))
+            {
+                if bytes[i] == b'.' {
+                    seen_point = true;
+                } else if seen_point {
+                    decimals += 1;
+                }
+                i += 1;
+            }
+            if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
+                let start = i + 1;
+                let mut j = start;
+                if j < bytes.len() && (bytes[j] == b'-' || bytes[j] == b'+') {
+                    j += 1;
+                }
+                while j < bytes.len() && bytes[j].is_ascii_digit() {
+                    j += 1;
+                }
+                let exponent: i32 = text[start..j].parse().unwrap_or(0);
+                decimals -= exponent;
+                i = j;
+            }
+            places = places.max(decimals.clamp(0, 300));
+        }
+        Self {
+            quantum: 10f64.powi(-places),
+        }
+    }
 }
 
 /// The state of the path data walk.
@@ -49,6 +146,12 @@ struct Builder {
     last_cubic: Option<V2>,
     last_quad: Option<V2>,
     count: usize,
+    /// A unit in the last place of the numbers written.
+    quantum: f64,
+    /// Relative commands since the current point was last written absolutely.
+    relative: usize,
+    /// Whether the element is filled.
+    filled: bool,
 }
 
 impl Builder {
@@ -63,9 +166,23 @@ impl Builder {
             finite(p)
         };
         let (mut cubic, mut quad) = (None, None);
+        // (Each relative command adds a rounding of the numbers to the current point; an
+        // absolute one sets it as written.)
+        let relative = match seg {
+            PathSegment::MoveTo { abs, .. }
+            | PathSegment::LineTo { abs, .. }
+            | PathSegment::HorizontalLineTo { abs, .. }
+            | PathSegment::VerticalLineTo { abs, .. }
+            | PathSegment::CurveTo { abs, .. }
+            | PathSegment::SmoothCurveTo { abs, .. }
+            | PathSegment::Quadratic { abs, .. }
+            | PathSegment::SmoothQuadratic { abs, .. }
+            | PathSegment::EllipticalArc { abs, .. } => !abs,
+            PathSegment::ClosePath { .. } => false,
+        };
         match seg {
             PathSegment::MoveTo { abs, x, y } => {
-                self.finish_subpath(false);
+                self.finish_subpath(false)?;
                 let p = pt(abs, x, y)?;
                 self.at = p;
                 self.start = p;
@@ -125,14 +242,15 @@ impl Builder {
             }
             PathSegment::ClosePath { .. } => {
                 let start = self.start;
-                // (Relative commands that come back to the start do so to within rounding:
-                // no sliver of a closing line then; the profile closes within its gap.)
-                if !self.near(start) {
-                    self.line(start)?;
-                }
-                self.finish_subpath(true);
+                self.finish_subpath(true)?;
                 self.at = start;
             }
+        }
+        match (relative, &seg) {
+            // (After `Z` the current point is the start, as written before.)
+            (_, PathSegment::ClosePath { .. }) => {}
+            (true, _) => self.relative += 1,
+            (false, _) => self.relative = 0,
         }
         self.last_cubic = cubic;
         self.last_quad = quad;
@@ -159,6 +277,16 @@ impl Builder {
         // (All control points at one place: nothing drawn.)
         if pts.iter().all(|&p| p == self.at) {
             return Ok(());
+        }
+        // A control point on an end (a quadratic's), or three points at one place (a cubic's):
+        // the piece is the straight line between its ends.
+        let distinct = pts.windows(2).filter(|w| w[0] != w[1]).count();
+        let straight = match pts.len() {
+            3 => distinct < 2,
+            _ => distinct < 2 && pts[0] != pts[pts.len() - 1],
+        };
+        if straight {
+            return self.line(to);
         }
         let arr: Vec<[f64; 2]> = pts.iter().map(|p| p.arr()).collect();
         let c = SplineCurve::clamped(arr.len() - 1, &arr, None, None).map_err(|e| e.to_string())?;
@@ -196,53 +324,109 @@ impl Builder {
         let y1 = -s * half.x + c * half.y;
         // Radii too small to reach: scaled up until they just do.
         let lambda = (x1 / rx).powi(2) + (y1 / ry).powi(2);
-        if lambda > 1.0 {
+        if lambda >= 1.0 - HALF_ELLIPSE {
             let k = lambda.sqrt();
             rx *= k;
             ry *= k;
         }
-        let (rx2, ry2) = (rx * rx, ry * ry);
-        let num = rx2 * ry2 - rx2 * y1 * y1 - ry2 * x1 * x1;
-        let den = rx2 * y1 * y1 + ry2 * x1 * x1;
-        let mut coef = (num / den).max(0.0).sqrt();
-        if large == sweep {
-            coef = -coef;
-        }
-        let (cx1, cy1) = (coef * rx * y1 / ry, -coef * ry * x1 / rx);
         let mid = (from + to) * 0.5;
-        let center = V2::new(c * cx1 - s * cy1 + mid.x, s * cx1 + c * cy1 + mid.y);
         let angle = |ux: f64, uy: f64| uy.atan2(ux);
-        let theta1 = angle((x1 - cx1) / rx, (y1 - cy1) / ry);
-        let theta2 = angle((-x1 - cx1) / rx, (-y1 - cy1) / ry);
-        let mut delta = (theta2 - theta1).rem_euclid(TAU);
-        if !sweep && delta > 0.0 {
-            delta -= TAU;
-        }
+        let (center, theta1, delta) = if lambda >= 1.0 - HALF_ELLIPSE {
+            // Just across the chord: half the ellipse about the chord's middle, exactly.
+            let theta1 = angle(x1 / rx, y1 / ry);
+            (mid, theta1, if sweep { PI } else { -PI })
+        } else {
+            let (rx2, ry2) = (rx * rx, ry * ry);
+            let num = rx2 * ry2 - rx2 * y1 * y1 - ry2 * x1 * x1;
+            let den = rx2 * y1 * y1 + ry2 * x1 * x1;
+            let mut coef = (num / den).max(0.0).sqrt();
+            if large == sweep {
+                coef = -coef;
+            }
+            let (cx1, cy1) = (coef * rx * y1 / ry, -coef * ry * x1 / rx);
+            let center = V2::new(c * cx1 - s * cy1 + mid.x, s * cx1 + c * cy1 + mid.y);
+            let theta1 = angle((x1 - cx1) / rx, (y1 - cy1) / ry);
+            let theta2 = angle((-x1 - cx1) / rx, (-y1 - cy1) / ry);
+            let mut delta = (theta2 - theta1).rem_euclid(TAU);
+            if !sweep && delta > 0.0 {
+                delta -= TAU;
+            }
+            (center, theta1, delta)
+        };
         let seg = Segment::elliptic_arc(center.arr(), rx, ry, phi, theta1, theta1 + delta)
             .map_err(|e| e.to_string())?;
         self.push(seg, to);
         Ok(())
     }
 
-    /// Whether `p` is the current point to within rounding of the subpath's coordinates.
-    fn near(&self, p: V2) -> bool {
-        let magnitude = self
-            .current
-            .iter()
-            .flat_map(|s| s.curve().control_points())
-            .fold(p.x.abs().max(p.y.abs()), |m, q| {
-                m.max(q[0].abs()).max(q[1].abs())
-            });
-        (self.at - p).norm() <= CLOSING_ROUNDING * magnitude
+    /// The gap the current subpath may leave between its end and its start and still be
+    /// closed (see the module documentation).
+    fn closing_tolerance(&self) -> f64 {
+        let (mut lo, mut hi) = (self.start, self.start);
+        let mut magnitude = self.start.x.abs().max(self.start.y.abs());
+        for p in self.current.iter().flat_map(|s| s.curve().control_points()) {
+            lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
+            hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
+            magnitude = magnitude.max(p[0].abs()).max(p[1].abs());
+        }
+        let size = (hi.x - lo.x).max(hi.y - lo.y);
+        let written = self.quantum * (self.relative + 1) as f64;
+        written
+            .min(MOST_GAP * size)
+            .max(CLOSING_ROUNDING * magnitude)
     }
 
-    fn finish_subpath(&mut self, closed: bool) {
-        if !self.current.is_empty() {
-            self.out.push(Subpath {
-                segments: std::mem::take(&mut self.current),
-                closed,
-            });
+    /// Ends the current subpath: closed where `z` says so, where it comes back to its start
+    /// within the tolerance (its last segment then ends exactly there), or where the element
+    /// is filled (a closing line, as SVG fills it).
+    fn finish_subpath(&mut self, z: bool) -> Result<(), String> {
+        if self.current.is_empty() {
+            return Ok(());
         }
+        let gap = (self.at - self.start).norm();
+        let closed = if gap == 0.0 {
+            true
+        } else if gap <= self.closing_tolerance() {
+            self.snap_to_start()?;
+            true
+        } else if z || self.filled {
+            self.line(self.start)?;
+            true
+        } else {
+            false
+        };
+        self.out.push(Subpath {
+            segments: std::mem::take(&mut self.current),
+            closed,
+        });
+        Ok(())
+    }
+
+    /// Closes a gap within the tolerance: the last segment made to end at the start (or, where
+    /// it is an arc and the first is not, the first made to start at the end: an arc whose end
+    /// moves is no longer circular).
+    fn snap_to_start(&mut self) -> Result<(), String> {
+        let n = self.current.len();
+        let is_arc = |s: &Segment| matches!(s.kind(), SegmentKind::Arc | SegmentKind::EllipticArc);
+        let moved = if is_arc(&self.current[n - 1]) && !is_arc(&self.current[0]) {
+            let at = self.at;
+            (0, self.current[0].with_ends(Some(at), None))
+        } else {
+            let start = self.start;
+            (n - 1, self.current[n - 1].with_ends(None, Some(start)))
+        };
+        match moved {
+            (k, Ok(s)) => self.current[k] = s,
+            // (A last line shorter than the gap, back to the start: it goes, and the one before
+            // closes the gap.)
+            (k, Err(_)) if n > 1 && k == n - 1 => {
+                self.at = self.current[n - 1].start();
+                self.current.pop();
+                return self.snap_to_start();
+            }
+            (_, Err(e)) => return Err(e.to_string()),
+        }
+        Ok(())
     }
 }
 
@@ -264,7 +448,7 @@ mod tests {
     use curve::ParamCurve;
 
     fn one(d: &str) -> Vec<Subpath> {
-        subpaths(d, 1000).unwrap_or_else(|e| panic!("{d}: {e}"))
+        subpaths(d, false, 1000).unwrap_or_else(|e| panic!("{d}: {e}"))
     }
 
     #[test]
@@ -366,8 +550,8 @@ mod tests {
             "M 1e400 0 L 1 1",
             "M 0 0 A 1 1 0 2 0 1 1",
         ] {
-            assert!(subpaths(d, 1000).is_err(), "{d}");
+            assert!(subpaths(d, false, 1000).is_err(), "{d}");
         }
-        assert!(subpaths("M 0 0 L 1 0 L 2 0 L 3 0", 2).is_err());
+        assert!(subpaths("M 0 0 L 1 0 L 2 0 L 3 0", false, 2).is_err());
     }
 }

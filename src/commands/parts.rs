@@ -1,0 +1,98 @@
+//! Multi-part inputs (the contract's "Multi-part input"): the medial axis and the offsets of
+//! each part, one answer for all, each node, edge and loop saying its part; the tolerances of
+//! every part relative to the size of all of them; and the doubt a drawing casts on answers
+//! when something that could be part of an outline was not read.
+
+use curve::{box_size, box_union, Region};
+use medial::MedialAxis;
+use offset::Offsets;
+
+/// max(width, height) of the bounding box of all the parts (the contract's size).
+pub(super) fn size_of(parts: &[&Region]) -> f64 {
+    let boxes = parts.iter().map(|r| r.bounding_box());
+    box_size(boxes.reduce(box_union).unwrap_or([0.0; 4]))
+}
+
+/// Why an answer over parts is not certified: the first part's reason that is not (named
+/// when there are several parts), or the drawing's `doubt`.
+fn reason(reasons: Vec<Option<String>>, doubt: Option<String>) -> Option<String> {
+    let several = reasons.len() > 1;
+    let first = reasons
+        .into_iter()
+        .enumerate()
+        .find_map(|(k, r)| r.map(|r| if several { format!("part {k}: {r}") } else { r }));
+    first.or(doubt)
+}
+
+/// The axes of the parts as one axis: nodes renumbered, each node and edge with its part
+/// where there are several; certified and complete where every part's is and the drawing
+/// casts no `doubt`.
+pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<String>) -> MedialAxis {
+    let several = axes.len() > 1;
+    let certified = axes.iter().all(|a| a.certified) && doubt.is_none();
+    let complete = axes.iter().all(|a| a.complete);
+    let mut reasons = Vec::with_capacity(axes.len());
+    let (mut nodes, mut edges) = (Vec::new(), Vec::new());
+    for (k, axis) in axes.into_iter().enumerate() {
+        let part = several.then_some(k);
+        let first = nodes.len();
+        reasons.push(axis.reason);
+        nodes.extend(axis.nodes.into_iter().map(|mut n| {
+            n.id += first;
+            n.part = part;
+            n
+        }));
+        edges.extend(axis.edges.into_iter().map(|mut e| {
+            e.from += first;
+            e.to += first;
+            e.part = part;
+            e
+        }));
+    }
+    MedialAxis {
+        nodes,
+        edges,
+        certified,
+        reason: if certified {
+            None
+        } else {
+            reason(reasons, doubt)
+        },
+        complete,
+    }
+}
+
+/// The offsets of the parts as one answer: at each distance the loops of every part in turn,
+/// each with its part where there are several, and the largest error.
+pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offsets {
+    let several = found.len() > 1;
+    let certified = found.iter().all(|o| o.certified) && doubt.is_none();
+    let complete = found.iter().all(|o| o.complete);
+    let mut reasons = Vec::with_capacity(found.len());
+    let mut offsets: Vec<offset::Offset> = Vec::new();
+    for (k, part) in found.into_iter().enumerate() {
+        reasons.push(part.reason);
+        for (i, mut o) in part.offsets.into_iter().enumerate() {
+            for l in &mut o.loops {
+                l.part = several.then_some(k);
+            }
+            match offsets.get_mut(i) {
+                Some(joined) => {
+                    joined.loops.append(&mut o.loops);
+                    joined.error = joined.error.max(o.error);
+                }
+                None => offsets.push(o),
+            }
+        }
+    }
+    Offsets {
+        offsets,
+        certified,
+        reason: if certified {
+            None
+        } else {
+            reason(reasons, doubt)
+        },
+        complete,
+    }
+}

@@ -1,0 +1,98 @@
+"""The real-world corpus sample (fixtures/corpus: icons, font glyphs, DXF parts) judged by the
+independent oracle in corpus/oracle.py (shapely/GEOS, svgelements, ezdxf; no curvekit code).
+
+Fails on any wrong answer that is certified, any crash or time-out, any refusal of an input the
+contract requires an answer for, and any refusal that names the wrong cause. Known current
+failures are listed in XFAIL by (file, command) with what was found; the list is strict, so an
+entry whose failure is fixed must be removed.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+
+import pytest
+
+from conftest import ROOT, tool_path
+
+SAMPLE = ROOT / "fixtures" / "corpus"
+FAILING = {"wrong-certified", "crash", "timeout", "oracle-error", "refused-valid", "refused-wrong-cause"}
+
+try:
+    sys.path.insert(0, str(ROOT / "corpus"))
+    from run import judge_corpus  # noqa: E402
+except ImportError as missing:  # the oracle's packages: shapely, svgelements, ezdxf, scipy
+    if os.environ.get("CI"):
+        raise
+    pytest.skip(f"the corpus oracle needs {missing.name}", allow_module_level=True)
+
+MANIFEST = json.loads((SAMPLE / "manifest.json").read_text())["files"]
+
+INSERT = "INSERT/MINSERT block references are dropped without a word: the holes they place are missing, and the result is certified"
+OFF_PLANE = "a closed 3D POLYLINE off the plane is read as a hole (projected), and the result is certified"
+TOUCHING = "at d = 7.5 the ring between the plate's edge and its round hole is exactly 2d wide at four points: one loop runs the hole's offset arc the long way round from one touching point to the next, certified"
+SEAM_SEGMENT = "a closed profile of one spline segment with a corner where its ends meet: antipodal refuses 'the closed curve has a corner at its seam'"
+SINGULAR = "a cubic with its first two control points equal (zero speed at its start) is refused as 'singular (zero speed or cusp)'"
+
+
+def _each(files: list[str], commands: tuple[str, ...], reason: str) -> dict[tuple[str, str], str]:
+    return {(f, c): reason for f in files for c in commands}
+
+
+REGION = ("medial", "offset")
+CURVE = ("antipodal", "inflections")
+# (file, command) -> what is wrong, found with the binary of 2026-11-29 (see corpus/README.md).
+XFAIL: dict[tuple[str, str], str] = {
+    **_each([
+        "dxf/flange.dxf", "dxf/minsert_grid.dxf", "dxf/minsert_rotated_squares.dxf", "dxf/nested_blocks.dxf",
+        "dxf/plate_holes_block.dxf", "dxf/plate_mirrored_insert.dxf", "dxf/plate_mirrored_rotated_keyhole.dxf",
+        "dxf/plate_nonuniform_insert.dxf", "dxf/plate_scaled_rotated_insert.dxf",
+    ], REGION, INSERT),
+    **_each(["dxf/polyline3d_off_plane.dxf"], REGION + CURVE, OFF_PLANE),
+    **_each(["dxf/island_in_hole.dxf"], ("offset",), TOUCHING),
+    **_each(["dxf/spline_closed_by_points.dxf"], ("antipodal",), SEAM_SEGMENT),
+    **_each(["icons/octicons/flag-24.svg"], CURVE, SINGULAR),
+}
+
+
+def failures(outcomes: list[dict], valid: bool) -> list[str]:
+    """The outcomes that break the corpus's rules; a refusal of a file the manifest marks valid is
+    one even where today's oracle would accept it."""
+    found = []
+    for o in outcomes:
+        refused_valid = valid and o["status"] == "refused"
+        if o["status"] in FAILING or refused_valid or (o["status"] == "answered-invalid" and o["certified"]):
+            detail = o["problems"][:2] or [o["message"][:200]]
+            found.append(f"{o['command']} {' '.join(o['args'][2:])}: {o['status']}: {'; '.join(detail)}")
+    return found
+
+
+@pytest.fixture(scope="module")
+def outcomes() -> dict[str, list[dict]]:
+    """Every sample file judged once, on two workers."""
+    judged = judge_corpus(str(tool_path()), SAMPLE, MANIFEST, jobs=2, progress=False)
+    by_file: dict[str, list[dict]] = {}
+    for outcome in judged:
+        by_file.setdefault(outcome["file"], []).append(outcome)
+    return by_file
+
+
+@pytest.mark.parametrize("entry", MANIFEST, ids=[e["file"] for e in MANIFEST])
+def test_sample_file(entry: dict, outcomes: dict[str, list[dict]]) -> None:
+    mine = outcomes.get(entry["file"], [])
+    assert mine, "no command was judged"
+    expected = {command: reason for (file, command), reason in XFAIL.items() if file == entry["file"]}
+    unexpected, known = [], set()
+    for o in mine:
+        for failure in failures([o], entry["valid"]):
+            if o["command"] in expected:
+                known.add(o["command"])
+            else:
+                unexpected.append(failure)
+    assert not unexpected, "\n".join(unexpected)
+    fixed = set(expected) - known
+    assert not fixed, f"listed in XFAIL but no longer failing (remove them): {sorted(fixed)}"
+    if known:
+        pytest.xfail("; ".join(sorted({expected[c] for c in known})))

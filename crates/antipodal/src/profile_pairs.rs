@@ -111,9 +111,10 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
     // Every segment runs the way a counterclockwise profile does.
     let rev = profile.orientation() < 0.0;
     let mut parts: Vec<Dissected> = Vec::with_capacity(locals.len());
-    for (i, l) in locals.iter().enumerate() {
+    let opens: Vec<Open> = locals.iter().map(|l| Open(&l.curve)).collect();
+    for (i, (l, open)) in locals.iter().zip(&opens).enumerate() {
         let src = Source {
-            curve: &l.curve,
+            curve: open,
             forms: l.forms.as_ref(),
             simple: false,
             report: None,
@@ -433,4 +434,24 @@ fn merged(profile: &Profile, mut fs: Vec<ProfileFamily>) -> Vec<ProfileFamily> {
         fs.remove(b);
     }
     fs
+}
+
+/// A profile's segment seen as the open curve it is: where its ends meet (a closed profile of
+/// one segment) the profile's seam joint, not the segment, says how they meet (a corner
+/// there is the profile's).
+struct Open<'a>(&'a dyn ParamCurve);
+
+impl ParamCurve for Open<'_> {
+    fn domain(&self) -> (f64, f64) {
+        self.0.domain()
+    }
+    fn is_closed(&self) -> bool {
+        false
+    }
+    fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
+        self.0.jet_to(u, order)
+    }
+    fn jet(&self, u: f64) -> curve::Jet {
+        self.0.jet(u)
+    }
 }

@@ -16,7 +16,8 @@
 //! **Degenerate pieces.** Zero-length pieces are dropped (design tools write them), and a
 //! quadratic whose control point repeats an end, or a cubic with three points at one place,
 //! is the straight line it draws (its speed vanishes at that end, which no curvature-based
-//! method can take).
+//! method can take). A cubic whose inner control point repeats an end has that point moved
+//! off it by half a unit in the last place written (see `bezier`).
 
 use curve::{Segment, SegmentKind, SplineCurve, V2};
 use std::f64::consts::{PI, TAU};
@@ -35,6 +36,10 @@ const MOST_GAP: f64 = 1e-3;
 /// Below that, the centre's offset `√(1/Λ − 1)` of the radius magnifies the rounding of `Λ`
 /// (a few units) into a tangent off by ~1e-8 rad at the ends, which would read as a corner.
 const HALF_ELLIPSE: f64 = 64.0 * f64::EPSILON;
+
+/// The largest share of the way to the next control point that a handle on a cubic's end is
+/// moved off it (see `Builder::bezier`).
+const HANDLE_OFF_END: f64 = 1e-2;
 
 /// One subpath: its segments, and whether it is closed.
 #[derive(Debug)]
@@ -287,6 +292,25 @@ impl Builder {
         };
         if straight {
             return self.line(to);
+        }
+        // A cubic's control point on its end (a node drawn without a handle) leaves it no
+        // speed there, and a curvature growing without bound: moved off the end towards the
+        // next control point by half a unit in the last place written, a change the numbers
+        // as written cannot tell from it, and never more than a hundredth of the way (the
+        // curve then moves by less than half of that).
+        let mut pts = pts.to_vec();
+        if pts.len() == 4 {
+            let half_unit = 0.5 * self.quantum;
+            let off = |end: V2, toward: V2| {
+                let d = toward - end;
+                end + d * (half_unit / d.norm()).min(HANDLE_OFF_END)
+            };
+            if pts[1] == pts[0] {
+                pts[1] = off(pts[0], pts[2]);
+            }
+            if pts[2] == pts[3] {
+                pts[2] = off(pts[3], pts[1]);
+            }
         }
         let arr: Vec<[f64; 2]> = pts.iter().map(|p| p.arr()).collect();
         let c = SplineCurve::clamped(arr.len() - 1, &arr, None, None).map_err(|e| e.to_string())?;

@@ -237,10 +237,8 @@ fn drawings_say_what_they_skipped_and_their_units() {
     assert_eq!(d["certified"], false);
     assert!(d["reason"].as_str().unwrap().contains("open"), "{d}");
     // A drawing in millimetres.
-    let mm = format!(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 100 50"><rect width="10" height="6"/></svg>"#
-    );
-    let f = file_of(&mm);
+    let mm = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 100 50"><rect width="10" height="6"/></svg>"#;
+    let f = file_of(mm);
     let d = curvekit_json(&["medial", f.path().to_str().unwrap()]);
     assert_eq!(d["units"], "mm");
 }

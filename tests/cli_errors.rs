@@ -170,7 +170,20 @@ fn unsuitable_curves_are_input_errors() {
             &[&cusp, ": points: ", "singular", "u = 0"],
         );
     }
-    // Bisectors need the exact rational form.
+    // A limaçon within rounding of its cusp (b a few units of rounding below a) is refused as
+    // singular there (it exited 1 as "oscillating too often", which it does not).
+    let dir = tempfile::tempdir().unwrap();
+    let near_cusp = dir.path().join("near_cusp.json");
+    std::fs::write(
+        &near_cusp,
+        r#"{"kind":"limacon","a":1,"b":0.99999999999999}"#,
+    )
+    .unwrap();
+    let near_cusp = near_cusp.display().to_string();
+    assert_usage_error(
+        &["antipodal", &near_cusp],
+        &[&near_cusp, ": kind: ", "singular", "u = 3.14159"],
+    );
 }
 
 #[test]

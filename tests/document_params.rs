@@ -241,3 +241,33 @@ fn bisectors_and_tangents_of_arcs_are_in_the_arcs_angle() {
         assert!(dist(eval(&circle, num(&l["t"])), pt(&l["q"])) <= 1e-9);
     }
 }
+
+/// A symmetric teardrop (a clamped cubic closed by its points, its tip a corner where its ends
+/// meet) has the pair from its tip to the far end of its axis, and the pair across its waist;
+/// written as one spline or as a profile of two Béziers, the same pairs.
+#[test]
+fn a_teardrops_corner_pair_is_found_either_way_it_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let one = json!({"kind":"bspline","degree":3,
+                     "points":[[0,0],[3,2],[6,1.5],[6,-1.5],[3,-2],[0,0]]});
+    let two = json!({"kind":"profile","segments":[
+        {"kind":"bezier","points":[[0,0],[3,2],[6,1.5],[6,0]]},
+        {"kind":"bezier","points":[[6,0],[6,-1.5],[3,-2],[0,0]]}]});
+    for (k, doc) in [one, two].iter().enumerate() {
+        let path = file_of(doc, &dir, &format!("tear{k}.json"));
+        let found = curvekit_json(&["antipodal", &path]);
+        assert_eq!(found["certified"], true, "{path}: {found}");
+        let pairs = arr(&found["pairs"]);
+        assert_eq!(pairs.len(), 2, "{path}: {found}");
+        let tip = pairs
+            .iter()
+            .find(|p| p["corner"][0] == true || p["corner"][1] == true)
+            .unwrap_or_else(|| panic!("{path}: no corner pair in {found}"));
+        // Along the axis of symmetry: both ends on y = 0.
+        assert!(
+            pt(&tip["p"])[1].abs() < 1e-12 && pt(&tip["q"])[1].abs() < 1e-12,
+            "{tip}"
+        );
+        check_one_curve(doc, &path);
+    }
+}

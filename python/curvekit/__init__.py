@@ -59,6 +59,7 @@ __all__ = [
     "Line",
     "MedialAxis",
     "Offsets",
+    "Polygon",
     "PreparedCurve",
     "Tangents",
     "antipodal",
@@ -229,6 +230,47 @@ def Arc(
         },
         name,
     )
+
+
+def _ring(points: Any, field: str, name: str) -> dict:
+    """A closed profile document of the straight sides through ``points``: an (n, 2) array, or
+    OpenCV's (n, 1, 2) contour; repeated points (and a last point that repeats the first) are
+    dropped, as they draw nothing."""
+    try:
+        a = np.asarray(points, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{name}: {field}: not an array of numbers: {e}") from None
+    if a.ndim == 3 and a.shape[1:] == (1, 2):
+        a = a[:, 0, :]
+    pts = _points(a, field, name)
+    ring = [p for i, p in enumerate(pts) if i == 0 or p != pts[i - 1]]
+    while len(ring) > 1 and ring[-1] == ring[0]:
+        ring.pop()
+    if len(ring) < 3:
+        raise InputError(
+            f"{name}: {field}: a polygon needs 3 distinct points at least, got {len(ring)}"
+        )
+    sides = [
+        {"kind": "line", "from": ring[i], "to": ring[(i + 1) % len(ring)]} for i in range(len(ring))
+    ]
+    return {"kind": "profile", "segments": sides, "closed": True}
+
+
+def Polygon(shell: Any, holes: Sequence[Any] = (), name: str = "polygon") -> Curve:
+    """The polygon through ``shell`` (an (n, 2) array, or an image contour's (n, 1, 2) array as
+    OpenCV gives it), with the polygons ``holes`` inside it: a closed profile of straight
+    sides, or a region with holes, either way round. Repeated points are dropped.
+
+    >>> import numpy as np, curvekit
+    >>> contour = np.array([[[0, 0]], [[4, 0]], [[4, 3]], [[0, 3]]])
+    >>> curvekit.medial(curvekit.Polygon(contour)).certified
+    True
+    """
+    outer = _ring(shell, "shell", name)
+    if not holes:
+        return from_dict(outer, name)
+    inner = [_ring(h, f"holes[{k}]", name) for k, h in enumerate(holes)]
+    return from_dict({"kind": "region", "outer": outer, "holes": inner}, name)
 
 
 CurveLike = Union[Curve, Mapping[str, Any], str, "os.PathLike[str]"]

@@ -35,6 +35,10 @@ class PreparedCurve:
     def curve(self) -> Curve: ...
 
 class _Result:
+    skipped: Optional[list[dict[str, Any]]]
+    """What the input drawing held and was not read: [{"type", "count"}] (None for a curve file)."""
+    units: Optional[str]
+    """The unit of the input drawing's coordinates, where it says ("mm", "in", …)."""
     def to_json(self) -> str:
         """The tool's --json document, as one JSON text."""
     def to_dict(self) -> dict[str, Any]:
@@ -81,6 +85,9 @@ class MedialAxis(_Result):
     nodes: npt.NDArray[np.float64]
     node_radii: npt.NDArray[np.float64]
     node_kinds: list[str]
+    node_parts: npt.NDArray[np.uintp]
+    """(n,): the part of a multi-part input each node belongs to (0 for one part)."""
+    edge_parts: npt.NDArray[np.uintp]
     edges: list[tuple[int, int, npt.NDArray[np.float64], npt.NDArray[np.float64]]]
     """Each edge as (from, to, xy (k, 2), radius (k,))."""
 
@@ -91,6 +98,8 @@ class Offsets(_Result):
     distances: npt.NDArray[np.float64]
     def polylines(self, k: int, arc_points: int = 32) -> list[npt.NDArray[np.float64]]:
         """The loops at the k-th distance as closed (n, 2) polylines."""
+    def parts(self, k: int) -> list[int]:
+        """The part of a multi-part input each loop at the k-th distance belongs to."""
     def __len__(self) -> int: ...
 
 OneCurve = Union[Curve, PreparedCurve]

@@ -89,6 +89,30 @@ fn pairs2<'py>(py: Python<'py>, pairs: &[[[f64; 2]; 2]]) -> Bound<'py, PyArray3<
 }
 
 /// The common methods of a result class: its document, pickling, and the shared fields.
+/// A result's curve as it pickles: its summary with what its drawing said (which the
+/// summary's JSON leaves to the result's own fields).
+#[derive(serde::Serialize, serde::Deserialize)]
+struct PickledCurve {
+    summary: CurveSummary,
+    drawing: Option<curvekit::commands::DrawingSummary>,
+}
+
+impl PickledCurve {
+    fn of(c: &CurveSummary) -> Self {
+        Self {
+            summary: c.clone(),
+            drawing: c.drawing.clone(),
+        }
+    }
+
+    fn summary(self) -> CurveSummary {
+        CurveSummary {
+            drawing: self.drawing,
+            ..self.summary
+        }
+    }
+}
+
 macro_rules! result_class {
     ($class:ident, $name:literal, $found:ty, { $($extra:tt)* }) => {
         #[doc = concat!("The result of `curvekit.", $name, "`.")]
@@ -124,10 +148,35 @@ macro_rules! result_class {
                 let rebuild = py.import("curvekit._curvekit")?.getattr("_result_from_json")?;
                 let found = serde_json::to_string(&self.found)
                     .map_err(|e| PyValueError::new_err(e.to_string()))?;
-                let curves = serde_json::to_string(&self.curves)
+                let kept: Vec<PickledCurve> = self.curves.iter().map(PickledCurve::of).collect();
+                let curves = serde_json::to_string(&kept)
                     .map_err(|e| PyValueError::new_err(e.to_string()))?;
                 let args = ($name, self.found.variant(), found, curves).into_pyobject(py)?;
                 Ok((rebuild, args))
+            }
+
+            /// What the drawing the input came from held and was not read, by type: a list of
+            /// `{"type", "count"}` (empty for a drawing read whole; `None` for a curve file).
+            #[getter]
+            fn skipped<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+                let drawing = self.curves.iter().find_map(|c| c.drawing.as_ref());
+                drawing
+                    .map(|d| {
+                        let entries: Vec<serde_json::Value> =
+                            d.skipped.iter().map(|s| s.entry()).collect();
+                        let text = serde_json::to_string(&entries)
+                            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+                        py.import("json")?.call_method1("loads", (text,))
+                    })
+                    .transpose()
+            }
+
+            /// The unit of the input drawing's coordinates, where it says (`"mm"`, `"in"`, …).
+            #[getter]
+            fn units(&self) -> Option<String> {
+                self.curves
+                    .iter()
+                    .find_map(|c| c.drawing.as_ref().and_then(|d| d.units.clone()))
             }
 
             fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
@@ -426,6 +475,33 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
         PyArray1::from_vec(py, self.found.nodes.iter().map(|n| n.radius).collect())
     }
 
+    /// The part of a multi-part input each node belongs to, an `(n,)` array (all 0 for one
+    /// part).
+    #[getter]
+    fn node_parts<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
+        PyArray1::from_vec(
+            py,
+            self.found
+                .nodes
+                .iter()
+                .map(|n| n.part.unwrap_or(0))
+                .collect(),
+        )
+    }
+
+    /// The part each edge belongs to, an `(m,)` array (all 0 for one part).
+    #[getter]
+    fn edge_parts<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
+        PyArray1::from_vec(
+            py,
+            self.found
+                .edges
+                .iter()
+                .map(|e| e.part.unwrap_or(0))
+                .collect(),
+        )
+    }
+
     /// The nodes' kinds: `"junction"`, `"end"`, `"corner"`, `"joint"` or `"clip"`.
     #[getter]
     fn node_kinds(&self) -> PyResult<Vec<String>> {
@@ -526,6 +602,17 @@ result_class!(PyOffsets, "Offsets", Offsets, {
             .collect())
     }
 
+    /// The part of a multi-part input each loop at the `k`-th distance belongs to (all 0 for
+    /// one part), in the order of `polylines(k)`.
+    fn parts(&self, k: usize) -> PyResult<Vec<usize>> {
+        let offset = self
+            .found
+            .offsets
+            .get(k)
+            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
+        Ok(offset.loops.iter().map(|l| l.part.unwrap_or(0)).collect())
+    }
+
     fn __len__(&self) -> usize {
         self.found.offsets.len()
     }
@@ -553,7 +640,8 @@ fn _result_from_json(
     curves: &str,
 ) -> PyResult<Py<PyAny>> {
     let bad = |e: serde_json::Error| PyValueError::new_err(format!("{class}: {e}"));
-    let curves: Vec<CurveSummary> = serde_json::from_str(curves).map_err(bad)?;
+    let kept: Vec<PickledCurve> = serde_json::from_str(curves).map_err(bad)?;
+    let curves: Vec<CurveSummary> = kept.into_iter().map(PickledCurve::summary).collect();
     fn make<T: Kept>(variant: &str, found: &str) -> serde_json::Result<T> {
         T::from_document(variant, found)
     }

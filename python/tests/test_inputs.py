@@ -4,6 +4,7 @@ message."""
 from __future__ import annotations
 
 import json
+import pickle
 
 import numpy as np
 import pytest
@@ -161,3 +162,44 @@ def test_commands_take_documents_and_paths():
     assert by_doc["pairs"] == by_curve["pairs"] and by_doc["curve"]["file"] == "curve"
     with pytest.raises(TypeError):
         curvekit.antipodal(42)
+
+
+def test_polygons_from_arrays_and_image_contours():
+    square = np.array([[0, 0], [4, 0], [4, 3], [0, 3]], dtype=float)
+    # OpenCV's contours are (n, 1, 2); a repeated point and a closing point draw nothing.
+    contour = np.array([[[0, 0]], [[4, 0]], [[4, 0]], [[4, 3]], [[0, 3]], [[0, 0]]])
+    a, b = curvekit.Polygon(square), curvekit.Polygon(contour)
+    assert a.kind == b.kind == "profile" and a.domain == b.domain == (0.0, 4.0)
+    u = np.linspace(0.0, 4.0, 17)
+    assert np.array_equal(a.evaluate(u), b.evaluate(u))
+    # The axis of a 4 x 3 rectangle: two junctions on its middle line, four corner leaves.
+    axis = curvekit.medial(b)
+    assert axis.certified
+    assert sorted(axis.node_kinds).count("junction") == 2
+    assert np.allclose(sorted(axis.node_radii)[-1], 1.5)
+    # With a hole: a region, whose axis has one cycle.
+    holed = curvekit.Polygon(square * 3, holes=[square + [4, 3]])
+    axis = curvekit.medial(holed)
+    assert len(axis.edges) - len(axis.nodes) + 1 == 1
+    # Fewer than three distinct points is no polygon.
+    with pytest.raises(curvekit.InputError, match="shell: a polygon needs 3 distinct points"):
+        curvekit.Polygon([[0, 0], [1, 1], [1, 1]])
+    with pytest.raises(curvekit.InputError, match=r"holes\[0\]"):
+        curvekit.Polygon(square, holes=[[[0, 0]]])
+
+
+def test_drawings_say_what_they_skipped_and_their_parts(tmp_path):
+    drawing = tmp_path / "two.svg"
+    drawing.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="10mm" viewBox="0 0 40 10">'
+        '<text>label</text><path d="M0 0 H10 V10 H0 Z M20 0 H30 V10 H20 Z"/></svg>'
+    )
+    axis = curvekit.medial(str(drawing))
+    assert axis.skipped == [{"type": "text", "count": 1}]
+    assert axis.units == "mm"
+    assert sorted(set(axis.node_parts.tolist())) == [0, 1]
+    assert axis.to_dict()["skipped"] == axis.skipped
+    passes = curvekit.offset(str(drawing), distance=1.0)
+    assert passes.parts(0) == [0, 1]
+    again = pickle.loads(pickle.dumps(axis))
+    assert again == axis and again.skipped == axis.skipped

@@ -555,9 +555,12 @@ pub fn json_document_of(
         let drawings: Vec<&DrawingSummary> =
             curves.iter().filter_map(|c| c.drawing.as_ref()).collect();
         if !drawings.is_empty() {
-            let skipped: Vec<&crate::io::Skipped> =
-                drawings.iter().flat_map(|d| &d.skipped).collect();
-            map.insert("skipped".into(), json!(skipped));
+            let skipped: Vec<Value> = drawings
+                .iter()
+                .flat_map(|d| &d.skipped)
+                .map(crate::io::Skipped::entry)
+                .collect();
+            map.insert("skipped".into(), Value::Array(skipped));
             if let Some(units) = drawings.iter().find_map(|d| d.units.as_ref()) {
                 map.insert("units".into(), json!(units));
             }
@@ -595,7 +598,7 @@ pub struct CurveSummary {
 }
 
 /// What a drawing said besides its geometry, as a result carries it.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct DrawingSummary {
     /// What was not read, by type.
     pub skipped: Vec<crate::io::Skipped>,

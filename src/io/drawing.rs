@@ -5,7 +5,7 @@
 
 use super::{Curve, CurveFileError, Problem, Shape, MAX_SEGMENTS};
 use curve::{FillRule, Profile, Segment};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Chains one file may hold (each is checked, and a command's work grows with them).
 pub const MAX_CHAINS: usize = 10_000;
@@ -37,8 +37,9 @@ pub struct DrawingRead {
     pub units: Option<String>,
 }
 
-/// Entities or elements of one type that a reader did not read (the contract's `skipped`).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// Entities or elements of one type that a reader did not read (the contract's `skipped`
+/// gives their type and count: [`Skipped::entry`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Skipped {
     /// The type: a DXF entity type (`TEXT`, `INSERT`), an SVG element (`text`), or what a
     /// reader left out of the outlines (`open chain`).
@@ -48,11 +49,16 @@ pub struct Skipped {
     pub count: usize,
     /// Whether they could be part of an outline (a curve, a 3D polyline off the plane, a block
     /// that could not be expanded): then no answer on the drawing is certified.
-    #[serde(skip)]
     pub outline: bool,
     /// The first one's name and why it was not read, for the reason an answer gives.
-    #[serde(skip)]
     pub first: String,
+}
+
+impl Skipped {
+    /// The contract's entry: `{"type", "count"}`.
+    pub fn entry(&self) -> serde_json::Value {
+        serde_json::json!({"type": self.kind, "count": self.count})
+    }
 }
 
 impl DrawingRead {

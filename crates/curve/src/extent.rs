@@ -34,6 +34,67 @@ pub fn box_size(b: Box2) -> f64 {
     (b[2] - b[0]).max(b[3] - b[1])
 }
 
+/// The box of the points of rational B-spline curves together, `[lo x, lo y, hi x, hi y]`, to
+/// within `1e-9` of its size (never smaller than the points): what the contract's size of a
+/// command's input curves is taken of.
+pub fn curves_box(curves: &[&bspline::Rational]) -> crate::Result<Box2> {
+    let segments = curves
+        .iter()
+        .map(|c| {
+            let curve = crate::SplineCurve::new((*c).clone())?;
+            Ok(crate::Segment::from_parts(
+                crate::SegmentKind::BSpline,
+                curve,
+                None,
+                crate::OwnParam::Same,
+            ))
+        })
+        .collect::<crate::Result<Vec<_>>>()?;
+    Ok(segments_box(&segments))
+}
+
+/// The box of the points of `segments` (see [`Profile::bounding_box`]).
+fn segments_box(segments: &[crate::Segment]) -> Box2 {
+    let mut stack: Vec<Stretch> = pieces_of(0, segments);
+    let mut found = stack.iter().fold(
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, s| union(b, ends(s)),
+    );
+    while let Some(s) = stack.pop() {
+        let Some([lo, hi]) = s.bounds else {
+            // (A weight not positive: no hull to bound it; its ends are on it.)
+            continue;
+        };
+        let control = [lo.x, lo.y, hi.x, hi.y];
+        let room = BOX_FLATNESS * box_size(found);
+        let beyond = |by: f64| {
+            control[0] < found[0] - by
+                || control[1] < found[1] - by
+                || control[2] > found[2] + by
+                || control[3] > found[3] + by
+        };
+        if !beyond(0.0) {
+            continue;
+        }
+        // (Within the flatness, or halved as far as it goes: its control box, which holds
+        // it, is taken.)
+        if !beyond(room) || s.depth >= MAX_DEPTH {
+            found = union(found, control);
+            continue;
+        }
+        for half in s.halves() {
+            found = union(found, ends(&half));
+            stack.push(half);
+        }
+    }
+    found
+}
+
 impl Profile {
     /// The box of the profile's points, `[lo x, lo y, hi x, hi y]`, to within `1e-9` of its
     /// size (never smaller than the points).
@@ -46,44 +107,7 @@ impl Profile {
     /// assert!((b[0] + 2.0).abs() < 1e-8 && (b[3] - 5.0).abs() < 1e-8);
     /// ```
     pub fn bounding_box(&self) -> Box2 {
-        let mut stack: Vec<Stretch> = pieces_of(0, self.segments());
-        let mut found = stack.iter().fold(
-            [
-                f64::INFINITY,
-                f64::INFINITY,
-                f64::NEG_INFINITY,
-                f64::NEG_INFINITY,
-            ],
-            |b, s| union(b, ends(s)),
-        );
-        while let Some(s) = stack.pop() {
-            let Some([lo, hi]) = s.bounds else {
-                // (A weight not positive: no hull to bound it; its ends are on it.)
-                continue;
-            };
-            let control = [lo.x, lo.y, hi.x, hi.y];
-            let room = BOX_FLATNESS * box_size(found);
-            let beyond = |by: f64| {
-                control[0] < found[0] - by
-                    || control[1] < found[1] - by
-                    || control[2] > found[2] + by
-                    || control[3] > found[3] + by
-            };
-            if !beyond(0.0) {
-                continue;
-            }
-            // (Within the flatness, or halved as far as it goes: its control box, which holds
-            // it, is taken.)
-            if !beyond(room) || s.depth >= MAX_DEPTH {
-                found = union(found, control);
-                continue;
-            }
-            for half in s.halves() {
-                found = union(found, ends(&half));
-                stack.push(half);
-            }
-        }
-        found
+        segments_box(self.segments())
     }
 }
 

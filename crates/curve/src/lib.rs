@@ -47,7 +47,7 @@ mod stretch;
 pub use affine::Affine;
 pub use clearance::Clearance;
 pub use error::{Error, Result};
-pub use extent::{box_size, union as box_union, Box2};
+pub use extent::{box_size, curves_box, union as box_union, Box2};
 pub use fill::{FillRule, FilledOutline};
 pub use frame::Frame;
 pub use geom::{distance_to_segment, squared_distance_to_segment, wrap_pi, Jet, V2};

@@ -31,7 +31,7 @@ use bspline::Rational;
 use curve::Frame;
 use jets::Jets;
 use point::bbox;
-pub(crate) use point::bbox_of_points;
+pub(crate) use point::{bbox_of_points, chord_size};
 use sides::SideFilter;
 use straight_spans::StraightSpans;
 use vertices::Ctx;
@@ -128,7 +128,7 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         diag,
         selfb: false,
         trimmed: opts.trimmed,
-        chord: opts.chord_tol * diag,
+        chord: opts.chord_tol * chord_size(&[c1, c2]),
     };
     // (Cells pairing two pieces of one line hold no bisector point: skipped.)
     let (s1, s2) = (StraightSpans::of(c1, diag), StraightSpans::of(c2, diag));
@@ -146,9 +146,7 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         .sides
         .and_then(|s| SideFilter::new([c1, c2], pieces, s));
     let keep = |p: &Patch| sides.as_ref().is_none_or(|f| f.may_hold(p));
-    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &|_| {
-        false
-    });
+    let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &keep, &|_| false);
     Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
 }
 
@@ -240,7 +238,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
         diag,
         selfb: true,
         trimmed: opts.trimmed,
-        chord: opts.chord_tol * diag,
+        chord: opts.chord_tol * chord_size(&[c]),
     };
     let spans = StraightSpans::of(c, diag);
     let mut cells: Vec<Patch> = Vec::new();
@@ -277,7 +275,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     // the corner (start, end) — the diagonal across the seam: F vanishes to fourth order at
     // that corner (see `lax` in the tracer).
     let lax = |p: &Patch| p.t1 == p.r0 || (p.t0 == dom[0] && p.r1 == dom[3]);
-    let pieces = run_cells(&cells, dom, &z, &map, opts.chord_tol * diag, &keep, &lax);
+    let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &keep, &lax);
     Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
 }
 

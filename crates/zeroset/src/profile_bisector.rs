@@ -246,6 +246,10 @@ struct Run<'a> {
     profiles: [&'a Profile; 2],
     opts: BisectorOptions,
     center: [f64; 2],
+    /// The diagonal of the box of the control points: how far branches run before they are
+    /// clipped.
+    diag: f64,
+    /// The size the chord tolerance is relative to (the contract's).
     size: f64,
 }
 
@@ -256,11 +260,20 @@ impl<'a> Run<'a> {
             .flat_map(|p| p.segments())
             .flat_map(|s| s.curve().control_points())
             .collect();
-        let (center, size) = bbox_of_points(&pts);
+        let (center, diag) = bbox_of_points(&pts);
+        // (The contract's size: max(width, height) of the profiles' points together.)
+        let size = profiles
+            .iter()
+            .map(|p| p.bounding_box())
+            .reduce(curve::box_union)
+            .map(curve::box_size)
+            .filter(|s| *s > 0.0 && s.is_finite())
+            .unwrap_or(diag);
         Self {
             profiles: [profiles[0], profiles[profiles.len() - 1]],
             opts: *opts,
             center,
+            diag,
             size,
         }
     }
@@ -277,7 +290,7 @@ impl<'a> Run<'a> {
     fn reach(&self) -> Reach {
         Reach {
             center: self.center,
-            far: FAR * self.size,
+            far: FAR * self.diag,
             chord: self.opts.chord_tol * self.size,
             tol: self.opts.tol,
         }
@@ -286,14 +299,9 @@ impl<'a> Run<'a> {
     /// Options for the bisector of two segments: untrimmed (trimming is the profiles'), the
     /// chord tolerance relative to the profiles' size rather than the pair's.
     fn pair_options(&self, curves: &[&Rational]) -> BisectorOptions {
-        let pts: Vec<[f64; 2]> = curves
-            .iter()
-            .flat_map(|c| c.control_points())
-            .map(|p| [p[0], p[1]])
-            .collect();
-        let (_, diag) = bbox_of_points(&pts);
+        let pair = crate::bisector::chord_size(curves);
         let chord =
-            (self.opts.chord_tol * self.size / diag).clamp(self.opts.chord_tol, MAX_CHORD_TOL);
+            (self.opts.chord_tol * self.size / pair).clamp(self.opts.chord_tol, MAX_CHORD_TOL);
         BisectorOptions {
             chord_tol: chord,
             trimmed: false,
@@ -463,7 +471,7 @@ impl<'a> Run<'a> {
     ) {
         let map = |tr: [f64; 2]| [self.param(0, seg[0], tr[0]), self.param(1, seg[1], tr[1])];
         out.complete &= found.complete;
-        let extent = POINT_EXTENT * self.size;
+        let extent = POINT_EXTENT * self.diag;
         let feet = |tr: [f64; 2]| {
             [
                 self.profiles[0].jet_to(tr[0], 0).p,
@@ -586,7 +594,7 @@ impl<'a> Run<'a> {
         if !self.opts.trimmed {
             return;
         }
-        let slack = TRIM_SLACK * self.size;
+        let slack = TRIM_SLACK * self.diag;
         let foot = |k: usize, u: f64| profiles[k].jet(u).p.arr();
         let keeps = |tr: [f64; 2], x: [f64; 2]| {
             let f = foot(0, tr[0]);

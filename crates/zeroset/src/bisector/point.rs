@@ -166,6 +166,16 @@ pub(super) fn bbox(curves: &[&Rational]) -> ([f64; 2], f64) {
     bbox_of_points(&pts)
 }
 
+/// The size the chord tolerance of the bisector of `curves` is relative to: the contract's
+/// max(width, height) of the box of their points (the diagonal of their control points' box
+/// where that cannot be found, or for a single point).
+pub(crate) fn chord_size(curves: &[&Rational]) -> f64 {
+    match curve::curves_box(curves).map(curve::box_size) {
+        Ok(size) if size > 0.0 && size.is_finite() => size,
+        _ => bbox(curves).1,
+    }
+}
+
 /// The centre and diagonal of the box of `points` (a diagonal of 1 for a single point).
 pub(crate) fn bbox_of_points(points: &[[f64; 2]]) -> ([f64; 2], f64) {
     let (lo, hi) = bounds(points);

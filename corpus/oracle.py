@@ -547,12 +547,6 @@ def expected_inflections(ring: Ring) -> tuple[int, int, int]:
     return required, optional, undecided
 
 
-# A closing gap up to this share of the size may be closed by moving an end (the contract's
-# "tiny closing gaps are closed"; curvekit closes what the written precision can hide, at most
-# 1e-3 of the outline's size).
-CLOSING_GAP = 1e-4
-
-
 def check_inflections(drawing: Drawing, document: dict) -> tuple[list[str], dict]:
     inflections = document.get("inflections", [])
     points = [np.asarray(i["p"], float) for i in inflections] + [np.asarray(c["p"], float) for c in document.get("corners", [])]
@@ -570,14 +564,10 @@ def check_inflections(drawing: Drawing, document: dict) -> tuple[list[str], dict
     turns = [ring.joint_turn(i) for i in range(len(ring.pieces))]
     corners = sum(abs(t) > CORNER for t in turns)
     undecided_corners = sum(1e-10 < abs(t) <= 1e-6 for t in turns)
-    # A piece shorter than a closing gap the contract closes (the rounding of the numbers as
-    # written, e.g. `Z` drawing a 0.01 line in a 256-unit icon) may be closed instead: its two
-    # corners become one.
-    closing = sum(
-        float(np.hypot(*(piece.end - piece.start))) <= CLOSING_GAP * size for piece in ring.pieces
-    )
+    # (The rings are closed as the contract closes drawn subpaths, `drawing.close_subpath`: a
+    # closing gap within the written precision leaves no short piece, and no extra corner.)
     reported_corners = len(document.get("corners", []))
-    if "corners" in document and not corners - undecided_corners - closing <= reported_corners <= corners + undecided_corners:
+    if "corners" in document and not corners - undecided_corners <= reported_corners <= corners + undecided_corners:
         problems.append(f"{reported_corners} corners reported, the outline has {corners}")
     return problems, {"ring": ring_index, "inflections": len(inflections), "expected": [required, required + optional + 2 * undecided]}
 

@@ -10,6 +10,7 @@
 //! it writes exactly.
 #![allow(clippy::unwrap_used)]
 
+#[path = "../common/mod.rs"]
 mod common;
 
 use common::{curvekit, curvekit_json, fixture};

@@ -1,16 +1,22 @@
-//! Entities → shapes: each read entity's geometry in world coordinates (see the module
+//! Entities → shapes: each read entity's geometry in its block's coordinates (the world's,
+//! for an entity of the ENTITIES section), or why it is not read (see the module
 //! documentation for what each type means).
 
-use super::spline::spline;
+use super::spline::{spline, Spline};
 use super::text::Record;
 use crate::io::{Problem, MAX_ABS, MAX_SEGMENTS};
-use curve::{Affine, Segment};
+use curve::{Affine, Segment, JOIN_GAP};
 use dxf::entities::{Entity, EntityType};
 use std::f64::consts::TAU;
 
 /// How far from (0, 0, ±1) an extrusion direction may be (each of its x and y relative to its
 /// length): the rounding of a unit vector written with 15 or more digits, no tilt.
 const PLAN_NORMAL: f64 = 1e-12;
+
+/// How far the heights (z) of an entity's points may spread, relative to its size in the
+/// plane, for it to lie in one plane parallel to the drawing: the drawing's join tolerance
+/// ([`JOIN_GAP`]); heights that differ less than joined ends may are one height.
+const LEVEL: f64 = JOIN_GAP;
 
 /// How near (radians) a sweep may come to nothing or to a full turn and be a full turn: writers
 /// round angles (the `dxf` crate's writer to 12 decimals, putting 2π at 6.28318530718, past
@@ -21,8 +27,6 @@ pub(super) const ANGLE_ROUNDING: f64 = 1e-9;
 /// The mirror `x ↦ −x`: the object coordinate system of extrusion direction (0, 0, −1).
 pub(super) const MIRROR: Affine = Affine([-1.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
 
-// Entities → shapes.
-
 /// An entity's geometry, before the drawing's tolerance is known.
 #[derive(Debug)]
 pub(super) enum Shape {
@@ -32,13 +36,74 @@ pub(super) enum Shape {
         segment: Box<Segment>,
         flagged: bool,
     },
-    /// A polyline's vertices `(point, bulge)` in its object coordinates, mirrored in x or not,
-    /// and whether it is closed.
+    /// A polyline's vertices `(point, bulge)` in its object coordinates, the map from them to
+    /// the world's (the mirror of extrusion (0, 0, −1), block references' transforms), and
+    /// whether it is closed.
     Polyline {
         vertices: Vec<([f64; 2], f64)>,
-        mirrored: bool,
+        map: Affine,
         closed: bool,
     },
+}
+
+impl Shape {
+    /// The shape moved by `map` (a block reference's transform), its points checked to stay
+    /// finite and at most [`MAX_ABS`].
+    pub(super) fn moved(self, map: &Affine) -> Result<Shape, EntityError> {
+        if *map == Affine::IDENTITY {
+            return Ok(self);
+        }
+        Ok(match self {
+            Shape::Segment { segment, flagged } => {
+                let segment = segment.transformed(map).map_err(|e| curve_error("", e))?;
+                for p in segment.curve().control_points() {
+                    number("", p[0])?;
+                    number("", p[1])?;
+                }
+                Shape::Segment {
+                    segment: Box::new(segment),
+                    flagged,
+                }
+            }
+            Shape::Polyline {
+                vertices,
+                map: ocs,
+                closed,
+            } => {
+                let map = map.after(&ocs);
+                for &(p, _) in &vertices {
+                    let [x, y] = map.apply(p);
+                    number("", x)?;
+                    number("", y)?;
+                }
+                Shape::Polyline {
+                    vertices,
+                    map,
+                    closed,
+                }
+            }
+        })
+    }
+
+    /// How many points it holds (vertices, control points): the work of placing it.
+    pub(super) fn points(&self) -> usize {
+        match self {
+            Shape::Segment { segment, .. } => segment.curve().control_points().len(),
+            Shape::Polyline { vertices, .. } => vertices.len(),
+        }
+    }
+}
+
+/// What reading an entity gives.
+#[derive(Debug)]
+pub(super) enum Outcome {
+    /// Its shape.
+    Shape(Shape),
+    /// Nothing drawn: a line of no length, a polyline of one vertex.
+    Nothing,
+    /// Not read: `outline` if it could be part of an outline, and why (after its name: `is a
+    /// polygon mesh`).
+    Skip { outline: bool, why: String },
 }
 
 /// An entity read: its place among the entities, its name and its shape.
@@ -93,9 +158,19 @@ pub(super) fn curve_error(what: &str, e: curve::Error) -> EntityError {
     }
 }
 
-/// Whether an entity with extrusion direction `n` lies in the drawing's plane mirrored
-/// (`n = (0, 0, −1)`) or not (`(0, 0, 1)`); any other direction is refused.
-pub(super) fn mirrored(n: [f64; 3]) -> Result<bool, EntityError> {
+/// Where an extrusion direction puts an entity.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum Plane {
+    /// In the drawing's plane, its object coordinates the world's (0, 0, 1) or mirrored in x
+    /// (0, 0, −1).
+    Level { mirrored: bool },
+    /// Out of it: why, after the entity's name.
+    Off(String),
+}
+
+/// Where an entity with extrusion direction `n` lies (a zero vector is taken for the
+/// default, as an absent one); a direction that is not finite is refused.
+pub(super) fn plane(n: [f64; 3]) -> Result<Plane, EntityError> {
     let len = n[0].hypot(n[1]).hypot(n[2]);
     if !len.is_finite() {
         return Err(geometry(
@@ -103,25 +178,54 @@ pub(super) fn mirrored(n: [f64; 3]) -> Result<bool, EntityError> {
             "the extrusion direction is not finite",
         ));
     }
-    if len == 0.0 {
-        // (A zero vector is no direction: taken for the default, as an absent one.)
-        return Ok(false);
+    if len == 0.0 || (n[0].abs() <= PLAN_NORMAL * len && n[1].abs() <= PLAN_NORMAL * len) {
+        return Ok(Plane::Level {
+            mirrored: n[2] < 0.0,
+        });
     }
-    if n[0].abs() <= PLAN_NORMAL * len && n[1].abs() <= PLAN_NORMAL * len {
-        return Ok(n[2] < 0.0);
+    Ok(Plane::Off(format!(
+        "has extrusion direction ({}, {}, {}): it is not in the drawing's plane (only \
+         (0, 0, 1) and (0, 0, -1) are read)",
+        n[0], n[1], n[2]
+    )))
+}
+
+/// Where heights `z` that should be one (an entity of size `size` in the plane) spread
+/// farther than [`LEVEL`] allows: their lowest and highest; `None` when level.
+pub(super) fn unlevel(z: &[f64], size: f64) -> Result<Option<(f64, f64)>, EntityError> {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &h in z {
+        number("z", h)?;
+        lo = lo.min(h);
+        hi = hi.max(h);
     }
-    Err(geometry(
-        "extrusion",
-        format!(
-            "extrusion direction ({}, {}, {}): the entity is not in the drawing's plane \
-             (only (0, 0, 1) and (0, 0, -1) are read)",
-            n[0], n[1], n[2]
-        ),
-    ))
+    // (And the rounding of the heights themselves, far from z = 0.)
+    let magnitude = lo.abs().max(hi.abs());
+    let allowed = LEVEL * size + 16.0 * f64::EPSILON * magnitude;
+    Ok((hi - lo > allowed).then_some((lo, hi)))
+}
+
+/// The side of the box of `points`: their size in the plane.
+fn extent(points: impl Iterator<Item = [f64; 2]>) -> f64 {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in points {
+        b = [
+            b[0].min(p[0]),
+            b[1].min(p[1]),
+            b[2].max(p[0]),
+            b[3].max(p[1]),
+        ];
+    }
+    (b[2] - b[0]).hypot(b[3] - b[1])
 }
 
 /// The segment moved into world coordinates (mirrored in x) when `mirror`.
-pub(super) fn placed(seg: Segment, mirror: bool) -> Result<Segment, EntityError> {
+fn placed(seg: Segment, mirror: bool) -> Result<Segment, EntityError> {
     if mirror {
         seg.transformed(&MIRROR).map_err(|e| curve_error("", e))
     } else {
@@ -129,22 +233,41 @@ pub(super) fn placed(seg: Segment, mirror: bool) -> Result<Segment, EntityError>
     }
 }
 
-/// The shape of one entity, or `None` for one that holds no curve (a zero-length line is
-/// decided later, a mesh here).
-pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Option<Shape>, EntityError> {
+fn segment(segment: Segment) -> Outcome {
+    Outcome::Shape(Shape::Segment {
+        segment: Box::new(segment),
+        flagged: false,
+    })
+}
+
+/// A curve of the entity's type that is not in the drawing's plane.
+fn off(why: String) -> Outcome {
+    Outcome::Skip { outline: true, why }
+}
+
+/// The shape of one entity (a zero-length line is decided later), or why it is not read.
+pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, EntityError> {
     let vec3 = |v: &dxf::Vector| [v.x, v.y, v.z];
-    let segment = match &entity.specific {
+    Ok(match &entity.specific {
         EntityType::Line(l) => {
             // (World coordinates: the extrusion direction only orients a thickness.)
             let from = point("start", l.p1.x, l.p1.y)?;
             let to = point("end", l.p2.x, l.p2.y)?;
-            if from == to {
-                return Ok(None);
+            if let Some((lo, hi)) = unlevel(&[l.p1.z, l.p2.z], extent([from, to].into_iter()))? {
+                return Ok(off(format!(
+                    "runs off the drawing's plane (z from {lo} to {hi})"
+                )));
             }
-            Segment::line(from, to).map_err(|e| curve_error("", e))?
+            if from == to {
+                return Ok(Outcome::Nothing);
+            }
+            segment(Segment::line(from, to).map_err(|e| curve_error("", e))?)
         }
         EntityType::Arc(a) => {
-            let mirror = mirrored(vec3(&a.normal))?;
+            let mirrored = match plane(vec3(&a.normal))? {
+                Plane::Level { mirrored } => mirrored,
+                Plane::Off(why) => return Ok(off(why)),
+            };
             let center = point("center", a.center.x, a.center.y)?;
             let r = positive("radius", a.radius)?;
             let start = number("start angle", a.start_angle)?.rem_euclid(360.0);
@@ -154,59 +277,78 @@ pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Option<Sh
             let start = start.to_radians();
             let seg =
                 Segment::arc(center, r, start, start + sweep).map_err(|e| curve_error("", e))?;
-            placed(seg, mirror)?
+            segment(placed(seg, mirrored)?)
         }
         EntityType::Circle(c) => {
-            let mirror = mirrored(vec3(&c.normal))?;
+            let mirrored = match plane(vec3(&c.normal))? {
+                Plane::Level { mirrored } => mirrored,
+                Plane::Off(why) => return Ok(off(why)),
+            };
             let center = point("center", c.center.x, c.center.y)?;
             let r = positive("radius", c.radius)?;
             let seg = Segment::arc(center, r, 0.0, TAU).map_err(|e| curve_error("", e))?;
-            placed(seg, mirror)?
+            segment(placed(seg, mirrored)?)
         }
         EntityType::Ellipse(e) => ellipse(e)?,
         EntityType::LwPolyline(p) => {
-            let mirror = mirrored(vec3(&p.extrusion_direction))?;
+            let mirrored = match plane(vec3(&p.extrusion_direction))? {
+                Plane::Level { mirrored } => mirrored,
+                Plane::Off(why) => return Ok(off(why)),
+            };
             let vertices = p
                 .vertices
                 .iter()
                 .enumerate()
                 .map(|(i, v)| vertex(i, v.x, v.y, v.bulge))
                 .collect::<Result<Vec<_>, _>>()?;
-            return polyline(vertices, mirror, p.flags & 1 != 0);
+            polyline(vertices, mirrored, p.flags & 1 != 0)?
         }
         EntityType::Polyline(p) => {
             // Meshes (16: polygon mesh, 64: polyface mesh) are surfaces, not curves.
             if p.flags & (16 | 64) != 0 {
-                return Ok(None);
+                return Ok(Outcome::Skip {
+                    outline: false,
+                    why: "is a polygon or polyface mesh (a surface)".into(),
+                });
             }
             // A 3D polyline (8) is in world coordinates, without bulges.
             let three_d = p.flags & 8 != 0;
-            let mirror = !three_d && mirrored(vec3(&p.normal))?;
-            let vertices = p
-                .vertices()
-                // Spline-frame control vertices (16) are not on the curve drawn.
-                .filter(|v| v.flags & 16 == 0)
+            let mirrored = match three_d {
+                true => false,
+                false => match plane(vec3(&p.normal))? {
+                    Plane::Level { mirrored } => mirrored,
+                    Plane::Off(why) => return Ok(off(why)),
+                },
+            };
+            // Spline-frame control vertices (16) are not on the curve drawn.
+            let drawn = || p.vertices().filter(|v| v.flags & 16 == 0);
+            let vertices = drawn()
                 .enumerate()
                 .map(|(i, v)| {
                     let bulge = if three_d { 0.0 } else { v.bulge };
                     vertex(i, v.location.x, v.location.y, bulge)
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            return polyline(vertices, mirror, p.flags & 1 != 0);
+            if three_d {
+                let z: Vec<f64> = drawn().map(|v| v.location.z).collect();
+                let size = extent(vertices.iter().map(|&(p, _)| p));
+                if let Some((lo, hi)) = unlevel(&z, size)? {
+                    return Ok(off(format!(
+                        "is a 3D polyline off the drawing's plane (z from {lo} to {hi})"
+                    )));
+                }
+            }
+            polyline(vertices, mirrored, p.flags & 1 != 0)?
         }
-        EntityType::Spline(_) => {
-            let (segment, flagged) = spline(&record.groups)?;
-            return Ok(Some(Shape::Segment {
-                segment: Box::new(segment),
-                flagged,
-            }));
-        }
-        _ => return Ok(None),
-    };
-    Ok(Some(Shape::Segment {
-        segment: Box::new(segment),
-        flagged: false,
-    }))
+        EntityType::Spline(_) => match spline(&record.groups)? {
+            Spline::Read { segment, flagged } => {
+                Outcome::Shape(Shape::Segment { segment, flagged })
+            }
+            Spline::Off(why) => off(why),
+        },
+        // (Only the types read are given here.)
+        _ => Outcome::Nothing,
+    })
 }
 
 /// A polyline vertex `(point, bulge)`.
@@ -219,7 +361,7 @@ fn polyline(
     vertices: Vec<([f64; 2], f64)>,
     mirrored: bool,
     closed: bool,
-) -> Result<Option<Shape>, EntityError> {
+) -> Result<Outcome, EntityError> {
     if vertices.len() > MAX_SEGMENTS {
         return Err((
             "vertices".into(),
@@ -231,11 +373,12 @@ fn polyline(
     }
     if vertices.len() < 2 {
         // (A single vertex is a point: nothing drawn.)
-        return Ok(None);
+        return Ok(Outcome::Nothing);
     }
-    Ok(Some(Shape::Polyline {
+    let map = if mirrored { MIRROR } else { Affine::IDENTITY };
+    Ok(Outcome::Shape(Shape::Polyline {
         vertices,
-        mirrored,
+        map,
         closed,
     }))
 }
@@ -250,14 +393,24 @@ pub(super) fn full_turn(sweep: f64) -> f64 {
     }
 }
 
-/// An `ELLIPSE` in world coordinates.
-fn ellipse(e: &dxf::entities::Ellipse) -> Result<Segment, EntityError> {
-    let flip = mirrored([e.normal.x, e.normal.y, e.normal.z])?;
+/// An `ELLIPSE` in world coordinates, or why it is not read.
+fn ellipse(e: &dxf::entities::Ellipse) -> Result<Outcome, EntityError> {
+    let flip = match plane([e.normal.x, e.normal.y, e.normal.z])? {
+        Plane::Level { mirrored } => mirrored,
+        Plane::Off(why) => return Ok(off(why)),
+    };
     let center = point("center", e.center.x, e.center.y)?;
     let axis = point("major axis", e.major_axis.x, e.major_axis.y)?;
     let rx = axis[0].hypot(axis[1]);
     if rx == 0.0 {
         return Err(geometry("major axis", "the major axis has zero length"));
+    }
+    // (The major axis lies in the plane of the extrusion direction: a z of its own tilts it.)
+    let z = number("major axis", e.major_axis.z)?;
+    if z.abs() > PLAN_NORMAL * rx.hypot(z) {
+        return Ok(off(format!(
+            "has a major axis out of the drawing's plane (z = {z})"
+        )));
     }
     let ratio = positive("ratio", e.minor_axis_ratio)?;
     let ry = rx * ratio;
@@ -275,7 +428,9 @@ fn ellipse(e: &dxf::entities::Ellipse) -> Result<Segment, EntityError> {
     } else {
         (start, start + sweep)
     };
-    Segment::elliptic_arc(center, rx, ry, rotation, a, b).map_err(|e| curve_error("", e))
+    let seg =
+        Segment::elliptic_arc(center, rx, ry, rotation, a, b).map_err(|e| curve_error("", e))?;
+    Ok(segment(seg))
 }
 
 #[cfg(test)]
@@ -284,12 +439,22 @@ mod tests {
 
     #[test]
     fn extrusion_directions() {
-        assert_eq!(mirrored([0.0, 0.0, 1.0]), Ok(false));
-        assert_eq!(mirrored([0.0, 0.0, -2.0]), Ok(true));
-        assert_eq!(mirrored([1e-13, 0.0, -1.0]), Ok(true));
-        assert_eq!(mirrored([0.0, 0.0, 0.0]), Ok(false));
-        assert!(mirrored([0.0, 1e-9, 1.0]).is_err());
-        assert!(mirrored([f64::NAN, 0.0, 1.0]).is_err());
+        let level = |mirrored| Ok(Plane::Level { mirrored });
+        assert_eq!(plane([0.0, 0.0, 1.0]), level(false));
+        assert_eq!(plane([0.0, 0.0, -2.0]), level(true));
+        assert_eq!(plane([1e-13, 0.0, -1.0]), level(true));
+        assert_eq!(plane([0.0, 0.0, 0.0]), level(false));
+        assert!(matches!(plane([0.0, 1e-9, 1.0]), Ok(Plane::Off(_))));
+        assert!(plane([f64::NAN, 0.0, 1.0]).is_err());
+    }
+
+    #[test]
+    fn heights_spread_within_the_join_tolerance_are_level() {
+        assert_eq!(unlevel(&[5.0, 5.0, 5.0], 10.0), Ok(None));
+        assert_eq!(unlevel(&[0.0, 5e-9], 10.0), Ok(None));
+        assert_eq!(unlevel(&[0.0, 2e-8, 1e-8], 10.0), Ok(Some((0.0, 2e-8))));
+        assert_eq!(unlevel(&[], 10.0), Ok(None));
+        assert!(unlevel(&[f64::NAN], 1.0).is_err());
     }
 
     #[test]

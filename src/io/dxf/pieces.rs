@@ -1,9 +1,9 @@
 //! The drawing's tolerance, and each entity's piece: its segments, closed by itself or with
 //! open ends to join.
 
-use super::entities::{curve_error, geometry, placed, EntityError, Item, Shape, MIRROR};
+use super::entities::{curve_error, geometry, EntityError, Item, Shape};
 use super::Failure;
-use curve::{Segment, SegmentKind, JOIN_GAP, V2};
+use curve::{Affine, Segment, SegmentKind, JOIN_GAP, V2};
 
 /// Relative to the drawing's largest coordinate, the rounding an end point carries (an arc's
 /// ends are computed from its centre, radius and angles): a few units of the last place, the
@@ -50,14 +50,11 @@ impl Tolerance {
                     .control_points()
                     .into_iter()
                     .for_each(&mut add),
-                Shape::Polyline {
-                    vertices, mirrored, ..
-                } => {
-                    let flip = |p: [f64; 2]| if *mirrored { MIRROR.apply(p) } else { p };
+                Shape::Polyline { vertices, map, .. } => {
                     for (i, &(p, b)) in vertices.iter().enumerate() {
-                        add(flip(p));
+                        add(map.apply(p));
                         if let Some(&(q, _)) = vertices.get(i + 1).or(vertices.first()) {
-                            add(flip(bulge_middle(p, q, b)));
+                            add(map.apply(bulge_middle(p, q, b)));
                         }
                     }
                 }
@@ -134,15 +131,10 @@ impl Item {
             }
             Shape::Polyline {
                 vertices,
-                mirrored,
+                map,
                 closed,
             } => {
-                let segs = polyline_segments(&vertices, closed, tol).map_err(at)?;
-                let segs = segs
-                    .into_iter()
-                    .map(|s| placed(s, mirrored))
-                    .collect::<Result<Vec<_>, _>>()
-                    .map_err(at)?;
+                let segs = polyline_segments(&vertices, &map, closed, tol).map_err(at)?;
                 if segs.is_empty() {
                     return Ok(None);
                 }
@@ -170,9 +162,11 @@ impl Item {
     }
 }
 
-/// The segments of a polyline in its object coordinates.
+/// The segments of a polyline, made in its object coordinates and moved by `map` into the
+/// world's.
 fn polyline_segments(
     vertices: &[([f64; 2], f64)],
+    map: &Affine,
     closed: bool,
     tol: f64,
 ) -> Result<Vec<Segment>, EntityError> {
@@ -184,7 +178,7 @@ fn polyline_segments(
             break;
         };
         let what = format!("vertex {i}");
-        if (V2::from_arr(q) - V2::from_arr(p)).norm() <= tol {
+        if (V2::from_arr(map.apply(q)) - V2::from_arr(map.apply(p))).norm() <= tol {
             // A repeated vertex: no piece.
             continue;
         }
@@ -193,6 +187,10 @@ fn polyline_segments(
         } else {
             bulge_arc(p, q, b)
         };
+        let seg = seg.and_then(|s| match *map == Affine::IDENTITY {
+            true => Ok(s),
+            false => s.transformed(map),
+        });
         out.push(seg.map_err(|e| curve_error(&what, e))?);
     }
     Ok(out)

@@ -1,7 +1,7 @@
 //! `SPLINE` entities, read from their group codes as written (the `dxf` crate drops the
 //! control points of a spline written without z groups).
 
-use super::entities::{curve_error, geometry, mirrored, number, EntityError};
+use super::entities::{curve_error, geometry, number, plane, unlevel, EntityError, Plane};
 use crate::io::{Problem, MAX_DEGREE};
 use bspline::{BSpline, Rational};
 use curve::{Segment, SegmentKind, SplineCurve};
@@ -22,18 +22,31 @@ fn too_many(what: &str, count: usize) -> EntityError {
     )
 }
 
+/// A `SPLINE` read.
+#[derive(Debug)]
+pub(super) enum Spline {
+    /// Its segment, and whether it is flagged closed or periodic (70 bits 1, 2).
+    Read {
+        segment: Box<Segment>,
+        flagged: bool,
+    },
+    /// Not in the drawing's plane (or one parallel to it): why, after its name.
+    Off(String),
+}
+
 /// A `SPLINE` from its groups as written (see the module documentation).
-/// Returns the segment and whether it is flagged closed or periodic (70 bits 1, 2).
 ///
 /// The curve's derivatives are checked as a `bspline` curve file's are: knots packed far too
 /// tightly for the coordinates overflow them, and nothing after could be trusted.
-pub(super) fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), EntityError> {
+pub(super) fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<Spline, EntityError> {
     let mut flags = 0i64;
     let mut degree = None;
     let mut knots = Vec::new();
     let mut weights = Vec::new();
     let mut points: Vec<[f64; 2]> = Vec::new();
     let mut has_y = Vec::new();
+    // The control points' heights (30), where written.
+    let mut heights = Vec::new();
     let mut fit_points = 0usize;
     let mut normal = [0.0, 0.0, 1.0];
     for (code, value) in groups {
@@ -82,6 +95,8 @@ pub(super) fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), 
                     ))
                 }
             },
+            // (One per control point at most: the bound on points bounds them.)
+            30 if heights.len() < points.len() => heights.push(float("control points")?),
             11 => fit_points += 1,
             210 => normal[0] = float("extrusion")?,
             220 => normal[1] = float("extrusion")?,
@@ -90,7 +105,9 @@ pub(super) fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), 
         }
     }
     // (World coordinates: a planar spline's normal only says which plane it lies in.)
-    mirrored(normal)?;
+    if let Plane::Off(why) = plane(normal)? {
+        return Ok(Spline::Off(why));
+    }
     let n = points.len();
     if n == 0 {
         let why = if fit_points > 0 {
@@ -105,6 +122,20 @@ pub(super) fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), 
             "control points",
             format!("control point {i} has an x (10) but no y (20)"),
         ));
+    }
+    let (lo, hi) = points.iter().fold(
+        ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+        |(lo, hi), p| {
+            (
+                [lo[0].min(p[0]), lo[1].min(p[1])],
+                [hi[0].max(p[0]), hi[1].max(p[1])],
+            )
+        },
+    );
+    if let Some((lo, hi)) = unlevel(&heights, (hi[0] - lo[0]).hypot(hi[1] - lo[1]))? {
+        return Ok(Spline::Off(format!(
+            "has control points off the drawing's plane (z from {lo} to {hi})"
+        )));
     }
     let degree = match degree {
         None => return Err(("degree".into(), Problem::Missing)),
@@ -208,5 +239,8 @@ pub(super) fn spline(groups: &[(i32, Cow<'_, str>)]) -> Result<(Segment, bool), 
     let seg = Segment::spline(SegmentKind::BSpline, curve)
         .map_err(|e| curve_error("control points", e))?;
     // (Whether a spline flagged closed does close is judged with the drawing's tolerance.)
-    Ok((seg, flags & 3 != 0))
+    Ok(Spline::Read {
+        segment: Box::new(seg),
+        flagged: flags & 3 != 0,
+    })
 }

@@ -10,8 +10,11 @@
 //! it writes exactly.
 #![allow(clippy::unwrap_used)]
 
+mod blocks;
 #[path = "../common/mod.rs"]
 mod common;
+mod corpus;
+mod written;
 
 use common::{curvekit, curvekit_json, fixture};
 use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve, V2};
@@ -361,7 +364,7 @@ fn mirrored_extrusion_flips_ocs_entities_in_x_and_runs_ellipses_clockwise() {
 
 #[test]
 fn a_tilted_extrusion_alone_is_refused_naming_the_entity() {
-    // (Beside other geometry it is skipped, and the answer uncertified.)
+    // (Beside other geometry it is skipped, and the answer uncertified: see `corpus`.)
     let mut d = drawing();
     let h = add(
         &mut d,

@@ -62,7 +62,11 @@ fn reading(c: &mut Criterion) {
     all.sort_by_key(|(_, b)| b.len());
     let (name, bytes) = all[all.len() / 2].clone();
     let format = format_of(&name);
-    let short = Path::new(&name).file_name().unwrap().to_string_lossy().into_owned();
+    let short = Path::new(&name)
+        .file_name()
+        .unwrap()
+        .to_string_lossy()
+        .into_owned();
     g.throughput(Throughput::Bytes(bytes.len() as u64));
     g.bench_function(format!("median file {short}: read"), |b| {
         b.iter(|| black_box(parse_region(&name, Some(format), black_box(&bytes), None).unwrap()))

@@ -281,7 +281,15 @@ fn a_corner_at_a_knot_of_full_multiplicity_is_listed() {
     let turn = 63f64.to_radians();
     let (c, s) = (turn.cos(), turn.sin());
     let points = |c: f64, s: f64| {
-        json!([[0, 0], [1, 0.3], [2, 0.3], [3, 0], [3.0 + c, s], [3.0 + 2.0 * c, 2.0 * s + 0.3], [3.0 + 3.0 * c, 3.0 * s]])
+        json!([
+            [0, 0],
+            [1, 0.3],
+            [2, 0.3],
+            [3, 0],
+            [3.0 + c, s],
+            [3.0 + 2.0 * c, 2.0 * s + 0.3],
+            [3.0 + 3.0 * c, 3.0 * s]
+        ])
     };
     let knots = json!([0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1]);
     let sharp = json!({"kind":"bspline","degree":3,"points":points(c, s),"knots":knots});
@@ -300,5 +308,8 @@ fn a_corner_at_a_knot_of_full_multiplicity_is_listed() {
         "points":[[0, 0], [1, 0.3], [2, 0.3], [3, 0.0], [4, -0.3], [5, 0], [6, 0.5]]});
     let path = file_of(&straight, &dir, "straight.json");
     let found = curvekit_json(&["inflections", &path]);
-    assert!(found.get("corners").is_none_or(|c| arr(c).is_empty()), "{found}");
+    assert!(
+        found.get("corners").is_none_or(|c| arr(c).is_empty()),
+        "{found}"
+    );
 }

@@ -117,3 +117,33 @@ fn outward_offsets_grow_the_region() {
         far.stderr
     );
 }
+
+/// The issue's plate (issue 38): a 100 × 100 plate with corners rounded by 10 and a hole of
+/// radius 35, exactly 15 wide at four points, with an island in the hole. At 7.5 the plate's
+/// offset is its four corners touching at those points (closed there): four loops, each
+/// read back as a closed profile. Two of its four touching points were joined by seams solved
+/// either side of them (in either order), and an arc ran the long way round the hole, certified.
+#[test]
+fn a_plate_touching_its_hole_at_the_distance_is_four_corners() {
+    let plate = fixture("corpus/dxf/island_in_hole.dxf");
+    let doc = curvekit_json(&["offset", &plate, "--distances", "7.5"]);
+    assert_eq!(doc["certified"], true, "{doc}");
+    assert_eq!(doc["complete"], true, "{doc}");
+    let loops = doc["offsets"][0]["loops"].as_array().unwrap();
+    let plate_loops: Vec<&serde_json::Value> = loops.iter().filter(|l| l["part"] == 0).collect();
+    assert_eq!(plate_loops.len(), 4, "{doc}");
+    let dir = tempfile::tempdir().unwrap();
+    for (j, l) in plate_loops.iter().enumerate() {
+        let path = dir.path().join(format!("loop-{j}.json"));
+        std::fs::write(&path, l.to_string()).unwrap();
+        let back = curvekit_json(&["inflections", path.to_str().unwrap()]);
+        assert_eq!(back["curve"]["closed"], true, "{l}");
+        // (Each corner's arcs of the hole's offset sweep a quarter turn at most.)
+        for s in l["segments"].as_array().unwrap() {
+            if s["kind"] == "arc" {
+                let sweep = (s["end"].as_f64().unwrap() - s["start"].as_f64().unwrap()).abs();
+                assert!(sweep <= std::f64::consts::FRAC_PI_2 + 1e-9, "{s}");
+            }
+        }
+    }
+}

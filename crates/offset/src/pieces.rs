@@ -101,6 +101,9 @@ pub(crate) fn pieces(
 /// arc segment turns by at most a whole one).
 const SWEEP_STEPS: usize = 8;
 
+/// Parameters this close (in a profile's parameter, one a segment) name the same point.
+const PARAMETER_ROUNDING: f64 = 1e-12;
+
 /// A foot's profile parameter.
 fn param(foot: Foot) -> f64 {
     match foot {
@@ -161,7 +164,9 @@ fn segment_piece(
     };
     let on_segment = |u: f64, end: f64| {
         let u = u.rem_euclid(walk.period);
-        let v = if (u - end).abs() <= 1e-12 || (u + walk.period - end).abs() <= 1e-12 {
+        let v = if (u - end).abs() <= PARAMETER_ROUNDING
+            || (u + walk.period - end).abs() <= PARAMETER_ROUNDING
+        {
             end
         } else {
             u
@@ -169,8 +174,11 @@ fn segment_piece(
         v.clamp(segment as f64, segment as f64 + 1.0)
     };
     let (from, to) = (on_segment(from, enter), on_segment(to, leave));
-    // (A stretch that only touches a segment at its end has nothing of it.)
-    if from == to {
+    // (A stretch that only touches a segment at its end has nothing of it; nor does one that
+    // reaches into it by a parameter's rounding, as a seam's foot solved a rounding past a
+    // joint does: its piece would be a point, which the reader refuses as singular, and the
+    // pieces either side meet within rounding.)
+    if (to - from).abs() <= PARAMETER_ROUNDING {
         return;
     }
     let point = |u: f64| walk.offset(Foot::OnSegment { segment, u }, d).0;

@@ -32,7 +32,6 @@ MANIFEST = json.loads((SAMPLE / "manifest.json").read_text())["files"]
 
 INSERT = "INSERT/MINSERT block references are dropped without a word: the holes they place are missing, and the result is certified"
 OFF_PLANE = "a closed 3D POLYLINE off the plane is read as a hole (projected), and the result is certified"
-TOUCHING = "at d = 7.5 the ring between the plate's edge and its round hole is exactly 2d wide at four points: one loop runs the hole's offset arc the long way round from one touching point to the next, certified"
 SEAM_SEGMENT = "a closed profile of one spline segment with a corner where its ends meet: antipodal refuses 'the closed curve has a corner at its seam'"
 SINGULAR = "a cubic with its first two control points equal (zero speed at its start) is refused as 'singular (zero speed or cusp)'"
 
@@ -51,7 +50,6 @@ XFAIL: dict[tuple[str, str], str] = {
         "dxf/plate_nonuniform_insert.dxf", "dxf/plate_scaled_rotated_insert.dxf",
     ], REGION, INSERT),
     **_each(["dxf/polyline3d_off_plane.dxf"], REGION + CURVE, OFF_PLANE),
-    **_each(["dxf/island_in_hole.dxf"], ("offset",), TOUCHING),
     **_each(["dxf/spline_closed_by_points.dxf"], ("antipodal",), SEAM_SEGMENT),
     **_each(["icons/octicons/flag-24.svg"], CURVE, SINGULAR),
 }

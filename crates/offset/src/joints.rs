@@ -43,6 +43,54 @@ pub(crate) fn close(pieces: &mut [OffsetSegment]) {
     }
 }
 
+/// What is left at a loop's joints after [`close`], from best to worst.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Closure {
+    /// Every piece ends where the next starts, to rounding.
+    Closed,
+    /// A gap was bridged by a line.
+    Bridged,
+    /// A gap wider than the bridge's reach was left: the loop is not one.
+    Open,
+}
+
+/// Bridges each gap [`close`] left (past rounding) by a line, where it is at most `reach`
+/// wide; a wider one leaves the loop [`Closure::Open`]. Such a gap is where the loop's stretches
+/// were joined at a seam the axis does not show (a convex corner without its edge, on an
+/// uncertified axis), or where a seam's feet did not converge: a line keeps every point of the
+/// loop within half its width of the distance, and the loop a closed profile; across a wider
+/// gap, it would cut across the region.
+pub(crate) fn bridge(pieces: &mut Vec<OffsetSegment>, reach: f64) -> Closure {
+    let mut closure = Closure::Closed;
+    let mut k = 0;
+    // (Each joint once; a bridge added is passed over.)
+    while k < pieces.len() {
+        let next = (k + 1) % pieces.len();
+        let (end, start) = (end_of(&pieces[k]), start_of(&pieces[next]));
+        let scale = [end[0], end[1], start[0], start[1]]
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        let wide = gap(end, start);
+        if wide <= ROUNDING_GAP * scale.max(f64::MIN_POSITIVE) {
+            k += 1;
+            continue;
+        }
+        if wide > reach || wide.is_nan() {
+            return Closure::Open;
+        }
+        pieces.insert(
+            k + 1,
+            OffsetSegment::Line {
+                from: end,
+                to: start,
+            },
+        );
+        closure = Closure::Bridged;
+        k += 2;
+    }
+    closure
+}
+
 /// Where the circles `(a, ra)` and `(b, rb)` cross nearest to `near`, when that is within
 /// rounding of it (circles nearly tangent cross far from any point near both; their arcs
 /// then keep their own ends).

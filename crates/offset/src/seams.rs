@@ -122,11 +122,11 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     // vertices' feet is that one, and Newton's method starts again from other shares.
     let bracketed = |found: &[(usize, Foot); 2]| {
         (0..2).all(|side| {
-            within(
+            foot_within(
                 &walks[boundaries[side]],
-                before[side].1,
-                after[side].1,
-                param(found[side].1),
+                (before[side].1, after[side].1),
+                (x0, x1),
+                found[side].1,
             )
         })
     };
@@ -182,12 +182,13 @@ fn crossing_seams(
             (b, foot_between(&walks[b], u, u, 0.0, point.x))
         });
         let (found, closed) = refine(walks, start, d, size);
+        let ends = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
         let inside = (0..2).all(|side| {
-            within(
+            foot_within(
                 &walks[before[side].0],
-                before[side].1,
-                after[side].1,
-                param(found[side].1),
+                (before[side].1, after[side].1),
+                ends,
+                found[side].1,
             )
         });
         let refined = closed && inside;
@@ -232,8 +233,11 @@ fn touching_vertex(
         return None;
     }
     let x = V2::from_arr(edge.xy[j]);
-    let bracket = [0, 1].map(|side| (before[side].1, after[side].1));
-    Some(touching_feet(walks, here, x, bracket, d, size))
+    let bracket = Bracket {
+        feet: [0, 1].map(|side| (before[side].1, after[side].1)),
+        ends: (V2::from_arr(edge.xy[j - 1]), V2::from_arr(edge.xy[j + 1])),
+    };
+    Some(touching_feet(walks, here, x, &bracket, d, size))
 }
 
 /// The feet of a seam where the offset touches itself (the axis's radius least there, within
@@ -245,7 +249,7 @@ fn touching_vertex(
 /// within about the square root of SEAM_CLOSURE of the size from the touching point, either
 /// side: they fell in either order along a boundary, and the loops joined the wrong stretches,
 /// an arc the long way round a hole, a chord across the region.) Newton's method closes the
-/// seam where the offsets meet within the `bracket` of parameters per side; where they do not
+/// seam where the offsets meet within the `bracket` of the axis; where they do not
 /// (a radius a little above `d`), the feet stay those of `x`, whose offsets are on the normals
 /// through it, 2 |r - d| apart, within twice TOUCHING of the size: the loop turns back there,
 /// and the horn's cut closes it.
@@ -253,15 +257,15 @@ fn touching_feet(
     walks: &[Walk<'_>],
     start: [(usize, f64); 2],
     x: V2,
-    bracket: [(f64, f64); 2],
+    bracket: &Bracket,
     d: f64,
     size: f64,
 ) -> [(usize, Foot); 2] {
     let feet = start.map(|(b, u)| (b, foot_between(&walks[b], u, u, 0.0, x)));
     let (found, closed) = refine(walks, feet, d, size);
     let inside = (0..2).all(|side| {
-        let (lo, hi) = bracket[side];
-        within(&walks[feet[side].0], lo, hi, param(found[side].1))
+        let walk = &walks[feet[side].0];
+        foot_within(walk, bracket.feet[side], bracket.ends, found[side].1)
     });
     if closed && inside {
         found
@@ -286,8 +290,11 @@ fn touching_seams(
 ) -> Option<[Seam; 2]> {
     let [before, after] = necks::step_feet(edge, k, walks)?;
     let start = [0, 1].map(|side| (before[side].0, point.feet[side]));
-    let bracket = [0, 1].map(|side| (before[side].1, after[side].1));
-    let feet = touching_feet(walks, start, point.x, bracket, d, size);
+    let bracket = Bracket {
+        feet: [0, 1].map(|side| (before[side].1, after[side].1)),
+        ends: (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k])),
+    };
+    let feet = touching_feet(walks, start, point.x, &bracket, d, size);
     let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
     Some([step * -1.0, step].map(|toward_wider| seam_of(walks, feet, true, toward_wider, d, size)))
 }
@@ -411,6 +418,41 @@ fn within(walk: &Walk<'_>, u0: f64, u1: f64, u: f64) -> bool {
     let short = |v: f64| (v - u0 + 0.5 * period).rem_euclid(period) - 0.5 * period;
     let (span, at) = (short(u1), short(u));
     let margin = BRACKET_ROUNDING * period;
+    at >= span.min(0.0) - margin && at <= span.max(0.0) + margin
+}
+
+/// A stretch of the axis a seam is sought in: per side, the feet's parameters at its ends,
+/// and the ends.
+struct Bracket {
+    feet: [(f64, f64); 2],
+    ends: (V2, V2),
+}
+
+/// A fan's direction may lie outside the directions from its corner to a step's ends by this
+/// share of the turn between them (and a rounding): a seam a little past the step is still
+/// its own, while the seam Newton's method may leap to across a neck between two corners
+/// (the other crossing of their two circles) is across the step's chord.
+const FAN_MARGIN: f64 = 0.01;
+
+/// Whether the foot `found` lies within a step of the axis from `x0` to `x1`, whose vertices'
+/// feet on its side are `u0` and `u1`: its parameter between theirs ([`within`]), and where
+/// all three are on one reflex corner's fan, its direction between the directions from the
+/// corner to the step's ends. (By the parameter alone, a fan's foot is always within: both
+/// seams either side of a neck between two corners, as between the two holes of a glyph
+/// '8', were solved at one crossing of the corners' circles, and the loops joined wrongly.)
+fn foot_within(walk: &Walk<'_>, (u0, u1): (f64, f64), (x0, x1): (V2, V2), found: Foot) -> bool {
+    let Foot::Fan { u, angle } = found else {
+        return within(walk, u0, u1, param(found));
+    };
+    let same = |v: f64| walk.reflex_corner_at(v).is_some_and(|c| c == u);
+    if !(same(u0) && same(u1)) {
+        return within(walk, u0, u1, u);
+    }
+    let c = walk.point(u);
+    let from = (x0 - c).angle();
+    let span = curve::wrap_pi((x1 - c).angle() - from);
+    let at = curve::wrap_pi(angle - from);
+    let margin = FAN_MARGIN * span.abs() + BRACKET_ROUNDING * TAU;
     at >= span.min(0.0) - margin && at <= span.max(0.0) + margin
 }
 

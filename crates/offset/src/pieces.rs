@@ -31,9 +31,9 @@ pub(crate) fn pieces(
                         out.push(corner_arc(walk, u, angle, a, d));
                         return;
                     }
-                    walk.normal(outgoing, u).angle()
+                    walk.normal_entering(outgoing).angle()
                 }
-                _ => walk.normal(outgoing, u).angle(),
+                _ => walk.normal_entering(outgoing).angle(),
             };
             out.push(corner_arc(walk, u, angle, end, d));
             (u, outgoing)
@@ -73,9 +73,15 @@ pub(crate) fn pieces(
             // (A whole boundary closes at the joint it started from: its corner's arc too.)
             let at = leave.rem_euclid(walk.period);
             if stretch.whole && walk.reflex_corner_at(at).is_some() {
-                let from = walk.normal(segment, at).angle();
+                let from = walk.normal_leaving(segment).angle();
                 let next = outgoing_segment(walk, at);
-                out.push(corner_arc(walk, at, from, walk.normal(next, at).angle(), d));
+                out.push(corner_arc(
+                    walk,
+                    at,
+                    from,
+                    walk.normal_entering(next).angle(),
+                    d,
+                ));
             }
             return;
         }
@@ -84,13 +90,19 @@ pub(crate) fn pieces(
         at = leave.rem_euclid(walk.period);
         let next = outgoing_segment(walk, at);
         if walk.reflex_corner_at(at).is_some() {
-            let from = walk.normal(segment, at).angle();
+            let from = walk.normal_leaving(segment).angle();
             match stretch.to {
                 Foot::Fan { u, angle } if same(walk, u, at) && walked >= target - 1e-12 => {
                     out.push(corner_arc(walk, at, from, angle, d));
                     return;
                 }
-                _ => out.push(corner_arc(walk, at, from, walk.normal(next, at).angle(), d)),
+                _ => out.push(corner_arc(
+                    walk,
+                    at,
+                    from,
+                    walk.normal_entering(next).angle(),
+                    d,
+                )),
             }
         }
         segment = next;
@@ -119,7 +131,7 @@ fn same(walk: &Walk<'_>, u: f64, v: f64) -> bool {
 
 /// How far clockwise from the incoming normal `angle` is in the fan at `u`.
 fn fan_place(walk: &Walk<'_>, u: f64, angle: f64) -> f64 {
-    let start = walk.normal(incoming_segment(walk, u), u).angle();
+    let start = walk.normal_leaving(incoming_segment(walk, u)).angle();
     (start - angle).rem_euclid(TAU)
 }
 
@@ -128,8 +140,8 @@ fn fan_place(walk: &Walk<'_>, u: f64, angle: f64) -> f64 {
 fn corner_arc(walk: &Walk<'_>, u: f64, from: f64, to: f64, d: f64) -> OffsetSegment {
     // (Within the corner's own fan: an end an ulp outside it is at its edge, not a turn
     // round.)
-    let fan = (walk.normal(incoming_segment(walk, u), u).angle()
-        - walk.normal(outgoing_segment(walk, u), u).angle())
+    let fan = (walk.normal_leaving(incoming_segment(walk, u)).angle()
+        - walk.normal_entering(outgoing_segment(walk, u)).angle())
     .rem_euclid(TAU);
     let sweep = match (from - to).rem_euclid(TAU) {
         s if s <= fan => s,

@@ -547,8 +547,8 @@ fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
             let angle = angle + step;
             let incoming = incoming_segment(walk, u);
             let outgoing = outgoing_segment(walk, u);
-            let start = walk.normal(incoming, u).angle();
-            let sweep = (start - walk.normal(outgoing, u).angle()).rem_euclid(TAU);
+            let start = walk.normal_leaving(incoming).angle();
+            let sweep = (start - walk.normal_entering(outgoing).angle()).rem_euclid(TAU);
             let into = (start - angle).rem_euclid(TAU);
             if into <= sweep {
                 return Foot::Fan { u, angle };

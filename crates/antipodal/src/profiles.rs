@@ -56,8 +56,26 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
         }
         let (a, b) = seg.curve().domain();
         for f in found.inflections {
-            // At a segment's end the joint decides (a corner is no inflection).
-            if f.u <= a || f.u >= b {
+            // At a segment's end the joint decides (a corner is no inflection). So it does
+            // where the sign change's bracket reaches the end: the curvature there is within
+            // rounding of zero, and the change may be the end's own rounding (a Bézier whose
+            // first three control points are collinear as written in decimals).
+            let [lo, hi] = f.bracket.unwrap_or([f.u, f.u]);
+            if lo <= a || hi >= b {
+                let end = if lo <= a { a } else { b };
+                let u = profile.profile_param(i, end);
+                let last = profile.segments().len() - 1;
+                let open_end =
+                    !profile.is_closed() && ((i == 0 && end == a) || (i == last && end == b));
+                let undecided = f.u > a && f.u < b && (open_end || at_corner(profile, i, end));
+                if undecided && out.certified {
+                    out.certified = false;
+                    out.reason = Some(format!(
+                        "the curvature vanishes within rounding at the end u = {u} of segment \
+                         {i}, by a corner or the profile's end: whether it changes sign just \
+                         inside is not decided"
+                    ));
+                }
                 continue;
             }
             out.inflections.push(Inflection {

@@ -225,3 +225,44 @@ fn corners_lines_and_bad_segments() {
     let e = profile_inflections(&p, &Options::default()).unwrap_err();
     assert!(e.to_string().starts_with("segment 1:"), "{e}");
 }
+
+/// A Bézier whose first three control points lie on one line (as written in decimals) has no
+/// curvature at its start; rounding may put a sign change a few 1e-14 of its domain inside.
+/// There, at a corner, the joint decides: no inflection is listed, and the result says the
+/// curvature vanishes at the joint (octicons' flag-24 writes such a corner).
+#[test]
+fn a_curvature_vanishing_at_a_corner_is_not_an_inflection() {
+    let cubic = |p: [[f64; 2]; 4]| {
+        let c = SplineCurve::clamped(3, &p, None, None).unwrap();
+        Segment::spline(SegmentKind::Bezier, c).unwrap()
+    };
+    let flag = Profile::new(
+        vec![
+            cubic([[19.77, 4.4], [19.76, 4.39], [19.73, 4.38], [19.72, 4.37]]),
+            cubic([[19.72, 4.37], [19.66, 4.32], [19.6, 4.27], [19.53, 4.24]]),
+            Segment::line([19.53, 4.24], [19.53, 3.0]).unwrap(),
+            Segment::line([19.53, 3.0], [21.0, 3.0]).unwrap(),
+            Segment::line([21.0, 3.0], [19.77, 4.4]).unwrap(),
+        ],
+        None,
+    )
+    .unwrap();
+    let r = profile_inflections(&flag, &Options::default()).unwrap();
+    let near_corner = |u: f64| (u - 1.0).abs() < 1e-6;
+    assert!(
+        r.inflections.iter().all(|i| !near_corner(i.u)),
+        "{:?}",
+        r.inflections
+    );
+    assert!(
+        r.corners.iter().any(|c| near_corner(c.u)),
+        "{:?}",
+        r.corners
+    );
+    assert!(!r.certified);
+    assert!(
+        r.reason.as_deref().is_some_and(|m| m.contains("corner")),
+        "{:?}",
+        r.reason
+    );
+}

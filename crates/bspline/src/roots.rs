@@ -43,6 +43,12 @@ pub struct RootOptions {
     pub max_depth: usize,
     /// Limit on the number of pieces examined; what is left is reported as clusters.
     pub max_pieces: usize,
+    /// The function's sign is continuous across its breaks even where the function jumps: it
+    /// is, piece by piece, a positive multiple of a continuous function (the foot-point
+    /// function `w³ (C − q) · C′` of a regular curve whose homogeneous form is only C0 at a
+    /// knot). A cluster at a break can then be proven one simple root (see
+    /// [`find_roots_in`]).
+    pub sign_continuous: bool,
 }
 
 impl Default for RootOptions {
@@ -51,11 +57,18 @@ impl Default for RootOptions {
             tol: DEFAULT_TOL,
             max_depth: 80,
             max_pieces: 200_000,
+            sign_continuous: false,
         }
     }
 }
 
 impl RootOptions {
+    /// Declares the function's sign continuous across its breaks (see the field).
+    pub fn sign_continuous(mut self, yes: bool) -> Self {
+        self.sign_continuous = yes;
+        self
+    }
+
     /// Sets the parameter tolerance.
     pub fn tolerance(mut self, tol: f64) -> Self {
         self.tol = tol;
@@ -177,7 +190,10 @@ pub fn find_roots(f: &BSpline, a: f64, b: f64, opts: &RootOptions) -> Result<Vec
 }
 
 /// All roots of the scalar piecewise function `f` in `[a, b]` (inside its domain), sorted:
-/// certified simple roots where the coefficient signs prove one, clusters elsewhere.
+/// certified simple roots where the coefficient signs prove one, clusters elsewhere. A cluster
+/// with trusted values of opposite signs on either side, between which the derivative is
+/// proven of one sign and the function does not jump (or jumps keeping its sign,
+/// [`RootOptions::sign_continuous`]), is one simple root, proven so.
 pub fn find_roots_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> Result<Vec<Root>> {
     require_scalar(f.dim())?;
     opts.validate()?;
@@ -190,7 +206,8 @@ pub fn find_roots_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> Resul
         roots: Vec::new(),
     };
     search.visit(Part::of(f, a, b), 0);
-    Ok(merge_clusters(search.roots))
+    let roots = merge_clusters(std::mem::take(&mut search.roots));
+    Ok(search.separate_simple_clusters(roots, a, b))
 }
 
 /// Proves that the scalar function `f` is positive on `[a, b]`: `Ok(None)` when every piece of
@@ -489,7 +506,69 @@ struct Isolation<'a> {
     roots: Vec<Root>,
 }
 
+/// Widenings (by 4 each) of a cluster's bracket searched for trusted values on both sides:
+/// up to 4^12 ≈ 1.7e7 times its width, far inside any neighbouring feature at a bracket of the
+/// tolerance's width.
+const CLUSTER_WIDENINGS: usize = 12;
+
 impl Isolation<'_> {
+    /// The clusters that are one simple root, proven and refined: where the function has
+    /// trusted values of opposite signs on both sides of the bracket (short of the next roots)
+    /// and its derivative is proven of one sign between them. Rounding, not multiplicity, can
+    /// keep the control polygon from proving a root: a function whose coefficients are large
+    /// beside its slope (a foot-point function `(C − q) · C′` of a small arc from a far point)
+    /// is within its error bound on a bracket wider than the tolerance. A cluster at an end of
+    /// the search has one side only, and stays one.
+    fn separate_simple_clusters(&self, mut roots: Vec<Root>, a: f64, b: f64) -> Vec<Root> {
+        if roots.iter().all(|r| r.kind != RootKind::Cluster) {
+            return roots;
+        }
+        let df = self.f.derivative();
+        for k in 0..roots.len() {
+            if roots[k].kind != RootKind::Cluster {
+                continue;
+            }
+            let (lo, hi) = roots[k].bracket;
+            let floor = if k > 0 { roots[k - 1].bracket.1 } else { a };
+            let ceiling = roots.get(k + 1).map_or(b, |r| r.bracket.0);
+            if lo <= floor || hi >= ceiling {
+                continue;
+            }
+            let mut width = (hi - lo).max(self.tol);
+            for _ in 0..CLUSTER_WIDENINGS {
+                let (left, right) = ((lo - width).max(floor), (hi + width).min(ceiling));
+                let ((fl, el), (fr, er)) = (value(self.f, left), value(self.f, right));
+                if fl.abs() > el && fr.abs() > er {
+                    if (fl > 0.0) != (fr > 0.0) && self.monotone(&df, left, right) {
+                        roots[k] = self.refine(left, right, fl < 0.0);
+                    }
+                    break;
+                }
+                if left == floor && right == ceiling {
+                    break;
+                }
+                width *= 4.0;
+            }
+        }
+        roots
+    }
+
+    /// Whether the derivative `df` is proven of one sign on `[lo, hi]` (piece by piece),
+    /// across no jump of the function that may change its sign (a sign change at a jump is no
+    /// root).
+    fn monotone(&self, df: &Piecewise, lo: f64, hi: f64) -> bool {
+        let breaks = self.f.breaks();
+        let jump = !self.opts.sign_continuous
+            && (0..breaks.len())
+                .any(|k| breaks[k] > lo && breaks[k] < hi && self.f.continuity(k) < 0);
+        if jump {
+            return false;
+        }
+        let rising = prove_positive_in(df, lo, hi, &self.opts);
+        let falling = prove_positive_in(&df.scale(-1.0), lo, hi, &self.opts);
+        matches!(rising, Ok(None)) || matches!(falling, Ok(None))
+    }
+
     fn visit(&mut self, part: Part, depth: usize) {
         self.parts += 1;
         let (lo, hi) = part.interval();

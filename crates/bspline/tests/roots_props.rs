@@ -3,8 +3,8 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use bspline::roots::{find_roots, find_roots_periodic, Root, RootKind, RootOptions};
-use bspline::BSpline;
+use bspline::roots::{find_roots, find_roots_in, find_roots_periodic, Root, RootKind, RootOptions};
+use bspline::{BSpline, Piecewise};
 use common::*;
 use proptest::prelude::*;
 
@@ -106,6 +106,92 @@ proptest! {
             prop_assert!(w[0].bracket.1 <= w[1].bracket.0, "overlapping brackets {:?}", w);
         }
     }
+}
+
+/// `(u − r)(c + m (u − r)²)` on [0, 1] (`c` and `m` of one sign: one root): a simple root
+/// whose function's coefficients are up to `m / c` times its slope there, so that it is within
+/// their error bound on a bracket far wider than the tolerance.
+fn steep_around(r: f64, c: f64, m: f64) -> BSpline {
+    let line = from_roots(&[r], c, 0.0, 1.0).elevate(2);
+    line.add(&from_roots(&[r, r, r], m, 0.0, 1.0)).unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 500, ..ProptestConfig::default() })]
+
+    /// A simple root that rounding hides from the control polygon is still proven (by trusted
+    /// values of opposite signs about it and a derivative of one sign between them) and
+    /// brackets the exact root; one that hides two roots never is.
+    #[test]
+    fn roots_within_rounding_are_proven_when_simple(
+        r in 0.2f64..0.8,
+        c in 0.01f64..10.0,
+        falling in any::<bool>(),
+        log_m in 6.0f64..12.0,
+        log_gap in -14.0f64..-10.0,
+    ) {
+        let sign = if falling { -1.0 } else { 1.0 };
+        let (c, m) = (sign * c, sign * 10f64.powf(log_m));
+        let f = steep_around(r, c, m);
+        let found = find_roots(&f, 0.0, 1.0, &RootOptions::default()).unwrap();
+        prop_assert_eq!(found.len(), 1, "{:?}", found);
+        prop_assert!(found[0].certified && found[0].kind == RootKind::Simple, "{:?}", found);
+        prop_assert!(covers(&found[0], r, 0.0), "{} not in {:?}", r, found);
+        // Two roots `gap` apart, hidden by the same rounding: never one proven root.
+        let gap = 10f64.powf(log_gap);
+        let two = from_roots(&[r, r + gap], c, 0.0, 1.0)
+            .elevate(1)
+            .add(&from_roots(&[r, r + gap, r], m, 0.0, 1.0))
+            .unwrap();
+        let found = find_roots(&two, 0.0, 1.0, &RootOptions::default()).unwrap();
+        for root in &found {
+            let both = covers(root, r, 0.0) && covers(root, r + gap, 0.0);
+            prop_assert!(!(both && root.certified && root.kind == RootKind::Simple), "{:?}", found);
+        }
+        for x in [r, r + gap] {
+            prop_assert!(found.iter().any(|root| covers(root, x, 1e-9)), "{} lost in {:?}", x, found);
+        }
+    }
+}
+
+/// A function that jumps at a break (degree 1, a double knot) with a root within rounding of
+/// the break: one proven root where its sign is declared continuous there, a cluster where it
+/// is not (a sign change at a jump is no root).
+#[test]
+fn a_root_at_a_jump_is_proven_only_where_the_sign_is_continuous() {
+    // The derivative of a quadratic with a double knot at 1/2 (C0 there): linear pieces
+    // declared to jump at 1/2. Left from −1 to `left`, right from `right` to 1.
+    let derivative = |left: f64, right: f64| {
+        let knots = vec![0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0];
+        let (c1, c2) = (-0.25, -0.25 + 0.25 * left);
+        let c3 = c2 + 0.25 * right;
+        let g = BSpline::new(2, knots, 1, vec![0.0, c1, c2, c3, c3 + 0.25]).unwrap();
+        Piecewise::from_bspline(&g).derivative()
+    };
+    // 2^-52 on both sides: its root a few 1e-17 short of the break, within rounding of it.
+    let tiny = f64::EPSILON;
+    let f = derivative(tiny, tiny);
+    assert!(f.continuity(1) < 0);
+    let plain = find_roots_in(&f, 0.0, 1.0, &RootOptions::default()).unwrap();
+    assert_eq!(plain.len(), 1, "{plain:?}");
+    assert_eq!(plain[0].kind, RootKind::Cluster, "{plain:?}");
+    let opts = RootOptions::default().sign_continuous(true);
+    let proven = find_roots_in(&f, 0.0, 1.0, &opts).unwrap();
+    assert_eq!(proven.len(), 1, "{proven:?}");
+    assert!(
+        proven[0].certified && proven[0].kind == RootKind::Simple,
+        "{proven:?}"
+    );
+    assert!(covers(&proven[0], 0.5, 0.0), "{proven:?}");
+    // A sign change at the jump itself: no root, never a proven one.
+    let g = derivative(-tiny, 2.0 * tiny);
+    let found = find_roots_in(&g, 0.0, 1.0, &RootOptions::default()).unwrap();
+    assert!(
+        found
+            .iter()
+            .all(|r| !(r.certified && r.kind == RootKind::Simple)),
+        "{found:?}"
+    );
 }
 
 #[test]

@@ -333,3 +333,83 @@ proptest! {
         same_points(&written_out, &transformed, 1e-12 * (1.0 + shift.0.abs() + shift.1.abs()));
     }
 }
+
+/// The diameter of a closed profile by dense sampling and local refinement (golden-section
+/// on each coordinate in turn from the best sampled pair): an oracle independent of the
+/// antipodal search.
+fn sampled_diameter(p: &Profile) -> f64 {
+    let (a, b) = p.domain();
+    let n = 4000;
+    let at = |k: usize| a + (b - a) * k as f64 / n as f64;
+    let points: Vec<V2> = (0..n).map(|k| p.jet(at(k)).p).collect();
+    let mut best = (0.0, 0, 0);
+    for i in 0..n {
+        for j in i + 1..n {
+            let d = (points[i] - points[j]).norm();
+            if d > best.0 {
+                best = (d, i, j);
+            }
+        }
+    }
+    let step = (b - a) / n as f64;
+    let (mut s, mut t) = (at(best.1), at(best.2));
+    let dist = |s: f64, t: f64| (p.jet(s.clamp(a, b)).p - p.jet(t.clamp(a, b)).p).norm();
+    for _ in 0..20 {
+        for which in 0..2 {
+            let (mut lo, mut hi) = if which == 0 {
+                (s - step, s + step)
+            } else {
+                (t - step, t + step)
+            };
+            for _ in 0..60 {
+                let (m1, m2) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+                let f = |x: f64| if which == 0 { dist(x, t) } else { dist(s, x) };
+                if f(m1) < f(m2) {
+                    lo = m1;
+                } else {
+                    hi = m2;
+                }
+            }
+            if which == 0 {
+                s = 0.5 * (lo + hi)
+            } else {
+                t = 0.5 * (lo + hi)
+            }
+        }
+    }
+    dist(s, t).max(best.0)
+}
+
+/// Heroicons' sparkle (arcs at its tips, written to three decimals, so each tip is a corner
+/// of a few 1e-4 rad): its diameter runs from the corner at its top tip to the middle of its
+/// bottom tip's arc, a knot of the arc's rational form. Found and certified, from whichever
+/// point the path starts; its facing parallel sides, which do not overlap, leave the
+/// certificate alone.
+#[test]
+fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
+    let tips = "a.75.75 0 0 1 .721.544l.813 2.846a3.75 3.75 0 0 0 2.576 2.576l2.846.813a.75.75 0 0 1 0 1.442l-2.846.813a3.75 3.75 0 0 0-2.576 2.576l-.813 2.846a.75.75 0 0 1-1.442 0l-.813-2.846a3.75 3.75 0 0 0-2.576-2.576l-2.846-.813a.75.75 0 0 1 0-1.442l2.846-.813A3.75 3.75 0 0 0 7.466 7.89l.813-2.846A.75.75 0 0 1 9 4.5";
+    let top = format!(r#"<path d="M9 4.5{tips}Z"/>"#);
+    let side = r#"<path d="M9.721 5.044l.813 2.846a3.75 3.75 0 0 0 2.576 2.576l2.846.813a.75.75 0 0 1 0 1.442l-2.846.813a3.75 3.75 0 0 0-2.576 2.576l-.813 2.846a.75.75 0 0 1-1.442 0l-.813-2.846a3.75 3.75 0 0 0-2.576-2.576l-2.846-.813a.75.75 0 0 1 0-1.442l2.846-.813A3.75 3.75 0 0 0 7.466 7.89l.813-2.846A.75.75 0 0 1 9 4.5a.75.75 0 0 1 .721.544Z"/>"#;
+    for body in [top.as_str(), side] {
+        let p = profile_of(body);
+        let r = curvekit::antipodal::profile_antipodal(&p, &Default::default()).unwrap();
+        assert!(r.certified, "{:?}", r.reason);
+        let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
+        let diameter = sampled_diameter(&p);
+        assert!(
+            (longest - diameter).abs() <= 1e-9 * diameter,
+            "{longest} vs {diameter}"
+        );
+        let top_tip = r
+            .pairs
+            .iter()
+            .find(|q| (q.distance - longest).abs() <= 1e-12 * longest)
+            .unwrap();
+        let ends = [top_tip.p, top_tip.q];
+        assert!(
+            ends.iter()
+                .any(|e| (V2::from_arr(*e) - V2::new(9.0, 4.5)).norm() < 1e-12),
+            "{top_tip:?}"
+        );
+    }
+}

@@ -173,7 +173,12 @@ fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Fo
         w.mul(&r.dot(&dr)?)?.sub(&dw.mul(&r.dot(&r)?)?)?
     };
     let (a, b) = f.domain();
-    let ropts = RootOptions::default().tolerance(opts.tol);
+    // (The numerator is `w³ (C − q) · C′`: its sign is continuous across a knot where the
+    // homogeneous form is only C0, as a rational arc's middle is, on a segment without
+    // corners inside.)
+    let ropts = RootOptions::default()
+        .tolerance(opts.tol)
+        .sign_continuous(true);
     let roots = find_roots_in(&f, a, b, &ropts)?;
     let df = f.derivative();
     let mut feet = Vec::with_capacity(roots.len());

@@ -41,9 +41,6 @@ pub(crate) fn flat_pairs(
             (Some(a), Some(b)) => cross_sign(a.from, a.to, b.from, b.to) == Some(Ordering::Equal),
             _ => false,
         };
-        if !parallel {
-            vf.uncertify(Doubt::Continuum);
-        }
         // Coordinates along the stretch direction.
         let dir = nf.perp();
         let x = |v: &View, u: f64| (v.point(u) - pf).dot(dir);
@@ -53,6 +50,11 @@ pub(crate) fn flat_pairs(
         let hi = f0.max(f1).min(g0.max(g1));
         if hi - lo <= OVERLAP_ROUNDING * scale {
             return;
+        }
+        // (Stretches that do not overlap along their direction face no pair across: their
+        // parallelism, proven or not, decides nothing.)
+        if !parallel {
+            vf.uncertify(Doubt::Continuum);
         }
         // Parameter on a stretch at coordinate c: where the line across it meets it.
         let at = |v: &View, piece: &Piece, c: f64| {

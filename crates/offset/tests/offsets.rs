@@ -3,6 +3,8 @@
 //! close, run the right way round, and their number follows the region's shape.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+use common::{ends, samples};
 use curve::{ParamCurve, Profile, Region, Segment};
 use medial::{medial_axis, MedialOptions};
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
@@ -51,76 +53,6 @@ fn offsets_of(region: &Region, distances: &[f64]) -> Offsets {
     let axis = medial_axis(region, &MedialOptions::default()).unwrap();
     assert!(axis.certified, "{:?}", axis.reason);
     offsets(region, &axis, distances, &OffsetOptions::default()).unwrap()
-}
-
-/// Points along an offset segment (its ends included).
-fn samples(s: &OffsetSegment, n: usize) -> Vec<[f64; 2]> {
-    match s {
-        OffsetSegment::Line { from, to } => (0..=n)
-            .map(|k| {
-                let t = k as f64 / n as f64;
-                [
-                    from[0] + t * (to[0] - from[0]),
-                    from[1] + t * (to[1] - from[1]),
-                ]
-            })
-            .collect(),
-        OffsetSegment::Arc {
-            center,
-            r,
-            start,
-            end,
-        } => (0..=n)
-            .map(|k| {
-                let a = start + (end - start) * k as f64 / n as f64;
-                [center[0] + r * a.cos(), center[1] + r * a.sin()]
-            })
-            .collect(),
-        OffsetSegment::BSpline {
-            degree,
-            knots,
-            points,
-        } => (0..=n * (points.len() - degree))
-            .map(|k| {
-                de_boor(
-                    *degree,
-                    knots,
-                    points,
-                    k as f64 / (n * (points.len() - degree)) as f64,
-                )
-            })
-            .collect(),
-    }
-}
-
-/// The point of a clamped B-spline at `t` by the Cox–de Boor recursion (written here, apart
-/// from the crates' evaluation).
-fn de_boor(p: usize, knots: &[f64], points: &[[f64; 2]], t: f64) -> [f64; 2] {
-    assert_eq!(knots.len(), points.len() + p + 1, "a clamped knot vector");
-    let n = points.len();
-    // (The span holding t; the last non-empty one at the right end.)
-    let k = (p..n)
-        .rev()
-        .find(|&k| knots[k] <= t && knots[k] < knots[k + 1])
-        .unwrap_or(p);
-    let mut d: Vec<[f64; 2]> = (0..=p).map(|j| points[j + k - p]).collect();
-    for r in 1..=p {
-        for j in (r..=p).rev() {
-            let i = j + k - p;
-            let den = knots[i + p + 1 - r] - knots[i];
-            let a = if den > 0.0 { (t - knots[i]) / den } else { 0.0 };
-            d[j] = [
-                (1.0 - a) * d[j - 1][0] + a * d[j][0],
-                (1.0 - a) * d[j - 1][1] + a * d[j][1],
-            ];
-        }
-    }
-    d[p]
-}
-
-fn ends(s: &OffsetSegment) -> ([f64; 2], [f64; 2]) {
-    let p = samples(s, 1);
-    (p[0], p[p.len() - 1])
 }
 
 /// Chords a query looks at together: one box stands for them all.

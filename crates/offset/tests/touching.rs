@@ -8,6 +8,8 @@
 //! or a stretch left out, shows there), apart from a margin about the distance itself.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+use common::{ends, winding};
 use curve::{Affine, Profile, Region, Segment};
 use medial::{medial_axis, MedialOptions};
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
@@ -92,37 +94,6 @@ fn polygon_of(segments: &[OffsetSegment]) -> Vec<[f64; 2]> {
         }
     }
     points
-}
-
-fn ends(s: &OffsetSegment) -> ([f64; 2], [f64; 2]) {
-    match s {
-        OffsetSegment::Line { from, to } => (*from, *to),
-        OffsetSegment::Arc {
-            center,
-            r,
-            start,
-            end,
-        } => (
-            [center[0] + r * start.cos(), center[1] + r * start.sin()],
-            [center[0] + r * end.cos(), center[1] + r * end.sin()],
-        ),
-        OffsetSegment::BSpline { points, .. } => (points[0], points[points.len() - 1]),
-    }
-}
-
-/// The winding number of the closed polygon `poly` about `p`.
-fn winding(poly: &[[f64; 2]], p: [f64; 2]) -> i32 {
-    let mut w = 0;
-    for k in 0..poly.len() {
-        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
-        let side = (b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1]);
-        if a[1] <= p[1] && b[1] > p[1] && side > 0.0 {
-            w += 1;
-        } else if a[1] > p[1] && b[1] <= p[1] && side < 0.0 {
-            w -= 1;
-        }
-    }
-    w
 }
 
 /// The offsets of the plate moved by `map` at `distances` (in the plate's frame), each

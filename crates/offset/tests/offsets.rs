@@ -4,7 +4,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::{ends, samples};
+use common::{arcs_sweep, ends, samples};
 use curve::{ParamCurve, Profile, Region, Segment};
 use medial::{medial_axis, MedialOptions};
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
@@ -1182,14 +1182,7 @@ fn the_seams_either_side_of_a_dip_are_apart() {
     assert_eq!(loops.len(), 1);
     assert!(loops[0].profile().is_ok(), "{:?}", loops[0].profile().err());
     // (The hole's offset is left where it passes the dip: its arcs span less than a turn.)
-    let turned: f64 = loops[0]
-        .segments
-        .iter()
-        .map(|s| match s {
-            OffsetSegment::Arc { start, end, .. } => (end - start).abs(),
-            _ => 0.0,
-        })
-        .sum();
+    let turned = arcs_sweep(&loops[0].segments);
     assert!(turned < TAU - 0.2, "the hole's offset turns {turned}");
     check(&region, &found, 2e-3);
 }

@@ -7,10 +7,10 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::{ends, samples, winding};
+use common::{arcs_sweep, ends, samples, winding};
 use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::{medial_axis, MedialOptions};
-use offset::{offsets, outward_offsets, OffsetOptions, OffsetSegment, Offsets};
+use offset::{offsets, outward_offsets, OffsetOptions, Offsets};
 
 /// The region bounded by the closed clamped cubic through (by) `points`, its first and last
 /// equal.
@@ -130,14 +130,7 @@ fn outward_a_corner_where_a_splines_ends_meet_grows_its_arc() {
         let found = outward_offsets(&region, &axis, &[d], &OffsetOptions::default()).unwrap();
         check(&region, &found, d, true);
         // (The corner's arc turns by the corner's turn, about 57.5 degrees.)
-        let swept: f64 = found.offsets[0].loops[0]
-            .segments
-            .iter()
-            .map(|s| match s {
-                OffsetSegment::Arc { start, end, .. } => (end - start).abs(),
-                _ => 0.0,
-            })
-            .sum();
+        let swept = arcs_sweep(&found.offsets[0].loops[0].segments);
         assert!((swept - 1.004).abs() < 1e-2, "d = {d}: arcs sweep {swept}");
     }
 }

@@ -88,3 +88,14 @@ pub fn winding(poly: &[[f64; 2]], p: [f64; 2]) -> i32 {
     }
     w
 }
+
+/// The angle the arcs of a loop's pieces sweep, in all.
+pub fn arcs_sweep(segments: &[OffsetSegment]) -> f64 {
+    segments
+        .iter()
+        .map(|s| match s {
+            OffsetSegment::Arc { start, end, .. } => (end - start).abs(),
+            _ => 0.0,
+        })
+        .sum()
+}

@@ -1,11 +1,19 @@
-//! The SVG reader on arbitrary bytes, and `antipodal` on the small closed profiles it
-//! accepts: an error or an answer, never a panic or a hang; answers have finite points.
+//! The SVG reader on arbitrary bytes (as regions, and as the first profile), and `antipodal`
+//! on the small closed profiles it accepts: an error or an answer, never a panic or a hang;
+//! answers have finite points.
 #![no_main]
 
-use curvekit::io::{parse_drawing, DrawingFormat, Shape};
+use curvekit::io::{parse_drawing, parse_region, DrawingFormat, Shape};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    // As the regions `medial` and `offset` read (outlines nested, filled, checked for
+    // crossings): an error or regions with finite points.
+    if let Ok(region) = parse_region("fuzz.svg", Some(DrawingFormat::Svg), data, None) {
+        for p in region.polyline(16) {
+            assert!(p[0].is_finite() && p[1].is_finite(), "region point {p:?}");
+        }
+    }
     let Ok(curve) = parse_drawing("fuzz.svg", DrawingFormat::Svg, data, Some(0)) else {
         return;
     };

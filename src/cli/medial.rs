@@ -1,6 +1,6 @@
 //! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
 
-use super::report::{draw_curve, time_line};
+use super::report::{describe, draw_curve, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
 use curvekit::commands;
 use curvekit::io::{read_region, Curve};
@@ -39,7 +39,7 @@ pub(super) fn run(
     } else {
         let mut s = String::new();
         let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
-        let _ = writeln!(s, "region:      {}", curve.file);
+        let _ = writeln!(s, "region:      {} ({})", curve.file, describe(&curve));
         let _ = writeln!(
             s,
             "nodes:       {} ({} junctions, {} ends, {} corners, {} joints{})",

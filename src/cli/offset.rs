@@ -1,7 +1,7 @@
 //! `curvekit offset`: the inward (or outward) offsets of a region at one or several distances, as text,
 //! JSON (closed profile documents) or a figure.
 
-use super::report::{draw_curve, time_line};
+use super::report::{describe, draw_curve, time_line};
 use super::{print_out, timing, write_file, Common, Failure};
 use curvekit::commands::{self, Distances};
 use curvekit::io::{read_region, Curve};
@@ -44,7 +44,7 @@ pub(super) fn run(
     print_out(&if common.json {
         commands::json_document(&found, &[&curve], stats.as_ref())
     } else {
-        text(&curve.file, &found, stats.as_ref())
+        text(&curve, &found, stats.as_ref())
     })
 }
 
@@ -95,9 +95,9 @@ fn short(d: f64) -> String {
 }
 
 /// The readable report: per distance, its loops and their pieces.
-fn text(file: &str, found: &Offsets, stats: Option<&commands::Stats>) -> String {
+fn text(curve: &Curve, found: &Offsets, stats: Option<&commands::Stats>) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "region:      {file}");
+    let _ = writeln!(s, "region:      {} ({})", curve.file, describe(curve));
     for o in &found.offsets {
         let pieces: usize = o.loops.iter().map(|l| l.segments.len()).sum();
         let _ = writeln!(

@@ -70,7 +70,21 @@ pub(crate) fn describe(curve: &Curve) -> String {
         ),
     };
     let closed = if curve.is_closed() { "closed" } else { "open" };
-    format!("{shape}, {closed}, domain [{a}, {b}]")
+    let mut line = format!("{shape}, {closed}, domain [{a}, {b}]");
+    if let Some(d) = &curve.drawing {
+        if let Some(units) = &d.units {
+            line.push_str(&format!(", in {units}"));
+        }
+        if !d.skipped.is_empty() {
+            let list: Vec<String> = d
+                .skipped
+                .iter()
+                .map(|s| format!("{} {}", s.count, s.kind))
+                .collect();
+            line.push_str(&format!("; not read: {}", list.join(", ")));
+        }
+    }
+    line
 }
 
 /// The readable inflection report.

@@ -19,8 +19,12 @@ pub(crate) const HORN_CUT: f64 = 10.0 * crate::seams::TOUCHING;
 /// Doublings of the cut's distance from the tip before a horn is left as it is.
 const MOST_DOUBLINGS: usize = 80;
 
+/// Halvings of the cut's distance from the tip between the last two doublings: to 2^-40 of
+/// it, a few roundings.
+const CUT_HALVINGS: usize = 40;
+
 /// Cuts the tip of every horn of the closed loop `segments` by a chord where it is `width`
-/// wide (taken back from the tip along both pieces, at most half of either).
+/// wide (taken back from the tip by one length along both pieces, at most half of either).
 pub(crate) fn blunt(segments: &mut Vec<OffsetSegment>, width: f64) {
     let mut k = 0;
     // (Each joint is looked at once; a chord added is passed over.)
@@ -35,28 +39,48 @@ pub(crate) fn blunt(segments: &mut Vec<OffsetSegment>, width: f64) {
             k += 1;
             continue;
         }
-        let mut share = f64::EPSILON.sqrt();
+        // (The same length back from the tip along both pieces, so that the chord runs
+        // across the horn: at the same share of two pieces of unequal lengths it would run
+        // along the horn, back over the longer one's end, and turn back itself.)
+        // Doubled until the horn is that wide there, then bisected to where it is: the cut
+        // is where the geometry puts it, not where the pieces' lengths do (a loop offset
+        // again, whose pieces are split otherwise, is cut at the same place).
+        let lengths = [length(&segments[k]), length(&segments[next])];
+        let shortest = lengths[0].min(lengths[1]);
+        let shares = |back: f64| [back / lengths[0], back / lengths[1]];
+        let wide = |back: f64| {
+            let [a, b] = shares(back);
+            (point_at(&segments[k], 1.0 - a) - point_at(&segments[next], b)).norm() >= width
+        };
+        let mut back = f64::EPSILON.sqrt() * shortest;
         let mut cut = None;
         for _ in 0..MOST_DOUBLINGS {
-            if share > 0.5 {
+            // (Also where a length is not a number.)
+            if back.partial_cmp(&(0.5 * shortest)) != Some(std::cmp::Ordering::Less) {
                 break;
             }
-            let (p, q) = (
-                point_at(&segments[k], 1.0 - share),
-                point_at(&segments[next], share),
-            );
-            if (p - q).norm() >= width {
-                cut = Some(share);
+            if wide(back) {
+                cut = Some(back);
                 break;
             }
-            share *= 2.0;
+            back *= 2.0;
         }
-        let Some(share) = cut else {
+        let Some(mut wide_at) = cut else {
             k += 1;
             continue;
         };
-        let before = trimmed(&segments[k], 0.0, 1.0 - share);
-        let after = trimmed(&segments[next], share, 1.0);
+        let mut narrow_at = 0.5 * wide_at;
+        for _ in 0..CUT_HALVINGS {
+            let middle = 0.5 * (narrow_at + wide_at);
+            if wide(middle) {
+                wide_at = middle;
+            } else {
+                narrow_at = middle;
+            }
+        }
+        let [share_in, share_out] = shares(wide_at);
+        let before = trimmed(&segments[k], 0.0, 1.0 - share_in);
+        let after = trimmed(&segments[next], share_out, 1.0);
         let (Some(before), Some(after)) = (before, after) else {
             k += 1;
             continue;
@@ -69,6 +93,24 @@ pub(crate) fn blunt(segments: &mut Vec<OffsetSegment>, width: f64) {
         segments[next] = after;
         segments.insert(k + 1, chord);
         k += 2;
+    }
+}
+
+/// Points a fitted piece's length is summed over (by chords: a horn's cut needs lengths
+/// only to a few percent).
+const LENGTH_CHORDS: usize = 32;
+
+/// The length of a piece (a fitted one's by chords).
+fn length(s: &OffsetSegment) -> f64 {
+    match s {
+        OffsetSegment::Line { from, to } => (V2::from_arr(*to) - V2::from_arr(*from)).norm(),
+        OffsetSegment::Arc { r, start, end, .. } => r * (end - start).abs(),
+        OffsetSegment::BSpline { .. } => (0..LENGTH_CHORDS)
+            .map(|j| {
+                let t = |j: usize| j as f64 / LENGTH_CHORDS as f64;
+                (point_at(s, t(j + 1)) - point_at(s, t(j))).norm()
+            })
+            .sum(),
     }
 }
 

@@ -8,22 +8,37 @@
 
 use crate::OffsetSegment;
 
-/// The largest gap (relative to the coordinates' size) closed: rounding, and Newton's
-/// agreement at a seam, are far below it; a gap above it is not a joint's rounding, and is
-/// left for the reader to refuse.
+/// The largest gap (relative to the loop's scale, [`scale_of`]) closed: rounding, and
+/// Newton's agreement at a seam, are far below it; a gap above it is not a joint's rounding,
+/// and is left for the reader to refuse.
 const ROUNDING_GAP: f64 = 1e-10;
+
+/// The scale of a loop's rounding: its largest coordinate, or an arc's centre's distance from
+/// the origin plus its radius (an arc's ends are rounded as that large, wherever they are: a
+/// circle's ends near the origin are a few 1e-16 apart).
+fn scale_of(pieces: &[OffsetSegment]) -> f64 {
+    pieces
+        .iter()
+        .map(|s| {
+            let (a, b) = (start_of(s), end_of(s));
+            let ends = a[0].abs().max(a[1].abs()).max(b[0].abs()).max(b[1].abs());
+            match s {
+                OffsetSegment::Arc { center, r, .. } => ends.max(center[0].hypot(center[1]) + r),
+                _ => ends,
+            }
+        })
+        .fold(f64::MIN_POSITIVE, f64::max)
+}
 
 /// Closes the joints of a loop of `pieces` (the last joined to the first).
 pub(crate) fn close(pieces: &mut [OffsetSegment]) {
     let n = pieces.len();
+    let scale = scale_of(pieces);
     for k in 0..n {
         let next = (k + 1) % n;
         let (end, start) = (end_of(&pieces[k]), start_of(&pieces[next]));
-        let scale = [end[0], end[1], start[0], start[1]]
-            .iter()
-            .fold(0.0f64, |m, x| m.max(x.abs()));
         let gap = (end[0] - start[0]).hypot(end[1] - start[1]);
-        if gap == 0.0 || gap > ROUNDING_GAP * scale.max(f64::MIN_POSITIVE) {
+        if gap == 0.0 || gap > ROUNDING_GAP * scale {
             continue;
         }
         let halfway = [0.5 * (end[0] + start[0]), 0.5 * (end[1] + start[1])];
@@ -41,6 +56,52 @@ pub(crate) fn close(pieces: &mut [OffsetSegment]) {
         set_end(&mut pieces[k], joint);
         set_start(&mut pieces[next], joint);
     }
+}
+
+/// What is left at a loop's joints after [`close`], from best to worst.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Closure {
+    /// Every piece ends where the next starts, to rounding.
+    Closed,
+    /// A gap was bridged by a line.
+    Bridged,
+    /// A gap wider than the bridge's reach was left: the loop is not one.
+    Open,
+}
+
+/// Bridges each gap [`close`] left (past rounding) by a line, where it is at most `reach`
+/// wide; a wider one leaves the loop [`Closure::Open`]. Such a gap is where the loop's stretches
+/// were joined at a seam the axis does not show (a convex corner without its edge, on an
+/// uncertified axis), or where a seam's feet did not converge: a line keeps every point of the
+/// loop within half its width of the distance, and the loop a closed profile; across a wider
+/// gap, it would cut across the region.
+pub(crate) fn bridge(pieces: &mut Vec<OffsetSegment>, reach: f64) -> Closure {
+    let mut closure = Closure::Closed;
+    let scale = scale_of(pieces);
+    let mut k = 0;
+    // (Each joint once; a bridge added is passed over.)
+    while k < pieces.len() {
+        let next = (k + 1) % pieces.len();
+        let (end, start) = (end_of(&pieces[k]), start_of(&pieces[next]));
+        let wide = gap(end, start);
+        if wide <= ROUNDING_GAP * scale {
+            k += 1;
+            continue;
+        }
+        if wide > reach || wide.is_nan() {
+            return Closure::Open;
+        }
+        pieces.insert(
+            k + 1,
+            OffsetSegment::Line {
+                from: end,
+                to: start,
+            },
+        );
+        closure = Closure::Bridged;
+        k += 2;
+    }
+    closure
 }
 
 /// Where the circles `(a, ra)` and `(b, rb)` cross nearest to `near`, when that is within

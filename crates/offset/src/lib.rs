@@ -335,6 +335,8 @@ fn offsets_on(
     let mut not_a_profile: Option<curve::Error> = None;
     let mut loops_apart = true;
     let mut consistent = true;
+    let mut loops_bridged = false;
+    let mut loops_left_out = false;
     let mut found = Vec::with_capacity(distances.len());
     for &d in distances {
         let Some((seams, neck_resolved)) = seams::seams(axis, &walks, d, size) else {
@@ -355,13 +357,16 @@ fn offsets_on(
             .collect();
         let assembled = loops::loops(&walks, &seams, &kept_whole);
         consistent &= assembled.consistent;
-        // The loops within `tolerance` of the exact offset where measured, and that distance.
-        let build = |tolerance: f64| {
+        // The loops within `tolerance` of the exact offset where measured, and that distance;
+        // a loop whose pieces do not meet is bridged, or left out (see `joints::bridge`).
+        let mut gaps = joints::Closure::Closed;
+        let mut build = |tolerance: f64| {
             let mut error = 0.0;
+            gaps = joints::Closure::Closed;
             let loops: Vec<OffsetLoop> = assembled
                 .loops
                 .iter()
-                .map(|stretches| {
+                .filter_map(|stretches| {
                     let mut segments = Vec::new();
                     for stretch in stretches {
                         let walk = &walks[stretch.boundary];
@@ -369,10 +374,12 @@ fn offsets_on(
                     }
                     cusps::blunt(&mut segments, cusps::HORN_CUT * size);
                     joints::close(&mut segments);
-                    OffsetLoop {
+                    let closure = joints::bridge(&mut segments, tolerance);
+                    gaps = gaps.max(closure);
+                    (closure != joints::Closure::Open).then_some(OffsetLoop {
                         segments,
                         part: None,
-                    }
+                    })
                 })
                 .collect();
             (loops, error)
@@ -401,6 +408,14 @@ fn offsets_on(
                 not_a_profile.get_or_insert(bad);
             }
         }
+        match gaps {
+            joints::Closure::Closed => {}
+            joints::Closure::Bridged => loops_bridged = true,
+            joints::Closure::Open => {
+                loops_left_out = true;
+                consistent = false;
+            }
+        }
         widest_error = widest_error.max(error);
         found.push(Offset {
             distance: d,
@@ -412,6 +427,18 @@ fn offsets_on(
         Some("the medial axis is not certified".to_string())
     } else if !all_closed {
         Some("a seam's feet did not converge".to_string())
+    } else if loops_left_out {
+        Some(
+            "a loop's pieces did not meet by more than the chord tolerance (a seam the axis does \
+             not show), and it was left out"
+                .to_string(),
+        )
+    } else if loops_bridged {
+        Some(
+            "a loop's pieces did not meet (a seam the axis does not show), and the gap, within \
+             the chord tolerance, was bridged by a line"
+                .to_string(),
+        )
     } else if widest_error > chord {
         Some(format!(
             "a spline's offset is {widest_error:e} from the exact offset where measured, past the \

@@ -154,7 +154,7 @@ fn place(walk: &Walk<'_>, foot: Foot) -> (f64, f64) {
         }
         Foot::Fan { u, angle } => {
             let incoming = incoming_segment(walk, u);
-            let start = walk.normal(incoming, u).angle();
+            let start = walk.normal_leaving(incoming).angle();
             (walk.ahead(0.0, u), 1e-9 + (start - angle).rem_euclid(TAU))
         }
     }

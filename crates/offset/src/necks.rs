@@ -47,6 +47,9 @@ pub(crate) enum Between {
     /// across it): below, the offset pinches off there (a neck); above, a small loop of the
     /// offset stands there (a bump). Either way, at two seams either side.
     Crosses(f64),
+    /// It falls to within [`TOUCHING`] of the distance at this point of the axis, and no
+    /// lower (a neck that only touches it): the offset touches itself there, taken as closed.
+    Touches(AxisPoint),
     /// A point of the step was not moved onto the axis.
     Unknown,
 }
@@ -89,7 +92,7 @@ pub(crate) fn between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f
     if !extremum_inside {
         return Between::Clear;
     }
-    extremum(edge, k, walks, floor, size, above)
+    extremum(edge, k, walks, d, size, above)
 }
 
 /// The radius's slope along the axis at `x`, whose feet are `f0` and `f1`, going the way of
@@ -104,30 +107,39 @@ fn slope(x: V2, f0: V2, f1: V2, step: V2) -> f64 {
 }
 
 /// The extremum of the radius on step `k` of `edge` (a least one if its ends are `above`
-/// `floor`, else a greatest one): the share of the step is halved toward where the slope of
-/// points moved onto the axis changes sign, and a point on the other side of `floor` than
-/// the ends shows a crossing there; if none does by the extremum, the radius stays on their
-/// side.
-fn extremum(
-    edge: &Edge,
-    k: usize,
-    walks: &[Walk<'_>],
-    floor: f64,
-    size: f64,
-    above: bool,
-) -> Between {
+/// `d` and its [`TOUCHING`] band, else a greatest one): the share of the step is halved
+/// toward where the slope of points moved onto the axis changes sign, and a point on the
+/// other side of the band than the ends shows a crossing there; if none does by the
+/// extremum, the radius stays on their side, or (a least one) touches `d`, where a point fell
+/// into the band.
+fn extremum(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64, above: bool) -> Between {
     let Some(feet) = step_feet(edge, k, walks) else {
         return Between::Unknown;
     };
+    let (floor, below_band) = (d + TOUCHING * size, d - TOUCHING * size);
     let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
     let (mut before, mut after) = (0.0, 1.0);
+    let mut touches = None;
     for _ in 0..EXTREMUM_HALVINGS {
         let t = 0.5 * (before + after);
         let Some(here) = onto_axis(edge, k, walks, &feet, t, size) else {
             return Between::Unknown;
         };
-        if (here.radius > floor) != above {
+        let across = if above {
+            here.radius < below_band
+        } else {
+            here.radius > floor
+        };
+        if across {
             return Between::Crosses(t);
+        }
+        // (A least radius within the band: halved on to the extremum, where it may still
+        // fall through the band; the least point found is the touching point.)
+        if above && here.radius <= floor {
+            let lower = touches.is_none_or(|p: AxisPoint| here.radius < p.radius);
+            if lower {
+                touches = Some(here);
+            }
         }
         let [f0, f1] = [0, 1].map(|side| walks[feet[0][side].0].point(here.feet[side]));
         // (Before a least radius it falls; before a greatest one it rises.)
@@ -137,7 +149,7 @@ fn extremum(
             after = t;
         }
     }
-    Between::Clear
+    touches.map_or(Between::Clear, Between::Touches)
 }
 
 /// The feet of a step's ends on each side (left first), on one boundary per side; `None`
@@ -153,7 +165,7 @@ pub(crate) fn step_feet(edge: &Edge, k: usize, walks: &[Walk<'_>]) -> Option<Ste
 pub(crate) type StepFeet = [[(usize, f64); 2]; 2];
 
 /// A point of the axis: where, its radius, and its feet's parameters per side.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct AxisPoint {
     pub(crate) x: V2,
     pub(crate) radius: f64,
@@ -209,18 +221,26 @@ pub(crate) fn onto_axis(
 
 /// The nearest point of `walk`'s boundary to `x` near the parameter `u`, by Newton's method
 /// on its segment; a foot that ends at a segment's end is sought on the neighbouring segment
-/// too (past a smooth joint it goes on there), the nearer kept.
-fn local_nearest(walk: &Walk<'_>, x: V2, u: f64) -> curve::Nearest {
+/// too (past a smooth joint it goes on there), the nearer kept. A foot left within [`JOINT`]
+/// of a joint is the joint, exactly: a parameter a rounding short of a closed boundary's
+/// period (`1 - 1e-12` for `0`) would be walked to the long way round, and would not be
+/// known for a reflex corner's.
+pub(crate) fn local_nearest(walk: &Walk<'_>, x: V2, u: f64) -> curve::Nearest {
     let found = walk.profile.nearest_near(x.arr(), u);
     let joint = found.u.round();
     if (found.u - joint).abs() > JOINT * walk.period {
         return found;
     }
-    [joint - JOINT, joint + JOINT]
+    let mut nearest = [joint - JOINT, joint + JOINT]
         .map(|v| {
             walk.profile
                 .nearest_near(x.arr(), v.rem_euclid(walk.period))
         })
         .into_iter()
-        .fold(found, |a, b| if b.distance < a.distance { b } else { a })
+        .fold(found, |a, b| if b.distance < a.distance { b } else { a });
+    let joint = nearest.u.round();
+    if (nearest.u - joint).abs() <= 2.0 * JOINT * walk.period {
+        nearest.u = joint.rem_euclid(walk.period);
+    }
+    nearest
 }

@@ -31,9 +31,9 @@ pub(crate) fn pieces(
                         out.push(corner_arc(walk, u, angle, a, d));
                         return;
                     }
-                    walk.normal(outgoing, u).angle()
+                    walk.normal_entering(outgoing).angle()
                 }
-                _ => walk.normal(outgoing, u).angle(),
+                _ => walk.normal_entering(outgoing).angle(),
             };
             out.push(corner_arc(walk, u, angle, end, d));
             (u, outgoing)
@@ -73,9 +73,15 @@ pub(crate) fn pieces(
             // (A whole boundary closes at the joint it started from: its corner's arc too.)
             let at = leave.rem_euclid(walk.period);
             if stretch.whole && walk.reflex_corner_at(at).is_some() {
-                let from = walk.normal(segment, at).angle();
+                let from = walk.normal_leaving(segment).angle();
                 let next = outgoing_segment(walk, at);
-                out.push(corner_arc(walk, at, from, walk.normal(next, at).angle(), d));
+                out.push(corner_arc(
+                    walk,
+                    at,
+                    from,
+                    walk.normal_entering(next).angle(),
+                    d,
+                ));
             }
             return;
         }
@@ -84,13 +90,19 @@ pub(crate) fn pieces(
         at = leave.rem_euclid(walk.period);
         let next = outgoing_segment(walk, at);
         if walk.reflex_corner_at(at).is_some() {
-            let from = walk.normal(segment, at).angle();
+            let from = walk.normal_leaving(segment).angle();
             match stretch.to {
                 Foot::Fan { u, angle } if same(walk, u, at) && walked >= target - 1e-12 => {
                     out.push(corner_arc(walk, at, from, angle, d));
                     return;
                 }
-                _ => out.push(corner_arc(walk, at, from, walk.normal(next, at).angle(), d)),
+                _ => out.push(corner_arc(
+                    walk,
+                    at,
+                    from,
+                    walk.normal_entering(next).angle(),
+                    d,
+                )),
             }
         }
         segment = next;
@@ -100,6 +112,9 @@ pub(crate) fn pieces(
 /// Steps over which an arc piece's turn is summed: each turns by less than half a turn (an
 /// arc segment turns by at most a whole one).
 const SWEEP_STEPS: usize = 8;
+
+/// Parameters this close (in a profile's parameter, one a segment) name the same point.
+const PARAMETER_ROUNDING: f64 = 1e-12;
 
 /// A foot's profile parameter.
 fn param(foot: Foot) -> f64 {
@@ -116,7 +131,7 @@ fn same(walk: &Walk<'_>, u: f64, v: f64) -> bool {
 
 /// How far clockwise from the incoming normal `angle` is in the fan at `u`.
 fn fan_place(walk: &Walk<'_>, u: f64, angle: f64) -> f64 {
-    let start = walk.normal(incoming_segment(walk, u), u).angle();
+    let start = walk.normal_leaving(incoming_segment(walk, u)).angle();
     (start - angle).rem_euclid(TAU)
 }
 
@@ -125,8 +140,8 @@ fn fan_place(walk: &Walk<'_>, u: f64, angle: f64) -> f64 {
 fn corner_arc(walk: &Walk<'_>, u: f64, from: f64, to: f64, d: f64) -> OffsetSegment {
     // (Within the corner's own fan: an end an ulp outside it is at its edge, not a turn
     // round.)
-    let fan = (walk.normal(incoming_segment(walk, u), u).angle()
-        - walk.normal(outgoing_segment(walk, u), u).angle())
+    let fan = (walk.normal_leaving(incoming_segment(walk, u)).angle()
+        - walk.normal_entering(outgoing_segment(walk, u)).angle())
     .rem_euclid(TAU);
     let sweep = match (from - to).rem_euclid(TAU) {
         s if s <= fan => s,
@@ -161,7 +176,9 @@ fn segment_piece(
     };
     let on_segment = |u: f64, end: f64| {
         let u = u.rem_euclid(walk.period);
-        let v = if (u - end).abs() <= 1e-12 || (u + walk.period - end).abs() <= 1e-12 {
+        let v = if (u - end).abs() <= PARAMETER_ROUNDING
+            || (u + walk.period - end).abs() <= PARAMETER_ROUNDING
+        {
             end
         } else {
             u
@@ -169,8 +186,11 @@ fn segment_piece(
         v.clamp(segment as f64, segment as f64 + 1.0)
     };
     let (from, to) = (on_segment(from, enter), on_segment(to, leave));
-    // (A stretch that only touches a segment at its end has nothing of it.)
-    if from == to {
+    // (A stretch that only touches a segment at its end has nothing of it; nor does one that
+    // reaches into it by a parameter's rounding, as a seam's foot solved a rounding past a
+    // joint does: its piece would be a point, which the reader refuses as singular, and the
+    // pieces either side meet within rounding.)
+    if (to - from).abs() <= PARAMETER_ROUNDING {
         return;
     }
     let point = |u: f64| walk.offset(Foot::OnSegment { segment, u }, d).0;

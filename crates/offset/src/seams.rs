@@ -70,6 +70,9 @@ pub(crate) fn seams(
                 Between::Crosses(t) => {
                     found.extend(crossing_seams(edge, k, walks, d, size, t, above(r0))?)
                 }
+                Between::Touches(point) => {
+                    found.extend(touching_seams(edge, k, walks, point, d, size)?)
+                }
                 Between::Unknown => resolved = false,
             }
         }
@@ -107,17 +110,23 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
             refined: true,
         });
     }
+    // A vertex where the radius is least, within TOUCHING of `d`: the offset touches itself
+    // there, taken as closed (see `touching_feet`).
+    let end = usize::from(r1 <= r0);
+    if let Some(feet) = touching_vertex(edge, k - 1 + end, walks, d, size) {
+        return Some(seam_of(walks, feet, true, toward_wider, d, size));
+    }
     // Newton's method from the radius's linear share of the step; near a dip of the radius
     // the two offsets run nearly parallel, the equations are nearly singular, and a first
     // step may leap to the seam on the dip's far side: a solution with a foot outside its
     // vertices' feet is that one, and Newton's method starts again from other shares.
     let bracketed = |found: &[(usize, Foot); 2]| {
         (0..2).all(|side| {
-            within(
+            foot_within(
                 &walks[boundaries[side]],
-                before[side].1,
-                after[side].1,
-                param(found[side].1),
+                (before[side].1, after[side].1),
+                (x0, x1),
+                found[side].1,
             )
         })
     };
@@ -173,12 +182,13 @@ fn crossing_seams(
             (b, foot_between(&walks[b], u, u, 0.0, point.x))
         });
         let (found, closed) = refine(walks, start, d, size);
+        let ends = (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k]));
         let inside = (0..2).all(|side| {
-            within(
+            foot_within(
                 &walks[before[side].0],
-                before[side].1,
-                after[side].1,
-                param(found[side].1),
+                (before[side].1, after[side].1),
+                ends,
+                found[side].1,
             )
         });
         let refined = closed && inside;
@@ -194,6 +204,99 @@ fn crossing_seams(
     // (The radius widens toward the vertices from a neck, toward the middle of a bump.)
     let outward = if above { -1.0 } else { 1.0 };
     Some([seam(0.0, step * outward)?, seam(1.0, step * -outward)?])
+}
+
+/// The feet of the seam at vertex `j` of `edge` where the radius is least there (its
+/// neighbours both above the distance, so not at an end of the edge) and within [`TOUCHING`]
+/// of `d`: see [`touching_feet`], from the vertex's own feet, within its neighbours'.
+fn touching_vertex(
+    edge: &Edge,
+    j: usize,
+    walks: &[Walk<'_>],
+    d: f64,
+    size: f64,
+) -> Option<[(usize, Foot); 2]> {
+    let above = |r: f64| r > d + TOUCHING * size;
+    let least = j > 0
+        && j + 1 < edge.xy.len()
+        && above(edge.radius[j - 1])
+        && above(edge.radius[j + 1])
+        && (edge.radius[j] - d).abs() <= TOUCHING * size;
+    if !least {
+        return None;
+    }
+    // (Sided by the way from one neighbour to the other: the same for both steps.)
+    let across = V2::from_arr(edge.xy[j + 1]) - V2::from_arr(edge.xy[j - 1]);
+    let [before, here, after] = [j - 1, j, j + 1].map(|i| sided_feet(edge, i, across, walks));
+    let (before, here, after) = (before?, here?, after?);
+    if (0..2).any(|side| before[side].0 != here[side].0 || after[side].0 != here[side].0) {
+        return None;
+    }
+    let x = V2::from_arr(edge.xy[j]);
+    let bracket = Bracket {
+        feet: [0, 1].map(|side| (before[side].1, after[side].1)),
+        ends: (V2::from_arr(edge.xy[j - 1]), V2::from_arr(edge.xy[j + 1])),
+    };
+    Some(touching_feet(walks, here, x, &bracket, d, size))
+}
+
+/// The feet of a seam where the offset touches itself (the axis's radius least there, within
+/// [`TOUCHING`] of `d`: a passage taken as closed), from the feet `start` (per side, the
+/// boundary and the parameter) of the axis point `x`: one seam for both of the kept stretches
+/// that end and begin there on each side, so that they are at one place on each boundary,
+/// where a stretch ending is put before one beginning. (Two seams solved apart, one either
+/// side, meet the double root of two tangent offsets, where Newton's method stops anywhere
+/// within about the square root of SEAM_CLOSURE of the size from the touching point, either
+/// side: they fell in either order along a boundary, and the loops joined the wrong stretches,
+/// an arc the long way round a hole, a chord across the region.) Newton's method closes the
+/// seam where the offsets meet within the `bracket` of the axis; where they do not
+/// (a radius a little above `d`), the feet stay those of `x`, whose offsets are on the normals
+/// through it, 2 |r - d| apart, within twice TOUCHING of the size: the loop turns back there,
+/// and the horn's cut closes it.
+fn touching_feet(
+    walks: &[Walk<'_>],
+    start: [(usize, f64); 2],
+    x: V2,
+    bracket: &Bracket,
+    d: f64,
+    size: f64,
+) -> [(usize, Foot); 2] {
+    let feet = start.map(|(b, u)| (b, foot_between(&walks[b], u, u, 0.0, x)));
+    let (found, closed) = refine(walks, feet, d, size);
+    let inside = (0..2).all(|side| {
+        let walk = &walks[feet[side].0];
+        foot_within(walk, bracket.feet[side], bracket.ends, found[side].1)
+    });
+    if closed && inside {
+        found
+    } else {
+        feet
+    }
+}
+
+/// The two seams where the radius between vertices `k - 1` and `k` of `edge`, both above the
+/// distance, falls to within [`TOUCHING`] of it at `point` (a neck that only touches): the
+/// offset touches itself there, taken as closed, and both seams have the feet
+/// [`touching_feet`] finds from that point's, the kept stretches widening toward either
+/// vertex. (Bisection to where the radius crosses `d + TOUCHING` and Newton's method from
+/// there, as for a neck, would meet the double root of two tangent offsets either side.)
+fn touching_seams(
+    edge: &Edge,
+    k: usize,
+    walks: &[Walk<'_>],
+    point: necks::AxisPoint,
+    d: f64,
+    size: f64,
+) -> Option<[Seam; 2]> {
+    let [before, after] = necks::step_feet(edge, k, walks)?;
+    let start = [0, 1].map(|side| (before[side].0, point.feet[side]));
+    let bracket = Bracket {
+        feet: [0, 1].map(|side| (before[side].1, after[side].1)),
+        ends: (V2::from_arr(edge.xy[k - 1]), V2::from_arr(edge.xy[k])),
+    };
+    let feet = touching_feet(walks, start, point.x, &bracket, d, size);
+    let step = V2::from_arr(edge.xy[k]) - V2::from_arr(edge.xy[k - 1]);
+    Some([step * -1.0, step].map(|toward_wider| seam_of(walks, feet, true, toward_wider, d, size)))
 }
 
 /// A seam at an end of step `k` of `edge` that is a leaf of the axis (a centre of curvature,
@@ -318,6 +421,41 @@ fn within(walk: &Walk<'_>, u0: f64, u1: f64, u: f64) -> bool {
     at >= span.min(0.0) - margin && at <= span.max(0.0) + margin
 }
 
+/// A stretch of the axis a seam is sought in: per side, the feet's parameters at its ends,
+/// and the ends.
+struct Bracket {
+    feet: [(f64, f64); 2],
+    ends: (V2, V2),
+}
+
+/// A fan's direction may lie outside the directions from its corner to a step's ends by this
+/// share of the turn between them (and a rounding): a seam a little past the step is still
+/// its own, while the seam Newton's method may leap to across a neck between two corners
+/// (the other crossing of their two circles) is across the step's chord.
+const FAN_MARGIN: f64 = 0.01;
+
+/// Whether the foot `found` lies within a step of the axis from `x0` to `x1`, whose vertices'
+/// feet on its side are `u0` and `u1`: its parameter between theirs ([`within`]), and where
+/// all three are on one reflex corner's fan, its direction between the directions from the
+/// corner to the step's ends. (By the parameter alone, a fan's foot is always within: both
+/// seams either side of a neck between two corners, as between the two holes of a glyph
+/// '8', were solved at one crossing of the corners' circles, and the loops joined wrongly.)
+fn foot_within(walk: &Walk<'_>, (u0, u1): (f64, f64), (x0, x1): (V2, V2), found: Foot) -> bool {
+    let Foot::Fan { u, angle } = found else {
+        return within(walk, u0, u1, param(found));
+    };
+    let same = |v: f64| walk.reflex_corner_at(v).is_some_and(|c| c == u);
+    if !(same(u0) && same(u1)) {
+        return within(walk, u0, u1, u);
+    }
+    let c = walk.point(u);
+    let from = (x0 - c).angle();
+    let span = curve::wrap_pi((x1 - c).angle() - from);
+    let at = curve::wrap_pi(angle - from);
+    let margin = FAN_MARGIN * span.abs() + BRACKET_ROUNDING * TAU;
+    at >= span.min(0.0) - margin && at <= span.max(0.0) + margin
+}
+
 /// A foot's boundary parameter (a corner's, for a fan).
 fn param(foot: Foot) -> f64 {
     match foot {
@@ -409,8 +547,8 @@ fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
             let angle = angle + step;
             let incoming = incoming_segment(walk, u);
             let outgoing = outgoing_segment(walk, u);
-            let start = walk.normal(incoming, u).angle();
-            let sweep = (start - walk.normal(outgoing, u).angle()).rem_euclid(TAU);
+            let start = walk.normal_leaving(incoming).angle();
+            let sweep = (start - walk.normal_entering(outgoing).angle()).rem_euclid(TAU);
             let into = (start - angle).rem_euclid(TAU);
             if into <= sweep {
                 return Foot::Fan { u, angle };

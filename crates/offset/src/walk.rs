@@ -92,6 +92,22 @@ impl<'r> Walk<'r> {
         }
     }
 
+    /// The unit normal where the walk leaves segment `segment` (at its end, walked with the
+    /// parameter; at its start, against it), toward the side offset into: the incoming
+    /// normal of the joint there. (By the segment's end, not the joint's parameter: a closed
+    /// profile of one segment has its only joint at 0, which is both its ends.)
+    pub(crate) fn normal_leaving(&self, segment: usize) -> V2 {
+        let end = if self.side > 0.0 { 1.0 } else { 0.0 };
+        self.normal(segment, segment as f64 + end)
+    }
+
+    /// The unit normal where the walk enters segment `segment`: the outgoing normal of the
+    /// joint there.
+    pub(crate) fn normal_entering(&self, segment: usize) -> V2 {
+        let end = if self.side > 0.0 { 0.0 } else { 1.0 };
+        self.normal(segment, segment as f64 + end)
+    }
+
     /// The unit normal of segment `segment` at `u`, toward the side offset into (`u` may name
     /// the joint at 0 of the last segment).
     pub(crate) fn normal(&self, segment: usize, u: f64) -> V2 {

@@ -820,7 +820,10 @@ fn feet_listed_in_either_order_are_paired_by_side() {
 }
 
 /// Offsetting by D1, then the result by D2, gives the offset by D1 + D2 (the loops as point
-/// sets, within 1e-7): on the pocket, whose offsets are lines and arcs.
+/// sets, within 1e-7): on the pocket, whose offsets are lines and arcs. Both are taken with
+/// the pocket's size: at 1 its passes touch the island, and each horn there is cut where it
+/// is 1e-8 of the size wide (6e-4 from its tip; of the smaller size of the region offset by
+/// 0.5, 3e-5 nearer).
 #[test]
 fn offsets_compose() {
     let region = pocket();
@@ -836,8 +839,14 @@ fn offsets_compose() {
         1,
         "the pocket at 0.5 is one region with its island"
     );
+    let opts = OffsetOptions {
+        size: Some(region.size()),
+        ..OffsetOptions::default()
+    };
     for d2 in [0.25, 0.5, 0.6] {
-        let again = offsets_of(&inner[0], &[d2]);
+        let axis = medial_axis(&inner[0], &MedialOptions::default()).unwrap();
+        assert!(axis.certified, "{:?}", axis.reason);
+        let again = offsets(&inner[0], &axis, &[d2], &opts).unwrap();
         let direct = offsets_of(&region, &[0.5 + d2]);
         assert_eq!(
             again.offsets[0].loops.len(),

@@ -10,7 +10,11 @@
 //! it writes exactly.
 #![allow(clippy::unwrap_used)]
 
+mod blocks;
+#[path = "../common/mod.rs"]
 mod common;
+mod corpus;
+mod written;
 
 use common::{curvekit, curvekit_json, fixture};
 use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve, V2};
@@ -359,7 +363,8 @@ fn mirrored_extrusion_flips_ocs_entities_in_x_and_runs_ellipses_clockwise() {
 }
 
 #[test]
-fn a_tilted_extrusion_is_refused_naming_the_entity() {
+fn a_tilted_extrusion_alone_is_refused_naming_the_entity() {
+    // (Beside other geometry it is skipped, and the answer uncertified: see `corpus`.)
     let mut d = drawing();
     let h = add(
         &mut d,
@@ -369,7 +374,7 @@ fn a_tilted_extrusion_is_refused_naming_the_entity() {
         }),
     );
     let e = read_err(&d);
-    assert_eq!(e.field, format!("CIRCLE {h} extrusion"), "{e}");
+    assert!(e.to_string().contains(&format!("CIRCLE {h}")), "{e}");
     assert!(e.to_string().contains("not in the drawing's plane"), "{e}");
 }
 

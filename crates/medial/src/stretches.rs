@@ -21,6 +21,10 @@ const COARSE_STEPS: usize = 12;
 /// disk (from 2^-32 of a polyline step to all of it).
 const BACK_STEPS: usize = BRACKET_STEPS + 1;
 
+/// Units of rounding of the coordinates a distance less a radius carries (the disk tests
+/// allow 16 per comparison).
+const DISTANCE_ULPS: f64 = 16.0;
+
 /// Secant steps that solve for the tri-tangent disk inside the bracket.
 const SECANT_STEPS: usize = 60;
 
@@ -144,14 +148,20 @@ fn stretches_of(sites: &Sites<'_>, k: usize, c: &Candidate) -> Vec<Stretch> {
             samples[start..i].iter().filter_map(|s| s.on_axis).collect();
         if start > 0 {
             let before = &samples[start - 1];
+            // (Not the vertex itself again: the junction may lie on it.)
             if let Some(v) = branch.junction(vertices[0], before.tr, before.xy) {
-                vertices.insert(0, v);
+                if v != vertices[0] {
+                    vertices.insert(0, v);
+                }
             }
         }
         if i < n {
             let after = &samples[i];
-            if let Some(v) = branch.junction(vertices[vertices.len() - 1], after.tr, after.xy) {
-                vertices.push(v);
+            let last = vertices[vertices.len() - 1];
+            if let Some(v) = branch.junction(last, after.tr, after.xy) {
+                if v != last {
+                    vertices.push(v);
+                }
             }
         }
         if vertices.len() >= 2 || n == 1 {
@@ -686,11 +696,17 @@ impl Branch<'_, '_> {
         // a little before it. Step back from it, doubling, until the third point is outside
         // the disk (not straight back to the stretch's last vertex: where the entering point
         // is on a foot's own segment, a search from there may find that foot instead).
+        // (Outside within the rounding of the distances, which far from the origin is well
+        // above 1e-16 of the size: a disk that touches the third point exactly, at the
+        // junction, may seem entered by that much.)
+        let outside = |v: &Vertex, f: f64| {
+            f >= -DISTANCE_ULPS * f64::EPSILON * v.xy[0].abs().max(v.xy[1].abs()).max(v.radius)
+        };
         let (mut a, mut fa, mut best) = (lo, third(&last), last);
         let (mut b, mut fb) = (hi, third(&out));
         let mut back = hi - lo;
         for _ in 0..BACK_STEPS {
-            if fa >= 0.0 || a <= 0.0 {
+            if outside(&best, fa) || a <= 0.0 {
                 break;
             }
             (b, fb) = (a, fa);
@@ -706,7 +722,7 @@ impl Branch<'_, '_> {
             };
             fa = third(&best);
         }
-        if !(fa >= 0.0 && fb < 0.0) {
+        if !(outside(&best, fa) && fb < 0.0) {
             return None;
         }
         for _ in 0..SECANT_STEPS {
@@ -818,19 +834,34 @@ impl Branch<'_, '_> {
         // Secant steps from two feet; the foot they converge to, if it is one.
         let secant = |mut u0: f64, mut u1: f64| -> Option<Vertex> {
             let (mut g0, mut g1) = (reduced(u0), reduced(u1));
+            // The iterate of least gap is the foot: at the gap's rounding floor (~1e-16 of
+            // the coordinates, far from the origin well above 1e-16 of the size) the steps
+            // divide noise by noise and may throw the next iterate anywhere.
+            let mut best = (f64::INFINITY, u1);
+            for (u, gu) in [(u0, g0), (u1, g1)] {
+                if gu.abs() < best.0 {
+                    best = (gu.abs(), u);
+                }
+            }
             for _ in 0..FOOT_STEPS {
                 if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
                     break;
                 }
                 let next = u1 - g1 * (u1 - u0) / (g1 - g0);
                 if !next.is_finite() {
-                    return None;
+                    break;
                 }
                 (u0, g0) = (u1, g1);
                 u1 = next;
                 g1 = reduced(u1);
+                if !g1.is_finite() {
+                    break;
+                }
+                if g1.abs() < best.0 {
+                    best = (g1.abs(), u1);
+                }
             }
-            self.foot_solved(keep, guess, p, q, (lo, hi), u1, &g)
+            self.foot_solved(keep, guess, p, q, (lo, hi), best.1, &g)
         };
         // From the two vertices' feet; failing that, from the guess and a foot a little
         // beside it (beside a corner on the kept foot's own line the equidistant point of

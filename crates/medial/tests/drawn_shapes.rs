@@ -15,7 +15,7 @@ mod boundary_oracle;
 mod sampled_voronoi;
 
 use boundary_oracle::{off_segment, winding, Oracle};
-use curve::{Affine, ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
+use curve::{Affine, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::{medial_axis, MedialAxis, MedialOptions};
 use sampled_voronoi::sampled_medial_points;
 
@@ -65,7 +65,7 @@ fn path(d: &str) -> Vec<Segment> {
         }
         let rel = command.is_ascii_lowercase();
         let base = if rel { at } else { [0.0, 0.0] };
-        let mut point = |k: &mut usize| [base[0] + num(k), base[1] + num(k)];
+        let point = |k: &mut usize| [base[0] + num(k), base[1] + num(k)];
         match command.to_ascii_uppercase() {
             'M' => {
                 at = point(&mut k);
@@ -237,4 +237,108 @@ fn arrows_with_nearly_smooth_tips_are_one_piece() {
          0-3.256l-7.108-4.061C13.555 6.346 12 7.249 12 8.689v2.34L5.055 7.06Z",
     );
     assert_right("forward", &region(forward, vec![]), &[FAR], |_| false);
+}
+
+fn polygon(points: &[[f64; 2]]) -> Vec<Segment> {
+    let n = points.len();
+    (0..n)
+        .map(|i| Segment::line(points[i], points[(i + 1) % n]).unwrap())
+        .collect()
+}
+
+/// A circle of radius `r` about `c` as four cubic Béziers (as icons write circles).
+fn bezier_circle(c: [f64; 2], r: f64) -> Vec<Segment> {
+    let k = 0.552_284_749_830_793_6 * r;
+    let (x, y) = (c[0], c[1]);
+    path(&format!(
+        "M{} {}C{} {} {} {} {} {}C{} {} {} {} {} {}C{} {} {} {} {} {}C{} {} {} {} {} {}Z",
+        x + r,
+        y,
+        x + r,
+        y + k,
+        x + k,
+        y + r,
+        x,
+        y + r,
+        x - k,
+        y + r,
+        x - r,
+        y + k,
+        x - r,
+        y,
+        x - r,
+        y - k,
+        x - k,
+        y - r,
+        x,
+        y - r,
+        x + k,
+        y - r,
+        x + r,
+        y - k,
+        x + r,
+        y
+    ))
+}
+
+/// The issue's chevron, ring and diamond: a "V" polygon, a ring of two circles (arcs, or
+/// four cubic Béziers each, as icons write them) and of two octagons, and a square standing
+/// on a corner (its axis the two diagonals, meeting at a junction of four edges). Moved 3e4
+/// from the origin (1e4 of their size), the chevron's axis came in two pieces (a foot's
+/// secant at its rounding floor threw its iterate off the segment, and the search for a
+/// junction took the failed solve for the branch's end), its junctions were not proven
+/// (enclosures of the distances narrower than the coordinates' rounding), and the
+/// diamond's junction lay a slack off (its last traced vertex is the junction, which the
+/// rounding of the distances made seem entered).
+#[test]
+fn chevrons_rings_and_diamonds_are_right_and_certified() {
+    let chevron = region(
+        polygon(&[
+            [0.0, 0.0],
+            [2.0, 2.0],
+            [4.0, 0.0],
+            [4.0, 1.0],
+            [2.0, 3.0],
+            [0.0, 1.0],
+        ]),
+        vec![],
+    );
+    assert_right("chevron", &chevron, &[], |_| true);
+    let diamond = region(
+        polygon(&[[1.0, 0.0], [2.0, 1.0], [1.0, 2.0], [0.0, 1.0]]),
+        vec![],
+    );
+    assert_right("diamond", &diamond, &[], |_| true);
+    let wide = region(
+        polygon(&[[3.0, 0.0], [6.0, 1.0], [3.0, 2.0], [0.0, 1.0]]),
+        vec![],
+    );
+    assert_right("wide diamond", &wide, &[], |_| true);
+    let octagon = |r: f64, turn: f64| {
+        let pts: Vec<[f64; 2]> = (0..8)
+            .map(|k| {
+                let a = turn + std::f64::consts::TAU * k as f64 / 8.0;
+                [r * a.cos(), r * a.sin()]
+            })
+            .collect();
+        polygon(&pts)
+    };
+    let ring = region(octagon(3.0, 0.0), vec![octagon(1.5, 0.2)]);
+    assert_right("octagon ring", &ring, &[], |_| true);
+    let circles = region(
+        vec![Segment::arc([0.0, 0.0], 3.0, 0.0, std::f64::consts::TAU).unwrap()],
+        vec![vec![Segment::arc(
+            [0.5, 0.0],
+            1.0,
+            0.0,
+            std::f64::consts::TAU,
+        )
+        .unwrap()]],
+    );
+    assert_right("ring of circles", &circles, &[], |_| true);
+    let cubic_ring = region(
+        bezier_circle([12.0, 12.0], 10.0),
+        vec![bezier_circle([12.0, 12.0], 7.0)],
+    );
+    assert_right("ring of cubic circles", &cubic_ring, &[], |_| false);
 }

@@ -267,6 +267,12 @@ impl Branch<'_, '_> {
             let boundary = self.sites.boundaries[c.boundary[s]];
             let rate = |u: f64| boundary.jet_on(c.segment[s], u, 3).curvature_rate();
             let (lo, hi) = (a.tr[s].min(b.tr[s]), a.tr[s].max(b.tr[s]));
+            // (Not across a closed boundary's seam, where the foot runs on from the end of
+            // its parameter to the start: between the two lies the rest of the boundary.)
+            let n = boundary.domain().1;
+            if boundary.is_closed() && hi - lo > 0.5 * n {
+                return None;
+            }
             if !(rate(lo).signum() != rate(hi).signum() && hi > lo) {
                 return None;
             }

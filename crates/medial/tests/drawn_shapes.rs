@@ -15,7 +15,7 @@ mod boundary_oracle;
 mod sampled_voronoi;
 
 use boundary_oracle::{off_segment, winding, Oracle};
-use curve::{Affine, Profile, Region, Segment, SegmentKind, SplineCurve};
+use curve::{Affine, ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::{medial_axis, MedialAxis, MedialOptions};
 use sampled_voronoi::sampled_medial_points;
 
@@ -341,4 +341,27 @@ fn chevrons_rings_and_diamonds_are_right_and_certified() {
         vec![bezier_circle([12.0, 12.0], 7.0)],
     );
     assert_right("ring of cubic circles", &cubic_ring, &[], |_| false);
+}
+
+/// The corpus's periodic DXF spline (`dxf/spline_periodic.dxf`: a closed cubic through six
+/// points, one segment): its axis crosses the seam, where the traced bisector's feet trade
+/// places (it keeps them in order, t < r); read as the other foot's jump, a point of the
+/// wrong branch between them cut the axis in two pieces 0.08 apart.
+#[test]
+fn an_axis_across_a_periodic_splines_seam_is_one_piece() {
+    let base = [
+        [0.0, 0.0],
+        [40.0, -10.0],
+        [80.0, 0.0],
+        [90.0, 40.0],
+        [50.0, 60.0],
+        [10.0, 50.0],
+    ];
+    let periodic = SplineCurve::periodic(3, &base, None).unwrap();
+    let (a, b) = periodic.domain();
+    let one_turn = SplineCurve::new(periodic.curve().restrict(a, b).unwrap()).unwrap();
+    let seg = Segment::spline(SegmentKind::BSpline, one_turn).unwrap();
+    let outline = Profile::new(vec![seg], Some(true)).unwrap();
+    let region = Region::new(outline, vec![]).unwrap();
+    assert_right("periodic spline", &region, &[], |k| k != FAR);
 }

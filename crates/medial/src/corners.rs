@@ -52,7 +52,15 @@ pub(crate) fn entered_across_corner(
                     let p = b.jet(v.tr[s]).p;
                     (p.x - v.xy[0]).hypot(p.y - v.xy[1])
                 } else {
-                    b.nearest_near(v.xy, v.tr[s]).distance
+                    // (On the foot's own segment: a foot at its end, the corner, locates
+                    // the segment across it, whose distance is the one to compare with.)
+                    let i = c.segment[s];
+                    let u = if b.locate(v.tr[s]).0 == i {
+                        v.tr[s]
+                    } else {
+                        i as f64 + 1.0 - BEFORE_CORNER
+                    };
+                    b.nearest_near(v.xy, u).distance
                 }
             })
             .fold(f64::INFINITY, f64::min)

@@ -430,6 +430,18 @@ impl Branch<'_, '_> {
         })
     }
 
+    /// The centre of curvature where the feet of `last`, the last vertex of a stretch on the
+    /// axis before they meet, close in ([`Self::end_at_curvature_centre`]), if `last` is
+    /// near it: within [`CLOSING_IN`] of its radius. (Where a branch's trace jumps from a
+    /// corner, its feet's meeting, to far off, the feet beyond meet too, but the centre of
+    /// curvature between them is no end of that stretch: pinterest-logo-fill's corner leaf
+    /// ran to its arc's centre, 104 away across the drawing.)
+    fn centre_closed_in_on(&self, last: &Vertex) -> Option<Vertex> {
+        let end = self.end_at_curvature_centre(last)?;
+        let apart = (end.xy[0] - last.xy[0]).hypot(end.xy[1] - last.xy[1]);
+        (apart <= CLOSING_IN * end.radius).then_some(end)
+    }
+
     /// Where the foot of site `s` on a segment closes in on the other site, a corner at one
     /// of that segment's ends: the corner's parameter (the bisector of a point and a curve
     /// ends, as the foot reaches the point, at the centre of curvature there).
@@ -629,7 +641,7 @@ impl Branch<'_, '_> {
             // No exact point beyond: where the branch runs into its feet's meeting (a
             // self-bisector's end on its diagonal), the axis ends at the centre of curvature.
             if feet_meet_beyond && lo > 0.0 {
-                return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
+                return Some(self.centre_closed_in_on(&last).unwrap_or(last));
             }
             return (lo > 0.0).then_some(last);
         };
@@ -638,7 +650,9 @@ impl Branch<'_, '_> {
             // The feet met: the axis ends at the centre of curvature between them. (Beside
             // that centre the boundary may reach into the disk by more than the slack: the
             // circle osculates it there, so the feet, not the disk, decide.)
-            return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
+            return self
+                .centre_closed_in_on(&last)
+                .or_else(|| (lo > 0.0).then_some(last));
         }
         let b = Bracket {
             lo,

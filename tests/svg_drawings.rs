@@ -413,3 +413,41 @@ fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
         );
     }
 }
+
+/// phosphor's `pinterest-logo-fill` (issue 38): its outline starts with a cubic that meets
+/// the closing arc (radius 104) nearly tangentially. Their bisector is traced from the joint
+/// straight to far off, where its feet meet again; the search for the end of the joint's
+/// stretch took that meeting for its end and put a node at the arc's centre with radius 104,
+/// 3.6 from the boundary, on an edge of its own. Every node is at its distance from the
+/// boundary, and the axis is one piece.
+#[test]
+fn a_joints_leaf_does_not_end_at_a_far_centre_of_curvature() {
+    let body = r#"<path d="M240,128.7c-.38,56.49-46.46,102.73-102.94,103.29a104.16,104.16,0,0,1-25.94-3,4,4,0,0,1-2.91-4.86l8.64-34.55A60.57,60.57,0,0,0,144,196c37,0,66.7-33.45,63.81-73.36A72,72,0,1,0,69.24,155,8,8,0,0,0,80,159.29a8.19,8.19,0,0,0,4-10.49,56,56,0,1,1,107.86-24.93C194,154.4,171.73,180,144,180a44.87,44.87,0,0,1-23.14-6.44l14.9-59.62a8,8,0,0,0-15.52-3.88L93.38,217.51a4,4,0,0,1-5.71,2.59A104,104,0,0,1,32,126.88C32.6,70.52,78.67,24.52,135,24A104,104,0,0,1,240,128.7Z"/>"#;
+    let region = parts_of(body).remove(0);
+    let axis = curvekit::medial::medial_axis(&region, &Default::default()).unwrap();
+    let size = region.size();
+    for n in &axis.nodes {
+        let d = region.outer().nearest(n.xy, 0.0).distance;
+        assert!(
+            (d - n.radius).abs() <= 1e-6 * size,
+            "node at {:?}: radius {}, distance {d}",
+            n.xy,
+            n.radius
+        );
+    }
+    let mut parent: Vec<usize> = (0..axis.nodes.len()).collect();
+    fn root(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            i = p[i];
+        }
+        i
+    }
+    for e in &axis.edges {
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        parent[a] = b;
+    }
+    let pieces = (0..axis.nodes.len())
+        .filter(|&i| root(&mut parent, i) == i)
+        .count();
+    assert_eq!(pieces, 1);
+}

@@ -6,7 +6,7 @@ use crate::error::Result;
 use crate::pairs::{neighbours, Neighbours, FEW_SEGMENTS};
 use crate::sites::Sites;
 use crate::MedialOptions;
-use curve::{Profile, SpanOf};
+use curve::{ParamCurve, Profile, SpanOf};
 use zeroset::{
     profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
 };
@@ -158,7 +158,33 @@ fn add(
     };
     for br in found.branches {
         let segment = map(br.segment, [0.0; 2]).0;
-        let tr = br.tr.iter().map(|&tr| map(br.segment, tr).1).collect();
+        let mut tr: Vec<[f64; 2]> = br.tr.iter().map(|&tr| map(br.segment, tr).1).collect();
+        // The bisector of a closed boundary's one segment with itself is traced with its
+        // feet in order (t < r): where a foot passes the seam, from the end of the
+        // parameter to its start, the two trade places. Each vertex's feet are kept in the
+        // order that follows on from the last's (the other two stretches of the axis there
+        // would not meet: one ends at the seam with a foot at the end, the next starts with
+        // its feet the other way round).
+        let whole = pieces[0].whole;
+        if boundary[0] == boundary[1]
+            && segment[0] == segment[1]
+            && br.corner == [false, false]
+            && whole.is_closed()
+        {
+            let n = whole.domain().1;
+            let apart = |a: f64, b: f64| {
+                let d = (a - b).abs() % n;
+                d.min(n - d)
+            };
+            for k in 1..tr.len() {
+                let (p, q) = (tr[k - 1], tr[k]);
+                let kept = apart(p[0], q[0]) + apart(p[1], q[1]);
+                let traded = apart(p[0], q[1]) + apart(p[1], q[0]);
+                if traded < kept {
+                    tr[k] = [q[1], q[0]];
+                }
+            }
+        }
         out.push(Candidate {
             boundary,
             segment,

@@ -56,6 +56,13 @@ struct Polygon {
     most_corners: usize,
 }
 
+/// The narrowest enclosure of a distance, in units of rounding of the coordinates: four
+/// times the disk tests' own allowance ([`curve::Profile::clearance`] allows 16).
+const ENCLOSURE_ULPS: f64 = 64.0;
+
+/// The widest enclosure of a distance a polygon is tried with, as a share of its radius.
+const MOST_ENCLOSURE: f64 = 0.25;
+
 /// Corners of the first polygon about a junction.
 const FIRST_CORNERS: usize = 8;
 
@@ -344,6 +351,9 @@ struct Corner {
     angle: f64,
     xy: [f64; 2],
     map: [[f64; 2]; 2],
+    /// Whether the corner, without a quadrant, is passed over: one component of the map
+    /// keeps one sign along both sides at it (see [`winds_round_zero`]).
+    passed: bool,
 }
 
 impl Corner {
@@ -377,7 +387,13 @@ fn winds_round_zero(
     polygon: &Polygon,
     contacts: &[Contact],
 ) -> bool {
-    let room = polygon.enclosure * h;
+    // (No narrower than the disk tests can tell: far from the origin a share of the room
+    // is below the coordinates' rounding, and no disk that close to the distance is proven.)
+    let magnitude = centre[0].abs().max(centre[1].abs()).max(h);
+    let room = (polygon.enclosure * h).max(ENCLOSURE_ULPS * f64::EPSILON * magnitude);
+    if room > MOST_ENCLOSURE * h {
+        return false; // (the map's sign then holds at too few of the polygon's corners)
+    }
     let most_corners = polygon.most_corners;
     let corner = |angle: f64| -> Option<Corner> {
         let xy = [centre[0] + h * angle.cos(), centre[1] + h * angle.sin()];
@@ -390,6 +406,7 @@ fn winds_round_zero(
             angle,
             xy,
             map: [minus(d[0], d[1]), minus(d[0], d[2])],
+            passed: false,
         })
     };
     let tau = std::f64::consts::TAU;
@@ -400,8 +417,8 @@ fn winds_round_zero(
             None => return false,
         }
     }
-    // Refined until every corner has a quadrant (one without is moved a third of the way
-    // to the next) and every side keeps one component's sign (one that does not is halved).
+    // Refined until every corner has a quadrant or is passed over (one that is neither is
+    // moved) and every side keeps one component's sign (one that does not is halved).
     let (mut k, mut evaluations) = (0, FIRST_CORNERS);
     while k < ring.len() {
         let next = (k + 1) % ring.len();
@@ -414,10 +431,46 @@ fn winds_round_zero(
             }
         };
         let (a, b) = (ring[k], ring[next]);
+        if a.passed || b.passed {
+            k += 1; // (its sides were proven when it was passed over)
+            continue;
+        }
+        // A corner without a quadrant (the map crosses an axis there within the
+        // enclosures' width) between two with one is passed over where one component keeps
+        // one sign along both its sides: the map stays in that half-plane from one
+        // neighbour to the other, whose quadrants tell the turn.
+        let lacking = [k, next]
+            .into_iter()
+            .find(|&j| ring[j].quadrant().is_none());
+        if let Some(j) = lacking {
+            let n = ring.len();
+            let (p, x, q) = (&ring[(j + n - 1) % n], &ring[j], &ring[(j + 1) % n]);
+            let fits = |c: &Corner| c.quadrant().is_some() && !c.passed;
+            if fits(p) && fits(q) {
+                let (before, after) = (kept_signs(p, x), kept_signs(x, q));
+                if (0..2).any(|i| before[i].is_some() && before[i] == after[i]) {
+                    ring[j].passed = true;
+                    continue;
+                }
+            }
+        }
+        // (Otherwise moved a third of the way to its farther neighbour: towards a near one
+        // it may stay on one point, far from the origin where the polygon's corners are a
+        // few units of rounding of the coordinates apart.)
+        let moved_from = |j: usize| {
+            let n = ring.len();
+            let before = ring[(j + n - 1) % n].angle - if j == 0 { tau } else { 0.0 };
+            let (angle, after) = (ring[j].angle, angle_after(j));
+            if after - angle >= angle - before {
+                angle + (after - angle) / 3.0
+            } else {
+                angle - (angle - before) / 3.0
+            }
+        };
         let (at, moved) = if a.quadrant().is_none() {
-            (k, a.angle + (angle_after(k) - a.angle) / 3.0)
+            (k, moved_from(k))
         } else if b.quadrant().is_none() {
-            (next, b.angle + (angle_after(next) - b.angle) / 3.0)
+            (next, moved_from(next))
         } else if !side_keeps_a_sign(&a, &b) {
             (usize::MAX, 0.5 * (a.angle + angle_after(k)))
         } else {
@@ -437,11 +490,18 @@ fn winds_round_zero(
             ring[at] = c;
         }
     }
-    // Each side moves the map to the same or a neighbouring quadrant.
-    let turns: i32 = (0..ring.len())
+    // Each side moves the map to the same or a neighbouring quadrant (from one neighbour
+    // of a corner passed over to the other within a half-plane: the same or a neighbouring
+    // one too).
+    let quadrants: Vec<i32> = ring
+        .iter()
+        .filter(|c| !c.passed)
+        .filter_map(Corner::quadrant)
+        .collect();
+    let turns: i32 = (0..quadrants.len())
         .map(|k| {
-            let (a, b) = (&ring[k], &ring[(k + 1) % ring.len()]);
-            match (b.quadrant().unwrap_or(0) - a.quadrant().unwrap_or(0)).rem_euclid(4) {
+            let (a, b) = (quadrants[k], quadrants[(k + 1) % quadrants.len()]);
+            match (b - a).rem_euclid(4) {
                 1 => 1,
                 3 => -1,
                 _ => 0,
@@ -451,13 +511,25 @@ fn winds_round_zero(
     turns != 0
 }
 
-/// Whether one component of the map keeps its sign along the side from `a` to `b`: each
-/// distance is 1-Lipschitz, so each component changes by at most twice the way along.
+/// Whether one component of the map keeps its sign along the side from `a` to `b`.
 fn side_keeps_a_sign(a: &Corner, b: &Corner) -> bool {
+    kept_signs(a, b).iter().any(Option::is_some)
+}
+
+/// Per component of the map, the sign it keeps along the side from `a` to `b` (`true`
+/// positive), if proven: each distance is 1-Lipschitz, so each component changes by at
+/// most twice the way along.
+fn kept_signs(a: &Corner, b: &Corner) -> [Option<bool>; 2] {
     // (The length's rounding allowed for, generously.)
     let length = distance(a.xy, b.xy) * (1.0 + 1e-12);
-    (0..2).any(|i| {
-        a.map[i][0] + b.map[i][0] > 2.0 * length || a.map[i][1] + b.map[i][1] < -2.0 * length
+    [0, 1].map(|i| {
+        if a.map[i][0] + b.map[i][0] > 2.0 * length {
+            Some(true)
+        } else if a.map[i][1] + b.map[i][1] < -2.0 * length {
+            Some(false)
+        } else {
+            None
+        }
     })
 }
 

@@ -29,6 +29,7 @@
 mod assemble;
 mod candidates;
 mod certificate;
+mod corners;
 mod curvature;
 mod error;
 mod fans;

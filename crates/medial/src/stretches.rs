@@ -3,6 +3,7 @@
 //! branch to the point where a third boundary point reaches the disk: a tri-tangent disk.
 
 use crate::candidates::Candidate;
+use crate::corners::entered_across_corner;
 use crate::curvature::{curvature_peak, sign_change};
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::ParamCurve;
@@ -19,6 +20,10 @@ const COARSE_STEPS: usize = 12;
 /// Doublings of the step back from the bracket to where the entering point is outside the
 /// disk (from 2^-32 of a polyline step to all of it).
 const BACK_STEPS: usize = BRACKET_STEPS + 1;
+
+/// Units of rounding of the coordinates a distance less a radius carries (the disk tests
+/// allow 16 per comparison).
+const DISTANCE_ULPS: f64 = 16.0;
 
 /// Secant steps that solve for the tri-tangent disk inside the bracket.
 const SECANT_STEPS: usize = 60;
@@ -143,14 +148,20 @@ fn stretches_of(sites: &Sites<'_>, k: usize, c: &Candidate) -> Vec<Stretch> {
             samples[start..i].iter().filter_map(|s| s.on_axis).collect();
         if start > 0 {
             let before = &samples[start - 1];
+            // (Not the vertex itself again: the junction may lie on it.)
             if let Some(v) = branch.junction(vertices[0], before.tr, before.xy) {
-                vertices.insert(0, v);
+                if v != vertices[0] {
+                    vertices.insert(0, v);
+                }
             }
         }
         if i < n {
             let after = &samples[i];
-            if let Some(v) = branch.junction(vertices[vertices.len() - 1], after.tr, after.xy) {
-                vertices.push(v);
+            let last = vertices[vertices.len() - 1];
+            if let Some(v) = branch.junction(last, after.tr, after.xy) {
+                if v != last {
+                    vertices.push(v);
+                }
             }
         }
         if vertices.len() >= 2 || n == 1 {
@@ -256,6 +267,12 @@ impl Branch<'_, '_> {
             let boundary = self.sites.boundaries[c.boundary[s]];
             let rate = |u: f64| boundary.jet_on(c.segment[s], u, 3).curvature_rate();
             let (lo, hi) = (a.tr[s].min(b.tr[s]), a.tr[s].max(b.tr[s]));
+            // (Not across a closed boundary's seam, where the foot runs on from the end of
+            // its parameter to the start: between the two lies the rest of the boundary.)
+            let n = boundary.domain().1;
+            if boundary.is_closed() && hi - lo > 0.5 * n {
+                return None;
+            }
             if !(rate(lo).signum() != rate(hi).signum() && hi > lo) {
                 return None;
             }
@@ -324,7 +341,7 @@ impl Branch<'_, '_> {
         if !self.inside(v) {
             return Err((OUTSIDE, 0.0));
         }
-        match self.sites.disk(v.xy, v.radius) {
+        match self.across_corner(v, self.sites.disk(v.xy, v.radius)) {
             Disk::Entered(k, u, depth) => Err((self.site_of(k, u), depth)),
             Disk::Empty if self.feet_part(v) => Ok(()),
             Disk::Empty => Err((self.nearest_site(v.xy), 0.0)),
@@ -413,6 +430,18 @@ impl Branch<'_, '_> {
         })
     }
 
+    /// The centre of curvature where the feet of `last`, the last vertex of a stretch on the
+    /// axis before they meet, close in ([`Self::end_at_curvature_centre`]), if `last` is
+    /// near it: within [`CLOSING_IN`] of its radius. (Where a branch's trace jumps from a
+    /// corner, its feet's meeting, to far off, the feet beyond meet too, but the centre of
+    /// curvature between them is no end of that stretch: pinterest-logo-fill's corner leaf
+    /// ran to its arc's centre, 104 away across the drawing.)
+    fn centre_closed_in_on(&self, last: &Vertex) -> Option<Vertex> {
+        let end = self.end_at_curvature_centre(last)?;
+        let apart = (end.xy[0] - last.xy[0]).hypot(end.xy[1] - last.xy[1]);
+        (apart <= CLOSING_IN * end.radius).then_some(end)
+    }
+
     /// Where the foot of site `s` on a segment closes in on the other site, a corner at one
     /// of that segment's ends: the corner's parameter (the bisector of a point and a curve
     /// ends, as the foot reaches the point, at the centre of curvature there).
@@ -468,7 +497,24 @@ impl Branch<'_, '_> {
 
     /// (Only in the search for where a stretch ends: see [`Sites::probe`].)
     fn disk_empty(&self, v: &Vertex) -> bool {
-        self.inside(v) && self.sites.probe(v.xy, v.radius) == Disk::Empty
+        self.inside(v) && self.probe(v) == Disk::Empty
+    }
+
+    /// What the disk of `v` holds ([`Sites::probe`]), the side across a convex corner
+    /// beside its foot included ([`Self::across_corner`]).
+    fn probe(&self, v: &Vertex) -> Disk {
+        self.across_corner(v, self.sites.probe(v.xy, v.radius))
+    }
+
+    /// `disk`, what the disk tests found in the disk of `v`, or, where they found it empty,
+    /// the side across a convex corner beside a foot that enters it by less than their slack
+    /// ([`crate::corners`]).
+    fn across_corner(&self, v: &Vertex, disk: Disk) -> Disk {
+        match disk {
+            Disk::Empty => entered_across_corner(self.sites, self.c, v)
+                .map_or(Disk::Empty, |(k, u, depth)| Disk::Entered(k, u, depth)),
+            entered => entered,
+        }
     }
 
     fn feet_part(&self, v: &Vertex) -> bool {
@@ -559,7 +605,7 @@ impl Branch<'_, '_> {
         };
         self.halve(&mut b, COARSE_STEPS, &at);
         if let Some(out) = b.outside {
-            let disk = self.sites.probe(out.xy, out.radius);
+            let disk = self.probe(&out);
             let entered = self.sites.in_clip(out.xy) && self.feet_part(&out);
             if entered && !(self.inside(&out) && disk == Disk::Empty) {
                 if let Some(v) = self.tri_tangent(from, &b, out, disk, &at) {
@@ -595,16 +641,18 @@ impl Branch<'_, '_> {
             // No exact point beyond: where the branch runs into its feet's meeting (a
             // self-bisector's end on its diagonal), the axis ends at the centre of curvature.
             if feet_meet_beyond && lo > 0.0 {
-                return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
+                return Some(self.centre_closed_in_on(&last).unwrap_or(last));
             }
             return (lo > 0.0).then_some(last);
         };
-        let disk = self.sites.probe(out.xy, out.radius);
+        let disk = self.probe(&out);
         if !self.feet_part(&out) || (self.inside(&out) && disk == Disk::Empty) {
             // The feet met: the axis ends at the centre of curvature between them. (Beside
             // that centre the boundary may reach into the disk by more than the slack: the
             // circle osculates it there, so the feet, not the disk, decide.)
-            return Some(self.end_at_curvature_centre(&last).unwrap_or(last));
+            return self
+                .centre_closed_in_on(&last)
+                .or_else(|| (lo > 0.0).then_some(last));
         }
         let b = Bracket {
             lo,
@@ -668,11 +716,17 @@ impl Branch<'_, '_> {
         // a little before it. Step back from it, doubling, until the third point is outside
         // the disk (not straight back to the stretch's last vertex: where the entering point
         // is on a foot's own segment, a search from there may find that foot instead).
+        // (Outside within the rounding of the distances, which far from the origin is well
+        // above 1e-16 of the size: a disk that touches the third point exactly, at the
+        // junction, may seem entered by that much.)
+        let outside = |v: &Vertex, f: f64| {
+            f >= -DISTANCE_ULPS * f64::EPSILON * v.xy[0].abs().max(v.xy[1].abs()).max(v.radius)
+        };
         let (mut a, mut fa, mut best) = (lo, third(&last), last);
         let (mut b, mut fb) = (hi, third(&out));
         let mut back = hi - lo;
         for _ in 0..BACK_STEPS {
-            if fa >= 0.0 || a <= 0.0 {
+            if outside(&best, fa) || a <= 0.0 {
                 break;
             }
             (b, fb) = (a, fa);
@@ -688,7 +742,7 @@ impl Branch<'_, '_> {
             };
             fa = third(&best);
         }
-        if !(fa >= 0.0 && fb < 0.0) {
+        if !(outside(&best, fa) && fb < 0.0) {
             return None;
         }
         for _ in 0..SECANT_STEPS {
@@ -800,19 +854,34 @@ impl Branch<'_, '_> {
         // Secant steps from two feet; the foot they converge to, if it is one.
         let secant = |mut u0: f64, mut u1: f64| -> Option<Vertex> {
             let (mut g0, mut g1) = (reduced(u0), reduced(u1));
+            // The iterate of least gap is the foot: at the gap's rounding floor (~1e-16 of
+            // the coordinates, far from the origin well above 1e-16 of the size) the steps
+            // divide noise by noise and may throw the next iterate anywhere.
+            let mut best = (f64::INFINITY, u1);
+            for (u, gu) in [(u0, g0), (u1, g1)] {
+                if gu.abs() < best.0 {
+                    best = (gu.abs(), u);
+                }
+            }
             for _ in 0..FOOT_STEPS {
                 if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
                     break;
                 }
                 let next = u1 - g1 * (u1 - u0) / (g1 - g0);
                 if !next.is_finite() {
-                    return None;
+                    break;
                 }
                 (u0, g0) = (u1, g1);
                 u1 = next;
                 g1 = reduced(u1);
+                if !g1.is_finite() {
+                    break;
+                }
+                if g1.abs() < best.0 {
+                    best = (g1.abs(), u1);
+                }
             }
-            self.foot_solved(keep, guess, p, q, (lo, hi), u1, &g)
+            self.foot_solved(keep, guess, p, q, (lo, hi), best.1, &g)
         };
         // From the two vertices' feet; failing that, from the guess and a foot a little
         // beside it (beside a corner on the kept foot's own line the equidistant point of

@@ -412,6 +412,25 @@ fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
             "{top_tip:?}"
         );
     }
+    // Metamorphic: moved far from the origin, scaled, rotated and mirrored (its orientation
+    // reversed), it is still certified with the diameter as its longest pair.
+    for transform in [
+        "translate(30000 -10000)",
+        "scale(1000)",
+        "scale(0.001)",
+        "rotate(37)",
+        "scale(-1 1)",
+    ] {
+        let moved = profile_of(&format!(r#"<g transform="{transform}">{top}</g>"#));
+        let r = curvekit::antipodal::profile_antipodal(&moved, &Default::default()).unwrap();
+        assert!(r.certified, "{transform}: {:?}", r.reason);
+        let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
+        let diameter = sampled_diameter(&moved);
+        assert!(
+            (longest - diameter).abs() <= 1e-9 * diameter,
+            "{transform}: {longest} vs {diameter}"
+        );
+    }
 }
 
 /// phosphor's `pinterest-logo-fill` (issue 38): its outline starts with a cubic that meets

@@ -7,6 +7,8 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
+#[path = "../crates/medial/tests/common/graph.rs"]
+mod graph;
 
 use common::curvekit_json;
 use curvekit::curve::{ParamCurve, Profile, Region, SegmentKind, V2};
@@ -454,19 +456,5 @@ fn a_joints_leaf_does_not_end_at_a_far_centre_of_curvature() {
             n.radius
         );
     }
-    let mut parent: Vec<usize> = (0..axis.nodes.len()).collect();
-    fn root(p: &mut [usize], mut i: usize) -> usize {
-        while p[i] != i {
-            i = p[i];
-        }
-        i
-    }
-    for e in &axis.edges {
-        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
-        parent[a] = b;
-    }
-    let pieces = (0..axis.nodes.len())
-        .filter(|&i| root(&mut parent, i) == i)
-        .count();
-    assert_eq!(pieces, 1);
+    assert_eq!(graph::components_and_cycles(&axis).0, 1);
 }

@@ -11,11 +11,14 @@
 
 #[path = "../../zeroset/tests/common/boundary_oracle.rs"]
 mod boundary_oracle;
+#[path = "common/graph.rs"]
+mod graph;
 #[path = "common/sampled_voronoi.rs"]
 mod sampled_voronoi;
 
 use boundary_oracle::{off_segment, winding, Oracle};
 use curve::{Affine, ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
+use graph::components_and_cycles as shape;
 use medial::{medial_axis, MedialAxis, MedialOptions};
 use sampled_voronoi::sampled_medial_points;
 
@@ -110,24 +113,6 @@ fn axis(region: &Region) -> MedialAxis {
         ..MedialOptions::default()
     };
     medial_axis(region, &opts).unwrap()
-}
-
-/// Connected components of the graph and its independent cycles.
-fn shape(a: &MedialAxis) -> (usize, usize) {
-    let n = a.nodes.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn root(p: &mut [usize], mut i: usize) -> usize {
-        while p[i] != i {
-            i = p[i];
-        }
-        i
-    }
-    for e in &a.edges {
-        let (x, y) = (root(&mut parent, e.from), root(&mut parent, e.to));
-        parent[x] = y;
-    }
-    let components = (0..n).filter(|&i| root(&mut parent, i) == i).count();
-    (components, a.edges.len() + components - n)
 }
 
 /// The oracle's verdict on the axis of `region`: `Err` with what is wrong.

@@ -16,6 +16,8 @@ mod bench_shapes;
 mod boundary_oracle;
 #[path = "../../bspline/tests/common/cases.rs"]
 mod cases;
+#[path = "common/graph.rs"]
+mod graph;
 #[path = "../../antipodal/tests/common/profiles.rs"]
 mod profiles;
 #[path = "common/sampled_voronoi.rs"]
@@ -24,6 +26,7 @@ mod sampled_voronoi;
 use boundary_oracle::{off_segment, winding, Oracle};
 use cases::cases;
 use curve::{ParamCurve, Profile, Region, Segment};
+use graph::components_and_cycles;
 use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use profiles::{assemble, bezier_chain, filleted_polygon};
 use proptest::prelude::*;
@@ -397,20 +400,7 @@ fn near_cusp(b: &Boundaries<'_>) -> bool {
 
 /// Whether the graph is one piece with `holes` independent cycles.
 fn shaped_like_the_region(a: &MedialAxis, holes: usize) -> bool {
-    let n = a.nodes.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn root(p: &mut [usize], mut i: usize) -> usize {
-        while p[i] != i {
-            i = p[i];
-        }
-        i
-    }
-    for e in &a.edges {
-        let (x, y) = (root(&mut parent, e.from), root(&mut parent, e.to));
-        parent[x] = y;
-    }
-    let components = (0..n).filter(|&i| root(&mut parent, i) == i).count();
-    components == 1 && a.edges.len() + 1 == n + holes
+    components_and_cycles(a) == (1, holes)
 }
 
 /// The contract's size: max(width, height) of the region's bounding box (of its points).

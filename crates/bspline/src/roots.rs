@@ -520,10 +520,8 @@ impl Isolation<'_> {
     /// is within its error bound on a bracket wider than the tolerance. A cluster at an end of
     /// the search has one side only, and stays one.
     fn separate_simple_clusters(&self, mut roots: Vec<Root>, a: f64, b: f64) -> Vec<Root> {
-        if roots.iter().all(|r| r.kind != RootKind::Cluster) {
-            return roots;
-        }
-        let df = self.f.derivative();
+        // (The derivative is made once, for the first cluster that needs it.)
+        let mut df: Option<Piecewise> = None;
         for k in 0..roots.len() {
             if roots[k].kind != RootKind::Cluster {
                 continue;
@@ -539,7 +537,10 @@ impl Isolation<'_> {
                 let (left, right) = ((lo - width).max(floor), (hi + width).min(ceiling));
                 let ((fl, el), (fr, er)) = (value(self.f, left), value(self.f, right));
                 if fl.abs() > el && fr.abs() > er {
-                    if (fl > 0.0) != (fr > 0.0) && self.monotone(&df, left, right) {
+                    let opposite = (fl > 0.0) != (fr > 0.0);
+                    if opposite
+                        && self.monotone(df.get_or_insert_with(|| self.f.derivative()), left, right)
+                    {
                         roots[k] = self.refine(left, right, fl < 0.0);
                     }
                     break;

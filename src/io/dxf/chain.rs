@@ -256,14 +256,7 @@ pub(super) fn chain_pieces(
                     f64::NEG_INFINITY,
                     f64::NEG_INFINITY,
                 ],
-                |a, b| {
-                    [
-                        a[0].min(b[0]),
-                        a[1].min(b[1]),
-                        a[2].max(b[2]),
-                        a[3].max(b[3]),
-                    ]
-                },
+                curve::box_union,
             );
         let size = (b[2] - b[0]).hypot(b[3] - b[1]);
         if let (Some(&(first, fwd_first)), Some(&(last, fwd_last))) = (run.front(), run.back()) {

@@ -14,22 +14,10 @@ use curvekit::medial::{medial_axis, MedialOptions};
 use std::time::Duration;
 
 mod common;
-use common::bezier_chain;
+use common::{bezier_chain, POCKET};
 
 const PERIODIC_CUBIC: &str = r#"{"kind":"bspline","degree":3,"periodic":true,
     "points":[[0,0],[2,-1],[4,0],[4,2],[2,1.2],[0,2]]}"#;
-
-const POCKET: &str = r#"{"kind":"region",
- "outer":{"kind":"profile","segments":[
-  {"kind":"line","from":[1,0],"to":[9,0]},
-  {"kind":"arc","center":[9,1],"r":1,"start":-1.5707963267948966,"end":0},
-  {"kind":"line","from":[10,1],"to":[10,5]},
-  {"kind":"arc","center":[9,5],"r":1,"start":0,"end":1.5707963267948966},
-  {"kind":"line","from":[9,6],"to":[1,6]},
-  {"kind":"arc","center":[1,5],"r":1,"start":1.5707963267948966,"end":3.141592653589793},
-  {"kind":"line","from":[0,5],"to":[0,1]},
-  {"kind":"arc","center":[1,1],"r":1,"start":3.141592653589793,"end":4.71238898038469}]},
- "holes":[{"kind":"circle","center":[6.5,3],"r":1}]}"#;
 
 fn region_of(text: &str) -> Region {
     match parse_region("bench", None, text.as_bytes(), None)

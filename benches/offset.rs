@@ -12,19 +12,7 @@ use curvekit::offset::{offsets, OffsetOptions};
 use std::time::Duration;
 
 mod common;
-use common::bezier_chain;
-
-const POCKET: &str = r#"{"kind":"region",
- "outer":{"kind":"profile","segments":[
-  {"kind":"line","from":[1,0],"to":[9,0]},
-  {"kind":"arc","center":[9,1],"r":1,"start":-1.5707963267948966,"end":0},
-  {"kind":"line","from":[10,1],"to":[10,5]},
-  {"kind":"arc","center":[9,5],"r":1,"start":0,"end":1.5707963267948966},
-  {"kind":"line","from":[9,6],"to":[1,6]},
-  {"kind":"arc","center":[1,5],"r":1,"start":1.5707963267948966,"end":3.141592653589793},
-  {"kind":"line","from":[0,5],"to":[0,1]},
-  {"kind":"arc","center":[1,1],"r":1,"start":3.141592653589793,"end":4.71238898038469}]},
- "holes":[{"kind":"circle","center":[6.5,3],"r":1}]}"#;
+use common::{bezier_chain, POCKET};
 
 fn offset(c: &mut Criterion) {
     let _ = rayon::ThreadPoolBuilder::new()

@@ -37,3 +37,39 @@ pub(crate) fn bezier_chain(n: usize) -> Profile {
         .collect();
     Profile::new(segs, None).unwrap()
 }
+
+/// The vertices (counter-clockwise) of a star polygon of `n` lines (`n` even): points at
+/// radius 1 and notches at radius 0.5, each radius jittered by up to 10 % so that no four
+/// vertices are cocircular (the regular star's one junction of n edges is a case of its own).
+pub(crate) fn star_polygon(n: usize) -> Vec<[f64; 2]> {
+    let mut rnd = rng(11);
+    (0..n)
+        .map(|i| {
+            let r = if i % 2 == 0 { 1.0 } else { 0.5 } * (1.0 + 0.1 * rnd());
+            (V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * r).arr()
+        })
+        .collect()
+}
+
+/// The polygon through `vertices` as a closed profile of lines.
+pub(crate) fn polygon(vertices: &[[f64; 2]]) -> Profile {
+    let n = vertices.len();
+    let sides = (0..n)
+        .map(|i| Segment::line(vertices[i], vertices[(i + 1) % n]).unwrap())
+        .collect();
+    Profile::new(sides, None).unwrap()
+}
+
+/// The 10×6 rounded-rectangle pocket (corner radius 1) with a round island of radius 1, as
+/// the tool reads it.
+pub(crate) const POCKET: &str = r#"{"kind":"region",
+ "outer":{"kind":"profile","segments":[
+  {"kind":"line","from":[1,0],"to":[9,0]},
+  {"kind":"arc","center":[9,1],"r":1,"start":-1.5707963267948966,"end":0},
+  {"kind":"line","from":[10,1],"to":[10,5]},
+  {"kind":"arc","center":[9,5],"r":1,"start":0,"end":1.5707963267948966},
+  {"kind":"line","from":[9,6],"to":[1,6]},
+  {"kind":"arc","center":[1,5],"r":1,"start":1.5707963267948966,"end":3.141592653589793},
+  {"kind":"line","from":[0,5],"to":[0,1]},
+  {"kind":"arc","center":[1,1],"r":1,"start":3.141592653589793,"end":4.71238898038469}]},
+ "holes":[{"kind":"circle","center":[6.5,3],"r":1}]}"#;

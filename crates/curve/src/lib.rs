@@ -21,6 +21,7 @@
 //! ```
 
 mod affine;
+mod box_tree;
 pub mod circle;
 mod clearance;
 mod corner_knots;

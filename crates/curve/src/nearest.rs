@@ -47,13 +47,10 @@ impl Profile {
         };
         // Nearest boxes first: once a point is found, every segment whose box is no nearer
         // is passed over.
-        let mut order: Vec<(f64, usize)> = (0..self.segments().len())
-            .map(|i| (box_distance(self.segment_box(i), x), i))
-            .collect();
-        order.sort_by(|a, b| a.0.total_cmp(&b.0));
-        for (below, i) in order {
-            if below >= best.distance {
-                break;
+        let mut done = false;
+        self.box_tree().nearest_first(x, |i| {
+            if done || box_distance(self.segment_box(i), x) >= best.distance {
+                return f64::INFINITY;
             }
             let (d, v) = nearest_on(&self.segments()[i], x);
             if d < best.distance {
@@ -61,11 +58,15 @@ impl Profile {
                     distance: d,
                     u: self.profile_param(i, v),
                 };
-                if d < enough {
-                    break;
-                }
+                done = d < enough;
             }
-        }
+            // (Once near enough, no node is nearer than minus infinity: the search ends.)
+            if done {
+                f64::NEG_INFINITY
+            } else {
+                d
+            }
+        });
         best
     }
 }

@@ -3,6 +3,7 @@
 //! parameter `[0, n)` for `n` segments (`u ∈ [i, i+1]` is segment `i` at its own parameter
 //! mapped linearly); its joints are classified as smooth (G1), convex or reflex corners.
 
+use crate::box_tree::BoxTree;
 use crate::crossing::first_crossing;
 use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
@@ -85,6 +86,8 @@ pub struct Profile {
     /// Per segment and Bézier piece, the box of the piece's Euclidean control points grown by
     /// what their rounding may hide: the disk tests pass over the pieces it keeps far.
     piece_boxes: Vec<Vec<[f64; 4]>>,
+    /// The hierarchy over `boxes`.
+    tree: BoxTree,
 }
 
 impl Profile {
@@ -235,7 +238,8 @@ impl Profile {
                 },
             })
             .collect();
-        let boxes = segments.iter().map(control_box).collect();
+        let boxes: Vec<[f64; 4]> = segments.iter().map(control_box).collect();
+        let tree = BoxTree::new(&boxes);
         let piece_boxes = segments.iter().map(crate::clearance::piece_boxes).collect();
         Ok(Self {
             segments,
@@ -246,6 +250,7 @@ impl Profile {
             size,
             boxes,
             piece_boxes,
+            tree,
         })
     }
 
@@ -259,6 +264,11 @@ impl Profile {
     /// Euclidean control points may hide (see [`crate::clearance`]).
     pub(crate) fn piece_box(&self, i: usize, k: usize) -> [f64; 4] {
         self.piece_boxes[i][k]
+    }
+
+    /// The hierarchy over the segments' boxes.
+    pub(crate) fn box_tree(&self) -> &BoxTree {
+        &self.tree
     }
 
     /// The diagonal of the box of the segments' control points: the scale of the profile's

@@ -194,7 +194,7 @@ fn path_data(v: &[V2], round: &[f64], relative: &[bool]) -> Option<(String, Prof
             for (i, a) in args.iter().enumerate() {
                 // The end point (the last two numbers) relative when asked.
                 let x = if r && i + 2 >= nargs {
-                    if (nargs - i) % 2 == 0 {
+                    if (nargs - i).is_multiple_of(2) {
                         a - at.x
                     } else {
                         a - at.y

@@ -114,7 +114,7 @@ fn close_inflections_across_the_seam_stay_distinct() {
     for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-11, 1e-12] {
         let r = antipodal::inflections(&c, &Options::default().tolerance(tol)).unwrap();
         assert!(
-            r.inflections.len() % 2 == 0 || !r.certified,
+            r.inflections.len().is_multiple_of(2) || !r.certified,
             "tol {tol}: {:?}",
             r.inflections
         );

@@ -33,7 +33,7 @@ impl BSpline {
         if dim == 0 {
             return Err(Error::ZeroDimension);
         }
-        if coefs.len() % dim != 0 {
+        if !coefs.len().is_multiple_of(dim) {
             return Err(Error::CountMismatch {
                 what: "coefficients (a multiple of the dimension)",
                 expected: coefs.len() / dim * dim,

@@ -79,7 +79,11 @@ impl Angle {
                 // quarters.
                 let f = frame_cs(u);
                 let [x, y] = f.local;
-                let (sx, sy) = if f.q % 2 == 0 { (a, b) } else { (b, a) };
+                let (sx, sy) = if f.q.is_multiple_of(2) {
+                    (a, b)
+                } else {
+                    (b, a)
+                };
                 let phi = f.q as f64 * (PI / 2.0) + (y / sy).atan2(x / sx);
                 if phi >= TAU {
                     0.0

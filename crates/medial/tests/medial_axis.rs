@@ -496,7 +496,7 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     if case % FIT_EVERY == 1 {
         check_exterior(region, &Boundaries::new(region))?;
     }
-    let fitted = (case % FIT_EVERY == 0).then(|| {
+    let fitted = case.is_multiple_of(FIT_EVERY).then(|| {
         let opts = MedialOptions {
             chord_tol: CHORD,
             fit: true,

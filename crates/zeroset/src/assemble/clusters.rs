@@ -62,7 +62,7 @@ impl<'a> LeafIndex<'a> {
                 1 => (p[1], b[0] == e.line),
                 _ => (p[1], b[1] == e.line),
             };
-            let range = if e.edge % 2 == 0 {
+            let range = if e.edge.is_multiple_of(2) {
                 [b[0], b[1]]
             } else {
                 [b[2], b[3]]

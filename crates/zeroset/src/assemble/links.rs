@@ -33,7 +33,7 @@ pub(super) fn arm_direction(
     // Bounded by the number of arcs (and in practice by the reach).
     'chain: for _ in 0..arcs.len() {
         let a = &arcs[entry / 2].pts;
-        let pts: Box<dyn Iterator<Item = &[f64; 2]>> = if entry % 2 == 0 {
+        let pts: Box<dyn Iterator<Item = &[f64; 2]>> = if entry.is_multiple_of(2) {
             Box::new(a.iter())
         } else {
             Box::new(a.iter().rev())
@@ -112,7 +112,7 @@ pub(super) fn walk(
             let i = entry / 2;
             seen[i] = true;
             let a = &arcs[i].pts;
-            let iter: Box<dyn Iterator<Item = &[f64; 2]>> = if entry % 2 == 0 {
+            let iter: Box<dyn Iterator<Item = &[f64; 2]>> = if entry.is_multiple_of(2) {
                 Box::new(a.iter())
             } else {
                 Box::new(a.iter().rev())

@@ -27,6 +27,10 @@ const TIP_MERGE: f64 = 1e-4;
 /// one node (twice `TIP_MERGE`: two ends that far apart can be one node through a third).
 const STUB: f64 = 2.0 * TIP_MERGE;
 
+/// Feet of two stretches at their common end within this share of the size are one foot:
+/// ten times the reach within which ends are one node.
+const FEET_JOIN: f64 = 1e-5;
+
 /// A leaf whose radius is at most this share of the size is a corner of the boundary.
 const CORNER_RADIUS: f64 = 1e-9;
 
@@ -167,8 +171,8 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         }
     }
     let mut kinds: Vec<Option<NodeKind>> = vec![None; clusters_n];
-    join_through_twos(&mut chains, clusters_n, &mut kinds);
-    let chains: Vec<Chain> = chains.into_iter().flatten().collect();
+    join_through_twos(sites, &mut chains, clusters_n, &mut kinds);
+    let mut chains: Vec<Chain> = chains.into_iter().flatten().collect();
 
     // Nodes: the clusters still in use, numbered in order of first use.
     let mut degree = vec![0usize; clusters_n];
@@ -200,6 +204,9 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         id[c]
     };
     let mut edges = Vec::with_capacity(chains.len());
+    for c in &mut chains {
+        orient_feet(sites, c);
+    }
     for c in &chains {
         let first = c.vertices[0];
         let last = c.vertices[c.vertices.len() - 1];
@@ -229,6 +236,38 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         certified: false,
         reason: None,
         complete: true,
+    }
+}
+
+/// Puts each vertex's two feet in the order that follows on from the previous vertex's:
+/// the stretches joined into one edge come from bisectors computed with their sites either
+/// way round, and the feet of one side of an edge run along one boundary, in order.
+fn orient_feet(sites: &Sites<'_>, c: &mut Chain) {
+    let apart = |b: [usize; 2], p: f64, q: f64| {
+        if b[0] != b[1] {
+            return f64::INFINITY;
+        }
+        let boundary = sites.boundaries[b[0]];
+        let d = (p - q).abs();
+        if boundary.is_closed() {
+            let n = boundary.domain().1;
+            let d = d % n;
+            d.min(n - d)
+        } else {
+            d
+        }
+    };
+    for k in 1..c.vertices.len() {
+        let (prev, prev_b) = (c.vertices[k - 1].tr, c.boundary[k - 1]);
+        let (tr, b) = (c.vertices[k].tr, c.boundary[k]);
+        let kept =
+            apart([prev_b[0], b[0]], prev[0], tr[0]) + apart([prev_b[1], b[1]], prev[1], tr[1]);
+        let traded =
+            apart([prev_b[0], b[1]], prev[0], tr[1]) + apart([prev_b[1], b[0]], prev[1], tr[0]);
+        if traded < kept {
+            c.vertices[k].tr = [tr[1], tr[0]];
+            c.boundary[k] = [b[1], b[0]];
+        }
     }
 }
 
@@ -345,6 +384,7 @@ pub(crate) fn root(parent: &mut [usize], mut i: usize) -> usize {
 /// Joins the chains meeting at a node of two into one; a cycle left with one node of two (an
 /// annulus's) keeps it as a joint.
 fn join_through_twos(
+    sites: &Sites<'_>,
     chains: &mut [Option<Chain>],
     clusters: usize,
     kinds: &mut [Option<NodeKind>],
@@ -375,6 +415,14 @@ fn join_through_twos(
             reverse(&mut second);
         }
         debug_assert!(first.ends[1] == node && second.ends[0] == node);
+        if !feet_continue(sites, &first, &second) {
+            // A third site touched the disk here and its branch was not found: the node
+            // stays, a junction of two, for the coverage of the feet to refuse.
+            kinds[node] = Some(NodeKind::Junction);
+            chains[a.0] = Some(first);
+            chains[b.0] = Some(second);
+            continue;
+        }
         first.vertices.extend_from_slice(&second.vertices[1..]);
         first.boundary.extend_from_slice(&second.boundary[1..]);
         first.ends[1] = second.ends[1];
@@ -393,6 +441,35 @@ fn join_through_twos(
             }
         }
     }
+}
+
+/// Two stretches meeting at a node of two continue each other where the feet at their
+/// common end agree (either way round) to [`FEET_JOIN`] of the size with no convex corner
+/// between them (whose leaf would end there), or where the boundary between those that
+/// differ is an arc about the node.
+fn feet_continue(sites: &Sites<'_>, first: &Chain, second: &Chain) -> bool {
+    let (p, pb) = (
+        first.vertices[first.vertices.len() - 1],
+        first.boundary[first.boundary.len() - 1],
+    );
+    let (q, qb) = (second.vertices[0], second.boundary[0]);
+    let room = FEET_JOIN * sites.size;
+    let agree = |s: usize, t: usize| {
+        pb[s] == qb[t] && {
+            let (a, b) = (sites.foot(pb[s], p.tr[s]), sites.foot(qb[t], q.tr[t]));
+            ((a[0] - b[0]).hypot(a[1] - b[1]) <= room
+                && !crate::coverage::convex_corner_between(sites, pb[s], p.tr[s], q.tr[t]))
+                || crate::coverage::arc_between(
+                    sites,
+                    pb[s],
+                    p.tr[s],
+                    q.tr[t],
+                    curve::V2::from_arr(q.xy),
+                    q.radius,
+                )
+        }
+    };
+    (agree(0, 0) && agree(1, 1)) || (agree(0, 1) && agree(1, 0))
 }
 
 fn reverse(c: &mut Chain) {

@@ -3,7 +3,8 @@
 //! disk.
 
 use crate::error::Result;
-use crate::pairs::{neighbours, Neighbours, FEW_SEGMENTS};
+use crate::pairs::{neighbours, FEW_SEGMENTS};
+use crate::seed::seed_pairs;
 use crate::sites::Sites;
 use crate::MedialOptions;
 use curve::{ParamCurve, Profile, SpanOf};
@@ -30,14 +31,27 @@ pub(crate) struct Candidate {
     pub(crate) xy: Vec<[f64; 2]>,
 }
 
-/// Every candidate branch and isolated point, and whether every bisector was complete.
-/// With `prune`, only the bisectors of segments that can share an empty disk are computed
-/// ([`crate::pairs`]); without, every pair's (the tests compare the two).
+/// Which pairs of segments the bisectors are computed for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum PairSource {
+    /// Those the Voronoi diagram of the boundaries' chords shows sharing an edge
+    /// ([`crate::seed`]): a guess, that the coverage of the feet proves or refutes. Where no
+    /// seed can be made, `Bounds`.
+    Seed,
+    /// Those that can share an empty disk by bounds on the distances ([`crate::pairs`]).
+    Bounds,
+    /// Every pair (the tests compare the others with it).
+    #[cfg(test)]
+    All,
+}
+
+/// Every candidate branch and isolated point, whether every bisector was complete, and
+/// whether the pairs came from the seed (`source` may fall back from `Seed` to `Bounds`).
 pub(crate) fn candidates(
     sites: &Sites<'_>,
     opts: &MedialOptions,
-    prune: bool,
-) -> Result<(Vec<Candidate>, bool)> {
+    source: PairSource,
+) -> Result<(Vec<Candidate>, bool, bool)> {
     // The bisectors' chord tolerance is relative to their own profiles' box diagonal, at
     // most the outer box's; the axis's to the region's max(width, height).
     let chord_tol = (opts.chord_tol * sites.size / sites.diagonal).max(MIN_CHORD);
@@ -63,10 +77,19 @@ pub(crate) fn candidates(
     let pairs: Vec<[usize; 2]> = (0..b.len())
         .flat_map(|i| (i..b.len()).map(move |j| [i, j]))
         .collect();
-    let near = if prune {
-        neighbours(&b, sites.size, root_box(sites))
-    } else {
-        Neighbours::All
+    let seeded = match source {
+        PairSource::Seed => {
+            let inside_left: Vec<f64> = (0..b.len()).map(|k| sites.inside_left(k)).collect();
+            seed_pairs(&b, &inside_left, root_box(sites), sites.size)
+        }
+        _ => None,
+    };
+    let from_seed = seeded.is_some();
+    let near = match (seeded, source) {
+        (Some(near), _) => near,
+        #[cfg(test)]
+        (None, PairSource::All) => crate::pairs::Neighbours::All,
+        (None, _) => neighbours(&b, sites.size, root_box(sites)),
     };
     let bisect = |&[i, j]: &[usize; 2]| {
         let keep = |s: usize, t: usize| near.keep((i, s), (j, t));
@@ -97,7 +120,7 @@ pub(crate) fn candidates(
         complete &= found.complete;
         add(&mut out, found, pair, [&pieces[pair[0]], &pieces[pair[1]]]);
     }
-    Ok((out, complete))
+    Ok((out, complete, from_seed))
 }
 
 /// The box the axis lies in: the outer boundary's (inside), or the clip box (outside).

@@ -30,11 +30,13 @@ mod assemble;
 mod candidates;
 mod certificate;
 mod corners;
+mod coverage;
 mod curvature;
 mod error;
 mod fans;
 mod fit;
 mod pairs;
+mod seed;
 mod sites;
 mod stretches;
 #[cfg(test)]
@@ -43,6 +45,7 @@ mod test_shapes;
 pub use error::{Error, Result};
 pub use fit::EdgeSpline;
 
+use candidates::PairSource;
 use curve::Region;
 use serde::{Deserialize, Serialize};
 
@@ -167,12 +170,25 @@ pub struct MedialAxis {
 /// assert_eq!(axis.edges.len(), 5);
 /// ```
 pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
-    axis_of(region, opts, true)
+    if !opts.exterior {
+        // (The seed's pairs are a guess: its axis stands where it is certified and its feet
+        // cover the boundaries, and is built again from the pairs the bounds keep where not.)
+        let (axis, stands) = axis_of(region, opts, PairSource::Seed)?;
+        if stands {
+            return Ok(axis);
+        }
+    }
+    Ok(axis_of(region, opts, PairSource::Bounds)?.0)
 }
 
-/// The medial axis of `region`, from the bisectors of the pairs of segments that can share
-/// an empty disk (`prune`) or of every pair.
-fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialAxis> {
+/// The medial axis of `region` from the bisectors of the pairs of segments `source` gives;
+/// whether it stands: its pairs did not come from the seed, or it is certified and its feet
+/// cover the boundaries ([`coverage`]).
+fn axis_of(
+    region: &Region,
+    opts: &MedialOptions,
+    source: PairSource,
+) -> Result<(MedialAxis, bool)> {
     let mut sites = sites::Sites::new(region, opts.exterior);
     if let Some(size) = opts.size {
         sites.size = size;
@@ -185,7 +201,7 @@ fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialA
         },
         ..*opts
     };
-    let (found, complete) = candidates::candidates(&sites, &traced, prune)?;
+    let (found, complete, from_seed) = candidates::candidates(&sites, &traced, source)?;
     let pieces = stretches::stretches(&sites, &found);
     let mut axis = assemble::assemble(&sites, pieces, &found);
     axis.complete &= complete;
@@ -210,5 +226,6 @@ fn axis_of(region: &Region, opts: &MedialOptions, prune: bool) -> Result<MedialA
             e.bspline = Some(fit::fit_edge(&e.xy, &e.radius, tol));
         }
     }
-    Ok(axis)
+    let stands = !from_seed || (axis.certified && coverage::feet_cover(&sites, &axis).is_ok());
+    Ok((axis, stands))
 }

@@ -235,6 +235,7 @@ fn box_gap(a: [f64; 4], b: [f64; 4]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::candidates::PairSource;
     use crate::test_shapes::{spline_star, star};
     use crate::{axis_of, MedialOptions};
     use proptest::prelude::*;
@@ -253,8 +254,8 @@ mod tests {
             let w = rational.then_some(&weights[..radii.len()]);
             let Some(region) = spline_star(&radii, w) else { return Ok(()) };
             let opts = MedialOptions::default();
-            let pruned = axis_of(&region, &opts, true).unwrap();
-            let every = axis_of(&region, &opts, false).unwrap();
+            let pruned = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
+            let every = axis_of(&region, &opts, PairSource::All).unwrap().0;
             prop_assert_eq!(pruned, every);
         }
 
@@ -270,8 +271,8 @@ mod tests {
             };
             for exterior in [false, true] {
                 let opts = MedialOptions { exterior, ..Default::default() };
-                let pruned = axis_of(&region, &opts, true).unwrap();
-                let every = axis_of(&region, &opts, false).unwrap();
+                let pruned = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
+                let every = axis_of(&region, &opts, PairSource::All).unwrap().0;
                 prop_assert_eq!(pruned, every);
             }
         }

@@ -131,6 +131,11 @@ impl<'a> Sites<'a> {
         }
     }
 
+    /// +1 where the axis is sought left of boundary `k` as it runs, −1 where right.
+    pub(crate) fn inside_left(&self, k: usize) -> f64 {
+        self.inside_left[k]
+    }
+
     /// The piece of boundary `k` holding profile parameter `u` (its index in order).
     pub(crate) fn piece_of(&self, k: usize, u: f64) -> usize {
         let starts = &self.piece_starts[k];

@@ -1,5 +1,5 @@
-//! Regions the unit tests share: stars of cubic Béziers with corners and round holes, and
-//! closed B-splines round a star.
+//! Regions the unit tests share: stars of cubic Béziers or of lines, with corners and round
+//! holes, and closed B-splines round a star.
 
 use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
 
@@ -24,21 +24,7 @@ pub(crate) fn star(radii: &[f64], wobble: &[f64], holes: &[([f64; 2], f64)]) -> 
             Segment::spline(SegmentKind::Bezier, c).ok()
         })
         .collect::<Option<Vec<_>>>()?;
-    let outer = Profile::new(segs, None).ok()?;
-    let mut kept = Vec::new();
-    for &(c, r) in holes {
-        let hole = Profile::new(
-            vec![Segment::arc(c, r, 0.0, std::f64::consts::TAU).ok()?],
-            None,
-        )
-        .ok()?;
-        let mut trial = kept.clone();
-        trial.push(hole);
-        if Region::new(outer.clone(), trial.clone()).is_ok() {
-            kept = trial;
-        }
-    }
-    Region::new(outer, kept).ok()
+    with_round_holes(Profile::new(segs, None).ok()?, holes)
 }
 
 /// A closed cubic B-spline through control points round a star, clamped (one segment
@@ -53,4 +39,47 @@ pub(crate) fn spline_star(radii: &[f64], weights: Option<&[f64]>) -> Option<Regi
     let clamped = SplineCurve::new(periodic.curve().restrict(a, b).ok()?).ok()?;
     let seg = Segment::spline(SegmentKind::BSpline, clamped).ok()?;
     Region::new(Profile::new(vec![seg], Some(true)).ok()?, vec![]).ok()
+}
+
+/// A polygon of lines round a star at `radii`, each side bent at its middle by `wobble` of
+/// its length (a corner there, convex or reflex), with round holes near its middle where
+/// they fit.
+pub(crate) fn polygon_star(
+    radii: &[f64],
+    wobble: &[f64],
+    holes: &[([f64; 2], f64)],
+) -> Option<Region> {
+    let n = radii.len();
+    let joints: Vec<V2> = (0..n)
+        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
+        .collect();
+    let mut points = Vec::with_capacity(2 * n);
+    for i in 0..n {
+        let (a, b) = (joints[i], joints[(i + 1) % n]);
+        points.push(a);
+        points.push((a + b) * 0.5 + (b - a).perp() * wobble[i]);
+    }
+    let m = points.len();
+    let sides = (0..m)
+        .map(|i| Segment::line(points[i].arr(), points[(i + 1) % m].arr()).ok())
+        .collect::<Option<Vec<_>>>()?;
+    with_round_holes(Profile::new(sides, None).ok()?, holes)
+}
+
+/// `outer` with round holes of the given centres and radii, those the region accepts.
+fn with_round_holes(outer: Profile, holes: &[([f64; 2], f64)]) -> Option<Region> {
+    let mut kept = Vec::new();
+    for &(c, r) in holes {
+        let hole = Profile::new(
+            vec![Segment::arc(c, r, 0.0, std::f64::consts::TAU).ok()?],
+            None,
+        )
+        .ok()?;
+        let mut trial = kept.clone();
+        trial.push(hole);
+        if Region::new(outer.clone(), trial.clone()).is_ok() {
+            kept = trial;
+        }
+    }
+    Region::new(outer, kept).ok()
 }

@@ -165,3 +165,21 @@ pub fn all_finite(v: &Value) -> bool {
 pub fn within(x: f64, (a, b): (f64, f64)) -> bool {
     a <= x && x <= b
 }
+
+/// The checks every medial axis passes: finite numbers, edges between nodes, and every
+/// vertex at its radius from both its feet (to `room`).
+pub fn check_axis(region: &curvekit::curve::Region, axis: &curvekit::medial::MedialAxis, room: f64) {
+    let value = serde_json::to_value(axis).unwrap();
+    assert!(all_finite(&value), "{axis:?}");
+    let boundaries: Vec<_> = std::iter::once(region.outer()).chain(region.holes()).collect();
+    for e in &axis.edges {
+        assert!(e.from < axis.nodes.len() && e.to < axis.nodes.len());
+        for i in 0..e.xy.len() {
+            for s in 0..2 {
+                let f = curvekit::curve::ParamCurve::jet(boundaries[e.boundary[i][s]], e.feet[i][s]).p;
+                let d = (f.x - e.xy[i][0]).hypot(f.y - e.xy[i][1]);
+                assert!((d - e.radius[i]).abs() <= room, "{e:?}");
+            }
+        }
+    }
+}

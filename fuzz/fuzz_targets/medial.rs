@@ -8,6 +8,9 @@ use arbitrary::Arbitrary;
 use curvekit::io::{parse_region, Shape};
 use curvekit::medial::{medial_axis, MedialOptions};
 use libfuzzer_sys::fuzz_target;
+
+#[path = "common.rs"]
+mod common;
 use serde_json::json;
 
 /// The most sides: the axis's cost grows with the square of the sites.
@@ -73,30 +76,9 @@ fuzz_target!(|input: Input| {
     let Ok(axis) = medial_axis(region, &opts) else {
         return;
     };
-    let value = serde_json::to_value(&axis).unwrap();
-    assert!(finite(&value), "{axis:?}");
-    let boundaries: Vec<_> = std::iter::once(region.outer()).chain(region.holes()).collect();
     // The shape's size, and the rounding of its coordinates far from the origin (a shape
     // of a few hundred units of rounding of its position is all rounding).
     let size = 256.0 * k;
     let room = 1e-6 * size + 64.0 * f64::EPSILON * (far + 128.0) * k;
-    for e in &axis.edges {
-        assert!(e.from < axis.nodes.len() && e.to < axis.nodes.len());
-        for i in 0..e.xy.len() {
-            for s in 0..2 {
-                let f = curvekit::curve::ParamCurve::jet(boundaries[e.boundary[i][s]], e.feet[i][s]).p;
-                let d = (f.x - e.xy[i][0]).hypot(f.y - e.xy[i][1]);
-                assert!((d - e.radius[i]).abs() <= room, "{e:?}");
-            }
-        }
-    }
+    common::check_axis(region, &axis, room);
 });
-
-fn finite(v: &serde_json::Value) -> bool {
-    match v {
-        serde_json::Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
-        serde_json::Value::Array(a) => a.iter().all(finite),
-        serde_json::Value::Object(m) => m.values().all(finite),
-        _ => true,
-    }
-}

@@ -117,10 +117,11 @@ fn peers(c: &mut Criterion) {
             let region = Region::new(polygon(&vertices), Vec::new()).unwrap();
             let axis = medial_axis(&region, &opts).unwrap();
             eprintln!(
-                "star {n}: {} nodes, {} edges, certified {}",
+                "star {n}: {} nodes, {} edges, certified {} {}",
                 axis.nodes.len(),
                 axis.edges.len(),
-                axis.certified
+                axis.certified,
+                axis.reason.as_deref().unwrap_or("")
             );
             group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
                 b.iter(|| medial_axis(black_box(r), &opts).unwrap())

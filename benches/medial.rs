@@ -9,25 +9,17 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use curve::Region;
-use curvekit::io::{parse_region, Shape};
 use curvekit::medial::{medial_axis, MedialOptions};
 use std::time::Duration;
 
 mod common;
+#[path = "common/read.rs"]
+mod read;
 use common::{bezier_chain, POCKET};
+use read::region_of;
 
 const PERIODIC_CUBIC: &str = r#"{"kind":"bspline","degree":3,"periodic":true,
     "points":[[0,0],[2,-1],[4,0],[4,2],[2,1.2],[0,2]]}"#;
-
-fn region_of(text: &str) -> Region {
-    match parse_region("bench", None, text.as_bytes(), None)
-        .unwrap()
-        .shape
-    {
-        Shape::Region(r) => *r,
-        _ => unreachable!(),
-    }
-}
 
 fn medial(c: &mut Criterion) {
     // One core, as the targets are given (the crate's `parallel` feature would use them all;

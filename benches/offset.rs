@@ -6,26 +6,22 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use curve::Region;
-use curvekit::io::{parse_region, Shape};
 use curvekit::medial::{medial_axis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
 use std::time::Duration;
 
 mod common;
+#[path = "common/read.rs"]
+mod read;
 use common::{bezier_chain, POCKET};
+use read::region_of;
 
 fn offset(c: &mut Criterion) {
     let _ = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
         .build_global();
     let opts = OffsetOptions::default();
-    let pocket = match parse_region("bench", None, POCKET.as_bytes(), None)
-        .unwrap()
-        .shape
-    {
-        Shape::Region(r) => *r,
-        _ => unreachable!(),
-    };
+    let pocket = region_of(POCKET);
     let axis = medial_axis(&pocket, &MedialOptions::default()).unwrap();
     let steps: Vec<f64> = (1..=12).map(|k| 0.25 * k as f64).collect();
     c.bench_function("offset_pocket_island_step_quarter", |b| {

@@ -15,14 +15,16 @@ use cavalier_contours::polyline::{PlineSource, PlineSourceMut, Polyline};
 use cavalier_contours::shape_algorithms::{Shape as CavShape, ShapeOffsetOptions};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use curve::Region;
-use curvekit::io::{parse_region, Shape};
 use curvekit::medial::{medial_axis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
 use std::f64::consts::FRAC_PI_2;
 use std::time::Duration;
 
 mod common;
+#[path = "common/read.rs"]
+mod read;
 use common::{polygon, star_polygon, POCKET};
+use read::region_of;
 
 /// The grid boostvoronoi's integer input is snapped to: the star spans [-1.1, 1.1].
 const GRID: f64 = 1e6;
@@ -86,16 +88,6 @@ fn cavalier_offsets(shape: &CavShape<f64>, distances: &[f64]) -> usize {
             s.ccw_plines.len() + s.cw_plines.len()
         })
         .sum()
-}
-
-fn region_of(text: &str) -> Region {
-    match parse_region("bench", None, text.as_bytes(), None)
-        .unwrap()
-        .shape
-    {
-        Shape::Region(r) => *r,
-        _ => unreachable!(),
-    }
 }
 
 fn peers(c: &mut Criterion) {

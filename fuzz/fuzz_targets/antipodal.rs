@@ -44,8 +44,17 @@ fuzz_target!(|input: Input| {
         assert!(opts.validate().is_ok(), "tol {} accepted", opts.tol);
         assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
         for i in &r.inflections {
-            assert!(within(i.u, domain), "inflection at {} outside {domain:?}", i.u);
-            assert!(on_curve(i.u, i.p), "inflection point {:?} not at {}", i.p, i.u);
+            assert!(
+                within(i.u, domain),
+                "inflection at {} outside {domain:?}",
+                i.u
+            );
+            assert!(
+                on_curve(i.u, i.p),
+                "inflection point {:?} not at {}",
+                i.p,
+                i.u
+            );
             if let Some(b) = i.bracket {
                 // (On a closed curve a bracket across the seam is in the unwrapped parameter,
                 // beyond the domain's end.)
@@ -56,21 +65,33 @@ fuzz_target!(|input: Input| {
             }
         }
         if r.certified && curve.is_closed() {
-            assert!(r.inflections.len() % 2 == 0, "odd inflections, certified: {r:?}");
+            assert!(
+                r.inflections.len() % 2 == 0,
+                "odd inflections, certified: {r:?}"
+            );
         }
     }
     if let Ok(r) = prepared.antipodal(&opts) {
         assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
         for p in &r.pairs {
-            assert!(within(p.s, domain) && within(p.t, domain), "{p:?} outside {domain:?}");
-            assert!(on_curve(p.s, p.p) && on_curve(p.t, p.q), "pair off the curve: {p:?}");
+            assert!(
+                within(p.s, domain) && within(p.t, domain),
+                "{p:?} outside {domain:?}"
+            );
+            assert!(
+                on_curve(p.s, p.p) && on_curve(p.t, p.q),
+                "pair off the curve: {p:?}"
+            );
         }
         if r.certified && r.complete {
             assert!(
                 !r.pairs.is_empty() || !r.families.is_empty(),
                 "no antipodal pair, certified"
             );
-            assert!(r.inflections.len() % 2 == 0, "odd inflections, certified: {r:?}");
+            assert!(
+                r.inflections.len() % 2 == 0,
+                "odd inflections, certified: {r:?}"
+            );
         }
     }
 });

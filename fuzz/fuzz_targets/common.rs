@@ -25,11 +25,26 @@ pub enum ArbShape {
         periodic: bool,
         knots: Option<Vec<u8>>,
     },
-    Circle { r: u8 },
-    Ellipse { a: u8, b: u8 },
-    Limacon { a: u8, b: u8 },
-    Lemniscate { a: u8, b: u8 },
-    Convexities { p: u8, eps: u8, m: u8 },
+    Circle {
+        r: u8,
+    },
+    Ellipse {
+        a: u8,
+        b: u8,
+    },
+    Limacon {
+        a: u8,
+        b: u8,
+    },
+    Lemniscate {
+        a: u8,
+        b: u8,
+    },
+    Convexities {
+        p: u8,
+        eps: u8,
+        m: u8,
+    },
 }
 
 /// A shape placed somewhere in the plane at some size.
@@ -92,7 +107,11 @@ impl ArbCurve {
             } => {
                 let pts = self.points(points);
                 // Mostly low degrees; now and then one the reader must judge.
-                let p = if *degree >= 240 { *degree as usize - 230 } else { 1 + *degree as usize % 5 };
+                let p = if *degree >= 240 {
+                    *degree as usize - 230
+                } else {
+                    1 + *degree as usize % 5
+                };
                 let mut d = json!({"kind": "bspline", "degree": p, "points": pts});
                 if *periodic {
                     d["periodic"] = json!(true);
@@ -168,18 +187,35 @@ pub fn within(x: f64, (a, b): (f64, f64)) -> bool {
 
 /// The checks every medial axis passes: finite numbers, edges between nodes, and every
 /// vertex at its radius from both its feet (to `room`).
-pub fn check_axis(region: &curvekit::curve::Region, axis: &curvekit::medial::MedialAxis, room: f64) {
+pub fn check_axis(
+    region: &curvekit::curve::Region,
+    axis: &curvekit::medial::MedialAxis,
+    room: f64,
+) {
     let value = serde_json::to_value(axis).unwrap();
     assert!(all_finite(&value), "{axis:?}");
-    let boundaries: Vec<_> = std::iter::once(region.outer()).chain(region.holes()).collect();
+    let boundaries: Vec<_> = std::iter::once(region.outer())
+        .chain(region.holes())
+        .collect();
     for e in &axis.edges {
         assert!(e.from < axis.nodes.len() && e.to < axis.nodes.len());
         for i in 0..e.xy.len() {
             for s in 0..2 {
-                let f = curvekit::curve::ParamCurve::jet(boundaries[e.boundary[i][s]], e.feet[i][s]).p;
+                let f =
+                    curvekit::curve::ParamCurve::jet(boundaries[e.boundary[i][s]], e.feet[i][s]).p;
                 let d = (f.x - e.xy[i][0]).hypot(f.y - e.xy[i][1]);
                 assert!((d - e.radius[i]).abs() <= room, "{e:?}");
             }
         }
+    }
+}
+
+/// The region a region document holds, if the reader takes it.
+pub fn read_region(doc: &Value) -> Option<curvekit::curve::Region> {
+    let curve =
+        curvekit::io::parse_region("fuzz.json", None, doc.to_string().as_bytes(), None).ok()?;
+    match curve.shape {
+        curvekit::io::Shape::Region(r) => Some(*r),
+        _ => None,
     }
 }

@@ -5,7 +5,6 @@
 #![no_main]
 
 use arbitrary::Arbitrary;
-use curvekit::io::{parse_region, Shape};
 use curvekit::medial::{medial_axis, MedialOptions};
 use libfuzzer_sys::fuzz_target;
 
@@ -48,8 +47,10 @@ fuzz_target!(|input: Input| {
             segments.push(json!({"kind": "line", "from": at(from), "to": at(to)}));
         } else {
             let mid = (
-                ((from.0 as i16 + to.0 as i16) / 2 - (to.1 as i16 - from.1 as i16) * s.bend as i16 / 64) as f64,
-                ((from.1 as i16 + to.1 as i16) / 2 + (to.0 as i16 - from.0 as i16) * s.bend as i16 / 64) as f64,
+                ((from.0 as i16 + to.0 as i16) / 2
+                    - (to.1 as i16 - from.1 as i16) * s.bend as i16 / 64) as f64,
+                ((from.1 as i16 + to.1 as i16) / 2
+                    + (to.0 as i16 - from.0 as i16) * s.bend as i16 / 64) as f64,
             );
             let c = [(mid.0 + far) * k, (mid.1 + far) * k];
             segments.push(json!({"kind": "bezier", "points": [at(from), c, at(to)]}));
@@ -63,12 +64,10 @@ fuzz_target!(|input: Input| {
         .map(|&(c, r)| json!({"kind": "circle", "center": at(c), "r": (1.0 + r as f64 / 16.0) * k}))
         .collect();
     let doc = json!({"kind": "region", "outer": {"kind": "profile", "segments": segments}, "holes": holes});
-    let Ok(curve) = parse_region("fuzz.json", None, doc.to_string().as_bytes(), None) else {
+    let Some(region) = common::read_region(&doc) else {
         return;
     };
-    let Shape::Region(region) = &curve.shape else {
-        return;
-    };
+    let region = &region;
     let opts = MedialOptions {
         chord_tol: 0.5 / 2f64.powi((input.chord % 8) as i32),
         ..MedialOptions::default()

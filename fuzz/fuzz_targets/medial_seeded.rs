@@ -8,7 +8,6 @@
 #![no_main]
 
 use arbitrary::Arbitrary;
-use curvekit::io::{parse_region, Shape};
 use curvekit::medial::{medial_axis, MedialOptions};
 use libfuzzer_sys::fuzz_target;
 use serde_json::json;
@@ -68,7 +67,9 @@ fuzz_target!(|input: Input| {
             ];
             match bend {
                 0 => json!({"kind": "line", "from": at(a), "to": at(b)}),
-                b if b % 2 != 0 => json!({"kind": "bezier", "points": [at(a), at(mid), at(points[(i + 1) % n])]}),
+                b if b % 2 != 0 => {
+                    json!({"kind": "bezier", "points": [at(a), at(mid), at(points[(i + 1) % n])]})
+                }
                 _ => arc(at(a), at(mid), at(b)),
             }
         })
@@ -83,12 +84,10 @@ fuzz_target!(|input: Input| {
         })
         .collect();
     let doc = json!({"kind": "region", "outer": {"kind": "profile", "segments": segments}, "holes": holes});
-    let Ok(curve) = parse_region("fuzz.json", None, doc.to_string().as_bytes(), None) else {
+    let Some(region) = common::read_region(&doc) else {
         return;
     };
-    let Shape::Region(region) = &curve.shape else {
-        return;
-    };
+    let region = &region;
     let Ok(axis) = medial_axis(region, &MedialOptions::default()) else {
         return;
     };
@@ -108,7 +107,11 @@ fn arc(a: [f64; 2], m: [f64; 2], b: [f64; 2]) -> serde_json::Value {
     let tau = std::f64::consts::TAU;
     let (ta, tm, tb) = (angle(a), angle(m), angle(b));
     let ccw = (tb - ta).rem_euclid(tau);
-    let end = if (tm - ta).rem_euclid(tau) < ccw { ta + ccw } else { ta - (tau - ccw) };
+    let end = if (tm - ta).rem_euclid(tau) < ccw {
+        ta + ccw
+    } else {
+        ta - (tau - ccw)
+    };
     let r = (a[0] - cx).hypot(a[1] - cy);
     json!({"kind": "arc", "center": [cx, cy], "r": r, "start": ta, "end": end})
 }

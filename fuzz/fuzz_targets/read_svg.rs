@@ -29,7 +29,10 @@ fuzz_target!(|data: &[u8]| {
     let opts = curvekit::antipodal::Options::default().tolerance(1e-10);
     if let Ok(r) = curvekit::antipodal::profile_antipodal(profile, &opts) {
         for pair in &r.pairs {
-            assert!(pair.p.iter().chain(&pair.q).all(|x| x.is_finite()), "{pair:?}");
+            assert!(
+                pair.p.iter().chain(&pair.q).all(|x| x.is_finite()),
+                "{pair:?}"
+            );
         }
     }
 });

@@ -29,7 +29,10 @@ fuzz_target!(|input: Input| {
         assert!(opts.validate().is_ok(), "tol {} accepted", opts.tol);
         assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
         for l in &r.lines {
-            assert!(within(l.s, c1.domain()) && within(l.t, c2.domain()), "{l:?}");
+            assert!(
+                within(l.s, c1.domain()) && within(l.t, c2.domain()),
+                "{l:?}"
+            );
         }
     }
 });

@@ -41,6 +41,10 @@ mod sites;
 mod stretches;
 #[cfg(test)]
 mod test_shapes;
+// (The benchmarks' shapes and random numbers, shared with the unit tests.)
+#[cfg(test)]
+#[path = "../../../benches/common/mod.rs"]
+mod bench_shapes;
 
 pub use error::{Error, Result};
 pub use fit::EdgeSpline;

@@ -356,21 +356,11 @@ fn on_side(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bench_shapes::rng;
     use crate::candidates::PairSource;
     use crate::test_shapes::{polygon_star, star};
     use crate::{axis_of, MedialOptions};
     use curve::Region;
-
-    /// Deterministic pseudo-random numbers in [0, 1).
-    fn rng(seed: u64) -> impl FnMut() -> f64 {
-        let mut x = seed;
-        move || {
-            x = x
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
 
     /// A random star of `n` sides (lines bent at their middles, or Béziers) with up to two
     /// round holes.

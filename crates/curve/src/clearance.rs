@@ -170,12 +170,15 @@ impl Profile {
         // Nearest boxes first: the point found inside is then likely the deepest.
         let near = 1.0 - ROUNDING_ULPS * f64::EPSILON;
         let mut order: Vec<(f64, usize)> = Vec::new();
-        self.box_tree().within(x, r / near, |i| {
-            let d = box_distance(self.segment_box(i), x) * near;
-            if d < r && window.is_none_or(|w| w.cover(i as f64, i as f64 + 1.0) != Cover::None) {
-                order.push((d, i));
-            }
-        });
+        // (The reach a shade beyond r / near: the tree passes over no box the test keeps.)
+        self.box_tree()
+            .within(x, r / near * (1.0 + 4.0 * f64::EPSILON), |i| {
+                let d = box_distance(self.segment_box(i), x) * near;
+                if d < r && window.is_none_or(|w| w.cover(i as f64, i as f64 + 1.0) != Cover::None)
+                {
+                    order.push((d, i));
+                }
+            });
         order.sort_by(|a, b| a.0.total_cmp(&b.0));
         // Most disks a caller tests are entered deep: the ends of the Bézier pieces (points
         // of the curve) mostly show it at once, and the deepest of them is the best witness.

@@ -27,6 +27,11 @@ const TIP_MERGE: f64 = 1e-4;
 /// one node (twice `TIP_MERGE`: two ends that far apart can be one node through a third).
 const STUB: f64 = 2.0 * TIP_MERGE;
 
+/// A join whose feet differ by more than this share of the size (the rounding of the ends'
+/// feet) may hide a leaf whose feet stay within [`FEET_JOIN`] all along it: the seed's axis
+/// with such a join is not taken on the coverage's word.
+const TIGHT_JOIN: f64 = 1e-9;
+
 /// Feet of two stretches at their common end within this share of the size are one foot:
 /// ten times the reach within which ends are one node.
 const FEET_JOIN: f64 = 1e-5;
@@ -56,7 +61,13 @@ struct Chain {
     boundary: Vec<[usize; 2]>,
 }
 
-pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candidate]) -> MedialAxis {
+/// The graph of the axis; whether some stretches were joined through a node of two with feet
+/// that differ there by more than their rounding ([`TIGHT_JOIN`]).
+pub(crate) fn assemble(
+    sites: &Sites<'_>,
+    pieces: Vec<Stretch>,
+    found: &[Candidate],
+) -> (MedialAxis, bool) {
     let merge = MERGE * sites.size;
     // A stretch within one node's reach is a point: the bisector of an arc and the line
     // tangent to it at their joint maps a whole run of feet to the arc's centre.
@@ -171,7 +182,7 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
         }
     }
     let mut kinds: Vec<Option<NodeKind>> = vec![None; clusters_n];
-    join_through_twos(sites, &mut chains, clusters_n, &mut kinds);
+    let loose = join_through_twos(sites, &mut chains, clusters_n, &mut kinds);
     let mut chains: Vec<Chain> = chains.into_iter().flatten().collect();
 
     // Nodes: the clusters still in use, numbered in order of first use.
@@ -230,13 +241,16 @@ pub(crate) fn assemble(sites: &Sites<'_>, pieces: Vec<Stretch>, found: &[Candida
             node_of(cluster[k], points[k], &mut nodes);
         }
     }
-    MedialAxis {
-        nodes,
-        edges,
-        certified: false,
-        reason: None,
-        complete: true,
-    }
+    (
+        MedialAxis {
+            nodes,
+            edges,
+            certified: false,
+            reason: None,
+            complete: true,
+        },
+        loose,
+    )
 }
 
 /// Puts each vertex's two feet in the order that follows on from the previous vertex's:
@@ -382,13 +396,15 @@ pub(crate) fn root(parent: &mut [usize], mut i: usize) -> usize {
 }
 
 /// Joins the chains meeting at a node of two into one; a cycle left with one node of two (an
-/// annulus's) keeps it as a joint.
+/// annulus's) keeps it as a joint. Whether some join's feet differed by more than
+/// [`TIGHT_JOIN`] of the size (a leaf whose feet stay that near could be hidden there).
 fn join_through_twos(
     sites: &Sites<'_>,
     chains: &mut [Option<Chain>],
     clusters: usize,
     kinds: &mut [Option<NodeKind>],
-) {
+) -> bool {
+    let mut loose = false;
     // Bounded: each join removes a chain.
     for _ in 0..chains.len() {
         let mut at: Vec<Vec<(usize, usize)>> = vec![Vec::new(); clusters];
@@ -423,6 +439,7 @@ fn join_through_twos(
             chains[b.0] = Some(second);
             continue;
         }
+        loose |= !feet_meet(sites, &first, &second, TIGHT_JOIN * sites.size);
         first.vertices.extend_from_slice(&second.vertices[1..]);
         first.boundary.extend_from_slice(&second.boundary[1..]);
         first.ends[1] = second.ends[1];
@@ -441,6 +458,24 @@ fn join_through_twos(
             }
         }
     }
+    loose
+}
+
+/// Whether the feet of two stretches at their common end lie within `room` of each other
+/// (either way round).
+fn feet_meet(sites: &Sites<'_>, first: &Chain, second: &Chain, room: f64) -> bool {
+    let (p, pb) = (
+        first.vertices[first.vertices.len() - 1],
+        first.boundary[first.boundary.len() - 1],
+    );
+    let (q, qb) = (second.vertices[0], second.boundary[0]);
+    let near = |s: usize, t: usize| {
+        pb[s] == qb[t] && {
+            let (a, b) = (sites.foot(pb[s], p.tr[s]), sites.foot(qb[t], q.tr[t]));
+            (a[0] - b[0]).hypot(a[1] - b[1]) <= room
+        }
+    };
+    (near(0, 0) && near(1, 1)) || (near(0, 1) && near(1, 0))
 }
 
 /// Two stretches meeting at a node of two continue each other where the feet at their

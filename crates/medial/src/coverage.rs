@@ -196,7 +196,9 @@ pub(crate) fn feet_cover(sites: &Sites<'_>, axis: &MedialAxis) -> Result<(), &'s
             }
             covered += a.length;
             if jump.abs() > BACK_STEP
-                && !(ends_meet(a.ends[1], b.ends[0], gap) && short_between(sites, line, a, b, gap))
+                && !(ends_meet(a.ends[1], b.ends[0], gap)
+                    && short_between(sites, line, a, b, gap)
+                    && !convex_between(line, a, b))
             {
                 return Err(if jump > 0.0 {
                     "the feet of the axis leave a stretch of the boundary uncovered"
@@ -329,6 +331,20 @@ fn short_between(sites: &Sites<'_>, line: &Line, a: &Stretch, b: &Stretch, gap: 
         let u = line.param_at(lo + (hi - lo) * j as f64 / BETWEEN_SAMPLES as f64);
         let p = V2::from_arr(sites.foot(line.boundary, u));
         (p - a.ends[1].0).norm().min((p - b.ends[0].0).norm()) <= gap
+    })
+}
+
+/// Whether a convex corner lies strictly between the end of stretch `a` and the start of
+/// `b` (either way round): the end of a leaf, which two ends meeting there would hide.
+fn convex_between(line: &Line, a: &Stretch, b: &Stretch) -> bool {
+    let (from, mut to) = (a.start + a.length, b.start);
+    if to < from - 0.5 * line.length {
+        to += line.length;
+    }
+    let (lo, hi) = (from.min(to), from.max(to));
+    line.convex.iter().any(|&c| {
+        let c = lo + (c - lo).rem_euclid(line.length);
+        c > lo && c < hi
     })
 }
 

@@ -181,8 +181,8 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
     if !opts.exterior && segments >= SEED_SEGMENTS {
         // (The seed's pairs are a guess: its axis stands where it is certified and its feet
         // cover the boundaries, and is built again from the pairs the bounds keep where not.)
-        let (axis, stands) = axis_of(region, opts, PairSource::Seed)?;
-        if stands {
+        // (An error on a pair only the seed proposed is no answer either.)
+        if let Ok((axis, true)) = axis_of(region, opts, PairSource::Seed) {
             return Ok(axis);
         }
     }
@@ -194,8 +194,8 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
 const SEED_SEGMENTS: usize = 48;
 
 /// The medial axis of `region` from the bisectors of the pairs of segments `source` gives;
-/// whether it stands: its pairs did not come from the seed, or it is certified and its feet
-/// cover the boundaries ([`coverage`]).
+/// whether it stands: its pairs did not come from the seed, or it is certified, no stretches
+/// were joined across feet that differ, and its feet cover the boundaries ([`coverage`]).
 fn axis_of(
     region: &Region,
     opts: &MedialOptions,
@@ -215,7 +215,7 @@ fn axis_of(
     };
     let (found, complete, from_seed) = candidates::candidates(&sites, &traced, source)?;
     let pieces = stretches::stretches(&sites, &found);
-    let mut axis = assemble::assemble(&sites, pieces, &found);
+    let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found);
     axis.complete &= complete;
     let doubt = if !axis.complete {
         Some("a search limit was hit")
@@ -238,6 +238,7 @@ fn axis_of(
             e.bspline = Some(fit::fit_edge(&e.xy, &e.radius, tol));
         }
     }
-    let stands = !from_seed || (axis.certified && coverage::feet_cover(&sites, &axis).is_ok());
+    let stands = !from_seed
+        || (axis.certified && !loose_join && coverage::feet_cover(&sites, &axis).is_ok());
     Ok((axis, stands))
 }

@@ -16,8 +16,11 @@
 //! The seed is a guess: the snapped chords are not the boundary, and the port has known faults
 //! of its own. The axis built from it is proven complete by its feet covering the boundary
 //! ([`crate::coverage`]); where they do not, the axis is built again from every pair the bounds
-//! keep. A seed that cannot be made (snapped chords that meet, a diagram the port refuses)
-//! is `None`, and the bounds are used from the start.
+//! keep. A seed that cannot be made (a boundary snapped to fewer than three points, a
+//! diagram the port refuses) is `None`, and the bounds are used from the start. Snapped
+//! chords that cross (a hole nearer a curved side than the chords' sag) are not yet looked
+//! for before the diagram is built: the port's diagram of them is a guess like any other,
+//! refused by the coverage where it misleads.
 
 use crate::pairs::{Neighbours, SegmentId};
 use boostvoronoi::prelude::{Builder, Diagram, Line, SourceCategory};

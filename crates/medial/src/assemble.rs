@@ -461,21 +461,31 @@ fn join_through_twos(
     loose
 }
 
-/// Whether the feet of two stretches at their common end lie within `room` of each other
-/// (either way round).
-fn feet_meet(sites: &Sites<'_>, first: &Chain, second: &Chain, room: f64) -> bool {
+/// Whether the feet of two stretches at their common end pair up (either way round) so that
+/// `agree(boundary, foot before, foot after, distance apart)` holds for both pairs.
+fn feet_pair_up(
+    sites: &Sites<'_>,
+    first: &Chain,
+    second: &Chain,
+    agree: impl Fn(usize, f64, f64, f64) -> bool,
+) -> bool {
     let (p, pb) = (
         first.vertices[first.vertices.len() - 1],
         first.boundary[first.boundary.len() - 1],
     );
     let (q, qb) = (second.vertices[0], second.boundary[0]);
-    let near = |s: usize, t: usize| {
+    let pair = |s: usize, t: usize| {
         pb[s] == qb[t] && {
             let (a, b) = (sites.foot(pb[s], p.tr[s]), sites.foot(qb[t], q.tr[t]));
-            (a[0] - b[0]).hypot(a[1] - b[1]) <= room
+            agree(pb[s], p.tr[s], q.tr[t], (a[0] - b[0]).hypot(a[1] - b[1]))
         }
     };
-    (near(0, 0) && near(1, 1)) || (near(0, 1) && near(1, 0))
+    (pair(0, 0) && pair(1, 1)) || (pair(0, 1) && pair(1, 0))
+}
+
+/// Whether the feet of two stretches at their common end lie within `room` of each other.
+fn feet_meet(sites: &Sites<'_>, first: &Chain, second: &Chain, room: f64) -> bool {
+    feet_pair_up(sites, first, second, |_, _, _, apart| apart <= room)
 }
 
 /// Two stretches meeting at a node of two continue each other where the feet at their
@@ -483,28 +493,13 @@ fn feet_meet(sites: &Sites<'_>, first: &Chain, second: &Chain, room: f64) -> boo
 /// between them (whose leaf would end there), or where the boundary between those that
 /// differ is an arc about the node.
 fn feet_continue(sites: &Sites<'_>, first: &Chain, second: &Chain) -> bool {
-    let (p, pb) = (
-        first.vertices[first.vertices.len() - 1],
-        first.boundary[first.boundary.len() - 1],
-    );
-    let (q, qb) = (second.vertices[0], second.boundary[0]);
     let room = FEET_JOIN * sites.size;
-    let agree = |s: usize, t: usize| {
-        pb[s] == qb[t] && {
-            let (a, b) = (sites.foot(pb[s], p.tr[s]), sites.foot(qb[t], q.tr[t]));
-            ((a[0] - b[0]).hypot(a[1] - b[1]) <= room
-                && !crate::coverage::convex_corner_between(sites, pb[s], p.tr[s], q.tr[t]))
-                || crate::coverage::arc_between(
-                    sites,
-                    pb[s],
-                    p.tr[s],
-                    q.tr[t],
-                    curve::V2::from_arr(q.xy),
-                    q.radius,
-                )
-        }
-    };
-    (agree(0, 0) && agree(1, 1)) || (agree(0, 1) && agree(1, 0))
+    let node = second.vertices[0];
+    let centre = curve::V2::from_arr(node.xy);
+    feet_pair_up(sites, first, second, |k, u, v, apart| {
+        (apart <= room && !crate::coverage::convex_corner_between(sites, k, u, v))
+            || crate::coverage::arc_between(sites, k, u, v, centre, node.radius)
+    })
 }
 
 fn reverse(c: &mut Chain) {

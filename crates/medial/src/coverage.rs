@@ -314,6 +314,16 @@ pub(crate) fn arc_between(sites: &Sites<'_>, k: usize, a: f64, b: f64, x: V2, r:
         })
 }
 
+/// The stretch of the line between the end of stretch `a` and the start of `b`, either way
+/// round (where they overlap, the overlap), as `(lo, hi)`.
+fn between(line: &Line, a: &Stretch, b: &Stretch) -> (f64, f64) {
+    let (from, mut to) = (a.start + a.length, b.start);
+    if to < from - 0.5 * line.length {
+        to += line.length;
+    }
+    (from.min(to), from.max(to))
+}
+
 /// Samples of the boundary between two ends of stretches that meet.
 const BETWEEN_SAMPLES: usize = 8;
 
@@ -322,11 +332,7 @@ const BETWEEN_SAMPLES: usize = 8;
 /// ends that meet across a slit of the boundary (its sides within `gap`) leave the slit
 /// uncovered all the same.
 fn short_between(sites: &Sites<'_>, line: &Line, a: &Stretch, b: &Stretch, gap: f64) -> bool {
-    let (from, mut to) = (a.start + a.length, b.start);
-    if to < from - 0.5 * line.length {
-        to += line.length;
-    }
-    let (lo, hi) = (from.min(to), from.max(to));
+    let (lo, hi) = between(line, a, b);
     (1..BETWEEN_SAMPLES).all(|j| {
         let u = line.param_at(lo + (hi - lo) * j as f64 / BETWEEN_SAMPLES as f64);
         let p = V2::from_arr(sites.foot(line.boundary, u));
@@ -337,11 +343,7 @@ fn short_between(sites: &Sites<'_>, line: &Line, a: &Stretch, b: &Stretch, gap: 
 /// Whether a convex corner lies strictly between the end of stretch `a` and the start of
 /// `b` (either way round): the end of a leaf, which two ends meeting there would hide.
 fn convex_between(line: &Line, a: &Stretch, b: &Stretch) -> bool {
-    let (from, mut to) = (a.start + a.length, b.start);
-    if to < from - 0.5 * line.length {
-        to += line.length;
-    }
-    let (lo, hi) = (from.min(to), from.max(to));
+    let (lo, hi) = between(line, a, b);
     line.convex.iter().any(|&c| {
         let c = lo + (c - lo).rem_euclid(line.length);
         c > lo && c < hi

@@ -18,7 +18,7 @@
 use crate::geom::V2;
 use crate::param::ParamCurve;
 use crate::profile::Profile;
-use crate::segment::Segment;
+use crate::segment::{Segment, SegmentKind};
 use bspline::Piecewise;
 use smallvec::{smallvec, SmallVec};
 
@@ -174,7 +174,9 @@ impl Profile {
         self.box_tree()
             .within(x, r / near * (1.0 + 4.0 * f64::EPSILON), |i| {
                 let d = box_distance(self.segment_box(i), x) * near;
-                if d < r && window.is_none_or(|w| w.cover(i as f64, i as f64 + 1.0) != Cover::None)
+                if d < r
+                    && window.is_none_or(|w| w.cover(i as f64, i as f64 + 1.0) != Cover::None)
+                    && !line_passes_by(&self.segments()[i], x, r)
                 {
                     order.push((d, i));
                 }
@@ -738,9 +740,28 @@ fn arc_distance(seg: &Segment, c: V2, radius: f64, x: V2) -> f64 {
     bound - room
 }
 
+/// Whether `seg` is a line whose exact distance from `x` is at least `r`, past its rounding:
+/// a wide disk's reach holds the boxes of many lines that pass it by (about a junction of
+/// nearly cocircular corners, most of them), which the pieces' tests would each decide at
+/// many times the cost.
+fn line_passes_by(seg: &Segment, x: V2, r: f64) -> bool {
+    if seg.kind() != SegmentKind::Line {
+        return false;
+    }
+    let (a, b) = (seg.start(), seg.end());
+    let squared = crate::geom::squared_distance_to_segment(x.arr(), a.arr(), b.arr());
+    // (The foot and the difference round by a few units of the coordinates; the squares by
+    // a few units of themselves.)
+    let room = ROUNDING_ULPS * f64::EPSILON * (x.norm() + a.norm() + b.norm() + r);
+    squared >= (r + room) * (r + room) * (1.0 + 4.0 * f64::EPSILON)
+}
+
 /// A lower bound on the distance from `x` to a box `[lo x, lo y, hi x, hi y]`.
 pub(crate) fn box_distance(b: [f64; 4], x: V2) -> f64 {
     let dx = (b[0] - x.x).max(x.x - b[2]).max(0.0);
     let dy = (b[1] - x.y).max(x.y - b[3]).max(0.0);
-    dx.hypot(dy)
+    // (The norm rounds by up to two units either way, a square root of a sum of squares:
+    // four off keeps it below the true distance. The disk tests call this for every box in
+    // reach, and hypot costs several times more.)
+    V2::new(dx, dy).norm() * (1.0 - 4.0 * f64::EPSILON)
 }

@@ -10,7 +10,7 @@ use curve::ParamCurve;
 
 /// Ends of stretches within this share of the region's size are one node: junctions found on
 /// different branches, and branches continuing each other, agree to ~1e-12 of the size.
-const MERGE: f64 = 1e-6;
+pub(crate) const MERGE: f64 = 1e-6;
 
 /// Ends of stretches whose feet lie within this share of their radius of each other are
 /// beside a centre of curvature, where the feet are ill-conditioned: stretches of
@@ -61,14 +61,16 @@ struct Chain {
     boundary: Vec<[usize; 2]>,
 }
 
-/// The graph of the axis; whether some stretches were joined through a node of two with feet
+/// The graph of the axis, ends within `merge` (a share of the size) one node; whether some
+/// stretches were joined through a node of two with feet
 /// that differ there by more than their rounding ([`TIGHT_JOIN`]).
 pub(crate) fn assemble(
     sites: &Sites<'_>,
     pieces: Vec<Stretch>,
     found: &[Candidate],
+    merge: f64,
 ) -> (MedialAxis, bool) {
-    let merge = MERGE * sites.size;
+    let merge = merge * sites.size;
     // A stretch within one node's reach is a point: the bisector of an arc and the line
     // tangent to it at their joint maps a whole run of feet to the arc's centre.
     let pieces: Vec<Stretch> = pieces
@@ -405,29 +407,31 @@ fn join_through_twos(
     kinds: &mut [Option<NodeKind>],
 ) -> bool {
     let mut loose = false;
-    // Bounded: each join removes a chain.
-    for _ in 0..chains.len() {
-        let mut at: Vec<Vec<(usize, usize)>> = vec![Vec::new(); clusters];
-        for (i, c) in chains.iter().enumerate() {
-            if let Some(c) = c {
-                at[c.ends[0]].push((i, 0));
-                at[c.ends[1]].push((i, 1));
-            }
+    // The chains ending at each node (a chain twice where both its ends are there). A join
+    // at a node changes no other node's count, only which chain ends at the far node of the
+    // second: the nodes are taken once each, in order.
+    let mut at: Vec<Vec<usize>> = vec![Vec::new(); clusters];
+    for (i, c) in chains.iter().enumerate() {
+        if let Some(c) = c {
+            at[c.ends[0]].push(i);
+            at[c.ends[1]].push(i);
         }
-        let Some((node, a, b)) = (0..clusters).find_map(|n| match at[n][..] {
-            [(a, ea), (b, eb)] if a != b && kinds[n].is_none() => Some((n, (a, ea), (b, eb))),
-            _ => None,
-        }) else {
-            break;
+    }
+    for node in 0..clusters {
+        let [a, b] = at[node][..] else {
+            continue;
         };
-        let (Some(mut first), Some(mut second)) = (chains[a.0].take(), chains[b.0].take()) else {
+        if a == b || kinds[node].is_some() {
+            continue;
+        }
+        let (Some(mut first), Some(mut second)) = (chains[a].take(), chains[b].take()) else {
             break;
         };
         // first ends at the node, second starts there.
-        if a.1 == 0 {
+        if first.ends[1] != node {
             reverse(&mut first);
         }
-        if b.1 == 1 {
+        if second.ends[0] != node {
             reverse(&mut second);
         }
         debug_assert!(first.ends[1] == node && second.ends[0] == node);
@@ -435,15 +439,21 @@ fn join_through_twos(
             // A third site touched the disk here and its branch was not found: the node
             // stays, a junction of two, for the coverage of the feet to refuse.
             kinds[node] = Some(NodeKind::Junction);
-            chains[a.0] = Some(first);
-            chains[b.0] = Some(second);
+            chains[a] = Some(first);
+            chains[b] = Some(second);
             continue;
         }
         loose |= !feet_meet(sites, &first, &second, TIGHT_JOIN * sites.size);
         first.vertices.extend_from_slice(&second.vertices[1..]);
         first.boundary.extend_from_slice(&second.boundary[1..]);
         first.ends[1] = second.ends[1];
-        chains[a.0] = Some(first);
+        at[node].clear();
+        let far = &mut at[second.ends[1]];
+        for c in far.iter_mut().filter(|c| **c == b) {
+            *c = a;
+        }
+        far.sort_unstable(); // (by chain, as the chains are listed: the first is joined to)
+        chains[a] = Some(first);
     }
     // A chain from a node back to it, the node's only chain: a cycle without junctions.
     for c in chains.iter().flatten() {

@@ -40,6 +40,9 @@ pub(crate) enum PairSource {
     Seed,
     /// Those that can share an empty disk by bounds on the distances ([`crate::pairs`]).
     Bounds,
+    /// No pairs: the seed's edges themselves, traced in closed form, where the boundaries are
+    /// lines alone ([`crate::line_axis`]); [`candidates`] takes it as `Bounds`.
+    SeedEdges,
     /// Every pair (the tests compare the others with it).
     #[cfg(test)]
     All,

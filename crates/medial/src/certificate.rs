@@ -21,12 +21,13 @@ use crate::curvature::proven_rate_sign;
 use crate::sites::{Disk, Sites};
 use crate::{MedialAxis, Node, NodeKind};
 use curve::{Clearance, ParamCurve};
+use std::collections::HashSet;
 
 /// Radii of the disks about a junction searched for its exact point, as shares of the size:
 /// the first well above the enclosures' rounding (~1e-15 of the coordinates), the second
 /// for junctions far from the origin; no more than the contract's claim of place for a
 /// vertex.
-const JUNCTION_ROOM: [f64; 2] = [1e-10, 1e-9];
+pub(crate) const JUNCTION_ROOM: [f64; 2] = [1e-10, 1e-9];
 
 /// The polygons a junction is proven with, tried in turn: the share of the room about it
 /// by which every enclosure of a distance is wider than the distance to the foot (its
@@ -109,22 +110,39 @@ impl Doubt {
 }
 
 /// The first node of `axis` whose place is not proven, as a doubt; `tol` is the parameter
-/// tolerance an end's peak of curvature is proven to.
-pub(crate) fn doubt(sites: &Sites<'_>, axis: &MedialAxis, tol: f64) -> Option<Doubt> {
+/// tolerance an end's peak of curvature is proven to. Junctions at the places in `proven`
+/// (bits of their coordinates) were proven by the caller, disk and place.
+pub(crate) fn doubt(
+    sites: &Sites<'_>,
+    axis: &MedialAxis,
+    tol: f64,
+    proven: &HashSet<[u64; 2]>,
+) -> Option<Doubt> {
+    // The edges at each node, for its feet.
+    let mut edges_at: Vec<Vec<usize>> = vec![Vec::new(); axis.nodes.len()];
+    for (k, e) in axis.edges.iter().enumerate() {
+        edges_at[e.from].push(k);
+        if e.to != e.from {
+            edges_at[e.to].push(k);
+        }
+    }
+    let corners = Corners::of(sites);
     axis.nodes.iter().find_map(|node| {
         // A junction's or an end's disk is empty (to the slack): the node is on the axis.
         let empty = || sites.disk(node.xy, node.radius) == Disk::Empty;
+        let feet = || feet_of(sites, axis, &edges_at[node.id], node.id);
         let proven = match node.kind {
             NodeKind::Junction => {
-                empty() && junction_proven(sites, node, &feet_of(sites, axis, node.id))
+                proven.contains(&node.xy.map(f64::to_bits))
+                    || (empty() && junction_proven(sites, node, &feet()))
             }
             NodeKind::End => {
-                let feet = feet_of(sites, axis, node.id);
+                let feet = feet();
                 empty()
                     && (end_on_arc(sites, node, &feet)
                         || end_at_curvature_peak(sites, node, &feet, tol))
             }
-            NodeKind::Corner => at_corner(sites, node),
+            NodeKind::Corner => corners.at_corner(sites, node),
             NodeKind::Joint | NodeKind::Clip => true,
         };
         (!proven).then_some(match node.kind {
@@ -156,11 +174,11 @@ struct Foot {
     xy: [f64; 2],
 }
 
-/// The distinct feet of the edges' ends at node `id`.
-fn feet_of(sites: &Sites<'_>, axis: &MedialAxis, id: usize) -> Vec<Foot> {
+/// The distinct feet of the ends at node `id` of `edges` (the axis's edges that end there).
+fn feet_of(sites: &Sites<'_>, axis: &MedialAxis, edges: &[usize], id: usize) -> Vec<Foot> {
     let same = SAME_FOOT * sites.size;
     let mut out: Vec<Foot> = Vec::new();
-    for e in &axis.edges {
+    for e in edges.iter().map(|&k| &axis.edges[k]) {
         let ends = [(e.from == id, 0), (e.to == id, e.feet.len() - 1)];
         for (at, k) in ends {
             if !at {
@@ -264,17 +282,35 @@ fn end_at_curvature_peak(sites: &Sites<'_>, node: &Node, feet: &[Foot], tol: f64
     })
 }
 
-/// Whether a corner leaf lies at a corner of the boundary that is convex for the part of
-/// the plane whose axis is sought (a reflex one's cone points into it: no leaf ends there).
-fn at_corner(sites: &Sites<'_>, node: &Node) -> bool {
-    let room = JUNCTION_ROOM[1] * sites.size;
-    sites.boundaries.iter().enumerate().any(|(k, b)| {
-        b.corners().any(|j| {
-            let p = b.jet(j.u).p;
-            let cone_inside = sites.inside_of(k, 0, j.u, true, node.xy);
-            distance([p.x, p.y], node.xy) <= room && !cone_inside
-        })
-    })
+/// The corners of the boundaries (boundary, profile parameter), sorted by their points' x.
+struct Corners(Vec<([f64; 2], usize, f64)>);
+
+impl Corners {
+    fn of(sites: &Sites<'_>) -> Self {
+        let mut all: Vec<([f64; 2], usize, f64)> = sites
+            .boundaries
+            .iter()
+            .enumerate()
+            .flat_map(|(k, b)| b.corners().map(move |j| (b.jet(j.u).p.arr(), k, j.u)))
+            .collect();
+        all.sort_by(|a, b| a.0[0].total_cmp(&b.0[0]));
+        Self(all)
+    }
+
+    /// Whether a corner leaf lies at a corner of the boundary that is convex for the part
+    /// of the plane whose axis is sought (a reflex one's cone points into it: no leaf ends
+    /// there).
+    fn at_corner(&self, sites: &Sites<'_>, node: &Node) -> bool {
+        let room = JUNCTION_ROOM[1] * sites.size;
+        let x = node.xy[0];
+        let first = self.0.partition_point(|c| c.0[0] < x - room);
+        self.0[first..]
+            .iter()
+            .take_while(|c| c.0[0] <= x + room)
+            .any(|&(p, k, u)| {
+                distance(p, node.xy) <= room && !sites.inside_of(k, 0, u, true, node.xy)
+            })
+    }
 }
 
 /// Whether a point equidistant from three stretches of the boundary about three of the
@@ -568,7 +604,10 @@ mod tests {
         let region = pocket();
         let axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
         assert!(axis.certified, "{:?}", axis.reason);
-        assert_eq!(doubt(&Sites::new(&region, false), &axis, TOL), None);
+        assert_eq!(
+            doubt(&Sites::new(&region, false), &axis, TOL, &HashSet::new()),
+            None
+        );
     }
 
     #[test]
@@ -584,11 +623,14 @@ mod tests {
         // 2e-9 of the size off: the exact point lies outside both disks searched about it.
         let mut moved = axis.clone();
         moved.nodes[j].xy[1] += 2e-9 * sites.size;
-        assert_eq!(doubt(&sites, &moved, TOL), Some(Doubt::Junction));
+        assert_eq!(
+            doubt(&sites, &moved, TOL, &HashSet::new()),
+            Some(Doubt::Junction)
+        );
         // Within the first disk's room it stays proven.
         let mut nudged = axis.clone();
         nudged.nodes[j].xy[1] += 0.2 * JUNCTION_ROOM[0] * sites.size;
-        assert_eq!(doubt(&sites, &nudged, TOL), None);
+        assert_eq!(doubt(&sites, &nudged, TOL, &HashSet::new()), None);
     }
 
     #[test]
@@ -622,7 +664,10 @@ mod tests {
             .position(|n| n.kind == NodeKind::Corner)
             .expect("a corner");
         axis.nodes[k].xy = [2.0, 2.0]; // the reflex corner
-        assert_eq!(doubt(&sites, &axis, TOL), Some(Doubt::Corner));
+        assert_eq!(
+            doubt(&sites, &axis, TOL, &HashSet::new()),
+            Some(Doubt::Corner)
+        );
     }
 
     #[test]
@@ -636,7 +681,7 @@ mod tests {
             .position(|n| n.kind == NodeKind::End)
             .expect("an end");
         axis.nodes[e].xy[0] += 2e-9 * sites.size;
-        assert_eq!(doubt(&sites, &axis, TOL), Some(Doubt::End));
+        assert_eq!(doubt(&sites, &axis, TOL, &HashSet::new()), Some(Doubt::End));
     }
 
     /// The periodic cubic: two ends at centres of curvature of its sharpest points.
@@ -681,7 +726,10 @@ mod tests {
         edge.feet[k] = [v, v];
         moved.nodes[e].xy = centre.arr();
         moved.nodes[e].radius = 1.0 / j.curvature().abs();
-        assert_eq!(doubt(&sites, &moved, TOL), Some(Doubt::End));
+        assert_eq!(
+            doubt(&sites, &moved, TOL, &HashSet::new()),
+            Some(Doubt::End)
+        );
         // Its disk is still empty: the rates decided.
         assert_eq!(
             sites.disk(moved.nodes[e].xy, moved.nodes[e].radius),

@@ -35,6 +35,8 @@ mod curvature;
 mod error;
 mod fans;
 mod fit;
+mod junction_proof;
+mod line_axis;
 mod pairs;
 mod seed;
 mod sites;
@@ -52,6 +54,7 @@ pub use fit::EdgeSpline;
 use candidates::PairSource;
 use curve::Region;
 use serde::{Deserialize, Serialize};
+use std::collections::HashSet;
 
 /// Options of [`medial_axis`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -182,11 +185,25 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
         // (The seed's pairs are a guess: its axis stands where it is certified and its feet
         // cover the boundaries, and is built again from the pairs the bounds keep where not.)
         // (An error on a pair only the seed proposed is no answer either.)
-        if let Ok((axis, true)) = axis_of(region, opts, PairSource::Seed) {
-            return Ok(axis);
+        for source in [PairSource::SeedEdges, PairSource::Seed] {
+            if let Ok((axis, true)) = axis_of(region, opts, source) {
+                return Ok(axis);
+            }
         }
     }
     Ok(axis_of(region, opts, PairSource::Bounds)?.0)
+}
+
+/// An axis of nothing, uncertified (what a path that cannot be taken returns, with "does
+/// not stand").
+fn empty_axis() -> MedialAxis {
+    MedialAxis {
+        nodes: Vec::new(),
+        edges: Vec::new(),
+        certified: false,
+        reason: None,
+        complete: false,
+    }
 }
 
 /// From this many boundary segments on, the pairs come from the seed: below, the bounds'
@@ -213,9 +230,31 @@ fn axis_of(
         },
         ..*opts
     };
-    let (found, complete, from_seed) = candidates::candidates(&sites, &traced, source)?;
-    let pieces = stretches::stretches(&sites, &found);
-    let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found);
+    let (found, pieces, complete, from_seed, proven, merge) = if source == PairSource::SeedEdges {
+        match line_axis::trace(&sites, traced.chord_tol) {
+            Some(t) => (
+                t.candidates,
+                t.stretches,
+                true,
+                true,
+                t.proven,
+                line_axis::MERGE,
+            ),
+            None => return Ok((empty_axis(), false)),
+        }
+    } else {
+        let (found, complete, from_seed) = candidates::candidates(&sites, &traced, source)?;
+        let pieces = stretches::stretches(&sites, &found);
+        (
+            found,
+            pieces,
+            complete,
+            from_seed,
+            HashSet::new(),
+            assemble::MERGE,
+        )
+    };
+    let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found, merge);
     axis.complete &= complete;
     let doubt = if !axis.complete {
         Some("a search limit was hit")
@@ -223,7 +262,7 @@ fn axis_of(
         Some(certificate::Doubt::Graph.reason())
     } else {
         // (The nodes' proofs test disks too: whether any disk was undecided is asked after.)
-        let at_node = certificate::doubt(&sites, &axis, opts.tol);
+        let at_node = certificate::doubt(&sites, &axis, opts.tol, &proven);
         if sites.some_disk_undecided() {
             Some(certificate::Doubt::Disk.reason())
         } else {

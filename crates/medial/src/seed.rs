@@ -54,26 +54,37 @@ const MAX_CHORD_DEPTH: usize = 12;
 /// What a point of the approximation stands for: a point inside one segment, or the joint
 /// where one segment ends and the next starts.
 #[derive(Debug, Clone, Copy)]
-enum Owner {
+pub(crate) enum Owner {
     Inside(SegmentId),
     Joint { before: SegmentId, after: SegmentId },
 }
 
 /// The chained points of every boundary, snapped; the chord starting at point `j` runs to
 /// point `next[j]` and approximates the segment `chord_segment(j)`.
-struct Approximation {
-    points: Vec<[i32; 2]>,
-    owner: Vec<Owner>,
+pub(crate) struct Approximation {
+    pub(crate) points: Vec<[i32; 2]>,
+    pub(crate) owner: Vec<Owner>,
     /// The boundary of each point.
-    boundary: Vec<usize>,
+    pub(crate) boundary: Vec<usize>,
     /// The next and the previous point along its boundary.
-    next: Vec<usize>,
+    pub(crate) next: Vec<usize>,
     prev: Vec<usize>,
+    /// The point of the plane at the grid's origin, and grid units per unit of length.
+    origin: [f64; 2],
+    scale: f64,
 }
 
 impl Approximation {
+    /// The point of the plane at grid coordinates `g`.
+    pub(crate) fn unsnap(&self, g: [f64; 2]) -> [f64; 2] {
+        [
+            self.origin[0] + g[0] / self.scale,
+            self.origin[1] + g[1] / self.scale,
+        ]
+    }
+
     /// The segment the chord starting at point `j` approximates.
-    fn chord_segment(&self, j: usize) -> SegmentId {
+    pub(crate) fn chord_segment(&self, j: usize) -> SegmentId {
         match self.owner[j] {
             Owner::Inside(s) => s,
             Owner::Joint { after, .. } => after,
@@ -91,6 +102,18 @@ pub(crate) fn seed_pairs(
     bounds: [f64; 4],
     size: f64,
 ) -> Option<Neighbours> {
+    let (approx, diagram) = chord_diagram(boundaries, inside_left, bounds, size)?;
+    pairs_on_side(&approx, &diagram, inside_left).map(Neighbours::Only)
+}
+
+/// The boundaries' chords (see [`seed_pairs`]) and their Voronoi diagram; `None` where no
+/// seed can be made.
+pub(crate) fn chord_diagram(
+    boundaries: &[&Profile],
+    inside_left: &[f64],
+    bounds: [f64; 4],
+    size: f64,
+) -> Option<(Approximation, Diagram)> {
     let approx = approximate(boundaries, inside_left, bounds, size)?;
     let lines: Vec<Line<i32>> = (0..approx.points.len())
         .map(|j| {
@@ -103,7 +126,7 @@ pub(crate) fn seed_pairs(
         .ok()?
         .build()
         .ok()?;
-    pairs_on_side(&approx, &diagram, inside_left).map(Neighbours::Only)
+    Some((approx, diagram))
 }
 
 /// The boundaries' chords, snapped to the grid over `bounds` (consecutive points that snap
@@ -134,6 +157,8 @@ fn approximate(
         boundary: Vec::new(),
         next: Vec::new(),
         prev: Vec::new(),
+        origin: [cx, cy],
+        scale,
     };
     for (k, b) in boundaries.iter().enumerate() {
         let n = b.segments().len();
@@ -249,18 +274,7 @@ fn pairs_on_side(
     diagram: &Diagram,
     inside_left: &[f64],
 ) -> Option<HashSet<(SegmentId, SegmentId)>> {
-    // The site of each cell: a chord (by index) or a point of the approximation.
-    let site = |cell: usize| -> Option<Site> {
-        let c = diagram.cells().get(cell)?;
-        let chord = c.source_index().usize();
-        let end = *approx.next.get(chord)?;
-        Some(match c.source_category() {
-            SourceCategory::Segment => Site::Chord(chord),
-            SourceCategory::SegmentStart => Site::Point(chord),
-            SourceCategory::SegmentEnd => Site::Point(end),
-            SourceCategory::SinglePoint => return None,
-        })
-    };
+    let site = |cell: usize| cell_site(approx, diagram, cell);
     let mut pairs = HashSet::new();
     for edge in diagram.edges() {
         let id = edge.id();
@@ -289,9 +303,23 @@ fn pairs_on_side(
     Some(pairs)
 }
 
+/// The site of cell `cell` of the diagram: a chord (by index) or a point of the
+/// approximation.
+pub(crate) fn cell_site(approx: &Approximation, diagram: &Diagram, cell: usize) -> Option<Site> {
+    let c = diagram.cells().get(cell)?;
+    let chord = c.source_index().usize();
+    let end = *approx.next.get(chord)?;
+    Some(match c.source_category() {
+        SourceCategory::Segment => Site::Chord(chord),
+        SourceCategory::SegmentStart => Site::Point(chord),
+        SourceCategory::SegmentEnd => Site::Point(end),
+        SourceCategory::SinglePoint => return None,
+    })
+}
+
 /// A site of the diagram: a chord, or a point of the approximation (a chord's end).
-#[derive(Debug, Clone, Copy)]
-enum Site {
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Site {
     Chord(usize),
     Point(usize),
 }
@@ -314,7 +342,7 @@ impl Site {
 /// side of the boundary near site `a`, one of its two sites: a point of the edge is nearest
 /// `a`, so it lies on the axis's side of the boundary there. It is judged at the end farthest
 /// from `a` (an end on the boundary, at a joint, says nothing).
-fn on_side(
+pub(crate) fn on_side(
     approx: &Approximation,
     a: Site,
     ends: [Option<[f64; 2]>; 2],

@@ -227,7 +227,13 @@ impl<'a> Sites<'a> {
         if corner {
             // A reflex corner of the outer boundary (a convex one of a hole, as the hole runs)
             // points into the region; the others into the exterior.
-            return match p.joints().iter().find(|j| j.u == u) {
+            // (The joints are in order of their parameters.)
+            let joint = p
+                .joints()
+                .binary_search_by(|j| j.u.total_cmp(&u))
+                .ok()
+                .map(|k| &p.joints()[k]);
+            return match joint {
                 Some(j) if (b == 0) != self.exterior => j.kind == JointKind::Reflex,
                 Some(j) => j.kind == JointKind::Convex,
                 None => false,

@@ -66,6 +66,33 @@ pub(crate) fn polygon_star(
     with_round_holes(Profile::new(sides, None).ok()?, holes)
 }
 
+/// [`polygon_star`] with holes that are regular polygons: centre, radius, number of sides and
+/// turn (a share of a side's angle) each.
+pub(crate) fn polygon_star_with_polygon_holes(
+    radii: &[f64],
+    wobble: &[f64],
+    holes: &[([f64; 2], f64, usize, f64)],
+) -> Option<Region> {
+    let outer = polygon_star(radii, wobble, &[])?.outer().clone();
+    let mut kept = Vec::new();
+    for &(c, r, n, turn) in holes {
+        let corner = |i: usize| {
+            let angle = std::f64::consts::TAU * (turn - (i % n) as f64) / n as f64;
+            (V2::new(c[0], c[1]) + V2::polar(angle) * r).arr()
+        };
+        // (Clockwise: a hole runs against the outer boundary.)
+        let sides = (0..n)
+            .map(|i| Segment::line(corner(i), corner(i + 1)).ok())
+            .collect::<Option<Vec<_>>>()?;
+        let mut trial = kept.clone();
+        trial.push(Profile::new(sides, None).ok()?);
+        if Region::new(outer.clone(), trial.clone()).is_ok() {
+            kept = trial;
+        }
+    }
+    Region::new(outer, kept).ok()
+}
+
 /// `outer` with round holes of the given centres and radii, those the region accepts.
 fn with_round_holes(outer: Profile, holes: &[([f64; 2], f64)]) -> Option<Region> {
     let mut kept = Vec::new();

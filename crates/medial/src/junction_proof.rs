@@ -1,0 +1,213 @@
+//! A junction of three sites whose distances have closed forms (lines and points), proven by
+//! Krawczyk's test: a box about the point found holds exactly one point equidistant from the
+//! three.
+//!
+//! With `F(x) = (dA − dB, dA − dC)`, `x̃` the point found, `Y` an approximate inverse of the
+//! Jacobian `J(x̃)` and `X` the box of half-width `h` about `x̃`, Krawczyk's operator
+//! `K(X) = x̃ − Y F(x̃) + (I − Y J(X)) (X − x̃)` lies inside `X` when
+//! `‖Y F(x̃)‖ + ‖I − Y J(X)‖ h < h` (maximum norms), and then `X` holds one zero of `F`.
+//! Over `X` a line's gradient is constant and a point's (a unit vector) turns by at most
+//! `√2 h / (r − √2 h)` at distance `r`: `J(X)` is `J(x̃)` within those bounds per row. Every
+//! quantity is bounded with its rounding.
+//!
+//! The winding test of [`crate::certificate`] bounds distances by disks and the map by a
+//! Lipschitz constant, which cannot part the two components of a junction whose equations
+//! are nearly parallel (a reflex corner 1e-6 of the size off a far side's line): the
+//! derivatives this test uses can.
+
+use curve::V2;
+
+/// Units of rounding of the distance itself a distance in closed form carries (a generous
+/// bound: the difference of the point and the site rounds by half a unit of itself, the
+/// line's unit normal turns by a few, the dot product or the norm adds a few). Relative to
+/// the distance, not to the coordinates: far from the origin as near it.
+const DISTANCE_ULPS: f64 = 16.0;
+
+/// Units of rounding allowed on each entry of the products of 2 × 2 matrices computed here
+/// (relative to the products of the magnitudes).
+const PRODUCT_ULPS: f64 = 8.0;
+
+/// A site with a distance in closed form.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum ClosedSite {
+    /// A line through `start` with unit normal `inward`: the signed distance.
+    Line { start: V2, inward: V2 },
+    /// A point.
+    Point(V2),
+}
+
+impl ClosedSite {
+    /// The distance from `x`, a bound on its rounding, its gradient, and how far the
+    /// gradient turns over the box of half-width `h` about `x` (`None` where the box may
+    /// hold the point).
+    fn at(&self, x: V2, h: f64) -> Option<(f64, f64, V2, f64)> {
+        match *self {
+            ClosedSite::Line { start, inward } => {
+                let error = DISTANCE_ULPS * f64::EPSILON * (x - start).norm();
+                Some((inward.dot(x - start), error, inward, 0.0))
+            }
+            ClosedSite::Point(p) => {
+                let d = x - p;
+                let r = d.norm();
+                let error = DISTANCE_ULPS * f64::EPSILON * r;
+                let reach = std::f64::consts::SQRT_2 * h;
+                (r > 2.0 * reach).then(|| (r, error, d * (1.0 / r), reach / (r - reach)))
+            }
+        }
+    }
+}
+
+/// Whether the box of half-width `h` about `x` holds exactly one point equidistant from the
+/// three sites (by Krawczyk's test; `false` where the test cannot tell).
+pub(crate) fn proven_within(sites: [ClosedSite; 3], x: V2, h: f64) -> bool {
+    let Some([a, b, c]) = sites
+        .iter()
+        .map(|s| s.at(x, h))
+        .collect::<Option<Vec<_>>>()
+        .and_then(|v| <[_; 3]>::try_from(v).ok())
+    else {
+        return false;
+    };
+    // F(x̃) with its bounds, J(x̃), and how far J's rows may turn over the box (their
+    // rounding too: a unit vector's components are within a few units).
+    let f = [a.0 - b.0, a.0 - c.0];
+    let f_error = [a.1 + b.1 + ulps(f[0]), a.1 + c.1 + ulps(f[1])];
+    let j = [a.2 - b.2, a.2 - c.2];
+    let gradient_rounding = 8.0 * f64::EPSILON;
+    let j_spread = [a.3 + b.3 + gradient_rounding, a.3 + c.3 + gradient_rounding];
+    let det = j[0].cross(j[1]);
+    if det == 0.0 || !det.is_finite() {
+        return false;
+    }
+    // Y = J⁻¹ (rows), as computed: the test holds for any Y.
+    let y = [
+        V2::new(j[1].y, -j[0].y) * (1.0 / det),
+        V2::new(-j[1].x, j[0].x) * (1.0 / det),
+    ];
+    // ‖Y F(x̃)‖ with F's bounds.
+    let newton = (0..2)
+        .map(|i| {
+            y[i].x.abs() * (f[0].abs() + f_error[0]) + y[i].y.abs() * (f[1].abs() + f_error[1])
+        })
+        .fold(0.0, f64::max);
+    // ‖I − Y J(X)‖ ≤ ‖I − Y J(x̃)‖ + ‖|Y| spread‖, with the products' rounding.
+    let contraction = (0..2)
+        .map(|i| {
+            let row = [
+                y[i].x * j[0].x + y[i].y * j[1].x,
+                y[i].x * j[0].y + y[i].y * j[1].y,
+            ];
+            let magnitude = y[i].x.abs() * (j[0].x.abs() + j[0].y.abs())
+                + y[i].y.abs() * (j[1].x.abs() + j[1].y.abs());
+            let identity = [f64::from(u8::from(i == 0)), f64::from(u8::from(i == 1))];
+            let residual = (identity[0] - row[0]).abs() + (identity[1] - row[1]).abs();
+            // (A row of J turning by s moves each entry by at most s.)
+            let spread = 2.0 * (y[i].x.abs() * j_spread[0] + y[i].y.abs() * j_spread[1]);
+            residual + spread + PRODUCT_ULPS * f64::EPSILON * (magnitude + 1.0)
+        })
+        .fold(0.0, f64::max);
+    let slack = 1.0 - PRODUCT_ULPS * f64::EPSILON;
+    newton.is_finite() && newton + contraction * h < h * slack
+}
+
+/// A few units of rounding of `v`.
+fn ulps(v: f64) -> f64 {
+    4.0 * f64::EPSILON * v.abs()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bench_shapes::rng;
+
+    /// The point equidistant from three sites, by bisection-free closed forms: the incircle
+    /// of a triangle (three lines), checked against the test with a box that holds it and
+    /// one beside it that does not.
+    #[test]
+    fn proves_the_incentre_and_refuses_a_box_beside_it() {
+        let mut rnd = rng(7);
+        for _ in 0..500 {
+            let p: Vec<V2> = (0..3)
+                .map(|_| V2::new(rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0))
+                .collect();
+            let area = (p[1] - p[0]).cross(p[2] - p[0]);
+            if area.abs() < 1e-3 {
+                continue;
+            }
+            let side = |i: usize| {
+                let (s, e) = (p[i], p[(i + 1) % 3]);
+                let along = (e - s).unit();
+                ClosedSite::Line {
+                    start: s,
+                    inward: along.perp() * area.signum(),
+                }
+            };
+            let lengths: Vec<f64> = (0..3)
+                .map(|i| (p[(i + 1) % 3] - p[(i + 2) % 3]).norm())
+                .collect();
+            let total: f64 = lengths.iter().sum();
+            let incentre =
+                (p[0] * lengths[0] + p[1] * lengths[1] + p[2] * lengths[2]) * (1.0 / total);
+            let sites = [side(0), side(1), side(2)];
+            assert!(proven_within(sites, incentre, 1e-9));
+            assert!(!proven_within(sites, incentre + V2::new(3e-9, 0.0), 1e-9));
+        }
+    }
+
+    /// Two points and a line: the centre of the circle through the points tangent to the
+    /// line, found by Newton's method on the closed forms; the box about it is proven, one
+    /// moved by three half-widths is not.
+    #[test]
+    fn proves_a_point_point_line_junction() {
+        let mut rnd = rng(8);
+        let mut proven = 0;
+        for _ in 0..500 {
+            let (p, q) = (V2::new(rnd(), 1.0 + rnd()), V2::new(-rnd(), 1.0 + rnd()));
+            let line = ClosedSite::Line {
+                start: V2::new(0.0, 0.0),
+                inward: V2::new(0.0, 1.0),
+            };
+            // On the bisector of p and q: x = m + t n; the distance to the line (y) equals
+            // |x − p|: solve for t by Newton's method.
+            let (m, n) = ((p + q) * 0.5, (q - p).perp().unit());
+            let g = |t: f64| {
+                let x = m + n * t;
+                (x - p).norm() - x.y
+            };
+            let mut t = 0.0;
+            for _ in 0..60 {
+                let d = (g(t + 1e-7) - g(t - 1e-7)) / 2e-7;
+                t -= g(t) / d;
+            }
+            let x = m + n * t;
+            if g(t).abs() > 1e-13 || x.y <= 0.0 {
+                continue;
+            }
+            let sites = [line, ClosedSite::Point(p), ClosedSite::Point(q)];
+            assert!(proven_within(sites, x, 1e-9), "{x:?}");
+            assert!(!proven_within(sites, x + n * 3e-9, 1e-9));
+            proven += 1;
+        }
+        assert!(proven > 400, "{proven}");
+    }
+
+    /// A junction of a point 1e-6 off one of two parallel lines, its disk touching both
+    /// lines: the point's gradient nearly the line's.
+    #[test]
+    fn proves_a_junction_beside_a_point_near_a_line() {
+        let sites = [
+            ClosedSite::Line {
+                start: V2::new(0.0, 0.0),
+                inward: V2::new(0.0, 1.0),
+            },
+            ClosedSite::Point(V2::new(0.0, 1e-6)),
+            ClosedSite::Line {
+                start: V2::new(0.0, 2.0),
+                inward: V2::new(0.0, -1.0),
+            },
+        ];
+        // Equidistant: y = 1 (the lines), |x − (0, 1e-6)| = 1.
+        let x = V2::new((1.0f64 - (1.0 - 1e-6) * (1.0 - 1e-6)).sqrt(), 1.0);
+        assert!(proven_within(sites, x, 1e-9));
+    }
+}

@@ -24,7 +24,7 @@ use crate::seed::{cell_site, chord_diagram, on_side, Approximation, Owner, Site}
 use crate::sites::{Disk, Sites};
 use crate::stretches::{Stretch, Vertex};
 use boostvoronoi::prelude::{Diagram, EdgeIndex, VertexIndex};
-use curve::{SegmentKind, V2};
+use curve::{JointKind, SegmentKind, V2};
 use std::collections::{HashMap, HashSet};
 
 /// Most distance (a share of the size) between the vertices of a straight edge: the disks
@@ -57,6 +57,11 @@ const SEED_REACH: f64 = 1e-2;
 /// The equations of a vertex not used to solve it (a fourth site of nearly cocircular ones)
 /// must hold to this share of the size: within the reach in which ends are one node.
 const OTHER_EQUATIONS: f64 = 1e-6;
+
+/// The least sine of the angle between the gradients of two equations a vertex is solved
+/// on: below, they are one equation to rounding (two lines of one line, after snapping), and
+/// Newton's method would slide along their common zero.
+const MIN_SINE: f64 = 1e-9;
 
 /// Most edges round one vertex of the diagram (a bound on its walk round the vertex).
 const MAX_DEGREE: usize = 64;
@@ -217,6 +222,10 @@ impl Tracer<'_, '_> {
                 continue; // (one node: the edge of nearly cocircular sites that snapping made)
             }
             let (a, b) = (self.true_site(a)?, self.true_site(b)?);
+            // (Two lines across a smooth joint have one foot there: no axis between them.)
+            if self.smooth_joint_between(a, b).is_some() {
+                continue;
+            }
             // (A point site on the axis's side is a reflex corner.)
             for s in [a, b].into_iter().filter(|s| s.corner) {
                 let u = s.segment as f64;
@@ -299,6 +308,30 @@ impl Tracer<'_, '_> {
         })
     }
 
+    /// The joint of two lines of one boundary that meet there smoothly (collinear, to the
+    /// joints' classification), if `a` and `b` are such.
+    fn smooth_joint_between(&self, a: TrueSite, b: TrueSite) -> Option<V2> {
+        if a.corner || b.corner || a.boundary != b.boundary {
+            return None;
+        }
+        let profile = self.sites.boundaries[a.boundary];
+        // (A region's boundaries are closed.)
+        let n = profile.segments().len();
+        let after = if (a.segment + 1) % n == b.segment {
+            b
+        } else if (b.segment + 1) % n == a.segment {
+            a
+        } else {
+            return None;
+        };
+        let u = after.segment as f64;
+        let at = profile
+            .joints()
+            .binary_search_by(|j| j.u.total_cmp(&u))
+            .ok()?;
+        (profile.joints()[at].kind == JointKind::Smooth).then(|| self.line(after).start)
+    }
+
     fn line(&self, s: TrueSite) -> &LineSite {
         &self.lines[s.boundary][s.segment]
     }
@@ -356,7 +389,10 @@ impl Tracer<'_, '_> {
                 }
             }
             let (a, b) = (self.true_site(sa)?, self.true_site(sb)?);
-            let eq = if edge.is_primary() {
+            let eq = if let Some(end) = self.smooth_joint_between(a, b) {
+                // (Their distances are one function: the edge is the normal at the joint.)
+                Equation::FootAtEnd { line: a, end }
+            } else if edge.is_primary() {
                 Equation::Equal(a.min(b), a.max(b))
             } else {
                 let (line, corner) = if a.corner { (b, a) } else { (a, b) };
@@ -468,7 +504,7 @@ impl Tracer<'_, '_> {
         for (i, &a) in equations.iter().enumerate() {
             for &b in &equations[i + 1..] {
                 let det = unit(a).cross(unit(b)).abs();
-                if det > 0.0 && best.is_none_or(|(d, _, _)| det > d) {
+                if det > MIN_SINE && best.is_none_or(|(d, _, _)| det > d) {
                     best = Some((det, a, b));
                 }
             }

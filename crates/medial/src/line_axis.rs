@@ -610,7 +610,7 @@ impl Tracer<'_, '_> {
 mod tests {
     use crate::bench_shapes::{polygon, rng, star_polygon};
     use crate::candidates::PairSource;
-    use crate::test_shapes::polygon_star_with_polygon_holes;
+    use crate::test_shapes::{polygon_star_with_polygon_holes, stands_as_the_bounds};
     use crate::{axis_of, MedialAxis, MedialOptions};
     use curve::{Region, V2};
 
@@ -682,7 +682,7 @@ mod tests {
 
     /// A random polygon round a star of 5 to 15 points (sides bent at their middles: convex
     /// and reflex corners), with up to two polygonal holes.
-    fn random_polygon(rnd: &mut impl FnMut() -> f64) -> Option<Region> {
+    fn random_polygon(rnd: &mut dyn FnMut() -> f64) -> Option<Region> {
         let n = 5 + (10.0 * rnd()) as usize;
         let radii: Vec<f64> = (0..n).map(|_| 1.0 + 0.6 * rnd()).collect();
         let wobble: Vec<f64> = (0..n).map(|_| 0.4 * rnd() - 0.2).collect();
@@ -707,30 +707,12 @@ mod tests {
     /// certified but for a few.
     #[test]
     fn the_traced_axis_is_the_bounds_axis() {
-        let mut rnd = rng(3901);
-        let opts = MedialOptions::default();
-        let (mut tried, mut stood, mut certified) = (0, 0, 0);
-        for case in 0..1000 {
-            let Some(region) = random_polygon(&mut rnd) else {
-                continue;
-            };
-            tried += 1;
-            let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
-            let bounds = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
-            certified += usize::from(bounds.certified);
-            if stands {
-                stood += 1;
-                let near = 2.0 * opts.chord_tol * region.size();
-                if let Err(why) = same_graph(&traced, &bounds, near) {
-                    panic!("case {case}: the traced axis stands and differs: {why}");
-                }
-            }
-        }
-        assert!(tried > 900, "{tried}");
-        assert!(
-            stood * 100 >= certified * 95,
-            "the traced axis stood on {stood} of {certified} certified"
-        );
+        let make = |rnd: &mut dyn FnMut() -> f64, _| random_polygon(rnd);
+        let same = |traced: &MedialAxis, bounds: &MedialAxis, region: &Region| {
+            let near = 2.0 * MedialOptions::default().chord_tol * region.size();
+            same_graph(traced, bounds, near)
+        };
+        stands_as_the_bounds(&mut rng(3901), PairSource::SeedEdges, make, same);
     }
 
     /// A closed polygon through `points`, as a region.

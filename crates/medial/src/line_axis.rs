@@ -20,7 +20,7 @@ use crate::candidates::Candidate;
 use crate::certificate::JUNCTION_ROOM;
 use crate::corners::entered_across_corner;
 use crate::junction_proof::{proven_within, ClosedSite};
-use crate::seed::{cell_site, chord_diagram, on_side, Approximation, Owner, Site};
+use crate::seed::{chord_diagram, edge_sites, on_side, Approximation, Owner, Site};
 use crate::sites::{Disk, Sites};
 use crate::stretches::{Stretch, Vertex};
 use boostvoronoi::prelude::{Diagram, EdgeIndex, VertexIndex};
@@ -202,9 +202,7 @@ impl Tracer<'_, '_> {
             if twin.usize() < id.usize() || !edge.is_primary() {
                 continue;
             }
-            let a = cell_site(&self.approx, &self.diagram, edge.cell().ok()?.usize())?;
-            let b_cell = self.diagram.edge(twin).ok()?.cell().ok()?.usize();
-            let b = cell_site(&self.approx, &self.diagram, b_cell)?;
+            let [a, b] = edge_sites(&self.approx, &self.diagram, id)?;
             let ends = [edge.vertex0(), self.diagram.edge_get_vertex1(id).ok()?];
             let grid = ends.map(|v| {
                 v.and_then(|v| self.diagram.vertex(v).ok())
@@ -380,9 +378,7 @@ impl Tracer<'_, '_> {
         let mut corners: Vec<(usize, TrueSite)> = Vec::new();
         for e in self.diagram.edge_rot_next_iterator(from).take(MAX_DEGREE) {
             let edge = self.diagram.edge(e).ok()?;
-            let twin = self.diagram.edge(edge.twin().ok()?).ok()?;
-            let sa = cell_site(&self.approx, &self.diagram, edge.cell().ok()?.usize())?;
-            let sb = cell_site(&self.approx, &self.diagram, twin.cell().ok()?.usize())?;
+            let [sa, sb] = edge_sites(&self.approx, &self.diagram, e)?;
             for s in [sa, sb] {
                 if let Site::Point(p) = s {
                     corners.push((p, self.true_site(s)?));

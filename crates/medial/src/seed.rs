@@ -23,7 +23,7 @@
 //! refused by the coverage where it misleads.
 
 use crate::pairs::{Neighbours, SegmentId};
-use boostvoronoi::prelude::{Builder, Diagram, Line, SourceCategory};
+use boostvoronoi::prelude::{Builder, Diagram, EdgeIndex, Line, SourceCategory};
 use curve::{Profile, SegmentKind, V2};
 use std::collections::HashSet;
 use std::f64::consts::PI;
@@ -274,7 +274,6 @@ fn pairs_on_side(
     diagram: &Diagram,
     inside_left: &[f64],
 ) -> Option<HashSet<(SegmentId, SegmentId)>> {
-    let site = |cell: usize| cell_site(approx, diagram, cell);
     let mut pairs = HashSet::new();
     for edge in diagram.edges() {
         let id = edge.id();
@@ -283,8 +282,7 @@ fn pairs_on_side(
         if twin.usize() < id.usize() || !edge.is_primary() {
             continue;
         }
-        let a = site(edge.cell().ok()?.usize())?;
-        let b = site(diagram.edge(twin).ok()?.cell().ok()?.usize())?;
+        let [a, b] = edge_sites(approx, diagram, id)?;
         let ends = [edge.vertex0(), diagram.edge_get_vertex1(id).ok()?].map(|v| {
             v.and_then(|v| diagram.vertex(v).ok())
                 .map(|v| [v.x(), v.y()])
@@ -303,9 +301,23 @@ fn pairs_on_side(
     Some(pairs)
 }
 
+/// The sites on either side of edge `id` of the diagram: its cell's, then its twin's.
+pub(crate) fn edge_sites(
+    approx: &Approximation,
+    diagram: &Diagram,
+    id: EdgeIndex,
+) -> Option<[Site; 2]> {
+    let edge = diagram.edge(id).ok()?;
+    let twin = diagram.edge(edge.twin().ok()?).ok()?;
+    Some([
+        cell_site(approx, diagram, edge.cell().ok()?.usize())?,
+        cell_site(approx, diagram, twin.cell().ok()?.usize())?,
+    ])
+}
+
 /// The site of cell `cell` of the diagram: a chord (by index) or a point of the
 /// approximation.
-pub(crate) fn cell_site(approx: &Approximation, diagram: &Diagram, cell: usize) -> Option<Site> {
+fn cell_site(approx: &Approximation, diagram: &Diagram, cell: usize) -> Option<Site> {
     let c = diagram.cells().get(cell)?;
     let chord = c.source_index().usize();
     let end = *approx.next.get(chord)?;

@@ -215,14 +215,15 @@ impl Tracer<'_, '_> {
             let [Some(v0), Some(v1)] = ends else {
                 return None;
             };
+            let (a, b) = (self.true_site(a)?, self.true_site(b)?);
+            // (Two lines across a smooth joint have one foot there: no axis between them, and
+            // no ends to solve for it.)
+            if self.smooth_joint_between(a, b).is_some() {
+                continue;
+            }
             let (p, q) = (self.solve(v0, id)?, self.solve(v1, twin)?);
             if (q.xy - p.xy).norm() <= merge {
                 continue; // (one node: the edge of nearly cocircular sites that snapping made)
-            }
-            let (a, b) = (self.true_site(a)?, self.true_site(b)?);
-            // (Two lines across a smooth joint have one foot there: no axis between them.)
-            if self.smooth_joint_between(a, b).is_some() {
-                continue;
             }
             // (A point site on the axis's side is a reflex corner.)
             for s in [a, b].into_iter().filter(|s| s.corner) {

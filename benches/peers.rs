@@ -23,7 +23,7 @@ use std::time::Duration;
 mod common;
 #[path = "common/read.rs"]
 mod read;
-use common::{polygon, star_polygon, POCKET};
+use common::{dense_outline, polygon, star_polygon, POCKET};
 use read::region_of;
 
 /// The grid boostvoronoi's integer input is snapped to: the star spans [-1.1, 1.1].
@@ -110,6 +110,35 @@ fn peers(c: &mut Criterion) {
             let axis = medial_axis(&region, &opts).unwrap();
             eprintln!(
                 "star {n}: {} nodes, {} edges, certified {} {}",
+                axis.nodes.len(),
+                axis.edges.len(),
+                axis.certified,
+                axis.reason.as_deref().unwrap_or("")
+            );
+            group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
+                b.iter(|| medial_axis(black_box(r), &opts).unwrap())
+            });
+        }
+    }
+    group.finish();
+
+    // A CAD export: a plate of arcs as chords and sides as collinear runs (as many lines).
+    let mut group = c.benchmark_group("dense_outline_axis");
+    for n in [1500, 5000] {
+        let vertices = dense_outline(n);
+        // (boostvoronoi's grid: the plate spans [0, 100].)
+        let scaled: Vec<[f64; 2]> = vertices
+            .iter()
+            .map(|p| [p[0] / 50.0 - 1.0, p[1] / 50.0 - 1.0])
+            .collect();
+        group.bench_with_input(BenchmarkId::new("boostvoronoi", n), &scaled, |b, v| {
+            b.iter(|| boost_diagram(black_box(v)))
+        });
+        if n <= max.max(5000) {
+            let region = Region::new(polygon(&vertices), Vec::new()).unwrap();
+            let axis = medial_axis(&region, &opts).unwrap();
+            eprintln!(
+                "dense outline {n}: {} nodes, {} edges, certified {} {}",
                 axis.nodes.len(),
                 axis.edges.len(),
                 axis.certified,

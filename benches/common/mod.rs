@@ -73,3 +73,99 @@ pub(crate) const POCKET: &str = r#"{"kind":"region",
   {"kind":"line","from":[0,5],"to":[0,1]},
   {"kind":"arc","center":[1,1],"r":1,"start":3.141592653589793,"end":4.71238898038469}]},
  "holes":[{"kind":"circle","center":[6.5,3],"r":1}]}"#;
+
+/// The vertices (counter-clockwise) of a CAD-style dense outline of about `n` lines: a
+/// 100 × 60 plate with corners rounded at radius 10 and a 20 × 15 notch in its top side whose
+/// two inner (reflex) corners are rounded at radius 3, every arc exported as chords and every
+/// straight side as a run of collinear pieces, as DXF polylines come out of CAD programs.
+pub(crate) fn dense_outline(n: usize) -> Vec<[f64; 2]> {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    enum Piece {
+        Line([f64; 2], [f64; 2]),
+        Arc {
+            centre: [f64; 2],
+            r: f64,
+            from: f64,
+            to: f64,
+        },
+    }
+    let pieces = [
+        Piece::Line([10.0, 0.0], [90.0, 0.0]),
+        Piece::Arc {
+            centre: [90.0, 10.0],
+            r: 10.0,
+            from: -FRAC_PI_2,
+            to: 0.0,
+        },
+        Piece::Line([100.0, 10.0], [100.0, 50.0]),
+        Piece::Arc {
+            centre: [90.0, 50.0],
+            r: 10.0,
+            from: 0.0,
+            to: FRAC_PI_2,
+        },
+        Piece::Line([90.0, 60.0], [60.0, 60.0]),
+        Piece::Line([60.0, 60.0], [60.0, 48.0]),
+        Piece::Arc {
+            centre: [57.0, 48.0],
+            r: 3.0,
+            from: 0.0,
+            to: -FRAC_PI_2,
+        },
+        Piece::Line([57.0, 45.0], [43.0, 45.0]),
+        Piece::Arc {
+            centre: [43.0, 48.0],
+            r: 3.0,
+            from: -FRAC_PI_2,
+            to: -PI,
+        },
+        Piece::Line([40.0, 48.0], [40.0, 60.0]),
+        Piece::Line([40.0, 60.0], [10.0, 60.0]),
+        Piece::Arc {
+            centre: [10.0, 50.0],
+            r: 10.0,
+            from: FRAC_PI_2,
+            to: PI,
+        },
+        Piece::Line([0.0, 50.0], [0.0, 10.0]),
+        Piece::Arc {
+            centre: [10.0, 10.0],
+            r: 10.0,
+            from: PI,
+            to: 1.5 * PI,
+        },
+    ];
+    // A quarter of the pieces to the arcs (6 of them), the rest to the sides by length.
+    let per_arc = (n / 24).max(2);
+    let straight: f64 = pieces
+        .iter()
+        .map(|p| match p {
+            Piece::Line(a, b) => (V2::from_arr(*b) - V2::from_arr(*a)).norm(),
+            Piece::Arc { .. } => 0.0,
+        })
+        .sum();
+    let per_length = (n - 6 * per_arc) as f64 / straight;
+    let mut out = Vec::with_capacity(n + 16);
+    for p in &pieces {
+        match *p {
+            Piece::Line(a, b) => {
+                let (a, b) = (V2::from_arr(a), V2::from_arr(b));
+                let k = (((b - a).norm() * per_length).round() as usize).max(1);
+                out.extend((0..k).map(|i| (a + (b - a) * (i as f64 / k as f64)).arr()));
+            }
+            Piece::Arc {
+                centre,
+                r,
+                from,
+                to,
+            } => {
+                let c = V2::from_arr(centre);
+                out.extend((0..per_arc).map(|i| {
+                    let t = from + (to - from) * (i as f64 / per_arc as f64);
+                    (c + V2::polar(t) * r).arr()
+                }));
+            }
+        }
+    }
+    out
+}

@@ -269,17 +269,24 @@ pub(crate) fn convex_corner_between(sites: &Sites<'_>, k: usize, a: f64, b: f64)
     let n = boundary.domain().1;
     let (lo, d) = short_way(boundary.is_closed(), n, a, b);
     let side = sites.inside_left(k);
-    boundary.joints().iter().any(|j| {
-        let from_lo = if boundary.is_closed() {
-            (j.u - lo).rem_euclid(n)
-        } else {
-            j.u - lo
-        };
-        j.kind != JointKind::Smooth
-            && j.turn * side > 0.0
-            && from_lo > AT_CORNER * n
-            && from_lo < d - AT_CORNER * n
-    })
+    let (from, to) = (lo + AT_CORNER * n, lo + d - AT_CORNER * n);
+    // (The joints are in parameter order: those strictly inside, found by bisection, on
+    // either side of the seam where the stretch wraps round a closed boundary.)
+    let joints = boundary.joints();
+    let within = |from: f64, to: f64| {
+        let first = joints.partition_point(|j| j.u <= from);
+        joints[first..]
+            .iter()
+            .take_while(|j| j.u < to)
+            .any(|j| j.kind != JointKind::Smooth && j.turn * side > 0.0)
+    };
+    if from >= to {
+        false
+    } else if boundary.is_closed() && to > n {
+        within(from, n) || within(f64::NEG_INFINITY, to - n)
+    } else {
+        within(from, to)
+    }
 }
 
 /// The stretch between profile parameters `a` and `b` the short way round (on a closed

@@ -1,6 +1,7 @@
 //! Adversarial inputs for the topology seed (issue 39): nearly cocircular sites, parallel
 //! lines 1e-9 apart, arcs the seed takes in very few chords, tiny features beside huge ones;
-//! and a seeded shape moved far, scaled, rotated and reversed.
+//! a seeded shape moved far, scaled, rotated and reversed; and dense CAD outlines (arcs as
+//! chords, sides as runs of collinear pieces), exact and with rounded coordinates.
 //!
 //! Each is right and certified, or honestly uncertified (with a reason): judged by the
 //! independent oracle of `drawn_shapes.rs` (dense boundary distances, the sampled Voronoi
@@ -8,6 +9,8 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
+#[path = "../../../benches/common/mod.rs"]
+mod bench_shapes;
 #[path = "../../zeroset/tests/common/boundary_oracle.rs"]
 mod boundary_oracle;
 #[path = "common/graph.rs"]
@@ -263,4 +266,56 @@ fn a_seeded_star_under_maps() {
             assert!(found, "map {k}: no node at {at:?} for {n:?}");
         }
     }
+}
+
+/// The benchmarks' CAD outline of `n` lines, turned by the rotation (c, s) about the origin
+/// and its coordinates rounded to `grid` (none: as computed).
+fn dense(n: usize, (c, s): (f64, f64), grid: Option<f64>) -> Region {
+    let points: Vec<[f64; 2]> = bench_shapes::dense_outline(n)
+        .into_iter()
+        .map(|p| {
+            let q = [c * p[0] - s * p[1], s * p[0] + c * p[1]];
+            grid.map_or(q, |g| q.map(|x| (x / g).round() * g))
+        })
+        .collect();
+    Region::new(polygon(&points), vec![]).unwrap()
+}
+
+/// Dense CAD outlines: a plate with rounded corners and a notch with rounded reflex corners,
+/// its arcs as chords and its sides as runs of collinear pieces. Right by the oracle and
+/// certified at 400 lines; at 1,500 certified and the same axis turned and reversed; with
+/// coordinates rounded to 1e-3 (every joint of a run a corner, each convex one a branch of
+/// the axis) certified too.
+#[test]
+fn dense_cad_outlines() {
+    let a = right_or_honest("dense 400", &dense(400, (1.0, 0.0), None));
+    assert!(a.certified, "{:?}", a.reason);
+    let base = axis(&dense(1500, (1.0, 0.0), None));
+    assert!(base.certified, "{:?}", base.reason);
+    let (c, s) = (0.6, 0.8);
+    let turned = axis(&dense(1500, (c, s), None));
+    let mut reversed_points = bench_shapes::dense_outline(1500);
+    reversed_points.reverse();
+    let reversed = axis(&Region::new(polygon(&reversed_points), vec![]).unwrap());
+    for (name, a, map) in [
+        ("turned", turned, Affine([c, s, -s, c, 0.0, 0.0])),
+        ("reversed", reversed, Affine::IDENTITY),
+    ] {
+        assert!(a.certified, "{name}: {:?}", a.reason);
+        assert_eq!(a.nodes.len(), base.nodes.len(), "{name}");
+        assert_eq!(a.edges.len(), base.edges.len(), "{name}");
+        for n in &base.nodes {
+            let at = map.apply(n.xy);
+            let found = a.nodes.iter().any(|m| {
+                m.kind == n.kind
+                    && (V2::from_arr(m.xy) - V2::from_arr(at)).norm() <= 1e-9 * 100.0
+                    && (m.radius - n.radius).abs() <= 1e-9 * 100.0
+            });
+            assert!(found, "{name}: no node at {at:?} for {n:?}");
+        }
+    }
+    let rounded = axis(&dense(1500, (c, s), Some(1e-3)));
+    assert!(rounded.certified, "{:?}", rounded.reason);
+    // (A branch at most convex joints of the runs: far more edges than the exact plate's.)
+    assert!(rounded.edges.len() > 3 * base.edges.len());
 }

@@ -37,6 +37,7 @@ mod on_circle;
 mod own_param;
 mod param;
 mod plane;
+mod polygon_clearance;
 mod profile;
 mod region;
 mod segment;

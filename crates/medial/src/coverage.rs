@@ -112,6 +112,12 @@ impl Line {
         }
     }
 
+    /// Whether a convex corner lies strictly between `lo` and `hi` past position `start` of
+    /// the line, round it ([`marks_within`]).
+    fn convex_within(&self, start: f64, lo: f64, hi: f64) -> bool {
+        marks_within(&self.convex, self.length, start, lo, hi)
+    }
+
     /// Where the foot at profile parameter `u`, seen from the axis point `x`, lies on the line.
     fn place(&self, u: f64, foot: V2, x: V2) -> f64 {
         let n = self.n as f64;
@@ -176,11 +182,7 @@ pub(crate) fn feet_cover(sites: &Sites<'_>, axis: &MedialAxis) -> Result<(), &'s
         }
         for t in &mut s {
             t.start = t.start.rem_euclid(line.length);
-            let inside = |c: f64| {
-                let from_start = (c - t.start).rem_euclid(line.length);
-                from_start > BACK_STEP && from_start < t.length - BACK_STEP
-            };
-            if line.convex.iter().any(|&c| inside(c)) {
+            if line.convex_within(t.start, BACK_STEP, t.length - BACK_STEP) {
                 return Err(
                     "the feet of a side of an edge pass a convex corner, whose leaf is missing",
                 );
@@ -269,24 +271,52 @@ pub(crate) fn convex_corner_between(sites: &Sites<'_>, k: usize, a: f64, b: f64)
     let n = boundary.domain().1;
     let (lo, d) = short_way(boundary.is_closed(), n, a, b);
     let side = sites.inside_left(k);
-    let (from, to) = (lo + AT_CORNER * n, lo + d - AT_CORNER * n);
-    // (The joints are in parameter order: those strictly inside, found by bisection, on
-    // either side of the seam where the stretch wraps round a closed boundary.)
-    let joints = boundary.joints();
-    let within = |from: f64, to: f64| {
-        let first = joints.partition_point(|j| j.u <= from);
-        joints[first..]
-            .iter()
-            .take_while(|j| j.u < to)
-            .any(|j| j.kind != JointKind::Smooth && j.turn * side > 0.0)
-    };
-    if from >= to {
-        false
-    } else if boundary.is_closed() && to > n {
-        within(from, n) || within(f64::NEG_INFINITY, to - n)
+    let length = if boundary.is_closed() {
+        n
     } else {
-        within(from, to)
+        f64::INFINITY
+    };
+    any_between(
+        boundary.joints(),
+        |j| j.u,
+        |j| j.kind != JointKind::Smooth && j.turn * side > 0.0,
+        length,
+        lo,
+        AT_CORNER * n,
+        d - AT_CORNER * n,
+    )
+}
+
+/// Whether one of `marks` (increasing, in `[0, length)`) lies strictly between `lo` and
+/// `hi` past `start` round a loop of `length` (`0 <= hi - lo` below the length).
+fn marks_within(marks: &[f64], length: f64, start: f64, lo: f64, hi: f64) -> bool {
+    any_between(marks, |&c| c, |_| true, length, start, lo, hi)
+}
+
+/// Whether an item that `hit`s, of `items` in increasing order of `at` (in `[0, length)`),
+/// lies strictly between `lo` and `hi` past `start` round a loop of `length` (infinite: an
+/// open line), `0 <= hi - lo` below the length: found by bisection, on either side of the
+/// seam.
+fn any_between<T>(
+    items: &[T],
+    at: impl Fn(&T) -> f64,
+    hit: impl Fn(&T) -> bool,
+    length: f64,
+    start: f64,
+    lo: f64,
+    hi: f64,
+) -> bool {
+    let mut start = start.rem_euclid(length);
+    if start >= length {
+        start = 0.0; // (a shade below zero rounds to the length itself)
     }
+    let (from, to) = (start + lo, start + hi);
+    let any_in = |a: f64, b: f64| {
+        let first = items.partition_point(|c| at(c) <= a);
+        items[first..].iter().take_while(|c| at(c) < b).any(&hit)
+    };
+    from < to
+        && (any_in(from, to.min(length)) || (to > length && any_in(from - length, to - length)))
 }
 
 /// The stretch between profile parameters `a` and `b` the short way round (on a closed
@@ -351,10 +381,7 @@ fn short_between(sites: &Sites<'_>, line: &Line, a: &Stretch, b: &Stretch, gap: 
 /// `b` (either way round): the end of a leaf, which two ends meeting there would hide.
 fn convex_between(line: &Line, a: &Stretch, b: &Stretch) -> bool {
     let (lo, hi) = between(line, a, b);
-    line.convex.iter().any(|&c| {
-        let c = lo + (c - lo).rem_euclid(line.length);
-        c > lo && c < hi
-    })
+    line.convex_within(lo, 0.0, hi - lo)
 }
 
 /// Whether two ends of stretches of feet are one point of the line, to `gap`: their feet
@@ -393,6 +420,37 @@ fn arcs_at_nodes(sites: &Sites<'_>, axis: &MedialAxis, lines: &[Line], out: &mut
 
 #[cfg(test)]
 mod tests {
+    /// The bisection on the marks agrees with a scan of them all, round the seam and with
+    /// starts a shade below zero (which round to the length).
+    #[test]
+    fn marks_within_is_a_scan() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::default();
+        let strategy = (
+            prop::collection::vec(0.0f64..10.0, 0..8),
+            -20.0f64..20.0,
+            0.0f64..5.0,
+            0.0f64..5.0,
+            prop::bool::ANY,
+        );
+        runner
+            .run(&strategy, |(mut marks, start, lo, width, tiny)| {
+                marks.sort_by(f64::total_cmp);
+                marks.push(0.0);
+                marks.sort_by(f64::total_cmp);
+                let length = 10.0;
+                let start = if tiny { -1e-17 } else { start };
+                let hi = lo + width.min(length - lo - 1e-9);
+                let scan = marks.iter().any(|&c| {
+                    let from_start = (c - start).rem_euclid(length) % length;
+                    from_start > lo && from_start < hi
+                });
+                prop_assert_eq!(super::marks_within(&marks, length, start, lo, hi), scan);
+                Ok(())
+            })
+            .unwrap();
+    }
+
     use super::*;
     use crate::candidates::PairSource;
     use crate::test_shapes::polygon_star;

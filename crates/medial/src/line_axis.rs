@@ -21,7 +21,7 @@ use crate::certificate::JUNCTION_ROOM;
 use crate::corners::entered_across_corner;
 use crate::junction_proof::{proven_within, ClosedSite};
 use crate::seed::{chord_diagram, edge_sites, on_side, Approximation, Owner, Site};
-use crate::sites::{Disk, Sites};
+use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use crate::stretches::{Stretch, Vertex};
 use boostvoronoi::prelude::{Diagram, EdgeIndex, VertexIndex};
 use curve::{JointKind, SegmentKind, V2};
@@ -248,10 +248,12 @@ impl Tracer<'_, '_> {
                 tr: vertices.iter().map(|v| v.tr).collect(),
                 xy: vertices.iter().map(|v| v.xy).collect(),
             };
-            // (The ends' disks were tested when they were solved.)
+            // (The ends' disks were tested when they were solved; those between, all at once
+            // where the edge is two lines' and the sweep of its disks is proven empty.)
             let last = vertices.len() - 1;
+            let swept = last > 1 && self.sweep_is_empty(sites, ends);
             for (k, v) in vertices.iter().enumerate() {
-                let tested = k == 0 || k == last;
+                let tested = k == 0 || k == last || swept;
                 if !(tested || self.empty(v))
                     || entered_across_corner(self.sites, &candidate, v).is_some()
                 {
@@ -283,6 +285,49 @@ impl Tracer<'_, '_> {
     /// [`entered_across_corner`]). A disk of radius nil (at a convex corner) holds nothing.
     fn empty(&self, v: &Vertex) -> bool {
         v.radius == 0.0 || self.sites.disk(v.xy, v.radius) == Disk::Empty
+    }
+
+    /// Whether the disks along the straight bisector of two lines between its ends (each
+    /// less the slack of the disk tests) are all empty, proven at once: their centres and
+    /// radii move linearly, so they sweep the convex hull of the end disks, which is the two
+    /// disks (tested when the ends were solved) and the quadrilateral between their points
+    /// of tangency with the lines. That quadrilateral, grown by half the slack towards the
+    /// lines (room for the rounding of its corners, still clear of the lines), is tested
+    /// against the boundary's lines by separating axes. `false` where not proven (the edge
+    /// of a corner, or a line near the quadrilateral): its disks are then tested one by one.
+    fn sweep_is_empty(&self, sites: [TrueSite; 2], ends: [Solved; 2]) -> bool {
+        if sites[0].corner || sites[1].corner {
+            return false;
+        }
+        let slack = EMPTY_SLACK * self.sites.size;
+        let [mut p, mut q] = ends;
+        if p.radius > q.radius {
+            std::mem::swap(&mut p, &mut q);
+        }
+        if q.radius <= slack {
+            return true; // (every disk less the slack is empty: none has a point)
+        }
+        // (From where the disks less the slack begin to hold points.)
+        if p.radius < slack {
+            let t = (slack - p.radius) / (q.radius - p.radius);
+            p = Solved {
+                xy: p.xy + (q.xy - p.xy) * t,
+                radius: slack,
+                proven: false,
+            };
+        }
+        let [na, nb] = sites.map(|s| self.line(s).inward);
+        let corner = |e: &Solved, n: V2| (e.xy - n * (e.radius - 0.5 * slack)).arr();
+        let quad = [
+            corner(&p, na),
+            corner(&q, na),
+            corner(&q, nb),
+            corner(&p, nb),
+        ];
+        self.sites
+            .boundaries
+            .iter()
+            .all(|b| b.misses_convex_polygon(&quad))
     }
 
     /// The true site of a site of the diagram.

@@ -18,7 +18,7 @@ fn main() -> ExitCode {
         Ok(args) => args,
         Err(e) => return usage_error(&e),
     };
-    let outcome = std::panic::catch_unwind(|| cli::run(args));
+    let outcome = std::panic::catch_unwind(|| cli::progress::watched(|| cli::run(args)));
     match outcome {
         Ok(Ok(())) => ExitCode::SUCCESS,
         Ok(Err(failure)) => {

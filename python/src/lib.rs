@@ -6,12 +6,16 @@
 mod curves;
 mod results;
 
+use curve::watch::Watch;
 use curvekit::commands::{self, CommandError};
 use curves::{PyCurve, PyPrepared};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
 use pyo3::prelude::*;
 use results::{PyAntipodal, PyBisector, PyInflections, PyMedialAxis, PyOffsets, PyTangents};
+use std::sync::mpsc;
+use std::sync::Arc;
+use std::time::Duration;
 
 create_exception!(
     curvekit,
@@ -45,17 +49,50 @@ fn as_keyword(message: &str) -> String {
     }
 }
 
-/// Runs `work` without the GIL (other Python threads go on meanwhile); a panic, a defect never
+/// How often a call that runs looks for a signal (Ctrl-C): a cancelled computation stops at
+/// its next unit of work, within 0.1 s of the signal in all.
+const SIGNAL_POLL: Duration = Duration::from_millis(20);
+
+/// Runs `work` without the GIL (other Python threads go on meanwhile) on a worker thread under
+/// a watch ([`curve::watch`]), while this thread looks for signals: on Ctrl-C the work is
+/// cancelled and the signal's exception (`KeyboardInterrupt`) raised. A panic, a defect never
 /// expected, becomes a `CurvekitError` instead of ending the interpreter's thread.
 pub(crate) fn detached<T: Send>(
     py: Python<'_>,
     work: impl FnOnce() -> Result<T, CommandError> + Send,
 ) -> PyResult<T> {
-    py.detach(|| {
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
-            .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
-    })
-    .map_err(to_py_err)
+    let internal = || Err(CommandError::Other("internal error".into()));
+    let watch = Arc::new(Watch::default());
+    let outcome = py.detach(|| {
+        std::thread::scope(|scope| {
+            let (send, receive) = mpsc::channel();
+            let worker = Arc::clone(&watch);
+            scope.spawn(move || {
+                let found = worker.run(|| {
+                    std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
+                        .unwrap_or_else(|_| internal())
+                });
+                let _ = send.send(found);
+            });
+            let mut interrupted = None;
+            loop {
+                match receive.recv_timeout(SIGNAL_POLL) {
+                    Ok(found) => break interrupted.map_or(Ok(found), Err),
+                    Err(mpsc::RecvTimeoutError::Disconnected) => {
+                        break interrupted.map_or(Ok(internal()), Err)
+                    }
+                    Err(mpsc::RecvTimeoutError::Timeout) if interrupted.is_none() => {
+                        if let Err(e) = Python::attach(|py| py.check_signals()) {
+                            watch.cancel();
+                            interrupted = Some(e);
+                        }
+                    }
+                    Err(mpsc::RecvTimeoutError::Timeout) => {}
+                }
+            }
+        })
+    });
+    outcome?.map_err(to_py_err)
 }
 
 /// A curve as the one-curve commands take it: prepared (warm) or not (prepared for this run).

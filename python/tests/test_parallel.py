@@ -112,3 +112,61 @@ def test_the_dask_example_gives_the_serial_answers():
     report = dask_antipodal.main(n=60, workers=2)
     assert report["curves"] == 60
     assert report["pairs"] > 0
+
+
+def slow_plate():
+    """A CAD plate of 1,500 lines whose coordinates are rounded to 1e-6 (every joint of its
+    sides a corner of ~1e-6 rad): its axis is sought from every pair the bounds keep, which
+    takes seconds."""
+    half = math.pi / 2
+    pieces = [
+        ("line", (10, 0), (90, 0)), ("arc", (90, 10), 10, -half, 0),
+        ("line", (100, 10), (100, 50)), ("arc", (90, 50), 10, 0, half),
+        ("line", (90, 60), (60, 60)), ("line", (60, 60), (60, 48)),
+        ("arc", (57, 48), 3, 0, -half), ("line", (57, 45), (43, 45)),
+        ("arc", (43, 48), 3, -half, -math.pi), ("line", (40, 48), (40, 60)),
+        ("line", (40, 60), (10, 60)), ("arc", (10, 50), 10, half, math.pi),
+        ("line", (0, 50), (0, 10)), ("arc", (10, 10), 10, math.pi, 3 * half),
+    ]
+    per_arc = 1500 // 24
+    straight = sum(math.dist(p[1], p[2]) for p in pieces if p[0] == "line")
+    per_length = (1500 - 6 * per_arc) / straight
+    points = []
+    for p in pieces:
+        if p[0] == "line":
+            (ax, ay), (bx, by) = p[1], p[2]
+            k = max(round(math.dist(p[1], p[2]) * per_length), 1)
+            points += [(ax + (bx - ax) * i / k, ay + (by - ay) * i / k) for i in range(k)]
+        else:
+            (cx, cy), r, a, b = p[1:]
+            points += [
+                (cx + r * math.cos(a + (b - a) * i / per_arc), cy + r * math.sin(a + (b - a) * i / per_arc))
+                for i in range(per_arc)
+            ]
+    c, s = math.cos(0.3), math.sin(0.3)
+    return [(round((c * x - s * y) * 1e6) / 1e6, round((s * x + c * y) * 1e6) / 1e6) for x, y in points]
+
+
+def test_ctrl_c_stops_a_long_medial_axis():
+    """Ctrl-C (SIGINT, as `_thread.interrupt_main` delivers it) during a call that takes
+    seconds raises KeyboardInterrupt soon after (the target is 0.1 s; a loaded test machine
+    is allowed more), and the next call runs as usual."""
+    import _thread
+
+    plate = curvekit.Polygon(slow_plate())
+    sent = []
+
+    def interrupt():
+        sent.append(time.perf_counter())
+        _thread.interrupt_main()
+
+    timer = threading.Timer(0.3, interrupt)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        curvekit.medial(plate)
+        time.sleep(30)  # (never reached with the fix; without it, the interrupt lands here)
+    late = time.perf_counter() - sent[0]
+    timer.join()
+    assert late < 1.0, late
+    square = curvekit.Polygon([[0, 0], [4, 0], [4, 3], [0, 3]])
+    assert curvekit.medial(square).certified

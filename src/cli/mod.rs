@@ -7,6 +7,7 @@ mod demo_medial;
 mod demo_profiles;
 mod medial;
 mod offset;
+pub(crate) mod progress;
 mod report;
 mod timing;
 

@@ -45,6 +45,7 @@ pub mod shapes;
 mod spans;
 mod spline;
 mod stretch;
+pub mod watch;
 
 pub use affine::Affine;
 pub use clearance::Clearance;

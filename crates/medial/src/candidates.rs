@@ -94,8 +94,23 @@ pub(crate) fn candidates(
         (None, PairSource::All) => crate::pairs::Neighbours::All,
         (None, _) => neighbours(&b, sites.size, root_box(sites)),
     };
+    // (The watch is looked at for every pair of pieces: a cancelled search keeps none
+    // more, and its caller answers "cancelled".)
+    let watch = curve::watch::current();
+    curve::watch::stage(match source {
+        PairSource::Seed => "medial axis: the seed's pairs",
+        _ => "medial axis: every pair the bounds keep",
+    });
     let bisect = |&[i, j]: &[usize; 2]| {
-        let keep = |s: usize, t: usize| near.keep((i, s), (j, t));
+        let keep = |s: usize, t: usize| match &watch {
+            Some(w) if w.is_cancelled() => false,
+            Some(w) => {
+                let kept = near.keep((i, s), (j, t));
+                w.advance(usize::from(kept));
+                kept
+            }
+            None => near.keep((i, s), (j, t)),
+        };
         // (Only the axis's side of each boundary: a point on the other side of a foot is
         // outside, where its disk meets the boundary at that foot.)
         let opts = BisectorOptions {

@@ -7,6 +7,9 @@ pub enum Error {
     /// the exact algebra refuses).
     #[error(transparent)]
     Bisector(#[from] zeroset::Error),
+    /// The computation was cancelled by its watcher ([`curve::watch`]).
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// Shorthand for results of this crate.

@@ -186,12 +186,21 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
         // cover the boundaries, and is built again from the pairs the bounds keep where not.)
         // (An error on a pair only the seed proposed is no answer either.)
         for source in [PairSource::SeedEdges, PairSource::Seed] {
-            if let Ok((axis, true)) = axis_of(region, opts, source) {
+            let found = axis_of(region, opts, source);
+            if curve::watch::cancelled() {
+                return Err(Error::Cancelled);
+            }
+            if let Ok((axis, true)) = found {
                 return Ok(axis);
             }
         }
     }
-    Ok(axis_of(region, opts, PairSource::Bounds)?.0)
+    let axis = axis_of(region, opts, PairSource::Bounds)?.0;
+    // (A cancelled search stopped early: what it found is no answer.)
+    if curve::watch::cancelled() {
+        return Err(Error::Cancelled);
+    }
+    Ok(axis)
 }
 
 /// An axis of nothing, uncertified (what a path that cannot be taken returns, with "does

@@ -195,7 +195,15 @@ impl Tracer<'_, '_> {
         let mut candidates = Vec::new();
         let mut stretches = Vec::new();
         let merge = MERGE * self.sites.size;
+        curve::watch::stage("medial axis: the seed's edges");
+        let watch = curve::watch::current();
         for k in 0..self.diagram.edges().len() {
+            if let Some(w) = &watch {
+                w.advance(1);
+                if w.is_cancelled() {
+                    return None; // (the caller answers "cancelled")
+                }
+            }
             let edge = &self.diagram.edges()[k];
             let id = edge.id();
             let twin = self.diagram.edge_get_twin(id).ok()?;

@@ -110,21 +110,24 @@ pub(crate) struct Stretch {
 /// The stretches of every candidate, in the candidates' order (on all cores with the
 /// `parallel` feature).
 pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> {
+    // (A cancelled watch trims no candidate more: the caller answers "cancelled".)
+    curve::watch::stage("medial axis: candidates trimmed to the axis");
+    let watch = curve::watch::current();
+    let trim = |(k, c): (usize, &Candidate)| match &watch {
+        Some(w) if w.is_cancelled() => Vec::new(),
+        Some(w) => {
+            w.advance(1);
+            stretches_of(sites, k, c)
+        }
+        None => stretches_of(sites, k, c),
+    };
     #[cfg(feature = "parallel")]
     let per_candidate: Vec<Vec<Stretch>> = {
         use rayon::prelude::*;
-        found
-            .par_iter()
-            .enumerate()
-            .map(|(k, c)| stretches_of(sites, k, c))
-            .collect()
+        found.par_iter().enumerate().map(trim).collect()
     };
     #[cfg(not(feature = "parallel"))]
-    let per_candidate: Vec<Vec<Stretch>> = found
-        .iter()
-        .enumerate()
-        .map(|(k, c)| stretches_of(sites, k, c))
-        .collect();
+    let per_candidate: Vec<Vec<Stretch>> = found.iter().enumerate().map(trim).collect();
     per_candidate.concat()
 }
 

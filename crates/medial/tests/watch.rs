@@ -1,0 +1,57 @@
+//! Long work behaves (issue 39): a medial axis that takes seconds stops soon after its watch
+//! is cancelled, with "cancelled" (never a partial axis), and reports its stage meanwhile.
+
+#![allow(clippy::unwrap_used, missing_docs)]
+
+#[path = "../../../benches/common/mod.rs"]
+mod bench_shapes;
+
+use curve::watch::Watch;
+use curve::{Profile, Region, Segment};
+use medial::{medial_axis, Error, MedialOptions};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// The benchmarks' CAD outline of 1,500 lines with its coordinates rounded to 1e-6: every
+/// joint of its sides a corner of ~1e-6 rad, beyond the seed's grid, so the axis is sought
+/// from every pair the bounds keep (seconds).
+fn slow_region() -> Region {
+    let (c, s) = (0.3f64.cos(), 0.3f64.sin());
+    let points: Vec<[f64; 2]> = bench_shapes::dense_outline(1500)
+        .into_iter()
+        .map(|p| [c * p[0] - s * p[1], s * p[0] + c * p[1]].map(|x| (x * 1e6).round() / 1e6))
+        .collect();
+    let n = points.len();
+    let sides = (0..n)
+        .map(|i| Segment::line(points[i], points[(i + 1) % n]).unwrap())
+        .collect();
+    Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap()
+}
+
+#[test]
+fn a_cancelled_axis_stops_soon_and_says_so() {
+    let region = slow_region();
+    let watch = Arc::new(Watch::default());
+    let canceller = {
+        let watch = Arc::clone(&watch);
+        std::thread::spawn(move || {
+            std::thread::sleep(Duration::from_millis(300));
+            let stage = watch.progress().stage;
+            watch.cancel();
+            (Instant::now(), stage)
+        })
+    };
+    let found = watch.run(|| medial_axis(&region, &MedialOptions::default()));
+    let stopped = Instant::now();
+    let (cancelled_at, stage) = canceller.join().unwrap();
+    assert!(matches!(found, Err(Error::Cancelled)), "{found:?}");
+    assert!(stage.starts_with("medial axis"), "{stage:?}");
+    // (The target is 0.1 s; a loaded test machine is allowed more.)
+    let late = stopped.saturating_duration_since(cancelled_at);
+    assert!(
+        late < Duration::from_secs(1),
+        "stopped {late:?} after the cancel"
+    );
+    // The same work unwatched runs on (it is not cancelled by another's watch).
+    assert!(!curve::watch::cancelled());
+}

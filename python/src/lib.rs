@@ -49,15 +49,30 @@ fn as_keyword(message: &str) -> String {
     }
 }
 
-/// How often a call that runs looks for a signal (Ctrl-C): a cancelled computation stops at
-/// its next unit of work, within 0.1 s of the signal in all.
+/// Runs `work` without the GIL (other Python threads go on meanwhile); a panic, a defect never
+/// expected, becomes a `CurvekitError` instead of ending the interpreter's thread. For the
+/// calls that take microseconds to milliseconds: see [`cancellable`] for the long ones.
+pub(crate) fn detached<T: Send>(
+    py: Python<'_>,
+    work: impl FnOnce() -> Result<T, CommandError> + Send,
+) -> PyResult<T> {
+    py.detach(|| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
+            .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
+    })
+    .map_err(to_py_err)
+}
+
+/// How often a long call looks for a signal (Ctrl-C): a cancelled computation stops at its
+/// next unit of work, within 0.1 s of the signal in all.
 const SIGNAL_POLL: Duration = Duration::from_millis(20);
 
-/// Runs `work` without the GIL (other Python threads go on meanwhile) on a worker thread under
-/// a watch ([`curve::watch`]), while this thread looks for signals: on Ctrl-C the work is
-/// cancelled and the signal's exception (`KeyboardInterrupt`) raised. A panic, a defect never
-/// expected, becomes a `CurvekitError` instead of ending the interpreter's thread.
-pub(crate) fn detached<T: Send>(
+/// [`detached`] for the calls that may take seconds (the medial axis, offsets): `work` runs
+/// on a worker thread under a watch ([`curve::watch`]) while this thread, the one Python's
+/// signal handlers run on, looks for signals; on Ctrl-C the work is cancelled and the
+/// signal's exception (`KeyboardInterrupt`) raised. (The worker costs tens of microseconds
+/// a call, which the short commands are spared.)
+pub(crate) fn cancellable<T: Send>(
     py: Python<'_>,
     work: impl FnOnce() -> Result<T, CommandError> + Send,
 ) -> PyResult<T> {
@@ -232,7 +247,7 @@ fn medial_of(
         size: None,
     };
     let c = region.get();
-    let (axis, summary) = detached(py, || {
+    let (axis, summary) = cancellable(py, || {
         commands::validate_medial_options(&opts)?;
         let region = c.region()?;
         Ok((
@@ -283,7 +298,7 @@ fn offset_of(
         size: None,
     };
     let c = region.get();
-    let (found, summary) = detached(py, || {
+    let (found, summary) = cancellable(py, || {
         commands::validate_distances(&asked)?;
         let region = c.region()?;
         Ok((

@@ -164,6 +164,10 @@ pub struct MedialAxis {
 
 /// The medial axis of `region`.
 ///
+/// Run under a [`curve::watch::Watch`] ([`curve::watch::Watch::run`]), it reports its stage
+/// and units of work there, and stops with [`Error::Cancelled`] soon after the watch is
+/// cancelled (at its next pair of pieces, candidate or edge).
+///
 /// ```
 /// use curve::{Profile, Region, Segment};
 /// use medial::{medial_axis, MedialOptions, NodeKind};

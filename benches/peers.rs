@@ -1,7 +1,9 @@
 //! curvekit against the line/arc tools a CAM user would pick instead (issue 39), one core,
 //! each figure beside its peer's on the same input in the same run:
 //! - the medial axis of star polygons of 100, 400 and 1,600 lines against boostvoronoi's
-//!   Voronoi diagram of the same segments (integer coordinates, as it takes them);
+//!   Voronoi diagram of the same segments (integer coordinates, as it takes them), and so the
+//!   CAD outline of 1,500 and 5,000 lines (a plate's arcs as chords, its sides as collinear
+//!   runs);
 //! - the pocket's offsets at step 0.25 (the axis included) and the star of 400 lines' offsets
 //!   at step 0.05 (its axis included too) against CavalierContours' parallel offsets at the
 //!   same distances.
@@ -13,7 +15,10 @@
 use boostvoronoi::prelude::{Builder, Line};
 use cavalier_contours::polyline::{PlineSource, PlineSourceMut, Polyline};
 use cavalier_contours::shape_algorithms::{Shape as CavShape, ShapeOffsetOptions};
-use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::measurement::WallTime;
+use criterion::{
+    black_box, criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion,
+};
 use curve::Region;
 use curvekit::medial::{medial_axis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
@@ -90,6 +95,29 @@ fn cavalier_offsets(shape: &CavShape<f64>, distances: &[f64]) -> usize {
         .sum()
 }
 
+/// Benchmarks curvekit's medial axis of the polygon through `vertices` as `n` in `group`,
+/// having said on stderr what it is (nodes, edges, certified or why not).
+fn bench_axis(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    label: &str,
+    n: usize,
+    vertices: &[[f64; 2]],
+) {
+    let opts = MedialOptions::default();
+    let region = Region::new(polygon(vertices), Vec::new()).unwrap();
+    let axis = medial_axis(&region, &opts).unwrap();
+    eprintln!(
+        "{label}: {} nodes, {} edges, certified {} {}",
+        axis.nodes.len(),
+        axis.edges.len(),
+        axis.certified,
+        axis.reason.as_deref().unwrap_or("")
+    );
+    group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
+        b.iter(|| medial_axis(black_box(r), &opts).unwrap())
+    });
+}
+
 fn peers(c: &mut Criterion) {
     let _ = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
@@ -106,18 +134,7 @@ fn peers(c: &mut Criterion) {
             b.iter(|| boost_diagram(black_box(v)))
         });
         if n <= max {
-            let region = Region::new(polygon(&vertices), Vec::new()).unwrap();
-            let axis = medial_axis(&region, &opts).unwrap();
-            eprintln!(
-                "star {n}: {} nodes, {} edges, certified {} {}",
-                axis.nodes.len(),
-                axis.edges.len(),
-                axis.certified,
-                axis.reason.as_deref().unwrap_or("")
-            );
-            group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
-                b.iter(|| medial_axis(black_box(r), &opts).unwrap())
-            });
+            bench_axis(&mut group, &format!("star {n}"), n, &vertices);
         }
     }
     group.finish();
@@ -134,20 +151,8 @@ fn peers(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("boostvoronoi", n), &scaled, |b, v| {
             b.iter(|| boost_diagram(black_box(v)))
         });
-        if n <= max.max(5000) {
-            let region = Region::new(polygon(&vertices), Vec::new()).unwrap();
-            let axis = medial_axis(&region, &opts).unwrap();
-            eprintln!(
-                "dense outline {n}: {} nodes, {} edges, certified {} {}",
-                axis.nodes.len(),
-                axis.edges.len(),
-                axis.certified,
-                axis.reason.as_deref().unwrap_or("")
-            );
-            group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
-                b.iter(|| medial_axis(black_box(r), &opts).unwrap())
-            });
-        }
+        // (The traced path takes these in a fraction of a second: never capped.)
+        bench_axis(&mut group, &format!("dense outline {n}"), n, &vertices);
     }
     group.finish();
 

@@ -120,7 +120,26 @@ pub(crate) struct Traced {
     pub(crate) proven: HashSet<[u64; 2]>,
 }
 
-/// The lines of the boundaries, the diagram, and the vertices solved so far.
+/// A primary edge of the diagram to trace: its two true sites and its two vertices.
+struct Job {
+    sites: [TrueSite; 2],
+    ends: [VertexIndex; 2],
+}
+
+/// `f` of each of `items`, in their order (in parallel where the feature is on).
+fn in_order<T: Sync, U: Send>(items: &[T], f: impl Fn(&T) -> U + Sync + Send) -> Vec<U> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items.par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items.iter().map(f).collect()
+    }
+}
+
+/// The lines of the boundaries, the diagram, and the vertices solved.
 struct Tracer<'s, 'a> {
     sites: &'s Sites<'a>,
     lines: Vec<Vec<LineSite>>,
@@ -190,20 +209,19 @@ pub(crate) fn trace(sites: &Sites<'_>, chord_tol: f64) -> Option<Traced> {
 }
 
 impl Tracer<'_, '_> {
-    /// Every primary edge on the axis's side, traced.
+    /// Every primary edge on the axis's side, traced: the edges and the vertices they need
+    /// listed in the diagram's order, every vertex solved once, then every edge traced
+    /// (both in parallel where the feature is on; the output in the diagram's order, never
+    /// the threads').
     fn edges(&mut self, inside_left: &[f64]) -> Option<Traced> {
-        let mut candidates = Vec::new();
-        let mut stretches = Vec::new();
-        let merge = MERGE * self.sites.size;
         curve::watch::stage("medial axis: the seed's edges");
         let watch = curve::watch::current();
+        let cancelled = || watch.as_ref().is_some_and(|w| w.is_cancelled());
+        let mut jobs: Vec<Job> = Vec::new();
+        // (Each vertex solved from the first edge that reaches it, as a serial walk would.)
+        let mut vertices: Vec<(VertexIndex, EdgeIndex)> = Vec::new();
+        let mut listed = HashSet::new();
         for k in 0..self.diagram.edges().len() {
-            if let Some(w) = &watch {
-                w.advance(1);
-                if w.is_cancelled() {
-                    return None; // (the caller answers "cancelled")
-                }
-            }
             let edge = &self.diagram.edges()[k];
             let id = edge.id();
             let twin = self.diagram.edge_get_twin(id).ok()?;
@@ -229,50 +247,43 @@ impl Tracer<'_, '_> {
             if self.smooth_joint_between(a, b).is_some() {
                 continue;
             }
-            let (p, q) = (self.solve(v0, id)?, self.solve(v1, twin)?);
-            if (q.xy - p.xy).norm() <= merge {
-                continue; // (one node: the edge of nearly cocircular sites that snapping made)
-            }
-            // (A point site on the axis's side is a reflex corner.)
-            for s in [a, b].into_iter().filter(|s| s.corner) {
-                let u = s.segment as f64;
-                if !self
-                    .sites
-                    .inside_of(s.boundary, s.segment, u, true, p.xy.arr())
-                {
-                    return None;
+            for (v, from) in [(v0, id), (v1, twin)] {
+                if listed.insert(v.usize()) {
+                    vertices.push((v, from));
                 }
             }
-            let (sites, ends) = if a <= b {
-                ([a, b], [p, q])
-            } else {
-                ([b, a], [q, p])
-            };
-            let vertices = self.trace_edge(sites, ends)?;
-            let candidate = Candidate {
-                boundary: sites.map(|s| s.boundary),
-                segment: sites.map(|s| s.segment),
-                corner: sites.map(|s| s.corner),
-                tr: vertices.iter().map(|v| v.tr).collect(),
-                xy: vertices.iter().map(|v| v.xy).collect(),
-            };
-            // (The ends' disks were tested when they were solved; those between, all at once
-            // where the edge is two lines' and the sweep of its disks is proven empty.)
-            let last = vertices.len() - 1;
-            let swept = last > 1 && self.sweep_is_empty(sites, ends);
-            for (k, v) in vertices.iter().enumerate() {
-                let tested = k == 0 || k == last || swept;
-                if !(tested || self.empty(v))
-                    || entered_across_corner(self.sites, &candidate, v).is_some()
-                {
-                    return None;
-                }
-            }
-            stretches.push(Stretch {
-                candidate: candidates.len(),
-                vertices,
+            jobs.push(Job {
+                sites: [a, b],
+                ends: [v0, v1],
             });
-            candidates.push(candidate);
+        }
+        let solved = in_order(&vertices, |&(v, from)| {
+            (!cancelled()).then(|| self.solve_vertex(v, from)).flatten()
+        });
+        self.solved = vertices
+            .iter()
+            .map(|(v, _)| v.usize())
+            .zip(solved)
+            .collect();
+        let traced = in_order(&jobs, |job| {
+            if let Some(w) = &watch {
+                w.advance(1);
+            }
+            if cancelled() {
+                return None; // (the caller answers "cancelled")
+            }
+            self.trace_job(job)
+        });
+        let mut candidates = Vec::new();
+        let mut stretches = Vec::new();
+        for found in traced {
+            if let Some((candidate, vertices)) = found? {
+                stretches.push(Stretch {
+                    candidate: candidates.len(),
+                    vertices,
+                });
+                candidates.push(candidate);
+            }
         }
         let proven = self
             .solved
@@ -286,6 +297,54 @@ impl Tracer<'_, '_> {
             stretches,
             proven,
         })
+    }
+
+    /// The candidate and vertices of one edge, its ends solved; `Some(None)` where its ends
+    /// are one node (the edge of nearly cocircular sites that snapping made), `None` where
+    /// the diagram disagrees with the true coordinates.
+    fn trace_job(&self, job: &Job) -> Option<Option<(Candidate, Vec<Vertex>)>> {
+        let [a, b] = job.sites;
+        let solved = |v: VertexIndex| self.solved.get(&v.usize()).copied().flatten();
+        let (p, q) = (solved(job.ends[0])?, solved(job.ends[1])?);
+        if (q.xy - p.xy).norm() <= MERGE * self.sites.size {
+            return Some(None);
+        }
+        // (A point site on the axis's side is a reflex corner.)
+        for s in [a, b].into_iter().filter(|s| s.corner) {
+            let u = s.segment as f64;
+            if !self
+                .sites
+                .inside_of(s.boundary, s.segment, u, true, p.xy.arr())
+            {
+                return None;
+            }
+        }
+        let (sites, ends) = if a <= b {
+            ([a, b], [p, q])
+        } else {
+            ([b, a], [q, p])
+        };
+        let vertices = self.trace_edge(sites, ends)?;
+        let candidate = Candidate {
+            boundary: sites.map(|s| s.boundary),
+            segment: sites.map(|s| s.segment),
+            corner: sites.map(|s| s.corner),
+            tr: vertices.iter().map(|v| v.tr).collect(),
+            xy: vertices.iter().map(|v| v.xy).collect(),
+        };
+        // (The ends' disks were tested when they were solved; those between, all at once
+        // where the edge is two lines' and the sweep of its disks is proven empty.)
+        let last = vertices.len() - 1;
+        let swept = last > 1 && self.sweep_is_empty(sites, ends);
+        for (k, v) in vertices.iter().enumerate() {
+            let tested = k == 0 || k == last || swept;
+            if !(tested || self.empty(v))
+                || entered_across_corner(self.sites, &candidate, v).is_some()
+            {
+                return None;
+            }
+        }
+        Some(Some((candidate, vertices)))
     }
 
     /// Whether the disk of `v` is empty, as the other paths test it (beside a convex corner
@@ -415,16 +474,7 @@ impl Tracer<'_, '_> {
         }
     }
 
-    /// The node at vertex `v` of the diagram (`from` one of its edges), solved once.
-    fn solve(&mut self, v: VertexIndex, from: EdgeIndex) -> Option<Solved> {
-        if let Some(&s) = self.solved.get(&v.usize()) {
-            return s;
-        }
-        let s = self.solve_vertex(v, from);
-        self.solved.insert(v.usize(), s);
-        s
-    }
-
+    /// The node at vertex `v` of the diagram (`from` one of its edges).
     fn solve_vertex(&self, v: VertexIndex, from: EdgeIndex) -> Option<Solved> {
         let vertex = self.diagram.vertex(v).ok()?;
         let grid = [vertex.x(), vertex.y()];

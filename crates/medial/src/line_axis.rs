@@ -120,6 +120,36 @@ pub(crate) struct Traced {
     pub(crate) proven: HashSet<[u64; 2]>,
 }
 
+/// A convex polygon (its corners in turning order) that covers the band between the points
+/// of tangency of two disks with lines `a` and `b`: centres `c` on the bisector of the lines
+/// (`c[0]` nearer their meeting point, if any), radii `r` their distances to the lines, each
+/// disk less `slack`. Its corners are the centres and, on each line's side and for each
+/// centre, the point on the ray from the centre to its foot at half the slack from the line,
+/// moved a quarter of the slack either way along the line: the tangency points of the
+/// smaller disks lie on those rays, a further half of the slack in, and the room covers
+/// their rounding. Every corner stays at least a quarter of the slack off both lines.
+fn sweep_polygon(c: [V2; 2], r: [f64; 2], lines: [LineSite; 2], slack: f64) -> [V2; 10] {
+    let towards = c[1] - c[0];
+    let along = |l: &LineSite| l.along * l.along.dot(towards).signum();
+    let (ta, tb) = (along(&lines[0]), along(&lines[1]));
+    let at = |k: usize, l: &LineSite| c[k] - l.inward * (r[k] - 0.5 * slack);
+    let (a0, a1) = (at(0, &lines[0]), at(1, &lines[0]));
+    let (b0, b1) = (at(0, &lines[1]), at(1, &lines[1]));
+    let g = 0.25 * slack;
+    [
+        a0 - ta * g,
+        a0 + ta * g,
+        a1 - ta * g,
+        a1 + ta * g,
+        c[1],
+        b1 + tb * g,
+        b1 - tb * g,
+        b0 + tb * g,
+        b0 - tb * g,
+        c[0],
+    ]
+}
+
 /// A primary edge of the diagram to trace: its two true sites and its two vertices.
 struct Job {
     sites: [TrueSite; 2],
@@ -355,46 +385,53 @@ impl Tracer<'_, '_> {
     }
 
     /// Whether the disks along the straight bisector of two lines between its ends (each
-    /// less the slack of the disk tests) are all empty, proven at once: their centres and
-    /// radii move linearly, so they sweep the convex hull of the end disks, which is the two
-    /// disks (tested when the ends were solved) and the quadrilateral between their points
-    /// of tangency with the lines. That quadrilateral, grown by half the slack towards the
-    /// lines (room for the rounding of its corners, still clear of the lines), is tested
-    /// against the boundary's lines by separating axes. `false` where not proven (the edge
-    /// of a corner, or a line near the quadrilateral): its disks are then tested one by one.
+    /// less the slack of the disk tests) are all empty, proven at once. Their centres and
+    /// radii move linearly (the radii interpolated from the ends'), so they sweep the convex
+    /// hull of the two end disks: the end disks themselves (tested when the ends were solved)
+    /// and the band between their points of tangency with the lines, which [`sweep_polygon`]
+    /// covers. That
+    /// polygon is tested against the boundary's lines by separating axes. `false` where not
+    /// proven (the edge of a corner, ends off the bisector beyond rounding, a line near the
+    /// polygon): its disks are then tested one by one.
     fn sweep_is_empty(&self, sites: [TrueSite; 2], ends: [Solved; 2]) -> bool {
         if sites[0].corner || sites[1].corner {
             return false;
         }
         let slack = EMPTY_SLACK * self.sites.size;
-        let [mut p, mut q] = ends;
-        if p.radius > q.radius {
-            std::mem::swap(&mut p, &mut q);
+        let lines = sites.map(|s| *self.line(s));
+        if !ends.iter().all(|e| self.on_bisector(sites, e)) {
+            return false;
         }
+        let [mut p, q] = ends;
+        let q = if p.radius > q.radius {
+            std::mem::replace(&mut p, q)
+        } else {
+            q
+        };
         if q.radius <= slack {
             return true; // (every disk less the slack is empty: none has a point)
         }
         // (From where the disks less the slack begin to hold points.)
         if p.radius < slack {
-            let t = (slack - p.radius) / (q.radius - p.radius);
-            p = Solved {
-                xy: p.xy + (q.xy - p.xy) * t,
-                radius: slack,
-                proven: false,
-            };
+            p.xy = p.xy + (q.xy - p.xy) * ((slack - p.radius) / (q.radius - p.radius));
+            p.radius = slack;
         }
-        let [na, nb] = sites.map(|s| self.line(s).inward);
-        let corner = |e: &Solved, n: V2| (e.xy - n * (e.radius - 0.5 * slack)).arr();
-        let quad = [
-            corner(&p, na),
-            corner(&q, na),
-            corner(&q, nb),
-            corner(&p, nb),
-        ];
+        let polygon = sweep_polygon([p.xy, q.xy], [p.radius, q.radius], lines, slack).map(V2::arr);
         self.sites
             .boundaries
             .iter()
-            .all(|b| b.misses_convex_polygon(&quad))
+            .all(|b| b.misses_convex_polygon(&polygon))
+    }
+
+    /// Whether `e` lies on the bisector of two lines with its radius their distance, to
+    /// rounding. (An end solved on other equations may lie off it by their agreement.)
+    fn on_bisector(&self, sites: [TrueSite; 2], e: &Solved) -> bool {
+        let x = e.xy;
+        let room = 64.0 * f64::EPSILON * (x.x.abs().max(x.y.abs()) + e.radius);
+        sites.iter().all(|&s| {
+            let l = self.line(s);
+            (l.inward.dot(x - l.start) - e.radius).abs() <= room
+        })
     }
 
     /// The true site of a site of the diagram.
@@ -631,6 +668,8 @@ impl Tracer<'_, '_> {
                     .collect::<Vec<V2>>()
             })
         };
+        let affine =
+            !sites[0].corner && !sites[1].corner && ends.iter().all(|e| self.on_bisector(sites, e));
         let points = match sites {
             [a, b] if a.corner == b.corner => straight()?,
             [a, b] => {
@@ -643,9 +682,13 @@ impl Tracer<'_, '_> {
             .into_iter()
             .enumerate()
             .map(|(k, x)| {
+                // (Between two lines the radius is affine along the edge: the ends' radii
+                // interpolated, where they are the lines' distances, so that the disks
+                // between are the sweep of the end disks.)
                 let radius = match k {
                     0 => p.radius,
                     k if k == last => q.radius,
+                    _ if affine => p.radius + (q.radius - p.radius) * (k as f64 / last as f64),
                     _ => self.distance(sites[0], x).0,
                 };
                 let tr = [self.foot(sites[0], x)?, self.foot(sites[1], x)?];
@@ -813,6 +856,80 @@ mod tests {
             same_graph(traced, bounds, near)
         };
         stands_as_the_bounds(&mut rng(3901), PairSource::SeedEdges, make, same);
+    }
+
+    /// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
+    fn hull(mut points: Vec<V2>) -> Vec<V2> {
+        points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+        let mut out: Vec<V2> = Vec::new();
+        for pass in 0..2 {
+            let start = out.len();
+            for &p in &points {
+                while out.len() >= start + 2
+                    && (out[out.len() - 1] - out[out.len() - 2]).cross(p - out[out.len() - 2])
+                        <= 0.0
+                {
+                    out.pop();
+                }
+                out.push(p);
+            }
+            out.pop();
+            if pass == 0 {
+                points.reverse();
+            }
+        }
+        out
+    }
+
+    proptest::proptest! {
+        /// The disks along a bisector of two lines (each less the slack) lie in the end disks
+        /// and the polygon of [`super::sweep_polygon`], checked on dense points of their rims:
+        /// for lines meeting at any angle and for parallel ones.
+        #[test]
+        fn the_sweep_polygon_covers_the_disks_between(
+            apex in proptest::array::uniform2(-10.0f64..10.0),
+            turn in 0.0f64..6.3,
+            half_angle in 0.0f64..1.5,
+            s in proptest::array::uniform2(0.01f64..5.0),
+        ) {
+            use super::{sweep_polygon, LineSite};
+            let slack = 1e-3;
+            let (o, u) = (V2::from_arr(apex), V2::polar(turn));
+            let parallel = half_angle < 0.05;
+            let rotate = |v: V2, a: f64| V2::new(v.x * a.cos() - v.y * a.sin(), v.x * a.sin() + v.y * a.cos());
+            let (da, db) = if parallel { (u, u) } else { (rotate(u, half_angle), rotate(u, -half_angle)) };
+            let (na, nb) = (rotate(da, -std::f64::consts::FRAC_PI_2), rotate(db, std::f64::consts::FRAC_PI_2));
+            // (Parallel lines: 1 on either side of the line through the apex along u.)
+            let (sa, sb) = if parallel { (o - na, o - nb) } else { (o, o) };
+            let line = |start: V2, along: V2, inward: V2| LineSite { start, along, length: 100.0, inward };
+            let lines = [line(sa, da, na), line(sb, db, nb)];
+            let (s0, s1) = (s[0].min(s[1]), s[0].max(s[1]));
+            let c = [o + u * s0, o + u * (s1 + 0.01)];
+            let r = c.map(|x| lines[0].inward.dot(x - lines[0].start));
+            proptest::prop_assume!(r[0] > slack);
+            let poly = hull(sweep_polygon(c, r, lines, slack).to_vec());
+            let inside = |x: V2| {
+                (0..poly.len()).all(|k| {
+                    let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+                    (b - a).cross(x - a) >= -1e-12 * (b - a).norm()
+                })
+            };
+            for i in 0..=40 {
+                let t = i as f64 / 40.0;
+                let (ct, rt) = (c[0] + (c[1] - c[0]) * t, r[0] + (r[1] - r[0]) * t - slack);
+                for k in 0..720 {
+                    let x = ct + V2::polar(std::f64::consts::TAU * k as f64 / 720.0) * rt;
+                    let in_disk = |j: usize| (x - c[j]).norm() <= r[j] - slack + 1e-12;
+                    proptest::prop_assert!(in_disk(0) || in_disk(1) || inside(x), "t {t} at {x:?}");
+                }
+            }
+            // (And the polygon keeps clear of both lines.)
+            for l in &lines {
+                for x in &poly {
+                    proptest::prop_assert!(l.inward.dot(*x - l.start) >= 0.2 * slack);
+                }
+            }
+        }
     }
 
     /// A closed polygon through `points`, as a region.

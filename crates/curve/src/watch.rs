@@ -1,10 +1,10 @@
 //! The progress and cancellation of a long computation, between the thread that does it and
 //! one that watches (a terminal's progress line, Python's check for Ctrl-C).
 //!
-//! The watcher makes a [`Watch`] and runs the work under it ([`Watch::run`]); the library's
-//! long loops ask [`current`] for it once and then look at it at every unit of work: they
-//! stop early where it is cancelled (their caller then answers "cancelled", never a partial
-//! result), and count their units for the progress line. Work run under no watch is never
+//! The watcher makes a [`Watch`] and runs the work under it ([`Watch::run`]); each of the
+//! library's long loops starts a [`stage`] and, at every unit of work, counts it and asks
+//! whether to go on ([`Stage::go_on`]): it stops early where the watch is cancelled (its
+//! caller then answers "cancelled", never a partial result). Work run under no watch is never
 //! cancelled and counts nothing.
 
 use std::cell::RefCell;
@@ -27,12 +27,13 @@ pub struct Progress {
 /// use std::sync::Arc;
 /// let w = Arc::new(Watch::default());
 /// w.run(|| {
-///     watch::stage("counting");
-///     watch::current().unwrap().advance(3);
+///     let stage = watch::stage("counting");
+///     assert!(stage.go_on(3));
 /// });
-/// assert_eq!(w.progress().done, 3);
+/// assert_eq!(w.progress(), watch::Progress { stage: "counting", done: 3 });
 /// w.cancel();
 /// assert!(w.run(watch::cancelled));
+/// assert!(!w.run(|| watch::stage("more").go_on(1)));
 /// assert!(!watch::cancelled()); // (outside the run: no watch)
 /// ```
 #[derive(Debug, Default)]
@@ -87,25 +88,40 @@ impl Watch {
     }
 }
 
-/// The watch the work on this thread runs under, if any: for loops that hand it to other
-/// threads.
-pub fn current() -> Option<Arc<Watch>> {
-    CURRENT.with(|c| c.borrow().clone())
-}
-
 /// Whether the work on this thread was asked to stop.
 pub fn cancelled() -> bool {
     CURRENT.with(|c| c.borrow().as_ref().is_some_and(|w| w.is_cancelled()))
 }
 
-/// Starts a stage of the work on this thread (its count of units from nothing).
-pub fn stage(name: &'static str) {
-    CURRENT.with(|c| {
-        if let Some(w) = c.borrow().as_ref() {
-            *w.stage.lock().unwrap_or_else(|e| e.into_inner()) = name;
-            w.done.store(0, Ordering::Relaxed);
+/// Starts a stage of the work on this thread (its count of units from nothing), under the
+/// watch the thread runs under, if any.
+pub fn stage(name: &'static str) -> Stage {
+    let watch = CURRENT.with(|c| c.borrow().clone());
+    if let Some(w) = &watch {
+        *w.stage.lock().unwrap_or_else(|e| e.into_inner()) = name;
+        w.done.store(0, Ordering::Relaxed);
+    }
+    Stage { watch }
+}
+
+/// A stage of watched work, for its loop (shared by the threads it hands the work to).
+#[derive(Debug, Clone)]
+pub struct Stage {
+    watch: Option<Arc<Watch>>,
+}
+
+impl Stage {
+    /// Counts `units` more units of work done and answers whether to go on: false once the
+    /// watch is cancelled (never under no watch).
+    pub fn go_on(&self, units: usize) -> bool {
+        match &self.watch {
+            Some(w) => {
+                w.advance(units);
+                !w.is_cancelled()
+            }
+            None => true,
         }
-    });
+    }
 }
 
 #[cfg(test)]
@@ -121,7 +137,7 @@ mod tests {
             cancelled()
         });
         assert!(seen);
-        assert!(current().is_none());
+        assert!(!cancelled() && stage("after").go_on(1));
         let nested = Arc::new(Watch::default());
         w.run(|| {
             nested.run(|| assert!(!cancelled()));

@@ -4,6 +4,7 @@
 
 use crate::error::Result;
 use crate::pairs::{neighbours, FEW_SEGMENTS};
+use crate::parallel::in_order;
 use crate::seed::seed_pairs;
 use crate::sites::Sites;
 use crate::MedialOptions;
@@ -96,20 +97,14 @@ pub(crate) fn candidates(
     };
     // (The watch is looked at for every pair of pieces: a cancelled search keeps none
     // more, and its caller answers "cancelled".)
-    let watch = curve::watch::current();
-    curve::watch::stage(match source {
+    let stage = curve::watch::stage(match source {
         PairSource::Seed => "medial axis: the seed's pairs",
         _ => "medial axis: every pair the bounds keep",
     });
     let bisect = |&[i, j]: &[usize; 2]| {
-        let keep = |s: usize, t: usize| match &watch {
-            Some(w) if w.is_cancelled() => false,
-            Some(w) => {
-                let kept = near.keep((i, s), (j, t));
-                w.advance(usize::from(kept));
-                kept
-            }
-            None => near.keep((i, s), (j, t)),
+        let keep = |s: usize, t: usize| {
+            let kept = near.keep((i, s), (j, t));
+            stage.go_on(usize::from(kept)) && kept
         };
         // (Only the axis's side of each boundary: a point on the other side of a foot is
         // outside, where its disk meets the boundary at that foot.)
@@ -123,14 +118,7 @@ pub(crate) fn candidates(
             profile_bisector_of_pairs(b[i], b[j], &opts, &keep)
         }
     };
-    // (In the pairs' order either way: the output never depends on the threads.)
-    #[cfg(feature = "parallel")]
-    let found: Vec<_> = {
-        use rayon::prelude::*;
-        pairs.par_iter().map(bisect).collect()
-    };
-    #[cfg(not(feature = "parallel"))]
-    let found: Vec<_> = pairs.iter().map(bisect).collect();
+    let found = in_order(&pairs, bisect);
     let mut out = Vec::new();
     let mut complete = true;
     for (pair, found) in pairs.into_iter().zip(found) {

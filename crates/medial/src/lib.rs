@@ -38,6 +38,7 @@ mod fit;
 mod junction_proof;
 mod line_axis;
 mod pairs;
+mod parallel;
 mod seed;
 mod sites;
 mod stretches;

@@ -20,6 +20,7 @@ use crate::candidates::Candidate;
 use crate::certificate::JUNCTION_ROOM;
 use crate::corners::entered_across_corner;
 use crate::junction_proof::{proven_within, ClosedSite};
+use crate::parallel::in_order;
 use crate::seed::{chord_diagram, edge_sites, on_side, Approximation, Owner, Site};
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use crate::stretches::{Stretch, Vertex};
@@ -156,19 +157,6 @@ struct Job {
     ends: [VertexIndex; 2],
 }
 
-/// `f` of each of `items`, in their order (in parallel where the feature is on).
-fn in_order<T: Sync, U: Send>(items: &[T], f: impl Fn(&T) -> U + Sync + Send) -> Vec<U> {
-    #[cfg(feature = "parallel")]
-    {
-        use rayon::prelude::*;
-        items.par_iter().map(f).collect()
-    }
-    #[cfg(not(feature = "parallel"))]
-    {
-        items.iter().map(f).collect()
-    }
-}
-
 /// The lines of the boundaries, the diagram, and the vertices solved.
 struct Tracer<'s, 'a> {
     sites: &'s Sites<'a>,
@@ -244,9 +232,7 @@ impl Tracer<'_, '_> {
     /// (both in parallel where the feature is on; the output in the diagram's order, never
     /// the threads').
     fn edges(&mut self, inside_left: &[f64]) -> Option<Traced> {
-        curve::watch::stage("medial axis: the seed's edges");
-        let watch = curve::watch::current();
-        let cancelled = || watch.as_ref().is_some_and(|w| w.is_cancelled());
+        let stage = curve::watch::stage("medial axis: the seed's edges");
         let mut jobs: Vec<Job> = Vec::new();
         // (Each vertex solved from the first edge that reaches it, as a serial walk would.)
         let mut vertices: Vec<(VertexIndex, EdgeIndex)> = Vec::new();
@@ -288,7 +274,7 @@ impl Tracer<'_, '_> {
             });
         }
         let solved = in_order(&vertices, |&(v, from)| {
-            (!cancelled()).then(|| self.solve_vertex(v, from)).flatten()
+            stage.go_on(0).then(|| self.solve_vertex(v, from)).flatten()
         });
         self.solved = vertices
             .iter()
@@ -296,10 +282,7 @@ impl Tracer<'_, '_> {
             .zip(solved)
             .collect();
         let traced = in_order(&jobs, |job| {
-            if let Some(w) = &watch {
-                w.advance(1);
-            }
-            if cancelled() {
+            if !stage.go_on(1) {
                 return None; // (the caller answers "cancelled")
             }
             self.trace_job(job)

@@ -5,6 +5,7 @@
 use crate::candidates::Candidate;
 use crate::corners::entered_across_corner;
 use crate::curvature::{curvature_peak, sign_change};
+use crate::parallel::in_order;
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::ParamCurve;
 
@@ -111,23 +112,15 @@ pub(crate) struct Stretch {
 /// `parallel` feature).
 pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> {
     // (A cancelled watch trims no candidate more: the caller answers "cancelled".)
-    curve::watch::stage("medial axis: candidates trimmed to the axis");
-    let watch = curve::watch::current();
-    let trim = |(k, c): (usize, &Candidate)| match &watch {
-        Some(w) if w.is_cancelled() => Vec::new(),
-        Some(w) => {
-            w.advance(1);
-            stretches_of(sites, k, c)
+    let stage = curve::watch::stage("medial axis: candidates trimmed to the axis");
+    let order: Vec<usize> = (0..found.len()).collect();
+    let per_candidate = in_order(&order, |&k| {
+        if stage.go_on(1) {
+            stretches_of(sites, k, &found[k])
+        } else {
+            Vec::new()
         }
-        None => stretches_of(sites, k, c),
-    };
-    #[cfg(feature = "parallel")]
-    let per_candidate: Vec<Vec<Stretch>> = {
-        use rayon::prelude::*;
-        found.par_iter().enumerate().map(trim).collect()
-    };
-    #[cfg(not(feature = "parallel"))]
-    let per_candidate: Vec<Vec<Stretch>> = found.iter().enumerate().map(trim).collect();
+    });
     per_candidate.concat()
 }
 

@@ -287,6 +287,55 @@ pub(crate) fn convex_corner_between(sites: &Sites<'_>, k: usize, a: f64, b: f64)
     )
 }
 
+/// A convex corner (towards the axis) that no corner node of an axis is at: the end of a
+/// leaf of the true axis that the axis lacks.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct UnreachedCorner {
+    pub(crate) xy: [f64; 2],
+    pub(crate) boundary: usize,
+    /// The angle the boundary turns by there (radians).
+    pub(crate) turn: f64,
+}
+
+/// The convex corners of the boundaries (towards the axis) that no corner node of `axis`
+/// is at, to the merge distance of nodes.
+pub(crate) fn unreached_convex_corners(
+    sites: &Sites<'_>,
+    axis: &MedialAxis,
+) -> Vec<UnreachedCorner> {
+    let near = MERGE * sites.size;
+    let mut leaves: Vec<[f64; 2]> = axis
+        .nodes
+        .iter()
+        .filter(|n| n.kind == NodeKind::Corner)
+        .map(|n| n.xy)
+        .collect();
+    leaves.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let reached = |x: V2| {
+        let from = leaves.partition_point(|p| p[0] < x.x - near);
+        leaves[from..]
+            .iter()
+            .take_while(|p| p[0] <= x.x + near)
+            .any(|p| (V2::from_arr(*p) - x).norm() <= near)
+    };
+    let mut out = Vec::new();
+    for (k, b) in sites.boundaries.iter().enumerate() {
+        let side = sites.inside_left(k);
+        let n = b.segments().len();
+        for j in b.corners().filter(|j| j.turn * side > 0.0) {
+            let at = b.segments()[j.u as usize % n].start();
+            if !reached(at) {
+                out.push(UnreachedCorner {
+                    xy: at.arr(),
+                    boundary: k,
+                    turn: j.turn.abs(),
+                });
+            }
+        }
+    }
+    out
+}
+
 /// Whether one of `marks` (increasing, in `[0, length)`) lies strictly between `lo` and
 /// `hi` past `start` round a loop of `length` (`0 <= hi - lo` below the length).
 fn marks_within(marks: &[f64], length: f64, start: f64, lo: f64, hi: f64) -> bool {
@@ -545,5 +594,30 @@ mod tests {
         let m = e.feet.len() / 2;
         e.feet.swap(m, m + 1);
         assert!(covered(&star, &back).is_err());
+    }
+
+    /// On a true axis every convex corner ends a leaf; with a leaf's corner node taken
+    /// away, that corner (and no other) is named, with its turn.
+    #[test]
+    fn a_convex_corner_without_its_leaf_is_named() {
+        let radii = [1.0, 1.4, 1.1, 1.5, 1.2, 1.3];
+        let wobble = [0.1, -0.15, 0.12, -0.1, 0.05, -0.2];
+        let star = polygon_star(&radii, &wobble, &[([0.1, 0.0], 0.15)]).unwrap();
+        let axis = bounds_axis(&star);
+        let sites = Sites::new(&star, false);
+        assert_eq!(unreached_convex_corners(&sites, &axis), vec![]);
+        let leaves: Vec<usize> = (0..axis.nodes.len())
+            .filter(|&k| axis.nodes[k].kind == NodeKind::Corner)
+            .collect();
+        // (At least the star's tips.)
+        assert!(leaves.len() >= radii.len(), "{leaves:?}");
+        for k in leaves {
+            let mut cut = axis.clone();
+            cut.nodes[k].kind = NodeKind::Junction;
+            let named = unreached_convex_corners(&sites, &cut);
+            assert_eq!(named.len(), 1);
+            assert_eq!(named[0].xy, axis.nodes[k].xy);
+            assert!(named[0].turn > 0.0 && named[0].turn < std::f64::consts::PI);
+        }
     }
 }

@@ -285,6 +285,26 @@ fn axis_of(
     };
     axis.certified = doubt.is_none();
     axis.reason = doubt.map(str::to_string);
+    if doubt == Some(certificate::Doubt::Graph.reason()) {
+        // (Where a leaf is missing, the reason names its corner.)
+        let unreached = coverage::unreached_convex_corners(&sites, &axis);
+        if let Some(first) = unreached.first() {
+            let more = match unreached.len() - 1 {
+                0 => String::new(),
+                1 => " (and 1 more such corner)".to_string(),
+                m => format!(" (and {m} more such corners)"),
+            };
+            axis.reason = Some(format!(
+                "{}: no leaf reaches the convex corner at ({}, {}) of boundary {}, which \
+                 turns by {:.1e} rad{more}",
+                certificate::Doubt::Graph.reason(),
+                first.xy[0],
+                first.xy[1],
+                first.boundary,
+                first.turn,
+            ));
+        }
+    }
     if opts.fit {
         let tol = traced.chord_tol * sites.size;
         for e in &mut axis.edges {

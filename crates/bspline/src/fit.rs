@@ -1,14 +1,13 @@
 //! Least-squares fits of clamped B-splines to sampled curves, within a measured tolerance.
 //!
 //! The fit passes through the first and last samples (so fitted pieces meet where the curves
-//! they stand for do) and is solved by faer's QR. Knots are added in the spans where the fit
+//! they stand for do) and is solved by a QR factorisation (nalgebra's Householder). Knots are added in the spans where the fit
 //! strays from its target, until it is within the tolerance at every sample and at points
 //! between them. The target is the caller's: the deviation of a fitted point from it, measured
 //! by a closure (from a polyline, or from the exact curve the samples were taken on).
 
 use crate::knots::basis_at;
-use faer::linalg::solvers::SolveLstsq;
-use faer::Mat;
+use nalgebra::DMatrix;
 
 /// Rounds of knot insertion before the fit is given up.
 const MAX_ROUNDS: usize = 40;
@@ -157,8 +156,8 @@ fn least_squares<const D: usize>(
         return Some(points);
     }
     let unknowns = n - 2;
-    let mut a = Mat::<f64>::zeros(m - 2, unknowns);
-    let mut b = Mat::<f64>::zeros(m - 2, D);
+    let mut a = DMatrix::<f64>::zeros(m - 2, unknowns);
+    let mut b = DMatrix::<f64>::zeros(m - 2, D);
     for i in 1..m - 1 {
         let (f, values) = basis_at(degree, knots, t[i]);
         let mut rhs = samples[i];
@@ -177,7 +176,11 @@ fn least_squares<const D: usize>(
             b[(i - 1, k)] = *r;
         }
     }
-    let x = a.qr().solve_lstsq(&b);
+    // (A = QR with R square, as the samples outnumber the unknowns: the least-squares
+    // solution solves R x = the first rows of Qᵀ b.)
+    let qr = a.qr();
+    qr.q_tr_mul(&mut b);
+    let x = qr.r().solve_upper_triangular(&b.rows(0, unknowns))?;
     for j in 0..unknowns {
         let mut p = [0.0; D];
         for (k, c) in p.iter_mut().enumerate() {

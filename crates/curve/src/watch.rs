@@ -111,6 +111,12 @@ pub struct Stage {
 }
 
 impl Stage {
+    /// Whether the watch was asked to stop (never under no watch): for a loop whose units
+    /// cost more to look at than this does.
+    pub fn cancelled(&self) -> bool {
+        self.watch.as_ref().is_some_and(|w| w.is_cancelled())
+    }
+
     /// Counts `units` more units of work done and answers whether to go on: false once the
     /// watch is cancelled (never under no watch).
     pub fn go_on(&self, units: usize) -> bool {

@@ -102,10 +102,10 @@ pub(crate) fn candidates(
         _ => "medial axis: every pair the bounds keep",
     });
     let bisect = |&[i, j]: &[usize; 2]| {
-        let keep = |s: usize, t: usize| {
-            let kept = near.keep((i, s), (j, t));
-            stage.go_on(usize::from(kept)) && kept
-        };
+        // (Cancellation is looked at before the bounds: a cancelled search skips the rest
+        // of its pairs at the cost of a load each.)
+        let keep =
+            |s: usize, t: usize| !stage.cancelled() && near.keep((i, s), (j, t)) && stage.go_on(1);
         // (Only the axis's side of each boundary: a point on the other side of a foot is
         // outside, where its disk meets the boundary at that foot.)
         let opts = BisectorOptions {

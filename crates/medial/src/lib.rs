@@ -268,6 +268,11 @@ fn axis_of(
             assemble::MERGE,
         )
     };
+    // (A cancelled search found a part: nothing is built from it, its caller answers
+    // "cancelled".)
+    if curve::watch::cancelled() {
+        return Ok((empty_axis(), false));
+    }
     let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found, merge);
     axis.complete &= complete;
     let doubt = if !axis.complete {

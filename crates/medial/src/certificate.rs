@@ -18,9 +18,10 @@
 
 use crate::assemble::root;
 use crate::curvature::proven_rate_sign;
+use crate::junction_proof::{closed_site_at, proven_within, ClosedSite};
 use crate::sites::{Disk, Sites};
 use crate::{MedialAxis, Node, NodeKind};
-use curve::{Clearance, ParamCurve};
+use curve::{Clearance, ParamCurve, V2};
 use std::collections::HashSet;
 
 /// Radii of the disks about a junction searched for its exact point, as shares of the size:
@@ -130,11 +131,18 @@ pub(crate) fn doubt(
     axis.nodes.iter().find_map(|node| {
         // A junction's or an end's disk is empty (to the slack): the node is on the axis.
         let empty = || sites.disk(node.xy, node.radius) == Disk::Empty;
-        let feet = || feet_of(sites, axis, &edges_at[node.id], node.id);
+        let same = SAME_FOOT * sites.size;
+        let feet = || feet_of(sites, axis, &edges_at[node.id], node.id, same);
         let proven = match node.kind {
             NodeKind::Junction => {
                 proven.contains(&node.xy.map(f64::to_bits))
-                    || (empty() && junction_proven(sites, node, &feet()))
+                    || (empty()
+                        && (junction_proven(sites, node, &feet())
+                            || closed_form_junction_proven(
+                                sites,
+                                node,
+                                &feet_of(sites, axis, &edges_at[node.id], node.id, 0.0),
+                            )))
             }
             NodeKind::End => {
                 let feet = feet();
@@ -174,9 +182,15 @@ struct Foot {
     xy: [f64; 2],
 }
 
-/// The distinct feet of the ends at node `id` of `edges` (the axis's edges that end there).
-fn feet_of(sites: &Sites<'_>, axis: &MedialAxis, edges: &[usize], id: usize) -> Vec<Foot> {
-    let same = SAME_FOOT * sites.size;
+/// The feet of the ends at node `id` of `edges` (the axis's edges that end there), those on
+/// one boundary within `same` of each other as one.
+fn feet_of(
+    sites: &Sites<'_>,
+    axis: &MedialAxis,
+    edges: &[usize],
+    id: usize,
+    same: f64,
+) -> Vec<Foot> {
     let mut out: Vec<Foot> = Vec::new();
     for e in edges.iter().map(|&k| &axis.edges[k]) {
         let ends = [(e.from == id, 0), (e.to == id, e.feet.len() - 1)];
@@ -328,6 +342,29 @@ fn junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
             let h = room * sites.size;
             winds_round_zero(sites, node.xy, h, polygon, &contacts)
         })
+    })
+}
+
+/// Whether the sites about the feet of a junction (all its edges' ends there, unmerged) are
+/// three lines or reflex corners and Krawczyk's test proves a point equidistant from them
+/// within `JUNCTION_ROOM` of it ([`proven_within`]): where the distances' differences are
+/// nearly parallel (two sides meeting at a corner that turns by 1e-6 rad, their feet closer
+/// than feet are merged), which the winding test cannot part.
+fn closed_form_junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
+    let x = V2::from_arr(node.xy);
+    JUNCTION_ROOM.iter().any(|&room| {
+        let reach = room * sites.size;
+        let mut closed: Vec<ClosedSite> = Vec::new();
+        for f in feet {
+            match closed_site_at(sites, f.boundary, f.u, x, reach) {
+                Some(site) if !closed.contains(&site) => closed.push(site),
+                Some(_) => {}
+                None => return false,
+            }
+        }
+        // (The box's half-width: its corners within the room of its centre.)
+        <[ClosedSite; 3]>::try_from(closed)
+            .is_ok_and(|c| proven_within(c, x, reach / std::f64::consts::SQRT_2))
     })
 }
 
@@ -631,6 +668,63 @@ mod tests {
         let mut nudged = axis.clone();
         nudged.nodes[j].xy[1] += 0.2 * JUNCTION_ROOM[0] * sites.size;
         assert_eq!(doubt(&sites, &nudged, TOL, &HashSet::new()), None);
+    }
+
+    /// A 10 × 6 box whose bottom side bends outwards at its middle by `turn` (rad): a convex
+    /// corner whose leaf meets the two bottom sides' bisectors with the top's at a junction
+    /// whose two equations of the bottom sides are nearly one.
+    fn bent_box(turn: f64) -> Region {
+        let dip = 5.0 * (0.5 * turn).tan();
+        let c = [
+            [0.0, 0.0],
+            [5.0, -dip],
+            [10.0, 0.0],
+            [10.0, 6.0],
+            [0.0, 6.0],
+        ];
+        let sides = (0..5)
+            .map(|i| Segment::line(c[i], c[(i + 1) % 5]))
+            .collect::<Result<Vec<_>, _>>()
+            .expect("sides");
+        Region::new(Profile::new(sides, None).expect("profile"), vec![]).expect("box")
+    }
+
+    /// Beside a convex corner that turns by 1e-3 to 1e-5 rad, the junction on its leaf is
+    /// proven in closed form (Krawczyk's test) where the winding test cannot part its
+    /// equations (from 1e-4 rad on), and lies where the closed form puts it: on the leaf
+    /// `x = 5`, as far from the top as from the bottom sides' lines.
+    #[test]
+    fn a_junction_beside_a_nearly_flat_corner_is_proven_in_closed_form() {
+        for turn in [1e-3, 1e-4, 1e-5] {
+            let region = bent_box(turn);
+            let sites = Sites::new(&region, false);
+            let axis = medial_axis(&region, &MedialOptions::default()).expect("axis");
+            assert!(axis.certified, "{turn}: {:?}", axis.reason);
+            let node = axis
+                .nodes
+                .iter()
+                .find(|n| n.kind == NodeKind::Junction && (n.xy[0] - 5.0).abs() < 0.5)
+                .expect("the leaf's junction");
+            // (The bottom-left side's unit normal, and the distance from it equal to 6 − y.)
+            let dip = 5.0 * (0.5 * turn).tan();
+            let normal = V2::new(dip, 5.0) * (1.0 / dip.hypot(5.0));
+            let y = (6.0 - 5.0 * normal.x) / (normal.y + 1.0);
+            let off = (V2::from_arr(node.xy) - V2::new(5.0, y)).norm();
+            assert!(off < JUNCTION_ROOM[1] * sites.size, "{turn}: {off:e}");
+            if turn <= 1e-4 {
+                let mut edges: Vec<usize> = Vec::new();
+                for (k, e) in axis.edges.iter().enumerate() {
+                    if e.from == node.id || e.to == node.id {
+                        edges.push(k);
+                    }
+                }
+                let same = SAME_FOOT * sites.size;
+                let merged = feet_of(&sites, &axis, &edges, node.id, same);
+                assert!(!junction_proven(&sites, node, &merged), "{turn}");
+                let all = feet_of(&sites, &axis, &edges, node.id, 0.0);
+                assert!(closed_form_junction_proven(&sites, node, &all), "{turn}");
+            }
+        }
     }
 
     #[test]

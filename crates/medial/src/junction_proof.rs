@@ -15,7 +15,8 @@
 //! are nearly parallel (a reflex corner 1e-6 of the size off a far side's line): the
 //! derivatives this test uses can.
 
-use curve::V2;
+use crate::sites::Sites;
+use curve::{JointKind, SegmentKind, V2};
 
 /// Units of rounding of the distance itself a distance in closed form carries (a generous
 /// bound: the difference of the point and the site rounds by half a unit of itself, the
@@ -28,7 +29,7 @@ const DISTANCE_ULPS: f64 = 16.0;
 const PRODUCT_ULPS: f64 = 8.0;
 
 /// A site with a distance in closed form.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum ClosedSite {
     /// A line through `start` with unit normal `inward`: the signed distance.
     Line { start: V2, inward: V2 },
@@ -108,6 +109,59 @@ pub(crate) fn proven_within(sites: [ClosedSite; 3], x: V2, h: f64) -> bool {
         .fold(0.0, f64::max);
     let slack = 1.0 - PRODUCT_ULPS * f64::EPSILON;
     newton.is_finite() && newton + contraction * h < h * slack
+}
+
+/// A foot this near a joint (in the profile parameter, a share of the segments) is at it.
+const AT_JOINT: f64 = 1e-12;
+
+/// The site, with its distance in closed form, that boundary `b` is about its foot at
+/// profile parameter `u` for every point within `reach` of `x`: the line of a straight
+/// segment whose inside the points all project to, or a reflex corner whose fan they all lie
+/// in. There the distance to that stretch of the boundary is the site's. `None` elsewhere
+/// (a curved piece, a foot near a segment's end, a point near a fan's edge).
+pub(crate) fn closed_site_at(
+    sites: &Sites<'_>,
+    b: usize,
+    u: f64,
+    x: V2,
+    reach: f64,
+) -> Option<ClosedSite> {
+    let profile = sites.boundaries[b];
+    let segments = profile.segments();
+    let n = segments.len();
+    let side = sites.inside_left(b);
+    let joint = u.round();
+    if (u - joint).abs() <= AT_JOINT * n as f64 {
+        let at = joint as usize % n;
+        let turn = profile
+            .joints()
+            .iter()
+            .find(|j| j.u as usize % n == at && j.kind != JointKind::Smooth)
+            .map(|j| j.turn)?;
+        if turn * side >= 0.0 {
+            return None; // (a convex corner: no fan)
+        }
+        let corner = segments[at].start();
+        let (into, out) = (
+            segments[(at + n - 1) % n].end_direction()?,
+            segments[at].start_direction()?,
+        );
+        // (Past the end of the segment before, short of the start of the one after.)
+        let d = x - corner;
+        return (d.dot(into) > 2.0 * reach && d.dot(out) < -2.0 * reach)
+            .then_some(ClosedSite::Point(corner));
+    }
+    let segment = &segments[(u.floor().max(0.0) as usize).min(n - 1)];
+    if segment.kind() != SegmentKind::Line {
+        return None;
+    }
+    let (start, end) = (segment.start(), segment.end());
+    let length = (end - start).norm();
+    let along = (end - start) * (1.0 / length);
+    let inward = V2::new(-along.y, along.x) * side;
+    let t = along.dot(x - start);
+    (t > 2.0 * reach && t < length - 2.0 * reach && inward.dot(x - start) > 2.0 * reach)
+        .then_some(ClosedSite::Line { start, inward })
 }
 
 /// A few units of rounding of `v`.
@@ -209,5 +263,75 @@ mod tests {
         // Equidistant: y = 1 (the lines), |x − (0, 1e-6)| = 1.
         let x = V2::new((1.0f64 - (1.0 - 1e-6) * (1.0 - 1e-6)).sqrt(), 1.0);
         assert!(proven_within(sites, x, 1e-9));
+    }
+
+    /// The distance from `x` to the segment from `a` to `b` (brute force).
+    fn to_segment(x: V2, a: V2, b: V2) -> f64 {
+        let d = b - a;
+        let t = ((x - a).dot(d) / d.dot(d)).clamp(0.0, 1.0);
+        (x - (a + d * t)).norm()
+    }
+
+    /// Wherever a closed site is given for a foot, its distance is the distance to the
+    /// boundary's segments about the foot (the segment, or both sides of a reflex corner)
+    /// at every point sampled within the reach: on random stars with reflex corners, feet
+    /// along the sides and at the corners, points off them at random distances and angles.
+    #[test]
+    fn a_closed_site_is_the_distance_to_its_stretch_of_boundary() {
+        let mut rnd = rng(4101);
+        let (mut lines, mut points) = (0, 0);
+        for _ in 0..200 {
+            let n = 5 + (6.0 * rnd()) as usize;
+            let radii: Vec<f64> = (0..n).map(|_| 0.6 + rnd()).collect();
+            let wobble: Vec<f64> = (0..n).map(|_| 0.3 * (rnd() - 0.5)).collect();
+            let Some(region) = crate::test_shapes::polygon_star(&radii, &wobble, &[]) else {
+                continue;
+            };
+            let sites = Sites::new(&region, false);
+            let segments = region.outer().segments();
+            let m = segments.len();
+            let k = (m as f64 * rnd()) as usize % m;
+            // (At the corner, or along the side.)
+            let u = if rnd() < 0.5 {
+                k as f64
+            } else {
+                k as f64 + rnd()
+            };
+            let foot = V2::from_arr(sites.foot(0, u));
+            // (From a corner, about the middle of its fan if it has one: away from both
+            // sides.)
+            let middle = segments[(k + m - 1) % m].end_direction().unwrap()
+                - segments[k].start_direction().unwrap();
+            let angle = if u.fract() == 0.0 && middle.norm() > 1e-3 {
+                middle.y.atan2(middle.x) + 0.2 * (rnd() - 0.5)
+            } else {
+                std::f64::consts::TAU * rnd()
+            };
+            let x = foot + V2::new(angle.cos(), angle.sin()) * (0.3 * rnd());
+            let reach = 1e-3 * rnd();
+            let Some(site) = closed_site_at(&sites, 0, u, x, reach) else {
+                continue;
+            };
+            let near = |y: V2| {
+                (0..m)
+                    .filter(|&j| j == k || (u.fract() == 0.0 && j == (k + m - 1) % m))
+                    .map(|j| to_segment(y, segments[j].start(), segments[j].end()))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            match site {
+                ClosedSite::Line { .. } => lines += 1,
+                ClosedSite::Point(_) => points += 1,
+            }
+            for _ in 0..20 {
+                let y = x + V2::new(rnd() - 0.5, rnd() - 0.5) * (2.0 * reach);
+                let (closed, ..) = site.at(y, 0.0).expect("away from the site");
+                assert!(
+                    (closed - near(y)).abs() < 1e-12,
+                    "{site:?} at {y:?}: {closed} vs {}",
+                    near(y)
+                );
+            }
+        }
+        assert!(lines > 20 && points > 5, "{lines} lines, {points} points");
     }
 }

@@ -28,7 +28,7 @@ const MERGE: f64 = 1e-6;
 
 /// A foot whose profile parameter lies this near a reflex corner's is at the corner (the
 /// bisectors of a corner give its parameter exactly; a foot merely near it has moved on).
-const AT_CORNER: f64 = 1e-12;
+pub(crate) const AT_CORNER: f64 = 1e-12;
 
 /// Steps of the feet against the run of a side smaller than this (in the line's units) are
 /// rounding, not a turn back.

@@ -15,6 +15,7 @@
 //! are nearly parallel (a reflex corner 1e-6 of the size off a far side's line): the
 //! derivatives this test uses can.
 
+use crate::coverage::AT_CORNER;
 use crate::sites::Sites;
 use curve::{JointKind, SegmentKind, V2};
 
@@ -111,9 +112,6 @@ pub(crate) fn proven_within(sites: [ClosedSite; 3], x: V2, h: f64) -> bool {
     newton.is_finite() && newton + contraction * h < h * slack
 }
 
-/// A foot this near a joint (in the profile parameter, a share of the segments) is at it.
-const AT_JOINT: f64 = 1e-12;
-
 /// The site, with its distance in closed form, that boundary `b` is about its foot at
 /// profile parameter `u` for every point within `reach` of `x`: the line of a straight
 /// segment whose inside the points all project to, or a reflex corner whose fan they all lie
@@ -131,13 +129,16 @@ pub(crate) fn closed_site_at(
     let n = segments.len();
     let side = sites.inside_left(b);
     let joint = u.round();
-    if (u - joint).abs() <= AT_JOINT * n as f64 {
+    if (u - joint).abs() <= AT_CORNER * n as f64 {
         let at = joint as usize % n;
-        let turn = profile
-            .joints()
-            .iter()
-            .find(|j| j.u as usize % n == at && j.kind != JointKind::Smooth)
-            .map(|j| j.turn)?;
+        // (A joint's parameter is the index of the segment that starts there.)
+        let joints = profile.joints();
+        let turn = joints
+            .binary_search_by(|j| j.u.total_cmp(&(at as f64)))
+            .ok()
+            .map(|k| joints[k])
+            .filter(|j| j.kind != JointKind::Smooth)?
+            .turn;
         if turn * side >= 0.0 {
             return None; // (a convex corner: no fan)
         }

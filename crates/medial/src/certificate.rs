@@ -17,6 +17,7 @@
 //!   boundary, anywhere on a cycle, on the clip box (exact data or no claim of place).
 
 use crate::assemble::root;
+use crate::coverage::within_in_x;
 use crate::curvature::proven_rate_sign;
 use crate::junction_proof::{closed_site_at, proven_within, ClosedSite};
 use crate::sites::{Disk, Sites};
@@ -316,14 +317,9 @@ impl Corners {
     /// there).
     fn at_corner(&self, sites: &Sites<'_>, node: &Node) -> bool {
         let room = JUNCTION_ROOM[1] * sites.size;
-        let x = node.xy[0];
-        let first = self.0.partition_point(|c| c.0[0] < x - room);
-        self.0[first..]
-            .iter()
-            .take_while(|c| c.0[0] <= x + room)
-            .any(|&(p, k, u)| {
-                distance(p, node.xy) <= room && !sites.inside_of(k, 0, u, true, node.xy)
-            })
+        within_in_x(&self.0, |c| c.0, node.xy, room).any(|&(p, k, u)| {
+            distance(p, node.xy) <= room && !sites.inside_of(k, 0, u, true, node.xy)
+        })
     }
 }
 

@@ -287,6 +287,20 @@ pub(crate) fn convex_corner_between(sites: &Sites<'_>, k: usize, a: f64, b: f64)
     )
 }
 
+/// The items of `sorted` (in increasing x of their points, `at`) whose x lies within `room`
+/// of `x`'s: the candidates for a point within `room` of `x`.
+pub(crate) fn within_in_x<'a, T>(
+    sorted: &'a [T],
+    at: impl Fn(&T) -> [f64; 2] + 'a,
+    x: [f64; 2],
+    room: f64,
+) -> impl Iterator<Item = &'a T> + 'a {
+    let first = sorted.partition_point(|c| at(c)[0] < x[0] - room);
+    sorted[first..]
+        .iter()
+        .take_while(move |c| at(c)[0] <= x[0] + room)
+}
+
 /// A convex corner (towards the axis) that no corner node of an axis is at: the end of a
 /// leaf of the true axis that the axis lacks.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -312,11 +326,7 @@ pub(crate) fn unreached_convex_corners(
         .collect();
     leaves.sort_by(|a, b| a[0].total_cmp(&b[0]));
     let reached = |x: V2| {
-        let from = leaves.partition_point(|p| p[0] < x.x - near);
-        leaves[from..]
-            .iter()
-            .take_while(|p| p[0] <= x.x + near)
-            .any(|p| (V2::from_arr(*p) - x).norm() <= near)
+        within_in_x(&leaves, |p| *p, x.arr(), near).any(|p| (V2::from_arr(*p) - x).norm() <= near)
     };
     let mut out = Vec::new();
     for (k, b) in sites.boundaries.iter().enumerate() {

@@ -42,7 +42,7 @@ pub(crate) enum PairSource {
     /// Those that can share an empty disk by bounds on the distances ([`crate::pairs`]).
     Bounds,
     /// No pairs: the seed's edges themselves, traced in closed form, where the boundaries are
-    /// lines alone ([`crate::line_axis`]); [`candidates`] takes it as `Bounds`.
+    /// lines and circular arcs ([`crate::traced_axis`]); [`candidates`] takes it as `Bounds`.
     SeedEdges,
     /// Every pair (the tests compare the others with it).
     #[cfg(test)]

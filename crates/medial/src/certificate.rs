@@ -86,6 +86,9 @@ pub(crate) enum Doubt {
     Corner,
     /// The graph is not one piece with a cycle per hole (the axis inside a region is).
     Graph,
+    /// The feet of the edges do not cover the boundaries once round ([`crate::coverage`]):
+    /// a piece of the axis may be missing.
+    Coverage,
 }
 
 impl Doubt {
@@ -100,6 +103,10 @@ impl Doubt {
                 "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
             }
             Doubt::Graph => "the graph is not one connected piece with one cycle per hole",
+            Doubt::Coverage => {
+                "the feet of the edges do not cover the boundaries once round: a piece of the \
+                 axis may be missing"
+            }
             Doubt::Corner => {
                 "a corner leaf is not at a corner of the boundary convex for the region"
             }

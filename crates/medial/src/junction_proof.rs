@@ -1,4 +1,4 @@
-//! A junction of three sites whose distances have closed forms (lines and points), proven by
+//! A junction of three sites whose distances have closed forms (lines, points and circles), proven by
 //! Krawczyk's test: a box about the point found holds exactly one point equidistant from the
 //! three.
 //!
@@ -17,6 +17,7 @@
 
 use crate::coverage::AT_CORNER;
 use crate::sites::Sites;
+use crate::true_sites::LineSite;
 use curve::{JointKind, SegmentKind, V2};
 
 /// Units of rounding of the distance itself a distance in closed form carries (a generous
@@ -36,6 +37,9 @@ pub(crate) enum ClosedSite {
     Line { start: V2, inward: V2 },
     /// A point.
     Point(V2),
+    /// A circle about `centre` of radius `radius`, with the axis on side `side` of it (+1
+    /// outside, −1 inside): the signed distance `side · (|x − centre| − radius)`.
+    Circle { centre: V2, radius: f64, side: f64 },
 }
 
 impl ClosedSite {
@@ -54,6 +58,26 @@ impl ClosedSite {
                 let error = DISTANCE_ULPS * f64::EPSILON * r;
                 let reach = std::f64::consts::SQRT_2 * h;
                 (r > 2.0 * reach).then(|| (r, error, d * (1.0 / r), reach / (r - reach)))
+            }
+            ClosedSite::Circle {
+                centre,
+                radius,
+                side,
+            } => {
+                // (As a point's, the gradient turning about the centre; the radius's rounding
+                // adds to the distance's.)
+                let d = x - centre;
+                let r = d.norm();
+                let error = DISTANCE_ULPS * f64::EPSILON * (r + radius);
+                let reach = std::f64::consts::SQRT_2 * h;
+                (r > 2.0 * reach).then(|| {
+                    (
+                        side * (r - radius),
+                        error,
+                        d * (side / r),
+                        reach / (r - reach),
+                    )
+                })
             }
         }
     }
@@ -156,12 +180,10 @@ pub(crate) fn closed_site_at(
     if segment.kind() != SegmentKind::Line {
         return None;
     }
-    let (start, end) = (segment.start(), segment.end());
-    let length = (end - start).norm();
-    let along = (end - start) * (1.0 / length);
-    let inward = V2::new(-along.y, along.x) * side;
-    let t = along.dot(x - start);
-    (t > 2.0 * reach && t < length - 2.0 * reach && inward.dot(x - start) > 2.0 * reach)
+    let line = LineSite::new(segment.start(), segment.end(), side);
+    let (start, inward) = (line.start, line.inward);
+    let t = line.along.dot(x - start);
+    (t > 2.0 * reach && t < line.length - 2.0 * reach && inward.dot(x - start) > 2.0 * reach)
         .then_some(ClosedSite::Line { start, inward })
 }
 
@@ -246,6 +268,40 @@ mod tests {
         assert!(proven > 400, "{proven}");
     }
 
+    /// Two lines at a right angle and a circle, the axis outside it or inside it: the point
+    /// of their diagonal as far from the circle, in closed form, is proven; a box moved by
+    /// three half-widths along the diagonal is not.
+    #[test]
+    fn proves_a_line_line_circle_junction() {
+        let lines = [
+            ClosedSite::Line {
+                start: V2::new(0.0, 0.0),
+                inward: V2::new(0.0, 1.0),
+            },
+            ClosedSite::Line {
+                start: V2::new(0.0, 0.0),
+                inward: V2::new(1.0, 0.0),
+            },
+        ];
+        let root2 = std::f64::consts::SQRT_2;
+        // Outside the circle about (3, 3) of radius 1: √2 (3 − t) − 1 = t. Inside the one
+        // about (1, 1) of radius 5: 5 − √2 (t − 1) = t.
+        for (centre, radius, side, t) in [
+            (3.0, 1.0, 1.0, (3.0 * root2 - 1.0) / (1.0 + root2)),
+            (1.0, 5.0, -1.0, (5.0 + root2) / (1.0 + root2)),
+        ] {
+            let circle = ClosedSite::Circle {
+                centre: V2::new(centre, centre),
+                radius,
+                side,
+            };
+            let sites = [lines[0], lines[1], circle];
+            let x = V2::new(t, t);
+            assert!(proven_within(sites, x, 1e-9), "{circle:?}");
+            assert!(!proven_within(sites, x + V2::new(3e-9, 3e-9), 1e-9));
+        }
+    }
+
     /// A junction of a point 1e-6 off one of two parallel lines, its disk touching both
     /// lines: the point's gradient nearly the line's.
     #[test]
@@ -322,6 +378,7 @@ mod tests {
             match site {
                 ClosedSite::Line { .. } => lines += 1,
                 ClosedSite::Point(_) => points += 1,
+                ClosedSite::Circle { .. } => unreachable!("a polygon has no arcs"),
             }
             for _ in 0..20 {
                 let y = x + V2::new(rnd() - 0.5, rnd() - 0.5) * (2.0 * reach);

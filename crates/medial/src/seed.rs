@@ -34,15 +34,15 @@ use std::f64::consts::PI;
 /// their pairs, which the coverage shows).
 const GRID: f64 = (1u64 << 29) as f64;
 
-/// How far a chord may stray from its piece of the boundary, as a share of the size: the
-/// seed's edges stray about as far from the axis's. Finer costs chords (the diagram takes
-/// ~20 µs a segment), coarser misses more short pieces of the axis (each miss costs the
-/// axis built again from the bounds' pairs).
-const CHORD_SAG: f64 = 1e-3;
+/// How far a chord may stray from its piece of the boundary, as a share of the size, where
+/// the seed names pairs: the seed's edges stray about as far from the axis's. Finer costs
+/// chords (the diagram takes ~20 µs a segment), coarser misses more short pieces of the axis
+/// (each miss costs the axis built again from the bounds' pairs).
+pub(crate) const CHORD_SAG: f64 = 1e-3;
 
 /// The most the tangent may turn along one chord: the chords' normals then fan out as the
 /// piece's do, so a disk touching it is seen touching its chords.
-const CHORD_TURN: f64 = PI / 8.0;
+pub(crate) const CHORD_TURN: f64 = PI / 8.0;
 
 /// Halvings of a curve's parameter made before its chords are judged: an S-shaped cubic has
 /// its middle on its chord and parallel end tangents, and would pass the tests whole.
@@ -102,19 +102,20 @@ pub(crate) fn seed_pairs(
     bounds: [f64; 4],
     size: f64,
 ) -> Option<Neighbours> {
-    let (approx, diagram) = chord_diagram(boundaries, inside_left, bounds, size)?;
+    let (approx, diagram) = chord_diagram(boundaries, inside_left, bounds, size, CHORD_SAG)?;
     pairs_on_side(&approx, &diagram, inside_left).map(Neighbours::Only)
 }
 
-/// The boundaries' chords (see [`seed_pairs`]) and their Voronoi diagram; `None` where no
-/// seed can be made.
+/// The boundaries' chords (see [`seed_pairs`]), within `sag` of the size of their pieces,
+/// and their Voronoi diagram; `None` where no seed can be made.
 pub(crate) fn chord_diagram(
     boundaries: &[&Profile],
     inside_left: &[f64],
     bounds: [f64; 4],
     size: f64,
+    sag: f64,
 ) -> Option<(Approximation, Diagram)> {
-    let approx = approximate(boundaries, inside_left, bounds, size)?;
+    let approx = approximate(boundaries, inside_left, bounds, size, sag)?;
     let lines: Vec<Line<i32>> = (0..approx.points.len())
         .map(|j| {
             let (p, q) = (approx.points[j], approx.points[approx.next[j]]);
@@ -137,6 +138,7 @@ fn approximate(
     inside_left: &[f64],
     bounds: [f64; 4],
     size: f64,
+    sag: f64,
 ) -> Option<Approximation> {
     let span = (bounds[2] - bounds[0]).max(bounds[3] - bounds[1]);
     if !(span > 0.0 && span.is_finite()) {
@@ -150,7 +152,7 @@ fn approximate(
             ((p.y - cy) * scale).round() as i32,
         ]
     };
-    let sag = CHORD_SAG * size;
+    let sag = sag * size;
     let mut approx = Approximation {
         points: Vec::new(),
         owner: Vec::new(),

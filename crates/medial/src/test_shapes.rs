@@ -147,3 +147,89 @@ pub(crate) fn stands_as_the_bounds(
         "the {source:?} axis stood on {stood} of {certified} certified"
     );
 }
+
+/// A gear of `n` teeth about the origin: per tooth a tip arc (radius 10), a flank down, a
+/// root arc (radius 9.2) and a flank up, the arcs meeting the flanks at corners; with a round
+/// hole of radius 3 at the middle.
+pub(crate) fn gear(n: usize) -> Region {
+    let pitch = std::f64::consts::TAU / n as f64;
+    let (tip, root, half) = (10.0, 9.2, 0.18 * pitch);
+    let at = |r: f64, a: f64| (V2::polar(a) * r).arr();
+    let mut segments = Vec::with_capacity(4 * n);
+    for k in 0..n {
+        let a = k as f64 * pitch;
+        let (b, c, d) = (
+            a + 0.5 * pitch - half,
+            a + 0.5 * pitch + half,
+            a + pitch - half,
+        );
+        segments.push(Segment::arc([0.0, 0.0], tip, a - half, a + half).unwrap());
+        segments.push(Segment::line(at(tip, a + half), at(root, b)).unwrap());
+        segments.push(Segment::arc([0.0, 0.0], root, b, c).unwrap());
+        segments.push(Segment::line(at(root, c), at(tip, d)).unwrap());
+    }
+    let outer = Profile::new(segments, None).unwrap();
+    with_round_holes(outer, &[([0.0, 0.0], 3.0)]).unwrap()
+}
+
+/// A polygon round a star at `radii` (counter-clockwise) whose corners are rounded by
+/// tangent arcs of radius `fillet[i]` where it is positive and fits (convex and reflex
+/// corners alike), and whose sides between bulge by circular arcs of sagitta `bulge[i]` times
+/// their length where it is not nil (inward where positive; corners at their ends); with
+/// round holes near its middle where they fit.
+pub(crate) fn rounded_star(
+    radii: &[f64],
+    fillet: &[f64],
+    bulge: &[f64],
+    holes: &[([f64; 2], f64)],
+) -> Option<Region> {
+    let n = radii.len();
+    let corners: Vec<V2> = (0..n)
+        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
+        .collect();
+    // Per corner, where its sides leave it and the arc between (if any).
+    let mut ends: Vec<(V2, V2, Option<Segment>)> = Vec::with_capacity(n);
+    for i in 0..n {
+        let p = corners[i];
+        let (q, r) = (corners[(i + n - 1) % n], corners[(i + 1) % n]);
+        let (u, v) = ((q - p).unit(), (r - p).unit());
+        let half = 0.5 * u.cross(v).abs().atan2(u.dot(v));
+        let d = fillet[i] / half.tan();
+        if fillet[i] <= 0.0 || d > 0.4 * (q - p).norm().min((r - p).norm()) {
+            ends.push((p, p, None));
+            continue;
+        }
+        let (t1, t2) = (p + u * d, p + v * d);
+        let c = p + (u + v).unit() * (fillet[i] / half.sin());
+        let a1 = (t1 - c).angle();
+        let sweep = curve::wrap_pi((t2 - c).angle() - a1);
+        ends.push((
+            t1,
+            t2,
+            Some(Segment::arc(c.arr(), fillet[i], a1, a1 + sweep).ok()?),
+        ));
+    }
+    let mut segments = Vec::with_capacity(3 * n);
+    for i in 0..n {
+        let (_, a, _) = &ends[i];
+        let b = ends[(i + 1) % n].0;
+        let length = (b - *a).norm();
+        let h = bulge[i] * length;
+        if h == 0.0 {
+            segments.push(Segment::line(a.arr(), b.arr()).ok()?);
+        } else {
+            let radius = (0.25 * length * length + h * h) / (2.0 * h.abs());
+            let normal = (b - *a).perp() * (1.0 / length);
+            let middle = (*a + b) * 0.5;
+            let c = middle + normal * (h - h.signum() * radius);
+            let a1 = (*a - c).angle();
+            let sweep = 2.0 * curve::wrap_pi((middle + normal * h - c).angle() - a1);
+            segments.push(Segment::arc(c.arr(), radius, a1, a1 + sweep).ok()?);
+        }
+        if let Some(arc) = &ends[(i + 1) % n].2 {
+            segments.push(arc.clone());
+        }
+    }
+    // (The first corner's arc closes the chain: it was pushed last.)
+    with_round_holes(Profile::new(segments, None).ok()?, holes)
+}

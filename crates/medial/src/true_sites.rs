@@ -1,0 +1,315 @@
+//! The sites of a boundary of lines and circular arcs, in closed form: each line, each arc
+//! (its circle) and each corner (a point), with its signed distance on the axis's side and
+//! the normal rays its disks grow along. The traced path ([`crate::traced_axis`]) solves
+//! and traces the axis on them; the closed-form junction proof ([`crate::junction_proof`])
+//! takes its lines from here too.
+//!
+//! Every bisector of two such sites is a conic, and a point of it is found in closed form from
+//! the foot on either site: along that site's normal ray at the foot, the other site's
+//! distance equals the ray's length where an equation linear in that length holds (the
+//! squares of a circle's distances differ by a linear term).
+
+use curve::{OwnParam, Profile, SegmentKind, V2};
+use std::f64::consts::TAU;
+
+/// A true site: segment `segment` of boundary `boundary`, or the corner where it starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) struct TrueSite {
+    pub(crate) boundary: usize,
+    pub(crate) segment: usize,
+    pub(crate) corner: bool,
+}
+
+/// One line of a boundary: its start, unit direction, length and unit normal into the axis's
+/// side.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LineSite {
+    pub(crate) start: V2,
+    pub(crate) along: V2,
+    pub(crate) length: f64,
+    pub(crate) inward: V2,
+}
+
+impl LineSite {
+    /// The line from `start` to `end` of a boundary whose axis's side is on its left where
+    /// `inside_left` is positive.
+    pub(crate) fn new(start: V2, end: V2, inside_left: f64) -> Self {
+        let length = (end - start).norm();
+        let along = (end - start) * (1.0 / length);
+        Self {
+            start,
+            along,
+            length,
+            inward: V2::new(-along.y, along.x) * inside_left,
+        }
+    }
+}
+
+/// One circular arc of a boundary: its circle, the side of it the axis lies on, and where on
+/// the circle it runs.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ArcSite {
+    pub(crate) centre: V2,
+    pub(crate) radius: f64,
+    /// +1 where the axis lies outside the circle (the arc bulges into the region), −1 where
+    /// inside (the centre on the axis's side).
+    pub(crate) side: f64,
+    /// The angle of the arc's start, the direction it turns in (+1 counter-clockwise) and the
+    /// angle it sweeps (positive).
+    start_angle: f64,
+    turn: f64,
+    sweep: f64,
+    own: OwnParam,
+    domain: (f64, f64),
+}
+
+/// Room on the angle that tells a whole circle from an arc (as the arc's own reading of a
+/// full turn).
+const FULL_TURN: f64 = 1e-12;
+
+impl ArcSite {
+    /// Segment `i` of `profile` as an arc, its axis on the left where `inside_left` is
+    /// positive; `None` where it is no circular arc whose parameter is its angle's share.
+    pub(crate) fn new(profile: &Profile, i: usize, inside_left: f64) -> Option<Self> {
+        let segment = &profile.segments()[i];
+        let (centre, radius) = segment.circle()?;
+        let OwnParam::Arc {
+            pieces,
+            piece_sweep,
+        } = segment.own_param()
+        else {
+            return None;
+        };
+        let centre = V2::from_arr(centre);
+        let start = segment.start();
+        let turn = (start - centre).cross(segment.start_direction()?).signum();
+        let middle = profile.jet_on(i, i as f64 + 0.5, 1);
+        let side = if middle.d1.cross(centre - middle.p) * inside_left > 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        Some(Self {
+            centre,
+            radius,
+            side,
+            start_angle: (start - centre).angle(),
+            turn,
+            sweep: (pieces as f64 * piece_sweep).abs().min(TAU),
+            own: segment.own_param(),
+            domain: curve::ParamCurve::domain(segment),
+        })
+    }
+
+    /// Whether the arc is a whole circle (its ends one joint).
+    pub(crate) fn full(&self) -> bool {
+        self.sweep >= TAU - FULL_TURN
+    }
+
+    /// The angle of the foot of `x` from the arc's start, in the arc's direction: in
+    /// `[0, sweep]` on the arc, outside it by the nearer end's side (in `[0, 2π)` on a whole
+    /// circle).
+    pub(crate) fn angle_from_start(&self, x: V2) -> f64 {
+        let d = ((x - self.centre).angle() - self.start_angle) * self.turn;
+        let d = d.rem_euclid(TAU);
+        if d > self.sweep && d - self.sweep > TAU - d {
+            d - TAU
+        } else {
+            d
+        }
+    }
+
+    /// The angle the arc sweeps (positive).
+    pub(crate) fn sweep(&self) -> f64 {
+        self.sweep
+    }
+
+    /// The point of the circle at `angle` from the arc's start, in its direction.
+    pub(crate) fn point_at(&self, angle: f64) -> V2 {
+        self.centre + V2::polar(self.start_angle + self.turn * angle) * self.radius
+    }
+
+    /// The share `x ∈ [0, 1]` of the arc's segment in its profile's parameter (the profile
+    /// parameter is the segment's index plus it) at `angle` from its start.
+    pub(crate) fn share_at(&self, angle: f64) -> f64 {
+        let (a, b) = self.domain;
+        let w = (angle / self.sweep).clamp(0.0, 1.0);
+        ((self.own.form(w, self.domain) - a) / (b - a)).clamp(0.0, 1.0)
+    }
+}
+
+/// The geometry of a true site: a line, or a circle of radius `radius` about `centre` (a
+/// corner is one of radius nil) with the axis on side `side` of it (see [`ArcSite::side`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Shape {
+    Line(LineSite),
+    Round { centre: V2, radius: f64, side: f64 },
+}
+
+impl Shape {
+    /// A corner at `at`, as a site.
+    pub(crate) fn point(at: V2) -> Self {
+        Shape::Round {
+            centre: at,
+            radius: 0.0,
+            side: 1.0,
+        }
+    }
+
+    /// The distance from `x` (signed: positive on the axis's side), and its gradient (not a
+    /// number at a round site's centre).
+    pub(crate) fn distance(&self, x: V2) -> (f64, V2) {
+        match *self {
+            Shape::Line(l) => (l.inward.dot(x - l.start), l.inward),
+            Shape::Round {
+                centre,
+                radius,
+                side,
+            } => {
+                let d = x - centre;
+                let n = d.norm();
+                (side * (n - radius), d * (side / n))
+            }
+        }
+    }
+
+    /// The foot and the unit normal into the axis's side at foot parameter `t`: a line's
+    /// length along it from its start, a round site's angle.
+    pub(crate) fn ray(&self, t: f64) -> (V2, V2) {
+        match *self {
+            Shape::Line(l) => (l.start + l.along * t, l.inward),
+            Shape::Round {
+                centre,
+                radius,
+                side,
+            } => {
+                let u = V2::polar(t);
+                (centre + u * radius, u * side)
+            }
+        }
+    }
+
+    /// The foot parameter of `x` (see [`Shape::ray`]).
+    pub(crate) fn param_of(&self, x: V2) -> f64 {
+        match *self {
+            Shape::Line(l) => l.along.dot(x - l.start),
+            Shape::Round { centre, .. } => (x - centre).angle(),
+        }
+    }
+
+    /// How far along the ray from `foot` in direction `normal` (unit) this site's distance
+    /// equals the length: `None` where no such length is on the ray, or its point lies
+    /// beyond a circle's centre (where the distance is the other branch's).
+    pub(crate) fn radius_on_ray(&self, foot: V2, normal: V2) -> Option<f64> {
+        let rho = match *self {
+            // inward · (foot + ρ normal − start) = ρ
+            Shape::Line(l) => l.inward.dot(foot - l.start) / (1.0 - l.inward.dot(normal)),
+            // |foot + ρ normal − centre|² = (radius + side ρ)²: the squares of ρ cancel.
+            Shape::Round {
+                centre,
+                radius,
+                side,
+            } => {
+                let d = foot - centre;
+                (radius * radius - d.dot(d)) / (2.0 * (normal.dot(d) - radius * side))
+            }
+        };
+        let beyond = match *self {
+            Shape::Line(_) => false,
+            Shape::Round { radius, side, .. } => radius + side * rho < 0.0,
+        };
+        (rho.is_finite() && rho >= 0.0 && !beyond).then_some(rho)
+    }
+
+    /// How far a point of the axis at `x` is from where its foot parameter is ill-defined (a
+    /// round site's centre); a line's feet are defined everywhere.
+    pub(crate) fn param_room(&self, x: V2) -> f64 {
+        match *self {
+            Shape::Line(_) => f64::INFINITY,
+            Shape::Round { centre, .. } => (x - centre).norm(),
+        }
+    }
+}
+
+/// Whether every segment of `profile` has a shape here: a line, or an arc ([`ArcSite::new`]).
+pub(crate) fn lines_and_arcs(profile: &Profile) -> bool {
+    (0..profile.segments().len()).all(|i| match profile.segments()[i].kind() {
+        SegmentKind::Line => true,
+        SegmentKind::Arc => ArcSite::new(profile, i, 1.0).is_some(),
+        _ => false,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    proptest::proptest! {
+        /// Along any normal ray of one site, the point [`Shape::radius_on_ray`] gives is as
+        /// far from the other site (by its distance) as from the ray's foot, for every pair
+        /// of lines, circles either side and points.
+        #[test]
+        fn a_ray_meets_the_bisector_at_the_radius_given(
+            kinds in proptest::array::uniform2(0usize..4),
+            c in proptest::array::uniform4(-3.0f64..3.0),
+            r in proptest::array::uniform2(0.1f64..2.0),
+            t in 0.0f64..6.3,
+        ) {
+            let shape = |k: usize, c: [f64; 2], r: f64| match k {
+                0 => Shape::Line(LineSite::new(V2::from_arr(c), V2::from_arr(c) + V2::polar(r * 3.0), 1.0)),
+                1 => Shape::point(V2::from_arr(c)),
+                2 => Shape::Round { centre: V2::from_arr(c), radius: r, side: 1.0 },
+                _ => Shape::Round { centre: V2::from_arr(c), radius: r, side: -1.0 },
+            };
+            let a = shape(kinds[0], [c[0], c[1]], r[0]);
+            let b = shape(kinds[1], [c[2], c[3]], r[1]);
+            let (foot, normal) = a.ray(t);
+            if let Some(rho) = b.radius_on_ray(foot, normal) {
+                let x = foot + normal * rho;
+                let scale = 1.0 + rho + x.norm();
+                proptest::prop_assert!((b.distance(x).0 - rho).abs() <= 1e-9 * scale);
+                // (On a circle's near side of its centre, the foot's own distance is ρ too.)
+                if a.param_room(x) > 1e-6 && !matches!(a, Shape::Round { side, radius, .. } if side < 0.0 && rho > radius) {
+                    proptest::prop_assert!((a.distance(x).0 - rho).abs() <= 1e-9 * scale);
+                    let back = a.ray(a.param_of(x)).0;
+                    if !matches!(a, Shape::Line(_)) && a.param_room(x) > 1e-3 {
+                        proptest::prop_assert!((back - foot).norm() <= 1e-8 * scale);
+                    }
+                }
+            }
+        }
+    }
+
+    /// An arc's angles and shares: its ends at 0 and its sweep, shares 0 and 1; its middle at
+    /// half the sweep; a point past its end reads past the sweep, one before its start below 0.
+    #[test]
+    fn an_arcs_angles_and_shares_follow_it() {
+        for (start, end) in [(0.3, 2.0), (2.0, 0.3), (-1.0, 4.5), (1.0, 1.0 - TAU)] {
+            let arc = curve::Segment::arc([1.0, -2.0], 1.5, start, end).unwrap();
+            let segments = if f64::abs(end - start) < TAU {
+                let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
+                vec![arc, line]
+            } else {
+                vec![arc]
+            };
+            let profile = Profile::new(segments, None).unwrap();
+            let a = ArcSite::new(&profile, 0, 1.0).unwrap();
+            let sweep = f64::abs(end - start);
+            assert!((a.sweep() - sweep).abs() < 1e-12);
+            let at = |angle: f64| a.point_at(angle);
+            assert!((at(0.0) - profile.segments()[0].start()).norm() < 1e-12);
+            assert!((at(sweep) - profile.segments()[0].end()).norm() < 1e-12);
+            for share in [0.1, 0.5, 0.9] {
+                let x = at(share * sweep);
+                assert!((a.angle_from_start(x) - share * sweep).abs() < 1e-12);
+                // The share is the profile parameter's: the profile's point there is x.
+                let u = a.share_at(share * sweep);
+                assert!((profile.jet_on(0, u, 0).p - x).norm() < 1e-12, "{share}");
+            }
+            if sweep < TAU - 0.2 {
+                assert!(a.angle_from_start(at(sweep + 0.05)) > sweep);
+                assert!(a.angle_from_start(at(-0.05)) < 0.0);
+            }
+        }
+    }
+}

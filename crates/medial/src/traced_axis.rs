@@ -1191,6 +1191,30 @@ mod tests {
         stands_as_the_bounds(&mut rng(3902), PairSource::SeedEdges, make, same);
     }
 
+    /// Case 379 of [`the_traced_axis_is_the_bounds_axis_with_arcs`]: two arcs meet at a
+    /// convex corner of 0.012 rad, whose leaf is short. The bounds' pairs miss that leaf,
+    /// and their axis is then not certified for its feet's gap (it was, before every axis
+    /// was asked to cover its boundaries); the traced axis has the leaf and is certified.
+    #[test]
+    fn a_missed_leaf_leaves_the_axis_uncertified() {
+        let mut rnd = rng(3902);
+        let region = (0..=379).filter_map(|_| random_rounded(&mut rnd)).last();
+        let region = region.unwrap();
+        let opts = MedialOptions::default();
+        let bounds = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
+        assert!(!bounds.certified);
+        assert_eq!(
+            bounds.reason.as_deref(),
+            Some(crate::certificate::Doubt::Coverage.reason())
+        );
+        let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
+        assert!(stands && traced.certified, "{:?}", traced.reason);
+        let corner = [-0.5443380122571256, 0.9428210937203926];
+        assert!(traced.nodes.iter().any(|n| n.kind == crate::NodeKind::Corner
+            && (V2::from_arr(n.xy) - V2::from_arr(corner)).norm() < 1e-9));
+        assert_eq!(traced.nodes.len(), bounds.nodes.len() + 1);
+    }
+
     /// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
     fn hull(mut points: Vec<V2>) -> Vec<V2> {
         points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));

@@ -89,6 +89,8 @@ pub(crate) enum Doubt {
     /// The feet of the edges do not cover the boundaries once round ([`crate::coverage`]):
     /// a piece of the axis may be missing.
     Coverage,
+    /// A search limit was hit.
+    SearchLimit,
 }
 
 impl Doubt {
@@ -114,7 +116,32 @@ impl Doubt {
                 "an end was not proven at an arc's centre, or at a centre of curvature within \
                  the tolerance of a proven peak of the curvature"
             }
+            Doubt::SearchLimit => "a search limit was hit",
         }
+    }
+
+    /// The reason as the result states it for `axis` of `sites`: where a piece may be
+    /// missing (the graph's shape or the feet's gap), with the first convex corner no leaf
+    /// reaches, if any.
+    pub(crate) fn stated(self, sites: &Sites<'_>, axis: &MedialAxis) -> String {
+        let reason = self.reason();
+        if !matches!(self, Doubt::Graph | Doubt::Coverage) {
+            return reason.to_string();
+        }
+        let unreached = crate::coverage::unreached_convex_corners(sites, axis);
+        let Some(first) = unreached.first() else {
+            return reason.to_string();
+        };
+        let more = match unreached.len() - 1 {
+            0 => String::new(),
+            1 => " (and 1 more such corner)".to_string(),
+            m => format!(" (and {m} more such corners)"),
+        };
+        format!(
+            "{reason}: no leaf reaches the convex corner at ({}, {}) of boundary {}, which turns \
+             by {:.1e} rad{more}",
+            first.xy[0], first.xy[1], first.boundary, first.turn,
+        )
     }
 }
 

@@ -55,6 +55,7 @@ pub use error::{Error, Result};
 pub use fit::EdgeSpline;
 
 use candidates::PairSource;
+use certificate::Doubt;
 use curve::Region;
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
@@ -279,49 +280,29 @@ fn axis_of(
     let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found, merge);
     axis.complete &= complete;
     let doubt = if !axis.complete {
-        Some("a search limit was hit")
+        Some(Doubt::SearchLimit)
     } else if !opts.exterior && !certificate::shaped_like_the_region(&axis, region.holes().len()) {
-        Some(certificate::Doubt::Graph.reason())
+        Some(Doubt::Graph)
     } else {
         // (The nodes' proofs test disks too: whether any disk was undecided is asked after.)
         let at_node = certificate::doubt(&sites, &axis, opts.tol, &proven);
         if sites.some_disk_undecided() {
-            Some(certificate::Doubt::Disk.reason())
-        } else if let Some(d) = at_node {
-            Some(d.reason())
+            Some(Doubt::Disk)
+        } else if at_node.is_some() {
+            at_node
         } else if !opts.exterior
             && !axis.edges.is_empty()
             && coverage::feet_cover(&sites, &axis).is_err()
         {
             // (Whatever path found the pairs: a bisector the candidates missed leaves a gap.
             // An axis of one node, a disk's centre, has no feet: its node's proof is whole.)
-            Some(certificate::Doubt::Coverage.reason())
+            Some(Doubt::Coverage)
         } else {
             None
         }
     };
     axis.certified = doubt.is_none();
-    axis.reason = doubt.map(str::to_string);
-    if doubt == Some(certificate::Doubt::Graph.reason()) {
-        // (Where a leaf is missing, the reason names its corner.)
-        let unreached = coverage::unreached_convex_corners(&sites, &axis);
-        if let Some(first) = unreached.first() {
-            let more = match unreached.len() - 1 {
-                0 => String::new(),
-                1 => " (and 1 more such corner)".to_string(),
-                m => format!(" (and {m} more such corners)"),
-            };
-            axis.reason = Some(format!(
-                "{}: no leaf reaches the convex corner at ({}, {}) of boundary {}, which \
-                 turns by {:.1e} rad{more}",
-                certificate::Doubt::Graph.reason(),
-                first.xy[0],
-                first.xy[1],
-                first.boundary,
-                first.turn,
-            ));
-        }
-    }
+    axis.reason = doubt.map(|d| d.stated(&sites, &axis));
     if opts.fit {
         let tol = traced.chord_tol * sites.size;
         for e in &mut axis.edges {

@@ -4,6 +4,8 @@
 //!   Voronoi diagram of the same segments (integer coordinates, as it takes them), and so the
 //!   CAD outline of 1,500 and 5,000 lines (a plate's arcs as chords, its sides as collinear
 //!   runs);
+//! - the medial axis of gears of 25 and 100 teeth (lines and arcs) against boostvoronoi's
+//!   diagram of their arcs as chords within the axis's chord tolerance;
 //! - the pocket's offsets at step 0.25 (the axis included) and the star of 400 lines' offsets
 //!   at step 0.05 (its axis included too) against CavalierContours' parallel offsets at the
 //!   same distances.
@@ -28,19 +30,33 @@ use std::time::Duration;
 mod common;
 #[path = "common/read.rs"]
 mod read;
-use common::{dense_outline, polygon, star_polygon, POCKET};
+use common::{dense_outline, gear, gear_chords, polygon, star_polygon, POCKET};
 use read::region_of;
 
 /// The grid boostvoronoi's integer input is snapped to: the star spans [-1.1, 1.1].
 const GRID: f64 = 1e6;
 
 fn boost_diagram(vertices: &[[f64; 2]]) -> usize {
-    let n = vertices.len();
-    let snap = |p: [f64; 2]| [(p[0] * GRID).round() as i64, (p[1] * GRID).round() as i64];
-    let lines: Vec<Line<i64>> = (0..n)
-        .map(|i| {
-            let (a, b) = (snap(vertices[i]), snap(vertices[(i + 1) % n]));
-            Line::from([a[0], a[1], b[0], b[1]])
+    boost_diagram_of_loops(&[vertices], 1.0)
+}
+
+/// boostvoronoi's diagram of the closed polylines `loops`, scaled by `scale` onto the grid's
+/// span; the number of its edges.
+fn boost_diagram_of_loops(loops: &[&[[f64; 2]]], scale: f64) -> usize {
+    let snap = |p: [f64; 2]| {
+        [
+            (p[0] * scale * GRID).round() as i64,
+            (p[1] * scale * GRID).round() as i64,
+        ]
+    };
+    let lines: Vec<Line<i64>> = loops
+        .iter()
+        .flat_map(|vertices| {
+            let n = vertices.len();
+            (0..n).map(move |i| {
+                let (a, b) = (snap(vertices[i]), snap(vertices[(i + 1) % n]));
+                Line::from([a[0], a[1], b[0], b[1]])
+            })
         })
         .collect();
     let diagram = Builder::<i64>::default()
@@ -153,6 +169,32 @@ fn peers(c: &mut Criterion) {
         });
         // (The traced path takes these in a fraction of a second: never capped.)
         bench_axis(&mut group, &format!("dense outline {n}"), n, &vertices);
+    }
+    group.finish();
+
+    // A part of lines and arcs: gears of 25 and 100 teeth, against boostvoronoi's diagram of
+    // their arcs as chords within the axis's chord tolerance (1e-3 of the size, 20).
+    let mut group = c.benchmark_group("gear_axis");
+    for n in [25, 100] {
+        let [outline, hole] = gear_chords(n, 1e-3 * 20.0);
+        let loops = [&outline[..], &hole[..]];
+        // (boostvoronoi's grid: the gear spans [-10, 10].)
+        group.bench_with_input(BenchmarkId::new("boostvoronoi", n), &loops, |b, l| {
+            b.iter(|| boost_diagram_of_loops(black_box(l), 0.1))
+        });
+        let region = gear(n);
+        let axis = medial_axis(&region, &opts).unwrap();
+        eprintln!(
+            "gear {n} ({} chords for boostvoronoi): {} nodes, {} edges, certified {} {}",
+            outline.len() + hole.len(),
+            axis.nodes.len(),
+            axis.edges.len(),
+            axis.certified,
+            axis.reason.as_deref().unwrap_or("")
+        );
+        group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
+            b.iter(|| medial_axis(black_box(r), &opts).unwrap())
+        });
     }
     group.finish();
 

@@ -2,7 +2,7 @@
 //! too, so a fault found on a benchmark shape is tested on that very shape).
 #![allow(dead_code)] // each benchmark takes what it needs
 
-use curve::{Profile, Segment, SegmentKind, SplineCurve, V2};
+use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
 
 /// Deterministic pseudo-random numbers in [0, 1).
 pub(crate) fn rng(seed: u64) -> impl FnMut() -> f64 {
@@ -168,4 +168,58 @@ pub(crate) fn dense_outline(n: usize) -> Vec<[f64; 2]> {
         }
     }
     out
+}
+
+/// The pitch and the tip's half-angle of a gear of `n` teeth, and its radii: tip, root and
+/// the round hole at its middle.
+fn gear_teeth(n: usize) -> (f64, f64, [f64; 3]) {
+    let pitch = std::f64::consts::TAU / n as f64;
+    (pitch, 0.18 * pitch, [10.0, 9.2, 3.0])
+}
+
+/// A gear of `n` teeth about the origin, as a DXF part draws it: per tooth a tip arc
+/// (radius 10), a flank down, a root arc (radius 9.2) and a flank up, the arcs meeting the
+/// flanks at corners; with a round hole of radius 3 at the middle (one whole arc).
+pub(crate) fn gear(n: usize) -> Region {
+    let (pitch, half, [tip, root, hole]) = gear_teeth(n);
+    let at = |r: f64, a: f64| (V2::polar(a) * r).arr();
+    let mut segments = Vec::with_capacity(4 * n);
+    for k in 0..n {
+        let a = k as f64 * pitch;
+        let (b, c, d) = (
+            a + 0.5 * pitch - half,
+            a + 0.5 * pitch + half,
+            a + pitch - half,
+        );
+        segments.push(Segment::arc([0.0, 0.0], tip, a - half, a + half).unwrap());
+        segments.push(Segment::line(at(tip, a + half), at(root, b)).unwrap());
+        segments.push(Segment::arc([0.0, 0.0], root, b, c).unwrap());
+        segments.push(Segment::line(at(root, c), at(tip, d)).unwrap());
+    }
+    let outer = Profile::new(segments, None).unwrap();
+    let hole = Segment::arc([0.0, 0.0], hole, 0.0, std::f64::consts::TAU).unwrap();
+    Region::new(outer, vec![Profile::new(vec![hole], None).unwrap()]).unwrap()
+}
+
+/// The gear of [`gear`] as closed polylines (its outline counter-clockwise, its hole
+/// clockwise), every arc cut into equal chords within `sag` of it.
+pub(crate) fn gear_chords(n: usize, sag: f64) -> [Vec<[f64; 2]>; 2] {
+    let (pitch, half, [tip, root, hole]) = gear_teeth(n);
+    // (The chords of an arc of radius r and angle θ within the sag: θ / (2 acos(1 − sag/r)).)
+    // (Both ends of an arc of the outline; a whole circle's start once.)
+    let arc = |r: f64, from: f64, angle: f64, ends: usize| -> Vec<[f64; 2]> {
+        let k = (angle.abs() / (2.0 * (1.0 - sag / r).acos()))
+            .ceil()
+            .max(1.0) as usize;
+        (0..k + ends - 1)
+            .map(|j| (V2::polar(from + angle * j as f64 / k as f64) * r).arr())
+            .collect()
+    };
+    let mut outline = Vec::new();
+    for k in 0..n {
+        let a = k as f64 * pitch;
+        outline.extend(arc(tip, a - half, 2.0 * half, 2));
+        outline.extend(arc(root, a + 0.5 * pitch - half, 2.0 * half, 2));
+    }
+    [outline, arc(hole, 0.0, -std::f64::consts::TAU, 1)]
 }

@@ -148,30 +148,6 @@ pub(crate) fn stands_as_the_bounds(
     );
 }
 
-/// A gear of `n` teeth about the origin: per tooth a tip arc (radius 10), a flank down, a
-/// root arc (radius 9.2) and a flank up, the arcs meeting the flanks at corners; with a round
-/// hole of radius 3 at the middle.
-pub(crate) fn gear(n: usize) -> Region {
-    let pitch = std::f64::consts::TAU / n as f64;
-    let (tip, root, half) = (10.0, 9.2, 0.18 * pitch);
-    let at = |r: f64, a: f64| (V2::polar(a) * r).arr();
-    let mut segments = Vec::with_capacity(4 * n);
-    for k in 0..n {
-        let a = k as f64 * pitch;
-        let (b, c, d) = (
-            a + 0.5 * pitch - half,
-            a + 0.5 * pitch + half,
-            a + pitch - half,
-        );
-        segments.push(Segment::arc([0.0, 0.0], tip, a - half, a + half).unwrap());
-        segments.push(Segment::line(at(tip, a + half), at(root, b)).unwrap());
-        segments.push(Segment::arc([0.0, 0.0], root, b, c).unwrap());
-        segments.push(Segment::line(at(root, c), at(tip, d)).unwrap());
-    }
-    let outer = Profile::new(segments, None).unwrap();
-    with_round_holes(outer, &[([0.0, 0.0], 3.0)]).unwrap()
-}
-
 /// A polygon round a star at `radii` (counter-clockwise) whose corners are rounded by
 /// tangent arcs of radius `fillet[i]` where it is positive and fits (convex and reflex
 /// corners alike), and whose sides between bulge by circular arcs of sagitta `bulge[i]` times

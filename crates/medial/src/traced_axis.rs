@@ -1308,7 +1308,7 @@ mod tests {
     fn the_traced_path_stands_on_gears() {
         let opts = MedialOptions::default();
         for n in [12usize, 25] {
-            let region = crate::test_shapes::gear(n);
+            let region = crate::bench_shapes::gear(n);
             let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
             assert!(stands && traced.certified, "gear {n}: {:?}", traced.reason);
             assert_eq!((traced.nodes.len(), traced.edges.len()), (4 * n, 4 * n));

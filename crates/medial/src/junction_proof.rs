@@ -17,7 +17,7 @@
 
 use crate::coverage::AT_CORNER;
 use crate::sites::Sites;
-use crate::true_sites::LineSite;
+use crate::true_sites::{ArcSite, LineSite};
 use curve::{JointKind, SegmentKind, V2};
 
 /// Units of rounding of the distance itself a distance in closed form carries (a generous
@@ -138,9 +138,10 @@ pub(crate) fn proven_within(sites: [ClosedSite; 3], x: V2, h: f64) -> bool {
 
 /// The site, with its distance in closed form, that boundary `b` is about its foot at
 /// profile parameter `u` for every point within `reach` of `x`: the line of a straight
-/// segment whose inside the points all project to, or a reflex corner whose fan they all lie
-/// in. There the distance to that stretch of the boundary is the site's. `None` elsewhere
-/// (a curved piece, a foot near a segment's end, a point near a fan's edge).
+/// segment whose inside the points all project to, the circle of an arc whose inside they all
+/// project to from its centre, or a reflex corner whose fan they all lie in. There the
+/// distance to that stretch of the boundary is the site's. `None` elsewhere (a curve of
+/// another kind, a foot near a segment's end, a point near a fan's edge).
 pub(crate) fn closed_site_at(
     sites: &Sites<'_>,
     b: usize,
@@ -171,12 +172,43 @@ pub(crate) fn closed_site_at(
             segments[(at + n - 1) % n].end_direction()?,
             segments[at].start_direction()?,
         );
-        // (Past the end of the segment before, short of the start of the one after.)
+        // (Past the end of the segment before, short of the start of the one after; and where
+        // either is an arc, which may bend back towards the box, farther from all of it than
+        // the corner by more than the box can change the two distances. Other curves: no.)
         let d = x - corner;
-        return (d.dot(into) > 2.0 * reach && d.dot(out) < -2.0 * reach)
-            .then_some(ClosedSite::Point(corner));
+        let clear = |k: usize| match segments[k].kind() {
+            SegmentKind::Line => true,
+            SegmentKind::Arc => ArcSite::new(profile, k, side)
+                .is_some_and(|a| a.distance_to_arc(x) > d.norm() + 4.0 * reach),
+            _ => false,
+        };
+        return (d.dot(into) > 2.0 * reach
+            && d.dot(out) < -2.0 * reach
+            && clear((at + n - 1) % n)
+            && clear(at))
+        .then_some(ClosedSite::Point(corner));
     }
-    let segment = &segments[(u.floor().max(0.0) as usize).min(n - 1)];
+    let i = (u.floor().max(0.0) as usize).min(n - 1);
+    let segment = &segments[i];
+    if segment.kind() == SegmentKind::Arc {
+        // (Every point of the box on the axis's side of the circle and projecting onto the
+        // arc from its centre, a box's width in from either end: its distance to the arc is
+        // its distance to the circle.)
+        let arc = ArcSite::new(profile, i, side)?;
+        let r = (x - arc.centre).norm();
+        let margin = (2.0 * reach / r).asin();
+        let angle = arc.angle_from_start(x);
+        return (r > 4.0 * reach
+            && arc.side * (r - arc.radius) > 2.0 * reach
+            && margin.is_finite()
+            && angle > margin
+            && angle < arc.sweep() - margin)
+            .then_some(ClosedSite::Circle {
+                centre: arc.centre,
+                radius: arc.radius,
+                side: arc.side,
+            });
+    }
     if segment.kind() != SegmentKind::Line {
         return None;
     }
@@ -329,19 +361,48 @@ mod tests {
         (x - (a + d * t)).norm()
     }
 
+    /// The distance from `x` to arc `arc` of the circle about `c` of radius `r` (brute force:
+    /// the circle's nearest point where the arc's dense polyline passes through it, else the
+    /// nearer end).
+    fn to_arc(x: V2, arc: &curve::Segment, c: V2, r: f64) -> f64 {
+        use curve::ParamCurve;
+        let on_circle = c + (x - c) * (r / (x - c).norm());
+        let (a, b) = arc.domain();
+        let polyline: Vec<V2> = (0..=4000)
+            .map(|k| arc.jet(a + (b - a) * k as f64 / 4000.0).p)
+            .collect();
+        let on_arc = polyline
+            .windows(2)
+            .any(|w| to_segment(on_circle, w[0], w[1]) < 1e-6 * r);
+        let ends = (x - arc.start()).norm().min((x - arc.end()).norm());
+        if on_arc {
+            (x - on_circle).norm().min(ends)
+        } else {
+            ends
+        }
+    }
+
     /// Wherever a closed site is given for a foot, its distance is the distance to the
     /// boundary's segments about the foot (the segment, or both sides of a reflex corner)
-    /// at every point sampled within the reach: on random stars with reflex corners, feet
-    /// along the sides and at the corners, points off them at random distances and angles.
+    /// at every point sampled within the reach: on random stars with reflex corners (half
+    /// of them with fillets and bulging sides), feet along the sides and at the corners,
+    /// points off them at random distances and angles.
     #[test]
     fn a_closed_site_is_the_distance_to_its_stretch_of_boundary() {
         let mut rnd = rng(4101);
-        let (mut lines, mut points) = (0, 0);
-        for _ in 0..200 {
+        let (mut lines, mut points, mut circles) = (0, 0, 0);
+        for case in 0..400 {
             let n = 5 + (6.0 * rnd()) as usize;
             let radii: Vec<f64> = (0..n).map(|_| 0.6 + rnd()).collect();
             let wobble: Vec<f64> = (0..n).map(|_| 0.3 * (rnd() - 0.5)).collect();
-            let Some(region) = crate::test_shapes::polygon_star(&radii, &wobble, &[]) else {
+            // (Half of them with arcs: fillets, and sides bulging either way.)
+            let region = if case % 2 == 0 {
+                crate::test_shapes::polygon_star(&radii, &wobble, &[])
+            } else {
+                let fillet: Vec<f64> = wobble.iter().map(|w| 0.3 * w.abs()).collect();
+                crate::test_shapes::rounded_star(&radii, &fillet, &wobble, &[])
+            };
+            let Some(region) = region else {
                 continue;
             };
             let sites = Sites::new(&region, false);
@@ -372,13 +433,16 @@ mod tests {
             let near = |y: V2| {
                 (0..m)
                     .filter(|&j| j == k || (u.fract() == 0.0 && j == (k + m - 1) % m))
-                    .map(|j| to_segment(y, segments[j].start(), segments[j].end()))
+                    .map(|j| match segments[j].circle() {
+                        Some((c, r)) => to_arc(y, &segments[j], V2::from_arr(c), r),
+                        None => to_segment(y, segments[j].start(), segments[j].end()),
+                    })
                     .fold(f64::INFINITY, f64::min)
             };
             match site {
                 ClosedSite::Line { .. } => lines += 1,
                 ClosedSite::Point(_) => points += 1,
-                ClosedSite::Circle { .. } => unreachable!("a polygon has no arcs"),
+                ClosedSite::Circle { .. } => circles += 1,
             }
             for _ in 0..20 {
                 let y = x + V2::new(rnd() - 0.5, rnd() - 0.5) * (2.0 * reach);
@@ -390,6 +454,9 @@ mod tests {
                 );
             }
         }
-        assert!(lines > 20 && points > 5, "{lines} lines, {points} points");
+        assert!(
+            lines > 20 && points > 5 && circles > 10,
+            "{lines} lines, {points} points, {circles} circles"
+        );
     }
 }

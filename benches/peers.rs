@@ -111,17 +111,28 @@ fn cavalier_offsets(shape: &CavShape<f64>, distances: &[f64]) -> usize {
         .sum()
 }
 
-/// Benchmarks curvekit's medial axis of the polygon through `vertices` as `n` in `group`,
-/// having said on stderr what it is (nodes, edges, certified or why not).
+/// Benchmarks curvekit's medial axis of the polygon through `vertices` as `n` in `group`
+/// ([`bench_region_axis`]).
 fn bench_axis(
     group: &mut BenchmarkGroup<'_, WallTime>,
     label: &str,
     n: usize,
     vertices: &[[f64; 2]],
 ) {
-    let opts = MedialOptions::default();
     let region = Region::new(polygon(vertices), Vec::new()).unwrap();
-    let axis = medial_axis(&region, &opts).unwrap();
+    bench_region_axis(group, label, n, &region);
+}
+
+/// Benchmarks curvekit's medial axis of `region` as `n` in `group`, having said on stderr
+/// what it is (nodes, edges, certified or why not).
+fn bench_region_axis(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    label: &str,
+    n: usize,
+    region: &Region,
+) {
+    let opts = MedialOptions::default();
+    let axis = medial_axis(region, &opts).unwrap();
     eprintln!(
         "{label}: {} nodes, {} edges, certified {} {}",
         axis.nodes.len(),
@@ -129,7 +140,7 @@ fn bench_axis(
         axis.certified,
         axis.reason.as_deref().unwrap_or("")
     );
-    group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
+    group.bench_with_input(BenchmarkId::new("curvekit", n), region, |b, r| {
         b.iter(|| medial_axis(black_box(r), &opts).unwrap())
     });
 }
@@ -182,19 +193,11 @@ fn peers(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("boostvoronoi", n), &loops, |b, l| {
             b.iter(|| boost_diagram_of_loops(black_box(l), 0.1))
         });
-        let region = gear(n);
-        let axis = medial_axis(&region, &opts).unwrap();
-        eprintln!(
-            "gear {n} ({} chords for boostvoronoi): {} nodes, {} edges, certified {} {}",
-            outline.len() + hole.len(),
-            axis.nodes.len(),
-            axis.edges.len(),
-            axis.certified,
-            axis.reason.as_deref().unwrap_or("")
+        let label = format!(
+            "gear {n} ({} chords for boostvoronoi)",
+            outline.len() + hole.len()
         );
-        group.bench_with_input(BenchmarkId::new("curvekit", n), &region, |b, r| {
-            b.iter(|| medial_axis(black_box(r), &opts).unwrap())
-        });
+        bench_region_axis(&mut group, &label, n, &gear(n));
     }
     group.finish();
 

@@ -17,7 +17,7 @@
 
 use crate::coverage::AT_CORNER;
 use crate::sites::Sites;
-use crate::true_sites::{ArcSite, LineSite};
+use crate::true_sites::{ArcSite, LineSite, Shape};
 use curve::{JointKind, SegmentKind, V2};
 
 /// Units of rounding of the distance itself a distance in closed form carries (a generous
@@ -66,18 +66,16 @@ impl ClosedSite {
             } => {
                 // (As a point's, the gradient turning about the centre; the radius's rounding
                 // adds to the distance's.)
-                let d = x - centre;
-                let r = d.norm();
+                let r = (x - centre).norm();
                 let error = DISTANCE_ULPS * f64::EPSILON * (r + radius);
                 let reach = std::f64::consts::SQRT_2 * h;
-                (r > 2.0 * reach).then(|| {
-                    (
-                        side * (r - radius),
-                        error,
-                        d * (side / r),
-                        reach / (r - reach),
-                    )
-                })
+                let (distance, gradient) = Shape::Round {
+                    centre,
+                    radius,
+                    side,
+                }
+                .distance(x);
+                (r > 2.0 * reach).then_some((distance, error, gradient, reach / (r - reach)))
             }
         }
     }

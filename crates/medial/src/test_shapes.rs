@@ -5,13 +5,19 @@ use crate::candidates::PairSource;
 use crate::{axis_of, MedialAxis, MedialOptions};
 use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
 
+/// The points of a star: at `radii[i]` from the origin, at equal angles.
+fn star_points(radii: &[f64]) -> Vec<V2> {
+    let n = radii.len();
+    (0..n)
+        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
+        .collect()
+}
+
 /// A closed chain of cubic Béziers round a star (corners at the joints), with round
 /// holes near its middle where they fit.
 pub(crate) fn star(radii: &[f64], wobble: &[f64], holes: &[([f64; 2], f64)]) -> Option<Region> {
     let n = radii.len();
-    let joints: Vec<V2> = (0..n)
-        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
-        .collect();
+    let joints = star_points(radii);
     let segs = (0..n)
         .map(|i| {
             let (a, b) = (joints[i], joints[(i + 1) % n]);
@@ -52,9 +58,7 @@ pub(crate) fn polygon_star(
     holes: &[([f64; 2], f64)],
 ) -> Option<Region> {
     let n = radii.len();
-    let joints: Vec<V2> = (0..n)
-        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
-        .collect();
+    let joints = star_points(radii);
     let mut points = Vec::with_capacity(2 * n);
     for i in 0..n {
         let (a, b) = (joints[i], joints[(i + 1) % n]);
@@ -160,9 +164,7 @@ pub(crate) fn rounded_star(
     holes: &[([f64; 2], f64)],
 ) -> Option<Region> {
     let n = radii.len();
-    let corners: Vec<V2> = (0..n)
-        .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * radii[i])
-        .collect();
+    let corners = star_points(radii);
     // Per corner, where its sides leave it and the arc between (if any).
     let mut ends: Vec<(V2, V2, Option<Segment>)> = Vec::with_capacity(n);
     for i in 0..n {

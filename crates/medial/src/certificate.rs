@@ -253,7 +253,8 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
 }
 
 /// Whether an end lies at the centre of an arc one of its feet is on (at a joint, either
-/// segment there; any arc where it has no edge: the centre of a disk), with its radius.
+/// segment there), with its radius; where it has no edge (the whole axis), at the centre of
+/// every arc of the boundary, which is then one circle.
 fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
     let room = JUNCTION_ROOM[1] * sites.size;
     let centre_of = |s: &curve::Segment| {
@@ -261,10 +262,11 @@ fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
             .is_some_and(|(c, r)| distance(c, node.xy) <= room && (r - node.radius).abs() <= room)
     };
     if feet.is_empty() {
+        // (A node with no edge is the whole axis: the disk touches the whole boundary.)
         return sites
             .boundaries
             .iter()
-            .any(|b| b.segments().iter().any(centre_of));
+            .all(|b| b.segments().iter().all(centre_of));
     }
     feet.iter().any(|f| {
         let b = sites.boundaries[f.boundary];

@@ -171,19 +171,19 @@ pub(crate) fn closed_site_at(
             segments[at].start_direction()?,
         );
         // (Past the end of the segment before, short of the start of the one after; and where
-        // either is an arc, which may bend back towards the box, farther from all of it than
-        // the corner by more than the box can change the two distances. Other curves: no.)
+        // either is an arc, which may bend back towards the box, the corner its nearest point
+        // from all of the box. Other curves: no.)
         let d = x - corner;
-        let clear = |k: usize| match segments[k].kind() {
+        let clear = |k: usize, ends_here: bool| match segments[k].kind() {
             SegmentKind::Line => true,
             SegmentKind::Arc => ArcSite::new(profile, k, side)
-                .is_some_and(|a| a.distance_to_arc(x) > d.norm() + 4.0 * reach),
+                .is_some_and(|a| corner_nearest(&a, ends_here, x, reach)),
             _ => false,
         };
         return (d.dot(into) > 2.0 * reach
             && d.dot(out) < -2.0 * reach
-            && clear((at + n - 1) % n)
-            && clear(at))
+            && clear((at + n - 1) % n, true)
+            && clear(at, false))
         .then_some(ClosedSite::Point(corner));
     }
     let i = (u.floor().max(0.0) as usize).min(n - 1);
@@ -215,6 +215,27 @@ pub(crate) fn closed_site_at(
     let t = line.along.dot(x - start);
     (t > 2.0 * reach && t < line.length - 2.0 * reach && inward.dot(x - start) > 2.0 * reach)
         .then_some(ClosedSite::Line { start, inward })
+}
+
+/// Whether the end of `arc` where it ends (`ends_here`) or starts is its nearest point from
+/// every point within `reach` of `x`: all of them project from the centre beyond that end
+/// (the distance to a circle's points grows with their angle from the point's own, so the
+/// arc's nearest is then an end), nearer that end than the other.
+fn corner_nearest(arc: &ArcSite, ends_here: bool, x: V2, reach: f64) -> bool {
+    let r = (x - arc.centre).norm();
+    let margin = (2.0 * reach / r).asin();
+    let angle = arc.angle_from_start(x);
+    let (this, other, beyond) = if ends_here {
+        (arc.sweep(), 0.0, angle > arc.sweep() + margin)
+    } else {
+        (0.0, arc.sweep(), angle < -margin)
+    };
+    let apart = |a: f64| (x - arc.point_at(a)).norm();
+    r > 4.0 * reach
+        && margin.is_finite()
+        && !arc.full()
+        && beyond
+        && apart(other) > apart(this) + 4.0 * reach
 }
 
 /// A few units of rounding of `v`.
@@ -388,7 +409,7 @@ mod tests {
     #[test]
     fn a_closed_site_is_the_distance_to_its_stretch_of_boundary() {
         let mut rnd = rng(4101);
-        let (mut lines, mut points, mut circles) = (0, 0, 0);
+        let (mut lines, mut points, mut circles, mut beside_arcs) = (0, 0, 0, 0);
         for case in 0..400 {
             let n = 5 + (6.0 * rnd()) as usize;
             let radii: Vec<f64> = (0..n).map(|_| 0.6 + rnd()).collect();
@@ -439,7 +460,12 @@ mod tests {
             };
             match site {
                 ClosedSite::Line { .. } => lines += 1,
-                ClosedSite::Point(_) => points += 1,
+                ClosedSite::Point(_) => {
+                    points += 1;
+                    let before = &segments[(k + m - 1) % m];
+                    beside_arcs +=
+                        usize::from(before.circle().is_some() || segments[k].circle().is_some());
+                }
                 ClosedSite::Circle { .. } => circles += 1,
             }
             for _ in 0..20 {
@@ -453,8 +479,8 @@ mod tests {
             }
         }
         assert!(
-            lines > 20 && points > 5 && circles > 10,
-            "{lines} lines, {points} points, {circles} circles"
+            lines > 20 && points > 5 && circles > 10 && beside_arcs > 3,
+            "{lines} lines, {points} points ({beside_arcs} beside arcs), {circles} circles"
         );
     }
 }

@@ -295,7 +295,8 @@ fn axis_of(
             && coverage::feet_cover(&sites, &axis).is_err()
         {
             // (Whatever path found the pairs: a bisector the candidates missed leaves a gap.
-            // An axis of one node, a disk's centre, has no feet: its node's proof is whole.)
+            // An axis of one node and no edge has no feet: its node is proven at the centre
+            // of a boundary that is one circle.)
             Some(Doubt::Coverage)
         } else {
             None

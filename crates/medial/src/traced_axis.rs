@@ -1004,7 +1004,10 @@ impl Tracer<'_, '_> {
             let t_mid = 0.5 * (t_lo + t_hi);
             let x_mid = at(t_mid)?;
             let sag = curve::distance_to_segment(x_mid.arr(), x_lo.arr(), x_hi.arr());
-            if depth < MAX_EDGE_DEPTH && ((x_hi - x_lo).norm() > step || sag > self.chord_tol) {
+            if (x_hi - x_lo).norm() > step || sag > self.chord_tol {
+                if depth == MAX_EDGE_DEPTH {
+                    return None; // (finer than the tracer goes: the other paths decide)
+                }
                 stack.push((t_mid, x_mid, depth + 1));
             } else {
                 stack.pop();

@@ -119,19 +119,6 @@ impl ArcSite {
         }
     }
 
-    /// The distance from `x` to the arc: to its circle where `x` projects onto it from the
-    /// centre, else to the nearer end.
-    pub(crate) fn distance_to_arc(&self, x: V2) -> f64 {
-        let angle = self.angle_from_start(x);
-        if (0.0..=self.sweep).contains(&angle) {
-            ((x - self.centre).norm() - self.radius).abs()
-        } else {
-            (x - self.point_at(0.0))
-                .norm()
-                .min((x - self.point_at(self.sweep)).norm())
-        }
-    }
-
     /// The angle the arc sweeps (positive).
     pub(crate) fn sweep(&self) -> f64 {
         self.sweep

@@ -1306,7 +1306,8 @@ mod tests {
 
     /// The traced path stands on gears of 12 and 25 teeth (arcs about one centre meeting
     /// lines at corners, round a hole: nodes of nearly cocircular chords), certified, with the
-    /// seed's pairs' axis; and a gear turned by an angle gives the same graph turned.
+    /// seed's pairs' axis; and a gear turned, scaled and moved (far from the origin, a
+    /// thousand times larger) gives the same graph moved.
     #[test]
     fn the_traced_path_stands_on_gears() {
         let opts = MedialOptions::default();
@@ -1317,29 +1318,36 @@ mod tests {
             assert_eq!((traced.nodes.len(), traced.edges.len()), (4 * n, 4 * n));
             let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
             same_graph(&traced, &seeded, 2.0 * opts.chord_tol * region.size()).unwrap();
-            // (Turned by 0.3 rad about the origin and moved; then moved back and turned back.)
-            let (c, s, shift) = (0.3f64.cos(), 0.3f64.sin(), [0.5, -0.2]);
-            let turned = region
-                .transformed(&curve::Affine([c, s, -s, c, shift[0], shift[1]]))
-                .unwrap();
-            let (again, stands) = axis_of(&turned, &opts, PairSource::SeedEdges).unwrap();
-            assert!(
-                stands && again.certified,
-                "turned gear {n}: {:?}",
-                again.reason
-            );
-            let undo = |x: [f64; 2]| {
-                let (u, v) = (x[0] - shift[0], x[1] - shift[1]);
-                [c * u + s * v, -s * u + c * v]
-            };
-            let mut back = again.clone();
-            for node in &mut back.nodes {
-                node.xy = undo(node.xy);
+            // (Turned about the origin, scaled and moved; then moved back, scaled back and
+            // turned back: a little, and far from the origin at a thousand times the size.)
+            for (turn, scale, shift) in [(0.3f64, 1.0, [0.5, -0.2]), (-1.1, 1e3, [1e5, -3e5])] {
+                let (c, s) = (scale * turn.cos(), scale * turn.sin());
+                let moved = region
+                    .transformed(&curve::Affine([c, s, -s, c, shift[0], shift[1]]))
+                    .unwrap();
+                let (again, stands) = axis_of(&moved, &opts, PairSource::SeedEdges).unwrap();
+                assert!(
+                    stands && again.certified,
+                    "gear {n} moved by {turn}, {scale}: {:?}",
+                    again.reason
+                );
+                let undo = |x: [f64; 2]| {
+                    let (u, v) = (x[0] - shift[0], x[1] - shift[1]);
+                    [
+                        (c * u + s * v) / (scale * scale),
+                        (-s * u + c * v) / (scale * scale),
+                    ]
+                };
+                let mut back = again.clone();
+                for node in &mut back.nodes {
+                    node.xy = undo(node.xy);
+                    node.radius /= scale;
+                }
+                for e in &mut back.edges {
+                    e.xy.iter_mut().for_each(|x| *x = undo(*x));
+                }
+                same_graph(&back, &traced, 2.0 * opts.chord_tol * region.size()).unwrap();
             }
-            for e in &mut back.edges {
-                e.xy.iter_mut().for_each(|x| *x = undo(*x));
-            }
-            same_graph(&back, &traced, 2.0 * opts.chord_tol * region.size()).unwrap();
         }
     }
 

@@ -29,7 +29,7 @@ use crate::parallel::in_order;
 use crate::seed::{chord_diagram, edge_sites, on_side, Approximation, Owner, Site, CHORD_TURN};
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use crate::stretches::{Stretch, Vertex};
-use crate::true_sites::{lines_and_arcs, ArcSite, LineSite, Shape, TrueSite};
+use crate::true_sites::{ArcSite, LineSite, Shape, TrueSite};
 use boostvoronoi::prelude::{Diagram, EdgeIndex, VertexIndex};
 use curve::{wrap_pi, JointKind, SegmentKind, V2};
 use std::collections::{HashMap, HashSet};
@@ -195,12 +195,35 @@ struct Tracer<'s, 'a> {
 /// joint of a whole circle), each its own stretch. `None` where some boundary has other
 /// curves, no diagram can be made, or the diagram disagrees with the true coordinates.
 pub(crate) fn trace(sites: &Sites<'_>, chord_tol: f64) -> Option<Traced> {
-    if !sites.boundaries.iter().all(|b| lines_and_arcs(b)) || sites.clip.is_some() {
+    if sites.clip.is_some() {
         return None;
     }
     let inside_left: Vec<f64> = (0..sites.boundaries.len())
         .map(|k| sites.inside_left(k))
         .collect();
+    // (Before the diagram: a boundary with another kind of curve is refused at once.)
+    let pieces = sites
+        .boundaries
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            (0..b.segments().len())
+                .map(|i| {
+                    let s = &b.segments()[i];
+                    Some(match s.kind() {
+                        SegmentKind::Line => {
+                            Piece::Line(LineSite::new(s.start(), s.end(), inside_left[k]))
+                        }
+                        SegmentKind::Arc => Piece::Arc {
+                            arc: ArcSite::new(b, i, inside_left[k])?,
+                            start: s.start(),
+                        },
+                        _ => return None,
+                    })
+                })
+                .collect::<Option<Vec<Piece>>>()
+        })
+        .collect::<Option<Vec<_>>>()?;
     let (approx, diagram) = chord_diagram(
         &sites.boundaries,
         &inside_left,
@@ -219,27 +242,6 @@ pub(crate) fn trace(sites: &Sites<'_>, chord_tol: f64) -> Option<Traced> {
     if joints != segments {
         return None;
     }
-    let pieces = sites
-        .boundaries
-        .iter()
-        .enumerate()
-        .map(|(k, b)| {
-            (0..b.segments().len())
-                .map(|i| {
-                    let s = &b.segments()[i];
-                    Some(match s.kind() {
-                        SegmentKind::Line => {
-                            Piece::Line(LineSite::new(s.start(), s.end(), inside_left[k]))
-                        }
-                        _ => Piece::Arc {
-                            arc: ArcSite::new(b, i, inside_left[k])?,
-                            start: s.start(),
-                        },
-                    })
-                })
-                .collect::<Option<Vec<Piece>>>()
-        })
-        .collect::<Option<Vec<_>>>()?;
     let mut tracer = Tracer {
         sites,
         pieces,

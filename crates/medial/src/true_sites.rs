@@ -9,7 +9,7 @@
 //! distance equals the ray's length where an equation linear in that length holds (the
 //! squares of a circle's distances differ by a linear term).
 
-use curve::{OwnParam, Profile, SegmentKind, V2};
+use curve::{OwnParam, Profile, V2};
 use std::f64::consts::TAU;
 
 /// A true site: segment `segment` of boundary `boundary`, or the corner where it starts.
@@ -229,15 +229,6 @@ impl Shape {
             Shape::Round { centre, .. } => (x - centre).norm(),
         }
     }
-}
-
-/// Whether every segment of `profile` has a shape here: a line, or an arc ([`ArcSite::new`]).
-pub(crate) fn lines_and_arcs(profile: &Profile) -> bool {
-    (0..profile.segments().len()).all(|i| match profile.segments()[i].kind() {
-        SegmentKind::Line => true,
-        SegmentKind::Arc => ArcSite::new(profile, i, 1.0).is_some(),
-        _ => false,
-    })
 }
 
 #[cfg(test)]

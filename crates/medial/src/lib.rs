@@ -37,6 +37,7 @@ mod error;
 mod fans;
 mod fit;
 mod junction_proof;
+mod lines_and_arcs;
 mod pairs;
 mod parallel;
 mod seed;
@@ -256,7 +257,7 @@ fn axis_of(
                 true,
                 true,
                 t.proven,
-                traced_axis::MERGE,
+                lines_and_arcs::MERGE,
             ),
             None => return Ok((empty_axis(), false)),
         }

@@ -1,7 +1,7 @@
 //! The sites of a boundary of lines and circular arcs, in closed form: each line, each arc
 //! (its circle) and each corner (a point), with its signed distance on the axis's side and
-//! the normal rays its disks grow along. The traced path ([`crate::traced_axis`]) solves
-//! and traces the axis on them; the closed-form junction proof ([`crate::junction_proof`])
+//! the normal rays its disks grow along. The closed-form paths solve and trace the axis on
+//! them ([`crate::lines_and_arcs`]); the closed-form junction proof ([`crate::junction_proof`])
 //! takes its lines from here too.
 //!
 //! Every bisector of two such sites is a conic, and a point of it is found in closed form from
@@ -126,7 +126,13 @@ impl ArcSite {
 
     /// The point of the circle at `angle` from the arc's start, in its direction.
     pub(crate) fn point_at(&self, angle: f64) -> V2 {
-        self.centre + V2::polar(self.start_angle + self.turn * angle) * self.radius
+        self.centre + V2::polar(self.direction_at(angle)) * self.radius
+    }
+
+    /// The direction (an angle from the x axis) from the centre to the point at `angle`
+    /// from the arc's start: the foot parameter of [`Shape::ray`] there.
+    pub(crate) fn direction_at(&self, angle: f64) -> f64 {
+        self.start_angle + self.turn * angle
     }
 
     /// The share `x ∈ [0, 1]` of the arc's segment in its profile's parameter (the profile

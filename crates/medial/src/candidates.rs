@@ -44,6 +44,10 @@ pub(crate) enum PairSource {
     /// No pairs: the seed's edges themselves, traced in closed form, where the boundaries are
     /// lines and circular arcs ([`crate::traced_axis`]); [`candidates`] takes it as `Bounds`.
     SeedEdges,
+    /// No pairs either: the bisector of every pair of true sites trimmed in closed form,
+    /// where the boundaries are few lines and circular arcs ([`crate::pairwise_axis`]);
+    /// [`candidates`] takes it as `Bounds`.
+    Pairwise,
     /// Every pair (the tests compare the others with it).
     #[cfg(test)]
     All,

@@ -39,6 +39,7 @@ mod fit;
 mod junction_proof;
 mod lines_and_arcs;
 mod pairs;
+mod pairwise_axis;
 mod parallel;
 mod seed;
 mod sites;
@@ -190,6 +191,16 @@ pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> 
         .chain(region.holes())
         .map(|b| b.segments().len())
         .sum();
+    if !opts.exterior && segments < SEED_SEGMENTS {
+        // (Few lines and arcs: every pair of sites in closed form, standing where certified.)
+        let found = axis_of(region, opts, PairSource::Pairwise);
+        if curve::watch::cancelled() {
+            return Err(Error::Cancelled);
+        }
+        if let Ok((axis, true)) = found {
+            return Ok(axis);
+        }
+    }
     if !opts.exterior && segments >= SEED_SEGMENTS {
         // (The seed's pairs are a guess: its axis stands where it is certified and its feet
         // cover the boundaries, and is built again from the pairs the bounds keep where not.)
@@ -249,8 +260,13 @@ fn axis_of(
         },
         ..*opts
     };
-    let (found, pieces, complete, from_seed, proven, merge) = if source == PairSource::SeedEdges {
-        match traced_axis::trace(&sites, traced.chord_tol) {
+    let closed_form = match source {
+        PairSource::SeedEdges => Some(traced_axis::trace(&sites, traced.chord_tol)),
+        PairSource::Pairwise => Some(pairwise_axis::pairwise(&sites, traced.chord_tol)),
+        _ => None,
+    };
+    let (found, pieces, complete, from_seed, proven, merge) = if let Some(traced) = closed_form {
+        match traced {
             Some(t) => (
                 t.candidates,
                 t.stretches,

@@ -31,6 +31,11 @@ const EDGE_STEP: f64 = 1e-2;
 /// within 1e-6.)
 pub(crate) const MERGE: f64 = 1e-9;
 
+/// Up to this many segments a disk is tested for emptiness on every segment in closed form:
+/// a test of each costs less than the walk of the boundaries' box tree that finds the few
+/// near it (about as much at 64).
+const CLOSED_FORM_DISK_SEGMENTS: usize = 64;
+
 /// Most vertices of one edge, and halvings of its foot parameter while it is traced: a
 /// parabola's to the finest chord tolerance (1e-9 of the size) takes ~2e4 on a region's
 /// width; beyond this the input is refused to the other paths.
@@ -139,6 +144,9 @@ pub(crate) struct LinesAndArcs<'s, 'a> {
     pieces: Vec<Vec<Piece>>,
     /// The chord tolerance of the edges (a length).
     chord_tol: f64,
+    /// Whether the boundaries have so few segments that a disk is tested on each in closed
+    /// form ([`CLOSED_FORM_DISK_SEGMENTS`]).
+    few: bool,
 }
 
 impl<'s, 'a> LinesAndArcs<'s, 'a> {
@@ -168,10 +176,12 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                     .collect::<Option<Vec<Piece>>>()
             })
             .collect::<Option<Vec<_>>>()?;
+        let segments: usize = pieces.iter().map(Vec::len).sum();
         Some(Self {
             sites,
             pieces,
             chord_tol: chord_tol * sites.size,
+            few: segments <= CLOSED_FORM_DISK_SEGMENTS,
         })
     }
 
@@ -200,7 +210,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                 .then_some((arc.centre, arc.radius))
         });
         if let Some((xy, radius)) = centre {
-            return (self.sites.disk(xy.arr(), radius) == Disk::Empty).then_some(Solved {
+            return self.disk_is_empty(xy, radius).then_some(Solved {
                 xy,
                 radius,
                 proven: false,
@@ -230,7 +240,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
             Equation::FootAtEnd { segment, .. } => segment,
         };
         let radius = self.shape(site).distance(x).0;
-        if !(agree(x) && radius > 0.0 && self.sites.disk(x.arr(), radius) == Disk::Empty) {
+        if !(agree(x) && radius > 0.0 && self.disk_is_empty(x, radius)) {
             return None;
         }
         // (Proven on the best conditioned two equations of equal distance: those Newton's
@@ -418,7 +428,42 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
     /// that turns by little, the other side's distance is measured too: see
     /// [`entered_across_corner`]). A disk of radius nil (at a convex corner) holds nothing.
     fn empty(&self, v: &Vertex) -> bool {
-        v.radius == 0.0 || self.sites.disk(v.xy, v.radius) == Disk::Empty
+        v.radius == 0.0 || self.disk_is_empty(V2::from_arr(v.xy), v.radius)
+    }
+
+    /// Whether the disk about `x` of radius `radius` (less the slack) holds no boundary
+    /// point: proven in closed form where the boundaries are few, else (or where that proof
+    /// fails) on the boundaries' control hulls as the other paths test it.
+    fn disk_is_empty(&self, x: V2, radius: f64) -> bool {
+        (self.few && self.clear_in_closed_form(x, radius))
+            || self.sites.disk(x.arr(), radius) == Disk::Empty
+    }
+
+    /// Whether every point of the boundaries is at least `radius` less the slack from `x`,
+    /// by its distance in closed form with a bound on its rounding: each joint's, and each
+    /// line's or arc's where the foot of `x` falls on it (else its nearest point is an end,
+    /// a joint). A foot misjudged on or off near an end moves the distance by rounding
+    /// only: the joint there is as far, to rounding, as the nearest point.
+    fn clear_in_closed_form(&self, x: V2, radius: f64) -> bool {
+        let slack = EMPTY_SLACK * self.sites.size;
+        let magnitude = |p: V2| p.x.abs().max(p.y.abs());
+        let scale = magnitude(x) + radius;
+        // (Each distance to within 16 ulps of the magnitudes in it.)
+        let clear = |d: f64, at: f64| d >= radius - slack + 16.0 * f64::EPSILON * (scale + at);
+        self.pieces.iter().flatten().all(|piece| match *piece {
+            Piece::Line(l) => {
+                let at = magnitude(l.start) + l.length;
+                clear((x - l.start).norm(), at)
+                    && (!(0.0..=l.length).contains(&l.along.dot(x - l.start))
+                        || clear(l.inward.dot(x - l.start).abs(), at))
+            }
+            Piece::Arc { arc, start } => {
+                let at = magnitude(arc.centre) + arc.radius;
+                clear((x - start).norm(), magnitude(start))
+                    && (!arc.spans(x - arc.centre)
+                        || clear(((x - arc.centre).norm() - arc.radius).abs(), at))
+            }
+        })
     }
 
     /// Whether the disks along the straight bisector of two lines between its ends (each

@@ -211,3 +211,161 @@ pub(crate) fn rounded_star(
     // (The first corner's arc closes the chain: it was pushed last.)
     with_round_holes(Profile::new(segments, None).ok()?, holes)
 }
+/// The distance from `x` to the polyline `p`.
+pub(crate) fn to_polyline(x: [f64; 2], p: &[[f64; 2]]) -> f64 {
+    if p.len() == 1 {
+        return (V2::from_arr(x) - V2::from_arr(p[0])).norm();
+    }
+    p.windows(2)
+        .map(|w| curve::distance_to_segment(x, w[0], w[1]))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Whether two axes are the same graph: nodes of one kind within `near` of each other
+/// (one to one), edges between matching nodes, each one's vertices within `near` of
+/// the other's polyline, with the same boundaries at their ends.
+pub(crate) fn same_graph(a: &MedialAxis, b: &MedialAxis, near: f64) -> Result<(), String> {
+    if a.nodes.len() != b.nodes.len() || a.edges.len() != b.edges.len() {
+        return Err(format!(
+            "{} nodes, {} edges against {} and {}",
+            a.nodes.len(),
+            a.edges.len(),
+            b.nodes.len(),
+            b.edges.len()
+        ));
+    }
+    let apart = |p: [f64; 2], q: [f64; 2]| (V2::from_arr(p) - V2::from_arr(q)).norm();
+    let mut match_of = vec![usize::MAX; a.nodes.len()];
+    let mut taken = vec![false; b.nodes.len()];
+    for n in &a.nodes {
+        let m = b
+            .nodes
+            .iter()
+            .filter(|m| !taken[m.id] && m.kind == n.kind)
+            .min_by(|p, q| apart(p.xy, n.xy).total_cmp(&apart(q.xy, n.xy)))
+            .ok_or(format!("no node for {n:?}"))?;
+        if apart(m.xy, n.xy) > near || (m.radius - n.radius).abs() > near {
+            return Err(format!("node {n:?} against {m:?}"));
+        }
+        taken[m.id] = true;
+        match_of[n.id] = m.id;
+    }
+    let mut used = vec![false; b.edges.len()];
+    for e in &a.edges {
+        let ends = [match_of[e.from], match_of[e.to]];
+        let mut ends_sorted = ends;
+        ends_sorted.sort_unstable();
+        let boundaries = |x: &[[usize; 2]]| {
+            let mut v = [x[0], x[x.len() - 1]].concat();
+            v.sort_unstable();
+            v
+        };
+        let found = b.edges.iter().enumerate().find(|(k, f)| {
+            let mut f_ends = [f.from, f.to];
+            f_ends.sort_unstable();
+            !used[*k]
+                && f_ends == ends_sorted
+                && boundaries(&f.boundary) == boundaries(&e.boundary)
+                && e.xy.iter().all(|&x| to_polyline(x, &f.xy) <= near)
+                && f.xy.iter().all(|&x| to_polyline(x, &e.xy) <= near)
+        });
+        match found {
+            Some((k, _)) => used[k] = true,
+            None => return Err(format!("no edge for {} -> {} ({:?})", e.from, e.to, e.xy)),
+        }
+    }
+    Ok(())
+}
+
+/// A random polygon round a star of 5 to 15 points (sides bent at their middles: convex
+/// and reflex corners), with up to two polygonal holes.
+pub(crate) fn random_polygon(rnd: &mut dyn FnMut() -> f64) -> Option<Region> {
+    let n = 5 + (10.0 * rnd()) as usize;
+    let radii: Vec<f64> = (0..n).map(|_| 1.0 + 0.6 * rnd()).collect();
+    let wobble: Vec<f64> = (0..n).map(|_| 0.4 * rnd() - 0.2).collect();
+    let holes: Vec<([f64; 2], f64, usize, f64)> = (0..(3.0 * rnd()) as usize)
+        .map(|_| {
+            let centre = [0.8 * rnd() - 0.4, 0.8 * rnd() - 0.4];
+            (
+                centre,
+                0.05 + 0.15 * rnd(),
+                3 + (6.0 * rnd()) as usize,
+                rnd(),
+            )
+        })
+        .collect();
+    polygon_star_with_polygon_holes(&radii, &wobble, &holes)
+}
+
+/// A random star of 5 to 15 corners, about half of them rounded by tangent arcs and
+/// about a third of its sides bulging in or out as arcs, with up to two round holes.
+pub(crate) fn random_rounded(rnd: &mut dyn FnMut() -> f64) -> Option<Region> {
+    let n = 5 + (10.0 * rnd()) as usize;
+    let radii: Vec<f64> = (0..n).map(|_| 1.0 + 0.6 * rnd()).collect();
+    let fillet: Vec<f64> = (0..n)
+        .map(|_| if rnd() < 0.5 { 0.02 + 0.2 * rnd() } else { 0.0 })
+        .collect();
+    let bulge: Vec<f64> = (0..n)
+        .map(|_| match rnd() {
+            x if x < 0.15 => 0.03 + 0.15 * rnd(),
+            x if x < 0.3 => -0.03 - 0.15 * rnd(),
+            _ => 0.0,
+        })
+        .collect();
+    let holes: Vec<([f64; 2], f64)> = (0..(3.0 * rnd()) as usize)
+        .map(|_| ([0.8 * rnd() - 0.4, 0.8 * rnd() - 0.4], 0.05 + 0.15 * rnd()))
+        .collect();
+    rounded_star(&radii, &fillet, &bulge, &holes)
+}
+
+/// `axis` with every edge whose two nodes lie within `within` of each other contracted (its
+/// nodes made one, the first's), as the bounds' path merges the ends of its stretches: two
+/// junctions closer than that are one node there.
+pub(crate) fn merged(axis: &MedialAxis, within: f64) -> MedialAxis {
+    let mut root: Vec<usize> = (0..axis.nodes.len()).collect();
+    fn find(root: &mut [usize], mut k: usize) -> usize {
+        while root[k] != k {
+            k = root[k];
+        }
+        k
+    }
+    let apart = |a: usize, b: usize| {
+        let (p, q) = (axis.nodes[a].xy, axis.nodes[b].xy);
+        (p[0] - q[0]).hypot(p[1] - q[1])
+    };
+    let short = |e: &crate::Edge| e.from != e.to && apart(e.from, e.to) <= within;
+    for e in axis.edges.iter().filter(|e| short(e)) {
+        let (a, b) = (find(&mut root, e.from), find(&mut root, e.to));
+        root[a.max(b)] = a.min(b);
+    }
+    let kept: Vec<usize> = (0..axis.nodes.len())
+        .filter(|&k| find(&mut root, k) == k)
+        .collect();
+    let mut id = vec![usize::MAX; axis.nodes.len()];
+    for (new, &k) in kept.iter().enumerate() {
+        id[k] = new;
+    }
+    let nodes = kept
+        .iter()
+        .enumerate()
+        .map(|(new, &k)| crate::Node {
+            id: new,
+            ..axis.nodes[k]
+        })
+        .collect();
+    let edges = axis
+        .edges
+        .iter()
+        .filter(|e| !short(e))
+        .map(|e| crate::Edge {
+            from: id[find(&mut root, e.from)],
+            to: id[find(&mut root, e.to)],
+            ..e.clone()
+        })
+        .collect();
+    MedialAxis {
+        nodes,
+        edges,
+        ..axis.clone()
+    }
+}

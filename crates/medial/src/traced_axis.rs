@@ -8,8 +8,8 @@
 //! (where the chords of an arc take turns), is one edge of the axis; a vertex about three
 //! true sites or more is a node, a disk touching three of them (or an arc's centre, touching
 //! the whole arc). Each node is solved again on the true sites by Newton's method from the
-//! diagram's point and each edge traced (both in closed form, [`crate::lines_and_arcs`])
-//! in closed form between its ends: the bisector of two lines or two points is straight, any
+//! diagram's point, and each edge traced in closed form between its ends
+//! ([`crate::lines_and_arcs`]): the bisector of two lines or two points is straight, any
 //! other a conic, whose points come in closed form from the feet on one of its sites. No
 //! bisector is traced beyond its stretch and no stretch is searched for: the cost is O(n)
 //! beyond the diagram's, and the disk tests'.
@@ -393,95 +393,9 @@ impl Tracer<'_, '_> {
 mod tests {
     use crate::bench_shapes::{polygon, rng, star_polygon};
     use crate::candidates::PairSource;
-    use crate::test_shapes::{polygon_star_with_polygon_holes, rounded_star, stands_as_the_bounds};
+    use crate::test_shapes::{random_polygon, random_rounded, same_graph, stands_as_the_bounds};
     use crate::{axis_of, MedialAxis, MedialOptions};
     use curve::{Region, V2};
-
-    /// The distance from `x` to the polyline `p`.
-    fn to_polyline(x: [f64; 2], p: &[[f64; 2]]) -> f64 {
-        if p.len() == 1 {
-            return (V2::from_arr(x) - V2::from_arr(p[0])).norm();
-        }
-        p.windows(2)
-            .map(|w| curve::distance_to_segment(x, w[0], w[1]))
-            .fold(f64::INFINITY, f64::min)
-    }
-
-    /// Whether two axes are the same graph: nodes of one kind within `near` of each other
-    /// (one to one), edges between matching nodes, each one's vertices within `near` of
-    /// the other's polyline, with the same boundaries at their ends.
-    fn same_graph(a: &MedialAxis, b: &MedialAxis, near: f64) -> Result<(), String> {
-        if a.nodes.len() != b.nodes.len() || a.edges.len() != b.edges.len() {
-            return Err(format!(
-                "{} nodes, {} edges against {} and {}",
-                a.nodes.len(),
-                a.edges.len(),
-                b.nodes.len(),
-                b.edges.len()
-            ));
-        }
-        let apart = |p: [f64; 2], q: [f64; 2]| (V2::from_arr(p) - V2::from_arr(q)).norm();
-        let mut match_of = vec![usize::MAX; a.nodes.len()];
-        let mut taken = vec![false; b.nodes.len()];
-        for n in &a.nodes {
-            let m = b
-                .nodes
-                .iter()
-                .filter(|m| !taken[m.id] && m.kind == n.kind)
-                .min_by(|p, q| apart(p.xy, n.xy).total_cmp(&apart(q.xy, n.xy)))
-                .ok_or(format!("no node for {n:?}"))?;
-            if apart(m.xy, n.xy) > near || (m.radius - n.radius).abs() > near {
-                return Err(format!("node {n:?} against {m:?}"));
-            }
-            taken[m.id] = true;
-            match_of[n.id] = m.id;
-        }
-        let mut used = vec![false; b.edges.len()];
-        for e in &a.edges {
-            let ends = [match_of[e.from], match_of[e.to]];
-            let mut ends_sorted = ends;
-            ends_sorted.sort_unstable();
-            let boundaries = |x: &[[usize; 2]]| {
-                let mut v = [x[0], x[x.len() - 1]].concat();
-                v.sort_unstable();
-                v
-            };
-            let found = b.edges.iter().enumerate().find(|(k, f)| {
-                let mut f_ends = [f.from, f.to];
-                f_ends.sort_unstable();
-                !used[*k]
-                    && f_ends == ends_sorted
-                    && boundaries(&f.boundary) == boundaries(&e.boundary)
-                    && e.xy.iter().all(|&x| to_polyline(x, &f.xy) <= near)
-                    && f.xy.iter().all(|&x| to_polyline(x, &e.xy) <= near)
-            });
-            match found {
-                Some((k, _)) => used[k] = true,
-                None => return Err(format!("no edge for {} -> {} ({:?})", e.from, e.to, e.xy)),
-            }
-        }
-        Ok(())
-    }
-
-    /// A random polygon round a star of 5 to 15 points (sides bent at their middles: convex
-    /// and reflex corners), with up to two polygonal holes.
-    fn random_polygon(rnd: &mut dyn FnMut() -> f64) -> Option<Region> {
-        let n = 5 + (10.0 * rnd()) as usize;
-        let radii: Vec<f64> = (0..n).map(|_| 1.0 + 0.6 * rnd()).collect();
-        let wobble: Vec<f64> = (0..n).map(|_| 0.4 * rnd() - 0.2).collect();
-        let holes: Vec<([f64; 2], f64, usize, f64)> = (0..(3.0 * rnd()) as usize)
-            .map(|_| {
-                let centre = [0.8 * rnd() - 0.4, 0.8 * rnd() - 0.4];
-                (
-                    centre,
-                    0.05 + 0.15 * rnd(),
-                    3 + (6.0 * rnd()) as usize,
-                    rnd(),
-                )
-            })
-            .collect();
-        polygon_star_with_polygon_holes(&radii, &wobble, &holes)
-    }
 
     /// The differential test of the traced path: on 1,000 random polygons with reflex and
     /// convex corners and polygonal holes, its axis, wherever it stands, is the axis built
@@ -496,27 +410,6 @@ mod tests {
             same_graph(traced, bounds, near)
         };
         stands_as_the_bounds(&mut rng(3901), PairSource::SeedEdges, make, same);
-    }
-
-    /// A random star of 5 to 15 corners, about half of them rounded by tangent arcs and
-    /// about a third of its sides bulging in or out as arcs, with up to two round holes.
-    fn random_rounded(rnd: &mut dyn FnMut() -> f64) -> Option<Region> {
-        let n = 5 + (10.0 * rnd()) as usize;
-        let radii: Vec<f64> = (0..n).map(|_| 1.0 + 0.6 * rnd()).collect();
-        let fillet: Vec<f64> = (0..n)
-            .map(|_| if rnd() < 0.5 { 0.02 + 0.2 * rnd() } else { 0.0 })
-            .collect();
-        let bulge: Vec<f64> = (0..n)
-            .map(|_| match rnd() {
-                x if x < 0.15 => 0.03 + 0.15 * rnd(),
-                x if x < 0.3 => -0.03 - 0.15 * rnd(),
-                _ => 0.0,
-            })
-            .collect();
-        let holes: Vec<([f64; 2], f64)> = (0..(3.0 * rnd()) as usize)
-            .map(|_| ([0.8 * rnd() - 0.4, 0.8 * rnd() - 0.4], 0.05 + 0.15 * rnd()))
-            .collect();
-        rounded_star(&radii, &fillet, &bulge, &holes)
     }
 
     /// The differential test of the traced path on lines and arcs: on 1,000 random stars

@@ -59,6 +59,8 @@ pub(crate) struct ArcSite {
     start_angle: f64,
     turn: f64,
     sweep: f64,
+    /// The unit directions from the centre to the arc's start and end.
+    ends: [V2; 2],
     own: OwnParam,
     domain: (f64, f64),
 }
@@ -89,13 +91,19 @@ impl ArcSite {
         } else {
             1.0
         };
+        let start_angle = (start - centre).angle();
+        let sweep = (pieces as f64 * piece_sweep).abs().min(TAU);
         Some(Self {
             centre,
             radius,
             side,
-            start_angle: (start - centre).angle(),
+            start_angle,
             turn,
-            sweep: (pieces as f64 * piece_sweep).abs().min(TAU),
+            sweep,
+            ends: [
+                V2::polar(start_angle),
+                V2::polar(start_angle + turn * sweep),
+            ],
             own: segment.own_param(),
             domain: curve::ParamCurve::domain(segment),
         })
@@ -116,6 +124,24 @@ impl ArcSite {
             d - TAU
         } else {
             d
+        }
+    }
+
+    /// Whether the ray from the centre in direction `d` meets the arc (the centre itself,
+    /// `d` nil, is as near every point of it): the sign tests of [`ArcSite::angle_from_start`]
+    /// in `[0, sweep]` without the angle.
+    pub(crate) fn spans(&self, d: V2) -> bool {
+        if self.full() {
+            return true;
+        }
+        // (Cross products taken in the arc's direction of turn.)
+        let [s, e] = self.ends;
+        let (from_start, to_end) = (self.turn * s.cross(d), self.turn * d.cross(e));
+        if self.sweep <= std::f64::consts::PI {
+            from_start >= 0.0 && to_end >= 0.0
+        } else {
+            // (Off the arc is within the gap from its end to its start, under half a turn.)
+            !(from_start < 0.0 && to_end < 0.0)
         }
     }
 

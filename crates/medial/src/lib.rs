@@ -240,9 +240,9 @@ fn empty_axis() -> MedialAxis {
 const SEED_SEGMENTS: usize = 48;
 
 /// The medial axis of `region` from the bisectors of the pairs of segments `source` gives;
-/// whether it stands: its pairs did not come from the seed, or it is certified (its feet
-/// covering the boundaries, [`coverage`]) and no stretches were joined across feet that
-/// differ.
+/// whether it stands: its pairs were not guessed (by the seed, or by the closed-form paths'
+/// own search), or it is certified (its feet covering the boundaries, [`coverage`]) and no
+/// stretches were joined across feet that differ.
 fn axis_of(
     region: &Region,
     opts: &MedialOptions,
@@ -265,7 +265,7 @@ fn axis_of(
         PairSource::Pairwise => Some(pairwise_axis::pairwise(&sites, traced.chord_tol)),
         _ => None,
     };
-    let (found, pieces, complete, from_seed, proven, merge) = if let Some(traced) = closed_form {
+    let (found, pieces, complete, guessed, proven, merge) = if let Some(traced) = closed_form {
         match traced {
             Some(t) => (
                 t.candidates,
@@ -278,13 +278,13 @@ fn axis_of(
             None => return Ok((empty_axis(), false)),
         }
     } else {
-        let (found, complete, from_seed) = candidates::candidates(&sites, &traced, source)?;
+        let (found, complete, guessed) = candidates::candidates(&sites, &traced, source)?;
         let pieces = stretches::stretches(&sites, &found);
         (
             found,
             pieces,
             complete,
-            from_seed,
+            guessed,
             HashSet::new(),
             assemble::MERGE,
         )
@@ -327,6 +327,6 @@ fn axis_of(
             e.bspline = Some(fit::fit_edge(&e.xy, &e.radius, tol));
         }
     }
-    let stands = !from_seed || (axis.certified && !loose_join);
+    let stands = !guessed || (axis.certified && !loose_join);
     Ok((axis, stands))
 }

@@ -31,6 +31,73 @@ const EDGE_STEP: f64 = 1e-2;
 /// within 1e-6.)
 pub(crate) const MERGE: f64 = 1e-9;
 
+/// How far (a share of the size) an arc's exact form may stray from its circle for the
+/// closed-form disk test to measure it on the circle: far below the disks' slack.
+const ON_CIRCLE: f64 = 1e-11;
+
+/// Whether the exact form of arc `s` is its circle, to [`ON_CIRCLE`] of `size`: each rational
+/// quadratic piece's end control points on the circle, its middle one at the radius over
+/// the cosine of its half-angle on the bisector, with that cosine its weight relative to the
+/// ends' (as the arc's pieces are built). Those make the piece the circle exactly; so near
+/// them, it strays by about as much.
+fn on_its_circle(s: &curve::Segment, size: f64) -> bool {
+    let Some((centre, radius)) = s.circle() else {
+        return false;
+    };
+    let centre = V2::from_arr(centre);
+    let rational = s.curve().curve();
+    let (points, weights) = (s.curve().control_points(), rational.weights());
+    if points.len() < 3 || points.len() % 2 == 0 || weights.len() != points.len() {
+        return false;
+    }
+    let room = ON_CIRCLE * size;
+    points
+        .windows(3)
+        .step_by(2)
+        .zip(weights.windows(3).step_by(2))
+        .all(|(p, w)| {
+            let [a, m, b] = [p[0], p[1], p[2]].map(V2::from_arr);
+            let (ua, ub) = (a - centre, b - centre);
+            let half = 0.5 * ua.cross(ub).atan2(ua.dot(ub));
+            let bisector = (ua + ub) * (1.0 / (ua + ub).norm());
+            let middle = centre + bisector * (radius / half.cos());
+            let weight = w[1] / w[0];
+            (ua.norm() - radius).abs() <= room
+                && (ub.norm() - radius).abs() <= room
+                && (m - middle).norm() <= room
+                && (weight - half.cos()).abs() * radius <= room
+                && (w[2] - w[0]).abs() <= 1e-12 * w[0].abs()
+        })
+}
+
+/// The foot parameter on `along` strictly between `t0` and `t1` (a share of their span
+/// inside) where the radius of the bisector with `other` is least or greatest, if any: where
+/// the feet on both sites are on one normal (a line's foot below the other's centre; a
+/// circle's foot towards the other's centre or straight across to the line). Two lines'
+/// radius is affine along their bisector.
+fn radius_extremum(along: Shape, other: Shape, t0: f64, t1: f64) -> Option<f64> {
+    let inside = |t: f64| {
+        let margin = 1e-9 * (t1 - t0).abs();
+        (t - t0.min(t1) > margin && t0.max(t1) - t > margin).then_some(t)
+    };
+    match (along, other) {
+        (Shape::Line(_), Shape::Line(_)) => None,
+        (Shape::Line(l), Shape::Round { centre, .. }) => inside(l.along.dot(centre - l.start)),
+        (Shape::Round { centre, side, .. }, other) => {
+            let towards = match other {
+                Shape::Line(l) => l.inward * -side,
+                Shape::Round { centre: c, .. } => c - centre,
+            };
+            let angle = towards.angle();
+            // (Either way along the line through the centres; the turn nearest the span.)
+            [angle, angle + PI].into_iter().find_map(|a| {
+                let a = t0 + wrap_pi(a - t0);
+                inside(a)
+            })
+        }
+    }
+}
+
 /// Up to this many segments a disk is tested for emptiness on every segment in closed form:
 /// a test of each costs less than the walk of the boundaries' box tree that finds the few
 /// near it (about as much at 64).
@@ -87,7 +154,7 @@ pub(crate) enum Equation {
 #[derive(Debug, Clone, Copy)]
 enum Piece {
     Line(LineSite),
-    Arc { arc: ArcSite, start: V2 },
+    Arc { arc: ArcSite, start: V2, end: V2 },
 }
 
 /// A node of the axis solved from a vertex of the diagram (its disk tested empty), and
@@ -169,6 +236,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                             SegmentKind::Arc => Piece::Arc {
                                 arc: ArcSite::new(b, i, inside_left)?,
                                 start: s.start(),
+                                end: s.end(),
                             },
                             _ => return None,
                         })
@@ -177,11 +245,18 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
             })
             .collect::<Option<Vec<_>>>()?;
         let segments: usize = pieces.iter().map(Vec::len).sum();
+        // (The closed-form disk test measures each arc's circle: only where every arc's
+        // exact form is that circle, to far below the disks' slack.)
+        let circular = sites.boundaries.iter().all(|b| {
+            b.segments()
+                .iter()
+                .all(|s| s.kind() != SegmentKind::Arc || on_its_circle(s, sites.size))
+        });
         Some(Self {
             sites,
             pieces,
             chord_tol: chord_tol * sites.size,
-            few: segments <= CLOSED_FORM_DISK_SEGMENTS,
+            few: segments <= CLOSED_FORM_DISK_SEGMENTS && circular,
         })
     }
 
@@ -412,10 +487,22 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                 if !self.empty(&end) {
                     return None;
                 }
+                // (A vertex at the cut itself, the radius's extremum where the joint faces
+                // the other site, is the cut's: kept once in each piece.)
+                let at_cut =
+                    |v: &Vertex| (V2::from_arr(v.xy) - x).norm() <= MERGE * self.sites.size;
                 let mut first = piece[..=cut].to_vec();
+                if first.len() > 1 && first.last().is_some_and(at_cut) {
+                    first.pop();
+                }
                 first.push(end);
+                let rest = &piece[cut + 1..];
+                let rest = match rest {
+                    [v, more @ ..] if !more.is_empty() && at_cut(v) => more,
+                    _ => rest,
+                };
                 let mut second = vec![start];
-                second.extend_from_slice(&piece[cut + 1..]);
+                second.extend_from_slice(rest);
                 out.push(first);
                 out.push(second);
             }
@@ -440,10 +527,11 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
     }
 
     /// Whether every point of the boundaries is at least `radius` less the slack from `x`,
-    /// by its distance in closed form with a bound on its rounding: each joint's, and each
-    /// line's or arc's where the foot of `x` falls on it (else its nearest point is an end,
-    /// a joint). A foot misjudged on or off near an end moves the distance by rounding
-    /// only: the joint there is as far, to rounding, as the nearest point.
+    /// by its distance in closed form with a bound on its rounding: each segment's ends',
+    /// and each line's or arc's where the foot of `x` falls on it (else its nearest point
+    /// is an end). A foot misjudged on or off near an end moves the distance by rounding
+    /// only: the end there is as far, to rounding, as the nearest point. (Each segment's
+    /// own ends: a joint may leave a gap of up to 1e-9 of the size.)
     fn clear_in_closed_form(&self, x: V2, radius: f64) -> bool {
         let slack = EMPTY_SLACK * self.sites.size;
         let magnitude = |p: V2| p.x.abs().max(p.y.abs());
@@ -453,13 +541,16 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
         self.pieces.iter().flatten().all(|piece| match *piece {
             Piece::Line(l) => {
                 let at = magnitude(l.start) + l.length;
+                let end = l.start + l.along * l.length;
                 clear((x - l.start).norm(), at)
+                    && clear((x - end).norm(), at)
                     && (!(0.0..=l.length).contains(&l.along.dot(x - l.start))
                         || clear(l.inward.dot(x - l.start).abs(), at))
             }
-            Piece::Arc { arc, start } => {
+            Piece::Arc { arc, start, end } => {
                 let at = magnitude(arc.centre) + arc.radius;
                 clear((x - start).norm(), magnitude(start))
+                    && clear((x - end).norm(), magnitude(end))
                     && (!arc.spans(x - arc.centre)
                         || clear(((x - arc.centre).norm() - arc.radius).abs(), at))
             }
@@ -723,8 +814,13 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
         let step = EDGE_STEP * self.sites.size;
         let mut out = vec![p];
         let (mut t_lo, mut x_lo) = (t0, p);
-        // (The right ends still to reach, the nearest last.)
+        // (The right ends still to reach, the nearest last; the point where the radius is
+        // least or greatest among them, a vertex: the offsets find where a pass touches
+        // itself there.)
         let mut stack = vec![(t1, q, 0usize)];
+        if let Some(t) = radius_extremum(along, other, t0, t1) {
+            stack.push((t, at(t)?, 0));
+        }
         while let Some(&(t_hi, x_hi, depth)) = stack.last() {
             let t_mid = 0.5 * (t_lo + t_hi);
             let x_mid = at(t_mid)?;
@@ -772,7 +868,67 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
 
 #[cfg(test)]
 mod tests {
+    use super::LinesAndArcs;
+    use crate::bench_shapes::rng;
+    use crate::sites::{Sites, EMPTY_SLACK};
+    use crate::test_shapes::random_rounded;
     use curve::V2;
+
+    /// The closed-form disk test is sound and sharp against the boundary's nearest point (found
+    /// on the exact forms): on 200 random rounded stars with round holes, at random points of
+    /// their box (inside and out) and at their arcs' centres, with radii within five slacks
+    /// of the distance to the boundary and within a thousandth of the size below it, it never
+    /// calls a disk clear that holds a point nearer than its radius less the slack, and calls
+    /// clear every disk a thousandth of the size smaller than that distance.
+    #[test]
+    fn the_closed_form_disk_test_agrees_with_the_nearest_point() {
+        let mut rnd = rng(4003);
+        let (mut tested, mut clear) = (0, 0);
+        for _ in 0..200 {
+            let Some(region) = random_rounded(&mut rnd) else {
+                continue;
+            };
+            let sites = Sites::new(&region, false);
+            let model = LinesAndArcs::new(&sites, 1e-3).unwrap();
+            assert!(model.few);
+            let size = sites.size;
+            let slack = EMPTY_SLACK * size;
+            let centres = sites
+                .boundaries
+                .iter()
+                .flat_map(|b| b.segments().iter().filter_map(|s| s.circle()))
+                .map(|(c, _)| V2::from_arr(c));
+            let random: Vec<V2> = (0..20)
+                .map(|_| V2::new(4.0 * rnd() - 2.0, 4.0 * rnd() - 2.0))
+                .collect();
+            for x in centres.chain(random) {
+                let nearest = sites.nearest(x.arr(), 0.0).0;
+                for radius in [
+                    nearest + slack * (10.0 * rnd() - 5.0),
+                    nearest - 1e-3 * size * rnd(),
+                ] {
+                    let said = model.clear_in_closed_form(x, radius);
+                    tested += 1;
+                    clear += usize::from(said);
+                    // (The nearest point is found to ~1e-15 of the size.)
+                    assert!(
+                        !said || nearest >= radius - slack - 1e-14 * size,
+                        "{x:?}: clear at {radius}, the nearest at {nearest}"
+                    );
+                    if radius <= nearest - slack {
+                        assert!(
+                            said,
+                            "{x:?}: not clear at {radius}, the nearest at {nearest}"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(
+            tested > 6000 && clear > tested / 2,
+            "{clear} clear of {tested}"
+        );
+    }
 
     /// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
     fn hull(mut points: Vec<V2>) -> Vec<V2> {

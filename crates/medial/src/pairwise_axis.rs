@@ -6,19 +6,21 @@
 //! the whole axis (about 20 µs a chord, and one round hole takes dozens of chords), and the
 //! quadtree's pairs trace B-spline bisectors. Here every distance is in closed form. Along
 //! the normal ray at a foot on one site of a pair, the bisector's point comes from the other
-//! site ([`crate::true_sites::Shape::radius_on_ray`]); its disk is empty where every other site is as far as the
-//! feet. A segment's distance counts only where its foot falls on it: the boundary's distance
-//! is the least of those and the joints'. The kept stretches of a pair are found on samples of its feet and their ends
-//! by bisection; each end is solved as a node from the sites about it
-//! ([`LinesAndArcs::solve_node`]) and each stretch traced between its ends as the seed's
+//! site ([`crate::true_sites::Shape::radius_on_ray`]); its disk is empty where every other
+//! site is as far as the feet. A segment's distance counts only where its foot falls on it:
+//! the boundary's distance is the least of those and the joints'. The kept stretches of a
+//! pair are found on samples of its feet and their ends by bisection; each end is solved as
+//! a node on the pair's equation and the one that ends the stretch there
+//! ([`LinesAndArcs::solve_node`]). A node names the pairs whose edges meet there, and a pair
+//! with no stretch ending at it is followed from it, so that a stretch shorter than the
+//! samples' spacing is found too. Each stretch is traced between its ends as the seed's
 //! edges are. The cost is O(n³) in the sites, meant for a few dozen.
 //!
-//! Nothing here proves the axis. A stretch shorter than the samples' spacing is missed; the
-//! coverage of the feet ([`crate::coverage`]) then refuses the axis, which is built on the
-//! quadtree's pairs instead.
+//! Nothing here proves the axis. A stretch missed (shorter than the first step a pair is
+//! followed by from a node) leaves its feet's gap, and the coverage of the feet
+//! ([`crate::coverage`]) refuses the axis, which is then built on the quadtree's pairs.
 
-use crate::lines_and_arcs::MERGE;
-use crate::lines_and_arcs::{Equation, LinesAndArcs, Solved, Traced};
+use crate::lines_and_arcs::{Equation, LinesAndArcs, Solved, Traced, MERGE};
 use crate::sites::Sites;
 use crate::stretches::Stretch;
 use crate::true_sites::TrueSite;
@@ -270,7 +272,8 @@ impl Pairwise<'_, '_, '_> {
                 return None; // (the caller answers "cancelled")
             }
             for j in i + 1..n {
-                let pair = [self.sites[i], self.sites[j]];
+                let (a, b) = (self.sites[i], self.sites[j]);
+                let pair = [a.min(b), a.max(b)];
                 let Some(param) = self.param(pair)? else {
                     continue;
                 };
@@ -286,6 +289,9 @@ impl Pairwise<'_, '_, '_> {
         while next < found.len() * 2 {
             let (k, end) = (next / 2, next % 2);
             next += 1;
+            if !stage.go_on(0) {
+                return None;
+            }
             let node = found[k].ends[end];
             if node.radius == 0.0 {
                 continue; // (a convex corner: its one edge is the stretch itself)
@@ -307,9 +313,17 @@ impl Pairwise<'_, '_, '_> {
                         continue;
                     };
                     for span in self.runs_from(pair, param, node.xy)? {
+                        // (Round a whole circle spans are taken from anywhere: there a
+                        // stretch found again has the same ends.)
                         let [lo, hi] = span.map(|b| b.kept);
-                        let overlaps =
-                            |f: &Found| f.pair == pair && f.span[0] < hi && lo < f.span[1];
+                        let overlaps = |f: &Found| {
+                            f.pair == pair
+                                && if param.whole {
+                                    f.ends.iter().any(|e| (e.xy - node.xy).norm() <= merge)
+                                } else {
+                                    f.span[0] < hi && lo < f.span[1]
+                                }
+                        };
                         if !found.iter().any(overlaps) {
                             found.push(self.solve_ends(pair, param, span)?);
                         }
@@ -361,7 +375,7 @@ impl Pairwise<'_, '_, '_> {
         // (Round a whole circle the samples start from one not kept: a run of kept ones
         // then never wraps past the last.)
         let offset = if param.whole {
-            samples.iter().position(|&k| !k)?
+            samples[..SAMPLES].iter().position(|&k| !k)?
         } else {
             0
         };
@@ -540,7 +554,7 @@ impl Pairwise<'_, '_, '_> {
         let radius = model.shape(other).radius_on_ray(foot, normal)?;
         // (Past an arc's centre its feet are on the far side; no disk inside is wider than
         // the region, and the rounding of a farther point's distances is no measure.)
-        if radius > model.sites.size
+        if radius > model.sites.diagonal
             || model
                 .arc(along)
                 .is_some_and(|a| a.side < 0.0 && radius > a.radius)

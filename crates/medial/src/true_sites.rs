@@ -303,6 +303,64 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        /// An arc spans a direction exactly where the angle from its start lies in
+        /// `[0, sweep]` (away from its ends by more than rounding), for arcs of either turn,
+        /// shorter and longer than half a turn.
+        #[test]
+        fn an_arc_spans_the_directions_its_angles_cover(
+            start in -7.0f64..7.0,
+            sweep in 0.05f64..6.2,
+            ccw in proptest::bool::ANY,
+            direction in 0.0f64..6.3,
+            length in 0.01f64..3.0,
+        ) {
+            let end = if ccw { start + sweep } else { start - sweep };
+            let arc = curve::Segment::arc([1.0, -2.0], 1.5, start, end).unwrap();
+            let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
+            let profile = Profile::new(vec![arc, line], None).unwrap();
+            let a = ArcSite::new(&profile, 0, 1.0).unwrap();
+            let d = V2::polar(direction) * length;
+            let angle = a.angle_from_start(a.centre + d);
+            if angle > 1e-9 && angle < a.sweep() - 1e-9 {
+                proptest::prop_assert!(a.spans(d), "{angle} in [0, {}]", a.sweep());
+            } else if angle < -1e-9 || angle > a.sweep() + 1e-9 {
+                proptest::prop_assert!(!a.spans(d), "{angle} off [0, {}]", a.sweep());
+            }
+        }
+    }
+
+    /// An arc spans every direction from its centre itself; a whole circle spans every
+    /// direction; an arc of exactly half a turn spans the half-plane on its side.
+    #[test]
+    fn an_arc_spans_its_centre_and_half_planes() {
+        let arc_of = |start: f64, end: f64| {
+            let arc = curve::Segment::arc([0.0, 0.0], 1.0, start, end).unwrap();
+            let segments = if f64::abs(end - start) < TAU {
+                let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
+                vec![arc, line]
+            } else {
+                vec![arc]
+            };
+            let profile = Profile::new(segments, None).unwrap();
+            ArcSite::new(&profile, 0, 1.0).unwrap()
+        };
+        let whole = arc_of(0.3, 0.3 + TAU);
+        let half = arc_of(0.0, std::f64::consts::PI);
+        for a in [&whole, &half, &arc_of(1.0, 2.0), &arc_of(2.0, -3.0)] {
+            assert!(a.spans(V2::new(0.0, 0.0)));
+        }
+        for k in 0..16 {
+            let d = V2::polar(TAU * k as f64 / 16.0 + 0.01);
+            assert!(whole.spans(d));
+            assert_eq!(half.spans(d), d.y >= 0.0, "{d:?}");
+        }
+        // (At its very ends rounding decides, and the closed-form tests measure the ends
+        // apart.)
+        assert!(half.spans(V2::new(1.0, 1e-9)) && half.spans(V2::new(-1.0, 1e-9)));
+        assert!(!half.spans(V2::new(1.0, -1e-9)) && !half.spans(V2::new(-1.0, -1e-9)));
+    }
+
     /// An arc's angles and shares: its ends at 0 and its sweep, shares 0 and 1; its middle at
     /// half the sweep; a point past its end reads past the sweep, one before its start below 0.
     #[test]

@@ -303,6 +303,21 @@ mod tests {
         }
     }
 
+    /// The arc about `centre` of radius `radius` from angle `start` to `end`, closed by a
+    /// line back to its start unless it is a whole circle, and its site (axis on the left).
+    fn arc_profile(centre: [f64; 2], radius: f64, start: f64, end: f64) -> (Profile, ArcSite) {
+        let arc = curve::Segment::arc(centre, radius, start, end).unwrap();
+        let segments = if f64::abs(end - start) < TAU {
+            let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
+            vec![arc, line]
+        } else {
+            vec![arc]
+        };
+        let profile = Profile::new(segments, None).unwrap();
+        let site = ArcSite::new(&profile, 0, 1.0).unwrap();
+        (profile, site)
+    }
+
     proptest::proptest! {
         /// An arc spans a direction exactly where the angle from its start lies in
         /// `[0, sweep]` (away from its ends by more than rounding), for arcs of either turn,
@@ -316,10 +331,7 @@ mod tests {
             length in 0.01f64..3.0,
         ) {
             let end = if ccw { start + sweep } else { start - sweep };
-            let arc = curve::Segment::arc([1.0, -2.0], 1.5, start, end).unwrap();
-            let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
-            let profile = Profile::new(vec![arc, line], None).unwrap();
-            let a = ArcSite::new(&profile, 0, 1.0).unwrap();
+            let a = arc_profile([1.0, -2.0], 1.5, start, end).1;
             let d = V2::polar(direction) * length;
             let angle = a.angle_from_start(a.centre + d);
             if angle > 1e-9 && angle < a.sweep() - 1e-9 {
@@ -334,17 +346,7 @@ mod tests {
     /// direction; an arc of exactly half a turn spans the half-plane on its side.
     #[test]
     fn an_arc_spans_its_centre_and_half_planes() {
-        let arc_of = |start: f64, end: f64| {
-            let arc = curve::Segment::arc([0.0, 0.0], 1.0, start, end).unwrap();
-            let segments = if f64::abs(end - start) < TAU {
-                let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
-                vec![arc, line]
-            } else {
-                vec![arc]
-            };
-            let profile = Profile::new(segments, None).unwrap();
-            ArcSite::new(&profile, 0, 1.0).unwrap()
-        };
+        let arc_of = |start: f64, end: f64| arc_profile([0.0, 0.0], 1.0, start, end).1;
         let whole = arc_of(0.3, 0.3 + TAU);
         let half = arc_of(0.0, std::f64::consts::PI);
         for a in [&whole, &half, &arc_of(1.0, 2.0), &arc_of(2.0, -3.0)] {
@@ -366,15 +368,7 @@ mod tests {
     #[test]
     fn an_arcs_angles_and_shares_follow_it() {
         for (start, end) in [(0.3, 2.0), (2.0, 0.3), (-1.0, 4.5), (1.0, 1.0 - TAU)] {
-            let arc = curve::Segment::arc([1.0, -2.0], 1.5, start, end).unwrap();
-            let segments = if f64::abs(end - start) < TAU {
-                let line = curve::Segment::line(arc.end().arr(), arc.start().arr()).unwrap();
-                vec![arc, line]
-            } else {
-                vec![arc]
-            };
-            let profile = Profile::new(segments, None).unwrap();
-            let a = ArcSite::new(&profile, 0, 1.0).unwrap();
+            let (profile, a) = arc_profile([1.0, -2.0], 1.5, start, end);
             let sweep = f64::abs(end - start);
             assert!((a.sweep() - sweep).abs() < 1e-12);
             let at = |angle: f64| a.point_at(angle);

@@ -313,19 +313,22 @@ impl Pairwise<'_, '_, '_> {
                         continue;
                     };
                     for span in self.runs_from(pair, param, node.xy)? {
-                        // (Round a whole circle spans are taken from anywhere: there a
-                        // stretch found again has the same ends.)
-                        let [lo, hi] = span.map(|b| b.kept);
-                        let overlaps = |f: &Found| {
-                            f.pair == pair
+                        let new = self.solve_ends(pair, param, span)?;
+                        // (Found already: its span overlaps one of the pair's, or, round a
+                        // whole circle where spans are taken from anywhere, its ends are
+                        // another's.)
+                        let at_an_end =
+                            |x: V2, g: &Found| g.ends.iter().any(|e| (e.xy - x).norm() <= merge);
+                        let again = |g: &Found| {
+                            g.pair == pair
                                 && if param.whole {
-                                    f.ends.iter().any(|e| (e.xy - node.xy).norm() <= merge)
+                                    new.ends.iter().all(|e| at_an_end(e.xy, g))
                                 } else {
-                                    f.span[0] < hi && lo < f.span[1]
+                                    g.span[0] < new.span[1] && new.span[0] < g.span[1]
                                 }
                         };
-                        if !found.iter().any(overlaps) {
-                            found.push(self.solve_ends(pair, param, span)?);
+                        if !found.iter().any(again) {
+                            found.push(new);
                         }
                     }
                 }

@@ -157,6 +157,17 @@ enum Piece {
     Arc { arc: ArcSite, start: V2, end: V2 },
 }
 
+impl Piece {
+    /// Whether the foot of `x` on the piece's line or circle falls on the piece (else the
+    /// piece's nearest point to `x` is one of its ends).
+    fn falls_on(&self, x: V2) -> bool {
+        match self {
+            Piece::Line(l) => (0.0..=l.length).contains(&l.along.dot(x - l.start)),
+            Piece::Arc { arc, .. } => arc.spans(x - arc.centre),
+        }
+    }
+}
+
 /// A node of the axis solved from a vertex of the diagram (its disk tested empty), and
 /// whether its place is proven in closed form (a junction of three sites).
 #[derive(Debug, Clone, Copy)]
@@ -544,14 +555,13 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                 let end = l.start + l.along * l.length;
                 clear((x - l.start).norm(), at)
                     && clear((x - end).norm(), at)
-                    && (!(0.0..=l.length).contains(&l.along.dot(x - l.start))
-                        || clear(l.inward.dot(x - l.start).abs(), at))
+                    && (!piece.falls_on(x) || clear(l.inward.dot(x - l.start).abs(), at))
             }
             Piece::Arc { arc, start, end } => {
                 let at = magnitude(arc.centre) + arc.radius;
                 clear((x - start).norm(), magnitude(start))
                     && clear((x - end).norm(), magnitude(end))
-                    && (!arc.spans(x - arc.centre)
+                    && (!piece.falls_on(x)
                         || clear(((x - arc.centre).norm() - arc.radius).abs(), at))
             }
         })
@@ -606,21 +616,31 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
     /// The joint of two segments of one boundary that meet there smoothly (tangent, to the
     /// joints' classification), if `a` and `b` are such.
     pub(crate) fn smooth_joint_between(&self, a: TrueSite, b: TrueSite) -> Option<V2> {
+        let after = self.joint_between(a, b)?;
+        self.smooth_at((after.boundary, after.segment))
+            .then(|| self.start(after))
+    }
+
+    /// Of two segments (not corners) next to each other on one boundary, the later: the
+    /// joint between them is where it starts. `None` where `a` and `b` are not such.
+    pub(crate) fn joint_between(&self, a: TrueSite, b: TrueSite) -> Option<TrueSite> {
         if a.corner || b.corner || a.boundary != b.boundary {
             return None;
         }
-        let profile = self.sites.boundaries[a.boundary];
         // (A region's boundaries are closed.)
-        let n = profile.segments().len();
-        let after = if (a.segment + 1) % n == b.segment {
-            b
+        let n = self.pieces[a.boundary].len();
+        if (a.segment + 1) % n == b.segment {
+            Some(b)
         } else if (b.segment + 1) % n == a.segment {
-            a
+            Some(a)
         } else {
-            return None;
-        };
-        self.smooth_at((after.boundary, after.segment))
-            .then(|| self.start(after))
+            None
+        }
+    }
+
+    /// Whether the foot of `x` on segment `s` (not a corner) falls on it.
+    pub(crate) fn falls_on(&self, s: TrueSite, x: V2) -> bool {
+        self.piece(s).falls_on(x)
     }
 
     /// The segment and the corner at one of its ends, if `a` and `b` are such (either

@@ -596,10 +596,7 @@ impl Pairwise<'_, '_, '_> {
                 .get(&s)
                 .is_some_and(|f| f.holds(x - model.start(s)));
         }
-        if let Some(l) = model.line(s) {
-            return (0.0..=l.length).contains(&l.along.dot(x - l.start));
-        }
-        model.arc(s).is_some_and(|a| a.spans(x - a.centre))
+        model.falls_on(s, x)
     }
 
     /// Whether site `s` touches the disk about `x` of radius `radius` (to [`ABOUT`]): its
@@ -645,17 +642,7 @@ impl Pairwise<'_, '_, '_> {
         let size = model.sites.size;
         let (x, radius) = self.point(pair, param, bound.kept)?;
         if radius <= ABOUT * size {
-            let [a, b] = pair;
-            let n = model.sites.boundaries[a.boundary].segments().len();
-            let later = if a.boundary != b.boundary || a.corner || b.corner {
-                return None;
-            } else if (a.segment + 1) % n == b.segment {
-                b
-            } else if (b.segment + 1) % n == a.segment {
-                a
-            } else {
-                return None;
-            };
+            let later = model.joint_between(pair[0], pair[1])?;
             let corner = Solved {
                 xy: model.start(later),
                 radius: 0.0,

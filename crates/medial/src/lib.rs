@@ -33,6 +33,8 @@ mod certificate;
 mod corners;
 mod coverage;
 mod curvature;
+#[cfg(test)]
+mod differential;
 mod error;
 mod fans;
 mod fit;

@@ -451,12 +451,16 @@ mod tests {
             let n = 5 + (10.0 * rnd()) as usize;
             random_region(rnd, n, case % 4 != 3)
         };
-        let same = |seeded: &crate::MedialAxis, bounds: &crate::MedialAxis, _: &Region| {
+        fn same(
+            seeded: &crate::MedialAxis,
+            bounds: &crate::MedialAxis,
+            _: &Region,
+        ) -> Result<(), String> {
             (seeded == bounds)
                 .then_some(())
                 .ok_or_else(|| format!("\n{}\n{}", summary(seeded), summary(bounds)))
-        };
-        stands_as_the_bounds(&mut rng(39), PairSource::Seed, make, same);
+        }
+        stands_as_the_bounds(&mut rng(39), &[(PairSource::Seed, same)], make);
     }
 
     /// The seed names O(n) pairs: on star polygons of 100 to 1,600 lines, under three per

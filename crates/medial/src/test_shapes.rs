@@ -117,39 +117,47 @@ fn with_round_holes(outer: Profile, holes: &[([f64; 2], f64)]) -> Option<Region>
     Region::new(outer, kept).ok()
 }
 
-/// A differential test of a path to the axis against the bounds' pairs: on 1,000 regions
-/// `make` draws (from `rnd`, by case number), the axis `source` builds, wherever it stands,
-/// is the bounds' axis as `same` judges (`Err` with how they differ); and it stands on at
-/// least 95 % of those the bounds certify (a path that stood nowhere would pass the first
-/// half alone).
+/// How a path's axis is judged against the bounds' axis of the same region: `Err` with how
+/// they differ.
+pub(crate) type Judge = fn(&MedialAxis, &MedialAxis, &Region) -> Result<(), String>;
+
+/// A differential test of paths to the axis against the bounds' pairs: on 1,000 regions
+/// `make` draws (from `rnd`, by case number), the axis each of `paths` builds, wherever it
+/// stands, is the bounds' axis as its judge decides; and each stands on at least 95 % of
+/// those the bounds certify (a path that stood nowhere would pass the first half alone).
+/// The bounds' axis, the costly one, is built once per region for all the paths.
 pub(crate) fn stands_as_the_bounds(
     rnd: &mut impl FnMut() -> f64,
-    source: PairSource,
+    paths: &[(PairSource, Judge)],
     mut make: impl FnMut(&mut dyn FnMut() -> f64, usize) -> Option<Region>,
-    same: impl Fn(&MedialAxis, &MedialAxis, &Region) -> Result<(), String>,
 ) {
     let opts = MedialOptions::default();
-    let (mut tried, mut stood, mut certified) = (0, 0, 0);
+    let (mut tried, mut certified) = (0, 0);
+    let mut stood = vec![0; paths.len()];
     for case in 0..1000 {
         let Some(region) = make(rnd, case) else {
             continue;
         };
         tried += 1;
-        let (found, stands) = axis_of(&region, &opts, source).unwrap();
         let bounds = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
         certified += usize::from(bounds.certified);
-        if stands {
-            stood += 1;
-            if let Err(why) = same(&found, &bounds, &region) {
-                panic!("case {case}: the {source:?} axis stands and differs: {why}");
+        for (&(source, same), stood) in paths.iter().zip(&mut stood) {
+            let (found, stands) = axis_of(&region, &opts, source).unwrap();
+            if stands {
+                *stood += 1;
+                if let Err(why) = same(&found, &bounds, &region) {
+                    panic!("case {case}: the {source:?} axis stands and differs: {why}");
+                }
             }
         }
     }
     assert!(tried > 900, "{tried}");
-    assert!(
-        stood * 100 >= certified * 95,
-        "the {source:?} axis stood on {stood} of {certified} certified"
-    );
+    for (&(source, _), stood) in paths.iter().zip(stood) {
+        assert!(
+            stood * 100 >= certified * 95,
+            "the {source:?} axis stood on {stood} of {certified} certified"
+        );
+    }
 }
 
 /// A polygon round a star at `radii` (counter-clockwise) whose corners are rounded by

@@ -393,45 +393,12 @@ impl Tracer<'_, '_> {
 mod tests {
     use crate::bench_shapes::{polygon, rng, star_polygon};
     use crate::candidates::PairSource;
-    use crate::test_shapes::{random_polygon, random_rounded, same_graph, stands_as_the_bounds};
-    use crate::{axis_of, MedialAxis, MedialOptions};
+    use crate::test_shapes::{random_rounded, same_graph};
+    use crate::{axis_of, MedialOptions};
     use curve::{Region, V2};
 
-    /// The differential test of the traced path: on 1,000 random polygons with reflex and
-    /// convex corners and polygonal holes, its axis, wherever it stands, is the axis built
-    /// from every pair the bounds keep (the same nodes, the same edges between them within
-    /// twice the chord tolerance, on the same boundaries); and it stands wherever that one is
-    /// certified but for a few.
-    #[test]
-    fn the_traced_axis_is_the_bounds_axis() {
-        let make = |rnd: &mut dyn FnMut() -> f64, _| random_polygon(rnd);
-        let same = |traced: &MedialAxis, bounds: &MedialAxis, region: &Region| {
-            let near = 2.0 * MedialOptions::default().chord_tol * region.size();
-            same_graph(traced, bounds, near)
-        };
-        stands_as_the_bounds(&mut rng(3901), PairSource::SeedEdges, make, same);
-    }
-
-    /// The differential test of the traced path on lines and arcs: on 1,000 random stars
-    /// with rounded corners, sides bulging either way and round holes, its axis, wherever it
-    /// stands, is the bounds' axis (as [`the_traced_axis_is_the_bounds_axis`] judges it); and
-    /// it stands wherever that one is certified but for a few. (Where the bounds' axis is
-    /// not certified it is no judge: beside a convex corner of an arc and a line it may end
-    /// a leaf a little off the corner, unproven, where the traced one ends it at the corner.)
-    #[test]
-    fn the_traced_axis_is_the_bounds_axis_with_arcs() {
-        let make = |rnd: &mut dyn FnMut() -> f64, _| random_rounded(rnd);
-        let same = |traced: &MedialAxis, bounds: &MedialAxis, region: &Region| {
-            if !bounds.certified {
-                return Ok(());
-            }
-            let near = 2.0 * MedialOptions::default().chord_tol * region.size();
-            same_graph(traced, bounds, near)
-        };
-        stands_as_the_bounds(&mut rng(3902), PairSource::SeedEdges, make, same);
-    }
-
-    /// Case 379 of [`the_traced_axis_is_the_bounds_axis_with_arcs`]: two arcs meet at a
+    /// Case 379 of the traced path's differential test on arcs
+    /// ([`crate::differential`]): two arcs meet at a
     /// convex corner of 0.012 rad, whose leaf is short. The bounds' pairs miss that leaf,
     /// and their axis is then not certified for its feet's gap (it was, before every axis
     /// was asked to cover its boundaries); the traced axis has the leaf and is certified.

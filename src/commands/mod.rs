@@ -527,7 +527,10 @@ pub fn offset(
             } else {
                 offset::offsets(r, axis, &list, &opts)
             }
-            .map_err(|e| CommandError::Usage(format!("offset: {e}")))
+            .map_err(|e| match e {
+                offset::Error::Cancelled => CommandError::Other(format!("offset: {e}")),
+                _ => CommandError::Usage(format!("offset: {e}")),
+            })
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(parts::joined_offsets(found, region.drawing_doubt()))

@@ -111,6 +111,12 @@ pub struct Stage {
 }
 
 impl Stage {
+    /// Whether the stage runs under a watch (work that cannot look at the watch itself, a
+    /// foreign library's, may then be run where it can be left when cancelled).
+    pub fn is_watched(&self) -> bool {
+        self.watch.is_some()
+    }
+
     /// Whether the watch was asked to stop (never under no watch): for a loop whose units
     /// cost more to look at than this does.
     pub fn cancelled(&self) -> bool {

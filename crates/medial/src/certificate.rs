@@ -91,6 +91,9 @@ pub(crate) enum Doubt {
     Coverage,
     /// A search limit was hit.
     SearchLimit,
+    /// The work was cancelled before every node was proven (no such axis is answered: its
+    /// caller says "cancelled").
+    Cancelled,
 }
 
 impl Doubt {
@@ -117,6 +120,7 @@ impl Doubt {
                  the tolerance of a proven peak of the curvature"
             }
             Doubt::SearchLimit => "a search limit was hit",
+            Doubt::Cancelled => "the work was cancelled before the axis was proven",
         }
     }
 
@@ -163,7 +167,12 @@ pub(crate) fn doubt(
         }
     }
     let corners = Corners::of(sites);
+    // (A node's proof may take milliseconds: the watch is looked at for each.)
+    let stage = curve::watch::stage("medial axis: the certificate, node by node");
     axis.nodes.iter().find_map(|node| {
+        if !stage.go_on(1) {
+            return Some(Doubt::Cancelled);
+        }
         // A junction's or an end's disk is empty (to the slack): the node is on the axis.
         let empty = || sites.disk(node.xy, node.radius) == Disk::Empty;
         let same = SAME_FOOT * sites.size;

@@ -118,15 +118,17 @@ impl Line {
         marks_within(&self.convex, self.length, start, lo, hi)
     }
 
-    /// Where the foot at profile parameter `u`, seen from the axis point `x`, lies on the line.
-    fn place(&self, u: f64, foot: V2, x: V2) -> f64 {
+    /// Where the foot at profile parameter `u`, seen from the axis point `x`, lies on the line
+    /// (the foot's point is asked for only at a joint, where the direction from it tells the
+    /// place in the joint's fan).
+    fn place(&self, u: f64, foot: impl FnOnce() -> V2, x: V2) -> f64 {
         let n = self.n as f64;
         let u = u.rem_euclid(n);
         // (The nearest joint: one of a closed boundary's is at both 0 and n.)
         let joint = u.round();
         if (u - joint).abs() <= AT_CORNER * n {
             if let Some(fan) = self.fan_at[joint as usize % self.n].map(|f| &self.fans[f]) {
-                let d = x - foot;
+                let d = x - foot();
                 let phi = (fan.turn * fan.from.cross(d)).atan2(fan.from.dot(d));
                 return fan.start + phi.clamp(0.0, fan.angle);
             }
@@ -230,7 +232,7 @@ fn side_stretches(
 ) -> Result<(), &'static str> {
     let k = e.boundary[0][side];
     let foot = |v: usize| V2::from_arr(sites.foot(k, e.feet[v][side]));
-    let at = |v: usize| line.place(e.feet[v][side], foot(v), V2::from_arr(e.xy[v]));
+    let at = |v: usize| line.place(e.feet[v][side], || foot(v), V2::from_arr(e.xy[v]));
     let end = |v: usize| (foot(v), e.radius[v], V2::from_arr(e.xy[v]) - foot(v));
     let wrap = |d: f64| d - line.length * (d / line.length).round();
     let start = at(0);
@@ -568,7 +570,7 @@ mod tests {
                 continue;
             }
             let foot = V2::from_arr(sites.foot(0, u));
-            let back = line.param_at(line.place(u, foot, far));
+            let back = line.param_at(line.place(u, || foot, far));
             assert!((back - u).abs() < 1e-12, "{u} -> {back}");
         }
         for fan in &line.fans {

@@ -294,8 +294,12 @@ fn axis_of(
     // (A cancelled search found a part: nothing is built from it, its caller answers
     // "cancelled".)
     if curve::watch::cancelled() {
+        // (What was found may be large, and freeing it takes tens of milliseconds: that is
+        // done off the caller's path, which must answer the cancel at once.)
+        std::thread::spawn(move || drop((found, pieces)));
         return Ok((empty_axis(), false));
     }
+    let _stage = curve::watch::stage("medial axis: the edges joined at their nodes");
     let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found, merge);
     axis.complete &= complete;
     let doubt = if !axis.complete {
@@ -321,6 +325,9 @@ fn axis_of(
             None
         }
     };
+    if curve::watch::cancelled() {
+        return Ok((empty_axis(), false));
+    }
     axis.certified = doubt.is_none();
     axis.reason = doubt.map(|d| d.stated(&sites, &axis));
     if opts.fit {

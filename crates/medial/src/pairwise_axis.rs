@@ -25,6 +25,7 @@ use crate::sites::Sites;
 use crate::stretches::Stretch;
 use crate::true_sites::TrueSite;
 use curve::V2;
+use std::cell::Cell;
 use std::collections::{HashMap, HashSet};
 
 /// Feet sampled along the parametrising site of each pair (at equal steps of its
@@ -134,6 +135,8 @@ struct Pairwise<'m, 's, 'a> {
     joints: Vec<(TrueSite, V2)>,
     /// The fan of normals at each reflex corner (see [`Fan`]).
     fans: HashMap<TrueSite, Fan>,
+    /// The site (an index into `sites`, then `joints`) that last refused a point's disk.
+    last_refusal: Cell<usize>,
 }
 
 /// The directions in which a reflex corner is the nearest point: from the normal into the
@@ -203,6 +206,7 @@ pub(crate) fn pairwise(sites: &Sites<'_>, chord_tol: f64) -> Option<Traced> {
         sites: all,
         joints,
         fans,
+        last_refusal: Cell::new(0),
     };
     let stage = curve::watch::stage("medial axis: every pair of sites");
     let found = pairwise.stretches(&stage)?;
@@ -573,17 +577,26 @@ impl Pairwise<'_, '_, '_> {
         // where a third site enters, the farther the shallower it enters, and the end's node
         // would lie off it.)
         let reach = radius - ROUNDING * (x.x.abs().max(x.y.abs()) + radius);
-        let segments_clear = self
-            .sites
-            .iter()
-            .filter(|s| !s.corner && !pair.contains(s))
-            .all(|&s| self.clears(s, x, reach));
-        let joints_clear = self
-            .joints
-            .iter()
-            .filter(|(s, _)| !pair.contains(s))
-            .all(|&(_, at)| (x - at).norm() >= reach);
-        (segments_clear && joints_clear).then_some((x, radius))
+        let clear = |k: usize| match self.sites.get(k) {
+            Some(&s) => s.corner || pair.contains(&s) || self.clears(s, x, reach),
+            None => {
+                let (s, at) = self.joints[k - self.sites.len()];
+                pair.contains(&s) || (x - at).norm() >= reach
+            }
+        };
+        // (Nearby feet are mostly refused by the site that refused the last: it is tried
+        // first.)
+        let last = self.last_refusal.get();
+        if !clear(last) {
+            return None;
+        }
+        match (0..self.sites.len() + self.joints.len()).find(|&k| k != last && !clear(k)) {
+            Some(k) => {
+                self.last_refusal.set(k);
+                None
+            }
+            None => Some((x, radius)),
+        }
     }
 
     /// Whether the foot of `x` on site `s` falls on its segment (for a reflex corner,

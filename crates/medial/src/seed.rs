@@ -27,6 +27,8 @@ use boostvoronoi::prelude::{Builder, Diagram, EdgeIndex, Line, SourceCategory};
 use curve::{Profile, SegmentKind, V2};
 use std::collections::HashSet;
 use std::f64::consts::PI;
+use std::sync::mpsc;
+use std::time::Duration;
 
 /// The grid the chords are snapped to: the box's larger side spans 2^29 units, so coordinates
 /// and their differences stay well inside the 32-bit integers the exact predicates are made
@@ -122,12 +124,48 @@ pub(crate) fn chord_diagram(
             Line::from([p[0], p[1], q[0], q[1]])
         })
         .collect();
-    let diagram = Builder::<i32>::default()
-        .with_segments(lines.iter())
-        .ok()?
-        .build()
-        .ok()?;
+    let diagram = diagram_of(lines)?;
     Some((approx, diagram))
+}
+
+/// From this many chords on, a watched diagram is built on a thread of its own
+/// ([`diagram_of`]): boostvoronoi takes ~20 µs a segment, so 0.1 s from ~5,000, and
+/// spawning the thread costs tens of microseconds.
+const WATCHED_DIAGRAM_CHORDS: usize = 1000;
+
+/// How often the watch is looked at while the diagram is built on its own thread.
+const DIAGRAM_POLL: Duration = Duration::from_millis(5);
+
+/// The Voronoi diagram of `lines`; `None` where boostvoronoi refuses them (or fails), or
+/// the work is cancelled. The build cannot look at the watch: where the work is watched
+/// and large, it runs on a thread of its own while this one looks at the watch, and on a
+/// cancel it is left to finish alone, its diagram dropped, so that the cancel is answered
+/// within [`DIAGRAM_POLL`].
+fn diagram_of(lines: Vec<Line<i32>>) -> Option<Diagram> {
+    let large = lines.len() >= WATCHED_DIAGRAM_CHORDS;
+    let build = move || {
+        Builder::<i32>::default()
+            .with_segments(lines.iter())
+            .ok()?
+            .build()
+            .ok()
+    };
+    let stage = curve::watch::stage("medial axis: the Voronoi diagram of the chords");
+    if !(stage.is_watched() && large) {
+        return build();
+    }
+    let (send, receive) = mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = send.send(build());
+    });
+    loop {
+        match receive.recv_timeout(DIAGRAM_POLL) {
+            Ok(diagram) => return diagram,
+            Err(mpsc::RecvTimeoutError::Timeout) if !stage.cancelled() => {}
+            // (Cancelled; or the build ended without a diagram: refused, as it would be.)
+            Err(_) => return None,
+        }
+    }
 }
 
 /// The boundaries' chords, snapped to the grid over `bounds` (consecutive points that snap

@@ -7,6 +7,7 @@ use crate::corners::entered_across_corner;
 use crate::curvature::{curvature_peak, sign_change};
 use crate::parallel::in_order;
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
+use curve::watch::Stage;
 use curve::ParamCurve;
 
 /// Halvings that bracket where a stretch ends: to 2^-32 of a polyline step, which tells the
@@ -116,18 +117,18 @@ pub(crate) fn stretches(sites: &Sites<'_>, found: &[Candidate]) -> Vec<Stretch> 
     let order: Vec<usize> = (0..found.len()).collect();
     let per_candidate = in_order(&order, |&k| {
         if stage.go_on(1) {
-            stretches_of(sites, k, &found[k])
+            stretches_of(sites, k, &found[k], &stage)
         } else {
             Vec::new()
         }
     });
-    per_candidate.concat()
+    per_candidate.into_iter().flatten().collect()
 }
 
 /// The stretches of candidate `k`.
-fn stretches_of(sites: &Sites<'_>, k: usize, c: &Candidate) -> Vec<Stretch> {
+fn stretches_of(sites: &Sites<'_>, k: usize, c: &Candidate, stage: &Stage) -> Vec<Stretch> {
     let mut out = Vec::new();
-    let branch = Branch { sites, c };
+    let branch = Branch { sites, c, stage };
     let samples = branch.samples();
     let n = samples.len();
     let mut i = 0;
@@ -181,6 +182,9 @@ struct Sample {
 struct Branch<'s, 'a> {
     sites: &'s Sites<'a>,
     c: &'s Candidate,
+    /// The stage's watch, looked at for every point tested and every step of the searches:
+    /// one candidate may have thousands of points, each a disk test.
+    stage: &'s Stage,
 }
 
 impl Branch<'_, '_> {
@@ -192,6 +196,10 @@ impl Branch<'_, '_> {
         let mut out: Vec<Sample> = Vec::with_capacity(c.tr.len());
         let mut last_intruder: Option<Intruder> = None;
         for (tr, xy) in self.points() {
+            // (Cancelled: what is tested so far is no answer, and the caller says so.)
+            if self.stage.cancelled() {
+                break;
+            }
             let (on_axis, intruder) = match self.vertex(tr, xy) {
                 Some(v) => match self.classify(&v) {
                     Ok(()) => (Some(v), None),
@@ -292,7 +300,7 @@ impl Branch<'_, '_> {
         b: ([f64; 2], [f64; 2], Intruder),
         depth: usize,
     ) -> Option<Vertex> {
-        if depth == 0 || a.2 .0 == b.2 .0 {
+        if depth == 0 || a.2 .0 == b.2 .0 || self.stage.cancelled() {
             return None;
         }
         // How far the boundary is inside the disk less its radius changes at most twice as
@@ -663,6 +671,11 @@ impl Branch<'_, '_> {
     /// Halves the bracket `steps` times: its low end stays on the axis, its high end off it.
     fn halve(&self, b: &mut Bracket, steps: usize, at: &dyn Fn(f64) -> Option<Vertex>) {
         for _ in 0..steps {
+            // (Each step a disk test: a search of dozens may take tens of milliseconds beside
+            // a boundary of tiny corners.)
+            if self.stage.cancelled() {
+                return;
+            }
             let m = 0.5 * (b.lo + b.hi);
             match at(m) {
                 Some(v) if self.on_axis(&v) => {

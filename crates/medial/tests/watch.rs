@@ -55,3 +55,26 @@ fn a_cancelled_axis_stops_soon_and_says_so() {
     // The same work unwatched runs on (it is not cancelled by another's watch).
     assert!(!curve::watch::cancelled());
 }
+
+/// A watched axis large enough that its seed's diagram is built on a thread of its own
+/// (the CAD outline of 5,000 lines) answers a cancel with "cancelled", the diagram's build
+/// left to finish alone; unwatched, the same region's axis is certified.
+#[test]
+fn a_cancel_during_the_seed_diagram_is_answered() {
+    let points = bench_shapes::dense_outline(5000);
+    let n = points.len();
+    let sides = (0..n)
+        .map(|i| Segment::line(points[i], points[(i + 1) % n]).unwrap())
+        .collect();
+    let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+    let watch = Arc::new(Watch::default());
+    watch.cancel();
+    let found = watch.run(|| medial_axis(&region, &MedialOptions::default()));
+    assert!(matches!(found, Err(Error::Cancelled)), "{found:?}");
+    assert_eq!(
+        watch.progress().stage,
+        "medial axis: the Voronoi diagram of the chords"
+    );
+    let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+    assert!(axis.certified, "{:?}", axis.reason);
+}

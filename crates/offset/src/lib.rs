@@ -228,6 +228,9 @@ pub enum Error {
     /// finite, a boundary or a foot out of range).
     #[error("the medial axis does not fit the region: {0}")]
     BadAxis(String),
+    /// The work was cancelled through its watch ([`curve::watch`]).
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// The inward offsets of `region` at each of `distances`, from its medial axis `axis`
@@ -338,7 +341,11 @@ fn offsets_on(
     let mut loops_bridged = false;
     let mut loops_left_out = false;
     let mut found = Vec::with_capacity(distances.len());
+    let stage = curve::watch::stage("offsets: one distance each");
     for &d in distances {
+        if !stage.go_on(1) {
+            return Err(Error::Cancelled);
+        }
         let Some((seams, neck_resolved)) = seams::seams(axis, &walks, d, size) else {
             consistent = false;
             found.push(Offset {

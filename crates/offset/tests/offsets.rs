@@ -1303,3 +1303,29 @@ fn offsets_at_the_axis_vertices_radii_are_certified() {
         }
     }
 }
+
+/// Offsets run under a cancelled watch stop with `Cancelled`, never a partial list; the same
+/// call unwatched, or under a watch not cancelled, gives every offset.
+#[test]
+fn cancelled_offsets_say_so() {
+    use curve::watch::Watch;
+    use std::sync::Arc;
+    let region = pocket();
+    let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+    let opts = OffsetOptions::default();
+    let distances = [0.25, 0.5, 0.75];
+    let watch = Arc::new(Watch::default());
+    let found = watch.run(|| offsets(&region, &axis, &distances, &opts));
+    assert_eq!(found.unwrap().offsets.len(), 3);
+    assert_eq!(watch.progress().stage, "offsets: one distance each");
+    watch.cancel();
+    let found = watch.run(|| offsets(&region, &axis, &distances, &opts));
+    assert!(matches!(found, Err(offset::Error::Cancelled)), "{found:?}");
+    assert_eq!(
+        offsets(&region, &axis, &distances, &opts)
+            .unwrap()
+            .offsets
+            .len(),
+        3
+    );
+}

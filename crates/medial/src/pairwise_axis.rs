@@ -32,9 +32,11 @@ use std::collections::{HashMap, HashSet};
 /// parameter) to find where the pair's bisector has empty disks.
 const SAMPLES: usize = 32;
 
-/// Halvings of a sample step that place a stretch's end: 2⁻⁴⁰ of it, ~1e-14 of the
-/// segment, well within the reach Newton's method polishes the node from.
-const END_HALVINGS: usize = 40;
+/// Halvings of a sample step that place a stretch's end: 2⁻²⁸ of it, ~1e-10 of the
+/// segment, a thousandth of [`ABOUT`] (the sites found touching there are those of the
+/// node) and far within the [`REACH`] Newton's method polishes the node from, which it
+/// does to rounding in two or three steps.
+const END_HALVINGS: usize = 28;
 
 /// Sites whose distance at a stretch's end exceeds the disk's radius by less than this share
 /// of the size touch the node there: its equations hold there to the bisection's precision.

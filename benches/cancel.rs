@@ -8,14 +8,14 @@
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use curve::watch::Watch;
-use curve::{Profile, Region, Segment};
+use curve::Region;
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 mod common;
-use common::{dense_outline, polygon, star_polygon};
+use common::{dense_outline, polygon, rounded_outline, star_polygon};
 
 /// Cancels at each of these shares of the uncancelled run.
 const SHARES: usize = 10;
@@ -23,22 +23,6 @@ const SHARES: usize = 10;
 /// A closed polygon through `points`, as a region.
 fn region(points: &[[f64; 2]]) -> Region {
     Region::new(polygon(points), vec![]).unwrap()
-}
-
-/// The CAD outline of `n` lines turned and its coordinates rounded to 1e-6: every joint of
-/// its sides a corner of ~1e-6 rad, beyond the seed's grid, so its axis is sought from every
-/// pair the bounds keep (seconds; the medial crate's cancellation test uses it too).
-fn rounded_outline(n: usize) -> Region {
-    let (c, s) = (0.3f64.cos(), 0.3f64.sin());
-    let points: Vec<[f64; 2]> = dense_outline(n)
-        .into_iter()
-        .map(|p| [c * p[0] - s * p[1], s * p[0] + c * p[1]].map(|x| (x * 1e6).round() / 1e6))
-        .collect();
-    let m = points.len();
-    let sides = (0..m)
-        .map(|i| Segment::line(points[i], points[(i + 1) % m]).unwrap())
-        .collect();
-    Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap()
 }
 
 /// The worst and the median latency of `work` cancelled at each share of its time, the

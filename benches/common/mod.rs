@@ -177,6 +177,19 @@ fn gear_teeth(n: usize) -> (f64, f64, [f64; 3]) {
     (pitch, 0.18 * pitch, [10.0, 9.2, 3.0])
 }
 
+/// The CAD outline of about `n` lines ([`dense_outline`]) turned by 0.3 rad and its
+/// coordinates rounded to 1e-6: every joint of its straight runs a corner of ~1e-6 rad,
+/// beyond the seed's grid, so its axis is sought from every pair the bounds keep (seconds:
+/// the work that cancellation is tested and measured on).
+pub(crate) fn rounded_outline(n: usize) -> Region {
+    let (c, s) = (0.3f64.cos(), 0.3f64.sin());
+    let points: Vec<[f64; 2]> = dense_outline(n)
+        .into_iter()
+        .map(|p| [c * p[0] - s * p[1], s * p[0] + c * p[1]].map(|x| (x * 1e6).round() / 1e6))
+        .collect();
+    Region::new(polygon(&points), vec![]).unwrap()
+}
+
 /// A gear of `n` teeth about the origin, as a DXF part draws it: per tooth a tip arc
 /// (radius 10), a flank down, a root arc (radius 9.2) and a flank up, the arcs meeting the
 /// flanks at corners; with a round hole of radius 3 at the middle (one whole arc).

@@ -7,30 +7,14 @@
 mod bench_shapes;
 
 use curve::watch::Watch;
-use curve::{Profile, Region, Segment};
+use curve::Region;
 use medial::{medial_axis, Error, MedialOptions};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-/// The benchmarks' CAD outline of 1,500 lines with its coordinates rounded to 1e-6: every
-/// joint of its sides a corner of ~1e-6 rad, beyond the seed's grid, so the axis is sought
-/// from every pair the bounds keep (seconds).
-fn slow_region() -> Region {
-    let (c, s) = (0.3f64.cos(), 0.3f64.sin());
-    let points: Vec<[f64; 2]> = bench_shapes::dense_outline(1500)
-        .into_iter()
-        .map(|p| [c * p[0] - s * p[1], s * p[0] + c * p[1]].map(|x| (x * 1e6).round() / 1e6))
-        .collect();
-    let n = points.len();
-    let sides = (0..n)
-        .map(|i| Segment::line(points[i], points[(i + 1) % n]).unwrap())
-        .collect();
-    Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap()
-}
-
 #[test]
 fn a_cancelled_axis_stops_soon_and_says_so() {
-    let region = slow_region();
+    let region = bench_shapes::rounded_outline(1500);
     let watch = Arc::new(Watch::default());
     let canceller = {
         let watch = Arc::clone(&watch);
@@ -61,12 +45,8 @@ fn a_cancelled_axis_stops_soon_and_says_so() {
 /// left to finish alone; unwatched, the same region's axis is certified.
 #[test]
 fn a_cancel_during_the_seed_diagram_is_answered() {
-    let points = bench_shapes::dense_outline(5000);
-    let n = points.len();
-    let sides = (0..n)
-        .map(|i| Segment::line(points[i], points[(i + 1) % n]).unwrap())
-        .collect();
-    let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+    let outline = bench_shapes::polygon(&bench_shapes::dense_outline(5000));
+    let region = Region::new(outline, vec![]).unwrap();
     let watch = Arc::new(Watch::default());
     watch.cancel();
     let found = watch.run(|| medial_axis(&region, &MedialOptions::default()));

@@ -32,7 +32,10 @@ mod necks;
 mod pieces;
 mod seams;
 mod spline_offset;
+mod vcarve;
 mod walk;
+
+pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};
 
 use bspline::knots::basis_at;
 use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};

@@ -6,7 +6,8 @@
 //! axis of regions; [`offset`]: offsets of regions from it). This crate adds what
 //! the `curvekit` tool needs around them: reading curve files ([`io`]), the commands as calls on
 //! the curves read ([`commands`]: the command line, its batch mode and the Python package share
-//! them) and figures ([`svg`]).
+//! them), results written for other programs ([`export`]: DXF and SVG paths) and figures
+//! ([`svg`]).
 pub use antipodal;
 pub use bspline;
 pub use curve;
@@ -15,5 +16,6 @@ pub use offset;
 pub use zeroset;
 
 pub mod commands;
+pub mod export;
 pub mod io;
 pub mod svg;

@@ -37,7 +37,7 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
             title.push_str(&format!(", {} corners", corners.len()));
         }
         fig.title(title);
-        write_file(svg, &fig.render())?;
+        write_file(svg, fig.render())?;
     }
     print_out(&if common.json {
         json_document(&found, &[&curve], stats.as_ref())
@@ -132,7 +132,7 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
             fig.segment(*p, *q, Some((k + 1).to_string()));
         }
         fig.title(format!("{} common tangent lines", lines.len()));
-        write_file(svg, &fig.render())?;
+        write_file(svg, fig.render())?;
     }
     print_out(&if common.json {
         json_document(&found, &both, stats.as_ref())

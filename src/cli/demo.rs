@@ -207,7 +207,7 @@ fn shape_row(
         let title = format!("{name}: self-bisector, {} branches", branch_count(b));
         write_file(
             &out.join(format!("{name}_self_bisector.svg")),
-            &bisector_figure(&[&curve], b, title),
+            bisector_figure(&[&curve], b, title),
         )?;
     }
     Ok(ShapeRow {

@@ -73,7 +73,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failur
             };
             let svg = out.join(format!("{name}.svg"));
             if let Ok(axis) = &result {
-                write_file(&svg, &axis_figure(&curve, axis))?;
+                write_file(&svg, axis_figure(&curve, axis))?;
             }
             let pocketing_svg = out.join(format!("{}.svg", name.replace("medial-", "pocketing-")));
             let pocketing = match (&result, &curve.shape) {
@@ -84,7 +84,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failur
                         (1..PASSES as usize).map(|k| k as f64 * step).collect();
                     match offsets(r, axis, &distances, &OffsetOptions::default()) {
                         Ok(found) => {
-                            write_file(&pocketing_svg, &offset_figure(&curve, &found))?;
+                            write_file(&pocketing_svg, offset_figure(&curve, &found))?;
                             Ok(found.offsets.iter().map(|o| o.loops.len()).collect())
                         }
                         Err(e) => Err(e.to_string()),

@@ -91,7 +91,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<ProfileRow>, Failu
                     r.families.len(),
                     r.corners.len()
                 );
-                write_file(&svg, &profile_antipodal_figure(&curve, r, title))?;
+                write_file(&svg, profile_antipodal_figure(&curve, r, title))?;
             }
             Ok(ProfileRow {
                 name,

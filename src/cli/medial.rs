@@ -1,8 +1,9 @@
 //! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
 
 use super::report::{describe, draw_curve, time_line};
-use super::{print_out, timing, write_file, Common, Failure};
+use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
 use curvekit::commands;
+use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::{read_region, Curve};
 use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
 use curvekit::svg::{scale_color, Figure};
@@ -17,6 +18,7 @@ pub(super) fn run(
     path: &Path,
     chord_tol: f64,
     (fit, exterior): (bool, bool),
+    out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
     let opts = MedialOptions {
@@ -32,7 +34,20 @@ pub(super) fn run(
     let axis = compute()?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
-        write_file(svg, &axis_figure(&curve, &axis))?;
+        write_file(svg, axis_figure(&curve, &axis))?;
+    }
+    let units = curve.units();
+    if let Some(path) = &out.dxf {
+        write_file(
+            path,
+            dxf_file::medial_dxf(&axis, units).map_err(export_failure)?,
+        )?;
+    }
+    if let Some(path) = &out.svg_paths {
+        write_file(
+            path,
+            svg_paths::medial_svg(&axis, units).map_err(export_failure)?,
+        )?;
     }
     print_out(&if common.json {
         commands::json_document(&axis, &[&curve], stats.as_ref())

@@ -10,6 +10,7 @@ mod offset;
 pub(crate) mod progress;
 mod report;
 mod timing;
+mod vcarve;
 
 use clap::{Args, Parser, Subcommand};
 use std::path::{Path, PathBuf};
@@ -81,6 +82,8 @@ enum Command {
         #[arg(long)]
         exterior: bool,
         #[command(flatten)]
+        out: OutFiles,
+        #[command(flatten)]
         common: Common,
     },
     /// The inward offsets of a region: the boundary of its points at distance at least D from
@@ -110,6 +113,29 @@ enum Command {
         /// region's size.
         #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
         chord_tol: f64,
+        #[command(flatten)]
+        out: OutFiles,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// V-carving tool paths: the medial axis at the depth a V-bit of the given angle cuts its
+    /// disks from, clipped at the largest depth with a flat pass there.
+    Vcarve {
+        /// Region file (JSON), or a closed curve or profile, or a drawing.
+        region: PathBuf,
+        /// The bit's included angle, in degrees (between 0 and 180).
+        #[arg(long, value_name = "A", allow_hyphen_values = true)]
+        angle: f64,
+        /// The deepest cut, in the drawing's units.
+        #[arg(long, value_name = "H", allow_hyphen_values = true)]
+        max_depth: Option<f64>,
+        /// Chord tolerance of the medial axis and of the flat pass, relative to the region's
+        /// size.
+        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        chord_tol: f64,
+        /// Also write the tool paths as a DXF (3D polylines, the flat pass at its depth).
+        #[arg(long, value_name = "FILE")]
+        dxf: Option<PathBuf>,
         #[command(flatten)]
         common: Common,
     },
@@ -195,6 +221,18 @@ impl BisectorArgs {
     }
 }
 
+/// The result files of `medial` and `offset`, for CAD and CAM programs.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct OutFiles {
+    /// Also write the result as a DXF (R2010): curves as computed, never flattened.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) dxf: Option<PathBuf>,
+    /// Also write the result as plain SVG paths in the input's coordinates (which curvekit
+    /// reads back; `--svg` is the figure).
+    #[arg(long, value_name = "FILE")]
+    pub(crate) svg_paths: Option<PathBuf>,
+}
+
 /// Options every command takes.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct Common {
@@ -260,8 +298,9 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             chord_tol,
             fit,
             exterior,
+            out,
             common,
-        } => medial::run(&region, chord_tol, (fit, exterior), &common),
+        } => medial::run(&region, chord_tol, (fit, exterior), &out, &common),
         Command::Offset {
             region,
             distance,
@@ -269,6 +308,7 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             step,
             outward,
             chord_tol,
+            out,
             common,
         } => {
             let asked = match (distance, distances, step) {
@@ -277,8 +317,22 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
                 (_, _, Some(s)) => curvekit::commands::Distances::Step(s),
                 _ => curvekit::commands::Distances::List(Vec::new()),
             };
-            offset::run(&region, &asked, (chord_tol, outward), &common)
+            offset::run(&region, &asked, (chord_tol, outward), &out, &common)
         }
+        Command::Vcarve {
+            region,
+            angle,
+            max_depth,
+            chord_tol,
+            dxf,
+            common,
+        } => vcarve::run(
+            &region,
+            (angle, max_depth),
+            chord_tol,
+            dxf.as_deref(),
+            &common,
+        ),
         Command::Batch {
             command,
             inputs,
@@ -308,9 +362,14 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
 }
 
 /// Writes a file, mapping failure to exit 1 with the path named.
-pub(crate) fn write_file(path: &Path, contents: &str) -> Result<(), Failure> {
+pub(crate) fn write_file(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), Failure> {
     std::fs::write(path, contents)
         .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))
+}
+
+/// A result that could not be written (exit 1).
+pub(crate) fn export_failure(e: curvekit::export::ExportError) -> Failure {
+    Failure::Other(e.to_string())
 }
 
 /// Prints to stdout; a closed pipe is a failure, not a panic.

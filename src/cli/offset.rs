@@ -2,8 +2,9 @@
 //! JSON (closed profile documents) or a figure.
 
 use super::report::{describe, draw_curve, time_line};
-use super::{print_out, timing, write_file, Common, Failure};
+use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
 use curvekit::commands::{self, Distances};
+use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::{read_region, Curve};
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
@@ -19,6 +20,7 @@ pub(super) fn run(
     path: &Path,
     distances: &Distances,
     (chord_tol, outward): (f64, bool),
+    out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
     let medial_opts = MedialOptions {
@@ -39,7 +41,20 @@ pub(super) fn run(
     let found = compute()?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
-        write_file(svg, &figure(&curve, &found))?;
+        write_file(svg, figure(&curve, &found))?;
+    }
+    let units = curve.units();
+    if let Some(path) = &out.dxf {
+        write_file(
+            path,
+            dxf_file::offsets_dxf(&found, units).map_err(export_failure)?,
+        )?;
+    }
+    if let Some(path) = &out.svg_paths {
+        write_file(
+            path,
+            svg_paths::offsets_svg(&found, units).map_err(export_failure)?,
+        )?;
     }
     print_out(&if common.json {
         commands::json_document(&found, &[&curve], stats.as_ref())

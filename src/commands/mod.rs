@@ -490,6 +490,14 @@ pub fn offset(
 ) -> Result<offset::Offsets, CommandError> {
     validate_distances(distances)?;
     validate_medial_options(medial_opts)?;
+    if medial_opts.exterior && matches!(distances, Distances::Step(_)) {
+        // (Inward, the passes end where the region vanishes; outward nothing ends them.)
+        return Err(CommandError::Usage(
+            "--step: outward offsets never vanish, so a step has no last pass: give \
+             --distance or --distances"
+                .into(),
+        ));
+    }
     let axes = axes_of_parts(region, medial_opts)?;
     let list = match distances {
         Distances::List(list) => list.clone(),
@@ -534,6 +542,62 @@ pub fn offset(
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(parts::joined_offsets(found, region.drawing_doubt()))
+}
+
+/// The V-carving tool paths of a region read (as [`crate::io::read_region`] gives it), from
+/// the medial axis of each part computed with `medial_opts`, with the flat passes' offsets
+/// relative to the size of all the parts.
+pub fn vcarve(
+    region: &Curve,
+    opts: &offset::VCarveOptions,
+    medial_opts: &medial::MedialOptions,
+) -> Result<offset::VCarve, CommandError> {
+    opts.validate()
+        .map_err(|e| CommandError::Usage(format!("vcarve: {}", usage_of(&e))))?;
+    if medial_opts.exterior {
+        return Err(CommandError::Usage(
+            "vcarve: the tool path follows the inner medial axis, not the exterior one".into(),
+        ));
+    }
+    let axes = axes_of_parts(region, medial_opts)?;
+    let parts = region.parts();
+    let opts = offset::VCarveOptions {
+        offset: offset::OffsetOptions {
+            size: Some(parts::size_of(&parts)),
+            ..opts.offset
+        },
+        ..*opts
+    };
+    let found = parts
+        .iter()
+        .zip(&axes)
+        .map(|(r, axis)| {
+            offset::vcarve(r, axis, &opts).map_err(|e| match e {
+                offset::Error::Cancelled => CommandError::Other(format!("vcarve: {e}")),
+                _ => CommandError::Usage(format!("vcarve: {}", usage_of(&e))),
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(parts::joined_carves(found, region.drawing_doubt()))
+}
+
+/// An offset error as the command line names its options (`--max-depth`, not `max_depth`).
+fn usage_of(e: &offset::Error) -> String {
+    match e {
+        offset::Error::BadOption { field, value, why } => {
+            format!(
+                "--{}: {value} is out of range: {why}",
+                field.replace('_', "-")
+            )
+        }
+        other => other.to_string(),
+    }
+}
+
+/// The contract's size of a region read: max(width, height) of the bounding box of all its
+/// parts (0 for a curve that is no region).
+pub fn size_of(region: &Curve) -> f64 {
+    parts::size_of(&region.parts())
 }
 
 /// One JSON document, as the tool prints it with `--json`: the result's own fields (as the

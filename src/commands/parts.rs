@@ -96,3 +96,40 @@ pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offs
         complete,
     }
 }
+
+/// The V-carvings of the parts as one: each path with its part (from 0), the flats of every
+/// part in turn (with their part where there are several).
+pub(super) fn joined_carves(found: Vec<offset::VCarve>, doubt: Option<String>) -> offset::VCarve {
+    let several = found.len() > 1;
+    let certified = found.iter().all(|c| c.certified) && doubt.is_none();
+    let complete = found.iter().all(|c| c.complete);
+    let (angle, max_depth) = found
+        .first()
+        .map_or((0.0, None), |c| (c.angle, c.max_depth));
+    let mut reasons = Vec::with_capacity(found.len());
+    let (mut paths, mut flats) = (Vec::new(), Vec::new());
+    for (k, carve) in found.into_iter().enumerate() {
+        reasons.push(carve.reason);
+        paths.extend(carve.paths.into_iter().map(|mut p| {
+            p.part = k;
+            p
+        }));
+        flats.extend(carve.flats.into_iter().map(|mut l| {
+            l.part = several.then_some(k);
+            l
+        }));
+    }
+    offset::VCarve {
+        angle,
+        max_depth,
+        paths,
+        flats,
+        certified,
+        reason: if certified {
+            None
+        } else {
+            reason(reasons, doubt)
+        },
+        complete,
+    }
+}

@@ -225,6 +225,11 @@ impl Curve {
         self.drawing.as_ref().and_then(DrawingInfo::doubt)
     }
 
+    /// The unit of the coordinates, where the drawing says (`"mm"`, as [`DrawingInfo::units`]).
+    pub fn units(&self) -> Option<&str> {
+        self.drawing.as_ref().and_then(|d| d.units.as_deref())
+    }
+
     /// The regions of a region input: its one region, or the parts of a multi-part input;
     /// empty for a curve.
     pub fn parts(&self) -> Vec<&curve::Region> {

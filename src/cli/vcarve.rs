@@ -1,0 +1,141 @@
+//! `curvekit vcarve`: the tool paths of a V-bit over the medial axis, as text, JSON, DXF or
+//! a figure.
+
+use super::report::{describe, draw_curve, time_line};
+use super::{export_failure, print_out, timing, write_file, Common, Failure};
+use curvekit::commands;
+use curvekit::export::dxf_file;
+use curvekit::io::{read_region, Curve};
+use curvekit::medial::MedialOptions;
+use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
+use curvekit::svg::{scale_color, Figure};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Points drawn per arc of a flat pass in the figure.
+const ARC_POINTS: usize = 64;
+
+/// Runs `vcarve` on the region at `path` with a bit of included angle `angle` (degrees), at
+/// most `max_depth` deep.
+pub(super) fn run(
+    path: &Path,
+    (angle, max_depth): (f64, Option<f64>),
+    chord_tol: f64,
+    dxf: Option<&Path>,
+    common: &Common,
+) -> Result<(), Failure> {
+    let medial_opts = MedialOptions {
+        tol: common.tol,
+        chord_tol,
+        fit: false,
+        exterior: false,
+        size: None,
+    };
+    let opts = VCarveOptions {
+        angle,
+        max_depth,
+        offset: OffsetOptions {
+            chord_tol,
+            size: None,
+        },
+    };
+    commands::validate_medial_options(&medial_opts)?;
+    let curve = read_region(path, common.pick)?;
+    let compute = || commands::vcarve(&curve, &opts, &medial_opts);
+    let found = compute()?;
+    let stats = common.time.then(|| timing::measure(compute));
+    if let Some(svg) = &common.svg {
+        write_file(svg, figure(&curve, &found))?;
+    }
+    if let Some(path) = dxf {
+        write_file(
+            path,
+            dxf_file::vcarve_dxf(&found, curve.units()).map_err(export_failure)?,
+        )?;
+    }
+    print_out(&if common.json {
+        commands::json_document(&found, &[&curve], stats.as_ref())
+    } else {
+        text(&curve, &found, stats.as_ref())
+    })
+}
+
+/// The deepest point of the paths (0 for none).
+fn deepest(found: &VCarve) -> f64 {
+    found
+        .paths
+        .iter()
+        .flat_map(|p| p.xyz.iter().map(|q| q[2]))
+        .fold(0.0, f64::min)
+}
+
+/// The figure: the region, the paths coloured by depth (surface blue to deepest yellow), the
+/// flat passes in grey.
+fn figure(region: &Curve, found: &VCarve) -> String {
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, region);
+    let deepest = deepest(found);
+    for p in &found.paths {
+        // (Each step in the shade of its deeper end.)
+        for w in p.xyz.windows(2) {
+            let z = w[0][2].min(w[1][2]);
+            let t = if deepest < 0.0 { z / deepest } else { 0.0 };
+            fig.colored(vec![[w[0][0], w[0][1]], [w[1][0], w[1][1]]], scale_color(t));
+        }
+        if let [q] = p.xyz.as_slice() {
+            fig.dot([q[0], q[1]]);
+        }
+    }
+    for l in &found.flats {
+        fig.thin(l.polyline(ARC_POINTS), "#777777");
+    }
+    let trust = if found.certified {
+        "certified".to_string()
+    } else {
+        format!(
+            "not certified ({})",
+            found.reason.as_deref().unwrap_or("no reason given")
+        )
+    };
+    fig.title(format!(
+        "{}: vcarve at {}°, depth 0 (blue) to {:.4} (yellow), {trust}",
+        region.file, found.angle, deepest
+    ));
+    fig.render()
+}
+
+/// The readable report.
+fn text(curve: &Curve, found: &VCarve, stats: Option<&commands::Stats>) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "region:      {} ({})", curve.file, describe(curve));
+    let points: usize = found.paths.iter().map(|p| p.xyz.len()).sum();
+    let _ = writeln!(
+        s,
+        "paths:       {} ({points} points), deepest {}",
+        found.paths.len(),
+        deepest(found)
+    );
+    match found.max_depth {
+        Some(h) if !found.flats.is_empty() => {
+            let _ = writeln!(
+                s,
+                "flats:       {} loops at depth {}",
+                found.flats.len(),
+                -h
+            );
+        }
+        Some(_) => {
+            let _ = writeln!(s, "flats:       none (the axis never gets that deep)");
+        }
+        None => {}
+    }
+    let _ = writeln!(s, "certified:   {}", found.certified);
+    if let Some(why) = &found.reason {
+        let _ = writeln!(s, "  (why: {why})");
+    }
+    let _ = writeln!(s, "complete:    {}", found.complete);
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+    s
+}

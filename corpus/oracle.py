@@ -341,6 +341,86 @@ def check_offsets(drawing: Drawing, document: dict, parts: list[int], size: floa
     return problems, figures
 
 
+# ----------------------------------------------------------------------------------------------
+# V-carving
+
+VBIT_ANGLE = 60.0  # the included angle the corpus is carved with (degrees)
+CUT_GRID = 240  # the swept cut is compared with the region on a grid this many points wide
+DISK_SEGMENTS = 32  # quarter-circle segments of the oracle's disks (chord error 1.2e-3 of r)
+
+
+def vcarve_depth(drawing: Drawing, parts: list[int]) -> float:
+    """A depth limit that makes flat passes: half the widest inscribed disk (shapely's) of the
+    parts, as the depth a bit of VBIT_ANGLE reaches it at."""
+    widest = max(shapely.maximum_inscribed_circle(drawing.part_polygons[k], 1e-4 * drawing.size).length for k in parts)
+    return float(f"{0.5 * widest / math.tan(math.radians(VBIT_ANGLE / 2)):.6g}")
+
+
+def check_vcarve(drawing: Drawing, document: dict, parts: list[int], size: float) -> tuple[list[str], dict]:
+    """Every path point over the medial axis (its bit's disk at the surface as wide as the
+    distance to the boundary) and no deeper than the limit; every flat point at the limit's
+    radius from the boundary; and the cut the bit sweeps at the surface (along each path step
+    the hull of its end disks, along the flats disks of the limit's radius) equal to the points
+    of the region within twice that radius of the boundary (by the distance to the boundary), on
+    a grid, away from the lines between by the slack."""
+    problems: list[str] = []
+    region = MultiPolygon([drawing.part_polygons[k] for k in parts])
+    boundary = Boundary(region)
+    spread = math.tan(math.radians(float(document["angle"]) / 2))
+    depth = document.get("max_depth")
+    widest = float(depth) * spread if depth is not None else math.inf
+    slack = 2 * CHORD * size + 3 * FLATTEN * size
+    paths = [np.asarray(p["xyz"], float).reshape(-1, 3) for p in document.get("paths", [])]
+    figures = {"paths": len(paths), "flats": len(document.get("flats", []))}
+    if not paths and not document.get("flats"):
+        return ["no tool path at all"], figures
+    points = np.concatenate(paths) if paths else np.zeros((0, 3))
+    radii = -points[:, 2] * spread
+    if depth is not None and (points[:, 2] < -float(depth) * (1 + 1e-12)).any():
+        problems.append(f"a path point deeper than the limit {depth}: {points[:, 2].min():.6g}")
+    error = np.abs(radii - boundary.distance(points[:, :2])) if len(points) else np.zeros(1)
+    figures["radius_error"] = float(error.max() / size)
+    if error.max() > slack:
+        i = int(np.argmax(error))
+        problems.append(f"the bit at {fmt(points[i, :2])} cuts a disk of {radii[i]:.6g}, {error[i] / size:.2e} of the size off the distance to the boundary")
+    cuts = []
+    for path in paths:
+        disks = shapely.buffer(shapely.points(path[:, :2]), -path[:, 2] * spread, quad_segs=DISK_SEGMENTS)
+        if len(path) == 1:
+            cuts.extend(disks)
+        # (The step itself too: a disk of radius 0, where the path reaches a corner, is empty.)
+        steps = shapely.linestrings(np.stack([path[:-1, :2], path[1:, :2]], axis=1)) if len(path) > 1 else []
+        cuts.extend(shapely.convex_hull(shapely.union(shapely.union(disks[:-1], disks[1:]), steps)))
+    for index, loop in enumerate(document.get("flats", [])):
+        ring = Ring(profile_pieces(loop), f"flat {index}").flatten(FLATTEN * size)[0]
+        distance = boundary.distance(ring)
+        if np.abs(distance - widest).max() > slack:
+            problems.append(f"flat {index} runs {np.abs(distance - widest).max() / size:.2e} of the size off the radius {widest:.6g}")
+        cuts.append(shapely.LinearRing(ring).buffer(widest, quad_segs=DISK_SEGMENTS))
+    cut = shapely.union_all(cuts)
+    x0, y0, x1, y1 = region.bounds
+    xs, ys = np.meshgrid(np.linspace(x0, x1, CUT_GRID), np.linspace(y0, y1, CUT_GRID))
+    grid = np.stack([xs.ravel(), ys.ravel()], axis=1)
+    inside = shapely.contains_xy(region, grid[:, 0], grid[:, 1])
+    got = shapely.contains_xy(cut, grid[:, 0], grid[:, 1])
+    # (To be cut: the points of the region within twice the limit's radius of the boundary;
+    # to stay: the rest, and everything outside. Points within the slack of either line are
+    # not judged. Only the points where the cut and the region disagree, or that the cut
+    # may take too deep, are measured.)
+    distance = np.full(len(grid), np.inf)
+    asked = (inside != got) | (got & (2 * widest + slack < size))
+    distance[asked] = boundary.distance(grid[asked])
+    missed = inside & (distance > slack) & (distance < 2 * widest - slack) & ~got
+    gouged = ((~inside & (distance > slack)) | (inside & (distance > 2 * widest + slack))) & got
+    figures["missed"] = int(missed.sum())
+    figures["gouged"] = int(gouged.sum())
+    if missed.any():
+        problems.append(f"{int(missed.sum())} grid points of the region left uncut, e.g. {fmt(grid[int(np.argmax(missed))])}")
+    if gouged.any():
+        problems.append(f"{int(gouged.sum())} grid points cut that should stay, e.g. {fmt(grid[int(np.argmax(gouged))])}")
+    return problems, figures
+
+
 def check_orientation(loops: list[np.ndarray], d: float) -> list[str]:
     """A loop inside another loop of the offset is a hole: holes clockwise, outers counterclockwise."""
     problems = [f"d={d:g}: loop {i} flattens to {len(p)} points (no area)" for i, p in enumerate(loops) if len(p) < 3]
@@ -596,9 +676,9 @@ def judge_file(binary: str, path: str, expect: dict | None = None) -> list[Outco
         if mismatch:
             return [Outcome(path, "read", [], "oracle-error", message=mismatch)]
     part_of_pick: dict[int, int] = {}
-    for command in ("medial", "offset", "antipodal", "inflections"):
+    for command in ("medial", "offset", "vcarve", "antipodal", "inflections"):
         try:
-            if command in ("medial", "offset"):
+            if command in ("medial", "offset", "vcarve"):
                 outcomes += judge_region(binary, drawing, command, expect, part_of_pick)
             elif single_curve_applies(drawing):
                 outcomes.append(judge_curve(binary, drawing, command, expect))
@@ -693,6 +773,8 @@ def judge_region(binary, drawing: Drawing, command: str, expect: dict, part_of_p
     if command == "offset":
         distances = offset_distances(drawing, everything) if drawing.valid else [float(f"{0.05 * drawing.size:.6g}") or 1.0]
         extra = ["--distances", ",".join(f"{d:g}" for d in distances)]
+    if command == "vcarve":
+        extra = vcarve_args(drawing, everything)
     args = [command, str(drawing.path), "--json", *extra]
     answer = run_tool(binary, args)
     outcome = base_outcome(drawing, command, args, answer)
@@ -707,9 +789,14 @@ def judge_region(binary, drawing: Drawing, command: str, expect: dict, part_of_p
         outcome.problems.append(f"answered although {drawing.invalid[0] if drawing.invalid else 'the input holds no region'}")
     elif outcome.status == "":
         contract_notes(drawing, answer.document, expect, outcome)
-        check = check_medial if command == "medial" else check_offsets
-        finish(outcome, *check(drawing, answer.document, everything, drawing.size))
+        finish(outcome, *CHECKS[command](drawing, answer.document, everything, drawing.size))
     return outcomes
+
+
+def vcarve_args(drawing: Drawing, parts: list[int]) -> list[str]:
+    """The bit's angle, and a depth limit where the oracle reads a region (else none)."""
+    depth = ["--max-depth", f"{vcarve_depth(drawing, parts):g}"] if drawing.valid else []
+    return ["--angle", f"{VBIT_ANGLE:g}", *depth]
 
 
 def judge_pick(binary, drawing: Drawing, command: str, expect: dict, pick: int, part_of_pick: dict[int, int]) -> Outcome:
@@ -720,6 +807,8 @@ def judge_pick(binary, drawing: Drawing, command: str, expect: dict, pick: int, 
     if command == "offset":
         distances = offset_distances(drawing, [part])
         args += ["--distances", ",".join(f"{d:g}" for d in distances)]
+    if command == "vcarve":
+        args += vcarve_args(drawing, [part])
     answer = run_tool(binary, args)
     outcome = base_outcome(drawing, f"{command} --pick", args, answer)
     outcome.figures["pick"] = pick
@@ -731,6 +820,7 @@ def judge_pick(binary, drawing: Drawing, command: str, expect: dict, pick: int, 
     document = answer.document
     points = [n["xy"] for n in document.get("nodes", [])] + [e["xy"][0] for e in document.get("edges", [])]
     points += [s.get("from") or s.get("center") for o in document.get("offsets", []) for loop in o.get("loops", []) for s in loop["segments"][:1]]
+    points += [p["xyz"][0][:2] for p in document.get("paths", [])]
     if points and (command == "medial" or pick not in part_of_pick):
         votes = [int(np.argmin([p.distance(shapely.Point(xy)) for p in drawing.part_polygons])) for xy in points[:200] if xy is not None]
         part = max(set(votes), key=votes.count)
@@ -738,11 +828,14 @@ def judge_pick(binary, drawing: Drawing, command: str, expect: dict, pick: int, 
     outcome.figures["part"] = part
     polygon = drawing.part_polygons[part]
     size = float(max(np.ptp(np.asarray(polygon.bounds).reshape(2, 2), axis=0)))
-    check = check_medial if command == "medial" else check_offsets
-    if command == "offset" and part != part_of_pick.get(pick, part):
-        outcome.notes.append("the offsets' distances were chosen for another part")
+    check = CHECKS[command]
+    if command in ("offset", "vcarve") and part != part_of_pick.get(pick, part):
+        outcome.notes.append(f"the {command} options were chosen for another part")
     contract_notes(drawing, document, expect, outcome)
     return finish(outcome, *check(drawing, document, [part], size))
+
+
+CHECKS = {"medial": check_medial, "offset": check_offsets, "vcarve": check_vcarve}
 
 
 def judge_curve(binary, drawing: Drawing, command: str, expect: dict) -> Outcome:

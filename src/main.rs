@@ -37,8 +37,14 @@ fn usage_error(e: &clap::Error) -> ExitCode {
             ExitCode::SUCCESS
         }
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            use clap::CommandFactory;
+            let names: Vec<String> = cli::Cli::command()
+                .get_subcommands()
+                .map(|c| c.get_name().to_string())
+                .collect();
             eprintln!(
-                "curvekit: no command given (one of: demo, antipodal, inflections, tangents, bisector, medial, offset, batch; see --help)"
+                "curvekit: no command given (one of: {}; see --help)",
+                names.join(", ")
             );
             ExitCode::from(2)
         }
@@ -51,7 +57,13 @@ fn usage_error(e: &clap::Error) -> ExitCode {
                 .map(str::trim)
                 .take_while(|l| !l.is_empty())
                 .collect();
-            let line = first.join(" ");
+            // (And clap's suggestions for a typo: "tip: a similar subcommand exists: 'medial'".)
+            let tips = text
+                .lines()
+                .map(str::trim)
+                .filter(|l| l.starts_with("tip:"))
+                .map(|l| format!("; {}", l.trim_start_matches("tip:").trim()));
+            let line = first.join(" ") + &tips.collect::<String>();
             let line = line.strip_prefix("error: ").unwrap_or(&line);
             eprintln!("curvekit: {line} (see --help)");
             ExitCode::from(2)

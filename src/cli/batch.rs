@@ -98,6 +98,8 @@ pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
     );
     let (tx, rx) = mpsc::channel::<(usize, Result<String, CommandError>)>();
     let mut failures = Vec::new();
+    // (Set when the results can no longer be written: the inputs not begun are left.)
+    let stopped = std::sync::atomic::AtomicBool::new(false);
     let written: Result<(), std::io::Error> = std::thread::scope(|scope| {
         scope.spawn(|| {
             pool.install(|| {
@@ -105,6 +107,9 @@ pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
                     .par_iter()
                     .enumerate()
                     .for_each_with(tx, |tx, (k, input)| {
+                        if stopped.load(std::sync::atomic::Ordering::Relaxed) {
+                            return;
+                        }
                         // (The receiver only goes when writing failed: nothing is left to do.)
                         let _ = tx.send((k, task.run_caught(input)));
                     })
@@ -124,7 +129,10 @@ pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
                         line
                     }
                 };
-                sink.write_all(line.as_bytes())?;
+                if let Err(e) = sink.write_all(line.as_bytes()) {
+                    stopped.store(true, std::sync::atomic::Ordering::Relaxed);
+                    return Err(e);
+                }
                 bar.inc(1);
                 next += 1;
             }
@@ -132,7 +140,13 @@ pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
         sink.flush()
     });
     bar.finish_and_clear();
-    written.map_err(|e| Failure::Other(format!("batch: cannot write the results: {e}")))?;
+    match written {
+        // (The reader stopped reading, as `head` does: a quiet end.)
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => return Ok(()),
+        other => {
+            other.map_err(|e| Failure::Other(format!("batch: cannot write the results: {e}")))?
+        }
+    }
     match failures.first() {
         None => Ok(()),
         Some(first) => {

@@ -6,14 +6,14 @@ use super::{print_out, timing, write_file, BisectorArgs, Common, Failure};
 use curvekit::commands::{
     self, json_document, AntipodalFound, BisectorFound, InflectionsFound, Prepared, TangentsFound,
 };
-use curvekit::io::{read_curve_picked, Curve, Shape};
+use curvekit::io::{Curve, Shape};
 use curvekit::svg::Figure;
 use std::path::Path;
 use std::sync::Arc;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let curve = Arc::new(read_curve_picked(path, common.pick)?);
+    let curve = Arc::new(common.read_curve(path)?);
     let opts = common.options();
     let prepared = Prepared::new(curve.clone(), "inflections")?;
     let found = prepared.inflections(&opts)?;
@@ -53,7 +53,7 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let curve = Arc::new(read_curve_picked(path, common.pick)?);
+    let curve = Arc::new(common.read_curve(path)?);
     let opts = common.options();
     let prepared = Prepared::new(curve.clone(), "antipodal")?;
     let found = prepared.antipodal(&opts)?;
@@ -98,10 +98,8 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
 
 pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    let (c1, c2) = (
-        read_curve_picked(path1, common.pick)?,
-        read_curve_picked(path2, common.pick)?,
-    );
+    super::one_standard_input(&[path1, path2])?;
+    let (c1, c2) = (common.read_curve(path1)?, common.read_curve(path2)?);
     let both = [&c1, &c2];
     let opts = common.options();
     let run = || commands::tangents(&c1, &c2, &opts);
@@ -153,10 +151,14 @@ pub(super) fn run_bisector(
     let opts = args.options(common.tol);
     // (A usage error comes before any file is read.)
     commands::validate_bisector_options(&opts)?;
-    let c1 = read_curve_picked(path1, common.pick)?;
-    let c2 = path2
-        .map(|p| read_curve_picked(p, common.pick))
-        .transpose()?;
+    super::one_standard_input(
+        &[Some(path1), path2]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>(),
+    )?;
+    let c1 = common.read_curve(path1)?;
+    let c2 = path2.map(|p| common.read_curve(p)).transpose()?;
     let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
     let compute = || commands::bisector(&c1, c2.as_ref(), &opts);
     let found = compute()?;

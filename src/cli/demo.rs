@@ -100,11 +100,6 @@ struct BisectorRow {
 
 pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
-    if common.svg.is_some() {
-        return Err(Failure::Usage(
-            "--svg: demo writes one figure per example into --out DIR instead".into(),
-        ));
-    }
     std::fs::create_dir_all(out)
         .map_err(|e| Failure::Other(format!("cannot create {}: {e}", out.display())))?;
     let shapes = SHAPES

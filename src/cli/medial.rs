@@ -4,7 +4,7 @@ use super::report::{describe, draw_curve, time_line};
 use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
 use curvekit::commands;
 use curvekit::export::{dxf_file, svg_paths};
-use curvekit::io::{read_region, Curve};
+use curvekit::io::Curve;
 use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
 use curvekit::svg::{scale_color, Figure};
 use std::fmt::Write as _;
@@ -29,7 +29,7 @@ pub(super) fn run(
         size: None,
     };
     commands::validate_medial_options(&opts)?;
-    let curve = read_region(path, common.pick)?;
+    let curve = common.read_region(path)?;
     let compute = || commands::medial(&curve, &opts);
     let axis = compute()?;
     let stats = common.time.then(|| timing::measure(compute));

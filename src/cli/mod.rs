@@ -31,7 +31,7 @@ enum Command {
         #[arg(long, value_name = "DIR", default_value = "demo-out")]
         out: PathBuf,
         #[command(flatten)]
-        common: Common,
+        options: DemoArgs,
     },
     /// Antipodal point pairs of a closed curve.
     Antipodal {
@@ -139,6 +139,13 @@ enum Command {
         #[command(flatten)]
         common: Common,
     },
+    /// Print a completion script for a shell (bash, zsh, fish, elvish, powershell), to be
+    /// sourced by it or saved where it looks.
+    Completions {
+        /// The shell.
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
     /// One command over many inputs, on several threads: one JSON line per input, in input
     /// order; an input that fails becomes an error line and the run goes on.
     Batch {
@@ -221,6 +228,34 @@ impl BisectorArgs {
     }
 }
 
+/// The options of `demo`: its inputs are built in, its figures go to `--out`.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct DemoArgs {
+    /// Print one JSON document instead of the summary table.
+    #[arg(long)]
+    json: bool,
+    /// Parameter tolerance.
+    #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+    tol: f64,
+    /// Repeat the examples' inflections for at least 0.5 s and report the median time.
+    #[arg(long)]
+    time: bool,
+}
+
+impl DemoArgs {
+    /// The options every command takes, as far as `demo` has them.
+    fn common(&self) -> Common {
+        Common {
+            json: self.json,
+            svg: None,
+            tol: self.tol,
+            time: self.time,
+            pick: None,
+            format: None,
+        }
+    }
+}
+
 /// The result files of `medial` and `offset`, for CAD and CAM programs.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct OutFiles {
@@ -251,9 +286,50 @@ pub(crate) struct Common {
     /// In a drawing (.svg, .dxf) that holds several profiles, the one to take (from 0).
     #[arg(long, value_name = "N")]
     pub(crate) pick: Option<usize>,
+    /// The input's format: for `-` (standard input; json unless given), or a file whose
+    /// extension does not say.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub(crate) format: Option<FormatArg>,
+}
+
+/// An input's format, as named on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub(crate) enum FormatArg {
+    /// A curve, profile or region file.
+    Json,
+    /// An SVG drawing.
+    Svg,
+    /// An ASCII DXF drawing.
+    Dxf,
 }
 
 impl Common {
+    fn input_format(&self) -> Option<curvekit::io::InputFormat> {
+        self.format.map(|f| match f {
+            FormatArg::Json => curvekit::io::InputFormat::Json,
+            FormatArg::Svg => curvekit::io::InputFormat::Svg,
+            FormatArg::Dxf => curvekit::io::InputFormat::Dxf,
+        })
+    }
+
+    /// The region at `path` (`-`: standard input), in `--format` or by its extension.
+    pub(crate) fn read_region(&self, path: &Path) -> Result<curvekit::io::Curve, Failure> {
+        Ok(curvekit::io::read_region_as(
+            path,
+            self.input_format(),
+            self.pick,
+        )?)
+    }
+
+    /// The curve at `path` (`-`: standard input), in `--format` or by its extension.
+    pub(crate) fn read_curve(&self, path: &Path) -> Result<curvekit::io::Curve, Failure> {
+        Ok(curvekit::io::read_curve_as(
+            path,
+            self.input_format(),
+            self.pick,
+        )?)
+    }
+
     /// The algorithms' options for these command-line options.
     pub(crate) fn options(&self) -> antipodal::Options {
         antipodal::Options::default().tolerance(self.tol)
@@ -279,7 +355,13 @@ pub(crate) use curvekit::commands::CommandError as Failure;
 /// Runs one command.
 pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
-        Command::Demo { out, common } => demo::run(&out, &common),
+        Command::Demo { out, options } => demo::run(&out, &options.common()),
+        Command::Completions { shell } => {
+            use clap::CommandFactory;
+            let mut script = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "curvekit", &mut script);
+            print_out(&String::from_utf8_lossy(&script))
+        }
         Command::Inflections { curve, common } => commands::run_inflections(&curve, &common),
         Command::Antipodal { curve, common } => commands::run_antipodal(&curve, &common),
         Command::Tangents {
@@ -361,6 +443,17 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
     }
 }
 
+/// Standard input (`-`) can be read once: at most one of `paths` may name it.
+pub(crate) fn one_standard_input(paths: &[&Path]) -> Result<(), Failure> {
+    let stdin = Path::new(curvekit::io::STDIN_PATH);
+    if paths.iter().filter(|p| **p == stdin).count() > 1 {
+        return Err(Failure::Usage(
+            "only one input can be standard input (-)".into(),
+        ));
+    }
+    Ok(())
+}
+
 /// Writes a file, mapping failure to exit 1 with the path named.
 pub(crate) fn write_file(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), Failure> {
     std::fs::write(path, contents)
@@ -372,13 +465,15 @@ pub(crate) fn export_failure(e: curvekit::export::ExportError) -> Failure {
     Failure::Other(e.to_string())
 }
 
-/// Prints to stdout; a closed pipe is a failure, not a panic.
+/// Prints to stdout; a closed pipe ends the output quietly (exit 0), as `head` expects.
 pub(crate) fn print_out(text: &str) -> Result<(), Failure> {
     use std::io::Write;
     let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
-        .and_then(|()| out.flush())
-        .map_err(|e| Failure::Other(format!("cannot write to stdout: {e}")))
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        // (The reader stopped reading, as `head` does: nothing more is wanted, no failure.)
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other.map_err(|e| Failure::Other(format!("cannot write to stdout: {e}"))),
+    }
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@ use super::report::{describe, draw_curve, time_line};
 use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
 use curvekit::commands::{self, Distances};
 use curvekit::export::{dxf_file, svg_paths};
-use curvekit::io::{read_region, Curve};
+use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
 use curvekit::svg::{scale_color, Figure};
@@ -36,7 +36,7 @@ pub(super) fn run(
         chord_tol,
         size: None,
     };
-    let curve = read_region(path, common.pick)?;
+    let curve = common.read_region(path)?;
     let compute = || commands::offset(&curve, distances, &opts, &medial_opts);
     let found = compute()?;
     let stats = common.time.then(|| timing::measure(compute));

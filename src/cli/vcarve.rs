@@ -5,7 +5,7 @@ use super::report::{describe, draw_curve, time_line};
 use super::{export_failure, print_out, timing, write_file, Common, Failure};
 use curvekit::commands;
 use curvekit::export::dxf_file;
-use curvekit::io::{read_region, Curve};
+use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
 use curvekit::svg::{scale_color, Figure};
@@ -40,7 +40,7 @@ pub(super) fn run(
         },
     };
     commands::validate_medial_options(&medial_opts)?;
-    let curve = read_region(path, common.pick)?;
+    let curve = common.read_region(path)?;
     let compute = || commands::vcarve(&curve, &opts, &medial_opts);
     let found = compute()?;
     let stats = common.time.then(|| timing::measure(compute));

@@ -346,14 +346,18 @@ pub fn curve_profile(curve: &Curve) -> Option<Result<curve::Profile, CurveFileEr
 /// nested inside each other (even-odd), `pick` choosing among several regions. The curve
 /// returned is the region's (`Shape::Region`); anything else is bad input naming the file.
 pub fn read_region(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
-    let file = path.display().to_string();
-    match drawing_bytes(path, &file)? {
-        Some((format, bytes)) => parse_region(&file, Some(format), &bytes, pick),
-        None => {
-            let text = std::fs::read(path).map_err(|e| unreadable(&file, e))?;
-            parse_region(&file, None, &text, pick)
-        }
-    }
+    read_region_as(path, None, pick)
+}
+
+/// [`read_region`] with the input's format given (`None`: by the file's extension); the path
+/// `-` is standard input (a curve file unless `format` says otherwise).
+pub fn read_region_as(
+    path: &Path,
+    format: Option<InputFormat>,
+    pick: Option<usize>,
+) -> Result<Curve, CurveFileError> {
+    let (file, drawing, bytes) = input_bytes(path, format)?;
+    parse_region(&file, drawing, &bytes, pick)
 }
 
 /// [`read_region`] on a file's bytes: a drawing of `format`, or a curve file (`None`);
@@ -400,38 +404,102 @@ pub fn read_curve(path: &Path) -> Result<Curve, CurveFileError> {
 /// are numbered from 0 in file order; `pick` chooses one where it holds several (a curve
 /// file, holding one curve, ignores it).
 pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
-    let file = path.display().to_string();
-    match drawing_bytes(path, &file)? {
-        Some((format, bytes)) => parse_drawing(&file, format, &bytes, pick),
+    read_curve_as(path, None, pick)
+}
+
+/// [`read_curve_picked`] with the input's format given (`None`: by the file's extension); the
+/// path `-` is standard input (a curve file unless `format` says otherwise).
+pub fn read_curve_as(
+    path: &Path,
+    format: Option<InputFormat>,
+    pick: Option<usize>,
+) -> Result<Curve, CurveFileError> {
+    let (file, drawing, bytes) = input_bytes(path, format)?;
+    match drawing {
+        Some(format) => parse_drawing(&file, format, &bytes, pick),
         // (A curve file holds one curve: `pick` is for drawings.)
         None => {
-            let text = std::fs::read_to_string(path).map_err(|e| unreadable(&file, e))?;
-            parse_curve(&file, &text)
+            let text = std::str::from_utf8(&bytes).map_err(|e| {
+                drawing::error(
+                    &file,
+                    "document",
+                    Problem::Syntax(format!("not UTF-8: {e}")),
+                )
+            })?;
+            parse_curve(&file, text)
         }
     }
 }
+
+/// What a command's input is given as (`--format`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InputFormat {
+    /// A curve, profile or region file (JSON).
+    Json,
+    /// An SVG drawing.
+    Svg,
+    /// An ASCII DXF drawing.
+    Dxf,
+}
+
+/// The path that names standard input.
+pub const STDIN_PATH: &str = "-";
+
+/// The name standard input goes by in messages and reports.
+pub const STDIN_NAME: &str = "<stdin>";
+
+/// Most bytes read from standard input: as much as the readers' own limits let through, and a
+/// bound on memory where the stream does not end.
+const MAX_STDIN_BYTES: u64 = 1 << 30;
 
 fn unreadable(file: &str, e: std::io::Error) -> CurveFileError {
     drawing::error(file, "document", Problem::Unreadable(e.to_string()))
 }
 
-/// A drawing's format and bytes, by the file's extension (`.svg`, `.dxf`); `None` for a
-/// curve file.
-fn drawing_bytes(
+/// An input's name (for messages), drawing format (`None` for a curve file) and bytes: from
+/// standard input for `-` (a curve file unless `format` says otherwise), else from the file,
+/// as `format` says or by its extension (`.svg`, `.dxf`; anything else a curve file).
+fn input_bytes(
     path: &Path,
-    file: &str,
-) -> Result<Option<(DrawingFormat, Vec<u8>)>, CurveFileError> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let format = match ext.as_deref() {
-        Some("svg") => DrawingFormat::Svg,
-        Some("dxf") => DrawingFormat::Dxf,
-        _ => return Ok(None),
+    format: Option<InputFormat>,
+) -> Result<(String, Option<DrawingFormat>, Vec<u8>), CurveFileError> {
+    let drawing = |f: InputFormat| match f {
+        InputFormat::Json => None,
+        InputFormat::Svg => Some(DrawingFormat::Svg),
+        InputFormat::Dxf => Some(DrawingFormat::Dxf),
     };
-    let bytes = std::fs::read(path).map_err(|e| unreadable(file, e))?;
-    Ok(Some((format, bytes)))
+    if path == Path::new(STDIN_PATH) {
+        use std::io::Read;
+        let mut bytes = Vec::new();
+        std::io::stdin()
+            .lock()
+            .take(MAX_STDIN_BYTES + 1)
+            .read_to_end(&mut bytes)
+            .map_err(|e| unreadable(STDIN_NAME, e))?;
+        if bytes.len() as u64 > MAX_STDIN_BYTES {
+            return Err(drawing::error(
+                STDIN_NAME,
+                "document",
+                Problem::Unreadable(format!("more than {MAX_STDIN_BYTES} bytes")),
+            ));
+        }
+        let format = format.unwrap_or(InputFormat::Json);
+        return Ok((STDIN_NAME.to_string(), drawing(format), bytes));
+    }
+    let file = path.display().to_string();
+    let format = format.unwrap_or_else(|| {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("svg") => InputFormat::Svg,
+            Some("dxf") => InputFormat::Dxf,
+            _ => InputFormat::Json,
+        }
+    });
+    let bytes = std::fs::read(path).map_err(|e| unreadable(&file, e))?;
+    Ok((file, drawing(format), bytes))
 }
 
 /// The formats of drawing files.

@@ -163,3 +163,102 @@ fn options_are_checked_before_any_input_is_read() {
         "tangents takes two curves: not a batch command"
     );
 }
+
+/// Every command runs in batch as alone: offsets, V-carving, and the tangents and bisector of
+/// each input with the curve `--with`.
+#[test]
+fn every_command_runs_in_batch_as_alone() {
+    let regions = [fixture("region-pocket.json"), fixture("drawing-pocket.svg")];
+    let curves = [fixture("circle.json"), fixture("ellipse.json")];
+    let with = fixture("limacon.json");
+    let cases: Vec<(Vec<&str>, &[String], Vec<&str>)> = vec![
+        (vec!["offset"], &regions, vec!["--distances", "0.5,1.5"]),
+        (vec!["offset"], &regions, vec!["--step", "1"]),
+        (
+            vec!["vcarve"],
+            &regions,
+            vec!["--angle", "60", "--max-depth", "3"],
+        ),
+        (vec!["tangents"], &curves, vec![]),
+        (vec!["bisector"], &curves, vec![]),
+    ];
+    for (command, inputs, options) in cases {
+        let mut args = vec!["batch", command[0]];
+        args.extend(inputs.iter().map(String::as_str));
+        args.extend(&options);
+        let two = matches!(command[0], "tangents" | "bisector");
+        if two {
+            args.extend(["--with", with.as_str()]);
+        }
+        let run = curvekit(&args);
+        assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+        for (line, input) in lines(&run.stdout).iter().zip(inputs) {
+            let mut single = vec![command[0], input.as_str()];
+            if two {
+                single.push(with.as_str());
+            }
+            single.extend(&options);
+            assert_eq!(without_input(line), curvekit_json(&single), "{args:?}");
+        }
+    }
+}
+
+/// `--figures DIR`: one figure per input, named by its place and file, and its line says
+/// where.
+#[test]
+fn each_input_gets_its_figure() {
+    let dir = tempfile::tempdir().unwrap();
+    let figures = dir.path().join("figs");
+    let inputs = [fixture("region-pocket.json"), fixture("drawing-pocket.svg")];
+    let run = curvekit(&[
+        "batch",
+        "medial",
+        &inputs[0],
+        &inputs[1],
+        "--figures",
+        figures.to_str().unwrap(),
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let got = lines(&run.stdout);
+    for (k, (line, stem)) in got
+        .iter()
+        .zip(["region-pocket", "drawing-pocket"])
+        .enumerate()
+    {
+        let path = figures.join(format!("{k:04}-{stem}.svg"));
+        assert_eq!(line["figure"], path.display().to_string());
+        let svg = std::fs::read_to_string(&path).unwrap();
+        assert!(
+            svg.starts_with("<svg") && svg.contains("<polyline"),
+            "{svg:.100}"
+        );
+    }
+}
+
+/// Options a command does not take, and those it needs, are usage errors before any input is
+/// read.
+#[test]
+fn options_must_fit_the_command() {
+    let pocket = fixture("region-pocket.json");
+    for (args, named) in [
+        (vec!["batch", "medial", &pocket, "--angle", "60"], "--angle"),
+        (
+            vec!["batch", "antipodal", &pocket, "--distance", "1"],
+            "--distance",
+        ),
+        (vec!["batch", "inflections", &pocket, "--fit"], "--fit"),
+        (vec!["batch", "vcarve", &pocket, "--exterior"], "--exterior"),
+        (vec!["batch", "vcarve", &pocket], "--angle"),
+        (
+            vec!["batch", "vcarve", &pocket, "--angle", "200"],
+            "--angle",
+        ),
+        (vec!["batch", "tangents", &pocket], "--with"),
+        (vec!["batch", "offset", &pocket], "distance"),
+    ] {
+        let run = curvekit(&args);
+        assert_eq!(run.code, 2, "{args:?}: {}", run.stderr);
+        assert!(run.stderr.contains(named), "{args:?}: {}", run.stderr);
+        assert_eq!(run.stdout, "", "{args:?}");
+    }
+}

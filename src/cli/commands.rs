@@ -24,20 +24,7 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
         )
     });
     if let Some(svg) = &common.svg {
-        let mut fig = Figure::new();
-        draw_curve(&mut fig, &curve);
-        let (inflections, corners) = match &found {
-            InflectionsFound::Curve(f) => (&f.inflections, &[][..]),
-            InflectionsFound::Profile(f) => (&f.inflections, &f.corners[..]),
-        };
-        inflections.iter().for_each(|i| fig.dot(i.p));
-        corners.iter().for_each(|c| fig.corner(c.p));
-        let mut title = format!("{}: {} inflections", curve.file, inflections.len());
-        if let Shape::Profile(_) = curve.shape {
-            title.push_str(&format!(", {} corners", corners.len()));
-        }
-        fig.title(title);
-        write_file(svg, fig.render())?;
+        write_file(svg, inflections_figure(&curve, &found))?;
     }
     print_out(&if common.json {
         json_document(&found, &[&curve], stats.as_ref())
@@ -64,27 +51,7 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
         )
     });
     if let Some(svg) = &common.svg {
-        let figure = match &found {
-            AntipodalFound::Curve(f) => {
-                let title = format!(
-                    "{}: {} antipodal pairs, {} inflections",
-                    curve.file,
-                    f.pairs.len(),
-                    f.inflections.len()
-                );
-                report::antipodal_figure(&curve, f, title)
-            }
-            AntipodalFound::Profile(f) => {
-                let title = format!(
-                    "{}: {} antipodal pairs, {} corners",
-                    curve.file,
-                    f.pairs.len(),
-                    f.corners.len()
-                );
-                report::profile_antipodal_figure(&curve, f, title)
-            }
-        };
-        write_file(svg, &figure)?;
+        write_file(svg, antipodal_figure(&curve, &found))?;
     }
     print_out(&if common.json {
         json_document(&found, &[&curve], stats.as_ref())
@@ -113,24 +80,7 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
         TangentsFound::Profile(_) => timing::measure_both(run, run),
     });
     if let Some(svg) = &common.svg {
-        let mut fig = Figure::new();
-        draw_curve(&mut fig, &c1);
-        draw_curve(&mut fig, &c2);
-        for c in both {
-            if let Shape::Profile(p) = &c.shape {
-                p.corners()
-                    .for_each(|j| fig.corner(curvekit::curve::ParamCurve::jet(&**p, j.u).p.arr()));
-            }
-        }
-        let lines: Vec<([f64; 2], [f64; 2])> = match &found {
-            TangentsFound::Curve(f) => f.lines.iter().map(|l| (l.p, l.q)).collect(),
-            TangentsFound::Profile(f) => f.lines.iter().map(|l| (l.p, l.q)).collect(),
-        };
-        for (k, (p, q)) in lines.iter().enumerate() {
-            fig.segment(*p, *q, Some((k + 1).to_string()));
-        }
-        fig.title(format!("{} common tangent lines", lines.len()));
-        write_file(svg, fig.render())?;
+        write_file(svg, tangents_figure(&both, &found))?;
     }
     print_out(&if common.json {
         json_document(&found, &both, stats.as_ref())
@@ -164,21 +114,7 @@ pub(super) fn run_bisector(
     let found = compute()?;
     let stats = common.time.then(|| timing::measure(compute));
     if let Some(svg) = &common.svg {
-        let figure = match &found {
-            BisectorFound::Curve(f) => {
-                let title = format!("{} bisector branches", f.branches.len());
-                report::bisector_figure(&curves, f, title)
-            }
-            BisectorFound::Profile(f) => {
-                let title = format!("{} bisector branches", f.branches.len());
-                let profiles = curves
-                    .iter()
-                    .map(|c| commands::as_profile(c, "bisector"))
-                    .collect::<Result<Vec<_>, _>>()?;
-                report::profile_bisector_figure(&curves, &profiles, f, title)
-            }
-        };
-        write_file(svg, &figure)?;
+        write_file(svg, bisector_figure(&curves, &found)?)?;
     }
     print_out(&if common.json {
         json_document(&found, &curves, stats.as_ref())
@@ -186,6 +122,89 @@ pub(super) fn run_bisector(
         match &found {
             BisectorFound::Curve(f) => report::bisector_text(&curves, f, stats.as_ref()),
             BisectorFound::Profile(f) => report::profile_bisector_text(&curves, f, stats.as_ref()),
+        }
+    })
+}
+
+/// The figure of a curve's inflections (and a profile's corners).
+pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> String {
+    let mut fig = Figure::new();
+    draw_curve(&mut fig, curve);
+    let (inflections, corners) = match found {
+        InflectionsFound::Curve(f) => (&f.inflections, &[][..]),
+        InflectionsFound::Profile(f) => (&f.inflections, &f.corners[..]),
+    };
+    inflections.iter().for_each(|i| fig.dot(i.p));
+    corners.iter().for_each(|c| fig.corner(c.p));
+    let mut title = format!("{}: {} inflections", curve.file, inflections.len());
+    if let Shape::Profile(_) = curve.shape {
+        title.push_str(&format!(", {} corners", corners.len()));
+    }
+    fig.title(title);
+    fig.render()
+}
+
+/// The figure of a curve's antipodal pairs.
+pub(super) fn antipodal_figure(curve: &Curve, found: &AntipodalFound) -> String {
+    match found {
+        AntipodalFound::Curve(f) => {
+            let title = format!(
+                "{}: {} antipodal pairs, {} inflections",
+                curve.file,
+                f.pairs.len(),
+                f.inflections.len()
+            );
+            report::antipodal_figure(curve, f, title)
+        }
+        AntipodalFound::Profile(f) => {
+            let title = format!(
+                "{}: {} antipodal pairs, {} corners",
+                curve.file,
+                f.pairs.len(),
+                f.corners.len()
+            );
+            report::profile_antipodal_figure(curve, f, title)
+        }
+    }
+}
+
+/// The figure of the lines tangent to two curves, numbered.
+pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String {
+    let mut fig = Figure::new();
+    for c in both {
+        draw_curve(&mut fig, c);
+    }
+    for c in both {
+        if let Shape::Profile(p) = &c.shape {
+            p.corners()
+                .for_each(|j| fig.corner(curvekit::curve::ParamCurve::jet(&**p, j.u).p.arr()));
+        }
+    }
+    let lines: Vec<([f64; 2], [f64; 2])> = match found {
+        TangentsFound::Curve(f) => f.lines.iter().map(|l| (l.p, l.q)).collect(),
+        TangentsFound::Profile(f) => f.lines.iter().map(|l| (l.p, l.q)).collect(),
+    };
+    for (k, (p, q)) in lines.iter().enumerate() {
+        fig.segment(*p, *q, Some((k + 1).to_string()));
+    }
+    fig.title(format!("{} common tangent lines", lines.len()));
+    fig.render()
+}
+
+/// The figure of a bisector (or self-bisector) and its curves.
+pub(super) fn bisector_figure(curves: &[&Curve], found: &BisectorFound) -> Result<String, Failure> {
+    Ok(match found {
+        BisectorFound::Curve(f) => {
+            let title = format!("{} bisector branches", f.branches.len());
+            report::bisector_figure(curves, f, title)
+        }
+        BisectorFound::Profile(f) => {
+            let title = format!("{} bisector branches", f.branches.len());
+            let profiles = curves
+                .iter()
+                .map(|c| commands::as_profile(c, "bisector"))
+                .collect::<Result<Vec<_>, _>>()?;
+            report::profile_bisector_figure(curves, &profiles, f, title)
         }
     })
 }

@@ -148,41 +148,7 @@ enum Command {
     },
     /// One command over many inputs, on several threads: one JSON line per input, in input
     /// order; an input that fails becomes an error line and the run goes on.
-    Batch {
-        /// The command to run on each input.
-        #[arg(value_enum)]
-        command: batch::BatchCommand,
-        /// Curve, region or drawing files; a `.jsonl` file holds one curve document a line.
-        #[arg(required = true, value_name = "INPUTS")]
-        inputs: Vec<PathBuf>,
-        /// Threads (default: one per core).
-        #[arg(long, value_name = "N")]
-        jobs: Option<usize>,
-        /// Write the JSON lines to FILE instead of stdout.
-        #[arg(long, value_name = "FILE")]
-        out: Option<PathBuf>,
-        /// Parameter tolerance.
-        #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
-        tol: f64,
-        /// Chord tolerance (bisector, medial), relative to the size.
-        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
-        chord_tol: f64,
-        /// Bisector function (bisector).
-        #[arg(long, value_enum, default_value_t = MethodArg::F3)]
-        method: MethodArg,
-        /// Only the trimmed bisector (bisector).
-        #[arg(long)]
-        trimmed: bool,
-        /// Edges also as fitted B-splines (medial).
-        #[arg(long)]
-        fit: bool,
-        /// The exterior axis (medial).
-        #[arg(long)]
-        exterior: bool,
-        /// In a drawing that holds several profiles or regions, the one to take (from 0).
-        #[arg(long, value_name = "N")]
-        pick: Option<usize>,
-    },
+    Batch(batch::Batch),
 }
 
 /// Options of the bisector command.
@@ -415,31 +381,7 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             dxf.as_deref(),
             &common,
         ),
-        Command::Batch {
-            command,
-            inputs,
-            jobs,
-            out,
-            tol,
-            chord_tol,
-            method,
-            trimmed,
-            fit,
-            exterior,
-            pick,
-        } => batch::run(&batch::Batch {
-            command,
-            inputs,
-            jobs,
-            out,
-            pick,
-            tol,
-            chord_tol,
-            method,
-            trimmed,
-            fit,
-            exterior,
-        }),
+        Command::Batch(b) => batch::run(&b),
     }
 }
 

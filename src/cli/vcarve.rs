@@ -71,7 +71,7 @@ fn deepest(found: &VCarve) -> f64 {
 
 /// The figure: the region, the paths coloured by depth (surface blue to deepest yellow), the
 /// flat passes in grey.
-fn figure(region: &Curve, found: &VCarve) -> String {
+pub(super) fn figure(region: &Curve, found: &VCarve) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, region);
     let deepest = deepest(found);

@@ -552,8 +552,7 @@ pub fn vcarve(
     opts: &offset::VCarveOptions,
     medial_opts: &medial::MedialOptions,
 ) -> Result<offset::VCarve, CommandError> {
-    opts.validate()
-        .map_err(|e| CommandError::Usage(format!("vcarve: {}", usage_of(&e))))?;
+    validate_vcarve_options(opts)?;
     if medial_opts.exterior {
         return Err(CommandError::Usage(
             "vcarve: the tool path follows the inner medial axis, not the exterior one".into(),
@@ -579,6 +578,12 @@ pub fn vcarve(
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(parts::joined_carves(found, region.drawing_doubt()))
+}
+
+/// The V-carving options checked on their own (as [`validate_options`]).
+pub fn validate_vcarve_options(opts: &offset::VCarveOptions) -> Result<(), CommandError> {
+    opts.validate()
+        .map_err(|e| CommandError::Usage(format!("vcarve: {}", usage_of(&e))))
 }
 
 /// An offset error as the command line names its options (`--max-depth`, not `max_depth`).

@@ -1,11 +1,14 @@
 //! Offsets from the medial axis (issue 21), one core, the axis computed beforehand. Targets:
 //! the 10×6 rounded-rectangle pocket with a round island of radius 1, every offset at step
 //! 0.25, in 1 ms; a profile of 100 segments, 20 offsets, in 20 ms (a chain of 100 cubic
-//! Béziers with corners).
+//! Béziers with corners). Writing the pocket's passes as DXF (issue 40) adds at most 10 % to
+//! the command's work (axis and offsets); SVG paths are measured beside it.
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use curve::Region;
+use curvekit::export::dxf_file::offsets_dxf;
+use curvekit::export::svg_paths::offsets_svg;
 use curvekit::medial::{medial_axis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
 use std::time::Duration;
@@ -26,6 +29,20 @@ fn offset(c: &mut Criterion) {
     let steps: Vec<f64> = (1..=12).map(|k| 0.25 * k as f64).collect();
     c.bench_function("offset_pocket_island_step_quarter", |b| {
         b.iter(|| offsets(black_box(&pocket), &axis, &steps, &opts).unwrap())
+    });
+    // The command's work on the pocket, then with its DXF or SVG paths written.
+    let pocket_read =
+        curvekit::io::parse_region("pocket.json", None, POCKET.as_bytes(), None).unwrap();
+    let step = curvekit::commands::Distances::Step(0.25);
+    let command = || {
+        curvekit::commands::offset(&pocket_read, &step, &opts, &MedialOptions::default()).unwrap()
+    };
+    c.bench_function("offset_pocket_command", |b| b.iter(|| black_box(command())));
+    c.bench_function("offset_pocket_command_dxf", |b| {
+        b.iter(|| black_box(offsets_dxf(&command(), Some("mm")).unwrap()))
+    });
+    c.bench_function("offset_pocket_command_svg_paths", |b| {
+        b.iter(|| black_box(offsets_svg(&command(), Some("mm")).unwrap()))
     });
     let chain = Region::new(bezier_chain(100), Vec::new()).unwrap();
     let axis = medial_axis(&chain, &MedialOptions::default()).unwrap();

@@ -4,8 +4,10 @@ Curves come from the tool's JSON documents (:func:`from_dict`, :meth:`Curve.from
 files and drawings (:func:`read`: ``.json``, ``.svg``, ``.dxf``) and from numpy arrays
 (:func:`BSpline`, :func:`Bezier`, :func:`Line`, :func:`Arc` and the analytic kinds). The
 commands (:func:`antipodal`, :func:`inflections`, :func:`tangents`, :func:`bisector`,
-:func:`medial`) release the GIL while they compute, and their results give numpy arrays and
-``to_dict()``, the document ``curvekit COMMAND --json`` prints. Curves and results pickle, so
+:func:`medial`, :func:`offset`, :func:`vcarve`) release the GIL while they compute, and their
+results give numpy arrays and ``to_dict()``, the document ``curvekit COMMAND --json`` prints.
+Given a list of curves instead of one, a command answers a list, computed in parallel (as
+shapely's vectorised functions do). Curves and results pickle, so
 they travel to process pools and clusters (Dask, Ray) unchanged. A curve asked many times is
 prepared once (:func:`prepare`): runs on the prepared curve answer warm.
 
@@ -21,7 +23,7 @@ from __future__ import annotations
 import json
 import math
 import os
-from typing import Any, Mapping, Optional, Sequence, Union
+from typing import Any, List, Literal, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 
@@ -37,9 +39,12 @@ from ._curvekit import (
     Offsets,
     PreparedCurve,
     Tangents,
+    VCarve,
     prepare,
     read,
 )
+
+__version__: str = _curvekit.__version__
 
 __all__ = [
     "Antipodal",
@@ -62,6 +67,8 @@ __all__ = [
     "Polygon",
     "PreparedCurve",
     "Tangents",
+    "VCarve",
+    "__version__",
     "antipodal",
     "bisector",
     "from_dict",
@@ -71,6 +78,7 @@ __all__ = [
     "prepare",
     "read",
     "tangents",
+    "vcarve",
 ]
 
 
@@ -84,7 +92,7 @@ def from_dict(document: Mapping[str, Any], name: str = "curve") -> Curve:
     return Curve.from_json(text, name)
 
 
-def _points(points: Any, field: str, name: str) -> list:
+def _points(points: Any, field: str, name: str) -> list[list[float]]:
     """An (n, 2) array of finite coordinates as nested lists, or InputError naming the field."""
     try:
         a = np.asarray(points, dtype=float)
@@ -96,10 +104,11 @@ def _points(points: Any, field: str, name: str) -> list:
     if len(bad):
         i, j = bad[0]
         raise InputError(f"{name}: {field}[{i}][{j}]: {a[i, j]} is not a finite number")
-    return a.tolist()
+    points_list: list[list[float]] = a.tolist()
+    return points_list
 
 
-def _numbers(values: Any, field: str, name: str) -> list:
+def _numbers(values: Any, field: str, name: str) -> list[float]:
     """A 1-D array of finite numbers as a list, or InputError naming the field."""
     try:
         a = np.asarray(values, dtype=float)
@@ -110,7 +119,8 @@ def _numbers(values: Any, field: str, name: str) -> list:
     bad = np.flatnonzero(~np.isfinite(a))
     if len(bad):
         raise InputError(f"{name}: {field}[{bad[0]}]: {a[bad[0]]} is not a finite number")
-    return a.tolist()
+    numbers: list[float] = a.tolist()
+    return numbers
 
 
 def _number(value: Any, field: str, name: str) -> float:
@@ -133,7 +143,7 @@ def BSpline(
 ) -> Curve:
     """A B-spline (NURBS with ``weights``) of ``degree`` on ``points`` (an (n, 2) array):
     periodic (closed, uniform), or open, clamped on [0, 1] unless ``knots`` are given."""
-    doc: dict = {
+    doc: dict[str, Any] = {
         "kind": "bspline",
         "degree": degree,
         "points": _points(points, "points", name),
@@ -149,13 +159,13 @@ def BSpline(
 
 def Bezier(points: Any, weights: Optional[Any] = None, name: str = "bezier") -> Curve:
     """A Bézier curve (rational with ``weights``) on ``points`` (an (n, 2) array), on [0, 1]."""
-    doc: dict = {"kind": "bezier", "points": _points(points, "points", name)}
+    doc: dict[str, Any] = {"kind": "bezier", "points": _points(points, "points", name)}
     if weights is not None:
         doc["weights"] = _numbers(weights, "weights", name)
     return from_dict(doc, name)
 
 
-def _center(center: Any, name: str) -> list:
+def _center(center: Any, name: str) -> list[float]:
     return _points([center], "center", name)[0]
 
 
@@ -232,7 +242,7 @@ def Arc(
     )
 
 
-def _ring(points: Any, field: str, name: str) -> dict:
+def _ring(points: Any, field: str, name: str) -> dict[str, Any]:
     """A closed profile document of the straight sides through ``points``: an (n, 2) array, or
     OpenCV's (n, 1, 2) contour; repeated points (and a last point that repeats the first) are
     dropped, as they draw nothing."""
@@ -277,6 +287,12 @@ CurveLike = Union[Curve, Mapping[str, Any], str, "os.PathLike[str]"]
 """What the commands take as a curve: a :class:`Curve`, a JSON curve document as a dict, or the
 path of a curve file or drawing."""
 
+OneCurve = Union[CurveLike, PreparedCurve]
+"""What the one-curve commands take: a curve, or a curve prepared for many runs."""
+
+Many = Union[List[Any], Tuple[Any, ...], "np.ndarray[Any, Any]"]
+"""A list of curves: a list, a tuple or a one-dimensional object array."""
+
 
 def _curve(x: Any) -> Any:
     """A curve from what a command was given (a prepared curve stays as it is)."""
@@ -289,36 +305,116 @@ def _curve(x: Any) -> Any:
     raise TypeError(f"expected a curvekit.Curve, a curve document (dict) or a path, got {type(x).__name__}")
 
 
-def antipodal(curve: Union[CurveLike, PreparedCurve], *, tol: float = 1e-12) -> Antipodal:
+def _is_many(x: Any) -> bool:
+    """Whether a command was given a list of curves (a list, a tuple, an object array)."""
+    return isinstance(x, (list, tuple)) or (isinstance(x, np.ndarray) and x.ndim == 1)
+
+
+def _curves(xs: Any) -> list[Any]:
+    """Each of a list of curves as :func:`_curve` takes it, its place named on failure."""
+    found = []
+    for k, x in enumerate(xs):
+        try:
+            found.append(_curve(x))
+        except TypeError as e:
+            raise TypeError(f"[{k}]: {e}") from None
+    return found
+
+
+def _paired(first: list[Any], second: Any, command: str) -> list[Any]:
+    """The second curves of a vectorised two-curve call: a list as long as the first, or one
+    curve for all of them."""
+    if _is_many(second):
+        listed = _curves(second)
+        if len(listed) != len(first):
+            raise ValueError(f"{command}: {len(first)} curves against {len(listed)}: the lists pair up, so their lengths must match")
+        return listed
+    return [_curve(second)] * len(first)
+
+
+@overload
+def antipodal(curve: OneCurve, *, tol: float = ...) -> Antipodal: ...
+@overload
+def antipodal(curve: Many, *, tol: float = ...) -> List[Antipodal]: ...
+def antipodal(curve: Any, *, tol: float = 1e-12) -> Any:
     """The antipodal point pairs of a closed curve or profile (Jia 2004): the grasps of a
     two-finger gripper, with the inflections and the families of non-isolated pairs. ``tol``
-    is the parameter tolerance relative to the domain's length (``--tol``)."""
+    is the parameter tolerance relative to the domain's length (``--tol``). Given a list of
+    curves, a list of results, computed in parallel."""
+    if _is_many(curve):
+        return _curvekit.antipodal_many(_curves(curve), tol=tol)
     return _curvekit.antipodal(_curve(curve), tol=tol)
 
 
-def inflections(curve: Union[CurveLike, PreparedCurve], *, tol: float = 1e-12) -> Inflections:
-    """The inflections of a curve (and the corners of a profile)."""
+@overload
+def inflections(curve: OneCurve, *, tol: float = ...) -> Inflections: ...
+@overload
+def inflections(curve: Many, *, tol: float = ...) -> List[Inflections]: ...
+def inflections(curve: Any, *, tol: float = 1e-12) -> Any:
+    """The inflections of a curve (and the corners of a profile); of each of a list of
+    curves, in parallel."""
+    if _is_many(curve):
+        return _curvekit.inflections_many(_curves(curve), tol=tol)
     return _curvekit.inflections(_curve(curve), tol=tol)
 
 
-def tangents(curve1: CurveLike, curve2: CurveLike, *, tol: float = 1e-12) -> Tangents:
-    """Every line tangent to both curves."""
+@overload
+def tangents(curve1: CurveLike, curve2: CurveLike, *, tol: float = ...) -> Tangents: ...
+@overload
+def tangents(curve1: Many, curve2: Union[CurveLike, Many], *, tol: float = ...) -> List[Tangents]: ...
+def tangents(curve1: Any, curve2: Any, *, tol: float = 1e-12) -> Any:
+    """Every line tangent to both curves. Given a list as ``curve1``, the tangents of each with
+    ``curve2`` (one curve, or a list of as many, paired in order), in parallel."""
+    if _is_many(curve1):
+        first = _curves(curve1)
+        return _curvekit.tangents_many(first, _paired(first, curve2, "tangents"), tol=tol)
     return _curvekit.tangents(_curve(curve1), _curve(curve2), tol=tol)
 
 
+Method = Literal["f1", "f2", "f3"]
+"""Elber and Kim's bisector functions: Eq. 3, the normal form, Eq. 13."""
+
+
+@overload
 def bisector(
     curve1: CurveLike,
-    curve2: Optional[CurveLike] = None,
+    curve2: Optional[CurveLike] = ...,
     *,
-    method: str = "f3",
+    method: Method = ...,
+    trimmed: bool = ...,
+    chord_tol: float = ...,
+    tol: float = ...,
+) -> Bisector: ...
+@overload
+def bisector(
+    curve1: Many,
+    curve2: Union[CurveLike, Many, None] = ...,
+    *,
+    method: Method = ...,
+    trimmed: bool = ...,
+    chord_tol: float = ...,
+    tol: float = ...,
+) -> List[Bisector]: ...
+def bisector(
+    curve1: Any,
+    curve2: Any = None,
+    *,
+    method: Method = "f3",
     trimmed: bool = False,
     chord_tol: float = 1e-3,
     tol: float = 1e-12,
-) -> Bisector:
+) -> Any:
     """The bisector of two curves, or the self-bisector of one, as polylines within
     ``chord_tol`` (relative to the curves' size) of the true bisector; ``method`` is Elber and
     Kim's bisector function (``"f1"``, ``"f2"``, ``"f3"``); ``trimmed`` keeps only the points
-    whose feet are the nearest points of the curves."""
+    whose feet are the nearest points of the curves. Given a list as ``curve1``, the bisector
+    of each (with ``curve2``, one curve or a list paired in order), in parallel."""
+    if _is_many(curve1):
+        first = _curves(curve1)
+        second = None if curve2 is None else _paired(first, curve2, "bisector")
+        return _curvekit.bisector_many(
+            first, second, method=method, trimmed=trimmed, chord_tol=chord_tol, tol=tol
+        )
     return _curvekit.bisector(
         _curve(curve1),
         None if curve2 is None else _curve(curve2),
@@ -329,24 +425,57 @@ def bisector(
     )
 
 
+@overload
 def medial(
-    region: CurveLike,
+    region: CurveLike, *, chord_tol: float = ..., fit: bool = ..., exterior: bool = ..., tol: float = ...
+) -> MedialAxis: ...
+@overload
+def medial(
+    region: Many, *, chord_tol: float = ..., fit: bool = ..., exterior: bool = ..., tol: float = ...
+) -> List[MedialAxis]: ...
+def medial(
+    region: Any,
     *,
     chord_tol: float = 1e-3,
     fit: bool = False,
     exterior: bool = False,
     tol: float = 1e-12,
-) -> MedialAxis:
+) -> Any:
     """The medial axis of a region (or of the area inside a closed curve or profile): a graph
     of edges whose points carry the radius of the largest inscribed disk; ``fit`` adds each
-    edge as a B-spline; ``exterior`` gives the Voronoi diagram outside instead."""
-    return _curvekit.medial(
-        _curve(region), chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol
-    )
+    edge as a B-spline; ``exterior`` gives the Voronoi diagram outside instead. Given a list
+    of regions, a list of axes, computed in parallel."""
+    if _is_many(region):
+        return _curvekit.medial_many(
+            _curves(region), chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol
+        )
+    return _curvekit.medial(_curve(region), chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol)
 
 
+@overload
 def offset(
     region: CurveLike,
+    *,
+    distance: Optional[float] = ...,
+    distances: Optional[Sequence[float]] = ...,
+    step: Optional[float] = ...,
+    outward: bool = ...,
+    chord_tol: float = ...,
+    tol: float = ...,
+) -> Offsets: ...
+@overload
+def offset(
+    region: Many,
+    *,
+    distance: Optional[float] = ...,
+    distances: Optional[Sequence[float]] = ...,
+    step: Optional[float] = ...,
+    outward: bool = ...,
+    chord_tol: float = ...,
+    tol: float = ...,
+) -> List[Offsets]: ...
+def offset(
+    region: Any,
     *,
     distance: Optional[float] = None,
     distances: Optional[Sequence[float]] = None,
@@ -354,20 +483,57 @@ def offset(
     outward: bool = False,
     chord_tol: float = 1e-3,
     tol: float = 1e-12,
-) -> Offsets:
+) -> Any:
     """The inward offsets of a region (pocketing tool paths) at ``distance``, at each of
     ``distances``, or at every multiple of ``step`` while the region lasts: closed loops
     (``to_dict()``: the tool's profile documents; ``polylines(k)`` for drawing), from the
     region's medial axis, so that they never cross; ``outward`` grows the region instead (from
-    its exterior axis, for distances below half its size)."""
-    if distances is not None:
-        distances = [float(d) for d in distances]
+    its exterior axis, for distances below half its size). Given a list of regions, a list of
+    results, computed in parallel."""
+    listed = None if distances is None else [float(d) for d in distances]
+    if _is_many(region):
+        return _curvekit.offset_many(
+            _curves(region),
+            distance=distance,
+            distances=listed,
+            step=step,
+            outward=outward,
+            chord_tol=chord_tol,
+            tol=tol,
+        )
     return _curvekit.offset(
         _curve(region),
         distance=distance,
-        distances=distances,
+        distances=listed,
         step=step,
         outward=outward,
         chord_tol=chord_tol,
         tol=tol,
     )
+
+
+@overload
+def vcarve(
+    region: CurveLike, *, angle: float, max_depth: Optional[float] = ..., chord_tol: float = ..., tol: float = ...
+) -> VCarve: ...
+@overload
+def vcarve(
+    region: Many, *, angle: float, max_depth: Optional[float] = ..., chord_tol: float = ..., tol: float = ...
+) -> List[VCarve]: ...
+def vcarve(
+    region: Any,
+    *,
+    angle: float,
+    max_depth: Optional[float] = None,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> Any:
+    """The tool paths of a V-bit of included ``angle`` (degrees) over the region's medial axis,
+    each point at the depth ``-radius / tan(angle / 2)`` that cuts its largest disk; with
+    ``max_depth``, no deeper, and a flat pass along the offset where the axis is deeper. Given
+    a list of regions, a list of results, computed in parallel."""
+    if _is_many(region):
+        return _curvekit.vcarve_many(
+            _curves(region), angle=angle, max_depth=max_depth, chord_tol=chord_tol, tol=tol
+        )
+    return _curvekit.vcarve(_curve(region), angle=angle, max_depth=max_depth, chord_tol=chord_tol, tol=tol)

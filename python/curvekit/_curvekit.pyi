@@ -90,6 +90,25 @@ class MedialAxis(_Result):
     edge_parts: npt.NDArray[np.uintp]
     edges: list[tuple[int, int, npt.NDArray[np.float64], npt.NDArray[np.float64]]]
     """Each edge as (from, to, xy (k, 2), radius (k,))."""
+    def dxf(self) -> bytes:
+        """The axis as a DXF file's bytes (edges as splines or polylines, nodes as points)."""
+    def svg_paths(self) -> str:
+        """The axis as plain SVG paths in the input's coordinates."""
+
+class VCarve(_Result):
+    certified: bool
+    complete: bool
+    reason: Optional[str]
+    angle: float
+    max_depth: Optional[float]
+    paths: list[npt.NDArray[np.float64]]
+    """Each tool path as an (n, 3) array of (x, y, z), z <= 0 the depth."""
+    path_parts: list[int]
+    def flats(self, arc_points: int = 32) -> list[npt.NDArray[np.float64]]:
+        """The flat passes at depth -max_depth as closed (n, 2) polylines."""
+    def dxf(self) -> bytes:
+        """The paths as a DXF file's bytes (3D polylines; the flats at their depth)."""
+    def __len__(self) -> int: ...
 
 class Offsets(_Result):
     certified: bool
@@ -100,9 +119,15 @@ class Offsets(_Result):
         """The loops at the k-th distance as closed (n, 2) polylines."""
     def parts(self, k: int) -> list[int]:
         """The part of a multi-part input each loop at the k-th distance belongs to."""
+    def dxf(self) -> bytes:
+        """The offsets as a DXF file's bytes (lines, arcs, splines; a layer per distance)."""
+    def svg_paths(self) -> str:
+        """The offsets as plain SVG paths in the input's coordinates."""
     def __len__(self) -> int: ...
 
 OneCurve = Union[Curve, PreparedCurve]
+
+__version__: str
 
 def read(path: Union[str, PathLike[str]], *, pick: Optional[int] = None) -> Curve: ...
 def prepare(curve: Curve) -> PreparedCurve: ...
@@ -136,3 +161,51 @@ def offset(
     chord_tol: float = 1e-3,
     tol: float = 1e-12,
 ) -> Offsets: ...
+def vcarve(
+    region: Curve,
+    *,
+    angle: float,
+    max_depth: Optional[float] = None,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> VCarve: ...
+def antipodal_many(curves: list[OneCurve], *, tol: float = 1e-12) -> list[Antipodal]: ...
+def inflections_many(curves: list[OneCurve], *, tol: float = 1e-12) -> list[Inflections]: ...
+def tangents_many(
+    curves1: list[Curve], curves2: list[Curve], *, tol: float = 1e-12
+) -> list[Tangents]: ...
+def bisector_many(
+    curves1: list[Curve],
+    curves2: Optional[list[Curve]] = None,
+    *,
+    method: Literal["f1", "f2", "f3"] = "f3",
+    trimmed: bool = False,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> list[Bisector]: ...
+def medial_many(
+    regions: list[Curve],
+    *,
+    chord_tol: float = 1e-3,
+    fit: bool = False,
+    exterior: bool = False,
+    tol: float = 1e-12,
+) -> list[MedialAxis]: ...
+def offset_many(
+    regions: list[Curve],
+    *,
+    distance: Optional[float] = None,
+    distances: Optional[list[float]] = None,
+    step: Optional[float] = None,
+    outward: bool = False,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> list[Offsets]: ...
+def vcarve_many(
+    regions: list[Curve],
+    *,
+    angle: float,
+    max_depth: Optional[float] = None,
+    chord_tol: float = 1e-3,
+    tol: float = 1e-12,
+) -> list[VCarve]: ...

@@ -4,6 +4,8 @@
 //! JSON. The geometry is the library's (`curvekit::commands`); this crate only translates.
 
 mod curves;
+mod many;
+mod region_results;
 mod results;
 
 use curve::watch::Watch;
@@ -12,7 +14,8 @@ use curves::{PyCurve, PyPrepared};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
 use pyo3::prelude::*;
-use results::{PyAntipodal, PyBisector, PyInflections, PyMedialAxis, PyOffsets, PyTangents};
+use region_results::{PyMedialAxis, PyOffsets, PyVCarve};
+use results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
 use std::sync::mpsc;
 use std::sync::Arc;
 use std::time::Duration;
@@ -201,23 +204,7 @@ fn bisector_of(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyBisector> {
-    let method = match method {
-        "f1" => zeroset::Method::F1,
-        "f2" => zeroset::Method::F2,
-        "f3" => zeroset::Method::F3,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "method: {other:?} is not one of \"f1\", \"f2\", \"f3\""
-            )))
-        }
-    };
-    let opts = zeroset::BisectorOptions {
-        method,
-        tol,
-        chord_tol,
-        trimmed,
-        ..zeroset::BisectorOptions::default()
-    };
+    let opts = bisector_options(method, trimmed, chord_tol, tol)?;
     let a = curve1.get();
     let b = curve2.map(|c| c.get());
     let found = detached(py, || {
@@ -276,16 +263,7 @@ fn offset_of(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyOffsets> {
-    let asked = match (distance, distances, step) {
-        (Some(d), None, None) => commands::Distances::List(vec![d]),
-        (None, Some(list), None) => commands::Distances::List(list),
-        (None, None, Some(s)) => commands::Distances::Step(s),
-        _ => {
-            return Err(PyValueError::new_err(
-                "offset: give one of distance, distances and step",
-            ))
-        }
-    };
+    let asked = offset_distances(distance, distances, step)?;
     let medial_opts = ::medial::MedialOptions {
         tol,
         chord_tol,
@@ -309,6 +287,99 @@ fn offset_of(
     Ok(PyOffsets::new(found, vec![summary]))
 }
 
+/// The bisector's options from the keywords (`method` one of `"f1"`, `"f2"`, `"f3"`).
+pub(crate) fn bisector_options(
+    method: &str,
+    trimmed: bool,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<zeroset::BisectorOptions> {
+    let method = match method {
+        "f1" => zeroset::Method::F1,
+        "f2" => zeroset::Method::F2,
+        "f3" => zeroset::Method::F3,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "method: {other:?} is not one of \"f1\", \"f2\", \"f3\""
+            )))
+        }
+    };
+    Ok(zeroset::BisectorOptions {
+        method,
+        tol,
+        chord_tol,
+        trimmed,
+        ..zeroset::BisectorOptions::default()
+    })
+}
+
+/// The distances `offset` is asked for: exactly one of the three keywords.
+pub(crate) fn offset_distances(
+    distance: Option<f64>,
+    distances: Option<Vec<f64>>,
+    step: Option<f64>,
+) -> PyResult<commands::Distances> {
+    match (distance, distances, step) {
+        (Some(d), None, None) => Ok(commands::Distances::List(vec![d])),
+        (None, Some(list), None) => Ok(commands::Distances::List(list)),
+        (None, None, Some(s)) => Ok(commands::Distances::Step(s)),
+        _ => Err(PyValueError::new_err(
+            "offset: give one of distance, distances and step",
+        )),
+    }
+}
+
+/// The V-carving options and the medial axis's, from the keywords.
+pub(crate) fn vcarve_options(
+    angle: f64,
+    max_depth: Option<f64>,
+    chord_tol: f64,
+    tol: f64,
+) -> (::offset::VCarveOptions, ::medial::MedialOptions) {
+    let medial_opts = ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit: false,
+        exterior: false,
+        size: None,
+    };
+    let opts = ::offset::VCarveOptions {
+        angle,
+        max_depth,
+        offset: ::offset::OffsetOptions {
+            chord_tol,
+            size: None,
+        },
+    };
+    (opts, medial_opts)
+}
+
+/// The tool paths of a V-bit of included `angle` (degrees) over a region's medial axis, at
+/// most `max_depth` deep (with a flat pass there).
+#[pyfunction(name = "vcarve")]
+#[pyo3(signature = (region, *, angle, max_depth = None,
+                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+fn vcarve_of(
+    py: Python<'_>,
+    region: &Bound<'_, PyCurve>,
+    angle: f64,
+    max_depth: Option<f64>,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<PyVCarve> {
+    let (opts, medial_opts) = vcarve_options(angle, max_depth, chord_tol, tol);
+    let c = region.get();
+    let (found, summary) = cancellable(py, || {
+        commands::validate_vcarve_options(&opts)?;
+        let region = c.region()?;
+        Ok((
+            commands::vcarve(region, &opts, &medial_opts)?,
+            commands::CurveSummary::of(region),
+        ))
+    })?;
+    Ok(PyVCarve::new(found, vec![summary]))
+}
+
 /// The native module: classes, functions and exceptions (the package `curvekit` re-exports
 /// them beside its curve constructors).
 #[pymodule]
@@ -325,5 +396,8 @@ fn _curvekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bisector_of, m)?)?;
     m.add_function(wrap_pyfunction!(medial_of, m)?)?;
     m.add_function(wrap_pyfunction!(offset_of, m)?)?;
+    m.add_function(wrap_pyfunction!(vcarve_of, m)?)?;
+    many::register(m)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -2,12 +2,13 @@
 //! for), gives numpy arrays of its main fields, `to_dict()`/`to_json()` as the tool's `--json`
 //! document, and pickles as that document.
 
+use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use curvekit::commands::{
     json_document_of, AntipodalFound, BisectorFound, CurveSummary, InflectionsFound, TangentsFound,
 };
 use medial::MedialAxis;
 use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
-use offset::Offsets;
+use offset::{Offsets, VCarve};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -52,26 +53,26 @@ kept_two_ways!(InflectionsFound);
 kept_two_ways!(TangentsFound);
 kept_two_ways!(BisectorFound);
 
-impl Kept for Offsets {
-    fn variant(&self) -> &'static str {
-        "region"
-    }
-    fn from_document(_: &str, json: &str) -> serde_json::Result<Self> {
-        read(json)
-    }
+/// The results on regions, each of one type.
+macro_rules! kept_one_way {
+    ($found:ty) => {
+        impl Kept for $found {
+            fn variant(&self) -> &'static str {
+                "region"
+            }
+            fn from_document(_: &str, json: &str) -> serde_json::Result<Self> {
+                read(json)
+            }
+        }
+    };
 }
 
-impl Kept for MedialAxis {
-    fn variant(&self) -> &'static str {
-        "region"
-    }
-    fn from_document(_: &str, json: &str) -> serde_json::Result<Self> {
-        read(json)
-    }
-}
+kept_one_way!(Offsets);
+kept_one_way!(MedialAxis);
+kept_one_way!(VCarve);
 
 /// The `(n, 2)` array of points.
-fn points2<'py>(py: Python<'py>, points: &[[f64; 2]]) -> Bound<'py, PyArray2<f64>> {
+pub(crate) fn points2<'py>(py: Python<'py>, points: &[[f64; 2]]) -> Bound<'py, PyArray2<f64>> {
     let flat: Vec<f64> = points.iter().flatten().copied().collect();
     let n = points.len();
     PyArray1::from_vec(py, flat)
@@ -92,13 +93,13 @@ fn pairs2<'py>(py: Python<'py>, pairs: &[[[f64; 2]; 2]]) -> Bound<'py, PyArray3<
 /// A result's curve as it pickles: its summary with what its drawing said (which the
 /// summary's JSON leaves to the result's own fields).
 #[derive(serde::Serialize, serde::Deserialize)]
-struct PickledCurve {
+pub(crate) struct PickledCurve {
     summary: CurveSummary,
     drawing: Option<curvekit::commands::DrawingSummary>,
 }
 
 impl PickledCurve {
-    fn of(c: &CurveSummary) -> Self {
+    pub(crate) fn of(c: &CurveSummary) -> Self {
         Self {
             summary: c.clone(),
             drawing: c.drawing.clone(),
@@ -189,6 +190,8 @@ macro_rules! result_class {
         }
     };
 }
+
+pub(crate) use result_class;
 
 result_class!(PyAntipodal, "Antipodal", AntipodalFound, {
     /// Every pair proven (sign tests on exact forms) to be antipodal, and nothing missed.
@@ -441,195 +444,6 @@ result_class!(PyBisector, "Bisector", BisectorFound, {
     }
 });
 
-result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
-    /// Every junction and trimming decision followed from sign tests.
-    #[getter]
-    fn certified(&self) -> bool {
-        self.found.certified
-    }
-
-    /// No search limit was hit.
-    #[getter]
-    fn complete(&self) -> bool {
-        self.found.complete
-    }
-
-    /// Why the axis is not certified, when it is not.
-    #[getter]
-    fn reason(&self) -> Option<String> {
-        self.found.reason.clone()
-    }
-
-    /// The nodes' points, an `(n, 2)` array (row `i` is node `i`).
-    #[getter]
-    fn nodes<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        points2(
-            py,
-            &self.found.nodes.iter().map(|n| n.xy).collect::<Vec<_>>(),
-        )
-    }
-
-    /// The nodes' radii (of the largest inscribed disks there), an `(n,)` array.
-    #[getter]
-    fn node_radii<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_vec(py, self.found.nodes.iter().map(|n| n.radius).collect())
-    }
-
-    /// The part of a multi-part input each node belongs to, an `(n,)` array (all 0 for one
-    /// part).
-    #[getter]
-    fn node_parts<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
-        PyArray1::from_vec(
-            py,
-            self.found
-                .nodes
-                .iter()
-                .map(|n| n.part.unwrap_or(0))
-                .collect(),
-        )
-    }
-
-    /// The part each edge belongs to, an `(m,)` array (all 0 for one part).
-    #[getter]
-    fn edge_parts<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
-        PyArray1::from_vec(
-            py,
-            self.found
-                .edges
-                .iter()
-                .map(|e| e.part.unwrap_or(0))
-                .collect(),
-        )
-    }
-
-    /// The nodes' kinds: `"junction"`, `"end"`, `"corner"`, `"joint"` or `"clip"`.
-    #[getter]
-    fn node_kinds(&self) -> PyResult<Vec<String>> {
-        self.found
-            .nodes
-            .iter()
-            .map(|n| match serde_json::to_value(n.kind) {
-                Ok(serde_json::Value::String(s)) => Ok(s),
-                _ => Err(PyValueError::new_err("a node kind without a name")),
-            })
-            .collect()
-    }
-
-    /// The edges, each `(from, to, xy, radius)`: node indices, the polyline as a `(k, 2)`
-    /// array and the radius at each vertex as a `(k,)` array.
-    #[getter]
-    #[allow(clippy::type_complexity)]
-    fn edges<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> Vec<(
-        usize,
-        usize,
-        Bound<'py, PyArray2<f64>>,
-        Bound<'py, PyArray1<f64>>,
-    )> {
-        self.found
-            .edges
-            .iter()
-            .map(|e| {
-                (
-                    e.from,
-                    e.to,
-                    points2(py, &e.xy),
-                    PyArray1::from_vec(py, e.radius.clone()),
-                )
-            })
-            .collect()
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "MedialAxis({} nodes, {} edges, certified={})",
-            self.found.nodes.len(),
-            self.found.edges.len(),
-            if self.found.certified {
-                "True"
-            } else {
-                "False"
-            }
-        )
-    }
-});
-
-result_class!(PyOffsets, "Offsets", Offsets, {
-    /// The axis was certified and every seam closed by Newton's method.
-    #[getter]
-    fn certified(&self) -> bool {
-        self.found.certified
-    }
-
-    /// The axis was complete and the seams joined into loops.
-    #[getter]
-    fn complete(&self) -> bool {
-        self.found.complete
-    }
-
-    /// Why the offsets are not certified, when they are not.
-    #[getter]
-    fn reason(&self) -> Option<String> {
-        self.found.reason.clone()
-    }
-
-    /// The distances, in the order asked, an `(m,)` array.
-    #[getter]
-    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_vec(py, self.found.offsets.iter().map(|o| o.distance).collect())
-    }
-
-    /// The loops at the `k`-th distance as closed polylines, `(n, 2)` arrays (arcs drawn with
-    /// `arc_points` chords; lines and the splines' vertices as they are).
-    #[pyo3(signature = (k, arc_points = 32))]
-    fn polylines<'py>(
-        &self,
-        py: Python<'py>,
-        k: usize,
-        arc_points: usize,
-    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-        let offset = self
-            .found
-            .offsets
-            .get(k)
-            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
-        Ok(offset
-            .loops
-            .iter()
-            .map(|l| points2(py, &l.polyline(arc_points)))
-            .collect())
-    }
-
-    /// The part of a multi-part input each loop at the `k`-th distance belongs to (all 0 for
-    /// one part), in the order of `polylines(k)`.
-    fn parts(&self, k: usize) -> PyResult<Vec<usize>> {
-        let offset = self
-            .found
-            .offsets
-            .get(k)
-            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
-        Ok(offset.loops.iter().map(|l| l.part.unwrap_or(0)).collect())
-    }
-
-    fn __len__(&self) -> usize {
-        self.found.offsets.len()
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "Offsets({} distances, certified={})",
-            self.found.offsets.len(),
-            if self.found.certified {
-                "True"
-            } else {
-                "False"
-            }
-        )
-    }
-});
-
 /// Unpickling: a result read back from its document.
 #[pyfunction]
 fn _result_from_json(
@@ -664,6 +478,9 @@ fn _result_from_json(
         "Offsets" => PyOffsets::new(make(variant, found).map_err(bad)?, curves)
             .into_pyobject(py)?
             .into_any(),
+        "VCarve" => PyVCarve::new(make(variant, found).map_err(bad)?, curves)
+            .into_pyobject(py)?
+            .into_any(),
         other => return Err(PyValueError::new_err(format!("no result class {other:?}"))),
     };
     Ok(object.unbind())
@@ -677,6 +494,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyBisector>()?;
     m.add_class::<PyMedialAxis>()?;
     m.add_class::<PyOffsets>()?;
+    m.add_class::<PyVCarve>()?;
     m.add_function(wrap_pyfunction!(_result_from_json, m)?)?;
     Ok(())
 }

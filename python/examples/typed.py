@@ -1,0 +1,38 @@
+"""A typed use of the package, checked by `mypy --strict` (python/tests/test_typing.py): the
+stubs must describe what the wrapper takes and gives, one curve or a list of them."""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+import curvekit
+
+
+def widest_grasp(outline: curvekit.Curve) -> float:
+    grasps: curvekit.Antipodal = curvekit.antipodal(outline)
+    distances: npt.NDArray[np.float64] = grasps.distances
+    return float(distances.max()) if len(grasps) else 0.0
+
+
+def carve_all(paths: list[str]) -> list[curvekit.VCarve]:
+    carved: list[curvekit.VCarve] = curvekit.vcarve(paths, angle=60.0, max_depth=2.0)
+    return carved
+
+
+def passes(region: curvekit.Curve) -> bytes:
+    found: curvekit.Offsets = curvekit.offset(region, step=0.25)
+    return found.dxf()
+
+
+def main() -> None:
+    outline = curvekit.BSpline([[0, 0], [2, -1], [4, 0], [4, 2], [2, 1.2], [0, 2]], periodic=True)
+    print(widest_grasp(outline), curvekit.__version__)
+    axes: list[curvekit.MedialAxis] = curvekit.medial([outline, curvekit.Circle(1.0)])
+    print([a.certified for a in axes])
+    bisectors: list[curvekit.Bisector] = curvekit.bisector([outline], method="f3")
+    print(len(bisectors), len(passes(curvekit.Circle(2.0))))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,321 @@
+//! Vectorised calls, in the manner of shapely 2: one command over a list of curves, computed in
+//! parallel on rayon's pool with the GIL released, the answers in the list's order. Between
+//! rounds of a few curves per thread the call looks for a signal, so Ctrl-C stops it there.
+
+use crate::curves::{PyCurve, PyPrepared};
+use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
+use crate::results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
+use crate::{bisector_options, offset_distances, CurvekitError, InputError};
+use curvekit::commands::{self, CommandError, CurveSummary};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use rayon::prelude::*;
+
+/// Curves per thread in one round: enough to keep every thread busy to the round's end (its
+/// slowest curve), few enough that a signal is seen soon after it comes.
+const ROUND_PER_THREAD: usize = 32;
+
+/// The failure of curve `k` of the list, as [`crate::to_py_err`] raises it, the message
+/// starting with the curve's place.
+fn failed_at(k: usize, e: CommandError) -> PyErr {
+    let message = format!("[{k}] {}", e.message());
+    match e {
+        CommandError::Input(_) => InputError::new_err(message),
+        CommandError::Usage(_) => PyValueError::new_err(message),
+        CommandError::Other(_) => CurvekitError::new_err(message),
+    }
+}
+
+/// `work` on every item, in parallel without the GIL, in rounds with a look for signals after
+/// each; the first failure (in the list's order) raised, naming its place.
+fn each<I: Sync, T: Send>(
+    py: Python<'_>,
+    items: &[I],
+    work: impl Fn(&I) -> Result<T, CommandError> + Sync,
+) -> PyResult<Vec<T>> {
+    let round = ROUND_PER_THREAD * rayon::current_num_threads().max(1);
+    let mut found = Vec::with_capacity(items.len());
+    for (r, block) in items.chunks(round).enumerate() {
+        let answers: Vec<Result<T, CommandError>> = py.detach(|| {
+            block
+                .par_iter()
+                .map(|item| {
+                    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(item)))
+                        .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
+                })
+                .collect()
+        });
+        for (i, answer) in answers.into_iter().enumerate() {
+            found.push(answer.map_err(|e| failed_at(r * round + i, e))?);
+        }
+        py.check_signals()?;
+    }
+    Ok(found)
+}
+
+/// A curve of a list as the one-curve commands take it: prepared (warm) or not.
+enum Item<'a> {
+    Prepared(&'a PyPrepared),
+    Curve(&'a PyCurve),
+}
+
+/// The items of a list of curves and prepared curves.
+fn items<'a>(curves: &'a [Bound<'_, PyAny>]) -> PyResult<Vec<Item<'a>>> {
+    curves
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            if let Ok(p) = c.cast::<PyPrepared>() {
+                Ok(Item::Prepared(p.get()))
+            } else if let Ok(c) = c.cast::<PyCurve>() {
+                Ok(Item::Curve(c.get()))
+            } else {
+                Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                    "[{k}]: expected a curvekit.Curve or PreparedCurve, got {}",
+                    c.get_type().name()?
+                )))
+            }
+        })
+        .collect()
+}
+
+/// The curves of a list (no prepared ones: the region commands and the two-curve ones).
+fn plain<'a>(curves: &'a [Bound<'_, PyCurve>]) -> Vec<&'a PyCurve> {
+    curves.iter().map(|c| c.get()).collect()
+}
+
+/// `antipodal` of each curve.
+#[pyfunction]
+#[pyo3(signature = (curves, *, tol = ::antipodal::DEFAULT_TOL))]
+fn antipodal_many(
+    py: Python<'_>,
+    curves: Vec<Bound<'_, PyAny>>,
+    tol: f64,
+) -> PyResult<Vec<PyAntipodal>> {
+    let opts = ::antipodal::Options::default().tolerance(tol);
+    let items = items(&curves)?;
+    let found = each(py, &items, |item| {
+        commands::validate_options(&opts)?;
+        Ok(match item {
+            Item::Prepared(p) => (
+                p.prepared().antipodal(&opts)?,
+                CurveSummary::of(p.prepared().curve()),
+            ),
+            Item::Curve(c) => (commands::antipodal(c.curve(), &opts)?, c.summary()),
+        })
+    })?;
+    Ok(found
+        .into_iter()
+        .map(|(f, s)| PyAntipodal::new(f, vec![s]))
+        .collect())
+}
+
+/// `inflections` of each curve.
+#[pyfunction]
+#[pyo3(signature = (curves, *, tol = ::antipodal::DEFAULT_TOL))]
+fn inflections_many(
+    py: Python<'_>,
+    curves: Vec<Bound<'_, PyAny>>,
+    tol: f64,
+) -> PyResult<Vec<PyInflections>> {
+    let opts = ::antipodal::Options::default().tolerance(tol);
+    let items = items(&curves)?;
+    let found = each(py, &items, |item| {
+        commands::validate_options(&opts)?;
+        Ok(match item {
+            Item::Prepared(p) => (
+                p.prepared().inflections(&opts)?,
+                CurveSummary::of(p.prepared().curve()),
+            ),
+            Item::Curve(c) => (commands::inflections(c.curve(), &opts)?, c.summary()),
+        })
+    })?;
+    Ok(found
+        .into_iter()
+        .map(|(f, s)| PyInflections::new(f, vec![s]))
+        .collect())
+}
+
+/// `tangents` of each pair `(curves1[k], curves2[k])`.
+#[pyfunction]
+#[pyo3(signature = (curves1, curves2, *, tol = ::antipodal::DEFAULT_TOL))]
+fn tangents_many(
+    py: Python<'_>,
+    curves1: Vec<Bound<'_, PyCurve>>,
+    curves2: Vec<Bound<'_, PyCurve>>,
+    tol: f64,
+) -> PyResult<Vec<PyTangents>> {
+    if curves1.len() != curves2.len() {
+        return Err(PyValueError::new_err(format!(
+            "tangents: {} curves against {}: the lists pair up, so their lengths must match",
+            curves1.len(),
+            curves2.len()
+        )));
+    }
+    let opts = ::antipodal::Options::default().tolerance(tol);
+    let pairs: Vec<(&PyCurve, &PyCurve)> =
+        plain(&curves1).into_iter().zip(plain(&curves2)).collect();
+    let found = each(py, &pairs, |(a, b)| {
+        commands::tangents(a.curve(), b.curve(), &opts)
+    })?;
+    Ok(found
+        .into_iter()
+        .zip(&pairs)
+        .map(|(f, (a, b))| PyTangents::new(f, vec![a.summary(), b.summary()]))
+        .collect())
+}
+
+/// `bisector` of each curve with itself, or of each pair `(curves1[k], curves2[k])`.
+#[pyfunction]
+#[pyo3(signature = (curves1, curves2 = None, *, method = "f3", trimmed = false,
+                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+fn bisector_many(
+    py: Python<'_>,
+    curves1: Vec<Bound<'_, PyCurve>>,
+    curves2: Option<Vec<Bound<'_, PyCurve>>>,
+    method: &str,
+    trimmed: bool,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<Vec<PyBisector>> {
+    let opts = bisector_options(method, trimmed, chord_tol, tol)?;
+    let first = plain(&curves1);
+    let second: Vec<Option<&PyCurve>> = match &curves2 {
+        Some(list) if list.len() != first.len() => {
+            return Err(PyValueError::new_err(format!(
+                "bisector: {} curves against {}: the lists pair up, so their lengths must match",
+                first.len(),
+                list.len()
+            )))
+        }
+        Some(list) => plain(list).into_iter().map(Some).collect(),
+        None => vec![None; first.len()],
+    };
+    let pairs: Vec<(&PyCurve, Option<&PyCurve>)> = first.into_iter().zip(second).collect();
+    let found = each(py, &pairs, |(a, b)| {
+        commands::bisector(a.curve(), b.map(PyCurve::curve), &opts)
+    })?;
+    Ok(found
+        .into_iter()
+        .zip(&pairs)
+        .map(|(f, (a, b))| {
+            let summaries = std::iter::once(*a)
+                .chain(*b)
+                .map(PyCurve::summary)
+                .collect();
+            PyBisector::new(f, summaries)
+        })
+        .collect())
+}
+
+/// `medial` of each region.
+#[pyfunction]
+#[pyo3(signature = (regions, *, chord_tol = zeroset::DEFAULT_CHORD_TOL, fit = false,
+                    exterior = false, tol = zeroset::DEFAULT_TOL))]
+fn medial_many(
+    py: Python<'_>,
+    regions: Vec<Bound<'_, PyCurve>>,
+    chord_tol: f64,
+    fit: bool,
+    exterior: bool,
+    tol: f64,
+) -> PyResult<Vec<PyMedialAxis>> {
+    let opts = ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit,
+        exterior,
+        size: None,
+    };
+    let found = each(py, &plain(&regions), |c| {
+        commands::validate_medial_options(&opts)?;
+        let region = c.region()?;
+        Ok((commands::medial(region, &opts)?, CurveSummary::of(region)))
+    })?;
+    Ok(found
+        .into_iter()
+        .map(|(f, s)| PyMedialAxis::new(f, vec![s]))
+        .collect())
+}
+
+/// `offset` of each region.
+#[pyfunction]
+#[pyo3(signature = (regions, *, distance = None, distances = None, step = None,
+                    outward = false, chord_tol = zeroset::DEFAULT_CHORD_TOL,
+                    tol = zeroset::DEFAULT_TOL))]
+// (One argument per keyword of the Python function.)
+#[allow(clippy::too_many_arguments)]
+fn offset_many(
+    py: Python<'_>,
+    regions: Vec<Bound<'_, PyCurve>>,
+    distance: Option<f64>,
+    distances: Option<Vec<f64>>,
+    step: Option<f64>,
+    outward: bool,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<Vec<PyOffsets>> {
+    let asked = offset_distances(distance, distances, step)?;
+    let medial_opts = ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit: false,
+        exterior: outward,
+        size: None,
+    };
+    let opts = ::offset::OffsetOptions {
+        chord_tol,
+        size: None,
+    };
+    let found = each(py, &plain(&regions), |c| {
+        commands::validate_distances(&asked)?;
+        let region = c.region()?;
+        Ok((
+            commands::offset(region, &asked, &opts, &medial_opts)?,
+            CurveSummary::of(region),
+        ))
+    })?;
+    Ok(found
+        .into_iter()
+        .map(|(f, s)| PyOffsets::new(f, vec![s]))
+        .collect())
+}
+
+/// `vcarve` of each region.
+#[pyfunction]
+#[pyo3(signature = (regions, *, angle, max_depth = None,
+                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+fn vcarve_many(
+    py: Python<'_>,
+    regions: Vec<Bound<'_, PyCurve>>,
+    angle: f64,
+    max_depth: Option<f64>,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<Vec<PyVCarve>> {
+    let (opts, medial_opts) = crate::vcarve_options(angle, max_depth, chord_tol, tol);
+    let found = each(py, &plain(&regions), |c| {
+        commands::validate_vcarve_options(&opts)?;
+        let region = c.region()?;
+        Ok((
+            commands::vcarve(region, &opts, &medial_opts)?,
+            CurveSummary::of(region),
+        ))
+    })?;
+    Ok(found
+        .into_iter()
+        .map(|(f, s)| PyVCarve::new(f, vec![s]))
+        .collect())
+}
+
+/// Registers the vectorised functions.
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(antipodal_many, m)?)?;
+    m.add_function(wrap_pyfunction!(inflections_many, m)?)?;
+    m.add_function(wrap_pyfunction!(tangents_many, m)?)?;
+    m.add_function(wrap_pyfunction!(bisector_many, m)?)?;
+    m.add_function(wrap_pyfunction!(medial_many, m)?)?;
+    m.add_function(wrap_pyfunction!(offset_many, m)?)?;
+    m.add_function(wrap_pyfunction!(vcarve_many, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,323 @@
+//! The results on regions (the medial axis, offsets, V-carving tool paths): numpy arrays of
+//! their fields, the tool's `--json` document, and the files CAD and CAM programs read (DXF,
+//! SVG paths), as the tool writes them.
+
+use crate::results::{points2, result_class, Kept, PickledCurve};
+use curvekit::commands::{json_document_of, CurveSummary};
+use curvekit::export::{dxf_file, svg_paths, ExportError};
+use medial::MedialAxis;
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use offset::{Offsets, VCarve};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyTuple};
+
+/// A result that could not be written, as Python's error.
+fn export_error(e: ExportError) -> PyErr {
+    crate::CurvekitError::new_err(e.to_string())
+}
+
+result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
+    /// Every junction and trimming decision followed from sign tests.
+    #[getter]
+    fn certified(&self) -> bool {
+        self.found.certified
+    }
+
+    /// No search limit was hit.
+    #[getter]
+    fn complete(&self) -> bool {
+        self.found.complete
+    }
+
+    /// Why the axis is not certified, when it is not.
+    #[getter]
+    fn reason(&self) -> Option<String> {
+        self.found.reason.clone()
+    }
+
+    /// The nodes' points, an `(n, 2)` array (row `i` is node `i`).
+    #[getter]
+    fn nodes<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        points2(
+            py,
+            &self.found.nodes.iter().map(|n| n.xy).collect::<Vec<_>>(),
+        )
+    }
+
+    /// The nodes' radii (of the largest inscribed disks there), an `(n,)` array.
+    #[getter]
+    fn node_radii<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.found.nodes.iter().map(|n| n.radius).collect())
+    }
+
+    /// The part of a multi-part input each node belongs to, an `(n,)` array (all 0 for one
+    /// part).
+    #[getter]
+    fn node_parts<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
+        PyArray1::from_vec(
+            py,
+            self.found
+                .nodes
+                .iter()
+                .map(|n| n.part.unwrap_or(0))
+                .collect(),
+        )
+    }
+
+    /// The part each edge belongs to, an `(m,)` array (all 0 for one part).
+    #[getter]
+    fn edge_parts<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
+        PyArray1::from_vec(
+            py,
+            self.found
+                .edges
+                .iter()
+                .map(|e| e.part.unwrap_or(0))
+                .collect(),
+        )
+    }
+
+    /// The nodes' kinds: `"junction"`, `"end"`, `"corner"`, `"joint"` or `"clip"`.
+    #[getter]
+    fn node_kinds(&self) -> PyResult<Vec<String>> {
+        self.found
+            .nodes
+            .iter()
+            .map(|n| match serde_json::to_value(n.kind) {
+                Ok(serde_json::Value::String(s)) => Ok(s),
+                _ => Err(PyValueError::new_err("a node kind without a name")),
+            })
+            .collect()
+    }
+
+    /// The edges, each `(from, to, xy, radius)`: node indices, the polyline as a `(k, 2)`
+    /// array and the radius at each vertex as a `(k,)` array.
+    #[getter]
+    #[allow(clippy::type_complexity)]
+    fn edges<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> Vec<(
+        usize,
+        usize,
+        Bound<'py, PyArray2<f64>>,
+        Bound<'py, PyArray1<f64>>,
+    )> {
+        self.found
+            .edges
+            .iter()
+            .map(|e| {
+                (
+                    e.from,
+                    e.to,
+                    points2(py, &e.xy),
+                    PyArray1::from_vec(py, e.radius.clone()),
+                )
+            })
+            .collect()
+    }
+
+    /// The axis as a DXF file's bytes, as `curvekit medial --dxf` writes it (R2010: edges as
+    /// splines when fitted, else polylines; nodes as points on a layer per kind).
+    fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
+        let units = self.units();
+        let bytes = dxf_file::medial_dxf(&self.found, units.as_deref()).map_err(export_error)?;
+        Ok(PyBytes::new(py, &bytes))
+    }
+
+    /// The axis as plain SVG paths in the input's coordinates, as `--svg-paths` writes it.
+    fn svg_paths(&self) -> PyResult<String> {
+        svg_paths::medial_svg(&self.found, self.units().as_deref()).map_err(export_error)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "MedialAxis({} nodes, {} edges, certified={})",
+            self.found.nodes.len(),
+            self.found.edges.len(),
+            if self.found.certified {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+});
+
+result_class!(PyOffsets, "Offsets", Offsets, {
+    /// The axis was certified and every seam closed by Newton's method.
+    #[getter]
+    fn certified(&self) -> bool {
+        self.found.certified
+    }
+
+    /// The axis was complete and the seams joined into loops.
+    #[getter]
+    fn complete(&self) -> bool {
+        self.found.complete
+    }
+
+    /// Why the offsets are not certified, when they are not.
+    #[getter]
+    fn reason(&self) -> Option<String> {
+        self.found.reason.clone()
+    }
+
+    /// The distances, in the order asked, an `(m,)` array.
+    #[getter]
+    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.found.offsets.iter().map(|o| o.distance).collect())
+    }
+
+    /// The loops at the `k`-th distance as closed polylines, `(n, 2)` arrays (arcs drawn with
+    /// `arc_points` chords; lines and the splines' vertices as they are).
+    #[pyo3(signature = (k, arc_points = 32))]
+    fn polylines<'py>(
+        &self,
+        py: Python<'py>,
+        k: usize,
+        arc_points: usize,
+    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+        let offset = self
+            .found
+            .offsets
+            .get(k)
+            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
+        Ok(offset
+            .loops
+            .iter()
+            .map(|l| points2(py, &l.polyline(arc_points)))
+            .collect())
+    }
+
+    /// The part of a multi-part input each loop at the `k`-th distance belongs to (all 0 for
+    /// one part), in the order of `polylines(k)`.
+    fn parts(&self, k: usize) -> PyResult<Vec<usize>> {
+        let offset = self
+            .found
+            .offsets
+            .get(k)
+            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
+        Ok(offset.loops.iter().map(|l| l.part.unwrap_or(0)).collect())
+    }
+
+    fn __len__(&self) -> usize {
+        self.found.offsets.len()
+    }
+
+    /// The offsets as a DXF file's bytes, as `curvekit offset --dxf` writes it (R2010: lines,
+    /// arcs and splines as computed, a layer per distance).
+    fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
+        let units = self.units();
+        let bytes = dxf_file::offsets_dxf(&self.found, units.as_deref()).map_err(export_error)?;
+        Ok(PyBytes::new(py, &bytes))
+    }
+
+    /// The offsets as plain SVG paths in the input's coordinates, as `--svg-paths` writes it.
+    fn svg_paths(&self) -> PyResult<String> {
+        svg_paths::offsets_svg(&self.found, self.units().as_deref()).map_err(export_error)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Offsets({} distances, certified={})",
+            self.found.offsets.len(),
+            if self.found.certified {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+});
+
+result_class!(PyVCarve, "VCarve", VCarve, {
+    /// The axis (and the flat pass's offset) certified.
+    #[getter]
+    fn certified(&self) -> bool {
+        self.found.certified
+    }
+
+    /// No search limit was hit, and the flat pass's loops closed.
+    #[getter]
+    fn complete(&self) -> bool {
+        self.found.complete
+    }
+
+    /// Why the paths are not certified, when they are not.
+    #[getter]
+    fn reason(&self) -> Option<String> {
+        self.found.reason.clone()
+    }
+
+    /// The bit's included angle (degrees).
+    #[getter]
+    fn angle(&self) -> f64 {
+        self.found.angle
+    }
+
+    /// The deepest cut asked for (`None`: as deep as the axis goes).
+    #[getter]
+    fn max_depth(&self) -> Option<f64> {
+        self.found.max_depth
+    }
+
+    /// The tool paths, each an `(n, 3)` array of points `(x, y, z)`, `z ≤ 0` the depth.
+    #[getter]
+    fn paths<'py>(&self, py: Python<'py>) -> Vec<Bound<'py, PyArray2<f64>>> {
+        self.found
+            .paths
+            .iter()
+            .map(|p| {
+                let n = p.xyz.len();
+                let flat: Vec<f64> = p.xyz.iter().flatten().copied().collect();
+                PyArray1::from_vec(py, flat)
+                    .reshape([n, 3])
+                    .unwrap_or_else(|_| PyArray2::zeros(py, [0, 3], false))
+            })
+            .collect()
+    }
+
+    /// The part of a multi-part input each path belongs to.
+    #[getter]
+    fn path_parts(&self) -> Vec<usize> {
+        self.found.paths.iter().map(|p| p.part).collect()
+    }
+
+    /// The flat passes at depth `−max_depth` as closed polylines, `(n, 2)` arrays (arcs drawn
+    /// with `arc_points` chords).
+    #[pyo3(signature = (arc_points = 32))]
+    fn flats<'py>(&self, py: Python<'py>, arc_points: usize) -> Vec<Bound<'py, PyArray2<f64>>> {
+        self.found
+            .flats
+            .iter()
+            .map(|l| points2(py, &l.polyline(arc_points)))
+            .collect()
+    }
+
+    /// The paths as a DXF file's bytes, as `curvekit vcarve --dxf` writes it (3D polylines,
+    /// the flat passes at their depth).
+    fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
+        let units = self.units();
+        let bytes = dxf_file::vcarve_dxf(&self.found, units.as_deref()).map_err(export_error)?;
+        Ok(PyBytes::new(py, &bytes))
+    }
+
+    fn __len__(&self) -> usize {
+        self.found.paths.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "VCarve({} paths, {} flats, certified={})",
+            self.found.paths.len(),
+            self.found.flats.len(),
+            if self.found.certified {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+});

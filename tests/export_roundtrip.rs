@@ -284,3 +284,51 @@ fn medial_axes_read_back_as_written() {
         }
     }
 }
+
+/// A drawing written back as the contract's document (`region`, `regions`) reads as the same
+/// region: every boundary, segment for segment, within 1e-12 of the size.
+#[test]
+fn drawings_read_back_from_their_documents() {
+    let mut read = 0;
+    for dir in ["corpus/glyphs", "corpus/icons", "corpus/dxf"] {
+        let root = std::path::PathBuf::from(fixture(dir));
+        let mut files: Vec<_> = walk(&root);
+        files.sort();
+        for path in files {
+            let Ok(region) = read_region(&path, None) else {
+                continue;
+            };
+            let doc = curvekit::io::shape_document(&region.shape).unwrap();
+            let back =
+                curvekit::io::parse_region("back.json", None, doc.to_string().as_bytes(), None)
+                    .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let size = commands::size_of(&region);
+            let (a, b) = (boundaries(&region), boundaries(&back));
+            for (x, y) in a.iter().zip(&b) {
+                assert_eq!(x.segments().len(), y.segments().len(), "{}", path.display());
+                let gap = farthest_from(x, y).max(farthest_from(y, x));
+                assert!(gap <= 1e-12 * size, "{}: {gap:e}", path.display());
+            }
+            assert_eq!(a.len(), b.len());
+            read += 1;
+        }
+    }
+    assert!(read >= 40, "only {read} drawings read as regions");
+}
+
+/// The files under `dir`, every level down.
+fn walk(dir: &std::path::Path) -> Vec<std::path::PathBuf> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            found.extend(walk(&path));
+        } else if matches!(
+            path.extension().and_then(|e| e.to_str()),
+            Some("svg" | "dxf")
+        ) {
+            found.push(path);
+        }
+    }
+    found
+}

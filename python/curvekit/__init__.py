@@ -20,6 +20,7 @@ prepared once (:func:`prepare`): runs on the prepared curve answer warm.
 
 from __future__ import annotations
 
+import importlib
 import json
 import math
 import os
@@ -66,18 +67,22 @@ __all__ = [
     "Offsets",
     "Polygon",
     "PreparedCurve",
+    "Profile",
+    "Region",
     "Tangents",
     "VCarve",
     "__version__",
     "antipodal",
     "bisector",
     "from_dict",
+    "from_shapely",
     "inflections",
     "medial",
     "offset",
     "prepare",
     "read",
     "tangents",
+    "to_shapely",
     "vcarve",
 ]
 
@@ -281,6 +286,73 @@ def Polygon(shell: Any, holes: Sequence[Any] = (), name: str = "polygon") -> Cur
         return from_dict(outer, name)
     inner = [_ring(h, f"holes[{k}]", name) for k, h in enumerate(holes)]
     return from_dict({"kind": "region", "outer": outer, "holes": inner}, name)
+
+
+def _document(x: Any, field: str) -> dict[str, Any]:
+    """A curve's document: a :class:`Curve`'s, or a dict as it is."""
+    if isinstance(x, Curve):
+        doc: dict[str, Any] = x.to_dict()
+        return doc
+    if isinstance(x, Mapping):
+        return dict(x)
+    raise TypeError(f"{field}: expected a curvekit.Curve or a curve document (dict), got {type(x).__name__}")
+
+
+def Profile(segments: Sequence[Any], closed: Optional[bool] = None, name: str = "profile") -> Curve:
+    """A profile: the curves ``segments`` (lines, arcs, Bézier curves, open B-splines, as
+    :class:`Curve` or documents) joined end to end; closed when the last ends where the first
+    starts, unless ``closed`` says."""
+    doc: dict[str, Any] = {
+        "kind": "profile",
+        "segments": [_document(s, f"segments[{k}]") for k, s in enumerate(segments)],
+    }
+    if closed is not None:
+        doc["closed"] = closed
+    return from_dict(doc, name)
+
+
+def Region(outer: Any, holes: Sequence[Any] = (), name: str = "region") -> Curve:
+    """The region inside the closed curve or profile ``outer`` and outside each of ``holes``
+    (curves or documents); ``.outer``, ``.holes`` and ``.parts`` give them back."""
+    return from_dict(
+        {
+            "kind": "region",
+            "outer": _document(outer, "outer"),
+            "holes": [_document(h, f"holes[{k}]") for k, h in enumerate(holes)],
+        },
+        name,
+    )
+
+
+def to_shapely(x: Any) -> Any:
+    """A curve (region, closed curve: a polygon; open curve: a line string) or an offset result
+    as a shapely geometry, its curves flattened within 1e-3 of the size. Needs shapely."""
+    # (Imported by name: shapely is optional and ships no type information.)
+    geometry = importlib.import_module("shapely.geometry")
+    return geometry.shape(x)
+
+
+def from_shapely(geometry: Any, name: str = "shapely") -> Curve:
+    """A shapely ``Polygon`` (a region of straight sides, with its holes), ``MultiPolygon``
+    (several parts) or ``LineString`` (an open profile) as a curve. Needs shapely."""
+    kind = geometry.geom_type
+    if kind == "Polygon":
+        return Polygon(
+            np.asarray(geometry.exterior.coords)[:-1],
+            [np.asarray(r.coords)[:-1] for r in geometry.interiors],
+            name=name,
+        )
+    if kind == "MultiPolygon":
+        parts = [from_shapely(g, f"{name} part {k}").to_dict() for k, g in enumerate(geometry.geoms)]
+        for k, part in enumerate(parts):
+            if part["kind"] != "region":
+                parts[k] = {"kind": "region", "outer": part, "holes": []}
+        return from_dict({"kind": "regions", "parts": parts}, name)
+    if kind == "LineString":
+        pts = _points(np.asarray(geometry.coords), "coords", name)
+        sides = [{"kind": "line", "from": a, "to": b} for a, b in zip(pts, pts[1:]) if a != b]
+        return from_dict({"kind": "profile", "segments": sides}, name)
+    raise InputError(f"{name}: geometry: a {kind} is no curve (Polygon, MultiPolygon or LineString)")
 
 
 CurveLike = Union[Curve, Mapping[str, Any], str, "os.PathLike[str]"]

@@ -27,6 +27,22 @@ class Curve:
     def domain(self) -> tuple[float, float]: ...
     def evaluate(self, u: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
         """Points at the parameters `u`, an (n, 2) array."""
+    def to_json(self) -> str:
+        """The curve's JSON document (a drawing: what it was read as)."""
+    def to_dict(self) -> dict[str, Any]:
+        """The curve's JSON document."""
+    @property
+    def outer(self) -> Curve:
+        """The outer boundary of the region the curve is or encloses."""
+    @property
+    def holes(self) -> list[Curve]:
+        """The holes of the region the curve is."""
+    @property
+    def parts(self) -> list[Curve]:
+        """The disjoint regions of the curve."""
+    @property
+    def __geo_interface__(self) -> dict[str, Any]:
+        """GeoJSON geometry, flattened within 1e-3 of the size."""
 
 class PreparedCurve:
     """A curve prepared once for many antipodal and inflection runs (they answer warm)."""
@@ -119,6 +135,13 @@ class Offsets(_Result):
         """The loops at the k-th distance as closed (n, 2) polylines."""
     def parts(self, k: int) -> list[int]:
         """The part of a multi-part input each loop at the k-th distance belongs to."""
+    def regions(self, k: int) -> list[Curve]:
+        """The loops at the k-th distance grouped into regions (outer loops with their holes)."""
+    def geometry(self, k: int) -> dict[str, Any]:
+        """GeoJSON MultiPolygon of the region inside the loops at the k-th distance."""
+    @property
+    def __geo_interface__(self) -> dict[str, Any]:
+        """GeoJSON: one distance's MultiPolygon, or a GeometryCollection of them."""
     def dxf(self) -> bytes:
         """The offsets as a DXF file's bytes (lines, arcs, splines; a layer per distance)."""
     def svg_paths(self) -> str:

@@ -11,6 +11,10 @@ use pyo3::types::PyTuple;
 use std::path::Path;
 use std::sync::{Arc, OnceLock};
 
+/// How far (a share of the size) the GeoJSON of a curve may stray from it: the default chord
+/// tolerance of every result's polylines.
+const GEO_TOLERANCE: f64 = 1e-3;
+
 /// Where a curve came from: what it is read again from when unpickled.
 #[derive(Clone)]
 struct Source {
@@ -113,6 +117,38 @@ impl PyCurve {
         CurveSummary::of(&self.curve)
     }
 
+    /// A curve from a JSON document made here (a part, a boundary, an offset's region), named
+    /// `name` in messages.
+    pub(crate) fn from_document(name: String, text: String) -> Result<Self, CommandError> {
+        Self::from_source(Source {
+            name,
+            bytes: text.into_bytes(),
+            format: None,
+            pick: None,
+        })
+    }
+
+    /// The curve's document: a curve file's own text, or what a drawing was read as.
+    fn document(&self) -> Result<String, CommandError> {
+        if self.source.format.is_none() {
+            return self.source.text();
+        }
+        io::shape_document(&self.curve.shape)
+            .map(|d| d.to_string())
+            .ok_or_else(|| CommandError::Other("a drawing read as no profile or region".into()))
+    }
+
+    /// The regions the curve is or encloses (a closed curve's, one).
+    fn parts_read(&self) -> Result<Vec<&curve::Region>, CommandError> {
+        Ok(self.region()?.parts())
+    }
+
+    /// The curve made of `doc`, named after this one with `what`.
+    fn made(&self, what: &str, doc: &serde_json::Value) -> PyResult<PyCurve> {
+        Self::from_document(format!("{} {what}", self.curve.file), doc.to_string())
+            .map_err(crate::to_py_err)
+    }
+
     /// The curve shared (for a prepared curve to keep).
     pub(crate) fn shared(&self) -> Arc<Curve> {
         self.curve.clone()
@@ -197,6 +233,90 @@ impl PyCurve {
             return Ok(PyArray2::zeros(py, [0, 2], false));
         }
         Ok(PyArray2::from_vec2(py, &points)?)
+    }
+
+    /// The curve's JSON document, as one text: a curve file's own, or what a drawing was read
+    /// as (its profiles and regions as the contract writes them).
+    fn to_json(&self) -> PyResult<String> {
+        self.document().map_err(crate::to_py_err)
+    }
+
+    /// The curve's JSON document, as a dict.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        py.import("json")?.call_method1("loads", (self.to_json()?,))
+    }
+
+    /// The outer boundary of the region the curve is (or encloses), as a closed profile; a
+    /// multi-part input has several: see `parts`.
+    #[getter]
+    fn outer(&self) -> PyResult<PyCurve> {
+        let parts = self.parts_read().map_err(crate::to_py_err)?;
+        match parts.as_slice() {
+            [one] => self.made("outer", &io::profile_document(one.outer())),
+            _ => Err(PyValueError::new_err(format!(
+                "outer: {} has {} parts, each with its outer boundary: take .parts",
+                self.curve.file,
+                parts.len()
+            ))),
+        }
+    }
+
+    /// The holes of the region the curve is, as closed profiles (none for a closed curve).
+    #[getter]
+    fn holes(&self) -> PyResult<Vec<PyCurve>> {
+        let parts = self.parts_read().map_err(crate::to_py_err)?;
+        match parts.as_slice() {
+            [one] => one
+                .holes()
+                .iter()
+                .enumerate()
+                .map(|(k, h)| self.made(&format!("hole {k}"), &io::profile_document(h)))
+                .collect(),
+            _ => Err(PyValueError::new_err(format!(
+                "holes: {} has {} parts, each with its holes: take .parts",
+                self.curve.file,
+                parts.len()
+            ))),
+        }
+    }
+
+    /// The disjoint regions of the curve, each a region (one for a region or a closed curve).
+    #[getter]
+    fn parts(&self) -> PyResult<Vec<PyCurve>> {
+        let parts = self.parts_read().map_err(crate::to_py_err)?;
+        parts
+            .iter()
+            .enumerate()
+            .map(|(k, r)| self.made(&format!("part {k}"), &io::region_document(r)))
+            .collect()
+    }
+
+    /// GeoJSON geometry (as shapely's `shape()` takes it): a region or closed curve as a
+    /// `Polygon` (`MultiPolygon` for several parts), an open curve as a `LineString`, its
+    /// curves flattened within 1e-3 of its size (every vertex on the curve).
+    #[getter]
+    fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let geometry = if self.curve.is_closed() {
+            let parts = self.parts_read().map_err(crate::to_py_err)?;
+            let size = curve::box_size(
+                parts
+                    .iter()
+                    .map(|r| r.bounding_box())
+                    .reduce(curve::box_union)
+                    .unwrap_or([0.0; 4]),
+            );
+            io::regions_geometry(&parts, GEO_TOLERANCE * size)
+        } else {
+            let profile = match &self.curve.shape {
+                Shape::Profile(p) => (**p).clone(),
+                _ => io::curve_profile(&self.curve)
+                    .ok_or_else(|| PyValueError::new_err("no profile to draw"))?
+                    .map_err(|e| crate::to_py_err(e.into()))?,
+            };
+            io::line_geometry(&profile, GEO_TOLERANCE * profile.size())
+        };
+        py.import("json")?
+            .call_method1("loads", (geometry.to_string(),))
     }
 
     fn __repr__(&self) -> String {

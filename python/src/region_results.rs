@@ -206,6 +206,59 @@ result_class!(PyOffsets, "Offsets", Offsets, {
         self.found.offsets.len()
     }
 
+    /// The loops at the `k`-th distance grouped into the regions they bound, each a region
+    /// (`kind` `"region"`: an outer loop and the holes inside it) that the commands take again.
+    fn regions(&self, k: usize) -> PyResult<Vec<crate::curves::PyCurve>> {
+        let (offset, regions) = self.regions_at(k)?;
+        regions
+            .iter()
+            .enumerate()
+            .map(|(j, r)| {
+                crate::curves::PyCurve::from_document(
+                    format!("offset {} region {j}", offset.distance),
+                    curvekit::io::region_document(r).to_string(),
+                )
+                .map_err(crate::to_py_err)
+            })
+            .collect()
+    }
+
+    /// GeoJSON geometry of the region inside the loops at the `k`-th distance (a
+    /// `MultiPolygon`, empty where the region vanished), flattened within the chord tolerance.
+    fn geometry<'py>(&self, py: Python<'py>, k: usize) -> PyResult<Bound<'py, PyAny>> {
+        let (_, regions) = self.regions_at(k)?;
+        let refs: Vec<&curve::Region> = regions.iter().collect();
+        let geometry = match refs.as_slice() {
+            [] => serde_json::json!({"type": "MultiPolygon", "coordinates": []}),
+            _ => {
+                let mut g = curvekit::io::regions_geometry(&refs, flatness(&refs));
+                g["type"] = "MultiPolygon".into();
+                if refs.len() == 1 {
+                    g["coordinates"] = serde_json::json!([g["coordinates"].clone()]);
+                }
+                g
+            }
+        };
+        py.import("json")?
+            .call_method1("loads", (geometry.to_string(),))
+    }
+
+    /// GeoJSON geometry (as shapely's `shape()` takes it): the one distance's `MultiPolygon`,
+    /// or a `GeometryCollection` of one for each distance.
+    #[getter]
+    fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        if self.found.offsets.len() == 1 {
+            return self.geometry(py, 0);
+        }
+        let all = pyo3::types::PyDict::new(py);
+        all.set_item("type", "GeometryCollection")?;
+        let members = (0..self.found.offsets.len())
+            .map(|k| self.geometry(py, k))
+            .collect::<PyResult<Vec<_>>>()?;
+        all.set_item("geometries", members)?;
+        Ok(all.into_any())
+    }
+
     /// The offsets as a DXF file's bytes, as `curvekit offset --dxf` writes it (R2010: lines,
     /// arcs and splines as computed, a layer per distance).
     fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
@@ -321,3 +374,36 @@ result_class!(PyVCarve, "VCarve", VCarve, {
         )
     }
 });
+
+impl PyOffsets {
+    /// The `k`-th offset and the regions its loops bound (each outer loop with the holes
+    /// inside it).
+    fn regions_at(&self, k: usize) -> PyResult<(&offset::Offset, Vec<curve::Region>)> {
+        let offset = self
+            .found
+            .offsets
+            .get(k)
+            .ok_or_else(|| pyo3::exceptions::PyIndexError::new_err(format!("no offset {k}")))?;
+        let profiles = offset
+            .loops
+            .iter()
+            .map(|l| l.profile())
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| crate::CurvekitError::new_err(format!("an offset loop: {e}")))?;
+        let regions = curve::Region::nested(profiles)
+            .map_err(|e| crate::CurvekitError::new_err(format!("the offset loops: {e}")))?;
+        Ok((offset, regions))
+    }
+}
+
+/// The flattening tolerance of regions' GeoJSON: the chord tolerance (1e-3) of their size.
+fn flatness(regions: &[&curve::Region]) -> f64 {
+    let size = curve::box_size(
+        regions
+            .iter()
+            .map(|r| r.bounding_box())
+            .reduce(curve::box_union)
+            .unwrap_or([0.0; 4]),
+    );
+    1e-3 * size
+}

@@ -11,6 +11,7 @@ use serde_json::{Map, Value};
 use std::path::Path;
 use thiserror::Error;
 
+mod document;
 mod drawing;
 mod duplicates;
 mod dxf;
@@ -19,6 +20,10 @@ mod regions;
 mod spline;
 mod svg;
 
+pub use document::{
+    line_geometry, profile_document, region_document, regions_geometry, segment_document,
+    shape_document,
+};
 pub use drawing::{Chain, DrawingRead, Skipped, MAX_CHAINS};
 pub use profile::{MAX_HOLES, MAX_PARTS, MAX_SEGMENTS};
 

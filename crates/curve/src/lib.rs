@@ -30,6 +30,7 @@ mod error;
 pub mod exact;
 mod extent;
 mod fill;
+mod flatten;
 mod frame;
 mod geom;
 mod nearest;

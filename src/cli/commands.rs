@@ -7,7 +7,7 @@ use curvekit::commands::{
     self, json_document, AntipodalFound, BisectorFound, InflectionsFound, Prepared, TangentsFound,
 };
 use curvekit::io::{Curve, Shape};
-use curvekit::svg::Figure;
+use curvekit::svg::{Figure, Mark, DOT};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -136,11 +136,22 @@ pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> Str
     };
     inflections.iter().for_each(|i| fig.dot(i.p));
     corners.iter().for_each(|c| fig.corner(c.p));
-    let mut title = format!("{}: {} inflections", curve.file, inflections.len());
+    let mut title = format!("{} — inflections: {}", curve.file, inflections.len());
     if let Shape::Profile(_) = curve.shape {
         title.push_str(&format!(", {} corners", corners.len()));
     }
+    if !inflections.is_empty() {
+        fig.legend(Mark::Dot(DOT.into()), "inflection");
+    }
+    if !corners.is_empty() {
+        fig.legend(Mark::Square, "corner");
+    }
+    let (certified, reason) = match found {
+        InflectionsFound::Curve(f) => (f.certified, f.reason.as_deref()),
+        InflectionsFound::Profile(f) => (f.certified, f.reason.as_deref()),
+    };
     fig.title(title);
+    fig.status(certified, reason);
     fig.render()
 }
 
@@ -149,7 +160,7 @@ pub(super) fn antipodal_figure(curve: &Curve, found: &AntipodalFound) -> String 
     match found {
         AntipodalFound::Curve(f) => {
             let title = format!(
-                "{}: {} antipodal pairs, {} inflections",
+                "{} — antipodal: {} pairs, {} inflections",
                 curve.file,
                 f.pairs.len(),
                 f.inflections.len()
@@ -158,7 +169,7 @@ pub(super) fn antipodal_figure(curve: &Curve, found: &AntipodalFound) -> String 
         }
         AntipodalFound::Profile(f) => {
             let title = format!(
-                "{}: {} antipodal pairs, {} corners",
+                "{} — antipodal: {} pairs, {} corners",
                 curve.file,
                 f.pairs.len(),
                 f.corners.len()
@@ -187,7 +198,23 @@ pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String 
     for (k, (p, q)) in lines.iter().enumerate() {
         fig.segment(*p, *q, Some((k + 1).to_string()));
     }
-    fig.title(format!("{} common tangent lines", lines.len()));
+    let names: Vec<&str> = both.iter().map(|c| c.file.as_str()).collect();
+    fig.title(format!(
+        "{} — tangents: {} common tangent lines",
+        names.join(" and "),
+        lines.len()
+    ));
+    if !lines.is_empty() {
+        fig.legend(
+            Mark::Dashed,
+            "common tangent, numbered, between its contacts",
+        );
+    }
+    let (certified, reason) = match found {
+        TangentsFound::Curve(f) => (f.certified, f.reason.as_deref()),
+        TangentsFound::Profile(f) => (f.certified, f.reason.as_deref()),
+    };
+    fig.status(certified, reason);
     fig.render()
 }
 
@@ -195,11 +222,11 @@ pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String 
 pub(super) fn bisector_figure(curves: &[&Curve], found: &BisectorFound) -> Result<String, Failure> {
     Ok(match found {
         BisectorFound::Curve(f) => {
-            let title = format!("{} bisector branches", f.branches.len());
+            let title = bisector_title(curves, f.branches.len(), f.complete);
             report::bisector_figure(curves, f, title)
         }
         BisectorFound::Profile(f) => {
-            let title = format!("{} bisector branches", f.branches.len());
+            let title = bisector_title(curves, f.branches.len(), f.complete);
             let profiles = curves
                 .iter()
                 .map(|c| commands::as_profile(c, "bisector"))
@@ -207,4 +234,34 @@ pub(super) fn bisector_figure(curves: &[&Curve], found: &BisectorFound) -> Resul
             report::profile_bisector_figure(curves, &profiles, f, title)
         }
     })
+}
+
+/// A bisector figure's title: the files, the branches, and whether the search was complete
+/// (a bisector has no certificate to state).
+fn bisector_title(curves: &[&Curve], branches: usize, complete: bool) -> String {
+    let names: Vec<&str> = curves.iter().map(|c| c.file.as_str()).collect();
+    let what = if curves.len() == 1 {
+        "self-bisector"
+    } else {
+        "bisector"
+    };
+    format!(
+        "{} — {what}: {}{}",
+        names.join(" and "),
+        branch_count(branches),
+        if complete {
+            ""
+        } else {
+            " (incomplete: a search limit was hit)"
+        }
+    )
+}
+
+/// `n branches`, or `1 branch`.
+pub(super) fn branch_count(n: usize) -> String {
+    if n == 1 {
+        "1 branch".into()
+    } else {
+        format!("{n} branches")
+    }
 }

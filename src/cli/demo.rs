@@ -7,7 +7,7 @@ use super::{demo_medial, demo_profiles, print_out, timing, write_file, Common, F
 use antipodal::Inflections;
 use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, Curve};
-use curvekit::svg::Figure;
+use curvekit::svg::{Figure, Mark, DOT};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -179,9 +179,9 @@ fn shape_row(
         .is_some()
         .then(|| bisector_within_budget(std::slice::from_ref(&curve), common.tol));
     let title = format!(
-        "{name}: {} inflections, {} antipodal pairs",
-        cell(&inflections, |i| i.inflections.len().to_string()),
+        "demo {name} — antipodal: {} pairs, {} inflections",
         cell(&antipodal, |a| a.pairs.len().to_string()),
+        cell(&inflections, |i| i.inflections.len().to_string()),
     );
     let svg = out.join(format!("{name}.svg"));
     let figure = match &antipodal {
@@ -192,6 +192,8 @@ fn shape_row(
             draw_curve(&mut fig, &curve);
             if let Some(Ok(found)) = &inflections {
                 found.inflections.iter().for_each(|i| fig.dot(i.p));
+                fig.legend(Mark::Dot(DOT.into()), "inflection");
+                fig.status(found.certified, found.reason.as_deref());
             }
             fig.title(title);
             fig.render()
@@ -199,7 +201,7 @@ fn shape_row(
     };
     write_file(&svg, &figure)?;
     if let Some(Ok(b)) = &self_bisector {
-        let title = format!("{name}: self-bisector, {} branches", branch_count(b));
+        let title = format!("demo {name} — self-bisector: {}", branches_of(b));
         write_file(
             &out.join(format!("{name}_self_bisector.svg")),
             bisector_figure(&[&curve], b, title),
@@ -233,12 +235,12 @@ fn bisector_row(
         Ok(b) => bisector_figure(
             &refs,
             b,
-            format!("{name}: {} bisector branches", branch_count(b)),
+            format!("demo {name} — bisector: {}", branches_of(b)),
         ),
         Err(e) => {
             let mut fig = Figure::new();
             curves.iter().for_each(|c| draw_curve(&mut fig, c));
-            fig.title(format!("{name}: {e}"));
+            fig.title(format!("demo {name} — bisector: not computed: {e}"));
             fig.render()
         }
     };
@@ -281,6 +283,16 @@ fn bisector_within_budget(curves: &[Curve], tol: f64) -> Result<Bisector, String
 }
 
 /// A branch count, marked when a search limit was hit.
+/// `n branches` of a bisector (`1 branch`), and whether incomplete.
+fn branches_of(b: &Bisector) -> String {
+    let n = super::commands::branch_count(b.branches.len());
+    if b.complete {
+        n
+    } else {
+        format!("{n} (incomplete)")
+    }
+}
+
 fn branch_count(b: &Bisector) -> String {
     if b.complete {
         b.branches.len().to_string()

@@ -86,7 +86,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<ProfileRow>, Failu
             let svg = out.join(format!("{name}.svg"));
             if let Ok(r) = &result {
                 let title = format!(
-                    "{name}: {} antipodal pairs, {} families, {} corners",
+                    "demo {name} — antipodal: {} pairs, {} families, {} corners",
                     r.pairs.len(),
                     r.families.len(),
                     r.corners.len()

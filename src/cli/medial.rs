@@ -6,7 +6,7 @@ use curvekit::commands;
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
 use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
-use curvekit::svg::{scale_color, Figure};
+use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -93,19 +93,37 @@ pub(super) fn run(
     })
 }
 
-/// The figure of a region's medial axis: the region, the axis, the widest maximal disks.
+/// The figure of a region's medial axis: the region, the axis coloured by radius (with its
+/// colour bar), the nodes by kind, the widest maximal disks; the header names the file and says
+/// whether the axis is certified.
 pub(super) fn axis_figure(region: &Curve, axis: &MedialAxis) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, region);
     draw_axis(&mut fig, axis);
     let widest = widest_radius(axis);
     fig.title(format!(
-        "{} nodes, {} edges; radius 0 (blue) to {widest:.3} (yellow)",
+        "{} — medial axis: {} nodes, {} edges",
+        region.file,
         axis.nodes.len(),
         axis.edges.len()
     ));
+    fig.status(axis.certified, axis.reason.as_deref());
+    fig.color_bar("radius", 0.0, widest, region.units());
     fig.render()
 }
+
+/// How each kind of node is marked, and its name in the legend.
+const NODE_MARKS: [(NodeKind, &str, &str); 5] = [
+    (
+        NodeKind::Junction,
+        "#d62020",
+        "junction (three or more edges)",
+    ),
+    (NodeKind::End, "#2a8c4a", "end (a centre of curvature)"),
+    (NodeKind::Corner, "#1f5fbf", "corner (a convex corner)"),
+    (NodeKind::Joint, "#8c2a7a", "joint (a cycle's one node)"),
+    (NodeKind::Clip, "#777777", "clip (the exterior axis's box)"),
+];
 
 /// Shades of the radius scale: the axis is drawn in runs of one shade.
 const SHADES: usize = 16;
@@ -151,8 +169,25 @@ fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
             fig.colored(run, scale_color((prev as f64 + 0.5) / SHADES as f64));
         }
     }
-    let mut widest: Vec<_> = axis.nodes.iter().collect();
+    if !axis.edges.is_empty() {
+        fig.legend(
+            Mark::Line(scale_color(0.6), 1.4),
+            "medial axis, coloured by radius",
+        );
+    }
+    fig.legend(Mark::Line(BOUNDARY.into(), 1.6), "boundary");
+    // (Nodes of radius 0, convex corners, have no disk to draw.)
+    let mut widest: Vec<_> = axis.nodes.iter().filter(|n| n.radius > 0.0).collect();
     widest.sort_by(|a, b| b.radius.total_cmp(&a.radius));
+    if !widest.is_empty() {
+        fig.legend(
+            Mark::Ring("#999999".into()),
+            match widest.len().min(DISKS_DRAWN) {
+                1 => "the widest maximal disk".to_string(),
+                k => format!("the {k} widest maximal disks"),
+            },
+        );
+    }
     for n in widest.iter().take(DISKS_DRAWN) {
         let circle = (0..=64)
             .map(|k| {
@@ -162,7 +197,14 @@ fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
             .collect();
         fig.thin(circle, "#999999");
     }
-    for n in &axis.nodes {
-        fig.dot(n.xy);
+    for (kind, color, name) in NODE_MARKS {
+        let nodes: Vec<_> = axis.nodes.iter().filter(|n| n.kind == kind).collect();
+        if nodes.is_empty() {
+            continue;
+        }
+        for n in &nodes {
+            fig.dot_colored(n.xy, color);
+        }
+        fig.legend(Mark::Dot(color.into()), format!("{name}: {}", nodes.len()));
     }
 }

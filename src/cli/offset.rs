@@ -8,7 +8,7 @@ use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
-use curvekit::svg::{scale_color, Figure};
+use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -64,8 +64,8 @@ pub(super) fn run(
 }
 
 /// The figure of a region's offsets: the region, and each offset's loops coloured by its
-/// distance (the scale of the medial axis's figure, from 0 to the largest distance); the
-/// title gives the distances and whether the offsets are certified.
+/// distance (the scale of the medial axis's figure, from 0 to the largest distance, with its
+/// colour bar); the header names the file and says whether the offsets are certified.
 pub(super) fn figure(region: &Curve, found: &Offsets) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, region);
@@ -80,33 +80,22 @@ pub(super) fn figure(region: &Curve, found: &Offsets) -> String {
             fig.colored(l.polyline(ARC_POINTS), color.clone());
         }
     }
-    let least = found
-        .offsets
-        .iter()
-        .map(|o| o.distance)
-        .fold(f64::INFINITY, f64::min);
-    let range = match found.offsets.len() {
-        0 => String::new(),
-        1 => format!(" at {}", short(least)),
-        _ => format!(" at {} to {}", short(least), short(largest)),
-    };
     let loops: usize = found.offsets.iter().map(|o| o.loops.len()).sum();
-    let trust = if found.certified {
-        "certified"
-    } else {
-        "not certified"
-    };
     fig.title(format!(
-        "{}: {} offsets{range}, {loops} loops, {trust}",
+        "{} — offset: {} distances, {loops} loops",
         region.file,
         found.offsets.len()
     ));
+    fig.status(found.certified, found.reason.as_deref());
+    fig.color_bar("distance", 0.0, largest, region.units());
+    fig.legend(Mark::Line(BOUNDARY.into(), 1.6), "boundary");
+    if loops > 0 {
+        fig.legend(
+            Mark::Line(scale_color(0.6), 1.4),
+            "offset loops, coloured by distance",
+        );
+    }
     fig.render()
-}
-
-/// A distance for a title: to four significant digits, in the shortest form.
-fn short(d: f64) -> String {
-    format!("{}", format!("{d:.3e}").parse::<f64>().unwrap_or(d))
 }
 
 /// The readable report: per distance, its loops and their pieces.

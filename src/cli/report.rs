@@ -8,9 +8,13 @@ use antipodal::{
 use curvekit::curve::ParamCurve;
 use curvekit::curve::Profile;
 use curvekit::io::{Curve, Shape};
-use curvekit::svg::{side_by_side, Figure};
+use curvekit::svg::{side_by_side, Figure, Mark, DOT};
 use std::fmt::Write as _;
 use zeroset::{Bisector, Branch, ProfileBisector, ProfileBranch};
+
+/// How far a region's drawn boundary strays from it, as a share of its size (a tenth of a
+/// pixel at the figures' 640 pixels).
+const REGION_FLATNESS: f64 = 1e-4;
 
 /// The curve as a dense polyline in a figure.
 pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
@@ -19,17 +23,14 @@ pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
         Shape::Analytic(_) | Shape::Segment(_) => 1200,
         Shape::Profile(p) => (200 * p.segments().len()).clamp(600, 20_000),
         Shape::Region(_) | Shape::Regions(_) => {
+            // (Within 1e-4 of the size, in the neutral colour: a region is the ground its
+            // results are drawn on.)
             let parts = curve.parts();
             for b in parts
                 .iter()
                 .flat_map(|r| std::iter::once(r.outer()).chain(r.holes()))
             {
-                let n = (200 * b.segments().len()).clamp(600, 20_000);
-                let (lo, hi) = b.domain();
-                let pts = (0..=n)
-                    .map(|i| b.jet_to(lo + (hi - lo) * i as f64 / n as f64, 0).p.arr())
-                    .collect();
-                fig.curve(pts, true);
+                fig.boundary(b.flattened(REGION_FLATNESS * b.size()), true);
             }
             return;
         }
@@ -454,21 +455,64 @@ fn bisector_lines<'a>(
     s
 }
 
-/// The antipodal figure: the curve, its inflections, and each pair as a numbered segment
-/// (Jia's Figures 1 and 24).
+/// The colour of a family of antipodal pairs (its two end pairs), set apart from the isolated
+/// pairs' dashed grey.
+const FAMILY: &str = "#2a8c4a";
+
+/// The legend of an antipodal figure: what each mark is, for those drawn.
+fn antipodal_legend(
+    fig: &mut Figure,
+    pairs: usize,
+    families: usize,
+    inflections: usize,
+    corners: usize,
+) {
+    if pairs > 0 {
+        fig.legend(Mark::Dashed, format!("antipodal pair, numbered: {pairs}"));
+    }
+    if families > 0 {
+        fig.legend(
+            Mark::Line(FAMILY.into(), 1.4),
+            format!("family of pairs (its two end pairs): {families}"),
+        );
+    }
+    if inflections > 0 {
+        fig.legend(Mark::Dot(DOT.into()), format!("inflection: {inflections}"));
+    }
+    if corners > 0 {
+        fig.legend(Mark::Square, format!("corner: {corners}"));
+    }
+}
+
+/// The antipodal figure: the curve, its inflections, each pair as a numbered segment (Jia's
+/// Figures 1 and 24) and each family by its two end pairs; the header says whether the answer
+/// is certified.
 pub(crate) fn antipodal_figure(curve: &Curve, found: &Antipodal, title: String) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, curve);
     for (k, pair) in found.pairs.iter().enumerate() {
         fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
     }
+    for f in &found.families {
+        for k in 0..2 {
+            let (p, q) = (curve.point_at(f.s[k]), curve.point_at(f.t[k]));
+            fig.colored(vec![p, q], FAMILY.into());
+        }
+    }
     found.inflections.iter().for_each(|i| fig.dot(i.p));
+    antipodal_legend(
+        &mut fig,
+        found.pairs.len(),
+        found.families.len(),
+        found.inflections.len(),
+        0,
+    );
     fig.title(title);
+    fig.status(found.certified, found.reason.as_deref());
     fig.render()
 }
 
-/// The antipodal figure of a profile: as for a curve, with the corners marked and each
-/// family's end pairs drawn.
+/// The antipodal figure of a profile: as for a curve, with the corners marked.
 pub(crate) fn profile_antipodal_figure(
     curve: &Curve,
     found: &ProfileAntipodal,
@@ -480,12 +524,20 @@ pub(crate) fn profile_antipodal_figure(
         fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
     }
     for f in &found.families {
-        fig.segment(f.p[0], f.q[0], None);
-        fig.segment(f.p[1], f.q[1], None);
+        fig.colored(vec![f.p[0], f.q[0]], FAMILY.into());
+        fig.colored(vec![f.p[1], f.q[1]], FAMILY.into());
     }
     found.inflections.iter().for_each(|i| fig.dot(i.p));
     found.corners.iter().for_each(|c| fig.corner(c.p));
+    antipodal_legend(
+        &mut fig,
+        found.pairs.len(),
+        found.families.len(),
+        found.inflections.len(),
+        found.corners.len(),
+    );
     fig.title(title);
+    fig.status(found.certified, found.reason.as_deref());
     fig.render()
 }
 
@@ -579,14 +631,39 @@ fn plane_and_parameters(
         let pad = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
         plane.frame([lo[0] - pad, lo[1] - pad], [hi[0] + pad, hi[1] + pad]);
     }
+    // (A few foot-point lines, spread over the branches, from points inside the frame: more
+    // would hide the bisector.)
+    let inside = |p: &[f64; 2]| {
+        let pad = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        (lo[0] - pad..=hi[0] + pad).contains(&p[0]) && (lo[1] - pad..=hi[1] + pad).contains(&p[1])
+    };
+    let framed: usize = r
+        .branches
+        .iter()
+        .map(|b| b.xy.iter().filter(|p| inside(p)).count())
+        .sum();
+    let every = (framed / FOOT_LINES).max(1);
+    let mut seen = 0;
     for b in &r.branches {
         plane.thin(b.xy.clone(), "#d62020");
-        let step = (b.xy.len() / 6).max(1);
-        for (tr, xy) in b.tr.iter().zip(&b.xy).step_by(step) {
-            plane.thin(vec![foot(0, tr[0]), *xy, foot(1, tr[1])], "#999999");
+        for (tr, xy) in b.tr.iter().zip(&b.xy).filter(|(_, p)| inside(p)) {
+            if seen % every == every / 2 {
+                plane.thin(vec![foot(0, tr[0]), *xy, foot(1, tr[1])], "#999999");
+            }
+            seen += 1;
         }
     }
     corners.iter().for_each(|&c| plane.corner(c));
+    if !r.branches.is_empty() {
+        plane.legend(Mark::Line("#d62020".into(), 0.6), "bisector");
+        plane.legend(
+            Mark::Line("#999999".into(), 0.6),
+            "a bisector point to its two foot points",
+        );
+    }
+    if !corners.is_empty() {
+        plane.legend(Mark::Square, "corner");
+    }
     plane.title(title);
 
     // The parameter square, scaled to a unit square so that both domains read alike.
@@ -606,6 +683,9 @@ fn plane_and_parameters(
     params.title("zero set in (t, r)");
     side_by_side(&[&plane, &params])
 }
+
+/// Foot-point lines drawn in a bisector figure, over all its branches.
+const FOOT_LINES: usize = 12;
 
 /// Magnitudes that text reports print in plain decimals; outside, in scientific form (not a
 /// tolerance: plain form would run to many zeros before or after the digits that matter).

@@ -8,7 +8,7 @@ use curvekit::export::dxf_file;
 use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
-use curvekit::svg::{scale_color, Figure};
+use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -89,18 +89,28 @@ pub(super) fn figure(region: &Curve, found: &VCarve) -> String {
     for l in &found.flats {
         fig.thin(l.polyline(ARC_POINTS), "#777777");
     }
-    let trust = if found.certified {
-        "certified".to_string()
-    } else {
-        format!(
-            "not certified ({})",
-            found.reason.as_deref().unwrap_or("no reason given")
-        )
-    };
     fig.title(format!(
-        "{}: vcarve at {}°, depth 0 (blue) to {:.4} (yellow), {trust}",
-        region.file, found.angle, deepest
+        "{} — vcarve with a {}° bit: {} paths{}",
+        region.file,
+        found.angle,
+        found.paths.len(),
+        found
+            .max_depth
+            .map_or(String::new(), |h| format!(", at most {h} deep"))
     ));
+    fig.status(found.certified, found.reason.as_deref());
+    fig.color_bar("depth", 0.0, -deepest, region.units());
+    fig.legend(Mark::Line(BOUNDARY.into(), 1.6), "boundary");
+    fig.legend(
+        Mark::Line(scale_color(0.6), 1.4),
+        "tool path, coloured by depth",
+    );
+    if !found.flats.is_empty() {
+        fig.legend(
+            Mark::Line("#777777".into(), 0.6),
+            "flat pass at the deepest cut",
+        );
+    }
     fig.render()
 }
 

@@ -1,11 +1,30 @@
 //! A small SVG writer for result figures: polylines, dots, numbered segments and labels,
-//! with the view box fitted to the content and y pointing up.
+//! with the view box fitted to the content and y pointing up; above the drawing a header (the
+//! title, whether the result is certified and why not), beside it a legend (a key per mark, a
+//! colour bar with ticks and units). Numbers on the drawing never overlap: one that would is
+//! left out, and the legend says how many were.
 
+mod legend;
+
+pub use legend::Mark;
+
+use legend::{ColorBar, Entry, Status, LEGEND_WIDTH, LINE};
 use std::borrow::Cow;
 use std::fmt::Write as _;
 
 /// Colors of the figure elements (curves cycle through the first ones).
 const PALETTE: [&str; 4] = ["#1f4e9c", "#2a8c4a", "#8c2a7a", "#b05a00"];
+
+/// The colour of a region's boundaries: neutral, so that it never reads as a value of a scale.
+pub const BOUNDARY: &str = "#3a3a3a";
+
+/// The colour of a marked point (inflections, nodes that are not told apart).
+pub const DOT: &str = "#d62020";
+
+/// Pixels a number on the drawing takes per character, and its height: the box two numbers
+/// must not share.
+const LABEL_CHAR: f64 = 8.0;
+const LABEL_HEIGHT: f64 = 15.0;
 
 /// Least size of a panel's content (user units): a panel of one point, of size 0, still gets
 /// a view box of nonzero width and height (else its pixel size is 0 / 0).
@@ -20,7 +39,7 @@ enum Item {
     },
     Dot {
         at: [f64; 2],
-        color: &'static str,
+        color: Cow<'static, str>,
     },
     Segment {
         from: [f64; 2],
@@ -58,6 +77,9 @@ pub struct Figure {
     curves: usize,
     title: Option<String>,
     frame: Option<([f64; 2], [f64; 2])>,
+    status: Option<Status>,
+    legend: Vec<Entry>,
+    bar: Option<ColorBar>,
 }
 
 impl Figure {
@@ -74,6 +96,16 @@ impl Figure {
             points,
             color: color.into(),
             width: 2.0,
+            closed,
+        });
+    }
+
+    /// A region's boundary, in the neutral colour.
+    pub fn boundary(&mut self, points: Vec<[f64; 2]>, closed: bool) {
+        self.items.push(Item::Polyline {
+            points,
+            color: BOUNDARY.into(),
+            width: 1.6,
             closed,
         });
     }
@@ -103,7 +135,45 @@ impl Figure {
     pub fn dot(&mut self, at: [f64; 2]) {
         self.items.push(Item::Dot {
             at,
-            color: "#d62020",
+            color: DOT.into(),
+        });
+    }
+
+    /// A marked point of a colour (`#rrggbb`): a node of a kind.
+    pub fn dot_colored(&mut self, at: [f64; 2], color: &'static str) {
+        self.items.push(Item::Dot {
+            at,
+            color: color.into(),
+        });
+    }
+
+    /// Whether the result drawn is certified, and why not: the header's second line.
+    pub fn status(&mut self, certified: bool, reason: Option<&str>) {
+        self.status = Some(Status {
+            certified,
+            reason: reason.map(str::to_string),
+        });
+    }
+
+    /// A legend entry: a mark and what it stands for (an entry given twice is kept once).
+    pub fn legend(&mut self, mark: Mark, label: impl Into<String>) {
+        let entry = Entry {
+            mark,
+            label: label.into(),
+        };
+        if !self.legend.contains(&entry) {
+            self.legend.push(entry);
+        }
+    }
+
+    /// The colour bar of the scale [`scale_color`] spans: what it measures (`radius`), from
+    /// `lo` to `hi`, in `units` where the drawing says.
+    pub fn color_bar(&mut self, quantity: &str, lo: f64, hi: f64, units: Option<&str>) {
+        self.bar = Some(ColorBar {
+            quantity: quantity.to_string(),
+            lo,
+            hi,
+            units: units.map(str::to_string),
         });
     }
 
@@ -142,9 +212,11 @@ impl Figure {
         side_by_side(&[self])
     }
 
-    /// One panel as a nested `<svg>` element at horizontal offset `x` (pixels), with its width
-    /// and height in pixels. A nested `<svg>` clips what lies outside its view box.
-    fn panel(&self, x: f64) -> (String, f64, f64) {
+    /// One panel as a nested `<svg>` element at pixel offset `(x, y)`, with its width and
+    /// height in pixels and the numbers left out where they would overlap; its title drawn in
+    /// it where `titled` (a panel beside the main one: the main one's is the header). A nested
+    /// `<svg>` clips what lies outside its view box.
+    fn panel(&self, x: f64, y: f64, titled: bool) -> (String, f64, f64, usize) {
         let (lo, hi) = self.frame.unwrap_or_else(|| self.bounds());
         let size = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(MIN_SIZE);
         let pad = 0.06 * size;
@@ -160,10 +232,31 @@ impl Figure {
         // draws them alike (`vector-effect` is not supported everywhere).
         let upx = w / pw;
         let r = 0.008 * size;
+        // Numbers drawn so far, as pixel boxes: one that would overlap them is left out.
+        let mut placed: Vec<[f64; 4]> = Vec::new();
+        let mut left_out = 0;
+        let mut place = |at: [f64; 2], label: &str| {
+            let (px, py) = ((at[0] - x0) / upx, (-at[1] - y0) / upx);
+            let b = [
+                px,
+                py - LABEL_HEIGHT,
+                px + LABEL_CHAR * label.chars().count() as f64,
+                py,
+            ];
+            let clear = placed
+                .iter()
+                .all(|q| b[2] <= q[0] || q[2] <= b[0] || b[3] <= q[1] || q[3] <= b[1]);
+            if clear {
+                placed.push(b);
+            } else {
+                left_out += 1;
+            }
+            clear
+        };
         let mut s = String::new();
         let _ = writeln!(
             s,
-            r#"<svg x="{x:.0}" y="0" width="{pw:.0}" height="{ph:.0}" viewBox="{} {} {} {}">"#,
+            r#"<svg x="{x:.0}" y="{y:.0}" width="{pw:.0}" height="{ph:.0}" viewBox="{} {} {} {}">"#,
             num(x0),
             num(y0),
             num(w),
@@ -232,18 +325,24 @@ impl Figure {
                             from[0] + 0.1 * (to[0] - from[0]),
                             from[1] + 0.1 * (to[1] - from[1]),
                         ];
-                        text(&mut s, at, label, upx);
+                        if place(at, label) {
+                            text(&mut s, at, label, upx);
+                        }
                     }
                 }
-                Item::Text { at, text: t } => text(&mut s, *at, t, upx),
+                Item::Text { at, text: t } => {
+                    if place(*at, t) {
+                        text(&mut s, *at, t, upx);
+                    }
+                }
             }
         }
-        if let Some(t) = &self.title {
+        if let (true, Some(t)) = (titled, &self.title) {
             // In the top padding, in plot coordinates (y up).
             text(&mut s, [x0 + 0.5 * pad, hi[1] + 0.2 * pad], t, upx);
         }
         s.push_str("</svg>\n");
-        (s, pw, ph)
+        (s, pw, ph, left_out)
     }
 
     fn bounds(&self) -> ([f64; 2], [f64; 2]) {
@@ -274,13 +373,17 @@ impl Figure {
     }
 }
 
+/// Text made safe for SVG.
+fn escape(t: &str) -> String {
+    t.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
 /// Text of 14 pixels whatever the figure's scale: set in pixels and scaled to user units by a
 /// transform (tiny user-unit font sizes render badly in some viewers).
 fn text(s: &mut String, at: [f64; 2], t: &str, upx: f64) {
-    let escaped = t
-        .replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;");
+    let escaped = escape(t);
     let _ = writeln!(
         s,
         r##"<text transform="translate({} {}) scale({})" font-size="14" font-family="sans-serif" fill="#222222">{escaped}</text>"##,
@@ -308,20 +411,57 @@ fn pair(p: [f64; 2]) -> String {
     format!("{},{}", num(p[0]), num(-p[1]))
 }
 
-/// Figures side by side in one SVG document (a figure and its parameter-space view).
+/// Figures side by side in one SVG document (a figure and its parameter-space view): the
+/// first one's title and status as the header, the panels below it, and the legend of them all
+/// in a column to their right.
 pub fn side_by_side(figures: &[&Figure]) -> String {
     let gap = 16.0;
+    let first = figures.first();
+    let lines = legend::header_lines(
+        first.and_then(|f| f.title.as_deref()),
+        first.and_then(|f| f.status.as_ref()),
+    );
+    let top = if lines.is_empty() {
+        0.0
+    } else {
+        LINE * lines.len() as f64 + 8.0
+    };
     let (mut body, mut x, mut height) = (String::new(), 0.0, 0.0f64);
-    for f in figures {
-        let (panel, pw, ph) = f.panel(x);
+    let mut left_out = 0;
+    for (k, f) in figures.iter().enumerate() {
+        let (panel, pw, ph, skipped) = f.panel(x, top, k > 0);
         body.push_str(&panel);
         x += pw + gap;
         height = height.max(ph);
+        left_out += skipped;
     }
-    let width = (x - gap).max(0.0);
+    let mut entries: Vec<Entry> = Vec::new();
+    for e in figures.iter().flat_map(|f| &f.legend) {
+        if !entries.contains(e) {
+            entries.push(e.clone());
+        }
+    }
+    if left_out > 0 {
+        entries.push(Entry {
+            mark: Mark::Dashed,
+            label: format!(
+                "{left_out} numbers left out where they would overlap (the JSON lists all)"
+            ),
+        });
+    }
+    let bar = figures.iter().find_map(|f| f.bar.as_ref());
+    let mut width = (x - gap).max(0.0);
+    if bar.is_some() || !entries.is_empty() {
+        let legend_height = legend::legend(&mut body, width + gap, top + 8.0, bar, &entries);
+        width += gap + LEGEND_WIDTH;
+        height = height.max(legend_height + 16.0);
+    }
+    let mut head = String::new();
+    legend::header(&mut head, &lines);
+    let total = top + height;
     format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width:.0}\" height=\"{height:.0}\">\n\
-         <rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n{body}</svg>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width:.0}\" height=\"{total:.0}\">\n\
+         <rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n{head}{body}</svg>\n"
     )
 }
 

@@ -219,3 +219,69 @@ pub fn read_region(doc: &Value) -> Option<curvekit::curve::Region> {
         _ => None,
     }
 }
+
+/// The most sides: the axis's cost grows with the square of the sites.
+pub const MAX_SIDES: usize = 8;
+
+/// One side of a fuzzed region's outline.
+#[derive(Arbitrary, Debug)]
+pub struct Side {
+    pub to: (i8, i8),
+    /// Bend the side into a quadratic Bézier through a control point this far off (0: a line).
+    pub bend: i8,
+}
+
+/// A region: a polygon of at most [`MAX_SIDES`] sides (some bent into quadratic Béziers)
+/// with up to 3 round holes, at every scale and offset.
+#[derive(Arbitrary, Debug)]
+pub struct ArbRegion {
+    pub start: (i8, i8),
+    pub sides: Vec<Side>,
+    pub holes: Vec<((i8, i8), u8)>,
+    /// Scale by 2^(scale mod 121 − 60).
+    pub scale: u8,
+    /// Offset by 2^(offset mod 48) sizes.
+    pub offset: u8,
+    pub chord: u8,
+}
+
+impl ArbRegion {
+    /// The region's document, the scale factor `k` and the offset `far` (in units of it).
+    pub fn document(&self) -> (Value, f64, f64) {
+        let k = 2f64.powi((self.scale % 121) as i32 - 60);
+        let far = 2f64.powi((self.offset % 48) as i32) * 256.0;
+        let at = |p: (i8, i8)| [(p.0 as f64 + far) * k, (p.1 as f64 + far) * k];
+        let mut from = self.start;
+        let mut segments = Vec::new();
+        let n = self.sides.len().min(MAX_SIDES);
+        for (i, s) in self.sides.iter().take(n).enumerate() {
+            let to = if i + 1 == n { self.start } else { s.to };
+            if s.bend == 0 {
+                segments.push(json!({"kind": "line", "from": at(from), "to": at(to)}));
+            } else {
+                let mid = (
+                    ((from.0 as i16 + to.0 as i16) / 2
+                        - (to.1 as i16 - from.1 as i16) * s.bend as i16 / 64) as f64,
+                    ((from.1 as i16 + to.1 as i16) / 2
+                        + (to.0 as i16 - from.0 as i16) * s.bend as i16 / 64) as f64,
+                );
+                let c = [(mid.0 + far) * k, (mid.1 + far) * k];
+                segments.push(json!({"kind": "bezier", "points": [at(from), c, at(to)]}));
+            }
+            from = to;
+        }
+        let holes: Vec<_> = self
+            .holes
+            .iter()
+            .take(3)
+            .map(|&(c, r)| json!({"kind": "circle", "center": at(c), "r": (1.0 + r as f64 / 16.0) * k}))
+            .collect();
+        let doc = json!({"kind": "region", "outer": {"kind": "profile", "segments": segments}, "holes": holes});
+        (doc, k, far)
+    }
+
+    /// The chord tolerance drawn: 1/256 … 1/2.
+    pub fn chord_tol(&self) -> f64 {
+        0.5 / 2f64.powi((self.chord % 8) as i32)
+    }
+}

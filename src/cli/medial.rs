@@ -202,9 +202,7 @@ fn draw_axis(fig: &mut Figure, axis: &MedialAxis) {
         if nodes.is_empty() {
             continue;
         }
-        for n in &nodes {
-            fig.dot_colored(n.xy, color);
-        }
+        fig.dots(&nodes.iter().map(|n| n.xy).collect::<Vec<_>>(), color);
         fig.legend(Mark::Dot(color.into()), format!("{name}: {}", nodes.len()));
     }
 }

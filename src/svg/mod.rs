@@ -26,6 +26,10 @@ pub const DOT: &str = "#d62020";
 const LABEL_CHAR: f64 = 8.0;
 const LABEL_HEIGHT: f64 = 15.0;
 
+/// More dots of one kind than this are drawn small (a dense axis's hundreds of nodes would
+/// cover its edges).
+const MANY_DOTS: usize = 48;
+
 /// Least size of a panel's content (user units): a panel of one point, of size 0, still gets
 /// a view box of nonzero width and height (else its pixel size is 0 / 0).
 const MIN_SIZE: f64 = 1e-9;
@@ -40,6 +44,8 @@ enum Item {
     Dot {
         at: [f64; 2],
         color: Cow<'static, str>,
+        /// A share of the usual radius (one of many drawn small).
+        scale: f64,
     },
     Segment {
         from: [f64; 2],
@@ -136,15 +142,21 @@ impl Figure {
         self.items.push(Item::Dot {
             at,
             color: DOT.into(),
+            scale: 1.0,
         });
     }
 
-    /// A marked point of a colour (`#rrggbb`): a node of a kind.
-    pub fn dot_colored(&mut self, at: [f64; 2], color: &'static str) {
-        self.items.push(Item::Dot {
-            at,
-            color: color.into(),
-        });
+    /// Marked points of a colour (`#rrggbb`): the nodes of a kind. Many are drawn small, so
+    /// that they do not hide what lies between them.
+    pub fn dots(&mut self, points: &[[f64; 2]], color: &'static str) {
+        let scale = if points.len() > MANY_DOTS { 0.3 } else { 1.0 };
+        for &at in points {
+            self.items.push(Item::Dot {
+                at,
+                color: color.into(),
+                scale,
+            });
+        }
     }
 
     /// Whether the result drawn is certified, and why not: the header's second line.
@@ -287,13 +299,13 @@ impl Figure {
                         num(width * upx)
                     );
                 }
-                Item::Dot { at, color } => {
+                Item::Dot { at, color, scale } => {
                     let _ = writeln!(
                         s,
                         r#"<circle cx="{}" cy="{}" r="{}" fill="{color}"/>"#,
                         num(at[0]),
                         num(-at[1]),
-                        num(r)
+                        num(r * scale)
                     );
                 }
                 Item::Corner { at } => {

@@ -234,14 +234,7 @@ fn medial_of(
         size: None,
     };
     let c = region.get();
-    let (axis, summary) = cancellable(py, || {
-        commands::validate_medial_options(&opts)?;
-        let region = c.region()?;
-        Ok((
-            commands::medial(region, &opts)?,
-            commands::CurveSummary::of(region),
-        ))
-    })?;
+    let (axis, summary) = cancellable(py, || medial_work(c, &opts))?;
     Ok(PyMedialAxis::new(axis, vec![summary]))
 }
 
@@ -263,27 +256,10 @@ fn offset_of(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyOffsets> {
-    let asked = offset_distances(distance, distances, step)?;
-    let medial_opts = ::medial::MedialOptions {
-        tol,
-        chord_tol,
-        fit: false,
-        exterior: outward,
-        size: None,
-    };
-    let opts = ::offset::OffsetOptions {
-        chord_tol,
-        size: None,
-    };
+    let (asked, opts, medial_opts) =
+        offset_options(distance, distances, step, outward, chord_tol, tol)?;
     let c = region.get();
-    let (found, summary) = cancellable(py, || {
-        commands::validate_distances(&asked)?;
-        let region = c.region()?;
-        Ok((
-            commands::offset(region, &asked, &opts, &medial_opts)?,
-            commands::CurveSummary::of(region),
-        ))
-    })?;
+    let (found, summary) = cancellable(py, || offset_work(c, &asked, &opts, &medial_opts))?;
     Ok(PyOffsets::new(found, vec![summary]))
 }
 
@@ -329,6 +305,34 @@ pub(crate) fn offset_distances(
     }
 }
 
+/// The distances, the offsets' options and the medial axis's, from the keywords.
+pub(crate) fn offset_options(
+    distance: Option<f64>,
+    distances: Option<Vec<f64>>,
+    step: Option<f64>,
+    outward: bool,
+    chord_tol: f64,
+    tol: f64,
+) -> PyResult<(
+    commands::Distances,
+    ::offset::OffsetOptions,
+    ::medial::MedialOptions,
+)> {
+    let asked = offset_distances(distance, distances, step)?;
+    let medial_opts = ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit: false,
+        exterior: outward,
+        size: None,
+    };
+    let opts = ::offset::OffsetOptions {
+        chord_tol,
+        size: None,
+    };
+    Ok((asked, opts, medial_opts))
+}
+
 /// The V-carving options and the medial axis's, from the keywords.
 pub(crate) fn vcarve_options(
     angle: f64,
@@ -369,15 +373,51 @@ fn vcarve_of(
 ) -> PyResult<PyVCarve> {
     let (opts, medial_opts) = vcarve_options(angle, max_depth, chord_tol, tol);
     let c = region.get();
-    let (found, summary) = cancellable(py, || {
-        commands::validate_vcarve_options(&opts)?;
-        let region = c.region()?;
-        Ok((
-            commands::vcarve(region, &opts, &medial_opts)?,
-            commands::CurveSummary::of(region),
-        ))
-    })?;
+    let (found, summary) = cancellable(py, || vcarve_work(c, &opts, &medial_opts))?;
     Ok(PyVCarve::new(found, vec![summary]))
+}
+
+/// The medial axis of the region a curve is or encloses, and that region's summary (one
+/// call's work, alone or in a list).
+pub(crate) fn medial_work(
+    c: &PyCurve,
+    opts: &::medial::MedialOptions,
+) -> Result<(::medial::MedialAxis, commands::CurveSummary), CommandError> {
+    commands::validate_medial_options(opts)?;
+    let region = c.region()?;
+    Ok((
+        commands::medial(region, opts)?,
+        commands::CurveSummary::of(region),
+    ))
+}
+
+/// The offsets of the region a curve is or encloses, and that region's summary.
+pub(crate) fn offset_work(
+    c: &PyCurve,
+    asked: &commands::Distances,
+    opts: &::offset::OffsetOptions,
+    medial_opts: &::medial::MedialOptions,
+) -> Result<(::offset::Offsets, commands::CurveSummary), CommandError> {
+    commands::validate_distances(asked)?;
+    let region = c.region()?;
+    Ok((
+        commands::offset(region, asked, opts, medial_opts)?,
+        commands::CurveSummary::of(region),
+    ))
+}
+
+/// The V-carving of the region a curve is or encloses, and that region's summary.
+pub(crate) fn vcarve_work(
+    c: &PyCurve,
+    opts: &::offset::VCarveOptions,
+    medial_opts: &::medial::MedialOptions,
+) -> Result<(::offset::VCarve, commands::CurveSummary), CommandError> {
+    commands::validate_vcarve_options(opts)?;
+    let region = c.region()?;
+    Ok((
+        commands::vcarve(region, opts, medial_opts)?,
+        commands::CurveSummary::of(region),
+    ))
 }
 
 /// The native module: classes, functions and exceptions (the package `curvekit` re-exports

@@ -5,7 +5,7 @@
 use crate::curves::{PyCurve, PyPrepared};
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use crate::results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
-use crate::{bisector_options, offset_distances, CurvekitError, InputError};
+use crate::{bisector_options, CurvekitError, InputError};
 use curvekit::commands::{self, CommandError, CurveSummary};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -84,6 +84,21 @@ fn plain<'a>(curves: &'a [Bound<'_, PyCurve>]) -> Vec<&'a PyCurve> {
     curves.iter().map(|c| c.get()).collect()
 }
 
+impl Item<'_> {
+    /// Runs `warm` on a prepared curve, or `cold` on a curve (prepared for this run); the
+    /// result with the curve's summary.
+    fn run<T>(
+        &self,
+        warm: impl Fn(&commands::Prepared) -> Result<T, CommandError>,
+        cold: impl Fn(&curvekit::io::Curve) -> Result<T, CommandError>,
+    ) -> Result<(T, CurveSummary), CommandError> {
+        Ok(match self {
+            Item::Prepared(p) => (warm(p.prepared())?, CurveSummary::of(p.prepared().curve())),
+            Item::Curve(c) => (cold(c.curve())?, c.summary()),
+        })
+    }
+}
+
 /// `antipodal` of each curve.
 #[pyfunction]
 #[pyo3(signature = (curves, *, tol = ::antipodal::DEFAULT_TOL))]
@@ -93,16 +108,9 @@ fn antipodal_many(
     tol: f64,
 ) -> PyResult<Vec<PyAntipodal>> {
     let opts = ::antipodal::Options::default().tolerance(tol);
-    let items = items(&curves)?;
-    let found = each(py, &items, |item| {
+    let found = each(py, &items(&curves)?, |item| {
         commands::validate_options(&opts)?;
-        Ok(match item {
-            Item::Prepared(p) => (
-                p.prepared().antipodal(&opts)?,
-                CurveSummary::of(p.prepared().curve()),
-            ),
-            Item::Curve(c) => (commands::antipodal(c.curve(), &opts)?, c.summary()),
-        })
+        item.run(|p| p.antipodal(&opts), |c| commands::antipodal(c, &opts))
     })?;
     Ok(found
         .into_iter()
@@ -119,16 +127,12 @@ fn inflections_many(
     tol: f64,
 ) -> PyResult<Vec<PyInflections>> {
     let opts = ::antipodal::Options::default().tolerance(tol);
-    let items = items(&curves)?;
-    let found = each(py, &items, |item| {
+    let found = each(py, &items(&curves)?, |item| {
         commands::validate_options(&opts)?;
-        Ok(match item {
-            Item::Prepared(p) => (
-                p.prepared().inflections(&opts)?,
-                CurveSummary::of(p.prepared().curve()),
-            ),
-            Item::Curve(c) => (commands::inflections(c.curve(), &opts)?, c.summary()),
-        })
+        item.run(
+            |p| p.inflections(&opts),
+            |c| commands::inflections(c, &opts),
+        )
     })?;
     Ok(found
         .into_iter()
@@ -227,11 +231,7 @@ fn medial_many(
         exterior,
         size: None,
     };
-    let found = each(py, &plain(&regions), |c| {
-        commands::validate_medial_options(&opts)?;
-        let region = c.region()?;
-        Ok((commands::medial(region, &opts)?, CurveSummary::of(region)))
-    })?;
+    let found = each(py, &plain(&regions), |c| crate::medial_work(c, &opts))?;
     Ok(found
         .into_iter()
         .map(|(f, s)| PyMedialAxis::new(f, vec![s]))
@@ -255,25 +255,10 @@ fn offset_many(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<Vec<PyOffsets>> {
-    let asked = offset_distances(distance, distances, step)?;
-    let medial_opts = ::medial::MedialOptions {
-        tol,
-        chord_tol,
-        fit: false,
-        exterior: outward,
-        size: None,
-    };
-    let opts = ::offset::OffsetOptions {
-        chord_tol,
-        size: None,
-    };
+    let (asked, opts, medial_opts) =
+        crate::offset_options(distance, distances, step, outward, chord_tol, tol)?;
     let found = each(py, &plain(&regions), |c| {
-        commands::validate_distances(&asked)?;
-        let region = c.region()?;
-        Ok((
-            commands::offset(region, &asked, &opts, &medial_opts)?,
-            CurveSummary::of(region),
-        ))
+        crate::offset_work(c, &asked, &opts, &medial_opts)
     })?;
     Ok(found
         .into_iter()
@@ -295,12 +280,7 @@ fn vcarve_many(
 ) -> PyResult<Vec<PyVCarve>> {
     let (opts, medial_opts) = crate::vcarve_options(angle, max_depth, chord_tol, tol);
     let found = each(py, &plain(&regions), |c| {
-        commands::validate_vcarve_options(&opts)?;
-        let region = c.region()?;
-        Ok((
-            commands::vcarve(region, &opts, &medial_opts)?,
-            CurveSummary::of(region),
-        ))
+        crate::vcarve_work(c, &opts, &medial_opts)
     })?;
     Ok(found
         .into_iter()

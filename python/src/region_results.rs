@@ -17,25 +17,7 @@ fn export_error(e: ExportError) -> PyErr {
     crate::CurvekitError::new_err(e.to_string())
 }
 
-result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
-    /// Every junction and trimming decision followed from sign tests.
-    #[getter]
-    fn certified(&self) -> bool {
-        self.found.certified
-    }
-
-    /// No search limit was hit.
-    #[getter]
-    fn complete(&self) -> bool {
-        self.found.complete
-    }
-
-    /// Why the axis is not certified, when it is not.
-    #[getter]
-    fn reason(&self) -> Option<String> {
-        self.found.reason.clone()
-    }
-
+result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict, {
     /// The nodes' points, an `(n, 2)` array (row `i` is node `i`).
     #[getter]
     fn nodes<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
@@ -145,25 +127,7 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, {
     }
 });
 
-result_class!(PyOffsets, "Offsets", Offsets, {
-    /// The axis was certified and every seam closed by Newton's method.
-    #[getter]
-    fn certified(&self) -> bool {
-        self.found.certified
-    }
-
-    /// The axis was complete and the seams joined into loops.
-    #[getter]
-    fn complete(&self) -> bool {
-        self.found.complete
-    }
-
-    /// Why the offsets are not certified, when they are not.
-    #[getter]
-    fn reason(&self) -> Option<String> {
-        self.found.reason.clone()
-    }
-
+result_class!(PyOffsets, "Offsets", Offsets, verdict, {
     /// The distances, in the order asked, an `(m,)` array.
     #[getter]
     fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
@@ -285,25 +249,7 @@ result_class!(PyOffsets, "Offsets", Offsets, {
     }
 });
 
-result_class!(PyVCarve, "VCarve", VCarve, {
-    /// The axis (and the flat pass's offset) certified.
-    #[getter]
-    fn certified(&self) -> bool {
-        self.found.certified
-    }
-
-    /// No search limit was hit, and the flat pass's loops closed.
-    #[getter]
-    fn complete(&self) -> bool {
-        self.found.complete
-    }
-
-    /// Why the paths are not certified, when they are not.
-    #[getter]
-    fn reason(&self) -> Option<String> {
-        self.found.reason.clone()
-    }
-
+result_class!(PyVCarve, "VCarve", VCarve, verdict, {
     /// The bit's included angle (degrees).
     #[getter]
     fn angle(&self) -> f64 {

@@ -115,6 +115,31 @@ impl PickledCurve {
 }
 
 macro_rules! result_class {
+    // (A result with `certified`, `complete` and `reason` fields of its own: their getters.)
+    ($class:ident, $name:literal, $found:ty, verdict, { $($extra:tt)* }) => {
+        result_class!($class, $name, $found, {
+            /// Whether the result is certified: every decision it rests on followed from sign
+            /// tests on bounds.
+            #[getter]
+            fn certified(&self) -> bool {
+                self.found.certified
+            }
+
+            /// Whether no search limit was hit.
+            #[getter]
+            fn complete(&self) -> bool {
+                self.found.complete
+            }
+
+            /// Why the result is not certified, when it is not.
+            #[getter]
+            fn reason(&self) -> Option<String> {
+                self.found.reason.clone()
+            }
+
+            $($extra)*
+        });
+    };
     ($class:ident, $name:literal, $found:ty, { $($extra:tt)* }) => {
         #[doc = concat!("The result of `curvekit.", $name, "`.")]
         #[pyclass(name = $name, module = "curvekit", frozen)]

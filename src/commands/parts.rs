@@ -24,19 +24,38 @@ fn reason(reasons: Vec<Option<String>>, doubt: Option<String>) -> Option<String>
     first.or(doubt)
 }
 
+/// The verdict over parts, each `(certified, complete, reason)`: certified where every part is
+/// and the drawing casts no `doubt` (else the first reason), complete where every part is.
+fn verdict(
+    parts: Vec<(bool, bool, Option<String>)>,
+    doubt: Option<String>,
+) -> (bool, bool, Option<String>) {
+    let certified = parts.iter().all(|p| p.0) && doubt.is_none();
+    let complete = parts.iter().all(|p| p.1);
+    let reasons = parts.into_iter().map(|p| p.2).collect();
+    let why = if certified {
+        None
+    } else {
+        reason(reasons, doubt)
+    };
+    (certified, complete, why)
+}
+
 /// The axes of the parts as one axis: nodes renumbered, each node and edge with its part
 /// where there are several; certified and complete where every part's is and the drawing
 /// casts no `doubt`.
 pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<String>) -> MedialAxis {
     let several = axes.len() > 1;
-    let certified = axes.iter().all(|a| a.certified) && doubt.is_none();
-    let complete = axes.iter().all(|a| a.complete);
-    let mut reasons = Vec::with_capacity(axes.len());
+    let (certified, complete, reason) = verdict(
+        axes.iter()
+            .map(|a| (a.certified, a.complete, a.reason.clone()))
+            .collect(),
+        doubt,
+    );
     let (mut nodes, mut edges) = (Vec::new(), Vec::new());
     for (k, axis) in axes.into_iter().enumerate() {
         let part = several.then_some(k);
         let first = nodes.len();
-        reasons.push(axis.reason);
         nodes.extend(axis.nodes.into_iter().map(|mut n| {
             n.id += first;
             n.part = part;
@@ -53,11 +72,7 @@ pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<String>) -> Media
         nodes,
         edges,
         certified,
-        reason: if certified {
-            None
-        } else {
-            reason(reasons, doubt)
-        },
+        reason,
         complete,
     }
 }
@@ -66,12 +81,15 @@ pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<String>) -> Media
 /// each with its part where there are several, and the largest error.
 pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offsets {
     let several = found.len() > 1;
-    let certified = found.iter().all(|o| o.certified) && doubt.is_none();
-    let complete = found.iter().all(|o| o.complete);
-    let mut reasons = Vec::with_capacity(found.len());
+    let (certified, complete, reason) = verdict(
+        found
+            .iter()
+            .map(|o| (o.certified, o.complete, o.reason.clone()))
+            .collect(),
+        doubt,
+    );
     let mut offsets: Vec<offset::Offset> = Vec::new();
     for (k, part) in found.into_iter().enumerate() {
-        reasons.push(part.reason);
         for (i, mut o) in part.offsets.into_iter().enumerate() {
             for l in &mut o.loops {
                 l.part = several.then_some(k);
@@ -88,11 +106,7 @@ pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offs
     Offsets {
         offsets,
         certified,
-        reason: if certified {
-            None
-        } else {
-            reason(reasons, doubt)
-        },
+        reason,
         complete,
     }
 }
@@ -101,15 +115,18 @@ pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offs
 /// part in turn (with their part where there are several).
 pub(super) fn joined_carves(found: Vec<offset::VCarve>, doubt: Option<String>) -> offset::VCarve {
     let several = found.len() > 1;
-    let certified = found.iter().all(|c| c.certified) && doubt.is_none();
-    let complete = found.iter().all(|c| c.complete);
+    let (certified, complete, reason) = verdict(
+        found
+            .iter()
+            .map(|c| (c.certified, c.complete, c.reason.clone()))
+            .collect(),
+        doubt,
+    );
     let (angle, max_depth) = found
         .first()
         .map_or((0.0, None), |c| (c.angle, c.max_depth));
-    let mut reasons = Vec::with_capacity(found.len());
     let (mut paths, mut flats) = (Vec::new(), Vec::new());
     for (k, carve) in found.into_iter().enumerate() {
-        reasons.push(carve.reason);
         paths.extend(carve.paths.into_iter().map(|mut p| {
             p.part = k;
             p
@@ -125,11 +142,7 @@ pub(super) fn joined_carves(found: Vec<offset::VCarve>, doubt: Option<String>) -
         paths,
         flats,
         certified,
-        reason: if certified {
-            None
-        } else {
-            reason(reasons, doubt)
-        },
+        reason,
         complete,
     }
 }

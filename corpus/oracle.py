@@ -411,7 +411,7 @@ def check_vcarve(drawing: Drawing, document: dict, parts: list[int], size: float
     asked = (inside != got) | (got & (2 * widest + slack < size))
     distance[asked] = boundary.distance(grid[asked])
     missed = inside & (distance > slack) & (distance < 2 * widest - slack) & ~got
-    gouged = ((~inside & (distance > slack)) | (inside & (distance > 2 * widest + slack))) & got
+    gouged = ((~inside & (distance > slack)) | (inside & (distance > 2 * widest + slack))) & got & asked
     figures["missed"] = int(missed.sum())
     figures["gouged"] = int(gouged.sum())
     if missed.any():

@@ -192,6 +192,7 @@ fn every_command_runs_in_batch_as_alone() {
         }
         let run = curvekit(&args);
         assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+        assert_eq!(lines(&run.stdout).len(), inputs.len(), "{args:?}");
         for (line, input) in lines(&run.stdout).iter().zip(inputs) {
             let mut single = vec![command[0], input.as_str()];
             if two {
@@ -220,6 +221,7 @@ fn each_input_gets_its_figure() {
     ]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     let got = lines(&run.stdout);
+    assert_eq!(got.len(), 2);
     for (k, (line, stem)) in got
         .iter()
         .zip(["region-pocket", "drawing-pocket"])

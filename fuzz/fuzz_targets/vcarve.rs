@@ -56,8 +56,9 @@ fuzz_target!(|input: Input| {
     assert!(dxf::Drawing::load(&mut dxf.as_slice()).is_ok());
     let svg = svg_paths::medial_svg(&axis, None).unwrap();
     assert!(roxmltree::Document::parse(&svg).is_ok());
-    if let Some(h) = carve_opts.max_depth {
-        if let Ok(found) = offsets(&region, &axis, &[h], &OffsetOptions::default()) {
+    if carve_opts.max_depth.is_some() {
+        let widest = carve_opts.widest();
+        if let Ok(found) = offsets(&region, &axis, &[widest], &OffsetOptions::default()) {
             let dxf = dxf_file::offsets_dxf(&found, None).unwrap();
             assert!(dxf::Drawing::load(&mut dxf.as_slice()).is_ok());
             let svg = svg_paths::offsets_svg(&found, None).unwrap();

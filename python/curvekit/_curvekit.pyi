@@ -118,7 +118,8 @@ class VCarve(_Result):
     angle: float
     max_depth: Optional[float]
     paths: list[npt.NDArray[np.float64]]
-    """Each tool path as an (n, 3) array of (x, y, z), z <= 0 the depth."""
+    """Each tool path as an (n, 3) array of (x, y, z), z <= 0 the depth: over the axis, then
+    along each flat pass at -max_depth."""
     path_parts: list[int]
     def flats(self, arc_points: int = 32) -> list[npt.NDArray[np.float64]]:
         """The flat passes at depth -max_depth as closed (n, 2) polylines."""

@@ -398,7 +398,7 @@ pub(crate) fn offset_work(
     opts: &::offset::OffsetOptions,
     medial_opts: &::medial::MedialOptions,
 ) -> Result<(::offset::Offsets, commands::CurveSummary), CommandError> {
-    commands::validate_distances(asked)?;
+    commands::validate_offset(asked, medial_opts.exterior)?;
     let region = c.region()?;
     Ok((
         commands::offset(region, asked, opts, medial_opts)?,

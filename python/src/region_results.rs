@@ -188,7 +188,7 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict, {
     }
 
     /// GeoJSON geometry of the region inside the loops at the `k`-th distance (a
-    /// `MultiPolygon`, empty where the region vanished), flattened within the chord tolerance.
+    /// `MultiPolygon`, empty where the region vanished), flattened within 1e-3 of its size.
     fn geometry<'py>(&self, py: Python<'py>, k: usize) -> PyResult<Bound<'py, PyAny>> {
         let (_, regions) = self.regions_at(k)?;
         let refs: Vec<&curve::Region> = regions.iter().collect();

@@ -118,14 +118,14 @@ macro_rules! result_class {
     // (A result with `certified`, `complete` and `reason` fields of its own: their getters.)
     ($class:ident, $name:literal, $found:ty, verdict, { $($extra:tt)* }) => {
         result_class!($class, $name, $found, {
-            /// Whether the result is certified: every decision it rests on followed from sign
-            /// tests on bounds.
+            /// Whether the result is certified (what that proves is the command's: see its
+            /// documentation); `reason` says why not.
             #[getter]
             fn certified(&self) -> bool {
                 self.found.certified
             }
 
-            /// Whether no search limit was hit.
+            /// Whether the result is complete (no search limit hit, every loop joined).
             #[getter]
             fn complete(&self) -> bool {
                 self.found.complete

@@ -72,7 +72,11 @@ def test_offset_dxf_holds_the_pieces_on_a_layer_per_distance(drawing: str, tmp_p
     space = list(dxf.modelspace())
     for offset in document["offsets"]:
         entities = [e for e in space if e.dxf.layer == layer_of(offset["distance"])]
-        pieces = [s for loop in offset["loops"] for s in loop["segments"]]
+        # (Arcs that sweep nothing are not written: DXF would draw them as whole circles.)
+        pieces = [
+            s for loop in offset["loops"] for s in loop["segments"]
+            if s["kind"] != "arc" or abs(s["end"] - s["start"]) > 1e-9
+        ]
         assert len(entities) == len(pieces), offset["distance"]
         ends = Counter()
         for e, s in zip(entities, pieces):

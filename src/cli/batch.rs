@@ -356,7 +356,7 @@ impl Task {
             BatchCommand::Medial => commands::validate_medial_options(&medial_opts)?,
             BatchCommand::Offset => {
                 commands::validate_medial_options(&medial_opts)?;
-                commands::validate_distances(&distances)?;
+                commands::validate_offset(&distances, b.exterior)?;
             }
             BatchCommand::Vcarve => {
                 commands::validate_medial_options(&medial_opts)?;

@@ -282,8 +282,7 @@ fn bisector_within_budget(curves: &[Curve], tol: f64) -> Result<Bisector, String
         })
 }
 
-/// A branch count, marked when a search limit was hit.
-/// `n branches` of a bisector (`1 branch`), and whether incomplete.
+/// `n branches` of a bisector (`1 branch`), marked when a search limit was hit.
 fn branches_of(b: &Bisector) -> String {
     let n = super::commands::branch_count(b.branches.len());
     if b.complete {
@@ -293,6 +292,7 @@ fn branches_of(b: &Bisector) -> String {
     }
 }
 
+/// A branch count for the summary table, marked when a search limit was hit.
 fn branch_count(b: &Bisector) -> String {
     if b.complete {
         b.branches.len().to_string()

@@ -31,7 +31,7 @@ pub(super) fn run(
         size: None,
     };
     commands::validate_medial_options(&medial_opts)?;
-    commands::validate_distances(distances)?;
+    commands::validate_offset(distances, outward)?;
     let opts = OffsetOptions {
         chord_tol,
         size: None,

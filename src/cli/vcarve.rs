@@ -8,7 +8,7 @@ use curvekit::export::dxf_file;
 use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
-use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
+use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY, DOT};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -40,6 +40,7 @@ pub(super) fn run(
         },
     };
     commands::validate_medial_options(&medial_opts)?;
+    commands::validate_vcarve_options(&opts)?;
     let curve = common.read_region(path)?;
     let compute = || commands::vcarve(&curve, &opts, &medial_opts);
     let found = compute()?;
@@ -84,6 +85,10 @@ pub(super) fn figure(region: &Curve, found: &VCarve) -> String {
         }
         if let [q] = p.xyz.as_slice() {
             fig.dot([q[0], q[1]]);
+            fig.legend(
+                Mark::Dot(DOT.into()),
+                "a plunge: the centre of a round part",
+            );
         }
     }
     for l in &found.flats {

@@ -479,6 +479,20 @@ pub fn validate_distances(distances: &Distances) -> Result<(), CommandError> {
     }
 }
 
+/// The distances checked ([`validate_distances`]) for offsets inward, or `outward`: a step
+/// has no last pass outward, where the offsets never vanish.
+pub fn validate_offset(distances: &Distances, outward: bool) -> Result<(), CommandError> {
+    validate_distances(distances)?;
+    if outward && matches!(distances, Distances::Step(_)) {
+        return Err(CommandError::Usage(
+            "--step: outward offsets never vanish, so a step has no last pass: give \
+             --distance or --distances"
+                .into(),
+        ));
+    }
+    Ok(())
+}
+
 /// The offsets of a region read (as [`crate::io::read_region`] gives it), from its medial
 /// axis computed with `medial_opts`: inward, or outward with `medial_opts.exterior` (from the
 /// exterior axis).
@@ -488,16 +502,8 @@ pub fn offset(
     opts: &offset::OffsetOptions,
     medial_opts: &medial::MedialOptions,
 ) -> Result<offset::Offsets, CommandError> {
-    validate_distances(distances)?;
+    validate_offset(distances, medial_opts.exterior)?;
     validate_medial_options(medial_opts)?;
-    if medial_opts.exterior && matches!(distances, Distances::Step(_)) {
-        // (Inward, the passes end where the region vanishes; outward nothing ends them.)
-        return Err(CommandError::Usage(
-            "--step: outward offsets never vanish, so a step has no last pass: give \
-             --distance or --distances"
-                .into(),
-        ));
-    }
     let axes = axes_of_parts(region, medial_opts)?;
     let list = match distances {
         Distances::List(list) => list.clone(),

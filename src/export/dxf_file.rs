@@ -17,7 +17,7 @@
 //! ezdxf reads the files as written; its audit repairs two things the crate writes (a
 //! transparency group of 0 on every entity, the tables' head handles), neither geometry.
 
-use super::{distance_name, ExportError};
+use super::{distance_name, ExportError, NO_SWEEP};
 use dxf::entities::{Arc, Circle, Entity, EntityType, Line, ModelPoint, Polyline, Spline, Vertex};
 use dxf::enums::{AcadVersion, Units};
 use dxf::tables::Layer;
@@ -26,9 +26,10 @@ use medial::{MedialAxis, NodeKind};
 use offset::{OffsetSegment, Offsets, VCarve};
 use std::f64::consts::TAU;
 
-/// The `$INSUNITS` units, in the order of their codes 1 to 24 (as the reader names them,
-/// [`crate::io`]).
-const UNITS: [(&str, Units); 24] = [
+/// The `$INSUNITS` units by the names the readers give them ([`crate::io`]). Not `pc`: the DXF
+/// reader names parsecs so, the SVG reader picas, and a unit written must be the one meant
+/// (a drawing in either is written unitless).
+const UNITS: [(&str, Units); 23] = [
     ("in", Units::Inches),
     ("ft", Units::Feet),
     ("mi", Units::Miles),
@@ -48,7 +49,6 @@ const UNITS: [(&str, Units); 24] = [
     ("Gm", Units::Gigameters),
     ("au", Units::AstronomicalUnits),
     ("ly", Units::LightYears),
-    ("pc", Units::Parsecs),
     ("us_ft", Units::USSurveyFeet),
     ("us_in", Units::USSurveyInch),
     ("us_yd", Units::USSurveyYard),
@@ -121,19 +121,23 @@ impl Writer {
     }
 }
 
-/// The entity of one offset piece, at height `z`.
-fn piece(s: &OffsetSegment, z: f64) -> EntityType {
+/// The entity of one offset piece, at height `z`; none for an arc that sweeps nothing (a
+/// corner's arc where the offset meets it head on), which DXF would draw as a whole circle.
+fn piece(s: &OffsetSegment, z: f64) -> Option<EntityType> {
     let at = |p: [f64; 2]| Point::new(p[0], p[1], z);
     match s {
-        OffsetSegment::Line { from, to } => EntityType::Line(Line::new(at(*from), at(*to))),
+        OffsetSegment::Line { from, to } => Some(EntityType::Line(Line::new(at(*from), at(*to)))),
         OffsetSegment::Arc {
             center,
             r,
             start,
             end,
         } => {
+            if (end - start).abs() <= NO_SWEEP {
+                return None;
+            }
             if ((end - start).abs() - TAU).abs() <= FULL_TURN * TAU {
-                return EntityType::Circle(Circle::new(at(*center), *r));
+                return Some(EntityType::Circle(Circle::new(at(*center), *r)));
             }
             // (DXF arcs run counterclockwise: a clockwise one is written end first.)
             let (a, b) = if end > start {
@@ -142,13 +146,22 @@ fn piece(s: &OffsetSegment, z: f64) -> EntityType {
                 (*end, *start)
             };
             let degrees = |x: f64| x.to_degrees().rem_euclid(360.0);
-            EntityType::Arc(Arc::new(at(*center), *r, degrees(a), degrees(b)))
+            Some(EntityType::Arc(Arc::new(
+                at(*center),
+                *r,
+                degrees(a),
+                degrees(b),
+            )))
         }
         OffsetSegment::BSpline {
             degree,
             knots,
             points,
-        } => EntityType::Spline(spline(*degree, knots, points.iter().map(|p| at(*p)))),
+        } => Some(EntityType::Spline(spline(
+            *degree,
+            knots,
+            points.iter().map(|p| at(*p)),
+        ))),
     }
 }
 
@@ -189,8 +202,8 @@ pub fn offsets_dxf(found: &Offsets, units: Option<&str>) -> Result<Vec<u8>, Expo
         // (Layers take the ACI colours 1 to 6 in turn: red, yellow, green, cyan, blue, magenta.)
         let color = 1 + (k % 6) as u8;
         for l in &o.loops {
-            for s in &l.segments {
-                w.add(&layer, color, piece(s, 0.0));
+            for e in l.segments.iter().filter_map(|s| piece(s, 0.0)) {
+                w.add(&layer, color, e);
             }
         }
     }
@@ -246,8 +259,8 @@ pub fn vcarve_dxf(carve: &VCarve, units: Option<&str>) -> Result<Vec<u8>, Export
     }
     let z = -carve.max_depth.unwrap_or(0.0);
     for l in &carve.flats {
-        for s in &l.segments {
-            w.add(VCARVE_FLATS, 3, piece(s, z));
+        for e in l.segments.iter().filter_map(|s| piece(s, z)) {
+            w.add(VCARVE_FLATS, 3, e);
         }
     }
     w.bytes()

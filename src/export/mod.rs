@@ -22,6 +22,11 @@ pub enum ExportError {
     Dxf(String),
 }
 
+/// An arc that sweeps less than this (radians) is nothing, and is not written: a corner's arc
+/// where the offset meets it head on. DXF would draw equal angles as a whole circle, and
+/// curvekit's readers take sweeps within 1e-9 rad of nothing as one.
+pub const NO_SWEEP: f64 = 1e-9;
+
 /// A distance as a layer or group name takes it (`offset_0.25`): Rust's shortest form that
 /// reads back as the same number, never an exponent.
 pub(crate) fn distance_name(d: f64) -> String {

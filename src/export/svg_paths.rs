@@ -7,14 +7,15 @@
 //! is ambiguous), splines their Bézier pieces (`Q`, `C`; a degree-1 spline its lines); numbers
 //! are written in Rust's shortest form that reads back as the same `f64`.
 
-use super::{distance_name, ExportError};
+use super::{distance_name, ExportError, NO_SWEEP};
 use medial::MedialAxis;
 use offset::{OffsetSegment, Offsets};
 use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write as _;
 
-/// The units an SVG root's `width` can carry (as the reader takes them).
-const SVG_UNITS: [&str; 5] = ["mm", "cm", "in", "pt", "pc"];
+/// The units an SVG root's `width` can carry (as the reader takes them). Not `pc`: picas to
+/// SVG, parsecs to the DXF reader, which names them alike.
+const SVG_UNITS: [&str; 4] = ["mm", "cm", "in", "pt"];
 
 /// A document being written: its path elements and the box they cover.
 struct Document {
@@ -81,6 +82,9 @@ fn piece_data(doc: &mut Document, s: &OffsetSegment, d: &mut String) -> Result<(
             start,
             end,
         } => {
+            if (end - start).abs() <= NO_SWEEP {
+                return Ok(());
+            }
             let pieces = ((end - start).abs() / FRAC_PI_2).ceil().max(1.0) as usize;
             let sweep = u8::from(end > start);
             for k in 1..=pieces {

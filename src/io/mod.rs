@@ -354,8 +354,8 @@ pub fn read_region(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileE
     read_region_as(path, None, pick)
 }
 
-/// [`read_region`] with the input's format given (`None`: by the file's extension); the path
-/// `-` is standard input (a curve file unless `format` says otherwise).
+/// [`read_region`] with the format of an input whose extension does not name one (standard
+/// input, the path `-`, among them; `None`: a curve file).
 pub fn read_region_as(
     path: &Path,
     format: Option<InputFormat>,
@@ -412,8 +412,8 @@ pub fn read_curve_picked(path: &Path, pick: Option<usize>) -> Result<Curve, Curv
     read_curve_as(path, None, pick)
 }
 
-/// [`read_curve_picked`] with the input's format given (`None`: by the file's extension); the
-/// path `-` is standard input (a curve file unless `format` says otherwise).
+/// [`read_curve_picked`] with the format of an input whose extension does not name one
+/// (standard input, the path `-`, among them; `None`: a curve file).
 pub fn read_curve_as(
     path: &Path,
     format: Option<InputFormat>,
@@ -463,7 +463,8 @@ fn unreadable(file: &str, e: std::io::Error) -> CurveFileError {
 
 /// An input's name (for messages), drawing format (`None` for a curve file) and bytes: from
 /// standard input for `-` (a curve file unless `format` says otherwise), else from the file,
-/// as `format` says or by its extension (`.svg`, `.dxf`; anything else a curve file).
+/// by its extension (`.svg`, `.dxf`, `.json`), or else as `format` says (a curve file unless
+/// it does).
 fn input_bytes(
     path: &Path,
     format: Option<InputFormat>,
@@ -492,17 +493,17 @@ fn input_bytes(
         return Ok((STDIN_NAME.to_string(), drawing(format), bytes));
     }
     let file = path.display().to_string();
-    let format = format.unwrap_or_else(|| {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        match ext.as_deref() {
-            Some("svg") => InputFormat::Svg,
-            Some("dxf") => InputFormat::Dxf,
-            _ => InputFormat::Json,
-        }
-    });
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    // (An extension that names a format is that format; `format` names the others'.)
+    let format = match ext.as_deref() {
+        Some("svg") => InputFormat::Svg,
+        Some("dxf") => InputFormat::Dxf,
+        Some("json") => InputFormat::Json,
+        _ => format.unwrap_or(InputFormat::Json),
+    };
     let bytes = std::fs::read(path).map_err(|e| unreadable(&file, e))?;
     Ok((file, drawing(format), bytes))
 }

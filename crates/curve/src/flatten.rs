@@ -16,14 +16,20 @@ use crate::{ParamCurve, Profile, Segment};
 /// the polyline a spike of rounding's size, which polygon libraries call a self-crossing.
 const JOINED: f64 = 1e-9;
 
-/// Most halvings of one Bézier piece: 2^30 chords, far beyond any tolerance a caller can ask
-/// of a valid piece (the bound ends the loop on a degenerate one).
-const MAX_HALVINGS: u32 = 30;
+/// The finest tolerance taken, as a share of the coordinates' magnitude: a thousand times the
+/// rounding of a double.
+const ROUNDING: f64 = 1e3 * f64::EPSILON;
+
+/// Most halvings of one Bézier piece: each quarters its control points' distance from the
+/// chord, so 2^24 chords reach 4^-24 of the piece's size, beyond [`ROUNDING`] (the bound ends
+/// the recursion on a degenerate piece).
+const MAX_HALVINGS: u32 = 24;
 
 impl Profile {
     /// The profile as a polyline within `tol` of it (both ways), from its start to its end
     /// (for a closed profile, its start again at the end); every vertex on the profile. A
-    /// `tol` that is not finite and positive is taken as the profile's size × 1e-3.
+    /// `tol` that is not finite and positive is taken as the profile's size × 1e-3, and none
+    /// finer than the rounding of its coordinates (1e3 ε of their magnitude) is taken.
     ///
     /// ```
     /// use curve::{Profile, Segment};
@@ -47,6 +53,11 @@ impl Profile {
         } else {
             1e-3 * self.size()
         };
+        // (No finer than the rounding of the coordinates: below it no halving flattens a
+        // piece, and the halvings would run to their bound everywhere.)
+        let b = self.bounding_box();
+        let far = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let tol = tol.max(ROUNDING * (self.size() + far));
         let joined = JOINED * self.size();
         let mut points: Vec<([f64; 2], f64)> = Vec::new();
         for (i, s) in self.segments().iter().enumerate() {
@@ -65,6 +76,28 @@ impl Profile {
             }
         }
         points
+    }
+}
+
+impl Segment {
+    /// The segment as a polyline within `tol` of it (both ways), every vertex on it (as
+    /// [`Profile::flattened`], for a segment that is no profile's: an offset loop's piece).
+    pub fn flattened(&self, tol: f64) -> Vec<[f64; 2]> {
+        // (No finer than the rounding of its coordinates, as for a profile.)
+        let far = self
+            .curve()
+            .control_points()
+            .iter()
+            .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+        let tol = if tol.is_finite() && tol > 0.0 {
+            tol
+        } else {
+            0.0
+        }
+        .max(ROUNDING * far);
+        let mut points = Vec::new();
+        flatten_segment(self, tol, 0.0, &mut points);
+        points.into_iter().map(|(p, _)| p).collect()
     }
 }
 
@@ -179,10 +212,26 @@ mod tests {
             prop_assert!(line.len() >= 2);
             let (a, b) = profile.domain();
             let n = 2000;
-            for k in 0..=n {
-                let p = profile.jet_to(a + (b - a) * k as f64 / n as f64, 0).p.arr();
-                let d = to_polyline(p, &line);
+            let samples: Vec<[f64; 2]> = (0..=n)
+                .map(|k| profile.jet_to(a + (b - a) * k as f64 / n as f64, 0).p.arr())
+                .collect();
+            for (k, p) in samples.iter().enumerate() {
+                let d = to_polyline(*p, &line);
                 prop_assert!(d <= tol * (1.0 + 1e-9) + 1e-12, "sample {k} is {d:e} from the polyline (tol {tol:e})");
+            }
+            // And back: each chord's middle within the tolerance of the curve, measured on
+            // the samples (to within half the widest gap between two of them).
+            let gap = samples
+                .windows(2)
+                .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+                .fold(0.0, f64::max);
+            for w in line.windows(2) {
+                let m = [0.5 * (w[0][0] + w[1][0]), 0.5 * (w[0][1] + w[1][1])];
+                let d = samples
+                    .iter()
+                    .map(|q| (q[0] - m[0]).hypot(q[1] - m[1]))
+                    .fold(f64::INFINITY, f64::min);
+                prop_assert!(d <= tol + 0.5 * gap + 1e-12, "a chord's middle is {d:e} from the curve (tol {tol:e})");
             }
             // (Each vertex, found by halving, against the curve evaluated by de Boor's
             // algorithm at its parameter.)

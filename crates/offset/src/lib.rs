@@ -164,6 +164,28 @@ impl OffsetLoop {
     /// The loop as a closed profile, to be measured, drawn or offset again (with
     /// [`curve::Region::nested`] for the regions the loops bound).
     pub fn profile(&self) -> Result<Profile, curve::Error> {
+        Profile::new(self.exact_segments()?, Some(true))
+    }
+
+    /// The loop as a closed polyline within `tol` of it, every vertex on it (a loop that
+    /// touches itself at a neck, which no profile may, included).
+    pub fn flattened(&self, tol: f64) -> Result<Vec<[f64; 2]>, curve::Error> {
+        let mut points: Vec<[f64; 2]> = Vec::new();
+        for s in self.exact_segments()? {
+            let piece = s.flattened(tol);
+            let skip = usize::from(points.last() == piece.first());
+            points.extend(piece.into_iter().skip(skip));
+        }
+        // (Closed exactly: the last piece ends where the first starts, up to rounding.)
+        if let Some(&first) = points.first() {
+            let end = points.len() - 1;
+            points[end] = first;
+        }
+        Ok(points)
+    }
+
+    /// The pieces as the curve model's segments.
+    fn exact_segments(&self) -> Result<Vec<Segment>, curve::Error> {
         let mut segments = Vec::new();
         for s in &self.segments {
             match s {
@@ -184,7 +206,7 @@ impl OffsetLoop {
                 )?),
             }
         }
-        Profile::new(segments, Some(true))
+        Ok(segments)
     }
 }
 
@@ -481,7 +503,7 @@ fn offsets_on(
 /// Checks that `axis` can be one of `region`'s, so that reading it cannot fail: per edge,
 /// one radius, pair of feet and pair of boundaries per vertex, all numbers finite, radii not
 /// negative, boundaries the region's and feet within their parameter domains.
-fn check_axis(region: &Region, axis: &MedialAxis) -> Result<(), Error> {
+pub(crate) fn check_axis(region: &Region, axis: &MedialAxis) -> Result<(), Error> {
     let boundaries: Vec<&Profile> = std::iter::once(region.outer())
         .chain(region.holes())
         .collect();

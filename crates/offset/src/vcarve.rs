@@ -5,10 +5,11 @@
 //! `z = −r / tan(A/2)`, it cuts the largest disk of the region centred there: nothing outside
 //! the region, and, swept along the whole axis, every point of the region (every point lies
 //! in some maximal disk). With a largest depth `H` the bit cannot reach the disks wider than
-//! `R = H·tan(A/2)`: the path leaves the axis where its radius reaches `R`, at depth `−H`, and
-//! runs along the offset at distance `R` (where the axis's radius is exactly `R`), a *flat*
-//! pass at that depth. The surface then keeps, uncut, the points farther than `2R` from the
-//! boundary: a flat-bottomed pocket for another tool.
+//! `R = H·tan(A/2)`: the paths over the axis stop where its radius reaches `R`, at depth `−H`,
+//! on the offset at distance `R` (where the axis's radius is exactly `R`); that offset is the
+//! *flat* pass at that depth, a path of its own and listed apart. The surface then keeps,
+//! uncut, the points farther than `2R` from the boundary: a flat-bottomed pocket for another
+//! tool.
 
 use crate::{offsets, Error, OffsetLoop, OffsetOptions};
 use curve::Region;
@@ -42,7 +43,7 @@ pub struct VCarve {
     pub angle: f64,
     /// The deepest cut asked for.
     pub max_depth: Option<f64>,
-    /// The paths over the axis.
+    /// The paths: over the axis, then along each flat pass at `−max_depth`.
     pub paths: Vec<VCarvePath>,
     /// The flat passes at depth `−max_depth`: the offset at `max_depth·tan(angle/2)` (none
     /// where the axis never gets that deep).
@@ -64,6 +65,14 @@ impl VCarveOptions {
                 field: "angle",
                 value: self.angle,
                 why: "must be an included angle in degrees, strictly between 0 and 180",
+            });
+        }
+        // (A bit so narrow that tan(A/2) is no normal number would cut at infinite depth.)
+        if !self.spread().is_normal() {
+            return Err(Error::BadOption {
+                field: "angle",
+                value: self.angle,
+                why: "is too narrow: its depths are not finite numbers",
             });
         }
         if let Some(h) = self.max_depth {
@@ -109,12 +118,13 @@ impl VCarveOptions {
 /// ```
 pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Result<VCarve, Error> {
     opts.validate()?;
+    crate::check_axis(region, axis)?;
     let spread = opts.spread();
     let widest = opts.widest();
     let pieces = clipped_pieces(axis, widest);
     // (The depth of the widest disk, `−r / tan(A/2)`, may round below `−H`: held there.)
     let deepest_cut = opts.max_depth.map_or(f64::NEG_INFINITY, |h| -h);
-    let paths = chained(pieces)
+    let mut paths: Vec<VCarvePath> = chained(pieces)
         .into_iter()
         .map(|points| VCarvePath {
             xyz: points
@@ -124,16 +134,13 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
             part: 0,
         })
         .collect();
-    let deepest = axis
-        .edges
-        .iter()
-        .flat_map(|e| e.radius.iter().copied())
-        .chain(axis.nodes.iter().map(|n| n.radius))
-        .fold(0.0, f64::max);
     let (mut certified, mut complete, mut reason) =
         (axis.certified, axis.complete, axis.reason.clone());
     let mut flats = Vec::new();
-    if widest < deepest {
+    if let Some(depth) = opts.max_depth {
+        // (Asked whenever there is a limit: where the axis never reaches it the region has
+        // no offset there and the loops are none; the offset's own doubts, a neck between
+        // vertices, say whether it does.)
         let found = offsets(region, axis, &[widest], &opts.offset)?;
         certified &= found.certified;
         complete &= found.complete;
@@ -141,6 +148,18 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
             reason = found.reason;
         }
         flats = found.offsets.into_iter().flat_map(|o| o.loops).collect();
+        // Where the axis is deeper, the path follows the flat pass at −H (the contract's
+        // "Output files and V-carving"), within the chord tolerance of it.
+        let size = opts.offset.size.unwrap_or_else(|| region.size());
+        for l in &flats {
+            let ring = l
+                .flattened(opts.offset.chord_tol * size)
+                .map_err(|e| Error::BadAxis(format!("a flat pass is no loop of curves: {e}")))?;
+            paths.push(VCarvePath {
+                xyz: ring.into_iter().map(|p| [p[0], p[1], -depth]).collect(),
+                part: l.part.unwrap_or(0),
+            });
+        }
     }
     Ok(VCarve {
         angle: opts.angle,
@@ -185,10 +204,15 @@ fn clipped_pieces(axis: &MedialAxis, widest: f64) -> Vec<Piece> {
                 if last.1 < widest {
                     run.push(crossing(last, (xy, r), widest));
                 }
-                pieces.push(Piece {
-                    points: std::mem::take(&mut run),
-                    ends: [start, None],
-                });
+                // (A vertex exactly at the widest disk between two beyond it is no path:
+                // the flat pass goes through it.)
+                if run.len() >= 2 {
+                    pieces.push(Piece {
+                        points: std::mem::take(&mut run),
+                        ends: [start, None],
+                    });
+                }
+                run.clear();
             }
         }
         if run.len() >= 2 {

@@ -6,6 +6,7 @@
 mod curves;
 mod many;
 mod region_results;
+mod registry;
 mod results;
 
 use curve::watch::Watch;
@@ -428,7 +429,7 @@ fn _curvekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InputError", py.get_type::<InputError>())?;
     m.add("CurvekitError", py.get_type::<CurvekitError>())?;
     m.add_class::<PyCurve>()?;
-    results::register(m)?;
+    registry::register(m)?;
     curves::register(m)?;
     m.add_function(wrap_pyfunction!(antipodal_of, m)?)?;
     m.add_function(wrap_pyfunction!(inflections_of, m)?)?;

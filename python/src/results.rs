@@ -2,7 +2,6 @@
 //! for), gives numpy arrays of its main fields, `to_dict()`/`to_json()` as the tool's `--json`
 //! document, and pickles as that document.
 
-use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use curvekit::commands::{
     json_document_of, AntipodalFound, BisectorFound, CurveSummary, InflectionsFound, TangentsFound,
 };
@@ -106,7 +105,7 @@ impl PickledCurve {
         }
     }
 
-    fn summary(self) -> CurveSummary {
+    pub(crate) fn summary(self) -> CurveSummary {
         CurveSummary {
             drawing: self.drawing,
             ..self.summary
@@ -468,58 +467,3 @@ result_class!(PyBisector, "Bisector", BisectorFound, {
         format!("Bisector({} branches)", self.__len__())
     }
 });
-
-/// Unpickling: a result read back from its document.
-#[pyfunction]
-fn _result_from_json(
-    py: Python<'_>,
-    class: &str,
-    variant: &str,
-    found: &str,
-    curves: &str,
-) -> PyResult<Py<PyAny>> {
-    let bad = |e: serde_json::Error| PyValueError::new_err(format!("{class}: {e}"));
-    let kept: Vec<PickledCurve> = serde_json::from_str(curves).map_err(bad)?;
-    let curves: Vec<CurveSummary> = kept.into_iter().map(PickledCurve::summary).collect();
-    fn make<T: Kept>(variant: &str, found: &str) -> serde_json::Result<T> {
-        T::from_document(variant, found)
-    }
-    let object = match class {
-        "Antipodal" => PyAntipodal::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Inflections" => PyInflections::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Tangents" => PyTangents::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Bisector" => PyBisector::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "MedialAxis" => PyMedialAxis::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Offsets" => PyOffsets::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "VCarve" => PyVCarve::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        other => return Err(PyValueError::new_err(format!("no result class {other:?}"))),
-    };
-    Ok(object.unbind())
-}
-
-/// Registers the result classes and the unpickling function.
-pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_class::<PyAntipodal>()?;
-    m.add_class::<PyInflections>()?;
-    m.add_class::<PyTangents>()?;
-    m.add_class::<PyBisector>()?;
-    m.add_class::<PyMedialAxis>()?;
-    m.add_class::<PyOffsets>()?;
-    m.add_class::<PyVCarve>()?;
-    m.add_function(wrap_pyfunction!(_result_from_json, m)?)?;
-    Ok(())
-}

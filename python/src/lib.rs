@@ -227,13 +227,7 @@ fn medial_of(
     exterior: bool,
     tol: f64,
 ) -> PyResult<PyMedialAxis> {
-    let opts = ::medial::MedialOptions {
-        tol,
-        chord_tol,
-        fit,
-        exterior,
-        size: None,
-    };
+    let opts = medial_options(chord_tol, fit, exterior, tol);
     let c = region.get();
     let (axis, summary) = cancellable(py, || medial_work(c, &opts))?;
     Ok(PyMedialAxis::new(axis, vec![summary]))
@@ -306,6 +300,22 @@ pub(crate) fn offset_distances(
     }
 }
 
+/// The medial axis's options from the keywords (the size is the region's own).
+pub(crate) fn medial_options(
+    chord_tol: f64,
+    fit: bool,
+    exterior: bool,
+    tol: f64,
+) -> ::medial::MedialOptions {
+    ::medial::MedialOptions {
+        tol,
+        chord_tol,
+        fit,
+        exterior,
+        size: None,
+    }
+}
+
 /// The distances, the offsets' options and the medial axis's, from the keywords.
 pub(crate) fn offset_options(
     distance: Option<f64>,
@@ -320,13 +330,7 @@ pub(crate) fn offset_options(
     ::medial::MedialOptions,
 )> {
     let asked = offset_distances(distance, distances, step)?;
-    let medial_opts = ::medial::MedialOptions {
-        tol,
-        chord_tol,
-        fit: false,
-        exterior: outward,
-        size: None,
-    };
+    let medial_opts = medial_options(chord_tol, false, outward, tol);
     let opts = ::offset::OffsetOptions {
         chord_tol,
         size: None,
@@ -341,13 +345,7 @@ pub(crate) fn vcarve_options(
     chord_tol: f64,
     tol: f64,
 ) -> (::offset::VCarveOptions, ::medial::MedialOptions) {
-    let medial_opts = ::medial::MedialOptions {
-        tol,
-        chord_tol,
-        fit: false,
-        exterior: false,
-        size: None,
-    };
+    let medial_opts = medial_options(chord_tol, false, false, tol);
     let opts = ::offset::VCarveOptions {
         angle,
         max_depth,

@@ -224,13 +224,7 @@ fn medial_many(
     exterior: bool,
     tol: f64,
 ) -> PyResult<Vec<PyMedialAxis>> {
-    let opts = ::medial::MedialOptions {
-        tol,
-        chord_tol,
-        fit,
-        exterior,
-        size: None,
-    };
+    let opts = crate::medial_options(chord_tol, fit, exterior, tol);
     let found = each(py, &plain(&regions), |c| crate::medial_work(c, &opts))?;
     Ok(found
         .into_iter()

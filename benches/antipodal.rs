@@ -9,24 +9,12 @@ use antipodal::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon};
 use antipodal::{antipodal, prepare, Options, PlaneCurve, SplineCurve};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
+use testkit::stars::Star;
 
 /// A random star-shaped periodic cubic B-spline with `n` control points (deterministic seed).
 fn star(n: usize, seed: u64) -> SplineCurve {
-    let mut x = seed;
-    let mut rnd = || {
-        x = x
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let pts: Vec<[f64; 2]> = (0..n)
-        .map(|i| {
-            let a = std::f64::consts::TAU * (i as f64 + 0.8 * (rnd() - 0.5)) / n as f64;
-            let r = 0.35 + 0.65 * rnd();
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect();
-    SplineCurve::periodic(3, &pts, None).unwrap()
+    let points = Star::default().drawn(n, &mut testkit::rng(seed));
+    SplineCurve::periodic(3, &points, None).unwrap()
 }
 
 /// A warm run (on the prepared curve) and a cold one (preparing and answering once).

@@ -14,8 +14,7 @@ use curvekit::offset::{offsets, OffsetOptions};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-mod common;
-use common::{dense_outline, polygon, rounded_outline, star_polygon};
+use testkit::outlines::{dense_outline, polygon, rounded_outline, star_polygon};
 
 /// Cancels at each of these shares of the uncancelled run.
 const SHARES: usize = 10;

@@ -11,8 +11,7 @@ use curvekit::io::{parse_drawing, read_curve_picked, DrawingFormat, Shape};
 use std::io::Write;
 use std::time::Duration;
 
-mod common;
-use common::rng;
+use testkit::rng;
 
 /// The drawing's text: `outlines` outlines of `teeth` arcs and `teeth` chords each.
 fn drawing(outlines: usize, teeth: usize) -> String {

@@ -12,11 +12,10 @@ use curve::Region;
 use curvekit::medial::{medial_axis, MedialOptions};
 use std::time::Duration;
 
-mod common;
 #[path = "common/read.rs"]
 mod read;
-use common::{bezier_chain, POCKET};
 use read::region_of;
+use testkit::outlines::{bezier_chain, POCKET};
 
 const PERIODIC_CUBIC: &str = r#"{"kind":"bspline","degree":3,"periodic":true,
     "points":[[0,0],[2,-1],[4,0],[4,2],[2,1.2],[0,2]]}"#;

@@ -14,11 +14,10 @@ use curvekit::medial::{medial_axis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
 use std::time::Duration;
 
-mod common;
 #[path = "common/read.rs"]
 mod read;
-use common::{bezier_chain, POCKET};
 use read::region_of;
+use testkit::outlines::{bezier_chain, POCKET};
 
 fn offset(c: &mut Criterion) {
     let _ = rayon::ThreadPoolBuilder::new()

@@ -27,11 +27,10 @@ use curvekit::offset::{offsets, OffsetOptions};
 use std::f64::consts::FRAC_PI_2;
 use std::time::Duration;
 
-mod common;
 #[path = "common/read.rs"]
 mod read;
-use common::{dense_outline, gear, gear_chords, polygon, star_polygon, POCKET};
 use read::region_of;
+use testkit::outlines::{dense_outline, gear, gear_chords, polygon, star_polygon, POCKET};
 
 /// The grid boostvoronoi's integer input is snapped to: the star spans [-1.1, 1.1].
 const GRID: f64 = 1e6;

@@ -12,8 +12,9 @@ use curvekit::io::{read_curve_picked, Shape};
 use std::path::Path;
 use std::time::Duration;
 
-mod common;
-use common::{bezier_chain, rng};
+use testkit::outlines::bezier_chain;
+use testkit::rng;
+use testkit::stars::Star;
 
 fn fixture(name: &str) -> Profile {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -28,15 +29,8 @@ fn fixture(name: &str) -> Profile {
 
 /// A random star-shaped periodic cubic B-spline with `n` control points.
 fn star(n: usize, seed: u64) -> SplineCurve {
-    let mut rnd = rng(seed);
-    let pts: Vec<[f64; 2]> = (0..n)
-        .map(|i| {
-            let a = std::f64::consts::TAU * (i as f64 + 0.8 * (rnd() - 0.5)) / n as f64;
-            let r = 0.35 + 0.65 * rnd();
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect();
-    SplineCurve::periodic(3, &pts, None).unwrap()
+    let points = Star::default().drawn(n, &mut rng(seed));
+    SplineCurve::periodic(3, &points, None).unwrap()
 }
 
 fn profiles(c: &mut Criterion) {

@@ -273,3 +273,20 @@ fn crates_use_only_those_to_their_left() {
         }
     }
 }
+
+/// The tests' shared ground (`crates/testkit`) is a dev-dependency only: no crate's library
+/// or tool depends on it.
+#[test]
+fn testkit_is_for_tests_only() {
+    for (name, dir) in CRATES {
+        let manifest = std::fs::read_to_string(root().join(dir).join("Cargo.toml")).unwrap();
+        for section in manifest.split("\n[") {
+            if section.starts_with("dependencies]") {
+                assert!(
+                    !section.lines().any(|l| l.trim_start().starts_with("testkit")),
+                    "{name} depends on testkit outside its dev-dependencies"
+                );
+            }
+        }
+    }
+}

@@ -14,18 +14,7 @@ use curvekit::bspline::tensor::TensorBSpline;
 use curvekit::bspline::BSpline;
 use curvekit::zeroset::{solve_system, SystemOptions};
 use proptest::prelude::*;
-
-/// A star-shaped control polygon with `n` points: sorted angles, radii in [0.35, 1].
-fn star(seed: &[f64]) -> Vec<[f64; 2]> {
-    let n = seed.len() / 2;
-    (0..n)
-        .map(|i| {
-            let a = std::f64::consts::TAU * (i as f64 + 0.8 * (seed[2 * i] - 0.5)) / n as f64;
-            let r = 0.35 + 0.65 * seed[2 * i + 1];
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect()
-}
+use testkit::stars::star;
 
 /// The clamped form of the periodic curve through `pts`, and its coordinate functions.
 fn coordinates(degree: usize, pts: &[[f64; 2]]) -> (BSpline, BSpline) {

@@ -330,31 +330,8 @@ pub fn common_tangents(
 pub(crate) mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use curve::SplineCurve;
 
-    /// A random star-shaped closed B-spline from `2n` numbers in `[0, 1)` (angle jitter and
-    /// radius per control point), rational with the first `n` of `weights` when given.
-    pub(crate) fn star_curve(deg: usize, seed: &[f64], weights: Option<&[f64]>) -> SplineCurve {
-        star_curve_at(deg, seed, weights, [0.0, 0.0])
-    }
-
-    /// [`star_curve`] about `center` instead of the origin.
-    pub(crate) fn star_curve_at(
-        deg: usize,
-        seed: &[f64],
-        weights: Option<&[f64]>,
-        center: [f64; 2],
-    ) -> SplineCurve {
-        let n = seed.len() / 2;
-        let pts: Vec<[f64; 2]> = (0..n)
-            .map(|i| {
-                let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (seed[2 * i] - 0.5)) / n as f64;
-                let r = 0.35 + 0.65 * seed[2 * i + 1];
-                [center[0] + r * ang.cos(), center[1] + r * ang.sin()]
-            })
-            .collect();
-        SplineCurve::periodic(deg, &pts, weights.map(|w| &w[..n])).unwrap()
-    }
+    pub(crate) use testkit::stars::star_curve;
 
     /// `curve` prepared as it is (the identity frame: the views evaluate the curve itself).
     pub(crate) fn as_given(curve: &dyn PlaneCurve) -> Prepared<'_> {

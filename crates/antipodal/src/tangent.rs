@@ -233,10 +233,11 @@ mod tests {
     use crate::driver::dissect;
     use crate::monotone::tests::opposite_by_bisection;
     use crate::pairs::opposite_pair;
-    use crate::prepare::tests::{as_given, star_curve, star_curve_at};
+    use crate::prepare::tests::{as_given, star_curve};
     use crate::Options;
     use proptest::prelude::*;
     use std::sync::atomic::{AtomicUsize, Ordering};
+    use testkit::stars::{star_curve_with, Star};
 
     /// Stretches where `d` was proven of one sign, and where sampling found it change sign
     /// (neither count may stay small: the property must not be vacuous either way).
@@ -261,7 +262,11 @@ mod tests {
         ) {
             let weights = rational.then_some(&w[..]);
             let a = star_curve(deg, &seed, weights);
-            let b = star_curve_at(deg, &seed2, weights, [dist * dir.cos(), dist * dir.sin()]);
+            let far = Star {
+                center: [dist * dir.cos(), dist * dir.sin()],
+                ..Star::default()
+            };
+            let b = star_curve_with(&far, deg, &seed2, weights);
             let opts = Options::default();
             let (ga, gb) = (as_given(&a), as_given(&b));
             let Ok(pa) = dissect(ga.source(true), &opts, Some(false)) else {

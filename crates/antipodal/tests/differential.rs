@@ -10,6 +10,7 @@ mod common;
 
 use antipodal::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon};
 use antipodal::{antipodal, Antipodal, Error, Options, PlaneCurve, SplineCurve};
+use testkit::stars::Star;
 
 /// Both paths on one curve; `None` when the curve is not simple (both must refuse it alike).
 fn both(c: &dyn PlaneCurve) -> Option<(Antipodal, Antipodal)> {
@@ -88,18 +89,6 @@ fn same_answers(c: &dyn PlaneCurve, f: &Antipodal, p: &Antipodal) -> Result<(), 
     Ok(())
 }
 
-fn star(seed: &[(f64, f64)], rmin: f64) -> Vec<[f64; 2]> {
-    let n = seed.len();
-    seed.iter()
-        .enumerate()
-        .map(|(i, &(a, r))| {
-            let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (a - 0.5)) / n as f64;
-            let r = rmin + (1.0 - rmin) * r;
-            [2.0 + r * ang.cos(), -1.0 + r * ang.sin()]
-        })
-        .collect()
-}
-
 /// Where the paths disagree, the fast one must agree with the dense oracles: the same
 /// inflections (count) and every isolated pair the oracle finds, and no pair it does not.
 fn fast_matches_oracle(c: &dyn PlaneCurve, f: &Antipodal) -> Result<(), String> {
@@ -143,14 +132,19 @@ fn fast_matches_oracle(c: &dyn PlaneCurve, f: &Antipodal) -> Result<(), String> 
 /// beside another), the fast path must be the one the oracles confirm.
 #[test]
 fn random_closed_splines_agree() {
-    let mut rng = common::Lcg(0xd1ff_0017);
+    let mut rng = testkit::Lcg(0xd1ff_0017);
     let (mut valid, mut agreed) = (0, 0);
     for case in 0..common::cases(300) {
         let degree = 2 + (rng.next() * 5.0) as usize;
         let n = 6 + (rng.next() * 10.0) as usize;
         let rmin = 0.3 + 0.6 * rng.next();
         let seed: Vec<(f64, f64)> = (0..n).map(|_| (rng.next(), rng.next())).collect();
-        let pts = star(&seed, rmin);
+        let star = Star {
+            inner: rmin,
+            center: [2.0, -1.0],
+            ..Star::default()
+        };
+        let pts = star.points(&seed);
         let w: Option<Vec<f64>> =
             (case % 3 == 2).then(|| (0..n).map(|_| 0.5 + 1.5 * rng.next()).collect());
         if n <= degree {

@@ -13,6 +13,7 @@ mod common;
 use common::cases;
 use proptest::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use testkit::stars::Star;
 
 /// A random curve: a star-shaped control polygon with coordinates on a grid of `2^-20` (so that
 /// translations up to `2^32` and scalings by powers of two are exact), periodic of degree
@@ -62,15 +63,10 @@ fn spec(degrees: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Spec>
             )
         })
         .prop_map(|(degree, seed, weights)| {
-            let n = seed.len();
-            let points = seed
-                .iter()
-                .enumerate()
-                .map(|(i, &(a, r))| {
-                    let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (a - 0.5)) / n as f64;
-                    let r = 0.35 + 0.65 * r;
-                    [grid(r * ang.cos(), 20), grid(r * ang.sin(), 20)]
-                })
+            let points = Star::default()
+                .points(&seed)
+                .into_iter()
+                .map(|p| [grid(p[0], 20), grid(p[1], 20)])
                 .collect();
             let weights = weights.map(|w| w.iter().map(|&x| grid(x, 6)).collect());
             Spec {

@@ -8,17 +8,7 @@ use antipodal::{
     antipodal, common_tangents, inflections, Error, Options, ParamCurve, PlaneCurve, SplineCurve,
 };
 use proptest::prelude::*;
-
-/// A star-shaped control polygon: sorted angles, radii in [0.35, 1], scaled by `size`.
-fn star(n: usize, seed: &[f64], size: f64) -> Vec<[f64; 2]> {
-    (0..n)
-        .map(|i| {
-            let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (seed[2 * i] - 0.5)) / n as f64;
-            let r = size * (0.35 + 0.65 * seed[2 * i + 1]);
-            [r * ang.cos(), r * ang.sin()]
-        })
-        .collect()
-}
+use testkit::stars::Star;
 
 /// A random simple closed curve, of degree 2 (curvature jumping at every knot) to 5.
 fn random_curve() -> impl Strategy<Value = CurveSpec> {
@@ -39,7 +29,11 @@ fn random_curve() -> impl Strategy<Value = CurveSpec> {
                 Just(size),
             )
                 .prop_map(move |(deg, seed, cw, w, rational, size)| {
-                    let mut pts = star(n, &seed, size);
+                    let mut pts = Star {
+                        size,
+                        ..Star::default()
+                    }
+                    .points_from_seed(&seed[..2 * n]);
                     if cw {
                         pts.reverse();
                     }

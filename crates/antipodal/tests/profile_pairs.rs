@@ -19,7 +19,7 @@ use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use common::profiles::{assemble, bezier_chain, filleted_polygon};
+use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
 
 // ---- the oracle -------------------------------------------------------------------------
 

@@ -13,11 +13,11 @@
 mod common;
 
 use antipodal::{profile_tangents, Options, Profile, ProfileTangentLine};
-use common::profiles::{assemble, bezier_chain, filleted_polygon};
 use curve::{Affine, JointKind, ParamCurve, SegmentKind, V2};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
 
 fn jet(p: &Profile, i: usize, x: f64, order: usize) -> curve::Jet {
     let c = p.segments()[i].curve();

@@ -7,6 +7,7 @@
 mod common;
 
 use antipodal::{antipodal, Error, Options, ParamCurve, SplineCurve};
+use testkit::stars::Star;
 
 #[test]
 fn random_bsplines_against_oracle() {
@@ -41,20 +42,20 @@ fn stress_random_bsplines() {
 }
 
 fn run(seed: u64, cases: usize, rmin: f64, min_valid: usize, opts: &Options) {
-    let mut rng = common::Lcg(seed);
+    let mut rng = testkit::Lcg(seed);
     let (mut valid, mut skipped, mut pairs, mut infl, mut certified) = (0, 0, 0, 0, 0);
     let mut types = std::collections::BTreeMap::new();
     for case in 0..cases {
         let deg = 3 + (rng.next() * 3.0) as usize;
         let n = 6 + (rng.next() * 15.0) as usize;
         let size = 0.1 + 10.0 * rng.next();
-        let mut pts: Vec<[f64; 2]> = (0..n)
-            .map(|i| {
-                let ang = std::f64::consts::TAU * (i as f64 + 0.8 * (rng.next() - 0.5)) / n as f64;
-                let r = size * (rmin + (1.0 - rmin) * rng.next());
-                [r * ang.cos() + 3.0, r * ang.sin() - 1.0]
-            })
-            .collect();
+        let star = Star {
+            inner: rmin,
+            size,
+            center: [3.0, -1.0],
+            ..Star::default()
+        };
+        let mut pts = star.drawn(n, &mut || rng.next());
         if case % 2 == 1 {
             pts.reverse();
         }

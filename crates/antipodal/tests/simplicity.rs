@@ -5,6 +5,7 @@
 
 use antipodal::{antipodal, Error, Options, PlaneCurve, SplineCurve};
 use proptest::prelude::*;
+use testkit::stars::Star;
 
 /// Points of the polygon with `n` vertices through the curve.
 fn polygon(c: &dyn PlaneCurve, n: usize) -> Vec<[f64; 2]> {
@@ -82,16 +83,7 @@ proptest! {
     ) {
         // A star-shaped polygon whose angles are jittered by up to `jitter` of their spacing:
         // from simple curves (small jitter) to ones folding over themselves.
-        let n = seed.len();
-        let pts: Vec<[f64; 2]> = seed
-            .iter()
-            .enumerate()
-            .map(|(i, &(a, r))| {
-                let ang = std::f64::consts::TAU * (i as f64 + jitter * (a - 0.5)) / n as f64;
-                let r = 0.1 + 0.9 * r;
-                [r * ang.cos(), r * ang.sin()]
-            })
-            .collect();
+        let pts = Star { jitter, inner: 0.1, ..Star::default() }.points(&seed);
         let weights = rational.then(|| w[..pts.len()].to_vec());
         let Ok(c) = SplineCurve::periodic(deg, &pts, weights.as_deref()) else {
             return Ok(());

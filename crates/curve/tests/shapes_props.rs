@@ -8,6 +8,7 @@ use curve::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon, Shape};
 use curve::{rational_derivs, Frame, OnCircle, ParamCurve, PlaneCurve, SplineCurve, V2};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
+use testkit::stars::Star;
 
 /// Point and three derivatives of a homogeneous form in pieces at `u`, by the quotient rule.
 fn form_jet(shape: &Shape, u: f64) -> [V2; 4] {
@@ -146,13 +147,8 @@ proptest! {
         u in 0.0f64..1.0,
     ) {
         let size = 10f64.powf(log_size);
-        let pts: Vec<[f64; 2]> = (0..8)
-            .map(|i| {
-                let a = TAU * (i as f64 + 0.8 * (seed[2 * i] - 0.5)) / 8.0;
-                let r = 0.35 + 0.65 * seed[2 * i + 1];
-                [offset + size * r * a.cos(), offset + size * r * a.sin()]
-            })
-            .collect();
+        let star = Star { size, center: [offset, offset], ..Star::default() };
+        let pts = star.points_from_seed(&seed);
         let c = SplineCurve::periodic(3, &pts, weights.as_deref()).unwrap();
         let exact = c.exact().unwrap();
         let frame = Frame::for_points(&exact.extent());

@@ -4,13 +4,13 @@
 //! bounds keep, on the same 1,000 random regions (the bounds' axis, the costly one, built
 //! once per region for both).
 
-use crate::bench_shapes::rng;
 use crate::candidates::PairSource;
 use crate::test_shapes::{
     merged, random_polygon, random_rounded, same_graph, stands_as_the_bounds, Judge,
 };
 use crate::{MedialAxis, MedialOptions};
 use curve::Region;
+use testkit::rng;
 
 /// Vertices of the same edge within twice the chord tolerance.
 fn near(region: &Region) -> f64 {

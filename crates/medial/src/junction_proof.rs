@@ -246,7 +246,7 @@ fn ulps(v: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bench_shapes::rng;
+    use testkit::rng;
 
     /// The point equidistant from three sites, by bisection-free closed forms: the incircle
     /// of a triangle (three lines), checked against the test with a box that holds it and

@@ -50,10 +50,6 @@ mod stretches;
 mod test_shapes;
 mod traced_axis;
 mod true_sites;
-// (The benchmarks' shapes and random numbers, shared with the unit tests.)
-#[cfg(test)]
-#[path = "../../../benches/common/mod.rs"]
-mod bench_shapes;
 
 pub use error::{Error, Result};
 pub use fit::EdgeSpline;

@@ -889,10 +889,10 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
 #[cfg(test)]
 mod tests {
     use super::LinesAndArcs;
-    use crate::bench_shapes::rng;
     use crate::sites::{Sites, EMPTY_SLACK};
     use crate::test_shapes::random_rounded;
     use curve::V2;
+    use testkit::rng;
 
     /// The closed-form disk test is sound and sharp against the boundary's nearest point (found
     /// on the exact forms): on 200 random rounded stars with round holes, at random points of

@@ -439,10 +439,10 @@ pub(crate) fn on_side(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bench_shapes::rng;
     use crate::candidates::PairSource;
     use crate::test_shapes::{polygon_star, stands_as_the_bounds, star};
     use curve::Region;
+    use testkit::rng;
 
     /// A random star of `n` sides (lines bent at their middles, or Béziers) with up to two
     /// round holes.

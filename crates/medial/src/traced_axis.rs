@@ -391,11 +391,12 @@ impl Tracer<'_, '_> {
 
 #[cfg(test)]
 mod tests {
-    use crate::bench_shapes::{polygon, rng, star_polygon};
     use crate::candidates::PairSource;
     use crate::test_shapes::{random_rounded, same_graph};
     use crate::{axis_of, MedialOptions};
     use curve::{Region, V2};
+    use testkit::outlines::{polygon, star_polygon};
+    use testkit::rng;
 
     /// Case 379 of the traced path's differential test on arcs
     /// ([`crate::differential`]): two arcs meet at a
@@ -442,7 +443,7 @@ mod tests {
     fn the_traced_path_stands_on_gears() {
         let opts = MedialOptions::default();
         for n in [12usize, 25] {
-            let region = crate::bench_shapes::gear(n);
+            let region = testkit::outlines::gear(n);
             let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
             assert!(stands && traced.certified, "gear {n}: {:?}", traced.reason);
             assert_eq!((traced.nodes.len(), traced.edges.len()), (4 * n, 4 * n));

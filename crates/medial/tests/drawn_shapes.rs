@@ -9,8 +9,6 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
-#[path = "../../zeroset/tests/common/boundary_oracle.rs"]
-mod boundary_oracle;
 #[path = "common/graph.rs"]
 mod graph;
 #[path = "common/judge.rs"]

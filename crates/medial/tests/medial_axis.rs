@@ -10,29 +10,21 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
-#[path = "../../../benches/common/mod.rs"]
-mod bench_shapes;
-#[path = "../../zeroset/tests/common/boundary_oracle.rs"]
-mod boundary_oracle;
-#[path = "../../bspline/tests/common/cases.rs"]
-mod cases;
 #[path = "common/graph.rs"]
 mod graph;
-#[path = "../../antipodal/tests/common/profiles.rs"]
-mod profiles;
 #[path = "common/sampled_voronoi.rs"]
 mod sampled_voronoi;
 
-use boundary_oracle::{off_segment, winding, Oracle};
-use cases::cases;
 use curve::{ParamCurve, Profile, Region, Segment};
 use graph::components_and_cycles;
 use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
-use profiles::{assemble, bezier_chain, filleted_polygon};
 use proptest::prelude::*;
 use sampled_voronoi::sampled_medial_points;
 use std::cell::Cell;
 use std::f64::consts::{PI, TAU};
+use testkit::boundary_oracle::{off_segment, winding, Oracle};
+use testkit::cases;
+use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
 
 const CHORD: f64 = 1e-3;
 
@@ -1266,7 +1258,7 @@ fn a_corners_stretch_reaches_its_junction_with_no_vertex_between() {
 /// certified), proven by the curvature falling away from the corner on that side only.
 #[test]
 fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
-    let outline = bench_shapes::bezier_chain(12);
+    let outline = testkit::outlines::bezier_chain(12);
     let region = Region::new(outline.clone(), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
@@ -1297,7 +1289,7 @@ fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
 /// stretch between them was missed (a leaf ended there, uncertified).
 #[test]
 fn three_reflex_corners_on_one_disk_make_a_junction() {
-    let region = Region::new(bench_shapes::bezier_chain(50), vec![]).unwrap();
+    let region = Region::new(testkit::outlines::bezier_chain(50), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
     assert!(a.certified, "{:?}", a.reason);
@@ -1310,7 +1302,7 @@ fn three_reflex_corners_on_one_disk_make_a_junction() {
 /// The corner is now the third site.
 #[test]
 fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
-    let region = Region::new(bench_shapes::bezier_chain(75), vec![]).unwrap();
+    let region = Region::new(testkit::outlines::bezier_chain(75), vec![]).unwrap();
     check(&region).unwrap();
     let a = axis(&region);
     assert!(shaped_like_the_region(&a, 0), "the graph came apart");
@@ -1318,7 +1310,7 @@ fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
     // disk shrinks to the corner's point; that start had been taken for the leaf's end at
     // the segment's centre of curvature (the foot 0.7 of the radius from the corner), and
     // the branch closed on itself, apart from the rest.
-    let region = Region::new(bench_shapes::bezier_chain(100), vec![]).unwrap();
+    let region = Region::new(testkit::outlines::bezier_chain(100), vec![]).unwrap();
     assert!(
         shaped_like_the_region(&axis(&region), 0),
         "the graph came apart"
@@ -1334,7 +1326,7 @@ fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
 #[test]
 fn the_benchmark_chains_are_certified() {
     for n in [25, 75, 100] {
-        let region = Region::new(bench_shapes::bezier_chain(n), vec![]).unwrap();
+        let region = Region::new(testkit::outlines::bezier_chain(n), vec![]).unwrap();
         let a = axis(&region);
         assert!(a.certified, "{n} segments: {:?}", a.reason);
         assert!(shaped_like_the_region(&a, 0), "{n} segments came apart");

@@ -9,10 +9,6 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
-#[path = "../../../benches/common/mod.rs"]
-mod bench_shapes;
-#[path = "../../zeroset/tests/common/boundary_oracle.rs"]
-mod boundary_oracle;
 #[path = "common/graph.rs"]
 mod graph;
 #[path = "common/judge.rs"]
@@ -271,7 +267,7 @@ fn a_seeded_star_under_maps() {
 /// The benchmarks' CAD outline of `n` lines, turned by the rotation (c, s) about the origin
 /// and its coordinates rounded to `grid` (none: as computed).
 fn dense(n: usize, (c, s): (f64, f64), grid: Option<f64>) -> Region {
-    let points: Vec<[f64; 2]> = bench_shapes::dense_outline(n)
+    let points: Vec<[f64; 2]> = testkit::outlines::dense_outline(n)
         .into_iter()
         .map(|p| {
             let q = [c * p[0] - s * p[1], s * p[0] + c * p[1]];
@@ -294,7 +290,7 @@ fn dense_cad_outlines() {
     assert!(base.certified, "{:?}", base.reason);
     let (c, s) = (0.6, 0.8);
     let turned = axis(&dense(1500, (c, s), None));
-    let mut reversed_points = bench_shapes::dense_outline(1500);
+    let mut reversed_points = testkit::outlines::dense_outline(1500);
     reversed_points.reverse();
     let reversed = axis(&Region::new(polygon(&reversed_points), vec![]).unwrap());
     for (name, a, map) in [

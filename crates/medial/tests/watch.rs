@@ -3,9 +3,6 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
-#[path = "../../../benches/common/mod.rs"]
-mod bench_shapes;
-
 use curve::watch::Watch;
 use curve::Region;
 use medial::{medial_axis, Error, MedialOptions};
@@ -14,7 +11,7 @@ use std::time::{Duration, Instant};
 
 #[test]
 fn a_cancelled_axis_stops_soon_and_says_so() {
-    let region = bench_shapes::rounded_outline(1500);
+    let region = testkit::outlines::rounded_outline(1500);
     let watch = Arc::new(Watch::default());
     let canceller = {
         let watch = Arc::clone(&watch);
@@ -45,7 +42,7 @@ fn a_cancelled_axis_stops_soon_and_says_so() {
 /// left to finish alone; unwatched, the same region's axis is certified.
 #[test]
 fn a_cancel_during_the_seed_diagram_is_answered() {
-    let outline = bench_shapes::polygon(&bench_shapes::dense_outline(5000));
+    let outline = testkit::outlines::polygon(&testkit::outlines::dense_outline(5000));
     let region = Region::new(outline, vec![]).unwrap();
     let watch = Arc::new(Watch::default());
     watch.cancel();

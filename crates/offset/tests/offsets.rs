@@ -10,12 +10,7 @@ use medial::{medial_axis, MedialOptions};
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
-#[path = "../../bspline/tests/common/cases.rs"]
-mod cases;
-#[path = "../../antipodal/tests/common/profiles.rs"]
-mod profiles;
-
-use cases::cases;
+use testkit::cases;
 
 fn polygon(c: &[[f64; 2]]) -> Profile {
     let n = c.len();
@@ -682,8 +677,8 @@ mod random_regions {
             distances in proptest::collection::vec(0.02..0.6f64, 1..4),
         ) {
             let n = radii.len();
-            let Some(segs) = profiles::bezier_chain(&radii, &wobble[..n], &smooth[..n]) else { return Ok(()) };
-            let Some(outer) = profiles::assemble(segs, 0, false) else { return Ok(()) };
+            let Some(segs) = testkit::profiles::bezier_chain(&radii, &wobble[..n], &smooth[..n]) else { return Ok(()) };
+            let Some(outer) = testkit::profiles::assemble(segs, 0, false) else { return Ok(()) };
             let Ok(region) = Region::new(outer, round_hole(hole)) else { return Ok(()) };
             let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
             prop_assume!(axis.certified);
@@ -990,13 +985,13 @@ fn a_neck_between_two_round_holes_closes() {
 /// axes: its medial axis has its widest disk inside an edge, and leaves at centres of
 /// curvature.
 fn oval() -> Region {
-    let segs = profiles::bezier_chain(
+    let segs = testkit::profiles::bezier_chain(
         &[2.0, 1.1, 1.9, 1.0],
         &[(0.05, 0.05), (0.05, -0.05), (-0.05, 0.05), (0.05, 0.05)],
         &[true, true, true, true],
     )
     .unwrap();
-    Region::new(profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap()
+    Region::new(testkit::profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap()
 }
 
 /// An axis that is not the region's is an error, not a panic: arrays of unequal lengths, a
@@ -1062,13 +1057,13 @@ fn arms_exactly_twice_the_distance_wide_leave_the_elbow() {
 /// where the moved axis is (always, but far from the origin).
 #[test]
 fn offsets_moved_scaled_or_rotated_are_the_moved_offsets() {
-    let segs = profiles::bezier_chain(
+    let segs = testkit::profiles::bezier_chain(
         &[1.5, 1.2, 1.8, 1.4],
         &[(0.2, -0.1), (-0.1, 0.3), (0.15, 0.1), (-0.2, -0.2)],
         &[true, false, true, false],
     )
     .unwrap();
-    let chain = Region::new(profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap();
+    let chain = Region::new(testkit::profiles::assemble(segs, 0, false).unwrap(), vec![]).unwrap();
     let (c, s) = (0.6f64, 0.8f64); // a rotation with exact sine and cosine
     let maps = [
         curve::Affine([1.0, 0.0, 0.0, 1.0, 1e6, -1e6]),
@@ -1173,8 +1168,9 @@ fn the_seams_either_side_of_a_dip_are_apart() {
     ];
     let mut wobble = [(-0.05, -0.05); 4];
     wobble[2].0 = 0.27650936262867126;
-    let segs = profiles::bezier_chain(&radii, &wobble, &[false, false, false, true]).unwrap();
-    let outer = profiles::assemble(segs, 0, false).unwrap();
+    let segs =
+        testkit::profiles::bezier_chain(&radii, &wobble, &[false, false, false, true]).unwrap();
+    let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
     let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
     let found = offsets_of(&region, &[0.31863438899044777]);
     assert!(found.certified, "{:?}", found.reason);
@@ -1196,8 +1192,8 @@ fn the_seams_either_side_of_a_dip_are_apart() {
 fn a_neck_between_two_vertices_is_pinched_through() {
     let radii = [1.3575459749564318, 1.7484363407870969, 1.891938139778087];
     let wobble = [(0.09469513577707032, -0.05), (-0.05, -0.05), (-0.05, -0.05)];
-    let segs = profiles::bezier_chain(&radii, &wobble, &[false, true, false]).unwrap();
-    let outer = profiles::assemble(segs, 0, false).unwrap();
+    let segs = testkit::profiles::bezier_chain(&radii, &wobble, &[false, true, false]).unwrap();
+    let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
     let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
     let found = offsets_of(&region, &[0.3386013494889568]);
     assert!(found.certified, "{:?}", found.reason);
@@ -1216,8 +1212,9 @@ fn a_neck_between_two_vertices_is_pinched_through() {
 #[test]
 fn a_neck_where_the_axis_curves_round_a_hole_is_seen() {
     let radii = [1.367748594300923, 1.451288655030718, 1.5787204787821496];
-    let segs = profiles::bezier_chain(&radii, &[(-0.05, -0.05); 3], &[false, true, true]).unwrap();
-    let outer = profiles::assemble(segs, 0, false).unwrap();
+    let segs = testkit::profiles::bezier_chain(&radii, &[(-0.05, -0.05); 3], &[false, true, true])
+        .unwrap();
+    let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
     let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
     let found = offsets_of(&region, &[0.5530143102806266]);
     assert!(found.certified, "{:?}", found.reason);

@@ -13,20 +13,13 @@
 
 #![allow(clippy::unwrap_used, missing_docs)]
 
-#[path = "common/boundary_oracle.rs"]
-mod boundary_oracle;
-#[path = "../../bspline/tests/common/cases.rs"]
-mod cases;
-#[path = "../../antipodal/tests/common/profiles.rs"]
-mod profiles;
-
-use boundary_oracle::{off_segment, winding, Oracle};
-use cases::cases;
 use curve::{ParamCurve, Profile};
-use profiles::{assemble, bezier_chain, filleted_polygon};
 use proptest::prelude::*;
 use std::cell::Cell;
 use std::f64::consts::TAU;
+use testkit::boundary_oracle::{off_segment, winding, Oracle};
+use testkit::cases;
+use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
 use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
 
 /// Grid nodes per side.

@@ -2,12 +2,8 @@
 //! changes, then Newton. Deliberately shares no code with the crate's algorithms.
 #![allow(dead_code, unreachable_pub, missing_docs)]
 
-#[path = "../../../bspline/tests/common/cases.rs"]
-mod cases;
-pub mod profiles;
-
 #[allow(unused_imports)] // (each test crate uses what it needs)
-pub use cases::cases;
+pub use testkit::cases;
 
 use antipodal::{Jet, PlaneCurve, V2};
 
@@ -289,18 +285,4 @@ pub fn tangent_residual(c1: &dyn PlaneCurve, c2: &dyn PlaneCurve, s: f64, t: f64
     ta.cross(b.d1.unit())
         .abs()
         .max((r.cross(ta) / r.norm()).abs())
-}
-
-/// A seeded linear congruential generator of uniform draws in `[0, 1)`, for test loops that
-/// keep statistics over their cases.
-pub struct Lcg(pub u64);
-impl Lcg {
-    /// The next draw.
-    pub fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
 }

@@ -2,11 +2,10 @@
 #![allow(dead_code, unreachable_pub)]
 #![allow(clippy::unwrap_used)]
 
-mod cases;
 pub mod exact;
 
 #[allow(unused_imports)] // (each test crate uses what it needs)
-pub use cases::cases;
+pub use testkit::cases;
 
 use bspline::BSpline;
 use proptest::prelude::*;

@@ -1,11 +1,11 @@
 //! The independent oracle the axes of drawn and adversarial shapes are judged by: dense
 //! boundary distances and the sampled Voronoi diagram (see `medial_axis.rs`).
 
-use crate::boundary_oracle::{off_segment, winding, Oracle};
 use crate::graph::components_and_cycles as shape;
 use crate::sampled_voronoi::sampled_medial_points;
 use curve::{Profile, Region};
 use medial::MedialAxis;
+use testkit::boundary_oracle::{off_segment, winding, Oracle};
 
 /// The chord tolerance the axes judged are traced to (relative to the size).
 pub(crate) const CHORD: f64 = 1e-3;

@@ -1,7 +1,6 @@
 //! An oracle of distances to a profile that shares no code with the crates: dense samples
 //! refined by golden-section search on the profile's own evaluation; and plain polygon
-//! helpers. Included by path by the tests that need it.
-#![allow(dead_code, unreachable_pub)]
+//! helpers.
 
 use curve::{ParamCurve, Profile};
 
@@ -20,6 +19,7 @@ pub struct Oracle<'a> {
 }
 
 impl<'a> Oracle<'a> {
+    /// The oracle of `p`: its dense samples, with their reach.
     pub fn new(p: &'a Profile) -> Self {
         let n = p.segments().len();
         // (A closed spline read as one segment has many spans: as densely sampled as so

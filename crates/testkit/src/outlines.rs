@@ -1,23 +1,13 @@
-//! Shapes the benchmarks share (the medial axis tests take the chain of Béziers from here
-//! too, so a fault found on a benchmark shape is tested on that very shape).
-#![allow(dead_code)] // each benchmark takes what it needs
+//! The benchmarks' parts, which the tests run on too (a fault found on a benchmark shape is
+//! tested on that very shape): the pocket, the CAD outline, gears, star polygons and a chain
+//! of Béziers.
+#![allow(clippy::unwrap_used)] // (the parts are valid by construction)
 
 use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
 
-/// Deterministic pseudo-random numbers in [0, 1).
-pub(crate) fn rng(seed: u64) -> impl FnMut() -> f64 {
-    let mut x = seed;
-    move || {
-        x = x
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// A closed chain of `n` cubic Béziers round a star, with corners at every joint.
-pub(crate) fn bezier_chain(n: usize) -> Profile {
-    let mut rnd = rng(7);
+pub fn bezier_chain(n: usize) -> Profile {
+    let mut rnd = crate::rng(7);
     let joints: Vec<V2> = (0..n)
         .map(|i| V2::polar(std::f64::consts::TAU * i as f64 / n as f64) * (1.0 + 0.5 * rnd()))
         .collect();
@@ -41,8 +31,8 @@ pub(crate) fn bezier_chain(n: usize) -> Profile {
 /// The vertices (counter-clockwise) of a star polygon of `n` lines (`n` even): points at
 /// radius 1 and notches at radius 0.5, each radius jittered by up to 10 % so that no four
 /// vertices are cocircular (the regular star's one junction of n edges is a case of its own).
-pub(crate) fn star_polygon(n: usize) -> Vec<[f64; 2]> {
-    let mut rnd = rng(11);
+pub fn star_polygon(n: usize) -> Vec<[f64; 2]> {
+    let mut rnd = crate::rng(11);
     (0..n)
         .map(|i| {
             let r = if i % 2 == 0 { 1.0 } else { 0.5 } * (1.0 + 0.1 * rnd());
@@ -52,7 +42,7 @@ pub(crate) fn star_polygon(n: usize) -> Vec<[f64; 2]> {
 }
 
 /// The polygon through `vertices` as a closed profile of lines.
-pub(crate) fn polygon(vertices: &[[f64; 2]]) -> Profile {
+pub fn polygon(vertices: &[[f64; 2]]) -> Profile {
     let n = vertices.len();
     let sides = (0..n)
         .map(|i| Segment::line(vertices[i], vertices[(i + 1) % n]).unwrap())
@@ -62,7 +52,7 @@ pub(crate) fn polygon(vertices: &[[f64; 2]]) -> Profile {
 
 /// The 10×6 rounded-rectangle pocket (corner radius 1) with a round island of radius 1, as
 /// the tool reads it.
-pub(crate) const POCKET: &str = r#"{"kind":"region",
+pub const POCKET: &str = r#"{"kind":"region",
  "outer":{"kind":"profile","segments":[
   {"kind":"line","from":[1,0],"to":[9,0]},
   {"kind":"arc","center":[9,1],"r":1,"start":-1.5707963267948966,"end":0},
@@ -78,7 +68,7 @@ pub(crate) const POCKET: &str = r#"{"kind":"region",
 /// 100 × 60 plate with corners rounded at radius 10 and a 20 × 15 notch in its top side whose
 /// two inner (reflex) corners are rounded at radius 3, every arc exported as chords and every
 /// straight side as a run of collinear pieces, as DXF polylines come out of CAD programs.
-pub(crate) fn dense_outline(n: usize) -> Vec<[f64; 2]> {
+pub fn dense_outline(n: usize) -> Vec<[f64; 2]> {
     use std::f64::consts::{FRAC_PI_2, PI};
     enum Piece {
         Line([f64; 2], [f64; 2]),
@@ -181,7 +171,7 @@ fn gear_teeth(n: usize) -> (f64, f64, [f64; 3]) {
 /// coordinates rounded to 1e-6: every joint of its straight runs a corner of ~1e-6 rad,
 /// beyond the seed's grid, so its axis is sought from every pair the bounds keep (seconds:
 /// the work that cancellation is tested and measured on).
-pub(crate) fn rounded_outline(n: usize) -> Region {
+pub fn rounded_outline(n: usize) -> Region {
     let (c, s) = (0.3f64.cos(), 0.3f64.sin());
     let points: Vec<[f64; 2]> = dense_outline(n)
         .into_iter()
@@ -193,7 +183,7 @@ pub(crate) fn rounded_outline(n: usize) -> Region {
 /// A gear of `n` teeth about the origin, as a DXF part draws it: per tooth a tip arc
 /// (radius 10), a flank down, a root arc (radius 9.2) and a flank up, the arcs meeting the
 /// flanks at corners; with a round hole of radius 3 at the middle (one whole arc).
-pub(crate) fn gear(n: usize) -> Region {
+pub fn gear(n: usize) -> Region {
     let (pitch, half, [tip, root, hole]) = gear_teeth(n);
     let at = |r: f64, a: f64| (V2::polar(a) * r).arr();
     let mut segments = Vec::with_capacity(4 * n);
@@ -216,7 +206,7 @@ pub(crate) fn gear(n: usize) -> Region {
 
 /// The gear of [`gear`] as closed polylines (its outline counter-clockwise, its hole
 /// clockwise), every arc cut into equal chords within `sag` of it.
-pub(crate) fn gear_chords(n: usize, sag: f64) -> [Vec<[f64; 2]>; 2] {
+pub fn gear_chords(n: usize, sag: f64) -> [Vec<[f64; 2]>; 2] {
     let (pitch, half, [tip, root, hole]) = gear_teeth(n);
     // (The chords of an arc of radius r and angle θ within the sag: θ / (2 acos(1 − sag/r)).)
     // (Both ends of an arc of the outline; a whole circle's start once.)

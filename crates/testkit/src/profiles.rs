@@ -1,6 +1,7 @@
 //! Random profiles for the property tests: polygons with some corners rounded by arcs, and
-//! closed chains of cubic Béziers with corners.
-#![allow(dead_code, unreachable_pub, missing_docs, clippy::unwrap_used)]
+//! closed chains of cubic Béziers with corners; and a profile reassembled from another
+//! segment, or run backwards (the metamorphic tests' moves).
+#![allow(clippy::unwrap_used)] // (the segments given are valid: a failure is the test's own)
 
 use curve::{ParamCurve, SegmentKind, SplineCurve, V2};
 use curve::{Profile, Segment};

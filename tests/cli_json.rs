@@ -37,7 +37,7 @@ fn inflections_known_values() {
     // An S-shaped cubic Bézier, symmetric about its middle: the inflection is at u = 1/2.
     let d = curvekit_json(&["inflections", &fixture("bezier_s.json")]);
     let i = &d["inflections"][0];
-    assert!((num(&i["u"]) - 0.5).abs() < 1e-12);
+    testkit::assert_near!(num(&i["u"]), 0.5, 1e-12);
     assert!((num(&i["p"][0]) - 1.5).abs() < 1e-12 && num(&i["p"][1]).abs() < 1e-12);
     // Limaçon r = a + b cos φ: inflections where a² + 3ab cos φ + 2b² = 0.
     let d = curvekit_json(&["inflections", &fixture("limacon.json")]);
@@ -50,11 +50,8 @@ fn inflections_known_values() {
         .map(|i| num(&i["u"]))
         .collect();
     assert_eq!(us.len(), 2);
-    assert!((us[0] - phi).abs() < 1e-8, "{us:?} vs {phi}");
-    assert!(
-        (us[1] - (std::f64::consts::TAU - phi)).abs() < 1e-8,
-        "{us:?}"
-    );
+    testkit::assert_near!(us[0], phi, 1e-8, "{us:?} vs {phi}");
+    testkit::assert_near!(us[1], std::f64::consts::TAU - phi, 1e-8, "{us:?}");
 }
 
 /// The `inflections` command (certified pipeline) and the inflection list of `antipodal` agree
@@ -79,7 +76,7 @@ fn inflections_agree_with_antipodal() {
         let (ua, ub) = (us(&a), us(&b));
         assert_eq!(ua.len(), ub.len(), "{f}");
         for (x, y) in ua.iter().zip(&ub) {
-            assert!((x - y).abs() < 1e-9, "{f}: {ua:?} vs {ub:?}");
+            testkit::assert_near!(x, y, 1e-9, "{f}: {ua:?} vs {ub:?}");
         }
     }
 }
@@ -99,7 +96,7 @@ fn antipodal_json() {
         assert_point(&p["q"]);
         let (pp, qq) = (&p["p"], &p["q"]);
         let dist = (num(&qq[0]) - num(&pp[0])).hypot(num(&qq[1]) - num(&pp[1]));
-        assert!((dist - num(&p["distance"])).abs() < 1e-9);
+        testkit::assert_near!(dist, num(&p["distance"]), 1e-9);
         assert!(["A", "B", "C", "D", "E"].contains(&p["type"].as_str().unwrap()));
     }
     assert!(d["inflections"].as_array().unwrap().is_empty());
@@ -386,7 +383,7 @@ fn medial_json() {
     let nodes = outside["nodes"].as_array().unwrap();
     assert_eq!(nodes.len(), 1);
     assert_eq!(nodes[0]["kind"], "end");
-    assert!((nodes[0]["radius"].as_f64().unwrap() - 1.2).abs() < 1e-12);
+    testkit::assert_near!(nodes[0]["radius"].as_f64().unwrap(), 1.2, 1e-12);
     // A drawing's outlines nested inside each other make a region: the glyph's bowl is a
     // hole, so the axis has one cycle.
     let glyph = curvekit_json(&["medial", &fixture("drawing-glyph-d.svg")]);

@@ -76,7 +76,7 @@ fn the_depth_scales_with_the_angle() {
     let ratio = 45f64.to_radians().tan() / 30f64.to_radians().tan();
     for (w, n) in wide.iter().zip(&narrow) {
         assert_eq!([w[0], w[1]], [n[0], n[1]]);
-        assert!((n[2] - w[2] * ratio).abs() <= 1e-12 * w[2].abs().max(1.0));
+        testkit::assert_near!(n[2], w[2] * ratio, 1e-12 * w[2].abs().max(1.0));
     }
 }
 

@@ -115,7 +115,7 @@ proptest! {
             if band(p.s, p.t) { continue; }
             prop_assert!(antipodal_solutions.iter().any(|&a| same(a, p)),
                 "pair {p:?} is not a solution of the system {antipodal_solutions:?}");
-            prop_assert!((p.distance - distance(&curve, p.s, p.t)).abs() <= 1e-12 * size);
+            testkit::prop_assert_near!(p.distance, distance(&curve, p.s, p.t), 1e-12 * size);
         }
     }
 

@@ -186,8 +186,10 @@ fn medial_feet_are_in_each_boundarys_own_parameter() {
                         "{path}: foot {u} outside [{lo}, {hi}]"
                     );
                     let d = dist(eval(b, u), pt(xy));
-                    assert!(
-                        (d - num(r)).abs() <= 1e-7 * size,
+                    testkit::assert_near!(
+                        d,
+                        num(r),
+                        1e-7 * size,
                         "{path}: foot {u} is {d} from its vertex, radius {}",
                         num(r)
                     );
@@ -214,7 +216,7 @@ fn bisectors_and_tangents_of_arcs_are_in_the_arcs_angle() {
         for (tr, xy) in arr(&br["tr"]).iter().zip(arr(&br["xy"])) {
             let (p, q) = (eval(&arc, num(&tr[0])), eval(&other, num(&tr[1])));
             let (dp, dq) = (dist(p, pt(xy)), dist(q, pt(xy)));
-            assert!((dp - dq).abs() <= 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
+            testkit::assert_near!(dp, dq, 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
             seen += 1;
         }
     }
@@ -228,7 +230,7 @@ fn bisectors_and_tangents_of_arcs_are_in_the_arcs_angle() {
         for (tr, xy) in arr(&br["tr"]).iter().zip(arr(&br["xy"])) {
             let (p, q) = (eval(&limacon, num(&tr[0])), eval(&limacon, num(&tr[1])));
             let (dp, dq) = (dist(p, pt(xy)), dist(q, pt(xy)));
-            assert!((dp - dq).abs() <= 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
+            testkit::assert_near!(dp, dq, 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
             seen += 1;
         }
     }
@@ -302,7 +304,7 @@ fn a_corner_at_a_knot_of_full_multiplicity_is_listed() {
     // (The legs either side of the knot: (3, 0) − (2, 0.3) and (3 + c, s) − (3, 0).)
     let (din, dout) = ([1.0, -0.3], [c, s]);
     let want = (din[0] * dout[1] - din[1] * dout[0]).atan2(din[0] * dout[0] + din[1] * dout[1]);
-    assert!((num(&corners[0]["turn"]) - want).abs() < 1e-12, "{found}");
+    testkit::assert_near!(num(&corners[0]["turn"]), want, 1e-12, "{found}");
     check_one_curve(&sharp, &path);
     let straight = json!({"kind":"bspline","degree":3,"knots":knots,
         "points":[[0, 0], [1, 0.3], [2, 0.3], [3, 0.0], [4, -0.3], [5, 0], [6, 0.5]]});

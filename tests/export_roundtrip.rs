@@ -180,8 +180,8 @@ fn each_distance_is_a_layer_of_its_pieces() {
                 (dxf::entities::EntityType::Arc(a), OffsetSegment::Arc { r, start, end, .. }) => {
                     assert!(a.end_angle != a.start_angle);
                     let sweep = (a.end_angle - a.start_angle).rem_euclid(360.0);
-                    assert!((sweep - (end - start).abs().to_degrees()).abs() < 1e-9);
-                    assert!((a.radius - r).abs() <= 1e-12);
+                    testkit::assert_near!(sweep, (end - start).abs().to_degrees(), 1e-9);
+                    testkit::assert_near!(a.radius, r, 1e-12);
                 }
                 (dxf::entities::EntityType::Circle(_), OffsetSegment::Arc { .. }) => {}
                 (

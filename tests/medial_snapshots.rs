@@ -181,10 +181,7 @@ fn every_end_is_a_centre_of_curvature_at_an_extremum() {
                 off <= 1e-6 * size,
                 "{name}: end {p:?} is {off} from the evolute"
             );
-            assert!(
-                (rc - r).abs() <= 1e-6 * size,
-                "{name}: end {p:?} radius {r}, {rc}"
-            );
+            testkit::assert_near!(rc, r, 1e-6 * size, "{name}: end {p:?} radius {r}, {rc}");
             let same = |j: usize| samples.get(j).filter(|s| s.3 .0 == id.0 && s.3 .1 == id.1);
             let turns = (at.saturating_sub(3)..at + 3).any(|j| match (same(j), same(j + 1)) {
                 (Some(a), Some(b)) => a.2.signum() != b.2.signum(),

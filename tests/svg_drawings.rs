@@ -398,8 +398,10 @@ fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
         assert!(r.certified, "{:?}", r.reason);
         let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
         let diameter = sampled_diameter(&p);
-        assert!(
-            (longest - diameter).abs() <= 1e-9 * diameter,
+        testkit::assert_near!(
+            longest,
+            diameter,
+            1e-9 * diameter,
             "{longest} vs {diameter}"
         );
         let top_tip = r
@@ -428,8 +430,10 @@ fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
         assert!(r.certified, "{transform}: {:?}", r.reason);
         let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
         let diameter = sampled_diameter(&moved);
-        assert!(
-            (longest - diameter).abs() <= 1e-9 * diameter,
+        testkit::assert_near!(
+            longest,
+            diameter,
+            1e-9 * diameter,
             "{transform}: {longest} vs {diameter}"
         );
     }
@@ -449,8 +453,10 @@ fn a_joints_leaf_does_not_end_at_a_far_centre_of_curvature() {
     let size = region.size();
     for n in &axis.nodes {
         let d = region.outer().nearest(n.xy, 0.0).distance;
-        assert!(
-            (d - n.radius).abs() <= 1e-6 * size,
+        testkit::assert_near!(
+            d,
+            n.radius,
+            1e-6 * size,
             "node at {:?}: radius {}, distance {d}",
             n.xy,
             n.radius

@@ -204,7 +204,7 @@ fn arcs_crossing_zero_degrees_run_counterclockwise_through_it() {
     assert!(near(mid, V2::new(r, 0.0), 1e-14), "{mid:?}");
     for k in 0..=32 {
         let q = a.jet(k as f64 / 32.0).p;
-        assert!((q.norm() - r).abs() < 1e-14);
+        testkit::assert_near!(q.norm(), r, 1e-14);
         assert!(q.x > 0.99, "the arc left the 300°..60° range: {q:?}");
     }
     // 350° → 10°: a 20° arc through 0°, not a 340° one.
@@ -229,7 +229,7 @@ fn a_circle_is_a_closed_profile_by_itself() {
     assert!(p.is_closed());
     assert!(p.orientation() > 0.0);
     for q in samples(&p, 64) {
-        assert!(((q - V2::new(3.0, -1.0)).norm() - 2.5).abs() < 1e-14);
+        testkit::assert_near!((q - V2::new(3.0, -1.0)).norm(), 2.5, 1e-14);
     }
     assert_eq!(p.corners().count(), 0);
 }
@@ -438,7 +438,7 @@ fn bulges_make_arcs_through_their_middle() {
         let (center, r, middle) = bulge_circle(from, to, b);
         for k in 0..=32 {
             let q = seg.jet(k as f64 / 32.0).p;
-            assert!(((q - center).norm() - r).abs() < 1e-14, "{q:?}");
+            testkit::assert_near!((q - center).norm(), r, 1e-14, "{q:?}");
         }
         assert!(distance_to(seg, middle) < 1e-13, "vertex {i}");
     }
@@ -575,7 +575,7 @@ fn assert_quarter_circle(p: &Profile) {
     for k in 0..=16 {
         let q = s.jet(a + (b - a) * k as f64 / 16.0).p;
         // (Within the rounding of the weight √2/2 to 12 decimals by the crate's writer.)
-        assert!((q.norm() - 2.0).abs() < 1e-11, "off the circle: {q:?}");
+        testkit::assert_near!(q.norm(), 2.0, 1e-11, "off the circle: {q:?}");
     }
     // Without the weights the middle would be at (1.5, 1.5), 2.12 from the origin.
     let mid = s.jet(0.5 * (a + b)).p;
@@ -1146,7 +1146,7 @@ proptest! {
             let (center, middle) = (world(center), world(middle));
             for k in 0..=16 {
                 let x = seg.jet(k as f64 / 16.0).p;
-                prop_assert!(((x - center).norm() - r).abs() <= 1e-11 * size);
+                testkit::prop_assert_near!((x - center).norm(), r, 1e-11 * size);
             }
             prop_assert!(distance_to(seg, middle) <= 1e-11 * size, "bulge {} of {}", i, b);
         }

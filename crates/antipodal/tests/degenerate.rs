@@ -59,7 +59,7 @@ fn stadium_has_one_pair_and_one_family() {
     assert_eq!(r.pairs.len(), 1, "{:?}", r.pairs);
     let p = r.pairs[0];
     assert!((p.s - 2.0).abs() < 1e-9 && (p.t - 5.0).abs() < 1e-9);
-    assert!((p.distance - 6.0).abs() < 1e-12);
+    testkit::assert_near!(p.distance, 6.0, 1e-12);
     assert_eq!(r.families.len(), 1, "{:?}", r.families);
     let f = r.families[0];
     assert!(
@@ -87,10 +87,7 @@ fn circles_are_families() {
             "{res:?}"
         );
         let f = res.families[0];
-        assert!(
-            ((f.s[1] - f.s[0]).rem_euclid(4.0) - 2.0).abs() < 1e-9,
-            "{f:?}"
-        );
+        testkit::assert_near!((f.s[1] - f.s[0]).rem_euclid(4.0), 2.0, 1e-9, "{f:?}");
         let res = antipodal(&Circle::new(r, [2.0, -1.0]).unwrap(), &Options::default()).unwrap();
         assert!(res.pairs.is_empty());
         assert_eq!(res.families.len(), 1);
@@ -191,7 +188,7 @@ fn open_curves_have_inflections_and_tangents() {
     .unwrap();
     let r = inflections(&c, &Options::default()).unwrap();
     assert_eq!(r.inflections.len(), 1);
-    assert!((r.inflections[0].u - 0.5).abs() < 1e-12);
+    testkit::assert_near!(r.inflections[0].u, 0.5, 1e-12);
     assert!(r.inflections[0].p[0].abs() < 1e-12);
     assert!(r.certified);
     // Two unit circles side by side: four common tangents.

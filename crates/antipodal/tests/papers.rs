@@ -179,7 +179,7 @@ fn circle_is_one_family_not_a_flood() {
         .iter()
         .map(|f| 2.0 * (f.s[1] - f.s[0]).rem_euclid(per))
         .sum();
-    assert!((covered - per).abs() < 1e-6, "{:?}", r.families);
+    testkit::assert_near!(covered, per, 1e-6, "{:?}", r.families);
 }
 
 /// Residual bound for a pair reported at floating-point parameters: 1e-12 plus what one unit

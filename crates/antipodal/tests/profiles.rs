@@ -118,7 +118,7 @@ proptest! {
             AT_JOINTS.fetch_add(1, Ordering::Relaxed);
         }
         for (f, w) in r.inflections.iter().zip(&want) {
-            prop_assert!((f.u - w).abs() <= 2e-3, "{} against {}", f.u, w);
+            testkit::prop_assert_near!(f.u, w, 2e-3, "{} against {}", f.u, w);
             let on = p.jet(f.u).p;
             prop_assert!((on.x - f.p[0]).abs() < 1e-12 && (on.y - f.p[1]).abs() < 1e-12);
         }
@@ -205,7 +205,7 @@ fn corners_lines_and_bad_segments() {
     assert!(r.inflections.is_empty() && r.certified);
     assert_eq!(r.corners.len(), 2);
     assert!(r.corners.iter().all(|c| c.kind == CornerKind::Convex));
-    assert!((r.corners[0].turn - PI / 2.0).abs() < 1e-12);
+    testkit::assert_near!(r.corners[0].turn, PI / 2.0, 1e-12);
     // A cusp inside a Bézier segment is refused, naming the segment.
     let cusp = SplineCurve::clamped(
         3,

@@ -23,8 +23,10 @@ fn assert_derivs_match(f: &BSpline, n: usize, tol: f64) {
         f.eval_derivs(u, 3, &mut a[..len]);
         pw.eval_derivs(u, 3, &mut b[..len]);
         for j in 0..len {
-            assert!(
-                (a[j] - b[j]).abs() <= tol * (1.0 + a[j].abs()),
+            testkit::assert_near!(
+                a[j],
+                b[j],
+                tol * (1.0 + a[j].abs()),
                 "degree {} u {u} j {j}: {a:?} {b:?}",
                 f.degree()
             );
@@ -55,8 +57,8 @@ proptest! {
             f.eval_derivs(x, 1, &mut want[..2 * dim]);
             for c in 0..dim {
                 let (wv, wg) = (want[c], want[dim + c]);
-                prop_assert!((v[c] - wv).abs() <= 1e-11 * (1.0 + wv.abs()), "value {c} at {x}: {} vs {wv}", v[c]);
-                prop_assert!((g[c] - wg).abs() <= 1e-9 * (1.0 + wg.abs()), "slope {c} at {x}: {} vs {wg}", g[c]);
+                testkit::prop_assert_near!(v[c], wv, 1e-11 * (1.0 + wv.abs()), "value {c} at {x}: {} vs {wv}", v[c]);
+                testkit::prop_assert_near!(g[c], wg, 1e-9 * (1.0 + wg.abs()), "slope {c} at {x}: {} vs {wg}", g[c]);
             }
         }
     }
@@ -111,10 +113,10 @@ fn restriction_matches_bspline() {
                 v[0] - 0.5 * v[1]
             };
             let n = c.len() - 1;
-            assert!((c[0] - g(x0)).abs() < 1e-12);
+            testkit::assert_near!(c[0], g(x0), 1e-12);
             // Evaluate the right end from the left (c[n] is the left limit at x1).
             let eps = 1e-9;
-            assert!((c[n] - g(x1 - eps)).abs() < 1e-7, "{lo} {hi} {x1}");
+            testkit::assert_near!(c[n], g(x1 - eps), 1e-7, "{lo} {hi} {x1}");
         }
     }
 }

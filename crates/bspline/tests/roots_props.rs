@@ -40,7 +40,7 @@ proptest! {
         prop_assert_eq!(found.len(), rs.len(), "{:?} vs {:?}", found, rs);
         for (r, x) in found.iter().zip(&rs) {
             prop_assert!(r.certified && r.kind == RootKind::Simple);
-            prop_assert!((r.u - x).abs() <= 1e-9, "{} vs {}", r.u, x);
+            testkit::prop_assert_near!(r.u, x, 1e-9, "{} vs {}", r.u, x);
             prop_assert!(covers(r, *x, 1e-10));
         }
     }
@@ -208,12 +208,7 @@ fn degree_15_bezier_with_15_roots() {
         let mut d = [0.0; 2];
         f.eval_derivs(*x, 1, &mut d);
         let limit = 1e-13 + 64.0 * 16.0 * f64::EPSILON * scale / d[1].abs();
-        assert!(
-            (r.u - x).abs() <= limit,
-            "{} vs {} (limit {limit:e})",
-            r.u,
-            x
-        );
+        testkit::assert_near!(r.u, x, limit, "{} vs {} (limit {limit:e})", r.u, x);
     }
 }
 

@@ -57,9 +57,9 @@ proptest! {
                 let fd2 = (2.0 * p(-3.0)[k] - 27.0 * p(-2.0)[k] + 270.0 * p(-1.0)[k] - 490.0 * p(0.0)[k] + 270.0 * p(1.0)[k] - 27.0 * p(2.0)[k] + 2.0 * p(3.0)[k]) / (180.0 * h * h);
                 let s1 = d[1][0].abs().max(d[1][1].abs()).max(1.0);
                 let s2 = d[2][0].abs().max(d[2][1].abs()).max(s1 / (w[1] - w[0]));
-                prop_assert!((d[0][k] - p(0.0)[k]).abs() <= 1e-12 * d[0][k].abs().max(1.0));
-                prop_assert!((d[1][k] - fd1).abs() <= 1e-6 * s1, "d1 {} vs {}", d[1][k], fd1);
-                prop_assert!((d[2][k] - fd2).abs() <= 1e-4 * s2, "d2 {} vs {}", d[2][k], fd2);
+                testkit::prop_assert_near!(d[0][k], p(0.0)[k], 1e-12 * d[0][k].abs().max(1.0));
+                testkit::prop_assert_near!(d[1][k], fd1, 1e-6 * s1, "d1 {} vs {}", d[1][k], fd1);
+                testkit::prop_assert_near!(d[2][k], fd2, 1e-4 * s2, "d2 {} vs {}", d[2][k], fd2);
             }
         }
     }
@@ -75,8 +75,8 @@ proptest! {
         for u in interior_params(&a) {
             let (p, q) = (a.point(u), b.point(u));
             let scale = p[0].hypot(p[1]).max(1.0) * q[0].hypot(q[1]).max(1.0);
-            prop_assert!((dot.point(u)[0] - (p[0] * q[0] + p[1] * q[1])).abs() <= 1e-11 * scale);
-            prop_assert!((cross.point(u)[0] - (p[0] * q[1] - p[1] * q[0])).abs() <= 1e-11 * scale);
+            testkit::prop_assert_near!(dot.point(u)[0], p[0] * q[0] + p[1] * q[1], 1e-11 * scale);
+            testkit::prop_assert_near!(cross.point(u)[0], p[0] * q[1] - p[1] * q[0], 1e-11 * scale);
             let m = scaled.point(u);
             prop_assert!((m[0] - p[0] * q[0]).abs() <= 1e-11 * scale && (m[1] - p[0] * q[1]).abs() <= 1e-11 * scale);
         }
@@ -93,7 +93,7 @@ proptest! {
             let w = if c.is_rational() { weight(&c, u).powi(3) } else { 1.0 };
             let want = w * cross;
             let scale = (d1[0].hypot(d1[1]) * d2[0].hypot(d2[1]) * w).max(1e-300);
-            prop_assert!((k.eval_scalar(u) - want).abs() <= 1e-10 * scale, "{} vs {}", k.eval_scalar(u), want);
+            testkit::prop_assert_near!(k.eval_scalar(u), want, 1e-10 * scale, "{} vs {}", k.eval_scalar(u), want);
         }
     }
 
@@ -113,9 +113,9 @@ proptest! {
             let want_od = ((p[0] - q[0]) * v[0] + (p[1] - q[1]) * v[1]) * wo;
             let sd = d1[0].hypot(d1[1]) * wd;
             let sp = (p[0] - q[0]).hypot(p[1] - q[1]).max(1.0);
-            prop_assert!((td.eval_scalar(u) - want_td).abs() <= 1e-10 * sd.max(1e-300));
-            prop_assert!((tf.eval_scalar(u) - want_tf).abs() <= 1e-10 * (sd * sp).max(1e-300));
-            prop_assert!((od.eval_scalar(u) - want_od).abs() <= 1e-10 * (sp * wo));
+            testkit::prop_assert_near!(td.eval_scalar(u), want_td, 1e-10 * sd.max(1e-300));
+            testkit::prop_assert_near!(tf.eval_scalar(u), want_tf, 1e-10 * (sd * sp).max(1e-300));
+            testkit::prop_assert_near!(od.eval_scalar(u), want_od, 1e-10 * (sp * wo));
         }
     }
 }

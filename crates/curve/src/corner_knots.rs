@@ -184,7 +184,7 @@ mod tests {
         assert_eq!(sharp.segments().len(), 2);
         let corner: Vec<_> = sharp.corners().collect();
         assert_eq!(corner.len(), 1);
-        assert!((corner[0].turn - turn).abs() < 1e-12, "{corner:?}");
+        testkit::assert_near!(corner[0].turn, turn, 1e-12, "{corner:?}");
         assert_eq!(sharp.document_param(corner[0].u), 0.5);
         assert_eq!(sharp.document_segment(1), 0);
         let straight = Profile::new(vec![spline(3, &legs(0.0), Some(knots))], None).unwrap();
@@ -224,7 +224,7 @@ mod tests {
             let u = p.internal_param(d);
             let size = 10.0;
             prop_assert!((p.jet(u).p - c.jet(d).p).norm() <= 1e-12 * size);
-            prop_assert!((p.document_param(u) - d).abs() <= 1e-14);
+            testkit::prop_assert_near!(p.document_param(u), d, 1e-14);
         }
     }
 }

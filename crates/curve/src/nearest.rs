@@ -203,13 +203,9 @@ mod tests {
             let x = [-1.0 + 6.0 * rnd(), -1.0 + 4.0 * rnd()];
             let n = p.nearest(x, 0.0);
             let want = exact(x);
-            assert!(
-                (n.distance - want).abs() < 1e-12,
-                "{x:?}: {} vs {want}",
-                n.distance
-            );
+            testkit::assert_near!(n.distance, want, 1e-12, "{x:?}: {} vs {want}", n.distance);
             let q = p.jet_to(n.u, 0).p;
-            assert!(((q.x - x[0]).hypot(q.y - x[1]) - n.distance).abs() < 1e-12);
+            testkit::assert_near!((q.x - x[0]).hypot(q.y - x[1]), n.distance, 1e-12);
         }
     }
 }

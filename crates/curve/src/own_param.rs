@@ -146,7 +146,7 @@ mod tests {
             let want = start + w * sweep;
             let diff = (at - want).rem_euclid(TAU);
             prop_assert!(diff.min(TAU - diff) <= 1e-13 * (1.0 + start.abs()), "{at} vs {want}");
-            prop_assert!((map.form(w, dom) - v).abs() <= 1e-13, "{} vs {v}", map.form(w, dom));
+            testkit::prop_assert_near!(map.form(w, dom), v, 1e-13, "{} vs {v}", map.form(w, dom));
         }
     }
 
@@ -159,10 +159,10 @@ mod tests {
                 let phi = map.own(u, (0.0, 4.0));
                 if let Angle::Circle = angle_kind {
                     let want = if u >= 4.0 { TAU } else { angle(u)[0] };
-                    assert!((phi - want).abs() < 1e-15, "{u}");
+                    testkit::assert_near!(phi, want, 1e-15, "{u}");
                 }
                 let back = map.form(phi, (0.0, 4.0));
-                assert!((back - u).abs() < 1e-12, "{u}: {back}");
+                testkit::assert_near!(back, u, 1e-12, "{u}: {back}");
             }
         }
     }

@@ -329,7 +329,7 @@ mod tests {
             let size = r + cx.abs().max(cy.abs());
             for i in 0..=64 {
                 let j = a.curve().jet(i as f64 / 64.0);
-                prop_assert!(((j.p - c).norm() - r).abs() <= 1e-13 * size);
+                testkit::prop_assert_near!((j.p - c).norm(), r, 1e-13 * size);
                 // Counterclockwise: the tangent turns left of the radius.
                 prop_assert!((j.p - c).cross(j.d1) * sweep > 0.0);
             }

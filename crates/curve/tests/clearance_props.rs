@@ -310,7 +310,7 @@ fn check_disks(
                 decided += 1;
                 let q = p.jet_to(u, 0).p;
                 let actual = (q.x - x[0]).hypot(q.y - x[1]);
-                prop_assert!((actual - distance).abs() <= rounding + 1e-12 * size);
+                testkit::prop_assert_near!(actual, distance, rounding + 1e-12 * size);
                 prop_assert!(actual < d + gap + rounding);
             }
             Clearance::Unresolved => prop_assert!(gap < 1e3 * rounding, "undecided at {x:?}"),

@@ -172,7 +172,7 @@ mod tests {
                         data[(i + 2).min(n - 1)],
                     ));
                 assert!(d <= tol, "{s}: {d}");
-                assert!((p[0].hypot(p[1]) - 2.0).abs() <= tol, "{s}: {p:?}");
+                testkit::assert_near!(p[0].hypot(p[1]), 2.0, tol, "{s}: {p:?}");
             }
         }
     }

@@ -290,10 +290,10 @@ mod tests {
             if let Some(rho) = b.radius_on_ray(foot, normal) {
                 let x = foot + normal * rho;
                 let scale = 1.0 + rho + x.norm();
-                proptest::prop_assert!((b.distance(x).0 - rho).abs() <= 1e-9 * scale);
+                testkit::prop_assert_near!(b.distance(x).0, rho, 1e-9 * scale);
                 // (On a circle's near side of its centre, the foot's own distance is ρ too.)
                 if a.param_room(x) > 1e-6 && !matches!(a, Shape::Round { side, radius, .. } if side < 0.0 && rho > radius) {
-                    proptest::prop_assert!((a.distance(x).0 - rho).abs() <= 1e-9 * scale);
+                    testkit::prop_assert_near!(a.distance(x).0, rho, 1e-9 * scale);
                     let back = a.ray(a.param_of(x)).0;
                     if !matches!(a, Shape::Line(_)) && a.param_room(x) > 1e-3 {
                         proptest::prop_assert!((back - foot).norm() <= 1e-8 * scale);
@@ -370,13 +370,13 @@ mod tests {
         for (start, end) in [(0.3, 2.0), (2.0, 0.3), (-1.0, 4.5), (1.0, 1.0 - TAU)] {
             let (profile, a) = arc_profile([1.0, -2.0], 1.5, start, end);
             let sweep = f64::abs(end - start);
-            assert!((a.sweep() - sweep).abs() < 1e-12);
+            testkit::assert_near!(a.sweep(), sweep, 1e-12);
             let at = |angle: f64| a.point_at(angle);
             assert!((at(0.0) - profile.segments()[0].start()).norm() < 1e-12);
             assert!((at(sweep) - profile.segments()[0].end()).norm() < 1e-12);
             for share in [0.1, 0.5, 0.9] {
                 let x = at(share * sweep);
-                assert!((a.angle_from_start(x) - share * sweep).abs() < 1e-12);
+                testkit::assert_near!(a.angle_from_start(x), share * sweep, 1e-12);
                 // The share is the profile parameter's: the profile's point there is x.
                 let u = a.share_at(share * sweep);
                 assert!((profile.jet_on(0, u, 0).p - x).norm() < 1e-12, "{share}");

@@ -123,7 +123,7 @@ fn a_disk_has_one_node_at_its_centre() {
     let n = a.nodes[0];
     assert_eq!(n.kind, NodeKind::End);
     assert!((n.xy[0] - 1.0).abs() < 1e-12 && (n.xy[1] + 2.0).abs() < 1e-12);
-    assert!((n.radius - 2.0).abs() < 1e-12);
+    testkit::assert_near!(n.radius, 2.0, 1e-12);
 }
 
 #[test]
@@ -172,7 +172,7 @@ fn an_annulus_is_one_cycle_through_a_joint() {
                 (d + PI).rem_euclid(TAU) - PI
             })
             .sum();
-    assert!((turn.abs() - TAU).abs() < 1e-9, "{turn}");
+    testkit::assert_near!(turn.abs(), TAU, 1e-9, "{turn}");
 }
 
 /// A four-centre oval (arcs of radius 1 and 3.5 joined tangentially: the curvature jumps at
@@ -195,11 +195,11 @@ fn a_four_centre_oval_has_one_edge_between_its_small_centres() {
             (n.xy[0].abs() - 2.0).abs() < 1e-9 && n.xy[1].abs() < 1e-9,
             "{n:?}"
         );
-        assert!((n.radius - 1.0).abs() < 1e-9);
+        testkit::assert_near!(n.radius, 1.0, 1e-9);
     }
     for (p, r) in a.edges[0].xy.iter().zip(&a.edges[0].radius) {
         assert!(p[1].abs() < 1e-9, "{p:?}");
-        assert!((r - (3.5 - p[0].hypot(1.5))).abs() < 1e-9, "{p:?} {r}");
+        testkit::assert_near!(r, 3.5 - p[0].hypot(1.5), 1e-9, "{p:?} {r}");
     }
 }
 
@@ -258,13 +258,13 @@ fn the_exterior_of_an_l_shaped_room_is_the_notch_diagonal() {
     );
     let e = &a.edges[0];
     for (x, r) in e.xy.iter().zip(&e.radius) {
-        assert!((x[0] - x[1]).abs() < 1e-12, "{x:?}");
+        testkit::assert_near!(x[0], x[1], 1e-12, "{x:?}");
         let want = if x[0] <= 4.0 {
             x[0] - 2.0
         } else {
             (x[0] - 4.0).hypot(x[1] - 2.0)
         };
-        assert!((r - want).abs() < 1e-12, "{x:?}: {r} against {want}");
+        testkit::assert_near!(r, want, 1e-12, "{x:?}: {r} against {want}");
     }
     let ends = [e.xy[0], e.xy[e.xy.len() - 1]];
     assert!(ends.contains(&[2.0, 2.0]));
@@ -297,7 +297,7 @@ fn an_l_shaped_room_has_its_reflex_corner_in_the_axis() {
     for (p, r) in arc.xy.iter().zip(&arc.radius) {
         let to_corner = (p[0] - 2.0).hypot(p[1] - 2.0);
         let to_side = p[0].min(p[1]);
-        assert!((to_corner.min(to_side) - r).abs() < 1e-9 * 4.0, "{p:?} {r}");
+        testkit::assert_near!(to_corner.min(to_side), r, 1e-9 * 4.0, "{p:?} {r}");
     }
 }
 
@@ -440,15 +440,7 @@ fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseErr
     for e in &a.edges {
         for (k, (&x, &r)) in e.xy.iter().zip(&e.radius).enumerate() {
             let (d, _) = b.nearest(x);
-            prop_assert!(
-                (d - r).abs() <= slack,
-                "exterior vertex {x:?}: radius {r}, distance {d}, vertex {k} of {}, nodes {:?} {:?}, feet {:?} on {:?}",
-                e.xy.len(),
-                a.nodes[e.from],
-                a.nodes[e.to],
-                e.feet[k],
-                e.boundary[k]
-            );
+            testkit::prop_assert_near!(d, r, slack, "exterior vertex {x:?}: radius {r}, distance {d}, vertex {k} of {}, nodes {:?} {:?}, feet {:?} on {:?}", e.xy.len(), a.nodes[e.from], a.nodes[e.to], e.feet[k], e.boundary[k]);
             // (Beside a near-cusp the needle's crack is narrower than the oracle's polygon
             // resolves.)
             prop_assert!(
@@ -465,11 +457,7 @@ fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseErr
             for s in 0..2 {
                 let f = b.profiles[e.boundary[k][s]].jet(e.feet[k][s]).p.arr();
                 let to_foot = (x[0] - f[0]).hypot(x[1] - f[1]);
-                prop_assert!(
-                    (to_foot - r).abs() <= slack,
-                    "exterior vertex {x:?}: foot {s} at {to_foot}, radius {r}, vertex {k} of {}, nodes {:?} {:?}, feet {:?}",
-                    e.xy.len(), a.nodes[e.from], a.nodes[e.to], e.feet[k]
-                );
+                testkit::prop_assert_near!(to_foot, r, slack, "exterior vertex {x:?}: foot {s} at {to_foot}, radius {r}, vertex {k} of {}, nodes {:?} {:?}, feet {:?}", e.xy.len(), a.nodes[e.from], a.nodes[e.to], e.feet[k]);
             }
         }
     }
@@ -513,18 +501,14 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
         for k in 0..e.xy.len() {
             let (x, r) = (e.xy[k], e.radius[k]);
             let (d, _) = b.nearest(x);
-            prop_assert!(
-                (d - r).abs() <= 1e-9 * size,
-                "vertex {x:?}: radius {r}, distance {d}, vertex {k} of {} (size {size}, feet {:?} on {:?})",
-                e.xy.len(),
-                e.feet[k],
-                e.boundary[k]
-            );
+            testkit::prop_assert_near!(d, r, 1e-9 * size, "vertex {x:?}: radius {r}, distance {d}, vertex {k} of {} (size {size}, feet {:?} on {:?})", e.xy.len(), e.feet[k], e.boundary[k]);
             for s in 0..2 {
                 let f = b.profiles[e.boundary[k][s]].jet(e.feet[k][s]).p.arr();
                 let to_foot = (x[0] - f[0]).hypot(x[1] - f[1]);
-                prop_assert!(
-                    (to_foot - r).abs() <= 1e-9 * size,
+                testkit::prop_assert_near!(
+                    to_foot,
+                    r,
+                    1e-9 * size,
                     "vertex {x:?}: foot {s} at {to_foot}, radius {r}"
                 );
             }
@@ -586,8 +570,10 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
                 .map(|j| u - reach + 2.0 * reach * j as f64 / steps as f64)
                 .max_by(|x, y| kappa(*x).total_cmp(&kappa(*y)))
                 .unwrap();
-            prop_assert!(
-                (top - u).abs() <= 2.0 * reach / steps as f64 + 1e-9,
+            testkit::prop_assert_near!(
+                top,
+                u,
+                2.0 * reach / steps as f64 + 1e-9,
                 "certified end {node:?} at foot {u}: the curvature peaks at {top}"
             );
         }
@@ -847,11 +833,7 @@ fn a_leaf_at_a_smooth_joint_ends_at_the_sharper_sides_centre() {
     let a = axis(&region);
     let ends: Vec<_> = a.nodes.iter().filter(|n| n.kind == NodeKind::End).collect();
     assert_eq!(ends.len(), 1, "{:?}", a.nodes);
-    assert!(
-        (ends[0].radius - sharper).abs() < 1e-9,
-        "{:?} {sharper}",
-        ends[0]
-    );
+    testkit::assert_near!(ends[0].radius, sharper, 1e-9, "{:?} {sharper}", ends[0]);
 }
 
 /// CI's random case: a hole's bisector with a cubic runs past the cubic's curvature maximum,

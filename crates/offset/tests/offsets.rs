@@ -186,8 +186,10 @@ fn check_against(chords: &Chords, found: &Offsets, tol: f64, area_samples: usize
                 }
                 for p in samples(s, 24) {
                     let dist = chords.distance(p);
-                    assert!(
-                        (dist - o.distance).abs() < tol,
+                    testkit::assert_near!(
+                        dist,
+                        o.distance,
+                        tol,
                         "d = {}: {p:?} is {dist} from the boundary",
                         o.distance
                     );
@@ -213,11 +215,7 @@ fn a_rectangle_shrinks_to_a_rectangle_until_it_vanishes() {
         assert_eq!(found.offsets[k].loops.len(), 1);
         assert_eq!(found.offsets[k].loops[0].segments.len(), 4);
         let expected = (4.0 - 2.0 * d) * (2.0 - 2.0 * d);
-        assert!(
-            (areas[k][0] - expected).abs() < 1e-9,
-            "{} vs {expected}",
-            areas[k][0]
-        );
+        testkit::assert_near!(areas[k][0], expected, 1e-9, "{} vs {expected}", areas[k][0]);
     }
     assert!(
         found.offsets[3].loops.is_empty(),
@@ -239,8 +237,8 @@ fn an_annulus_gives_two_circles_each_way_round() {
         got.sort_by(f64::total_cmp);
         // (Clockwise round the hole: negative area.)
         let (hole, outer) = (-PI * (1.0 + d).powi(2), PI * (3.0 - d).powi(2));
-        assert!((got[0] - hole).abs() < 1e-3 * hole.abs(), "{got:?}");
-        assert!((got[1] - outer).abs() < 1e-3 * outer, "{got:?}");
+        testkit::assert_near!(got[0], hole, 1e-3 * hole.abs(), "{got:?}");
+        testkit::assert_near!(got[1], outer, 1e-3 * outer, "{got:?}");
     }
     assert!(found.offsets[2].loops.is_empty());
 }
@@ -861,11 +859,7 @@ fn outward_a_rectangle_grows_rounded_corners_and_a_hole_shrinks() {
         .count();
     assert_eq!(arcs, 4, "a quarter circle round each corner");
     let expected = 8.0 + 2.0 * 6.0 * 0.5 + PI * 0.25;
-    assert!(
-        (areas[0][0] - expected).abs() < 1e-4,
-        "{} vs {expected}",
-        areas[0][0]
-    );
+    testkit::assert_near!(areas[0][0], expected, 1e-4, "{} vs {expected}", areas[0][0]);
 
     let washer = Region::new(circle([0.0, 0.0], 3.0), vec![circle([0.0, 0.0], 1.0)]).unwrap();
     let found = outward_of(&washer, &[0.5, 1.2]);
@@ -876,8 +870,10 @@ fn outward_a_rectangle_grows_rounded_corners_and_a_hole_shrinks() {
         (first[0] + PI * 0.25).abs() < 1e-3,
         "the hole shrinks to r = 0.5: {first:?}"
     );
-    assert!(
-        (first[1] - PI * 12.25).abs() < 1e-2,
+    testkit::assert_near!(
+        first[1],
+        PI * 12.25,
+        1e-2,
         "the outside grows to r = 3.5: {first:?}"
     );
     assert_eq!(

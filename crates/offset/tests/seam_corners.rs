@@ -131,7 +131,7 @@ fn outward_a_corner_where_a_splines_ends_meet_grows_its_arc() {
         check(&region, &found, d, true);
         // (The corner's arc turns by the corner's turn, about 57.5 degrees.)
         let swept = arcs_sweep(&found.offsets[0].loops[0].segments);
-        assert!((swept - 1.004).abs() < 1e-2, "d = {d}: arcs sweep {swept}");
+        testkit::assert_near!(swept, 1.004, 1e-2, "d = {d}: arcs sweep {swept}");
     }
 }
 

@@ -2,7 +2,7 @@
 //! crate's tests and benchmarks need, a dev-dependency only.
 //!
 //! - [`assert_near!`] and [`prop_assert_near!`]: two values within a named tolerance, the
-//!   values and the gap printed when they are not ([`Near`] measures the gap).
+//!   values and the gap printed when they are not ([`gap`] measures it, on any [`Near`] value).
 //! - [`cases`]: how many cases a property test runs, scaled for stress runs.
 //! - [`rng`] and [`Lcg`]: one seeded generator of uniform draws.
 //! - [`stars`]: the random star-shaped control polygons the property tests draw curves from.
@@ -27,7 +27,7 @@ pub mod profiles;
 mod random;
 pub mod stars;
 
-pub use near::{within, Near};
+pub use near::{gap, within, Near};
 pub use random::{rng, Lcg};
 
 /// Re-exported for [`prop_assert_near!`], so that a crate using it needs no import of its own.

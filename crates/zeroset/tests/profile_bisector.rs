@@ -151,8 +151,10 @@ fn check_pair(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
         }
         for x in &br.xy {
             let (da, db) = (oa.nearest(*x).0, ob.nearest(*x).0);
-            prop_assert!(
-                (da - db).abs() <= 1e-7 * size,
+            testkit::prop_assert_near!(
+                da,
+                db,
+                1e-7 * size,
                 "trimmed vertex {x:?}: distances {da} and {db} (sites {:?} corner {:?})",
                 br.segment,
                 br.corner
@@ -224,8 +226,10 @@ fn check_self(p: &Profile) -> Result<(), TestCaseError> {
             for u in tr {
                 let f = p.jet(*u).p.arr();
                 let rho = (x[0] - f[0]).hypot(x[1] - f[1]);
-                prop_assert!(
-                    (rho - d).abs() <= 1e-7 * size,
+                testkit::prop_assert_near!(
+                    rho,
+                    d,
+                    1e-7 * size,
                     "trimmed vertex {x:?}: foot at {rho}, boundary at {d}"
                 );
             }

@@ -100,5 +100,5 @@ fn functions_match_their_formulas() {
     let e3 = dot(p1, d1) * cross(d, d2)
         - dot(p2, d2) * cross(d, d1)
         - 0.5 * cross(d1, d2) * (dot(p1, p1) - dot(p2, p2));
-    assert!((f3.eval(0.3, 0.6) - e3).abs() < 1e-10 * f3.max_abs_coef());
+    testkit::assert_near!(f3.eval(0.3, 0.6), e3, 1e-10 * f3.max_abs_coef());
 }

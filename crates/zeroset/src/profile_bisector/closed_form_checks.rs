@@ -36,12 +36,7 @@ pub(super) fn check_vertices(
             let along =
                 |o: [f64; 4]| ((x[0] - o[0]) * o[2] + (x[1] - o[1]) * o[3]) / o[2].hypot(o[3]);
             let tol = tol(*x);
-            prop_assert!(
-                (to(o1) - to(o2)).abs() <= tol,
-                "{tr:?} {x:?}: {} {}",
-                to(o1),
-                to(o2)
-            );
+            testkit::prop_assert_near!(to(o1), to(o2), tol, "{tr:?} {x:?}: {} {}", to(o1), to(o2));
             prop_assert!(
                 along(o1).abs() <= tol && along(o2).abs() <= tol,
                 "{tr:?} {x:?}: off the normals by {} {}",

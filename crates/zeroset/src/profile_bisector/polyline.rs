@@ -229,7 +229,7 @@ mod tests {
         assert_eq!(runs.len(), 2);
         let end = runs[0].last().unwrap().1;
         let start = runs[1][0].1;
-        assert!((end[1].abs() - far).abs() < 1e-6 * far, "{end:?}");
-        assert!((start[1].abs() - far).abs() < 1e-6 * far, "{start:?}");
+        testkit::assert_near!(end[1].abs(), far, 1e-6 * far, "{end:?}");
+        testkit::assert_near!(start[1].abs(), far, 1e-6 * far, "{start:?}");
     }
 }

@@ -9,7 +9,8 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The crates from left to right, with their source folders (a crate may use those before it).
-const CRATES: [(&str, &str); 8] = [
+const CRATES: [(&str, &str); 9] = [
+    ("numeric", "crates/numeric"),
     ("bspline", "crates/bspline"),
     ("curve", "crates/curve"),
     ("zeroset", "crates/zeroset"),
@@ -283,7 +284,9 @@ fn testkit_is_for_tests_only() {
         for section in manifest.split("\n[") {
             if section.starts_with("dependencies]") {
                 assert!(
-                    !section.lines().any(|l| l.trim_start().starts_with("testkit")),
+                    !section
+                        .lines()
+                        .any(|l| l.trim_start().starts_with("testkit")),
                     "{name} depends on testkit outside its dev-dependencies"
                 );
             }

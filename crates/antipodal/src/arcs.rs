@@ -3,16 +3,16 @@
 //! [`crate::bounds::BoundForms`] over the fine pieces the arc spans.
 
 use crate::bounds::MARGIN;
-use crate::interval::Iv;
 use crate::view::View;
 use curve::V2;
+use numeric::Interval;
 
 /// What the control points of an arc's symbolic forms prove about it.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ArcBounds {
     /// The signed curvature (positive where the view's curve turns left; it may include zero
     /// where the arc reaches an inflection).
-    pub(crate) kappa: Iv,
+    pub(crate) kappa: Interval,
     /// The greatest speed `|C′|` (in the view's parameter).
     pub(crate) speed: f64,
     /// Bounding box of the arc.
@@ -27,7 +27,7 @@ impl ArcBounds {
     }
 
     /// The least and greatest distance between a point of this arc and one of `o`.
-    pub(crate) fn distance(&self, o: &ArcBounds) -> Iv {
+    pub(crate) fn distance(&self, o: &ArcBounds) -> Interval {
         let gap = |a0: f64, a1: f64, b0: f64, b1: f64| (b0 - a1).max(a0 - b1).max(0.0);
         let span = |a0: f64, a1: f64, b0: f64, b1: f64| (b1 - a0).max(a1 - b0);
         let near = V2::new(
@@ -38,7 +38,7 @@ impl ArcBounds {
             span(self.lo.x, self.hi.x, o.lo.x, o.hi.x),
             span(self.lo.y, self.hi.y, o.lo.y, o.hi.y),
         );
-        Iv::new(near.norm(), far.norm())
+        Interval::new(near.norm(), far.norm())
     }
 }
 
@@ -69,7 +69,7 @@ impl View<'_> {
         let forms = cert.bound_forms()?;
         let (a, b) = (lo.min(hi), lo.max(hi));
         let (lo, hi) = ((a - pad).max(limits.0), (b + pad).min(limits.1));
-        let mut kappa = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        let mut kappa = Interval::new(f64::INFINITY, f64::NEG_INFINITY);
         let mut speed = 0.0f64;
         for (x0, x1, _) in self.domain_pieces(lo, hi) {
             speed = speed.max(forms.join_arc_kappa(x0, x1, &mut kappa)?);
@@ -94,10 +94,16 @@ impl View<'_> {
     /// interval `[lo, hi]` of a monotone piece (`convex`: of positive curvature), from the
     /// cells it touches; `None` for a curve without symbolic forms, or where nothing is
     /// proven.
-    pub(crate) fn arc_rho_rate(&self, lo: f64, hi: f64, convex: bool, fine: bool) -> Option<Iv> {
+    pub(crate) fn arc_rho_rate(
+        &self,
+        lo: f64,
+        hi: f64,
+        convex: bool,
+        fine: bool,
+    ) -> Option<Interval> {
         let forms = self.cert.as_ref()?.bound_forms()?;
         let (lo, hi) = (lo.min(hi), lo.max(hi));
-        let mut acc = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+        let mut acc = Interval::new(f64::INFINITY, f64::NEG_INFINITY);
         // The fine piece before the current one along the arc (the break between them is
         // inside it).
         let mut before: Option<usize> = None;
@@ -150,7 +156,6 @@ const CHORD_ROUNDING: f64 = 1e-12;
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
-    use crate::interval::tests::inside;
     use crate::prepare::tests::{as_given, star_curve as curve};
     use crate::view::View;
     use proptest::prelude::*;
@@ -186,7 +191,7 @@ mod tests {
                 let u = lo + (hi - lo) * i as f64 / 300.0;
                 let j = v.jet(u);
                 let k = j.curvature();
-                prop_assert!(inside(k, b.kappa), "κ = {k} outside {:?} at {u}", b.kappa);
+                prop_assert!(b.kappa.holds(k, 1e-9), "κ = {k} outside {:?} at {u}", b.kappa);
                 let sp = j.d1.norm();
                 prop_assert!(sp <= b.speed * (1.0 + 1e-9), "speed {sp} above {} at {u}", b.speed);
                 monotone &= sign * k >= 0.0;

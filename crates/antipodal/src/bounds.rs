@@ -8,9 +8,10 @@ use crate::cells::{
     cell_of, cell_span, Blocks, Cells, RunUnions, Union, COARSE_CELLS, FINE_CELLS, SPLIT,
 };
 use crate::enclosure::Enclosure;
-use crate::interval::Iv;
 use crate::taylor::Taylor;
 use bspline::Piecewise;
+use numeric::rounding::ulps;
+use numeric::Interval;
 use std::sync::OnceLock;
 
 /// The curvature cells of a fine piece, and what they and the hulls prove over all of it.
@@ -38,7 +39,7 @@ pub(crate) struct BoundForms {
     kappa: Vec<OnceLock<PieceKappa>>,
     /// Per fine piece, the rates of its radius of curvature (see `BoundForms::rho_rates`)
     /// over its cells, with κ clipped to negative and to positive values; built on first use.
-    rates: Vec<OnceLock<Cells<[Option<Iv>; 2]>>>,
+    rates: Vec<OnceLock<Cells<[Option<Interval>; 2]>>>,
 }
 
 impl BoundForms {
@@ -95,13 +96,13 @@ impl BoundForms {
         let weight = self
             .weight
             .as_ref()
-            .map_or(Iv::new(1.0, 1.0), |e| e.hull[i]);
+            .map_or(Interval::new(1.0, 1.0), |e| e.hull[i]);
         let d = self.tangent.hull[i];
         let hulls = quotient(self.curvature.hull[i], d, weight)?;
         let speed = d.hi / (weight.lo * weight.lo);
         Some(match cells.whole() {
             Some((k, v)) => (
-                Iv::new(hulls.lo.max(k.lo), hulls.hi.min(k.hi)),
+                Interval::new(hulls.lo.max(k.lo), hulls.hi.min(k.hi)),
                 speed.min(v),
             ),
             None => (hulls, speed),
@@ -120,15 +121,15 @@ impl BoundForms {
     /// part of the Taylor model's range and of the quotient of the factors' ranges.
     fn partial(&self, i: usize, x0: f64, x1: f64) -> KappaCell {
         let delta = 0.5 * (x1 - x0);
-        let clip = |(t, hull): (Taylor, Iv)| {
+        let clip = |(t, hull): (Taylor, Interval)| {
             let r = t.range(delta);
-            (t, Iv::new(r.lo.max(hull.lo), r.hi.min(hull.hi)))
+            (t, Interval::new(r.lo.max(hull.lo), r.hi.min(hull.hi)))
         };
         let (tk, k) = clip(self.curvature.taylor(i, x0, x1)?);
         let (td, d) = clip(self.tangent.taylor(i, x0, x1)?);
         let (tw, w) = match &self.weight {
             Some(e) => clip(e.taylor(i, x0, x1)?),
-            None => (Taylor::constant(1.0), Iv::new(1.0, 1.0)),
+            None => (Taylor::constant(1.0), Interval::new(1.0, 1.0)),
         };
         let kappa = kappa_from([tk, td, tw], [k, d, w], delta)?;
         Some((kappa, d.hi / (w.lo * w.lo)))
@@ -141,12 +142,12 @@ impl BoundForms {
     /// their derivatives. Where κ may reach zero on its side (an inflection ending a piece) the
     /// rate is unbounded on the side the signs of κ and κ′ give. `None` where nothing is
     /// proven (or κ has no values of that sign).
-    fn rho_rates(&self, i: usize, x0: f64, x1: f64) -> [Option<Iv>; 2] {
+    fn rho_rates(&self, i: usize, x0: f64, x1: f64) -> [Option<Interval>; 2] {
         let none = [None, None];
         let delta = 0.5 * (x1 - x0);
-        let value = |(t, hull, slope): (Taylor, Iv, Iv)| {
+        let value = |(t, hull, slope): (Taylor, Interval, Interval)| {
             let r = t.range(delta);
-            (Iv::new(r.lo.max(hull.lo), r.hi.min(hull.hi)), slope)
+            (Interval::new(r.lo.max(hull.lo), r.hi.min(hull.hi)), slope)
         };
         let models = (
             self.curvature.taylor_slope(i, x0, x1),
@@ -164,7 +165,11 @@ impl BoundForms {
                 }
                 None => return none,
             },
-            None => (Iv::new(1.0, 1.0), Iv::new(0.0, 0.0), Taylor::constant(1.0)),
+            None => (
+                Interval::new(1.0, 1.0),
+                Interval::new(0.0, 0.0),
+                Taylor::constant(1.0),
+            ),
         };
         // (From the same models as the rates; `None` unless |D| and w are proven positive.)
         let Some(kappa) = kappa_from([km.0, dm.0, tw], [k, d, w], delta) else {
@@ -173,14 +178,14 @@ impl BoundForms {
         let Some(inv_d) = d.recip() else {
             return none;
         };
-        let speed = Iv::new(d.lo / (w.hi * w.hi), d.hi / (w.lo * w.lo));
-        let three = Iv::new(3.0, 3.0);
+        let speed = Interval::new(d.lo / (w.hi * w.hi), d.hi / (w.lo * w.lo));
+        let three = Interval::new(3.0, 3.0);
         let scaled = w.mul(w).mul(k1.mul(w).add(three.mul(k).mul(w1)));
         let cubed = inv_d.mul(inv_d).mul(inv_d);
         [false, true].map(|convex| {
             let kappa = match convex {
-                true => Iv::new(kappa.lo.max(0.0), kappa.hi),
-                false => Iv::new(kappa.lo, kappa.hi.min(0.0)),
+                true => Interval::new(kappa.lo.max(0.0), kappa.hi),
+                false => Interval::new(kappa.lo, kappa.hi.min(0.0)),
             };
             // (Empty where κ has no values of that sign.)
             let some = kappa.lo <= kappa.hi;
@@ -193,7 +198,7 @@ impl BoundForms {
                 .widened(MARGIN);
             if kappa.excludes_zero() {
                 let out = rate.mul(kappa.mul(kappa).mul(kappa).mul(speed).recip()?);
-                return Some(Iv::new(-out.hi, -out.lo).widened(MARGIN));
+                return Some(Interval::new(-out.hi, -out.lo).widened(MARGIN));
             }
             // κ reaches zero on its side: |ρ′| ≥ |κ′|min / (|κ|max³ |C′|max), of the sign of
             // −κ′κ.
@@ -203,14 +208,14 @@ impl BoundForms {
             let least = rate.lo.abs().min(rate.hi.abs()) / (kappa.mag().powi(3) * speed.hi);
             let least = least * (1.0 - MARGIN);
             Some(match (rate.lo > 0.0) != convex {
-                true => Iv::new(least, f64::INFINITY),
-                false => Iv::new(f64::NEG_INFINITY, -least),
+                true => Interval::new(least, f64::INFINITY),
+                false => Interval::new(f64::NEG_INFINITY, -least),
             })
         })
     }
 
     /// The rates of the radius of curvature over `n` equal cells of fine piece `i`.
-    fn rate_cells(&self, i: usize, n: usize) -> RunUnions<[Option<Iv>; 2]> {
+    fn rate_cells(&self, i: usize, n: usize) -> RunUnions<[Option<Interval>; 2]> {
         RunUnions::new(&self.over_cells(i, n, |x0, x1| self.rho_rates(i, x0, x1)))
     }
 
@@ -233,7 +238,7 @@ impl BoundForms {
         cells: Option<(usize, usize)>,
         convex: bool,
         fine: bool,
-    ) -> Option<Iv> {
+    ) -> Option<Interval> {
         let rates = self.rates.get(i)?;
         let rates = rates.get_or_init(|| Cells::new(self.rate_cells(i, COARSE_CELLS)));
         let r = match cells {
@@ -249,33 +254,33 @@ impl BoundForms {
     /// continuous there; where it jumps (a curve only C¹ there, as every quadratic spline at
     /// its knots), `ρ` jumps too and its rate holds a Dirac impulse, unbounded on the side of
     /// the jump's sign as ψ grows. `None` where that sign is not proven.
-    fn with_rho_jump(&self, acc: Iv, j: usize, i: usize, convex: bool) -> Option<Iv> {
+    fn with_rho_jump(&self, acc: Interval, j: usize, i: usize, convex: bool) -> Option<Interval> {
         let pw = &self.curvature.pw;
         let k = if i == 0 { 0 } else { i };
         if pw.continuity(k) >= 0 {
             return Some(acc);
         }
         // κ on either side, each from its own piece's polynomial (clipped to the arc's sign).
-        let side = |piece: usize, at: f64| -> Option<Iv> {
+        let side = |piece: usize, at: f64| -> Option<Interval> {
             let (kappa, _) = self.partial(piece, at, at)?;
             match convex {
-                true => Iv::new(kappa.lo.max(0.0), kappa.hi),
-                false => Iv::new(kappa.lo, kappa.hi.min(0.0)),
+                true => Interval::new(kappa.lo.max(0.0), kappa.hi),
+                false => Interval::new(kappa.lo, kappa.hi.min(0.0)),
             }
             .recip()
         };
         let (rho_before, rho_after) = (side(j, pw.piece_span(j).1)?, side(i, pw.piece_span(i).0)?);
         // As ψ grows: along the parameter on a convex arc, against it on a concave one.
-        let jump = rho_after.sub(rho_before).widened(4.0 * f64::EPSILON);
+        let jump = rho_after.sub(rho_before).widened(ulps(4.0));
         let jump = if convex {
             jump
         } else {
-            Iv::new(-jump.hi, -jump.lo)
+            Interval::new(-jump.hi, -jump.lo)
         };
         if jump.lo >= 0.0 {
-            Some(Iv::new(acc.lo, f64::INFINITY))
+            Some(Interval::new(acc.lo, f64::INFINITY))
         } else if jump.hi <= 0.0 {
-            Some(Iv::new(f64::NEG_INFINITY, acc.hi))
+            Some(Interval::new(f64::NEG_INFINITY, acc.hi))
         } else {
             None
         }
@@ -283,7 +288,7 @@ impl BoundForms {
 
     /// Joins the curvature over `[x0, x1]` (within the domain) into `acc`; returns the
     /// greatest speed there. `None` where nothing is proven.
-    pub(crate) fn join_arc_kappa(&self, x0: f64, x1: f64, acc: &mut Iv) -> Option<f64> {
+    pub(crate) fn join_arc_kappa(&self, x0: f64, x1: f64, acc: &mut Interval) -> Option<f64> {
         if self.aligned {
             self.join_kappa(x0, x1, acc)
         } else {
@@ -300,10 +305,10 @@ impl BoundForms {
         x0: f64,
         x1: f64,
         before: &mut Option<usize>,
-        mut acc: Iv,
+        mut acc: Interval,
         convex: bool,
         fine: bool,
-    ) -> Option<Iv> {
+    ) -> Option<Interval> {
         if !self.aligned {
             return None;
         }
@@ -332,7 +337,7 @@ impl BoundForms {
     /// (Measured on the papers' shapes against models for every partly covered piece: with
     /// 16 cells per piece the limaçon and the lemniscate take a fifth fewer instructions per
     /// run, the others 2–4 % fewer; 8 and 32 cells do about as well, 4 and 64 worse.)
-    fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<f64> {
+    fn join_kappa(&self, lo: f64, hi: f64, acc: &mut Interval) -> Option<f64> {
         let mut speed = 0.0f64;
         // A stretch within one fine piece may be short enough for its own models to matter;
         // one across several reads cells at its ends.
@@ -371,9 +376,9 @@ impl BoundForms {
     }
 
     /// [`BoundForms::join_kappa`] from the factors' ranges over the whole of `[lo, hi]`.
-    fn join_kappa_ranges(&self, lo: f64, hi: f64, acc: &mut Iv) -> Option<f64> {
-        let empty = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
-        let (mut k, mut d, mut w) = (empty, empty, Iv::new(1.0, 1.0));
+    fn join_kappa_ranges(&self, lo: f64, hi: f64, acc: &mut Interval) -> Option<f64> {
+        let empty = Interval::new(f64::INFINITY, f64::NEG_INFINITY);
+        let (mut k, mut d, mut w) = (empty, empty, Interval::new(1.0, 1.0));
         self.curvature.join_range(lo, hi, &mut k);
         self.tangent.join_range(lo, hi, &mut d);
         if let Some(e) = &self.weight {
@@ -388,7 +393,7 @@ impl BoundForms {
 
 /// What a stretch's Taylor models prove about the curvature: its range and the greatest
 /// speed (`None` where they do not prove `|D|` and `w` positive).
-pub(crate) type KappaCell = Option<(Iv, f64)>;
+pub(crate) type KappaCell = Option<(Interval, f64)>;
 
 /// A cell's curvature and greatest speed (`None` where `|D|` or `w` is not proven positive).
 impl Union for KappaCell {
@@ -399,7 +404,7 @@ impl Union for KappaCell {
 }
 
 /// A cell's rates of the radius of curvature, with κ negative and positive.
-impl Union for [Option<Iv>; 2] {
+impl Union for [Option<Interval>; 2] {
     fn union(self, other: Self) -> Self {
         [0, 1].map(|k| Some(self[k]?.hull(other[k]?)))
     }
@@ -412,7 +417,7 @@ pub(crate) const MARGIN: f64 = 1e-12;
 /// The curvature `κ = K w³ / |D|³` over a stretch of half-width `delta`: the range of its
 /// Taylor model, from the models `[K, |D|, w]`, within the quotient of the factors' ranges
 /// `[k, d, w]`. `None` unless `|D|` and `w` are proven positive.
-fn kappa_from([tk, td, tw]: [Taylor; 3], [k, d, w]: [Iv; 3], delta: f64) -> Option<Iv> {
+fn kappa_from([tk, td, tw]: [Taylor; 3], [k, d, w]: [Interval; 3], delta: f64) -> Option<Interval> {
     let ranges = quotient(k, d, w)?;
     let model = td
         .recip(delta)
@@ -420,19 +425,19 @@ fn kappa_from([tk, td, tw]: [Taylor; 3], [k, d, w]: [Iv; 3], delta: f64) -> Opti
     Some(match model {
         Some(t) => {
             let r = t.range(delta).widened(MARGIN);
-            Iv::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
+            Interval::new(r.lo.max(ranges.lo), r.hi.min(ranges.hi))
         }
         None => ranges,
     })
 }
 
 /// `K w³ / |D|³` from the ranges of its factors; `None` unless `|D|` and `w` are positive.
-fn quotient(k: Iv, d: Iv, w: Iv) -> Option<Iv> {
+fn quotient(k: Interval, d: Interval, w: Interval) -> Option<Interval> {
     if !(d.lo > 0.0 && w.lo > 0.0 && k.lo.is_finite() && k.hi.is_finite()) {
         return None;
     }
-    let w3 = Iv::new(w.lo.powi(3), w.hi.powi(3));
-    let d3 = Iv::new(d.lo.powi(3), d.hi.powi(3))
+    let w3 = Interval::new(w.lo.powi(3), w.hi.powi(3));
+    let d3 = Interval::new(d.lo.powi(3), d.hi.powi(3))
         .widened(MARGIN)
         .recip()?;
     Some(k.widened(MARGIN).mul(w3).mul(d3))

@@ -226,7 +226,7 @@ mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
     use crate::bounds::KappaCell;
-    use crate::interval::Iv;
+    use numeric::Interval;
     use proptest::prelude::*;
 
     /// Random cells of one piece: fine ones, and coarse ones holding their fine cells
@@ -236,7 +236,7 @@ mod tests {
             .map(|c| {
                 let (a, b, v) = seed[c % seed.len()];
                 let shift = c as f64 * 0.01;
-                Some((Iv::new(a.min(b) + shift, a.max(b) + shift), v))
+                Some((Interval::new(a.min(b) + shift, a.max(b) + shift), v))
             })
             .collect();
         let coarse = fine
@@ -244,7 +244,7 @@ mod tests {
             .zip(widen.iter().cycle())
             .map(|(cells, &w)| {
                 let (k, v) = cells[1..].iter().fold(cells[0], |a, &x| a.union(x))?;
-                Some((Iv::new(k.lo - w, k.hi + w), v + w))
+                Some((Interval::new(k.lo - w, k.hi + w), v + w))
             })
             .collect();
         (fine, coarse)

@@ -12,6 +12,7 @@ use crate::tracks::Tracks;
 use crate::view::View;
 use bspline::roots::SignChangeKind;
 use curve::V2;
+use numeric::rounding::ulps;
 use smallvec::SmallVec;
 use std::f64::consts::PI;
 
@@ -266,7 +267,7 @@ impl View<'_> {
         let (nb, na) = (before.norm(), after.norm());
         // |a × b| and a · b move by at most |a| e_b + |b| e_a + e_a e_b (per coordinate
         // errors, √2 each way), plus their own rounding.
-        let slack = 2.0 * (na * eb + nb * ea + ea * eb) + 4.0 * f64::EPSILON * na * nb;
+        let slack = 2.0 * (na * eb + nb * ea + ea * eb) + ulps(4.0) * na * nb;
         let cross = before.cross(after).abs();
         let threshold = TANGENT_CONTINUITY * nb * na;
         let continuous = before.dot(after) > slack && cross + slack <= threshold;
@@ -475,7 +476,7 @@ mod tests {
         let uniform = piece((0.5, 0.5), 0.5);
         for i in 0..=10 {
             let x = i as f64 / 10.0;
-            assert!((uniform.param_guess(1.0 + 0.5 * x) - (2.0 + x)).abs() < 1e-12);
+            testkit::assert_near!(uniform.param_guess(1.0 + 0.5 * x), 2.0 + x, 1e-12);
         }
         for rates in [(0.0, 0.5), (0.5, 0.0), (1e9, 0.1), (-0.5, -0.5)] {
             for rot in [0.5f64, -0.5] {

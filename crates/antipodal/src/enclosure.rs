@@ -1,11 +1,11 @@
 //! Enclosures of a function given by its symbolic form in pieces: certified ranges over any
 //! interval, from the control points of its fine pieces and Taylor models on them.
 
-use crate::interval::Iv;
 use crate::taylor::Taylor;
 use bspline::rounding;
 use bspline::{Piecewise, ValueSlope};
 use curve::{wrap_pi, V2};
+use numeric::Interval;
 use std::f64::consts::PI;
 
 /// Fine pieces per Bézier piece of an [`Enclosure`]: derivative bounds taken over an eighth of
@@ -27,7 +27,7 @@ pub(crate) struct Enclosure {
     /// Per fine piece, a bound on `|f″|`.
     second: Vec<f64>,
     /// Per fine piece, the range its control points prove.
-    pub(crate) hull: Vec<Iv>,
+    pub(crate) hull: Vec<Interval>,
     /// Per fine piece, the rounding of an evaluation of `f` and of `f′` there.
     rounding: Vec<(f64, f64)>,
     /// Per fine piece of a vector function, the least arc of directions holding its control
@@ -109,14 +109,19 @@ impl Enclosure {
     /// The remainder is `M₂δ²/2` plus rounding for a scalar; for the length `|f|`,
     /// `|f|″ = (|f′|² + f·f″)/|f| − (f·f′)²/|f|³` is at most `|f′|²/|f| + |f″|`, with `|f′|` and
     /// `|f|` bounded over the interval from the model of `f` itself.
-    pub(crate) fn taylor(&self, i: usize, x0: f64, x1: f64) -> Option<(Taylor, Iv)> {
+    pub(crate) fn taylor(&self, i: usize, x0: f64, x1: f64) -> Option<(Taylor, Interval)> {
         self.taylor_slope(i, x0, x1).map(|(t, hull, _)| (t, hull))
     }
 
     /// [`Enclosure::taylor`] and the range of the derivative (of the length's, in dimension
     /// 2) over `[x0, x1]`: within `M δ` of its value at the middle, `M` the bound on the
     /// second derivative behind the model's remainder, widened by rounding.
-    pub(crate) fn taylor_slope(&self, i: usize, x0: f64, x1: f64) -> Option<(Taylor, Iv, Iv)> {
+    pub(crate) fn taylor_slope(
+        &self,
+        i: usize,
+        x0: f64,
+        x1: f64,
+    ) -> Option<(Taylor, Interval, Interval)> {
         let (a, b) = self.pw.piece_span(i);
         let (m, delta) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
         let (v, g) = self.eval.eval(i, (m - a) / (b - a));
@@ -132,7 +137,7 @@ impl Enclosure {
                     r,
                 },
                 hull,
-                Iv::new(g[0] - spread, g[0] + spread),
+                Interval::new(g[0] - spread, g[0] + spread),
             ));
         }
         let n = v[0].hypot(v[1]);
@@ -153,11 +158,15 @@ impl Enclosure {
         };
         // (|f|′ = f·f′/|f| at the middle errs by the slope's rounding and the value's over |f|.)
         let spread = second * delta + 2.0 * (rg + rv * gn / lower);
-        Some((model, hull, Iv::new(model.g - spread, model.g + spread)))
+        Some((
+            model,
+            hull,
+            Interval::new(model.g - spread, model.g + spread),
+        ))
     }
 
     /// The range over `[lo, hi]` (inside the domain), joined into `acc`.
-    pub(crate) fn join_range(&self, lo: f64, hi: f64, acc: &mut Iv) {
+    pub(crate) fn join_range(&self, lo: f64, hi: f64, acc: &mut Interval) {
         let d = self.pw.dim();
         let norm = |v: [f64; 2]| {
             if d == 1 {
@@ -181,7 +190,7 @@ impl Enclosure {
                 let r = (norm(g).abs() + rg) * delta + 0.5 * self.second[i] * delta * delta + rv;
                 let x = norm(v);
                 // Both enclose the range: keep their common part.
-                Iv::new((x - r).max(hull.lo), (x + r).min(hull.hi))
+                Interval::new((x - r).max(hull.lo), (x + r).min(hull.hi))
             };
             *acc = acc.hull(range);
         }
@@ -230,9 +239,9 @@ fn cone_inside(cone: Option<(V2, V2)>, axis: V2) -> bool {
 /// the exact one) prove for a scalar function, or for the length of a vector one: from below
 /// by the projections on the direction of the end points' sum (a narrow hodograph cone), from
 /// above by the largest.
-fn points_range(c: &[f64], d: usize, err: &[f64]) -> Iv {
+fn points_range(c: &[f64], d: usize, err: &[f64]) -> Interval {
     if d == 1 {
-        return Iv::new(
+        return Interval::new(
             c.iter().copied().fold(f64::INFINITY, f64::min) - err[0],
             c.iter().copied().fold(f64::NEG_INFINITY, f64::max) + err[0],
         );
@@ -241,7 +250,7 @@ fn points_range(c: &[f64], d: usize, err: &[f64]) -> Iv {
     let pts = || c.chunks_exact(d).map(|p| V2::new(p[0], p[1]));
     let (first, last) = (&c[..2], &c[c.len() - d..c.len() - d + 2]);
     let axis = V2::new(first[0] + last[0], first[1] + last[1]).unit();
-    Iv::new(
+    Interval::new(
         (pts().map(|p| p.dot(axis)).fold(f64::INFINITY, f64::min) - reach).max(0.0),
         pts().map(|p| p.norm()).fold(0.0, f64::max) + reach,
     )
@@ -255,7 +264,6 @@ pub(crate) const HALF_PLANE_MARGIN: f64 = 1e-9;
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use crate::interval::tests::inside;
     use proptest::prelude::*;
 
     proptest! {
@@ -306,13 +314,13 @@ mod tests {
                 let f = bspline::BSpline::clamped_uniform(deg, dim, coefs[..n * dim].to_vec()).unwrap();
                 let e = Enclosure::new(&bspline::Piecewise::from_bspline(&f)).unwrap();
                 let (lo, hi) = (a.min(1.0 - len.min(1.0)), (a.min(1.0 - len.min(1.0)) + len).min(1.0));
-                let mut iv = Iv::new(f64::INFINITY, f64::NEG_INFINITY);
+                let mut iv = Interval::new(f64::INFINITY, f64::NEG_INFINITY);
                 e.join_range(lo, hi, &mut iv);
                 for i in 0..=200 {
                     let u = lo + (hi - lo) * i as f64 / 200.0;
                     let v = f.eval(u);
                     let x = if dim == 1 { v[0] } else { v[0].hypot(v[1]) };
-                    prop_assert!(inside(x, iv), "{x} outside {iv:?} at {u} on [{lo}, {hi}]");
+                    prop_assert!(iv.holds(x, 1e-9), "{x} outside {iv:?} at {u} on [{lo}, {hi}]");
                 }
             }
     }

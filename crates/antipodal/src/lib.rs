@@ -33,7 +33,7 @@
 //! `profile_pairs`, `corner_pairs` and `profile_tangents` (beyond the papers: profiles of
 //! segments joined at corners, segment by segment, and the corners' cones). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
-//! `taylor` and `interval`; `doubt` names every reason a result is not certified.
+//! `taylor` (with `numeric::Interval` for ranges); `doubt` names every reason a result is not certified.
 
 mod arcs;
 mod bisect;
@@ -48,7 +48,6 @@ mod error;
 mod families;
 mod finish;
 mod forms;
-mod interval;
 mod march;
 mod monotone;
 mod pairs;

@@ -2,8 +2,8 @@
 //! interval arithmetic), on which the certified finish of the marches and the cuts beside a
 //! found pair rest: one pair at most where θ changes sign, none where it does not.
 
-use crate::interval::Iv;
 use crate::pairs::{Pair, THETA_NOISE};
+use numeric::Interval;
 use std::f64::consts::FRAC_PI_2;
 
 /// How far from `from` towards `to` (pairs `(s, t)` of opposite points) θ is proven strictly
@@ -103,13 +103,13 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
     // κ keeps the sign of its piece (the isolated inflections prove it), reaching zero at
     // most at an inflection that ends the piece: the ranges are clipped to that sign, and
     // the signed radii ρ = 1/κ exist only where they keep clear of zero.
-    let signed = |k: Iv, convex: bool| match convex {
-        true => Iv::new(k.lo.max(0.0), k.hi),
-        false => Iv::new(k.lo, k.hi.min(0.0)),
+    let signed = |k: Interval, convex: bool| match convex {
+        true => Interval::new(k.lo.max(0.0), k.hi),
+        false => Interval::new(k.lo, k.hi.min(0.0)),
     };
     let (ks, kt) = (signed(bs.kappa, p.s_convex), signed(bt.kappa, p.t_convex));
     let (rho_s, rho_t) = (ks.recip(), kt.recip());
-    let one = Iv::new(1.0, 1.0);
+    let one = Interval::new(1.0, 1.0);
     // (t moves κ(s)/κ(t) times as far as s in arc length: the tangents at s and t are
     // opposite along a section.) The arc of T is padded: so is its length.
     let (len, len_t) = ((s1 - s0).abs(), (t1 - t0).abs() + 2.0 * pad);
@@ -118,7 +118,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
     let mut far: Option<(f64, f64, f64)> = None;
     for _ in 0..4 {
         let inv_r = dist.recip()?;
-        let cos = Iv::new(
+        let cos = Interval::new(
             if theta_max < FRAC_PI_2 {
                 theta_max.cos()
             } else {
@@ -141,7 +141,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         // Multilinear in κ(s), κ(t) and cos θ/|r|: its exact range is at the corners (each
         // curvature enters twice, and plain interval arithmetic lost a sign the ends share
         // where one arc runs into an inflection).
-        let q = Iv::multilinear(
+        let q = Interval::multilinear(
             [ks, kt, c_r],
             |a, b, c| a * (c - b) + b * c,
             BOUND_ROOM * (ks.mag() * (c_r.mag() + kt.mag()) + kt.mag() * c_r.mag()),
@@ -159,9 +159,9 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         // |C′(s)| |1 + κ(s) ρ(t)| |sin θ| (or in t), from both ends.
         let by_g = g.map_or(f64::INFINITY, |g| ks.mag() * g.mag());
         // (Multilinear again: exact at the corners.)
-        let rate = |k: Iv, rho: Iv| {
+        let rate = |k: Interval, rho: Interval| {
             let size = (1.0 + k.mag() * rho.mag()) * c_r.mag() + k.mag();
-            Iv::multilinear(
+            Interval::multilinear(
                 [k, rho, c_r],
                 |k, r, c| (1.0 + k * r) * c - k,
                 BOUND_ROOM * size,
@@ -191,7 +191,7 @@ pub(crate) fn theta_monotone(p: &Pair, a: (f64, f64), b: (f64, f64)) -> Option<b
         // speed of T, and to its rounding.)
         let pad = 64.0 * p.vt.tol * bt.speed + DISTANCE_ROUNDING * (r0 + r1);
         let mid = 0.5 * (r0 + r1);
-        dist = Iv::new(
+        dist = Interval::new(
             dist.lo.max(mid - 0.5 * swing - pad),
             dist.hi.min(mid + 0.5 * swing + pad),
         );

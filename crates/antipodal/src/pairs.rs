@@ -4,6 +4,7 @@ use crate::dissect::Piece;
 use crate::doubt::Doubt;
 use crate::view::View;
 use curve::V2;
+use numeric::rounding::ulps;
 use std::f64::consts::{PI, TAU};
 
 /// Upper bound of the noise of |sin θ| (the antipodal angle of a found pair); the noise at a
@@ -143,7 +144,7 @@ impl<'a> Pair<'a> {
         let r = (jt.p - js.p).norm().max(f64::MIN_POSITIVE);
         let (vs, vt) = (js.d1.norm(), jt.d1.norm());
         let slide = self.vs.tol * vs * (1.0 / r + js.curvature().abs()) + self.vt.tol * vt / r;
-        (slide + 64.0 * f64::EPSILON).min(THETA_NOISE)
+        (slide + ulps(64.0)).min(THETA_NOISE)
     }
 
     /// `sin θ = sin_theta` at `(s, t)` is within its noise there ([`Pair::theta_noise`], never
@@ -339,9 +340,7 @@ pub(crate) fn polish_within(
         let Some((ds, dt)) = step.step else {
             break;
         };
-        if ds.abs() <= 4.0 * f64::EPSILON * s.abs().max(1.0)
-            && dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(1.0)
-        {
+        if ds.abs() <= ulps(4.0) * s.abs().max(1.0) && dt.abs() <= ulps(4.0) * t.abs().max(1.0) {
             break;
         }
         let (ns, nt) = (s - ds, t - dt);

@@ -9,13 +9,14 @@
 use crate::doubt::Doubt;
 use crate::view::View;
 use bspline::roots::{Count, Root, RootKind};
-use bspline::solve::{bracketed, Accuracy};
 use bspline::Piecewise;
 use curve::V2;
+use numeric::rounding::ulps;
+use numeric::solve::{bracketed, Accuracy};
 use smallvec::SmallVec;
 
 /// Halley's step safeguarded by a bracket on which `f` changes sign (see
-/// [`bspline::solve::bracketed`]), to the parameter tolerance `tol`, from `hint` (NaN: none).
+/// [`numeric::solve::bracketed`]), to the parameter tolerance `tol`, from `hint` (NaN: none).
 pub(crate) fn solve_in(
     f: impl Fn(f64) -> (f64, f64, f64),
     bracket: (f64, f64),
@@ -202,7 +203,7 @@ impl View<'_> {
     ) -> Option<Option<f64>> {
         let ((lo, d_lo), (hi, d_hi)) = if a.0 <= b.0 { (a, b) } else { (b, a) };
         let (fl, fh) = (d_lo.dot(n), d_hi.dot(n));
-        let bound = |d1: V2| 64.0 * f64::EPSILON * d1.norm();
+        let bound = |d1: V2| ulps(64.0) * d1.norm();
         if fl.abs() <= bound(d_lo) || fh.abs() <= bound(d_hi) {
             return None;
         }
@@ -293,7 +294,7 @@ impl View<'_> {
     ) -> Option<Option<f64>> {
         let (jl, jh) = (self.jet_to(lo, 1), self.jet_to(hi, 1));
         let trusted =
-            |x: f64, q: V2, d: V2| x.abs() > 64.0 * f64::EPSILON * (q.norm() + p.norm()) * d.norm();
+            |x: f64, q: V2, d: V2| x.abs() > ulps(64.0) * (q.norm() + p.norm()) * d.norm();
         let (fl, fh) = ((jl.p - p).cross(jl.d1), (jh.p - p).cross(jh.d1));
         if !(trusted(fl, jl.p, jl.d1) && trusted(fh, jh.p, jh.d1)) {
             return None;
@@ -330,7 +331,7 @@ impl View<'_> {
             // Each side's orientation of p, trusted beyond its rounding.
             let side = |a: V2, b: V2| {
                 let x = (b - a).cross(p - a);
-                let bound = 64.0 * f64::EPSILON * (b - a).norm() * (p.norm() + a.norm());
+                let bound = ulps(64.0) * (b - a).norm() * (p.norm() + a.norm());
                 (x.abs() > bound).then_some(x > 0.0)
             };
             let sides = [side(jl.p, apex), side(apex, jh.p), side(jh.p, jl.p)];
@@ -362,7 +363,7 @@ impl View<'_> {
         prefer: Prefer,
         hint: f64,
     ) -> Option<Option<f64>> {
-        let eps = 64.0 * f64::EPSILON;
+        let eps = ulps(64.0);
         let (jl, jh) = (self.jet_to(lo, 1), self.jet_to(hi, 1));
         let (gl, gh) = (jl.d1.dot(v), jh.d1.dot(v));
         if gl.abs() <= eps * jl.d1.norm() || gh.abs() <= eps * jh.d1.norm() {
@@ -513,7 +514,7 @@ mod tests {
                         None => prop_assert!(changes.is_empty(), "{p:?}: tangents at {changes:?}"),
                         Some(u) => {
                             prop_assert_eq!(changes.len(), 1, "{:?}: tangents at {:?}", p, changes);
-                            prop_assert!((changes[0] - u).abs() <= h, "{u} vs {changes:?}");
+                            testkit::prop_assert_near!(changes[0], u, h, "{u} vs {changes:?}");
                         }
                     }
                 }

@@ -2,8 +2,8 @@
 //! two radii of curvature have the right sign all along (the maximum principle): this settles
 //! stretches where θ has an extremum, which no proof of monotonicity reaches.
 
-use crate::interval::Iv;
 use crate::pairs::Pair;
+use numeric::Interval;
 
 /// No pair lies on `p` between the opposite points `a` and `b`, where θ is `th.0` and `th.1`,
 /// of one sign beyond the noise: so it stays, by the maximum principle.
@@ -39,7 +39,7 @@ pub(crate) fn clear_by_rates(p: &Pair, a: (f64, f64), b: (f64, f64), th: (f64, f
         return false;
     }
     // The least of σρ′ over an arc: its range's end on the side of −σ.
-    let least = |r: Iv| if sigma > 0.0 { r.lo } else { -r.hi };
+    let least = |r: Interval| if sigma > 0.0 { r.lo } else { -r.hi };
     // (T's least is at most its value at either end.)
     let cap_t = (sigma * rates_t[0]).min(sigma * rates_t[1]);
     // (NaN fails too.)

@@ -7,7 +7,7 @@
 //! Taylor model carries the common linear part through products and reciprocals exactly, so
 //! only second-order terms widen the result.
 
-use crate::interval::Iv;
+use numeric::Interval;
 
 /// `f(m + h) ∈ v + g·h + [−r, r]` for `|h| ≤ δ` (the half-width `δ` is the caller's, the same
 /// for every model combined).
@@ -62,9 +62,9 @@ impl Taylor {
     }
 
     /// The range over `|h| ≤ δ`.
-    pub(crate) fn range(self, delta: f64) -> Iv {
+    pub(crate) fn range(self, delta: f64) -> Interval {
         let spread = self.g.abs() * delta + self.r;
-        Iv::new(self.v - spread, self.v + spread)
+        Interval::new(self.v - spread, self.v + spread)
     }
 }
 
@@ -110,7 +110,7 @@ mod tests {
             let prod = tf.mul(tg, delta);
             let cube = tg.cube(delta);
             let inv = tg.recip(delta);
-            let slack = |iv: Iv| 1e-12 * (iv.lo.abs() + iv.hi.abs() + 1.0);
+            let slack = |iv: Interval| 1e-12 * (iv.lo.abs() + iv.hi.abs() + 1.0);
             let inside = |x: f64, t: Taylor, h: f64| {
                 let lin = t.v + t.g * h;
                 (x - lin).abs() <= t.r + 1e-12 * (x.abs() + 1.0)

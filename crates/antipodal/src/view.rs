@@ -12,6 +12,7 @@ use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
 use bspline::Piecewise;
 use curve::circle::Angle;
 use curve::{Jet, ParamCurve, StraightSpan, V2};
+use numeric::rounding::ulps;
 use smallvec::SmallVec;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
@@ -114,7 +115,7 @@ const SAME_ANGLE: f64 = 1e-13;
 
 /// How close below a closed curve's end (relative to the period) a reported parameter is
 /// the seam: a few units of rounding.
-const SEAM_ROUNDING: f64 = 8.0 * f64::EPSILON;
+const SEAM_ROUNDING: f64 = ulps(8.0);
 
 /// The least order a jet is evaluated to: the second derivative costs little beside the first
 /// (analytic formulas; de Casteljau's levels for splines), and the many requests for a point's

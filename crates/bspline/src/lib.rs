@@ -12,9 +12,8 @@
 //! - [`symbolic`]: curvature numerators and the sign functions of Jia's primitives.
 //! - [`Piecewise`]: the piecewise Bézier form every certified decision reads, with a bound on
 //!   the error of its coefficients; its algebra and evaluation.
-//! - [`rounding`]: the one rounding model behind those bounds.
+//! - [`rounding`]: the bounds of the B-spline operations, on `numeric`'s one rounding model.
 //! - [`roots`]: certified root counting and isolation.
-//! - [`solve`]: the one bracketed solver.
 //! - [`tensor`]: bivariate tensor-product functions `F(t, r)`.
 
 mod algebra;
@@ -26,7 +25,6 @@ mod rational;
 mod refine;
 pub mod roots;
 pub mod rounding;
-pub mod solve;
 mod spline;
 pub mod symbolic;
 pub mod tensor;

@@ -68,7 +68,7 @@ impl Rational {
             .chunks_exact(d + 1)
             .flat_map(|p| &p[..d])
             .fold(0.0f64, |m, x| m.max(x.abs()));
-        let err = crate::rounding::UNIT_ROUNDOFF * largest;
+        let err = numeric::rounding::UNIT_ROUNDOFF * largest;
         Ok(Self {
             hom,
             rational: true,

@@ -14,6 +14,7 @@
 use crate::error::{Error, Result};
 use crate::piecewise::Piecewise;
 use crate::spline::BSpline;
+use numeric::rounding::ulps;
 use serde::{Deserialize, Serialize};
 
 mod count;
@@ -78,7 +79,7 @@ impl RootOptions {
     /// The tolerance used on `[a, b]`: the one asked for, but never below a few units of
     /// rounding of the parameters there (no bracket can be narrower).
     fn effective_tol(&self, a: f64, b: f64) -> f64 {
-        self.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs()))
+        self.tol.max(ulps(8.0) * a.abs().max(b.abs()))
     }
 
     fn validate(&self) -> Result<()> {

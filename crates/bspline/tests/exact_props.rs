@@ -422,7 +422,7 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(cases(256)))]
 
-    /// `rounding::Bounded` through sums and products (with cancellations: the second product
+    /// `numeric::rounding::Bounded` through sums and products (with cancellations: the second product
     /// near the first) holds its bound on the exact value of the same expression of exact
     /// inputs anywhere within the inputs' errors.
     #[test]
@@ -433,7 +433,7 @@ proptest! {
         rel_err in prop::collection::vec(prop_oneof![Just(0.0), 0.0..1e-10f64], 6),
         at in prop::collection::vec(-1.0..1.0f64, 6),
     ) {
-        use bspline::rounding::Bounded;
+        use numeric::rounding::Bounded;
         let mut v: Vec<f64> = x.iter().zip(&scale).map(|(a, k)| a * 2f64.powi(*k)).collect();
         if near {
             // x2 x3 within rounding of x0 x1.

@@ -7,8 +7,8 @@
 //! The weight `1/√2` is rounded to a double: the homogeneous coefficients carry that rounding
 //! as their error, so the certified decisions cover the exact circle.
 
-use bspline::rounding::UNIT_ROUNDOFF;
 use bspline::Piecewise;
+use numeric::rounding::UNIT_ROUNDOFF;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2, TAU};
 
 /// The homogeneous unit circle `(X, Y, W)` in pieces (one per quarter, C⁰ at the quarters,
@@ -173,6 +173,7 @@ pub(crate) fn frame_cs(u: f64) -> CirclePoint {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
+    use numeric::rounding::ulps;
 
     /// The closed form of the angle against the rational circle's pieces, and its derivatives
     /// against central differences; the parameter of an angle inverts it.
@@ -200,9 +201,9 @@ mod tests {
                 let num1 = (f(u + h)[0] - f(u - h)[0]) / (2.0 * h);
                 let num2 = (f(u + h)[1] - f(u - h)[1]) / (2.0 * h);
                 let num3 = (f(u + h)[2] - f(u - h)[2]) / (2.0 * h);
-                assert!((num1 - d1).abs() < 1e-7, "{u}");
-                assert!((num2 - d2).abs() < 1e-6, "{u}");
-                assert!((num3 - d3).abs() < 1e-5, "{u}");
+                testkit::assert_near!(num1, d1, 1e-7, "{u}");
+                testkit::assert_near!(num2, d2, 1e-6, "{u}");
+                testkit::assert_near!(num3, d3, 1e-5, "{u}");
             }
         }
     }
@@ -260,21 +261,17 @@ mod tests {
             let f = frame_cs(u);
             let (cs, d) = bernstein_frame(u);
             for k in 0..2 {
-                assert!(
-                    (f.cs[k] - cs[k]).abs() <= 4e-16,
-                    "{u}: {:?} vs {cs:?}",
-                    f.cs
-                );
+                testkit::assert_near!(f.cs[k], cs[k], 4e-16, "{u}: {:?} vs {cs:?}", f.cs);
             }
             // The reference cancels in φ″ and φ‴ (the closed form does not): a bound relative
             // to the derivatives' size.
             let size = d[0].abs() + d[1].abs() + d[2].abs();
             for k in 0..3 {
-                let tol = 16.0 * f64::EPSILON * size;
-                assert!((f.d[k] - d[k]).abs() <= tol, "{u}: {:?} vs {d:?}", f.d);
+                let tol = ulps(16.0) * size;
+                testkit::assert_near!(f.d[k], d[k], tol, "{u}: {:?} vs {d:?}", f.d);
             }
             // The rotation by quarters lands on the unit circle.
-            assert!((f.cs[0].hypot(f.cs[1]) - 1.0).abs() <= 4e-16, "{u}");
+            testkit::assert_near!(f.cs[0].hypot(f.cs[1]), 1.0, 4e-16, "{u}");
         }
     }
 }

@@ -20,6 +20,7 @@ use crate::param::ParamCurve;
 use crate::profile::Profile;
 use crate::segment::{Segment, SegmentKind};
 use bspline::Piecewise;
+use numeric::rounding::ulps;
 use smallvec::{smallvec, SmallVec};
 
 /// Halvings of one Bézier piece before it is left undecided: a piece 2^-40 of its span is
@@ -168,11 +169,11 @@ impl Profile {
         let (mut current, mut work) = (Vec::new(), Vec::new());
         let mut tested = 0;
         // Nearest boxes first: the point found inside is then likely the deepest.
-        let near = 1.0 - ROUNDING_ULPS * f64::EPSILON;
+        let near = 1.0 - ulps(ROUNDING_ULPS);
         let mut order: Vec<(f64, usize)> = Vec::new();
         // (The reach a shade beyond r / near: the tree passes over no box the test keeps.)
         self.box_tree()
-            .within(x, r / near * (1.0 + 4.0 * f64::EPSILON), |i| {
+            .within(x, r / near * (1.0 + ulps(4.0)), |i| {
                 let d = box_distance(self.segment_box(i), x) * near;
                 if d < r
                     && window.is_none_or(|w| w.cover(i as f64, i as f64 + 1.0) != Cover::None)
@@ -186,7 +187,7 @@ impl Profile {
         // of the curve) mostly show it at once, and the deepest of them is the best witness.
         // A piece box's distance rounds by a few units of the centre's and the radius's size,
         // which the boxes' own growth (their coordinates' size) does not cover.
-        let far = r + ROUNDING_ULPS * f64::EPSILON * x.x.abs().max(x.y.abs()).max(r);
+        let far = r + ulps(ROUNDING_ULPS) * x.x.abs().max(x.y.abs()).max(r);
         if let Some(entered) = self.deepest_piece_end(x, r, far, &order, window) {
             return entered;
         }
@@ -437,8 +438,7 @@ impl Errors {
     /// (δX + |X / w| δw) / w for errors δX, δw ≤ w / 2 of its coefficients (to first order;
     /// twice that covers the rest), and the arithmetic's rounding.
     fn room(self, w: f64, mag: f64, depth: usize) -> f64 {
-        4.0 * (self.point + mag * self.weight) / w
-            + (ROUNDING_ULPS + depth as f64) * f64::EPSILON * mag
+        4.0 * (self.point + mag * self.weight) / w + ulps(ROUNDING_ULPS + depth as f64) * mag
     }
 }
 
@@ -536,7 +536,7 @@ fn distance_verdict(piece: &Piece<'_>, x: V2, r: f64, err: Errors) -> Option<Con
         return None;
     }
     let (d, m) = (n - 1, 2 * (n - 1));
-    let eps = f64::EPSILON;
+    let eps = ulps(1.0);
     let (mut h_max, mut w_max) = (0.0f64, 0.0f64);
     for c in piece.coefs.chunks_exact(3) {
         h_max = h_max.max(c[0].abs()).max(c[1].abs());
@@ -711,8 +711,7 @@ const ARC_ROUNDING_ULPS: f64 = 64.0;
 fn arc_distance(seg: &Segment, c: V2, radius: f64, x: V2) -> f64 {
     let (a, b) = (seg.start(), seg.end());
     let mag = x.x.abs().max(x.y.abs()) + c.x.abs().max(c.y.abs()) + radius;
-    let room =
-        ARC_ROUNDING_ULPS * f64::EPSILON * mag + 4.0 * seg.curve().curve().coefficient_error();
+    let room = ulps(ARC_ROUNDING_ULPS) * mag + 4.0 * seg.curve().curve().coefficient_error();
     let v = x - c;
     let len = v.norm();
     let to_circle = (len - radius).abs();
@@ -723,7 +722,7 @@ fn arc_distance(seg: &Segment, c: V2, radius: f64, x: V2) -> f64 {
     // The side of the chord of the circle's nearest point, and of the arc's middle, in
     // units of the chord length times the radius (the rounding is ~mag of those).
     let side = |q: V2| chord.cross(q - a);
-    let tol = 8.0 * f64::EPSILON * mag * (chord.norm() + radius);
+    let tol = ulps(8.0) * mag * (chord.norm() + radius);
     // The circle's distance bounds the arc's everywhere; where the circle's nearest point
     // lies clearly off the arc, the arc's nearest point is an end.
     let bound = if len <= room || chord.norm() <= room {
@@ -752,8 +751,8 @@ fn line_passes_by(seg: &Segment, x: V2, r: f64) -> bool {
     let squared = crate::geom::squared_distance_to_segment(x.arr(), a.arr(), b.arr());
     // (The foot and the difference round by a few units of the coordinates; the squares by
     // a few units of themselves.)
-    let room = ROUNDING_ULPS * f64::EPSILON * (x.norm() + a.norm() + b.norm() + r);
-    squared >= (r + room) * (r + room) * (1.0 + 4.0 * f64::EPSILON)
+    let room = ulps(ROUNDING_ULPS) * (x.norm() + a.norm() + b.norm() + r);
+    squared >= (r + room) * (r + room) * (1.0 + ulps(4.0))
 }
 
 /// A lower bound on the distance from `x` to a box `[lo x, lo y, hi x, hi y]`.
@@ -763,5 +762,5 @@ pub(crate) fn box_distance(b: [f64; 4], x: V2) -> f64 {
     // (The norm rounds by up to two units either way, a square root of a sum of squares:
     // four off keeps it below the true distance. The disk tests call this for every box in
     // reach, and hypot costs several times more.)
-    V2::new(dx, dy).norm() * (1.0 - 4.0 * f64::EPSILON)
+    V2::new(dx, dy).norm() * (1.0 - ulps(4.0))
 }

@@ -10,6 +10,7 @@
 use crate::geom::V2;
 use crate::segment::Segment;
 use crate::stretch::{pieces_of, Stretch};
+use numeric::rounding::ulps;
 
 /// How far (relative to the chains' size) a stretch tested by its chord may stray from it.
 pub(crate) const FLATNESS: f64 = 1e-7;
@@ -17,7 +18,7 @@ pub(crate) const FLATNESS: f64 = 1e-7;
 /// Units of rounding of the largest coordinate below which the flatness is noise: far from
 /// the origin a curve's points are known only to a few units of rounding of their
 /// coordinates, and finer stretches never get flatter.
-const FLAT_ROUNDING: f64 = 64.0 * f64::EPSILON;
+const FLAT_ROUNDING: f64 = ulps(64.0);
 
 /// Halvings of a Bézier piece before it is taken as flat: a part 2^-24 of a piece.
 const MAX_DEPTH: usize = 24;
@@ -30,7 +31,7 @@ const MORE_TESTS: usize = 1 << 18;
 
 /// Units of rounding of the largest coordinate within which a stretch's way back is on its
 /// way there (a retrace): the halvings' rounding of points on one line.
-const RETRACE_ROUNDING: f64 = 256.0 * f64::EPSILON;
+const RETRACE_ROUNDING: f64 = ulps(256.0);
 
 /// A test that did not finish within its bound on the work.
 #[derive(Debug, Clone, Copy, PartialEq)]

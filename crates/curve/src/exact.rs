@@ -5,10 +5,8 @@
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
+use numeric::rounding::UNIT_ROUNDOFF;
 use std::cmp::Ordering;
-
-/// Half an ulp: the relative error of one rounded operation.
-const UNIT: f64 = f64::EPSILON / 2.0;
 
 /// The sign of `(b − a) × (d − c)`: `Less` when turning from the first direction to the second
 /// is clockwise, `Equal` when they are exactly parallel (or either is zero). `None` for
@@ -40,11 +38,11 @@ pub fn cross_sign(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Option<
     }
     let (left, right) = (ux * vy, uy * vx);
     let det = left - right;
-    // Each difference is within UNIT of its value, each product within 3 UNIT (and the
-    // rounding of the products themselves), the difference within one more: 8 UNIT of the
+    // Each difference is within UNIT_ROUNDOFF of its value, each product within 3 UNIT_ROUNDOFF (and the
+    // rounding of the products themselves), the difference within one more: 8 UNIT_ROUNDOFF of the
     // terms' magnitudes bounds the error with room (and underflow is caught by the exact
     // path: a bound of zero decides nothing).
-    let bound = 8.0 * UNIT * (left.abs() + right.abs());
+    let bound = 8.0 * UNIT_ROUNDOFF * (left.abs() + right.abs());
     if det.abs() > bound && bound > f64::MIN_POSITIVE {
         return det.partial_cmp(&0.0);
     }

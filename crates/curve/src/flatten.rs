@@ -10,6 +10,7 @@
 
 use crate::geom::distance_to_segment;
 use crate::{ParamCurve, Profile, Segment};
+use numeric::rounding::ulps;
 
 /// How near (a share of the size) two consecutive points are one: the contract's joint
 /// tolerance, within which one segment's end is the next one's start. Keeping both would give
@@ -18,7 +19,7 @@ const JOINED: f64 = 1e-9;
 
 /// The finest tolerance taken, as a share of the coordinates' magnitude: a thousand times the
 /// rounding of a double.
-const ROUNDING: f64 = 1e3 * f64::EPSILON;
+const ROUNDING: f64 = ulps(1e3);
 
 /// Most halvings of one Bézier piece: each quarters its control points' distance from the
 /// chord, so 2^24 chords reach 4^-24 of the piece's size, beyond [`ROUNDING`] (the bound ends

@@ -8,6 +8,8 @@
 //! its scale is a power of two. Results map back by the inverse change, whose only rounding is
 //! that of adding the origin to the reported points.
 
+use numeric::rounding::ulps;
+
 /// An exact change of coordinates `local = (global − origin) · 2^−exponent`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {
@@ -158,7 +160,7 @@ impl Frame {
             let x = times_pow2(d, -self.exponent);
             if !exact_difference(p[k], self.origin[k]) || times_pow2(x, self.exponent) != d {
                 // At most half an ulp of the difference (or of the subnormal result).
-                err = err.max(f64::EPSILON * x.abs() + f64::MIN_POSITIVE * f64::EPSILON);
+                err = err.max(ulps(1.0) * x.abs() + ulps(f64::MIN_POSITIVE));
             }
             x
         });

@@ -180,6 +180,7 @@ impl Jet {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use numeric::rounding::ulps;
     use std::f64::consts::{PI, TAU};
 
     proptest::proptest! {
@@ -192,7 +193,7 @@ mod tests {
             };
             let got = wrap_pi(a);
             proptest::prop_assert!(got > -PI && got <= PI, "{a} → {got}");
-            proptest::prop_assert!((got - want).abs() <= 4.0 * f64::EPSILON * a.abs().max(1.0));
+            testkit::prop_assert_near!(got, want, ulps(4.0) * a.abs().max(1.0));
         }
     }
 
@@ -222,7 +223,7 @@ mod tests {
             let h = 1e-5;
             let fd = (jet(u + h).curvature() - jet(u - h).curvature()) / (2.0 * h);
             let got = j.curvature_rate();
-            proptest::prop_assert!((got - fd).abs() <= 1e-5 * (1.0 + fd.abs()), "{got} vs {fd}");
+            testkit::prop_assert_near!(got, fd, 1e-5 * (1.0 + fd.abs()), "{got} vs {fd}");
         }
     }
 
@@ -231,6 +232,6 @@ mod tests {
         assert_eq!(wrap_pi(PI), PI);
         assert_eq!(wrap_pi(-PI), PI);
         assert_eq!(wrap_pi(0.0), 0.0);
-        assert!((wrap_pi(3.0 * PI) - PI).abs() < 1e-15);
+        testkit::assert_near!(wrap_pi(3.0 * PI), PI, 1e-15);
     }
 }

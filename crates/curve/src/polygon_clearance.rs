@@ -11,6 +11,7 @@
 use crate::geom::V2;
 use crate::profile::Profile;
 use crate::segment::SegmentKind;
+use numeric::rounding::ulps;
 
 /// Units of rounding allowed in a projection: a dot product of coordinates with an edge's
 /// normal (two products and a sum, each rounding by half a unit of the largest coordinate
@@ -71,7 +72,7 @@ fn separated(poly: &[V2], s: [V2; 2]) -> bool {
         .map(|p| p.x.abs().max(p.y.abs()))
         .fold(0.0, f64::max);
     let apart_along = |n: V2| {
-        let room = ROUNDING_ULPS * f64::EPSILON * scale * (n.x.abs() + n.y.abs());
+        let room = ulps(ROUNDING_ULPS) * scale * (n.x.abs() + n.y.abs());
         let (mut pmin, mut pmax) = (f64::INFINITY, f64::NEG_INFINITY);
         for p in poly {
             let d = p.dot(n);

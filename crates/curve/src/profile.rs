@@ -9,6 +9,7 @@ use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
 use crate::param::ParamCurve;
 use crate::segment::Segment;
+use numeric::rounding::ulps;
 
 /// Where two segments meet, or the seam of a closed profile.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,7 +42,7 @@ pub const JOIN_GAP: f64 = 1e-9;
 /// A joint's gap (relative to the largest coordinate) that is rounding of the coordinates,
 /// whatever the size: end points computed far from the origin (an arc's, from its centre and
 /// angles) round by a few units there.
-const JOIN_ROUNDING: f64 = 16.0 * f64::EPSILON;
+const JOIN_ROUNDING: f64 = ulps(16.0);
 
 /// The jump of the tangent direction (radians) above which a joint is a corner: the interface
 /// contract's, far above the rounding of tangents computed from control points.
@@ -520,7 +521,7 @@ mod tests {
             for j in q.joints() {
                 assert_eq!(j.kind, JointKind::Convex);
                 let want = if reverse { -FRAC_PI_2 } else { FRAC_PI_2 };
-                assert!((j.turn - want).abs() < 1e-15, "{j:?}");
+                testkit::assert_near!(j.turn, want, 1e-15, "{j:?}");
             }
         }
     }

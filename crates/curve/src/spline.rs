@@ -4,9 +4,9 @@ use crate::error::{Error, Result};
 use crate::frame::{exact_difference, exponent_of, Frame};
 use crate::geom::{Jet, V2};
 use crate::param::ParamCurve;
-use bspline::rounding::UNIT_ROUNDOFF;
 use bspline::symbolic::{homogeneous_pieces, CurvePieces};
 use bspline::{BSpline, Piecewise, Rational};
+use numeric::rounding::UNIT_ROUNDOFF;
 
 /// A B-spline or NURBS plane curve, closed (periodic or clamped with equal end points) or open.
 #[derive(Debug, Clone)]

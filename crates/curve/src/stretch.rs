@@ -11,6 +11,7 @@
 
 use crate::geom::V2;
 use crate::segment::Segment;
+use numeric::rounding::ulps;
 use smallvec::SmallVec;
 use std::f64::consts::PI;
 
@@ -20,7 +21,7 @@ type Coefs = SmallVec<[f64; 12]>;
 
 /// Units of rounding of the largest coordinate by which a box is grown: the division
 /// `X / w` of each Euclidean point, and the halvings that made the piece.
-const BOX_ROUNDING: f64 = 64.0 * f64::EPSILON;
+const BOX_ROUNDING: f64 = ulps(64.0);
 
 /// Tangent cones together must leave this much of a half-turn (radians) to prove a
 /// stretch runs one way: the rounding of the differences' directions, far above it.
@@ -203,7 +204,7 @@ impl Stretch {
             return None;
         }
         let sum = directions.iter().fold(V2::new(0.0, 0.0), |s, &d| s + d);
-        if sum.norm() <= f64::EPSILON * directions.len() as f64 {
+        if sum.norm() <= ulps(1.0) * directions.len() as f64 {
             return None;
         }
         let axis = sum.unit();

@@ -23,6 +23,7 @@ use crate::junction_proof::{closed_site_at, proven_within, ClosedSite};
 use crate::sites::{Disk, Sites};
 use crate::{MedialAxis, Node, NodeKind};
 use curve::{Clearance, ParamCurve, V2};
+use numeric::rounding::ulps;
 use std::collections::HashSet;
 
 /// Radii of the disks about a junction searched for its exact point, as shares of the size:
@@ -504,7 +505,7 @@ fn winds_round_zero(
     // (No narrower than the disk tests can tell: far from the origin a share of the room
     // is below the coordinates' rounding, and no disk that close to the distance is proven.)
     let magnitude = centre[0].abs().max(centre[1].abs()).max(h);
-    let room = (polygon.enclosure * h).max(ENCLOSURE_ULPS * f64::EPSILON * magnitude);
+    let room = (polygon.enclosure * h).max(ulps(ENCLOSURE_ULPS) * magnitude);
     if room > MOST_ENCLOSURE * h {
         return false; // (the map's sign then holds at too few of the polygon's corners)
     }

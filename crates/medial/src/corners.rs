@@ -16,6 +16,7 @@ use crate::candidates::Candidate;
 use crate::sites::{Sites, EMPTY_SLACK};
 use crate::stretches::Vertex;
 use curve::{JointKind, ParamCurve};
+use numeric::rounding::ulps;
 
 /// Units of rounding (of the centre's coordinates and the radius) by which the other side
 /// must be nearer than the feet's sides to enter the disk: both are distances to nearest
@@ -43,7 +44,7 @@ pub(crate) fn entered_across_corner(
     v: &Vertex,
 ) -> Option<(usize, f64, f64)> {
     let slack = EMPTY_SLACK * sites.size;
-    let rounding = ROUNDING_ULPS * f64::EPSILON * (v.xy[0].abs().max(v.xy[1].abs()) + v.radius);
+    let rounding = ulps(ROUNDING_ULPS) * (v.xy[0].abs().max(v.xy[1].abs()) + v.radius);
     let own = || {
         (0..2)
             .map(|s| {

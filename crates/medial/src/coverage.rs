@@ -16,6 +16,7 @@
 use crate::sites::Sites;
 use crate::{MedialAxis, NodeKind};
 use curve::{JointKind, ParamCurve, V2};
+use numeric::rounding::ulps;
 
 /// How far apart the ends of two stretches of feet that follow one another may lie (as a
 /// share of the size, measured on the boundary and, in a fan, along the disk's rim): twice
@@ -403,7 +404,7 @@ pub(crate) fn arc_between(sites: &Sites<'_>, k: usize, a: f64, b: f64, x: V2, r:
     let hi = lo + d;
     // (The segment holding the middle; both feet must lie on it, its ends included.)
     let i = ((0.5 * (lo + hi)).floor() as usize) % boundary.segments().len();
-    let on = |u: f64| u >= i as f64 - f64::EPSILON * n && u <= (i + 1) as f64 + f64::EPSILON * n;
+    let on = |u: f64| u >= i as f64 - ulps(n) && u <= (i + 1) as f64 + ulps(n);
     let merge = MERGE * sites.size;
     on(lo)
         && on(hi)
@@ -571,12 +572,12 @@ mod tests {
             }
             let foot = V2::from_arr(sites.foot(0, u));
             let back = line.param_at(line.place(u, || foot, far));
-            assert!((back - u).abs() < 1e-12, "{u} -> {back}");
+            testkit::assert_near!(back, u, 1e-12, "{u} -> {back}");
         }
         for fan in &line.fans {
             for t in [0.0, 0.3, 0.9] {
                 let u = line.param_at(fan.start + t * fan.angle);
-                assert!((u - u.round()).abs() < 1e-12, "{u}");
+                testkit::assert_near!(u, u.round(), 1e-12, "{u}");
             }
         }
     }

@@ -1,8 +1,8 @@
 //! Where a boundary's curvature peaks between two points: where the feet of a branch close
 //! in, the axis ends at the centre of curvature there.
 
-use bspline::rounding::Bounded;
 use curve::{Jet, ParamCurve, Profile};
+use numeric::rounding::Bounded;
 
 /// Halvings that find a curvature extremum between two points (to 2^-60 of their gap).
 const EXTREMUM_STEPS: usize = 60;

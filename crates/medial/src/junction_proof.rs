@@ -19,6 +19,7 @@ use crate::coverage::AT_CORNER;
 use crate::sites::Sites;
 use crate::true_sites::{ArcSite, LineSite, Shape};
 use curve::{JointKind, SegmentKind, V2};
+use numeric::rounding::ulps;
 
 /// Units of rounding of the distance itself a distance in closed form carries (a generous
 /// bound: the difference of the point and the site rounds by half a unit of itself, the
@@ -49,13 +50,13 @@ impl ClosedSite {
     fn at(&self, x: V2, h: f64) -> Option<(f64, f64, V2, f64)> {
         match *self {
             ClosedSite::Line { start, inward } => {
-                let error = DISTANCE_ULPS * f64::EPSILON * (x - start).norm();
+                let error = ulps(DISTANCE_ULPS) * (x - start).norm();
                 Some((inward.dot(x - start), error, inward, 0.0))
             }
             ClosedSite::Point(p) => {
                 let d = x - p;
                 let r = d.norm();
-                let error = DISTANCE_ULPS * f64::EPSILON * r;
+                let error = ulps(DISTANCE_ULPS) * r;
                 let reach = std::f64::consts::SQRT_2 * h;
                 (r > 2.0 * reach).then(|| (r, error, d * (1.0 / r), reach / (r - reach)))
             }
@@ -67,7 +68,7 @@ impl ClosedSite {
                 // (As a point's, the gradient turning about the centre; the radius's rounding
                 // adds to the distance's.)
                 let r = (x - centre).norm();
-                let error = DISTANCE_ULPS * f64::EPSILON * (r + radius);
+                let error = ulps(DISTANCE_ULPS) * (r + radius);
                 let reach = std::f64::consts::SQRT_2 * h;
                 let (distance, gradient) = Shape::Round {
                     centre,
@@ -95,9 +96,9 @@ pub(crate) fn proven_within(sites: [ClosedSite; 3], x: V2, h: f64) -> bool {
     // F(x̃) with its bounds, J(x̃), and how far J's rows may turn over the box (their
     // rounding too: a unit vector's components are within a few units).
     let f = [a.0 - b.0, a.0 - c.0];
-    let f_error = [a.1 + b.1 + ulps(f[0]), a.1 + c.1 + ulps(f[1])];
+    let f_error = [a.1 + b.1 + rounding_of(f[0]), a.1 + c.1 + rounding_of(f[1])];
     let j = [a.2 - b.2, a.2 - c.2];
-    let gradient_rounding = 8.0 * f64::EPSILON;
+    let gradient_rounding = ulps(8.0);
     let j_spread = [a.3 + b.3 + gradient_rounding, a.3 + c.3 + gradient_rounding];
     let det = j[0].cross(j[1]);
     if det == 0.0 || !det.is_finite() {
@@ -127,10 +128,10 @@ pub(crate) fn proven_within(sites: [ClosedSite; 3], x: V2, h: f64) -> bool {
             let residual = (identity[0] - row[0]).abs() + (identity[1] - row[1]).abs();
             // (A row of J turning by s moves each entry by at most s.)
             let spread = 2.0 * (y[i].x.abs() * j_spread[0] + y[i].y.abs() * j_spread[1]);
-            residual + spread + PRODUCT_ULPS * f64::EPSILON * (magnitude + 1.0)
+            residual + spread + ulps(PRODUCT_ULPS) * (magnitude + 1.0)
         })
         .fold(0.0, f64::max);
-    let slack = 1.0 - PRODUCT_ULPS * f64::EPSILON;
+    let slack = 1.0 - ulps(PRODUCT_ULPS);
     newton.is_finite() && newton + contraction * h < h * slack
 }
 
@@ -239,8 +240,8 @@ fn corner_nearest(arc: &ArcSite, ends_here: bool, x: V2, reach: f64) -> bool {
 }
 
 /// A few units of rounding of `v`.
-fn ulps(v: f64) -> f64 {
-    4.0 * f64::EPSILON * v.abs()
+fn rounding_of(v: f64) -> f64 {
+    ulps(4.0) * v.abs()
 }
 
 #[cfg(test)]
@@ -471,8 +472,10 @@ mod tests {
             for _ in 0..20 {
                 let y = x + V2::new(rnd() - 0.5, rnd() - 0.5) * (2.0 * reach);
                 let (closed, ..) = site.at(y, 0.0).expect("away from the site");
-                assert!(
-                    (closed - near(y)).abs() < 1e-12,
+                testkit::assert_near!(
+                    closed,
+                    near(y),
+                    1e-12,
                     "{site:?} at {y:?}: {closed} vs {}",
                     near(y)
                 );

@@ -17,6 +17,7 @@ use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use crate::stretches::{Stretch, Vertex};
 use crate::true_sites::{ArcSite, LineSite, Shape, TrueSite};
 use curve::{wrap_pi, JointKind, SegmentKind, V2};
+use numeric::rounding::ulps;
 use std::collections::HashSet;
 use std::f64::consts::PI;
 
@@ -313,7 +314,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
             // (Cramer's rule on the 2 × 2 Jacobian.)
             let step = V2::new(f0 * g1.y - f1 * g0.y, g0.x * f1 - g1.x * f0) * (1.0 / det);
             x = x - step;
-            if step.norm() <= 4.0 * f64::EPSILON * (x.norm() + size) {
+            if step.norm() <= ulps(4.0) * (x.norm() + size) {
                 break;
             }
         }
@@ -548,7 +549,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
         let magnitude = |p: V2| p.x.abs().max(p.y.abs());
         let scale = magnitude(x) + radius;
         // (Each distance to within 16 ulps of the magnitudes in it.)
-        let clear = |d: f64, at: f64| d >= radius - slack + 16.0 * f64::EPSILON * (scale + at);
+        let clear = |d: f64, at: f64| d >= radius - slack + ulps(16.0) * (scale + at);
         self.pieces.iter().flatten().all(|piece| match *piece {
             Piece::Line(l) => {
                 let at = magnitude(l.start) + l.length;
@@ -606,7 +607,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
     /// rounding. (An end solved on other equations may lie off it by their agreement.)
     fn on_bisector(&self, sites: [TrueSite; 2], e: &Solved) -> bool {
         let x = e.xy;
-        let room = 64.0 * f64::EPSILON * (x.x.abs().max(x.y.abs()) + e.radius);
+        let room = ulps(64.0) * (x.x.abs().max(x.y.abs()) + e.radius);
         sites.iter().all(|&s| {
             self.line(s)
                 .is_some_and(|l| (l.inward.dot(x - l.start) - e.radius).abs() <= room)

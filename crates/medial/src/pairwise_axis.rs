@@ -25,6 +25,7 @@ use crate::sites::Sites;
 use crate::stretches::Stretch;
 use crate::true_sites::TrueSite;
 use curve::V2;
+use numeric::rounding::ulps;
 use std::cell::Cell;
 use std::collections::{HashMap, HashSet};
 
@@ -44,7 +45,7 @@ const ABOUT: f64 = 1e-7;
 
 /// The rounding of a distance compared with a disk's radius, relative to the coordinates'
 /// magnitude: a few dozen ulps.
-const ROUNDING: f64 = 64.0 * f64::EPSILON;
+const ROUNDING: f64 = ulps(64.0);
 
 /// How far (a share of the size) Newton's method may move a node from the end the bisection
 /// found.

@@ -9,6 +9,7 @@ use crate::parallel::in_order;
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
 use curve::watch::Stage;
 use curve::ParamCurve;
+use numeric::rounding::ulps;
 
 /// Halvings that bracket where a stretch ends: to 2^-32 of a polyline step, which tells the
 /// site entering beyond it; the tri-tangent disk is then solved for on that site (halving on
@@ -375,7 +376,7 @@ impl Branch<'_, '_> {
                     (a, b) = (b, a + n); // the short way round, across the seam
                 }
                 let widest = EXTREMUM_WINDOW * n;
-                let mut w = (b - a).max(f64::EPSILON * n);
+                let mut w = (b - a).max(ulps(n));
                 for _ in 0..WIDENINGS {
                     if let Some(peak) = curvature_peak(boundary, a, b) {
                         // A peak across a corner is no end: the feet meet at the corner,
@@ -729,7 +730,7 @@ impl Branch<'_, '_> {
         // above 1e-16 of the size: a disk that touches the third point exactly, at the
         // junction, may seem entered by that much.)
         let outside = |v: &Vertex, f: f64| {
-            f >= -DISTANCE_ULPS * f64::EPSILON * v.xy[0].abs().max(v.xy[1].abs()).max(v.radius)
+            f >= -ulps(DISTANCE_ULPS) * v.xy[0].abs().max(v.xy[1].abs()).max(v.radius)
         };
         let (mut a, mut fa, mut best) = (lo, third(&last), last);
         let (mut b, mut fb) = (hi, third(&out));
@@ -770,7 +771,7 @@ impl Branch<'_, '_> {
                 (b, fb) = (s, f);
                 fa *= 0.5;
             }
-            if b - a <= f64::EPSILON * 4.0 {
+            if b - a <= ulps(4.0) {
                 break;
             }
         }
@@ -873,7 +874,7 @@ impl Branch<'_, '_> {
                 }
             }
             for _ in 0..FOOT_STEPS {
-                if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= f64::EPSILON * u1.abs().max(1.0) {
+                if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= ulps(1.0) * u1.abs().max(1.0) {
                     break;
                 }
                 let next = u1 - g1 * (u1 - u0) / (g1 - g0);
@@ -897,7 +898,7 @@ impl Branch<'_, '_> {
         // the corner is at infinity, and a secant from there strays).
         secant(lo, hi).or_else(|| {
             let u = guess[other];
-            secant(u, u + START_STEP * (hi - lo).max(f64::EPSILON))
+            secant(u, u + START_STEP * (hi - lo).max(ulps(1.0)))
         })
     }
 
@@ -919,7 +920,7 @@ impl Branch<'_, '_> {
         // The secant may leave the bracket (where the branch turns between its vertices,
         // the other foot goes past both of theirs and back); by no more than the kept foot
         // moves between them.
-        let span = (hi - lo).max((q[keep] - p[keep]).abs()).max(f64::EPSILON);
+        let span = (hi - lo).max((q[keep] - p[keep]).abs()).max(ulps(1.0));
         if !(u >= lo - span && u <= hi + span) {
             return None;
         }

@@ -1,38 +1,49 @@
 //! Closed intervals of reals and the interval arithmetic the proofs combine ranges with.
 
-/// A closed interval of reals.
+/// A closed interval of reals, `[lo, hi]`. Its arithmetic is plain (rounded to nearest): the
+/// callers widen the results by the rounding they carry ([`Interval::widened`]), as the proofs
+/// of `antipodal` do.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Iv {
-    pub(crate) lo: f64,
-    pub(crate) hi: f64,
+pub struct Interval {
+    /// The lower end.
+    pub lo: f64,
+    /// The upper end.
+    pub hi: f64,
 }
 
-impl Iv {
-    pub(crate) fn new(lo: f64, hi: f64) -> Self {
+impl Interval {
+    /// The interval `[lo, hi]`.
+    pub fn new(lo: f64, hi: f64) -> Self {
         Self { lo, hi }
     }
 
     /// The interval widened by a relative `margin` of its magnitude: room for the rounding
     /// of the coefficients it was read from and of the operations that combine it.
-    pub(crate) fn widened(self, margin: f64) -> Self {
+    pub fn widened(self, margin: f64) -> Self {
         let m = margin * self.lo.abs().max(self.hi.abs());
         Self::new(self.lo - m, self.hi + m)
     }
 
     /// The least interval holding both.
-    pub(crate) fn hull(self, o: Iv) -> Self {
+    pub fn hull(self, o: Interval) -> Self {
         Self::new(self.lo.min(o.lo), self.hi.max(o.hi))
     }
 
-    pub(crate) fn add(self, o: Iv) -> Self {
+    /// The sum: every `x + y` with `x` in `self`, `y` in `o`.
+    #[allow(clippy::should_implement_trait)] // (named calls, as the bounded values have)
+    pub fn add(self, o: Interval) -> Self {
         Self::new(self.lo + o.lo, self.hi + o.hi)
     }
 
-    pub(crate) fn sub(self, o: Iv) -> Self {
+    /// The difference: every `x − y`.
+    #[allow(clippy::should_implement_trait)]
+    pub fn sub(self, o: Interval) -> Self {
         Self::new(self.lo - o.hi, self.hi - o.lo)
     }
 
-    pub(crate) fn mul(self, o: Iv) -> Self {
+    /// The product: every `x y` (the least and greatest of the corner products).
+    #[allow(clippy::should_implement_trait)]
+    pub fn mul(self, o: Interval) -> Self {
         let c = [
             self.lo * o.lo,
             self.lo * o.hi,
@@ -46,7 +57,7 @@ impl Iv {
     }
 
     /// `1 / x` for an interval that excludes zero (`None` otherwise).
-    pub(crate) fn recip(self) -> Option<Self> {
+    pub fn recip(self) -> Option<Self> {
         (self.lo > 0.0 || self.hi < 0.0).then(|| Self::new(1.0 / self.hi, 1.0 / self.lo))
     }
 
@@ -54,8 +65,8 @@ impl Iv {
     /// most one in each variable, as `xy + yz − xz`): a multilinear function takes its
     /// extremes at corners, where plain interval arithmetic loses whatever a variable
     /// entering twice shares. Widened by `margin` (absolute: the rounding of the terms).
-    pub(crate) fn multilinear(
-        [a, b, c]: [Iv; 3],
+    pub fn multilinear(
+        [a, b, c]: [Interval; 3],
         f: impl Fn(f64, f64, f64) -> f64,
         margin: f64,
     ) -> Self {
@@ -79,26 +90,31 @@ impl Iv {
     }
 
     /// The greatest magnitude in the interval.
-    pub(crate) fn mag(self) -> f64 {
+    pub fn mag(self) -> f64 {
         self.lo.abs().max(self.hi.abs())
     }
 
     /// Strictly positive or strictly negative throughout.
-    pub(crate) fn excludes_zero(self) -> bool {
+    pub fn excludes_zero(self) -> bool {
         self.lo > 0.0 || self.hi < 0.0
+    }
+
+    /// Whether `x` lies in the interval to a relative `slack` of the magnitudes of both (for a
+    /// value computed in floating point, checked against a range).
+    pub fn holds(self, x: f64, slack: f64) -> bool {
+        let room = slack * (self.mag() + x.abs());
+        x >= self.lo - room && x <= self.hi + room
     }
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
-    #![allow(clippy::unwrap_used)]
+mod tests {
     use super::*;
     use proptest::prelude::*;
 
     /// `x` lies in `iv`, to a relative slack of 1e-9 (for values computed in floating point).
-    pub(crate) fn inside(x: f64, iv: Iv) -> bool {
-        let slack = 1e-9 * (iv.lo.abs().max(iv.hi.abs()) + x.abs());
-        x >= iv.lo - slack && x <= iv.hi + slack
+    fn inside(x: f64, iv: Interval) -> bool {
+        iv.holds(x, 1e-9)
     }
 
     proptest! {
@@ -109,14 +125,14 @@ pub(crate) mod tests {
             c in proptest::array::uniform8(-2.0f64..2.0),
             ends in proptest::array::uniform6(-3.0f64..3.0),
         ) {
-            let iv = |a: f64, b: f64| Iv::new(a.min(b), a.max(b));
+            let iv = |a: f64, b: f64| Interval::new(a.min(b), a.max(b));
             let boxes = [iv(ends[0], ends[1]), iv(ends[2], ends[3]), iv(ends[4], ends[5])];
             let f = |x: f64, y: f64, z: f64| {
                 c[0] + c[1] * x + c[2] * y + c[3] * z
                     + c[4] * x * y + c[5] * y * z + c[6] * x * z + c[7] * x * y * z
             };
-            let r = Iv::multilinear(boxes, f, 0.0);
-            let at = |b: Iv, k: usize| b.lo + (b.hi - b.lo) * k as f64 / 8.0;
+            let r = Interval::multilinear(boxes, f, 0.0);
+            let at = |b: Interval, k: usize| b.lo + (b.hi - b.lo) * k as f64 / 8.0;
             let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
             for i in 0..=8 {
                 for j in 0..=8 {
@@ -138,7 +154,7 @@ pub(crate) mod tests {
             for &a1 in pts.iter().filter(|&&x| x >= a0) {
                 for &b0 in &pts {
                     for &b1 in pts.iter().filter(|&&x| x >= b0) {
-                        let (a, b) = (Iv::new(a0, a1), Iv::new(b0, b1));
+                        let (a, b) = (Interval::new(a0, a1), Interval::new(b0, b1));
                         for x in [a0, 0.5 * (a0 + a1), a1] {
                             for y in [b0, 0.5 * (b0 + b1), b1] {
                                 assert!(inside(x + y, a.add(b)));
@@ -153,6 +169,6 @@ pub(crate) mod tests {
                 }
             }
         }
-        assert!(Iv::new(-1.0, 1.0).recip().is_none());
+        assert!(Interval::new(-1.0, 1.0).recip().is_none());
     }
 }

@@ -51,7 +51,7 @@ const MAX_STEPS: usize = 200;
 /// (evaluated already) is returned.
 ///
 /// ```
-/// use bspline::solve::{bracketed, Accuracy};
+/// use numeric::solve::{bracketed, Accuracy};
 /// // x³ − 2 on [0, 2].
 /// let f = |x: f64| (x * x * x - 2.0, 3.0 * x * x, 6.0 * x);
 /// let x = bracketed(f, (0.0, 2.0), (-2.0, 6.0), Accuracy::param(1e-14));
@@ -242,12 +242,12 @@ mod tests {
             let acc = Accuracy::param(1e-12).hint(root + off);
             let count = std::cell::Cell::new(0);
             let x = bracketed(|x| { count.set(count.get() + 1); g(x) }, (lo, hi), ends, acc);
-            prop_assert!((x - root).abs() <= 1e-12);
+            testkit::prop_assert_near!(x, root, 1e-12);
             prop_assert!(count.get() <= 4, "{} evaluations", count.get());
             count.set(0);
             let x = bracketed(|x| { count.set(count.get() + 1); newton_only(g)(x) },
                 (lo, hi), ends, acc);
-            prop_assert!((x - root).abs() <= 1e-12);
+            testkit::prop_assert_near!(x, root, 1e-12);
             prop_assert!(count.get() <= 6, "{} evaluations", count.get());
         }
     }
@@ -267,6 +267,6 @@ mod tests {
             Accuracy::param(1e-15).noise(0.5),
         );
         assert_eq!(calls.get(), 1);
-        assert!((x - 0.3).abs() <= 0.5);
+        testkit::assert_near!(x, 0.3, 0.5);
     }
 }

@@ -7,6 +7,7 @@
 use crate::OffsetSegment;
 use bspline::BSpline;
 use curve::V2;
+use numeric::rounding::ulps;
 
 /// A joint whose direction turns by more than π less this (radians) turns back. The profile
 /// reader refuses turns within 1e-9 of π; a margin above it catches every one it would.
@@ -52,7 +53,7 @@ pub(crate) fn blunt(segments: &mut Vec<OffsetSegment>, width: f64) {
             let [a, b] = shares(back);
             (point_at(&segments[k], 1.0 - a) - point_at(&segments[next], b)).norm() >= width
         };
-        let mut back = f64::EPSILON.sqrt() * shortest;
+        let mut back = ulps(1.0).sqrt() * shortest;
         let mut cut = None;
         for _ in 0..MOST_DOUBLINGS {
             // (Also where a length is not a number.)

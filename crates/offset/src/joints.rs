@@ -195,6 +195,7 @@ fn set_end(s: &mut OffsetSegment, p: [f64; 2]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use numeric::rounding::ulps;
     use proptest::prelude::*;
 
     proptest! {
@@ -234,7 +235,7 @@ mod tests {
             let size = ca[0].abs().max(ca[1].abs()).max(cb[0].abs()).max(cb[1].abs()).max(ra + rb);
             for k in 0..3 {
                 let (end, start) = (end_of(&loop_[k]), start_of(&loop_[(k + 1) % 3]));
-                prop_assert!(gap(end, start) <= 16.0 * f64::EPSILON * size, "joint {k}: {}", gap(end, start));
+                prop_assert!(gap(end, start) <= ulps(16.0) * size, "joint {k}: {}", gap(end, start));
                 prop_assert!(gap(end, before[k]) <= 4.0 * nudge, "joint {k} moved {}", gap(end, before[k]));
             }
         }

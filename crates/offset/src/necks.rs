@@ -18,6 +18,7 @@ use crate::seams::{sided_feet, TOUCHING};
 use crate::walk::Walk;
 use curve::V2;
 use medial::Edge;
+use numeric::rounding::ulps;
 
 /// Halvings of the share of a step that find its radius's extremum: to 2^-40 of the step,
 /// where the radius (1-Lipschitz) is within rounding of its value at the last point taken.
@@ -211,7 +212,7 @@ pub(crate) fn onto_axis(
             (x - foot) * (1.0 / near[side].distance)
         };
         let slope = across.dot(from_foot(0) - from_foot(1));
-        if slope.is_nan() || slope.abs() <= f64::EPSILON {
+        if slope.is_nan() || slope.abs() <= ulps(1.0) {
             return None;
         }
         x = x - across * (gap / slope);

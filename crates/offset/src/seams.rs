@@ -7,6 +7,7 @@ use crate::necks::{self, Between};
 use crate::walk::{Foot, Walk};
 use curve::V2;
 use medial::{Edge, MedialAxis};
+use numeric::rounding::ulps;
 use std::f64::consts::TAU;
 
 /// Newton steps for a seam's feet: each doubles the digits; more means a degenerate seam
@@ -488,7 +489,7 @@ fn refine(
         }
         // [da −db] (δa, δb) = −gap.
         let det = -da.cross(db);
-        if det.abs() <= f64::EPSILON * da.norm() * db.norm() {
+        if det.abs() <= ulps(1.0) * da.norm() * db.norm() {
             break;
         }
         let step_a = -(gap.x * -db.y - -db.x * gap.y) / det;

@@ -10,9 +10,10 @@
 //! the size tolerance (crossings, isolated points, loops below the tolerance) becomes a leaf.
 
 use crate::deviation::measured_deviation;
-use crate::patch::{common_sign, tsign, variations, vsign, Patch, EPS};
+use crate::patch::{common_sign, tsign, variations, vsign, Patch};
 use crate::solve1::{bracketed_from, bracketed_or_end};
 use curve::distance_to_segment;
+use numeric::rounding::UNIT_ROUNDOFF;
 
 /// Where an arc ends: on a patch edge.
 #[derive(Debug, Clone, Copy)]
@@ -125,7 +126,7 @@ impl Tracer<'_> {
                     out.truncated = true;
                     return;
                 }
-                let err = (p.pt + p.pr + 2) as f64 * (depth + 4) as f64 * EPS * scale;
+                let err = (p.pt + p.pr + 2) as f64 * (depth + 4) as f64 * UNIT_ROUNDOFF * scale;
                 match self.classify(&p, err, strict) {
                     Class::Empty => {}
                     Class::Simple(graph_r) => {
@@ -227,7 +228,7 @@ impl Tracer<'_> {
     /// The arc of a simple patch. `graph_r`: the arc is `t = φ(r)` (else `r = ψ(t)`).
     fn trace(&self, cell: &Patch, p: &Patch, graph_r: bool, err: f64) -> Option<Arc> {
         // Rounding level of the cell's values.
-        let noise = 2.0 * (cell.pt + cell.pr + 2) as f64 * EPS * cell.max_abs();
+        let noise = 2.0 * (cell.pt + cell.pr + 2) as f64 * UNIT_ROUNDOFF * cell.max_abs();
         let mut ends: Vec<End> = Vec::with_capacity(2);
         for e in 0..4 {
             let coefs = p.edge(e);

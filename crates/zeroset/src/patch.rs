@@ -5,9 +5,7 @@
 //! sign, monotone in a direction, sign changes along an edge) are read off the coefficients.
 
 use bspline::tensor::BezierPatch;
-
-/// Unit roundoff.
-pub(crate) const EPS: f64 = f64::EPSILON * 0.5;
+use numeric::rounding::UNIT_ROUNDOFF;
 
 /// A tensor Bernstein polynomial on `[t0, t1] × [r0, r1]`, row-major (`c[i * (pr + 1) + j]`).
 #[derive(Debug, Clone)]
@@ -217,7 +215,7 @@ impl Patch {
         let d = d.restrict(bx)?;
         // Each difference carries twice the coefficients' error; the (at most four) splits
         // of `restrict` add rounding of the order of the degree per split.
-        let e = 2.0 * err + 8.0 * (d.pt + d.pr + 2) as f64 * EPS * d.max_abs();
+        let e = 2.0 * err + 8.0 * (d.pt + d.pr + 2) as f64 * UNIT_ROUNDOFF * d.max_abs();
         Some(common_sign(d.c.iter().copied(), e))
     }
 
@@ -446,11 +444,11 @@ mod tests {
         for n in [1usize, 5, 10, 40, 45] {
             let (mut b, mut d) = (vec![0.0; n + 1], vec![0.0; n + 1]);
             bernstein(0.37, &mut b, &mut d);
-            assert!((b.iter().sum::<f64>() - 1.0).abs() < 1e-13, "n {n}");
+            testkit::assert_near!(b.iter().sum::<f64>(), 1.0, 1e-13, "n {n}");
             assert!(d.iter().sum::<f64>().abs() < 1e-10, "n {n}");
             if n >= 3 {
                 let c = (0..3).fold(1.0, |c, k| c * (n - k) as f64 / (k + 1) as f64);
-                assert!((binom(n, 3) - c).abs() <= 1e-9 * c);
+                testkit::assert_near!(binom(n, 3), c, 1e-9 * c);
             }
         }
     }
@@ -463,9 +461,9 @@ mod tests {
         let (c, d) = b.split_r(0.61);
         for &(t, r) in &[(0.1, 0.2), (0.5, 0.9), (0.8, 0.3), (0.37, 0.5)] {
             let g = p.eval_grad(t, r);
-            assert!((g[0] - f(t, r)).abs() < 1e-14);
-            assert!((g[1] - ((r - 0.6) + 0.2 * t)).abs() < 1e-13);
-            assert!((g[2] - (t - 0.3)).abs() < 1e-13);
+            testkit::assert_near!(g[0], f(t, r), 1e-14);
+            testkit::assert_near!(g[1], (r - 0.6) + 0.2 * t, 1e-13);
+            testkit::assert_near!(g[2], t - 0.3, 1e-13);
             let part = if t <= a.t1 {
                 &a
             } else if r <= c.r1 {
@@ -473,7 +471,7 @@ mod tests {
             } else {
                 &d
             };
-            assert!((part.eval(t, r) - f(t, r)).abs() < 1e-14, "{t} {r}");
+            testkit::assert_near!(part.eval(t, r), f(t, r), 1e-14, "{t} {r}");
         }
     }
 
@@ -484,7 +482,7 @@ mod tests {
         let p = sample();
         let err = 1e-15;
         let q = p.restrict([0.5, 0.6, 0.7, 0.8]).expect("overlap");
-        assert!((q.eval(0.55, 0.75) - f(0.55, 0.75)).abs() < 1e-14);
+        testkit::assert_near!(q.eval(0.55, 0.75), f(0.55, 0.75), 1e-14);
         assert!((q.t0 - 0.5).abs() < 1e-15 && (q.r1 - 0.8).abs() < 1e-15);
         assert_eq!(p.partial_sign(0, [0.5, 0.6, 0.7, 0.8], err), Some(1));
         assert_eq!(p.partial_sign(1, [0.5, 0.6, 0.7, 0.8], err), Some(1));
@@ -535,10 +533,10 @@ mod tests {
             pr: 2,
             c,
         };
-        assert!((p.eval(0.7, 1.2) - f(0.7, 1.2)).abs() < 1e-14);
+        testkit::assert_near!(p.eval(0.7, 1.2), f(0.7, 1.2), 1e-14);
         let g = p.divide_diagonal(1e-12).expect("divisible");
         for &(t, r) in &[(0.6, 0.9), (1.4, 0.7), (1.0, 1.0)] {
-            assert!((g.eval(t, r) - (t + 2.0 * r - 1.0)).abs() < 1e-13);
+            testkit::assert_near!(g.eval(t, r), t + 2.0 * r - 1.0, 1e-13);
         }
         assert!(g.divide_diagonal(1e-12).is_none());
     }
@@ -592,7 +590,7 @@ mod tests {
         }
         let scale = g.iter().fold(0.0f64, |a, x| a.max(x.abs()));
         for (x, y) in q.c.iter().zip(&g) {
-            assert!((x - y).abs() <= 1e-12 * scale, "{x} {y}");
+            testkit::assert_near!(x, y, 1e-12 * scale, "{x} {y}");
         }
         assert!(q.divide_diagonal(1e-6).is_none());
     }

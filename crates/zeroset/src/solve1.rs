@@ -1,7 +1,8 @@
 //! One-dimensional refinement along the tracer's cells: plain Newton steps first (the graph
 //! patches are monotone, so they rarely need more), then the workspace's one bracketed solver.
 
-use bspline::solve::{bracketed, Accuracy};
+use numeric::rounding::ulps;
+use numeric::solve::{bracketed, Accuracy};
 
 /// Newton steps tried before a bracket is set up in [`bracketed_or_end`].
 const NEWTON_FIRST: usize = 6;
@@ -43,7 +44,7 @@ pub(crate) fn bracketed_or_end(
     noise: f64,
 ) -> f64 {
     let (lo, hi) = (a.min(b), a.max(b));
-    let tiny = 4.0 * f64::EPSILON * a.abs().max(b.abs()).max(hi - lo);
+    let tiny = ulps(4.0) * a.abs().max(b.abs()).max(hi - lo);
     let mut x = x0.clamp(lo, hi);
     for _ in 0..NEWTON_FIRST {
         let (fx, dx) = f(x);

@@ -8,9 +8,10 @@
 //! split further. Boxes unresolved at the tolerance give uncertified candidates.
 
 use crate::error::Result;
-use crate::patch::{common_sign, Patch, EPS};
+use crate::patch::{common_sign, Patch};
 use crate::zeroset::{DEFAULT_TOL, TOL_FLOOR};
 use bspline::tensor::TensorBSpline;
+use numeric::rounding::{ulps, UNIT_ROUNDOFF};
 use serde::{Deserialize, Serialize};
 
 /// Options for [`solve_system`].
@@ -72,8 +73,8 @@ pub fn solve_system(
         // Rounding level of a value of the cell polynomials (their coefficients' own error
         // and the evaluation's), for Newton's stopping test.
         let noise = [
-            4.0 * (cf.pt + cf.pr + 2) as f64 * EPS * sf,
-            4.0 * (cg.pt + cg.pr + 2) as f64 * EPS * sg,
+            4.0 * (cf.pt + cf.pr + 2) as f64 * UNIT_ROUNDOFF * sf,
+            4.0 * (cg.pt + cg.pr + 2) as f64 * UNIT_ROUNDOFF * sg,
         ];
         let mut stack = vec![(cf.clone(), cg.clone(), 0usize)];
         while let Some((pf, pg, depth)) = stack.pop() {
@@ -81,8 +82,8 @@ pub fn solve_system(
             if boxes > opts.max_boxes {
                 break;
             }
-            let ef = (pf.pt + pf.pr + 2) as f64 * (depth + 4) as f64 * EPS * sf;
-            let eg = (pg.pt + pg.pr + 2) as f64 * (depth + 4) as f64 * EPS * sg;
+            let ef = (pf.pt + pf.pr + 2) as f64 * (depth + 4) as f64 * UNIT_ROUNDOFF * sf;
+            let eg = (pg.pt + pg.pr + 2) as f64 * (depth + 4) as f64 * UNIT_ROUNDOFF * sg;
             if common_sign(pf.c.iter().copied(), ef) != 0
                 || common_sign(pg.c.iter().copied(), eg) != 0
             {
@@ -133,10 +134,7 @@ pub fn solve_system(
     }
     Ok(dedup(
         sols,
-        [
-            1e3 * min[0].max(f64::EPSILON),
-            1e3 * min[1].max(f64::EPSILON),
-        ],
+        [1e3 * min[0].max(ulps(1.0)), 1e3 * min[1].max(ulps(1.0))],
     ))
 }
 
@@ -216,8 +214,8 @@ fn newton(f: &Patch, g: &Patch, bx: [f64; 4], noise: [f64; 2]) -> Option<(f64, f
         let nr = (noise[0] * b[1].abs() + noise[1] * a[1].abs()) / det.abs();
         t -= dt;
         r -= dr;
-        let small = dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(bx[1] - bx[0]) + nt
-            && dr.abs() <= 4.0 * f64::EPSILON * r.abs().max(bx[3] - bx[2]) + nr;
+        let small = dt.abs() <= ulps(4.0) * t.abs().max(bx[1] - bx[0]) + nt
+            && dr.abs() <= ulps(4.0) * r.abs().max(bx[3] - bx[2]) + nr;
         if small && inside(t, r, nt, nr) {
             return Some((t, r));
         }

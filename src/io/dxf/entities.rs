@@ -7,6 +7,7 @@ use super::text::Record;
 use crate::io::{Problem, MAX_ABS, MAX_SEGMENTS};
 use curve::{Affine, Segment, JOIN_GAP};
 use dxf::entities::{Entity, EntityType};
+use numeric::rounding::ulps;
 use std::f64::consts::TAU;
 
 /// How far from (0, 0, ±1) an extrusion direction may be (each of its x and y relative to its
@@ -201,7 +202,7 @@ pub(super) fn unlevel(z: &[f64], size: f64) -> Result<Option<(f64, f64)>, Entity
     }
     // (And the rounding of the heights themselves, far from z = 0.)
     let magnitude = lo.abs().max(hi.abs());
-    let allowed = LEVEL * size + 16.0 * f64::EPSILON * magnitude;
+    let allowed = LEVEL * size + ulps(16.0) * magnitude;
     Ok((hi - lo > allowed).then_some((lo, hi)))
 }
 

@@ -4,11 +4,12 @@
 use super::entities::{curve_error, geometry, EntityError, Item, Shape};
 use super::Failure;
 use curve::{Affine, Segment, SegmentKind, JOIN_GAP, V2};
+use numeric::rounding::ulps;
 
 /// Relative to the drawing's largest coordinate, the rounding an end point carries (an arc's
 /// ends are computed from its centre, radius and angles): a few units of the last place, the
 /// join tolerance far from the origin where `JOIN_GAP` of a small part's size is below it.
-pub(super) const COORDINATE_ROUNDING: f64 = 16.0 * f64::EPSILON;
+pub(super) const COORDINATE_ROUNDING: f64 = ulps(16.0);
 
 /// Ends of different pieces nearer than this (relative to the drawing's size) but beyond the
 /// tolerance are a gap in an outline meant to close: a drawing error to report. Ends drawn

@@ -20,12 +20,13 @@
 //! off it by half a unit in the last place written (see `bezier`).
 
 use curve::{Segment, SegmentKind, SplineCurve, V2};
+use numeric::rounding::ulps;
 use std::f64::consts::{PI, TAU};
 use svgtypes::{PathParser, PathSegment};
 
 /// Room for rounding (in units of the largest coordinate) in any gap: relative commands
 /// accumulate a rounding per command even where the numbers are written in full.
-const CLOSING_ROUNDING: f64 = 1024.0 * f64::EPSILON;
+const CLOSING_ROUNDING: f64 = ulps(1024.0);
 
 /// The largest gap closed, relative to the subpath's size: rounding of the written numbers
 /// beyond a thousandth of the outline is not rounding but a gap drawn.
@@ -35,7 +36,7 @@ const MOST_GAP: f64 = 1e-3;
 /// reaching just across its chord (F.6.6): the centre is then the chord's middle exactly.
 /// Below that, the centre's offset `√(1/Λ − 1)` of the radius magnifies the rounding of `Λ`
 /// (a few units) into a tangent off by ~1e-8 rad at the ends, which would read as a corner.
-const HALF_ELLIPSE: f64 = 64.0 * f64::EPSILON;
+const HALF_ELLIPSE: f64 = ulps(64.0);
 
 /// The largest share of the way to the next control point that a handle on a cubic's end is
 /// moved off it (see `Builder::bezier`).

@@ -273,7 +273,7 @@ impl Piecewise {
         let d = self.dim;
         for (j, e) in f.err.iter_mut().enumerate() {
             let m = self.coordinate_magnitude(j / d, j % d);
-            *e = s.abs() * *e + rounding::gamma(1) * s.abs() * m;
+            *e = s.abs() * *e + numeric::rounding::gamma(1) * s.abs() * m;
         }
         f
     }

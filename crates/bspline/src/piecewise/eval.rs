@@ -145,8 +145,8 @@ impl Piecewise {
         let fact: f64 = (0..order).map(|j| (p - j) as f64 / h).product();
         let spread = (1u64 << order.min(62)) as f64;
         fact * spread
-            * (level + rounding::gamma(order + 2) * m)
-            * (1.0 + rounding::gamma(2 * order + 2))
+            * (level + numeric::rounding::gamma(order + 2) * m)
+            * (1.0 + numeric::rounding::gamma(2 * order + 2))
     }
 }
 

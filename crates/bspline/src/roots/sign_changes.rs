@@ -17,6 +17,7 @@ use super::{
 use crate::error::Result;
 use crate::piecewise::Piecewise;
 use crate::spline::BSpline;
+use numeric::rounding::ulps;
 use serde::{Deserialize, Serialize};
 
 /// A cluster of roots wider than this fraction of the domain length is a [`Flat`]: the function
@@ -204,7 +205,7 @@ pub fn sign_changes_in(f: &Piecewise, closed: bool, opts: &RootOptions) -> Resul
     };
     // Two parameters this close are one place (a few times the tolerance root isolation
     // refines to).
-    let tol = opts.tol.max(8.0 * f64::EPSILON * a.abs().max(b.abs()));
+    let tol = opts.tol.max(ulps(8.0) * a.abs().max(b.abs()));
     let near = 16.0 * tol * period.max(1.0);
     if closed && !periodic && roots.len() > 1 {
         // A root at the seam is seen at both ends of the open search: keep it once. Clusters

@@ -3,8 +3,8 @@
 
 use super::jets::CircleShape;
 use crate::circle::circle_pieces;
-use bspline::rounding::gamma;
 use bspline::{BSpline, Piecewise};
+use numeric::rounding::gamma;
 
 /// `s · f` for a constant `s` computed with up to `roundings` roundings from the shape's exact
 /// parameters: the rounding of `s` itself is carried as error of the coefficients.

@@ -3,7 +3,8 @@
 //! Apart from the matching of arc ends, which only asks which cluster an end goes to.
 
 use crate::extract::{End, Leaf};
-use crate::patch::{Patch, EPS};
+use crate::patch::Patch;
+use numeric::rounding::UNIT_ROUNDOFF;
 
 /// Leaf boxes closer than this fraction of the domain count as touching: neighbours in the
 /// subdivision meet exactly (split values are shared bit for bit), and leaves this close are
@@ -101,7 +102,7 @@ pub(super) fn grown(h: [f64; 4]) -> [f64; 4] {
 /// `1/distance` from the crossing), and a column of leaves inside such a band, just beside the
 /// arm, holds no zero at all while `∇F` there is far above its rounding level.
 pub(super) fn no_critical_point(cells: &[Patch], g: [f64; 4], at: [f64; 2]) -> bool {
-    let err = |cell: &Patch| 4.0 * (cell.pt + cell.pr + 2) as f64 * EPS * cell.max_abs();
+    let err = |cell: &Patch| 4.0 * (cell.pt + cell.pr + 2) as f64 * UNIT_ROUNDOFF * cell.max_abs();
     // The partial at `at` (a point of `g`) is within the range of the coefficients the proof
     // needs above `2 err`; where it is not even above `err` (the evaluation's own error is
     // below a quarter of that), the proof cannot succeed and is not tried: at a crossing or

@@ -3,6 +3,7 @@
 
 use super::jets::Jets;
 use bspline::Rational;
+use numeric::rounding::ulps;
 
 /// Largest relative residual of the three bisector conditions for a reported point: the
 /// largest of `| |P − C1| − |P − C2| |` and the two foot-point orthogonalities
@@ -117,7 +118,7 @@ pub(super) fn point_and_residual(
 /// Relative rounding of an evaluated point or derivative, for comparing the candidates of
 /// [`point_and_residual`]: a few units of rounding (de Boor's recurrence is a chain of convex
 /// combinations, as is de Casteljau's); only the candidates' ratios matter, not the constant.
-const EVAL_ROUNDING: f64 = 4.0 * f64::EPSILON;
+const EVAL_ROUNDING: f64 = ulps(4.0);
 
 /// The bisector condition `ψ = 2 ⟨N1, d⟩ ⟨d, C2'⟩ − |d|² ⟨N1, C2'⟩` (with `d = C1 − C2`,
 /// `N1` the normal of `C1`: the equidistant point on the normal line of `C1(t)` lies on the

@@ -30,6 +30,7 @@ use crate::error::Result;
 use bspline::roots::RootOptions;
 use bspline::{Piecewise, Rational};
 use curve::Frame;
+use numeric::rounding::ulps;
 
 /// What a segment lies on.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -397,7 +398,7 @@ impl Second {
                         break;
                     }
                     let next = (r - g / dg).clamp(span.domain.0, span.domain.1);
-                    let converged = (next - r).abs() <= f64::EPSILON * (1.0 + r.abs());
+                    let converged = (next - r).abs() <= ulps(1.0) * (1.0 + r.abs());
                     r = next;
                     if converged {
                         break;

@@ -23,6 +23,7 @@ use crate::error::Result;
 use bspline::roots::RootOptions;
 use bspline::{Piecewise, Rational, JUMP};
 use curve::Frame;
+use numeric::rounding::ulps;
 
 /// A corner as a point site: the point and the unit tangents arriving and leaving there.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -327,7 +328,7 @@ fn deflate_twice(f: &Piecewise, end: SharedEnd) -> Result<Piecewise> {
                 .skip(k)
                 .step_by(d)
                 .fold(0.0f64, |a, x| a.max(x.abs()));
-            largest_factor * (f.errors(0)[k] + dropped[k]) + 4.0 * f64::EPSILON * magnitude
+            largest_factor * (f.errors(0)[k] + dropped[k]) + ulps(4.0) * magnitude
         })
         .collect();
     let (a, b) = f.piece_span(0);
@@ -370,8 +371,10 @@ mod tests {
                 let to_foot = (x[0] - f[0]).hypot(x[1] - f[1]);
                 let to_corner = (x[0] - corner.p[0]).hypot(x[1] - corner.p[1]);
                 let scale = 1.0 + to_corner;
-                assert!(
-                    (to_foot - to_corner).abs() <= 1e-9 * scale,
+                testkit::assert_near!(
+                    to_foot,
+                    to_corner,
+                    1e-9 * scale,
                     "{r}: {to_foot} {to_corner}"
                 );
                 let along = ((x[0] - f[0]) * d[0] + (x[1] - f[1]) * d[1]) / d[0].hypot(d[1]);
@@ -404,7 +407,7 @@ mod tests {
         assert_eq!(runs.len(), 1);
         check(&corner, &quarter, &runs);
         for &(_, x) in &runs[0] {
-            assert!((x[0].hypot(x[1]) - 1.0).abs() < 1e-12);
+            testkit::assert_near!(x[0].hypot(x[1]), 1.0, 1e-12);
         }
         assert!(runs[0].first().unwrap().0 < 1e-9 && runs[0].last().unwrap().0 > 1.0 - 1e-9);
         // The arc runs counterclockwise about the centre: its bisector points lie on its
@@ -457,11 +460,11 @@ mod tests {
         };
         let seg = corner_corner(&c1, &c2, &reach()).unwrap();
         for x in seg {
-            assert!((x[0] - 1.0).abs() < 1e-12);
+            testkit::assert_near!(x[0], 1.0, 1e-12);
         }
         // From the corners' height up to the edge of reach.
         assert!(seg[0][1].abs() < 1e-12, "{seg:?}");
-        assert!((seg[1][0].hypot(seg[1][1]) - reach().far).abs() < 1e-9 * reach().far);
+        testkit::assert_near!(seg[1][0].hypot(seg[1][1]), reach().far, 1e-9 * reach().far);
         // Cones that face away leave nothing.
         let away = Corner {
             arriving: [-1.0, 0.0],

@@ -1,0 +1,24 @@
+//! The numerics every curvekit crate shares (issue 41, `docs/architecture.md`), at the bottom
+//! of the workspace: it knows nothing of curves.
+//!
+//! - [`rounding`]: the one rounding model. Every bound on a computed value's error is written
+//!   with [`rounding::gamma`], [`rounding::ulps`] or [`rounding::Bounded`], never with a bare
+//!   `f64::EPSILON`.
+//! - [`solve`]: the one bracketed 1-D solver, [`solve::bracketed`], with its explicit
+//!   [`solve::Accuracy`].
+//! - [`Interval`]: closed intervals and the interval arithmetic the proofs combine ranges
+//!   with.
+//!
+//! ```
+//! use numeric::solve::{bracketed, Accuracy};
+//! use numeric::rounding::ulps;
+//! // The root of x² − 2 on [1, 2], to a few units of rounding.
+//! let x = bracketed(|x| (x * x - 2.0, 2.0 * x, 2.0), (1.0, 2.0), (-1.0, 2.0), Accuracy::param(1e-15));
+//! assert!((x - 2f64.sqrt()).abs() <= ulps(4.0));
+//! ```
+
+mod interval;
+pub mod rounding;
+pub mod solve;
+
+pub use interval::Interval;

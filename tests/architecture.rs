@@ -293,3 +293,102 @@ fn testkit_is_for_tests_only() {
         }
     }
 }
+
+/// The public types two crates define under one name, today (each to leave the list once
+/// renamed). Every crate's `Error` and `Result` are left out: they are the idiom, always
+/// reached through their crate.
+const KNOWN_SHARED_TYPES: [&str; 3] = ["Prepared", "Shape", "SplineCurve"];
+
+/// The source folders of every crate (the tests' shared ground left out).
+fn source_folders() -> Vec<(&'static str, PathBuf)> {
+    CRATES
+        .iter()
+        .map(|(name, dir)| (*name, root().join(dir).join("src")))
+        .collect()
+}
+
+/// The names after `keyword` at the start of a line of `code` (`pub struct Name`, …).
+fn declared<'a>(code: &'a str, keyword: &'a str) -> impl Iterator<Item = String> + 'a {
+    code.lines().filter_map(move |line| {
+        let rest = line.strip_prefix(keyword)?;
+        let name: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        (!name.is_empty()).then_some(name)
+    })
+}
+
+/// One word, one type: no two crates define a public type of the same name, beyond the known
+/// ones, which may only go.
+#[test]
+fn no_two_public_types_share_a_name() {
+    let mut places: BTreeMap<String, BTreeSet<&str>> = BTreeMap::new();
+    for (name, src) in source_folders() {
+        for file in sources(&src) {
+            let text = code(&std::fs::read_to_string(&file).unwrap());
+            let text = text
+                .lines()
+                .map(str::trim_start)
+                .collect::<Vec<_>>()
+                .join("\n");
+            for keyword in ["pub struct ", "pub enum ", "pub trait ", "pub type "] {
+                for ty in declared(&text, keyword) {
+                    places.entry(ty).or_default().insert(name);
+                }
+            }
+        }
+    }
+    let shared: BTreeSet<&str> = places
+        .iter()
+        .filter(|(ty, crates)| crates.len() > 1 && *ty != "Error" && *ty != "Result")
+        .map(|(ty, _)| ty.as_str())
+        .collect();
+    let known: BTreeSet<&str> = KNOWN_SHARED_TYPES.into_iter().collect();
+    let new: Vec<_> = shared.difference(&known).collect();
+    let gone: Vec<_> = known.difference(&shared).collect();
+    assert!(new.is_empty(), "public types of one name in two crates: {new:?}");
+    assert!(gone.is_empty(), "renamed, to leave KNOWN_SHARED_TYPES: {gone:?}");
+}
+
+/// Every constant is named once: two module-level constants of one name in the workspace hold
+/// the same value (then one should serve both), or they are two things and need two names.
+#[test]
+fn no_two_constants_share_a_name_with_different_values() {
+    let mut values: BTreeMap<String, BTreeSet<(String, String)>> = BTreeMap::new();
+    for (_, src) in source_folders() {
+        for file in sources(&src) {
+            let text = code(&std::fs::read_to_string(&file).unwrap());
+            // (Module-level only: a constant inside an impl or a function is its own.)
+            for statement in text.split(';') {
+                let line = statement.trim_start_matches(['\n', ' ', '}', '{']);
+                let line = line
+                    .strip_prefix("pub(crate) ")
+                    .or_else(|| line.strip_prefix("pub(super) "))
+                    .or_else(|| line.strip_prefix("pub "))
+                    .unwrap_or(line);
+                let Some(rest) = line.strip_prefix("const ") else {
+                    continue;
+                };
+                if statement.trim_start_matches('\n').starts_with(' ') {
+                    continue;
+                }
+                let Some((name, value)) = rest.split_once('=') else {
+                    continue;
+                };
+                let name = name.split(':').next().unwrap_or("").trim().to_string();
+                let value = value.split_whitespace().collect::<Vec<_>>().join(" ");
+                let place = file.strip_prefix(root()).unwrap().display().to_string();
+                values.entry(name).or_default().insert((value, place));
+            }
+        }
+    }
+    let clashes: Vec<_> = values
+        .iter()
+        .filter(|(_, v)| v.iter().map(|(value, _)| value).collect::<BTreeSet<_>>().len() > 1)
+        .collect();
+    assert!(
+        clashes.is_empty(),
+        "constants of one name with different values: {clashes:#?}"
+    );
+}

@@ -55,7 +55,7 @@ pub(crate) struct Batch {
     #[arg(long, value_name = "DIR")]
     pub(crate) figures: Option<PathBuf>,
     /// Parameter tolerance.
-    #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = super::parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", default_value_t = numeric::tolerance::DEFAULT_PARAM_TOL, value_parser = super::parse_tol, allow_hyphen_values = true)]
     pub(crate) tol: f64,
     /// Chord tolerance (bisector, medial, offset, vcarve), relative to the size.
     #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = super::parse_tol, allow_hyphen_values = true)]

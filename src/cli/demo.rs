@@ -25,7 +25,7 @@ macro_rules! fixture {
 }
 
 /// Name and file text of each shape example.
-const SHAPES: &[Embedded] = &[
+const DEMO_SHAPES: &[Embedded] = &[
     fixture!("limacon"),
     fixture!("elliptic_lemniscate"),
     fixture!("convexities_m3"),
@@ -102,7 +102,7 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     std::fs::create_dir_all(out)
         .map_err(|e| Failure::Other(format!("cannot create {}: {e}", out.display())))?;
-    let shapes = SHAPES
+    let shapes = DEMO_SHAPES
         .iter()
         .map(|(name, text)| shape_row(name, text, out, common))
         .collect::<Result<Vec<_>, _>>()?;

@@ -201,7 +201,7 @@ pub(crate) struct DemoArgs {
     #[arg(long)]
     json: bool,
     /// Parameter tolerance.
-    #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", default_value_t = numeric::tolerance::DEFAULT_PARAM_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
     tol: f64,
     /// Repeat the examples' inflections for at least 0.5 s and report the median time.
     #[arg(long)]
@@ -244,7 +244,7 @@ pub(crate) struct Common {
     #[arg(long, value_name = "FILE")]
     pub(crate) svg: Option<PathBuf>,
     /// Parameter tolerance.
-    #[arg(long, value_name = "T", default_value_t = antipodal::DEFAULT_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", default_value_t = numeric::tolerance::DEFAULT_PARAM_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
     pub(crate) tol: f64,
     /// Repeat the computation for at least 0.5 s and report the median time of one run.
     #[arg(long)]
@@ -415,15 +415,5 @@ pub(crate) fn print_out(text: &str) -> Result<(), Failure> {
         // (The reader stopped reading, as `head` does: nothing more is wanted, no failure.)
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         other => other.map_err(|e| Failure::Other(format!("cannot write to stdout: {e}"))),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    /// `--tol` is one option for every command: its default (antipodal's) must be the
-    /// bisector's too.
-    #[test]
-    fn one_default_tolerance_for_every_command() {
-        assert_eq!(antipodal::DEFAULT_TOL, zeroset::DEFAULT_TOL);
     }
 }

@@ -714,13 +714,7 @@ pub fn validate_bisector_options(opts: &zeroset::BisectorOptions) -> Result<(), 
 
 /// The medial axis's options checked on their own (as [`validate_options`]).
 pub fn validate_medial_options(opts: &medial::MedialOptions) -> Result<(), CommandError> {
-    let bisector_opts = zeroset::BisectorOptions {
-        tol: opts.tol,
-        chord_tol: opts.chord_tol,
-        ..Default::default()
-    };
-    bisector_opts
-        .validate()
+    opts.validate()
         .map_err(|e| CommandError::Usage(format!("medial: {e}")))
 }
 

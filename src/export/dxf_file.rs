@@ -29,7 +29,7 @@ use std::f64::consts::TAU;
 /// The `$INSUNITS` units by the names the readers give them ([`crate::io`]). Not `pc`: the DXF
 /// reader names parsecs so, the SVG reader picas, and a unit written must be the one meant
 /// (a drawing in either is written unitless).
-const UNITS: [(&str, Units); 23] = [
+const DXF_UNITS: [(&str, Units); 23] = [
     ("in", Units::Inches),
     ("ft", Units::Feet),
     ("mi", Units::Miles),
@@ -77,7 +77,7 @@ impl Writer {
         let mut drawing = Drawing::new();
         drawing.header.version = AcadVersion::R2010;
         drawing.header.default_drawing_units = units
-            .and_then(|u| UNITS.iter().find(|(name, _)| *name == u))
+            .and_then(|u| DXF_UNITS.iter().find(|(name, _)| *name == u))
             .map_or(Units::Unitless, |(_, code)| *code);
         Self {
             drawing,

@@ -33,7 +33,7 @@ use roxmltree::{Document, Node};
 const NOT_DRAWN: [&str; 6] = ["defs", "clipPath", "mask", "symbol", "marker", "pattern"];
 
 /// The shape elements, whose outlines are read.
-const SHAPES: [&str; 7] = [
+const SHAPE_ELEMENTS: [&str; 7] = [
     "path", "rect", "circle", "ellipse", "polygon", "polyline", "line",
 ];
 
@@ -47,7 +47,7 @@ const MAX_USE_DEPTH: usize = 16;
 const MAX_ELEMENTS: usize = 100_000;
 
 /// Units a root `width` may give the user units.
-const UNITS: [(&str, svgtypes::LengthUnit); 5] = [
+const SVG_UNITS: [(&str, svgtypes::LengthUnit); 5] = [
     ("mm", svgtypes::LengthUnit::Mm),
     ("cm", svgtypes::LengthUnit::Cm),
     ("in", svgtypes::LengthUnit::In),
@@ -121,7 +121,7 @@ fn units_of(root: &Node<'_, '_>) -> Option<String> {
         .map(str::parse)
         .collect::<Result<_, _>>()
         .ok()?;
-    let &(name, _) = UNITS.iter().find(|(_, u)| *u == width.unit)?;
+    let &(name, _) = SVG_UNITS.iter().find(|(_, u)| *u == width.unit)?;
     let same = view.len() == 4 && (view[2] - width.number).abs() <= 1e-9 * width.number.abs();
     same.then(|| name.to_string())
 }
@@ -162,7 +162,7 @@ impl Walk<'_, '_> {
         }
         // (Shapes are numbered among the shapes drawn, in document order; others among all
         // the elements.)
-        let index = if SHAPES.contains(&tag) {
+        let index = if SHAPE_ELEMENTS.contains(&tag) {
             self.shapes += 1;
             self.shapes - 1
         } else {
@@ -195,7 +195,7 @@ impl Walk<'_, '_> {
                 }
             }
             "use" => self.place(node, style, uses, &name)?,
-            t if SHAPES.contains(&t) => self.shape(node, tag, style, &name)?,
+            t if SHAPE_ELEMENTS.contains(&t) => self.shape(node, tag, style, &name)?,
             t if NOT_READ.contains(&t) => {
                 self.read
                     .skip(t, false, || format!("{name}: <{t}> is not read"));

@@ -25,7 +25,7 @@ const CONE_EDGE: f64 = 1e-9;
 
 /// How close (relative to the profile's size) a foot point may come to its corner and still be
 /// the corner itself: the root at the end of a segment that meets the corner, or a joint's gap.
-const AT_CORNER: f64 = 1e-8;
+const FOOT_AT_CORNER: f64 = 1e-8;
 
 /// A convex corner, in the frame's coordinates.
 #[derive(Debug, Clone, Copy)]
@@ -103,7 +103,7 @@ pub(crate) fn corner_pairs(
                         }
                         let j = c.jet_to(s, 1);
                         let d = j.p - site.p;
-                        if d.norm() <= AT_CORNER * size {
+                        if d.norm() <= FOOT_AT_CORNER * size {
                             continue;
                         }
                         if !foot.separated {

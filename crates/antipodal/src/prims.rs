@@ -29,7 +29,7 @@ pub(crate) fn solve_in(
 
 /// How close (relative to the size) a point of the curve is to a given point to be that point:
 /// the gap a profile's joint may leave between its segments, and more.
-const SAME_POINT: f64 = 1e-8;
+const SAME_CURVE_POINT: f64 = 1e-8;
 
 /// Which root to take when several qualify.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -220,7 +220,7 @@ impl View<'_> {
         // monotone segment (turning by less than π, curved) passes through its own end point.
         if [lo, hi]
             .iter()
-            .any(|&u| (self.point(u) - p).norm() <= SAME_POINT * self.scale)
+            .any(|&u| (self.point(u) - p).norm() <= SAME_CURVE_POINT * self.scale)
         {
             return None;
         }

@@ -29,7 +29,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Halvings of a pair of arcs before the test gives up on it (2⁻⁴⁰ of an arc is far below
 /// the parameter tolerance).
-const MAX_DEPTH: usize = 40;
+const MAX_SIMPLICITY_DEPTH: usize = 40;
 
 /// Pairs of arcs halved in one test, over all pairs.
 const MAX_SPLITS: usize = 4096;
@@ -240,7 +240,7 @@ impl View<'_> {
                 t: self.to_curve(0.5 * (b.u0 + b.u1)),
             });
         }
-        if depth >= MAX_DEPTH || *splits == 0 {
+        if depth >= MAX_SIMPLICITY_DEPTH || *splits == 0 {
             return Ok(false);
         }
         *splits -= 1;

@@ -1,6 +1,7 @@
 //! Options and the plain result types (serde) of the public entry points.
 
 use crate::error::{Error, Result};
+use numeric::tolerance::ParamTol;
 use serde::{Deserialize, Serialize};
 
 /// Options of the algorithms.
@@ -13,14 +14,6 @@ pub struct Options {
     /// Limit on the sections searched (a guard against floods on degenerate input).
     pub max_sections: usize,
 }
-
-/// The finest parameter tolerance (relative to the domain's length): a few units of rounding
-/// of a parameter. (Brackets are as narrow as the tolerance or as the rounding of the sign
-/// tests allows, whichever is wider.)
-pub(crate) const MIN_TOL: f64 = 1e-15;
-/// The coarsest: brackets wider than this merge distinct pairs and inflections of ordinary
-/// curves.
-const MAX_TOL: f64 = 1e-3;
 
 impl Default for Options {
     fn default() -> Self {
@@ -52,13 +45,11 @@ impl Options {
     /// assert!(Options::default().tolerance(1e-20).validate().is_err());
     /// ```
     pub fn validate(&self) -> Result<()> {
-        if !(self.tol.is_finite() && (MIN_TOL..MAX_TOL).contains(&self.tol)) {
+        if let Err(e) = ParamTol::new(self.tol) {
             return Err(Error::InvalidOption {
                 field: "tol",
-                value: self.tol,
-                expected:
-                    "must be at least 1e-15 (what double precision resolves of a domain) and \
-                           below 1e-3 (coarser brackets merge the pairs of a curve)",
+                value: e.value,
+                expected: e.requirement,
             });
         }
         if self.max_sections == 0 {
@@ -353,6 +344,7 @@ provenance!(Inflections);
 provenance!(Tangents);
 provenance!(ProfileInflections);
 
-/// The default parameter tolerance (relative to the domain's length): some thousand units of
-/// rounding, so that the sign tests near a pair are far above their noise.
-pub const DEFAULT_TOL: f64 = 1e-12;
+/// The default parameter tolerance (relative to the domain's length), the workspace's one
+/// ([`numeric::tolerance::DEFAULT_PARAM_TOL`]): some thousand units of rounding, so that the
+/// sign tests near a pair are far above their noise.
+pub use numeric::tolerance::DEFAULT_PARAM_TOL as DEFAULT_TOL;

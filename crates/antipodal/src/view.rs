@@ -7,12 +7,12 @@
 
 use crate::doubt::Doubt;
 use crate::forms::SymbolicForms;
-use crate::types::MIN_TOL;
 use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
 use bspline::Piecewise;
 use curve::circle::Angle;
 use curve::{Jet, ParamCurve, StraightSpan, V2};
 use numeric::rounding::ulps;
+use numeric::tolerance::ParamTol;
 use smallvec::SmallVec;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
@@ -198,7 +198,7 @@ impl<'a> View<'a> {
         };
         let cert = forms.map(|forms| Cert {
             forms,
-            opts: RootOptions::default().tolerance(tol.max(MIN_TOL)),
+            opts: RootOptions::default().tolerance(tol.max(ParamTol::FINEST)),
         });
         let doubt = match cert {
             Some(_) => None,

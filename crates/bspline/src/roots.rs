@@ -24,11 +24,12 @@ pub use sign_changes::{
     sign_changes, sign_changes_in, Flat, SignChange, SignChangeKind, SignChanges, FLAT_WIDTH,
 };
 
-/// The default parameter tolerance of [`RootOptions`]: brackets 1e-12 wide on a domain of
-/// size ~1 (the unit-size frame the callers work in) are some 500 times the few ulps
-/// [`RootOptions`] allows at the least, so decisions stay above rounding, and far finer than
-/// any feature of a curve.
-pub const DEFAULT_TOL: f64 = 1e-12;
+/// The default parameter tolerance of [`RootOptions`], the workspace's one
+/// ([`numeric::tolerance::DEFAULT_PARAM_TOL`]): brackets 1e-12 wide on a domain of size ~1
+/// (the unit-size frame the callers work in) are some 500 times the few ulps [`RootOptions`]
+/// allows at the least, so decisions stay above rounding, and far finer than any feature of a
+/// curve.
+pub use numeric::tolerance::DEFAULT_PARAM_TOL as DEFAULT_TOL;
 
 /// How close the values at the two ends of a domain must be, relative to the largest
 /// coefficient, for a function to count as periodic: the two ends are evaluated separately,

@@ -25,7 +25,7 @@ use smallvec::{smallvec, SmallVec};
 
 /// Halvings of one Bézier piece before it is left undecided: a piece 2^-40 of its span is
 /// far below any slack a caller may leave between the disk and the curve.
-const MAX_DEPTH: usize = 40;
+const MAX_CLEARANCE_DEPTH: usize = 40;
 
 /// Pieces tested in one call before the answer is left undecided: a curve hugging the
 /// circle over a long stretch (an arc about the centre) would otherwise be halved into
@@ -43,7 +43,7 @@ const LEAST_STEP: f64 = 1e-15;
 
 /// Units of rounding allowed per comparison: the Euclidean points (a division), the bounds
 /// (a few products and sums) and one more per halving of the piece.
-const ROUNDING_ULPS: f64 = 16.0;
+const CLEARANCE_ROUNDING_ULPS: f64 = 16.0;
 
 /// What a disk holds of a profile.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -169,7 +169,7 @@ impl Profile {
         let (mut current, mut work) = (Vec::new(), Vec::new());
         let mut tested = 0;
         // Nearest boxes first: the point found inside is then likely the deepest.
-        let near = 1.0 - ulps(ROUNDING_ULPS);
+        let near = 1.0 - ulps(CLEARANCE_ROUNDING_ULPS);
         let mut order: Vec<(f64, usize)> = Vec::new();
         // (The reach a shade beyond r / near: the tree passes over no box the test keeps.)
         self.box_tree()
@@ -187,7 +187,7 @@ impl Profile {
         // of the curve) mostly show it at once, and the deepest of them is the best witness.
         // A piece box's distance rounds by a few units of the centre's and the radius's size,
         // which the boxes' own growth (their coordinates' size) does not cover.
-        let far = r + ulps(ROUNDING_ULPS) * x.x.abs().max(x.y.abs()).max(r);
+        let far = r + ulps(CLEARANCE_ROUNDING_ULPS) * x.x.abs().max(x.y.abs()).max(r);
         if let Some(entered) = self.deepest_piece_end(x, r, far, &order, window) {
             return entered;
         }
@@ -263,7 +263,7 @@ impl Profile {
                                     distance: (p - x).norm(),
                                 };
                             }
-                            _ if piece.depth < MAX_DEPTH => {
+                            _ if piece.depth < MAX_CLEARANCE_DEPTH => {
                                 halve(&piece, dim, &mut work, &mut pending);
                             }
                             _ => unresolved = true,
@@ -438,7 +438,8 @@ impl Errors {
     /// (δX + |X / w| δw) / w for errors δX, δw ≤ w / 2 of its coefficients (to first order;
     /// twice that covers the rest), and the arithmetic's rounding.
     fn room(self, w: f64, mag: f64, depth: usize) -> f64 {
-        4.0 * (self.point + mag * self.weight) / w + ulps(ROUNDING_ULPS + depth as f64) * mag
+        4.0 * (self.point + mag * self.weight) / w
+            + ulps(CLEARANCE_ROUNDING_ULPS + depth as f64) * mag
     }
 }
 
@@ -751,7 +752,7 @@ fn line_passes_by(seg: &Segment, x: V2, r: f64) -> bool {
     let squared = crate::geom::squared_distance_to_segment(x.arr(), a.arr(), b.arr());
     // (The foot and the difference round by a few units of the coordinates; the squares by
     // a few units of themselves.)
-    let room = ulps(ROUNDING_ULPS) * (x.norm() + a.norm() + b.norm() + r);
+    let room = ulps(CLEARANCE_ROUNDING_ULPS) * (x.norm() + a.norm() + b.norm() + r);
     squared >= (r + room) * (r + room) * (1.0 + ulps(4.0))
 }
 

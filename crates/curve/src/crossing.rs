@@ -21,7 +21,7 @@ pub(crate) const FLATNESS: f64 = 1e-7;
 const FLAT_ROUNDING: f64 = ulps(64.0);
 
 /// Halvings of a Bézier piece before it is taken as flat: a part 2^-24 of a piece.
-const MAX_DEPTH: usize = 24;
+const MAX_CROSSING_DEPTH: usize = 24;
 
 /// Pairs and stretches looked at in one test, per Bézier piece of the chains and beyond
 /// them: a bound on the work and the memory whatever the curves (two copies of one curve
@@ -110,7 +110,7 @@ pub(crate) fn first_crossing_among(
         if tests > bound {
             return Err(Undecided { tests: bound });
         }
-        let settled = |s: &Stretch| s.depth >= MAX_DEPTH || s.is_flat(delta);
+        let settled = |s: &Stretch| s.depth >= MAX_CROSSING_DEPTH || s.is_flat(delta);
         let mut record = |a: &Stretch, b: &Stretch, at: V2| {
             let (x, y) = if (a.chain, a.segment) <= (b.chain, b.segment) {
                 (a, b)
@@ -256,7 +256,7 @@ impl Outline {
             if polygon.is_empty() {
                 polygon.push(s.start);
             }
-            let settled = s.depth >= MAX_DEPTH || s.is_flat(self.delta);
+            let settled = s.depth >= MAX_CROSSING_DEPTH || s.is_flat(self.delta);
             if s.box_holds(p) && !settled {
                 let [h0, h1] = s.halves();
                 pending.extend([h1, h0]);

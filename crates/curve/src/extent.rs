@@ -14,7 +14,7 @@ use crate::V2;
 const BOX_FLATNESS: f64 = 1e-9;
 
 /// Halvings of a piece at most (each halves a piece's distance from its chord by four).
-const MAX_DEPTH: usize = 30;
+const MAX_EXTENT_DEPTH: usize = 30;
 
 /// A box `[lo x, lo y, hi x, hi y]`.
 pub type Box2 = [f64; 4];
@@ -83,7 +83,7 @@ fn segments_box(segments: &[crate::Segment]) -> Box2 {
         }
         // (Within the flatness, or halved as far as it goes: its control box, which holds
         // it, is taken.)
-        if !beyond(room) || s.depth >= MAX_DEPTH {
+        if !beyond(room) || s.depth >= MAX_EXTENT_DEPTH {
             found = union(found, control);
             continue;
         }

@@ -19,12 +19,12 @@ const JOINED: f64 = 1e-9;
 
 /// The finest tolerance taken, as a share of the coordinates' magnitude: a thousand times the
 /// rounding of a double.
-const ROUNDING: f64 = ulps(1e3);
+const FLATTENING_ROUNDING: f64 = ulps(1e3);
 
 /// Most halvings of one Bézier piece: each quarters its control points' distance from the
-/// chord, so 2^24 chords reach 4^-24 of the piece's size, beyond [`ROUNDING`] (the bound ends
+/// chord, so 2^24 chords reach 4^-24 of the piece's size, beyond [`FLATTENING_ROUNDING`] (the bound ends
 /// the recursion on a degenerate piece).
-const MAX_HALVINGS: u32 = 24;
+const MAX_FLATTENING_HALVINGS: u32 = 24;
 
 impl Profile {
     /// The profile as a polyline within `tol` of it (both ways), from its start to its end
@@ -58,7 +58,7 @@ impl Profile {
         // piece, and the halvings would run to their bound everywhere.)
         let b = self.bounding_box();
         let far = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let tol = tol.max(ROUNDING * (self.size() + far));
+        let tol = tol.max(FLATTENING_ROUNDING * (self.size() + far));
         let joined = JOINED * self.size();
         let mut points: Vec<([f64; 2], f64)> = Vec::new();
         for (i, s) in self.segments().iter().enumerate() {
@@ -95,7 +95,7 @@ impl Segment {
         } else {
             0.0
         }
-        .max(ROUNDING * far);
+        .max(FLATTENING_ROUNDING * far);
         let mut points = Vec::new();
         flatten_segment(self, tol, 0.0, &mut points);
         points.into_iter().map(|(p, _)| p).collect()
@@ -138,7 +138,7 @@ fn halve_until_flat(
     let flat = control[1..control.len() - 1]
         .iter()
         .all(|&h| distance_to_segment(project(h), a, b) <= tol);
-    if flat || depth >= MAX_HALVINGS {
+    if flat || depth >= MAX_FLATTENING_HALVINGS {
         out.push((b, span.1));
         return;
     }

@@ -13,7 +13,7 @@ use crate::segment::Segment;
 const SAMPLES_PER_PIECE: usize = 32;
 
 /// Newton steps from a sampled minimum.
-const NEWTON_STEPS: usize = 20;
+const NEAREST_NEWTON_STEPS: usize = 20;
 
 /// Golden-section steps on a window of two sample steps (0.618^48 of it: below rounding).
 const GOLDEN_STEPS: usize = 48;
@@ -143,7 +143,7 @@ fn golden(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 /// brings the curve nearer.
 fn polish(c: &impl ParamCurve, x: V2, mut u: f64, lo: f64, hi: f64) -> f64 {
     let dist = |u: f64| (c.jet_to(u, 0).p - x).norm();
-    for _ in 0..NEWTON_STEPS {
+    for _ in 0..NEAREST_NEWTON_STEPS {
         let j = c.jet_to(u, 2);
         let v = j.p - x;
         let h = j.d1.dot(j.d1) + v.dot(j.d2);

@@ -16,7 +16,7 @@ use numeric::rounding::ulps;
 /// Units of rounding allowed in a projection: a dot product of coordinates with an edge's
 /// normal (two products and a sum, each rounding by half a unit of the largest coordinate
 /// times the normal), doubled for the difference of two of them.
-const ROUNDING_ULPS: f64 = 8.0;
+const POLYGON_ROUNDING_ULPS: f64 = 8.0;
 
 impl Profile {
     /// Whether no point of the profile lies in the closed convex polygon `corners` (in either
@@ -72,7 +72,7 @@ fn separated(poly: &[V2], s: [V2; 2]) -> bool {
         .map(|p| p.x.abs().max(p.y.abs()))
         .fold(0.0, f64::max);
     let apart_along = |n: V2| {
-        let room = ulps(ROUNDING_ULPS) * scale * (n.x.abs() + n.y.abs());
+        let room = ulps(POLYGON_ROUNDING_ULPS) * scale * (n.x.abs() + n.y.abs());
         let (mut pmin, mut pmax) = (f64::INFINITY, f64::NEG_INFINITY);
         for p in poly {
             let d = p.dot(n);

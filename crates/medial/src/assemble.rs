@@ -8,10 +8,6 @@ use crate::stretches::{Stretch, Vertex};
 use crate::{Edge, MedialAxis, Node, NodeKind};
 use curve::ParamCurve;
 
-/// Ends of stretches within this share of the region's size are one node: junctions found on
-/// different branches, and branches continuing each other, agree to ~1e-12 of the size.
-pub(crate) const MERGE: f64 = 1e-6;
-
 /// Ends of stretches whose feet lie within this share of their radius of each other are
 /// beside a centre of curvature, where the feet are ill-conditioned: stretches of
 /// neighbouring pieces (cut at a knot or a joint) end up to ~2e-5 of the size apart there,

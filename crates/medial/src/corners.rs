@@ -21,7 +21,7 @@ use numeric::rounding::ulps;
 /// Units of rounding (of the centre's coordinates and the radius) by which the other side
 /// must be nearer than the feet's sides to enter the disk: both are distances to nearest
 /// points found alike, each rounded by a few units.
-const ROUNDING_ULPS: f64 = 64.0;
+const CORNER_ROUNDING_ULPS: f64 = 64.0;
 
 /// Where Newton's method starts on the side before a corner: this share of its parameter
 /// from the corner (the side's own parameter locates the segment after at the corner).
@@ -44,7 +44,7 @@ pub(crate) fn entered_across_corner(
     v: &Vertex,
 ) -> Option<(usize, f64, f64)> {
     let slack = EMPTY_SLACK * sites.size;
-    let rounding = ulps(ROUNDING_ULPS) * (v.xy[0].abs().max(v.xy[1].abs()) + v.radius);
+    let rounding = ulps(CORNER_ROUNDING_ULPS) * (v.xy[0].abs().max(v.xy[1].abs()) + v.radius);
     let own = || {
         (0..2)
             .map(|s| {

@@ -23,13 +23,9 @@ use numeric::rounding::ulps;
 /// the distance within which ends of the axis are one node.
 const COVER_GAP: f64 = 2e-6;
 
-/// Vertices of an edge within this share of the size are one point of the axis (as nodes
-/// within it are one node).
-const MERGE: f64 = 1e-6;
-
 /// A foot whose profile parameter lies this near a reflex corner's is at the corner (the
 /// bisectors of a corner give its parameter exactly; a foot merely near it has moved on).
-pub(crate) const AT_CORNER: f64 = 1e-12;
+pub(crate) const FOOT_AT_REFLEX_CORNER: f64 = 1e-12;
 
 /// Steps of the feet against the run of a side smaller than this (in the line's units) are
 /// rounding, not a turn back.
@@ -127,7 +123,7 @@ impl Line {
         let u = u.rem_euclid(n);
         // (The nearest joint: one of a closed boundary's is at both 0 and n.)
         let joint = u.round();
-        if (u - joint).abs() <= AT_CORNER * n {
+        if (u - joint).abs() <= FOOT_AT_REFLEX_CORNER * n {
             if let Some(fan) = self.fan_at[joint as usize % self.n].map(|f| &self.fans[f]) {
                 let d = x - foot();
                 let phi = (fan.turn * fan.from.cross(d)).atan2(fan.from.dot(d));
@@ -285,8 +281,8 @@ pub(crate) fn convex_corner_between(sites: &Sites<'_>, k: usize, a: f64, b: f64)
         |j| j.kind != JointKind::Smooth && j.turn * side > 0.0,
         length,
         lo,
-        AT_CORNER * n,
-        d - AT_CORNER * n,
+        FOOT_AT_REFLEX_CORNER * n,
+        d - FOOT_AT_REFLEX_CORNER * n,
     )
 }
 
@@ -320,7 +316,7 @@ pub(crate) fn unreached_convex_corners(
     sites: &Sites<'_>,
     axis: &MedialAxis,
 ) -> Vec<UnreachedCorner> {
-    let near = MERGE * sites.size;
+    let near = crate::SAME_NODE * sites.size;
     let mut leaves: Vec<[f64; 2]> = axis
         .nodes
         .iter()
@@ -393,7 +389,7 @@ fn short_way(closed: bool, n: f64, a: f64, b: f64) -> (f64, f64) {
 }
 
 /// Whether boundary `k` between profile parameters `a` and `b` (the short way round) is a
-/// piece of one arc about `x` of radius `r` (to [`MERGE`] of the size): the disk there then
+/// piece of one arc about `x` of radius `r` (to [`crate::SAME_NODE`] of the size): the disk there then
 /// touches all of it, and it is the foot of no other point of the axis. (A disk merely near
 /// the boundary between two feet is not enough: beside a nearly flat convex corner the disk
 /// at a junction lies within 1e-7 of the corner, whose leaf is a long edge of the axis.)
@@ -405,7 +401,7 @@ pub(crate) fn arc_between(sites: &Sites<'_>, k: usize, a: f64, b: f64, x: V2, r:
     // (The segment holding the middle; both feet must lie on it, its ends included.)
     let i = ((0.5 * (lo + hi)).floor() as usize) % boundary.segments().len();
     let on = |u: f64| u >= i as f64 - ulps(n) && u <= (i + 1) as f64 + ulps(n);
-    let merge = MERGE * sites.size;
+    let merge = crate::SAME_NODE * sites.size;
     on(lo)
         && on(hi)
         && boundary.segments()[i].circle().is_some_and(|(c, radius)| {

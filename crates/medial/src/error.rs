@@ -7,6 +7,16 @@ pub enum Error {
     /// the exact algebra refuses).
     #[error(transparent)]
     Bisector(#[from] zeroset::Error),
+    /// An option is out of range (the field is named).
+    #[error("option {field} = {value} is invalid: {why}")]
+    BadOption {
+        /// The option's name.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+        /// What it must satisfy.
+        why: &'static str,
+    },
     /// The computation was cancelled by its watcher ([`curve::watch`]).
     #[error("cancelled")]
     Cancelled,

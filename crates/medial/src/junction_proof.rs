@@ -15,7 +15,7 @@
 //! are nearly parallel (a reflex corner 1e-6 of the size off a far side's line): the
 //! derivatives this test uses can.
 
-use crate::coverage::AT_CORNER;
+use crate::coverage::FOOT_AT_REFLEX_CORNER;
 use crate::sites::Sites;
 use crate::true_sites::{ArcSite, LineSite, Shape};
 use curve::{JointKind, SegmentKind, V2};
@@ -153,7 +153,7 @@ pub(crate) fn closed_site_at(
     let n = segments.len();
     let side = sites.inside_left(b);
     let joint = u.round();
-    if (u - joint).abs() <= AT_CORNER * n as f64 {
+    if (u - joint).abs() <= FOOT_AT_REFLEX_CORNER * n as f64 {
         let at = joint as usize % n;
         // (A joint's parameter is the index of the segment that starts there.)
         let joints = profile.joints();

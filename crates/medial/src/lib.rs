@@ -57,8 +57,15 @@ pub use fit::EdgeSpline;
 use candidates::PairSource;
 use certificate::Doubt;
 use curve::Region;
+use numeric::tolerance::{ChordTol, ParamTol, ToleranceError};
+use numeric::tolerance::{DEFAULT_CHORD_TOL, DEFAULT_PARAM_TOL};
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
+
+/// Points of the axis within this share of the region's size are one point: ends of
+/// stretches (junctions found on different branches, and branches continuing each other,
+/// agree to ~1e-12 of the size) are one node, vertices of an edge one vertex.
+pub(crate) const SAME_NODE: f64 = 1e-6;
 
 /// Options of [`medial_axis`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -85,11 +92,41 @@ pub struct MedialOptions {
 impl Default for MedialOptions {
     fn default() -> Self {
         Self {
-            tol: zeroset::DEFAULT_TOL,
-            chord_tol: zeroset::DEFAULT_CHORD_TOL,
+            tol: DEFAULT_PARAM_TOL,
+            chord_tol: DEFAULT_CHORD_TOL,
             fit: false,
             exterior: false,
             size: None,
+        }
+    }
+}
+
+impl MedialOptions {
+    /// Checks the options against what the axis can deliver ([`medial_axis`] checks them
+    /// too): the tolerances in the ranges of [`ParamTol`] and [`ChordTol`], the size a finite
+    /// number above zero.
+    ///
+    /// ```
+    /// use medial::MedialOptions;
+    /// assert!(MedialOptions::default().validate().is_ok());
+    /// let coarse = MedialOptions { chord_tol: 0.6, ..MedialOptions::default() };
+    /// assert!(coarse.validate().is_err());
+    /// ```
+    pub fn validate(&self) -> Result<()> {
+        let bad = |field, e: ToleranceError| Error::BadOption {
+            field,
+            value: e.value,
+            why: e.requirement,
+        };
+        ParamTol::new(self.tol).map_err(|e| bad("tol", e))?;
+        ChordTol::new(self.chord_tol).map_err(|e| bad("chord_tol", e))?;
+        match self.size {
+            Some(size) if !(size.is_finite() && size > 0.0) => Err(Error::BadOption {
+                field: "size",
+                value: size,
+                why: "must be a finite number > 0",
+            }),
+            _ => Ok(()),
         }
     }
 }
@@ -187,6 +224,7 @@ pub struct MedialAxis {
 /// assert_eq!(axis.edges.len(), 5);
 /// ```
 pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
+    opts.validate()?;
     let segments: usize = std::iter::once(region.outer())
         .chain(region.holes())
         .map(|b| b.segments().len())
@@ -273,21 +311,14 @@ fn axis_of(
                 true,
                 true,
                 t.proven,
-                lines_and_arcs::MERGE,
+                lines_and_arcs::SAME_SEED_NODE,
             ),
             None => return Ok((empty_axis(), false)),
         }
     } else {
         let (found, complete, guessed) = candidates::candidates(&sites, &traced, source)?;
         let pieces = stretches::stretches(&sites, &found);
-        (
-            found,
-            pieces,
-            complete,
-            guessed,
-            HashSet::new(),
-            assemble::MERGE,
-        )
+        (found, pieces, complete, guessed, HashSet::new(), SAME_NODE)
     };
     // (A cancelled search found a part: nothing is built from it, its caller answers
     // "cancelled".)

@@ -30,7 +30,7 @@ const EDGE_STEP: f64 = 1e-2;
 /// bit), so only nodes that snapping or nearly cocircular sites put this close count as one:
 /// the seed's grid spacing. (The other paths find each junction once per branch, and merge
 /// within 1e-6.)
-pub(crate) const MERGE: f64 = 1e-9;
+pub(crate) const SAME_SEED_NODE: f64 = 1e-9;
 
 /// How far (a share of the size) an arc's exact form may stray from its circle for the
 /// closed-form disk test to measure it on the circle: far below the disks' slack.
@@ -108,11 +108,11 @@ const CLOSED_FORM_DISK_SEGMENTS: usize = 64;
 /// parabola's to the finest chord tolerance (1e-9 of the size) takes ~2e4 on a region's
 /// width; beyond this the input is refused to the other paths.
 const MAX_EDGE_VERTICES: usize = 1 << 16;
-const MAX_EDGE_DEPTH: usize = 16;
+const MAX_EDGE_HALVINGS: usize = 16;
 
 /// Newton steps that place a node: from a start ~2e-9 of the size off, the equations
 /// (linear for lines, a norm for points and circles) converge in two or three.
-const NEWTON_STEPS: usize = 16;
+const NODE_NEWTON_STEPS: usize = 16;
 
 /// The equations of a node not used to solve it (a fourth site of nearly cocircular ones)
 /// must hold to this share of the size: within the reach in which ends are one node.
@@ -305,7 +305,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
         }
         let (e0, e1) = self.best_pair(equations, start)?;
         let mut x = start;
-        for _ in 0..NEWTON_STEPS {
+        for _ in 0..NODE_NEWTON_STEPS {
             let ((f0, g0), (f1, g1)) = (self.equation(e0, x), self.equation(e1, x));
             let det = g0.cross(g1);
             if det == 0.0 || !det.is_finite() {
@@ -383,7 +383,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
         [a, b]: [TrueSite; 2],
         [p, q]: [Solved; 2],
     ) -> Option<Vec<(Candidate, Vec<Vertex>)>> {
-        if (q.xy - p.xy).norm() <= MERGE * self.sites.size {
+        if (q.xy - p.xy).norm() <= SAME_SEED_NODE * self.sites.size {
             return Some(Vec::new());
         }
         // (A point site on the axis's side is a reflex corner.)
@@ -501,8 +501,9 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                 }
                 // (A vertex at the cut itself, the radius's extremum where the joint faces
                 // the other site, is the cut's: kept once in each piece.)
-                let at_cut =
-                    |v: &Vertex| (V2::from_arr(v.xy) - x).norm() <= MERGE * self.sites.size;
+                let at_cut = |v: &Vertex| {
+                    (V2::from_arr(v.xy) - x).norm() <= SAME_SEED_NODE * self.sites.size
+                };
                 let mut first = piece[..=cut].to_vec();
                 if first.len() > 1 && first.last().is_some_and(at_cut) {
                     first.pop();
@@ -847,7 +848,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
             let x_mid = at(t_mid)?;
             let sag = curve::distance_to_segment(x_mid.arr(), x_lo.arr(), x_hi.arr());
             if (x_hi - x_lo).norm() > step || sag > self.chord_tol {
-                if depth == MAX_EDGE_DEPTH {
+                if depth == MAX_EDGE_HALVINGS {
                     return None; // (finer than the tracer goes: the other paths decide)
                 }
                 stack.push((t_mid, x_mid, depth + 1));

@@ -31,7 +31,7 @@ const RUN: usize = 3;
 
 /// Depth of the quadtree: cells where three or more segments stay nearest (beside a
 /// junction) are halved this often at most.
-const MAX_DEPTH: usize = 10;
+const MAX_PAIR_DEPTH: usize = 10;
 
 /// A segment of a boundary: boundary index and segment index.
 pub(crate) type SegmentId = (usize, usize);
@@ -149,7 +149,7 @@ pub(crate) fn neighbours(boundaries: &[&Profile], size: f64, root: [f64; 4]) -> 
     let slack = 2.0 * EMPTY_SLACK * size;
     let mut pairs = HashSet::new();
     let mut stack: Vec<([f64; 4], Vec<usize>, usize)> = vec![(root, (0..all.len()).collect(), 0)];
-    // Bounded: each cell is popped once, and only cells above MAX_DEPTH are split.
+    // Bounded: each cell is popped once, and only cells above MAX_PAIR_DEPTH are split.
     while let Some((cell, parent, depth)) = stack.pop() {
         let centre = [0.5 * (cell[0] + cell[2]), 0.5 * (cell[1] + cell[3])];
         let half = 0.5 * (cell[2] - cell[0]).hypot(cell[3] - cell[1]);
@@ -188,7 +188,7 @@ pub(crate) fn neighbours(boundaries: &[&Profile], size: f64, root: [f64; 4]) -> 
         // are that loose.
         let sag = kept.iter().map(|&s| all[s].sag).fold(0.0, f64::max);
         let run = kept.len() <= RUN && one_run(&kept, &all, boundaries);
-        if kept.len() <= 2 || run || depth == MAX_DEPTH || half < sag {
+        if kept.len() <= 2 || run || depth == MAX_PAIR_DEPTH || half < sag {
             for (n, &a) in kept.iter().enumerate() {
                 for &b in &kept[n + 1..] {
                     let (a, b) = (all[a].id, all[b].id);

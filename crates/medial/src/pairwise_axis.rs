@@ -20,7 +20,7 @@
 //! followed by from a node) leaves its feet's gap, and the coverage of the feet
 //! ([`crate::coverage`]) refuses the axis, which is then built on the quadtree's pairs.
 
-use crate::lines_and_arcs::{Equation, LinesAndArcs, Solved, Traced, MERGE};
+use crate::lines_and_arcs::{Equation, LinesAndArcs, Solved, Traced, SAME_SEED_NODE};
 use crate::sites::Sites;
 use crate::stretches::Stretch;
 use crate::true_sites::TrueSite;
@@ -45,7 +45,7 @@ const ABOUT: f64 = 1e-7;
 
 /// The rounding of a distance compared with a disk's radius, relative to the coordinates'
 /// magnitude: a few dozen ulps.
-const ROUNDING: f64 = ulps(64.0);
+const PAIRWISE_ROUNDING: f64 = ulps(64.0);
 
 /// How far (a share of the size) Newton's method may move a node from the end the bisection
 /// found.
@@ -307,7 +307,7 @@ impl Pairwise<'_, '_, '_> {
             for (i, &a) in about.iter().enumerate() {
                 for &b in &about[i + 1..] {
                     let pair = [a.min(b), a.max(b)];
-                    let merge = MERGE * self.model.sites.size;
+                    let merge = SAME_SEED_NODE * self.model.sites.size;
                     let ends_here = |f: &Found| {
                         f.pair == pair && f.ends.iter().any(|e| (e.xy - node.xy).norm() <= merge)
                     };
@@ -579,7 +579,7 @@ impl Pairwise<'_, '_, '_> {
         // the joint there is as far. A looser slack would keep the bisector a little past
         // where a third site enters, the farther the shallower it enters, and the end's node
         // would lie off it.)
-        let reach = radius - ROUNDING * (x.x.abs().max(x.y.abs()) + radius);
+        let reach = radius - PAIRWISE_ROUNDING * (x.x.abs().max(x.y.abs()) + radius);
         let clear = |k: usize| match self.sites.get(k) {
             Some(&s) => s.corner || pair.contains(&s) || self.clears(s, x, reach),
             None => {

@@ -51,7 +51,7 @@ pub(crate) const CHORD_TURN: f64 = PI / 8.0;
 const MIN_CHORD_DEPTH: usize = 2;
 
 /// Halvings of a segment's parameter while its chords are made (2^12 chords at most).
-const MAX_CHORD_DEPTH: usize = 12;
+const MAX_SEED_CHORD_DEPTH: usize = 12;
 
 /// What a point of the approximation stands for: a point inside one segment, or the joint
 /// where one segment ends and the next starts.
@@ -297,7 +297,9 @@ fn chord_params(b: &Profile, i: usize, sag: f64) -> Vec<f64> {
             (m.p - a.p).norm()
         };
         let turn = a.d1.cross(c.d1).atan2(a.d1.dot(c.d1)).abs();
-        if depth < MAX_CHORD_DEPTH && (depth < MIN_CHORD_DEPTH || off > sag || turn > CHORD_TURN) {
+        if depth < MAX_SEED_CHORD_DEPTH
+            && (depth < MIN_CHORD_DEPTH || off > sag || turn > CHORD_TURN)
+        {
             let mid = 0.5 * (u0 + u1);
             stack.push((mid, u1, depth + 1));
             stack.push((u0, mid, depth + 1));

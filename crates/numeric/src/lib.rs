@@ -6,6 +6,8 @@
 //!   `f64::EPSILON`.
 //! - [`solve`]: the one bracketed 1-D solver, [`solve::bracketed`], with its explicit
 //!   [`solve::Accuracy`].
+//! - [`tolerance`]: the parameter and chord tolerances as validated types, with their
+//!   defaults and accepted ranges written once.
 //! - [`Interval`]: closed intervals and the interval arithmetic the proofs combine ranges
 //!   with.
 //!
@@ -20,5 +22,6 @@
 mod interval;
 pub mod rounding;
 pub mod solve;
+pub mod tolerance;
 
 pub use interval::Interval;

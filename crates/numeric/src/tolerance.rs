@@ -146,7 +146,9 @@ mod tests {
             assert!(words.contains(&format!("at least {lo:e}")), "{words}");
             assert!(words.contains(&format!("{hi}")) || words.contains(&format!("{hi:e}")));
         }
-        assert!(ParamTol::new(DEFAULT_PARAM_TOL).is_ok() && ChordTol::new(DEFAULT_CHORD_TOL).is_ok());
+        assert!(
+            ParamTol::new(DEFAULT_PARAM_TOL).is_ok() && ChordTol::new(DEFAULT_CHORD_TOL).is_ok()
+        );
         let e = ParamTol::new(-1.0).unwrap_err();
         assert_eq!(e.to_string(), format!("-1 {}", ParamTol::REQUIREMENT));
     }

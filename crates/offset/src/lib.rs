@@ -40,6 +40,7 @@ pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};
 use bspline::knots::basis_at;
 use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::MedialAxis;
+use numeric::tolerance::ChordTol;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use walk::Walk;
@@ -319,11 +320,11 @@ fn offsets_on(
     opts: &OffsetOptions,
     outward: bool,
 ) -> Result<Offsets, Error> {
-    if !(opts.chord_tol.is_finite() && opts.chord_tol > 0.0 && opts.chord_tol <= 0.5) {
+    if let Err(e) = ChordTol::new(opts.chord_tol) {
         return Err(Error::BadOption {
             field: "chord_tol",
-            value: opts.chord_tol,
-            why: "must be in (0, 0.5]",
+            value: e.value,
+            why: e.requirement,
         });
     }
     if let Some(&bad) = distances.iter().find(|d| !(d.is_finite() && **d > 0.0)) {

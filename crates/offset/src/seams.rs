@@ -12,7 +12,7 @@ use std::f64::consts::TAU;
 
 /// Newton steps for a seam's feet: each doubles the digits; more means a degenerate seam
 /// (the axis grazing the distance), which keeps its interpolated feet.
-const NEWTON_STEPS: usize = 30;
+const SEAM_NEWTON_STEPS: usize = 30;
 
 /// A seam's two offset points agree to this, relative to the region's size: a few roundings
 /// of the coordinates.
@@ -480,7 +480,7 @@ fn refine(
     size: f64,
 ) -> ([(usize, Foot); 2], bool) {
     let mut current = feet;
-    for _ in 0..NEWTON_STEPS {
+    for _ in 0..SEAM_NEWTON_STEPS {
         let (qa, da) = walks[current[0].0].offset(current[0].1, d);
         let (qb, db) = walks[current[1].0].offset(current[1].1, d);
         let gap = qa - qb;

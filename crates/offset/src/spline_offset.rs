@@ -8,7 +8,7 @@ use bspline::fit::fit_samples;
 use curve::V2;
 
 /// Halvings of a spline's span before its offset polyline is taken as it is (2^16 chords).
-const MAX_HALVINGS: usize = 16;
+const MAX_OFFSET_HALVINGS: usize = 16;
 
 /// The degree of the fitted offsets.
 const DEGREE: usize = 3;
@@ -100,7 +100,7 @@ fn polyline_parameters(
             curve::distance_to_segment(p.arr(), pa.arr(), pb.arr())
         };
         let deviation = off(0.25).max(off(0.5)).max(off(0.75));
-        if deviation > chord && depth < MAX_HALVINGS {
+        if deviation > chord && depth < MAX_OFFSET_HALVINGS {
             let m = 0.5 * (a + b);
             stack.push((m, b, depth + 1));
             stack.push((a, m, depth + 1));

@@ -226,7 +226,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 let (p, q) = (ea.p, eb.p);
                 // Seen from both sides of one grid line: opposite edges on the same line.
                 let across = ea.edge == (eb.edge + 2) % 4 && ea.line == eb.line;
-                if across && ((p[0] - q[0]) / ext[0]).hypot((p[1] - q[1]) / ext[1]) <= SAME_POINT {
+                if across && ((p[0] - q[0]) / ext[0]).hypot((p[1] - q[1]) / ext[1]) <= SAME_ROOT {
                     link[a] = Link::End(b);
                     link[b] = Link::End(a);
                     joined.extend([a, b]);
@@ -352,7 +352,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
 const MATCH_TOL: f64 = 1e-7;
 
 /// Two ends attached to one cluster closer than this (relative to the domain) are one root.
-const SAME_POINT: f64 = 1e-9;
+const SAME_ROOT: f64 = 1e-9;
 
 /// Two ends also match when their distance is within this many times the sum of their
 /// rounding uncertainties.

@@ -93,13 +93,13 @@ const TWO_BUMPS_FLOOR: f64 = 0.1;
 /// Longest segment in `(t, r)`, relative to the domain.
 const MAX_SEG: f64 = 1.0 / 16.0;
 /// Vertex refinement depth per arc for the chord test.
-const MAX_CHORD_DEPTH: usize = 20;
+const MAX_TRACE_CHORD_DEPTH: usize = 20;
 /// Largest ratio of the images of the two halves of a segment before it is halved anyway.
 const UNEVEN: f64 = 4.0;
 /// Step (relative to the domain) along the zero set for the direction of its image.
 const TANGENT_STEP: f64 = 1e-7;
 /// Bisection depth toward the edge of the valid set (one new vertex pair per level).
-const MAX_EDGE_DEPTH: usize = 48;
+const MAX_CELL_EDGE_DEPTH: usize = 48;
 /// Bisection toward the edge of the valid set stops at segments this short (relative to the
 /// domain in each parameter): the edge is then located as finely as arc ends are matched
 /// (`MATCH_TOL` of the assembly), far above the parameters' rounding.
@@ -380,9 +380,9 @@ impl Tracer<'_> {
         // The quarter points, when the chord test computed them: the children's midpoints.
         let mut quarters: (Option<Sample>, Option<Sample>) = (None, None);
         let need = if toward_edge {
-            depth < MAX_EDGE_DEPTH && !tiny
+            depth < MAX_CELL_EDGE_DEPTH && !tiny
         } else {
-            depth < MAX_CHORD_DEPTH
+            depth < MAX_TRACE_CHORD_DEPTH
                 && (long
                     || match (a.m, b.m, mm) {
                         (Some(x), Some(y), Some(m)) => {

@@ -25,10 +25,10 @@ mod stretches;
 use crate::bisector::{bbox_of_points, bisector, self_bisector, FAR};
 use crate::bisector::{Bisector, BisectorOptions, Branch, TRIM_SLACK};
 use crate::error::Result;
-use crate::zeroset::MAX_CHORD_TOL;
 use arcs::{arc_bisector, Carrier};
 use bspline::Rational;
 use curve::{JointKind, ParamCurve, Profile, Segment, SegmentKind};
+use numeric::tolerance::ChordTol;
 use point_site::{corner_corner, corner_curve, Corner, Reach, SharedEnd};
 use serde::{Deserialize, Serialize};
 
@@ -301,7 +301,7 @@ impl<'a> Run<'a> {
     fn pair_options(&self, curves: &[&Rational]) -> BisectorOptions {
         let pair = crate::bisector::chord_size(curves);
         let chord =
-            (self.opts.chord_tol * self.size / pair).clamp(self.opts.chord_tol, MAX_CHORD_TOL);
+            (self.opts.chord_tol * self.size / pair).clamp(self.opts.chord_tol, ChordTol::COARSEST);
         BisectorOptions {
             chord_tol: chord,
             trimmed: false,

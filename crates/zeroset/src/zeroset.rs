@@ -5,21 +5,18 @@ use crate::error::{Error, Result};
 use crate::extract::{Pieces, Tracer};
 use crate::patch::Patch;
 use bspline::tensor::TensorBSpline;
+use numeric::tolerance::{ChordTol, ParamTol, ToleranceError};
 use serde::{Deserialize, Serialize};
-use std::sync::OnceLock;
 
 /// The default parameter tolerance (relative to the domain) of [`ZeroSetOptions`],
-/// [`BisectorOptions`](crate::BisectorOptions) and [`SystemOptions`](crate::SystemOptions):
-/// patches of 1e-12 of the domain are a thousand times what double precision resolves (the
-/// least accepted, 1e-15), so they are decided above rounding, and far below any feature of
-/// ordinary curves.
-pub const DEFAULT_TOL: f64 = 1e-12;
+/// [`BisectorOptions`](crate::BisectorOptions) and [`SystemOptions`](crate::SystemOptions), the
+/// workspace's one ([`numeric::tolerance::DEFAULT_PARAM_TOL`]).
+pub use numeric::tolerance::DEFAULT_PARAM_TOL as DEFAULT_TOL;
 
 /// The default chord tolerance (relative to the size: the domain diagonal of a zero set, the
-/// curves' bounding-box diagonal of a bisector). It sets the vertices' spacing, not their
-/// accuracy (each is refined onto the zero set to rounding): a thousandth of the size draws
-/// smoothly; denser polylines cost in proportion to their vertices (1e-6: ~10×).
-pub const DEFAULT_CHORD_TOL: f64 = 1e-3;
+/// curves' bounding-box diagonal of a bisector), the workspace's one
+/// ([`numeric::tolerance::DEFAULT_CHORD_TOL`]).
+pub use numeric::tolerance::DEFAULT_CHORD_TOL;
 
 /// The least tolerance whose reciprocal gives a depth limit: a zero, negative or NaN
 /// tolerance (the system options are not range-checked) then means the deepest subdivision
@@ -49,17 +46,6 @@ impl Default for ZeroSetOptions {
     }
 }
 
-/// The finest parameter tolerance (relative to the domain): a few units of rounding.
-const MIN_TOL: f64 = 1e-15;
-/// The coarsest: coarser brackets merge the features of ordinary curves.
-const MAX_TOL: f64 = 1e-3;
-/// The finest chord tolerance (relative to the size): a bisector's polyline within 1e-9 of it
-/// has up to a few hundred thousand vertices on the papers' figures; within 1e-11, millions
-/// (and gigabytes), closer than its vertices are computed.
-const MIN_CHORD_TOL: f64 = 1e-9;
-/// The coarsest: a polyline half the size away from the curve it stands for.
-pub(crate) const MAX_CHORD_TOL: f64 = 0.5;
-
 impl ZeroSetOptions {
     /// Sets the parameter tolerance.
     pub fn tolerance(mut self, tol: f64) -> Self {
@@ -73,22 +59,13 @@ impl ZeroSetOptions {
     }
 
     pub(crate) fn check(&self) -> Result<()> {
-        if !(self.tol.is_finite() && (MIN_TOL..MAX_TOL).contains(&self.tol)) {
-            return Err(Error::BadOption {
-                field: "tol",
-                value: self.tol,
-                why: why_tol(),
-            });
-        }
-        if !(self.chord_tol.is_finite()
-            && (MIN_CHORD_TOL..=MAX_CHORD_TOL).contains(&self.chord_tol))
-        {
-            return Err(Error::BadOption {
-                field: "chord_tol",
-                value: self.chord_tol,
-                why: why_chord_tol(),
-            });
-        }
+        let bad = |field, e: ToleranceError| Error::BadOption {
+            field,
+            value: e.value,
+            why: e.requirement,
+        };
+        ParamTol::new(self.tol).map_err(|e| bad("tol", e))?;
+        ChordTol::new(self.chord_tol).map_err(|e| bad("chord_tol", e))?;
         Ok(())
     }
 
@@ -100,29 +77,6 @@ impl ZeroSetOptions {
             .clamp(1.0, 1100.0) as usize;
         2 * (halvings + 4)
     }
-}
-
-/// What `tol` must satisfy, in words, with the limits quoted from [`MIN_TOL`] and [`MAX_TOL`].
-fn why_tol() -> &'static str {
-    static WHY: OnceLock<String> = OnceLock::new();
-    WHY.get_or_init(|| {
-        format!(
-            "must be at least {MIN_TOL:e} (what double precision resolves of a domain) and \
-             below {MAX_TOL:e}"
-        )
-    })
-}
-
-/// What `chord_tol` must satisfy, with the limits quoted from [`MIN_CHORD_TOL`] and
-/// [`MAX_CHORD_TOL`].
-fn why_chord_tol() -> &'static str {
-    static WHY: OnceLock<String> = OnceLock::new();
-    WHY.get_or_init(|| {
-        format!(
-            "must be at least {MIN_CHORD_TOL:e} (finer polylines run to millions of points, \
-             past the accuracy of their vertices) and at most {MAX_CHORD_TOL}"
-        )
-    })
 }
 
 /// One connected piece of a zero set, as a polyline in `(t, r)`.
@@ -224,23 +178,5 @@ pub(crate) fn finish(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> ZeroSet
         isolated: a.isolated,
         complete: !pieces.truncated,
         patches: pieces.patches,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn range_messages_quote_the_limits() {
-        assert_eq!(
-            why_tol(),
-            "must be at least 1e-15 (what double precision resolves of a domain) and below 1e-3"
-        );
-        assert_eq!(
-            why_chord_tol(),
-            "must be at least 1e-9 (finer polylines run to millions of points, past the \
-             accuracy of their vertices) and at most 0.5"
-        );
     }
 }

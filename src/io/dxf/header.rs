@@ -5,7 +5,7 @@ use crate::io::Problem;
 
 /// The units of `$INSUNITS` codes 1 to 24, in order (0 is unitless). Codes 21 to 24 are the
 /// United States survey foot, inch, yard and mile.
-const UNITS: [&str; 24] = [
+const INSUNITS_NAMES: [&str; 24] = [
     "in", "ft", "mi", "mm", "cm", "m", "km", "uin", "mil", "yd", "angstrom", "nm", "um", "dm",
     "dam", "hm", "Gm", "au", "ly", "pc", "us_ft", "us_in", "us_yd", "us_mi",
 ];
@@ -28,12 +28,12 @@ pub(super) fn units(value: Option<&str>) -> Result<Option<String>, Failure> {
     }
     usize::try_from(code - 1)
         .ok()
-        .and_then(|i| UNITS.get(i))
+        .and_then(|i| INSUNITS_NAMES.get(i))
         .map(|u| Some(u.to_string()))
         .ok_or((
             field,
             Problem::OutOfRange {
-                rule: format!("a unit code from 0 to {}", UNITS.len()),
+                rule: format!("a unit code from 0 to {}", INSUNITS_NAMES.len()),
                 value: code as f64,
             },
         ))

@@ -25,7 +25,7 @@ pub enum Side {
 }
 
 /// Below this share of the products' size a cross product is not trusted negative.
-const ROUNDING: f64 = 1e-12;
+const CROSS_ROUNDING: f64 = 1e-12;
 
 /// The two curves' Bézier pieces and the wanted side of each.
 pub(super) struct SideFilter<'a> {
@@ -98,7 +98,7 @@ fn wrong_side(own: &[[f64; 2]], other: &[[f64; 2]], sign: f64) -> bool {
         let cross = |p: &[f64; 2]| h[0] * p[1] - h[1] * p[0];
         let most = other.iter().map(cross).fold(f64::NEG_INFINITY, f64::max);
         let least = own.iter().map(cross).fold(f64::INFINITY, f64::min);
-        most - least < -ROUNDING * h[0].abs().max(h[1].abs()) * reach
+        most - least < -CROSS_ROUNDING * h[0].abs().max(h[1].abs()) * reach
     })
 }
 

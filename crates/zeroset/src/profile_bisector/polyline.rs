@@ -10,7 +10,7 @@ const INITIAL: usize = 16;
 
 /// Refinement depth at most (each level splits a span in three: 3^-30 of the grid's step is
 /// below the parameter's rounding).
-const MAX_DEPTH: usize = 30;
+const MAX_POLYLINE_DEPTH: usize = 30;
 
 /// Vertices at most per call: the work stays bounded whatever the curve.
 const MAX_VERTICES: usize = 1 << 20;
@@ -114,7 +114,7 @@ impl Sampler<'_> {
                 if !off(&s1) && !off(&s2) {
                     return;
                 }
-                if depth >= MAX_DEPTH {
+                if depth >= MAX_POLYLINE_DEPTH {
                     self.complete = false;
                     return;
                 }

@@ -11,7 +11,6 @@
 //! A direction within rounding of a cone's edge is the contract's limit case (it may be
 //! reported or not): such candidates are left out. Every other decision is clear of rounding.
 
-use crate::profile_pairs::ordered;
 use crate::profiles::at_corner;
 use crate::types::{Options, ProfilePair};
 use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
@@ -77,16 +76,19 @@ pub(crate) fn corner_pairs(
             let d = b.p - a.p;
             if a.holds(d) && b.holds(-d) {
                 let (p, q) = (global(a.p), global(b.p));
-                out.pairs.push(ordered(ProfilePair {
-                    s: a.u,
-                    t: b.u,
-                    p,
-                    q,
-                    distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
-                    kind: None,
-                    corner: [true, true],
-                    segment: [a.segment, b.segment],
-                }));
+                out.pairs.push(
+                    ProfilePair {
+                        s: a.u,
+                        t: b.u,
+                        p,
+                        q,
+                        distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
+                        kind: None,
+                        corner: [true, true],
+                        segment: [a.segment, b.segment],
+                    }
+                    .ordered(),
+                );
             }
         }
     }
@@ -123,16 +125,19 @@ pub(crate) fn corner_pairs(
                             continue;
                         }
                         let (p, q) = (global(site.p), global(j.p));
-                        out.pairs.push(ordered(ProfilePair {
-                            s: site.u,
-                            t: profile.profile_param(i, s),
-                            p,
-                            q,
-                            distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
-                            kind: None,
-                            corner: [true, false],
-                            segment: [site.segment, i],
-                        }));
+                        out.pairs.push(
+                            ProfilePair {
+                                s: site.u,
+                                t: profile.profile_param(i, s),
+                                p,
+                                q,
+                                distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
+                                kind: None,
+                                corner: [true, false],
+                                segment: [site.segment, i],
+                            }
+                            .ordered(),
+                        );
                     }
                 }
                 Err(e) => {

@@ -330,7 +330,7 @@ fn profile_pair(
     );
     let us = profile.profile_param(i, vs.to_curve(s));
     let ut = profile.profile_param(j, vt.to_curve(t));
-    ordered(ProfilePair {
+    ProfilePair {
         s: us,
         t: ut,
         p,
@@ -339,30 +339,14 @@ fn profile_pair(
         kind,
         corner,
         segment: [i, j],
-    })
+    }
+    .ordered()
 }
 
 /// The kind of the joint where segment `k`'s view `v` is at `x`, if `x` is at one of its ends.
 fn joint_at(profile: &Profile, k: usize, v: &View, x: f64) -> Option<JointKind> {
     let share = (v.to_curve(x) - v.reported_domain().0) / v.period;
     crate::profiles::joint_at(profile, k, share)
-}
-
-/// The pair with `s ≤ t`.
-pub(crate) fn ordered(p: ProfilePair) -> ProfilePair {
-    if p.s <= p.t {
-        p
-    } else {
-        ProfilePair {
-            s: p.t,
-            t: p.s,
-            p: p.q,
-            q: p.p,
-            corner: [p.corner[1], p.corner[0]],
-            segment: [p.segment[1], p.segment[0]],
-            ..p
-        }
-    }
 }
 
 /// The same pair found twice (from two segments meeting at a smooth joint, or as a corner

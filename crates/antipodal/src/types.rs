@@ -230,6 +230,25 @@ pub struct ProfilePair {
     pub segment: [usize; 2],
 }
 
+impl ProfilePair {
+    /// The pair with `s ≤ t` (its two contacts swapped if need be).
+    pub(crate) fn ordered(self) -> ProfilePair {
+        if self.s <= self.t {
+            self
+        } else {
+            ProfilePair {
+                s: self.t,
+                t: self.s,
+                p: self.q,
+                q: self.p,
+                corner: [self.corner[1], self.corner[0]],
+                segment: [self.segment[1], self.segment[0]],
+                ..self
+            }
+        }
+    }
+}
+
 /// A continuum of antipodal pairs of a profile, with its end points (a drawing's parameters
 /// depend on how its reader chained it).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -29,10 +29,7 @@ impl OnCircle {
 
     /// How this parameter maps back to the shape's angle.
     pub fn angle(&self) -> Angle {
-        match self.shape {
-            CircleShape::Lemniscate { a, b } => Angle::Squeezed { a, b },
-            _ => Angle::Circle,
-        }
+        self.shape.angle()
     }
 }
 

@@ -64,35 +64,6 @@ impl Region {
         Ok(Self { outer, holes })
     }
 
-    /// The regions of closed profiles nested inside each other (even-odd): each profile at
-    /// an even depth an outer boundary, with the profiles directly inside it as its holes;
-    /// in the order of their outer boundaries. Open profiles are left out. Profiles that cross
-    /// are an error ([`Region::filled`] with one group filled even-odd).
-    ///
-    /// ```
-    /// use curve::{Profile, Region, Segment};
-    /// let circle = |r: f64| {
-    ///     Profile::new(vec![Segment::arc([0.0, 0.0], r, 0.0, std::f64::consts::TAU).unwrap()], None)
-    ///         .unwrap()
-    /// };
-    /// // A washer with a disk in its hole: two regions.
-    /// let regions = Region::nested(vec![circle(1.0), circle(3.0), circle(2.0)]).unwrap();
-    /// assert_eq!(regions.len(), 2);
-    /// assert_eq!(regions[1].holes().len(), 1); // the washer (outer r = 3) comes second
-    /// ```
-    pub fn nested(profiles: Vec<Profile>) -> Result<Vec<Region>> {
-        let outlines = profiles
-            .into_iter()
-            .filter(|p| p.is_closed())
-            .map(|profile| crate::FilledOutline {
-                profile,
-                group: 0,
-                rule: crate::FillRule::EvenOdd,
-            })
-            .collect();
-        Region::filled(outlines)
-    }
-
     /// A region of boundaries already proven closed, apart and nested as [`Region::new`]
     /// requires.
     pub(crate) fn checked(outer: Profile, holes: Vec<Profile>) -> Self {

@@ -188,7 +188,7 @@ impl Shape {
                 let (hom, err) = circle_form_spline(form)?;
                 let rational = bspline::Rational::from_homogeneous_with_error(hom, err)?;
                 let curve = crate::SplineCurve::new(rational)?;
-                let angle = crate::OnCircle::new(form).angle();
+                let angle = form.angle();
                 Ok(Segment::from_parts(
                     SegmentKind::BSpline,
                     curve,

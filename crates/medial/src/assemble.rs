@@ -3,8 +3,9 @@
 //! stretches that continue each other through a node of two are joined into one edge.
 
 use crate::candidates::Candidate;
+use crate::candidates::Vertex;
 use crate::sites::Sites;
-use crate::stretches::{Stretch, Vertex};
+use crate::stretches::Stretch;
 use crate::{Edge, MedialAxis, Node, NodeKind};
 use curve::ParamCurve;
 

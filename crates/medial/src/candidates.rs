@@ -13,6 +13,14 @@ use zeroset::{
     profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
 };
 
+/// A vertex of the axis: its foot parameters, point and radius.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Vertex {
+    pub(crate) tr: [f64; 2],
+    pub(crate) xy: [f64; 2],
+    pub(crate) radius: f64,
+}
+
 /// The finest chord tolerance the bisectors take (relative to their box's diagonal): the
 /// axis's finest, 1e-9 of the size, scaled to the diagonal may fall below it.
 const MIN_CHORD: f64 = 1e-9;

@@ -12,9 +12,8 @@
 //! distance is therefore measured, not bounded: its nearest point, by Newton's method from
 //! the corner, compared with the disk's radius to rounding.
 
-use crate::candidates::Candidate;
+use crate::candidates::{Candidate, Vertex};
 use crate::sites::{Sites, EMPTY_SLACK};
-use crate::stretches::Vertex;
 use curve::{JointKind, ParamCurve};
 use numeric::rounding::ulps;
 

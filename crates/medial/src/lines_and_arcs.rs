@@ -10,11 +10,12 @@
 //! other paths.
 
 use crate::candidates::Candidate;
+use crate::candidates::Vertex;
 use crate::certificate::JUNCTION_ROOM;
 use crate::corners::entered_across_corner;
 use crate::junction_proof::{proven_within, ClosedSite};
 use crate::sites::{Disk, Sites, EMPTY_SLACK};
-use crate::stretches::{Stretch, Vertex};
+use crate::stretches::Stretch;
 use crate::true_sites::{ArcSite, LineSite, Shape, TrueSite};
 use curve::{wrap_pi, JointKind, SegmentKind, V2};
 use numeric::rounding::ulps;

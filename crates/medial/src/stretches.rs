@@ -2,7 +2,7 @@
 //! empty disks. Where a stretch ends inside its branch, the end is refined on the exact
 //! branch to the point where a third boundary point reaches the disk: a tri-tangent disk.
 
-use crate::candidates::Candidate;
+use crate::candidates::{Candidate, Vertex};
 use crate::corners::entered_across_corner;
 use crate::curvature::{curvature_peak, sign_change};
 use crate::parallel::in_order;
@@ -92,14 +92,6 @@ struct Bracket {
     hi: f64,
     last: Vertex,
     outside: Option<Vertex>,
-}
-
-/// A vertex of the axis: its foot parameters, point and radius.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Vertex {
-    pub(crate) tr: [f64; 2],
-    pub(crate) xy: [f64; 2],
-    pub(crate) radius: f64,
 }
 
 /// A stretch of one candidate on the axis.

@@ -2,6 +2,7 @@
 //! formulas in the rational circle's angle: shared by the evaluation in φ (`kinds`) and by the
 //! circle forms, so kept apart from both.
 
+use crate::circle::Angle;
 use crate::geom::{Jet, V2};
 
 /// A polar curve `r(φ)(cos φ, sin φ)` from the sine and cosine of φ, `r` and its first three
@@ -74,6 +75,15 @@ pub enum CircleShape {
 }
 
 impl CircleShape {
+    /// How the rational circle's angle ψ maps back to the shape's own angle φ: the same,
+    /// except for the elliptic lemniscate (`tan φ = (a/b) tan ψ`).
+    pub fn angle(&self) -> Angle {
+        match *self {
+            CircleShape::Lemniscate { a, b } => Angle::Squeezed { a, b },
+            _ => Angle::Circle,
+        }
+    }
+
     /// Point and derivatives in ψ up to `order` at the angle with cosine `c` and sine `s`.
     /// (Inlined into the circle form's jets, the hottest path of a run: left to itself the
     /// compiler stopped doing so as the crate grew, at 3 % of a run.)

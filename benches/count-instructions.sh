@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Instructions per run of `antipodal` (warm: on a prepared curve; cold: preparing and answering
-# once) on the papers' shapes and the wavy cubic, counted by callgrind.
-# Usage: benches/count-instructions.sh [FILE ...]   (needs valgrind)
+# once) on the papers' shapes and the wavy cubic, and of the medial axis (warm: on the region
+# built; cold: from the file's bytes) on the medial benchmarks' shapes, counted by callgrind.
+# Usage: benches/count-instructions.sh [FILE ...]   (needs valgrind; FILEs: antipodal's runs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo bench --bench instructions --no-run -q 2>/dev/null
-bin=$(ls -t target/release/deps/instructions-* | grep -v '\.d$' | head -1)
+bin=$(ls -t "${CARGO_TARGET_DIR:-target}"/release/deps/instructions-* | grep -v '\.d$' | head -1)
 files=("$@")
 if [ ${#files[@]} -eq 0 ]; then
     files=(fixtures/antipodal-ellipse.json fixtures/antipodal-limacon.json
@@ -28,3 +29,10 @@ for f in "${files[@]}"; do
     c=$(count "$f" cold 5)
     printf '%-45s %12d %12d %8.1f\n' "$f" "$w" "$c" "$(echo "$c / $w" | bc -l)"
 done
+if [ $# -eq 0 ]; then
+    for f in fixtures/region-pocket.json fixtures/periodic_cubic.json fixtures/profile-cam.json; do
+        w=$(count "$f" medial-warm 20)
+        c=$(count "$f" medial-cold 5)
+        printf '%-45s %12d %12d %8.1f\n' "medial $f" "$w" "$c" "$(echo "$c / $w" | bc -l)"
+    done
+fi

@@ -1,15 +1,19 @@
-//! Instruction counts of `antipodal` runs, for callgrind: the machine's timings are noisy, the
+//! Instruction counts of `antipodal` and `medial_axis` runs, for callgrind: the machine's timings are noisy, the
 //! number of instructions one run executes is not. `count-instructions.sh` (beside this file)
 //! runs it under callgrind and prints instructions per run; run alone (`cargo bench --bench
 //! instructions`) it times the same runs.
 //!
 //! `instructions FILE MODE N`: `N` runs of `antipodal` on the curve of `FILE`, either `warm`
 //! (on one prepared curve, after a first run) or `cold` (preparing the curve read and answering
-//! once, each time). The runs are in the function `measured`, which callgrind's
-//! `--toggle-collect` isolates.
+//! once, each time), or `medial-warm` / `medial-cold`: the medial axis of the file read as a
+//! region (warm: the region built once; cold: reading the file's bytes each time). The runs are
+//! in the functions `measured` and `measured_medial`, which callgrind's `--toggle-collect`
+//! isolates.
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use antipodal::{prepare, Options, PlaneCurve};
+use curvekit::io::{parse_region, Shape};
+use curvekit::medial::{medial_axis, MedialOptions};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -29,6 +33,30 @@ fn measured(curve: &dyn PlaneCurve, warm: bool, n: usize) {
     }
 }
 
+/// The region of a file's bytes, as the tool reads it.
+fn region_of(file: &str, bytes: &[u8]) -> curve::Region {
+    match parse_region(file, None, bytes, None).unwrap().shape {
+        Shape::Region(r) => *r,
+        _ => panic!("{file}: not one region"),
+    }
+}
+
+#[inline(never)]
+fn measured_medial(file: &str, bytes: &[u8], warm: bool, n: usize) {
+    let opts = MedialOptions::default();
+    if warm {
+        let region = region_of(file, bytes);
+        black_box(medial_axis(&region, &opts).unwrap());
+        for _ in 0..n {
+            black_box(medial_axis(black_box(&region), &opts).unwrap());
+        }
+    } else {
+        for _ in 0..n {
+            black_box(medial_axis(&region_of(file, black_box(bytes)), &opts).unwrap());
+        }
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args()
         .skip(1)
@@ -36,14 +64,22 @@ fn main() {
         .collect();
     let [file, mode, n] = args.as_slice() else {
         // (`cargo bench` runs every bench target without arguments: nothing to do.)
-        eprintln!("usage: instructions FILE warm|cold N");
+        eprintln!("usage: instructions FILE warm|cold|medial-warm|medial-cold N");
         return;
     };
     let text = std::fs::read_to_string(file).unwrap();
-    let curve = curvekit::io::parse_curve(file, &text).unwrap();
     let n: usize = n.parse().unwrap();
     let t = Instant::now();
-    measured(curve.plane_curve(), mode == "warm", n);
+    if let Some(medial_mode) = mode.strip_prefix("medial-") {
+        // One core, as the medial benchmarks run.
+        let _ = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build_global();
+        measured_medial(file, text.as_bytes(), medial_mode == "warm", n);
+    } else {
+        let curve = curvekit::io::parse_curve(file, &text).unwrap();
+        measured(curve.plane_curve(), mode == "warm", n);
+    }
     eprintln!(
         "{mode}: {:.2} µs per run",
         t.elapsed().as_secs_f64() * 1e6 / n as f64

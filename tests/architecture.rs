@@ -22,17 +22,7 @@ const CRATES: [(&str, &str); 9] = [
 ];
 
 /// The circles of modules that import each other today, per crate (issue 41 breaks them).
-const KNOWN_CIRCLES: [(&str, &[&str]); 3] = [
-    (
-        "curve",
-        &["crossing", "error", "segment", "spline", "stretch"],
-    ),
-    (
-        "curve",
-        &["box_tree", "clearance", "corner_knots", "profile"],
-    ),
-    ("offset", &["loops", "necks", "seams"]),
-];
+const KNOWN_CIRCLES: [(&str, &[&str]); 0] = [];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

@@ -7,8 +7,8 @@
 //! distance from a point bounds theirs from below and a node beyond the reach of a query
 //! is passed over whole.
 
-use crate::clearance::box_distance;
 use crate::geom::V2;
+use crate::piece_bounds::box_distance;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 

@@ -6,10 +6,28 @@
 
 use crate::error::{Error, Result};
 use crate::param::ParamCurve;
-use crate::profile::{DocumentSpan, CORNER_TURN};
 use crate::segment::{Segment, SegmentKind};
 use crate::spline::SplineCurve;
 use crate::V2;
+
+/// The jump of the tangent direction (radians) above which a joint is a corner: the interface
+/// contract's, far above the rounding of tangents computed from control points.
+pub const CORNER_TURN: f64 = 1e-9;
+
+/// Where a segment of a profile lies in the parameter its document gives the profile: a
+/// `profile` document's `[0, n)` (segment `i` on `[i, i + 1]`, at its own parameter mapped
+/// linearly), or a curve's own domain (a spline's knots, an analytic shape's angle) for a
+/// curve taken as a profile ([`crate::Profile::of_curve`]). A segment cut at a corner inside it
+/// (a knot of full multiplicity) covers its share of the whole segment's span.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DocumentSpan {
+    /// The document's segment it belongs to.
+    pub segment: usize,
+    /// The document parameter where it starts.
+    pub lo: f64,
+    /// The document parameter where it ends.
+    pub hi: f64,
+}
 
 /// The segments cut at their corner knots, with where each piece lies in the segments as
 /// given: segment `i` on `[i, i + 1]`, a piece on its share of its segment's own domain.

@@ -117,11 +117,5 @@ pub enum Error {
     },
 }
 
-impl From<crate::crossing::Undecided> for Error {
-    fn from(u: crate::crossing::Undecided) -> Self {
-        Error::Undecided { tests: u.tests }
-    }
-}
-
 /// Shorthand for results of this crate.
 pub type Result<T> = std::result::Result<T, Error>;

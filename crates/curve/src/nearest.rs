@@ -3,9 +3,9 @@
 //! included; segments whose control-point box is no nearer than a point already found are
 //! skipped. A sampled search: a feature narrower than the sampling can be missed.
 
-use crate::clearance::box_distance;
 use crate::geom::V2;
 use crate::param::ParamCurve;
+use crate::piece_bounds::box_distance;
 use crate::profile::Profile;
 use crate::segment::Segment;
 

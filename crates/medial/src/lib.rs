@@ -57,7 +57,7 @@ pub use fit::EdgeSpline;
 use candidates::PairSource;
 use certificate::Doubt;
 use curve::Region;
-use numeric::tolerance::{ChordTol, ParamTol, ToleranceError};
+use numeric::tolerance::check_pair;
 use numeric::tolerance::{DEFAULT_CHORD_TOL, DEFAULT_PARAM_TOL};
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
@@ -103,7 +103,8 @@ impl Default for MedialOptions {
 
 impl MedialOptions {
     /// Checks the options against what the axis can deliver ([`medial_axis`] checks them
-    /// too): the tolerances in the ranges of [`ParamTol`] and [`ChordTol`], the size a finite
+    /// too): the tolerances in the ranges of [`numeric::tolerance::ParamTol`] and
+    /// [`numeric::tolerance::ChordTol`], the size a finite
     /// number above zero.
     ///
     /// ```
@@ -113,13 +114,11 @@ impl MedialOptions {
     /// assert!(coarse.validate().is_err());
     /// ```
     pub fn validate(&self) -> Result<()> {
-        let bad = |field, e: ToleranceError| Error::BadOption {
+        check_pair(self.tol, self.chord_tol).map_err(|(field, e)| Error::BadOption {
             field,
             value: e.value,
             why: e.requirement,
-        };
-        ParamTol::new(self.tol).map_err(|e| bad("tol", e))?;
-        ChordTol::new(self.chord_tol).map_err(|e| bad("chord_tol", e))?;
+        })?;
         match self.size {
             Some(size) if !(size.is_finite() && size > 0.0) => Err(Error::BadOption {
                 field: "size",

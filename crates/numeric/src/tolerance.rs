@@ -34,6 +34,32 @@ impl fmt::Display for ToleranceError {
 
 impl std::error::Error for ToleranceError {}
 
+/// `value` when it is finite and `in_range`, else the error quoting `requirement`.
+fn checked(value: f64, in_range: bool, requirement: &'static str) -> Result<f64, ToleranceError> {
+    if value.is_finite() && in_range {
+        Ok(value)
+    } else {
+        Err(ToleranceError { value, requirement })
+    }
+}
+
+/// The two tolerances of a command that traces curves, checked: `Err` names the field
+/// (`tol` or `chord_tol`) that is out of range, with the error.
+///
+/// ```
+/// use numeric::tolerance::check_pair;
+/// assert!(check_pair(1e-12, 1e-3).is_ok());
+/// assert_eq!(check_pair(1e-12, 2.0).unwrap_err().0, "chord_tol");
+/// ```
+pub fn check_pair(
+    tol: f64,
+    chord_tol: f64,
+) -> Result<(ParamTol, ChordTol), (&'static str, ToleranceError)> {
+    let param = ParamTol::new(tol).map_err(|e| ("tol", e))?;
+    let chord = ChordTol::new(chord_tol).map_err(|e| ("chord_tol", e))?;
+    Ok((param, chord))
+}
+
 /// A parameter tolerance relative to a domain's length, in `[1e-15, 1e-3)`.
 ///
 /// ```
@@ -57,14 +83,8 @@ impl ParamTol {
 
     /// The tolerance `value`, when it is in range.
     pub fn new(value: f64) -> Result<Self, ToleranceError> {
-        if value.is_finite() && (Self::FINEST..Self::COARSEST).contains(&value) {
-            Ok(Self(value))
-        } else {
-            Err(ToleranceError {
-                value,
-                requirement: Self::REQUIREMENT,
-            })
-        }
+        let range = Self::FINEST..Self::COARSEST;
+        checked(value, range.contains(&value), Self::REQUIREMENT).map(Self)
     }
 
     /// The tolerance as a number.
@@ -102,14 +122,8 @@ impl ChordTol {
 
     /// The tolerance `value`, when it is in range.
     pub fn new(value: f64) -> Result<Self, ToleranceError> {
-        if value.is_finite() && (Self::FINEST..=Self::COARSEST).contains(&value) {
-            Ok(Self(value))
-        } else {
-            Err(ToleranceError {
-                value,
-                requirement: Self::REQUIREMENT,
-            })
-        }
+        let range = Self::FINEST..=Self::COARSEST;
+        checked(value, range.contains(&value), Self::REQUIREMENT).map(Self)
     }
 
     /// The tolerance as a number.

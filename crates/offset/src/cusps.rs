@@ -1,5 +1,5 @@
 //! Horn cusps of a loop. Where a passage is exactly twice the distance wide, it is taken as
-//! closed (see [`crate::seams::TOUCHING`]), and the loop on either side of it turns back at
+//! closed (see [`crate::necks::TOUCHING`]), and the loop on either side of it turns back at
 //! the touching point, between two pieces tangent there: a horn whose tip is narrower than
 //! any width. A profile cannot turn back (which side its turn is on is undecided), so the
 //! tip is cut by a chord across the horn where it is `width` wide.
@@ -15,7 +15,7 @@ const TURNS_BACK: f64 = 1e-7;
 
 /// Where a horn is cut, relative to the region's size: ten times the width of the passages
 /// taken as closed, far below the chord tolerance.
-pub(crate) const HORN_CUT: f64 = 10.0 * crate::seams::TOUCHING;
+pub(crate) const HORN_CUT: f64 = 10.0 * crate::necks::TOUCHING;
 
 /// Doublings of the cut's distance from the tip before a horn is left as it is.
 const MOST_DOUBLINGS: usize = 80;

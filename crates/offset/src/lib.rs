@@ -29,21 +29,26 @@ mod cusps;
 mod joints;
 mod loops;
 mod necks;
+mod offset_loop;
 mod pieces;
+mod read_back;
 mod seams;
 mod spline_offset;
 mod vcarve;
 mod walk;
+mod widest;
 
+pub use offset_loop::{OffsetLoop, OffsetSegment};
 pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};
 
-use bspline::knots::basis_at;
-use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
+use curve::{ParamCurve, Profile, Region};
 use medial::MedialAxis;
 use numeric::tolerance::ChordTol;
+use read_back::{read_back, ReadBack};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use walk::Walk;
+use widest::{encloses, isolated_nodes, widest_per_boundary};
 
 /// Times the chord tolerance is quartered for a loop whose fitted pieces cross.
 const REFITS: usize = 6;
@@ -66,148 +71,6 @@ impl Default for OffsetOptions {
             chord_tol: 1e-3,
             size: None,
         }
-    }
-}
-
-/// One piece of an offset loop.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum OffsetSegment {
-    /// A straight line.
-    Line {
-        /// Start.
-        from: [f64; 2],
-        /// End.
-        to: [f64; 2],
-    },
-    /// A circular arc, counterclockwise when `end > start`.
-    Arc {
-        /// Centre.
-        center: [f64; 2],
-        /// Radius.
-        r: f64,
-        /// Start angle (radians).
-        start: f64,
-        /// End angle.
-        end: f64,
-    },
-    /// The offset of a spline, as a B-spline within the chord tolerance of it where
-    /// measured: a fitted cubic, or where none fits, the polyline (degree 1) of points on the
-    /// exact offset.
-    #[serde(rename = "bspline")]
-    BSpline {
-        /// The degree.
-        degree: usize,
-        /// The knots on `[0, 1]`, clamped: `points.len() + degree + 1` of them.
-        knots: Vec<f64>,
-        /// The control points.
-        points: Vec<[f64; 2]>,
-    },
-}
-
-/// A closed loop of an offset: counterclockwise round an outer part, clockwise round a hole.
-/// In JSON, a closed `profile` document.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename = "profile")]
-pub struct OffsetLoop {
-    /// The pieces, each starting where the one before ends.
-    pub segments: Vec<OffsetSegment>,
-    /// The part of a multi-part input it belongs to (absent for one part).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub part: Option<usize>,
-}
-
-impl OffsetLoop {
-    /// The loop as a closed polyline for drawing: lines as they are, each arc by `arc_points`
-    /// chords, each B-spline by `arc_points` chords a knot span (a polyline's by its points);
-    /// the first point again at the end.
-    pub fn polyline(&self, arc_points: usize) -> Vec<[f64; 2]> {
-        let arc_points = arc_points.max(1);
-        let mut points = Vec::new();
-        for s in &self.segments {
-            match s {
-                OffsetSegment::Line { from, to } => points.extend([*from, *to]),
-                OffsetSegment::Arc {
-                    center,
-                    r,
-                    start,
-                    end,
-                } => points.extend((0..=arc_points).map(|k| {
-                    let a = start + (end - start) * k as f64 / arc_points as f64;
-                    [center[0] + r * a.cos(), center[1] + r * a.sin()]
-                })),
-                OffsetSegment::BSpline {
-                    degree: 1,
-                    points: p,
-                    ..
-                } => points.extend(p.iter().copied()),
-                OffsetSegment::BSpline {
-                    degree,
-                    knots,
-                    points: p,
-                } => {
-                    let n = arc_points * (p.len() - degree);
-                    points.extend((0..=n).map(|k| {
-                        let (first, basis) = basis_at(*degree, knots, k as f64 / n as f64);
-                        basis.iter().enumerate().fold([0.0; 2], |acc, (j, b)| {
-                            [acc[0] + b * p[first + j][0], acc[1] + b * p[first + j][1]]
-                        })
-                    }));
-                }
-            }
-        }
-        if let Some(&first) = points.first() {
-            points.push(first);
-        }
-        points
-    }
-
-    /// The loop as a closed profile, to be measured, drawn or offset again (with
-    /// [`curve::Region::nested`] for the regions the loops bound).
-    pub fn profile(&self) -> Result<Profile, curve::Error> {
-        Profile::new(self.exact_segments()?, Some(true))
-    }
-
-    /// The loop as a closed polyline within `tol` of it, every vertex on it (a loop that
-    /// touches itself at a neck, which no profile may, included).
-    pub fn flattened(&self, tol: f64) -> Result<Vec<[f64; 2]>, curve::Error> {
-        let mut points: Vec<[f64; 2]> = Vec::new();
-        for s in self.exact_segments()? {
-            let piece = s.flattened(tol);
-            let skip = usize::from(points.last() == piece.first());
-            points.extend(piece.into_iter().skip(skip));
-        }
-        // (Closed exactly: the last piece ends where the first starts, up to rounding.)
-        if let Some(&first) = points.first() {
-            let end = points.len() - 1;
-            points[end] = first;
-        }
-        Ok(points)
-    }
-
-    /// The pieces as the curve model's segments.
-    fn exact_segments(&self) -> Result<Vec<Segment>, curve::Error> {
-        let mut segments = Vec::new();
-        for s in &self.segments {
-            match s {
-                OffsetSegment::Line { from, to } => segments.push(Segment::line(*from, *to)?),
-                OffsetSegment::Arc {
-                    center,
-                    r,
-                    start,
-                    end,
-                } => segments.push(Segment::arc(*center, *r, *start, *end)?),
-                OffsetSegment::BSpline {
-                    degree,
-                    knots,
-                    points,
-                } => segments.push(Segment::spline(
-                    SegmentKind::BSpline,
-                    SplineCurve::clamped(*degree, points, None, Some(knots.clone()))?,
-                )?),
-            }
-        }
-        Ok(segments)
     }
 }
 
@@ -386,7 +249,7 @@ fn offsets_on(
         necks_resolved &= neck_resolved;
         let kept_whole: Vec<bool> = widest
             .iter()
-            .map(|&w| w > d + seams::TOUCHING * size)
+            .map(|&w| w > d + necks::TOUCHING * size)
             .collect();
         let assembled = loops::loops(&walks, &seams, &kept_whole);
         consistent &= assembled.consistent;
@@ -550,99 +413,4 @@ pub(crate) fn check_axis(region: &Region, axis: &MedialAxis) -> Result<(), Error
         }
     }
     Ok(())
-}
-
-/// Whether a loop has a fitted piece (the offset of a spline).
-fn has_fitted(l: &OffsetLoop) -> bool {
-    l.segments
-        .iter()
-        .any(|s| matches!(s, OffsetSegment::BSpline { .. }))
-}
-
-/// What the tool's reader makes of loops with fitted pieces.
-#[derive(Debug, PartialEq)]
-enum ReadBack {
-    /// Simple closed profiles, no two crossing.
-    Simple,
-    /// A loop crosses itself, or two loops cross.
-    Crossing,
-    /// A loop is refused for another reason.
-    Refused(curve::Error),
-}
-
-/// Reads back the loops with fitted pieces as the tool's reader would (each a profile, and
-/// all of them, where there are several, as the boundaries of regions).
-fn read_back(loops: &[OffsetLoop]) -> ReadBack {
-    if !loops.iter().any(has_fitted) {
-        return ReadBack::Simple;
-    }
-    let mut profiles = Vec::with_capacity(loops.len());
-    for l in loops {
-        match l.profile() {
-            Ok(p) => profiles.push(p),
-            Err(curve::Error::SelfCrossing { .. }) => return ReadBack::Crossing,
-            Err(bad) => return ReadBack::Refused(bad),
-        }
-    }
-    if profiles.len() < 2 {
-        return ReadBack::Simple;
-    }
-    match Region::nested(profiles) {
-        Ok(_) => ReadBack::Simple,
-        Err(curve::Error::BoundariesCross { .. }) => ReadBack::Crossing,
-        Err(bad) => ReadBack::Refused(bad),
-    }
-}
-
-/// The nodes no edge reaches.
-fn isolated_nodes(axis: &MedialAxis) -> impl Iterator<Item = &medial::Node> {
-    axis.nodes
-        .iter()
-        .filter(|n| !axis.edges.iter().any(|e| e.from == n.id || e.to == n.id))
-}
-
-/// Whether the closed profile winds round `p` (its winding number on a fine polygon of it: a
-/// node at a hole's centre is far from its boundary).
-fn encloses(profile: &Profile, p: [f64; 2]) -> bool {
-    let (a, b) = profile.domain();
-    let n = 64 * profile.segments().len();
-    let at = |k: usize| {
-        let q = profile.jet_to(a + (b - a) * (k % n) as f64 / n as f64, 0).p;
-        (q.x - p[0]).atan2(q.y - p[1])
-    };
-    let mut turned = 0.0;
-    for k in 0..n {
-        let step = at(k + 1) - at(k);
-        turned +=
-            (step + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
-    }
-    turned.abs() > std::f64::consts::PI
-}
-
-/// Per boundary, the widest radius of the axis points with a foot on it (a disk's single node
-/// for an inner axis without edges; outside, a boundary no axis point reaches, as a convex
-/// outline's, has no bound at all).
-fn widest_per_boundary(axis: &MedialAxis, boundaries: usize, outward: bool) -> Vec<f64> {
-    let mut widest = vec![f64::NEG_INFINITY; boundaries];
-    for edge in &axis.edges {
-        for (k, pair) in edge.boundary.iter().enumerate() {
-            for &b in pair {
-                if let Some(w) = widest.get_mut(b) {
-                    *w = w.max(edge.radius[k]);
-                }
-            }
-        }
-    }
-    if outward {
-        for w in &mut widest {
-            if *w == f64::NEG_INFINITY {
-                *w = f64::INFINITY;
-            }
-        }
-    } else if axis.edges.is_empty() {
-        if let (Some(node), Some(w)) = (axis.nodes.first(), widest.first_mut()) {
-            *w = node.radius;
-        }
-    }
-    widest
 }

@@ -2,7 +2,7 @@
 //! radius exceeds it), joined across the seams where the two sides of the axis meet.
 
 use crate::seams::Seam;
-use crate::walk::{Foot, Walk};
+use crate::walk::{incoming_segment, outgoing_segment, Foot, Walk};
 use std::f64::consts::TAU;
 
 /// A stretch of one boundary, walked from one foot to another (the whole boundary when
@@ -157,27 +157,5 @@ fn place(walk: &Walk<'_>, foot: Foot) -> (f64, f64) {
             let start = walk.normal_leaving(incoming).angle();
             (walk.ahead(0.0, u), 1e-9 + (start - angle).rem_euclid(TAU))
         }
-    }
-}
-
-/// The segment the walk leaves the joint at `u` by.
-pub(crate) fn outgoing_segment(walk: &Walk<'_>, u: f64) -> usize {
-    let n = walk.profile.segments().len();
-    let joint = (u.round() as usize) % n;
-    if walk.side > 0.0 {
-        joint
-    } else {
-        (joint + n - 1) % n
-    }
-}
-
-/// The segment the walk reaches the joint at `u` by.
-pub(crate) fn incoming_segment(walk: &Walk<'_>, u: f64) -> usize {
-    let n = walk.profile.segments().len();
-    let joint = (u.round() as usize) % n;
-    if walk.side > 0.0 {
-        (joint + n - 1) % n
-    } else {
-        joint
     }
 }

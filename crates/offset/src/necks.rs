@@ -14,11 +14,16 @@
 //! ends are taken to mean one extremum between them: the axis's vertices lie a chord
 //! tolerance apart, and between them its feet run along a small stretch of each side.
 
-use crate::seams::{sided_feet, TOUCHING};
-use crate::walk::Walk;
+use crate::walk::{sided_feet, Walk};
 use curve::V2;
 use medial::Edge;
 use numeric::rounding::ulps;
+
+/// An axis point keeps its boundary points at the distance only when its radius exceeds the
+/// distance by this much, relative to the region's size: where they are within it, the region
+/// left at the distance is narrower there than the axis's own accuracy (1e-9 of the size), a
+/// point where two parts of the offset touch, and it is taken as closed.
+pub(crate) const TOUCHING: f64 = 1e-9;
 
 /// Halvings of the share of a step that find its radius's extremum: to 2^-40 of the step,
 /// where the radius (1-Lipschitz) is within rounding of its value at the last point taken.

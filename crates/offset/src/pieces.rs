@@ -2,8 +2,9 @@
 //! arc of an arc, a curve within the chord tolerance of a spline's) and, at each reflex
 //! corner it passes, the arc about the corner.
 
-use crate::loops::{incoming_segment, outgoing_segment, Stretch};
+use crate::loops::Stretch;
 use crate::spline_offset::spline_offset;
+use crate::walk::{incoming_segment, outgoing_segment};
 use crate::walk::{Foot, Walk};
 use crate::OffsetSegment;
 use curve::{SegmentKind, V2};

@@ -2,9 +2,8 @@
 //! the offsets of the two sides of the axis meet, and each side's kept stretch of boundary
 //! begins or ends.
 
-use crate::loops::{incoming_segment, outgoing_segment};
-use crate::necks::{self, Between};
-use crate::walk::{Foot, Walk};
+use crate::necks::{self, Between, TOUCHING};
+use crate::walk::{incoming_segment, outgoing_segment, sided_feet, Foot, Walk};
 use curve::V2;
 use medial::{Edge, MedialAxis};
 use numeric::rounding::ulps;
@@ -25,12 +24,6 @@ const RESTARTS: [f64; 6] = [0.5, 0.25, 0.75, 0.1, 0.9, 0.02];
 /// A foot's parameter within its vertices' feet beyond the span between them, relative to
 /// the boundary's period: rounding.
 const BRACKET_ROUNDING: f64 = 1e-9;
-
-/// An axis point keeps its boundary points at the distance only when its radius exceeds the
-/// distance by this much, relative to the region's size: where they are within it, the region
-/// left at the distance is narrower there than the axis's own accuracy (1e-9 of the size), a
-/// point where two parts of the offset touch, and it is taken as closed.
-pub(crate) const TOUCHING: f64 = 1e-9;
 
 /// Where the offset at one distance meets itself across the axis.
 #[derive(Debug, Clone, Copy)]
@@ -367,25 +360,6 @@ fn seam_of(
         begins,
         refined,
     }
-}
-
-/// The feet of vertex `j` of `edge` paired by the side of `step` (along the edge) they lie
-/// on, left first: the axis lists them in no fixed order.
-pub(crate) fn sided_feet(
-    edge: &Edge,
-    j: usize,
-    step: V2,
-    walks: &[Walk<'_>],
-) -> Option<[(usize, f64); 2]> {
-    let feet = [0, 1].map(|i| (edge.boundary[j][i], edge.feet[j][i]));
-    let left = |(b, u): (usize, f64)| -> Option<f64> {
-        Some(step.cross(walks.get(b)?.point(u) - V2::from_arr(edge.xy[j])))
-    };
-    Some(if left(feet[0])? >= left(feet[1])? {
-        feet
-    } else {
-        [feet[1], feet[0]]
-    })
 }
 
 /// The foot between two vertices' feet `u0`, `u1` at `share` of the way: the fan of a reflex

@@ -3,6 +3,7 @@
 //! clockwise whatever their parameters do; the outside for outward ones).
 
 use curve::{JointKind, ParamCurve, Profile, V2};
+use medial::Edge;
 
 /// One boundary, walked with the region on its left.
 pub(crate) struct Walk<'r> {
@@ -119,4 +120,45 @@ impl<'r> Walk<'r> {
         };
         self.profile.jet_on(segment, u, 1).d1.unit().perp() * self.side
     }
+}
+
+/// The segment the walk leaves the joint at `u` by.
+pub(crate) fn outgoing_segment(walk: &Walk<'_>, u: f64) -> usize {
+    let n = walk.profile.segments().len();
+    let joint = (u.round() as usize) % n;
+    if walk.side > 0.0 {
+        joint
+    } else {
+        (joint + n - 1) % n
+    }
+}
+
+/// The segment the walk reaches the joint at `u` by.
+pub(crate) fn incoming_segment(walk: &Walk<'_>, u: f64) -> usize {
+    let n = walk.profile.segments().len();
+    let joint = (u.round() as usize) % n;
+    if walk.side > 0.0 {
+        (joint + n - 1) % n
+    } else {
+        joint
+    }
+}
+
+/// The feet of vertex `j` of `edge` paired by the side of `step` (along the edge) they lie
+/// on, left first: the axis lists them in no fixed order.
+pub(crate) fn sided_feet(
+    edge: &Edge,
+    j: usize,
+    step: V2,
+    walks: &[Walk<'_>],
+) -> Option<[(usize, f64); 2]> {
+    let feet = [0, 1].map(|i| (edge.boundary[j][i], edge.feet[j][i]));
+    let left = |(b, u): (usize, f64)| -> Option<f64> {
+        Some(step.cross(walks.get(b)?.point(u) - V2::from_arr(edge.xy[j])))
+    };
+    Some(if left(feet[0])? >= left(feet[1])? {
+        feet
+    } else {
+        [feet[1], feet[0]]
+    })
 }

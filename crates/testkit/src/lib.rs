@@ -21,7 +21,8 @@
 //! ```
 
 pub mod boundary_oracle;
-mod near;
+#[doc(hidden)]
+pub mod near;
 pub mod outlines;
 pub mod profiles;
 mod random;

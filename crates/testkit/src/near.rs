@@ -1,5 +1,5 @@
-//! Closeness of test values: the gap between two values, for [`assert_near!`] and
-//! [`prop_assert_near!`].
+//! Closeness of test values: the gap between two values, for [`assert_near!`](crate::assert_near!) and
+//! [`prop_assert_near!`](crate::prop_assert_near!).
 
 /// A value compared by its coordinates: a number, a point, a list of numbers, or a
 /// reference to one (so that `x` and `&x` compare alike).
@@ -59,9 +59,31 @@ pub fn gap(a: &(impl Near + ?Sized), b: &(impl Near + ?Sized)) -> f64 {
 }
 
 /// Whether a gap is within the tolerance, `gap <= tol` (never for a NaN gap): the test
-/// [`assert_near!`] and [`prop_assert_near!`] make.
+/// [`assert_near!`](crate::assert_near!) and [`prop_assert_near!`](crate::prop_assert_near!) make.
 pub fn within(gap: f64, tol: f64) -> bool {
     gap <= tol
+}
+
+/// The message of a failed [`assert_near!`](crate::assert_near!) (named `call`, on the
+/// expressions `exprs`), or `None` where the values are within the tolerance.
+#[doc(hidden)]
+pub fn failure(
+    call: &str,
+    exprs: [&str; 3],
+    what: std::fmt::Arguments<'_>,
+    (left, right): (
+        &(impl Near + std::fmt::Debug + ?Sized),
+        &(impl Near + std::fmt::Debug + ?Sized),
+    ),
+    tol: f64,
+) -> Option<String> {
+    let gap = gap(left, right);
+    (!within(gap, tol)).then(|| {
+        format!(
+            "{call}!({}, {}, {}) failed {what}\n  left: {left:?}\n right: {right:?}\n   gap: {gap:e} (tolerance {tol:e})",
+            exprs[0], exprs[1], exprs[2],
+        )
+    })
 }
 
 /// Asserts that two values lie within `tol` of each other ([`gap`] `<= tol`),
@@ -77,27 +99,21 @@ macro_rules! assert_near {
     ($left:expr, $right:expr, $tol:expr $(,)?) => {
         $crate::assert_near!($left, $right, $tol, "")
     };
-    ($left:expr, $right:expr, $tol:expr, $($what:tt)+) => {{
-        let (left, right, tol) = (&$left, &$right, $tol);
-        let gap = $crate::gap(left, right);
-        if !$crate::within(gap, tol) {
-            panic!(
-                "assert_near!({}, {}, {}) failed {}\n  left: {:?}\n right: {:?}\n   gap: {:e} (tolerance {:e})",
-                stringify!($left),
-                stringify!($right),
-                stringify!($tol),
-                format_args!($($what)+),
-                left,
-                right,
-                gap,
-                tol,
-            );
+    ($left:expr, $right:expr, $tol:expr, $($what:tt)+) => {
+        if let Some(message) = $crate::near::failure(
+            "assert_near",
+            [stringify!($left), stringify!($right), stringify!($tol)],
+            format_args!($($what)+),
+            (&$left, &$right),
+            $tol,
+        ) {
+            panic!("{}", message);
         }
-    }};
+    };
 }
 
-/// [`assert_near!`] inside a proptest body: a failing case is reported to proptest (and
-/// shrunk) instead of panicking.
+/// [`assert_near!`](crate::assert_near!) inside a proptest body: a failing case is reported
+/// to proptest (and shrunk) instead of panicking.
 ///
 /// ```
 /// use proptest::prelude::*;
@@ -110,23 +126,19 @@ macro_rules! prop_assert_near {
     ($left:expr, $right:expr, $tol:expr $(,)?) => {
         $crate::prop_assert_near!($left, $right, $tol, "")
     };
-    ($left:expr, $right:expr, $tol:expr, $($what:tt)+) => {{
-        let (left, right, tol) = (&$left, &$right, $tol);
-        let gap = $crate::gap(left, right);
-        if !$crate::within(gap, tol) {
-            return ::core::result::Result::Err($crate::__proptest::test_runner::TestCaseError::fail(format!(
-                "prop_assert_near!({}, {}, {}) failed {}\n  left: {:?}\n right: {:?}\n   gap: {:e} (tolerance {:e})",
-                stringify!($left),
-                stringify!($right),
-                stringify!($tol),
-                format_args!($($what)+),
-                left,
-                right,
-                gap,
-                tol,
-            )));
+    ($left:expr, $right:expr, $tol:expr, $($what:tt)+) => {
+        if let Some(message) = $crate::near::failure(
+            "prop_assert_near",
+            [stringify!($left), stringify!($right), stringify!($tol)],
+            format_args!($($what)+),
+            (&$left, &$right),
+            $tol,
+        ) {
+            return ::core::result::Result::Err(
+                $crate::__proptest::test_runner::TestCaseError::fail(message),
+            );
         }
-    }};
+    };
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@ use crate::error::{Error, Result};
 use crate::extract::{Pieces, Tracer};
 use crate::patch::Patch;
 use bspline::tensor::TensorBSpline;
-use numeric::tolerance::{ChordTol, ParamTol, ToleranceError};
+use numeric::tolerance::check_pair;
 use serde::{Deserialize, Serialize};
 
 /// The default parameter tolerance (relative to the domain) of [`ZeroSetOptions`],
@@ -59,13 +59,11 @@ impl ZeroSetOptions {
     }
 
     pub(crate) fn check(&self) -> Result<()> {
-        let bad = |field, e: ToleranceError| Error::BadOption {
+        check_pair(self.tol, self.chord_tol).map_err(|(field, e)| Error::BadOption {
             field,
             value: e.value,
             why: e.requirement,
-        };
-        ParamTol::new(self.tol).map_err(|e| bad("tol", e))?;
-        ChordTol::new(self.chord_tol).map_err(|e| bad("chord_tol", e))?;
+        })?;
         Ok(())
     }
 

@@ -1,0 +1,187 @@
+//! The one-curve commands (`inflections`, `antipodal`): a curve prepared once for them, and
+//! the route each takes by the curve's shape.
+
+use super::errors::antipodal_error;
+use super::found::Doubted;
+use super::params::{DocMap, InDocument};
+use super::{one_curve, validate_options, AntipodalFound, CommandError, InflectionsFound};
+use crate::io::{Curve, Shape};
+use curve::{ParamCurve, PlaneCurve, Profile};
+use std::sync::Arc;
+
+/// A curve made ready for the one-curve commands: a spline or an analytic shape is prepared
+/// once (its frame, symbolic forms and enclosures; [`antipodal::prepare`]), so that later
+/// calls answer warm; a profile needs no preparation, and a spline with corners (a degree-1
+/// spline, knots of full multiplicity) is taken as the profile of its pieces. A region is
+/// refused: the one-curve commands take curves. It shares the curve, so it can be kept and
+/// sent between threads.
+pub struct Prepared {
+    curve: Arc<Curve>,
+    smooth: Option<antipodal::Prepared<'static>>,
+    /// The spline taken as a profile, where it has corners.
+    cut: Option<Profile>,
+}
+
+impl Prepared {
+    /// Prepares `curve` for `command` (named in the refusal of a region).
+    pub fn new(curve: Arc<Curve>, command: &str) -> Result<Self, CommandError> {
+        one_curve(&[&curve], command)?;
+        let cut = spline_with_corners(&curve)?;
+        let smooth = match (&curve.shape, &cut) {
+            (Shape::Profile(_), _) | (_, Some(_)) => None,
+            _ => Some(antipodal::prepare_shared(Arc::new(Shared(curve.clone())))),
+        };
+        Ok(Self { curve, smooth, cut })
+    }
+
+    /// The curve prepared.
+    pub fn curve(&self) -> &Curve {
+        &self.curve
+    }
+
+    /// The inflections (and a profile's corners).
+    pub fn inflections(&self, opts: &antipodal::Options) -> Result<InflectionsFound, CommandError> {
+        inflections_of(&self.curve, self.route(), opts)
+    }
+
+    /// The antipodal pairs, inflections and families (and a profile's corners).
+    pub fn antipodal(&self, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
+        antipodal_of(&self.curve, self.route(), opts)
+    }
+
+    fn route(&self) -> Route<'_> {
+        match (&self.curve.shape, &self.cut, &self.smooth) {
+            (Shape::Profile(p), _, _) => Route::Profile(p),
+            (_, Some(p), _) => Route::Profile(p),
+            (_, None, Some(s)) => Route::Smooth(s),
+            (_, None, None) => unreachable!("a curve that is no profile is prepared"),
+        }
+    }
+}
+
+/// Which algorithms a one-curve command runs: a profile's, or a smooth curve's (prepared).
+enum Route<'a> {
+    Profile(&'a Profile),
+    Smooth(&'a antipodal::Prepared<'a>),
+}
+
+/// A spline with corners (a degree-1 spline, a knot of full multiplicity where it turns, a
+/// clamped closed spline with a corner where its ends meet) as the profile of its pieces, in
+/// its own parameter; `None` for a smooth spline and for every other kind.
+pub(super) fn spline_with_corners(c: &Curve) -> Result<Option<Profile>, CommandError> {
+    if !matches!(c.shape, Shape::Spline(_)) {
+        return Ok(None);
+    }
+    match crate::io::curve_profile(c) {
+        Some(Ok(p)) if p.segments().len() > 1 || p.corners().next().is_some() => Ok(Some(p)),
+        Some(Ok(_)) | None => Ok(None),
+        Some(Err(e)) => Err(CommandError::Input(e)),
+    }
+}
+
+/// How `curve`'s exact form's parameters map to its document's on the smooth path.
+pub(super) fn smooth_map(curve: &Curve) -> DocMap<'_> {
+    match &curve.shape {
+        Shape::Segment(s) => DocMap::Segment(s),
+        _ => DocMap::Own,
+    }
+}
+
+/// `inflections` of `curve` on `route`, in the curve's own parameter.
+fn inflections_of(
+    curve: &Curve,
+    route: Route<'_>,
+    opts: &antipodal::Options,
+) -> Result<InflectionsFound, CommandError> {
+    let found = match route {
+        Route::Profile(p) => antipodal::profile_inflections(p, opts).map(|mut f| {
+            f.in_document(&[DocMap::Profile(p)]);
+            InflectionsFound::Profile(f)
+        }),
+        Route::Smooth(prepared) => prepared.inflections(opts).map(|mut f| {
+            f.in_document(&[smooth_map(curve)]);
+            InflectionsFound::Curve(f)
+        }),
+    };
+    found
+        .map(|f| f.doubted(curve.drawing_doubt()))
+        .map_err(|e| antipodal_error(e, &[curve]))
+}
+
+/// `antipodal` of `curve` on `route`, in the curve's own parameter.
+fn antipodal_of(
+    curve: &Curve,
+    route: Route<'_>,
+    opts: &antipodal::Options,
+) -> Result<AntipodalFound, CommandError> {
+    let found = match route {
+        Route::Profile(p) => antipodal::profile_antipodal(p, opts).map(|mut f| {
+            f.in_document(&[DocMap::Profile(p)]);
+            AntipodalFound::Profile(f)
+        }),
+        Route::Smooth(prepared) => prepared.antipodal(opts).map(|mut f| {
+            f.in_document(&[smooth_map(curve)]);
+            AntipodalFound::Curve(f)
+        }),
+    };
+    found
+        .map(|f| f.doubted(curve.drawing_doubt()))
+        .map_err(|e| antipodal_error(e, &[curve]))
+}
+
+/// A curve read, shared with its prepared form: the plane curve of its shape.
+struct Shared(Arc<Curve>);
+
+impl ParamCurve for Shared {
+    fn domain(&self) -> (f64, f64) {
+        self.0.plane_curve().domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.0.plane_curve().is_closed()
+    }
+    fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
+        self.0.plane_curve().jet_to(u, order)
+    }
+    fn jet(&self, u: f64) -> curve::Jet {
+        self.0.plane_curve().jet(u)
+    }
+}
+
+impl PlaneCurve for Shared {
+    fn exact(&self) -> Option<curve::Exact<'_>> {
+        self.0.plane_curve().exact()
+    }
+}
+
+/// `inflections` of a curve read: [`Prepared::inflections`] on a freshly prepared curve.
+pub fn inflections(
+    curve: &Curve,
+    opts: &antipodal::Options,
+) -> Result<InflectionsFound, CommandError> {
+    validate_options(opts)?;
+    one_curve(&[curve], "inflections")?;
+    match (&curve.shape, spline_with_corners(curve)?) {
+        (Shape::Profile(p), _) => inflections_of(curve, Route::Profile(p), opts),
+        (_, Some(p)) => inflections_of(curve, Route::Profile(&p), opts),
+        _ => inflections_of(
+            curve,
+            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
+            opts,
+        ),
+    }
+}
+
+/// `antipodal` of a curve read: [`Prepared::antipodal`] on a freshly prepared curve.
+pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
+    validate_options(opts)?;
+    one_curve(&[curve], "antipodal")?;
+    match (&curve.shape, spline_with_corners(curve)?) {
+        (Shape::Profile(p), _) => antipodal_of(curve, Route::Profile(p), opts),
+        (_, Some(p)) => antipodal_of(curve, Route::Profile(&p), opts),
+        _ => antipodal_of(
+            curve,
+            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
+            opts,
+        ),
+    }
+}

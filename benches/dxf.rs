@@ -7,7 +7,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use curve::ParamCurve;
-use curvekit::io::{parse_drawing, read_curve_picked, DrawingFormat, Shape};
+use curvekit::io::{parse_drawing, read_curve_picked, CurveKind, DrawingFormat};
 use std::io::Write;
 use std::time::Duration;
 
@@ -63,7 +63,7 @@ fn dxf(c: &mut Criterion) {
     // The drawing is what it should be: four closed profiles of 250 segments.
     for k in 0..4 {
         match read_curve_picked(&path, Some(k)).unwrap().shape {
-            Shape::Profile(p) => assert!(p.is_closed() && p.segments().len() == 250),
+            CurveKind::Profile(p) => assert!(p.is_closed() && p.segments().len() == 250),
             _ => unreachable!(),
         }
     }

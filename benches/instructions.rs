@@ -12,7 +12,7 @@
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use antipodal::{prepare, Options, PlaneCurve};
-use curvekit::io::{parse_region, Shape};
+use curvekit::io::{parse_region, CurveKind};
 use curvekit::medial::{medial_axis, MedialOptions};
 use std::hint::black_box;
 use std::time::Instant;
@@ -36,7 +36,7 @@ fn measured(curve: &dyn PlaneCurve, warm: bool, n: usize) {
 /// The region of a file's bytes, as the tool reads it.
 fn region_of(file: &str, bytes: &[u8]) -> curve::Region {
     match parse_region(file, None, bytes, None).unwrap().shape {
-        Shape::Region(r) => *r,
+        CurveKind::Region(r) => *r,
         _ => panic!("{file}: not one region"),
     }
 }

@@ -8,7 +8,7 @@
 
 use antipodal::{antipodal, profile_antipodal, Options, Profile, SplineCurve};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use curvekit::io::{read_curve_picked, Shape};
+use curvekit::io::{read_curve_picked, CurveKind};
 use std::path::Path;
 use std::time::Duration;
 
@@ -22,7 +22,7 @@ fn fixture(name: &str) -> Profile {
         .join(name);
     let pick = (!name.ends_with(".json")).then_some(0);
     match read_curve_picked(&path, pick).unwrap().shape {
-        Shape::Profile(p) => *p,
+        CurveKind::Profile(p) => *p,
         _ => unreachable!(),
     }
 }

@@ -209,7 +209,7 @@ fn regions_are_read_and_refused_by_curve_commands() {
     }
     let r = curvekit::io::read_curve(std::path::Path::new(&path)).unwrap();
     match r.shape {
-        curvekit::io::Shape::Region(region) => {
+        curvekit::io::CurveKind::Region(region) => {
             assert_eq!(region.holes().len(), 1);
             assert_eq!(region.outer().segments().len(), 8);
         }

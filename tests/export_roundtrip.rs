@@ -271,7 +271,7 @@ fn medial_axes_read_back_as_written() {
         for (k, edge) in axis.edges.iter().enumerate() {
             let back =
                 parse_drawing("back.svg", DrawingFormat::Svg, svg.as_bytes(), Some(k)).unwrap();
-            let curvekit::io::Shape::Profile(p) = back.shape else {
+            let curvekit::io::CurveKind::Profile(p) = back.shape else {
                 panic!("edge {k} read back as {:?}", back.shape);
             };
             let (u0, u1) = p.domain();

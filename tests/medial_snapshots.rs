@@ -77,7 +77,7 @@ const CHECKED_SHAPES: [&str; 7] = [
 fn shipped_region(name: &str) -> curvekit::curve::Region {
     let path = std::path::PathBuf::from(fixture(name));
     match curvekit::io::read_region(&path, None).unwrap().shape {
-        curvekit::io::Shape::Region(region) => *region,
+        curvekit::io::CurveKind::Region(region) => *region,
         _ => panic!("{name}: no region"),
     }
 }

@@ -15,7 +15,7 @@ fn antipodal_pairs_of_every_closed_profile() {
         let name = path.file_stem().unwrap().to_string_lossy().into_owned();
         let curve = curvekit::io::read_curve(&path).unwrap();
         let closed = match &curve.shape {
-            curvekit::io::Shape::Profile(p) => p.is_closed(),
+            curvekit::io::CurveKind::Profile(p) => p.is_closed(),
             _ => continue,
         };
         // (An open chain is refused by `antipodal`, tested in cli_errors.)
@@ -46,7 +46,7 @@ fn antipodal_pairs_of_every_drawing() {
             let Ok(curve) = curvekit::io::read_curve_picked(&path, Some(pick)) else {
                 break;
             };
-            let curvekit::io::Shape::Profile(p) = &curve.shape else {
+            let curvekit::io::CurveKind::Profile(p) = &curve.shape else {
                 break;
             };
             if !p.is_closed() {

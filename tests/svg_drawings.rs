@@ -12,7 +12,7 @@ mod graph;
 
 use common::curvekit_json;
 use curvekit::curve::{ParamCurve, Profile, Region, SegmentKind, V2};
-use curvekit::io::{parse_region, read_curve_picked, DrawingFormat, Shape};
+use curvekit::io::{parse_region, read_curve_picked, CurveKind, DrawingFormat};
 use proptest::prelude::*;
 use serde_json::Value;
 use std::io::Write;
@@ -39,8 +39,8 @@ fn parts_of(body: &str) -> Vec<Region> {
     )
     .unwrap_or_else(|e| panic!("{body}: {e}"));
     match c.shape {
-        Shape::Region(r) => vec![*r],
-        Shape::Regions(parts) => parts,
+        CurveKind::Region(r) => vec![*r],
+        CurveKind::Regions(parts) => parts,
         other => panic!("not regions: {other:?}"),
     }
 }
@@ -48,7 +48,7 @@ fn parts_of(body: &str) -> Vec<Region> {
 fn profile_of(body: &str) -> Profile {
     let f = file_of(&svg(body));
     match read_curve_picked(f.path(), None).unwrap().shape {
-        Shape::Profile(p) => *p,
+        CurveKind::Profile(p) => *p,
         other => panic!("not a profile: {other:?}"),
     }
 }

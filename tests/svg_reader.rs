@@ -7,7 +7,7 @@ mod common;
 
 use common::{curvekit, fixture};
 use curvekit::curve::{ParamCurve, Profile, Segment, SegmentKind, V2};
-use curvekit::io::{read_curve_picked, Shape};
+use curvekit::io::{read_curve_picked, CurveKind};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use std::io::Write;
@@ -22,7 +22,7 @@ fn write_svg(body: &str) -> tempfile::NamedTempFile {
 fn profile_of(body: &str, pick: Option<usize>) -> Profile {
     let f = write_svg(body);
     match read_curve_picked(f.path(), pick).unwrap().shape {
-        Shape::Profile(p) => *p,
+        CurveKind::Profile(p) => *p,
         other => panic!("not a profile: {other:?}"),
     }
 }
@@ -116,7 +116,7 @@ fn the_glyph_pocket_and_gear_fixtures_read() {
             .unwrap()
             .shape
         {
-            Shape::Profile(p) => *p,
+            CurveKind::Profile(p) => *p,
             _ => unreachable!(),
         };
     // The D: outer contour with two corners, its counter with two.

@@ -2,7 +2,7 @@
 //! the crates' tests share and which cannot reach the tool).
 
 use curvekit::curve::Region;
-use curvekit::io::{parse_region, Shape};
+use curvekit::io::{parse_region, CurveKind};
 
 /// The region a benchmark's text holds.
 pub(crate) fn region_of(text: &str) -> Region {
@@ -10,7 +10,7 @@ pub(crate) fn region_of(text: &str) -> Region {
         .expect("a benchmark's region reads")
         .shape
     {
-        Shape::Region(r) => *r,
+        CurveKind::Region(r) => *r,
         _ => unreachable!("a benchmark's text is a region"),
     }
 }

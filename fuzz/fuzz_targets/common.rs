@@ -215,7 +215,7 @@ pub fn read_region(doc: &Value) -> Option<curvekit::curve::Region> {
     let curve =
         curvekit::io::parse_region("fuzz.json", None, doc.to_string().as_bytes(), None).ok()?;
     match curve.shape {
-        curvekit::io::Shape::Region(r) => Some(*r),
+        curvekit::io::CurveKind::Region(r) => Some(*r),
         _ => None,
     }
 }
@@ -261,9 +261,11 @@ impl ArbRegion {
             } else {
                 let mid = (
                     ((from.0 as i16 + to.0 as i16) / 2
-                        - (to.1 as i16 - from.1 as i16) * s.bend as i16 / 64) as f64,
+                        - (to.1 as i16 - from.1 as i16) * s.bend as i16 / 64)
+                        as f64,
                     ((from.1 as i16 + to.1 as i16) / 2
-                        + (to.0 as i16 - from.0 as i16) * s.bend as i16 / 64) as f64,
+                        + (to.0 as i16 - from.0 as i16) * s.bend as i16 / 64)
+                        as f64,
                 );
                 let c = [(mid.0 + far) * k, (mid.1 + far) * k];
                 segments.push(json!({"kind": "bezier", "points": [at(from), c, at(to)]}));

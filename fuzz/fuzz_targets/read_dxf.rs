@@ -3,7 +3,7 @@
 //! segments.
 #![no_main]
 
-use curvekit::io::{parse_drawing, parse_region, DrawingFormat, Shape};
+use curvekit::io::{parse_drawing, parse_region, CurveKind, DrawingFormat};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
@@ -20,7 +20,7 @@ fuzz_target!(|data: &[u8]| {
     for p in curve.polyline(16) {
         assert!(p[0].is_finite() && p[1].is_finite(), "point {p:?}");
     }
-    let Shape::Profile(profile) = &curve.shape else {
+    let CurveKind::Profile(profile) = &curve.shape else {
         panic!("a drawing gives a profile: {:?}", curve.shape);
     };
     assert!(!profile.segments().is_empty());

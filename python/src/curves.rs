@@ -2,8 +2,8 @@
 //! drawing, kept with its source so that it pickles as that source and is read again.
 
 use crate::detached;
-use curvekit::commands::{CommandError, CurveSummary, Prepared};
-use curvekit::io::{self, Curve, DrawingFormat, Shape};
+use curvekit::commands::{CommandError, CurveSummary, PreparedCurve};
+use curvekit::io::{self, Curve, CurveKind, DrawingFormat};
 use numpy::{PyArray2, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -156,7 +156,7 @@ impl PyCurve {
 
     /// The region the curve is, or encloses (a closed curve or profile: read once as one).
     pub(crate) fn region(&self) -> Result<&Curve, CommandError> {
-        if let Shape::Region(_) = self.curve.shape {
+        if let CurveKind::Region(_) = self.curve.shape {
             return Ok(&self.curve);
         }
         self.region
@@ -213,7 +213,7 @@ impl PyCurve {
         py: Python<'py>,
         u: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        if let Shape::Region(_) = self.curve.shape {
+        if let CurveKind::Region(_) = self.curve.shape {
             return Err(PyValueError::new_err(
                 "evaluate: a region has no single parameter; evaluate its boundaries",
             ));
@@ -308,7 +308,7 @@ impl PyCurve {
             io::regions_geometry(&parts, GEO_TOLERANCE * size)
         } else {
             let profile = match &self.curve.shape {
-                Shape::Profile(p) => (**p).clone(),
+                CurveKind::Profile(p) => (**p).clone(),
                 _ => io::curve_profile(&self.curve)
                     .ok_or_else(|| PyValueError::new_err("no profile to draw"))?
                     .map_err(|e| crate::to_py_err(e.into()))?,
@@ -360,12 +360,12 @@ impl PyCurve {
 #[pyclass(name = "PreparedCurve", module = "curvekit", frozen)]
 pub(crate) struct PyPrepared {
     curve: Py<PyCurve>,
-    prepared: Prepared,
+    prepared: PreparedCurve,
 }
 
 impl PyPrepared {
     /// The preparation.
-    pub(crate) fn prepared(&self) -> &Prepared {
+    pub(crate) fn prepared(&self) -> &PreparedCurve {
         &self.prepared
     }
 }
@@ -398,7 +398,7 @@ impl PyPrepared {
 #[pyfunction]
 fn prepare(py: Python<'_>, curve: Bound<'_, PyCurve>) -> PyResult<PyPrepared> {
     let shared = curve.get().shared();
-    let prepared = detached(py, || Prepared::new(shared, "antipodal"))?;
+    let prepared = detached(py, || PreparedCurve::new(shared, "antipodal"))?;
     Ok(PyPrepared {
         curve: curve.unbind(),
         prepared,

@@ -126,7 +126,7 @@ impl OneCurve<'_> {
     fn run<T: Send>(
         &self,
         py: Python<'_>,
-        warm: impl FnOnce(&commands::Prepared) -> Result<T, CommandError> + Send,
+        warm: impl FnOnce(&commands::PreparedCurve) -> Result<T, CommandError> + Send,
         cold: impl FnOnce(&curvekit::io::Curve) -> Result<T, CommandError> + Send,
     ) -> PyResult<(T, commands::CurveSummary)> {
         match self {

@@ -89,7 +89,7 @@ impl Item<'_> {
     /// result with the curve's summary.
     fn run<T>(
         &self,
-        warm: impl Fn(&commands::Prepared) -> Result<T, CommandError>,
+        warm: impl Fn(&commands::PreparedCurve) -> Result<T, CommandError>,
         cold: impl Fn(&curvekit::io::Curve) -> Result<T, CommandError>,
     ) -> Result<(T, CurveSummary), CommandError> {
         Ok(match self {

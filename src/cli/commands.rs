@@ -4,9 +4,10 @@
 use super::report::{self, draw_curve};
 use super::{print_out, timing, write_file, BisectorArgs, Common, Failure};
 use curvekit::commands::{
-    self, json_document, AntipodalFound, BisectorFound, InflectionsFound, Prepared, TangentsFound,
+    self, json_document, AntipodalFound, BisectorFound, InflectionsFound, PreparedCurve,
+    TangentsFound,
 };
-use curvekit::io::{Curve, Shape};
+use curvekit::io::{Curve, CurveKind};
 use curvekit::svg::{Figure, Mark, DOT};
 use std::path::Path;
 use std::sync::Arc;
@@ -15,7 +16,7 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
     common.validate()?;
     let curve = Arc::new(common.read_curve(path)?);
     let opts = common.options();
-    let prepared = Prepared::new(curve.clone(), "inflections")?;
+    let prepared = PreparedCurve::new(curve.clone(), "inflections")?;
     let found = prepared.inflections(&opts)?;
     let stats = common.time.then(|| {
         timing::measure_both(
@@ -42,7 +43,7 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
     common.validate()?;
     let curve = Arc::new(common.read_curve(path)?);
     let opts = common.options();
-    let prepared = Prepared::new(curve.clone(), "antipodal")?;
+    let prepared = PreparedCurve::new(curve.clone(), "antipodal")?;
     let found = prepared.antipodal(&opts)?;
     let stats = common.time.then(|| {
         timing::measure_both(
@@ -137,7 +138,7 @@ pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> Str
     inflections.iter().for_each(|i| fig.dot(i.p));
     corners.iter().for_each(|c| fig.corner(c.p));
     let mut title = format!("{} — inflections: {}", curve.file, inflections.len());
-    if let Shape::Profile(_) = curve.shape {
+    if let CurveKind::Profile(_) = curve.shape {
         title.push_str(&format!(", {} corners", corners.len()));
     }
     if !inflections.is_empty() {
@@ -186,7 +187,7 @@ pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String 
         draw_curve(&mut fig, c);
     }
     for c in both {
-        if let Shape::Profile(p) = &c.shape {
+        if let CurveKind::Profile(p) = &c.shape {
             p.corners()
                 .for_each(|j| fig.corner(curvekit::curve::ParamCurve::jet(&**p, j.u).p.arr()));
         }

@@ -4,7 +4,7 @@
 use super::medial::axis_figure;
 use super::offset::figure as offset_figure;
 use super::{write_file, Common, Failure};
-use curvekit::io::{parse_region, Curve, DrawingFormat, Shape};
+use curvekit::io::{parse_region, Curve, CurveKind, DrawingFormat};
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use curvekit::offset::{offsets, OffsetOptions};
 use serde_json::{json, Value};
@@ -68,7 +68,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failur
                 ..MedialOptions::default()
             };
             let result = match &curve.shape {
-                Shape::Region(r) => medial_axis(r, &opts).map_err(|e| e.to_string()),
+                CurveKind::Region(r) => medial_axis(r, &opts).map_err(|e| e.to_string()),
                 _ => Err("not a region".to_string()),
             };
             let svg = out.join(format!("{name}.svg"));
@@ -77,7 +77,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failur
             }
             let pocketing_svg = out.join(format!("{}.svg", name.replace("medial-", "pocketing-")));
             let pocketing = match (&result, &curve.shape) {
-                (Ok(axis), Shape::Region(r)) => {
+                (Ok(axis), CurveKind::Region(r)) => {
                     let widest = axis.nodes.iter().map(|n| n.radius).fold(0.0, f64::max);
                     let step = widest / PASSES;
                     let distances: Vec<f64> =

@@ -6,7 +6,7 @@ use super::report::profile_antipodal_figure;
 use super::{write_file, Common, Failure};
 use antipodal::ProfileAntipodal;
 use curvekit::commands::CurveSummary;
-use curvekit::io::{parse_curve, parse_drawing, Curve, DrawingFormat, Shape};
+use curvekit::io::{parse_curve, parse_drawing, Curve, CurveKind, DrawingFormat};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -78,7 +78,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<ProfileRow>, Failu
                 Some(f) => parse_drawing(&file, f, text.as_bytes(), Some(0))?,
             };
             let result = match &curve.shape {
-                Shape::Profile(p) => {
+                CurveKind::Profile(p) => {
                     antipodal::profile_antipodal(p, &common.options()).map_err(|e| e.to_string())
                 }
                 _ => Err("not a profile".to_string()),
@@ -120,7 +120,7 @@ pub(super) fn table(rows: &[ProfileRow]) -> String {
     );
     for r in rows {
         let segments = match &r.curve.shape {
-            Shape::Profile(p) => p.segments().len(),
+            CurveKind::Profile(p) => p.segments().len(),
             _ => 0,
         };
         match &r.result {

@@ -12,7 +12,7 @@ pub(crate) use texts::{
 };
 
 use super::timing::Stats;
-use curvekit::io::{Curve, Shape};
+use curvekit::io::{Curve, CurveKind};
 use curvekit::svg::Figure;
 use std::fmt::Write as _;
 
@@ -23,10 +23,10 @@ const REGION_FLATNESS: f64 = 1e-4;
 /// The curve as a dense polyline in a figure.
 pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
     let n = match &curve.shape {
-        Shape::Spline(s) => (24 * s.n_points).clamp(600, 20_000),
-        Shape::Analytic(_) | Shape::Segment(_) => 1200,
-        Shape::Profile(p) => (200 * p.segments().len()).clamp(600, 20_000),
-        Shape::Region(_) | Shape::Regions(_) => {
+        CurveKind::Spline(s) => (24 * s.n_points).clamp(600, 20_000),
+        CurveKind::Analytic(_) | CurveKind::Segment(_) => 1200,
+        CurveKind::Profile(p) => (200 * p.segments().len()).clamp(600, 20_000),
+        CurveKind::Region(_) | CurveKind::Regions(_) => {
             // (Within 1e-4 of the size, in the neutral colour: a region is the ground its
             // results are drawn on.)
             let parts = curve.parts();
@@ -46,7 +46,7 @@ pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
 pub(crate) fn describe(curve: &Curve) -> String {
     let (a, b) = curve.domain();
     let shape = match &curve.shape {
-        Shape::Spline(s) => {
+        CurveKind::Spline(s) => {
             let mut d = format!(
                 "{}, degree {}, {} points",
                 curve.kind(),
@@ -61,14 +61,14 @@ pub(crate) fn describe(curve: &Curve) -> String {
             }
             d
         }
-        Shape::Analytic(_) | Shape::Segment(_) => curve.kind().to_string(),
-        Shape::Profile(p) => format!(
+        CurveKind::Analytic(_) | CurveKind::Segment(_) => curve.kind().to_string(),
+        CurveKind::Profile(p) => format!(
             "profile, {} segments, {} corners",
             p.segments().len(),
             p.corners().count()
         ),
-        Shape::Region(r) => format!("region, {} holes", r.holes().len()),
-        Shape::Regions(parts) => format!(
+        CurveKind::Region(r) => format!("region, {} holes", r.holes().len()),
+        CurveKind::Regions(parts) => format!(
             "{} parts, {} holes",
             parts.len(),
             parts.iter().map(|r| r.holes().len()).sum::<usize>()

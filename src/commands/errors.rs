@@ -1,6 +1,6 @@
 //! Why a command failed: the library's errors as the tool reports them.
 
-use crate::io::{Curve, CurveFileError, Problem, Shape};
+use crate::io::{Curve, CurveFileError, CurveKind, Problem};
 use thiserror::Error;
 
 /// Why a command failed, and so the tool's exit status and the Python exception.
@@ -61,10 +61,10 @@ pub(super) fn antipodal_error(e: antipodal::Error, curves: &[&Curve]) -> Command
             Some(culprit) => CommandError::Input(CurveFileError {
                 file: culprit.file.clone(),
                 field: match culprit.shape {
-                    Shape::Spline(_) => "points",
-                    Shape::Analytic(_) | Shape::Segment(_) => "kind",
-                    Shape::Profile(_) => "segments",
-                    Shape::Region(_) | Shape::Regions(_) => "outer",
+                    CurveKind::Spline(_) => "points",
+                    CurveKind::Analytic(_) | CurveKind::Segment(_) => "kind",
+                    CurveKind::Profile(_) => "segments",
+                    CurveKind::Region(_) | CurveKind::Regions(_) => "outer",
                 }
                 .into(),
                 problem: Problem::Geometry(e.to_string()),

@@ -5,14 +5,14 @@
 //! ([`json_document`]).
 //!
 //! ```
-//! use curvekit::commands::{self, Prepared};
+//! use curvekit::commands::{self, PreparedCurve};
 //! use curvekit::io::parse_curve;
 //! use std::sync::Arc;
 //!
 //! let text = r#"{"kind":"bspline","degree":3,"periodic":true,
 //!                "points":[[0,0],[2,-1],[4,0],[4,2],[2,1.2],[0,2]]}"#;
 //! let curve = Arc::new(parse_curve("cubic.json", text).unwrap());
-//! let prepared = Prepared::new(curve.clone(), "antipodal").unwrap();
+//! let prepared = PreparedCurve::new(curve.clone(), "antipodal").unwrap();
 //! let found = prepared.antipodal(&antipodal::Options::default()).unwrap();
 //! let doc = commands::json_document(&found, &[&curve], None);
 //! assert!(doc.starts_with("{\"certified\":true"));
@@ -31,14 +31,14 @@ pub use documents::{json_document, json_document_of, CurveSummary, DrawingSummar
 pub use errors::CommandError;
 use errors::{antipodal_error, refuse, zeroset_error};
 pub use found::{AntipodalFound, BisectorFound, InflectionsFound, TangentsFound};
-pub use prepared::{antipodal, inflections, Prepared};
+pub use prepared::{antipodal, inflections, PreparedCurve};
 pub use regions::{
     medial, offset, size_of, validate_distances, validate_offset, validate_vcarve_options, vcarve,
     Distances, MAX_OFFSETS,
 };
 pub use two_curves::{bisector, tangents};
 
-use crate::io::{Curve, Shape};
+use crate::io::{Curve, CurveKind};
 use curve::Profile;
 
 /// The one-curve and two-curve commands' options checked on their own (the tool checks
@@ -62,14 +62,14 @@ pub fn validate_medial_options(opts: &medial::MedialOptions) -> Result<(), Comma
 fn one_curve(curves: &[&Curve], command: &str) -> Result<(), CommandError> {
     for c in curves {
         match &c.shape {
-            Shape::Region(_) => {
+            CurveKind::Region(_) => {
                 return Err(refuse(
                     c,
                     "kind",
                     &format!("{command} takes a curve or a profile, not a region"),
                 ))
             }
-            Shape::Regions(parts) => {
+            CurveKind::Regions(parts) => {
                 return Err(refuse(
                     c,
                     "kind",
@@ -91,8 +91,8 @@ fn one_curve(curves: &[&Curve], command: &str) -> Result<(), CommandError> {
 /// (a line, an arc, a spline, an analytic shape's exact form; cut at its corners).
 pub fn as_profile(c: &Curve, command: &str) -> Result<Profile, CommandError> {
     match &c.shape {
-        Shape::Profile(p) => Ok(p.as_ref().clone()),
-        Shape::Region(_) | Shape::Regions(_) => Err(refuse(
+        CurveKind::Profile(p) => Ok(p.as_ref().clone()),
+        CurveKind::Region(_) | CurveKind::Regions(_) => Err(refuse(
             c,
             "kind",
             &format!("{command} takes a curve or a profile, not a region"),

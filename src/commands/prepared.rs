@@ -5,7 +5,7 @@ use super::errors::antipodal_error;
 use super::found::Doubted;
 use super::params::{DocMap, InDocument};
 use super::{one_curve, validate_options, AntipodalFound, CommandError, InflectionsFound};
-use crate::io::{Curve, Shape};
+use crate::io::{Curve, CurveKind};
 use curve::{ParamCurve, PlaneCurve, Profile};
 use std::sync::Arc;
 
@@ -15,20 +15,20 @@ use std::sync::Arc;
 /// spline, knots of full multiplicity) is taken as the profile of its pieces. A region is
 /// refused: the one-curve commands take curves. It shares the curve, so it can be kept and
 /// sent between threads.
-pub struct Prepared {
+pub struct PreparedCurve {
     curve: Arc<Curve>,
     smooth: Option<antipodal::Prepared<'static>>,
     /// The spline taken as a profile, where it has corners.
     cut: Option<Profile>,
 }
 
-impl Prepared {
+impl PreparedCurve {
     /// Prepares `curve` for `command` (named in the refusal of a region).
     pub fn new(curve: Arc<Curve>, command: &str) -> Result<Self, CommandError> {
         one_curve(&[&curve], command)?;
         let cut = spline_with_corners(&curve)?;
         let smooth = match (&curve.shape, &cut) {
-            (Shape::Profile(_), _) | (_, Some(_)) => None,
+            (CurveKind::Profile(_), _) | (_, Some(_)) => None,
             _ => Some(antipodal::prepare_shared(Arc::new(Shared(curve.clone())))),
         };
         Ok(Self { curve, smooth, cut })
@@ -51,7 +51,7 @@ impl Prepared {
 
     fn route(&self) -> Route<'_> {
         match (&self.curve.shape, &self.cut, &self.smooth) {
-            (Shape::Profile(p), _, _) => Route::Profile(p),
+            (CurveKind::Profile(p), _, _) => Route::Profile(p),
             (_, Some(p), _) => Route::Profile(p),
             (_, None, Some(s)) => Route::Smooth(s),
             (_, None, None) => unreachable!("a curve that is no profile is prepared"),
@@ -69,7 +69,7 @@ enum Route<'a> {
 /// clamped closed spline with a corner where its ends meet) as the profile of its pieces, in
 /// its own parameter; `None` for a smooth spline and for every other kind.
 pub(super) fn spline_with_corners(c: &Curve) -> Result<Option<Profile>, CommandError> {
-    if !matches!(c.shape, Shape::Spline(_)) {
+    if !matches!(c.shape, CurveKind::Spline(_)) {
         return Ok(None);
     }
     match crate::io::curve_profile(c) {
@@ -82,7 +82,7 @@ pub(super) fn spline_with_corners(c: &Curve) -> Result<Option<Profile>, CommandE
 /// How `curve`'s exact form's parameters map to its document's on the smooth path.
 pub(super) fn smooth_map(curve: &Curve) -> DocMap<'_> {
     match &curve.shape {
-        Shape::Segment(s) => DocMap::Segment(s),
+        CurveKind::Segment(s) => DocMap::Segment(s),
         _ => DocMap::Own,
     }
 }
@@ -153,7 +153,7 @@ impl PlaneCurve for Shared {
     }
 }
 
-/// `inflections` of a curve read: [`Prepared::inflections`] on a freshly prepared curve.
+/// `inflections` of a curve read: [`PreparedCurve::inflections`] on a freshly prepared curve.
 pub fn inflections(
     curve: &Curve,
     opts: &antipodal::Options,
@@ -161,7 +161,7 @@ pub fn inflections(
     validate_options(opts)?;
     one_curve(&[curve], "inflections")?;
     match (&curve.shape, spline_with_corners(curve)?) {
-        (Shape::Profile(p), _) => inflections_of(curve, Route::Profile(p), opts),
+        (CurveKind::Profile(p), _) => inflections_of(curve, Route::Profile(p), opts),
         (_, Some(p)) => inflections_of(curve, Route::Profile(&p), opts),
         _ => inflections_of(
             curve,
@@ -171,12 +171,12 @@ pub fn inflections(
     }
 }
 
-/// `antipodal` of a curve read: [`Prepared::antipodal`] on a freshly prepared curve.
+/// `antipodal` of a curve read: [`PreparedCurve::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
     validate_options(opts)?;
     one_curve(&[curve], "antipodal")?;
     match (&curve.shape, spline_with_corners(curve)?) {
-        (Shape::Profile(p), _) => antipodal_of(curve, Route::Profile(p), opts),
+        (CurveKind::Profile(p), _) => antipodal_of(curve, Route::Profile(p), opts),
         (_, Some(p)) => antipodal_of(curve, Route::Profile(&p), opts),
         _ => antipodal_of(
             curve,

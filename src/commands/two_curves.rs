@@ -9,7 +9,7 @@ use super::{
     as_profile, one_curve, validate_bisector_options, validate_options, BisectorFound,
     CommandError, TangentsFound,
 };
-use crate::io::{Curve, Shape};
+use crate::io::{Curve, CurveKind};
 
 /// The lines tangent to two curves; where one is a profile, the other is taken as a
 /// one-segment profile (a line, an arc, an open or clamped spline).
@@ -44,7 +44,7 @@ pub fn tangents(
 /// with corners (the others are then taken as profiles of one segment).
 fn needs_profiles(curves: &[&Curve]) -> Result<bool, CommandError> {
     for c in curves {
-        if matches!(c.shape, Shape::Profile(_)) || spline_with_corners(c)?.is_some() {
+        if matches!(c.shape, CurveKind::Profile(_)) || spline_with_corners(c)?.is_some() {
             return Ok(true);
         }
     }
@@ -63,7 +63,9 @@ pub fn bisector(
     one_curve(&curves, "bisector")?;
     // (An analytic shape has no spline of its own: it is taken as the profile of its exact
     // form, in its angle.)
-    let analytic = curves.iter().any(|c| matches!(c.shape, Shape::Analytic(_)));
+    let analytic = curves
+        .iter()
+        .any(|c| matches!(c.shape, CurveKind::Analytic(_)));
     let found = if analytic || needs_profiles(&curves)? {
         let profiles = curves
             .iter()

@@ -1,16 +1,16 @@
-//! A curve file's JSON document checked and its kind's fields read into a [`Shape`].
+//! A curve file's JSON document checked and its kind's fields read into a [`CurveKind`].
 
 use super::fields::{out_of_range, type_name, wrong_type, FieldError, Fields};
-use super::{duplicates, profile, spline, Curve, CurveFileError, Problem, Shape, MAX_LOBES};
+use super::{duplicates, profile, spline, Curve, CurveFileError, CurveKind, Problem, MAX_LOBES};
 use curve::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape as Analytic};
 use serde_json::{Map, Value};
 
 /// Validates the text of a curve file; `file` names it in errors.
 ///
 /// ```
-/// use curvekit::io::{parse_curve, Shape};
+/// use curvekit::io::{parse_curve, CurveKind};
 /// let c = parse_curve("s.json", r#"{"kind":"bezier","points":[[0,0],[1,2],[2,-2],[3,0]]}"#).unwrap();
-/// assert!(matches!(c.shape, Shape::Spline(_)) && !c.is_closed());
+/// assert!(matches!(c.shape, CurveKind::Spline(_)) && !c.is_closed());
 ///
 /// let e = parse_curve("c.json", r#"{"kind":"circle","r":1,"radius":2}"#).unwrap_err();
 /// assert_eq!(e.field, "radius");
@@ -43,7 +43,7 @@ pub fn parse_curve(file: &str, text: &str) -> Result<Curve, CurveFileError> {
     Ok(Curve::new(file, shape))
 }
 
-pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError> {
+pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<CurveKind, FieldError> {
     let kind = match map.get("kind") {
         None => return Err(("kind".into(), Problem::Missing)),
         Some(Value::String(s)) => s.as_str(),
@@ -69,13 +69,13 @@ pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError>
     let f = Fields(map);
     let analytic = match kind {
         "bezier" | "bspline" => {
-            return spline::parse_spline(kind, &f).map(|s| Shape::Spline(Box::new(s)))
+            return spline::parse_spline(kind, &f).map(|s| CurveKind::Spline(Box::new(s)))
         }
         "line" | "arc" => {
-            return profile::parse_segment_kind(kind, &f).map(|s| Shape::Segment(Box::new(s)))
+            return profile::parse_segment_kind(kind, &f).map(|s| CurveKind::Segment(Box::new(s)))
         }
-        "profile" => return profile::parse_profile(&f).map(|p| Shape::Profile(Box::new(p))),
-        "region" => return profile::parse_region(&f).map(|r| Shape::Region(Box::new(r))),
+        "profile" => return profile::parse_profile(&f).map(|p| CurveKind::Profile(Box::new(p))),
+        "region" => return profile::parse_region(&f).map(|r| CurveKind::Region(Box::new(r))),
         "regions" => return profile::parse_regions(&f),
         "circle" => {
             let center = f.opt_point("center")?.unwrap_or([0.0, 0.0]);
@@ -116,7 +116,7 @@ pub(super) fn parse_shape(map: &Map<String, Value>) -> Result<Shape, FieldError>
             Analytic::Convexities(shape("p", Convexities::new(p, eps, m))?)
         }
     };
-    Ok(Shape::Analytic(analytic))
+    Ok(CurveKind::Analytic(analytic))
 }
 
 /// The first field of `map` besides `kind` that `kind` does not have, as an error naming it.

@@ -18,7 +18,7 @@ pub enum SplineKind {
 
 /// A validated B-spline, NURBS or Bézier curve.
 #[derive(Debug, Clone, PartialEq)]
-pub struct SplineCurve {
+pub struct SplineDocument {
     /// The curve as the algorithms take it.
     pub plane: curve::SplineCurve,
     /// Its rational form (polynomial curves have unit weights).
@@ -37,9 +37,9 @@ pub struct SplineCurve {
 
 /// What a curve file describes.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Shape {
+pub enum CurveKind {
     /// `bezier` or `bspline`.
-    Spline(Box<SplineCurve>),
+    Spline(Box<SplineDocument>),
     /// One of the analytic kinds (all closed).
     Analytic(Analytic),
     /// `line` or `arc`: one segment of the kinds profiles are made of.
@@ -49,7 +49,7 @@ pub enum Shape {
     /// `region`: an outer closed boundary and holes.
     Region(Box<curve::Region>),
     /// `regions`, or a drawing of several parts: disjoint regions, each with its holes (two or
-    /// more; one part is a [`Shape::Region`]).
+    /// more; one part is a [`CurveKind::Region`]).
     Regions(Vec<curve::Region>),
 }
 
@@ -59,7 +59,7 @@ pub struct Curve {
     /// File name (for messages and reports).
     pub file: String,
     /// The curve.
-    pub shape: Shape,
+    pub shape: CurveKind,
     /// What a drawing said besides its geometry (`None` for a curve file).
     pub drawing: Option<DrawingInfo>,
 }
@@ -95,7 +95,7 @@ impl DrawingInfo {
 
 impl Curve {
     /// A curve read from a curve file (no drawing information).
-    pub fn new(file: impl Into<String>, shape: Shape) -> Self {
+    pub fn new(file: impl Into<String>, shape: CurveKind) -> Self {
         Self {
             file: file.into(),
             shape,
@@ -118,8 +118,8 @@ impl Curve {
     /// empty for a curve.
     pub fn parts(&self) -> Vec<&curve::Region> {
         match &self.shape {
-            Shape::Region(r) => vec![r.as_ref()],
-            Shape::Regions(parts) => parts.iter().collect(),
+            CurveKind::Region(r) => vec![r.as_ref()],
+            CurveKind::Regions(parts) => parts.iter().collect(),
             _ => Vec::new(),
         }
     }
@@ -129,50 +129,50 @@ impl Curve {
     /// The `kind` of the file.
     pub fn kind(&self) -> &'static str {
         match &self.shape {
-            Shape::Spline(s) if s.kind == SplineKind::Bezier => "bezier",
-            Shape::Spline(_) => "bspline",
-            Shape::Analytic(a) => a.kind(),
-            Shape::Segment(s) => s.kind().name(),
-            Shape::Profile(_) => "profile",
-            Shape::Region(_) => "region",
-            Shape::Regions(_) => "regions",
+            CurveKind::Spline(s) if s.kind == SplineKind::Bezier => "bezier",
+            CurveKind::Spline(_) => "bspline",
+            CurveKind::Analytic(a) => a.kind(),
+            CurveKind::Segment(s) => s.kind().name(),
+            CurveKind::Profile(_) => "profile",
+            CurveKind::Region(_) => "region",
+            CurveKind::Regions(_) => "regions",
         }
     }
 
     /// True for closed curves.
     pub fn is_closed(&self) -> bool {
         match &self.shape {
-            Shape::Spline(s) => s.closed,
-            Shape::Analytic(_) => true,
-            Shape::Segment(s) => s.is_closed(),
-            Shape::Profile(p) => p.is_closed(),
-            Shape::Region(_) | Shape::Regions(_) => true,
+            CurveKind::Spline(s) => s.closed,
+            CurveKind::Analytic(_) => true,
+            CurveKind::Segment(s) => s.is_closed(),
+            CurveKind::Profile(p) => p.is_closed(),
+            CurveKind::Region(_) | CurveKind::Regions(_) => true,
         }
     }
 
     /// The parameter domain.
     pub fn domain(&self) -> (f64, f64) {
         match &self.shape {
-            Shape::Spline(s) => s.curve.domain(),
-            Shape::Analytic(_) => (0.0, std::f64::consts::TAU),
-            Shape::Segment(s) => s.own_domain(),
-            Shape::Profile(p) => p.document_domain(),
-            Shape::Region(r) => r.outer().document_domain(),
-            Shape::Regions(parts) => parts[0].outer().document_domain(),
+            CurveKind::Spline(s) => s.curve.domain(),
+            CurveKind::Analytic(_) => (0.0, std::f64::consts::TAU),
+            CurveKind::Segment(s) => s.own_domain(),
+            CurveKind::Profile(p) => p.document_domain(),
+            CurveKind::Region(r) => r.outer().document_domain(),
+            CurveKind::Regions(parts) => parts[0].outer().document_domain(),
         }
     }
 
     /// The curve as the algorithms take it.
     pub fn plane_curve(&self) -> &dyn PlaneCurve {
         match &self.shape {
-            Shape::Spline(s) => &s.plane,
-            Shape::Analytic(a) => a,
-            Shape::Segment(s) => s.curve(),
-            Shape::Profile(p) => p.as_ref(),
+            CurveKind::Spline(s) => &s.plane,
+            CurveKind::Analytic(a) => a,
+            CurveKind::Segment(s) => s.curve(),
+            CurveKind::Profile(p) => p.as_ref(),
             // (Commands that need one curve refuse a region; figures draw its outer boundary
             // here and its holes beside it.)
-            Shape::Region(r) => r.outer(),
-            Shape::Regions(parts) => parts[0].outer(),
+            CurveKind::Region(r) => r.outer(),
+            CurveKind::Regions(parts) => parts[0].outer(),
         }
     }
 
@@ -180,23 +180,26 @@ impl Curve {
     /// their own parameters): where the parameters a command reports lie.
     pub fn point_at(&self, u: f64) -> [f64; 2] {
         match &self.shape {
-            Shape::Segment(s) => s.jet(s.own_param().form(u, s.domain())).p.arr(),
-            Shape::Profile(p) => p.jet(p.internal_param(u)).p.arr(),
-            Shape::Region(r) => r.outer().jet(r.outer().internal_param(u)).p.arr(),
-            Shape::Regions(parts) => {
+            CurveKind::Segment(s) => s.jet(s.own_param().form(u, s.domain())).p.arr(),
+            CurveKind::Profile(p) => p.jet(p.internal_param(u)).p.arr(),
+            CurveKind::Region(r) => r.outer().jet(r.outer().internal_param(u)).p.arr(),
+            CurveKind::Regions(parts) => {
                 let outer = parts[0].outer();
                 outer.jet(outer.internal_param(u)).p.arr()
             }
-            Shape::Spline(_) | Shape::Analytic(_) => self.plane_curve().jet(u).p.arr(),
+            CurveKind::Spline(_) | CurveKind::Analytic(_) => self.plane_curve().jet(u).p.arr(),
         }
     }
 
     /// The rational B-spline form, for spline kinds.
     pub fn rational(&self) -> Option<&Rational> {
         match &self.shape {
-            Shape::Spline(s) => Some(&s.curve),
-            Shape::Segment(s) => Some(s.curve().curve()),
-            Shape::Analytic(_) | Shape::Profile(_) | Shape::Region(_) | Shape::Regions(_) => None,
+            CurveKind::Spline(s) => Some(&s.curve),
+            CurveKind::Segment(s) => Some(s.curve().curve()),
+            CurveKind::Analytic(_)
+            | CurveKind::Profile(_)
+            | CurveKind::Region(_)
+            | CurveKind::Regions(_) => None,
         }
     }
 

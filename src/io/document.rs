@@ -4,23 +4,23 @@
 //! rational B-spline it is. Read back, the document is the same curve; an elliptic arc's
 //! parameter becomes its spline's.
 
-use super::Shape;
+use super::CurveKind;
 use curve::{OwnParam, ParamCurve, Profile, Region, Segment, SegmentKind};
 use serde_json::{json, Value};
 
 /// The document of a shape read from a drawing (a profile, a region, several regions, a line
 /// or an arc); `None` for the shapes only a curve file gives (a spline, an analytic shape),
 /// whose document is that file's.
-pub fn shape_document(shape: &Shape) -> Option<Value> {
+pub fn shape_document(shape: &CurveKind) -> Option<Value> {
     match shape {
-        Shape::Segment(s) => Some(segment_document(s)),
-        Shape::Profile(p) => Some(profile_document(p)),
-        Shape::Region(r) => Some(region_document(r)),
-        Shape::Regions(parts) => Some(json!({
+        CurveKind::Segment(s) => Some(segment_document(s)),
+        CurveKind::Profile(p) => Some(profile_document(p)),
+        CurveKind::Region(r) => Some(region_document(r)),
+        CurveKind::Regions(parts) => Some(json!({
             "kind": "regions",
             "parts": parts.iter().map(region_document).collect::<Vec<_>>(),
         })),
-        Shape::Spline(_) | Shape::Analytic(_) => None,
+        CurveKind::Spline(_) | CurveKind::Analytic(_) => None,
     }
 }
 

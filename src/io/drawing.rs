@@ -3,7 +3,7 @@
 //! chain becomes a profile; the command gets the one profile the file holds, or the one
 //! `--pick N` chooses.
 
-use super::{Curve, CurveFileError, Problem, Shape, MAX_SEGMENTS};
+use super::{Curve, CurveFileError, CurveKind, Problem, MAX_SEGMENTS};
 use curve::{FillRule, Profile, Segment};
 use serde::{Deserialize, Serialize};
 
@@ -151,7 +151,7 @@ pub(super) fn pick_profile(
         "profiles",
         "the file holds no usable geometry",
     )?;
-    Ok(Curve::new(file, Shape::Profile(Box::new(p))))
+    Ok(Curve::new(file, CurveKind::Profile(Box::new(p))))
 }
 
 /// The one item of a drawing (`what`: what they are, plural), or the `pick`-th (from 0);

@@ -3,8 +3,8 @@
 
 use super::drawing::{self, DrawingRead};
 use super::{
-    dxf, parse_curve, profile, regions, svg, Curve, CurveFileError, DrawingInfo, FieldError,
-    Problem, Shape,
+    dxf, parse_curve, profile, regions, svg, Curve, CurveFileError, CurveKind, DrawingInfo,
+    FieldError, Problem,
 };
 use std::path::Path;
 
@@ -12,7 +12,7 @@ use std::path::Path;
 /// closed curve with an exact form (a closed profile, a closed `bezier` or `bspline`, a
 /// circle, a full-turn arc) as the region it encloses; from a drawing, its closed profiles
 /// nested inside each other (even-odd), `pick` choosing among several regions. The curve
-/// returned is the region's (`Shape::Region`); anything else is bad input naming the file.
+/// returned is the region's (`CurveKind::Region`); anything else is bad input naming the file.
 pub fn read_region(path: &Path, pick: Option<usize>) -> Result<Curve, CurveFileError> {
     read_region_as(path, None, pick)
 }
@@ -50,13 +50,13 @@ pub fn parse_region(
         problem,
     };
     let shape = match c.shape {
-        Shape::Region(r) => Shape::Region(r),
-        Shape::Regions(parts) => regions::picked_part(file, parts, pick)?,
+        CurveKind::Region(r) => CurveKind::Region(r),
+        CurveKind::Regions(parts) => regions::picked_part(file, parts, pick)?,
         shape => {
             let outer = profile::boundary_of("curve", shape).map_err(fail)?;
             let region = curve::Region::new(outer, Vec::new())
                 .map_err(|e| fail(("curve".into(), Problem::Geometry(e.to_string()))))?;
-            Shape::Region(Box::new(region))
+            CurveKind::Region(Box::new(region))
         }
     };
     Ok(Curve::new(c.file, shape))
@@ -184,10 +184,10 @@ pub enum DrawingFormat {
 /// names it in errors.
 ///
 /// ```
-/// use curvekit::io::{parse_drawing, DrawingFormat, Shape};
+/// use curvekit::io::{parse_drawing, DrawingFormat, CurveKind};
 /// let svg = br#"<svg xmlns="http://www.w3.org/2000/svg"><rect width="4" height="2"/></svg>"#;
 /// let c = parse_drawing("r.svg", DrawingFormat::Svg, svg, None).unwrap();
-/// assert!(matches!(c.shape, Shape::Profile(ref p) if p.segments().len() == 4));
+/// assert!(matches!(c.shape, CurveKind::Profile(ref p) if p.segments().len() == 4));
 /// ```
 pub fn parse_drawing(
     file: &str,

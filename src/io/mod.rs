@@ -19,7 +19,7 @@ mod spline;
 mod svg;
 
 pub use curve_file::parse_curve;
-pub use curves::{curve_profile, Curve, DrawingInfo, Shape, SplineCurve, SplineKind};
+pub use curves::{curve_profile, Curve, CurveKind, DrawingInfo, SplineDocument, SplineKind};
 pub use document::{
     line_geometry, profile_document, region_document, regions_geometry, segment_document,
     shape_document,

@@ -152,7 +152,7 @@ pub const MAX_PARTS: usize = 10_000;
 
 /// A `regions` object (unknown fields were already rejected): `parts`, each a `region` (or a
 /// closed curve), disjoint (a part may lie in another's hole). One part is a region.
-pub(super) fn parse_regions(f: &Fields<'_>) -> Result<super::Shape, FieldError> {
+pub(super) fn parse_regions(f: &Fields<'_>) -> Result<super::CurveKind, FieldError> {
     let items = match f.require("parts")? {
         Value::Array(items) if !items.is_empty() && items.len() <= MAX_PARTS => items,
         Value::Array(items) => {
@@ -174,7 +174,7 @@ pub(super) fn parse_regions(f: &Fields<'_>) -> Result<super::Shape, FieldError> 
             return Err(wrong_type(&key, "a region object", v));
         };
         let region = match super::parse_shape(map).map_err(at)? {
-            super::Shape::Region(r) => *r,
+            super::CurveKind::Region(r) => *r,
             shape => {
                 let outer = boundary_of(&key, shape)?;
                 Region::new(outer, Vec::new())
@@ -185,8 +185,8 @@ pub(super) fn parse_regions(f: &Fields<'_>) -> Result<super::Shape, FieldError> 
     }
     disjoint(&parts)?;
     Ok(match parts.len() {
-        1 => super::Shape::Region(Box::new(parts.swap_remove(0))),
-        _ => super::Shape::Regions(parts),
+        1 => super::CurveKind::Region(Box::new(parts.swap_remove(0))),
+        _ => super::CurveKind::Regions(parts),
     })
 }
 
@@ -247,7 +247,7 @@ fn boundary(key: &str, v: &Value) -> Result<Profile, FieldError> {
 /// ([`curve::Profile::of_curve`]: a spline's knots, `[0, 2π)` for the analytic shapes), cut at
 /// its corners (a degree-1 spline, knots of full multiplicity, a clamped spline closed by its
 /// points with a corner there). `key` names it in errors.
-pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, FieldError> {
+pub(super) fn boundary_of(key: &str, shape: super::CurveKind) -> Result<Profile, FieldError> {
     let not_closed = || {
         (
             key.to_string(),
@@ -255,8 +255,8 @@ pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, Fie
         )
     };
     let profile = match shape {
-        super::Shape::Profile(p) => *p,
-        super::Shape::Region(_) | super::Shape::Regions(_) => return Err(not_closed()),
+        super::CurveKind::Profile(p) => *p,
+        super::CurveKind::Region(_) | super::CurveKind::Regions(_) => return Err(not_closed()),
         shape => match curve_profile(&shape) {
             Some(made) => made.map_err(|(field, problem)| (format!("{key}.{field}"), problem))?,
             None => return Err(not_closed()),
@@ -271,19 +271,19 @@ pub(super) fn boundary_of(key: &str, shape: super::Shape) -> Result<Profile, Fie
 /// A curve that is not a profile (a spline, an analytic shape, a line or an arc) as the
 /// profile of one segment in the curve's own parameter, cut at its corners; `None` for a
 /// profile or a region. A periodic spline is taken clamped over its domain (the same curve).
-pub(crate) fn curve_profile(shape: &super::Shape) -> Option<Result<Profile, FieldError>> {
+pub(crate) fn curve_profile(shape: &super::CurveKind) -> Option<Result<Profile, FieldError>> {
     let geometry =
         |field: &str, e: curve::Error| (field.to_string(), Problem::Geometry(e.to_string()));
     let made = match shape {
-        super::Shape::Profile(_) | super::Shape::Region(_) | super::Shape::Regions(_) => {
-            return None
-        }
-        super::Shape::Segment(s) => {
+        super::CurveKind::Profile(_)
+        | super::CurveKind::Region(_)
+        | super::CurveKind::Regions(_) => return None,
+        super::CurveKind::Segment(s) => {
             let s = s.as_ref().clone();
             let domain = s.own_domain();
             Profile::of_curve(s, domain).map_err(|e| geometry("kind", e))
         }
-        super::Shape::Spline(s) => {
+        super::CurveKind::Spline(s) => {
             let (a, b) = s.curve.domain();
             let kind = match s.kind {
                 super::SplineKind::Bezier => SegmentKind::Bezier,
@@ -302,7 +302,7 @@ pub(crate) fn curve_profile(shape: &super::Shape) -> Option<Result<Profile, Fiel
                 .and_then(|seg| Profile::of_curve(seg, (a, b)))
                 .map_err(|e| geometry("points", e))
         }
-        super::Shape::Analytic(a) => a
+        super::CurveKind::Analytic(a) => a
             .boundary_segment()
             .and_then(|seg| Profile::of_curve(seg, (0.0, std::f64::consts::TAU)))
             .map_err(|e| geometry("kind", e)),

@@ -6,7 +6,7 @@
 //! answer on the drawing is then certified.
 
 use super::drawing::{error, pick_one, profiles, DrawingRead};
-use super::{Curve, CurveFileError, DrawingInfo, Problem, Shape};
+use super::{Curve, CurveFileError, CurveKind, DrawingInfo, Problem};
 use curve::{FilledOutline, ParamCurve, Region};
 
 /// The region (or regions) a command takes from a drawing: every part, or the `pick`-th.
@@ -75,14 +75,14 @@ pub(super) fn picked_part(
     file: &str,
     mut parts: Vec<Region>,
     pick: Option<usize>,
-) -> Result<Shape, CurveFileError> {
+) -> Result<CurveKind, CurveFileError> {
     if pick.is_none() {
         return Ok(match parts.len() {
-            1 => Shape::Region(Box::new(parts.swap_remove(0))),
-            _ => Shape::Regions(parts),
+            1 => CurveKind::Region(Box::new(parts.swap_remove(0))),
+            _ => CurveKind::Regions(parts),
         });
     }
     let none = "the file holds no closed outline to make a region of";
     let part = pick_one(file, parts, pick, "parts", none)?;
-    Ok(Shape::Region(Box::new(part)))
+    Ok(CurveKind::Region(Box::new(part)))
 }

@@ -1,11 +1,11 @@
 //! The spline kinds of curve files: `bezier` and `bspline`.
 
-use super::{out_of_range, FieldError, Fields, Problem, SplineCurve, SplineKind, MAX_DEGREE};
+use super::{out_of_range, FieldError, Fields, Problem, SplineDocument, SplineKind, MAX_DEGREE};
 use bspline::knots::validate_knots;
 use curve::ParamCurve;
 
 /// Validates a `bezier` or `bspline` object (unknown fields were already rejected).
-pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, FieldError> {
+pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineDocument, FieldError> {
     let points = f.points("points")?;
     let n = points.len();
     let (kind, degree, periodic, knots) = if kind == "bezier" {
@@ -74,7 +74,7 @@ pub(super) fn parse_spline(kind: &str, f: &Fields<'_>) -> Result<SplineCurve, Fi
     }
 
     let closed = plane.is_closed();
-    Ok(SplineCurve {
+    Ok(SplineDocument {
         plane,
         curve,
         kind,
@@ -104,11 +104,11 @@ fn knot_error(e: bspline::Error, len: usize) -> FieldError {
 
 #[cfg(test)]
 mod tests {
-    use crate::io::{parse_curve, Shape};
+    use crate::io::{parse_curve, CurveKind};
 
-    fn spline(text: &str) -> crate::io::SplineCurve {
+    fn spline(text: &str) -> crate::io::SplineDocument {
         match parse_curve("t.json", text).map(|c| c.shape) {
-            Ok(Shape::Spline(s)) => *s,
+            Ok(CurveKind::Spline(s)) => *s,
             other => panic!("{other:?}"),
         }
     }

@@ -11,7 +11,7 @@ use super::written::{
 };
 use super::{bulge_circle, temp_dxf};
 use curve::{ParamCurve, Profile, Region, V2};
-use curvekit::io::{read_region, CurveFileError, Shape, Skipped};
+use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::time::{Duration, Instant};
@@ -95,7 +95,7 @@ fn region_of(text: &str) -> Result<(Region, Vec<Skipped>, Option<String>), Curve
     let doubt = c.drawing_doubt();
     let skipped = c.drawing.map(|d| d.skipped).unwrap_or_default();
     match c.shape {
-        Shape::Region(r) => Ok((*r, skipped, doubt)),
+        CurveKind::Region(r) => Ok((*r, skipped, doubt)),
         other => panic!("not one region: {other:?}"),
     }
 }

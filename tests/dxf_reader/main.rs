@@ -18,7 +18,7 @@ mod written;
 
 use common::{curvekit, curvekit_json, fixture};
 use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve, V2};
-use curvekit::io::{read_curve_picked, CurveFileError, Shape};
+use curvekit::io::{read_curve_picked, CurveFileError, CurveKind};
 use dxf::entities::{
     Arc, Circle, Ellipse, Entity, EntityType, Line, LwPolyline, Polyline, Spline, Vertex,
 };
@@ -73,7 +73,7 @@ fn saved(d: &Drawing) -> tempfile::TempPath {
 fn read_path(path: &std::path::Path, pick: usize) -> Result<Profile, CurveFileError> {
     let c = read_curve_picked(path, Some(pick))?;
     match c.shape {
-        Shape::Profile(p) => Ok(*p),
+        CurveKind::Profile(p) => Ok(*p),
         other => panic!("not a profile: {other:?}"),
     }
 }

@@ -3,6 +3,14 @@
 /// A closed interval of reals, `[lo, hi]`. Its arithmetic is plain (rounded to nearest): the
 /// callers widen the results by the rounding they carry ([`Interval::widened`]), as the proofs
 /// of `antipodal` do.
+///
+/// ```
+/// use numeric::Interval;
+/// let x = Interval::new(-1.0, 2.0);
+/// let square = x.mul(x); // (interval arithmetic forgets that both factors are one x)
+/// assert_eq!((square.lo, square.hi), (-2.0, 4.0));
+/// assert!(!x.excludes_zero() && Interval::new(0.5, 1.0).recip().is_some());
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Interval {
     /// The lower end.

@@ -12,6 +12,7 @@ pub use antipodal;
 pub use bspline;
 pub use curve;
 pub use medial;
+pub use numeric;
 pub use offset;
 pub use zeroset;
 

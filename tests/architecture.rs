@@ -9,10 +9,11 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The crates from left to right, with their source folders (a crate may use those before it).
-const CRATES: [(&str, &str); 9] = [
+const CRATES: [(&str, &str); 10] = [
     ("numeric", "crates/numeric"),
     ("bspline", "crates/bspline"),
     ("curve", "crates/curve"),
+    ("testkit", "crates/testkit"),
     ("zeroset", "crates/zeroset"),
     ("antipodal", "crates/antipodal"),
     ("medial", "crates/medial"),
@@ -28,35 +29,58 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The `.rs` files under `dir`, test modules in files of their own (`tests.rs`, declared
-/// under `#[cfg(test)]`) left out as the test modules inside files are.
+/// The `.rs` files under `dir`, less the test modules kept in files of their own (a
+/// `tests.rs` its parent declares under `#[cfg(test)]`), as the test modules inside files are
+/// left out by [`code`].
 fn sources(dir: &Path) -> Vec<PathBuf> {
     let mut found = Vec::new();
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         if path.is_dir() {
             found.extend(sources(&path));
-        } else if path.extension().is_some_and(|e| e == "rs")
-            && path.file_name().is_some_and(|n| n != "tests.rs")
-        {
+        } else if path.extension().is_some_and(|e| e == "rs") && !is_test_module(&path) {
             found.push(path);
         }
     }
     found
 }
 
-/// The code of a file before its test module, without comment lines.
+/// Whether `file` is a `tests.rs` its parent module declares under `#[cfg(test)]`.
+fn is_test_module(file: &Path) -> bool {
+    if file.file_name().is_none_or(|n| n != "tests.rs") {
+        return false;
+    }
+    let folder = file.parent().unwrap();
+    let parent = [folder.with_extension("rs"), folder.join("mod.rs")]
+        .into_iter()
+        .find(|p| p.exists());
+    parent.is_some_and(|p| {
+        let text = std::fs::read_to_string(p).unwrap();
+        let lines: Vec<&str> = text.lines().map(str::trim).collect();
+        lines.windows(2).any(|w| {
+            w[0] == "#[cfg(test)]" && (w[1] == "mod tests;" || w[1] == "pub(crate) mod tests;")
+        })
+    })
+}
+
+/// The code of a file before its inline test module (`#[cfg(test)] mod tests { … }`),
+/// without comment lines and without the declarations of test modules kept in files of their
+/// own (`#[cfg(test)] mod tests;`).
 fn code(text: &str) -> String {
     let mut out = String::new();
     let mut lines = text.lines().peekable();
     while let Some(line) = lines.next() {
         let t = line.trim_start();
-        let module = |n: &&str| {
+        let module = |n: &str| {
             let n = n.trim_start();
             let n = n.strip_prefix("pub(crate) ").unwrap_or(n);
             n.strip_prefix("pub ").unwrap_or(n).starts_with("mod ")
         };
-        if t.starts_with("#[cfg(test)]") && lines.peek().is_some_and(module) {
+        if t.starts_with("#[cfg(test)]") && lines.peek().is_some_and(|n| module(n)) {
+            let declaration = lines.next().unwrap_or_default();
+            if declaration.trim_end().ends_with(';') {
+                continue;
+            }
             break;
         }
         if !t.starts_with("//") {
@@ -80,32 +104,98 @@ fn module_of(src: &Path, file: &Path) -> Option<String> {
     (name != "lib" && name != "main").then_some(name)
 }
 
-/// The module names a piece of code reaches through `crate::` (in `crate::a::b`, and each
-/// path of `crate::{a, b::c}`).
-fn reached(code: &str) -> BTreeSet<String> {
-    let mut names = BTreeSet::new();
-    let mut rest = code;
-    while let Some(i) = rest.find("crate::") {
-        rest = &rest[i + "crate::".len()..];
-        if let Some(group) = rest.strip_prefix('{') {
-            let end = group.find('}').unwrap_or(group.len());
-            for path in group[..end].split(',') {
-                let head: String = path
-                    .trim()
-                    .chars()
-                    .take_while(|c| c.is_alphanumeric() || *c == '_')
-                    .collect();
-                names.insert(head);
+/// The heads of the paths in a `use` group's text (`a, b::{c, d}, e` gives `a`, `b`, `e`):
+/// split at the commas outside nested braces.
+fn group_heads(group: &str) -> Vec<String> {
+    let mut heads = Vec::new();
+    let (mut depth, mut start) = (0usize, 0usize);
+    for (i, c) in group.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                heads.push(head(&group[start..i]));
+                start = i + 1;
             }
-        } else {
-            let head: String = rest
-                .chars()
-                .take_while(|c| c.is_alphanumeric() || *c == '_')
-                .collect();
-            names.insert(head);
+            _ => {}
         }
     }
+    heads.push(head(&group[start..]));
+    heads
+}
+
+/// The first name of a path.
+fn head(path: &str) -> String {
+    path.trim()
+        .chars()
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
+        .collect()
+}
+
+/// The text of the `{ … }` group `rest` starts with (without its braces), to its matching
+/// brace.
+fn braced(rest: &str) -> &str {
+    let mut depth = 0usize;
+    for (i, c) in rest.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return &rest[1..i];
+                }
+            }
+            _ => {}
+        }
+    }
+    &rest[1..]
+}
+
+/// The top-level module names a piece of code reaches: through `crate::` (`crate::a::b`, and
+/// each path of `crate::{a, b::{c, d}}`), and through as many `super::` as lead from the
+/// file's module path (`depth` names deep: 1 for `src/a.rs` or `src/a/mod.rs`) to the crate's
+/// root.
+fn reached(code: &str, depth: usize) -> BTreeSet<String> {
+    let mut names = BTreeSet::new();
+    let mut roots = vec!["crate::".to_string()];
+    if depth > 0 {
+        roots.push("super::".repeat(depth));
+    }
+    for root in &roots {
+        let mut rest = code;
+        while let Some(i) = rest.find(root.as_str()) {
+            // (`super::super::x` seen from a file one deep is not a path to the root's `x`.)
+            let before = &rest[..i];
+            rest = &rest[i + root.len()..];
+            if root.starts_with("super")
+                && (before.ends_with("super::") || rest.starts_with("super::"))
+            {
+                continue;
+            }
+            if rest.starts_with('{') {
+                names.extend(group_heads(braced(rest)));
+            } else {
+                names.insert(head(rest));
+            }
+        }
+    }
+    names.retain(|n| !n.is_empty() && n != "self" && n != "super");
     names
+}
+
+/// How many names deep the module of `file` is below the crate's root (`src/a.rs` and
+/// `src/a/mod.rs`: 1; `src/a/b.rs`: 2; `lib.rs`: 0).
+fn depth_of(src: &Path, file: &Path) -> usize {
+    let rel = file.strip_prefix(src).unwrap_or(file);
+    let parts = rel.components().count();
+    let named = rel
+        .file_name()
+        .is_some_and(|n| n == "mod.rs" || n == "lib.rs" || n == "main.rs");
+    if named {
+        parts - 1
+    } else {
+        parts
+    }
 }
 
 /// The names the crate's root (`lib.rs` or `main.rs`) re-exports (`pub use module::{A, B}`),
@@ -217,7 +307,7 @@ fn modules_import_no_new_circle() {
                 continue;
             };
             let text = std::fs::read_to_string(file).unwrap();
-            for name in reached(&code(&text)) {
+            for name in reached(&code(&text), depth_of(&src, file)) {
                 // (A name the crate's root re-exports is its module's.)
                 let to = exported.get(&name).cloned().unwrap_or(name);
                 if to != from && modules.contains(&to) {
@@ -245,19 +335,73 @@ fn modules_import_no_new_circle() {
     );
 }
 
+/// Each workspace crate's library name, and the library names of what it depends on outside
+/// its tests (normal and build dependencies, on every target), as `cargo metadata` reads the
+/// manifests (tables, renames and all).
+fn dependencies() -> BTreeMap<String, BTreeSet<String>> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let out = std::process::Command::new(cargo)
+        .args([
+            "metadata",
+            "--no-deps",
+            "--format-version",
+            "1",
+            "--offline",
+        ])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let meta: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // (A dependency is named by its package; the crates use each other by library name.)
+    let packages = meta["packages"].as_array().unwrap();
+    let library = |package: &serde_json::Value| -> String {
+        package["targets"]
+            .as_array()
+            .and_then(|t| {
+                t.iter()
+                    .find(|t| ["lib", "rlib", "cdylib"].iter().any(|k| t["kind"][0] == *k))
+            })
+            .and_then(|t| t["name"].as_str())
+            .unwrap_or_else(|| package["name"].as_str().unwrap())
+            .replace('-', "_")
+    };
+    let by_package: BTreeMap<&str, String> = packages
+        .iter()
+        .map(|p| (p["name"].as_str().unwrap(), library(p)))
+        .collect();
+    packages
+        .iter()
+        .map(|p| {
+            let uses = p["dependencies"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .filter(|d| d["kind"] != "dev")
+                .filter_map(|d| by_package.get(d["name"].as_str().unwrap()).cloned())
+                .collect();
+            (library(p), uses)
+        })
+        .collect()
+}
+
 /// Every crate uses only the workspace crates to its left.
 #[test]
 fn crates_use_only_those_to_their_left() {
     let names: Vec<&str> = CRATES.iter().map(|(n, _)| *n).collect();
-    for (k, (name, dir)) in CRATES.iter().enumerate() {
-        let manifest = std::fs::read_to_string(root().join(dir).join("Cargo.toml")).unwrap();
-        let deps = manifest
-            .split("\n[")
-            .filter(|section| section.starts_with("dependencies]"))
-            .collect::<String>();
-        for line in deps.lines().skip(1) {
-            let dep = line.split(['.', ' ', '=']).next().unwrap_or("").trim();
-            if let Some(j) = names.iter().position(|n| *n == dep) {
+    let deps = dependencies();
+    for (k, name) in names.iter().enumerate() {
+        // (The Python package's library is `_curvekit`; the others' are their names.)
+        let uses = deps
+            .get(*name)
+            .or_else(|| (*name == "python").then(|| deps.get("_curvekit")).flatten())
+            .unwrap_or_else(|| panic!("no crate {name} in the workspace's metadata"));
+        for dep in uses {
+            if let Some(j) = names.iter().position(|n| n == dep) {
                 assert!(j < k, "{name} uses {dep}, which stands to its right");
             }
         }
@@ -268,18 +412,11 @@ fn crates_use_only_those_to_their_left() {
 /// or tool depends on it.
 #[test]
 fn testkit_is_for_tests_only() {
-    for (name, dir) in CRATES {
-        let manifest = std::fs::read_to_string(root().join(dir).join("Cargo.toml")).unwrap();
-        for section in manifest.split("\n[") {
-            if section.starts_with("dependencies]") {
-                assert!(
-                    !section
-                        .lines()
-                        .any(|l| l.trim_start().starts_with("testkit")),
-                    "{name} depends on testkit outside its dev-dependencies"
-                );
-            }
-        }
+    for (name, uses) in dependencies() {
+        assert!(
+            !uses.contains("testkit"),
+            "{name} depends on testkit outside its dev-dependencies"
+        );
     }
 }
 
@@ -346,6 +483,47 @@ fn no_two_public_types_share_a_name() {
     );
 }
 
+/// The module-level constants of a file's code (a `const` at the start of a line, with any
+/// visibility), each with its value's text, white space folded; the value runs to the `;` at
+/// the statement's own level (an array type's `[T; N]` and an array value's items inside
+/// brackets do not end it).
+fn constants(code: &str) -> Vec<(String, String)> {
+    let mut found = Vec::new();
+    let lines: Vec<&str> = code.lines().collect();
+    for (k, line) in lines.iter().enumerate() {
+        let rest = ["pub(crate) ", "pub(super) ", "pub "]
+            .iter()
+            .find_map(|v| line.strip_prefix(v))
+            .unwrap_or(line);
+        let Some(rest) = rest.strip_prefix("const ") else {
+            continue;
+        };
+        if rest.starts_with("fn ") {
+            continue;
+        }
+        let statement = lines[k..].join("\n");
+        let statement = &statement[statement.find("const ").unwrap_or(0)..];
+        let (mut depth, mut end) = (0i32, statement.len());
+        for (i, c) in statement.char_indices() {
+            match c {
+                '[' | '(' | '{' => depth += 1,
+                ']' | ')' | '}' => depth -= 1,
+                ';' if depth == 0 => {
+                    end = i;
+                    break;
+                }
+                _ => {}
+            }
+        }
+        let name = head(rest);
+        let Some((_, value)) = statement[..end].split_once(" = ") else {
+            continue;
+        };
+        found.push((name, value.split_whitespace().collect::<Vec<_>>().join(" ")));
+    }
+    found
+}
+
 /// Every constant is named once: two module-level constants of one name in the workspace hold
 /// the same value (then one should serve both), or they are two things and need two names.
 #[test]
@@ -354,27 +532,12 @@ fn no_two_constants_share_a_name_with_different_values() {
     for (_, src) in source_folders() {
         for file in sources(&src) {
             let text = code(&std::fs::read_to_string(&file).unwrap());
-            // (Module-level only: a constant inside an impl or a function is its own.)
-            for statement in text.split(';') {
-                let line = statement.trim_start_matches(['\n', ' ', '}', '{']);
-                let line = line
-                    .strip_prefix("pub(crate) ")
-                    .or_else(|| line.strip_prefix("pub(super) "))
-                    .or_else(|| line.strip_prefix("pub "))
-                    .unwrap_or(line);
-                let Some(rest) = line.strip_prefix("const ") else {
-                    continue;
-                };
-                if statement.trim_start_matches('\n').starts_with(' ') {
-                    continue;
-                }
-                let Some((name, value)) = rest.split_once('=') else {
-                    continue;
-                };
-                let name = name.split(':').next().unwrap_or("").trim().to_string();
-                let value = value.split_whitespace().collect::<Vec<_>>().join(" ");
-                let place = file.strip_prefix(root()).unwrap().display().to_string();
-                values.entry(name).or_default().insert((value, place));
+            let place = file.strip_prefix(root()).unwrap().display().to_string();
+            for (name, value) in constants(&text) {
+                values
+                    .entry(name)
+                    .or_default()
+                    .insert((value, place.clone()));
             }
         }
     }
@@ -391,5 +554,37 @@ fn no_two_constants_share_a_name_with_different_values() {
     assert!(
         clashes.is_empty(),
         "constants of one name with different values: {clashes:#?}"
+    );
+}
+
+/// The parsers the tests above read the sources with, on the cases they must not miss.
+#[test]
+fn the_source_readers_see_what_they_must() {
+    let text = "use crate::{a::{b, c}, d};\nfn f() { super::e::g(); }\n#[cfg(test)]\nmod tests;\n\
+                pub(crate) const UNITS: [(&str, u8); 2] = [(\"mm\", 1), (\"cm\", 2)];\n\
+                #[allow(dead_code)]\nconst AFTER: f64 = 1e-9;\nfn h() {\n    const INNER: u8 = 1;\n}\n";
+    let code = code(text);
+    let modules = reached(&code, 1);
+    assert_eq!(
+        modules,
+        ["a", "d", "e"].into_iter().map(String::from).collect(),
+        "{code}"
+    );
+    assert_eq!(
+        constants(&code),
+        vec![
+            (
+                "UNITS".to_string(),
+                "[(\"mm\", 1), (\"cm\", 2)]".to_string()
+            ),
+            ("AFTER".to_string(), "1e-9".to_string()),
+        ]
+    );
+    // (Two deep, one `super::` is the same top-level module; two reach the root.)
+    assert_eq!(
+        reached("use super::x; use super::super::y;", 2)
+            .into_iter()
+            .collect::<Vec<_>>(),
+        ["y"]
     );
 }

@@ -47,7 +47,7 @@ const MAX_USE_DEPTH: usize = 16;
 const MAX_ELEMENTS: usize = 100_000;
 
 /// Units a root `width` may give the user units.
-const SVG_UNITS: [(&str, svgtypes::LengthUnit); 5] = [
+const WIDTH_UNITS: [(&str, svgtypes::LengthUnit); 5] = [
     ("mm", svgtypes::LengthUnit::Mm),
     ("cm", svgtypes::LengthUnit::Cm),
     ("in", svgtypes::LengthUnit::In),
@@ -121,7 +121,7 @@ fn units_of(root: &Node<'_, '_>) -> Option<String> {
         .map(str::parse)
         .collect::<Result<_, _>>()
         .ok()?;
-    let &(name, _) = SVG_UNITS.iter().find(|(_, u)| *u == width.unit)?;
+    let &(name, _) = WIDTH_UNITS.iter().find(|(_, u)| *u == width.unit)?;
     let same = view.len() == 4 && (view[2] - width.number).abs() <= 1e-9 * width.number.abs();
     same.then(|| name.to_string())
 }

@@ -3,8 +3,8 @@
 /// Why a medial axis could not be computed.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    /// The bisectors it is made of could not be computed (an option out of range, a curve
-    /// the exact algebra refuses).
+    /// The bisectors it is made of could not be computed (a curve the exact algebra refuses;
+    /// the options are checked first, as [`Error::BadOption`]).
     #[error(transparent)]
     Bisector(#[from] zeroset::Error),
     /// An option is out of range (the field is named).

@@ -904,6 +904,51 @@ fn outward_distances_stay_within_the_exterior_axis() {
     check(&region, &found, 1e-6);
 }
 
+/// The options are checked against what the algorithms deliver, by the tolerances' one
+/// range: a chord tolerance in [1e-9, 0.5] for the offsets, as for the axis (whose size must
+/// also be a finite number above zero); out of it, an error naming the field.
+#[test]
+fn options_out_of_range_are_refused_by_name() {
+    let region = pocket();
+    let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+    for (chord_tol, ok) in [
+        (1e-9, true),
+        (0.5, true),
+        (1e-10, false),
+        (0.6, false),
+        (f64::NAN, false),
+    ] {
+        let opts = OffsetOptions {
+            chord_tol,
+            ..OffsetOptions::default()
+        };
+        let found = offsets(&region, &axis, &[0.5], &opts);
+        match found {
+            Ok(_) => assert!(ok, "chord_tol {chord_tol} taken"),
+            Err(e) => {
+                assert!(!ok, "chord_tol {chord_tol} refused: {e}");
+                assert!(e.to_string().contains("chord_tol"), "{e}");
+            }
+        }
+    }
+    for size in [0.0, -1.0, f64::INFINITY, f64::NAN] {
+        let opts = MedialOptions {
+            size: Some(size),
+            ..MedialOptions::default()
+        };
+        let e = medial_axis(&region, &opts).unwrap_err();
+        assert!(e.to_string().contains("size"), "{e}");
+    }
+    let tiny = MedialOptions {
+        tol: 1e-16,
+        ..MedialOptions::default()
+    };
+    assert!(medial_axis(&region, &tiny)
+        .unwrap_err()
+        .to_string()
+        .contains("option tol"));
+}
+
 #[test]
 fn a_square_hole_grows_rounded_corners_inward() {
     let outer = polygon(&[[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]);

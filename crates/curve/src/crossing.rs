@@ -1,5 +1,5 @@
 //! Whether chains of segments cross, themselves or each other, and how a closed chain
-//! winds round a point: decided on [`Stretch`]es, by bounds rather than samples. Pairs of
+//! winds round a point: decided on [`BezierPiece`]s, by bounds rather than samples. Pairs of
 //! stretches whose boxes do not meet are apart; neighbours whose tangent cones lie together
 //! within a half-turn meet only at their common end; a stretch whose cone does cannot meet
 //! itself. What those leave open is halved until each stretch of a pair lies within
@@ -7,9 +7,9 @@
 //! that come closer than the flatness without crossing may be judged either way; anything
 //! farther apart is judged right.
 
+use crate::bezier_piece::{pieces_of, BezierPiece};
 use crate::geom::V2;
 use crate::segment::Segment;
-use crate::stretch::{pieces_of, Stretch};
 use numeric::rounding::ulps;
 
 /// How far (relative to the chains' size) a stretch tested by its chord may stray from it.
@@ -86,7 +86,7 @@ pub(crate) fn first_crossing_among(
 ) -> Result<Option<Crossing>, Undecided> {
     let (delta, magnitude) = flatness(chains.iter().flat_map(|c| c.0.iter()), size);
     let rounding = RETRACE_ROUNDING * magnitude;
-    let mut stretches: Vec<Stretch> = chains
+    let mut stretches: Vec<BezierPiece> = chains
         .iter()
         .enumerate()
         .flat_map(|(c, &(segments, _))| pieces_of(c, segments))
@@ -101,7 +101,7 @@ pub(crate) fn first_crossing_among(
             tasks.push(Task::Pair(i, j));
         }
     }
-    let neighbours = |a: &Stretch, b: &Stretch| {
+    let neighbours = |a: &BezierPiece, b: &BezierPiece| {
         let (segments, closed) = chains[a.chain];
         let n = segments.len() as f64;
         a.chain == b.chain
@@ -116,8 +116,8 @@ pub(crate) fn first_crossing_among(
         if tests > bound {
             return Err(Undecided { tests: bound });
         }
-        let settled = |s: &Stretch| s.depth >= MAX_CROSSING_DEPTH || s.is_flat(delta);
-        let mut record = |a: &Stretch, b: &Stretch, at: V2| {
+        let settled = |s: &BezierPiece| s.depth >= MAX_CROSSING_DEPTH || s.is_flat(delta);
+        let mut record = |a: &BezierPiece, b: &BezierPiece, at: V2| {
             let (x, y) = if (a.chain, a.segment) <= (b.chain, b.segment) {
                 (a, b)
             } else {
@@ -195,7 +195,10 @@ pub(crate) fn first_crossing_among(
 
 /// The pairs of stretches whose boxes meet, by a sweep along x (a stretch without a box
 /// pairs with every other); undecided beyond `bound` pairs.
-fn boxes_meeting(stretches: &[Stretch], bound: usize) -> Result<Vec<(usize, usize)>, Undecided> {
+fn boxes_meeting(
+    stretches: &[BezierPiece],
+    bound: usize,
+) -> Result<Vec<(usize, usize)>, Undecided> {
     let mut pairs = Vec::new();
     let (mut boxed, mut unboxed): (Vec<(f64, usize)>, Vec<usize>) = (Vec::new(), Vec::new());
     for (i, s) in stretches.iter().enumerate() {
@@ -232,7 +235,7 @@ fn boxes_meeting(stretches: &[Stretch], bound: usize) -> Result<Vec<(usize, usiz
 /// A closed chain's pieces and flatness, made once for the tests of which points it winds
 /// round (a region asks each boundary about every other's start).
 pub(crate) struct Outline {
-    pieces: Vec<Stretch>,
+    pieces: Vec<BezierPiece>,
     delta: f64,
 }
 
@@ -252,7 +255,7 @@ impl Outline {
     pub(crate) fn winds_round(&self, p: V2) -> Result<bool, Undecided> {
         let mut polygon = Vec::new();
         let bound = MORE_TESTS + TESTS_PER_PIECE * self.pieces.len();
-        let mut pending: Vec<Stretch> = self.pieces.iter().rev().cloned().collect();
+        let mut pending: Vec<BezierPiece> = self.pieces.iter().rev().cloned().collect();
         let mut tests = 0;
         while let Some(s) = pending.pop() {
             tests += 1;

@@ -4,9 +4,9 @@
 //! whose box sticks out of the box of the end points found so far are halved (de Casteljau)
 //! until their boxes lie within it, or are within [`BOX_FLATNESS`] of it.
 
+use crate::bezier_piece::{pieces_of, BezierPiece};
 use crate::profile::Profile;
 use crate::region::Region;
-use crate::stretch::{pieces_of, Stretch};
 use crate::V2;
 
 /// How far (relative to the box found) a piece's box may stick out and be taken as on the
@@ -55,7 +55,7 @@ pub fn curves_box(curves: &[&bspline::Rational]) -> crate::Result<Box2> {
 
 /// The box of the points of `segments` (see [`Profile::bounding_box`]).
 fn segments_box(segments: &[crate::Segment]) -> Box2 {
-    let mut stack: Vec<Stretch> = pieces_of(0, segments);
+    let mut stack: Vec<BezierPiece> = pieces_of(0, segments);
     let mut found = stack.iter().fold(
         [
             f64::INFINITY,
@@ -112,7 +112,7 @@ impl Profile {
 }
 
 /// The box of a stretch's end points (which lie on the curve).
-fn ends(s: &Stretch) -> Box2 {
+fn ends(s: &BezierPiece) -> Box2 {
     let (a, b): (V2, V2) = (s.start, s.end);
     [a.x.min(b.x), a.y.min(b.y), a.x.max(b.x), a.y.max(b.y)]
 }

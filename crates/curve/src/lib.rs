@@ -21,6 +21,7 @@
 //! ```
 
 mod affine;
+mod bezier_piece;
 mod box_tree;
 pub mod circle;
 mod clearance;
@@ -46,7 +47,6 @@ mod segment;
 pub mod shapes;
 mod spans;
 mod spline;
-mod stretch;
 pub mod watch;
 
 pub use affine::Affine;

@@ -1,11 +1,11 @@
-//! Stretches of a chain of segments, for the tests of crossing and winding: the segments'
-//! Bézier pieces, halved by de Casteljau's algorithm where a test needs them finer.
+//! The Bézier pieces of a chain of segments, for the tests of crossing and winding, halved by
+//! de Casteljau's algorithm where a test needs them finer.
 //!
 //! Two facts about a rational Bézier piece with positive weights bound it without samples:
 //! it lies in the convex hull of its Euclidean control points `P_i` (so in their box), and
 //! its derivative is a sum of the differences `P_j − P_i` (`i < j`) with factors
 //! `w_i w_j (B_i B_j' − B_i' B_j) / w²` that are never negative (`B_j / B_i` grows with the
-//! parameter): its tangents lie in the cone of those differences. A stretch whose cone lies
+//! parameter): its tangents lie in the cone of those differences. A piece whose cone lies
 //! within a half-turn runs one way along some direction, and so cannot meet itself; two
 //! neighbours whose cones together do meet only at their common end.
 
@@ -32,9 +32,9 @@ const CONE_MARGIN: f64 = 1e-9;
 const MAX_RETRACE_DEPTH: usize = 40;
 const MAX_RETRACE_PARTS: usize = 4096;
 
-/// A stretch of one segment of a chain: a Bézier piece or a part of one.
+/// A Bézier piece of one segment of a chain, or a part of one (a piece halved).
 #[derive(Debug, Clone)]
-pub(crate) struct Stretch {
+pub(crate) struct BezierPiece {
     pub(crate) chain: usize,
     pub(crate) segment: usize,
     /// Where it lies along its chain, in segments (piece `k` of `m` of segment `i` from
@@ -74,14 +74,14 @@ impl Cone {
 /// The stretches of chain `chain`'s segments: one per Bézier piece, in order, but none for
 /// a piece that is a single point (a repeated control point of a polyline spline): its
 /// neighbours become each other's, so that their common end is not taken for a touch.
-pub(crate) fn pieces_of(chain: usize, segments: &[Segment]) -> Vec<Stretch> {
-    let mut out: Vec<Stretch> = Vec::new();
+pub(crate) fn pieces_of(chain: usize, segments: &[Segment]) -> Vec<BezierPiece> {
+    let mut out: Vec<BezierPiece> = Vec::new();
     let mut point_from: Option<f64> = None;
     for (i, seg) in segments.iter().enumerate() {
         let pieces = seg.curve().bezier_pieces();
         let m = pieces.pieces();
         for k in 0..m {
-            let mut s = Stretch::new(
+            let mut s = BezierPiece::new(
                 chain,
                 i,
                 i as f64 + k as f64 / m as f64,
@@ -107,7 +107,7 @@ pub(crate) fn pieces_of(chain: usize, segments: &[Segment]) -> Vec<Stretch> {
     out
 }
 
-impl Stretch {
+impl BezierPiece {
     fn new(chain: usize, segment: usize, lo: f64, hi: f64, depth: usize, coefs: Coefs) -> Self {
         let points: SmallVec<[V2; 8]> = euclidean(&coefs).collect();
         let positive = coefs.chunks_exact(3).all(|c| c[2] > 0.0);
@@ -157,7 +157,7 @@ impl Stretch {
     }
 
     /// The two halves (de Casteljau at the middle of its parameter).
-    pub(crate) fn halves(&self) -> [Stretch; 2] {
+    pub(crate) fn halves(&self) -> [BezierPiece; 2] {
         let n = self.coefs.len() / 3;
         let mut work = self.coefs.clone();
         let mut left = Coefs::from_slice(&work[..3]);
@@ -176,8 +176,8 @@ impl Stretch {
         let middle = 0.5 * (self.lo + self.hi);
         let depth = self.depth + 1;
         [
-            Stretch::new(self.chain, self.segment, self.lo, middle, depth, left),
-            Stretch::new(self.chain, self.segment, middle, self.hi, depth, right),
+            BezierPiece::new(self.chain, self.segment, self.lo, middle, depth, left),
+            BezierPiece::new(self.chain, self.segment, middle, self.hi, depth, right),
         ]
     }
 
@@ -272,7 +272,7 @@ impl Stretch {
     /// Where neighbours `self` and `next`, each within `delta` of its chord, run back along
     /// each other from their common end by more than twice that, within `rounding` (a
     /// retrace at a knot or where a stretch was halved): the far end of the shorter.
-    pub(crate) fn retraced_by(&self, next: &Stretch, delta: f64, rounding: f64) -> Option<V2> {
+    pub(crate) fn retraced_by(&self, next: &BezierPiece, delta: f64, rounding: f64) -> Option<V2> {
         // (The common end: this one's end, or its start across a closed chain's seam.)
         let (common, mine, theirs) =
             if (self.end - next.start).norm() <= (self.start - next.end).norm() {
@@ -295,7 +295,7 @@ impl Stretch {
     }
 
     /// Whether its box and `other`'s meet (a stretch without a box meets every one).
-    pub(crate) fn boxes_meet(&self, other: &Stretch) -> bool {
+    pub(crate) fn boxes_meet(&self, other: &BezierPiece) -> bool {
         match (self.bounds, other.bounds) {
             (Some([a0, a1]), Some([b0, b1])) => {
                 a0.x <= b1.x && b0.x <= a1.x && a0.y <= b1.y && b0.y <= a1.y

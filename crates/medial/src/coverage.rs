@@ -147,7 +147,7 @@ impl Line {
 }
 
 /// One side of an edge (or a node's arc): the stretch of the line its feet cover.
-struct Stretch {
+struct CoveredRun {
     start: f64,
     length: f64,
     /// At each end: the foot, and the axis point's radius and direction from it.
@@ -163,7 +163,7 @@ pub(crate) fn feet_cover(sites: &Sites<'_>, axis: &MedialAxis) -> Result<(), &'s
     let lines: Vec<Line> = (0..sites.boundaries.len())
         .map(|k| Line::new(sites, k))
         .collect();
-    let mut stretches: Vec<Vec<Stretch>> = lines.iter().map(|_| Vec::new()).collect();
+    let mut stretches: Vec<Vec<CoveredRun>> = lines.iter().map(|_| Vec::new()).collect();
     for e in &axis.edges {
         for side in 0..2 {
             let k = e.boundary[0][side];
@@ -225,7 +225,7 @@ fn side_stretches(
     line: &Line,
     e: &crate::Edge,
     side: usize,
-    out: &mut Vec<Stretch>,
+    out: &mut Vec<CoveredRun>,
 ) -> Result<(), &'static str> {
     let k = e.boundary[0][side];
     let foot = |v: usize| V2::from_arr(sites.foot(k, e.feet[v][side]));
@@ -248,13 +248,13 @@ fn side_stretches(
     }
     let ends = [end(0), end(e.xy.len() - 1)];
     out.push(if run >= 0.0 {
-        Stretch {
+        CoveredRun {
             start,
             length: run,
             ends,
         }
     } else {
-        Stretch {
+        CoveredRun {
             start: start + run,
             length: -run,
             ends: [ends[1], ends[0]],
@@ -411,7 +411,7 @@ pub(crate) fn arc_between(sites: &Sites<'_>, k: usize, a: f64, b: f64, x: V2, r:
 
 /// The stretch of the line between the end of stretch `a` and the start of `b`, either way
 /// round (where they overlap, the overlap), as `(lo, hi)`.
-fn between(line: &Line, a: &Stretch, b: &Stretch) -> (f64, f64) {
+fn between(line: &Line, a: &CoveredRun, b: &CoveredRun) -> (f64, f64) {
     let (from, mut to) = (a.start + a.length, b.start);
     if to < from - 0.5 * line.length {
         to += line.length;
@@ -426,7 +426,7 @@ const BETWEEN_SAMPLES: usize = 8;
 /// overlap, between the start of `b` and the end of `a`) stays within `gap` of those ends: two
 /// ends that meet across a slit of the boundary (its sides within `gap`) leave the slit
 /// uncovered all the same.
-fn short_between(sites: &Sites<'_>, line: &Line, a: &Stretch, b: &Stretch, gap: f64) -> bool {
+fn short_between(sites: &Sites<'_>, line: &Line, a: &CoveredRun, b: &CoveredRun, gap: f64) -> bool {
     let (lo, hi) = between(line, a, b);
     (1..BETWEEN_SAMPLES).all(|j| {
         let u = line.param_at(lo + (hi - lo) * j as f64 / BETWEEN_SAMPLES as f64);
@@ -437,7 +437,7 @@ fn short_between(sites: &Sites<'_>, line: &Line, a: &Stretch, b: &Stretch, gap: 
 
 /// Whether a convex corner lies strictly between the end of stretch `a` and the start of
 /// `b` (either way round): the end of a leaf, which two ends meeting there would hide.
-fn convex_between(line: &Line, a: &Stretch, b: &Stretch) -> bool {
+fn convex_between(line: &Line, a: &CoveredRun, b: &CoveredRun) -> bool {
     let (lo, hi) = between(line, a, b);
     line.convex_within(lo, 0.0, hi - lo)
 }
@@ -452,7 +452,12 @@ fn ends_meet(a: (V2, f64, V2), b: (V2, f64, V2), gap: f64) -> bool {
 
 /// The arcs whose centre is a node of the axis at their radius (on the axis's side): the
 /// disk there touches the whole arc, and the edges meeting there start at its ends.
-fn arcs_at_nodes(sites: &Sites<'_>, axis: &MedialAxis, lines: &[Line], out: &mut [Vec<Stretch>]) {
+fn arcs_at_nodes(
+    sites: &Sites<'_>,
+    axis: &MedialAxis,
+    lines: &[Line],
+    out: &mut [Vec<CoveredRun>],
+) {
     let gap = COVER_GAP * sites.size;
     for (k, b) in sites.boundaries.iter().enumerate() {
         for (i, seg) in b.segments().iter().enumerate() {
@@ -467,7 +472,7 @@ fn arcs_at_nodes(sites: &Sites<'_>, axis: &MedialAxis, lines: &[Line], out: &mut
             };
             let (p, q) = (seg.start(), seg.end());
             let x = V2::from_arr(node.xy);
-            out[k].push(Stretch {
+            out[k].push(CoveredRun {
                 start: i as f64 + lines[k].shift[i],
                 length: 1.0,
                 ends: [(p, node.radius, x - p), (q, node.radius, x - q)],

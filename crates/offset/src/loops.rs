@@ -5,11 +5,11 @@ use crate::seams::Seam;
 use crate::walk::{incoming_segment, outgoing_segment, Foot, Walk};
 use std::f64::consts::TAU;
 
-/// A stretch of one boundary, walked from one foot to another (the whole boundary when
+/// A run of one boundary, walked from one foot to another (the whole boundary when
 /// `whole`), `length` in parameter along the walk (taken from the order of the seams' feet, so
 /// that a stretch from a foot round the whole boundary to the same place is the whole length).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Stretch {
+pub(crate) struct BoundaryRun {
     pub(crate) boundary: usize,
     pub(crate) from: Foot,
     pub(crate) to: Foot,
@@ -20,7 +20,7 @@ pub(crate) struct Stretch {
 /// The loops, and whether the seams made sense together (each kept stretch begins at a seam
 /// and ends at the next one along its boundary).
 pub(crate) struct Loops {
-    pub(crate) loops: Vec<Vec<Stretch>>,
+    pub(crate) loops: Vec<Vec<BoundaryRun>>,
     pub(crate) consistent: bool,
 }
 
@@ -50,7 +50,7 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
     }
     let mut consistent = true;
     // The stretch beginning at each (seam, side), and the (seam, side) it ends at.
-    let mut stretch_at = vec![[None::<(Stretch, (usize, usize))>; 2]; seams.len()];
+    let mut stretch_at = vec![[None::<(BoundaryRun, (usize, usize))>; 2]; seams.len()];
     let mut loops = Vec::new();
     for (b, list) in events.iter_mut().enumerate() {
         if list.is_empty() {
@@ -66,7 +66,7 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
                         u: walks[b].period,
                     }
                 };
-                loops.push(vec![Stretch {
+                loops.push(vec![BoundaryRun {
                     boundary: b,
                     from: start,
                     to: start,
@@ -100,7 +100,7 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
             if at <= k && length == 0.0 {
                 length = period;
             }
-            let stretch = Stretch {
+            let stretch = BoundaryRun {
                 boundary: b,
                 from: seams[e.seam].feet[e.side].1,
                 to: seams[next.seam].feet[next.side].1,

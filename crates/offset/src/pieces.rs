@@ -2,7 +2,7 @@
 //! arc of an arc, a curve within the chord tolerance of a spline's) and, at each reflex
 //! corner it passes, the arc about the corner.
 
-use crate::loops::Stretch;
+use crate::loops::BoundaryRun;
 use crate::spline_offset::spline_offset;
 use crate::walk::{incoming_segment, outgoing_segment};
 use crate::walk::{Foot, Walk};
@@ -15,7 +15,7 @@ use std::f64::consts::TAU;
 /// raising `error`.
 pub(crate) fn pieces(
     walk: &Walk<'_>,
-    stretch: &Stretch,
+    stretch: &BoundaryRun,
     d: f64,
     chord: f64,
     out: &mut Vec<OffsetSegment>,

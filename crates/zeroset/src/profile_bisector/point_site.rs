@@ -17,7 +17,7 @@
 //! points, cut by both cones.
 
 use super::polyline::{sample_runs, Run};
-use super::stretches::{Cut, Cuts, Stretch};
+use super::stretches::{Cut, Cuts, FiniteSpan};
 use crate::bisector::Side;
 use crate::error::Result;
 use bspline::roots::RootOptions;
@@ -247,7 +247,7 @@ impl Parts {
 
     /// The stretches where the foot counts (inside the cone, bisector point finite), each
     /// maximal.
-    fn stretches(&self, opts: &RootOptions, side: Option<Side>) -> Result<Vec<Stretch>> {
+    fn stretches(&self, opts: &RootOptions, side: Option<Side>) -> Result<Vec<FiniteSpan>> {
         let (Some(first), Some(last)) = (self.pieces.first(), self.pieces.last()) else {
             return Ok(Vec::new());
         };

@@ -6,9 +6,9 @@ use crate::error::Result;
 use bspline::roots::{find_roots_in, RootOptions};
 use bspline::Piecewise;
 
-/// A stretch of the domain on which the foot counts and the bisector point is finite.
+/// A span of the domain on which the foot counts and the bisector point is finite.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Stretch {
+pub(crate) struct FiniteSpan {
     pub(crate) from: f64,
     pub(crate) to: f64,
 }
@@ -67,7 +67,7 @@ impl Cuts {
 
     /// The maximal stretches where `counts` holds at the middle of a window between cuts;
     /// neighbouring windows join unless a jump or a pole separates them.
-    pub(crate) fn stretches(mut self, counts: impl Fn(f64) -> bool) -> Vec<Stretch> {
+    pub(crate) fn stretches(mut self, counts: impl Fn(f64) -> bool) -> Vec<FiniteSpan> {
         // Sorted, one entry per value: the strongest cut there.
         self.list
             .sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
@@ -78,7 +78,7 @@ impl Cuts {
             }
             same
         });
-        let mut out: Vec<Stretch> = Vec::new();
+        let mut out: Vec<FiniteSpan> = Vec::new();
         let mut open = false; // the last window counted and reached the current cut
         for pair in self.list.windows(2) {
             let ((x0, cut0), (x1, _)) = (pair[0], pair[1]);
@@ -86,7 +86,7 @@ impl Cuts {
             let keep = !self.poles.iter().any(|&(a, b)| a <= mid && mid <= b) && counts(mid);
             match out.last_mut() {
                 Some(last) if keep && open && cut0 == Cut::Sign => last.to = x1,
-                _ if keep => out.push(Stretch { from: x0, to: x1 }),
+                _ if keep => out.push(FiniteSpan { from: x0, to: x1 }),
                 _ => {}
             }
             open = keep;
@@ -114,7 +114,7 @@ mod tests {
         cuts.add_roots(&f, 0.0, 1.0, Cut::Sign).unwrap();
         // Counts everywhere: one stretch, the roots joined over.
         let all = cuts.clone().stretches(|_| true);
-        assert_eq!(all, vec![Stretch { from: 0.0, to: 1.0 }]);
+        assert_eq!(all, vec![FiniteSpan { from: 0.0, to: 1.0 }]);
         // Counts where f is negative: the middle window.
         let mid = cuts.stretches(|u| (u - 0.25) * (u - 0.75) < 0.0);
         assert_eq!(mid.len(), 1);

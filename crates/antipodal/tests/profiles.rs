@@ -5,46 +5,18 @@
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 use antipodal::{profile_inflections, CornerKind, Options, Profile, Segment};
-use curve::{ParamCurve, SegmentKind, SplineCurve, V2};
+use curve::{ParamCurve, SegmentKind, SplineCurve};
 use proptest::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// A closed chain of `n` cubic Béziers round a star: joint `i` at radius `radii[i]` and angle
-/// `2πi/n`, inner control points from `wobble`; a joint is smooth (G1: the control points
-/// beside it collinear with it) where `smooth[i]`.
+/// A closed chain of cubic Béziers round a star ([`testkit::profiles::bezier_chain`]), run
+/// backwards when `reverse`; `None` where a wobble makes it cross itself.
 fn chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool], reverse: bool) -> Option<Profile> {
-    let n = radii.len();
-    let joint =
-        |i: usize| V2::polar(std::f64::consts::TAU * (i % n) as f64 / n as f64) * radii[i % n];
-    // Per joint, the tangent direction used where it is smooth.
-    let dir = |i: usize| (joint(i + 1) - joint(i + n - 1)).unit();
-    let mut segs = Vec::new();
-    for i in 0..n {
-        let (a, b) = (joint(i), joint(i + 1));
-        let len = (b - a).norm();
-        let (w0, w1) = wobble[i];
-        let c1 = if smooth[i] {
-            a + dir(i) * (0.3 * len)
-        } else {
-            a + (b - a) * 0.3 + (b - a).perp() * w0
-        };
-        let c2 = if smooth[(i + 1) % n] {
-            b - dir(i + 1) * (0.3 * len)
-        } else {
-            a + (b - a) * 0.7 + (b - a).perp() * w1
-        };
-        let mut pts = vec![a.arr(), c1.arr(), c2.arr(), b.arr()];
-        if reverse {
-            pts.reverse();
-        }
-        let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
-        segs.push(Segment::spline(SegmentKind::Bezier, c).unwrap());
-    }
-    if reverse {
-        segs.reverse();
-    }
-    // (A wobble may make the chain cross itself: no profile.)
-    Profile::new(segs, None).ok()
+    testkit::profiles::assemble(
+        testkit::profiles::bezier_chain(radii, wobble, smooth)?,
+        0,
+        reverse,
+    )
 }
 
 /// Sign changes of the curvature by dense sampling: inside each segment, and across smooth

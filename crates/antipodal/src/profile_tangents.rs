@@ -29,14 +29,14 @@ pub const MAX_SEGMENT_PAIRS: usize = 40_000;
 const SAME_LINE: f64 = 1e-7;
 
 /// A corner in the frame: where, and its incoming and outgoing unit tangents.
-struct Corner {
+struct ConeCorner {
     u: f64,
     segment: usize,
     at: V2,
     tangents: [V2; 2],
 }
 
-impl Corner {
+impl ConeCorner {
     /// Whether the line along `d` (either way) lies strictly inside the tangent cone.
     fn holds(&self, d: V2) -> bool {
         let [tin, tout] = self.tangents;
@@ -57,7 +57,7 @@ impl Corner {
 struct Side<'p> {
     profile: &'p Profile,
     curves: Vec<SplineCurve>,
-    corners: Vec<Corner>,
+    corners: Vec<ConeCorner>,
 }
 
 impl<'p> Side<'p> {
@@ -80,7 +80,7 @@ impl<'p> Side<'p> {
                     segs[i].start_direction()?,
                 );
                 let c = &curves[i];
-                Some(Corner {
+                Some(ConeCorner {
                     u: j.u,
                     segment: i,
                     at: c.jet(c.domain().0).p,

@@ -17,7 +17,7 @@
 
 use crate::coverage::FOOT_AT_REFLEX_CORNER;
 use crate::sites::Sites;
-use crate::true_sites::{ArcSite, LineSite, Shape};
+use crate::true_sites::{ArcSite, LineSite, SiteShape};
 use curve::{JointKind, SegmentKind, V2};
 use numeric::rounding::ulps;
 
@@ -70,7 +70,7 @@ impl ClosedSite {
                 let r = (x - centre).norm();
                 let error = ulps(DISTANCE_ULPS) * (r + radius);
                 let reach = std::f64::consts::SQRT_2 * h;
-                let (distance, gradient) = Shape::Round {
+                let (distance, gradient) = SiteShape::Round {
                     centre,
                     radius,
                     side,

@@ -5,7 +5,7 @@
 //! ([`crate::pairwise_axis`]) give the topology; both hand their nodes and edges here.
 //!
 //! The bisector of two lines or two points is straight, any other a conic, whose points come
-//! in closed form from the feet on one of its sites ([`Shape::radius_on_ray`]). Every disk
+//! in closed form from the feet on one of its sites ([`SiteShape::radius_on_ray`]). Every disk
 //! of an edge is tested for emptiness and every foot for lying on its segment, as on the
 //! other paths.
 
@@ -16,7 +16,7 @@ mod nodes;
 use crate::candidates::Candidate;
 use crate::sites::Sites;
 use crate::stretches::Stretch;
-use crate::true_sites::{ArcSite, LineSite, Shape, TrueSite};
+use crate::true_sites::{ArcSite, LineSite, SiteShape, TrueSite};
 use curve::{JointKind, SegmentKind, V2};
 use empty_disks::on_its_circle;
 use std::collections::HashSet;
@@ -51,18 +51,18 @@ pub(crate) enum Equation {
 
 /// One segment of a boundary, in closed form.
 #[derive(Debug, Clone, Copy)]
-enum Piece {
+enum ClosedFormSegment {
     Line(LineSite),
     Arc { arc: ArcSite, start: V2, end: V2 },
 }
 
-impl Piece {
+impl ClosedFormSegment {
     /// Whether the foot of `x` on the piece's line or circle falls on the piece (else the
     /// piece's nearest point to `x` is one of its ends).
     fn falls_on(&self, x: V2) -> bool {
         match self {
-            Piece::Line(l) => (0.0..=l.length).contains(&l.along.dot(x - l.start)),
-            Piece::Arc { arc, .. } => arc.spans(x - arc.centre),
+            ClosedFormSegment::Line(l) => (0.0..=l.length).contains(&l.along.dot(x - l.start)),
+            ClosedFormSegment::Arc { arc, .. } => arc.spans(x - arc.centre),
         }
     }
 }
@@ -88,7 +88,7 @@ pub(crate) struct Traced {
 /// closed form.
 pub(crate) struct LinesAndArcs<'s, 'a> {
     pub(crate) sites: &'s Sites<'a>,
-    pieces: Vec<Vec<Piece>>,
+    pieces: Vec<Vec<ClosedFormSegment>>,
     /// The chord tolerance of the edges (a length).
     chord_tol: f64,
     /// Whether the boundaries have so few segments that a disk is tested on each in closed
@@ -110,10 +110,12 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                     .map(|i| {
                         let s = &b.segments()[i];
                         Some(match s.kind() {
-                            SegmentKind::Line => {
-                                Piece::Line(LineSite::new(s.start(), s.end(), inside_left))
-                            }
-                            SegmentKind::Arc => Piece::Arc {
+                            SegmentKind::Line => ClosedFormSegment::Line(LineSite::new(
+                                s.start(),
+                                s.end(),
+                                inside_left,
+                            )),
+                            SegmentKind::Arc => ClosedFormSegment::Arc {
                                 arc: ArcSite::new(b, i, inside_left)?,
                                 start: s.start(),
                                 end: s.end(),
@@ -121,7 +123,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
                             _ => return None,
                         })
                     })
-                    .collect::<Option<Vec<Piece>>>()
+                    .collect::<Option<Vec<ClosedFormSegment>>>()
             })
             .collect::<Option<Vec<_>>>()?;
         let segments: usize = pieces.iter().map(Vec::len).sum();
@@ -194,14 +196,14 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
             .is_ok_and(|at| profile.joints()[at].kind == JointKind::Smooth)
     }
 
-    fn piece(&self, s: TrueSite) -> &Piece {
+    fn piece(&self, s: TrueSite) -> &ClosedFormSegment {
         &self.pieces[s.boundary][s.segment]
     }
 
     /// The line of site `s`, if it is one (not a corner).
     pub(crate) fn line(&self, s: TrueSite) -> Option<&LineSite> {
         match self.piece(s) {
-            Piece::Line(l) if !s.corner => Some(l),
+            ClosedFormSegment::Line(l) if !s.corner => Some(l),
             _ => None,
         }
     }
@@ -209,7 +211,7 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
     /// The arc of site `s`, if it is one (not a corner).
     pub(crate) fn arc(&self, s: TrueSite) -> Option<ArcSite> {
         match self.piece(s) {
-            Piece::Arc { arc, .. } if !s.corner => Some(*arc),
+            ClosedFormSegment::Arc { arc, .. } if !s.corner => Some(*arc),
             _ => None,
         }
     }
@@ -217,27 +219,27 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
     /// Where the segment of `s` starts (a corner's point).
     pub(crate) fn start(&self, s: TrueSite) -> V2 {
         match self.piece(s) {
-            Piece::Line(l) => l.start,
-            Piece::Arc { start, .. } => *start,
+            ClosedFormSegment::Line(l) => l.start,
+            ClosedFormSegment::Arc { start, .. } => *start,
         }
     }
 
     /// The unit tangent of the segment of `s` at `at`, one of its points.
     pub(crate) fn tangent_at(&self, s: TrueSite, at: V2) -> V2 {
         match self.piece(s) {
-            Piece::Line(l) => l.along,
-            Piece::Arc { arc, .. } => (at - arc.centre).perp() * (1.0 / arc.radius),
+            ClosedFormSegment::Line(l) => l.along,
+            ClosedFormSegment::Arc { arc, .. } => (at - arc.centre).perp() * (1.0 / arc.radius),
         }
     }
 
     /// The shape of site `s`.
-    pub(crate) fn shape(&self, s: TrueSite) -> Shape {
+    pub(crate) fn shape(&self, s: TrueSite) -> SiteShape {
         if s.corner {
-            return Shape::point(self.start(s));
+            return SiteShape::point(self.start(s));
         }
         match self.piece(s) {
-            Piece::Line(l) => Shape::Line(*l),
-            Piece::Arc { arc, .. } => Shape::Round {
+            ClosedFormSegment::Line(l) => SiteShape::Line(*l),
+            ClosedFormSegment::Arc { arc, .. } => SiteShape::Round {
                 centre: arc.centre,
                 radius: arc.radius,
                 side: arc.side,
@@ -265,12 +267,12 @@ impl<'s, 'a> LinesAndArcs<'s, 'a> {
         let slack = FOOT_SLACK * self.sites.size;
         let base = s.segment as f64;
         match self.piece(s) {
-            Piece::Line(l) => {
+            ClosedFormSegment::Line(l) => {
                 let along = l.along.dot(x - l.start);
                 (along >= -slack && along <= l.length + slack)
                     .then(|| base + (along / l.length).clamp(0.0, 1.0))
             }
-            Piece::Arc { arc, .. } => {
+            ClosedFormSegment::Arc { arc, .. } => {
                 let angle = arc.angle_from_start(x);
                 let slack = slack / arc.radius;
                 (angle >= -slack && angle <= arc.sweep() + slack)

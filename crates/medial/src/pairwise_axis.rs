@@ -6,7 +6,7 @@
 //! the whole axis (about 20 µs a chord, and one round hole takes dozens of chords), and the
 //! quadtree's pairs trace B-spline bisectors. Here every distance is in closed form. Along
 //! the normal ray at a foot on one site of a pair, the bisector's point comes from the other
-//! site ([`crate::true_sites::Shape::radius_on_ray`]); its disk is empty where every other
+//! site ([`crate::true_sites::SiteShape::radius_on_ray`]); its disk is empty where every other
 //! site is as far as the feet. A segment's distance counts only where its foot falls on it:
 //! the boundary's distance is the least of those and the joints'. The kept stretches of a
 //! pair are found on samples of its feet and their ends by bisection; each end is solved as

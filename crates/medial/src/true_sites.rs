@@ -156,7 +156,7 @@ impl ArcSite {
     }
 
     /// The direction (an angle from the x axis) from the centre to the point at `angle`
-    /// from the arc's start: the foot parameter of [`Shape::ray`] there.
+    /// from the arc's start: the foot parameter of [`SiteShape::ray`] there.
     pub(crate) fn direction_at(&self, angle: f64) -> f64 {
         self.start_angle + self.turn * angle
     }
@@ -173,15 +173,15 @@ impl ArcSite {
 /// The geometry of a true site: a line, or a circle of radius `radius` about `centre` (a
 /// corner is one of radius nil) with the axis on side `side` of it (see [`ArcSite::side`]).
 #[derive(Debug, Clone, Copy)]
-pub(crate) enum Shape {
+pub(crate) enum SiteShape {
     Line(LineSite),
     Round { centre: V2, radius: f64, side: f64 },
 }
 
-impl Shape {
+impl SiteShape {
     /// A corner at `at`, as a site.
     pub(crate) fn point(at: V2) -> Self {
-        Shape::Round {
+        SiteShape::Round {
             centre: at,
             radius: 0.0,
             side: 1.0,
@@ -192,8 +192,8 @@ impl Shape {
     /// number at a round site's centre).
     pub(crate) fn distance(&self, x: V2) -> (f64, V2) {
         match *self {
-            Shape::Line(l) => (l.inward.dot(x - l.start), l.inward),
-            Shape::Round {
+            SiteShape::Line(l) => (l.inward.dot(x - l.start), l.inward),
+            SiteShape::Round {
                 centre,
                 radius,
                 side,
@@ -209,8 +209,8 @@ impl Shape {
     /// length along it from its start, a round site's angle.
     pub(crate) fn ray(&self, t: f64) -> (V2, V2) {
         match *self {
-            Shape::Line(l) => (l.start + l.along * t, l.inward),
-            Shape::Round {
+            SiteShape::Line(l) => (l.start + l.along * t, l.inward),
+            SiteShape::Round {
                 centre,
                 radius,
                 side,
@@ -221,11 +221,11 @@ impl Shape {
         }
     }
 
-    /// The foot parameter of `x` (see [`Shape::ray`]).
+    /// The foot parameter of `x` (see [`SiteShape::ray`]).
     pub(crate) fn param_of(&self, x: V2) -> f64 {
         match *self {
-            Shape::Line(l) => l.along.dot(x - l.start),
-            Shape::Round { centre, .. } => (x - centre).angle(),
+            SiteShape::Line(l) => l.along.dot(x - l.start),
+            SiteShape::Round { centre, .. } => (x - centre).angle(),
         }
     }
 
@@ -235,9 +235,9 @@ impl Shape {
     pub(crate) fn radius_on_ray(&self, foot: V2, normal: V2) -> Option<f64> {
         let rho = match *self {
             // inward · (foot + ρ normal − start) = ρ
-            Shape::Line(l) => l.inward.dot(foot - l.start) / (1.0 - l.inward.dot(normal)),
+            SiteShape::Line(l) => l.inward.dot(foot - l.start) / (1.0 - l.inward.dot(normal)),
             // |foot + ρ normal − centre|² = (radius + side ρ)²: the squares of ρ cancel.
-            Shape::Round {
+            SiteShape::Round {
                 centre,
                 radius,
                 side,
@@ -247,8 +247,8 @@ impl Shape {
             }
         };
         let beyond = match *self {
-            Shape::Line(_) => false,
-            Shape::Round { radius, side, .. } => radius + side * rho < 0.0,
+            SiteShape::Line(_) => false,
+            SiteShape::Round { radius, side, .. } => radius + side * rho < 0.0,
         };
         (rho.is_finite() && rho >= 0.0 && !beyond).then_some(rho)
     }
@@ -257,8 +257,8 @@ impl Shape {
     /// round site's centre); a line's feet are defined everywhere.
     pub(crate) fn param_room(&self, x: V2) -> f64 {
         match *self {
-            Shape::Line(_) => f64::INFINITY,
-            Shape::Round { centre, .. } => (x - centre).norm(),
+            SiteShape::Line(_) => f64::INFINITY,
+            SiteShape::Round { centre, .. } => (x - centre).norm(),
         }
     }
 }
@@ -268,7 +268,7 @@ mod tests {
     use super::*;
 
     proptest::proptest! {
-        /// Along any normal ray of one site, the point [`Shape::radius_on_ray`] gives is as
+        /// Along any normal ray of one site, the point [`SiteShape::radius_on_ray`] gives is as
         /// far from the other site (by its distance) as from the ray's foot, for every pair
         /// of lines, circles either side and points.
         #[test]
@@ -279,10 +279,10 @@ mod tests {
             t in 0.0f64..6.3,
         ) {
             let shape = |k: usize, c: [f64; 2], r: f64| match k {
-                0 => Shape::Line(LineSite::new(V2::from_arr(c), V2::from_arr(c) + V2::polar(r * 3.0), 1.0)),
-                1 => Shape::point(V2::from_arr(c)),
-                2 => Shape::Round { centre: V2::from_arr(c), radius: r, side: 1.0 },
-                _ => Shape::Round { centre: V2::from_arr(c), radius: r, side: -1.0 },
+                0 => SiteShape::Line(LineSite::new(V2::from_arr(c), V2::from_arr(c) + V2::polar(r * 3.0), 1.0)),
+                1 => SiteShape::point(V2::from_arr(c)),
+                2 => SiteShape::Round { centre: V2::from_arr(c), radius: r, side: 1.0 },
+                _ => SiteShape::Round { centre: V2::from_arr(c), radius: r, side: -1.0 },
             };
             let a = shape(kinds[0], [c[0], c[1]], r[0]);
             let b = shape(kinds[1], [c[2], c[3]], r[1]);
@@ -292,10 +292,10 @@ mod tests {
                 let scale = 1.0 + rho + x.norm();
                 testkit::prop_assert_near!(b.distance(x).0, rho, 1e-9 * scale);
                 // (On a circle's near side of its centre, the foot's own distance is ρ too.)
-                if a.param_room(x) > 1e-6 && !matches!(a, Shape::Round { side, radius, .. } if side < 0.0 && rho > radius) {
+                if a.param_room(x) > 1e-6 && !matches!(a, SiteShape::Round { side, radius, .. } if side < 0.0 && rho > radius) {
                     testkit::prop_assert_near!(a.distance(x).0, rho, 1e-9 * scale);
                     let back = a.ray(a.param_of(x)).0;
-                    if !matches!(a, Shape::Line(_)) && a.param_room(x) > 1e-3 {
+                    if !matches!(a, SiteShape::Line(_)) && a.param_room(x) > 1e-3 {
                         proptest::prop_assert!((back - foot).norm() <= 1e-8 * scale);
                     }
                 }

@@ -174,7 +174,7 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
 
 /// A run of axis points `(xy, radius)`, and the nodes it starts and ends at (`None` where it
 /// was clipped).
-struct Piece {
+struct AxisRun {
     points: Vec<([f64; 2], f64)>,
     ends: [Option<usize>; 2],
 }
@@ -182,7 +182,7 @@ struct Piece {
 /// The runs of the axis's edges where the radius is at most `widest`, each cut where it
 /// crosses `widest` (between two vertices, linearly: the polyline is the axis within its
 /// chord tolerance, and the radius along it).
-fn clipped_pieces(axis: &MedialAxis, widest: f64) -> Vec<Piece> {
+fn clipped_pieces(axis: &MedialAxis, widest: f64) -> Vec<AxisRun> {
     let mut pieces = Vec::new();
     for e in &axis.edges {
         let n = e.xy.len().min(e.radius.len());
@@ -207,7 +207,7 @@ fn clipped_pieces(axis: &MedialAxis, widest: f64) -> Vec<Piece> {
                 // (A vertex exactly at the widest disk between two beyond it is no path:
                 // the flat pass goes through it.)
                 if run.len() >= 2 {
-                    pieces.push(Piece {
+                    pieces.push(AxisRun {
                         points: std::mem::take(&mut run),
                         ends: [start, None],
                     });
@@ -216,7 +216,7 @@ fn clipped_pieces(axis: &MedialAxis, widest: f64) -> Vec<Piece> {
             }
         }
         if run.len() >= 2 {
-            pieces.push(Piece {
+            pieces.push(AxisRun {
                 points: run,
                 ends: [start, Some(e.to)],
             });
@@ -227,7 +227,7 @@ fn clipped_pieces(axis: &MedialAxis, widest: f64) -> Vec<Piece> {
         axis.edges.iter().flat_map(|e| [e.from, e.to]).collect();
     for n in &axis.nodes {
         if !reached.contains(&n.id) && n.radius <= widest {
-            pieces.push(Piece {
+            pieces.push(AxisRun {
                 points: vec![(n.xy, n.radius)],
                 ends: [None, None],
             });
@@ -252,7 +252,7 @@ fn crossing(a: ([f64; 2], f64), b: ([f64; 2], f64), widest: f64) -> ([f64; 2], f
 /// The pieces joined end to end through the nodes they share, so that the tool lifts less:
 /// each path starts with the first piece not yet cut and goes on, at its end node, along the
 /// first piece there not yet cut (turned round where it ends there), as long as there is one.
-fn chained(pieces: Vec<Piece>) -> Vec<Vec<([f64; 2], f64)>> {
+fn chained(pieces: Vec<AxisRun>) -> Vec<Vec<([f64; 2], f64)>> {
     let mut at_node: std::collections::HashMap<usize, Vec<usize>> = Default::default();
     for (i, p) in pieces.iter().enumerate() {
         for node in p.ends.iter().flatten() {

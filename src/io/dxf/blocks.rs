@@ -257,7 +257,7 @@ impl Reader<'_, '_> {
     ) -> Result<(), Failure> {
         let at = |(what, p): EntityError| named(&name, what, p);
         match shape_of(e, r).map_err(at)? {
-            Outcome::Shape(shape) => {
+            Outcome::EntityShape(shape) => {
                 let shape = shape.moved(&place.map).map_err(at)?;
                 if !place.blocks.is_empty() {
                     self.charge(shape.points(), &name)?;

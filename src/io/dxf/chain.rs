@@ -1,7 +1,7 @@
 //! Chaining: the drawing's open pieces joined end to end into chains, with branch points and
 //! near-miss gaps refused.
 
-use super::pieces::{Piece, Tolerance};
+use super::pieces::{DrawingPiece, Tolerance};
 use super::Failure;
 use crate::io::drawing::Chain;
 use crate::io::Problem;
@@ -107,11 +107,11 @@ fn point_text(p: V2) -> String {
 
 /// The chains of the drawing's pieces (see the module documentation).
 pub(super) fn chain_pieces(
-    pieces: Vec<Option<Piece>>,
+    pieces: Vec<Option<DrawingPiece>>,
     tol: &Tolerance,
 ) -> Result<Vec<Chain>, Failure> {
     let mut chains: Vec<(usize, Chain)> = Vec::new();
-    let mut open: Vec<Piece> = Vec::new();
+    let mut open: Vec<DrawingPiece> = Vec::new();
     for p in pieces.into_iter().flatten() {
         match p.closed {
             Some(false) => open.push(p),
@@ -346,8 +346,8 @@ mod tests {
     use super::*;
 
     /// A piece of one segment.
-    fn piece(order: usize, seg: Segment) -> Option<Piece> {
-        Some(Piece {
+    fn piece(order: usize, seg: Segment) -> Option<DrawingPiece> {
+        Some(DrawingPiece {
             order,
             name: format!("LINE #{}", order + 1),
             start: seg.start(),

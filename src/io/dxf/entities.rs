@@ -30,7 +30,7 @@ pub(super) const MIRROR: Affine = Affine([-1.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
 
 /// An entity's geometry, before the drawing's tolerance is known.
 #[derive(Debug)]
-pub(super) enum Shape {
+pub(super) enum EntityShape {
     /// One segment: open (joined to others) or closed (a profile by itself); `flagged`: a
     /// spline flagged closed or periodic, which must end where it starts.
     Segment {
@@ -47,26 +47,26 @@ pub(super) enum Shape {
     },
 }
 
-impl Shape {
+impl EntityShape {
     /// The shape moved by `map` (a block reference's transform), its points checked to stay
     /// finite and at most [`MAX_ABS`].
-    pub(super) fn moved(self, map: &Affine) -> Result<Shape, EntityError> {
+    pub(super) fn moved(self, map: &Affine) -> Result<EntityShape, EntityError> {
         if *map == Affine::IDENTITY {
             return Ok(self);
         }
         Ok(match self {
-            Shape::Segment { segment, flagged } => {
+            EntityShape::Segment { segment, flagged } => {
                 let segment = segment.transformed(map).map_err(|e| curve_error("", e))?;
                 for p in segment.curve().control_points() {
                     number("", p[0])?;
                     number("", p[1])?;
                 }
-                Shape::Segment {
+                EntityShape::Segment {
                     segment: Box::new(segment),
                     flagged,
                 }
             }
-            Shape::Polyline {
+            EntityShape::Polyline {
                 vertices,
                 map: ocs,
                 closed,
@@ -77,7 +77,7 @@ impl Shape {
                     number("", x)?;
                     number("", y)?;
                 }
-                Shape::Polyline {
+                EntityShape::Polyline {
                     vertices,
                     map,
                     closed,
@@ -89,8 +89,8 @@ impl Shape {
     /// How many points it holds (vertices, control points): the work of placing it.
     pub(super) fn points(&self) -> usize {
         match self {
-            Shape::Segment { segment, .. } => segment.curve().control_points().len(),
-            Shape::Polyline { vertices, .. } => vertices.len(),
+            EntityShape::Segment { segment, .. } => segment.curve().control_points().len(),
+            EntityShape::Polyline { vertices, .. } => vertices.len(),
         }
     }
 }
@@ -99,7 +99,7 @@ impl Shape {
 #[derive(Debug)]
 pub(super) enum Outcome {
     /// Its shape.
-    Shape(Shape),
+    EntityShape(EntityShape),
     /// Nothing drawn: a line of no length, a polyline of one vertex.
     Nothing,
     /// Not read: `outline` if it could be part of an outline, and why (after its name: `is a
@@ -112,7 +112,7 @@ pub(super) enum Outcome {
 pub(super) struct Item {
     pub(super) order: usize,
     pub(super) name: String,
-    pub(super) shape: Shape,
+    pub(super) shape: EntityShape,
 }
 
 /// The error of a field of the entity being read: (what, problem); `what` is empty for the
@@ -235,7 +235,7 @@ fn placed(seg: Segment, mirror: bool) -> Result<Segment, EntityError> {
 }
 
 fn segment(segment: Segment) -> Outcome {
-    Outcome::Shape(Shape::Segment {
+    Outcome::EntityShape(EntityShape::Segment {
         segment: Box::new(segment),
         flagged: false,
     })
@@ -343,7 +343,7 @@ pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, 
         }
         EntityType::Spline(_) => match spline(&record.groups)? {
             Spline::Read { segment, flagged } => {
-                Outcome::Shape(Shape::Segment { segment, flagged })
+                Outcome::EntityShape(EntityShape::Segment { segment, flagged })
             }
             Spline::Off(why) => off(why),
         },
@@ -377,7 +377,7 @@ fn polyline(
         return Ok(Outcome::Nothing);
     }
     let map = if mirrored { MIRROR } else { Affine::IDENTITY };
-    Ok(Outcome::Shape(Shape::Polyline {
+    Ok(Outcome::EntityShape(EntityShape::Polyline {
         vertices,
         map,
         closed,

@@ -1,7 +1,7 @@
 //! The drawing's tolerance, and each entity's piece: its segments, closed by itself or with
 //! open ends to join.
 
-use super::entities::{curve_error, geometry, EntityError, Item, Shape};
+use super::entities::{curve_error, geometry, EntityError, EntityShape, Item};
 use super::Failure;
 use curve::{Affine, Segment, SegmentKind, JOIN_GAP, V2};
 use numeric::rounding::ulps;
@@ -46,12 +46,12 @@ impl Tolerance {
         };
         for item in items {
             match &item.shape {
-                Shape::Segment { segment, .. } => segment
+                EntityShape::Segment { segment, .. } => segment
                     .curve()
                     .control_points()
                     .into_iter()
                     .for_each(&mut add),
-                Shape::Polyline { vertices, map, .. } => {
+                EntityShape::Polyline { vertices, map, .. } => {
                     for (i, &(p, b)) in vertices.iter().enumerate() {
                         add(map.apply(p));
                         if let Some(&(q, _)) = vertices.get(i + 1).or(vertices.first()) {
@@ -89,7 +89,7 @@ pub(super) fn bulge_middle(p: [f64; 2], q: [f64; 2], b: f64) -> [f64; 2] {
 
 /// A piece of the drawing: segments in order, closed by itself or with open ends.
 #[derive(Debug)]
-pub(super) struct Piece {
+pub(super) struct DrawingPiece {
     pub(super) order: usize,
     pub(super) name: String,
     pub(super) segments: Vec<Segment>,
@@ -103,7 +103,7 @@ pub(super) struct Piece {
 
 impl Item {
     /// The piece, with zero-length lines and polyline pieces (within `tol`) left out.
-    pub(super) fn piece(self, tol: f64) -> Result<Option<Piece>, Failure> {
+    pub(super) fn piece(self, tol: f64) -> Result<Option<DrawingPiece>, Failure> {
         let name = self.name;
         let at = |(what, p): EntityError| {
             let field = if what.is_empty() {
@@ -114,7 +114,7 @@ impl Item {
             (field, p)
         };
         let (segments, closed) = match self.shape {
-            Shape::Segment { segment, flagged } => {
+            EntityShape::Segment { segment, flagged } => {
                 let gap = (segment.end() - segment.start()).norm();
                 if segment.kind() == SegmentKind::Line && gap <= tol {
                     return Ok(None);
@@ -130,7 +130,7 @@ impl Item {
                 }
                 (vec![*segment], Some(gap <= tol))
             }
-            Shape::Polyline {
+            EntityShape::Polyline {
                 vertices,
                 map,
                 closed,
@@ -152,7 +152,7 @@ impl Item {
             return Ok(None);
         };
         let (start, end) = (first.start(), last.end());
-        Ok(Some(Piece {
+        Ok(Some(DrawingPiece {
             order: self.order,
             name,
             segments,
@@ -245,7 +245,7 @@ mod tests {
         let item = |seg: Segment| Item {
             order: 0,
             name: String::new(),
-            shape: Shape::Segment {
+            shape: EntityShape::Segment {
                 segment: Box::new(seg),
                 flagged: false,
             },

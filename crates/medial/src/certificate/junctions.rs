@@ -140,7 +140,7 @@ impl Contact {
 /// A corner of the polygon about the junction: its angle, point and the enclosures of the
 /// map's two components there.
 #[derive(Clone, Copy)]
-struct Corner {
+struct RingCorner {
     angle: f64,
     xy: [f64; 2],
     map: [[f64; 2]; 2],
@@ -149,7 +149,7 @@ struct Corner {
     passed: bool,
 }
 
-impl Corner {
+impl RingCorner {
     /// The quadrant of the map's value (0 to 3, counterclockwise from both positive), if
     /// both components are proven of one sign.
     fn quadrant(&self) -> Option<i32> {
@@ -188,14 +188,14 @@ fn winds_round_zero(
         return false; // (the map's sign then holds at too few of the polygon's corners)
     }
     let most_corners = polygon.most_corners;
-    let corner = |angle: f64| -> Option<Corner> {
+    let corner = |angle: f64| -> Option<RingCorner> {
         let xy = [centre[0] + h * angle.cos(), centre[1] + h * angle.sin()];
         let d: Vec<[f64; 2]> = contacts
             .iter()
             .map(|c| c.enclose(sites, xy, room))
             .collect::<Option<_>>()?;
         let minus = |a: [f64; 2], b: [f64; 2]| [a[0] - b[1], a[1] - b[0]];
-        Some(Corner {
+        Some(RingCorner {
             angle,
             xy,
             map: [minus(d[0], d[1]), minus(d[0], d[2])],
@@ -203,7 +203,7 @@ fn winds_round_zero(
         })
     };
     let tau = std::f64::consts::TAU;
-    let mut ring: Vec<Corner> = Vec::with_capacity(most_corners);
+    let mut ring: Vec<RingCorner> = Vec::with_capacity(most_corners);
     for k in 0..FIRST_CORNERS {
         match corner(tau * k as f64 / FIRST_CORNERS as f64) {
             Some(c) => ring.push(c),
@@ -238,7 +238,7 @@ fn winds_round_zero(
         if let Some(j) = lacking {
             let n = ring.len();
             let (p, x, q) = (&ring[(j + n - 1) % n], &ring[j], &ring[(j + 1) % n]);
-            let fits = |c: &Corner| c.quadrant().is_some() && !c.passed;
+            let fits = |c: &RingCorner| c.quadrant().is_some() && !c.passed;
             if fits(p) && fits(q) {
                 let (before, after) = (kept_signs(p, x), kept_signs(x, q));
                 if (0..2).any(|i| before[i].is_some() && before[i] == after[i]) {
@@ -289,7 +289,7 @@ fn winds_round_zero(
     let quadrants: Vec<i32> = ring
         .iter()
         .filter(|c| !c.passed)
-        .filter_map(Corner::quadrant)
+        .filter_map(RingCorner::quadrant)
         .collect();
     let turns: i32 = (0..quadrants.len())
         .map(|k| {
@@ -305,14 +305,14 @@ fn winds_round_zero(
 }
 
 /// Whether one component of the map keeps its sign along the side from `a` to `b`.
-fn side_keeps_a_sign(a: &Corner, b: &Corner) -> bool {
+fn side_keeps_a_sign(a: &RingCorner, b: &RingCorner) -> bool {
     kept_signs(a, b).iter().any(Option::is_some)
 }
 
 /// Per component of the map, the sign it keeps along the side from `a` to `b` (`true`
 /// positive), if proven: each distance is 1-Lipschitz, so each component changes by at
 /// most twice the way along.
-fn kept_signs(a: &Corner, b: &Corner) -> [Option<bool>; 2] {
+fn kept_signs(a: &RingCorner, b: &RingCorner) -> [Option<bool>; 2] {
     // (The length's rounding allowed for, generously.)
     let length = distance(a.xy, b.xy) * (1.0 + 1e-12);
     [0, 1].map(|i| {

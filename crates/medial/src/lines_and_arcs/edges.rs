@@ -5,7 +5,7 @@
 use super::{LinesAndArcs, Solved, SAME_SEED_NODE};
 use crate::candidates::{Candidate, Vertex};
 use crate::corners::entered_across_corner;
-use crate::true_sites::{Shape, TrueSite};
+use crate::true_sites::{SiteShape, TrueSite};
 use curve::{wrap_pi, V2};
 use std::f64::consts::PI;
 
@@ -28,18 +28,20 @@ const FOOT_ROOM: f64 = 1e-6;
 /// the feet on both sites are on one normal (a line's foot below the other's centre; a
 /// circle's foot towards the other's centre or straight across to the line). Two lines'
 /// radius is affine along their bisector.
-fn radius_extremum(along: Shape, other: Shape, t0: f64, t1: f64) -> Option<f64> {
+fn radius_extremum(along: SiteShape, other: SiteShape, t0: f64, t1: f64) -> Option<f64> {
     let inside = |t: f64| {
         let margin = 1e-9 * (t1 - t0).abs();
         (t - t0.min(t1) > margin && t0.max(t1) - t > margin).then_some(t)
     };
     match (along, other) {
-        (Shape::Line(_), Shape::Line(_)) => None,
-        (Shape::Line(l), Shape::Round { centre, .. }) => inside(l.along.dot(centre - l.start)),
-        (Shape::Round { centre, side, .. }, other) => {
+        (SiteShape::Line(_), SiteShape::Line(_)) => None,
+        (SiteShape::Line(l), SiteShape::Round { centre, .. }) => {
+            inside(l.along.dot(centre - l.start))
+        }
+        (SiteShape::Round { centre, side, .. }, other) => {
             let towards = match other {
-                Shape::Line(l) => l.inward * -side,
-                Shape::Round { centre: c, .. } => c - centre,
+                SiteShape::Line(l) => l.inward * -side,
+                SiteShape::Round { centre: c, .. } => c - centre,
             };
             let angle = towards.angle();
             // (Either way along the line through the centres; the turn nearest the span.)
@@ -226,7 +228,7 @@ impl LinesAndArcs<'_, '_> {
     /// tolerance and [`EDGE_STEP`] apart. Its points come from the feet on one site (a line if
     /// there is one, else the round site whose centre is farther from the ends): along the
     /// normal ray at each foot, the other site is as far as the foot where
-    /// [`Shape::radius_on_ray`] says. The foot parameter's span is halved until each chord
+    /// [`SiteShape::radius_on_ray`] says. The foot parameter's span is halved until each chord
     /// is within the tolerance of the point halfway along it.
     fn conic(&self, sites: [TrueSite; 2], p: V2, q: V2) -> Option<Vec<V2>> {
         let shapes = sites.map(|s| self.shape(s));
@@ -240,9 +242,9 @@ impl LinesAndArcs<'_, '_> {
         let (along, other) = (shapes[by], shapes[1 - by]);
         let t0 = along.param_of(p);
         let t1 = match along {
-            Shape::Line(_) => along.param_of(q),
+            SiteShape::Line(_) => along.param_of(q),
             // (A foot turns by less than half a turn along one edge.)
-            Shape::Round { .. } => t0 + wrap_pi(along.param_of(q) - t0),
+            SiteShape::Round { .. } => t0 + wrap_pi(along.param_of(q) - t0),
         };
         let at = |t: f64| {
             let (foot, normal) = along.ray(t);

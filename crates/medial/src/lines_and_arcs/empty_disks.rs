@@ -2,7 +2,7 @@
 //! boundaries are few (and where each arc's exact form is its circle), and the disks along
 //! two lines' bisector proven empty at once by the polygon that covers their sweep.
 
-use super::{LinesAndArcs, Piece, Solved};
+use super::{ClosedFormSegment, LinesAndArcs, Solved};
 use crate::candidates::Vertex;
 use crate::sites::{Disk, EMPTY_SLACK};
 use crate::true_sites::{LineSite, TrueSite};
@@ -108,14 +108,14 @@ impl LinesAndArcs<'_, '_> {
         // (Each distance to within 16 ulps of the magnitudes in it.)
         let clear = |d: f64, at: f64| d >= radius - slack + ulps(16.0) * (scale + at);
         self.pieces.iter().flatten().all(|piece| match *piece {
-            Piece::Line(l) => {
+            ClosedFormSegment::Line(l) => {
                 let at = magnitude(l.start) + l.length;
                 let end = l.start + l.along * l.length;
                 clear((x - l.start).norm(), at)
                     && clear((x - end).norm(), at)
                     && (!piece.falls_on(x) || clear(l.inward.dot(x - l.start).abs(), at))
             }
-            Piece::Arc { arc, start, end } => {
+            ClosedFormSegment::Arc { arc, start, end } => {
                 let at = magnitude(arc.centre) + arc.radius;
                 clear((x - start).norm(), magnitude(start))
                     && clear((x - end).norm(), magnitude(end))

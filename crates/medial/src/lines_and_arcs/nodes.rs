@@ -4,7 +4,7 @@
 use super::{Equation, LinesAndArcs, Solved};
 use crate::certificate::JUNCTION_ROOM;
 use crate::junction_proof::{proven_within, ClosedSite};
-use crate::true_sites::{Shape, TrueSite};
+use crate::true_sites::{SiteShape, TrueSite};
 use curve::V2;
 use numeric::rounding::ulps;
 
@@ -138,11 +138,11 @@ impl LinesAndArcs<'_, '_> {
             return false;
         };
         let closed = sites.map(|s| match self.shape(s) {
-            Shape::Line(l) => Some(ClosedSite::Line {
+            SiteShape::Line(l) => Some(ClosedSite::Line {
                 start: l.start,
                 inward: l.inward,
             }),
-            Shape::Round {
+            SiteShape::Round {
                 centre,
                 radius,
                 side,

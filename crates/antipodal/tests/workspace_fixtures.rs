@@ -68,14 +68,7 @@ fn periodic_nurbs_fixture() {
 
 #[test]
 fn periodic_cubic_fixture() {
-    let pts = [
-        [0.0, 0.0],
-        [2.0, -1.0],
-        [4.0, 0.0],
-        [4.0, 2.0],
-        [2.0, 1.2],
-        [0.0, 2.0],
-    ];
+    let pts = testkit::outlines::PERIODIC_CUBIC_POINTS;
     let c = SplineCurve::periodic(3, &pts, None).unwrap();
     assert_eq!(check(&c), 2);
 }

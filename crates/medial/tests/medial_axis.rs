@@ -1094,14 +1094,7 @@ fn two_leaf_tips_beside_a_smooth_joint_are_two_nodes() {
 #[test]
 fn a_certified_axis_moved_scaled_or_rotated_is_the_same_axis() {
     let pocket = Region::new(pocket_outline(), vec![circle([6.5, 3.0], 1.2)]).unwrap();
-    let pts = [
-        [0.0, 0.0],
-        [2.0, -1.0],
-        [4.0, 0.0],
-        [4.0, 2.0],
-        [2.0, 1.2],
-        [0.0, 2.0],
-    ];
+    let pts = testkit::outlines::PERIODIC_CUBIC_POINTS;
     let cubic = Region::new(closed_cubic(&pts, None).unwrap(), vec![]).unwrap();
     let (c, s) = (0.6f64, 0.8f64); // a rotation with exact sine and cosine
     let maps: [(curve::Affine, bool); 7] = [

@@ -50,6 +50,18 @@ pub fn polygon(vertices: &[[f64; 2]]) -> Profile {
     Profile::new(sides, None).unwrap()
 }
 
+/// The control points of the medial-axis issue's periodic cubic (`fixtures/periodic_cubic.json`,
+/// the medial benchmark's `PERIODIC_CUBIC`): two sharp ends, whose axis ends at their centres
+/// of curvature.
+pub const PERIODIC_CUBIC_POINTS: [[f64; 2]; 6] = [
+    [0.0, 0.0],
+    [2.0, -1.0],
+    [4.0, 0.0],
+    [4.0, 2.0],
+    [2.0, 1.2],
+    [0.0, 2.0],
+];
+
 /// The 10×6 rounded-rectangle pocket (corner radius 1) with a round island of radius 1, as
 /// the tool reads it.
 pub const POCKET: &str = r#"{"kind":"region",

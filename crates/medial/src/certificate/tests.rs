@@ -170,14 +170,7 @@ fn an_end_off_its_arcs_centre_is_not_proven() {
 
 /// The periodic cubic: two ends at centres of curvature of its sharpest points.
 fn periodic_cubic() -> Region {
-    let pts = [
-        [0.0, 0.0],
-        [2.0, -1.0],
-        [4.0, 0.0],
-        [4.0, 2.0],
-        [2.0, 1.2],
-        [0.0, 2.0],
-    ];
+    let pts = testkit::outlines::PERIODIC_CUBIC_POINTS;
     let periodic = curve::SplineCurve::periodic(3, &pts, None).expect("spline");
     let (a, b) = periodic.domain();
     let one_turn = periodic.curve().restrict(a, b).expect("restricted");

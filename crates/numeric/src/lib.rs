@@ -8,6 +8,8 @@
 //!   [`solve::Accuracy`].
 //! - [`tolerance`]: the parameter and chord tolerances as validated types, with their
 //!   defaults and accepted ranges written once.
+//! - [`certificate`]: certificates as values, [`certificate::Doubt`] (every reason a result
+//!   may not be certified, listed once) and [`certificate::Certified`].
 //! - [`Interval`]: closed intervals and the interval arithmetic the proofs combine ranges
 //!   with.
 //!
@@ -19,6 +21,7 @@
 //! assert!((x - 2f64.sqrt()).abs() <= ulps(4.0));
 //! ```
 
+pub mod certificate;
 mod interval;
 pub mod rounding;
 pub mod solve;

@@ -1,0 +1,592 @@
+//! Certificates as values: why a result is not certified, carried with it.
+//!
+//! Every step that decides something a proof may fail to settle returns its answer with the
+//! doubts it met ([`Certified`]), and the caller joins them into its own ([`Doubts::absorb`]).
+//! Nothing is marked afterwards, and no step keeps its provenance in interior mutability. A
+//! result is certified when it carries no doubt; its `reason` (the contract's JSON field) is
+//! the first doubt met, stated as [`Doubt`]'s `Display` writes it.
+//!
+//! [`Doubt`] lists every reason of the workspace once. It lives here, at the bottom, because a
+//! result of any crate may carry the doubts of the crates it builds on (an offset carries the
+//! medial axis's), and only a type every crate sees can hold them all.
+//!
+//! ```
+//! use numeric::certificate::{Certified, Doubt, Doubts};
+//!
+//! fn halve(x: f64) -> Certified<f64> {
+//!     let mut out = Certified::proven(x / 2.0);
+//!     if x.abs() < 1e-300 {
+//!         out.doubt(Doubt::RootsUnresolved);
+//!     }
+//!     out
+//! }
+//! let mut doubts = Doubts::default();
+//! let a = doubts.absorb(halve(3.0));
+//! let b = doubts.absorb(halve(0.0));
+//! assert_eq!((a, b), (1.5, 0.0));
+//! assert!(!doubts.is_empty());
+//! assert_eq!(
+//!     doubts.reason().as_deref(),
+//!     Some("a sign test's roots could not be isolated within rounding")
+//! );
+//! ```
+
+use std::fmt;
+
+/// One reason a result is not certified: a decision that rounding, a bound, a search limit or
+/// the lack of an exact form left unproven. Its `Display` is the reason as results state it.
+#[non_exhaustive]
+#[derive(Debug, Clone, PartialEq)]
+pub enum Doubt {
+    // Antipodal points, inflections and common tangents (Jia).
+    /// The curve has no exact form to prove signs on: found by Jia's sampled method.
+    NoExactForm,
+    /// Certification was turned off by the caller.
+    CertificationOff,
+    /// An analytic shape's exact rational form (of this degree) loses the precision its sign
+    /// tests need: found by the sampled method instead.
+    ExactFormPrecision {
+        /// The degree of the exact form.
+        degree: usize,
+    },
+    /// Two arcs of the curve come within rounding of each other: simplicity is not proven.
+    SimplicityUndecided,
+    /// A stretch shorter than the parameter tolerance turns the tangent by nearly a right
+    /// angle (close to a cusp).
+    NearCusp,
+    /// An odd number of curvature sign changes on a closed curve: one was missed or doubled
+    /// within rounding.
+    OddInflections,
+    /// The curvature's sign changes could not all be isolated within rounding.
+    CurvatureUnresolved,
+    /// Where the curvature jumps, whether the tangent turns there (a corner) is within
+    /// rounding of the threshold.
+    CornerUndecided,
+    /// A sign test's roots could not be isolated within rounding.
+    RootsUnresolved,
+    /// A stretch whose curvature vanishes within rounding, not proven straight, taken as
+    /// straight.
+    FlatWithinRounding,
+    /// A straight stretch with corners inside (a polyline) searched as one segment.
+    CornerInStraight,
+    /// A continuum of pairs within rounding (nearly a circle, nearly parallel stretches), not
+    /// proven to be one.
+    Continuum,
+    /// Roots within rounding of each other (a double root or a cluster).
+    RootCluster,
+    /// A root within rounding of the end of its interval.
+    RootAtEnd,
+    /// The normal turns by a finite angle within one unit of the parameter.
+    NormalJump,
+    /// A point found as a pair was none beyond rounding (dropped).
+    NotAPair,
+    /// Neither sign of θ could be proven at a section's cut.
+    SectionUndecided,
+    /// A stretch beside a found pair skipped by Table 1's ε, not proven free of pairs.
+    EpsilonCut,
+    /// A stretch of nearly constant width, whose pairs are found by sampling its width.
+    ConstantWidth,
+    /// The two curves touch or overlap within rounding where their common tangents are
+    /// sought.
+    CurvesTouch,
+    /// The region test and the tangent iteration disagree on a pair of segments.
+    TangentTestsDisagree,
+    /// A profile's curvature vanishes within rounding at the end of a segment, at a corner or
+    /// the profile's end: whether it changes sign just inside is not decided.
+    CurvatureAtSegmentEnd {
+        /// The profile parameter of the end.
+        u: f64,
+        /// The segment.
+        segment: usize,
+    },
+    /// A profile's curvature vanishes within rounding at a smooth joint.
+    CurvatureAtJoint {
+        /// The profile parameter of the joint.
+        u: f64,
+    },
+    /// A point of tangency from a corner is not separated from another within rounding.
+    TangencyFromCorner {
+        /// The profile parameter of the corner.
+        u: f64,
+        /// The segment the tangency is on.
+        segment: usize,
+    },
+
+    // The medial axis.
+    /// A disk's emptiness was decided by the nearest point found, within rounding of the
+    /// boundary.
+    DiskByNearest,
+    /// A junction's exact point was not proven near it.
+    Junction,
+    /// An end's curvature extremum was not proven.
+    AxisEnd,
+    /// A corner leaf is not at a corner convex for the region.
+    CornerLeaf,
+    /// The graph is not one piece with a cycle per hole (the axis inside a region is).
+    AxisGraph {
+        /// The first convex corner no leaf reaches, if any.
+        unreached: Option<UnreachedCorner>,
+    },
+    /// The feet of the edges do not cover the boundaries once round: a piece of the axis may
+    /// be missing.
+    Coverage {
+        /// The first convex corner no leaf reaches, if any.
+        unreached: Option<UnreachedCorner>,
+    },
+    /// A search limit was hit.
+    SearchLimit,
+    /// The work was cancelled before every node was proven.
+    Cancelled,
+
+    // Offsets, from the medial axis.
+    /// The medial axis the offsets are taken from is not certified (its doubts follow this
+    /// one in the result's [`Doubts`]).
+    AxisUncertified,
+    /// A seam's feet did not converge.
+    SeamUnconverged,
+    /// A loop's pieces did not meet by more than the chord tolerance (a seam the axis does
+    /// not show), and it was left out.
+    LoopLeftOut,
+    /// A loop's pieces did not meet (a seam the axis does not show), and the gap, within the
+    /// chord tolerance, was bridged by a line.
+    LoopBridged,
+    /// A spline's offset is this far from the exact offset where measured, past the chord
+    /// tolerance.
+    OffsetError {
+        /// The widest distance measured.
+        error: f64,
+    },
+    /// A loop is not a simple closed profile.
+    LoopNotAProfile {
+        /// Why, as the profile's check states it.
+        why: String,
+    },
+    /// The axis's radius may cross a distance between two of its vertices (a neck or a bump
+    /// whose extremum was not found on the axis).
+    NeckUnresolved,
+    /// Two loops' fitted pieces cross across a passage narrower than they follow.
+    LoopsCross,
+}
+
+/// A convex corner of a boundary that no leaf of the medial axis reaches: where a piece of
+/// the axis may be missing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct UnreachedCorner {
+    /// The corner's point.
+    pub at: [f64; 2],
+    /// The boundary it is on (0 the outer one, then the holes).
+    pub boundary: usize,
+    /// The angle the boundary turns by there (radians).
+    pub turn: f64,
+    /// How many more such corners there are.
+    pub more: usize,
+}
+
+impl Doubt {
+    /// The fixed part of the reason: the whole of it, but for the variants that name a place
+    /// or a figure.
+    fn fixed(&self) -> &'static str {
+        match self {
+            Doubt::NoExactForm => "no exact form to prove signs on: found by Jia's sampled method",
+            Doubt::CertificationOff => "certification was turned off (Options::certify)",
+            Doubt::SimplicityUndecided => {
+                "two arcs of the curve come within rounding of each other: not proven simple"
+            }
+            Doubt::NearCusp => {
+                "the tangent turns by nearly a right angle within the parameter tolerance \
+                 (close to a cusp)"
+            }
+            Doubt::OddInflections => {
+                "an odd number of curvature sign changes on a closed curve: one was missed or \
+                 doubled within rounding"
+            }
+            Doubt::CurvatureUnresolved => {
+                "the curvature's sign changes could not all be isolated within rounding"
+            }
+            Doubt::CornerUndecided => {
+                "whether the curve has a corner where its curvature jumps is within rounding"
+            }
+            Doubt::RootsUnresolved => "a sign test's roots could not be isolated within rounding",
+            Doubt::FlatWithinRounding => {
+                "a stretch whose curvature vanishes within rounding is taken as straight \
+                 without proof"
+            }
+            Doubt::CornerInStraight => {
+                "a straight stretch with corners inside (a polyline) is searched as one segment"
+            }
+            Doubt::Continuum => {
+                "pairs found as a continuous family within rounding, not proven to be one"
+            }
+            Doubt::RootCluster => {
+                "roots within rounding of each other (a double root or a cluster)"
+            }
+            Doubt::RootAtEnd => "a root within rounding of the end of its interval",
+            Doubt::NormalJump => {
+                "the normal turns by a finite angle within one unit of the parameter, beyond \
+                 what double precision resolves"
+            }
+            Doubt::NotAPair => "a point found as a pair is none beyond rounding (dropped)",
+            Doubt::SectionUndecided => "the sign of theta at a section's cut is within rounding",
+            Doubt::EpsilonCut => {
+                "a stretch beside a found pair was skipped by Jia's epsilon without a proof \
+                 that it holds no other pair"
+            }
+            Doubt::ConstantWidth => {
+                "a stretch of nearly constant width: its pairs are found by sampling its width"
+            }
+            Doubt::CurvesTouch => "the curves touch or overlap within rounding",
+            Doubt::TangentTestsDisagree => {
+                "the region test and the tangent iteration disagree on a pair of segments"
+            }
+            Doubt::DiskByNearest => {
+                "a disk's emptiness was decided by the nearest point found, within rounding of \
+                 the boundary"
+            }
+            Doubt::Junction => {
+                "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
+            }
+            Doubt::AxisGraph { .. } => {
+                "the graph is not one connected piece with one cycle per hole"
+            }
+            Doubt::Coverage { .. } => {
+                "the feet of the edges do not cover the boundaries once round: a piece of the \
+                 axis may be missing"
+            }
+            Doubt::CornerLeaf => {
+                "a corner leaf is not at a corner of the boundary convex for the region"
+            }
+            Doubt::AxisEnd => {
+                "an end was not proven at an arc's centre, or at a centre of curvature within \
+                 the tolerance of a proven peak of the curvature"
+            }
+            Doubt::SearchLimit => "a search limit was hit",
+            Doubt::Cancelled => "the work was cancelled before the axis was proven",
+            Doubt::AxisUncertified => "the medial axis is not certified",
+            Doubt::SeamUnconverged => "a seam's feet did not converge",
+            Doubt::LoopLeftOut => {
+                "a loop's pieces did not meet by more than the chord tolerance (a seam the axis \
+                 does not show), and it was left out"
+            }
+            Doubt::LoopBridged => {
+                "a loop's pieces did not meet (a seam the axis does not show), and the gap, \
+                 within the chord tolerance, was bridged by a line"
+            }
+            Doubt::NeckUnresolved => {
+                "the axis's radius may cross a distance between two of its vertices (a neck or \
+                 a bump whose extremum was not found on the axis)"
+            }
+            Doubt::LoopsCross => {
+                "two loops' fitted pieces cross across a passage narrower than they follow"
+            }
+            Doubt::ExactFormPrecision { .. }
+            | Doubt::CurvatureAtSegmentEnd { .. }
+            | Doubt::CurvatureAtJoint { .. }
+            | Doubt::TangencyFromCorner { .. }
+            | Doubt::OffsetError { .. }
+            | Doubt::LoopNotAProfile { .. } => "",
+        }
+    }
+}
+
+impl fmt::Display for Doubt {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Doubt::ExactFormPrecision { degree } => write!(
+                f,
+                "the shape's exact rational form (degree {degree}) loses the precision its \
+                 sign tests need: found by Jia's sampled method"
+            ),
+            Doubt::CurvatureAtSegmentEnd { u, segment } => write!(
+                f,
+                "the curvature vanishes within rounding at the end u = {u} of segment \
+                 {segment}, by a corner or the profile's end: whether it changes sign just \
+                 inside is not decided"
+            ),
+            Doubt::CurvatureAtJoint { u } => write!(
+                f,
+                "the curvature vanishes within rounding at the smooth joint at u = {u}"
+            ),
+            Doubt::TangencyFromCorner { u, segment } => write!(
+                f,
+                "a point of tangency from the corner at u = {u} on segment {segment} is not \
+                 separated from another within rounding"
+            ),
+            Doubt::OffsetError { error } => write!(
+                f,
+                "a spline's offset is {error:e} from the exact offset where measured, past the \
+                 chord tolerance"
+            ),
+            Doubt::LoopNotAProfile { why } => {
+                write!(f, "a loop is not a simple closed profile: {why}")
+            }
+            Doubt::AxisGraph {
+                unreached: Some(corner),
+            }
+            | Doubt::Coverage {
+                unreached: Some(corner),
+            } => {
+                let more = match corner.more {
+                    0 => String::new(),
+                    1 => " (and 1 more such corner)".to_string(),
+                    m => format!(" (and {m} more such corners)"),
+                };
+                write!(
+                    f,
+                    "{}: no leaf reaches the convex corner at ({}, {}) of boundary {}, which \
+                     turns by {:.1e} rad{more}",
+                    self.fixed(),
+                    corner.at[0],
+                    corner.at[1],
+                    corner.boundary,
+                    corner.turn,
+                )
+            }
+            _ => f.write_str(self.fixed()),
+        }
+    }
+}
+
+/// The doubts a result carries, in the order they were met (a doubt met twice is kept once).
+/// Empty: the result is certified.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Doubts(Vec<Doubt>);
+
+impl Doubts {
+    /// No doubt: certified.
+    pub fn none() -> Doubts {
+        Doubts(Vec::new())
+    }
+
+    /// True when there is no doubt.
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// Adds `doubt` (after those met before; kept once).
+    pub fn add(&mut self, doubt: Doubt) {
+        if !self.0.contains(&doubt) {
+            self.0.push(doubt);
+        }
+    }
+
+    /// Adds every doubt of `other`, after these.
+    pub fn join(&mut self, other: Doubts) {
+        for doubt in other.0 {
+            self.add(doubt);
+        }
+    }
+
+    /// Takes the value of `step`, keeping its doubts with these: the `?` of certificates.
+    pub fn absorb<T>(&mut self, step: Certified<T>) -> T {
+        self.join(step.doubts);
+        step.value
+    }
+
+    /// The first doubt met: the one a result's `reason` states.
+    pub fn first(&self) -> Option<&Doubt> {
+        self.0.first()
+    }
+
+    /// Every doubt, in the order met.
+    pub fn iter(&self) -> impl Iterator<Item = &Doubt> {
+        self.0.iter()
+    }
+
+    /// The reason a result is not certified (its first doubt, stated), if it is not.
+    pub fn reason(&self) -> Option<String> {
+        self.first().map(ToString::to_string)
+    }
+}
+
+impl From<Doubt> for Doubts {
+    fn from(doubt: Doubt) -> Doubts {
+        Doubts(vec![doubt])
+    }
+}
+
+impl FromIterator<Doubt> for Doubts {
+    fn from_iter<I: IntoIterator<Item = Doubt>>(iter: I) -> Doubts {
+        let mut out = Doubts::none();
+        for doubt in iter {
+            out.add(doubt);
+        }
+        out
+    }
+}
+
+/// A value with the doubts met in finding it. Steps return it; callers take the value with
+/// [`Doubts::absorb`] (or [`Certified::and_then`]) and so carry the doubts on.
+#[derive(Debug, Clone, PartialEq)]
+#[must_use = "a certified value's doubts must be carried on"]
+pub struct Certified<T> {
+    /// The value.
+    pub value: T,
+    /// The doubts met finding it (none: it is certified).
+    pub doubts: Doubts,
+}
+
+impl<T> Certified<T> {
+    /// `value`, proven.
+    pub fn proven(value: T) -> Certified<T> {
+        Certified {
+            value,
+            doubts: Doubts::none(),
+        }
+    }
+
+    /// `value`, with `doubts`.
+    pub fn with(value: T, doubts: impl Into<Doubts>) -> Certified<T> {
+        Certified {
+            value,
+            doubts: doubts.into(),
+        }
+    }
+
+    /// True when no doubt was met.
+    pub fn is_certified(&self) -> bool {
+        self.doubts.is_empty()
+    }
+
+    /// Adds a doubt.
+    pub fn doubt(&mut self, doubt: Doubt) {
+        self.doubts.add(doubt);
+    }
+
+    /// The reason the value is not certified, if it is not.
+    pub fn reason(&self) -> Option<String> {
+        self.doubts.reason()
+    }
+
+    /// The value changed by `f`, with the same doubts.
+    pub fn map<U>(self, f: impl FnOnce(T) -> U) -> Certified<U> {
+        Certified {
+            value: f(self.value),
+            doubts: self.doubts,
+        }
+    }
+
+    /// The next step on the value, carrying this step's doubts before its own.
+    pub fn and_then<U>(self, f: impl FnOnce(T) -> Certified<U>) -> Certified<U> {
+        let mut doubts = self.doubts;
+        let next = f(self.value);
+        doubts.join(next.doubts);
+        Certified {
+            value: next.value,
+            doubts,
+        }
+    }
+
+    /// The value and its doubts.
+    pub fn into_parts(self) -> (T, Doubts) {
+        (self.value, self.doubts)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_first_doubt_met_is_the_reason_and_each_is_kept_once() {
+        let mut doubts = Doubts::none();
+        assert_eq!(doubts.reason(), None);
+        doubts.add(Doubt::RootCluster);
+        doubts.add(Doubt::NearCusp);
+        doubts.add(Doubt::RootCluster);
+        assert_eq!(doubts.iter().count(), 2);
+        assert_eq!(
+            doubts.reason().as_deref(),
+            Some("roots within rounding of each other (a double root or a cluster)")
+        );
+    }
+
+    #[test]
+    fn and_then_carries_the_earlier_doubts_first() {
+        let first = Certified::with(2, Doubt::SearchLimit);
+        let both = first.and_then(|x| Certified::with(x * 3, Doubt::Junction));
+        assert_eq!(both.value, 6);
+        let order: Vec<_> = both.doubts.iter().cloned().collect();
+        assert_eq!(order, [Doubt::SearchLimit, Doubt::Junction]);
+        let proven = Certified::proven(1).map(|x| x + 1);
+        assert!(proven.is_certified() && proven.value == 2);
+    }
+
+    #[test]
+    fn reasons_with_a_place_name_it() {
+        let corner = UnreachedCorner {
+            at: [1.5, -2.0],
+            boundary: 1,
+            turn: 0.25,
+            more: 2,
+        };
+        let text = Doubt::Coverage {
+            unreached: Some(corner),
+        }
+        .to_string();
+        assert_eq!(
+            text,
+            "the feet of the edges do not cover the boundaries once round: a piece of the axis \
+             may be missing: no leaf reaches the convex corner at (1.5, -2) of boundary 1, \
+             which turns by 2.5e-1 rad (and 2 more such corners)"
+        );
+        assert_eq!(
+            Doubt::AxisGraph { unreached: None }.to_string(),
+            "the graph is not one connected piece with one cycle per hole"
+        );
+        assert_eq!(
+            Doubt::CurvatureAtJoint { u: 2.5 }.to_string(),
+            "the curvature vanishes within rounding at the smooth joint at u = 2.5"
+        );
+    }
+
+    #[test]
+    fn every_reason_is_stated() {
+        let all = [
+            Doubt::NoExactForm,
+            Doubt::CertificationOff,
+            Doubt::ExactFormPrecision { degree: 4 },
+            Doubt::SimplicityUndecided,
+            Doubt::NearCusp,
+            Doubt::OddInflections,
+            Doubt::CurvatureUnresolved,
+            Doubt::CornerUndecided,
+            Doubt::RootsUnresolved,
+            Doubt::FlatWithinRounding,
+            Doubt::CornerInStraight,
+            Doubt::Continuum,
+            Doubt::RootCluster,
+            Doubt::RootAtEnd,
+            Doubt::NormalJump,
+            Doubt::NotAPair,
+            Doubt::SectionUndecided,
+            Doubt::EpsilonCut,
+            Doubt::ConstantWidth,
+            Doubt::CurvesTouch,
+            Doubt::TangentTestsDisagree,
+            Doubt::CurvatureAtSegmentEnd { u: 1.0, segment: 0 },
+            Doubt::CurvatureAtJoint { u: 1.0 },
+            Doubt::TangencyFromCorner { u: 1.0, segment: 2 },
+            Doubt::DiskByNearest,
+            Doubt::Junction,
+            Doubt::AxisEnd,
+            Doubt::CornerLeaf,
+            Doubt::AxisGraph { unreached: None },
+            Doubt::Coverage { unreached: None },
+            Doubt::SearchLimit,
+            Doubt::Cancelled,
+            Doubt::AxisUncertified,
+            Doubt::SeamUnconverged,
+            Doubt::LoopLeftOut,
+            Doubt::LoopBridged,
+            Doubt::OffsetError { error: 0.5 },
+            Doubt::LoopNotAProfile {
+                why: "it crosses itself".into(),
+            },
+            Doubt::NeckUnresolved,
+            Doubt::LoopsCross,
+        ];
+        let texts: std::collections::HashSet<String> = all.iter().map(|d| d.to_string()).collect();
+        assert_eq!(texts.len(), all.len(), "two doubts share a reason");
+        assert!(texts.iter().all(|t| t.len() > 10 && !t.ends_with('.')));
+    }
+}

@@ -33,6 +33,9 @@
 
 use std::fmt;
 
+mod document;
+pub use document::Verdict;
+
 /// One reason a result is not certified: a decision that rounding, a bound, a search limit or
 /// the lack of an exact form left unproven. Its `Display` is the reason as results state it.
 #[non_exhaustive]
@@ -166,6 +169,14 @@ pub enum Doubt {
     NeckUnresolved,
     /// Two loops' fitted pieces cross across a passage narrower than they follow.
     LoopsCross,
+
+    // Read back.
+    /// A doubt read back from a result's document (its JSON, a pickled Python result): the
+    /// reason as the document states it, its kind not recorded there.
+    Stated {
+        /// The reason, as stated.
+        reason: String,
+    },
 }
 
 /// A convex corner of a boundary that no leaf of the medial axis reaches: where a piece of
@@ -283,7 +294,8 @@ impl Doubt {
             | Doubt::CurvatureAtJoint { .. }
             | Doubt::TangencyFromCorner { .. }
             | Doubt::OffsetError { .. }
-            | Doubt::LoopNotAProfile { .. } => "",
+            | Doubt::LoopNotAProfile { .. }
+            | Doubt::Stated { .. } => "",
         }
     }
 }
@@ -319,6 +331,7 @@ impl fmt::Display for Doubt {
             Doubt::LoopNotAProfile { why } => {
                 write!(f, "a loop is not a simple closed profile: {why}")
             }
+            Doubt::Stated { reason } => f.write_str(reason),
             Doubt::AxisGraph {
                 unreached: Some(corner),
             }
@@ -584,6 +597,9 @@ mod tests {
             },
             Doubt::NeckUnresolved,
             Doubt::LoopsCross,
+            Doubt::Stated {
+                reason: "as a document stated it".into(),
+            },
         ];
         let texts: std::collections::HashSet<String> = all.iter().map(|d| d.to_string()).collect();
         assert_eq!(texts.len(), all.len(), "two doubts share a reason");

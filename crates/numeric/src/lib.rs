@@ -6,6 +6,10 @@
 //!   `f64::EPSILON`.
 //! - [`solve`]: the one bracketed 1-D solver, [`solve::bracketed`], with its explicit
 //!   [`solve::Accuracy`].
+//! - [`newton2`]: the one two-dimensional Newton's method, [`newton2::newton2`], on
+//!   `nalgebra`'s fixed-size matrices, with its damped step, residual test and iteration bound.
+//! - [`minimize`]: the one bracketed minimisation, [`minimize::minimize`] (parabolic steps
+//!   safeguarded by golden sections), and its Newton polish, [`minimize::polish`].
 //! - [`tolerance`]: the parameter and chord tolerances as validated types, with their
 //!   defaults and accepted ranges written once.
 //! - [`certificate`]: certificates as values, [`certificate::Doubt`] (every reason a result
@@ -23,6 +27,8 @@
 
 pub mod certificate;
 mod interval;
+pub mod minimize;
+pub mod newton2;
 pub mod rounding;
 pub mod solve;
 pub mod tolerance;

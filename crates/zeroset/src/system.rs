@@ -11,6 +11,8 @@ use crate::error::Result;
 use crate::patch::{common_sign, Patch};
 use crate::zeroset::{DEFAULT_TOL, TOL_FLOOR};
 use bspline::tensor::TensorBSpline;
+use nalgebra::{Matrix2, Vector2};
+use numeric::newton2::{newton2, Iterate, Newton2, StepVerdict};
 use numeric::rounding::{ulps, UNIT_ROUNDOFF};
 use serde::{Deserialize, Serialize};
 
@@ -187,7 +189,12 @@ fn unique(f: &Patch, g: &Patch) -> bool {
     lo > slack || hi < -slack
 }
 
-/// Newton on the cell polynomials from the box centre; `Some` when it converges inside the box.
+/// Newton steps on a box before it is split instead: from the centre of a box with a regular
+/// interval Jacobian Newton converges quadratically or leaves the box within a few.
+const SYSTEM_NEWTON_STEPS: usize = 60;
+
+/// Newton on the cell polynomials from the box centre ([`numeric::newton2`]); `Some` when it
+/// converges inside the box.
 ///
 /// Converged means the step has come down to the rounding level: a few ulps of the iterate,
 /// or what the rounding `noise` of the values of `f` and `g` moves the Newton step by (the
@@ -196,35 +203,37 @@ fn unique(f: &Patch, g: &Patch) -> bool {
 /// values carry, nor at a shallow crossing, where `J⁻¹` magnifies that error. The converged
 /// iterate may lie that far outside the box (a root on its border, met from both sides).
 fn newton(f: &Patch, g: &Patch, bx: [f64; 4], noise: [f64; 2]) -> Option<(f64, f64)> {
-    let (mut t, mut r) = (0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3]));
-    let inside = |t: f64, r: f64, st: f64, sr: f64| {
-        t >= bx[0] - st && t <= bx[1] + st && r >= bx[2] - sr && r <= bx[3] + sr
+    let start = Vector2::new(0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3]));
+    let inside = |x: &Vector2<f64>, st: f64, sr: f64| {
+        x[0] >= bx[0] - st && x[0] <= bx[1] + st && x[1] >= bx[2] - sr && x[1] <= bx[3] + sr
     };
-    for _ in 0..60 {
-        let a = f.eval_grad(t, r);
-        let b = g.eval_grad(t, r);
-        let det = a[1] * b[2] - a[2] * b[1];
-        if det == 0.0 || !det.is_finite() {
-            return None;
-        }
-        let dt = (a[0] * b[2] - a[2] * b[0]) / det;
-        let dr = (a[1] * b[0] - a[0] * b[1]) / det;
+    let linearize = |x: &Vector2<f64>| {
+        let (a, b) = (f.eval_grad(x[0], x[1]), g.eval_grad(x[0], x[1]));
+        (
+            Vector2::new(a[0], b[0]),
+            Matrix2::new(a[1], a[2], b[1], b[2]),
+        )
+    };
+    let judge = |step: &Iterate<Vector2<f64>>| {
+        let (j, d, x) = (step.jacobian, step.step, step.to);
+        let det = (j[(0, 0)] * j[(1, 1)] - j[(0, 1)] * j[(1, 0)]).abs();
         // What errors of `noise` in the values move the step by.
-        let nt = (noise[0] * b[2].abs() + noise[1] * a[2].abs()) / det.abs();
-        let nr = (noise[0] * b[1].abs() + noise[1] * a[1].abs()) / det.abs();
-        t -= dt;
-        r -= dr;
-        let small = dt.abs() <= ulps(4.0) * t.abs().max(bx[1] - bx[0]) + nt
-            && dr.abs() <= ulps(4.0) * r.abs().max(bx[3] - bx[2]) + nr;
-        if small && inside(t, r, nt, nr) {
-            return Some((t, r));
+        let nt = (noise[0] * j[(1, 1)].abs() + noise[1] * j[(0, 1)].abs()) / det;
+        let nr = (noise[0] * j[(1, 0)].abs() + noise[1] * j[(0, 0)].abs()) / det;
+        let small = d[0].abs() <= ulps(4.0) * x[0].abs().max(bx[1] - bx[0]) + nt
+            && d[1].abs() <= ulps(4.0) * x[1].abs().max(bx[3] - bx[2]) + nr;
+        if small && inside(&x, nt, nr) {
+            StepVerdict::Converged
+        } else if !inside(&x, 0.0, 0.0) {
+            StepVerdict::Abandon
+        } else {
+            StepVerdict::Continue
         }
-        if !inside(t, r, 0.0, 0.0) {
-            return None;
-        }
-    }
-    // No convergence in 60 steps.
-    None
+    };
+    let limits = Newton2::steps(SYSTEM_NEWTON_STEPS);
+    newton2(start, limits, linearize, |x, d| x - d, judge)
+        .converged()
+        .map(|x| (x[0], x[1]))
 }
 
 /// One report per solution: close duplicates (found from two boxes sharing a border) merge.

@@ -4,6 +4,8 @@
 
 use crate::extract::{End, Leaf};
 use crate::patch::Patch;
+use nalgebra::{Matrix2, Vector2};
+use numeric::newton2::{newton2, Iterate, Newton2, Outcome, StepVerdict};
 use numeric::rounding::UNIT_ROUNDOFF;
 
 /// Leaf boxes closer than this fraction of the domain count as touching: neighbours in the
@@ -132,9 +134,14 @@ pub(super) fn no_critical_point(cells: &[Patch], g: [f64; 4], at: [f64; 2]) -> b
     })
 }
 
-/// Newton on `∇F = 0` from `x`, with the Hessian from central differences of the exact
-/// gradient; `None` if it leaves the (doubled) box. (At a degenerate critical point, where
-/// F vanishes to higher order, it only creeps; the last iterate is returned.)
+/// Newton steps on `∇F = 0`: the difference Hessian contracts the error ~1e-8 per step, so a
+/// handful reach the rounding level; the rest is for a degenerate critical point's creep.
+const CRITICAL_NEWTON_STEPS: usize = 30;
+
+/// Newton on `∇F = 0` from `x` ([`numeric::newton2`]), with the Hessian from central
+/// differences of the exact gradient; `None` if it leaves the (doubled) box. (At a degenerate
+/// critical point, where F vanishes to higher order, it only creeps; the last iterate is
+/// returned.)
 fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
     let (wt, wr) = (
         (bx[1] - bx[0]).max(TINY_WIDTH),
@@ -145,8 +152,8 @@ fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
         HESSIAN_STEP * (cell.t1 - cell.t0),
         HESSIAN_STEP * (cell.r1 - cell.r0),
     );
-    let mut p = x;
-    for _ in 0..30 {
+    // The Hessian of `F` by central differences of its exact gradient.
+    let linearize = |p: &Vector2<f64>| {
         let g = cell.eval_grad(p[0], p[1]);
         let (gtp, gtm) = (
             cell.eval_grad(p[0] + ht, p[1]),
@@ -159,23 +166,25 @@ fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
         let htt = (gtp[1] - gtm[1]) / (2.0 * ht);
         let hrr = (grp[2] - grm[2]) / (2.0 * hr);
         let htr = 0.5 * ((gtp[2] - gtm[2]) / (2.0 * ht) + (grp[1] - grm[1]) / (2.0 * hr));
-        let det = htt * hrr - htr * htr;
-        if det == 0.0 || !det.is_finite() {
-            return None;
-        }
-        let dt = (g[1] * hrr - g[2] * htr) / det;
-        let dr = (g[2] * htt - g[1] * htr) / det;
-        p = [p[0] - dt, p[1] - dr];
+        (Vector2::new(g[1], g[2]), Matrix2::new(htt, htr, htr, hrr))
+    };
+    let judge = |step: &Iterate<Vector2<f64>>| {
+        let (p, d) = (step.to, step.step);
         if !(p[0] >= lim[0] && p[0] <= lim[1] && p[1] >= lim[2] && p[1] <= lim[3]) {
-            return None;
-        }
-        if dt.abs() <= CRITICAL_STEP * (cell.t1 - cell.t0)
-            && dr.abs() <= CRITICAL_STEP * (cell.r1 - cell.r0)
+            StepVerdict::Abandon
+        } else if d[0].abs() <= CRITICAL_STEP * (cell.t1 - cell.t0)
+            && d[1].abs() <= CRITICAL_STEP * (cell.r1 - cell.r0)
         {
-            return Some(p);
+            StepVerdict::Converged
+        } else {
+            StepVerdict::Continue
         }
+    };
+    let limits = Newton2::steps(CRITICAL_NEWTON_STEPS);
+    match newton2(Vector2::from(x), limits, linearize, |p, d| p - d, judge) {
+        Outcome::Converged(p) | Outcome::Exhausted(p) => Some([p[0], p[1]]),
+        Outcome::Singular(_) | Outcome::Abandoned(_) => None,
     }
-    Some(p)
 }
 
 /// The clusters of unresolved leaves: for each leaf its cluster, and per cluster the hull of

@@ -59,13 +59,8 @@ impl Source {
     }
 
     /// The region it holds or encloses, as `medial` reads it.
-    fn read_region(&self) -> Result<Curve, CommandError> {
-        Ok(io::parse_region(
-            &self.name,
-            self.format,
-            &self.bytes,
-            self.pick,
-        )?)
+    fn read_region(&self) -> Result<Curve, io::CurveFileError> {
+        io::parse_region(&self.name, self.format, &self.bytes, self.pick)
     }
 
     fn text(&self) -> Result<String, CommandError> {
@@ -88,7 +83,7 @@ impl Source {
 pub(crate) struct PyCurve {
     curve: Arc<Curve>,
     source: Source,
-    region: OnceLock<Result<Curve, CommandError>>,
+    region: OnceLock<Result<Curve, io::CurveFileError>>,
 }
 
 impl PyCurve {
@@ -135,7 +130,9 @@ impl PyCurve {
         }
         io::shape_document(&self.curve.shape)
             .map(|d| d.to_string())
-            .ok_or_else(|| CommandError::Other("a drawing read as no profile or region".into()))
+            .ok_or(CommandError::Internal(
+                "a drawing read as no profile or region",
+            ))
     }
 
     /// The regions the curve is or encloses (a closed curve's, one).
@@ -162,7 +159,7 @@ impl PyCurve {
         self.region
             .get_or_init(|| self.source.read_region())
             .as_ref()
-            .map_err(Clone::clone)
+            .map_err(|e| CommandError::Input(e.clone()))
     }
 }
 

@@ -10,7 +10,7 @@ mod registry;
 mod results;
 
 use curve::watch::Watch;
-use curvekit::commands::{self, CommandError};
+use curvekit::commands::{self, CommandError, FailureKind};
 use curves::{PyCurve, PyPrepared};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
@@ -38,10 +38,10 @@ create_exception!(
 /// The library's failure as a Python exception: bad input `InputError` (a `ValueError`), an
 /// option out of range `ValueError`, anything else `CurvekitError`.
 pub(crate) fn to_py_err(e: CommandError) -> PyErr {
-    match e {
-        CommandError::Input(_) => InputError::new_err(e.message()),
-        CommandError::Usage(_) => PyValueError::new_err(as_keyword(&e.message())),
-        CommandError::Other(_) => CurvekitError::new_err(e.message()),
+    match e.kind() {
+        FailureKind::Input => InputError::new_err(e.message()),
+        FailureKind::Usage => PyValueError::new_err(as_keyword(&e.message())),
+        FailureKind::Computation => CurvekitError::new_err(e.message()),
     }
 }
 
@@ -62,7 +62,7 @@ pub(crate) fn detached<T: Send>(
 ) -> PyResult<T> {
     py.detach(|| {
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
-            .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
+            .unwrap_or_else(|_| Err(CommandError::panicked()))
     })
     .map_err(to_py_err)
 }
@@ -80,7 +80,7 @@ pub(crate) fn cancellable<T: Send>(
     py: Python<'_>,
     work: impl FnOnce() -> Result<T, CommandError> + Send,
 ) -> PyResult<T> {
-    let internal = || Err(CommandError::Other("internal error".into()));
+    let internal = || Err(CommandError::panicked());
     let watch = Arc::new(Watch::default());
     let outcome = py.detach(|| {
         std::thread::scope(|scope| {

@@ -6,7 +6,7 @@ use crate::curves::{PyCurve, PyPrepared};
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use crate::results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
 use crate::{bisector_options, CurvekitError, InputError};
-use curvekit::commands::{self, CommandError, CurveSummary};
+use curvekit::commands::{self, CommandError, CurveSummary, FailureKind};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use rayon::prelude::*;
@@ -19,10 +19,10 @@ const ROUND_PER_THREAD: usize = 32;
 /// starting with the curve's place.
 fn failed_at(k: usize, e: CommandError) -> PyErr {
     let message = format!("[{k}] {}", e.message());
-    match e {
-        CommandError::Input(_) => InputError::new_err(message),
-        CommandError::Usage(_) => PyValueError::new_err(message),
-        CommandError::Other(_) => CurvekitError::new_err(message),
+    match e.kind() {
+        FailureKind::Input => InputError::new_err(message),
+        FailureKind::Usage => PyValueError::new_err(message),
+        FailureKind::Computation => CurvekitError::new_err(message),
     }
 }
 
@@ -41,7 +41,7 @@ fn each<I: Sync, T: Send>(
                 .par_iter()
                 .map(|item| {
                     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(item)))
-                        .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
+                        .unwrap_or_else(|_| Err(CommandError::panicked()))
                 })
                 .collect()
         });

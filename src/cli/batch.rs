@@ -1,10 +1,12 @@
 //! `curvekit batch`: one command over many inputs on a pool of threads, one JSON line per input
 //! in input order; an input that fails becomes its line, never the end of the run.
 
-use super::{Failure, MethodArg};
+use super::{Failure, MethodArg, UsageError};
 use clap::Args;
 use curvekit::commands::{self, json_document, CommandError};
-use curvekit::io::{parse_curve, parse_region, read_curve_picked, read_region, Curve};
+use curvekit::io::{
+    parse_curve, parse_region, read_curve_picked, read_region, Curve, CurveFileError,
+};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde_json::Value;
@@ -112,7 +114,7 @@ enum Input {
     /// A JSON-lines file that could not be read: its one line is the error.
     Unreadable {
         name: String,
-        error: CommandError,
+        error: CurveFileError,
     },
 }
 
@@ -130,9 +132,9 @@ impl Input {
 pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
     let jobs = match batch.jobs {
         Some(n) if !(1..=MAX_JOBS).contains(&n) => {
-            return Err(Failure::Usage(format!(
-                "--jobs: {n} is out of range: between 1 and {MAX_JOBS}"
-            )))
+            return Err(
+                UsageError::out_of_range("jobs", n, format!("between 1 and {MAX_JOBS}")).into(),
+            )
         }
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
@@ -142,11 +144,11 @@ pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(jobs)
         .build()
-        .map_err(|e| Failure::Other(format!("batch: cannot start {jobs} threads: {e}")))?;
+        .map_err(|source| Failure::Threads { jobs, source })?;
     let mut sink: Box<dyn Write> = match &batch.out {
         Some(path) => Box::new(std::io::BufWriter::new(
             std::fs::File::create(path)
-                .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))?,
+                .map_err(|e| Failure::io(format!("cannot write {}", path.display()), e))?,
         )),
         None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
     };
@@ -202,26 +204,17 @@ pub(crate) fn run(batch: &Batch) -> Result<(), Failure> {
     match written {
         // (The reader stopped reading, as `head` does: a quiet end.)
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => return Ok(()),
-        other => {
-            other.map_err(|e| Failure::Other(format!("batch: cannot write the results: {e}")))?
-        }
+        other => other.map_err(|e| Failure::io("batch: cannot write the results".into(), e))?,
     }
-    match failures.first() {
-        None => Ok(()),
-        Some(first) => {
-            let message = format!(
-                "batch: {} of {} inputs failed (the first: {})",
-                failures.len(),
-                inputs.len(),
-                first.message()
-            );
-            Err(if failures.iter().any(|e| e.exit_code() != 2) {
-                Failure::Other(message)
-            } else {
-                Failure::Usage(message)
-            })
-        }
+    if failures.is_empty() {
+        return Ok(());
     }
+    Err(Failure::Batch {
+        failed: failures.len(),
+        inputs: inputs.len(),
+        computation_failed: failures.iter().any(|e| e.exit_code() != 2),
+        first: Box::new(failures.swap_remove(0)),
+    })
 }
 
 /// The inputs: each file, or each non-blank line of a `.jsonl` file.
@@ -245,11 +238,11 @@ fn expand(paths: &[PathBuf]) -> Vec<Input> {
             ),
             Err(e) => inputs.push(Input::Unreadable {
                 name: file.clone(),
-                error: CommandError::Input(curvekit::io::CurveFileError {
+                error: CurveFileError {
                     file,
                     field: "document".into(),
                     problem: curvekit::io::Problem::Unreadable(e.to_string()),
-                }),
+                },
             }),
         }
     }
@@ -313,11 +306,11 @@ impl Task {
     fn new(b: &Batch) -> Result<Self, Failure> {
         let refused = not_taken(b);
         if !refused.is_empty() {
-            return Err(Failure::Usage(format!(
-                "batch {}: does not take {}",
-                b.command.name(),
-                refused.join("; ")
-            )));
+            return Err(UsageError::NotTaken {
+                command: b.command.name(),
+                options: refused,
+            }
+            .into());
         }
         let curve_opts = antipodal::Options::default().tolerance(b.tol);
         let bisector_opts = super::BisectorArgs {
@@ -361,16 +354,16 @@ impl Task {
             BatchCommand::Vcarve => {
                 commands::validate_medial_options(&medial_opts)?;
                 if b.angle.is_none() {
-                    return Err(Failure::Usage("batch vcarve: --angle is required".into()));
+                    return Err(UsageError::Missing("batch vcarve: --angle is required").into());
                 }
                 commands::validate_vcarve_options(&vcarve_opts)?;
             }
         }
         if b.command == BatchCommand::Tangents && b.with.is_none() {
-            return Err(Failure::Usage(
-                "batch tangents: --with FILE is required (the curve each input is paired with)"
-                    .into(),
-            ));
+            return Err(UsageError::Missing(
+                "batch tangents: --with FILE is required (the curve each input is paired with)",
+            )
+            .into());
         }
         let with = b
             .with
@@ -379,7 +372,7 @@ impl Task {
             .transpose()?;
         if let Some(dir) = &b.figures {
             std::fs::create_dir_all(dir)
-                .map_err(|e| Failure::Other(format!("cannot create {}: {e}", dir.display())))?;
+                .map_err(|e| Failure::io(format!("cannot create {}", dir.display()), e))?;
         }
         Ok(Self {
             command: b.command,
@@ -398,7 +391,7 @@ impl Task {
     /// [`Task::run`], with a panic (a defect, never expected) made this input's failure.
     fn run_caught(&self, k: usize, input: &Input) -> Result<String, CommandError> {
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.run(k, input)))
-            .unwrap_or_else(|_| Err(CommandError::Other("internal error".into())))
+            .unwrap_or_else(|_| Err(CommandError::panicked()))
     }
 
     /// Reads input `k` and runs the command on it: the JSON document of `--json`, with the
@@ -420,7 +413,9 @@ impl Task {
             }
             BatchCommand::Tangents => {
                 let other = self.with.as_ref().ok_or_else(|| {
-                    CommandError::Usage("batch tangents: --with FILE is required".into())
+                    CommandError::from(UsageError::Missing(
+                        "batch tangents: --with FILE is required",
+                    ))
                 })?;
                 let found = commands::tangents(&curve, other, &self.curve_opts)?;
                 let figure = drawn.then(|| super::commands::tangents_figure(&pair, &found));
@@ -458,9 +453,8 @@ impl Task {
         match (&self.figures, figure) {
             (Some(dir), Some(svg)) => {
                 let path = dir.join(figure_name(k, &input.name()));
-                std::fs::write(&path, svg).map_err(|e| {
-                    CommandError::Other(format!("cannot write {}: {e}", path.display()))
-                })?;
+                std::fs::write(&path, svg)
+                    .map_err(|e| CommandError::io(format!("cannot write {}", path.display()), e))?;
                 Ok(with_figure(&line, &path))
             }
             _ => Ok(line),
@@ -479,7 +473,7 @@ impl Task {
                 parse_region(name, None, text.as_bytes(), self.pick)?
             }
             Input::Line { name, text } => parse_curve(name, text)?,
-            Input::Unreadable { error, .. } => return Err(error.clone()),
+            Input::Unreadable { error, .. } => return Err(CommandError::Input(error.clone())),
         })
     }
 }

@@ -101,7 +101,7 @@ struct BisectorRow {
 pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
     common.validate()?;
     std::fs::create_dir_all(out)
-        .map_err(|e| Failure::Other(format!("cannot create {}: {e}", out.display())))?;
+        .map_err(|e| Failure::io(format!("cannot create {}", out.display()), e))?;
     let shapes = DEMO_SHAPES
         .iter()
         .map(|(name, text)| shape_row(name, text, out, common))

@@ -317,6 +317,7 @@ fn parse_tol(s: &str) -> Result<f64, String> {
 
 /// Why a command failed, and so its exit status.
 pub(crate) use curvekit::commands::CommandError as Failure;
+pub(crate) use curvekit::commands::UsageError;
 
 /// Runs one command.
 pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
@@ -389,9 +390,7 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
 pub(crate) fn one_standard_input(paths: &[&Path]) -> Result<(), Failure> {
     let stdin = Path::new(curvekit::io::STDIN_PATH);
     if paths.iter().filter(|p| **p == stdin).count() > 1 {
-        return Err(Failure::Usage(
-            "only one input can be standard input (-)".into(),
-        ));
+        return Err(UsageError::Conflict("only one input can be standard input (-)").into());
     }
     Ok(())
 }
@@ -399,12 +398,12 @@ pub(crate) fn one_standard_input(paths: &[&Path]) -> Result<(), Failure> {
 /// Writes a file, mapping failure to exit 1 with the path named.
 pub(crate) fn write_file(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), Failure> {
     std::fs::write(path, contents)
-        .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))
+        .map_err(|e| Failure::io(format!("cannot write {}", path.display()), e))
 }
 
 /// A result that could not be written (exit 1).
 pub(crate) fn export_failure(e: curvekit::export::ExportError) -> Failure {
-    Failure::Other(e.to_string())
+    Failure::Export(e)
 }
 
 /// Prints to stdout; a closed pipe ends the output quietly (exit 0), as `head` expects.
@@ -414,6 +413,6 @@ pub(crate) fn print_out(text: &str) -> Result<(), Failure> {
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         // (The reader stopped reading, as `head` does: nothing more is wanted, no failure.)
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        other => other.map_err(|e| Failure::Other(format!("cannot write to stdout: {e}"))),
+        other => other.map_err(|e| Failure::io("cannot write to stdout".into(), e)),
     }
 }

@@ -28,8 +28,8 @@ mod regions;
 mod two_curves;
 
 pub use documents::{json_document, json_document_of, CurveSummary, DrawingSummary, Stats};
-pub use errors::CommandError;
 use errors::{antipodal_error, refuse, zeroset_error};
+pub use errors::{CommandError, FailureKind, UsageError};
 pub use found::{AntipodalFound, BisectorFound, InflectionsFound, TangentsFound};
 pub use prepared::{antipodal, inflections, PreparedCurve};
 pub use regions::{
@@ -54,8 +54,7 @@ pub fn validate_bisector_options(opts: &zeroset::BisectorOptions) -> Result<(), 
 
 /// The medial axis's options checked on their own (as [`validate_options`]).
 pub fn validate_medial_options(opts: &medial::MedialOptions) -> Result<(), CommandError> {
-    opts.validate()
-        .map_err(|e| CommandError::Usage(format!("medial: {e}")))
+    opts.validate().map_err(|e| UsageError::Medial(e).into())
 }
 
 /// A region is no curve: the commands on curves refuse it by name.

@@ -1,9 +1,9 @@
 //! The commands on regions (`medial`, `offset`, `vcarve`), each part of a multi-part input
 //! on its own, and the checks of their options.
 
-use super::errors::refuse;
+use super::errors::{refuse, vcarve_error};
 use super::params::{self, InDocument};
-use super::{parts, validate_medial_options, CommandError};
+use super::{parts, validate_medial_options, CommandError, UsageError};
 use crate::io::Curve;
 
 /// The medial axis of a region read (as [`crate::io::read_region`] gives it), its feet in
@@ -48,9 +48,7 @@ fn axes_of_parts(
     };
     parts
         .iter()
-        .map(|r| {
-            medial::medial_axis(r, &opts).map_err(|e| CommandError::Other(format!("medial: {e}")))
-        })
+        .map(|r| medial::medial_axis(r, &opts).map_err(CommandError::Medial))
         .collect()
 }
 
@@ -74,14 +72,12 @@ pub fn validate_distances(distances: &Distances) -> Result<(), CommandError> {
         if d.is_finite() && d > 0.0 {
             Ok(())
         } else {
-            Err(CommandError::Usage(format!(
-                "--{flag}: {d} is out of range: must be a finite number > 0"
-            )))
+            Err(UsageError::out_of_range(flag, d, "must be a finite number > 0").into())
         }
     };
     match distances {
         Distances::List(list) if list.is_empty() => {
-            Err(CommandError::Usage("offset: no distance given".into()))
+            Err(UsageError::Missing("offset: no distance given").into())
         }
         Distances::List(list) => list.iter().try_for_each(|&d| positive("distance", d)),
         Distances::Step(s) => positive("step", *s),
@@ -93,11 +89,11 @@ pub fn validate_distances(distances: &Distances) -> Result<(), CommandError> {
 pub fn validate_offset(distances: &Distances, outward: bool) -> Result<(), CommandError> {
     validate_distances(distances)?;
     if outward && matches!(distances, Distances::Step(_)) {
-        return Err(CommandError::Usage(
+        return Err(UsageError::Conflict(
             "--step: outward offsets never vanish, so a step has no last pass: give \
-             --distance or --distances"
-                .into(),
-        ));
+             --distance or --distances",
+        )
+        .into());
     }
     Ok(())
 }
@@ -128,10 +124,12 @@ pub fn offset(
                 .fold(0.0, f64::max);
             let count = (widest / step).floor();
             if count > MAX_OFFSETS as f64 {
-                return Err(CommandError::Usage(format!(
-                    "--step: {step} is out of range: gives more than {MAX_OFFSETS} offsets in \
-                     this region"
-                )));
+                return Err(UsageError::out_of_range(
+                    "step",
+                    step,
+                    format!("gives more than {MAX_OFFSETS} offsets in this region"),
+                )
+                .into());
             }
             (1..=count as usize).map(|k| k as f64 * step).collect()
         }
@@ -151,8 +149,8 @@ pub fn offset(
                 offset::offsets(r, axis, &list, &opts)
             }
             .map_err(|e| match e {
-                offset::Error::Cancelled => CommandError::Other(format!("offset: {e}")),
-                _ => CommandError::Usage(format!("offset: {e}")),
+                offset::Error::Cancelled => CommandError::Offset(e),
+                _ => UsageError::Offset(e).into(),
             })
         })
         .collect::<Result<Vec<_>, _>>()?;
@@ -169,9 +167,10 @@ pub fn vcarve(
 ) -> Result<offset::VCarve, CommandError> {
     validate_vcarve_options(opts)?;
     if medial_opts.exterior {
-        return Err(CommandError::Usage(
-            "vcarve: the tool path follows the inner medial axis, not the exterior one".into(),
-        ));
+        return Err(UsageError::Conflict(
+            "vcarve: the tool path follows the inner medial axis, not the exterior one",
+        )
+        .into());
     }
     let axes = axes_of_parts(region, medial_opts)?;
     let parts = region.parts();
@@ -185,12 +184,7 @@ pub fn vcarve(
     let found = parts
         .iter()
         .zip(&axes)
-        .map(|(r, axis)| {
-            offset::vcarve(r, axis, &opts).map_err(|e| match e {
-                offset::Error::Cancelled => CommandError::Other(format!("vcarve: {e}")),
-                _ => CommandError::Usage(format!("vcarve: {}", usage_of(&e))),
-            })
-        })
+        .map(|(r, axis)| offset::vcarve(r, axis, &opts).map_err(vcarve_error))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(parts::joined_carves(found, region.drawing_doubt()))
 }
@@ -198,21 +192,7 @@ pub fn vcarve(
 /// The V-carving options checked on their own (as
 /// [`validate_options`](super::validate_options)).
 pub fn validate_vcarve_options(opts: &offset::VCarveOptions) -> Result<(), CommandError> {
-    opts.validate()
-        .map_err(|e| CommandError::Usage(format!("vcarve: {}", usage_of(&e))))
-}
-
-/// An offset error as the command line names its options (`--max-depth`, not `max_depth`).
-fn usage_of(e: &offset::Error) -> String {
-    match e {
-        offset::Error::BadOption { field, value, why } => {
-            format!(
-                "--{}: {value} is out of range: {why}",
-                field.replace('_', "-")
-            )
-        }
-        other => other.to_string(),
-    }
+    opts.validate().map_err(vcarve_error)
 }
 
 /// The contract's size of a region read: max(width, height) of the bounding box of all its

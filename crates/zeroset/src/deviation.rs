@@ -1,6 +1,9 @@
 //! How far an arc of a traced zero set strays from its chord, measured from samples of the arc
 //! rather than assumed (the tracer's chord tolerance rests on it).
 
+use numeric::minimize::{minimize, Bracket, Limits};
+use std::ops::ControlFlow;
+
 /// Below this fraction of the tolerance at the quarter points, an arc is taken to be within
 /// it without further samples: its image is a single bump between the chord's ends (the fold
 /// and `UNEVEN` tests of the tracer halve anything else), and the image of either half of the parameter
@@ -18,24 +21,21 @@ const DEVIATION_STEPS: usize = 8;
 const DEVIATION_BRACKET: f64 = 1.0 / 64.0;
 
 /// A parabolic step that lands closer than this fraction of the bracket to its middle is
-/// replaced by a golden-section step: it says little (on a skewed bump the parabola's vertex
-/// sits next to the largest sample while the peak lies far off, and the step's small gain
-/// would end the climb there).
+/// replaced by a golden-section step ([`Limits::parabola_min_move`]): it says little (on a
+/// skewed bump the parabola's vertex sits next to the largest sample while the peak lies far
+/// off, and the step's small gain would end the climb there).
 const PARABOLA_MIN_MOVE: f64 = 0.1;
 
 /// The least the maximum is taken to lie above the best sample when the climb ends, as a
 /// fraction of the tolerance (the last step's change is used when larger).
 const DEVIATION_CONVERGED: f64 = 0.01;
 
-/// The golden-section fraction, (3 − √5)/2.
-const GOLDEN: f64 = 0.381_966_011_250_105_1;
-
 /// The largest deviation of an arc from its chord, measured rather than assumed from three
 /// samples when they come near the tolerance: `sampled` holds `deviation` at `w` = 1/4, 1/2,
 /// 3/4 (it is 0 at both ends). From the largest sample and its neighbours, a safeguarded
-/// climb (Brent's rule: the parabola's vertex when it moves far enough, else a golden-section
-/// step into the wider side) closes the bracket round the maximum to [`DEVIATION_BRACKET`];
-/// the last step's change is added for what the climb leaves. A climb that cannot close its
+/// climb ([`numeric::minimize`]: the parabola's vertex when it moves far enough, else a
+/// golden-section step into the wider side) closes the bracket round the maximum to
+/// [`DEVIATION_BRACKET`]; the last step's change is added for what the climb leaves. A climb that cannot close its
 /// bracket within [`DEVIATION_STEPS`] reports the tolerance exceeded, so the segment is
 /// halved. Returns as soon as the tolerance is exceeded (the segment is halved anyway).
 pub(crate) fn measured_deviation(
@@ -49,61 +49,45 @@ pub(crate) fn measured_deviation(
         return best;
     }
     // A bracket (w, f) around the largest sample: its neighbours, the chord's ends giving 0.
+    // The climb is numeric's minimisation of the deviation turned over (negating is exact: the
+    // same steps, the same comparisons).
     let at = |i: usize| match i {
         0 => (0.0, 0.0),
         4 => (1.0, 0.0),
-        i => (0.25 * i as f64, sampled[i - 1]),
+        i => (0.25 * i as f64, -sampled[i - 1]),
     };
-    let (mut lo, mut mid, mut hi): ((f64, f64), (f64, f64), (f64, f64)) =
-        (at(k), at(k + 1), at(k + 2));
-    // What the last step changed: about what the climb leaves unmeasured when it stops.
-    let mut left = tol;
-    for _ in 0..DEVIATION_STEPS {
-        let width = hi.0 - lo.0;
-        if width <= DEVIATION_BRACKET {
-            // The maximum may lie above the best sample by about the last step's change.
-            return best + left.max(DEVIATION_CONVERGED * tol);
-        }
-        let (d1, d2) = (mid.0 - lo.0, mid.0 - hi.0);
-        let (g1, g2) = (mid.1 - lo.1, mid.1 - hi.1);
-        let den = d1 * g2 - d2 * g1;
-        let vertex = mid.0 - 0.5 * (d1 * d1 * g2 - d2 * d2 * g1) / den;
-        let w = if den != 0.0
-            && vertex > lo.0
-            && vertex < hi.0
-            && (vertex - mid.0).abs() >= PARABOLA_MIN_MOVE * width
-        {
-            vertex
-        } else if hi.0 - mid.0 > mid.0 - lo.0 {
-            mid.0 + GOLDEN * (hi.0 - mid.0)
-        } else {
-            mid.0 - GOLDEN * (mid.0 - lo.0)
-        };
-        let f = deviation(w);
-        best = best.max(f);
-        if best > tol {
-            return best;
-        }
-        left = (f - mid.1).abs();
-        // Keep the larger of the new point and the middle as the middle of the bracket.
-        if f >= mid.1 {
-            if w < mid.0 {
-                hi = mid;
+    let bracket = Bracket {
+        lo: at(k),
+        mid: at(k + 1),
+        hi: at(k + 2),
+    };
+    let limits = Limits {
+        width: DEVIATION_BRACKET,
+        max_steps: DEVIATION_STEPS,
+        parabola_min_move: PARABOLA_MIN_MOVE,
+    };
+    let climb = minimize(
+        |w| {
+            let f = deviation(w);
+            best = best.max(f);
+            // Returns as soon as the tolerance is exceeded.
+            if best > tol {
+                ControlFlow::Break(())
             } else {
-                lo = mid;
+                ControlFlow::Continue(-f)
             }
-            mid = (w, f);
-        } else if w < mid.0 {
-            lo = (w, f);
-        } else {
-            hi = (w, f);
+        },
+        bracket,
+        limits,
+    );
+    match climb {
+        ControlFlow::Break(()) => best,
+        // The maximum may lie above the best sample by about the last step's change.
+        ControlFlow::Continue(m) if m.closed => {
+            best + m.last_change.unwrap_or(tol).max(DEVIATION_CONVERGED * tol)
         }
-    }
-    if hi.0 - lo.0 <= DEVIATION_BRACKET {
-        best + left.max(DEVIATION_CONVERGED * tol)
-    } else {
         // Not located: taken as exceeded, so the segment is halved and measured again.
-        tol * (1.0 + DEVIATION_CONVERGED)
+        ControlFlow::Continue(_) => tol * (1.0 + DEVIATION_CONVERGED),
     }
 }
 

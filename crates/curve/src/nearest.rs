@@ -8,6 +8,8 @@ use crate::param::ParamCurve;
 use crate::piece_bounds::box_distance;
 use crate::profile::Profile;
 use crate::segment::Segment;
+use numeric::minimize::{minimize, Bracket, Limits};
+use std::ops::ControlFlow;
 
 /// Samples per Bézier piece of a segment's exact form.
 const SAMPLES_PER_PIECE: usize = 32;
@@ -15,8 +17,19 @@ const SAMPLES_PER_PIECE: usize = 32;
 /// Newton steps from a sampled minimum.
 const NEAREST_NEWTON_STEPS: usize = 20;
 
-/// Golden-section steps on a window of two sample steps (0.618^48 of it: below rounding).
-const GOLDEN_STEPS: usize = 48;
+/// The minimisation on a window of two sample steps closes it to this share of it (0.618⁴⁸,
+/// what 48 golden sections leave): Newton's polish takes over from there, and where it cannot
+/// (a flat distance, near a centre of curvature) the parameter matters to the distance only
+/// far below rounding.
+const NEAREST_BRACKET: f64 = 1e-10;
+
+/// Evaluations of the distance in the minimisation on a window: golden sections alone close
+/// it to [`NEAREST_BRACKET`] within 48 (with the middle at a golden section) to 52.
+const NEAREST_MIN_STEPS: usize = 96;
+
+/// A parabolic step nearer the bracket's middle than this share of it is a golden section
+/// instead ([`Limits::parabola_min_move`]): it keeps the parabola from creeping.
+const NEAREST_PARABOLA_MOVE: f64 = 0.1;
 
 /// The nearest point found.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -109,11 +122,27 @@ fn nearest_on(s: &Segment, x: V2) -> (f64, f64) {
             continue;
         }
 
-        let (lo, hi) = (at(k.saturating_sub(1)), at((k + 1).min(n)));
-        // Golden-section search on the window first: near a centre of curvature the
-        // distance is flat and Newton's step has no sign to go by; then Newton's method
-        // polishes where the distance is convex.
-        let u = polish(c, x, golden(&dist, lo, hi), lo, hi);
+        let (lo, hi) = (k.saturating_sub(1), (k + 1).min(n));
+        // The sampled minimum and its neighbours bracket a minimum: numeric's minimisation
+        // closes the bracket first (near a centre of curvature the distance is flat and
+        // Newton's step has no sign to go by); then Newton's method polishes where the
+        // distance is convex.
+        let bracket = Bracket {
+            lo: (at(lo), ds[lo]),
+            mid: (at(k), ds[k]),
+            hi: (at(hi), ds[hi]),
+        };
+        let (lo, hi) = (at(lo), at(hi));
+        let limits = Limits {
+            width: NEAREST_BRACKET * (hi - lo),
+            max_steps: NEAREST_MIN_STEPS,
+            parabola_min_move: NEAREST_PARABOLA_MOVE,
+        };
+        let found = match minimize(|u| ControlFlow::<(), _>::Continue(dist(u)), bracket, limits) {
+            ControlFlow::Continue(m) => m.bracket.mid.0,
+            ControlFlow::Break(()) => at(k),
+        };
+        let u = polish(c, x, found, lo, hi);
         let d = dist(u);
         if d < best.0 {
             best = (d, u);
@@ -125,38 +154,17 @@ fn nearest_on(s: &Segment, x: V2) -> (f64, f64) {
     best
 }
 
-/// The minimum of `f` on `[lo, hi]` by golden-section search (a local one, if several).
-fn golden(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..GOLDEN_STEPS {
-        let (c, e) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        if f(c) < f(e) {
-            hi = e;
-        } else {
-            lo = c;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
 /// Newton's method on `⟨C − x, C'⟩ = 0` from `u` within `[lo, hi]`, kept only while it
-/// brings the curve nearer.
-fn polish(c: &impl ParamCurve, x: V2, mut u: f64, lo: f64, hi: f64) -> f64 {
+/// brings the curve nearer ([`numeric::minimize::polish`] on the distance, with the
+/// derivatives of half its square).
+fn polish(c: &impl ParamCurve, x: V2, u: f64, lo: f64, hi: f64) -> f64 {
     let dist = |u: f64| (c.jet_to(u, 0).p - x).norm();
-    for _ in 0..NEAREST_NEWTON_STEPS {
+    let slope = |u: f64| {
         let j = c.jet_to(u, 2);
         let v = j.p - x;
-        let h = j.d1.dot(j.d1) + v.dot(j.d2);
-        if h.is_nan() || h <= 0.0 {
-            break;
-        }
-        let next = (u - v.dot(j.d1) / h).clamp(lo, hi);
-        if next == u || dist(next) > dist(u) {
-            break;
-        }
-        u = next;
-    }
-    u
+        (v.dot(j.d1), j.d1.dot(j.d1) + v.dot(j.d2))
+    };
+    numeric::minimize::polish(dist, slope, u, (lo, hi), NEAREST_NEWTON_STEPS)
 }
 
 #[cfg(test)]

@@ -83,8 +83,8 @@ pub struct Minimum {
 /// let f = |x: f64| (x - 0.3) * (x - 0.3) + 1.0;
 /// let bracket = Bracket { lo: (0.0, f(0.0)), mid: (0.5, f(0.5)), hi: (1.0, f(1.0)) };
 /// let limits = Limits { width: 1e-6, max_steps: 60, parabola_min_move: 0.0 };
-/// let ControlFlow::Continue(m) = minimize(|x| ControlFlow::<(), _>::Continue(f(x)), bracket, limits)
-/// else { unreachable!() };
+/// let search = minimize(|x| ControlFlow::<(), _>::Continue(f(x)), bracket, limits);
+/// let ControlFlow::Continue(m) = search else { unreachable!() };
 /// assert!(m.closed && (m.bracket.mid.0 - 0.3).abs() < 1e-6);
 /// ```
 pub fn minimize<B>(

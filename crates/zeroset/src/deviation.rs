@@ -35,9 +35,9 @@ const DEVIATION_CONVERGED: f64 = 0.01;
 /// 3/4 (it is 0 at both ends). From the largest sample and its neighbours, a safeguarded
 /// climb ([`numeric::minimize`]: the parabola's vertex when it moves far enough, else a
 /// golden-section step into the wider side) closes the bracket round the maximum to
-/// [`DEVIATION_BRACKET`]; the last step's change is added for what the climb leaves. A climb that cannot close its
-/// bracket within [`DEVIATION_STEPS`] reports the tolerance exceeded, so the segment is
-/// halved. Returns as soon as the tolerance is exceeded (the segment is halved anyway).
+/// [`DEVIATION_BRACKET`]; the last step's change is added for what the climb leaves. A climb
+/// that cannot close its bracket within [`DEVIATION_STEPS`] reports the tolerance exceeded,
+/// so the segment is halved. Returns as soon as the tolerance is exceeded (the segment is halved anyway).
 pub(crate) fn measured_deviation(
     deviation: &dyn Fn(f64) -> f64,
     sampled: [f64; 3],

@@ -27,6 +27,7 @@ use crate::{MedialAxis, Node, NodeKind};
 use curve::ParamCurve;
 use ends::{end_at_curvature_peak, end_on_arc};
 use junctions::{closed_form_junction_proven, junction_proven};
+use numeric::certificate::{Doubt, UnreachedCorner};
 use std::collections::HashSet;
 
 /// Radii of the disks about a junction searched for its exact point, as shares of the size:
@@ -39,79 +40,26 @@ pub(crate) const JUNCTION_ROOM: [f64; 2] = [1e-10, 1e-9];
 /// (the stretches meeting at a junction found it to ~1e-12 of the size each).
 const SAME_FOOT: f64 = 1e-6;
 
-/// Why an axis is not certified.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Doubt {
-    /// A disk was decided by the nearest point found (within rounding of the boundary).
-    Disk,
-    /// A junction's exact point was not proven near it.
-    Junction,
-    /// An end's curvature extremum was not proven.
-    End,
-    /// A corner leaf is not at a corner convex for the region.
-    Corner,
-    /// The graph is not one piece with a cycle per hole (the axis inside a region is).
-    Graph,
-    /// The feet of the edges do not cover the boundaries once round ([`crate::coverage`]):
-    /// a piece of the axis may be missing.
-    Coverage,
-    /// A search limit was hit.
-    SearchLimit,
-    /// The work was cancelled before every node was proven (no such axis is answered: its
-    /// caller says "cancelled").
-    Cancelled,
-}
-
-impl Doubt {
-    /// The reason, as the result states it.
-    pub(crate) fn reason(self) -> &'static str {
-        match self {
-            Doubt::Disk => {
-                "a disk's emptiness was decided by the nearest point found, within rounding of \
-                 the boundary"
-            }
-            Doubt::Junction => {
-                "a junction's tri-tangent disk was not proven within 1e-9 of the size of it"
-            }
-            Doubt::Graph => "the graph is not one connected piece with one cycle per hole",
-            Doubt::Coverage => {
-                "the feet of the edges do not cover the boundaries once round: a piece of the \
-                 axis may be missing"
-            }
-            Doubt::Corner => {
-                "a corner leaf is not at a corner of the boundary convex for the region"
-            }
-            Doubt::End => {
-                "an end was not proven at an arc's centre, or at a centre of curvature within \
-                 the tolerance of a proven peak of the curvature"
-            }
-            Doubt::SearchLimit => "a search limit was hit",
-            Doubt::Cancelled => "the work was cancelled before the axis was proven",
-        }
-    }
-
-    /// The reason as the result states it for `axis` of `sites`: where a piece may be
-    /// missing (the graph's shape or the feet's gap), with the first convex corner no leaf
-    /// reaches, if any.
-    pub(crate) fn stated(self, sites: &Sites<'_>, axis: &MedialAxis) -> String {
-        let reason = self.reason();
-        if !matches!(self, Doubt::Graph | Doubt::Coverage) {
-            return reason.to_string();
-        }
-        let unreached = crate::coverage::unreached_convex_corners(sites, axis);
-        let Some(first) = unreached.first() else {
-            return reason.to_string();
-        };
-        let more = match unreached.len() - 1 {
-            0 => String::new(),
-            1 => " (and 1 more such corner)".to_string(),
-            m => format!(" (and {m} more such corners)"),
-        };
-        format!(
-            "{reason}: no leaf reaches the convex corner at ({}, {}) of boundary {}, which turns \
-             by {:.1e} rad{more}",
-            first.xy[0], first.xy[1], first.boundary, first.turn,
-        )
+/// `doubt` placed on `axis` of `sites`: where the axis's graph or its feet show a piece
+/// may be missing, the first convex corner no leaf reaches (if any), which its reason names.
+pub(crate) fn placed(doubt: Doubt, sites: &Sites<'_>, axis: &MedialAxis) -> Doubt {
+    let unreached = || {
+        let corners = crate::coverage::unreached_convex_corners(sites, axis);
+        corners.first().map(|first| UnreachedCorner {
+            at: first.xy,
+            boundary: first.boundary,
+            turn: first.turn,
+            more: corners.len() - 1,
+        })
+    };
+    match doubt {
+        Doubt::AxisGraph { unreached: None } => Doubt::AxisGraph {
+            unreached: unreached(),
+        },
+        Doubt::Coverage { unreached: None } => Doubt::Coverage {
+            unreached: unreached(),
+        },
+        other => other,
     }
 }
 
@@ -165,8 +113,8 @@ pub(crate) fn doubt(
         };
         (!proven).then_some(match node.kind {
             NodeKind::Junction => Doubt::Junction,
-            NodeKind::Corner => Doubt::Corner,
-            _ => Doubt::End,
+            NodeKind::Corner => Doubt::CornerLeaf,
+            _ => Doubt::AxisEnd,
         })
     })
 }

@@ -55,8 +55,8 @@ pub use error::{Error, Result};
 pub use fit::EdgeSpline;
 
 use candidates::PairSource;
-use certificate::Doubt;
 use curve::Region;
+use numeric::certificate::{Doubt, Doubts};
 use numeric::tolerance::check_pair;
 use numeric::tolerance::{DEFAULT_CHORD_TOL, DEFAULT_PARAM_TOL};
 use serde::{Deserialize, Serialize};
@@ -330,15 +330,16 @@ fn axis_of(
     let _stage = curve::watch::stage("medial axis: the edges joined at their nodes");
     let (mut axis, loose_join) = assemble::assemble(&sites, pieces, &found, merge);
     axis.complete &= complete;
+    // (The first doubt met is the one the axis states: the checks run in that order.)
     let doubt = if !axis.complete {
         Some(Doubt::SearchLimit)
     } else if !opts.exterior && !certificate::shaped_like_the_region(&axis, region.holes().len()) {
-        Some(Doubt::Graph)
+        Some(Doubt::AxisGraph { unreached: None })
     } else {
         // (The nodes' proofs test disks too: whether any disk was undecided is asked after.)
         let at_node = certificate::doubt(&sites, &axis, opts.tol, &proven);
         if sites.some_disk_undecided() {
-            Some(Doubt::Disk)
+            Some(Doubt::DiskByNearest)
         } else if at_node.is_some() {
             at_node
         } else if !opts.exterior
@@ -348,7 +349,7 @@ fn axis_of(
             // (Whatever path found the pairs: a bisector the candidates missed leaves a gap.
             // An axis of one node and no edge has no feet: its node is proven at the centre
             // of a boundary that is one circle.)
-            Some(Doubt::Coverage)
+            Some(Doubt::Coverage { unreached: None })
         } else {
             None
         }
@@ -356,8 +357,13 @@ fn axis_of(
     if curve::watch::cancelled() {
         return Ok((empty_axis(), false));
     }
-    axis.certified = doubt.is_none();
-    axis.reason = doubt.map(|d| d.stated(&sites, &axis));
+    // (Where a piece may be missing, the reason names the first corner no leaf reaches.)
+    let doubts: Doubts = doubt
+        .map(|d| certificate::placed(d, &sites, &axis))
+        .into_iter()
+        .collect();
+    axis.certified = doubts.is_empty();
+    axis.reason = doubts.reason();
     if opts.fit {
         let tol = traced.chord_tol * sites.size;
         for e in &mut axis.edges {

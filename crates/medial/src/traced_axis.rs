@@ -413,9 +413,9 @@ mod tests {
         assert!(!bounds.certified);
         // (The reason names the corner.)
         let reason = bounds.reason.unwrap_or_default();
-        let coverage = crate::certificate::Doubt::Coverage.reason();
+        let coverage = numeric::certificate::Doubt::Coverage { unreached: None }.to_string();
         assert!(
-            reason.starts_with(coverage)
+            reason.starts_with(&coverage)
                 && reason.contains("(-0.5443380122571256, 0.9428210937203926)"),
             "{reason}"
         );

@@ -43,6 +43,7 @@ pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};
 
 use curve::{ParamCurve, Profile, Region};
 use medial::MedialAxis;
+use numeric::certificate::{Certified, Doubt, Doubts};
 use numeric::tolerance::ChordTol;
 use read_back::{read_back, ReadBack};
 use serde::{Deserialize, Serialize};
@@ -130,7 +131,7 @@ pub fn offsets(
     distances: &[f64],
     opts: &OffsetOptions,
 ) -> Result<Offsets, Error> {
-    offsets_on(region, axis, distances, opts, false)
+    Ok(offsets_on(region, axis, distances, opts, false)?.value)
 }
 
 /// The outward offsets of `region` at each of `distances` (the boundary of the points within
@@ -152,7 +153,7 @@ pub fn outward_offsets(
             why: "outward, must stay below half the region's size (the exterior axis's margin)",
         });
     }
-    let mut found = offsets_on(region, exterior, distances, opts, true)?;
+    let mut found = offsets_on(region, exterior, distances, opts, true)?.value;
     // (Walked with the outside on the left: turned round, the grown region is on the left.)
     for o in &mut found.offsets {
         for l in &mut o.loops {
@@ -175,14 +176,15 @@ pub fn outward_offsets(
     Ok(found)
 }
 
-/// The offsets inward, or `outward`, from the axis on that side.
-fn offsets_on(
+/// The offsets inward, or `outward`, from the axis on that side, with the doubts their
+/// `certified` and `reason` state.
+pub(crate) fn offsets_on(
     region: &Region,
     axis: &MedialAxis,
     distances: &[f64],
     opts: &OffsetOptions,
     outward: bool,
-) -> Result<Offsets, Error> {
+) -> Result<Certified<Offsets>, Error> {
     if let Err(e) = ChordTol::new(opts.chord_tol) {
         return Err(Error::BadOption {
             field: "chord_tol",
@@ -319,48 +321,45 @@ fn offsets_on(
             error,
         });
     }
-    let reason = if !axis.certified {
-        Some("the medial axis is not certified".to_string())
-    } else if !all_closed {
-        Some("a seam's feet did not converge".to_string())
-    } else if loops_left_out {
-        Some(
-            "a loop's pieces did not meet by more than the chord tolerance (a seam the axis does \
-             not show), and it was left out"
-                .to_string(),
-        )
-    } else if loops_bridged {
-        Some(
-            "a loop's pieces did not meet (a seam the axis does not show), and the gap, within \
-             the chord tolerance, was bridged by a line"
-                .to_string(),
-        )
-    } else if widest_error > chord {
-        Some(format!(
-            "a spline's offset is {widest_error:e} from the exact offset where measured, past the \
-             chord tolerance"
-        ))
-    } else if let Some(bad) = not_a_profile {
-        Some(format!("a loop is not a simple closed profile: {bad}"))
-    } else if !necks_resolved {
-        // (Before the loops' crossings: across an unresolved neck they cross in truth.)
-        Some(
-            "the axis's radius may cross a distance between two of its vertices (a neck or a \
-             bump whose extremum was not found on the axis)"
-                .to_string(),
-        )
-    } else if !loops_apart {
-        Some(
-            "two loops' fitted pieces cross across a passage narrower than they follow".to_string(),
-        )
-    } else {
-        None
-    };
-    Ok(Offsets {
-        offsets: found,
-        certified: reason.is_none(),
-        reason,
-        complete: axis.complete && consistent,
+    // The doubts in the order they are stated: the first is the reason.
+    let mut doubts = Doubts::none();
+    if !axis.certified {
+        doubts.add(Doubt::AxisUncertified);
+    }
+    if !all_closed {
+        doubts.add(Doubt::SeamUnconverged);
+    }
+    if loops_left_out {
+        doubts.add(Doubt::LoopLeftOut);
+    }
+    if loops_bridged {
+        doubts.add(Doubt::LoopBridged);
+    }
+    if widest_error > chord {
+        doubts.add(Doubt::OffsetError {
+            error: widest_error,
+        });
+    }
+    if let Some(bad) = not_a_profile {
+        doubts.add(Doubt::LoopNotAProfile {
+            why: bad.to_string(),
+        });
+    }
+    // (Before the loops' crossings: across an unresolved neck they cross in truth.)
+    if !necks_resolved {
+        doubts.add(Doubt::NeckUnresolved);
+    }
+    if !loops_apart {
+        doubts.add(Doubt::LoopsCross);
+    }
+    Ok(Certified {
+        value: Offsets {
+            offsets: found,
+            certified: doubts.is_empty(),
+            reason: doubts.reason(),
+            complete: axis.complete && consistent,
+        },
+        doubts,
     })
 }
 

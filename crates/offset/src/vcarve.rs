@@ -11,9 +11,10 @@
 //! uncut, the points farther than `2R` from the boundary: a flat-bottomed pocket for another
 //! tool.
 
-use crate::{offsets, Error, OffsetLoop, OffsetOptions};
+use crate::{Error, OffsetLoop, OffsetOptions};
 use curve::Region;
 use medial::MedialAxis;
+use numeric::certificate::{Doubt, Doubts};
 use serde::{Deserialize, Serialize};
 
 /// Options of [`vcarve`].
@@ -134,19 +135,23 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
             part: 0,
         })
         .collect();
-    let (mut certified, mut complete, mut reason) =
-        (axis.certified, axis.complete, axis.reason.clone());
+    let mut complete = axis.complete;
+    let mut doubts = Doubts::none();
+    if !axis.certified {
+        doubts.add(Doubt::AxisUncertified);
+    }
+    // (The flat passes' doubts, where asked: they are stated after the axis's own reason.)
+    let mut flats_reason = None;
     let mut flats = Vec::new();
     if let Some(depth) = opts.max_depth {
         // (Asked whenever there is a limit: where the axis never reaches it the region has
         // no offset there and the loops are none; the offset's own doubts, a neck between
         // vertices, say whether it does.)
-        let found = offsets(region, axis, &[widest], &opts.offset)?;
-        certified &= found.certified;
+        let (found, found_doubts) =
+            crate::offsets_on(region, axis, &[widest], &opts.offset, false)?.into_parts();
         complete &= found.complete;
-        if reason.is_none() {
-            reason = found.reason;
-        }
+        flats_reason = found.reason;
+        doubts.join(found_doubts);
         flats = found.offsets.into_iter().flat_map(|o| o.loops).collect();
         // Where the axis is deeper, the path follows the flat pass at −H (the contract's
         // "Output files and V-carving"), within the chord tolerance of it.
@@ -166,10 +171,21 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
         max_depth: opts.max_depth,
         paths,
         flats,
-        certified,
-        reason: if certified { None } else { reason },
+        certified: doubts.is_empty(),
+        reason: stated(&doubts, axis, flats_reason),
         complete,
     })
+}
+
+/// The reason a carve with `doubts` states: the axis's own reason (until the axis carries its
+/// doubts as values, its reason is how they reach the carve), else the flat passes' (None
+/// where `doubts` are none).
+fn stated(doubts: &Doubts, axis: &MedialAxis, flats_reason: Option<String>) -> Option<String> {
+    if doubts.is_empty() {
+        None
+    } else {
+        axis.reason.clone().or(flats_reason)
+    }
 }
 
 /// A run of axis points `(xy, radius)`, and the nodes it starts and ends at (`None` where it

@@ -150,7 +150,7 @@ fn a_corner_leaf_at_a_reflex_corner_is_not_proven() {
     axis.nodes[k].xy = [2.0, 2.0]; // the reflex corner
     assert_eq!(
         doubt(&sites, &axis, TOL, &HashSet::new()),
-        Some(Doubt::Corner)
+        Some(Doubt::CornerLeaf)
     );
 }
 
@@ -165,7 +165,10 @@ fn an_end_off_its_arcs_centre_is_not_proven() {
         .position(|n| n.kind == NodeKind::End)
         .expect("an end");
     axis.nodes[e].xy[0] += 2e-9 * sites.size;
-    assert_eq!(doubt(&sites, &axis, TOL, &HashSet::new()), Some(Doubt::End));
+    assert_eq!(
+        doubt(&sites, &axis, TOL, &HashSet::new()),
+        Some(Doubt::AxisEnd)
+    );
 }
 
 /// The periodic cubic: two ends at centres of curvature of its sharpest points.
@@ -205,7 +208,7 @@ fn ends_at_proven_peaks_of_a_splines_curvature_are_certified() {
     moved.nodes[e].radius = 1.0 / j.curvature().abs();
     assert_eq!(
         doubt(&sites, &moved, TOL, &HashSet::new()),
-        Some(Doubt::End)
+        Some(Doubt::AxisEnd)
     );
     // Its disk is still empty: the rates decided.
     assert_eq!(

@@ -114,6 +114,21 @@ pub enum Doubt {
         /// The segment the tangency is on.
         segment: usize,
     },
+    /// A foot point of a profile's corner (a pair with the corner at one end) is not
+    /// separated from another within rounding.
+    FootFromCorner {
+        /// The profile parameter of the corner.
+        u: f64,
+        /// The segment the foot point is on.
+        segment: usize,
+    },
+    /// The foot points of a profile's corner on a segment could not be found.
+    CornerFeetNotFound {
+        /// The segment.
+        segment: usize,
+        /// Why, as the search's error states it.
+        why: String,
+    },
 
     // The medial axis.
     /// A disk's emptiness was decided by the nearest point found, within rounding of the
@@ -293,6 +308,8 @@ impl Doubt {
             | Doubt::CurvatureAtSegmentEnd { .. }
             | Doubt::CurvatureAtJoint { .. }
             | Doubt::TangencyFromCorner { .. }
+            | Doubt::FootFromCorner { .. }
+            | Doubt::CornerFeetNotFound { .. }
             | Doubt::OffsetError { .. }
             | Doubt::LoopNotAProfile { .. }
             | Doubt::Stated { .. } => "",
@@ -322,6 +339,15 @@ impl fmt::Display for Doubt {
                 f,
                 "a point of tangency from the corner at u = {u} on segment {segment} is not \
                  separated from another within rounding"
+            ),
+            Doubt::FootFromCorner { u, segment } => write!(
+                f,
+                "a foot point of the corner at u = {u} on segment {segment} is not separated \
+                 from another within rounding"
+            ),
+            Doubt::CornerFeetNotFound { segment, why } => write!(
+                f,
+                "the foot points of a corner on segment {segment} were not found: {why}"
             ),
             Doubt::OffsetError { error } => write!(
                 f,
@@ -579,6 +605,11 @@ mod tests {
             Doubt::CurvatureAtSegmentEnd { u: 1.0, segment: 0 },
             Doubt::CurvatureAtJoint { u: 1.0 },
             Doubt::TangencyFromCorner { u: 1.0, segment: 2 },
+            Doubt::FootFromCorner { u: 1.0, segment: 2 },
+            Doubt::CornerFeetNotFound {
+                segment: 1,
+                why: "no root".into(),
+            },
             Doubt::DiskByNearest,
             Doubt::Junction,
             Doubt::AxisEnd,

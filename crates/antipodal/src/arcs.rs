@@ -177,7 +177,7 @@ mod tests {
         ) {
             let c = curve(deg, &seed, rational.then_some(&w[..]));
             let prep = as_given(&c);
-            let v = View::new(prep.source(true), false, 1e-12);
+            let v = View::new(prep.source(true), false, 1e-12).value;
             let lo = v.a + a * v.period;
             let hi = lo + len * v.period;
             let Some(b) = v.arc_bounds(lo, hi) else {

@@ -16,6 +16,7 @@ use crate::types::{Options, ProfilePair};
 use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
 use bspline::Piecewise;
 use curve::{Frame, ParamCurve, Profile, SplineCurve, V2};
+use numeric::certificate::{Doubt, Doubts};
 
 /// How far inside a cone (the sine of the angle to its nearer edge) a direction must be to be
 /// inside it rather than on its edge: far above the rounding of the unit directions compared,
@@ -51,10 +52,10 @@ impl CornerSite {
     }
 }
 
-/// The pairs with a corner, and why they are not certified where they are not.
+/// The pairs with a corner, and the doubts met finding them.
 pub(crate) struct CornerPairs {
     pub(crate) pairs: Vec<ProfilePair>,
-    pub(crate) reason: Option<String>,
+    pub(crate) doubts: Doubts,
 }
 
 /// Every pair with a convex corner at one end or both (see the module documentation), with
@@ -68,7 +69,7 @@ pub(crate) fn corner_pairs(
 ) -> CornerPairs {
     let mut out = CornerPairs {
         pairs: Vec::new(),
-        reason: None,
+        doubts: Doubts::none(),
     };
     let global = |p: V2| frame.to_global(p.arr());
     for (k, a) in sites.iter().enumerate() {
@@ -109,12 +110,9 @@ pub(crate) fn corner_pairs(
                             continue;
                         }
                         if !foot.separated {
-                            out.reason.get_or_insert_with(|| {
-                                format!(
-                                    "a foot point of the corner at u = {} on segment {i} is \
-                                     not separated from another within rounding",
-                                    site.u
-                                )
+                            out.doubts.add(Doubt::FootFromCorner {
+                                u: site.u,
+                                segment: i,
                             });
                             continue;
                         }
@@ -141,8 +139,9 @@ pub(crate) fn corner_pairs(
                     }
                 }
                 Err(e) => {
-                    out.reason.get_or_insert_with(|| {
-                        format!("the foot points of a corner on segment {i} were not found: {e}")
+                    out.doubts.add(Doubt::CornerFeetNotFound {
+                        segment: i,
+                        why: e.to_string(),
                     });
                 }
             }

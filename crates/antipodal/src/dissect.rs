@@ -5,13 +5,13 @@
 //! tangent numerator's control points on the interval lie in an open half-plane, so the tangent
 //! turns by less than π there. Analytic curves are sampled (Jia's method, not certified).
 
-use crate::doubt::Doubt;
 use crate::error::Result;
 use crate::prims::solve_in;
 use crate::tracks::Tracks;
 use crate::view::View;
 use bspline::roots::SignChangeKind;
 use curve::V2;
+use numeric::certificate::{Doubt, Doubts};
 use numeric::rounding::ulps;
 use smallvec::SmallVec;
 use std::f64::consts::PI;
@@ -114,7 +114,7 @@ pub(crate) struct Zeros {
 impl View<'_> {
     /// Simple inflections in `[a, a + period)`, sorted (Jia §5.1): from the symbolic forms,
     /// or sampled along the track `tr` (built here when not given).
-    pub(crate) fn inflections(&self, tr: Option<&Tracks>) -> Result<Zeros> {
+    pub(crate) fn inflections(&self, tr: Option<&Tracks>, doubts: &mut Doubts) -> Result<Zeros> {
         let mut flats = Vec::new();
         let mut flat_changes = Vec::new();
         let mut out = match &self.cert {
@@ -125,7 +125,7 @@ impl View<'_> {
                 // closed curve. Clusters wider than 1e-6 of the period are straight stretches.
                 let found = cert.curvature_sign_changes(&cert.opts, self.closed)?;
                 if !found.certified() {
-                    self.uncertify(Doubt::CurvatureUnresolved);
+                    doubts.add(Doubt::CurvatureUnresolved);
                 }
                 // A stretch whose curvature vanishes within rounding is taken as straight:
                 // proven where the data make it exactly straight, a judgement elsewhere.
@@ -133,7 +133,7 @@ impl View<'_> {
                     let (lo, hi) = f.bracket;
                     self.straight_chain(lo, hi).is_none()
                 }) {
-                    self.uncertify(Doubt::FlatWithinRounding);
+                    doubts.add(Doubt::FlatWithinRounding);
                 }
                 flats.extend(found.flats.iter().map(|f| f.bracket));
                 // (A straight stretch between opposite bends: the inflection is the stretch,
@@ -154,7 +154,7 @@ impl View<'_> {
                             _ => (false, true),
                         };
                         if !certain {
-                            self.uncertify(Doubt::CornerUndecided);
+                            doubts.add(Doubt::CornerUndecided);
                         }
                         Zero {
                             u: c.u,
@@ -276,7 +276,7 @@ impl View<'_> {
     }
 
     /// The monotone pieces with |Φ| < π (Jia §5.1 step 2).
-    pub(crate) fn pieces(&self, tr: &Tracks, zeros: &Zeros) -> Vec<Piece> {
+    pub(crate) fn pieces(&self, tr: &Tracks, zeros: &Zeros, doubts: &mut Doubts) -> Vec<Piece> {
         let zs: Vec<f64> = zeros.zs.iter().map(|z| z.u).collect();
         let zs = &zs;
         let mut arcs: Vec<(f64, f64)> = Vec::with_capacity(zs.len() + 1);
@@ -312,7 +312,7 @@ impl View<'_> {
                 // A convex curve: start at a generic tangent direction, so that symmetric
                 // shapes do not put their antipodal points on piece ends.
                 let target = self.psi(tr, self.a) + 0.3819660112501051;
-                let w0 = self.param_at_angle(tr, self.a, self.a + self.period, target);
+                let w0 = self.param_at_angle(tr, self.a, self.a + self.period, target, doubts);
                 arcs.push((w0, w0 + self.period));
             } else {
                 for (i, &z) in zs.iter().enumerate() {
@@ -361,7 +361,7 @@ impl View<'_> {
             for j in 1..k {
                 let target = p0 + rot * j as f64 / k as f64;
                 let prev = cuts[cuts.len() - 1];
-                cuts.push(self.param_at_angle(tr, prev, hi, target));
+                cuts.push(self.param_at_angle(tr, prev, hi, target, doubts));
             }
             cuts.push(hi);
             let rate = |u: f64| {
@@ -410,7 +410,14 @@ impl View<'_> {
     }
 
     /// The parameter in `[lo, hi]` (a monotone stretch) where the tangent angle is `target`.
-    fn param_at_angle(&self, tr: &Tracks, lo: f64, hi: f64, target: f64) -> f64 {
+    fn param_at_angle(
+        &self,
+        tr: &Tracks,
+        lo: f64,
+        hi: f64,
+        target: f64,
+        doubts: &mut Doubts,
+    ) -> f64 {
         let k0 = if self.closed {
             ((lo - self.a) / self.period).floor()
         } else {
@@ -439,7 +446,9 @@ impl View<'_> {
                 }
                 if (a0 < 0.0) != (a1 < 0.0) {
                     let n = V2::polar(target).perp();
-                    return self.point_with_normal(x0, x1, n).unwrap_or(0.5 * (x0 + x1));
+                    return self
+                        .point_with_normal(x0, x1, n, doubts)
+                        .unwrap_or(0.5 * (x0 + x1));
                 }
             }
             prev = Some((x1, p1));

@@ -2,10 +2,10 @@
 //! and the two-curve common tangents of §2.5, in the curve's frame.
 
 use crate::dissect::{Piece, Zeros};
-use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::finish::certified_rest;
+use crate::ledger::Ledger;
 use crate::pairs::THETA_NOISE;
 use crate::pairs::{negligible, opposite_pair, Pair};
 use crate::search::{antipodal_points, Budget};
@@ -17,6 +17,7 @@ use crate::types::{
 };
 use crate::view::{Source, View};
 use curve::{wrap_pi, V2};
+use numeric::certificate::{Certified, Doubt, Doubts};
 use smallvec::SmallVec;
 
 /// A validated, dissected curve.
@@ -33,12 +34,13 @@ pub(crate) struct Dissected<'a> {
 const SEAM_CORNER: f64 = 1e-7;
 
 /// Orients (closed curves counterclockwise, unless `force_rev` is given), validates and
-/// dissects.
+/// dissects, with the doubts met; the view keeps its doubts in the ledgers' book `book`.
 pub(crate) fn dissect<'a>(
     src: Source<'a>,
     opts: &Options,
     force_rev: Option<bool>,
-) -> Result<Dissected<'a>> {
+    book: usize,
+) -> Result<Certified<Dissected<'a>>> {
     opts.validate()?;
     let curve = src.curve;
     let knots: Vec<f64> = src
@@ -57,14 +59,14 @@ pub(crate) fn dissect<'a>(
     let (view, tracks) = match force_rev {
         Some(rev) => {
             let view = View::new(src, rev, opts.tol);
-            let tracks = view.tracks(&knots)?;
+            let tracks = view.value.tracks(&knots)?;
             (view, tracks)
         }
         None => {
             // Orientation from the turning of the tangent (±2π); a clockwise curve is viewed
             // reversed, reusing the same track.
             let view = View::new(src, false, opts.tol);
-            let tracks = view.tracks(&knots)?;
+            let tracks = view.value.tracks(&knots)?;
             if closed && tracks.turn() < 0.0 {
                 let (a, b) = curve.domain();
                 (View::new(src, true, opts.tol), tracks.reversed(a, b))
@@ -73,27 +75,33 @@ pub(crate) fn dissect<'a>(
             }
         }
     };
-    let zeros = view.inflections(Some(&tracks))?;
+    // (The view first oriented the other way is dropped with its doubts.)
+    let (mut view, mut doubts) = view.into_parts();
+    view.book = book;
+    let zeros = view.inflections(Some(&tracks), &mut doubts)?;
     if closed && !src.simple {
-        view.check_simple(&tracks, &zeros)?;
+        view.check_simple(&tracks, &zeros, &mut doubts)?;
     }
     if closed && zeros.zs.len() % 2 == 1 {
-        view.uncertify(Doubt::OddInflections);
+        doubts.add(Doubt::OddInflections);
     }
-    let pieces = view.pieces(&tracks, &zeros);
-    Ok(Dissected {
+    let pieces = view.pieces(&tracks, &zeros, &mut doubts);
+    let dissected = Dissected {
         view,
         tracks,
         zeros,
         pieces,
+    };
+    Ok(Certified {
+        value: dissected,
+        doubts,
     })
 }
 
 /// The inflections of a dissection as reported: its sign changes of the curvature but the
 /// corners, and the straight stretches between a left and a right turn, in the curve's
-/// parameters.
-fn inflection_list(v: &View, zeros: &Zeros) -> Vec<Inflection> {
-    let certified = v.certified();
+/// parameters; `certified`: no doubt was met on the view so far.
+fn inflection_list(v: &View, zeros: &Zeros, certified: bool) -> Vec<Inflection> {
     let mut out: Vec<Inflection> = zeros
         .zs
         .iter()
@@ -116,10 +124,11 @@ fn inflection_list(v: &View, zeros: &Zeros) -> Vec<Inflection> {
 }
 
 /// All simple inflections of the curve of `src` (Jia §5.1; certified with symbolic forms), in
-/// its coordinates.
-pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Inflections> {
+/// its coordinates, with the doubts met (stated where the result is finished:
+/// [`crate::types::Provenance`]).
+pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Certified<Inflections>> {
     opts.validate()?;
-    let view = View::new(src, false, opts.tol);
+    let (view, mut doubts) = View::new(src, false, opts.tol).into_parts();
     // With symbolic forms the curve is proven regular (a cusp's vanishing curvature numerator
     // would pass for an inflection) and the inflections need no track; without, Jia's sampled
     // track (which refuses vanishing speeds) finds them.
@@ -136,21 +145,26 @@ pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Inflecti
         }
         None => Some(view.tracks(&[])?),
     };
-    let zeros = view.inflections(tracks.as_ref())?;
-    let inflections = inflection_list(&view, &zeros);
+    let zeros = view.inflections(tracks.as_ref(), &mut doubts)?;
+    let inflections = inflection_list(&view, &zeros, doubts.is_empty());
     if inflections.iter().any(|i| !i.certified) {
-        view.uncertify(Doubt::RootCluster);
+        doubts.add(Doubt::RootCluster);
     }
-    Ok(Inflections {
-        certified: view.certified(),
+    let found = Inflections {
+        certified: true,
         inflections,
-        reason: view.reason(),
+        reason: None,
+    };
+    Ok(Certified {
+        value: found,
+        doubts,
     })
 }
 
 /// Every pair of antipodal points of the simple closed curve of `src` (Jia 2004), in its
-/// coordinates.
-pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal> {
+/// coordinates, with the doubts met (stated where the result is finished:
+/// [`crate::types::Provenance`]).
+pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Certified<Antipodal>> {
     let curve = src.curve;
     if !curve.is_closed() {
         let (a, b) = curve.domain();
@@ -158,8 +172,11 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
             gap: (curve.jet(a).p - curve.jet(b).p).norm(),
         });
     }
-    let prep = dissect(src, opts, None)?;
+    let (prep, dissect_doubts) = dissect(src, opts, None, 0)?.into_parts();
     let v = &prep.view;
+    // (One view: every doubt of the run is its own, in the order met.)
+    let mut ledger = Ledger::new();
+    *ledger.of(v) = dissect_doubts;
     let mut raw: Vec<(f64, f64)> = Vec::with_capacity(32);
     let mut families = Vec::new();
     let mut budget = Budget {
@@ -173,51 +190,56 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Antipodal>
     if prep.pieces.iter().any(|p| {
         p.flat && v.straight_span(p.lo, p.hi).is_none() && v.straight_chain(p.lo, p.hi).is_some()
     }) {
-        v.uncertify(Doubt::CornerInStraight);
+        ledger.of(v).add(Doubt::CornerInStraight);
     }
     for i in 0..n {
         for j in i + 1..n {
             let (p, q) = (&prep.pieces[i], &prep.pieces[j]);
             if p.flat || q.flat {
-                flat_pairs(v, p, v, q, &mut raw, &mut families);
+                flat_pairs(v, p, v, q, &mut raw, &mut families, &mut ledger);
                 continue;
             }
-            let Some(pair) = opposite_pair(v, p, v, q) else {
+            let Some(pair) = opposite_pair(v, p, v, q, &mut ledger) else {
                 continue;
             };
-            if is_family(&pair) {
+            if is_family(&pair, &mut ledger) {
                 // (θ vanishing within rounding all along: only a curve defined as a circle is
                 // proven to have a continuum of pairs.)
                 if !v.exact_circle {
-                    v.uncertify(Doubt::Continuum);
+                    ledger.of(v).add(Doubt::Continuum);
                 }
                 families.push((pair.sa, pair.sb, pair.ta, pair.tb));
                 continue;
             }
-            for sec in sections(&pair) {
-                let sec = trim_antipodal_ends(&sec, &mut raw);
+            for sec in sections(&pair, &mut ledger) {
+                let sec = trim_antipodal_ends(&sec, &mut raw, &mut ledger);
                 if let Some(sec) = sec {
-                    antipodal_points(&sec, &mut raw, &mut budget, &mut stack);
+                    antipodal_points(&sec, &mut raw, &mut budget, &mut stack, &mut ledger);
                 }
             }
         }
     }
     let families = merge_families(v, families);
-    let pairs = finish_pairs(v, raw, &families);
-    Ok(Antipodal {
+    let pairs = finish_pairs(v, raw, &families, ledger.of(v));
+    let doubts = ledger.take(v.book);
+    let found = Antipodal {
         pairs,
-        inflections: inflection_list(v, &prep.zeros),
+        inflections: inflection_list(v, &prep.zeros, doubts.is_empty()),
         families: families.iter().map(|&f| family_of(v, f)).collect(),
-        certified: v.certified(),
+        certified: true,
         complete: !budget.exhausted,
-        reason: v.reason(),
+        reason: None,
+    };
+    Ok(Certified {
+        value: found,
+        doubts,
     })
 }
 
 /// §5.3: the sections of a pair where `N(s) · r(s) > 0` (condition (v)), cut at the common
 /// tangents.
-pub(crate) fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
-    let tangents = tangent::common_tangents(p);
+pub(crate) fn sections<'a>(p: &Pair<'a>, ledger: &mut Ledger) -> SmallVec<[Pair<'a>; 3]> {
+    let tangents = tangent::common_tangents(p, ledger);
     let mut cuts: SmallVec<[(f64, f64); 4]> = SmallVec::new();
     cuts.push((p.sa, p.ta));
     cuts.extend(
@@ -244,7 +266,7 @@ pub(crate) fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
             .or_else(|| sign_at(s1, t1))
             .unwrap_or_else(|| {
                 let sm = 0.5 * (s0 + s1);
-                let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
+                let tm = p.opposite_between(sm, (s0, t0), (s1, t1), ledger.of(p.vt));
                 p.d(sm, tm) > 0.0
             });
         if facing {
@@ -257,8 +279,14 @@ pub(crate) fn sections<'a>(p: &Pair<'a>) -> SmallVec<[Pair<'a>; 3]> {
 /// Condition (iv): an end that is itself antipodal is reported and cut off: on curves with
 /// symbolic forms as far as θ is proven monotone from it (as beside any found pair), else
 /// where θ first shows a sign beyond its noise.
-pub(crate) fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -> Option<Pair<'a>> {
+pub(crate) fn trim_antipodal_ends<'a>(
+    p: &Pair<'a>,
+    raw: &mut Vec<(f64, f64)>,
+    ledger: &mut Ledger,
+) -> Option<Pair<'a>> {
     let mut q = *p;
+    // (Only opposite points are solved, on T: its doubts.)
+    let doubts = ledger.of(p.vt);
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     for at_a in [true, false] {
         let (s, t) = if at_a { (q.sa, q.ta) } else { (q.sb, q.tb) };
@@ -268,7 +296,7 @@ pub(crate) fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -
         raw.push((s, t));
         let dir = if at_a { 1.0 } else { -1.0 };
         if certified {
-            match certified_rest(&q, s, t, dir) {
+            match certified_rest(&q, s, t, dir, doubts) {
                 Some(None) => return None,
                 Some(Some(rest)) => {
                     q = rest;
@@ -284,7 +312,7 @@ pub(crate) fn trim_antipodal_ends<'a>(p: &Pair<'a>, raw: &mut Vec<(f64, f64)>) -
             if se <= q.sa || se >= q.sb {
                 break;
             }
-            let te = q.opposite(se)?;
+            let te = q.opposite(se, doubts)?;
             if q.is_clear(se, te, q.sin_theta(se, te)) {
                 cut = Some((se, te));
                 break;
@@ -322,6 +350,7 @@ fn finish_pairs(
     v: &View,
     raw: Vec<(f64, f64)>,
     families: &[(f64, f64, f64, f64)],
+    doubts: &mut Doubts,
 ) -> Vec<AntipodalPair> {
     let within = |x: f64, a: f64, b: f64| {
         let (lo, hi) = (a.min(b), a.max(b));
@@ -352,7 +381,7 @@ fn finish_pairs(
         // A point that is no pair (θ beyond any rounding) is a defect upstream: never report
         // it.
         if js.normal().cross(r).abs() > THETA_NOISE * r.norm() {
-            v.uncertify(Doubt::NotAPair);
+            doubts.add(Doubt::NotAPair);
             continue;
         }
         let (s, t) = (v.wrap(s), v.wrap(t));
@@ -396,7 +425,13 @@ fn finish_pairs(
 /// tangents) no longer holds. Each segment lies in the triangle of its chord and end tangents;
 /// while the two triangles' boxes overlap, the pair is halved (at the middle `s` and its
 /// opposite `t`), which keeps conditions (i)–(iii).
-fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Vec<(f64, f64)>) {
+fn tangents_of_disjoint(
+    p: &Pair,
+    depth: usize,
+    leaves: &mut usize,
+    out: &mut Vec<(f64, f64)>,
+    ledger: &mut Ledger,
+) {
     // Coinciding stretches (the same curve twice) share a continuum of tangents: skip them.
     let coincide = [0.0, 0.5, 1.0].iter().all(|&f| {
         let s = p.sa + f * (p.sb - p.sa);
@@ -405,12 +440,12 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
         } else if f == 1.0 {
             Some(p.tb)
         } else {
-            p.opposite(s)
+            p.opposite(s, ledger.of(p.vt))
         };
         t.is_some_and(|t| p.r(s, t).norm() <= COINCIDE * p.vs.scale)
     });
     if coincide || *leaves == 0 {
-        p.vs.uncertify(Doubt::CurvesTouch);
+        ledger.of(p.vs).add(Doubt::CurvesTouch);
         return;
     }
     let (tl, th) = p.t_range();
@@ -420,47 +455,49 @@ fn tangents_of_disjoint(p: &Pair, depth: usize, leaves: &mut usize, out: &mut Ve
     };
     if overlap && depth < 24 && p.sb - p.sa > 1e3 * p.vs.tol {
         let sm = 0.5 * (p.sa + p.sb);
-        if let Some(tm) = p.opposite(sm) {
-            tangents_of_disjoint(&p.sub(p.sa, p.ta, sm, tm), depth + 1, leaves, out);
-            tangents_of_disjoint(&p.sub(sm, tm, p.sb, p.tb), depth + 1, leaves, out);
+        if let Some(tm) = p.opposite(sm, ledger.of(p.vt)) {
+            tangents_of_disjoint(&p.sub(p.sa, p.ta, sm, tm), depth + 1, leaves, out, ledger);
+            tangents_of_disjoint(&p.sub(sm, tm, p.sb, p.tb), depth + 1, leaves, out, ledger);
             return;
         }
     }
     if overlap {
-        p.vs.uncertify(Doubt::CurvesTouch);
+        ledger.of(p.vs).add(Doubt::CurvesTouch);
     }
     *leaves -= 1;
-    out.extend(tangent::common_tangents(p));
+    out.extend(tangent::common_tangents(p, ledger));
 }
 
 /// Every line tangent to both curves of `s1` and `s2` (Jia §2.5), in their common
 /// coordinates: pairs of monotone pieces with opposite normals, then again with the normals of
 /// the second curve reversed. `same`: the two are one curve (a tangent touching it at one
-/// point is no common tangent).
+/// point is no common tangent). With the doubts met: the first curve's before the second's
+/// (stated where the result is finished: [`crate::types::Provenance`]).
 pub(crate) fn tangents_of(
     s1: Source<'_>,
     s2: Source<'_>,
     same: bool,
     opts: &Options,
-) -> Result<Tangents> {
+) -> Result<Certified<Tangents>> {
     let (c1, c2) = (s1.curve, s2.curve);
-    let a = dissect(s1, opts, Some(false))?;
+    let (a, mut doubts) = dissect(s1, opts, Some(false), FIRST_CURVE)?.into_parts();
     // (s, t) reported, and the points of tangency.
     let mut lines: Vec<(f64, f64, V2, V2)> = Vec::new();
-    let mut doubt = a.view.doubt.get();
+    let mut ledger = Ledger::new();
     // The domain of the parameters reported on the second curve.
     let mut pb = (0.0, 0.0);
     for rev in [false, true] {
-        let b = dissect(s2, opts, Some(rev))?;
+        let (b, b_doubts) = dissect(s2, opts, Some(rev), SECOND_CURVE)?.into_parts();
+        *ledger.of(&b.view) = b_doubts;
         pb = b.view.reported_domain();
         for p in &a.pieces {
             for q in &b.pieces {
-                let Some(pair) = opposite_pair(&a.view, p, &b.view, q) else {
+                let Some(pair) = opposite_pair(&a.view, p, &b.view, q, &mut ledger) else {
                     continue;
                 };
                 let mut found = Vec::new();
                 let mut leaves = 4096usize;
-                tangents_of_disjoint(&pair, 0, &mut leaves, &mut found);
+                tangents_of_disjoint(&pair, 0, &mut leaves, &mut found, &mut ledger);
                 for (s, t) in found {
                     let (s, t) = crate::pairs::polish_tangent(
                         &a.view,
@@ -479,7 +516,10 @@ pub(crate) fn tangents_of(
                 }
             }
         }
-        doubt = doubt.or(a.view.doubt.get()).or(b.view.doubt.get());
+        // The first curve's doubts before the second's (each view of the second is dropped
+        // with its own).
+        doubts.join(ledger.take(FIRST_CURVE));
+        doubts.join(ledger.take(SECOND_CURVE));
     }
     let pa = a.view.reported_domain();
     let close = |x: f64, y: f64, per: f64, closed: bool| {
@@ -508,12 +548,20 @@ pub(crate) fn tangents_of(
         });
     }
     out.sort_by(|x, y| x.s.total_cmp(&y.s));
-    Ok(Tangents {
+    let found = Tangents {
         lines: out,
-        certified: doubt.is_none(),
-        reason: doubt.map(|d| d.reason().to_string()),
+        certified: true,
+        reason: None,
+    };
+    Ok(Certified {
+        value: found,
+        doubts,
     })
 }
+
+/// The ledgers' books of the two curves of [`tangents_of`].
+const FIRST_CURVE: usize = 0;
+const SECOND_CURVE: usize = 1;
 
 /// The distance between the tangent lines (relative to the curves' size) from which its sign
 /// at a window's end is taken for the window's: far above its rounding.

@@ -2,11 +2,12 @@
 //! stretches) are reported as families instead of floods of pairs.
 
 use crate::dissect::Piece;
-use crate::doubt::Doubt;
+use crate::ledger::Ledger;
 use crate::pairs::Pair;
 use crate::types::Family;
 use crate::view::View;
 use curve::exact::cross_sign;
+use numeric::certificate::Doubt;
 use std::cmp::Ordering;
 
 /// Pairs involving a straight stretch: two facing parallel stretches make a family; a curved
@@ -21,6 +22,7 @@ pub(crate) fn flat_pairs(
     q: &Piece,
     raw: &mut Vec<(f64, f64)>,
     families: &mut Vec<(f64, f64, f64, f64)>,
+    ledger: &mut Ledger,
 ) {
     let ((vf, f), (vg, g)) = if !p.flat {
         ((vq, q), (vp, p))
@@ -54,10 +56,10 @@ pub(crate) fn flat_pairs(
         // (Stretches that do not overlap along their direction face no pair across: their
         // parallelism, proven or not, decides nothing.)
         if !parallel {
-            vf.uncertify(Doubt::Continuum);
+            ledger.of(vf).add(Doubt::Continuum);
         }
         // Parameter on a stretch at coordinate c: where the line across it meets it.
-        let at = |v: &View, piece: &Piece, c: f64| {
+        let mut at = |v: &View, piece: &Piece, c: f64| {
             v.point_on_ray(
                 piece.lo,
                 piece.hi,
@@ -65,6 +67,7 @@ pub(crate) fn flat_pairs(
                 nf,
                 crate::prims::Prefer::Low,
                 f64::NAN,
+                ledger.of(v),
             )
             .unwrap_or(if (x(v, piece.lo) - c).abs() < (x(v, piece.hi) - c).abs() {
                 piece.lo
@@ -83,7 +86,7 @@ pub(crate) fn flat_pairs(
         families.push(family);
         return;
     }
-    let Some(t) = vg.point_with_normal(g.lo, g.hi, -nf) else {
+    let Some(t) = vg.point_with_normal(g.lo, g.hi, -nf, ledger.of(vg)) else {
         return;
     };
     let pt = vg.point(t);
@@ -94,6 +97,7 @@ pub(crate) fn flat_pairs(
         vg.normal(t),
         crate::prims::Prefer::Low,
         f64::NAN,
+        ledger.of(vf),
     ) else {
         return;
     };
@@ -103,7 +107,8 @@ pub(crate) fn flat_pairs(
 }
 
 /// A continuum: θ vanishes all along the pair (a circle, concentric arcs).
-pub(crate) fn is_family(p: &Pair) -> bool {
+pub(crate) fn is_family(p: &Pair, ledger: &mut Ledger) -> bool {
+    let doubts = ledger.of(p.vt);
     (0..=4).all(|k| {
         let s = p.sa + (p.sb - p.sa) * k as f64 / 4.0;
         let t = if k == 0 {
@@ -111,7 +116,7 @@ pub(crate) fn is_family(p: &Pair) -> bool {
         } else if k == 4 {
             Some(p.tb)
         } else {
-            p.opposite(s)
+            p.opposite(s, doubts)
         };
         t.is_some_and(|t| p.is_noise(s, t, p.sin_theta(s, t)) && p.d(s, t) > 0.0)
     })

@@ -20,6 +20,7 @@
 use crate::bisect::bisect;
 use crate::monotone::{monotone_reach, theta_monotone};
 use crate::pairs::{polish, Pair};
+use numeric::certificate::Doubts;
 
 /// What a finishing attempt proved.
 pub(crate) enum Finish {
@@ -36,7 +37,14 @@ pub(crate) enum Finish {
 
 /// Tries to finish a march standing at `(s, t)` and heading up in `s` when `up`; `limit`: how
 /// far ahead the march's linear convergence puts its limit (NaN when not converging).
-pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -> Finish {
+pub(crate) fn certified_finish(
+    p: &Pair,
+    s: f64,
+    t: f64,
+    up: bool,
+    limit: f64,
+    doubts: &mut Doubts,
+) -> Finish {
     let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
     let dir = if up { 1.0 } else { -1.0 };
     let th_s = p.sin_theta(s, t);
@@ -53,7 +61,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     // sign change of θ found around the limit the march's linear convergence predicts.
     let proposal = polish(p.vs, p.vt, s, t, reach)
         .filter(ahead_ok)
-        .or_else(|| bracketed_ahead(p, (s, t), (end_s, end_t), th_s, limit));
+        .or_else(|| bracketed_ahead(p, (s, t), (end_s, end_t), th_s, limit, doubts));
     // J runs from s to a little past the proposal, or to the end when there is none.
     let (e, te) = match proposal {
         Some((ps, pt)) => {
@@ -61,7 +69,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
             let past = (PAST_PROPOSAL * ahead).max(64.0 * p.vs.tol);
             if ahead + past < remaining {
                 let e = ps + dir * past;
-                (e, p.opposite_from(e, (ps, pt), (end_s, end_t)))
+                (e, p.opposite_following(e, (ps, pt), (end_s, end_t), doubts))
             } else {
                 (end_s, end_t)
             }
@@ -70,7 +78,7 @@ pub(crate) fn certified_finish(p: &Pair, s: f64, t: f64, up: bool, limit: f64) -
     };
     let th_e = p.sin_theta(e, te);
     if p.is_noise(e, te, th_e) || theta_monotone(p, (s, t), (e, te)).is_none() {
-        return leap(p, (s, t), (e, te), th_s);
+        return leap(p, (s, t), (e, te), th_s, doubts);
     }
     match ((th_e < 0.0) != (th_s < 0.0), proposal) {
         (true, Some((ps, pt))) => Finish::Found(ps, pt),
@@ -104,9 +112,9 @@ pub(crate) fn clear_between(p: &Pair, a: (f64, f64), b: (f64, f64), th: (f64, f6
 /// Where θ is not proven monotone from the march's point `from` to `to`: over the first half
 /// of the way it may be (the ranges tighten as the stretch shrinks), and with the march's
 /// sign at its end that half holds no pair.
-fn leap(p: &Pair, from: (f64, f64), to: (f64, f64), th: f64) -> Finish {
+fn leap(p: &Pair, from: (f64, f64), to: (f64, f64), th: f64, doubts: &mut Doubts) -> Finish {
     let m = 0.5 * (from.0 + to.0);
-    let tm = p.opposite_between(m, from, to);
+    let tm = p.opposite_between(m, from, to, doubts);
     let th_m = p.sin_theta(m, tm);
     if p.is_noise(m, tm, th_m) || (th_m < 0.0) != (th < 0.0) {
         return Finish::Unproven;
@@ -127,6 +135,7 @@ fn bracketed_ahead(
     end: (f64, f64),
     th: f64,
     limit: f64,
+    doubts: &mut Doubts,
 ) -> Option<(f64, f64)> {
     let dir = if end.0 >= from.0 { 1.0 } else { -1.0 };
     let remaining = (end.0 - from.0) * dir;
@@ -140,7 +149,7 @@ fn bracketed_ahead(
             return None;
         }
         let x = from.0 + dir * reach;
-        let y = p.opposite_within(x, prev.1, end.1);
+        let y = p.opposite_within(x, prev.1, end.1, doubts);
         let th_x = p.sin_theta(x, y);
         if p.is_clear(x, y, th_x) && (th_x < 0.0) != (th < 0.0) {
             let sub = if dir > 0.0 {
@@ -168,8 +177,9 @@ pub(crate) fn certified_rest<'a>(
     s: f64,
     t: f64,
     dir: f64,
+    doubts: &mut Doubts,
 ) -> Option<Option<Pair<'a>>> {
-    rest_beyond(p, (s, t), dir, 1.0)
+    rest_beyond(p, (s, t), dir, 1.0, doubts)
 }
 
 /// [`certified_rest`] with the first cut tried at the fraction `first` of the way to the end.
@@ -178,6 +188,7 @@ fn rest_beyond<'a>(
     (s, t): (f64, f64),
     dir: f64,
     first: f64,
+    doubts: &mut Doubts,
 ) -> Option<Option<Pair<'a>>> {
     let end = if dir > 0.0 {
         (p.sb, p.tb)
@@ -190,7 +201,7 @@ fn rest_beyond<'a>(
     }
     // From the pair itself: the exact pair lies within the tolerance of it, either on the
     // proven stretch (its only zero there) or behind it, closer than anything resolved.
-    let (e, te) = monotone_reach(p, (s, t), end, first)?;
+    let (e, te) = monotone_reach(p, (s, t), end, first, doubts)?;
     if e == end.0 {
         return Some(None);
     }
@@ -217,7 +228,12 @@ fn cut_at<'a>(p: &Pair<'a>, s: f64, (e, te): (f64, f64), dir: f64) -> Option<Opt
 /// (the two sides mostly fare alike: on the elliptic lemniscate neither proof to an end
 /// holds, and the second one cost 4 % of its run). A side still open goes on alone
 /// from a quarter on.
-pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Option<Pair<'a>>>; 2] {
+pub(crate) fn certified_rests<'a>(
+    p: &Pair<'a>,
+    s: f64,
+    t: f64,
+    doubts: &mut Doubts,
+) -> [Option<Option<Pair<'a>>>; 2] {
     let ends = [(p.sa, p.ta), (p.sb, p.tb)];
     let room = |i: usize| (ends[i].0 - s).abs();
     let whole = |i: usize| {
@@ -233,8 +249,8 @@ pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Optio
         let lo = s - 0.25 * room(0);
         let hi = s + 0.25 * room(1);
         let (tl, th) = (
-            p.opposite_from(lo, (s, t), ends[0]),
-            p.opposite_from(hi, (s, t), ends[1]),
+            p.opposite_following(lo, (s, t), ends[0], doubts),
+            p.opposite_following(hi, (s, t), ends[1], doubts),
         );
         if theta_monotone(p, (lo, tl), (hi, th)).is_some() {
             out = [cut_at(p, s, (lo, tl), -1.0), cut_at(p, s, (hi, th), 1.0)];
@@ -245,7 +261,7 @@ pub(crate) fn certified_rests<'a>(p: &Pair<'a>, s: f64, t: f64) -> [Option<Optio
     }
     for (i, dir) in [(0, -1.0), (1, 1.0)] {
         if out[i].is_none() {
-            out[i] = rest_beyond(p, (s, t), dir, 0.25);
+            out[i] = rest_beyond(p, (s, t), dir, 0.25, doubts);
         }
     }
     out

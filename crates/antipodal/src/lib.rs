@@ -33,7 +33,8 @@
 //! `profile_pairs`, `corner_pairs` and `profile_tangents` (beyond the papers: profiles of
 //! segments joined at corners, segment by segment, and the corners' cones). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
-//! `taylor` (with `numeric::Interval` for ranges); `doubt` names every reason a result is not certified.
+//! `taylor` (with `numeric::Interval` for ranges); `ledger` keeps the doubts met on each view
+//! of a run (`numeric::certificate::Doubt` names every reason a result is not certified).
 
 mod arcs;
 mod bisect;
@@ -41,13 +42,13 @@ mod bounds;
 mod cells;
 mod corner_pairs;
 mod dissect;
-mod doubt;
 mod driver;
 mod enclosure;
 mod error;
 mod families;
 mod finish;
 mod forms;
+mod ledger;
 mod march;
 mod monotone;
 mod pairs;

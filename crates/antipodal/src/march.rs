@@ -4,28 +4,30 @@
 //! ([`crate::finish`]). Also the section's width, which settles what a march leaves.
 
 use crate::bisect::bisect;
-use crate::doubt::Doubt;
 use crate::finish::{certified_finish, clear_ahead, Finish, NEWTON_ROOT};
+use crate::ledger::Ledger;
 use crate::pairs::{negligible, polish, Pair, THETA_NOISE};
 use crate::prims::Prefer;
+use numeric::certificate::{Doubt, Doubts};
 
 /// §4.2.1, two convex segments with θ of one sign at both ends: march from `s_b` down when
 /// θ < 0 (from `s_a` up when θ > 0), each step moving `s` to the point whose normal is parallel
 /// to `r(s_i)` and `t` to its opposite point.
-pub(crate) fn march_convex(p: &Pair, theta_a: f64) -> March {
+pub(crate) fn march_convex(p: &Pair, theta_a: f64, ledger: &mut Ledger) -> March {
     let up = theta_a > 0.0;
     let end = if up { p.sb } else { p.sa };
     let far = (end, p.vs.jet_to(end, 1).d1);
-    march(p, up, |_, s, t, hint| {
+    let step = |_, s, t, hint, ledger: &mut Ledger| {
         let dir = p.r(s, t).unit();
         let here = (s, p.vs.jet_to(s, 1).d1);
-        p.vs.point_with_normal_from(here, far, dir, hint)
-    })
+        p.vs.point_with_normal_from(here, far, dir, hint, ledger.of(p.vs))
+    };
+    march(p, up, step, ledger)
 }
 
 /// §4.2.2, `S` convex and `T` concave: march from the end whose normal ray at `t` meets `S`,
 /// each step moving `s` to where the ray of `N(t_i)` meets `S`.
-pub(crate) fn march_mixed(p: &Pair) -> March {
+pub(crate) fn march_mixed(p: &Pair, ledger: &mut Ledger) -> March {
     let (psa, psb) = (p.vs.point(p.sa), p.vs.point(p.sb));
     let ray_hits = |t: f64| {
         let jt = p.vt.jet_to(t, 1);
@@ -42,20 +44,26 @@ pub(crate) fn march_mixed(p: &Pair) -> March {
     } else {
         return March::Nothing;
     };
-    march(p, up, |i, s, t, hint| {
+    let step = |i, s, t, hint, ledger: &mut Ledger| {
         let (lo, hi) = if up { (s, p.sb) } else { (p.sa, s) };
         let prefer = if up { Prefer::Low } else { Prefer::High };
         let jt = p.vt.jet_to(t, 1);
         let hint = if i == 0 { f64::NAN } else { hint };
-        p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint)
-    })
+        p.vs.point_on_ray(lo, hi, jt.p, jt.normal(), prefer, hint, ledger.of(p.vs))
+    };
+    march(p, up, step, ledger)
 }
 
 /// The march loop shared by §4.2.1 and §4.2.2, from the `s_a` end when `up` (else from `s_b`):
 /// `next(i, s, t, hint)` gives step `i`'s new `s` (`hint`: the last move extrapolated by the
 /// step ratio, where Newton should start), or `None` when no pair lies ahead; `t` follows to
-/// the opposite point.
-fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Option<f64>) -> March {
+/// the opposite point. (`next` is handed the ledger: its solves on `S` meet `S`'s doubts.)
+fn march(
+    p: &Pair,
+    up: bool,
+    mut next: impl FnMut(usize, f64, f64, f64, &mut Ledger) -> Option<f64>,
+    ledger: &mut Ledger,
+) -> March {
     let (mut s, mut t) = if up { (p.sa, p.ta) } else { (p.sb, p.tb) };
     // The sign of θ the march keeps until it reaches a pair.
     let start_negative = p.sin_theta(s, t) < 0.0;
@@ -73,7 +81,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
     // The greatest |θ| so far, and whether the march has come down from it.
     let (mut peak, mut past_peak) = (0.0f64, false);
     for i in 0..MARCH_STEPS {
-        let Some(ns) = next(i, s, t, s + ds * ratio) else {
+        let Some(ns) = next(i, s, t, s + ds * ratio, ledger) else {
             // No step ahead: nothing lies ahead, unless the last step went past a pair (by
             // the tolerance its solves are made to) and the next one would lie behind.
             return match i {
@@ -81,7 +89,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                 _ => overshot(p, (s - ds, t - dt), (s, t), start_negative, up),
             };
         };
-        let nt = p.opposite_near_from(ns, t, t_far, t + dt * ratio);
+        let nt = p.opposite_near_from(ns, t, t_far, t + dt * ratio, ledger.of(p.vt));
         let mut step = (ns - s).abs();
         ratio = (step / last_step).clamp(0.0, 3.0);
         (ds, dt) = (ns - s, nt - t);
@@ -118,7 +126,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                 } else {
                     f64::NAN
                 };
-                let mut finish = certified_finish(p, s, t, up, limit);
+                let mut finish = certified_finish(p, s, t, up, limit, ledger.of(p.vt));
                 // Proven leaps over stretches without pairs, each followed by a new attempt
                 // from where it lands (bounded: each halves what is left at most).
                 for _ in 0..MAX_LEAPS {
@@ -127,7 +135,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                     };
                     (s, t) = (ls, lt);
                     (ds, dt, ratio, step) = (0.0, 0.0, 1.0, f64::INFINITY);
-                    finish = certified_finish(p, s, t, up, f64::NAN);
+                    finish = certified_finish(p, s, t, up, f64::NAN, ledger.of(p.vt));
                 }
                 match finish {
                     Finish::Found(s, t) => return March::Found(s, t, up),
@@ -148,7 +156,7 @@ fn march(p: &Pair, up: bool, mut next: impl FnMut(usize, f64, f64, f64) -> Optio
                 f64::INFINITY
             };
         } else {
-            match finish_early(p, s, t, step, last_step, up) {
+            match finish_early(p, s, t, step, last_step, up, ledger.of(p.vt)) {
                 Early::Found((s, t, up)) => return March::Found(s, t, up),
                 Early::Nothing => return March::Nothing,
                 Early::Continue => {}
@@ -234,8 +242,9 @@ const WIDTH_SAMPLES: usize = 256;
 /// pair exactly when θ changes sign across it, found by bisection. The zeros of `w″` are
 /// located by sampling (the result is no longer certified). Returns `false` when `w″` cannot
 /// be evaluated.
-pub(crate) fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>) -> bool {
-    p.vs.uncertify(Doubt::ConstantWidth);
+pub(crate) fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>, ledger: &mut Ledger) -> bool {
+    ledger.of(p.vs).add(Doubt::ConstantWidth);
+    let doubts = ledger.of(p.vt);
     let w2 = |s: f64, t: f64| {
         let (js, jt) = (p.vs.jet_to(s, 2), p.vt.jet_to(t, 2));
         1.0 / js.curvature() + 1.0 / jt.curvature() - p.d(s, t)
@@ -251,7 +260,7 @@ pub(crate) fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>) -> bool {
             (p.sb, p.tb)
         } else {
             let s = p.sa + (p.sb - p.sa) * k as f64 / WIDTH_SAMPLES as f64;
-            (s, p.opposite_near(s, prev_t, p.tb, prev_t))
+            (s, p.opposite_near(s, prev_t, p.tb, prev_t, doubts))
         };
         let w = w2(s, t);
         if w.is_nan() {
@@ -265,7 +274,7 @@ pub(crate) fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>) -> bool {
                 if !(m > lo && m < hi) {
                     break;
                 }
-                let tm = p.opposite_between(m, (lo, tl), (hi, th));
+                let tm = p.opposite_between(m, (lo, tl), (hi, th), doubts);
                 if (w2(m, tm) < 0.0) == (prev_w < 0.0) {
                     (lo, tl) = (m, tm);
                 } else {
@@ -310,7 +319,15 @@ enum Early {
 /// it is the pair the march converges to; beyond the section's far end (a pair just cut off
 /// there) the march would only crawl up to that end, finding nothing. Otherwise the march goes
 /// on.
-fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Early {
+fn finish_early(
+    p: &Pair,
+    s: f64,
+    t: f64,
+    step: f64,
+    last: f64,
+    up: bool,
+    doubts: &mut Doubts,
+) -> Early {
     let (end_s, end_t) = if up { (p.sb, p.tb) } else { (p.sa, p.ta) };
     // Linear convergence with ratio q puts the limit about step·q/(1−q) ahead. (Newton is
     // not tried before the march shows its convergence: from a first iterate it may jump to
@@ -337,7 +354,7 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
         // The far end itself, and the middle of what is left, must still show the marching
         // sign.
         let sm = 0.5 * (s + end_s);
-        let tm = p.opposite_within(sm, t, end_t);
+        let tm = p.opposite_within(sm, t, end_t, doubts);
         let same = |s: f64, t: f64| (p.sin_theta(s, t) < 0.0) == sign;
         return if same(end_s, end_t) && same(sm, tm) {
             Early::Nothing
@@ -346,7 +363,7 @@ fn finish_early(p: &Pair, s: f64, t: f64, step: f64, last: f64, up: bool) -> Ear
         };
     }
     let sm = 0.5 * (s + ps);
-    let tm = p.opposite_within(sm, t, pt);
+    let tm = p.opposite_within(sm, t, pt, doubts);
     if (p.sin_theta(sm, tm) < 0.0) == sign || (ps - s).abs() <= 4.0 * p.vs.tol {
         Early::Found((ps, pt, up))
     } else {

@@ -3,6 +3,7 @@
 //! found pair rest: one pair at most where θ changes sign, none where it does not.
 
 use crate::pairs::{Pair, THETA_NOISE};
+use numeric::certificate::Doubts;
 use numeric::Interval;
 use std::f64::consts::FRAC_PI_2;
 
@@ -16,6 +17,7 @@ pub(crate) fn monotone_reach(
     from: (f64, f64),
     to: (f64, f64),
     first: f64,
+    doubts: &mut Doubts,
 ) -> Option<(f64, f64)> {
     let dir = if to.0 >= from.0 { 1.0 } else { -1.0 };
     let whole = (to.0 - from.0) * dir;
@@ -28,7 +30,7 @@ pub(crate) fn monotone_reach(
             to
         } else {
             let e = from.0 + dir * len;
-            (e, p.opposite_from(e, from, to))
+            (e, p.opposite_following(e, from, to, doubts))
         };
         if theta_monotone(p, from, next).is_some() {
             return Some(next);
@@ -249,6 +251,7 @@ pub(crate) mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
     use crate::driver::dissect;
+    use crate::ledger::Ledger;
     use crate::pairs::opposite_pair;
     use crate::prepare::tests::{as_given, star_curve};
     use crate::Options;
@@ -299,24 +302,26 @@ pub(crate) mod tests {
         ) {
             let c = star_curve(deg, &seed, rational.then_some(&w[..]));
             let given = as_given(&c);
-            let Ok(prep) = dissect(given.source(true), &Options::default(), None) else {
+            let Ok(prep) = dissect(given.source(true), &Options::default(), None, 0) else {
                 return Ok(());
             };
-            let (v, pieces) = (&prep.view, &prep.pieces);
+            let (v, pieces) = (&prep.value.view, &prep.value.pieces);
             let mut proven = 0;
+            // (The doubts met are not what is tested here.)
+            let mut ledger = Ledger::new();
             for i in 0..pieces.len() {
                 for j in i + 1..pieces.len() {
-                    let Some(pair) = opposite_pair(v, &pieces[i], v, &pieces[j]) else {
+                    let Some(pair) = opposite_pair(v, &pieces[i], v, &pieces[j], &mut ledger) else {
                         continue;
                     };
                     for &(f, len) in &picks {
                         let s0 = pair.sa + f * (pair.sb - pair.sa);
                         let s1 = (s0 + len * (pair.sb - pair.sa)).min(pair.sb);
-                        let t0 = pair.opposite_within(s0, pair.ta, pair.tb);
+                        let t0 = pair.opposite_within(s0, pair.ta, pair.tb, ledger.of(v));
                         let t1 = if s1 == pair.sb {
                             pair.tb
                         } else {
-                            pair.opposite_within(s1, pair.ta, pair.tb)
+                            pair.opposite_within(s1, pair.ta, pair.tb, ledger.of(v))
                         };
                         let Some(up) = theta_monotone(&pair, (s0, t0), (s1, t1)) else {
                             continue;

@@ -3,7 +3,6 @@
 //! analytic shape on its rational circle), its symbolic forms and the enclosures later runs
 //! build on them. Results come back in the curve's own coordinates and parameters.
 
-use crate::doubt::Doubt;
 use crate::driver::{antipodal_of, inflections_of, tangents_of};
 use crate::error::{Error, Result};
 use crate::forms::SymbolicForms;
@@ -11,6 +10,7 @@ use crate::types::{Antipodal, Inflections, Options, Provenance, Tangents};
 use crate::view::Source;
 use curve::circle::Angle;
 use curve::{Frame, Local, OnCircle, ParamCurve, PlaneCurve, StraightSpan};
+use numeric::certificate::{Certified, Doubt, Doubts};
 use std::sync::Arc;
 
 /// A curve prepared for the algorithms of this crate (see [`prepare`]).
@@ -131,12 +131,13 @@ impl<'c> Prepared<'c> {
     /// Runs `run` certified where the curve allows; where an analytic shape (regular by
     /// construction) is refused as singular, its exact form lost the precision its proofs
     /// need (a curve with many convexities: the form's degree grows with them), and it runs
-    /// again sampled, in its own angle, uncertified with that reason.
-    fn certified_or_sampled<T: Provenance>(
+    /// again sampled, in its own angle, uncertified with that reason (before the doubts the
+    /// sampled run meets).
+    fn certified_or_sampled<T>(
         &self,
         opts: &Options,
-        run: impl Fn(Source<'_>) -> Result<T>,
-    ) -> Result<T> {
+        run: impl Fn(Source<'_>) -> Result<Certified<T>>,
+    ) -> Result<Certified<T>> {
         // (Options first: a usage error is reported before anything about the curve.)
         opts.validate()?;
         // (A length in an error is the frame's: given back in the curve's units.)
@@ -159,27 +160,26 @@ impl<'c> Prepared<'c> {
                 e => e,
             })
         };
+        let sampled_for = |doubt: Doubt| {
+            let (value, run_doubts) = sampled()?.into_parts();
+            let mut doubts = Doubts::from(doubt);
+            doubts.join(run_doubts);
+            Ok(Certified { value, doubts })
+        };
         if !opts.certify {
-            let mut r = sampled()?;
-            r.uncertify("certification was turned off (Options::certify)".to_string());
-            return Ok(r);
+            return sampled_for(Doubt::CertificationOff);
         }
         // An analytic shape has no straight stretch: one taken as straight is its exact
         // form's precision running out, as a refusal as singular is.
-        let lost = |r: &Result<T>| match r {
+        let lost = |r: &Result<Certified<T>>| match r {
             Err(Error::Cusp { .. }) => true,
-            Ok(r) => r.reason() == Some(Doubt::FlatWithinRounding.reason()),
+            Ok(r) => r.doubts.first() == Some(&Doubt::FlatWithinRounding),
             Err(_) => false,
         };
         match run(self.source(true)) {
             r if self.simple && lost(&r) => {
-                let mut r = sampled()?;
                 let degree = self.forms.as_ref().map_or(0, |f| f.hom.degree());
-                r.uncertify(format!(
-                    "the shape's exact rational form (degree {degree}) loses the precision its \
-                     sign tests need: found by Jia's sampled method"
-                ));
-                Ok(r)
+                sampled_for(Doubt::ExactFormPrecision { degree })
             }
             r => r,
         }
@@ -193,7 +193,8 @@ impl<'c> Prepared<'c> {
     /// Every pair of antipodal points of the simple closed curve (Jia 2004); see
     /// [`crate::antipodal`].
     pub fn antipodal(&self, opts: &Options) -> Result<Antipodal> {
-        let mut r = self.certified_or_sampled(opts, |src| antipodal_of(src, opts))?;
+        let run = self.certified_or_sampled(opts, |src| antipodal_of(src, opts))?;
+        let mut r: Antipodal = Provenance::finished(run);
         let f = &self.frame;
         for p in &mut r.pairs {
             p.p = f.to_global(p.p);
@@ -209,6 +210,11 @@ impl<'c> Prepared<'c> {
     /// Every line tangent to this curve and `other` (Jia §2.5), in one frame for both (see
     /// [`prepare_pair`]; a curve prepared in another frame is prepared again in this one's).
     pub fn common_tangents(&self, other: &Prepared<'_>, opts: &Options) -> Result<Tangents> {
+        Ok(Provenance::finished(self.tangents_run(other, opts)?))
+    }
+
+    /// [`Prepared::common_tangents`] with the doubts met, not yet stated.
+    fn tangents_run(&self, other: &Prepared<'_>, opts: &Options) -> Result<Certified<Tangents>> {
         opts.validate()?;
         let again;
         let other = if other.frame == self.frame {
@@ -218,26 +224,31 @@ impl<'c> Prepared<'c> {
             &again
         };
         let same = std::ptr::addr_eq(self.given.curve(), other.given.curve());
-        let mut r = tangents_of(
+        let mut run = tangents_of(
             self.source(opts.certify),
             other.source(opts.certify),
             same,
             opts,
         )?;
-        for l in &mut r.lines {
+        for l in &mut run.value.lines {
             l.p = self.frame.to_global(l.p);
             l.q = self.frame.to_global(l.q);
         }
-        Ok(r)
+        Ok(run)
     }
 
     /// The simple inflections of the curve (Jia §5.1); see [`crate::inflections`].
     pub fn inflections(&self, opts: &Options) -> Result<Inflections> {
-        let mut r = self.certified_or_sampled(opts, |src| inflections_of(src, opts))?;
-        for i in &mut r.inflections {
+        Ok(Provenance::finished(self.inflections_run(opts)?))
+    }
+
+    /// [`Prepared::inflections`] with the doubts met, not yet stated.
+    fn inflections_run(&self, opts: &Options) -> Result<Certified<Inflections>> {
+        let mut run = self.certified_or_sampled(opts, |src| inflections_of(src, opts))?;
+        for i in &mut run.value.inflections {
             i.p = self.frame.to_global(i.p);
         }
-        Ok(r)
+        Ok(run)
     }
 }
 
@@ -299,6 +310,15 @@ pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections
     prepare(curve).inflections(opts)
 }
 
+/// [`inflections`] with the doubts met, not yet stated: for the runs that join them into
+/// their own (a profile's segments).
+pub(crate) fn inflections_run(
+    curve: &dyn PlaneCurve,
+    opts: &Options,
+) -> Result<Certified<Inflections>> {
+    prepare(curve).inflections_run(opts)
+}
+
 /// Two curves prepared in one frame (the identity when either is known only by evaluation),
 /// for their common tangents.
 pub fn prepare_pair<'c>(
@@ -324,6 +344,17 @@ pub fn common_tangents(
 ) -> Result<Tangents> {
     let (p1, p2) = prepare_pair(c1, c2);
     p1.common_tangents(&p2, opts)
+}
+
+/// [`common_tangents`] with the doubts met, not yet stated: for the runs that join them into
+/// their own (a profile's segments).
+pub(crate) fn common_tangents_run(
+    c1: &dyn PlaneCurve,
+    c2: &dyn PlaneCurve,
+    opts: &Options,
+) -> Result<Certified<Tangents>> {
+    let (p1, p2) = prepare_pair(c1, c2);
+    p1.tangents_run(&p2, opts)
 }
 
 #[cfg(test)]

@@ -6,11 +6,11 @@
 //! the ends (Jia's criterion, exact on a monotone segment), refined by Newton's method inside
 //! the bracket, which cannot fail.
 
-use crate::doubt::Doubt;
 use crate::view::View;
 use bspline::roots::{Count, Root, RootKind};
 use bspline::Piecewise;
 use curve::V2;
+use numeric::certificate::{Doubt, Doubts};
 use numeric::rounding::ulps;
 use numeric::solve::{bracketed, Accuracy};
 use smallvec::SmallVec;
@@ -53,6 +53,7 @@ impl View<'_> {
         accept: impl Fn(f64) -> bool,
         prefer: Prefer,
         hint: f64,
+        doubts: &mut Doubts,
     ) -> Option<f64> {
         let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         if let (Some(_), Some((pw, w))) = (&self.cert, form) {
@@ -72,11 +73,11 @@ impl View<'_> {
             }
             if let Some(roots) = self.cert_roots(pw, weights, lo, hi) {
                 let (flo, fhi) = (f(lo).0, f(hi).0);
-                return self.pick(roots, lo, hi, &f, &accept, prefer, flo, fhi);
+                return self.pick(roots, lo, hi, &f, &accept, prefer, (flo, fhi), doubts);
             }
         }
         if self.cert.is_some() {
-            self.uncertify(Doubt::RootsUnresolved);
+            doubts.add(Doubt::RootsUnresolved);
         }
         let (flo, fhi) = (f(lo).0, f(hi).0);
         sampled(lo, hi, flo, fhi, &f, &accept, self.point_tol, hint)
@@ -91,8 +92,8 @@ impl View<'_> {
         f: &impl Fn(f64) -> (f64, f64, f64),
         accept: &impl Fn(f64) -> bool,
         prefer: Prefer,
-        flo: f64,
-        fhi: f64,
+        (flo, fhi): (f64, f64),
+        doubts: &mut Doubts,
     ) -> Option<f64> {
         let mut good = roots.iter().filter(|r| accept(r.u));
         let chosen = match prefer {
@@ -102,7 +103,7 @@ impl View<'_> {
         match chosen {
             Some(r) => {
                 if r.kind == RootKind::Cluster || !r.certified {
-                    self.uncertify(Doubt::RootCluster);
+                    doubts.add(Doubt::RootCluster);
                 }
                 // A root within rounding of an interval end may be reported as a cluster:
                 // polish it on the curve itself.
@@ -118,10 +119,10 @@ impl View<'_> {
                 // rounding of zero and has no trusted sign): take the end itself then.
                 let small = END_ROOT * (flo.abs() + fhi.abs());
                 if flo.abs() <= small && accept(lo) {
-                    self.uncertify(Doubt::RootAtEnd);
+                    doubts.add(Doubt::RootAtEnd);
                     Some(lo)
                 } else if fhi.abs() <= small && accept(hi) {
-                    self.uncertify(Doubt::RootAtEnd);
+                    doubts.add(Doubt::RootAtEnd);
                     Some(hi)
                 } else {
                     None
@@ -131,12 +132,25 @@ impl View<'_> {
     }
 
     /// `point-with-normal(lo, hi, n)`: the point whose inward normal points along `n`.
-    pub(crate) fn point_with_normal(&self, lo: f64, hi: f64, n: V2) -> Option<f64> {
-        self.point_with_normal_near(lo, hi, n, f64::NAN)
+    pub(crate) fn point_with_normal(
+        &self,
+        lo: f64,
+        hi: f64,
+        n: V2,
+        doubts: &mut Doubts,
+    ) -> Option<f64> {
+        self.point_with_normal_near(lo, hi, n, f64::NAN, doubts)
     }
 
     /// `point-with-normal` started from a nearby parameter `hint`.
-    pub(crate) fn point_with_normal_near(&self, lo: f64, hi: f64, n: V2, hint: f64) -> Option<f64> {
+    pub(crate) fn point_with_normal_near(
+        &self,
+        lo: f64,
+        hi: f64,
+        n: V2,
+        hint: f64,
+        doubts: &mut Doubts,
+    ) -> Option<f64> {
         let f = |u: f64| {
             let j = self.jet_to(u, 3);
             (j.d1.dot(n), j.d2.dot(n), j.d3.dot(n))
@@ -149,7 +163,7 @@ impl View<'_> {
             }
         }
         let form = self.cert.as_ref().map(|c| (&c.tangent, [n.x, n.y, 0.0]));
-        self.solve(lo, hi, f, form, accept, Prefer::Low, hint)
+        self.solve(lo, hi, f, form, accept, Prefer::Low, hint, doubts)
     }
 
     /// [`View::point_with_normal_near`] on a monotone segment where the signs of `C′ · n` at
@@ -180,13 +194,14 @@ impl View<'_> {
         b: (f64, V2),
         n: V2,
         hint: f64,
+        doubts: &mut Doubts,
     ) -> Option<f64> {
         if self.cert.is_some() {
             if let Some(found) = self.normal_by_end_signs(a, b, n, hint) {
                 return found;
             }
         }
-        self.point_with_normal_near(a.0, b.0, n, hint)
+        self.point_with_normal_near(a.0, b.0, n, hint, doubts)
     }
 
     /// Every caller asks on a monotone segment (curvature of one sign, certified by the
@@ -214,7 +229,14 @@ impl View<'_> {
     }
 
     /// `point-of-tangency(lo, hi, p)`: the point whose tangent line passes through `p`.
-    pub(crate) fn point_of_tangency(&self, lo: f64, hi: f64, p: V2, prefer: Prefer) -> Option<f64> {
+    pub(crate) fn point_of_tangency(
+        &self,
+        lo: f64,
+        hi: f64,
+        p: V2,
+        prefer: Prefer,
+        doubts: &mut Doubts,
+    ) -> Option<f64> {
         // `p` at an end of the segment (two segments of a profile meeting at a corner): the
         // tangency there is `p` itself, a double root, and no other tangent line of a
         // monotone segment (turning by less than π, curved) passes through its own end point.
@@ -240,11 +262,13 @@ impl View<'_> {
         }
         // A − p × D = A + p_y Dₓ − pₓ D_y.
         let form = self.cert.as_ref().map(|c| (&c.tangency, [1.0, p.y, -p.x]));
-        self.solve(lo, hi, f, form, |_| true, prefer, f64::NAN)
+        self.solve(lo, hi, f, form, |_| true, prefer, f64::NAN, doubts)
     }
 
     /// `point-on-ray(lo, hi, c)`: where the segment meets the ray from `c` along the unit
     /// vector `dir` (the inward normal at `c`); Newton starts at `hint` (NaN for none).
+    // (The segment, the ray, the preference, the start and the doubts: each its own.)
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn point_on_ray(
         &self,
         lo: f64,
@@ -253,6 +277,7 @@ impl View<'_> {
         dir: V2,
         prefer: Prefer,
         hint: f64,
+        doubts: &mut Doubts,
     ) -> Option<f64> {
         let v = dir.perp();
         let f = |u: f64| {
@@ -272,7 +297,7 @@ impl View<'_> {
             .cert
             .as_ref()
             .map(|cc| (&cc.hom, [v.x, v.y, -c.dot(v)]));
-        self.solve(lo, hi, f, form, accept, prefer, hint)
+        self.solve(lo, hi, f, form, accept, prefer, hint, doubts)
     }
 }
 
@@ -483,11 +508,11 @@ mod tests {
         ) {
             let c = star_curve(deg, &seed, rational.then_some(&w[..]));
             let given = as_given(&c);
-            let Ok(prep) = dissect(given.source(true), &Options::default(), None) else {
+            let Ok(prep) = dissect(given.source(true), &Options::default(), None, 0) else {
                 return Ok(());
             };
-            let v = &prep.view;
-            for piece in prep.pieces.iter().filter(|q| !q.flat) {
+            let v = &prep.value.view;
+            for piece in prep.value.pieces.iter().filter(|q| !q.flat) {
                 for &(x, y) in &points {
                     let p = V2::new(x, y);
                     let f = |u: f64| {

@@ -10,12 +10,14 @@ use crate::driver::{classify, dissect, sections, trim_antipodal_ends, Dissected}
 use crate::error::{Error, Result};
 use crate::families::{flat_pairs, is_family};
 use crate::forms::SymbolicForms;
+use crate::ledger::Ledger;
 use crate::pairs::{opposite_pair, polish, THETA_NOISE};
-use crate::profiles::profile_inflections;
+use crate::profiles::profile_inflections_run;
 use crate::search::{antipodal_points, Budget};
-use crate::types::{Options, ProfileAntipodal, ProfileFamily, ProfilePair};
+use crate::types::{Options, ProfileAntipodal, ProfileFamily, ProfilePair, Provenance};
 use crate::view::{Source, View};
 use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, StraightSpan, V2};
+use numeric::certificate::{Certified, Doubt, Doubts};
 
 /// Samples per segment of a sampled track (certification off): a segment of a drawing turns
 /// little; Jia's sampling resolves a few oscillations with this many.
@@ -111,6 +113,8 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
     // Every segment runs the way a counterclockwise profile does.
     let rev = profile.orientation() < 0.0;
     let mut parts: Vec<Dissected> = Vec::with_capacity(locals.len());
+    // Each segment's view keeps its doubts in the book of its number.
+    let mut ledger = Ledger::new();
     let opens: Vec<Open> = locals.iter().map(|l| Open(&l.curve)).collect();
     for (i, (l, open)) in locals.iter().zip(&opens).enumerate() {
         let src = Source {
@@ -122,11 +126,12 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
             straight: &l.straight,
             exact_circle: false,
         };
-        let d = dissect(src, opts, Some(rev)).map_err(|e| Error::InSegment {
+        let d = dissect(src, opts, Some(rev), i).map_err(|e| Error::InSegment {
             segment: i,
             source: Box::new(e),
         })?;
-        parts.push(d);
+        *ledger.book(i) = d.doubts;
+        parts.push(d.value);
     }
     let mut raw: Vec<Raw> = Vec::new();
     let mut families: Vec<SegmentFamily> = Vec::new();
@@ -148,7 +153,7 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
                     found.clear();
                     if p.flat || q.flat {
                         flats.clear();
-                        flat_pairs(vi, p, vj, q, &mut found, &mut flats);
+                        flat_pairs(vi, p, vj, q, &mut found, &mut flats, &mut ledger);
                         // (The straight piece's side first.)
                         let (a, b) = if p.flat { (i, j) } else { (j, i) };
                         raw.extend(found.iter().map(|&(s, t)| Raw { i: a, s, j: b, t }));
@@ -167,6 +172,7 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
                         &mut budget,
                         &mut stack,
                         |f| families.push((i, j, f)),
+                        &mut ledger,
                     );
                     raw.extend(found.iter().map(|&(s, t)| Raw { i, s, j, t }));
                 }
@@ -175,7 +181,7 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
     }
     let views: Vec<&View> = parts.iter().map(|d| &d.view).collect();
     let sites = corner_sites(profile, &locals);
-    let mut pairs = finish(profile, &views, &frame, raw);
+    let mut pairs = finish(profile, &views, &frame, raw, &mut ledger);
     let curves: Vec<&SplineCurve> = locals.iter().map(|l| &l.curve).collect();
     let corner = corner_pairs(profile, &frame, &sites, &curves, opts);
     for c in corner.pairs {
@@ -193,8 +199,8 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
     );
     // A pair on a family (at its end, say) is one of its pairs.
     pairs.retain(|p| !families.iter().any(|f| on_family(f, p)));
-    let inflections = profile_inflections(profile, opts)?;
-    let mut out = ProfileAntipodal {
+    let (inflections, inflection_doubts) = profile_inflections_run(profile, opts)?.into_parts();
+    let out = ProfileAntipodal {
         pairs,
         inflections: inflections.inflections,
         corners: inflections.corners,
@@ -203,16 +209,14 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
         complete: !budget.exhausted,
         reason: None,
     };
-    let doubts = views
-        .iter()
-        .find_map(|v| v.reason())
-        .or(corner.reason)
-        .or(inflections.reason.filter(|_| !inflections.certified));
-    if let Some(reason) = doubts {
-        out.certified = false;
-        out.reason = Some(reason);
+    // The segments' doubts in their order, then the corners', then the inflections'.
+    let mut doubts = Doubts::none();
+    for v in &views {
+        doubts.join(ledger.take(v.book));
     }
-    Ok(out)
+    doubts.join(corner.doubts);
+    doubts.join(inflection_doubts);
+    Ok(Provenance::finished(Certified { value: out, doubts }))
 }
 
 /// The search of one pair of curved pieces (as for one smooth curve): continua go to
@@ -229,22 +233,23 @@ fn search_pieces<'a>(
     budget: &mut Budget,
     stack: &mut Vec<crate::pairs::Pair<'a>>,
     mut family: impl FnMut((f64, f64, f64, f64)),
+    ledger: &mut Ledger,
 ) {
-    let Some(pair) = opposite_pair(vi, p, vj, q) else {
+    let Some(pair) = opposite_pair(vi, p, vj, q, ledger) else {
         return;
     };
-    if is_family(&pair) {
+    if is_family(&pair, ledger) {
         // (θ vanishing within rounding all along: a continuum is proven only for arcs defined
         // on one centre.)
         if !concentric {
-            vi.uncertify(crate::doubt::Doubt::Continuum);
+            ledger.of(vi).add(Doubt::Continuum);
         }
         family((pair.sa, pair.sb, pair.ta, pair.tb));
         return;
     }
-    for sec in sections(&pair) {
-        if let Some(sec) = trim_antipodal_ends(&sec, out) {
-            antipodal_points(&sec, out, budget, stack);
+    for sec in sections(&pair, ledger) {
+        if let Some(sec) = trim_antipodal_ends(&sec, out, ledger) {
+            antipodal_points(&sec, out, budget, stack, ledger);
         }
     }
 }
@@ -275,7 +280,13 @@ fn corner_sites(profile: &Profile, locals: &[Local]) -> Vec<CornerSite> {
 
 /// Polishes, validates (inward normals facing each other), deduplicates, classifies and maps
 /// the pairs to profile parameters and global points.
-fn finish(profile: &Profile, views: &[&View], frame: &Frame, raw: Vec<Raw>) -> Vec<ProfilePair> {
+fn finish(
+    profile: &Profile,
+    views: &[&View],
+    frame: &Frame,
+    raw: Vec<Raw>,
+    ledger: &mut Ledger,
+) -> Vec<ProfilePair> {
     let mut out: Vec<ProfilePair> = Vec::with_capacity(raw.len());
     for r in raw {
         let (vs, vt) = (views[r.i], views[r.j]);
@@ -290,7 +301,7 @@ fn finish(profile: &Profile, views: &[&View], frame: &Frame, raw: Vec<Raw>) -> V
             continue;
         }
         if js.normal().cross(d).abs() > THETA_NOISE * d.norm() {
-            vs.uncertify(crate::doubt::Doubt::NotAPair);
+            ledger.of(vs).add(Doubt::NotAPair);
             continue;
         }
         // A reflex corner takes no part: a pair found there by one segment's normal is the

@@ -11,11 +11,12 @@
 //! edge: a limit case, left out.
 
 use crate::error::{Error, Result};
-use crate::prepare::common_tangents;
+use crate::prepare::common_tangents_run;
 use crate::profiles::at_corner;
-use crate::types::{Options, ProfileTangentLine, ProfileTangents};
+use crate::types::{Options, ProfileTangentLine, ProfileTangents, Provenance};
 use bspline::roots::{find_roots, RootKind, RootOptions};
 use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
+use numeric::certificate::{Certified, Doubt, Doubts};
 
 /// How far inside a corner's tangent cone (the sine of the angle to its nearer edge) a
 /// direction must be: far above the rounding of unit directions, far below any drawn angle.
@@ -140,10 +141,12 @@ pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Prof
         certified: true,
         reason: None,
     };
+    // (The smooth lines' doubts first, then the corners' in turn.)
+    let mut doubts = Doubts::none();
     let size = frame.length_to_local(a.size().max(b.size()));
-    smooth_lines(&sa, &sb, &frame, opts, &mut out)?;
+    smooth_lines(&sa, &sb, &frame, opts, &mut out, &mut doubts)?;
     for (from, to, flip) in [(&sa, &sb, false), (&sb, &sa, true)] {
-        corner_lines(from, to, &frame, opts, size, flip, &mut out)?;
+        corner_lines(from, to, &frame, opts, size, flip, &mut out, &mut doubts)?;
     }
     for ca in &sa.corners {
         for cb in &sb.corners {
@@ -166,7 +169,7 @@ pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Prof
     }
     out.lines
         .sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
-    Ok(out)
+    Ok(Provenance::finished(Certified { value: out, doubts }))
 }
 
 /// Lines tangent to both at smooth points: each pair of curved segments by Jia's method.
@@ -176,21 +179,19 @@ fn smooth_lines(
     frame: &Frame,
     opts: &Options,
     out: &mut ProfileTangents,
+    doubts: &mut Doubts,
 ) -> Result<()> {
     let size = frame.length_to_local(sa.profile.size().max(sb.profile.size()));
     let curved = |s: &Side, i: usize| s.profile.segments()[i].kind() != SegmentKind::Line;
     for i in (0..sa.curves.len()).filter(|&i| curved(sa, i)) {
         for j in (0..sb.curves.len()).filter(|&j| curved(sb, j)) {
-            let found = common_tangents(&sa.curves[i], &sb.curves[j], opts).map_err(|e| {
+            let found = common_tangents_run(&sa.curves[i], &sb.curves[j], opts).map_err(|e| {
                 Error::InSegment {
                     segment: i,
                     source: Box::new(e),
                 }
             })?;
-            if !found.certified && out.certified {
-                out.certified = false;
-                out.reason = found.reason.clone();
-            }
+            let found = doubts.absorb(found);
             for l in found.lines {
                 if at_corner(sa.profile, i, l.s) || at_corner(sb.profile, j, l.t) {
                     continue;
@@ -215,6 +216,8 @@ fn smooth_lines(
 
 /// Lines through a corner of `from` tangent to `to` at a smooth point (`flip`: `from` is the
 /// second profile).
+// (The corner, the profiles, the frame and what is found: each its own.)
+#[allow(clippy::too_many_arguments)]
 fn corner_lines(
     from: &Side,
     to: &Side,
@@ -223,6 +226,7 @@ fn corner_lines(
     size: f64,
     flip: bool,
     out: &mut ProfileTangents,
+    doubts: &mut Doubts,
 ) -> Result<()> {
     let ropts = RootOptions::default().tolerance(opts.tol);
     for c in &from.corners {
@@ -250,13 +254,8 @@ fn corner_lines(
                 if d.norm() <= SAME_LINE * size || !c.holds(d) {
                     continue;
                 }
-                if !(r.kind == RootKind::Simple && r.certified) && opts.certify && out.certified {
-                    out.certified = false;
-                    out.reason = Some(format!(
-                        "a point of tangency from the corner at u = {} on segment {j} is not \
-                         separated from another within rounding",
-                        c.u
-                    ));
+                if !(r.kind == RootKind::Simple && r.certified) && opts.certify {
+                    doubts.add(Doubt::TangencyFromCorner { u: c.u, segment: j });
                 }
                 let t = to.profile.profile_param(j, r.u);
                 let new = if flip {

@@ -3,9 +3,12 @@
 //! piecewise C² curves; this module runs it segment by segment and decides at the joints.
 
 use crate::error::{Error, Result};
-use crate::prepare::inflections;
-use crate::types::{Corner, CornerKind, Inflection, InflectionKind, Options, ProfileInflections};
+use crate::prepare::inflections_run;
+use crate::types::{
+    Corner, CornerKind, Inflection, InflectionKind, Options, ProfileInflections, Provenance,
+};
 use curve::{JointKind, ParamCurve, Profile, SegmentKind};
+use numeric::certificate::{Certified, Doubt, Doubts};
 
 /// The curvature (times the profile's size) beside a smooth joint below which its sign is
 /// not clear of the rounding of the jets it is computed from.
@@ -35,6 +38,17 @@ const JOINT_CURVATURE_NOISE: f64 = 1e-9;
 /// assert!(r.corners.is_empty());
 /// ```
 pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileInflections> {
+    Ok(Provenance::finished(profile_inflections_run(
+        profile, opts,
+    )?))
+}
+
+/// [`profile_inflections`] with the doubts met, in order (the segments', each at its turn,
+/// and the joints'), not yet stated.
+pub(crate) fn profile_inflections_run(
+    profile: &Profile,
+    opts: &Options,
+) -> Result<Certified<ProfileInflections>> {
     opts.validate()?;
     let mut out = ProfileInflections {
         inflections: Vec::new(),
@@ -42,18 +56,16 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
         certified: true,
         reason: None,
     };
+    let mut doubts = Doubts::none();
     for (i, seg) in profile.segments().iter().enumerate() {
         if seg.kind() == SegmentKind::Line {
             continue;
         }
-        let found = inflections(seg.curve(), opts).map_err(|e| Error::InSegment {
+        let found = inflections_run(seg.curve(), opts).map_err(|e| Error::InSegment {
             segment: i,
             source: Box::new(e),
         })?;
-        if !found.certified && out.certified {
-            out.certified = false;
-            out.reason = found.reason.clone();
-        }
+        let found = doubts.absorb(found);
         let (a, b) = seg.curve().domain();
         for f in found.inflections {
             // At a segment's end the joint decides (a corner is no inflection). So it does
@@ -68,13 +80,8 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
                 let open_end =
                     !profile.is_closed() && ((i == 0 && end == a) || (i == last && end == b));
                 let undecided = f.u > a && f.u < b && (open_end || at_corner(profile, i, end));
-                if undecided && out.certified {
-                    out.certified = false;
-                    out.reason = Some(format!(
-                        "the curvature vanishes within rounding at the end u = {u} of segment \
-                         {i}, by a corner or the profile's end: whether it changes sign just \
-                         inside is not decided"
-                    ));
+                if undecided {
+                    doubts.add(Doubt::CurvatureAtSegmentEnd { u, segment: i });
                 }
                 continue;
             }
@@ -115,13 +122,7 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
         if !(clear(k_before) && clear(k_after)) {
             // A segment ending in a zero of its curvature: whether the profile inflects
             // there is not decided.
-            if out.certified {
-                out.certified = false;
-                out.reason = Some(format!(
-                    "the curvature vanishes within rounding at the smooth joint at u = {}",
-                    joint.u
-                ));
-            }
+            doubts.add(Doubt::CurvatureAtJoint { u: joint.u });
             continue;
         }
         if (k_before > 0.0) != (k_after > 0.0) {
@@ -136,7 +137,7 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
         }
     }
     out.inflections.sort_by(|a, b| a.u.total_cmp(&b.u));
-    Ok(out)
+    Ok(Certified { value: out, doubts })
 }
 
 /// How close (relative to a segment's domain) to its end a point lies at the joint there:

@@ -81,6 +81,7 @@ mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
     use crate::driver::dissect;
+    use crate::ledger::Ledger;
     use crate::monotone::tests::opposite_by_bisection;
     use crate::pairs::opposite_pair;
     use crate::prepare::tests::{as_given, star_curve};
@@ -148,8 +149,8 @@ mod tests {
         };
         // (The curve with convexities runs on its circle form.)
         let given = as_given(c);
-        match dissect(given.source(true), &Options::default(), None) {
-            Ok(prep) => check(&prep),
+        match dissect(given.source(true), &Options::default(), None, 0) {
+            Ok(prep) => check(&prep.value),
             Err(_) => Ok(()),
         }
     }
@@ -201,9 +202,11 @@ mod tests {
         ) {
             on_random_curve(&curve, |prep| {
                 let (v, pieces) = (&prep.view, &prep.pieces);
+                // (The doubts met are not what is tested here.)
+                let mut ledger = Ledger::new();
                 for i in 0..pieces.len() {
                     for j in i + 1..pieces.len() {
-                        let Some(pair) = opposite_pair(v, &pieces[i], v, &pieces[j]) else {
+                        let Some(pair) = opposite_pair(v, &pieces[i], v, &pieces[j], &mut ledger) else {
                             continue;
                         };
                         let opp = |s: f64| match s {

@@ -8,11 +8,12 @@
 //! long as θ is proven monotone from the pair (a guess of ε no longer decides what is skipped).
 
 use crate::bisect::bisect;
-use crate::doubt::Doubt;
 use crate::finish::{certified_rest, certified_rests, clear_between};
+use crate::ledger::Ledger;
 use crate::march::{by_width, march_convex, march_mixed, March};
 use crate::pairs::{negligible, Pair};
 use crate::radius_rates::clear_by_rates;
+use numeric::certificate::{Doubt, Doubts};
 use smallvec::SmallVec;
 
 /// Work limits shared by one run.
@@ -28,6 +29,7 @@ pub(crate) fn antipodal_points<'a>(
     out: &mut Vec<(f64, f64)>,
     budget: &mut Budget,
     stack: &mut Vec<Pair<'a>>,
+    ledger: &mut Ledger,
 ) {
     stack.clear();
     stack.push(*pair);
@@ -49,7 +51,7 @@ pub(crate) fn antipodal_points<'a>(
             };
             out.push((found.s, found.t));
             if p.s_convex || p.t_convex {
-                stack.extend(rests(&p, found.s, found.t, true, true, ta < 0.0));
+                stack.extend(rests(&p, found.s, found.t, true, true, ta < 0.0, ledger));
             }
         } else {
             let ends = ((p.sa, p.ta), (p.sb, p.tb));
@@ -60,10 +62,10 @@ pub(crate) fn antipodal_points<'a>(
                 continue;
             }
             let march = match (p.s_convex, p.t_convex) {
-                (true, true) => march_convex(&p, ta),
+                (true, true) => march_convex(&p, ta, ledger),
                 (false, false) => March::Nothing,
-                (true, false) => march_mixed(&p),
-                (false, true) => match march_mixed(&p.swapped()) {
+                (true, false) => march_mixed(&p, ledger),
+                (false, true) => match march_mixed(&p.swapped(), ledger) {
                     // Back to the original roles; "up" is in t, so flip it when t runs down.
                     March::Found(s, t, up) => {
                         March::Found(t, s, if p.ta <= p.tb { up } else { !up })
@@ -84,7 +86,7 @@ pub(crate) fn antipodal_points<'a>(
                     } else {
                         p.sub(p.sa, p.ta, s, t)
                     };
-                    if !by_width(&rest, out) {
+                    if !by_width(&rest, out, ledger) {
                         // (The width's sampling hit its bound: pairs may be missing.)
                         budget.exhausted = true;
                     }
@@ -94,7 +96,15 @@ pub(crate) fn antipodal_points<'a>(
             if let Some((s, t, moved_up)) = found {
                 out.push((s, t));
                 // The marched side is free of pairs: continue on the other side only.
-                stack.extend(rests(&p, s, t, moved_up, !moved_up, (ta < 0.0) == moved_up));
+                stack.extend(rests(
+                    &p,
+                    s,
+                    t,
+                    moved_up,
+                    !moved_up,
+                    (ta < 0.0) == moved_up,
+                    ledger,
+                ));
             }
         }
     }
@@ -123,11 +133,12 @@ fn rests<'a>(
     above: bool,
     below: bool,
     below_neg: bool,
+    ledger: &mut Ledger,
 ) -> SmallVec<[Pair<'a>; 2]> {
     let certified = p.vs.cert.is_some() && p.vt.cert.is_some();
     let mut out = SmallVec::new();
     let both = match certified && above && below {
-        true => certified_rests(p, s, t),
+        true => certified_rests(p, s, t, ledger.of(p.vt)),
         false => [None, None],
     };
     for ((want, dir), joint) in [(below, -1.0), (above, 1.0)].into_iter().zip(both) {
@@ -136,7 +147,7 @@ fn rests<'a>(
         }
         let proven = match (above && below, certified) {
             (true, _) => joint,
-            (false, true) => certified_rest(p, s, t, dir),
+            (false, true) => certified_rest(p, s, t, dir, ledger.of(p.vt)),
             (false, false) => None,
         };
         match proven {
@@ -148,7 +159,7 @@ fn rests<'a>(
             // the papers' shapes nor 2,400 random quadratics to quintics takes this path.)
             None => {
                 if certified {
-                    p.vs.uncertify(Doubt::EpsilonCut);
+                    ledger.of(p.vs).add(Doubt::EpsilonCut);
                 }
                 out.extend(remainders(
                     p,
@@ -157,6 +168,7 @@ fn rests<'a>(
                     dir < 0.0,
                     below_neg,
                     !certified,
+                    ledger,
                 ))
             }
         }
@@ -186,6 +198,7 @@ fn remainders<'a>(
     below: bool,
     below_neg: bool,
     widening: bool,
+    ledger: &mut Ledger,
 ) -> SmallVec<[Pair<'a>; 2]> {
     let mut out = SmallVec::new();
     let min_eps = 16.0 * p.vs.tol;
@@ -215,7 +228,7 @@ fn remainders<'a>(
                 decided = true;
                 break;
             }
-            let Some(te) = p.opposite(se) else {
+            let Some(te) = p.opposite(se, ledger.of(p.vt)) else {
                 break;
             };
             let th = p.sin_theta(se, te);
@@ -234,7 +247,7 @@ fn remainders<'a>(
             }
             if (th < 0.0) == want_neg {
                 let (se, te) = if widening {
-                    widen(p, s, dir, eps, th, se, te)
+                    widen(p, s, dir, eps, th, (se, te), ledger.of(p.vt))
                 } else {
                     (se, te)
                 };
@@ -251,7 +264,7 @@ fn remainders<'a>(
             eps = (eps / 8.0).max(min_eps);
         }
         if !decided {
-            p.vs.uncertify(Doubt::SectionUndecided);
+            ledger.of(p.vs).add(Doubt::SectionUndecided);
         }
     }
     out
@@ -261,9 +274,17 @@ fn remainders<'a>(
 /// linearly from it (so it does not turn back towards zero, which another pair close by
 /// would need): the march that follows then starts farther from `s*` and escapes from it in
 /// fewer steps. Returns the (possibly unchanged) cut.
-fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f64, f64) {
+fn widen(
+    p: &Pair,
+    s: f64,
+    dir: f64,
+    eps: f64,
+    th: f64,
+    cut: (f64, f64),
+    doubts: &mut Doubts,
+) -> (f64, f64) {
     let limit = WIDEN_LIMIT * (p.sb - p.sa);
-    let (mut eps, mut th, mut cut) = (eps, th, (se, te));
+    let (mut eps, mut th, mut cut) = (eps, th, cut);
     while eps * 64.0 <= limit {
         let e2 = eps * 64.0;
         let s2 = s + dir * e2;
@@ -272,7 +293,7 @@ fn widen(p: &Pair, s: f64, dir: f64, eps: f64, th: f64, se: f64, te: f64) -> (f6
         }
         // The opposite point lies between the last cut's and the far end's.
         let t_far = if dir > 0.0 { p.tb } else { p.ta };
-        let t2 = p.opposite_within(s2, cut.1, t_far);
+        let t2 = p.opposite_within(s2, cut.1, t_far, doubts);
         let th2 = p.sin_theta(s2, t2);
         if (th2 < 0.0) != (th < 0.0) || th2.abs() < 0.5 * 64.0 * th.abs() {
             break;

@@ -20,11 +20,11 @@
 //! them: the densified polygon of the track is searched for crossings instead.
 
 use crate::dissect::Zeros;
-use crate::doubt::Doubt;
 use crate::error::{Error, Result};
 use crate::tracks::Tracks;
 use crate::view::View;
 use curve::{wrap_pi, V2};
+use numeric::certificate::{Doubt, Doubts};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Halvings of a pair of arcs before the test gives up on it (2⁻⁴⁰ of an arc is far below
@@ -111,7 +111,12 @@ impl View<'_> {
     /// The curve is simple: its tangent turns once around (±2π), and no two of its arcs
     /// meet (see the module notes; without symbolic forms, no two chords of its sampled
     /// polygon cross). Uncertifies the result where a pair of arcs could not be decided.
-    pub(crate) fn check_simple(&self, tr: &Tracks, zeros: &Zeros) -> Result<()> {
+    pub(crate) fn check_simple(
+        &self,
+        tr: &Tracks,
+        zeros: &Zeros,
+        doubts: &mut Doubts,
+    ) -> Result<()> {
         let turn = tr.turn();
         if (turn.abs() - TAU).abs() > 0.5 {
             return Err(Error::Winding { turns: turn / TAU });
@@ -121,7 +126,7 @@ impl View<'_> {
             // the enclosures would prove nothing, and only the polygon is searched.
             return self.check_polygon(tr);
         }
-        let arcs = self.monotone_arcs(tr, zeros);
+        let arcs = self.monotone_arcs(tr, zeros, doubts);
         let pad = HULL_ROUNDING * self.scale;
         let hulls: Vec<Hull> = arcs.iter().map(|a| a.hull(pad)).collect();
         let mut order: Vec<usize> = (0..arcs.len()).collect();
@@ -140,14 +145,14 @@ impl View<'_> {
             }
         }
         if !decided {
-            self.uncertify(Doubt::SimplicityUndecided);
+            doubts.add(Doubt::SimplicityUndecided);
         }
         Ok(())
     }
 
     /// The track's steps cut at the inflections and the ends of straight stretches, then
     /// halved until each turns by less than π/2.
-    fn monotone_arcs(&self, tr: &Tracks, zeros: &Zeros) -> Vec<Arc> {
+    fn monotone_arcs(&self, tr: &Tracks, zeros: &Zeros, doubts: &mut Doubts) -> Vec<Arc> {
         let mut cuts: Vec<f64> = zeros.zs.iter().map(|z| z.u).collect();
         for &(lo, hi) in &zeros.flats {
             cuts.extend([self.wrap(lo), self.wrap(hi)]);
@@ -169,17 +174,23 @@ impl View<'_> {
                 // unwraps it.
                 let j = self.jet_to(z, 1);
                 let psi = tr.psi[i] + wrap_pi(j.d1.angle() - tr.psi[i]);
-                self.push_halved(&mut arcs, start, (z, j.p, psi));
+                self.push_halved(&mut arcs, start, (z, j.p, psi), doubts);
                 start = (z, j.p, psi);
             }
-            self.push_halved(&mut arcs, start, (u1, point(i + 1), tr.psi[i + 1]));
+            self.push_halved(&mut arcs, start, (u1, point(i + 1), tr.psi[i + 1]), doubts);
         }
         arcs
     }
 
     /// Pushes the arc between two cuts, halved until each part turns by less than π/2
     /// (margin 0.1 for the rounding of the angles).
-    fn push_halved(&self, arcs: &mut Vec<Arc>, a: (f64, V2, f64), b: (f64, V2, f64)) {
+    fn push_halved(
+        &self,
+        arcs: &mut Vec<Arc>,
+        a: (f64, V2, f64),
+        b: (f64, V2, f64),
+        doubts: &mut Doubts,
+    ) {
         let arc = Arc {
             u0: a.0,
             u1: b.0,
@@ -195,7 +206,7 @@ impl View<'_> {
                 // An arc within the tolerance that still turns this much (a near-cusp) may
                 // leave its triangle: what is decided with it is not proven.
                 if turning >= FRAC_PI_2 - 0.1 {
-                    self.uncertify(Doubt::NearCusp);
+                    doubts.add(Doubt::NearCusp);
                 }
                 arcs.push(arc);
                 continue;

@@ -12,23 +12,24 @@
 //! Once one tangent is known, the second lies where `d` changes sign again: a bisection on `d`
 //! backs the iteration up wherever a sign change brackets a tangent.
 
-use crate::doubt::Doubt;
+use crate::ledger::Ledger;
 use crate::pairs::Pair;
 use crate::prims::Prefer;
 use crate::view::View;
 use curve::V2;
+use numeric::certificate::Doubt;
 use smallvec::SmallVec;
 
 /// Points of tangency `(s, t)` of the common tangents of `p`, sorted by `s`.
-pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
+pub(crate) fn common_tangents(p: &Pair, ledger: &mut Ledger) -> SmallVec<[(f64, f64); 2]> {
     let da = p.d(p.sa, p.ta);
     let db = p.d(p.sb, p.tb);
     let odd = (da > 0.0) != (db > 0.0);
     let mut out = SmallVec::new();
     if odd {
-        let found = ct_from(p, true)
-            .or_else(|| ct_from(p, false))
-            .or_else(|| bisect_d(p, p.sa, p.ta, p.sb, p.tb));
+        let found = ct_from(p, true, ledger)
+            .or_else(|| ct_from(p, false, ledger))
+            .or_else(|| bisect_d(p, p.sa, p.ta, p.sb, p.tb, ledger));
         out.extend(found);
         return out;
     }
@@ -39,23 +40,24 @@ pub(crate) fn common_tangents(p: &Pair) -> SmallVec<[(f64, f64); 2]> {
     // Else the iteration converges whenever a tangent exists (Lemma 4) and its limit is
     // verified, so it decides existence. (In the §2.4 order, then in the other.)
     let ordered = t_first(p, true);
-    let first = common_tangent(p, true, ordered).or_else(|| common_tangent(p, true, !ordered));
+    let first = common_tangent(p, true, ordered, ledger)
+        .or_else(|| common_tangent(p, true, !ordered, ledger));
     // Segments bending the same way: configuration (a) or none, by the region test. A
     // disagreement with the (verified) iteration is reported as uncertified.
     if p.s_convex != p.t_convex && two_tangents_same_bending(p) != first.is_some() {
-        p.vs.uncertify(Doubt::TangentTestsDisagree);
+        ledger.of(p.vs).add(Doubt::TangentTestsDisagree);
     }
     let Some(first) = first else {
         return out;
     };
     out.push(first);
     // The second one lies beyond the first: d changes sign once on (s_c, s_b].
-    let second = ct_from(p, false)
+    let second = ct_from(p, false, ledger)
         .filter(|q| q.0 > first.0 + 4.0 * p.vs.tol)
         .or_else(|| {
             let s1 = first.0 + 64.0 * p.vs.tol;
-            let t1 = p.opposite(s1)?;
-            bisect_d(p, s1, t1, p.sb, p.tb)
+            let t1 = p.opposite(s1, ledger.of(p.vt))?;
+            bisect_d(p, s1, t1, p.sb, p.tb, ledger)
         });
     out.extend(second);
     out.sort_by(|x, y| x.0.total_cmp(&y.0));
@@ -95,8 +97,8 @@ fn d_one_signed(p: &Pair) -> bool {
 /// Common-Tangent started at the `a` ends (or the `b` ends) with the ordering rule of §2.4:
 /// if the translation from `L_a` to `L'_a` is along the bending direction of `S`, update `t`
 /// first.
-fn ct_from(p: &Pair, at_a: bool) -> Option<(f64, f64)> {
-    common_tangent(p, at_a, t_first(p, at_a))
+fn ct_from(p: &Pair, at_a: bool, ledger: &mut Ledger) -> Option<(f64, f64)> {
+    common_tangent(p, at_a, t_first(p, at_a), ledger)
 }
 
 /// The ordering rule of §2.4 at the `a` ends (or the `b` ends): `t` is updated first.
@@ -109,7 +111,7 @@ fn t_first(p: &Pair, at_a: bool) -> bool {
 /// The iteration of §2.3: `x_{i+1}` = point of tangency on `X` of the tangent through
 /// `α(y_i)`, `y_{i+1}` = its opposite point on `Y`. Returns `(s, t)` once it converges to a
 /// verified common tangent.
-fn common_tangent(p: &Pair, at_a: bool, t_first: bool) -> Option<(f64, f64)> {
+fn common_tangent(p: &Pair, at_a: bool, t_first: bool, ledger: &mut Ledger) -> Option<(f64, f64)> {
     // X is the segment updated first.
     let q = if t_first { p.swapped() } else { *p };
     // In the swapped pair the a-ends are the ends of the smaller t; map `at_a` accordingly.
@@ -122,8 +124,9 @@ fn common_tangent(p: &Pair, at_a: bool, t_first: bool) -> Option<(f64, f64)> {
         let py = q.vt.point(y);
         let (lo, hi) = (x.min(x_end), x.max(x_end));
         // Skip the current point itself: its tangent line is parallel to the one at y.
-        let nx = q.vs.point_of_tangency(lo, hi, py, prefer)?;
-        let ny = q.opposite(nx)?;
+        let nx =
+            q.vs.point_of_tangency(lo, hi, py, prefer, ledger.of(q.vs))?;
+        let ny = q.opposite(nx, ledger.of(q.vt))?;
         let done = (nx - x).abs() <= tol && (ny - y).abs() <= 4.0 * q.vt.tol;
         x = nx;
         y = ny;
@@ -144,7 +147,15 @@ fn verify(p: &Pair, s: f64, t: f64) -> bool {
 }
 
 /// Bisection on `d` over a bracket with a sign change (never fails).
-fn bisect_d(p: &Pair, s0: f64, t0: f64, s1: f64, t1: f64) -> Option<(f64, f64)> {
+fn bisect_d(
+    p: &Pair,
+    s0: f64,
+    t0: f64,
+    s1: f64,
+    t1: f64,
+    ledger: &mut Ledger,
+) -> Option<(f64, f64)> {
+    let doubts = ledger.of(p.vt);
     let (mut s0, mut t0, mut s1, mut t1) = (s0, t0, s1, t1);
     let d0 = p.d(s0, t0);
     if (d0 > 0.0) == (p.d(s1, t1) > 0.0) {
@@ -155,7 +166,7 @@ fn bisect_d(p: &Pair, s0: f64, t0: f64, s1: f64, t1: f64) -> Option<(f64, f64)> 
             break;
         }
         let sm = 0.5 * (s0 + s1);
-        let tm = p.opposite_between(sm, (s0, t0), (s1, t1));
+        let tm = p.opposite_between(sm, (s0, t0), (s1, t1), doubts);
         if (p.d(sm, tm) > 0.0) == (d0 > 0.0) {
             s0 = sm;
             t0 = tm;
@@ -165,7 +176,7 @@ fn bisect_d(p: &Pair, s0: f64, t0: f64, s1: f64, t1: f64) -> Option<(f64, f64)> 
         }
     }
     let (s, t) = (0.5 * (s0 + s1), 0.5 * (t0 + t1));
-    let t = p.opposite(s).unwrap_or(t);
+    let t = p.opposite(s, doubts).unwrap_or(t);
     verify(p, s, t).then_some((s, t))
 }
 
@@ -231,6 +242,7 @@ mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
     use crate::driver::dissect;
+    use crate::ledger::Ledger;
     use crate::monotone::tests::opposite_by_bisection;
     use crate::pairs::opposite_pair;
     use crate::prepare::tests::{as_given, star_curve};
@@ -269,21 +281,24 @@ mod tests {
             let b = star_curve_with(&far, deg, &seed2, weights);
             let opts = Options::default();
             let (ga, gb) = (as_given(&a), as_given(&b));
-            let Ok(pa) = dissect(ga.source(true), &opts, Some(false)) else {
+            let Ok(pa) = dissect(ga.source(true), &opts, Some(false), 0) else {
                 return Ok(());
             };
+            let pa = pa.value;
             let mut others = vec![];
             for rev in [false, true] {
-                let Ok(pb) = dissect(gb.source(true), &opts, Some(rev)) else {
+                let Ok(pb) = dissect(gb.source(true), &opts, Some(rev), 1) else {
                     return Ok(());
                 };
-                others.push(pb);
+                others.push(pb.value);
             }
             let mut pairs = vec![];
+            // (The doubts met are not what is tested here.)
+            let mut ledger = Ledger::new();
             for (i, p) in pa.pieces.iter().enumerate() {
-                pairs.extend(pa.pieces[i + 1..].iter().filter_map(|q| opposite_pair(&pa.view, p, &pa.view, q)));
+                pairs.extend(pa.pieces[i + 1..].iter().filter_map(|q| opposite_pair(&pa.view, p, &pa.view, q, &mut ledger)));
                 for pb in &others {
-                    pairs.extend(pb.pieces.iter().filter_map(|q| opposite_pair(&pa.view, p, &pb.view, q)));
+                    pairs.extend(pb.pieces.iter().filter_map(|q| opposite_pair(&pa.view, p, &pb.view, q, &mut ledger)));
                 }
             }
             for pair in &pairs {

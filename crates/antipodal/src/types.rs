@@ -1,6 +1,7 @@
 //! Options and the plain result types (serde) of the public entry points.
 
 use crate::error::{Error, Result};
+use numeric::certificate::Certified;
 use numeric::tolerance::ParamTol;
 use serde::{Deserialize, Serialize};
 
@@ -337,23 +338,22 @@ pub struct Tangents {
     pub reason: Option<String>,
 }
 
-/// Results that say whether they are certified, and why not.
-pub(crate) trait Provenance {
-    /// Marks the result uncertified, for `reason`.
-    fn uncertify(&mut self, reason: String);
-    /// Why it is not certified.
-    fn reason(&self) -> Option<&str>;
+/// Results that say whether they are certified, and why not: stated from the doubts met, at
+/// the one place each result is finished.
+pub(crate) trait Provenance: Sized {
+    /// The result of a run with the doubts it met: certified when there is none, its reason
+    /// the first.
+    fn finished(run: Certified<Self>) -> Self;
 }
 
 macro_rules! provenance {
     ($t:ty) => {
         impl Provenance for $t {
-            fn uncertify(&mut self, reason: String) {
-                self.certified = false;
-                self.reason = Some(reason);
-            }
-            fn reason(&self) -> Option<&str> {
-                self.reason.as_deref()
+            fn finished(run: Certified<Self>) -> Self {
+                let (mut result, doubts) = run.into_parts();
+                result.certified = doubts.is_empty();
+                result.reason = doubts.reason();
+                result
             }
         }
     };
@@ -362,6 +362,8 @@ provenance!(Antipodal);
 provenance!(Inflections);
 provenance!(Tangents);
 provenance!(ProfileInflections);
+provenance!(ProfileAntipodal);
+provenance!(ProfileTangents);
 
 /// The default parameter tolerance (relative to the domain's length), the workspace's one
 /// ([`numeric::tolerance::DEFAULT_PARAM_TOL`]): some thousand units of rounding, so that the

@@ -5,12 +5,12 @@
 //! viewed reversed (`u ↦ a + b − u`), so inside the algorithms every closed curve runs
 //! counterclockwise and the left normal is the inward normal, as the papers assume.
 
-use crate::doubt::Doubt;
 use crate::forms::SymbolicForms;
 use bspline::roots::{find_roots_in, Count, Root, RootOptions, SignCount};
 use bspline::Piecewise;
 use curve::circle::Angle;
 use curve::{Jet, ParamCurve, StraightSpan, V2};
+use numeric::certificate::{Certified, Doubt};
 use numeric::rounding::ulps;
 use numeric::tolerance::ParamTol;
 use smallvec::SmallVec;
@@ -88,8 +88,9 @@ pub(crate) struct View<'a> {
     /// searches' tolerance, since the signs of θ and of the primitives that steer the searches
     /// are read at those points.
     pub(crate) point_tol: f64,
-    /// Cleared when some decision fell back on sampling.
-    pub(crate) doubt: Cell<Option<Doubt>>,
+    /// Which book of a run's [`crate::ledger::Ledger`] keeps the doubts met on this view
+    /// (0 unless the run searches several views).
+    pub(crate) book: usize,
     /// Maps the evaluated curve's parameter to the reported one (the analytic `φ` of a shape
     /// run on its rational-circle form).
     report: Option<Angle>,
@@ -186,8 +187,9 @@ impl JetCache {
 
 impl<'a> View<'a> {
     /// The view of `src`, run backwards when `rev`, with the parameter tolerance `tol`
-    /// (relative to the domain's length).
-    pub(crate) fn new(src: Source<'a>, rev: bool, tol: f64) -> Self {
+    /// (relative to the domain's length); doubted when it has no exact form to prove signs
+    /// on.
+    pub(crate) fn new(src: Source<'a>, rev: bool, tol: f64) -> Certified<Self> {
         let curve = src.curve;
         let (a, b) = curve.domain();
         let closed = curve.is_closed();
@@ -200,10 +202,6 @@ impl<'a> View<'a> {
             forms,
             opts: RootOptions::default().tolerance(tol.max(ParamTol::FINEST)),
         });
-        let doubt = match cert {
-            Some(_) => None,
-            None => Some(Doubt::NoExactForm),
-        };
         let mut v = Self {
             curve,
             simple: src.simple,
@@ -219,7 +217,7 @@ impl<'a> View<'a> {
             scale: 1.0,
             tol: tol * (b - a).max(1.0),
             point_tol: tol.min(POINT_TOL) * (b - a).max(1.0),
-            doubt: Cell::new(doubt),
+            book: 0,
             report: src.report,
             cache: JetCache::new(),
             piece_points: RefCell::new(Vec::new()),
@@ -240,7 +238,10 @@ impl<'a> View<'a> {
             None => sampled(),
         };
         v.scale = scale;
-        v
+        match v.cert {
+            Some(_) => Certified::proven(v),
+            None => Certified::with(v, Doubt::NoExactForm),
+        }
     }
 
     /// The parameter wrapped into `[a, b)` for closed curves (clamped for open ones).
@@ -402,13 +403,6 @@ impl<'a> View<'a> {
         self.simple
     }
 
-    /// Marks the run uncertified for `doubt` (the first reason met is kept).
-    pub(crate) fn uncertify(&self, doubt: Doubt) {
-        if self.doubt.get().is_none() {
-            self.doubt.set(Some(doubt));
-        }
-    }
-
     /// The stretch proven exactly straight that the view's stretch `[lo, hi]` is (its ends
     /// within [`STRAIGHT_END`] of the period of a proven one's), if any.
     pub(crate) fn straight_span(&self, lo: f64, hi: f64) -> Option<StraightSpan> {
@@ -444,16 +438,6 @@ impl<'a> View<'a> {
             (last, count) = (next, count + 1);
         }
         None
-    }
-
-    /// Why the run is not certified, if it is not.
-    pub(crate) fn reason(&self) -> Option<String> {
-        self.doubt.get().map(|d| d.reason().to_string())
-    }
-
-    /// True while every decision was proven.
-    pub(crate) fn certified(&self) -> bool {
-        self.doubt.get().is_none()
     }
 
     /// The unwrapped interval `[lo, hi]` as pieces `(x0, x1, shift)` inside the domain (split

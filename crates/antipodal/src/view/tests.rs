@@ -12,7 +12,7 @@ fn piece_points_are_solved_once_per_piece_and_angle() {
     ];
     let curve = crate::prepare::tests::star_curve(3, &seed, None);
     let prep = crate::prepare::tests::as_given(&curve);
-    let v = View::new(prep.source(false), false, 1e-12);
+    let v = View::new(prep.source(false), false, 1e-12).value;
     let solves = Cell::new(0);
     let ask = |piece: usize, rel: f64, answer: Option<f64>| {
         v.piece_point_memo(piece, rel, || {
@@ -40,7 +40,7 @@ proptest! {
         let seed = [0.3, 0.9, 0.5, 0.7, 0.2, 0.8, 0.4, 0.6, 0.1, 0.95, 0.35, 0.75];
         let curve = crate::prepare::tests::star_curve(3, &seed, None);
         let prep = crate::prepare::tests::as_given(&curve);
-        let v = View::new(prep.source(false), false, 1e-12);
+        let v = View::new(prep.source(false), false, 1e-12).value;
         let (a, b) = curve.domain();
         for (k, order) in picks {
             let u = a + (b - a) * k as f64 / 600.0;

@@ -3,6 +3,8 @@
 //! antipodal system tried along the way.
 
 use crate::pairs::{negligible, polish_within, Pair};
+use numeric::certificate::Doubts;
+use numeric::solve::{End, Illinois};
 
 /// An antipodal pair found inside a section: its parameters on the two pieces.
 pub(crate) struct Found {
@@ -10,14 +12,19 @@ pub(crate) struct Found {
     pub(crate) t: f64,
 }
 
-/// §4.1: bisection on the sign of θ (regula falsi, Illinois variant, inside the bracket),
-/// with Newton's method on the antipodal system tried along the way: any pair inside the
-/// bracket will do (what lies beside it is searched on).
-pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
-    let (mut s0, mut t0, mut f0) = (p.sa, p.ta, theta_a);
-    let (mut s1, mut t1) = (p.sb, p.tb);
-    let mut f1 = p.sin_theta(s1, t1);
-    let mut side = 0i8;
+/// Steps of the search on θ at the most (the Illinois stepper's halvings close any bracket of
+/// doubles well within this; [`negligible`] or Newton usually stops it within a dozen).
+const MAX_STEPS: usize = 300;
+
+/// §4.1: regula falsi on the sign of θ (numeric's [`Illinois`] stepper, inside the bracket),
+/// with the opposite point `t` carried along with each end and Newton's method on the
+/// antipodal system tried along the way: any pair inside the bracket will do (what lies
+/// beside it is searched on). `doubts`: those of `T`'s view, where its opposite points' solves
+/// put theirs.
+pub(crate) fn bisect(p: &Pair, theta_a: f64, doubts: &mut Doubts) -> Option<Found> {
+    let (s0, t0, f0) = (p.sa, p.ta, theta_a);
+    let (s1, t1) = (p.sb, p.tb);
+    let f1 = p.sin_theta(s1, t1);
     // Newton on the antipodal system first, from the secant of θ with `t` following `s`
     // linearly (no opposite point solved): taken when it lands on a pair inside the bracket.
     // (Per run, 3–4 % fewer instructions on the curves with convexities m = 3, 4 and a wavy
@@ -27,69 +34,53 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64) -> Option<Found> {
     if let Some(found) = pair_within(p, guess, (s0, t0), (s1, t1)) {
         return Some(found);
     }
-    for i in 0..300 {
+    let mut solve = Illinois::new((s0, f0), (s1, f1));
+    // The opposite points of the two ends.
+    let mut t = [t0, t1];
+    for i in 0..MAX_STEPS {
+        let ((s0, _), (s1, _)) = solve.ends();
         // Down to the parameter tolerance, and on until the normal no longer turns across
         // the bracket (a stretch narrower than the tolerance may still turn it by a finite
         // angle).
         if negligible(p.vs, s0.min(s1), s0.max(s1)) {
             break;
         }
-        // Illinois step, with a plain halving every few steps to bound the worst case.
-        let mut sm = if i % 5 == 4 {
-            0.5 * (s0 + s1)
-        } else {
-            (s0 * f1 - s1 * f0) / (f1 - f0)
+        let Some(sm) = solve.next() else {
+            // Neighbouring floats: the bracket cannot shrink further.
+            break;
         };
-        if !(sm > s0.min(s1) && sm < s0.max(s1)) {
-            sm = 0.5 * (s0 + s1);
-            if !(sm > s0.min(s1) && sm < s0.max(s1)) {
-                // Neighbouring floats: the bracket cannot shrink further.
-                break;
-            }
-        }
         let tm = if (sm - s0).abs() <= (sm - s1).abs() {
-            p.opposite_from(sm, (s0, t0), (s1, t1))
+            p.opposite_following(sm, (s0, t[0]), (s1, t[1]), doubts)
         } else {
-            p.opposite_from(sm, (s1, t1), (s0, t0))
+            p.opposite_following(sm, (s1, t[1]), (s0, t[0]), doubts)
         };
         let fm = p.sin_theta(sm, tm);
         if fm == 0.0 {
             return Some(Found { s: sm, t: tm });
         }
-        if (fm < 0.0) == (f0 < 0.0) {
-            s0 = sm;
-            t0 = tm;
-            f0 = fm;
-            if side == -1 {
-                f1 *= 0.5;
-            }
-            side = -1;
-        } else {
-            s1 = sm;
-            t1 = tm;
-            f1 = fm;
-            if side == 1 {
-                f0 *= 0.5;
-            }
-            side = 1;
+        match solve.update(sm, fm) {
+            End::First => t[0] = tm,
+            End::Second => t[1] = tm,
         }
         // Newton on the antipodal system from the better end, accepted only when it lands
         // on a pair inside the current bracket (which then holds a pair for sure).
         if i % 2 == 0 {
+            let ((s0, f0), (s1, f1)) = solve.ends();
             let better = if f0.abs() < f1.abs() {
-                (s0, t0)
+                (s0, t[0])
             } else {
-                (s1, t1)
+                (s1, t[1])
             };
-            if let Some(found) = pair_within(p, better, (s0, t0), (s1, t1)) {
+            if let Some(found) = pair_within(p, better, (s0, t[0]), (s1, t[1])) {
                 return Some(found);
             }
         }
     }
+    let ((s0, f0), (s1, f1)) = solve.ends();
     let (s, t) = if f0.abs() < f1.abs() {
-        (s0, t0)
+        (s0, t[0])
     } else {
-        (s1, t1)
+        (s1, t[1])
     };
     Some(Found { s, t })
 }

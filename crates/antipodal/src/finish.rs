@@ -157,7 +157,7 @@ fn bracketed_ahead(
             } else {
                 p.sub(x, y, prev.0, prev.1)
             };
-            let f = bisect(&sub, sub.sin_theta(sub.sa, sub.ta))?;
+            let f = bisect(&sub, sub.sin_theta(sub.sa, sub.ta), doubts)?;
             return Some((f.s, f.t));
         }
         prev = (x, y);

@@ -86,7 +86,13 @@ fn march(
             // the tolerance its solves are made to) and the next one would lie behind.
             return match i {
                 0 => March::Nothing,
-                _ => overshot(p, (s - ds, t - dt), (s, t), start_negative, up),
+                _ => overshot(
+                    p,
+                    (s - ds, t - dt),
+                    (s, t),
+                    (start_negative, up),
+                    ledger.of(p.vt),
+                ),
             };
         };
         let nt = p.opposite_near_from(ns, t, t_far, t + dt * ratio, ledger.of(p.vt));
@@ -174,7 +180,13 @@ fn march(
 /// merely small (the curves nearly arcs of one circle) and the march crawls: the section's
 /// width settles the rest from `prev` on. (Every such point was taken for a pair: a slender
 /// elliptic lemniscate at a tolerance of 1e-6 had a "pair" every 1e-4 along its lobes.)
-fn overshot(p: &Pair, prev: (f64, f64), here: (f64, f64), start_negative: bool, up: bool) -> March {
+fn overshot(
+    p: &Pair,
+    prev: (f64, f64),
+    here: (f64, f64),
+    (start_negative, up): (bool, bool),
+    doubts: &mut Doubts,
+) -> March {
     let (s, t) = here;
     let th = p.sin_theta(s, t);
     if p.is_noise(s, t, th) {
@@ -191,7 +203,7 @@ fn overshot(p: &Pair, prev: (f64, f64), here: (f64, f64), start_negative: bool, 
     } else {
         p.sub(s, t, prev.0, prev.1)
     };
-    match bisect(&sub, sub.sin_theta(sub.sa, sub.ta)) {
+    match bisect(&sub, sub.sin_theta(sub.sa, sub.ta), doubts) {
         Some(f) => March::Found(f.s, f.t, up),
         None => March::Nothing,
     }
@@ -296,7 +308,7 @@ pub(crate) fn by_width(p: &Pair, out: &mut Vec<(f64, f64)>, ledger: &mut Ledger)
         if a == 0.0 {
             out.push((s0, t0));
         } else if (a < 0.0) != (b < 0.0) && b != 0.0 {
-            if let Some(f) = bisect(&sub, a) {
+            if let Some(f) = bisect(&sub, a, doubts) {
                 out.push((f.s, f.t));
             }
         }

@@ -115,14 +115,6 @@ impl<'a> Pair<'a> {
         self.opposite_near(s, a.1, b.1, hint, doubts)
     }
 
-    /// [`Pair::opposite_following`] for Bisect (`crate::bisect`), which is handed no doubts
-    /// yet: it is being moved onto `numeric::solve::bracketed` apart from this change. The
-    /// doubts its opposite points meet are not carried (issue 41: `bisect` is to take `T`'s
-    /// doubts and call [`Pair::opposite_following`]).
-    pub(crate) fn opposite_from(&self, s: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
-        self.opposite_following(s, a, b, &mut Doubts::none())
-    }
-
     /// [`Pair::opposite_within`] with Newton started at `hint`.
     pub(crate) fn opposite_near(
         &self,

@@ -46,7 +46,7 @@ pub(crate) fn antipodal_points<'a>(
         let tb = p.sin_theta(p.sb, p.tb);
         if (ta < 0.0) != (tb < 0.0) && ta != 0.0 && tb != 0.0 {
             // Bisect: one pair for sure; march on both remainders unless both are concave.
-            let Some(found) = bisect(&p, ta) else {
+            let Some(found) = bisect(&p, ta, ledger.of(p.vt)) else {
                 continue;
             };
             out.push((found.s, found.t));

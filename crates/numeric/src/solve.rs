@@ -6,6 +6,9 @@
 //! certified counters have isolated, a primitive of Jia's method on a monotone segment, a
 //! crossing of a zero set with a cell edge.
 
+mod illinois;
+pub use illinois::{End, Illinois};
+
 /// How far [`bracketed`] refines, and where it starts.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Accuracy {

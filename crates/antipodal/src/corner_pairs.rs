@@ -150,8 +150,9 @@ pub(crate) fn corner_pairs(
     out
 }
 
-/// A root of the foot-point function.
-struct Foot {
+/// A point of the curve whose normal line passes through the corner `q`: the foot of a
+/// perpendicular from `q` (a root of the foot-point function), not necessarily the nearest.
+struct Perpendicular {
     /// Its parameter (a cluster's middle).
     u: f64,
     /// One simple root, proven (or certification is off), not a cluster of roots.
@@ -162,7 +163,7 @@ struct Foot {
 /// passes through `q`). With `R = X − q w` the homogeneous difference, the numerator is
 /// `w (R · R′) − w′ |R|²` (`R · R′` for a polynomial curve); its coefficients carry their
 /// rounding bounds into the root isolation.
-fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Foot>> {
+fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Perpendicular>> {
     let pieces = c.exact_pieces();
     let hom = &pieces.hom;
     let rx = hom.weighted(&[1.0, 0.0, -q.x]);
@@ -199,13 +200,13 @@ fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Fo
             matches!(pos, Ok(None)) || matches!(neg, Ok(None))
         };
         if !proven && at_end && monotone() {
-            feet.push(Foot {
+            feet.push(Perpendicular {
                 u: if lo <= a { a } else { b },
                 separated: true,
             });
             continue;
         }
-        feet.push(Foot {
+        feet.push(Perpendicular {
             u: r.u,
             separated: (r.kind == RootKind::Simple && r.certified) || !opts.certify,
         });

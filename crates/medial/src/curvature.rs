@@ -3,27 +3,37 @@
 
 use curve::{Jet, ParamCurve, Profile};
 use numeric::rounding::Bounded;
+use numeric::solve::{bracketed_free, Accuracy};
 
-/// Halvings that find a curvature extremum between two points (to 2^-60 of their gap).
-const EXTREMUM_STEPS: usize = 60;
+/// The width a curvature extremum is found to, as a share of the gap between the points
+/// it lies between (2^-60, as many halvings once took): below the parameter's rounding
+/// for any gap, so the solve closes on neighbouring doubles.
+const EXTREMUM_WIDTH: f64 = 1.0 / (1u64 << 60) as f64;
 
 /// Steps of each segment's stretch of a window on which the curvature's rate is sampled
 /// for its changes from rising to falling: a cubic's curvature may have two maxima in one
 /// segment, with a minimum between.
 const PEAK_STEPS: usize = 8;
 
-/// Where `f` changes sign between `a` and `b` (of different signs), by halving.
-pub(crate) fn sign_change(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let fa = f(a).signum();
-    for _ in 0..EXTREMUM_STEPS {
-        let m = 0.5 * (a + b);
-        if f(m).signum() == fa {
-            a = m;
+/// Where `f` changes sign between `a` and `b` (of different signs; 0 counts as positive, as
+/// [`f64::signum`] has it, and NaN as the sign `b` has), by the derivative-free bracketed
+/// solve ([`bracketed_free`]) to [`EXTREMUM_WIDTH`] of the gap.
+pub(crate) fn sign_change(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    let at_a = f(a).signum();
+    // Turned so that `a`'s side is negative and the other side (NaN too) positive, never 0
+    // (a zero's side is its sign bit's).
+    let turned = |x: f64| {
+        let v = f(x);
+        let size = v.abs().max(f64::MIN_POSITIVE);
+        if v.signum() == at_a {
+            -size
         } else {
-            b = m;
+            size
         }
-    }
-    0.5 * (a + b)
+    };
+    let ends = (turned(a), turned(b));
+    let width = EXTREMUM_WIDTH * (b - a).abs();
+    bracketed_free(turned, (a, b), ends, Accuracy::param(width))
 }
 
 /// The peak of the curvature's magnitude inside `[a, b]` along `boundary` (on a closed

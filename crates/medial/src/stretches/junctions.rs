@@ -1,5 +1,5 @@
 //! Where a stretch ends inside its branch: bracketed by halving on the exact branch, then
-//! solved (regula falsi) for the tri-tangent disk that also touches the boundary point
+//! solved (the bracketed solve's derivative-free step) for the tri-tangent disk that also touches the boundary point
 //! entering beyond it; an exterior stretch ends on its clip box.
 
 use super::Branch;
@@ -7,6 +7,7 @@ use crate::candidates::Vertex;
 use crate::sites::Disk;
 use curve::ParamCurve;
 use numeric::rounding::ulps;
+use numeric::solve::Itp;
 
 /// Halvings that bracket where a stretch ends: to 2^-32 of a polyline step, which tells the
 /// site entering beyond it; the tri-tangent disk is then solved for on that site (halving on
@@ -25,8 +26,10 @@ const BACK_STEPS: usize = BRACKET_STEPS + 1;
 /// allow 16 per comparison).
 const DISTANCE_ULPS: f64 = 16.0;
 
-/// Secant steps that solve for the tri-tangent disk inside the bracket.
-const SECANT_STEPS: usize = 60;
+/// The width of the bracket (of the branch's parameter, in `[0, 1]` between two vertices)
+/// the tri-tangent disk is solved to: a few units of rounding, where the distances' own
+/// rounding decides the sign.
+const TRI_TANGENT_WIDTH: f64 = ulps(4.0);
 
 /// Further halvings that put the end of an exterior stretch on the box it is clipped to.
 const CLIP_STEPS: usize = 30;
@@ -223,25 +226,21 @@ impl Branch<'_, '_> {
         if !(outside(&best, fa) && fb < 0.0) {
             return None;
         }
-        for _ in 0..SECANT_STEPS {
-            // Regula falsi with the Illinois rule: the bracket always holds the root.
-            let s = (a * fb - b * fa) / (fb - fa);
-            if !(s > a && s < b) {
-                break;
-            }
+        // (Touching it within rounding, or exactly: that end is the junction.)
+        if fa <= 0.0 {
+            return Some(best);
+        }
+        // The derivative-free bracketed step (ITP), the end outside the disk kept: each step
+        // a point of the branch, which may not be found.
+        let mut solve = Itp::new((a, b), (fa, fb), TRI_TANGENT_WIDTH);
+        while solve.width() > TRI_TANGENT_WIDTH {
+            let Some(s) = solve.next() else { break };
             let Some(v) = at(s) else { break };
             let f = third(&v);
             if f >= 0.0 {
-                (a, fa) = (s, f);
                 best = v;
-                fb *= 0.5;
-            } else {
-                (b, fb) = (s, f);
-                fa *= 0.5;
             }
-            if b - a <= ulps(4.0) {
-                break;
-            }
+            solve.update(s, f);
         }
         Some(best)
     }

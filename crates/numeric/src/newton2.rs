@@ -4,7 +4,7 @@
 //! Each iteration linearises `F` at the iterate `x` (its value `F(x)` and Jacobian `J(x)`,
 //! from the caller) and solves `J δ = F` by Cramer's rule ([`newton_step`]); the next iterate
 //! is `x − δ`, or, with [`Newton2::halvings`], `x − δ/2ᵏ` for the least `k` that lowers the
-//! residual `‖F‖∞` (a damped step). The iterate need not be a point of the plane: the caller
+//! largest component of `F` (a damped step). The iterate need not be a point of the plane: the caller
 //! moves it by the step ([`newton2`]'s `advance`), so a parameter that wraps or changes chart
 //! (a foot passing a joint) is moved its own way.
 //!
@@ -16,7 +16,7 @@
 //! keeps the residual from growing.
 //!
 //! **Stopping rule.** The solve stops, in this order of tests per iteration:
-//! - *converged* where the residual test `‖F(x)‖∞ ≤ Newton2::residual` holds (0: never), or
+//! - *converged* where the residual test `‖F(x)‖ ≤ Newton2::residual` holds (Euclidean; 0: only at an exact zero), or
 //!   where the caller's `judge` says so after a step (its step test: typically the step is
 //!   down to the rounding level of the iterate or of `F`);
 //! - *singular* where `J` is singular to the tolerance [`Newton2::singular`]
@@ -27,19 +27,21 @@
 //!
 //! Every outcome carries the last iterate.
 
-use nalgebra::{Matrix2, Vector2};
+pub use nalgebra::{Matrix2, Vector2};
 
 /// The limits of one [`newton2`] solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Newton2 {
     /// The iteration bound: linearisations of `F` before the solve gives up.
     pub max_steps: usize,
-    /// The residual test: converged where `‖F(x)‖∞` is at most this (0: no residual test).
+    /// The residual test: converged where `‖F(x)‖` (Euclidean: a gap between two points is
+    /// tested as its length) is at most this (0: only an exact zero).
     pub residual: f64,
     /// `J` is singular where `|det J| ≤ singular · ‖J e₁‖₂ ‖J e₂‖₂` (0: only where `det J` is
     /// 0 or not finite).
     pub singular: f64,
-    /// Halvings of a step that does not lower `‖F‖∞` before it is taken anyway (0: the full
+    /// Halvings of a step that does not lower `‖F‖∞` (the largest component: each component's progress counts, where
+    /// the Euclidean norm's descent crawls while one of them is far from zero) before it is taken anyway (0: the full
     /// step, undamped).
     pub halvings: u32,
 }
@@ -166,7 +168,7 @@ pub fn newton2<X: Copy>(
                 linearize(&x)
             }
         };
-        let residual = value.amax();
+        let residual = value.norm();
         if residual <= limits.residual {
             return Outcome::Converged(x);
         }
@@ -181,7 +183,7 @@ pub fn newton2<X: Copy>(
             }
             steps += 1;
             let at_to = linearize(&to);
-            if at_to.0.amax() < residual {
+            if at_to.0.amax() < value.amax() {
                 known = Some(at_to);
                 break;
             }
@@ -203,7 +205,7 @@ pub fn newton2<X: Copy>(
         }
     }
     if let Some((value, _)) = known {
-        if value.amax() <= limits.residual {
+        if value.norm() <= limits.residual {
             return Outcome::Converged(x);
         }
     }

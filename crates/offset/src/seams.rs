@@ -6,6 +6,7 @@ use crate::necks::{self, Between, TOUCHING};
 use crate::walk::{incoming_segment, outgoing_segment, sided_feet, Foot, Walk};
 use curve::V2;
 use medial::{Edge, MedialAxis};
+use numeric::newton2::{newton2, Matrix2, Newton2, Outcome, StepVerdict, Vector2};
 use numeric::rounding::ulps;
 use std::f64::consts::TAU;
 
@@ -446,32 +447,39 @@ pub(crate) fn foot_point(walk: &Walk<'_>, foot: Foot) -> V2 {
     }
 }
 
-/// Newton's method on the two feet, so that their offset points coincide.
+/// Newton's method on the two feet, so that their offset points coincide (numeric's
+/// [`newton2`] on the gap between them, each foot moved its own way by [`moved`]).
 fn refine(
     walks: &[Walk<'_>],
     feet: [(usize, Foot); 2],
     d: f64,
     size: f64,
 ) -> ([(usize, Foot); 2], bool) {
-    let mut current = feet;
-    for _ in 0..SEAM_NEWTON_STEPS {
+    // [da −db] (δa, δb) = gap, and the feet move by −δ.
+    let linearize = |current: &[(usize, Foot); 2]| {
         let (qa, da) = walks[current[0].0].offset(current[0].1, d);
         let (qb, db) = walks[current[1].0].offset(current[1].1, d);
         let gap = qa - qb;
-        if gap.norm() <= SEAM_CLOSURE * size {
-            return (current, true);
-        }
-        // [da −db] (δa, δb) = −gap.
-        let det = -da.cross(db);
-        if det.abs() <= ulps(1.0) * da.norm() * db.norm() {
-            break;
-        }
-        let step_a = -(gap.x * -db.y - -db.x * gap.y) / det;
-        let step_b = -(da.x * gap.y - gap.x * da.y) / det;
-        current[0].1 = moved(&walks[current[0].0], current[0].1, step_a);
-        current[1].1 = moved(&walks[current[1].0], current[1].1, step_b);
+        (
+            Vector2::new(gap.x, gap.y),
+            Matrix2::new(da.x, -db.x, da.y, -db.y),
+        )
+    };
+    let advance = |current: &[(usize, Foot); 2], step: Vector2<f64>| {
+        let mut next = *current;
+        next[0].1 = moved(&walks[current[0].0], current[0].1, -step[0]);
+        next[1].1 = moved(&walks[current[1].0], current[1].1, -step[1]);
+        next
+    };
+    let limits = Newton2 {
+        residual: SEAM_CLOSURE * size,
+        singular: ulps(1.0),
+        ..Newton2::steps(SEAM_NEWTON_STEPS)
+    };
+    match newton2(feet, limits, linearize, advance, |_| StepVerdict::Continue) {
+        Outcome::Converged(found) => (found, true),
+        _ => (feet, false),
     }
-    (feet, false)
 }
 
 /// A foot moved by `step` in its variable. A foot leaving its segment goes on to the next one

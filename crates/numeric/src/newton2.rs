@@ -4,8 +4,8 @@
 //! Each iteration linearises `F` at the iterate `x` (its value `F(x)` and Jacobian `J(x)`,
 //! from the caller) and solves `J δ = F` by Cramer's rule ([`newton_step`]); the next iterate
 //! is `x − δ`, or, with [`Newton2::halvings`], `x − δ/2ᵏ` for the least `k` that lowers the
-//! largest component of `F` (a damped step). The iterate need not be a point of the plane: the caller
-//! moves it by the step ([`newton2`]'s `advance`), so a parameter that wraps or changes chart
+//! largest component of `F` (a damped step). The iterate need not be a point of the plane:
+//! the caller moves it by the step ([`newton2`]'s `advance`), so a parameter that wraps or changes chart
 //! (a foot passing a joint) is moved its own way.
 //!
 //! **Convergence.** Where `J` is regular at a simple root `x*` and Lipschitz near it, the

@@ -6,6 +6,7 @@ use crate::certificate::JUNCTION_ROOM;
 use crate::junction_proof::{proven_within, ClosedSite};
 use crate::true_sites::{SiteShape, TrueSite};
 use curve::V2;
+use numeric::newton2::{newton2, Iterate, Matrix2, Newton2, Outcome, StepVerdict, Vector2};
 use numeric::rounding::ulps;
 
 /// Newton steps that place a node: from a start ~2e-9 of the size off, the equations
@@ -62,20 +63,31 @@ impl LinesAndArcs<'_, '_> {
             });
         }
         let (e0, e1) = self.best_pair(equations, start)?;
-        let mut x = start;
-        for _ in 0..NODE_NEWTON_STEPS {
-            let ((f0, g0), (f1, g1)) = (self.equation(e0, x), self.equation(e1, x));
-            let det = g0.cross(g1);
-            if det == 0.0 || !det.is_finite() {
-                return None;
+        // Newton's method on the two equations (their values and gradients the rows), to
+        // a step at the coordinates' rounding; a singular Jacobian places no node, the
+        // iteration bound leaves the last iterate to the tests below.
+        let linearize = |x: &V2| {
+            let ((f0, g0), (f1, g1)) = (self.equation(e0, *x), self.equation(e1, *x));
+            (Vector2::new(f0, f1), Matrix2::new(g0.x, g0.y, g1.x, g1.y))
+        };
+        let advance = |x: &V2, step: Vector2<f64>| *x - V2::new(step[0], step[1]);
+        let judge = |it: &Iterate<V2>| {
+            if it.step.norm() <= ulps(4.0) * (it.to.norm() + size) {
+                StepVerdict::Converged
+            } else {
+                StepVerdict::Continue
             }
-            // (Cramer's rule on the 2 × 2 Jacobian.)
-            let step = V2::new(f0 * g1.y - f1 * g0.y, g0.x * f1 - g1.x * f0) * (1.0 / det);
-            x = x - step;
-            if step.norm() <= ulps(4.0) * (x.norm() + size) {
-                break;
-            }
-        }
+        };
+        let x = match newton2(
+            start,
+            Newton2::steps(NODE_NEWTON_STEPS),
+            linearize,
+            advance,
+            judge,
+        ) {
+            Outcome::Converged(x) | Outcome::Exhausted(x) | Outcome::Abandoned(x) => x,
+            Outcome::Singular(_) => return None,
+        };
         let moved = (x - start).norm();
         if moved.is_nan() || moved > reach {
             return None;

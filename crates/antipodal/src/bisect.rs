@@ -14,7 +14,7 @@ pub(crate) struct Found {
 
 /// Steps of the search on θ at the most (the Illinois stepper's halvings close any bracket of
 /// doubles well within this; [`negligible`] or Newton usually stops it within a dozen).
-const MAX_STEPS: usize = 300;
+const BISECT_STEPS: usize = 300;
 
 /// §4.1: regula falsi on the sign of θ (numeric's [`Illinois`] stepper, inside the bracket),
 /// with the opposite point `t` carried along with each end and Newton's method on the
@@ -37,7 +37,7 @@ pub(crate) fn bisect(p: &Pair, theta_a: f64, doubts: &mut Doubts) -> Option<Foun
     let mut solve = Illinois::new((s0, f0), (s1, f1));
     // The opposite points of the two ends.
     let mut t = [t0, t1];
-    for i in 0..MAX_STEPS {
+    for i in 0..BISECT_STEPS {
         let ((s0, _), (s1, _)) = solve.ends();
         // Down to the parameter tolerance, and on until the normal no longer turns across
         // the bracket (a stretch narrower than the tolerance may still turn it by a finite

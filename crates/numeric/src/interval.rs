@@ -25,6 +25,16 @@ impl Interval {
         Self { lo, hi }
     }
 
+    /// `hi − lo`.
+    pub fn width(self) -> f64 {
+        self.hi - self.lo
+    }
+
+    /// The midpoint, `(lo + hi) / 2`.
+    pub fn mid(self) -> f64 {
+        0.5 * (self.lo + self.hi)
+    }
+
     /// The interval widened by a relative `margin` of its magnitude: room for the rounding
     /// of the coefficients it was read from and of the operations that combine it.
     pub fn widened(self, margin: f64) -> Self {

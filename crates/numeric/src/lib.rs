@@ -4,8 +4,9 @@
 //! - [`rounding`]: the one rounding model. Every bound on a computed value's error is written
 //!   with [`rounding::gamma`], [`rounding::ulps`] or [`rounding::Bounded`], never with a bare
 //!   `f64::EPSILON`.
-//! - [`solve`]: the one bracketed 1-D solver, [`solve::bracketed`], with its explicit
-//!   [`solve::Accuracy`].
+//! - [`solve`]: the bracketed 1-D solvers: [`solve::bracketed`] (Newton or Halley,
+//!   safeguarded by bisection, with its explicit [`solve::Accuracy`]), and for functions
+//!   without a derivative the steppers [`solve::Itp`] and [`solve::Illinois`].
 //! - [`newton2`]: the one two-dimensional Newton's method, [`newton2::newton2`], on
 //!   `nalgebra`'s fixed-size matrices, with its damped step, residual test and iteration bound.
 //! - [`minimize`]: the one bracketed minimisation, [`minimize::minimize`] (parabolic steps
@@ -15,7 +16,8 @@
 //! - [`certificate`]: certificates as values, [`certificate::Doubt`] (every reason a result
 //!   may not be certified, listed once) and [`certificate::Certified`].
 //! - [`Interval`]: closed intervals and the interval arithmetic the proofs combine ranges
-//!   with.
+//!   with; [`Rect`]: closed rectangles `t × r` of a parameter plane (the bivariate searches'
+//!   cells, domains and hulls).
 //!
 //! ```
 //! use numeric::solve::{bracketed, Accuracy};
@@ -29,8 +31,10 @@ pub mod certificate;
 mod interval;
 pub mod minimize;
 pub mod newton2;
+mod rect;
 pub mod rounding;
 pub mod solve;
 pub mod tolerance;
 
 pub use interval::Interval;
+pub use rect::Rect;

@@ -14,6 +14,7 @@ use crate::extract::Pieces;
 use crate::patch::Patch;
 use clusters::{cluster_leaves, grown, no_critical_point, LeafIndex};
 use links::{arm_direction, pair_closest, walk, Link};
+use numeric::Rect;
 use std::collections::HashMap;
 
 /// Polylines in `(t, r)` and the special points, before any mapping.
@@ -32,11 +33,11 @@ type LineKey = (u8, u64);
 type LineEnd = (f64, u8, usize, f64);
 
 /// Domain box `[t0, t1, r0, r1]`.
-pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assembled {
+pub(crate) fn assemble(pieces: &Pieces, dom: Rect, cells: &[Patch]) -> Assembled {
     let arcs = &pieces.arcs;
     let n_ends = 2 * arcs.len();
     let mut link = vec![Link::Free; n_ends];
-    let ext = [dom[1] - dom[0], dom[3] - dom[2]];
+    let ext = [dom.t.width(), dom.r.width()];
     let cl = cluster_leaves(&pieces.leaves, ext, cells);
     let (cluster_of, n_clusters) = (&cl.of, cl.n);
     let mut attached: Vec<Vec<usize>> = vec![Vec::new(); n_clusters];
@@ -60,9 +61,9 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
                 _ => (0, e.p[1], 1),
             };
             let on_border = if axis == 0 {
-                e.line == dom[0] || e.line == dom[1]
+                e.line == dom.t.lo || e.line == dom.t.hi
             } else {
-                e.line == dom[2] || e.line == dom[3]
+                e.line == dom.r.lo || e.line == dom.r.hi
             };
             if !on_border {
                 lines.entry((axis, e.line.to_bits())).or_default().push((
@@ -147,9 +148,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
         // Not at a corner in a cluster's hull: there the flat region, not rounding at one
         // corner, makes the roots uncertain (a self-bisector's knot corner on the diagonal,
         // where F is flat to fourth order), and the ends go to the cluster.
-        let in_hull = |h: &[f64; 4]| {
-            corner[0] >= h[0] && corner[0] <= h[1] && corner[1] >= h[2] && corner[1] <= h[3]
-        };
+        let in_hull = |h: &Rect| h.contains(corner);
         if hull.iter().any(in_hull) {
             return None;
         }
@@ -161,9 +160,9 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
         let p = end_of(id).p;
         let mut best: Option<(f64, usize)> = None;
         for (c, h) in hull.iter().enumerate() {
-            let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
-            let dt = (h[0] - p[0]).max(p[0] - h[1]).max(0.0) / wt.max(f64::MIN_POSITIVE);
-            let dr = (h[2] - p[1]).max(p[1] - h[3]).max(0.0) / wr.max(f64::MIN_POSITIVE);
+            let [wt, wr] = h.widths();
+            let dt = (h.t.lo - p[0]).max(p[0] - h.t.hi).max(0.0) / wt.max(f64::MIN_POSITIVE);
+            let dr = (h.r.lo - p[1]).max(p[1] - h.r.hi).max(0.0) / wr.max(f64::MIN_POSITIVE);
             let d = dt.max(dr);
             if d <= 1.0 && best.is_none_or(|b| d < b.0) {
                 best = Some((d, c));
@@ -188,7 +187,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     let mut dropped = vec![false; arcs.len()];
     for c in 0..n_clusters {
         let g = grown(hull[c]);
-        let near = |q: &[f64; 2]| q[0] >= g[0] && q[0] <= g[1] && q[1] >= g[2] && q[1] <= g[3];
+        let near = |q: &[f64; 2]| g.contains(*q);
         let inside: Vec<usize> = (0..arcs.len())
             .filter(|&i| !dropped[i] && near(&arcs[i].ends[0].p) && near(&arcs[i].ends[1].p))
             .filter(|&i| arcs[i].pts.iter().all(near))
@@ -291,7 +290,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     // zero set passing within rounding of its corner (through the corner itself, traced by
     // the patches on either side) and cut the corner with a duplicate of it.
     let on_dom_border =
-        |q: [f64; 2]| q[0] == dom[0] || q[0] == dom[1] || q[1] == dom[2] || q[1] == dom[3];
+        |q: [f64; 2]| q[0] == dom.t.lo || q[0] == dom.t.hi || q[1] == dom.r.lo || q[1] == dom.r.hi;
     for (i, a) in arcs.iter().enumerate() {
         let loose = |e: usize| link[e] == Link::Free && !on_dom_border(end_of(e).p);
         if dropped[i] || !loose(2 * i) || !loose(2 * i + 1) {
@@ -315,18 +314,16 @@ pub(crate) fn assemble(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Assem
     // border nor at a singular point) is rounding debris: a patch that saw the zero set
     // passing within rounding of its corner traced a duplicate of a few ulps of it.
     let on_border =
-        |q: &[f64; 2]| q[0] == dom[0] || q[0] == dom[1] || q[1] == dom[2] || q[1] == dom[3];
+        |q: &[f64; 2]| q[0] == dom.t.lo || q[0] == dom.t.hi || q[1] == dom.r.lo || q[1] == dom.r.hi;
     let at_node = |q: &[f64; 2]| out.singular.contains(q);
     out.lines.retain(|(pts, closed)| {
         let (Some(a), Some(b)) = (pts.first(), pts.last()) else {
             return false;
         };
         // Nor does a piece that never leaves the neighbourhood of a cluster (see above).
-        let within = |h: &[f64; 4]| {
-            let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
-            pts.iter().all(|q| {
-                q[0] >= h[0] - wt && q[0] <= h[1] + wt && q[1] >= h[2] - wr && q[1] <= h[3] + wr
-            })
+        let within = |h: &Rect| {
+            let g = grown(*h);
+            pts.iter().all(|q| g.contains(*q))
         };
         if hull.iter().any(within) {
             return false;

@@ -30,6 +30,7 @@ use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
 use bspline::Rational;
 use curve::Frame;
 use jets::Jets;
+use numeric::Rect;
 use point::bbox;
 pub(crate) use point::{bbox_of_points, chord_size};
 use sides::SideFilter;
@@ -139,7 +140,7 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         .filter(|p| !s1.on_one_line([p.t0, p.t1], &s2, [p.r0, p.r1]))
         .collect();
     let (dt, dr) = (f.domain_t(), f.domain_r());
-    let dom = [dt.0, dt.1, dr.0, dr.1];
+    let dom = Rect::of(dt, dr);
     let map = |t: f64, r: f64| ctx.map(t, r);
     let pieces = [ctx.jets1.pieces(), ctx.jets2.pieces()];
     let sides = opts
@@ -266,7 +267,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
         cells.push(p);
     }
     let (dt, dr) = (f.domain_t(), f.domain_r());
-    let dom = [dt.0, dt.1, dr.0, dr.1];
+    let dom = Rect::of(dt, dr);
     let map = |t: f64, r: f64| ctx.map(t, r);
     let pieces = [ctx.jets1.pieces(), ctx.jets1.pieces()];
     let sides = opts.sides.and_then(|s| SideFilter::new([c, c], pieces, s));
@@ -274,7 +275,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     // Cells touching the diagonal at a corner (t1 = r0), and for a closed curve the cell at
     // the corner (start, end) — the diagonal across the seam: F vanishes to fourth order at
     // that corner (see `lax` in the tracer).
-    let lax = |p: &Patch| p.t1 == p.r0 || (p.t0 == dom[0] && p.r1 == dom[3]);
+    let lax = |p: &Patch| p.t1 == p.r0 || (p.t0 == dom.t.lo && p.r1 == dom.r.hi);
     let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &keep, &lax);
     Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
 }

@@ -14,6 +14,7 @@ use crate::patch::{common_sign, tsign, variations, vsign, Patch};
 use crate::solve1::{bracketed_from, bracketed_or_end};
 use curve::distance_to_segment;
 use numeric::rounding::UNIT_ROUNDOFF;
+use numeric::Rect;
 
 /// Where an arc ends: on a patch edge.
 #[derive(Debug, Clone, Copy)]
@@ -41,7 +42,7 @@ pub(crate) struct Arc {
 /// A patch left unresolved at the size tolerance.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Leaf {
-    pub(crate) bx: [f64; 4],
+    pub(crate) bx: Rect,
     /// Centre and `|F|` there.
     pub(crate) center: [f64; 2],
     pub(crate) fabs: f64,
@@ -56,7 +57,7 @@ pub(crate) struct Tracer<'a> {
     /// Domain extents, to compare patch sizes in both directions.
     pub(crate) extent: [f64; 2],
     /// The domain `[t0, t1, r0, r1]`.
-    pub(crate) dom: [f64; 4],
+    pub(crate) dom: Rect,
     pub(crate) max_depth: usize,
     pub(crate) max_patches: usize,
     /// Maps `(t, r)` to the space where chords are measured (`None`: far away, do not refine).
@@ -145,7 +146,7 @@ impl Tracer<'_> {
                         if small || flat || depth >= self.max_depth {
                             let c = [0.5 * (p.t0 + p.t1), 0.5 * (p.r0 + p.r1)];
                             out.leaves.push(Leaf {
-                                bx: [p.t0, p.t1, p.r0, p.r1],
+                                bx: p.rect(),
                                 center: c,
                                 fabs: cell.eval(c[0], c[1]).abs(),
                                 cell: ci,
@@ -191,10 +192,10 @@ impl Tracer<'_> {
         if strict {
             let unsure = |e: usize| {
                 let on_border = match e {
-                    0 => p.r0 == self.dom[2],
-                    1 => p.t1 == self.dom[1],
-                    2 => p.r1 == self.dom[3],
-                    _ => p.t0 == self.dom[0],
+                    0 => p.r0 == self.dom.r.lo,
+                    1 => p.t1 == self.dom.t.hi,
+                    2 => p.r1 == self.dom.r.hi,
+                    _ => p.t0 == self.dom.t.lo,
                 };
                 let c = p.edge(e);
                 !on_border && c[1..c.len() - 1].iter().any(|&x| tsign(x, err) == 0)

@@ -6,6 +6,7 @@
 
 use bspline::tensor::BezierPatch;
 use numeric::rounding::UNIT_ROUNDOFF;
+use numeric::Rect;
 
 /// A tensor Bernstein polynomial on `[t0, t1] × [r0, r1]`, row-major (`c[i * (pr + 1) + j]`).
 #[derive(Debug, Clone)]
@@ -166,12 +167,17 @@ impl Patch {
             .flat_map(move |i| (0..self.pr).map(move |j| self.c[i * w + j + 1] - self.c[i * w + j]))
     }
 
+    /// The patch's box.
+    pub(crate) fn rect(&self) -> Rect {
+        Rect::of((self.t0, self.t1), (self.r0, self.r1))
+    }
+
     /// The same polynomial on the part of the patch's box inside `bx` (`None` when they do
     /// not overlap). The new ends come from de Casteljau splits, so they may differ from
     /// those of `bx` by rounding.
-    pub(crate) fn restrict(&self, bx: [f64; 4]) -> Option<Patch> {
-        let (a, b) = (bx[0].max(self.t0), bx[1].min(self.t1));
-        let (c, d) = (bx[2].max(self.r0), bx[3].min(self.r1));
+    pub(crate) fn restrict(&self, bx: Rect) -> Option<Patch> {
+        let (a, b) = (bx.t.lo.max(self.t0), bx.t.hi.min(self.t1));
+        let (c, d) = (bx.r.lo.max(self.r0), bx.r.hi.min(self.r1));
         if !(a <= b && c <= d) {
             return None;
         }
@@ -195,7 +201,7 @@ impl Patch {
     /// part of the patch's box inside `bx`: `+1` or `−1` when all its Bernstein coefficients
     /// there have that sign beyond their rounding bound, else 0. `err` bounds the error of
     /// this patch's coefficients. `None` when the boxes do not overlap.
-    pub(crate) fn partial_sign(&self, k: usize, bx: [f64; 4], err: f64) -> Option<i8> {
+    pub(crate) fn partial_sign(&self, k: usize, bx: Rect, err: f64) -> Option<i8> {
         let deg = if k == 0 { self.pt } else { self.pr };
         if deg == 0 {
             // Constant in that direction: the partial vanishes.
@@ -481,18 +487,41 @@ mod tests {
         let f = |t: f64, r: f64| (t - 0.3) * (r - 0.6) + 0.1 * t * t;
         let p = sample();
         let err = 1e-15;
-        let q = p.restrict([0.5, 0.6, 0.7, 0.8]).expect("overlap");
+        let q = p
+            .restrict(Rect::of((0.5, 0.6), (0.7, 0.8)))
+            .expect("overlap");
         testkit::assert_near!(q.eval(0.55, 0.75), f(0.55, 0.75), 1e-14);
         assert!((q.t0 - 0.5).abs() < 1e-15 && (q.r1 - 0.8).abs() < 1e-15);
-        assert_eq!(p.partial_sign(0, [0.5, 0.6, 0.7, 0.8], err), Some(1));
-        assert_eq!(p.partial_sign(1, [0.5, 0.6, 0.7, 0.8], err), Some(1));
-        assert_eq!(p.partial_sign(1, [0.0, 0.1, 0.7, 0.8], err), Some(-1));
+        assert_eq!(
+            p.partial_sign(0, Rect::of((0.5, 0.6), (0.7, 0.8)), err),
+            Some(1)
+        );
+        assert_eq!(
+            p.partial_sign(1, Rect::of((0.5, 0.6), (0.7, 0.8)), err),
+            Some(1)
+        );
+        assert_eq!(
+            p.partial_sign(1, Rect::of((0.0, 0.1), (0.7, 0.8)), err),
+            Some(-1)
+        );
         // ∂F/∂t vanishes on r = 0.6 − 0.2 t, ∂F/∂r on t = 0.3: no trusted sign across them.
-        assert_eq!(p.partial_sign(0, [0.0, 1.0, 0.4, 0.6], err), Some(0));
-        assert_eq!(p.partial_sign(1, [0.2, 0.4, 0.0, 1.0], err), Some(0));
+        assert_eq!(
+            p.partial_sign(0, Rect::of((0.0, 1.0), (0.4, 0.6)), err),
+            Some(0)
+        );
+        assert_eq!(
+            p.partial_sign(1, Rect::of((0.2, 0.4), (0.0, 1.0)), err),
+            Some(0)
+        );
         // Partly outside the patch: the part inside counts; wholly outside: nothing.
-        assert_eq!(p.partial_sign(0, [0.5, 1.5, 0.7, 1.5], err), Some(1));
-        assert_eq!(p.partial_sign(0, [1.5, 2.0, 0.0, 1.0], err), None);
+        assert_eq!(
+            p.partial_sign(0, Rect::of((0.5, 1.5), (0.7, 1.5)), err),
+            Some(1)
+        );
+        assert_eq!(
+            p.partial_sign(0, Rect::of((1.5, 2.0), (0.0, 1.0)), err),
+            None
+        );
     }
 
     #[test]

@@ -14,6 +14,7 @@ use bspline::tensor::TensorBSpline;
 use nalgebra::{Matrix2, Vector2};
 use numeric::newton2::{newton2, Iterate, Newton2, StepVerdict};
 use numeric::rounding::{ulps, UNIT_ROUNDOFF};
+use numeric::Rect;
 use serde::{Deserialize, Serialize};
 
 /// Options for [`solve_system`].
@@ -91,7 +92,7 @@ pub fn solve_system(
             {
                 continue;
             }
-            let bx = [pf.t0, pf.t1, pf.r0, pf.r1];
+            let bx = pf.rect();
             if unique(&pf, &pg) {
                 if let Some((t, r)) = newton(cf, cg, bx, noise) {
                     sols.push(Solution {
@@ -102,20 +103,11 @@ pub fn solve_system(
                     continue;
                 }
             }
-            let small = bx[1] - bx[0] <= min[0] && bx[3] - bx[2] <= min[1];
+            let [wt, wr] = bx.widths();
+            let small = wt <= min[0] && wr <= min[1];
             if small || depth >= max_depth {
-                let (t, r) = newton(
-                    cf,
-                    cg,
-                    [
-                        bx[0] - min[0],
-                        bx[1] + min[0],
-                        bx[2] - min[1],
-                        bx[3] + min[1],
-                    ],
-                    noise,
-                )
-                .unwrap_or((0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3])));
+                let [mt, mr] = bx.mid();
+                let (t, r) = newton(cf, cg, bx.grown(min), noise).unwrap_or((mt, mr));
                 sols.push(Solution {
                     t,
                     r,
@@ -123,7 +115,7 @@ pub fn solve_system(
                 });
                 continue;
             }
-            let split_t = (bx[1] - bx[0]) / ext[0] >= (bx[3] - bx[2]) / ext[1];
+            let split_t = wt / ext[0] >= wr / ext[1];
             let s = 0.498_763_4;
             let ((fa, fb), (ga, gb)) = if split_t {
                 (pf.split_t(s), pg.split_t(s))
@@ -202,10 +194,10 @@ const SYSTEM_NEWTON_STEPS: usize = 60;
 /// test alone cannot be met near `t = 0` or `r = 0`, where an ulp is far below the error the
 /// values carry, nor at a shallow crossing, where `J⁻¹` magnifies that error. The converged
 /// iterate may lie that far outside the box (a root on its border, met from both sides).
-fn newton(f: &Patch, g: &Patch, bx: [f64; 4], noise: [f64; 2]) -> Option<(f64, f64)> {
-    let start = Vector2::new(0.5 * (bx[0] + bx[1]), 0.5 * (bx[2] + bx[3]));
+fn newton(f: &Patch, g: &Patch, bx: Rect, noise: [f64; 2]) -> Option<(f64, f64)> {
+    let start = Vector2::new(bx.t.mid(), bx.r.mid());
     let inside = |x: &Vector2<f64>, st: f64, sr: f64| {
-        x[0] >= bx[0] - st && x[0] <= bx[1] + st && x[1] >= bx[2] - sr && x[1] <= bx[3] + sr
+        x[0] >= bx.t.lo - st && x[0] <= bx.t.hi + st && x[1] >= bx.r.lo - sr && x[1] <= bx.r.hi + sr
     };
     let linearize = |x: &Vector2<f64>| {
         let (a, b) = (f.eval_grad(x[0], x[1]), g.eval_grad(x[0], x[1]));
@@ -220,8 +212,8 @@ fn newton(f: &Patch, g: &Patch, bx: [f64; 4], noise: [f64; 2]) -> Option<(f64, f
         // What errors of `noise` in the values move the step by.
         let nt = (noise[0] * j[(1, 1)].abs() + noise[1] * j[(0, 1)].abs()) / det;
         let nr = (noise[0] * j[(1, 0)].abs() + noise[1] * j[(0, 0)].abs()) / det;
-        let small = d[0].abs() <= ulps(4.0) * x[0].abs().max(bx[1] - bx[0]) + nt
-            && d[1].abs() <= ulps(4.0) * x[1].abs().max(bx[3] - bx[2]) + nr;
+        let small = d[0].abs() <= ulps(4.0) * x[0].abs().max(bx.t.width()) + nt
+            && d[1].abs() <= ulps(4.0) * x[1].abs().max(bx.r.width()) + nr;
         if small && inside(&x, nt, nr) {
             StepVerdict::Converged
         } else if !inside(&x, 0.0, 0.0) {

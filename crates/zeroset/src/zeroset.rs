@@ -6,6 +6,7 @@ use crate::extract::{Pieces, Tracer};
 use crate::patch::Patch;
 use bspline::tensor::TensorBSpline;
 use numeric::tolerance::check_pair;
+use numeric::Rect;
 use serde::{Deserialize, Serialize};
 
 /// The default parameter tolerance (relative to the domain) of [`ZeroSetOptions`],
@@ -120,7 +121,7 @@ pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
     opts.check()?;
     let cells: Vec<Patch> = f.bezier_patches().iter().map(Patch::from_bezier).collect();
     let (dt, dr) = (f.domain_t(), f.domain_r());
-    let dom = [dt.0, dt.1, dr.0, dr.1];
+    let dom = Rect::of(dt, dr);
     let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
     let map = |t: f64, r: f64| Some([t, r]);
     let keep = |_: &Patch| true;
@@ -140,14 +141,14 @@ pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
 /// bisector, which measures chords in the plane and may skip half of a square domain).
 pub(crate) fn run_cells(
     cells: &[Patch],
-    dom: [f64; 4],
+    dom: Rect,
     opts: &ZeroSetOptions,
     map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
     chord_abs: f64,
     keep: &dyn Fn(&Patch) -> bool,
     lax: &dyn Fn(&Patch) -> bool,
 ) -> Pieces {
-    let extent = [dom[1] - dom[0], dom[3] - dom[2]];
+    let extent = [dom.t.width(), dom.r.width()];
     let tracer = Tracer {
         min_size: [opts.tol * extent[0], opts.tol * extent[1]],
         extent,
@@ -164,7 +165,7 @@ pub(crate) fn run_cells(
     pieces
 }
 
-pub(crate) fn finish(pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> ZeroSet {
+pub(crate) fn finish(pieces: &Pieces, dom: Rect, cells: &[Patch]) -> ZeroSet {
     let a = assemble(pieces, dom, cells);
     ZeroSet {
         branches: a

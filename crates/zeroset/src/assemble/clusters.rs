@@ -7,6 +7,7 @@ use crate::patch::Patch;
 use nalgebra::{Matrix2, Vector2};
 use numeric::newton2::{newton2, Iterate, Newton2, Outcome, StepVerdict};
 use numeric::rounding::UNIT_ROUNDOFF;
+use numeric::Rect;
 
 /// Leaf boxes closer than this fraction of the domain count as touching: neighbours in the
 /// subdivision meet exactly (split values are shared bit for bit), and leaves this close are
@@ -39,9 +40,9 @@ pub(super) struct LeafIndex<'a> {
 impl<'a> LeafIndex<'a> {
     pub(super) fn new(leaves: &'a [Leaf], ext: [f64; 2]) -> Self {
         let mut order: Vec<usize> = (0..leaves.len()).collect();
-        order.sort_by(|&a, &b| leaves[a].bx[0].total_cmp(&leaves[b].bx[0]));
-        let t0s = order.iter().map(|&k| leaves[k].bx[0]).collect();
-        let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx[1] - l.bx[0]));
+        order.sort_by(|&a, &b| leaves[a].bx.t.lo.total_cmp(&leaves[b].bx.t.lo));
+        let t0s = order.iter().map(|&k| leaves[k].bx.t.lo).collect();
+        let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx.t.width()));
         Self {
             leaves,
             order,
@@ -60,17 +61,13 @@ impl<'a> LeafIndex<'a> {
         self.order[lo..hi].iter().copied().find(|&k| {
             let b = self.leaves[k].bx;
             let (along, lim) = match e.edge {
-                0 => (p[0], b[3] == e.line),
-                2 => (p[0], b[2] == e.line),
-                1 => (p[1], b[0] == e.line),
-                _ => (p[1], b[1] == e.line),
+                0 => (p[0], b.r.hi == e.line),
+                2 => (p[0], b.r.lo == e.line),
+                1 => (p[1], b.t.lo == e.line),
+                _ => (p[1], b.t.hi == e.line),
             };
-            let range = if e.edge.is_multiple_of(2) {
-                [b[0], b[1]]
-            } else {
-                [b[2], b[3]]
-            };
-            lim && along >= range[0] && along <= range[1]
+            let range = if e.edge.is_multiple_of(2) { b.t } else { b.r };
+            lim && along >= range.lo && along <= range.hi
         })
     }
 
@@ -80,17 +77,16 @@ impl<'a> LeafIndex<'a> {
         // Candidates: t0 in [p − max_w − slack, p + slack].
         let lo = self.t0s.partition_point(|&x| x < p[0] - self.max_w - s[0]);
         let hi = self.t0s.partition_point(|&x| x <= p[0] + s[0]);
-        self.order[lo..hi].iter().copied().find(|&k| {
-            let b = self.leaves[k].bx;
-            p[0] >= b[0] - s[0] && p[0] <= b[1] + s[0] && p[1] >= b[2] - s[1] && p[1] <= b[3] + s[1]
-        })
+        self.order[lo..hi]
+            .iter()
+            .copied()
+            .find(|&k| self.leaves[k].bx.grown(s).contains(p))
     }
 }
 
 /// A hull grown by its own size on every side: the neighbourhood of a cluster.
-pub(super) fn grown(h: [f64; 4]) -> [f64; 4] {
-    let (wt, wr) = (h[1] - h[0], h[3] - h[2]);
-    [h[0] - wt, h[1] + wt, h[2] - wr, h[3] + wr]
+pub(super) fn grown(h: Rect) -> Rect {
+    h.grown(h.widths())
 }
 
 /// Whether one partial derivative of `F` has one trusted sign on all of the box `g`: then `F`
@@ -103,7 +99,7 @@ pub(super) fn grown(h: [f64; 4]) -> [f64; 4] {
 /// along each arm (where `F` is the product of the distances to the lines, narrowing as
 /// `1/distance` from the crossing), and a column of leaves inside such a band, just beside the
 /// arm, holds no zero at all while `∇F` there is far above its rounding level.
-pub(super) fn no_critical_point(cells: &[Patch], g: [f64; 4], at: [f64; 2]) -> bool {
+pub(super) fn no_critical_point(cells: &[Patch], g: Rect, at: [f64; 2]) -> bool {
     let err = |cell: &Patch| 4.0 * (cell.pt + cell.pr + 2) as f64 * UNIT_ROUNDOFF * cell.max_abs();
     // The partial at `at` (a point of `g`) is within the range of the coefficients the proof
     // needs above `2 err`; where it is not even above `err` (the evaluation's own error is
@@ -142,12 +138,12 @@ const CRITICAL_NEWTON_STEPS: usize = 30;
 /// differences of the exact gradient; `None` if it leaves the (doubled) box. (At a degenerate
 /// critical point, where F vanishes to higher order, it only creeps; the last iterate is
 /// returned.)
-fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
+fn critical_point(cell: &Patch, x: [f64; 2], bx: Rect) -> Option<[f64; 2]> {
     let (wt, wr) = (
-        (bx[1] - bx[0]).max(TINY_WIDTH),
-        (bx[3] - bx[2]).max(TINY_WIDTH),
+        (bx.t.width()).max(TINY_WIDTH),
+        (bx.r.width()).max(TINY_WIDTH),
     );
-    let lim = [bx[0] - wt, bx[1] + wt, bx[2] - wr, bx[3] + wr];
+    let lim = bx.grown([wt, wr]);
     let (ht, hr) = (
         HESSIAN_STEP * (cell.t1 - cell.t0),
         HESSIAN_STEP * (cell.r1 - cell.r0),
@@ -170,7 +166,7 @@ fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
     };
     let judge = |step: &Iterate<Vector2<f64>>| {
         let (p, d) = (step.to, step.step);
-        if !(p[0] >= lim[0] && p[0] <= lim[1] && p[1] >= lim[2] && p[1] <= lim[3]) {
+        if !lim.contains([p[0], p[1]]) {
             StepVerdict::Abandon
         } else if d[0].abs() <= CRITICAL_STEP * (cell.t1 - cell.t0)
             && d[1].abs() <= CRITICAL_STEP * (cell.r1 - cell.r0)
@@ -192,7 +188,7 @@ fn critical_point(cell: &Patch, x: [f64; 2], bx: [f64; 4]) -> Option<[f64; 2]> {
 pub(super) struct Clusters {
     pub(super) of: Vec<usize>,
     pub(super) n: usize,
-    pub(super) hull: Vec<[f64; 4]>,
+    pub(super) hull: Vec<Rect>,
     pub(super) node: Vec<[f64; 2]>,
 }
 
@@ -217,20 +213,20 @@ pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) ->
         i
     }
     let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| leaves[a].bx[0].total_cmp(&leaves[b].bx[0]));
+    order.sort_by(|&a, &b| leaves[a].bx.t.lo.total_cmp(&leaves[b].bx.t.lo));
     let slack = [TOUCH * ext[0], TOUCH * ext[1]];
-    let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx[1] - l.bx[0]));
+    let max_w = leaves.iter().fold(0.0f64, |m, l| m.max(l.bx.t.width()));
     for (ia, &a) in order.iter().enumerate() {
         let la = leaves[a].bx;
         for &b in &order[ia + 1..] {
             let lb = leaves[b].bx;
-            if lb[0] > la[1] + slack[0] + max_w {
+            if lb.t.lo > la.t.hi + slack[0] + max_w {
                 break;
             }
-            let touch = lb[0] <= la[1] + slack[0]
-                && la[0] <= lb[1] + slack[0]
-                && lb[2] <= la[3] + slack[1]
-                && la[2] <= lb[3] + slack[1];
+            let touch = lb.t.lo <= la.t.hi + slack[0]
+                && la.t.lo <= lb.t.hi + slack[0]
+                && lb.r.lo <= la.r.hi + slack[1]
+                && la.r.lo <= lb.r.hi + slack[1];
             if touch {
                 let (x, y) = (find(&mut parent, a), find(&mut parent, b));
                 parent[x] = y;
@@ -238,15 +234,12 @@ pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) ->
         }
     }
     // Per root: hull, best leaf, node.
-    let mut hull: Vec<Option<[f64; 4]>> = vec![None; n];
+    let mut hull: Vec<Option<Rect>> = vec![None; n];
     let mut best: Vec<(f64, usize)> = vec![(f64::INFINITY, 0); n];
     for (i, l) in leaves.iter().enumerate() {
         let r = find(&mut parent, i);
         let h = hull[r].get_or_insert(l.bx);
-        h[0] = h[0].min(l.bx[0]);
-        h[1] = h[1].max(l.bx[1]);
-        h[2] = h[2].min(l.bx[2]);
-        h[3] = h[3].max(l.bx[3]);
+        *h = h.hull(&l.bx);
         if l.fabs < best[r].0 {
             best[r] = (l.fabs, i);
         }
@@ -268,8 +261,6 @@ pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) ->
         }
     }
     let roots: Vec<usize> = (0..n).filter(|&i| hull[i].is_some()).collect();
-    let meet =
-        |g: [f64; 4], h: [f64; 4]| h[0] <= g[1] && g[0] <= h[1] && h[2] <= g[3] && g[2] <= h[3];
     // Bounded: each pass merges two clusters or stops.
     for _ in 0..roots.len() {
         let mut merged = false;
@@ -284,14 +275,9 @@ pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) ->
                     continue;
                 };
                 // Their neighbourhoods (each hull grown by its own size) overlap.
-                if meet(grown(ha), grown(hb)) {
+                if grown(ha).overlaps(&grown(hb)) {
                     parent[a] = b;
-                    hull[b] = Some([
-                        ha[0].min(hb[0]),
-                        ha[1].max(hb[1]),
-                        ha[2].min(hb[2]),
-                        ha[3].max(hb[3]),
-                    ]);
+                    hull[b] = Some(ha.hull(&hb));
                     // The node nearer to a critical point represents both.
                     if slope[a] < slope[b] {
                         node[b] = node[a];
@@ -318,7 +304,8 @@ pub(super) fn cluster_leaves(leaves: &[Leaf], ext: [f64; 2], cells: &[Patch]) ->
         if id[r] == usize::MAX {
             id[r] = out.n;
             out.n += 1;
-            out.hull.push(hull[r].unwrap_or([f64::NAN; 4]));
+            out.hull
+                .push(hull[r].unwrap_or(Rect::of((f64::NAN, f64::NAN), (f64::NAN, f64::NAN))));
             out.node.push(node[r]);
         }
         out.of[i] = id[r];

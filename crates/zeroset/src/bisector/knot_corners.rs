@@ -24,6 +24,7 @@ use super::point::psi;
 use super::vertices::Ctx;
 use crate::patch::Patch;
 use curve::distance_to_segment;
+use numeric::Rect;
 
 /// A self-bisector branch ending this close (relative to the domain) to a knot corner of the
 /// diagonal, on the cell across it, is traced on to the corner. The flat region of `F`
@@ -84,15 +85,10 @@ struct Polar {
 
 impl Ctx<'_> {
     /// Extends self-bisector branches that end beside a knot corner of the diagonal up to it.
-    pub(super) fn reach_knot_corners(
-        &self,
-        branches: &mut [Branch],
-        cells: &[Patch],
-        dom: [f64; 4],
-    ) {
+    pub(super) fn reach_knot_corners(&self, branches: &mut [Branch], cells: &[Patch], dom: Rect) {
         let mut knots: Vec<f64> = cells
             .iter()
-            .filter(|p| p.t0 == p.r0 && p.t0 > dom[0])
+            .filter(|p| p.t0 == p.r0 && p.t0 > dom.t.lo)
             .map(|p| p.t0)
             .collect();
         knots.sort_by(f64::total_cmp);
@@ -109,8 +105,8 @@ impl Ctx<'_> {
     }
 
     /// Extends the branch from its last vertex up to a knot corner it heads for.
-    fn reach_corner_from_end(&self, b: &mut Branch, knots: &[f64], dom: [f64; 4]) {
-        let ext = dom[1] - dom[0];
+    fn reach_corner_from_end(&self, b: &mut Branch, knots: &[f64], dom: Rect) {
+        let ext = dom.t.width();
         let (reach, flat) = (CORNER_REACH * ext, FLAT_REACH * ext);
         let n = b.tr.len();
         if n < 2 {
@@ -129,8 +125,8 @@ impl Ctx<'_> {
         };
         // On the corner's cell: between the knots on either side.
         let k = knots[j];
-        let before_knot = if j > 0 { knots[j - 1] } else { dom[0] };
-        let after_knot = knots.get(j + 1).copied().unwrap_or(dom[1]);
+        let before_knot = if j > 0 { knots[j - 1] } else { dom.t.lo };
+        let after_knot = knots.get(j + 1).copied().unwrap_or(dom.t.hi);
         if q[0] < before_knot || q[1] > after_knot {
             return;
         }

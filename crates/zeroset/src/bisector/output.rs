@@ -6,6 +6,7 @@ use super::vertices::{Ctx, DIAGONAL_MARGIN};
 use crate::extract::Pieces;
 use crate::patch::Patch;
 use crate::zeroset::finish;
+use numeric::Rect;
 use serde::{Deserialize, Serialize};
 
 /// Singular and isolated points of a self-bisector within this fraction of the domain of the
@@ -62,12 +63,12 @@ pub struct Bisector {
 }
 
 impl Ctx<'_> {
-    pub(super) fn build(&self, pieces: &Pieces, dom: [f64; 4], cells: &[Patch]) -> Bisector {
+    pub(super) fn build(&self, pieces: &Pieces, dom: Rect, cells: &[Patch]) -> Bisector {
         let z = finish(pieces, dom, cells);
         let mut branches = Vec::new();
         for pl in &z.branches {
             let pts = if self.selfb {
-                clip_diagonal(&pl.pts, DIAGONAL_MARGIN * (dom[1] - dom[0]), &|a, b| {
+                clip_diagonal(&pl.pts, DIAGONAL_MARGIN * (dom.t.width()), &|a, b| {
                     diagonal_end(cells, a, b, dom)
                 })
             } else {
@@ -97,7 +98,7 @@ impl Ctx<'_> {
         }
         // Leaf clusters at the diagonal corners of the Bézier cells (where the undivided F has
         // its trivial double zero) are artefacts of the diagonal, not bisector points.
-        let ext = dom[1] - dom[0];
+        let ext = dom.t.width();
         let special = |v: &[[f64; 2]]| -> Vec<BisectorPoint> {
             v.iter()
                 .filter(|q| !self.selfb || q[1] - q[0] > DIAGONAL_ARTEFACT * ext)
@@ -136,10 +137,10 @@ fn flush(cur: &mut Branch, out: &mut Vec<Branch>) {
 /// Joins branches across the seam of a closed curve: `(start, ρ)` on the border `t = start`
 /// is the same foot-point pair as `(ρ, end)` on the border `r = end` (parameters modulo the
 /// period, mirrored into `t ≤ r`).
-fn join_seam(mut v: Vec<Branch>, dom: [f64; 4]) -> Vec<Branch> {
-    let tol = SEAM_MATCH * (dom[1] - dom[0]);
-    let on_top = |q: [f64; 2]| q[1] == dom[3];
-    let on_left = |q: [f64; 2]| q[0] == dom[0];
+fn join_seam(mut v: Vec<Branch>, dom: Rect) -> Vec<Branch> {
+    let tol = SEAM_MATCH * (dom.t.width());
+    let on_top = |q: [f64; 2]| q[1] == dom.r.hi;
+    let on_left = |q: [f64; 2]| q[0] == dom.t.lo;
     let ends = |b: &Branch| [b.tr[0], b.tr[b.tr.len() - 1]];
     // Bounded: each join removes one branch.
     for _ in 0..v.len() {
@@ -214,7 +215,7 @@ fn clip_diagonal(
 /// `(s, s)` by Newton along the diagonal, then the zero-set point at a small offset from it
 /// on the `t < r` side (Newton along the diagonal direction). `None` where no crossing lies
 /// beside the segment.
-fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Option<[f64; 2]> {
+fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: Rect) -> Option<[f64; 2]> {
     let (da, db) = (a[1] - a[0], b[1] - b[0]);
     let w = da / (da - db);
     let c = a[0] + w * (b[0] - a[0]);
@@ -244,7 +245,7 @@ fn diagonal_end(cells: &[Patch], a: [f64; 2], b: [f64; 2], dom: [f64; 4]) -> Opt
     if (s - c).abs() > (b[0] - a[0]).abs() + (b[1] - a[1]).abs() {
         return None;
     }
-    let delta = DIAGONAL_OFFSET * (dom[1] - dom[0]);
+    let delta = DIAGONAL_OFFSET * (dom.t.width());
     let base = [s - delta, s + delta];
     let mu = solve(base, 0.0)?;
     let e = [base[0] + mu, base[1] + mu];

@@ -158,7 +158,8 @@ pub enum Doubt {
 
     // Offsets, from the medial axis.
     /// The medial axis the offsets are taken from is not certified (its doubts follow this
-    /// one in the result's [`Doubts`]).
+    /// one in the offsets' [`Doubts`]; a V-carving states the axis's own doubts first, and
+    /// this one among its flat passes').
     AxisUncertified,
     /// A seam's feet did not converge.
     SeamUnconverged,
@@ -184,6 +185,21 @@ pub enum Doubt {
     NeckUnresolved,
     /// Two loops' fitted pieces cross across a passage narrower than they follow.
     LoopsCross,
+
+    // The tool's inputs.
+    /// The drawing the input was read from holds what could be part of an outline and was
+    /// not read.
+    UnreadOutline {
+        /// What was not read, each named as the reader names it (its type and where).
+        names: Vec<String>,
+    },
+    /// A doubt of one part of a multi-part input (numbered from 0).
+    InPart {
+        /// The part.
+        part: usize,
+        /// The part's doubt.
+        doubt: Box<Doubt>,
+    },
 
     // Read back.
     /// A doubt read back from a result's document (its JSON, a pickled Python result): the
@@ -312,6 +328,8 @@ impl Doubt {
             | Doubt::CornerFeetNotFound { .. }
             | Doubt::OffsetError { .. }
             | Doubt::LoopNotAProfile { .. }
+            | Doubt::UnreadOutline { .. }
+            | Doubt::InPart { .. }
             | Doubt::Stated { .. } => "",
         }
     }
@@ -357,6 +375,12 @@ impl fmt::Display for Doubt {
             Doubt::LoopNotAProfile { why } => {
                 write!(f, "a loop is not a simple closed profile: {why}")
             }
+            Doubt::UnreadOutline { names } => write!(
+                f,
+                "the drawing holds what could be part of an outline and was not read: {}",
+                names.join("; ")
+            ),
+            Doubt::InPart { part, doubt } => write!(f, "part {part}: {doubt}"),
             Doubt::Stated { reason } => f.write_str(reason),
             Doubt::AxisGraph {
                 unreached: Some(corner),
@@ -628,6 +652,13 @@ mod tests {
             },
             Doubt::NeckUnresolved,
             Doubt::LoopsCross,
+            Doubt::UnreadOutline {
+                names: vec!["SOLID 5D".into(), "HATCH 7A".into()],
+            },
+            Doubt::InPart {
+                part: 1,
+                doubt: Box::new(Doubt::SearchLimit),
+            },
             Doubt::Stated {
                 reason: "as a document stated it".into(),
             },

@@ -24,6 +24,7 @@ use criterion::{
 use curve::Region;
 use curvekit::medial::{medial_axis, MedialOptions};
 use curvekit::offset::{offsets, OffsetOptions};
+use numeric::certificate::Verdict;
 use std::f64::consts::FRAC_PI_2;
 use std::time::Duration;
 
@@ -136,8 +137,8 @@ fn bench_region_axis(
         "{label}: {} nodes, {} edges, certified {} {}",
         axis.nodes.len(),
         axis.edges.len(),
-        axis.certified,
-        axis.reason.as_deref().unwrap_or("")
+        axis.certified(),
+        axis.reason().as_deref().unwrap_or("")
     );
     group.bench_with_input(BenchmarkId::new("curvekit", n), region, |b, r| {
         b.iter(|| medial_axis(black_box(r), &opts).unwrap())

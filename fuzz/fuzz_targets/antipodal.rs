@@ -7,7 +7,7 @@
 #[path = "common.rs"]
 mod common;
 
-use antipodal::Options;
+use antipodal::{Options, Verdict};
 use arbitrary::Arbitrary;
 use common::{all_finite, tolerance, within, ArbCurve};
 use curvekit::antipodal;
@@ -64,7 +64,7 @@ fuzz_target!(|input: Input| {
                 assert!(held, "{} outside its bracket {b:?}", i.u);
             }
         }
-        if r.certified && curve.is_closed() {
+        if r.certified() && curve.is_closed() {
             assert!(
                 r.inflections.len() % 2 == 0,
                 "odd inflections, certified: {r:?}"
@@ -83,7 +83,7 @@ fuzz_target!(|input: Input| {
                 "pair off the curve: {p:?}"
             );
         }
-        if r.certified && r.complete {
+        if r.certified() && r.complete {
             assert!(
                 !r.pairs.is_empty() || !r.families.is_empty(),
                 "no antipodal pair, certified"

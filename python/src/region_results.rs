@@ -17,7 +17,7 @@ fn export_error(e: ExportError) -> PyErr {
     crate::CurvekitError::new_err(e.to_string())
 }
 
-result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict, {
+result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
     /// The nodes' points, an `(n, 2)` array (row `i` is node `i`).
     #[getter]
     fn nodes<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
@@ -118,7 +118,7 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict, {
             "MedialAxis({} nodes, {} edges, certified={})",
             self.found.nodes.len(),
             self.found.edges.len(),
-            if self.found.certified {
+            if curvekit::numeric::certificate::Verdict::certified(&self.found) {
                 "True"
             } else {
                 "False"
@@ -127,7 +127,7 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict, {
     }
 });
 
-result_class!(PyOffsets, "Offsets", Offsets, verdict, {
+result_class!(PyOffsets, "Offsets", Offsets, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
     /// The distances, in the order asked, an `(m,)` array.
     #[getter]
     fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
@@ -240,7 +240,7 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict, {
         format!(
             "Offsets({} distances, certified={})",
             self.found.offsets.len(),
-            if self.found.certified {
+            if curvekit::numeric::certificate::Verdict::certified(&self.found) {
                 "True"
             } else {
                 "False"
@@ -249,7 +249,7 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict, {
     }
 });
 
-result_class!(PyVCarve, "VCarve", VCarve, verdict, {
+result_class!(PyVCarve, "VCarve", VCarve, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
     /// The bit's included angle (degrees).
     #[getter]
     fn angle(&self) -> f64 {
@@ -312,7 +312,7 @@ result_class!(PyVCarve, "VCarve", VCarve, verdict, {
             "VCarve({} paths, {} flats, certified={})",
             self.found.paths.len(),
             self.found.flats.len(),
-            if self.found.certified {
+            if curvekit::numeric::certificate::Verdict::certified(&self.found) {
                 "True"
             } else {
                 "False"

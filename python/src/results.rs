@@ -113,27 +113,59 @@ impl PickledCurve {
     }
 }
 
-macro_rules! result_class {
-    // (A result with `certified`, `complete` and `reason` fields of its own: their getters.)
-    ($class:ident, $name:literal, $found:ty, verdict, { $($extra:tt)* }) => {
-        result_class!($class, $name, $found, {
-            /// Whether the result is certified (what that proves is the command's: see its
-            /// documentation); `reason` says why not.
-            #[getter]
-            fn certified(&self) -> bool {
-                self.found.certified
-            }
+/// Whether a result is complete (no search limit hit, every loop joined): the results whose
+/// class has a `complete` getter.
+pub(crate) trait Completeness {
+    fn complete(&self) -> bool;
+}
 
+impl Completeness for AntipodalFound {
+    fn complete(&self) -> bool {
+        match self {
+            AntipodalFound::Curve(f) => f.complete,
+            AntipodalFound::Profile(f) => f.complete,
+        }
+    }
+}
+
+macro_rules! complete_field {
+    ($($t:ty),*) => {
+        $(impl Completeness for $t {
+            fn complete(&self) -> bool {
+                self.complete
+            }
+        })*
+    };
+}
+complete_field!(MedialAxis, Offsets, VCarve);
+
+macro_rules! result_class {
+    // (A result with `certified`, `complete` and `reason`: their getters, the verdict's from
+    // the one `Verdict` trait every result answers it by.)
+    ($class:ident, $name:literal, $found:ty, verdict = $doc:literal, { $($extra:tt)* }) => {
+        result_class!($class, $name, $found, certified = $doc, {
             /// Whether the result is complete (no search limit hit, every loop joined).
             #[getter]
             fn complete(&self) -> bool {
-                self.found.complete
+                $crate::results::Completeness::complete(&self.found)
             }
 
             /// Why the result is not certified, when it is not.
             #[getter]
             fn reason(&self) -> Option<String> {
-                self.found.reason.clone()
+                curvekit::numeric::certificate::Verdict::reason(&self.found)
+            }
+
+            $($extra)*
+        });
+    };
+    // (A result with `certified` alone, from `Verdict`, documented as `doc`.)
+    ($class:ident, $name:literal, $found:ty, certified = $doc:literal, { $($extra:tt)* }) => {
+        result_class!($class, $name, $found, {
+            #[doc = $doc]
+            #[getter]
+            fn certified(&self) -> bool {
+                curvekit::numeric::certificate::Verdict::certified(&self.found)
             }
 
             $($extra)*
@@ -217,103 +249,86 @@ macro_rules! result_class {
 
 pub(crate) use result_class;
 
-result_class!(PyAntipodal, "Antipodal", AntipodalFound, {
-    /// Every pair proven (sign tests on exact forms) to be antipodal, and nothing missed.
-    #[getter]
-    fn certified(&self) -> bool {
-        match &self.found {
-            AntipodalFound::Curve(f) => f.certified,
-            AntipodalFound::Profile(f) => f.certified,
+result_class!(
+    PyAntipodal,
+    "Antipodal",
+    AntipodalFound,
+    verdict = "Every pair proven (sign tests on exact forms) to be antipodal, and nothing missed.",
+    {
+        /// The pairs' parameters `(s, t)`, an `(n, 2)` array sorted by `s`.
+        #[getter]
+        fn pairs<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+            points2(
+                py,
+                &self.pair_fields().iter().map(|p| p.0).collect::<Vec<_>>(),
+            )
         }
-    }
 
-    /// No search limit was hit.
-    #[getter]
-    fn complete(&self) -> bool {
-        match &self.found {
-            AntipodalFound::Curve(f) => f.complete,
-            AntipodalFound::Profile(f) => f.complete,
+        /// The pairs' points `(p, q)`, an `(n, 2, 2)` array.
+        #[getter]
+        fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
+            pairs2(
+                py,
+                &self.pair_fields().iter().map(|p| p.1).collect::<Vec<_>>(),
+            )
         }
-    }
 
-    /// Why the result is not certified, when it is not.
-    #[getter]
-    fn reason(&self) -> Option<String> {
-        match &self.found {
-            AntipodalFound::Curve(f) => f.reason.clone(),
-            AntipodalFound::Profile(f) => f.reason.clone(),
+        /// The pairs' distances `|q − p|`, an `(n,)` array.
+        #[getter]
+        fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+            PyArray1::from_vec(py, self.pair_fields().iter().map(|p| p.2).collect())
         }
-    }
 
-    /// The pairs' parameters `(s, t)`, an `(n, 2)` array sorted by `s`.
-    #[getter]
-    fn pairs<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        points2(
-            py,
-            &self.pair_fields().iter().map(|p| p.0).collect::<Vec<_>>(),
-        )
-    }
-
-    /// The pairs' points `(p, q)`, an `(n, 2, 2)` array.
-    #[getter]
-    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
-        pairs2(
-            py,
-            &self.pair_fields().iter().map(|p| p.1).collect::<Vec<_>>(),
-        )
-    }
-
-    /// The pairs' distances `|q − p|`, an `(n,)` array.
-    #[getter]
-    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_vec(py, self.pair_fields().iter().map(|p| p.2).collect())
-    }
-
-    /// The pairs' types (`"A"` to `"E"`, Jia 2004 §3.3; `None` at a corner or a straight end).
-    #[getter]
-    fn types(&self) -> Vec<Option<String>> {
-        let name = |k: &antipodal::PairType| format!("{k:?}");
-        match &self.found {
-            AntipodalFound::Curve(f) => f.pairs.iter().map(|p| Some(name(&p.kind))).collect(),
-            AntipodalFound::Profile(f) => {
-                f.pairs.iter().map(|p| p.kind.as_ref().map(name)).collect()
+        /// The pairs' types (`"A"` to `"E"`, Jia 2004 §3.3; `None` at a corner or a straight end).
+        #[getter]
+        fn types(&self) -> Vec<Option<String>> {
+            let name = |k: &antipodal::PairType| format!("{k:?}");
+            match &self.found {
+                AntipodalFound::Curve(f) => f.pairs.iter().map(|p| Some(name(&p.kind))).collect(),
+                AntipodalFound::Profile(f) => {
+                    f.pairs.iter().map(|p| p.kind.as_ref().map(name)).collect()
+                }
             }
         }
-    }
 
-    /// The inflections' parameters, an `(m,)` array.
-    #[getter]
-    fn inflections<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let list = match &self.found {
-            AntipodalFound::Curve(f) => &f.inflections,
-            AntipodalFound::Profile(f) => &f.inflections,
-        };
-        PyArray1::from_vec(py, list.iter().map(|i| i.u).collect())
-    }
+        /// The inflections' parameters, an `(m,)` array.
+        #[getter]
+        fn inflections<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+            let list = match &self.found {
+                AntipodalFound::Curve(f) => &f.inflections,
+                AntipodalFound::Profile(f) => &f.inflections,
+            };
+            PyArray1::from_vec(py, list.iter().map(|i| i.u).collect())
+        }
 
-    /// The families (arcs of non-isolated pairs): `[[s0, s1], [t0, t1]]` each, a `(k, 2, 2)`
-    /// array.
-    #[getter]
-    fn families<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
-        let ranges: Vec<[[f64; 2]; 2]> = match &self.found {
-            AntipodalFound::Curve(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
-            AntipodalFound::Profile(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
-        };
-        pairs2(py, &ranges)
-    }
+        /// The families (arcs of non-isolated pairs): `[[s0, s1], [t0, t1]]` each, a `(k, 2, 2)`
+        /// array.
+        #[getter]
+        fn families<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
+            let ranges: Vec<[[f64; 2]; 2]> = match &self.found {
+                AntipodalFound::Curve(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
+                AntipodalFound::Profile(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
+            };
+            pairs2(py, &ranges)
+        }
 
-    fn __len__(&self) -> usize {
-        self.pair_fields().len()
-    }
+        fn __len__(&self) -> usize {
+            self.pair_fields().len()
+        }
 
-    fn __repr__(&self) -> String {
-        format!(
-            "Antipodal({} pairs, certified={})",
-            self.pair_fields().len(),
-            if self.certified() { "True" } else { "False" }
-        )
+        fn __repr__(&self) -> String {
+            format!(
+                "Antipodal({} pairs, certified={})",
+                self.pair_fields().len(),
+                if curvekit::numeric::certificate::Verdict::certified(&self.found) {
+                    "True"
+                } else {
+                    "False"
+                }
+            )
+        }
     }
-});
+);
 
 impl PyAntipodal {
     /// Each pair's `([s, t], [p, q], distance)`, for both variants.
@@ -333,50 +348,51 @@ impl PyAntipodal {
     }
 }
 
-result_class!(PyInflections, "Inflections", InflectionsFound, {
-    /// Every inflection proven, and nothing missed.
-    #[getter]
-    fn certified(&self) -> bool {
-        match &self.found {
-            InflectionsFound::Curve(f) => f.certified,
-            InflectionsFound::Profile(f) => f.certified,
+result_class!(
+    PyInflections,
+    "Inflections",
+    InflectionsFound,
+    certified = "Every inflection proven, and nothing missed.",
+    {
+        /// The inflections' parameters, an `(m,)` array.
+        #[getter]
+        fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+            PyArray1::from_vec(py, self.list().iter().map(|i| i.u).collect())
+        }
+
+        /// The inflection points, an `(m, 2)` array.
+        #[getter]
+        fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+            points2(py, &self.list().iter().map(|i| i.p).collect::<Vec<_>>())
+        }
+
+        /// A profile's corners' parameters (empty for a smooth curve), a `(c,)` array.
+        #[getter]
+        fn corners<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+            let us = match &self.found {
+                InflectionsFound::Curve(_) => Vec::new(),
+                InflectionsFound::Profile(f) => f.corners.iter().map(|c| c.u).collect(),
+            };
+            PyArray1::from_vec(py, us)
+        }
+
+        fn __len__(&self) -> usize {
+            self.list().len()
+        }
+
+        fn __repr__(&self) -> String {
+            format!(
+                "Inflections({} inflections, certified={})",
+                self.list().len(),
+                if curvekit::numeric::certificate::Verdict::certified(&self.found) {
+                    "True"
+                } else {
+                    "False"
+                }
+            )
         }
     }
-
-    /// The inflections' parameters, an `(m,)` array.
-    #[getter]
-    fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_vec(py, self.list().iter().map(|i| i.u).collect())
-    }
-
-    /// The inflection points, an `(m, 2)` array.
-    #[getter]
-    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        points2(py, &self.list().iter().map(|i| i.p).collect::<Vec<_>>())
-    }
-
-    /// A profile's corners' parameters (empty for a smooth curve), a `(c,)` array.
-    #[getter]
-    fn corners<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let us = match &self.found {
-            InflectionsFound::Curve(_) => Vec::new(),
-            InflectionsFound::Profile(f) => f.corners.iter().map(|c| c.u).collect(),
-        };
-        PyArray1::from_vec(py, us)
-    }
-
-    fn __len__(&self) -> usize {
-        self.list().len()
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "Inflections({} inflections, certified={})",
-            self.list().len(),
-            if self.certified() { "True" } else { "False" }
-        )
-    }
-});
+);
 
 impl PyInflections {
     fn list(&self) -> &[antipodal::Inflection] {
@@ -387,40 +403,41 @@ impl PyInflections {
     }
 }
 
-result_class!(PyTangents, "Tangents", TangentsFound, {
-    /// Every line proven, and nothing missed.
-    #[getter]
-    fn certified(&self) -> bool {
-        match &self.found {
-            TangentsFound::Curve(f) => f.certified,
-            TangentsFound::Profile(f) => f.certified,
+result_class!(
+    PyTangents,
+    "Tangents",
+    TangentsFound,
+    certified = "Every line proven, and nothing missed.",
+    {
+        /// The lines' parameters `(s, t)` on the two curves, an `(n, 2)` array.
+        #[getter]
+        fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+            points2(py, &self.lines().iter().map(|l| l.0).collect::<Vec<_>>())
+        }
+
+        /// The lines' points of tangency `(p, q)`, an `(n, 2, 2)` array.
+        #[getter]
+        fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
+            pairs2(py, &self.lines().iter().map(|l| l.1).collect::<Vec<_>>())
+        }
+
+        fn __len__(&self) -> usize {
+            self.lines().len()
+        }
+
+        fn __repr__(&self) -> String {
+            format!(
+                "Tangents({} lines, certified={})",
+                self.lines().len(),
+                if curvekit::numeric::certificate::Verdict::certified(&self.found) {
+                    "True"
+                } else {
+                    "False"
+                }
+            )
         }
     }
-
-    /// The lines' parameters `(s, t)` on the two curves, an `(n, 2)` array.
-    #[getter]
-    fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        points2(py, &self.lines().iter().map(|l| l.0).collect::<Vec<_>>())
-    }
-
-    /// The lines' points of tangency `(p, q)`, an `(n, 2, 2)` array.
-    #[getter]
-    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
-        pairs2(py, &self.lines().iter().map(|l| l.1).collect::<Vec<_>>())
-    }
-
-    fn __len__(&self) -> usize {
-        self.lines().len()
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "Tangents({} lines, certified={})",
-            self.lines().len(),
-            if self.certified() { "True" } else { "False" }
-        )
-    }
-});
+);
 
 impl PyTangents {
     fn lines(&self) -> Vec<([f64; 2], [[f64; 2]; 2])> {

@@ -9,6 +9,7 @@ use curvekit::commands::{
 };
 use curvekit::io::{Curve, CurveKind};
 use curvekit::svg::{Figure, Mark, DOT};
+use numeric::certificate::Verdict;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -147,12 +148,8 @@ pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> Str
     if !corners.is_empty() {
         fig.legend(Mark::Square, "corner");
     }
-    let (certified, reason) = match found {
-        InflectionsFound::Curve(f) => (f.certified, f.reason.as_deref()),
-        InflectionsFound::Profile(f) => (f.certified, f.reason.as_deref()),
-    };
     fig.title(title);
-    fig.status(certified, reason);
+    fig.status(found.certified(), found.reason().as_deref());
     fig.render()
 }
 
@@ -211,11 +208,7 @@ pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String 
             "common tangent, numbered, between its contacts",
         );
     }
-    let (certified, reason) = match found {
-        TangentsFound::Curve(f) => (f.certified, f.reason.as_deref()),
-        TangentsFound::Profile(f) => (f.certified, f.reason.as_deref()),
-    };
-    fig.status(certified, reason);
+    fig.status(found.certified(), found.reason().as_deref());
     fig.render()
 }
 

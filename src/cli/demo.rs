@@ -8,6 +8,7 @@ use antipodal::Inflections;
 use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, Curve};
 use curvekit::svg::{Figure, Mark, DOT};
+use numeric::certificate::Verdict;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -193,7 +194,7 @@ fn shape_row(
             if let Some(Ok(found)) = &inflections {
                 found.inflections.iter().for_each(|i| fig.dot(i.p));
                 fig.legend(Mark::Dot(DOT.into()), "inflection");
-                fig.status(found.certified, found.reason.as_deref());
+                fig.status(found.certified(), found.reason().as_deref());
             }
             fig.title(title);
             fig.render()
@@ -330,7 +331,7 @@ fn table(
             r.name,
             r.curve.kind(),
             cell(&r.inflections, |i| i.inflections.len().to_string()),
-            cell(&r.inflections, |i| if i.certified { "yes" } else { "no" }
+            cell(&r.inflections, |i| if i.certified() { "yes" } else { "no" }
                 .into()),
             cell(&r.pairs, usize::to_string),
             cell(&r.self_bisector, branch_count),
@@ -390,7 +391,7 @@ fn demo_json(
                 "name": r.name,
                 "curve": CurveSummary::of(&r.curve),
                 "inflections": r.inflections.as_ref().map(|x| x.as_ref().map_or_else(err, |i| json!(i.inflections))),
-                "certified": r.inflections.as_ref().and_then(|x| x.as_ref().ok()).map(|i| i.certified),
+                "certified": r.inflections.as_ref().and_then(|x| x.as_ref().ok()).map(|i| i.certified()),
                 "pairs": r.pairs.as_ref().map(|x| x.as_ref().map_or_else(err, |n| json!(n))),
                 "self_bisector_branches": r.self_bisector.as_ref().map(|x| x.as_ref().map_or_else(err, |b| json!(b.branches.len()))),
                 "svg": r.svg,

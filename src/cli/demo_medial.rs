@@ -7,6 +7,7 @@ use super::{write_file, Common, Failure};
 use curvekit::io::{parse_region, Curve, CurveKind, DrawingFormat};
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use curvekit::offset::{offsets, OffsetOptions};
+use numeric::certificate::Verdict;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -166,7 +167,7 @@ pub(super) fn json(rows: &[MedialRow]) -> Value {
                     "edges": a.edges.len(),
                     "junctions": count(a, NodeKind::Junction),
                     "complete": a.complete,
-                    "certified": a.certified,
+                    "certified": a.certified(),
                 }),
                 Err(e) => json!({ "error": e }),
             };

@@ -7,6 +7,7 @@ use super::{write_file, Common, Failure};
 use antipodal::ProfileAntipodal;
 use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, parse_drawing, Curve, CurveKind, DrawingFormat};
+use numeric::certificate::Verdict;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -136,7 +137,7 @@ pub(super) fn table(rows: &[ProfileRow]) -> String {
                     a.pairs.len(),
                     corner_pairs,
                     a.families.len(),
-                    if a.certified { "yes" } else { "no" }
+                    if a.certified() { "yes" } else { "no" }
                 );
             }
             Err(e) => {
@@ -170,7 +171,7 @@ pub(super) fn json(rows: &[ProfileRow]) -> Value {
                     "families": a.families.len(),
                     "inflections": a.inflections.len(),
                     "corners": a.corners.len(),
-                    "certified": a.certified,
+                    "certified": a.certified(),
                 }),
                 Err(e) => json!({ "error": e }),
             };

@@ -7,6 +7,7 @@ use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
 use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
+use numeric::certificate::Verdict;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -81,8 +82,8 @@ pub(super) fn run(
                 "fitted:      {points} control points, at most {error:.3e} from the polylines"
             );
         }
-        let _ = writeln!(s, "certified:   {}", axis.certified);
-        if let Some(why) = &axis.reason {
+        let _ = writeln!(s, "certified:   {}", axis.certified());
+        if let Some(why) = &axis.reason() {
             let _ = writeln!(s, "  (why: {why})");
         }
         let _ = writeln!(s, "complete:    {}", axis.complete);
@@ -107,7 +108,7 @@ pub(super) fn axis_figure(region: &Curve, axis: &MedialAxis) -> String {
         axis.nodes.len(),
         axis.edges.len()
     ));
-    fig.status(axis.certified, axis.reason.as_deref());
+    fig.status(axis.certified(), axis.reason().as_deref());
     fig.color_bar("radius", 0.0, widest, region.units());
     fig.render()
 }

@@ -9,6 +9,7 @@ use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
+use numeric::certificate::Verdict;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -86,7 +87,7 @@ pub(super) fn figure(region: &Curve, found: &Offsets) -> String {
         region.file,
         found.offsets.len()
     ));
-    fig.status(found.certified, found.reason.as_deref());
+    fig.status(found.certified(), found.reason().as_deref());
     fig.color_bar("distance", 0.0, largest, region.units());
     fig.legend(Mark::Line(BOUNDARY.into(), 1.6), "boundary");
     if loops > 0 {
@@ -111,8 +112,8 @@ fn text(curve: &Curve, found: &Offsets, stats: Option<&commands::Stats>) -> Stri
             o.loops.len()
         );
     }
-    let _ = writeln!(s, "certified:   {}", found.certified);
-    if let Some(why) = &found.reason {
+    let _ = writeln!(s, "certified:   {}", found.certified());
+    if let Some(why) = &found.reason() {
         let _ = writeln!(s, "  (why: {why})");
     }
     let _ = writeln!(s, "complete:    {}", found.complete);

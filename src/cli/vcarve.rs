@@ -9,6 +9,7 @@ use curvekit::io::Curve;
 use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY, DOT};
+use numeric::certificate::Verdict;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -103,7 +104,7 @@ pub(super) fn figure(region: &Curve, found: &VCarve) -> String {
             .max_depth
             .map_or(String::new(), |h| format!(", at most {h} deep"))
     ));
-    fig.status(found.certified, found.reason.as_deref());
+    fig.status(found.certified(), found.reason().as_deref());
     fig.color_bar("depth", 0.0, -deepest, region.units());
     fig.legend(Mark::Line(BOUNDARY.into(), 1.6), "boundary");
     fig.legend(
@@ -144,8 +145,8 @@ fn text(curve: &Curve, found: &VCarve, stats: Option<&commands::Stats>) -> Strin
         }
         None => {}
     }
-    let _ = writeln!(s, "certified:   {}", found.certified);
-    if let Some(why) = &found.reason {
+    let _ = writeln!(s, "certified:   {}", found.certified());
+    if let Some(why) = &found.reason() {
         let _ = writeln!(s, "  (why: {why})");
     }
     let _ = writeln!(s, "complete:    {}", found.complete);

@@ -1,6 +1,7 @@
 //! What the curve commands found, each result on a smooth curve or on a profile, and a
 //! drawing's doubt laid on them.
 
+use numeric::certificate::{Doubt, Doubts, Verdict};
 use serde::Serialize;
 
 /// What `inflections` found: on a smooth curve, or on a profile (with its corners).
@@ -46,46 +47,44 @@ pub enum BisectorFound {
 
 /// Results that say whether they are certified: a drawing's doubt makes them not.
 pub(super) trait Doubted {
-    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>);
+    fn doubts_mut(&mut self) -> &mut Doubts;
 
-    /// Not certified, for `doubt` (where there is one and the result has no reason of its
-    /// own).
-    fn doubted(mut self, doubt: Option<String>) -> Self
+    /// Not certified, for `doubt` (where there is one; stated after the result's own doubts,
+    /// so a result with a reason of its own keeps it).
+    fn doubted(mut self, doubt: Option<Doubt>) -> Self
     where
         Self: Sized,
     {
         if let Some(why) = doubt {
-            let (certified, reason) = self.certified_mut();
-            *certified = false;
-            reason.get_or_insert(why);
+            self.doubts_mut().add(why);
         }
         self
     }
 }
 
-impl Doubted for InflectionsFound {
-    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>) {
-        match self {
-            InflectionsFound::Curve(f) => (&mut f.certified, &mut f.reason),
-            InflectionsFound::Profile(f) => (&mut f.certified, &mut f.reason),
+/// The verdict (and the doubts) of whichever result each variant holds.
+macro_rules! two_ways {
+    ($found:ident) => {
+        impl Doubted for $found {
+            fn doubts_mut(&mut self) -> &mut Doubts {
+                match self {
+                    $found::Curve(f) => &mut f.doubts,
+                    $found::Profile(f) => &mut f.doubts,
+                }
+            }
         }
-    }
+
+        impl Verdict for $found {
+            fn doubts(&self) -> &Doubts {
+                match self {
+                    $found::Curve(f) => &f.doubts,
+                    $found::Profile(f) => &f.doubts,
+                }
+            }
+        }
+    };
 }
 
-impl Doubted for AntipodalFound {
-    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>) {
-        match self {
-            AntipodalFound::Curve(f) => (&mut f.certified, &mut f.reason),
-            AntipodalFound::Profile(f) => (&mut f.certified, &mut f.reason),
-        }
-    }
-}
-
-impl Doubted for TangentsFound {
-    fn certified_mut(&mut self) -> (&mut bool, &mut Option<String>) {
-        match self {
-            TangentsFound::Curve(f) => (&mut f.certified, &mut f.reason),
-            TangentsFound::Profile(f) => (&mut f.certified, &mut f.reason),
-        }
-    }
-}
+two_ways!(InflectionsFound);
+two_ways!(AntipodalFound);
+two_ways!(TangentsFound);

@@ -5,6 +5,7 @@
 
 use curve::{box_size, box_union, Region};
 use medial::MedialAxis;
+use numeric::certificate::{Doubt, Doubts};
 use offset::Offsets;
 
 /// max(width, height) of the bounding box of all the parts (the contract's size).
@@ -13,45 +14,38 @@ pub(super) fn size_of(parts: &[&Region]) -> f64 {
     box_size(boxes.reduce(box_union).unwrap_or([0.0; 4]))
 }
 
-/// Why an answer over parts is not certified: the first part's reason that is not (named
-/// when there are several parts), or the drawing's `doubt`.
-fn reason(reasons: Vec<Option<String>>, doubt: Option<String>) -> Option<String> {
-    let several = reasons.len() > 1;
-    let first = reasons
-        .into_iter()
-        .enumerate()
-        .find_map(|(k, r)| r.map(|r| if several { format!("part {k}: {r}") } else { r }));
-    first.or(doubt)
-}
-
-/// The verdict over parts, each `(certified, complete, reason)`: certified where every part is
-/// and the drawing casts no `doubt` (else the first reason), complete where every part is.
-fn verdict(
-    parts: Vec<(bool, bool, Option<String>)>,
-    doubt: Option<String>,
-) -> (bool, bool, Option<String>) {
-    let certified = parts.iter().all(|p| p.0) && doubt.is_none();
-    let complete = parts.iter().all(|p| p.1);
-    let reasons = parts.into_iter().map(|p| p.2).collect();
-    let why = if certified {
-        None
-    } else {
-        reason(reasons, doubt)
-    };
-    (certified, complete, why)
+/// The doubts of an answer over parts: each part's in turn (named by their part when there
+/// are several), then the drawing's `doubt`. Its first is the first uncertified part's
+/// reason, or the drawing's.
+fn joined_doubts<'a>(
+    parts: impl ExactSizeIterator<Item = &'a Doubts>,
+    doubt: Option<Doubt>,
+) -> Doubts {
+    let several = parts.len() > 1;
+    let mut out = Doubts::none();
+    for (k, doubts) in parts.enumerate() {
+        for d in doubts.iter() {
+            out.add(if several {
+                Doubt::InPart {
+                    part: k,
+                    doubt: Box::new(d.clone()),
+                }
+            } else {
+                d.clone()
+            });
+        }
+    }
+    out.join(doubt.into_iter().collect());
+    out
 }
 
 /// The axes of the parts as one axis: nodes renumbered, each node and edge with its part
 /// where there are several; certified and complete where every part's is and the drawing
 /// casts no `doubt`.
-pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<String>) -> MedialAxis {
+pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<Doubt>) -> MedialAxis {
     let several = axes.len() > 1;
-    let (certified, complete, reason) = verdict(
-        axes.iter()
-            .map(|a| (a.certified, a.complete, a.reason.clone()))
-            .collect(),
-        doubt,
-    );
+    let doubts = joined_doubts(axes.iter().map(|a| &a.doubts), doubt);
+    let complete = axes.iter().all(|a| a.complete);
     let (mut nodes, mut edges) = (Vec::new(), Vec::new());
     for (k, axis) in axes.into_iter().enumerate() {
         let part = several.then_some(k);
@@ -71,23 +65,17 @@ pub(super) fn joined_axes(axes: Vec<MedialAxis>, doubt: Option<String>) -> Media
     MedialAxis {
         nodes,
         edges,
-        certified,
-        reason,
+        doubts,
         complete,
     }
 }
 
 /// The offsets of the parts as one answer: at each distance the loops of every part in turn,
 /// each with its part where there are several, and the largest error.
-pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offsets {
+pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<Doubt>) -> Offsets {
     let several = found.len() > 1;
-    let (certified, complete, reason) = verdict(
-        found
-            .iter()
-            .map(|o| (o.certified, o.complete, o.reason.clone()))
-            .collect(),
-        doubt,
-    );
+    let doubts = joined_doubts(found.iter().map(|o| &o.doubts), doubt);
+    let complete = found.iter().all(|o| o.complete);
     let mut offsets: Vec<offset::Offset> = Vec::new();
     for (k, part) in found.into_iter().enumerate() {
         for (i, mut o) in part.offsets.into_iter().enumerate() {
@@ -105,23 +93,17 @@ pub(super) fn joined_offsets(found: Vec<Offsets>, doubt: Option<String>) -> Offs
     }
     Offsets {
         offsets,
-        certified,
-        reason,
+        doubts,
         complete,
     }
 }
 
 /// The V-carvings of the parts as one: each path with its part (from 0), the flats of every
 /// part in turn (with their part where there are several).
-pub(super) fn joined_carves(found: Vec<offset::VCarve>, doubt: Option<String>) -> offset::VCarve {
+pub(super) fn joined_carves(found: Vec<offset::VCarve>, doubt: Option<Doubt>) -> offset::VCarve {
     let several = found.len() > 1;
-    let (certified, complete, reason) = verdict(
-        found
-            .iter()
-            .map(|c| (c.certified, c.complete, c.reason.clone()))
-            .collect(),
-        doubt,
-    );
+    let doubts = joined_doubts(found.iter().map(|c| &c.doubts), doubt);
+    let complete = found.iter().all(|c| c.complete);
     let (angle, max_depth) = found
         .first()
         .map_or((0.0, None), |c| (c.angle, c.max_depth));
@@ -141,8 +123,7 @@ pub(super) fn joined_carves(found: Vec<offset::VCarve>, doubt: Option<String>) -
         max_depth,
         paths,
         flats,
-        certified,
-        reason,
+        doubts,
         complete,
     }
 }

@@ -104,7 +104,7 @@ fn inflections_of(
         }),
     };
     found
-        .map(|f| f.doubted(curve.drawing_doubt()))
+        .map(|f| f.doubted(curve.drawing_outline_doubt()))
         .map_err(|e| antipodal_error(e, &[curve]))
 }
 
@@ -125,7 +125,7 @@ fn antipodal_of(
         }),
     };
     found
-        .map(|f| f.doubted(curve.drawing_doubt()))
+        .map(|f| f.doubted(curve.drawing_outline_doubt()))
         .map_err(|e| antipodal_error(e, &[curve]))
 }
 

@@ -17,7 +17,7 @@ pub fn medial(
     for (axis, part) in axes.iter_mut().zip(region.parts()) {
         axis.in_document(&params::region_maps(part));
     }
-    Ok(parts::joined_axes(axes, region.drawing_doubt()))
+    Ok(parts::joined_axes(axes, region.drawing_outline_doubt()))
 }
 
 /// The medial axis of each part, its feet in the boundaries' profile parameters (as the
@@ -154,7 +154,7 @@ pub fn offset(
             })
         })
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(parts::joined_offsets(found, region.drawing_doubt()))
+    Ok(parts::joined_offsets(found, region.drawing_outline_doubt()))
 }
 
 /// The V-carving tool paths of a region read (as [`crate::io::read_region`] gives it), from
@@ -186,7 +186,7 @@ pub fn vcarve(
         .zip(&axes)
         .map(|(r, axis)| offset::vcarve(r, axis, &opts).map_err(vcarve_error))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(parts::joined_carves(found, region.drawing_doubt()))
+    Ok(parts::joined_carves(found, region.drawing_outline_doubt()))
 }
 
 /// The V-carving options checked on their own (as

@@ -34,7 +34,9 @@ pub fn tangents(
             TangentsFound::Curve(f)
         })
     };
-    let doubt = c1.drawing_doubt().or_else(|| c2.drawing_doubt());
+    let doubt = c1
+        .drawing_outline_doubt()
+        .or_else(|| c2.drawing_outline_doubt());
     found
         .map(|f| f.doubted(doubt))
         .map_err(|e| antipodal_error(e, &both))

@@ -6,6 +6,7 @@ use super::{profile, CurveFileError, Skipped};
 use bspline::Rational;
 use curve::shapes::Shape as Analytic;
 use curve::{ParamCurve, PlaneCurve};
+use numeric::certificate::Doubt;
 
 /// Which spline kind a file used.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -76,20 +77,20 @@ pub struct DrawingInfo {
 
 impl DrawingInfo {
     /// Why no answer on the drawing can be certified: something not read could be part of an
-    /// outline (named, with why).
+    /// outline (named, with why), as stated.
     pub fn doubt(&self) -> Option<String> {
-        let names: Vec<&str> = self
+        self.outline_doubt().map(|d| d.to_string())
+    }
+
+    /// [`DrawingInfo::doubt`] as the doubt the answers carry.
+    pub fn outline_doubt(&self) -> Option<Doubt> {
+        let names: Vec<String> = self
             .skipped
             .iter()
             .filter(|s| s.outline)
-            .map(|s| s.first.as_str())
+            .map(|s| s.first.clone())
             .collect();
-        (!names.is_empty()).then(|| {
-            format!(
-                "the drawing holds what could be part of an outline and was not read: {}",
-                names.join("; ")
-            )
-        })
+        (!names.is_empty()).then_some(Doubt::UnreadOutline { names })
     }
 }
 
@@ -107,6 +108,11 @@ impl Curve {
     /// be part of an outline and was not read.
     pub fn drawing_doubt(&self) -> Option<String> {
         self.drawing.as_ref().and_then(DrawingInfo::doubt)
+    }
+
+    /// [`Curve::drawing_doubt`] as the doubt the answers carry.
+    pub fn drawing_outline_doubt(&self) -> Option<Doubt> {
+        self.drawing.as_ref().and_then(DrawingInfo::outline_doubt)
     }
 
     /// The unit of the coordinates, where the drawing says (`"mm"`, as [`DrawingInfo::units`]).

@@ -151,9 +151,8 @@ pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Certifie
         doubts.add(Doubt::RootCluster);
     }
     let found = Inflections {
-        certified: true,
         inflections,
-        reason: None,
+        doubts: Doubts::none(),
     };
     Ok(Certified {
         value: found,
@@ -226,9 +225,8 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Certified<
         pairs,
         inflections: inflection_list(v, &prep.zeros, doubts.is_empty()),
         families: families.iter().map(|&f| family_of(v, f)).collect(),
-        certified: true,
+        doubts: Doubts::none(),
         complete: !budget.exhausted,
-        reason: None,
     };
     Ok(Certified {
         value: found,
@@ -550,8 +548,7 @@ pub(crate) fn tangents_of(
     out.sort_by(|x, y| x.s.total_cmp(&y.s));
     let found = Tangents {
         lines: out,
-        certified: true,
-        reason: None,
+        doubts: Doubts::none(),
     };
     Ok(Certified {
         value: found,

@@ -69,6 +69,7 @@ mod view;
 pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, SplineCurve, V2};
 pub use error::{Error, Result};
 pub use forms::SymbolicForms;
+pub use numeric::certificate::{Doubt, Doubts, Verdict};
 pub use prepare::{
     antipodal, common_tangents, inflections, prepare, prepare_pair, prepare_shared, Prepared,
 };

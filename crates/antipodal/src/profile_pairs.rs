@@ -205,9 +205,8 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
         inflections: inflections.inflections,
         corners: inflections.corners,
         families,
-        certified: true,
+        doubts: Doubts::none(),
         complete: !budget.exhausted,
-        reason: None,
     };
     // The segments' doubts in their order, then the corners', then the inflections'.
     let mut doubts = Doubts::none();

@@ -138,8 +138,7 @@ pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Prof
     let (sa, sb) = (Side::new(a, &frame), Side::new(b, &frame));
     let mut out = ProfileTangents {
         lines: Vec::new(),
-        certified: true,
-        reason: None,
+        doubts: Doubts::none(),
     };
     // (The smooth lines' doubts first, then the corners' in turn.)
     let mut doubts = Doubts::none();

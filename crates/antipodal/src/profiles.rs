@@ -53,8 +53,7 @@ pub(crate) fn profile_inflections_run(
     let mut out = ProfileInflections {
         inflections: Vec::new(),
         corners: Vec::new(),
-        certified: true,
-        reason: None,
+        doubts: Doubts::none(),
     };
     let mut doubts = Doubts::none();
     for (i, seg) in profile.segments().iter().enumerate() {

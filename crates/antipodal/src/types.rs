@@ -1,7 +1,7 @@
 //! Options and the plain result types (serde) of the public entry points.
 
 use crate::error::{Error, Result};
-use numeric::certificate::Certified;
+use numeric::certificate::{Certified, Doubts, Verdict};
 use numeric::tolerance::ParamTol;
 use serde::{Deserialize, Serialize};
 
@@ -148,13 +148,13 @@ pub struct Antipodal {
     pub inflections: Vec<Inflection>,
     /// Continua of antipodal pairs (circles, concentric arcs).
     pub families: Vec<Family>,
-    /// True when every decision followed from certified sign tests.
-    pub certified: bool,
+    /// The doubts met (none: every decision followed from certified sign tests). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
+    /// writes them as its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
     /// False when a work limit was hit (the result may then be incomplete).
     pub complete: bool,
-    /// Why the result is not certified, where one reason stands out.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
-    pub reason: Option<String>,
 }
 
 /// Result of [`crate::inflections`].
@@ -162,12 +162,11 @@ pub struct Antipodal {
 pub struct Inflections {
     /// Inflections, sorted by `u`.
     pub inflections: Vec<Inflection>,
-    /// True when every inflection is certified and none was missed for certain: isolated by
-    /// certified root finding over the whole domain.
-    pub certified: bool,
-    /// Why the result is not certified, where one reason stands out.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
-    pub reason: Option<String>,
+    /// The doubts met (none: every decision followed from certified sign tests). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
+    /// writes them as its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
 }
 
 /// A corner of a profile (see [`curve::Joint`]).
@@ -201,11 +200,11 @@ pub struct ProfileInflections {
     pub inflections: Vec<Inflection>,
     /// The corners, sorted by `u` (not inflections).
     pub corners: Vec<Corner>,
-    /// True when every inflection is certified and none was missed for certain.
-    pub certified: bool,
-    /// Why the result is not certified, where one reason stands out.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
-    pub reason: Option<String>,
+    /// The doubts met (none: every decision followed from certified sign tests). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
+    /// writes them as its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
 }
 
 /// One antipodal pair of a profile (see [`crate::profile_antipodal`]).
@@ -275,13 +274,13 @@ pub struct ProfileAntipodal {
     pub corners: Vec<Corner>,
     /// Continua of pairs (facing parallel lines, concentric arcs).
     pub families: Vec<ProfileFamily>,
-    /// True when every decision followed from certified sign tests.
-    pub certified: bool,
+    /// The doubts met (none: every decision followed from certified sign tests). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
+    /// writes them as its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
     /// False when a work limit was hit (the result may then be incomplete).
     pub complete: bool,
-    /// Why the result is not certified, where one reason stands out.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
-    pub reason: Option<String>,
 }
 
 /// A line tangent to the first curve at `s` and to the second at `t`.
@@ -319,11 +318,11 @@ pub struct ProfileTangentLine {
 pub struct ProfileTangents {
     /// The lines, sorted by `s`.
     pub lines: Vec<ProfileTangentLine>,
-    /// True when every decision followed from certified sign tests.
-    pub certified: bool,
-    /// Why the result is not certified, where one reason stands out.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
-    pub reason: Option<String>,
+    /// The doubts met (none: every decision followed from certified sign tests). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
+    /// writes them as its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
 }
 
 /// Result of [`common_tangents()`](crate::common_tangents()).
@@ -331,11 +330,11 @@ pub struct ProfileTangents {
 pub struct Tangents {
     /// The lines, sorted by `s`.
     pub lines: Vec<TangentLine>,
-    /// True when every decision followed from certified sign tests.
-    pub certified: bool,
-    /// Why the result is not certified, where one reason stands out.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
-    pub reason: Option<String>,
+    /// The doubts met (none: every decision followed from certified sign tests). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
+    /// writes them as its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
 }
 
 /// Results that say whether they are certified, and why not: stated from the doubts met, at
@@ -351,9 +350,14 @@ macro_rules! provenance {
         impl Provenance for $t {
             fn finished(run: Certified<Self>) -> Self {
                 let (mut result, doubts) = run.into_parts();
-                result.certified = doubts.is_empty();
-                result.reason = doubts.reason();
+                result.doubts = doubts;
                 result
+            }
+        }
+
+        impl Verdict for $t {
+            fn doubts(&self) -> &Doubts {
+                &self.doubts
             }
         }
     };

@@ -10,6 +10,7 @@ mod common;
 
 use antipodal::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon};
 use antipodal::{antipodal, Antipodal, Error, Options, PlaneCurve, SplineCurve};
+use numeric::certificate::Verdict;
 use testkit::stars::Star;
 
 /// Both paths on one curve; `None` when the curve is not simple (both must refuse it alike).
@@ -182,7 +183,7 @@ fn papers_shapes_agree() {
     ];
     for c in &shapes {
         let (f, p) = both(c.as_ref()).unwrap();
-        assert!(f.certified, "{:?}", f.reason);
+        assert!(f.certified(), "{:?}", f.reason());
         same_answers(c.as_ref(), &f, &p).unwrap();
     }
 }

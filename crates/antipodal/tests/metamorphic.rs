@@ -8,6 +8,7 @@
 #![allow(clippy::unwrap_used)]
 
 use antipodal::{antipodal, Antipodal, Error, Options, PairType, SplineCurve};
+use numeric::certificate::Verdict;
 mod common;
 
 use common::cases;
@@ -224,17 +225,17 @@ fn check_answers(
     COMPARED.fetch_add(1, Ordering::Relaxed);
     if how == Transform::Identical {
         prop_assert_eq!(
-            (a.certified, a.complete),
-            (b.certified, b.complete),
+            (a.certified(), a.complete),
+            (b.certified(), b.complete),
             "{:?}\nvs\n{:?}",
             a,
             b
         );
-    } else if a.certified != b.certified {
+    } else if a.certified() != b.certified() {
         LOST.fetch_add(1, Ordering::Relaxed);
         return Ok(());
     }
-    if a.certified && a.complete {
+    if a.certified() && a.complete {
         let r = same_answer(a, b, &f, tol);
         prop_assert!(r.is_ok(), "{}\n{:?}", r.unwrap_err(), s);
     }

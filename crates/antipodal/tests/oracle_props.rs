@@ -7,6 +7,7 @@ mod common;
 use antipodal::{
     antipodal, common_tangents, inflections, Error, Options, ParamCurve, PlaneCurve, SplineCurve,
 };
+use numeric::certificate::Verdict;
 use proptest::prelude::*;
 use testkit::stars::Star;
 
@@ -221,7 +222,7 @@ fn quadratic_pairs_beside_a_knot() {
         let r = antipodal(&c, &Options::default()).unwrap();
         let oracle = common::antipodal_oracle(&c, 700);
         assert_eq!(oracle.len(), 8, "shift {shift}: oracle {oracle:?}");
-        assert!(r.certified && r.complete);
+        assert!(r.certified() && r.complete);
         for &(s, t) in &oracle {
             assert!(
                 r.pairs

@@ -15,6 +15,7 @@ mod common;
 
 use antipodal::{profile_antipodal, Options, Profile, ProfilePair, Segment};
 use curve::{JointKind, ParamCurve, SegmentKind, SplineCurve, V2};
+use numeric::certificate::Verdict;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -316,7 +317,7 @@ fn check(p: &Profile, size: f64) -> Result<(usize, usize, usize), TestCaseError>
     let r = profile_antipodal(p, &Options::default()).unwrap();
     // (Uncertified results are compared all the same; they must stay rare.)
     RUNS.fetch_add(1, Ordering::Relaxed);
-    if !r.certified {
+    if !r.certified() {
         UNCERTIFIED.fetch_add(1, Ordering::Relaxed);
     }
     prop_assert!(r.families.is_empty(), "families {:?}", r.families);
@@ -450,7 +451,7 @@ fn rectangles_and_half_discs() {
     )
     .unwrap();
     let r = profile_antipodal(&rect, &Options::default()).unwrap();
-    assert!(r.certified);
+    assert!(r.certified());
     assert_eq!(r.families.len(), 2);
     assert_eq!(r.pairs.len(), 2);
     assert!(r
@@ -466,7 +467,7 @@ fn rectangles_and_half_discs() {
     )
     .unwrap();
     let r = profile_antipodal(&d, &Options::default()).unwrap();
-    assert!(r.certified && r.families.is_empty());
+    assert!(r.certified() && r.families.is_empty());
     assert_eq!(r.pairs.len(), 1);
     let p = &r.pairs[0];
     assert_eq!(
@@ -525,7 +526,7 @@ fn round_trips_through_profiles() {
     )
     .unwrap();
     let r = profile_antipodal(&one, &Options::default()).unwrap();
-    assert!(alone.certified && r.certified);
+    assert!(alone.certified() && r.certified());
     let curve_pairs: Vec<ProfilePair> = alone
         .pairs
         .iter()
@@ -574,7 +575,7 @@ fn round_trips_through_profiles() {
     let split = Profile::new(segs, None).unwrap();
     assert!(split.corners().next().is_none());
     let r = profile_antipodal(&split, &Options::default()).unwrap();
-    assert!(whole.certified && r.certified, "{:?}", r.reason);
+    assert!(whole.certified() && r.certified(), "{:?}", r.reason());
     let whole_pairs: Vec<ProfilePair> = whole
         .pairs
         .iter()
@@ -630,7 +631,7 @@ fn pairs_move_with_the_profile() {
             let ra = profile_antipodal(&a, &Options::default()).unwrap();
             let rb = profile_antipodal(&b, &Options::default()).unwrap();
             prop_assert_eq!(ra.pairs.len(), rb.pairs.len());
-            prop_assert_eq!(ra.certified, rb.certified);
+            prop_assert_eq!(ra.certified(), rb.certified());
             let expect: Vec<ProfilePair> = ra
                 .pairs
                 .iter()

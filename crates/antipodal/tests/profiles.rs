@@ -6,6 +6,7 @@
 
 use antipodal::{profile_inflections, CornerKind, Options, Profile, Segment};
 use curve::{ParamCurve, SegmentKind, SplineCurve};
+use numeric::certificate::Verdict;
 use proptest::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -174,7 +175,7 @@ fn corners_lines_and_bad_segments() {
     )
     .unwrap();
     let r = profile_inflections(&d, &Options::default()).unwrap();
-    assert!(r.inflections.is_empty() && r.certified);
+    assert!(r.inflections.is_empty() && r.certified());
     assert_eq!(r.corners.len(), 2);
     assert!(r.corners.iter().all(|c| c.kind == CornerKind::Convex));
     testkit::assert_near!(r.corners[0].turn, PI / 2.0, 1e-12);
@@ -231,10 +232,10 @@ fn a_curvature_vanishing_at_a_corner_is_not_an_inflection() {
         "{:?}",
         r.corners
     );
-    assert!(!r.certified);
+    assert!(!r.certified());
     assert!(
-        r.reason.as_deref().is_some_and(|m| m.contains("corner")),
+        r.reason().as_deref().is_some_and(|m| m.contains("corner")),
         "{:?}",
-        r.reason
+        r.reason()
     );
 }

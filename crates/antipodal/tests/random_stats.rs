@@ -7,6 +7,7 @@
 mod common;
 
 use antipodal::{antipodal, Error, Options, ParamCurve, SplineCurve};
+use numeric::certificate::Verdict;
 use testkit::stars::Star;
 
 #[test]
@@ -73,7 +74,7 @@ fn run(seed: u64, cases: usize, rmin: f64, min_valid: usize, opts: &Options) {
         valid += 1;
         pairs += r.pairs.len();
         infl += r.inflections.len();
-        certified += r.certified as usize;
+        certified += r.certified() as usize;
         for p in &r.pairs {
             *types.entry(format!("{:?}", p.kind)).or_insert(0) += 1;
             assert!(

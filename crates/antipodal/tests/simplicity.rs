@@ -4,6 +4,7 @@
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 use antipodal::{antipodal, Error, Options, PlaneCurve, SplineCurve};
+use numeric::certificate::Verdict as _;
 use proptest::prelude::*;
 use testkit::stars::Star;
 
@@ -62,7 +63,7 @@ enum Verdict {
 
 fn verdict(c: &dyn PlaneCurve) -> Verdict {
     match antipodal(c, &Options::default()) {
-        Ok(r) if r.certified => Verdict::Simple,
+        Ok(r) if r.certified() => Verdict::Simple,
         Ok(_) => Verdict::Undecided,
         Err(Error::SelfIntersecting { .. } | Error::Winding { .. }) => Verdict::Crossing,
         Err(_) => Verdict::Other,

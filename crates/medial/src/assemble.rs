@@ -244,8 +244,8 @@ pub(crate) fn assemble(
         MedialAxis {
             nodes,
             edges,
-            certified: false,
-            reason: None,
+            // (Stated where the axis is finished, once its proofs have run.)
+            doubts: crate::Doubts::none(),
             complete: true,
         },
         loose,

@@ -8,7 +8,7 @@ use crate::candidates::PairSource;
 use crate::test_shapes::{
     merged, random_polygon, random_rounded, same_graph, stands_as_the_bounds, Judge,
 };
-use crate::{MedialAxis, MedialOptions};
+use crate::{MedialAxis, MedialOptions, Verdict};
 use curve::Region;
 use testkit::rng;
 
@@ -30,7 +30,7 @@ fn traced_on_polygons(
 /// corner of an arc and a line it may end a leaf a little off the corner, unproven, where
 /// the traced one ends it at the corner).
 fn traced(traced: &MedialAxis, bounds: &MedialAxis, region: &Region) -> Result<(), String> {
-    if !bounds.certified {
+    if !bounds.certified() {
         return Ok(());
     }
     same_graph(traced, bounds, near(region))
@@ -39,7 +39,7 @@ fn traced(traced: &MedialAxis, bounds: &MedialAxis, region: &Region) -> Result<(
 /// The same, junctions within a millionth of the size taken as one node, as the bounds'
 /// path merges them.
 fn pairwise(pairwise: &MedialAxis, bounds: &MedialAxis, region: &Region) -> Result<(), String> {
-    if !bounds.certified {
+    if !bounds.certified() {
         return Ok(());
     }
     let one_node = 1e-6 * region.size();

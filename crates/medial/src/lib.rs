@@ -56,7 +56,7 @@ pub use fit::EdgeSpline;
 
 use candidates::PairSource;
 use curve::Region;
-use numeric::certificate::{Doubt, Doubts};
+pub use numeric::certificate::{Doubt, Doubts, Verdict};
 use numeric::tolerance::check_pair;
 use numeric::tolerance::{DEFAULT_CHORD_TOL, DEFAULT_PARAM_TOL};
 use serde::{Deserialize, Serialize};
@@ -192,14 +192,35 @@ pub struct MedialAxis {
     pub nodes: Vec<Node>,
     /// The edges.
     pub edges: Vec<Edge>,
-    /// Whether every trimming decision and the place of every node followed from sign
-    /// tests on bounds (see the crate's documentation).
-    pub certified: bool,
-    /// Why not, where `certified` is false.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub reason: Option<String>,
+    /// The doubts met (none: every trimming decision and the place of every node followed
+    /// from sign tests on bounds, see the crate's documentation). Read with [`Verdict`]:
+    /// `certified()`, and `reason()` (the first doubt, stated); the document writes them as
+    /// its `certified` and, when it is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
     /// False when a search limit was hit.
     pub complete: bool,
+}
+
+/// Whether the axis is certified, and why not, read off its doubts.
+///
+/// ```
+/// use curve::{Profile, Region, Segment};
+/// use medial::{medial_axis, Doubt, MedialOptions, Verdict};
+/// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+/// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+/// let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+/// let mut axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+/// assert!(axis.certified() && axis.reason().is_none());
+/// // A doubt met makes it not certified; the first one met is its reason.
+/// axis.doubts.add(Doubt::SearchLimit);
+/// assert!(!axis.certified());
+/// assert_eq!(axis.reason().as_deref(), Some("a search limit was hit"));
+/// ```
+impl Verdict for MedialAxis {
+    fn doubts(&self) -> &Doubts {
+        &self.doubts
+    }
 }
 
 /// The medial axis of `region`.
@@ -266,8 +287,7 @@ fn empty_axis() -> MedialAxis {
     MedialAxis {
         nodes: Vec::new(),
         edges: Vec::new(),
-        certified: false,
-        reason: None,
+        doubts: Doubt::SearchLimit.into(),
         complete: false,
     }
 }
@@ -362,14 +382,13 @@ fn axis_of(
         .map(|d| certificate::placed(d, &sites, &axis))
         .into_iter()
         .collect();
-    axis.certified = doubts.is_empty();
-    axis.reason = doubts.reason();
+    axis.doubts = doubts;
     if opts.fit {
         let tol = traced.chord_tol * sites.size;
         for e in &mut axis.edges {
             e.bspline = Some(fit::fit_edge(&e.xy, &e.radius, tol));
         }
     }
-    let stands = !guessed || (axis.certified && !loose_join);
+    let stands = !guessed || (axis.certified() && !loose_join);
     Ok((axis, stands))
 }

@@ -2,7 +2,7 @@
 //! holes, and closed B-splines round a star.
 
 use crate::candidates::PairSource;
-use crate::{axis_of, MedialAxis, MedialOptions};
+use crate::{axis_of, MedialAxis, MedialOptions, Verdict};
 use curve::{Profile, Region, Segment, SegmentKind, SplineCurve, V2};
 
 /// The points of a star: at `radii[i]` from the origin, at equal angles.
@@ -140,7 +140,7 @@ pub(crate) fn stands_as_the_bounds(
         };
         tried += 1;
         let bounds = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
-        certified += usize::from(bounds.certified);
+        certified += usize::from(bounds.certified());
         for (&(source, same), stood) in paths.iter().zip(&mut stood) {
             let (found, stands) = axis_of(&region, &opts, source).unwrap();
             if stands {

@@ -393,7 +393,7 @@ impl Tracer<'_, '_> {
 mod tests {
     use crate::candidates::PairSource;
     use crate::test_shapes::{random_rounded, same_graph};
-    use crate::{axis_of, MedialOptions};
+    use crate::{axis_of, MedialOptions, Verdict};
     use curve::{Region, V2};
     use testkit::outlines::{polygon, star_polygon};
     use testkit::rng;
@@ -410,9 +410,9 @@ mod tests {
         let region = region.unwrap();
         let opts = MedialOptions::default();
         let bounds = axis_of(&region, &opts, PairSource::Bounds).unwrap().0;
-        assert!(!bounds.certified);
+        assert!(!bounds.certified());
         // (The reason names the corner.)
-        let reason = bounds.reason.unwrap_or_default();
+        let reason = bounds.reason().unwrap_or_default();
         let coverage = numeric::certificate::Doubt::Coverage { unreached: None }.to_string();
         assert!(
             reason.starts_with(&coverage)
@@ -420,7 +420,7 @@ mod tests {
             "{reason}"
         );
         let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
-        assert!(stands && traced.certified, "{:?}", traced.reason);
+        assert!(stands && traced.certified(), "{:?}", traced.reason());
         let corner = [-0.5443380122571256, 0.9428210937203926];
         assert!(traced
             .nodes
@@ -445,7 +445,11 @@ mod tests {
         for n in [12usize, 25] {
             let region = testkit::outlines::gear(n);
             let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
-            assert!(stands && traced.certified, "gear {n}: {:?}", traced.reason);
+            assert!(
+                stands && traced.certified(),
+                "gear {n}: {:?}",
+                traced.reason()
+            );
             assert_eq!((traced.nodes.len(), traced.edges.len()), (4 * n, 4 * n));
             let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
             same_graph(&traced, &seeded, 2.0 * opts.chord_tol * region.size()).unwrap();
@@ -458,9 +462,9 @@ mod tests {
                     .unwrap();
                 let (again, stands) = axis_of(&moved, &opts, PairSource::SeedEdges).unwrap();
                 assert!(
-                    stands && again.certified,
+                    stands && again.certified(),
                     "gear {n} moved by {turn}, {scale}: {:?}",
-                    again.reason
+                    again.reason()
                 );
                 let undo = |x: [f64; 2]| {
                     let (u, v) = (x[0] - shift[0], x[1] - shift[1]);
@@ -490,7 +494,11 @@ mod tests {
             let region = region_of(&star_polygon(n));
             let opts = MedialOptions::default();
             let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
-            assert!(stands && traced.certified, "star {n}: {:?}", traced.reason);
+            assert!(
+                stands && traced.certified(),
+                "star {n}: {:?}",
+                traced.reason()
+            );
             let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
             same_graph(&traced, &seeded, 2.0 * opts.chord_tol * region.size()).unwrap();
         }

@@ -19,6 +19,7 @@ mod sampled_voronoi;
 use curve::{Affine, ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use judge::{judge, CHORD};
 use medial::{medial_axis, MedialAxis, MedialOptions};
+use numeric::certificate::Verdict;
 
 /// The segments of an SVG path of `M`, `L`, `H`, `V`, `C` and `Z` (absolute or relative),
 /// one subpath; `Z` draws its closing line unless the last point is the first.
@@ -139,9 +140,9 @@ fn assert_right(name: &str, region: &Region, skip: &[usize], certify: impl Fn(us
             panic!("{name} under {map:?}: {e}");
         }
         assert!(
-            a.certified || !certify(k),
+            a.certified() || !certify(k),
             "{name} under {map:?}: {:?}",
-            a.reason
+            a.reason()
         );
     }
 }

@@ -6,6 +6,7 @@
 use curve::watch::Watch;
 use curve::Region;
 use medial::{medial_axis, Error, MedialOptions};
+use numeric::certificate::Verdict;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -53,5 +54,5 @@ fn a_cancel_during_the_seed_diagram_is_answered() {
         "medial axis: the Voronoi diagram of the chords"
     );
     let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-    assert!(axis.certified, "{:?}", axis.reason);
+    assert!(axis.certified(), "{:?}", axis.reason());
 }

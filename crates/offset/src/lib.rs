@@ -43,7 +43,7 @@ pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};
 
 use curve::{ParamCurve, Profile, Region};
 use medial::MedialAxis;
-use numeric::certificate::{Certified, Doubt, Doubts};
+pub use numeric::certificate::{Doubt, Doubts, Verdict};
 use numeric::tolerance::ChordTol;
 use read_back::{read_back, ReadBack};
 use serde::{Deserialize, Serialize};
@@ -92,13 +92,21 @@ pub struct Offset {
 pub struct Offsets {
     /// One per distance asked, in the order asked.
     pub offsets: Vec<Offset>,
-    /// Whether the axis was certified and every seam closed by Newton's method.
-    pub certified: bool,
-    /// Why not, where `certified` is false.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub reason: Option<String>,
+    /// The doubts met (none: the axis was certified and every seam closed by Newton's
+    /// method). Where the axis is not certified, [`Doubt::AxisUncertified`] comes first and
+    /// the axis's own doubts after it. Read with [`Verdict`]: `certified()`, and `reason()`
+    /// (the first doubt, stated); the document writes them as its `certified` and, when it
+    /// is false, `reason` fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
     /// Whether the axis was complete and the seams joined into loops.
     pub complete: bool,
+}
+
+impl Verdict for Offsets {
+    fn doubts(&self) -> &Doubts {
+        &self.doubts
+    }
 }
 
 /// Why offsets could not be computed.
@@ -131,7 +139,7 @@ pub fn offsets(
     distances: &[f64],
     opts: &OffsetOptions,
 ) -> Result<Offsets, Error> {
-    Ok(offsets_on(region, axis, distances, opts, false)?.value)
+    offsets_on(region, axis, distances, opts, false)
 }
 
 /// The outward offsets of `region` at each of `distances` (the boundary of the points within
@@ -153,7 +161,7 @@ pub fn outward_offsets(
             why: "outward, must stay below half the region's size (the exterior axis's margin)",
         });
     }
-    let mut found = offsets_on(region, exterior, distances, opts, true)?.value;
+    let mut found = offsets_on(region, exterior, distances, opts, true)?;
     // (Walked with the outside on the left: turned round, the grown region is on the left.)
     for o in &mut found.offsets {
         for l in &mut o.loops {
@@ -176,15 +184,15 @@ pub fn outward_offsets(
     Ok(found)
 }
 
-/// The offsets inward, or `outward`, from the axis on that side, with the doubts their
-/// `certified` and `reason` state.
+/// The offsets inward, or `outward`, from the axis on that side, with the doubts met (the
+/// axis's among them).
 pub(crate) fn offsets_on(
     region: &Region,
     axis: &MedialAxis,
     distances: &[f64],
     opts: &OffsetOptions,
     outward: bool,
-) -> Result<Certified<Offsets>, Error> {
+) -> Result<Offsets, Error> {
     if let Err(e) = ChordTol::new(opts.chord_tol) {
         return Err(Error::BadOption {
             field: "chord_tol",
@@ -323,8 +331,10 @@ pub(crate) fn offsets_on(
     }
     // The doubts in the order they are stated: the first is the reason.
     let mut doubts = Doubts::none();
-    if !axis.certified {
+    if !axis.certified() {
+        // (The axis's own doubts after it, as values: the reason stays this one.)
         doubts.add(Doubt::AxisUncertified);
+        doubts.join(axis.doubts.clone());
     }
     if !all_closed {
         doubts.add(Doubt::SeamUnconverged);
@@ -352,14 +362,10 @@ pub(crate) fn offsets_on(
     if !loops_apart {
         doubts.add(Doubt::LoopsCross);
     }
-    Ok(Certified {
-        value: Offsets {
-            offsets: found,
-            certified: doubts.is_empty(),
-            reason: doubts.reason(),
-            complete: axis.complete && consistent,
-        },
+    Ok(Offsets {
+        offsets: found,
         doubts,
+        complete: axis.complete && consistent,
     })
 }
 

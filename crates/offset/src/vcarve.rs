@@ -14,7 +14,7 @@
 use crate::{Error, OffsetLoop, OffsetOptions};
 use curve::Region;
 use medial::MedialAxis;
-use numeric::certificate::{Doubt, Doubts};
+use numeric::certificate::{Doubts, Verdict};
 use serde::{Deserialize, Serialize};
 
 /// Options of [`vcarve`].
@@ -49,13 +49,21 @@ pub struct VCarve {
     /// The flat passes at depth `−max_depth`: the offset at `max_depth·tan(angle/2)` (none
     /// where the axis never gets that deep).
     pub flats: Vec<OffsetLoop>,
-    /// Whether the axis (and the flat passes' offset) are certified.
-    pub certified: bool,
-    /// Why not, where `certified` is false.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub reason: Option<String>,
+    /// The doubts met (none: the axis and the flat passes' offset are certified): the
+    /// axis's own first, then the flat passes'. Read with [`Verdict`]: `certified()`, and
+    /// `reason()` (the first doubt, stated: where the axis is not certified, its own
+    /// reason); the document writes them as its `certified` and, when it is false, `reason`
+    /// fields.
+    #[serde(flatten)]
+    pub doubts: Doubts,
     /// Whether the axis (and the offset) are complete.
     pub complete: bool,
+}
+
+impl Verdict for VCarve {
+    fn doubts(&self) -> &Doubts {
+        &self.doubts
+    }
 }
 
 impl VCarveOptions {
@@ -115,7 +123,7 @@ impl VCarveOptions {
 /// let carve = vcarve(&region, &axis, &opts).unwrap();
 /// let deepest = carve.paths.iter().flat_map(|p| &p.xyz).map(|p| p[2]).fold(0.0, f64::min);
 /// assert!((deepest + 1.0).abs() < 1e-9);
-/// assert!(carve.flats.is_empty() && carve.certified);
+/// assert!(carve.flats.is_empty() && carve.certified());
 /// ```
 pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Result<VCarve, Error> {
     opts.validate()?;
@@ -136,22 +144,17 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
         })
         .collect();
     let mut complete = axis.complete;
-    let mut doubts = Doubts::none();
-    if !axis.certified {
-        doubts.add(Doubt::AxisUncertified);
-    }
-    // (The flat passes' doubts, where asked: they are stated after the axis's own reason.)
-    let mut flats_reason = None;
+    // (The axis's doubts as values, first: where the axis is not certified the carve states
+    // its reason, as it did when that reason was a string. The flat passes' follow.)
+    let mut doubts = axis.doubts.clone();
     let mut flats = Vec::new();
     if let Some(depth) = opts.max_depth {
         // (Asked whenever there is a limit: where the axis never reaches it the region has
         // no offset there and the loops are none; the offset's own doubts, a neck between
         // vertices, say whether it does.)
-        let (found, found_doubts) =
-            crate::offsets_on(region, axis, &[widest], &opts.offset, false)?.into_parts();
+        let found = crate::offsets_on(region, axis, &[widest], &opts.offset, false)?;
         complete &= found.complete;
-        flats_reason = found.reason;
-        doubts.join(found_doubts);
+        doubts.join(found.doubts);
         flats = found.offsets.into_iter().flat_map(|o| o.loops).collect();
         // Where the axis is deeper, the path follows the flat pass at −H (the contract's
         // "Output files and V-carving"), within the chord tolerance of it.
@@ -171,21 +174,9 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
         max_depth: opts.max_depth,
         paths,
         flats,
-        certified: doubts.is_empty(),
-        reason: stated(&doubts, axis, flats_reason),
+        doubts,
         complete,
     })
-}
-
-/// The reason a carve with `doubts` states: the axis's own reason (until the axis carries its
-/// doubts as values, its reason is how they reach the carve), else the flat passes' (None
-/// where `doubts` are none).
-fn stated(doubts: &Doubts, axis: &MedialAxis, flats_reason: Option<String>) -> Option<String> {
-    if doubts.is_empty() {
-        None
-    } else {
-        axis.reason.clone().or(flats_reason)
-    }
 }
 
 /// A run of axis points `(xy, radius)`, and the nodes it starts and ends at (`None` where it
@@ -346,8 +337,7 @@ mod tests {
                 vec![[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [4.0, 0.0]],
                 vec![0.0, 1.0, 2.0, 1.0, 0.0],
             )],
-            certified: true,
-            reason: None,
+            doubts: Doubts::none(),
             complete: true,
         };
         let pieces = clipped_pieces(&axis, 1.5);
@@ -377,8 +367,7 @@ mod tests {
                 edge(2, 0, vec![[1.0, 1.0], [0.0, 0.0]], vec![0.0, 1.0]),
                 edge(0, 3, vec![[0.0, 0.0], [1.0, -1.0]], vec![1.0, 0.0]),
             ],
-            certified: true,
-            reason: None,
+            doubts: Doubts::none(),
             complete: true,
         };
         let paths = chained(clipped_pieces(&axis, f64::INFINITY));

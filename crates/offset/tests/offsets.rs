@@ -7,6 +7,7 @@ mod common;
 use common::{arcs_sweep, ends, samples};
 use curve::{ParamCurve, Profile, Region, Segment};
 use medial::{medial_axis, MedialOptions};
+use numeric::certificate::Verdict;
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -46,7 +47,7 @@ fn pocket() -> Region {
 
 fn offsets_of(region: &Region, distances: &[f64]) -> Offsets {
     let axis = medial_axis(region, &MedialOptions::default()).unwrap();
-    assert!(axis.certified, "{:?}", axis.reason);
+    assert!(axis.certified(), "{:?}", axis.reason());
     offsets(region, &axis, distances, &OffsetOptions::default()).unwrap()
 }
 
@@ -221,7 +222,7 @@ fn a_rectangle_shrinks_to_a_rectangle_until_it_vanishes() {
         found.offsets[3].loops.is_empty(),
         "beyond half the width nothing is left"
     );
-    assert!(found.certified && found.complete);
+    assert!(found.certified() && found.complete);
     let drawn = found.offsets[0].loops[0].polyline(8);
     assert_eq!(drawn.len(), 9, "four lines, closed");
     assert_eq!(drawn.first(), drawn.last());
@@ -254,7 +255,7 @@ fn the_pocket_keeps_its_island_then_splits_then_vanishes() {
     // wall (2.5 wide) is open; then one loop left of the island; then none.
     assert_eq!(counts[0], 2, "{counts:?}");
     assert_eq!(counts.last(), Some(&0), "{counts:?}");
-    assert!(found.certified && found.complete, "{:?}", found.reason);
+    assert!(found.certified() && found.complete, "{:?}", found.reason());
 }
 
 #[test]
@@ -615,7 +616,7 @@ mod random_regions {
         ) {
             let region = region(&radii, &turns, hole);
             let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-            prop_assume!(axis.certified);
+            prop_assume!(axis.certified());
             let found = offsets(&region, &axis, &distances, &OffsetOptions::default()).unwrap();
             prop_assert!(found.complete);
             check_all(&region, &found, 1e-6, false)?;
@@ -625,7 +626,7 @@ mod random_regions {
                 &MedialOptions { exterior: true, ..MedialOptions::default() },
             )
             .unwrap();
-            if outside.certified {
+            if outside.certified() {
                 let grown =
                     offset::outward_offsets(&region, &outside, &distances, &OffsetOptions::default())
                         .unwrap();
@@ -679,7 +680,7 @@ mod random_regions {
             let Some(outer) = testkit::profiles::assemble(segs, 0, false) else { return Ok(()) };
             let Ok(region) = Region::new(outer, round_hole(hole)) else { return Ok(()) };
             let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-            prop_assume!(axis.certified);
+            prop_assume!(axis.certified());
             let opts = OffsetOptions::default();
             let found = offsets(&region, &axis, &distances, &opts).unwrap();
             prop_assert!(found.complete);
@@ -689,10 +690,10 @@ mod random_regions {
             }
             // (Certified but where the radius may dip between two of the axis's vertices, a
             // neck the bound from its slope cannot rule out.)
-            if found.certified {
+            if found.certified() {
                 SPLINE_CERTIFIED.with(|c| c.set(c.get() + 1));
             } else {
-                prop_assert!(found.reason.as_deref().is_some_and(|r| r.contains("neck")), "{:?}", found.reason);
+                prop_assert!(found.reason().as_deref().is_some_and(|r| r.contains("neck")), "{:?}", found.reason());
             }
             SPLINE_CASES.with(|c| c.set(c.get() + 1));
             check_all(&region, &found, chord + 1e-5, false)?;
@@ -740,7 +741,7 @@ fn feet_listed_in_either_order_are_paired_by_side() {
     turns[8] = -0.47010607440650237;
     let region = random_regions::region(&radii, &turns, false);
     let found = offsets_of(&region, &[0.43051319204881144]);
-    assert!(found.certified && found.complete, "{:?}", found.reason);
+    assert!(found.certified() && found.complete, "{:?}", found.reason());
     check(&region, &found, 1e-6);
 }
 
@@ -770,7 +771,7 @@ fn offsets_compose() {
     };
     for d2 in [0.25, 0.5, 0.6] {
         let axis = medial_axis(&inner[0], &MedialOptions::default()).unwrap();
-        assert!(axis.certified, "{:?}", axis.reason);
+        assert!(axis.certified(), "{:?}", axis.reason());
         let again = offsets(&inner[0], &axis, &[d2], &opts).unwrap();
         let direct = offsets_of(&region, &[0.5 + d2]);
         assert_eq!(
@@ -1018,7 +1019,7 @@ fn a_neck_between_two_round_holes_closes() {
         );
         // (At 0.4999999 the neck's least radius, found on the axis between its vertices, is
         // 1e-7 above the distance: open.)
-        assert!(found.certified, "d = {d}: {:?}", found.reason);
+        assert!(found.certified(), "d = {d}: {:?}", found.reason());
     }
 }
 
@@ -1117,7 +1118,7 @@ fn offsets_moved_scaled_or_rotated_are_the_moved_offsets() {
         (chain, vec![0.2, 0.5, 0.9]),
     ] {
         let base = offsets_of(&region, &distances);
-        assert!(base.certified, "{:?}", base.reason);
+        assert!(base.certified(), "{:?}", base.reason());
         for map in &maps {
             let scale = map.determinant().abs().sqrt();
             let moved_region = region.transformed(map).unwrap();
@@ -1125,7 +1126,11 @@ fn offsets_moved_scaled_or_rotated_are_the_moved_offsets() {
             let axis = medial_axis(&moved_region, &MedialOptions::default()).unwrap();
             // (Far from the origin the axis's digits may run out: uncertified, then said so.)
             let translated = map.0[..4] == [1.0, 0.0, 0.0, 1.0];
-            assert!(axis.certified || translated, "{map:?}: {:?}", axis.reason);
+            assert!(
+                axis.certified() || translated,
+                "{map:?}: {:?}",
+                axis.reason()
+            );
             let moved = offsets(
                 &moved_region,
                 &axis,
@@ -1133,11 +1138,11 @@ fn offsets_moved_scaled_or_rotated_are_the_moved_offsets() {
                 &OffsetOptions::default(),
             )
             .unwrap();
-            if !axis.certified {
-                assert!(!moved.certified);
+            if !axis.certified() {
+                assert!(!moved.certified());
                 continue;
             }
-            assert!(moved.certified, "{map:?}: {:?}", moved.reason);
+            assert!(moved.certified(), "{map:?}: {:?}", moved.reason());
             for (b, m) in base.offsets.iter().zip(&moved.offsets) {
                 assert_eq!(b.loops.len(), m.loops.len(), "{map:?}, d = {}", b.distance);
                 assert!(m.error <= 1e-3 * 4.0 * scale, "{map:?}: error {}", m.error);
@@ -1214,7 +1219,7 @@ fn the_seams_either_side_of_a_dip_are_apart() {
     let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
     let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
     let found = offsets_of(&region, &[0.31863438899044777]);
-    assert!(found.certified, "{:?}", found.reason);
+    assert!(found.certified(), "{:?}", found.reason());
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 1);
     assert!(loops[0].profile().is_ok(), "{:?}", loops[0].profile().err());
@@ -1237,7 +1242,7 @@ fn a_neck_between_two_vertices_is_pinched_through() {
     let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
     let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
     let found = offsets_of(&region, &[0.3386013494889568]);
-    assert!(found.certified, "{:?}", found.reason);
+    assert!(found.certified(), "{:?}", found.reason());
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 1, "{loops:?}");
     assert!(loops[0].profile().is_ok(), "{:?}", loops[0].profile().err());
@@ -1258,7 +1263,7 @@ fn a_neck_where_the_axis_curves_round_a_hole_is_seen() {
     let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
     let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
     let found = offsets_of(&region, &[0.5530143102806266]);
-    assert!(found.certified, "{:?}", found.reason);
+    assert!(found.certified(), "{:?}", found.reason());
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 2);
     for l in loops {
@@ -1274,7 +1279,7 @@ fn a_neck_where_the_axis_curves_round_a_hole_is_seen() {
 fn a_bump_between_two_vertices_has_its_loop() {
     let region = oval();
     let mut axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-    assert!(axis.certified, "{:?}", axis.reason);
+    assert!(axis.certified(), "{:?}", axis.reason());
     // The widest vertex inside an edge, and the edge without it.
     let (e, k) = axis
         .edges
@@ -1293,7 +1298,7 @@ fn a_bump_between_two_vertices_has_its_loop() {
     edge.boundary.remove(k);
     let d = below + 0.5 * (widest - below);
     let found = offsets(&region, &axis, &[d], &OffsetOptions::default()).unwrap();
-    assert!(found.certified, "{:?}", found.reason);
+    assert!(found.certified(), "{:?}", found.reason());
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 1, "d = {d} between {below} and {widest}");
     let near = loops[0]
@@ -1331,7 +1336,7 @@ fn offsets_at_the_axis_vertices_radii_are_certified() {
         for &r in &radii {
             let aside = 1e-6 * size;
             let found = offsets(&region, &axis, &[r - aside, r, r + aside], &opts).unwrap();
-            assert!(found.certified, "d = {r}: {:?}", found.reason);
+            assert!(found.certified(), "d = {r}: {:?}", found.reason());
             check_against(&chords, &found, 1e-3 * size, 100);
             let count: Vec<usize> = found.offsets.iter().map(|o| o.loops.len()).collect();
             assert!(

@@ -10,6 +10,7 @@ mod common;
 use common::{arcs_sweep, ends, samples, winding};
 use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::{medial_axis, MedialOptions};
+use numeric::certificate::Verdict;
 use offset::{offsets, outward_offsets, OffsetOptions, Offsets};
 
 /// The region bounded by the closed clamped cubic through (by) `points`, its first and last
@@ -53,7 +54,7 @@ fn distance(poly: &[[f64; 2]], p: [f64; 2]) -> f64 {
 /// (within the chord tolerance), and its winding number on a grid 1 on the side kept
 /// (within `d` of the region, or in it farther than `d`) and 0 off it, beyond a margin.
 fn check(region: &Region, found: &Offsets, d: f64, outward: bool) {
-    assert!(found.certified, "d = {d}: {:?}", found.reason);
+    assert!(found.certified(), "d = {d}: {:?}", found.reason());
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 1, "d = {d}: {loops:?}");
     let poly = boundary(region);
@@ -125,7 +126,7 @@ fn outward_a_corner_where_a_splines_ends_meet_grows_its_arc() {
         ..MedialOptions::default()
     };
     let axis = medial_axis(&region, &exterior).unwrap();
-    assert!(axis.certified, "{:?}", axis.reason);
+    assert!(axis.certified(), "{:?}", axis.reason());
     for d in [0.3, 1.0] {
         let found = outward_offsets(&region, &axis, &[d], &OffsetOptions::default()).unwrap();
         check(&region, &found, d, true);
@@ -149,7 +150,7 @@ fn inward_a_notch_where_a_splines_ends_meet_is_an_arc() {
         [0.0, 0.0],
     ]);
     let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-    assert!(axis.certified, "{:?}", axis.reason);
+    assert!(axis.certified(), "{:?}", axis.reason());
     for d in [0.2, 0.5] {
         let found = offsets(&region, &axis, &[d], &OffsetOptions::default()).unwrap();
         check(&region, &found, d, false);

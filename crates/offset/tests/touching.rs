@@ -12,6 +12,7 @@ mod common;
 use common::{ends, winding};
 use curve::{Affine, Profile, Region, Segment};
 use medial::{medial_axis, MedialOptions};
+use numeric::certificate::Verdict;
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -104,11 +105,11 @@ fn polygon_of(segments: &[OffsetSegment]) -> Vec<[f64; 2]> {
 fn plate_offsets(map: &Affine, distances: &[f64]) -> Offsets {
     let region = plate(map);
     let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-    assert!(axis.certified, "{map:?}: {:?}", axis.reason);
+    assert!(axis.certified(), "{map:?}: {:?}", axis.reason());
     let scale = map.determinant().abs().sqrt();
     let moved: Vec<f64> = distances.iter().map(|d| d * scale).collect();
     let found = offsets(&region, &axis, &moved, &OffsetOptions::default()).unwrap();
-    assert!(found.certified, "{map:?}: {:?}", found.reason);
+    assert!(found.certified(), "{map:?}: {:?}", found.reason());
     let back = inverse(map);
     for (o, &d) in found.offsets.iter().zip(distances) {
         let loops: Vec<Vec<[f64; 2]>> = o

@@ -7,6 +7,7 @@ use curvekit::curve::ParamCurve;
 use curvekit::curve::Profile;
 use curvekit::io::Curve;
 use curvekit::svg::{side_by_side, Figure, Mark, DOT};
+use numeric::certificate::Verdict;
 use zeroset::{Bisector, Branch, ProfileBisector};
 
 /// The colour of a family of antipodal pairs (its two end pairs), set apart from the isolated
@@ -62,7 +63,7 @@ pub(crate) fn antipodal_figure(curve: &Curve, found: &Antipodal, title: String) 
         0,
     );
     fig.title(title);
-    fig.status(found.certified, found.reason.as_deref());
+    fig.status(found.certified(), found.reason().as_deref());
     fig.render()
 }
 
@@ -91,7 +92,7 @@ pub(crate) fn profile_antipodal_figure(
         found.corners.len(),
     );
     fig.title(title);
-    fig.status(found.certified, found.reason.as_deref());
+    fig.status(found.certified(), found.reason().as_deref());
     fig.render()
 }
 

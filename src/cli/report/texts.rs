@@ -8,12 +8,13 @@ use antipodal::{
     ProfileInflections, ProfileTangents, Tangents,
 };
 use curvekit::io::Curve;
+use numeric::certificate::Verdict;
 use std::fmt::Write as _;
 use zeroset::{Bisector, ProfileBisector, ProfileBranch};
 
 /// The readable inflection report.
 pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&Stats>) -> String {
-    let mut s = inflection_lines(curve, &r.inflections, r.certified);
+    let mut s = inflection_lines(curve, &r.inflections, r.certified());
     if let Some(st) = stats {
         let _ = writeln!(s, "{}", time_line(st));
     }
@@ -57,7 +58,7 @@ pub(crate) fn profile_inflections_text(
     r: &ProfileInflections,
     stats: Option<&Stats>,
 ) -> String {
-    let mut s = inflection_lines(curve, &r.inflections, r.certified);
+    let mut s = inflection_lines(curve, &r.inflections, r.certified());
     let _ = writeln!(s, "corners:     {}", r.corners.len());
     for (i, c) in r.corners.iter().enumerate() {
         let kind = match c.kind {
@@ -101,7 +102,7 @@ pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>
         s,
         "pairs:       {} ({}{complete})",
         r.pairs.len(),
-        certified_word(r.certified)
+        certified_word(r.certified())
     );
     for (k, p) in r.pairs.iter().enumerate() {
         let _ = writeln!(
@@ -160,9 +161,9 @@ pub(crate) fn profile_antipodal_text(
         s,
         "pairs:       {} ({}{complete})",
         r.pairs.len(),
-        certified_word(r.certified)
+        certified_word(r.certified())
     );
-    if let Some(why) = r.reason.as_ref().filter(|_| !r.certified) {
+    if let Some(why) = r.reason().as_ref().filter(|_| !r.certified()) {
         let _ = writeln!(s, "  (why: {why})");
     }
     for (k, p) in r.pairs.iter().enumerate() {
@@ -211,8 +212,7 @@ pub(crate) fn profile_antipodal_text(
     let corners = ProfileInflections {
         inflections: r.inflections.clone(),
         corners: r.corners.clone(),
-        certified: r.certified,
-        reason: None,
+        doubts: r.doubts.clone(),
     };
     // (Its first line names the curve again.)
     let rest = profile_inflections_text(curve, &corners, stats);
@@ -230,7 +230,7 @@ pub(crate) fn tangents_text(curves: &[&Curve], r: &Tangents, stats: Option<&Stat
         s,
         "lines:       {} ({})",
         r.lines.len(),
-        certified_word(r.certified)
+        certified_word(r.certified())
     );
     for (k, l) in r.lines.iter().enumerate() {
         let _ = writeln!(
@@ -265,9 +265,9 @@ pub(crate) fn profile_tangents_text(
         s,
         "lines:       {} ({})",
         r.lines.len(),
-        certified_word(r.certified)
+        certified_word(r.certified())
     );
-    if let Some(why) = r.reason.as_ref().filter(|_| !r.certified) {
+    if let Some(why) = r.reason().as_ref().filter(|_| !r.certified()) {
         let _ = writeln!(s, "  (why: {why})");
     }
     let end = |corner: bool, segment: usize| {

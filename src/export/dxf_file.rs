@@ -181,15 +181,14 @@ fn spline(degree: usize, knots: &[f64], points: impl Iterator<Item = Point>) -> 
 ///
 /// ```
 /// use curvekit::export::dxf_file::offsets_dxf;
-/// use offset::{Offset, OffsetLoop, OffsetSegment, Offsets};
+/// use offset::{Doubts, Offset, OffsetLoop, OffsetSegment, Offsets};
 /// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
 /// let segments = (0..4)
 ///     .map(|i| OffsetSegment::Line { from: square[i], to: square[(i + 1) % 4] })
 ///     .collect();
 /// let found = Offsets {
 ///     offsets: vec![Offset { distance: 0.5, loops: vec![OffsetLoop { segments, part: None }], error: 0.0 }],
-///     certified: true,
-///     reason: None,
+///     doubts: Doubts::none(),
 ///     complete: true,
 /// };
 /// let text = String::from_utf8(offsets_dxf(&found, Some("mm")).unwrap()).unwrap();

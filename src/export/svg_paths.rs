@@ -152,12 +152,11 @@ fn piece_start(s: &OffsetSegment) -> [f64; 2] {
 ///
 /// ```
 /// use curvekit::export::svg_paths::offsets_svg;
-/// use offset::{Offset, OffsetLoop, OffsetSegment, Offsets};
+/// use offset::{Doubts, Offset, OffsetLoop, OffsetSegment, Offsets};
 /// let circle = OffsetSegment::Arc { center: [0.0, 0.0], r: 2.0, start: 0.0, end: std::f64::consts::TAU };
 /// let found = Offsets {
 ///     offsets: vec![Offset { distance: 1.0, loops: vec![OffsetLoop { segments: vec![circle], part: None }], error: 0.0 }],
-///     certified: true,
-///     reason: None,
+///     doubts: Doubts::none(),
 ///     complete: true,
 /// };
 /// let svg = offsets_svg(&found, None).unwrap();

@@ -257,12 +257,12 @@ impl<'c> Prepared<'c> {
 /// functions instead ([`crate::antipodal`], [`crate::inflections`]), which prepare and run.
 ///
 /// ```
-/// use antipodal::{prepare, shapes::Ellipse, Options};
+/// use antipodal::{prepare, shapes::Ellipse, Options, Verdict};
 /// let e = Ellipse::new(3.0, 2.0, [1e8, -1e8]).unwrap();
 /// let p = prepare(&e);
 /// let r = p.antipodal(&Options::default()).unwrap();
 /// assert_eq!(r.pairs.len(), 2);
-/// assert!(r.certified);
+/// assert!(r.certified());
 /// ```
 pub fn prepare(curve: &dyn PlaneCurve) -> Prepared<'_> {
     let frame = frame_of(curve);

@@ -64,7 +64,7 @@ struct Raw {
 /// where every segment's decisions are (lines and arcs are exact rational curves).
 ///
 /// ```
-/// use antipodal::{profile_antipodal, Options};
+/// use antipodal::{profile_antipodal, Options, Verdict};
 /// use curve::{Profile, Segment};
 /// // A right triangle: the right-angle corner pairs with the foot of its perpendicular on
 /// // the hypotenuse; the two sharp corners pair along the hypotenuse (a corner sharper than
@@ -73,7 +73,7 @@ struct Raw {
 /// let sides = (0..3).map(|i| Segment::line(c[i], c[(i + 1) % 3]).unwrap()).collect();
 /// let t = Profile::new(sides, None).unwrap();
 /// let r = profile_antipodal(&t, &Options::default()).unwrap();
-/// assert!(r.certified);
+/// assert!(r.certified());
 /// assert_eq!(r.pairs.len(), 2);
 /// let foot = &r.pairs[0];
 /// assert_eq!((foot.corner, foot.kind), ([true, false], None));

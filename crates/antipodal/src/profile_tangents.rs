@@ -101,7 +101,7 @@ impl<'p> Side<'p> {
 /// segments; certified where every decision is.
 ///
 /// ```
-/// use antipodal::{profile_tangents, Options};
+/// use antipodal::{profile_tangents, Options, Verdict};
 /// use curve::{Profile, Segment};
 /// // Two squares side by side: the lines through opposite corners (the diagonals' cross
 /// // tangents) and the lines along the top and bottom edges (limit cases, left out).
@@ -111,7 +111,7 @@ impl<'p> Side<'p> {
 ///         .unwrap()
 /// };
 /// let r = profile_tangents(&square(0.0), &square(3.0), &Options::default()).unwrap();
-/// assert!(r.certified);
+/// assert!(r.certified());
 /// assert_eq!(r.lines.len(), 2);
 /// assert!(r.lines.iter().all(|l| l.corner == [true, true]));
 /// ```

@@ -113,7 +113,7 @@ impl VCarveOptions {
 /// ```
 /// use curve::{Profile, Region, Segment};
 /// use medial::{medial_axis, MedialOptions};
-/// use offset::{vcarve, OffsetOptions, VCarveOptions};
+/// use offset::{vcarve, OffsetOptions, VCarveOptions, Verdict};
 /// // A 4 × 2 rectangle with a 90° bit: 1 deep along the middle line, 0 at the corners.
 /// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
 /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();

@@ -236,10 +236,14 @@ macro_rules! result_class {
                     .find_map(|c| c.drawing.as_ref().and_then(|d| d.units.clone()))
             }
 
+            /// Equal where the documents are (a result read back from its document, unpickled,
+            /// keeps each doubt as the reason it states, not its kind).
             fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-                other
-                    .cast::<$class>()
-                    .is_ok_and(|o| o.get().found == self.found && o.get().curves == self.curves)
+                let document = |found: &$found| serde_json::to_value(found).ok();
+                other.cast::<$class>().is_ok_and(|o| {
+                    o.get().curves == self.curves
+                        && document(&o.get().found) == document(&self.found)
+                })
             }
 
             $($extra)*

@@ -31,6 +31,8 @@ pub use documents::{json_document, json_document_of, CurveSummary, DrawingSummar
 use errors::{antipodal_error, refuse, zeroset_error};
 pub use errors::{CommandError, FailureKind, UsageError};
 pub use found::{AntipodalFound, BisectorFound, InflectionsFound, TangentsFound};
+/// The verdict every result answers (`certified()`, `reason()`), and the doubts it reads.
+pub use numeric::certificate::{Doubt, Doubts, Verdict};
 pub use prepared::{antipodal, inflections, PreparedCurve};
 pub use regions::{
     medial, offset, size_of, validate_distances, validate_offset, validate_vcarve_options, vcarve,

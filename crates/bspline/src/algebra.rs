@@ -7,6 +7,7 @@
 //! vector off the blossom of one piece in its support. The blossom identity makes the result
 //! exact; picking the widest piece in the support keeps the extrapolation, and so rounding, small.
 
+use crate::bilinear::Bilinear;
 use crate::error::{Error, Result};
 use crate::knots::multiplicity;
 use crate::refine::Bezier;
@@ -14,13 +15,6 @@ use crate::spline::BSpline;
 
 /// Relative tolerance for two domains to count as the same.
 const DOMAIN_RTOL: f64 = 1e-12;
-
-/// How the coordinates of two factors combine into the product's coordinates:
-/// `out[k] += c * a[i] * b[j]` for every term `(i, j, k, c)`.
-struct Bilinear<'a> {
-    terms: &'a [(usize, usize, usize, f64)],
-    out_dim: usize,
-}
 
 fn check_same_domain(a: &BSpline, b: &BSpline) -> Result<(f64, f64)> {
     let (da, db) = (a.domain(), b.domain());
@@ -70,7 +64,7 @@ fn binomials(n: usize) -> smallvec::SmallVec<[f64; 32]> {
     row
 }
 
-fn product(a: &BSpline, b: &BSpline, form: &Bilinear<'_>) -> Result<BSpline> {
+fn product(a: &BSpline, b: &BSpline, form: &Bilinear) -> Result<BSpline> {
     let (lo, hi) = check_same_domain(a, b)?;
     // Work on b's parameters mapped exactly onto a's domain so breakpoints coincide.
     let b_owned;
@@ -124,7 +118,7 @@ fn product(a: &BSpline, b: &BSpline, form: &Bilinear<'_>) -> Result<BSpline> {
 
 /// The product of two Bézier pieces on one interval, combined by `form`:
 /// `h_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) f_i g_j`.
-fn bezier_product(fa: &Bezier, fb: &Bezier, form: &Bilinear<'_>) -> Bezier {
+fn bezier_product(fa: &Bezier, fb: &Bezier, form: &Bilinear) -> Bezier {
     let (p, q, da, db, dout) = (fa.degree, fb.degree, fa.dim, fb.dim, form.out_dim);
     let deg = p + q;
     let (cp, cq, cd) = (binomials(p), binomials(q), binomials(deg));
@@ -135,7 +129,7 @@ fn bezier_product(fa: &Bezier, fb: &Bezier, form: &Bilinear<'_>) -> Bezier {
             let bj = &fb.coefs[j * db..(j + 1) * db];
             let w = cp[i] * cq[j] / cd[i + j];
             let hk = &mut h[(i + j) * dout..(i + j + 1) * dout];
-            for &(ia, ib, k, c) in form.terms {
+            for &(ia, ib, k, c) in form.terms.iter() {
                 hk[k] += w * c * ai[ia] * bj[ib];
             }
         }
@@ -210,34 +204,12 @@ impl BSpline {
                 got: self.dim(),
             });
         }
-        let terms: Vec<_> = (0..other.dim()).map(|k| (0, k, k, 1.0)).collect();
-        product(
-            self,
-            other,
-            &Bilinear {
-                terms: &terms,
-                out_dim: other.dim(),
-            },
-        )
+        product(self, other, &Bilinear::scalar_times(other.dim()))
     }
 
     /// Dot product of two functions of the same dimension, a scalar function.
     pub fn dot(&self, other: &BSpline) -> Result<BSpline> {
-        if self.dim() != other.dim() {
-            return Err(Error::DimensionMismatch {
-                expected: self.dim(),
-                got: other.dim(),
-            });
-        }
-        let terms: Vec<_> = (0..self.dim()).map(|k| (k, k, 0, 1.0)).collect();
-        product(
-            self,
-            other,
-            &Bilinear {
-                terms: &terms,
-                out_dim: 1,
-            },
-        )
+        product(self, other, &Bilinear::dot([self.dim(), other.dim()])?)
     }
 
     /// The planar cross product `x_a y_b − y_a x_b` of two 2D functions, a scalar function.
@@ -250,51 +222,12 @@ impl BSpline {
     /// assert!((k.eval_scalar(0.6) - 0.36).abs() < 1e-15);
     /// ```
     pub fn cross(&self, other: &BSpline) -> Result<BSpline> {
-        for d in [self.dim(), other.dim()] {
-            if d != 2 {
-                return Err(Error::DimensionMismatch {
-                    expected: 2,
-                    got: d,
-                });
-            }
-        }
-        let terms = [(0, 1, 0, 1.0), (1, 0, 0, -1.0)];
-        product(
-            self,
-            other,
-            &Bilinear {
-                terms: &terms,
-                out_dim: 1,
-            },
-        )
+        product(self, other, &Bilinear::cross([self.dim(), other.dim()])?)
     }
 
     /// The 3D cross product of two 3D functions (used for homogeneous planar curves).
     pub fn cross3(&self, other: &BSpline) -> Result<BSpline> {
-        for d in [self.dim(), other.dim()] {
-            if d != 3 {
-                return Err(Error::DimensionMismatch {
-                    expected: 3,
-                    got: d,
-                });
-            }
-        }
-        let terms = [
-            (1, 2, 0, 1.0),
-            (2, 1, 0, -1.0),
-            (2, 0, 1, 1.0),
-            (0, 2, 1, -1.0),
-            (0, 1, 2, 1.0),
-            (1, 0, 2, -1.0),
-        ];
-        product(
-            self,
-            other,
-            &Bilinear {
-                terms: &terms,
-                out_dim: 3,
-            },
-        )
+        product(self, other, &Bilinear::cross3([self.dim(), other.dim()])?)
     }
 
     /// Raises the degree by `times`; the function is unchanged and every knot's multiplicity

@@ -17,6 +17,7 @@
 //! - [`tensor`]: bivariate tensor-product functions `F(t, r)`.
 
 mod algebra;
+mod bilinear;
 mod error;
 pub mod fit;
 pub mod knots;

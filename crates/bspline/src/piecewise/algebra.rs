@@ -4,22 +4,9 @@
 //! operands' pieces; the continuity at a break is the lesser of the operands'.
 
 use super::{binomials, Piecewise};
+use crate::bilinear::Bilinear;
 use crate::error::{Error, Result};
 use crate::rounding;
-
-/// How the coordinates of two factors combine into the product's coordinates:
-/// `out[k] += c · a[i] · b[j]` for every term `(i, j, k, c)`.
-struct Bilinear<'a> {
-    terms: &'a [(usize, usize, usize, f64)],
-    out_dim: usize,
-}
-
-impl Bilinear<'_> {
-    /// The number of terms of output coordinate `k`.
-    fn terms_of(&self, k: usize) -> usize {
-        self.terms.iter().filter(|t| t.2 == k).count()
-    }
-}
 
 impl Piecewise {
     fn same_breaks(&self, other: &Piecewise) -> Result<()> {
@@ -33,7 +20,7 @@ impl Piecewise {
         }
     }
 
-    fn product(&self, other: &Piecewise, form: &Bilinear<'_>) -> Result<Piecewise> {
+    fn product(&self, other: &Piecewise, form: &Bilinear) -> Result<Piecewise> {
         self.same_breaks(other)?;
         let (p, q) = (self.degree, other.degree);
         let deg = p + q;
@@ -50,7 +37,7 @@ impl Piecewise {
                 for (jb, bj) in fb.chunks_exact(db).enumerate() {
                     let w = cp[ia] * cq[jb] / cd[ia + jb];
                     let hk = &mut h[(ia + jb) * dout..(ia + jb + 1) * dout];
-                    for &(x, y, k, c) in form.terms {
+                    for &(x, y, k, c) in form.terms.iter() {
                         hk[k] += w * c * ai[x] * bj[y];
                     }
                 }
@@ -119,65 +106,22 @@ impl Piecewise {
                 got: self.dim,
             });
         }
-        let terms: Vec<_> = (0..other.dim).map(|k| (0, k, k, 1.0)).collect();
-        self.product(
-            other,
-            &Bilinear {
-                terms: &terms,
-                out_dim: other.dim,
-            },
-        )
+        self.product(other, &Bilinear::scalar_times(other.dim))
     }
 
     /// The dot product of two functions of one dimension, a scalar function.
     pub fn dot(&self, other: &Piecewise) -> Result<Piecewise> {
-        if self.dim != other.dim {
-            return Err(Error::DimensionMismatch {
-                expected: self.dim,
-                got: other.dim,
-            });
-        }
-        let terms: Vec<_> = (0..self.dim).map(|k| (k, k, 0, 1.0)).collect();
-        self.product(
-            other,
-            &Bilinear {
-                terms: &terms,
-                out_dim: 1,
-            },
-        )
+        self.product(other, &Bilinear::dot([self.dim, other.dim])?)
     }
 
     /// The planar cross product `x_a y_b − y_a x_b` of two functions of dimension 2.
     pub fn cross(&self, other: &Piecewise) -> Result<Piecewise> {
-        require_dim(self, 2)?;
-        require_dim(other, 2)?;
-        self.product(
-            other,
-            &Bilinear {
-                terms: &[(0, 1, 0, 1.0), (1, 0, 0, -1.0)],
-                out_dim: 1,
-            },
-        )
+        self.product(other, &Bilinear::cross([self.dim, other.dim])?)
     }
 
     /// The 3D cross product of two functions of dimension 3 (homogeneous planar curves).
     pub fn cross3(&self, other: &Piecewise) -> Result<Piecewise> {
-        require_dim(self, 3)?;
-        require_dim(other, 3)?;
-        self.product(
-            other,
-            &Bilinear {
-                terms: &[
-                    (1, 2, 0, 1.0),
-                    (2, 1, 0, -1.0),
-                    (2, 0, 1, 1.0),
-                    (0, 2, 1, -1.0),
-                    (0, 1, 2, 1.0),
-                    (1, 0, 2, -1.0),
-                ],
-                out_dim: 3,
-            },
-        )
+        self.product(other, &Bilinear::cross3([self.dim, other.dim])?)
     }
 
     /// The degree raised by `times` (exactly the same function: each new coefficient a convex
@@ -349,17 +293,6 @@ impl Piecewise {
             err,
             smooth,
             binoms: binomials(deg),
-        })
-    }
-}
-
-fn require_dim(f: &Piecewise, d: usize) -> Result<()> {
-    if f.dim == d {
-        Ok(())
-    } else {
-        Err(Error::DimensionMismatch {
-            expected: d,
-            got: f.dim,
         })
     }
 }

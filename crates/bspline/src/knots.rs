@@ -6,17 +6,23 @@ use smallvec::SmallVec;
 /// Scratch buffers sized for the degrees that occur in practice; larger degrees spill to the heap.
 pub(crate) type Scratch = SmallVec<[f64; 32]>;
 
+/// The error of a spline of `degree` given `got` control points, fewer than the `degree + 1`
+/// it needs.
+pub(crate) fn too_few_points(degree: usize, got: usize) -> Error {
+    Error::TooFewPoints {
+        degree,
+        needed: degree + 1,
+        got,
+    }
+}
+
 /// Validates a knot vector for a spline of `degree` with `n` control points.
 ///
 /// Rules: `n + degree + 1` finite, non-decreasing values; interior multiplicity at most `degree`
 /// (so the spline is continuous), end multiplicity at most `degree + 1`; non-empty domain.
 pub fn validate_knots(degree: usize, n: usize, knots: &[f64]) -> Result<()> {
     if n < degree + 1 {
-        return Err(Error::TooFewPoints {
-            degree,
-            needed: degree + 1,
-            got: n,
-        });
+        return Err(too_few_points(degree, n));
     }
     if knots.len() != n + degree + 1 {
         return Err(Error::CountMismatch {
@@ -228,11 +234,7 @@ impl KnotVector {
     /// The clamped knot vector on `[a, b]` with uniform interior knots for `n` control points.
     pub fn clamped_uniform(degree: usize, n: usize, a: f64, b: f64) -> Result<Self> {
         if n < degree + 1 {
-            return Err(Error::TooFewPoints {
-                degree,
-                needed: degree + 1,
-                got: n,
-            });
+            return Err(too_few_points(degree, n));
         }
         Self::new(degree, clamped_uniform_knots(degree, n, a, b))
     }
@@ -240,11 +242,7 @@ impl KnotVector {
     /// distinct control points (domain `[0, n]`).
     pub fn periodic_uniform(degree: usize, n: usize) -> Result<Self> {
         if degree == 0 || n < degree + 1 {
-            return Err(Error::TooFewPoints {
-                degree,
-                needed: degree + 1,
-                got: n,
-            });
+            return Err(too_few_points(degree, n));
         }
         Self::new(
             degree,

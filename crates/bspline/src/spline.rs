@@ -1,7 +1,9 @@
 //! The B-spline type: a piecewise polynomial with `f64` coefficients of any dimension.
 
 use crate::error::{check_finite, Error, Result};
-use crate::knots::{basis_derivs, clamped_uniform_knots, find_span, validate_knots, Scratch};
+use crate::knots::{
+    basis_derivs, clamped_uniform_knots, find_span, too_few_points, validate_knots, Scratch,
+};
 use smallvec::SmallVec;
 
 /// A polynomial B-spline function `[a, b] → R^dim`.
@@ -63,11 +65,7 @@ impl BSpline {
         }
         let n = coefs.len() / dim;
         if n < degree + 1 {
-            return Err(Error::TooFewPoints {
-                degree,
-                needed: degree + 1,
-                got: n,
-            });
+            return Err(too_few_points(degree, n));
         }
         Self::new(
             degree,
@@ -104,11 +102,7 @@ impl BSpline {
         }
         let n = coefs.len() / dim;
         if degree == 0 || n < degree + 1 {
-            return Err(Error::TooFewPoints {
-                degree,
-                needed: degree + 1,
-                got: n,
-            });
+            return Err(too_few_points(degree, n));
         }
         let mut wrapped = coefs.clone();
         wrapped.extend_from_slice(&coefs[..degree * dim]);

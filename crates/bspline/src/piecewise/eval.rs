@@ -19,16 +19,24 @@ impl Piecewise {
         }
     }
 
-    /// [`Piecewise::eval_derivs`] for any dimension and degree (kept out of line: the planar
-    /// curves' jets take the fixed-size path).
-    #[inline(never)]
-    fn eval_derivs_any(&self, u: f64, k: usize, out: &mut [f64]) {
-        let (p, d) = (self.degree, self.dim);
+    /// The piece `i` holding `u` (clamped to the domain), the local parameter `s` in `[0, 1]`
+    /// there and the piece's length `h`.
+    #[inline]
+    fn local(&self, u: f64) -> (usize, f64, f64) {
         let i = self.piece_at(u);
         let (a, b) = (self.breaks[i], self.breaks[i + 1]);
         let h = b - a;
         let s =
             ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
+        (i, s, h)
+    }
+
+    /// [`Piecewise::eval_derivs`] for any dimension and degree (kept out of line: the planar
+    /// curves' jets take the fixed-size path).
+    #[inline(never)]
+    fn eval_derivs_any(&self, u: f64, k: usize, out: &mut [f64]) {
+        let (p, d) = (self.degree, self.dim);
+        let (i, s, h) = self.local(u);
         // Scratch on the stack (degree ≤ 15 in dimension 3), else on the heap.
         let src = self.piece(i);
         let mut stack = [0.0f64; 48];
@@ -96,11 +104,7 @@ impl Piecewise {
     /// loops unroll (jets are most of the cost of a spline's run).
     #[inline]
     fn eval_derivs3(&self, u: f64, k: usize, out: &mut [f64]) {
-        let i = self.piece_at(u);
-        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
-        let h = b - a;
-        let s =
-            ((u.clamp(self.breaks[0], self.breaks[self.breaks.len() - 1]) - a) / h).clamp(0.0, 1.0);
+        let (i, s, h) = self.local(u);
         let src = self.piece(i);
         match self.degree {
             1 => casteljau3::<2>(src, s, h, k, out),

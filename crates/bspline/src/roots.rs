@@ -28,13 +28,6 @@ pub use sign_changes::{
 };
 use subdivision::{split_point, Part};
 
-/// The default parameter tolerance of [`RootOptions`], the workspace's one
-/// ([`numeric::tolerance::DEFAULT_PARAM_TOL`]): brackets 1e-12 wide on a domain of size ~1
-/// (the unit-size frame the callers work in) are some 500 times the few ulps [`RootOptions`]
-/// allows at the least, so decisions stay above rounding, and far finer than any feature of a
-/// curve.
-pub use numeric::tolerance::DEFAULT_PARAM_TOL as DEFAULT_TOL;
-
 /// How close the values at the two ends of a domain must be, relative to the largest
 /// coefficient, for a function to count as periodic: the two ends are evaluated separately,
 /// so a periodic function's end values differ by rounding, far below this.
@@ -60,7 +53,10 @@ pub struct RootOptions {
 impl Default for RootOptions {
     fn default() -> Self {
         Self {
-            tol: DEFAULT_TOL,
+            // (The workspace's one: brackets 1e-12 wide on a domain of size ~1, the unit-size
+            // frame the callers work in, are some 500 times the few ulps allowed at the least,
+            // so decisions stay above rounding, and far finer than any feature of a curve.)
+            tol: numeric::tolerance::DEFAULT_PARAM_TOL,
             max_depth: 80,
             max_pieces: 200_000,
             sign_continuous: false,

@@ -38,7 +38,12 @@ fn fixture(name: &str, text: &str) -> Rational {
 
 fn opts() -> BisectorOptions {
     BisectorOptions {
-        tol: TOL,
+        settings: numeric::tolerance::Settings::new(
+            TOL,
+            numeric::tolerance::DEFAULT_CHORD_TOL,
+            None,
+        )
+        .expect("settings in range"),
         ..BisectorOptions::default()
     }
 }
@@ -79,7 +84,12 @@ fn bisectors(c: &mut Criterion) {
         b.iter(|| bisector(black_box(&cub1), black_box(&cub2), &o).unwrap())
     });
     let dense = BisectorOptions {
-        chord_tol: 1e-6,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            1e-6,
+            None,
+        )
+        .expect("settings in range"),
         ..o
     };
     g.bench_function("two_cubic_beziers_chord_1e-6", |b| {
@@ -123,7 +133,8 @@ fn known_zero_set(c: &mut Criterion) {
         f = f.mul(&circle(0.45, 0.5, r)).unwrap();
     }
     f = f.mul(&circle(0.85, 0.15, 0.002)).unwrap();
-    let o = ZeroSetOptions::default().tolerance(TOL);
+    let o = ZeroSetOptions::default()
+        .tolerance(numeric::tolerance::ParamTol::new(TOL).expect("in range"));
     let z = zero_set(&f, &o).unwrap();
     assert!(z.complete && z.branches.len() == 4 && z.branches.iter().all(|b| b.closed));
     c.bench_function("zero_set_four_nested_and_tiny_circles", |b| {

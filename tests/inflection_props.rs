@@ -64,7 +64,7 @@ proptest! {
             return Ok(());
         };
         // Cusps and self-touching control polygons are refused: nothing to compare.
-        let Ok(found) = antipodal::inflections(curve.plane_curve(), &antipodal::Options::default().tolerance(1e-10)) else {
+        let Ok(found) = antipodal::inflections(curve.plane_curve(), &antipodal::Options::default().tolerance(numeric::tolerance::ParamTol::new(1e-10).expect("in range"))) else {
             return Ok(());
         };
         let plane = curve.plane_curve();

@@ -35,7 +35,8 @@ fn exercise(text: &str) {
     if let Ok(curve) = parse_curve("prop.json", text) {
         let _ = antipodal::inflections(
             curve.plane_curve(),
-            &antipodal::Options::default().tolerance(1e-10),
+            &antipodal::Options::default()
+                .tolerance(numeric::tolerance::ParamTol::new(1e-10).expect("in range")),
         );
     }
 }

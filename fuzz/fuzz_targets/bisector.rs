@@ -39,7 +39,12 @@ fuzz_target!(|input: Input| {
         None => None,
     };
     let opts = BisectorOptions {
-        chord_tol: 0.5 / 2f64.powi((input.chord % 6) as i32),
+        settings: curvekit::numeric::tolerance::Settings::new(
+            curvekit::numeric::tolerance::DEFAULT_PARAM_TOL,
+            0.5 / 2f64.powi((input.chord % 6) as i32),
+            None,
+        )
+        .expect("settings in range"),
         trimmed: input.trimmed,
         ..BisectorOptions::default()
     };

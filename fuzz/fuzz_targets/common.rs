@@ -159,7 +159,8 @@ impl ArbCurve {
     }
 }
 
-/// A tolerance in the accepted range, or now and then any number (which must be refused).
+/// A tolerance in the accepted range, or now and then any number (which must be refused
+/// where the settings are made).
 pub fn tolerance(code: u8, raw: f64) -> f64 {
     if code == 255 {
         raw

@@ -17,7 +17,12 @@ fuzz_target!(|input: common::ArbRegion| {
     };
     let region = &region;
     let opts = MedialOptions {
-        chord_tol: input.chord_tol(),
+        settings: curvekit::numeric::tolerance::Settings::new(
+            curvekit::numeric::tolerance::DEFAULT_PARAM_TOL,
+            input.chord_tol(),
+            None,
+        )
+        .expect("settings in range"),
         ..MedialOptions::default()
     };
     let Ok(axis) = medial_axis(region, &opts) else {

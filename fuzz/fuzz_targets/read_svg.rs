@@ -26,7 +26,8 @@ fuzz_target!(|data: &[u8]| {
     if profile.segments().len() > 12 {
         return;
     }
-    let opts = curvekit::antipodal::Options::default().tolerance(1e-10);
+    let opts = curvekit::antipodal::Options::default()
+        .tolerance(curvekit::numeric::tolerance::ParamTol::new(1e-10).expect("in range"));
     if let Ok(r) = curvekit::antipodal::profile_antipodal(profile, &opts) {
         for pair in &r.pairs {
             assert!(

@@ -28,7 +28,12 @@ fuzz_target!(|input: Input| {
         return;
     };
     let opts = MedialOptions {
-        chord_tol: input.region.chord_tol(),
+        settings: curvekit::numeric::tolerance::Settings::new(
+            curvekit::numeric::tolerance::DEFAULT_PARAM_TOL,
+            input.region.chord_tol(),
+            None,
+        )
+        .expect("settings in range"),
         ..MedialOptions::default()
     };
     let Ok(axis) = medial_axis(&region, &opts) else {
@@ -47,7 +52,11 @@ fuzz_target!(|input: Input| {
     let floor = carve_opts.max_depth.map_or(f64::NEG_INFINITY, |h| -h);
     for p in carve.paths.iter().flat_map(|p| &p.xyz) {
         assert!(p.iter().all(|v| v.is_finite()), "{p:?}");
-        assert!(p[2] <= 0.0 && p[2] >= floor, "depth {} beyond [{floor}, 0]", p[2]);
+        assert!(
+            p[2] <= 0.0 && p[2] >= floor,
+            "depth {} beyond [{floor}, 0]",
+            p[2]
+        );
     }
     // The writers take whatever the library computes, and their output reads back.
     let dxf = dxf_file::vcarve_dxf(&carve, Some("mm")).unwrap();

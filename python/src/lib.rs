@@ -10,7 +10,7 @@ mod registry;
 mod results;
 
 use curve::watch::Watch;
-use curvekit::commands::{self, CommandError, FailureKind};
+use curvekit::commands::{self, CommandError, CommandFamily, FailureKind};
 use curves::{PyCurve, PyPrepared};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
@@ -146,15 +146,12 @@ impl OneCurve<'_> {
 /// The antipodal point pairs of a closed curve or profile (Jia 2004): grasps of a two-finger
 /// gripper. `tol` is the parameter tolerance relative to the domain's length.
 #[pyfunction(name = "antipodal")]
-#[pyo3(signature = (curve, *, tol = ::antipodal::DEFAULT_TOL))]
+#[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAntipodal> {
-    let opts = ::antipodal::Options::default().tolerance(tol);
+    let opts = curve_options(tol).map_err(to_py_err)?;
     let (found, summary) = curve.run(
         py,
-        |p| {
-            commands::validate_options(&opts)?;
-            p.antipodal(&opts)
-        },
+        |p| p.antipodal(&opts),
         |c| commands::antipodal(c, &opts),
     )?;
     Ok(PyAntipodal::new(found, vec![summary]))
@@ -162,15 +159,12 @@ fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAnt
 
 /// The inflections of a curve (and the corners of a profile).
 #[pyfunction(name = "inflections")]
-#[pyo3(signature = (curve, *, tol = ::antipodal::DEFAULT_TOL))]
+#[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn inflections_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyInflections> {
-    let opts = ::antipodal::Options::default().tolerance(tol);
+    let opts = curve_options(tol).map_err(to_py_err)?;
     let (found, summary) = curve.run(
         py,
-        |p| {
-            commands::validate_options(&opts)?;
-            p.inflections(&opts)
-        },
+        |p| p.inflections(&opts),
         |c| commands::inflections(c, &opts),
     )?;
     Ok(PyInflections::new(found, vec![summary]))
@@ -178,14 +172,14 @@ fn inflections_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyI
 
 /// The lines tangent to two curves.
 #[pyfunction(name = "tangents")]
-#[pyo3(signature = (curve1, curve2, *, tol = ::antipodal::DEFAULT_TOL))]
+#[pyo3(signature = (curve1, curve2, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn tangents_of(
     py: Python<'_>,
     curve1: &Bound<'_, PyCurve>,
     curve2: &Bound<'_, PyCurve>,
     tol: f64,
 ) -> PyResult<PyTangents> {
-    let opts = ::antipodal::Options::default().tolerance(tol);
+    let opts = curve_options(tol).map_err(to_py_err)?;
     let (a, b) = (curve1.get(), curve2.get());
     let found = detached(py, || commands::tangents(a.curve(), b.curve(), &opts))?;
     Ok(PyTangents::new(found, vec![a.summary(), b.summary()]))
@@ -195,7 +189,7 @@ fn tangents_of(
 /// within `chord_tol` (relative to the curves' size) of the true bisector.
 #[pyfunction(name = "bisector")]
 #[pyo3(signature = (curve1, curve2 = None, *, method = "f3", trimmed = false,
-                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+                    chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn bisector_of(
     py: Python<'_>,
     curve1: &Bound<'_, PyCurve>,
@@ -205,7 +199,8 @@ fn bisector_of(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyBisector> {
-    let opts = bisector_options(method, trimmed, chord_tol, tol)?;
+    let opts =
+        bisector_options(bisector_method(method)?, trimmed, chord_tol, tol).map_err(to_py_err)?;
     let a = curve1.get();
     let b = curve2.map(|c| c.get());
     let found = detached(py, || {
@@ -217,8 +212,8 @@ fn bisector_of(
 
 /// The medial axis of a region (a region, or the area inside a closed curve or profile).
 #[pyfunction(name = "medial")]
-#[pyo3(signature = (region, *, chord_tol = zeroset::DEFAULT_CHORD_TOL, fit = false,
-                    exterior = false, tol = zeroset::DEFAULT_TOL))]
+#[pyo3(signature = (region, *, chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL, fit = false,
+                    exterior = false, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn medial_of(
     py: Python<'_>,
     region: &Bound<'_, PyCurve>,
@@ -227,7 +222,7 @@ fn medial_of(
     exterior: bool,
     tol: f64,
 ) -> PyResult<PyMedialAxis> {
-    let opts = medial_options(chord_tol, fit, exterior, tol);
+    let opts = medial_options(chord_tol, fit, exterior, tol).map_err(to_py_err)?;
     let c = region.get();
     let (axis, summary) = cancellable(py, || medial_work(c, &opts))?;
     Ok(PyMedialAxis::new(axis, vec![summary]))
@@ -237,8 +232,8 @@ fn medial_of(
 /// every multiple of `step` while the region lasts (one of them), from its medial axis.
 #[pyfunction(name = "offset")]
 #[pyo3(signature = (region, *, distance = None, distances = None, step = None,
-                    outward = false, chord_tol = zeroset::DEFAULT_CHORD_TOL,
-                    tol = zeroset::DEFAULT_TOL))]
+                    outward = false, chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL,
+                    tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 // (One argument per keyword of the Python function.)
 #[allow(clippy::too_many_arguments)]
 fn offset_of(
@@ -251,37 +246,54 @@ fn offset_of(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyOffsets> {
-    let (asked, opts, medial_opts) =
-        offset_options(distance, distances, step, outward, chord_tol, tol)?;
+    let asked = offset_distances(distance, distances, step)?;
+    let (opts, medial_opts) = offset_options(&asked, outward, chord_tol, tol).map_err(to_py_err)?;
     let c = region.get();
     let (found, summary) = cancellable(py, || offset_work(c, &asked, &opts, &medial_opts))?;
     Ok(PyOffsets::new(found, vec![summary]))
 }
 
-/// The bisector's options from the keywords (`method` one of `"f1"`, `"f2"`, `"f3"`).
+/// The bisector function named by the keyword `method` (one of `"f1"`, `"f2"`, `"f3"`).
+pub(crate) fn bisector_method(method: &str) -> PyResult<zeroset::Method> {
+    match method {
+        "f1" => Ok(zeroset::Method::F1),
+        "f2" => Ok(zeroset::Method::F2),
+        "f3" => Ok(zeroset::Method::F3),
+        other => Err(PyValueError::new_err(format!(
+            "method: {other:?} is not one of \"f1\", \"f2\", \"f3\""
+        ))),
+    }
+}
+
+/// The bisector's options from the keywords, their settings built once (out of range: the
+/// usage error the call raises).
 pub(crate) fn bisector_options(
-    method: &str,
+    method: zeroset::Method,
     trimmed: bool,
     chord_tol: f64,
     tol: f64,
-) -> PyResult<zeroset::BisectorOptions> {
-    let method = match method {
-        "f1" => zeroset::Method::F1,
-        "f2" => zeroset::Method::F2,
-        "f3" => zeroset::Method::F3,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "method: {other:?} is not one of \"f1\", \"f2\", \"f3\""
-            )))
-        }
-    };
+) -> Result<zeroset::BisectorOptions, CommandError> {
     Ok(zeroset::BisectorOptions {
         method,
-        tol,
-        chord_tol,
+        settings: commands::settings(CommandFamily::Bisector, tol, chord_tol)?,
         trimmed,
         ..zeroset::BisectorOptions::default()
     })
+}
+
+/// The curve commands' options from the keyword `tol` (they take no chord tolerance).
+pub(crate) fn curve_options(tol: f64) -> Result<::antipodal::Options, CommandError> {
+    let settings = commands::settings(
+        CommandFamily::Curves,
+        tol,
+        curvekit::numeric::tolerance::DEFAULT_CHORD_TOL,
+    )?;
+    let opts = ::antipodal::Options {
+        settings,
+        ..::antipodal::Options::default()
+    };
+    commands::validate_options(&opts)?;
+    Ok(opts)
 }
 
 /// The distances `offset` is asked for: exactly one of the three keywords.
@@ -300,68 +312,65 @@ pub(crate) fn offset_distances(
     }
 }
 
-/// The medial axis's options from the keywords (the size is the region's own).
+/// The medial axis's options from the keywords (the size is the region's own, or all its
+/// parts').
 pub(crate) fn medial_options(
     chord_tol: f64,
     fit: bool,
     exterior: bool,
     tol: f64,
-) -> ::medial::MedialOptions {
-    ::medial::MedialOptions {
-        tol,
-        chord_tol,
+) -> Result<::medial::MedialOptions, CommandError> {
+    Ok(::medial::MedialOptions {
+        settings: commands::settings(CommandFamily::Regions, tol, chord_tol)?,
         fit,
         exterior,
-        size: None,
-    }
+    })
 }
 
-/// The distances, the offsets' options and the medial axis's, from the keywords.
+/// The offsets' options and the medial axis's, from the keywords, the distances `asked`
+/// checked first.
 pub(crate) fn offset_options(
-    distance: Option<f64>,
-    distances: Option<Vec<f64>>,
-    step: Option<f64>,
+    asked: &commands::Distances,
     outward: bool,
     chord_tol: f64,
     tol: f64,
-) -> PyResult<(
-    commands::Distances,
-    ::offset::OffsetOptions,
-    ::medial::MedialOptions,
-)> {
-    let asked = offset_distances(distance, distances, step)?;
-    let medial_opts = medial_options(chord_tol, false, outward, tol);
+) -> Result<(::offset::OffsetOptions, ::medial::MedialOptions), CommandError> {
+    commands::validate_offset(asked, outward)?;
+    let medial_opts = medial_options(chord_tol, false, outward, tol)?;
     let opts = ::offset::OffsetOptions {
-        chord_tol,
-        size: None,
+        settings: medial_opts.settings,
     };
-    Ok((asked, opts, medial_opts))
+    Ok((opts, medial_opts))
 }
 
-/// The V-carving options and the medial axis's, from the keywords.
+/// The V-carving options and the medial axis's, from the keywords, the bit checked first.
 pub(crate) fn vcarve_options(
     angle: f64,
     max_depth: Option<f64>,
     chord_tol: f64,
     tol: f64,
-) -> (::offset::VCarveOptions, ::medial::MedialOptions) {
-    let medial_opts = medial_options(chord_tol, false, false, tol);
-    let opts = ::offset::VCarveOptions {
+) -> Result<(::offset::VCarveOptions, ::medial::MedialOptions), CommandError> {
+    let bit = ::offset::VCarveOptions {
         angle,
         max_depth,
-        offset: ::offset::OffsetOptions {
-            chord_tol,
-            size: None,
-        },
+        offset: ::offset::OffsetOptions::default(),
     };
-    (opts, medial_opts)
+    commands::validate_vcarve_options(&bit)?;
+    let medial_opts = medial_options(chord_tol, false, false, tol)?;
+    let opts = ::offset::VCarveOptions {
+        offset: ::offset::OffsetOptions {
+            settings: medial_opts.settings,
+        },
+        ..bit
+    };
+    Ok((opts, medial_opts))
 }
 
 /// The tool paths of a V-bit of included `angle` (degrees) over a region's medial axis, at
 /// most `max_depth` deep (with a flat pass there).
 #[pyfunction(name = "vcarve")]
 #[pyo3(signature = (region, *, angle, max_depth = None,
-                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+                    chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn vcarve_of(
     py: Python<'_>,
     region: &Bound<'_, PyCurve>,
@@ -370,7 +379,8 @@ fn vcarve_of(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<PyVCarve> {
-    let (opts, medial_opts) = vcarve_options(angle, max_depth, chord_tol, tol);
+    let (opts, medial_opts) =
+        vcarve_options(angle, max_depth, chord_tol, tol).map_err(to_py_err)?;
     let c = region.get();
     let (found, summary) = cancellable(py, || vcarve_work(c, &opts, &medial_opts))?;
     Ok(PyVCarve::new(found, vec![summary]))
@@ -382,7 +392,6 @@ pub(crate) fn medial_work(
     c: &PyCurve,
     opts: &::medial::MedialOptions,
 ) -> Result<(::medial::MedialAxis, commands::CurveSummary), CommandError> {
-    commands::validate_medial_options(opts)?;
     let region = c.region()?;
     Ok((
         commands::medial(region, opts)?,

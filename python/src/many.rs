@@ -5,7 +5,7 @@
 use crate::curves::{PyCurve, PyPrepared};
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use crate::results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
-use crate::{bisector_options, CurvekitError, InputError};
+use crate::{bisector_method, bisector_options, CurvekitError, InputError};
 use curvekit::commands::{self, CommandError, CurveSummary, FailureKind};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -23,6 +23,16 @@ fn failed_at(k: usize, e: CommandError) -> PyErr {
         FailureKind::Input => InputError::new_err(message),
         FailureKind::Usage => PyValueError::new_err(message),
         FailureKind::Computation => CurvekitError::new_err(message),
+    }
+}
+
+/// The options of a list's call, built once: refused, they are the failure of its first item
+/// (as each item's would be); an empty list has no item to fail (`None`).
+fn built<T>(items: usize, opts: Result<T, CommandError>) -> PyResult<Option<T>> {
+    match opts {
+        Ok(opts) => Ok(Some(opts)),
+        Err(_) if items == 0 => Ok(None),
+        Err(e) => Err(failed_at(0, e)),
     }
 }
 
@@ -101,15 +111,17 @@ impl Item<'_> {
 
 /// `antipodal` of each curve.
 #[pyfunction]
-#[pyo3(signature = (curves, *, tol = ::antipodal::DEFAULT_TOL))]
+#[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn antipodal_many(
     py: Python<'_>,
     curves: Vec<Bound<'_, PyAny>>,
     tol: f64,
 ) -> PyResult<Vec<PyAntipodal>> {
-    let opts = ::antipodal::Options::default().tolerance(tol);
-    let found = each(py, &items(&curves)?, |item| {
-        commands::validate_options(&opts)?;
+    let items = items(&curves)?;
+    let Some(opts) = built(items.len(), crate::curve_options(tol))? else {
+        return Ok(Vec::new());
+    };
+    let found = each(py, &items, |item| {
         item.run(|p| p.antipodal(&opts), |c| commands::antipodal(c, &opts))
     })?;
     Ok(found
@@ -120,15 +132,17 @@ fn antipodal_many(
 
 /// `inflections` of each curve.
 #[pyfunction]
-#[pyo3(signature = (curves, *, tol = ::antipodal::DEFAULT_TOL))]
+#[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn inflections_many(
     py: Python<'_>,
     curves: Vec<Bound<'_, PyAny>>,
     tol: f64,
 ) -> PyResult<Vec<PyInflections>> {
-    let opts = ::antipodal::Options::default().tolerance(tol);
-    let found = each(py, &items(&curves)?, |item| {
-        commands::validate_options(&opts)?;
+    let items = items(&curves)?;
+    let Some(opts) = built(items.len(), crate::curve_options(tol))? else {
+        return Ok(Vec::new());
+    };
+    let found = each(py, &items, |item| {
         item.run(
             |p| p.inflections(&opts),
             |c| commands::inflections(c, &opts),
@@ -142,7 +156,7 @@ fn inflections_many(
 
 /// `tangents` of each pair `(curves1[k], curves2[k])`.
 #[pyfunction]
-#[pyo3(signature = (curves1, curves2, *, tol = ::antipodal::DEFAULT_TOL))]
+#[pyo3(signature = (curves1, curves2, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn tangents_many(
     py: Python<'_>,
     curves1: Vec<Bound<'_, PyCurve>>,
@@ -156,7 +170,9 @@ fn tangents_many(
             curves2.len()
         )));
     }
-    let opts = ::antipodal::Options::default().tolerance(tol);
+    let Some(opts) = built(curves1.len(), crate::curve_options(tol))? else {
+        return Ok(Vec::new());
+    };
     let pairs: Vec<(&PyCurve, &PyCurve)> =
         plain(&curves1).into_iter().zip(plain(&curves2)).collect();
     let found = each(py, &pairs, |(a, b)| {
@@ -172,7 +188,7 @@ fn tangents_many(
 /// `bisector` of each curve with itself, or of each pair `(curves1[k], curves2[k])`.
 #[pyfunction]
 #[pyo3(signature = (curves1, curves2 = None, *, method = "f3", trimmed = false,
-                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+                    chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn bisector_many(
     py: Python<'_>,
     curves1: Vec<Bound<'_, PyCurve>>,
@@ -182,7 +198,7 @@ fn bisector_many(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<Vec<PyBisector>> {
-    let opts = bisector_options(method, trimmed, chord_tol, tol)?;
+    let method = bisector_method(method)?;
     let first = plain(&curves1);
     let second: Vec<Option<&PyCurve>> = match &curves2 {
         Some(list) if list.len() != first.len() => {
@@ -196,6 +212,10 @@ fn bisector_many(
         None => vec![None; first.len()],
     };
     let pairs: Vec<(&PyCurve, Option<&PyCurve>)> = first.into_iter().zip(second).collect();
+    let options = bisector_options(method, trimmed, chord_tol, tol);
+    let Some(opts) = built(pairs.len(), options)? else {
+        return Ok(Vec::new());
+    };
     let found = each(py, &pairs, |(a, b)| {
         commands::bisector(a.curve(), b.map(PyCurve::curve), &opts)
     })?;
@@ -214,8 +234,8 @@ fn bisector_many(
 
 /// `medial` of each region.
 #[pyfunction]
-#[pyo3(signature = (regions, *, chord_tol = zeroset::DEFAULT_CHORD_TOL, fit = false,
-                    exterior = false, tol = zeroset::DEFAULT_TOL))]
+#[pyo3(signature = (regions, *, chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL, fit = false,
+                    exterior = false, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn medial_many(
     py: Python<'_>,
     regions: Vec<Bound<'_, PyCurve>>,
@@ -224,7 +244,10 @@ fn medial_many(
     exterior: bool,
     tol: f64,
 ) -> PyResult<Vec<PyMedialAxis>> {
-    let opts = crate::medial_options(chord_tol, fit, exterior, tol);
+    let options = crate::medial_options(chord_tol, fit, exterior, tol);
+    let Some(opts) = built(regions.len(), options)? else {
+        return Ok(Vec::new());
+    };
     let found = each(py, &plain(&regions), |c| crate::medial_work(c, &opts))?;
     Ok(found
         .into_iter()
@@ -235,8 +258,8 @@ fn medial_many(
 /// `offset` of each region.
 #[pyfunction]
 #[pyo3(signature = (regions, *, distance = None, distances = None, step = None,
-                    outward = false, chord_tol = zeroset::DEFAULT_CHORD_TOL,
-                    tol = zeroset::DEFAULT_TOL))]
+                    outward = false, chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL,
+                    tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 // (One argument per keyword of the Python function.)
 #[allow(clippy::too_many_arguments)]
 fn offset_many(
@@ -249,8 +272,11 @@ fn offset_many(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<Vec<PyOffsets>> {
-    let (asked, opts, medial_opts) =
-        crate::offset_options(distance, distances, step, outward, chord_tol, tol)?;
+    let asked = crate::offset_distances(distance, distances, step)?;
+    let options = crate::offset_options(&asked, outward, chord_tol, tol);
+    let Some((opts, medial_opts)) = built(regions.len(), options)? else {
+        return Ok(Vec::new());
+    };
     let found = each(py, &plain(&regions), |c| {
         crate::offset_work(c, &asked, &opts, &medial_opts)
     })?;
@@ -263,7 +289,7 @@ fn offset_many(
 /// `vcarve` of each region.
 #[pyfunction]
 #[pyo3(signature = (regions, *, angle, max_depth = None,
-                    chord_tol = zeroset::DEFAULT_CHORD_TOL, tol = zeroset::DEFAULT_TOL))]
+                    chord_tol = curvekit::numeric::tolerance::DEFAULT_CHORD_TOL, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn vcarve_many(
     py: Python<'_>,
     regions: Vec<Bound<'_, PyCurve>>,
@@ -272,7 +298,10 @@ fn vcarve_many(
     chord_tol: f64,
     tol: f64,
 ) -> PyResult<Vec<PyVCarve>> {
-    let (opts, medial_opts) = crate::vcarve_options(angle, max_depth, chord_tol, tol);
+    let options = crate::vcarve_options(angle, max_depth, chord_tol, tol);
+    let Some((opts, medial_opts)) = built(regions.len(), options)? else {
+        return Ok(Vec::new());
+    };
     let found = each(py, &plain(&regions), |c| {
         crate::vcarve_work(c, &opts, &medial_opts)
     })?;

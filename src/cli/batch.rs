@@ -3,11 +3,12 @@
 
 use super::{Failure, MethodArg, UsageError};
 use clap::Args;
-use curvekit::commands::{self, json_document, CommandError};
+use curvekit::commands::{self, json_document, CommandError, CommandFamily};
 use curvekit::io::{
     parse_curve, parse_region, read_curve_picked, read_region, Curve, CurveFileError,
 };
 use indicatif::{ProgressBar, ProgressStyle};
+use numeric::tolerance::DEFAULT_CHORD_TOL;
 use rayon::prelude::*;
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -60,7 +61,7 @@ pub(crate) struct Batch {
     #[arg(long, value_name = "T", default_value_t = numeric::tolerance::DEFAULT_PARAM_TOL, value_parser = super::parse_tol, allow_hyphen_values = true)]
     pub(crate) tol: f64,
     /// Chord tolerance (bisector, medial, offset, vcarve), relative to the size.
-    #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = super::parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "C", default_value_t = numeric::tolerance::DEFAULT_CHORD_TOL, value_parser = super::parse_tol, allow_hyphen_values = true)]
     pub(crate) chord_tol: f64,
     /// The other curve (tangents: required; bisector: the bisector with it, not the
     /// self-bisector).
@@ -312,24 +313,35 @@ impl Task {
             }
             .into());
         }
-        let curve_opts = antipodal::Options::default().tolerance(b.tol);
-        let bisector_opts = super::BisectorArgs {
-            method: b.method,
+        // The settings, once, in the words of the command's family (the curve commands take
+        // no chord tolerance: theirs is the default).
+        let settings = match b.command {
+            BatchCommand::Antipodal | BatchCommand::Inflections | BatchCommand::Tangents => {
+                commands::settings(CommandFamily::Curves, b.tol, DEFAULT_CHORD_TOL)?
+            }
+            BatchCommand::Bisector => {
+                commands::settings(CommandFamily::Bisector, b.tol, b.chord_tol)?
+            }
+            BatchCommand::Medial | BatchCommand::Offset | BatchCommand::Vcarve => {
+                commands::settings(CommandFamily::Regions, b.tol, b.chord_tol)?
+            }
+        };
+        let curve_opts = antipodal::Options {
+            settings,
+            ..antipodal::Options::default()
+        };
+        let bisector_opts = zeroset::BisectorOptions {
+            method: b.method.method(),
+            settings,
             trimmed: b.trimmed,
-            chord_tol: b.chord_tol,
-        }
-        .options(b.tol);
+            ..zeroset::BisectorOptions::default()
+        };
         let medial_opts = medial::MedialOptions {
-            tol: b.tol,
-            chord_tol: b.chord_tol,
+            settings,
             fit: b.fit,
             exterior: b.exterior,
-            size: None,
         };
-        let offset_opts = offset::OffsetOptions {
-            chord_tol: b.chord_tol,
-            size: None,
-        };
+        let offset_opts = offset::OffsetOptions { settings };
         let distances = match (&b.distance, &b.distances, b.step) {
             (Some(d), _, _) => commands::Distances::List(vec![*d]),
             (_, Some(list), _) => commands::Distances::List(list.clone()),
@@ -345,14 +357,9 @@ impl Task {
             BatchCommand::Antipodal | BatchCommand::Inflections | BatchCommand::Tangents => {
                 commands::validate_options(&curve_opts)?
             }
-            BatchCommand::Bisector => commands::validate_bisector_options(&bisector_opts)?,
-            BatchCommand::Medial => commands::validate_medial_options(&medial_opts)?,
-            BatchCommand::Offset => {
-                commands::validate_medial_options(&medial_opts)?;
-                commands::validate_offset(&distances, b.exterior)?;
-            }
+            BatchCommand::Bisector | BatchCommand::Medial => {}
+            BatchCommand::Offset => commands::validate_offset(&distances, b.exterior)?,
             BatchCommand::Vcarve => {
-                commands::validate_medial_options(&medial_opts)?;
                 if b.angle.is_none() {
                     return Err(UsageError::Missing("batch vcarve: --angle is required").into());
                 }

@@ -14,9 +14,8 @@ use std::path::Path;
 use std::sync::Arc;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
-    common.validate()?;
+    let opts = common.options()?;
     let curve = Arc::new(common.read_curve(path)?);
-    let opts = common.options();
     let prepared = PreparedCurve::new(curve.clone(), "inflections")?;
     let found = prepared.inflections(&opts)?;
     let stats = common.time.then(|| {
@@ -41,9 +40,8 @@ pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failur
 }
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
-    common.validate()?;
+    let opts = common.options()?;
     let curve = Arc::new(common.read_curve(path)?);
-    let opts = common.options();
     let prepared = PreparedCurve::new(curve.clone(), "antipodal")?;
     let found = prepared.antipodal(&opts)?;
     let stats = common.time.then(|| {
@@ -66,11 +64,10 @@ pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure>
 }
 
 pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Result<(), Failure> {
-    common.validate()?;
+    let opts = common.options()?;
     super::one_standard_input(&[path1, path2])?;
     let (c1, c2) = (common.read_curve(path1)?, common.read_curve(path2)?);
     let both = [&c1, &c2];
-    let opts = common.options();
     let run = || commands::tangents(&c1, &c2, &opts);
     let found = run()?;
     let stats = common.time.then(|| match &found {
@@ -100,9 +97,8 @@ pub(super) fn run_bisector(
     args: &BisectorArgs,
     common: &Common,
 ) -> Result<(), Failure> {
-    let opts = args.options(common.tol);
     // (A usage error comes before any file is read.)
-    commands::validate_bisector_options(&opts)?;
+    let opts = args.options(common.tol)?;
     super::one_standard_input(
         &[Some(path1), path2]
             .into_iter()

@@ -9,6 +9,7 @@ use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, Curve};
 use curvekit::svg::{Figure, Mark, DOT};
 use numeric::certificate::Verdict;
+use numeric::tolerance::Settings;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -100,7 +101,7 @@ struct BisectorRow {
 }
 
 pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
-    common.validate()?;
+    let opts = common.options()?;
     std::fs::create_dir_all(out)
         .map_err(|e| Failure::io(format!("cannot create {}", out.display()), e))?;
     let shapes = DEMO_SHAPES
@@ -117,9 +118,7 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         timing::measure(|| {
             shapes
                 .iter()
-                .filter_map(|r| {
-                    antipodal::inflections(r.curve.plane_curve(), &common.options()).ok()
-                })
+                .filter_map(|r| antipodal::inflections(r.curve.plane_curve(), &opts).ok())
                 .count()
         })
     });
@@ -169,7 +168,7 @@ fn shape_row(
     common: &Common,
 ) -> Result<ShapeRow, Failure> {
     let curve = parse_curve(&format!("demo:{name}"), text)?;
-    let opts = common.options();
+    let opts = common.options()?;
     let prepared = antipodal::prepare(curve.plane_curve());
     let inflections = Some(prepared.inflections(&opts).map_err(|e| e.to_string()));
     let antipodal = curve
@@ -178,7 +177,7 @@ fn shape_row(
     let self_bisector = curve
         .rational()
         .is_some()
-        .then(|| bisector_within_budget(std::slice::from_ref(&curve), common.tol));
+        .then(|| bisector_within_budget(std::slice::from_ref(&curve), opts.settings));
     let title = format!(
         "demo {name} — antipodal: {} pairs, {} inflections",
         cell(&antipodal, |a| a.pairs.len().to_string()),
@@ -229,7 +228,7 @@ fn bisector_row(
     if let Some((n, text)) = c2 {
         curves.push(parse_curve(&format!("demo:{n}"), text)?);
     }
-    let result = bisector_within_budget(&curves, common.tol);
+    let result = bisector_within_budget(&curves, common.options()?.settings);
     let svg = out.join(format!("{name}.svg"));
     let refs: Vec<&Curve> = curves.iter().collect();
     let figure = match &result {
@@ -256,13 +255,13 @@ fn bisector_row(
 
 /// The bisector of one or two curves (self-bisector for one), computed in a thread so that a
 /// slow case is reported as such instead of stalling the demo.
-fn bisector_within_budget(curves: &[Curve], tol: f64) -> Result<Bisector, String> {
+fn bisector_within_budget(curves: &[Curve], settings: Settings) -> Result<Bisector, String> {
     let rationals: Vec<bspline::Rational> = curves
         .iter()
         .filter_map(|c| c.rational().cloned())
         .collect();
     let opts = BisectorOptions {
-        tol,
+        settings,
         ..BisectorOptions::default()
     };
     let (tx, rx) = mpsc::channel();

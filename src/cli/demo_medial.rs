@@ -65,7 +65,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<MedialRow>, Failur
             let curve: Curve =
                 parse_region(&format!("demo:{name}"), format, text.as_bytes(), None)?;
             let opts = MedialOptions {
-                tol: common.tol,
+                settings: common.options()?.settings,
                 ..MedialOptions::default()
             };
             let result = match &curve.shape {

@@ -23,13 +23,10 @@ pub(super) fn run(
     common: &Common,
 ) -> Result<(), Failure> {
     let opts = MedialOptions {
-        tol: common.tol,
-        chord_tol,
+        settings: common.region_settings(chord_tol)?,
         fit,
         exterior,
-        size: None,
     };
-    commands::validate_medial_options(&opts)?;
     let curve = common.read_region(path)?;
     let compute = || commands::medial(&curve, &opts);
     let axis = compute()?;

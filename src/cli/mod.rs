@@ -13,6 +13,8 @@ mod timing;
 mod vcarve;
 
 use clap::{Args, Parser, Subcommand};
+use curvekit::commands::{settings, CommandFamily};
+use numeric::tolerance::{Settings, DEFAULT_CHORD_TOL};
 use std::path::{Path, PathBuf};
 
 /// Certified geometry on planar freeform curves.
@@ -72,7 +74,7 @@ enum Command {
         /// Region file (JSON), or a closed curve or profile.
         region: PathBuf,
         /// Chord tolerance of the edges, relative to the region's size.
-        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        #[arg(long, value_name = "C", default_value_t = numeric::tolerance::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
         chord_tol: f64,
         /// Each edge also as a B-spline of the axis and the radius, within the chord tolerance.
         #[arg(long)]
@@ -111,7 +113,7 @@ enum Command {
         outward: bool,
         /// Chord tolerance of the medial axis and of the offsets of splines, relative to the
         /// region's size.
-        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        #[arg(long, value_name = "C", default_value_t = numeric::tolerance::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
         chord_tol: f64,
         #[command(flatten)]
         out: OutFiles,
@@ -131,7 +133,7 @@ enum Command {
         max_depth: Option<f64>,
         /// Chord tolerance of the medial axis and of the flat pass, relative to the region's
         /// size.
-        #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        #[arg(long, value_name = "C", default_value_t = numeric::tolerance::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
         chord_tol: f64,
         /// Also write the tool paths as a DXF (3D polylines, the flat pass at its depth).
         #[arg(long, value_name = "FILE")]
@@ -162,7 +164,7 @@ pub(crate) struct BisectorArgs {
     #[arg(long)]
     pub(crate) trimmed: bool,
     /// Chord tolerance of the bisector polylines, relative to the curves' bounding-box diagonal.
-    #[arg(long, value_name = "C", default_value_t = zeroset::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+    #[arg(long, value_name = "C", default_value_t = numeric::tolerance::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
     pub(crate) chord_tol: f64,
 }
 
@@ -177,20 +179,27 @@ pub(crate) enum MethodArg {
     F3,
 }
 
+impl MethodArg {
+    /// The library's bisector function.
+    pub(crate) fn method(self) -> zeroset::Method {
+        match self {
+            MethodArg::F1 => zeroset::Method::F1,
+            MethodArg::F2 => zeroset::Method::F2,
+            MethodArg::F3 => zeroset::Method::F3,
+        }
+    }
+}
+
 impl BisectorArgs {
-    /// The library's options for these arguments and the common tolerance.
-    pub(crate) fn options(&self, tol: f64) -> zeroset::BisectorOptions {
-        zeroset::BisectorOptions {
-            method: match self.method {
-                MethodArg::F1 => zeroset::Method::F1,
-                MethodArg::F2 => zeroset::Method::F2,
-                MethodArg::F3 => zeroset::Method::F3,
-            },
-            tol,
-            chord_tol: self.chord_tol,
+    /// The library's options for these arguments and the common tolerance (out of range: a
+    /// usage error).
+    pub(crate) fn options(&self, tol: f64) -> Result<zeroset::BisectorOptions, Failure> {
+        Ok(zeroset::BisectorOptions {
+            method: self.method.method(),
+            settings: settings(CommandFamily::Bisector, tol, self.chord_tol)?,
             trimmed: self.trimmed,
             ..zeroset::BisectorOptions::default()
-        }
+        })
     }
 }
 
@@ -296,14 +305,21 @@ impl Common {
         )?)
     }
 
-    /// The algorithms' options for these command-line options.
-    pub(crate) fn options(&self) -> antipodal::Options {
-        antipodal::Options::default().tolerance(self.tol)
+    /// The curve algorithms' options for these command-line options, checked (before any
+    /// file is read: a usage error comes first).
+    pub(crate) fn options(&self) -> Result<antipodal::Options, Failure> {
+        let settings = settings(CommandFamily::Curves, self.tol, DEFAULT_CHORD_TOL)?;
+        let opts = antipodal::Options {
+            settings,
+            ..antipodal::Options::default()
+        };
+        curvekit::commands::validate_options(&opts)?;
+        Ok(opts)
     }
 
-    /// Checks the options before any file is read (a usage error comes first).
-    pub(crate) fn validate(&self) -> Result<(), Failure> {
-        curvekit::commands::validate_options(&self.options())
+    /// The settings of a command on regions: `--tol` and its `--chord-tol`.
+    pub(crate) fn region_settings(&self, chord_tol: f64) -> Result<Settings, Failure> {
+        settings(CommandFamily::Regions, self.tol, chord_tol)
     }
 }
 

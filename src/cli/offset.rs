@@ -24,19 +24,14 @@ pub(super) fn run(
     out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
+    let settings = common.region_settings(chord_tol)?;
     let medial_opts = MedialOptions {
-        tol: common.tol,
-        chord_tol,
+        settings,
         fit: false,
         exterior: outward,
-        size: None,
     };
-    commands::validate_medial_options(&medial_opts)?;
     commands::validate_offset(distances, outward)?;
-    let opts = OffsetOptions {
-        chord_tol,
-        size: None,
-    };
+    let opts = OffsetOptions { settings };
     let curve = common.read_region(path)?;
     let compute = || commands::offset(&curve, distances, &opts, &medial_opts);
     let found = compute()?;

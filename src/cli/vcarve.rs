@@ -25,22 +25,17 @@ pub(super) fn run(
     dxf: Option<&Path>,
     common: &Common,
 ) -> Result<(), Failure> {
+    let settings = common.region_settings(chord_tol)?;
     let medial_opts = MedialOptions {
-        tol: common.tol,
-        chord_tol,
+        settings,
         fit: false,
         exterior: false,
-        size: None,
     };
     let opts = VCarveOptions {
         angle,
         max_depth,
-        offset: OffsetOptions {
-            chord_tol,
-            size: None,
-        },
+        offset: OffsetOptions { settings },
     };
-    commands::validate_medial_options(&medial_opts)?;
     commands::validate_vcarve_options(&opts)?;
     let curve = common.read_region(path)?;
     let compute = || commands::vcarve(&curve, &opts, &medial_opts);

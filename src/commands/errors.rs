@@ -265,15 +265,10 @@ fn blame<'c>(curves: &[&'c Curve]) -> Option<&'c Curve> {
     }
 }
 
-/// A bisector option out of range is a usage error (named as the command line spells it);
-/// the rest is the computation's.
+/// A bisector that could not be computed: the computation's failure (its options are
+/// valid by construction).
 pub(super) fn zeroset_error(e: zeroset::Error) -> CommandError {
-    match e {
-        zeroset::Error::BadOption { field, value, why } => {
-            UsageError::out_of_range(field.replace('_', "-"), number(value), why).into()
-        }
-        e => CommandError::Bisector(e),
-    }
+    CommandError::Bisector(e)
 }
 
 /// A V-carving option out of range as the command line names it (`vcarve: --max-depth: …`);
@@ -294,7 +289,7 @@ pub(super) fn vcarve_error(e: offset::Error) -> CommandError {
 
 /// A number as a user would write it: the shorter of the plain and the scientific notation
 /// (`1e-12`, not `0.000000000001`).
-fn number(x: f64) -> String {
+pub(super) fn number(x: f64) -> String {
     let (plain, scientific) = (format!("{x}"), format!("{x:e}"));
     if scientific.len() < plain.len() {
         scientific
@@ -310,6 +305,10 @@ mod tests {
     /// Each typed error prints the text the tool printed when it was a string.
     #[test]
     fn typed_errors_print_the_tools_texts() {
+        let chord_refused = format!(
+            "--chord-tol: 1e-12 is out of range: {}",
+            numeric::tolerance::ChordTol::REQUIREMENT
+        );
         let cases: Vec<(CommandError, &str, u8)> = vec![
             (
                 UsageError::out_of_range("tol", 0.5, "must be < 1e-3").into(),
@@ -326,12 +325,9 @@ mod tests {
                 2,
             ),
             (
-                zeroset_error(zeroset::Error::BadOption {
-                    field: "chord_tol",
-                    value: 1e-12,
-                    why: "must be at least 1e-9",
-                }),
-                "--chord-tol: 1e-12 is out of range: must be at least 1e-9",
+                super::super::settings(super::super::CommandFamily::Bisector, 1e-12, 1e-12)
+                    .unwrap_err(),
+                &chord_refused,
                 2,
             ),
             (

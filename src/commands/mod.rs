@@ -25,10 +25,11 @@ mod params;
 mod parts;
 mod prepared;
 mod regions;
+mod settings;
 mod two_curves;
 
 pub use documents::{json_document, json_document_of, CurveSummary, DrawingSummary, Stats};
-use errors::{antipodal_error, refuse, zeroset_error};
+use errors::{antipodal_error, refuse};
 pub use errors::{CommandError, FailureKind, UsageError};
 pub use found::{AntipodalFound, BisectorFound, InflectionsFound, TangentsFound};
 /// The verdict every result answers (`certified()`, `reason()`), and the doubts it reads.
@@ -38,25 +39,17 @@ pub use regions::{
     medial, offset, size_of, validate_distances, validate_offset, validate_vcarve_options, vcarve,
     Distances, MAX_OFFSETS,
 };
+pub use settings::{settings, CommandFamily};
 pub use two_curves::{bisector, tangents};
 
 use crate::io::{Curve, CurveKind};
 use curve::Profile;
 
-/// The one-curve and two-curve commands' options checked on their own (the tool checks
-/// them before it reads a file: a usage error comes first).
+/// The one-curve and two-curve commands' own options checked on their own (the tool checks
+/// them before it reads a file: a usage error comes first; the settings they carry are
+/// valid by construction, see [`settings`]).
 pub fn validate_options(opts: &antipodal::Options) -> Result<(), CommandError> {
     opts.validate().map_err(|e| antipodal_error(e, &[]))
-}
-
-/// The bisector's options checked on their own (as [`validate_options`]).
-pub fn validate_bisector_options(opts: &zeroset::BisectorOptions) -> Result<(), CommandError> {
-    opts.validate().map_err(zeroset_error)
-}
-
-/// The medial axis's options checked on their own (as [`validate_options`]).
-pub fn validate_medial_options(opts: &medial::MedialOptions) -> Result<(), CommandError> {
-    opts.validate().map_err(|e| UsageError::Medial(e).into())
 }
 
 /// A region is no curve: the commands on curves refuse it by name.

@@ -3,7 +3,8 @@
 
 use super::errors::{refuse, vcarve_error};
 use super::params::{self, InDocument};
-use super::{parts, validate_medial_options, CommandError, UsageError};
+use super::settings::sized;
+use super::{parts, CommandError, UsageError};
 use crate::io::Curve;
 
 /// The medial axis of a region read (as [`crate::io::read_region`] gives it), its feet in
@@ -26,7 +27,6 @@ fn axes_of_parts(
     region: &Curve,
     opts: &medial::MedialOptions,
 ) -> Result<Vec<medial::MedialAxis>, CommandError> {
-    validate_medial_options(opts)?;
     let parts = region.parts();
     if parts.is_empty() {
         return Err(refuse(region, "kind", "medial takes a region"));
@@ -43,7 +43,7 @@ fn axes_of_parts(
         ));
     }
     let opts = medial::MedialOptions {
-        size: Some(parts::size_of(&parts)),
+        settings: sized(&opts.settings, parts::size_of(&parts))?,
         ..*opts
     };
     parts
@@ -108,7 +108,6 @@ pub fn offset(
     medial_opts: &medial::MedialOptions,
 ) -> Result<offset::Offsets, CommandError> {
     validate_offset(distances, medial_opts.exterior)?;
-    validate_medial_options(medial_opts)?;
     let axes = axes_of_parts(region, medial_opts)?;
     let list = match distances {
         Distances::List(list) => list.clone(),
@@ -136,8 +135,7 @@ pub fn offset(
     };
     let parts = region.parts();
     let opts = offset::OffsetOptions {
-        size: Some(parts::size_of(&parts)),
-        ..*opts
+        settings: sized(&opts.settings, parts::size_of(&parts))?,
     };
     let found = parts
         .iter()
@@ -176,8 +174,7 @@ pub fn vcarve(
     let parts = region.parts();
     let opts = offset::VCarveOptions {
         offset: offset::OffsetOptions {
-            size: Some(parts::size_of(&parts)),
-            ..opts.offset
+            settings: sized(&opts.offset.settings, parts::size_of(&parts))?,
         },
         ..*opts
     };

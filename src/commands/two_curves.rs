@@ -5,10 +5,7 @@ use super::errors::{antipodal_error, refuse, zeroset_error};
 use super::found::Doubted;
 use super::params::{DocMap, InDocument};
 use super::prepared::{smooth_map, spline_with_corners};
-use super::{
-    as_profile, one_curve, validate_bisector_options, validate_options, BisectorFound,
-    CommandError, TangentsFound,
-};
+use super::{as_profile, one_curve, validate_options, BisectorFound, CommandError, TangentsFound};
 use crate::io::{Curve, CurveKind};
 
 /// The lines tangent to two curves; where one is a profile, the other is taken as a
@@ -60,7 +57,6 @@ pub fn bisector(
     c2: Option<&Curve>,
     opts: &zeroset::BisectorOptions,
 ) -> Result<BisectorFound, CommandError> {
-    validate_bisector_options(opts)?;
     let curves: Vec<&Curve> = std::iter::once(c1).chain(c2).collect();
     one_curve(&curves, "bisector")?;
     // (An analytic shape has no spline of its own: it is taken as the profile of its exact

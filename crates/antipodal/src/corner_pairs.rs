@@ -182,7 +182,7 @@ fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Pe
     // homogeneous form is only C0, as a rational arc's middle is, on a segment without
     // corners inside.)
     let ropts = RootOptions::default()
-        .tolerance(opts.tol)
+        .tolerance(opts.settings.tol.get())
         .sign_continuous(true);
     let roots = find_roots_in(&f, a, b, &ropts)?;
     let df = f.derivative();

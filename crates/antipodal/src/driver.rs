@@ -58,18 +58,21 @@ pub(crate) fn dissect<'a>(
     }
     let (view, tracks) = match force_rev {
         Some(rev) => {
-            let view = View::new(src, rev, opts.tol);
+            let view = View::new(src, rev, opts.settings.tol.get());
             let tracks = view.value.tracks(&knots)?;
             (view, tracks)
         }
         None => {
             // Orientation from the turning of the tangent (±2π); a clockwise curve is viewed
             // reversed, reusing the same track.
-            let view = View::new(src, false, opts.tol);
+            let view = View::new(src, false, opts.settings.tol.get());
             let tracks = view.value.tracks(&knots)?;
             if closed && tracks.turn() < 0.0 {
                 let (a, b) = curve.domain();
-                (View::new(src, true, opts.tol), tracks.reversed(a, b))
+                (
+                    View::new(src, true, opts.settings.tol.get()),
+                    tracks.reversed(a, b),
+                )
             } else {
                 (view, tracks)
             }
@@ -128,7 +131,7 @@ fn inflection_list(v: &View, zeros: &Zeros, certified: bool) -> Vec<Inflection> 
 /// [`crate::types::Provenance`]).
 pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Certified<Inflections>> {
     opts.validate()?;
-    let (view, mut doubts) = View::new(src, false, opts.tol).into_parts();
+    let (view, mut doubts) = View::new(src, false, opts.settings.tol.get()).into_parts();
     // With symbolic forms the curve is proven regular (a cusp's vanishing curvature numerator
     // would pass for an inflection) and the inflections need no track; without, Jia's sampled
     // track (which refuses vanishing speeds) finds them.

@@ -79,5 +79,5 @@ pub use profiles::profile_inflections;
 pub use types::{
     Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,
     Options, PairType, ProfileAntipodal, ProfileFamily, ProfileInflections, ProfilePair,
-    ProfileTangentLine, ProfileTangents, TangentLine, Tangents, DEFAULT_TOL,
+    ProfileTangentLine, ProfileTangents, TangentLine, Tangents,
 };

@@ -227,7 +227,7 @@ fn corner_lines(
     out: &mut ProfileTangents,
     doubts: &mut Doubts,
 ) -> Result<()> {
-    let ropts = RootOptions::default().tolerance(opts.tol);
+    let ropts = RootOptions::default().tolerance(opts.settings.tol.get());
     for c in &from.corners {
         for (j, curve) in to.curves.iter().enumerate() {
             if to.profile.segments()[j].kind() == SegmentKind::Line {

@@ -2,14 +2,15 @@
 
 use crate::error::{Error, Result};
 use numeric::certificate::{Certified, Doubts, Verdict};
-use numeric::tolerance::ParamTol;
+use numeric::tolerance::{ParamTol, Settings};
 use serde::{Deserialize, Serialize};
 
 /// Options of the algorithms.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
-    /// Parameter tolerance relative to the domain length (default [`DEFAULT_TOL`]).
-    pub tol: f64,
+    /// The tolerances, valid by construction: the parameter tolerance
+    /// (`settings.tol`, relative to the domain length) is the one the algorithms read.
+    pub settings: Settings,
     /// Use certified root isolation for spline curves (default `true`).
     pub certify: bool,
     /// Limit on the sections searched (a guard against floods on degenerate input).
@@ -19,7 +20,7 @@ pub struct Options {
 impl Default for Options {
     fn default() -> Self {
         Self {
-            tol: DEFAULT_TOL,
+            settings: Settings::default(),
             certify: true,
             max_sections: 100_000,
         }
@@ -28,8 +29,15 @@ impl Default for Options {
 
 impl Options {
     /// Sets the parameter tolerance.
-    pub fn tolerance(mut self, tol: f64) -> Self {
-        self.tol = tol;
+    ///
+    /// ```
+    /// use antipodal::Options;
+    /// use numeric::tolerance::ParamTol;
+    /// let opts = Options::default().tolerance(ParamTol::new(1e-9).unwrap());
+    /// assert_eq!(opts.settings.tol.get(), 1e-9);
+    /// ```
+    pub fn tolerance(mut self, tol: ParamTol) -> Self {
+        self.settings.tol = tol;
         self
     }
     /// Turns certification on or off.
@@ -37,22 +45,15 @@ impl Options {
         self.certify = on;
         self
     }
-    /// Checks the options against what the algorithms can deliver (every entry point checks
-    /// them too): the tolerance in `[1e-15, 1e-3)`, at least one section.
+    /// Checks the options of the algorithms' own (every entry point checks them too): at least
+    /// one section. (The tolerance is valid by construction.)
     ///
     /// ```
     /// use antipodal::Options;
     /// assert!(Options::default().validate().is_ok());
-    /// assert!(Options::default().tolerance(1e-20).validate().is_err());
+    /// assert!(Options { max_sections: 0, ..Options::default() }.validate().is_err());
     /// ```
     pub fn validate(&self) -> Result<()> {
-        if let Err(e) = ParamTol::new(self.tol) {
-            return Err(Error::InvalidOption {
-                field: "tol",
-                value: e.value,
-                expected: e.requirement,
-            });
-        }
         if self.max_sections == 0 {
             return Err(Error::InvalidOption {
                 field: "max_sections",
@@ -368,8 +369,3 @@ provenance!(Tangents);
 provenance!(ProfileInflections);
 provenance!(ProfileAntipodal);
 provenance!(ProfileTangents);
-
-/// The default parameter tolerance (relative to the domain's length), the workspace's one
-/// ([`numeric::tolerance::DEFAULT_PARAM_TOL`]): some thousand units of rounding, so that the
-/// sign tests near a pair are far above their noise.
-pub use numeric::tolerance::DEFAULT_PARAM_TOL as DEFAULT_TOL;

@@ -170,10 +170,16 @@ fn singular_and_crossing_curves_are_errors() {
             ..
         }))
     ));
+    // (A NaN tolerance is refused where the settings are made; options are valid otherwise,
+    // and a search limit of no sections is refused by the algorithms.)
+    assert!(numeric::tolerance::ParamTol::new(f64::NAN).is_err());
     assert!(matches!(
         antipodal(
             &Circle::new(1.0, [0.0, 0.0]).unwrap(),
-            &Options::default().tolerance(f64::NAN)
+            &Options {
+                max_sections: 0,
+                ..Options::default()
+            }
         ),
         Err(Error::InvalidOption { .. })
     ));

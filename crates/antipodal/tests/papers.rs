@@ -8,6 +8,7 @@ mod common;
 use antipodal::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon};
 use antipodal::{antipodal, Antipodal, Options, PlaneCurve};
 use numeric::certificate::Verdict;
+use numeric::tolerance::ParamTol;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -142,7 +143,11 @@ fn convexities_11_nearly_triple_pairs_are_all_found() {
     ] {
         assert!(has(&r.pairs, s, t, 1e-9), "({s}, {t}) missing");
     }
-    let coarse = antipodal(&c, &Options::default().tolerance(1e-8)).unwrap();
+    let coarse = antipodal(
+        &c,
+        &Options::default().tolerance(ParamTol::new(1e-8).unwrap()),
+    )
+    .unwrap();
     assert!(coarse.complete);
     assert_eq!(coarse.pairs.len(), 198);
     for p in &coarse.pairs {
@@ -205,7 +210,11 @@ fn slender_elliptic_lemniscates_at_loose_tolerances_find_no_false_pairs() {
         let c = EllipticLemniscate::new(a, 1.0).unwrap();
         let expected = lemniscate_pairs(&c);
         for tol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10] {
-            let r = antipodal(&c, &Options::default().tolerance(tol)).unwrap();
+            let r = antipodal(
+                &c,
+                &Options::default().tolerance(ParamTol::new(tol).unwrap()),
+            )
+            .unwrap();
             assert!(r.complete, "a = {a}, tol = {tol}");
             let in_family = |(s, t): (f64, f64)| {
                 r.families.iter().any(|f| {
@@ -295,7 +304,11 @@ fn slender_elliptic_lemniscates_are_complete() {
         (1000.0, 1.0, 1e-15, 1e-3, false),
     ] {
         let c = EllipticLemniscate::new(a, b).unwrap();
-        let r = antipodal(&c, &Options::default().tolerance(tol)).unwrap();
+        let r = antipodal(
+            &c,
+            &Options::default().tolerance(ParamTol::new(tol).unwrap()),
+        )
+        .unwrap();
         assert!(r.complete, "a = {a}");
         assert!(r.families.is_empty(), "a = {a}: {:?}", r.families);
         assert_eq!(r.pairs.len(), 4, "a = {a}: {:?}", r.pairs);

@@ -6,6 +6,7 @@ mod common;
 
 use antipodal::{antipodal, Options, ParamCurve, SplineCurve, V2};
 use numeric::certificate::Verdict;
+use numeric::tolerance::ParamTol;
 
 /// A periodic cubic on an elliptic control polygon, symmetric about the x axis with `C(0)` on
 /// the axis: antipodal pairs at `0 ↔ n/2` and `n/4 ↔ 3n/4`.
@@ -109,11 +110,19 @@ fn close_inflections_across_the_seam_stay_distinct() {
     ];
     let w = [2f64.powf(-31.5), 1.0, 1.0, 1.0, 1.0];
     let c = SplineCurve::periodic(3, &pts, Some(&w)).unwrap();
-    let tight = antipodal::inflections(&c, &Options::default().tolerance(1e-13)).unwrap();
+    let tight = antipodal::inflections(
+        &c,
+        &Options::default().tolerance(ParamTol::new(1e-13).unwrap()),
+    )
+    .unwrap();
     assert!(tight.certified());
     assert_eq!(tight.inflections.len(), 4, "{:?}", tight.inflections);
     for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-11, 1e-12] {
-        let r = antipodal::inflections(&c, &Options::default().tolerance(tol)).unwrap();
+        let r = antipodal::inflections(
+            &c,
+            &Options::default().tolerance(ParamTol::new(tol).unwrap()),
+        )
+        .unwrap();
         assert!(
             r.inflections.len().is_multiple_of(2) || !r.certified(),
             "tol {tol}: {:?}",

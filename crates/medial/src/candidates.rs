@@ -2,13 +2,13 @@
 //! pieces (segments, spline segments cut at their knots, corners) that can share an empty
 //! disk.
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::pairs::{neighbours, FEW_SEGMENTS};
 use crate::parallel::in_order;
 use crate::seed::seed_pairs;
 use crate::sites::Sites;
-use crate::MedialOptions;
 use curve::{ParamCurve, Profile, SpanOf};
+use numeric::tolerance::{ChordTol, ParamTol, Settings};
 use zeroset::{
     profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
 };
@@ -65,19 +65,28 @@ pub(crate) enum PairSource {
 /// whether the pairs came from the seed (`source` may fall back from `Seed` to `Bounds`).
 pub(crate) fn candidates(
     sites: &Sites<'_>,
-    opts: &MedialOptions,
+    (tol, chord_tol): (ParamTol, f64),
     source: PairSource,
 ) -> Result<(Vec<Candidate>, bool, bool)> {
     // The bisectors' chord tolerance is relative to their own profiles' box diagonal, at
-    // most the outer box's; the axis's to the region's max(width, height).
-    let chord_tol = (opts.chord_tol * sites.size / sites.diagonal).max(MIN_CHORD);
+    // most the outer box's; the axis's (`chord_tol`) to the region's max(width, height), or
+    // to the size given (of all the parts of an input, which may make it too coarse for a
+    // small part's bisectors).
+    let chord_tol = (chord_tol * sites.size / sites.diagonal).max(MIN_CHORD);
+    let chord_tol = ChordTol::new(chord_tol).map_err(|e| Error::BadOption {
+        field: "chord_tol",
+        value: e.value,
+        why: e.requirement,
+    })?;
     let bisector_opts = BisectorOptions {
-        tol: opts.tol,
-        chord_tol,
+        settings: Settings {
+            tol,
+            chord_tol,
+            size: None,
+        },
         trimmed: false,
         ..BisectorOptions::default()
     };
-    bisector_opts.validate()?;
     // Spline segments of several spans are cut at their knots: the pairs of spans that
     // cannot share an empty disk are then skipped too.
     // (Only where the pieces are then many enough to prune: below that, one bisector of a

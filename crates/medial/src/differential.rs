@@ -14,7 +14,7 @@ use testkit::rng;
 
 /// Vertices of the same edge within twice the chord tolerance.
 fn near(region: &Region) -> f64 {
-    2.0 * MedialOptions::default().chord_tol * region.size()
+    2.0 * MedialOptions::default().settings.chord_tol.get() * region.size()
 }
 
 /// The traced axis on polygons: the same graph as the bounds' axis.

@@ -3,11 +3,12 @@
 /// Why a medial axis could not be computed.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    /// The bisectors it is made of could not be computed (a curve the exact algebra refuses;
-    /// the options are checked first, as [`Error::BadOption`]).
+    /// The bisectors it is made of could not be computed (a curve the exact algebra refuses).
     #[error(transparent)]
     Bisector(#[from] zeroset::Error),
-    /// An option is out of range (the field is named).
+    /// A tolerance derived from the options is out of range (the field is named): the chord
+    /// tolerance of a part's bisectors, relative to a size given for many parts together,
+    /// too coarse for a part that small.
     #[error("option {field} = {value} is invalid: {why}")]
     BadOption {
         /// The option's name.

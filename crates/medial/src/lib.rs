@@ -57,8 +57,7 @@ pub use fit::EdgeSpline;
 use candidates::PairSource;
 use curve::Region;
 pub use numeric::certificate::{Doubt, Doubts, Verdict};
-use numeric::tolerance::check_pair;
-use numeric::tolerance::{DEFAULT_CHORD_TOL, DEFAULT_PARAM_TOL};
+use numeric::tolerance::Settings;
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
 
@@ -67,14 +66,24 @@ use std::collections::HashSet;
 /// agree to ~1e-12 of the size) are one node, vertices of an edge one vertex.
 pub(crate) const SAME_NODE: f64 = 1e-6;
 
-/// Options of [`medial_axis`].
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Options of [`medial_axis`]: the settings, valid by construction (a tolerance out of range
+/// is refused where they are made), and the axis's own choices.
+///
+/// ```
+/// use medial::MedialOptions;
+/// use numeric::tolerance::Settings;
+/// assert_eq!(Settings::new(1e-12, 0.6, None).unwrap_err().field, "chord_tol");
+/// let fine = MedialOptions { settings: Settings::new(1e-12, 1e-4, None).unwrap(), ..MedialOptions::default() };
+/// assert_eq!(fine.settings.chord_tol.get(), 1e-4);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct MedialOptions {
-    /// Parameter tolerance relative to the domains (default 1e-12, as the bisectors').
-    pub tol: f64,
-    /// Chord tolerance of the edges' polylines relative to the region's size (default
-    /// 1e-3).
-    pub chord_tol: f64,
+    /// The tolerances, valid by construction: the parameter tolerance relative to the
+    /// domains (default 1e-12, as the bisectors'); the chord tolerance of the edges'
+    /// polylines (default 1e-3) relative to the size, the contract's (max(width, height) of
+    /// the bounding box of all the input's curves, for one part of a multi-part input), or
+    /// without one the region's own ([`curve::Region::size`]).
+    pub settings: Settings,
     /// Whether each edge also comes as a B-spline ([`Edge::bspline`]), within the chord
     /// tolerance of the axis: the polylines are then traced to half of it, and the fit kept
     /// within the other half of them.
@@ -83,51 +92,6 @@ pub struct MedialOptions {
     /// its outer boundary and inside its holes), clipped to the region's box grown by half
     /// its size on every side.
     pub exterior: bool,
-    /// The size the relative tolerances are taken of (the contract's: max(width, height) of
-    /// the bounding box of all the input's curves, for one part of a multi-part input);
-    /// `None`: the region's own ([`curve::Region::size`]).
-    pub size: Option<f64>,
-}
-
-impl Default for MedialOptions {
-    fn default() -> Self {
-        Self {
-            tol: DEFAULT_PARAM_TOL,
-            chord_tol: DEFAULT_CHORD_TOL,
-            fit: false,
-            exterior: false,
-            size: None,
-        }
-    }
-}
-
-impl MedialOptions {
-    /// Checks the options against what the axis can deliver ([`medial_axis`] checks them
-    /// too): the tolerances in the ranges of [`numeric::tolerance::ParamTol`] and
-    /// [`numeric::tolerance::ChordTol`], the size a finite
-    /// number above zero.
-    ///
-    /// ```
-    /// use medial::MedialOptions;
-    /// assert!(MedialOptions::default().validate().is_ok());
-    /// let coarse = MedialOptions { chord_tol: 0.6, ..MedialOptions::default() };
-    /// assert!(coarse.validate().is_err());
-    /// ```
-    pub fn validate(&self) -> Result<()> {
-        check_pair(self.tol, self.chord_tol).map_err(|(field, e)| Error::BadOption {
-            field,
-            value: e.value,
-            why: e.requirement,
-        })?;
-        match self.size {
-            Some(size) if !(size.is_finite() && size > 0.0) => Err(Error::BadOption {
-                field: "size",
-                value: size,
-                why: "must be a finite number > 0",
-            }),
-            _ => Ok(()),
-        }
-    }
 }
 
 /// What a node of the axis is.
@@ -244,7 +208,6 @@ impl Verdict for MedialAxis {
 /// assert_eq!(axis.edges.len(), 5);
 /// ```
 pub fn medial_axis(region: &Region, opts: &MedialOptions) -> Result<MedialAxis> {
-    opts.validate()?;
     let segments: usize = std::iter::once(region.outer())
         .chain(region.holes())
         .map(|b| b.segments().len())
@@ -306,20 +269,15 @@ fn axis_of(
     source: PairSource,
 ) -> Result<(MedialAxis, bool)> {
     let mut sites = sites::Sites::new(region, opts.exterior);
-    if let Some(size) = opts.size {
-        sites.size = size;
+    if let Some(size) = opts.settings.size {
+        sites.size = size.get();
     }
-    let traced = MedialOptions {
-        chord_tol: if opts.fit {
-            0.5 * opts.chord_tol
-        } else {
-            opts.chord_tol
-        },
-        ..*opts
-    };
+    // (With a fit, the polylines are traced to half the tolerance: it may be finer than a
+    // chord tolerance can be set.)
+    let chord_tol = opts.settings.chord_tol.get() * if opts.fit { 0.5 } else { 1.0 };
     let closed_form = match source {
-        PairSource::SeedEdges => Some(traced_axis::trace(&sites, traced.chord_tol)),
-        PairSource::Pairwise => Some(pairwise_axis::pairwise(&sites, traced.chord_tol)),
+        PairSource::SeedEdges => Some(traced_axis::trace(&sites, chord_tol)),
+        PairSource::Pairwise => Some(pairwise_axis::pairwise(&sites, chord_tol)),
         _ => None,
     };
     let (found, pieces, complete, guessed, proven, merge) = if let Some(traced) = closed_form {
@@ -335,7 +293,8 @@ fn axis_of(
             None => return Ok((empty_axis(), false)),
         }
     } else {
-        let (found, complete, guessed) = candidates::candidates(&sites, &traced, source)?;
+        let (found, complete, guessed) =
+            candidates::candidates(&sites, (opts.settings.tol, chord_tol), source)?;
         let pieces = stretches::stretches(&sites, &found);
         (found, pieces, complete, guessed, HashSet::new(), SAME_NODE)
     };
@@ -357,7 +316,7 @@ fn axis_of(
         Some(Doubt::AxisGraph { unreached: None })
     } else {
         // (The nodes' proofs test disks too: whether any disk was undecided is asked after.)
-        let at_node = certificate::doubt(&sites, &axis, opts.tol, &proven);
+        let at_node = certificate::doubt(&sites, &axis, opts.settings.tol.get(), &proven);
         if sites.some_disk_undecided() {
             Some(Doubt::DiskByNearest)
         } else if at_node.is_some() {
@@ -384,7 +343,7 @@ fn axis_of(
         .collect();
     axis.doubts = doubts;
     if opts.fit {
-        let tol = traced.chord_tol * sites.size;
+        let tol = chord_tol * sites.size;
         for e in &mut axis.edges {
             e.bspline = Some(fit::fit_edge(&e.xy, &e.radius, tol));
         }

@@ -452,7 +452,12 @@ mod tests {
             );
             assert_eq!((traced.nodes.len(), traced.edges.len()), (4 * n, 4 * n));
             let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
-            same_graph(&traced, &seeded, 2.0 * opts.chord_tol * region.size()).unwrap();
+            same_graph(
+                &traced,
+                &seeded,
+                2.0 * opts.settings.chord_tol.get() * region.size(),
+            )
+            .unwrap();
             // (Turned about the origin, scaled and moved; then moved back, scaled back and
             // turned back: a little, and far from the origin at a thousand times the size.)
             for (turn, scale, shift) in [(0.3f64, 1.0, [0.5, -0.2]), (-1.1, 1e3, [1e5, -3e5])] {
@@ -481,7 +486,12 @@ mod tests {
                 for e in &mut back.edges {
                     e.xy.iter_mut().for_each(|x| *x = undo(*x));
                 }
-                same_graph(&back, &traced, 2.0 * opts.chord_tol * region.size()).unwrap();
+                same_graph(
+                    &back,
+                    &traced,
+                    2.0 * opts.settings.chord_tol.get() * region.size(),
+                )
+                .unwrap();
             }
         }
     }
@@ -500,7 +510,12 @@ mod tests {
                 traced.reason()
             );
             let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
-            same_graph(&traced, &seeded, 2.0 * opts.chord_tol * region.size()).unwrap();
+            same_graph(
+                &traced,
+                &seeded,
+                2.0 * opts.settings.chord_tol.get() * region.size(),
+            )
+            .unwrap();
         }
     }
 }

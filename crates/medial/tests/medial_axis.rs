@@ -31,7 +31,12 @@ const CHORD: f64 = 1e-3;
 
 fn axis(region: &Region) -> MedialAxis {
     let opts = MedialOptions {
-        chord_tol: CHORD,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            CHORD,
+            None,
+        )
+        .expect("settings in range"),
         ..Default::default()
     };
     medial_axis(region, &opts).unwrap()
@@ -423,7 +428,12 @@ fn fitted_samples(a: &MedialAxis) -> Vec<Vec<[f64; 2]>> {
 /// at both feet; every leaf at the box is on its edge.
 fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseError> {
     let opts = MedialOptions {
-        chord_tol: CHORD,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            CHORD,
+            None,
+        )
+        .expect("settings in range"),
         exterior: true,
         ..Default::default()
     };
@@ -479,7 +489,12 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     }
     let fitted = case.is_multiple_of(FIT_EVERY).then(|| {
         let opts = MedialOptions {
-            chord_tol: CHORD,
+            settings: numeric::tolerance::Settings::new(
+                numeric::tolerance::DEFAULT_PARAM_TOL,
+                CHORD,
+                None,
+            )
+            .expect("settings in range"),
             fit: true,
             ..Default::default()
         };

@@ -23,7 +23,12 @@ use numeric::certificate::Verdict;
 
 fn axis(region: &Region) -> MedialAxis {
     let opts = MedialOptions {
-        chord_tol: CHORD,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            CHORD,
+            None,
+        )
+        .expect("settings in range"),
         ..MedialOptions::default()
     };
     medial_axis(region, &opts).unwrap()

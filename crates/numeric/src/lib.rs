@@ -11,8 +11,9 @@
 //!   `nalgebra`'s fixed-size matrices, with its damped step, residual test and iteration bound.
 //! - [`minimize`]: the one bracketed minimisation, [`minimize::minimize`] (parabolic steps
 //!   safeguarded by golden sections), and its Newton polish, [`minimize::polish`].
-//! - [`tolerance`]: the parameter and chord tolerances as validated types, with their
-//!   defaults and accepted ranges written once.
+//! - [`tolerance`]: the parameter and chord tolerances and the size as validated types, with
+//!   their defaults and accepted ranges written once, and the [`tolerance::Settings`] that
+//!   carries them from the edge to every algorithm.
 //! - [`certificate`]: certificates as values, [`certificate::Doubt`] (every reason a result
 //!   may not be certified, listed once) and [`certificate::Certified`].
 //! - [`Interval`]: closed intervals and the interval arithmetic the proofs combine ranges

@@ -44,7 +44,7 @@ pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};
 use curve::{ParamCurve, Profile, Region};
 use medial::MedialAxis;
 pub use numeric::certificate::{Doubt, Doubts, Verdict};
-use numeric::tolerance::ChordTol;
+use numeric::tolerance::{Settings, Size};
 use read_back::{read_back, ReadBack};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -54,25 +54,24 @@ use widest::{encloses, isolated_nodes, widest_per_boundary};
 /// Times the chord tolerance is quartered for a loop whose fitted pieces cross.
 const REFITS: usize = 6;
 
-/// Options of the offsets.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Options of the offsets: the settings, valid by construction. The chord tolerance
+/// (`settings.chord_tol`) is the largest distance between an offset curve of a spline and
+/// the exact offset (lines and arcs are offset exactly), relative to the size
+/// (`settings.size`: the contract's, max(width, height) of the bounding box of all the
+/// input's curves, for one part of a multi-part input; `None`: the region's own,
+/// [`curve::Region::size`]).
+///
+/// ```
+/// use numeric::tolerance::Settings;
+/// use offset::OffsetOptions;
+/// assert_eq!(OffsetOptions::default().settings.chord_tol.get(), 1e-3);
+/// // A chord tolerance out of range is refused where the settings are made.
+/// assert_eq!(Settings::new(1e-12, 1e-12, None).unwrap_err().field, "chord_tol");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct OffsetOptions {
-    /// The largest distance between an offset curve of a spline and the exact offset,
-    /// relative to the region's size (lines and arcs are offset exactly).
-    pub chord_tol: f64,
-    /// The size the chord tolerance is taken of (the contract's: max(width, height) of the
-    /// bounding box of all the input's curves, for one part of a multi-part input); `None`:
-    /// the region's own ([`curve::Region::size`]).
-    pub size: Option<f64>,
-}
-
-impl Default for OffsetOptions {
-    fn default() -> Self {
-        Self {
-            chord_tol: 1e-3,
-            size: None,
-        }
-    }
+    /// The tolerances and the size.
+    pub settings: Settings,
 }
 
 /// The offset at one distance.
@@ -193,13 +192,6 @@ pub(crate) fn offsets_on(
     opts: &OffsetOptions,
     outward: bool,
 ) -> Result<Offsets, Error> {
-    if let Err(e) = ChordTol::new(opts.chord_tol) {
-        return Err(Error::BadOption {
-            field: "chord_tol",
-            value: e.value,
-            why: e.requirement,
-        });
-    }
     if let Some(&bad) = distances.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
         return Err(Error::BadOption {
             field: "distance",
@@ -211,8 +203,8 @@ pub(crate) fn offsets_on(
     let walks: Vec<Walk<'_>> = std::iter::once(Walk::new(region.outer(), false, outward))
         .chain(region.holes().iter().map(|h| Walk::new(h, true, outward)))
         .collect();
-    let size = opts.size.unwrap_or_else(|| region.size());
-    let chord = opts.chord_tol * size;
+    let size = opts.settings.size.map_or_else(|| region.size(), Size::get);
+    let chord = opts.settings.chord_tol.get() * size;
     let mut widest = widest_per_boundary(axis, walks.len(), outward);
     if outward {
         // (A round hole's part of the exterior axis is one node at its centre, with no edge to

@@ -158,10 +158,14 @@ pub fn vcarve(region: &Region, axis: &MedialAxis, opts: &VCarveOptions) -> Resul
         flats = found.offsets.into_iter().flat_map(|o| o.loops).collect();
         // Where the axis is deeper, the path follows the flat pass at −H (the contract's
         // "Output files and V-carving"), within the chord tolerance of it.
-        let size = opts.offset.size.unwrap_or_else(|| region.size());
+        let size = opts
+            .offset
+            .settings
+            .size
+            .map_or_else(|| region.size(), numeric::tolerance::Size::get);
         for l in &flats {
             let ring = l
-                .flattened(opts.offset.chord_tol * size)
+                .flattened(opts.offset.settings.chord_tol.get() * size)
                 .map_err(|e| Error::BadAxis(format!("a flat pass is no loop of curves: {e}")))?;
             paths.push(VCarvePath {
                 xyz: ring.into_iter().map(|p| [p[0], p[1], -depth]).collect(),

@@ -684,7 +684,7 @@ mod random_regions {
             let opts = OffsetOptions::default();
             let found = offsets(&region, &axis, &distances, &opts).unwrap();
             prop_assert!(found.complete);
-            let chord = opts.chord_tol * size_of(&region);
+            let chord = opts.settings.chord_tol.get() * size_of(&region);
             for o in &found.offsets {
                 prop_assert!(o.error <= chord, "d = {}: error {} past {chord}", o.distance, o.error);
             }
@@ -766,8 +766,12 @@ fn offsets_compose() {
         "the pocket at 0.5 is one region with its island"
     );
     let opts = OffsetOptions {
-        size: Some(region.size()),
-        ..OffsetOptions::default()
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            numeric::tolerance::DEFAULT_CHORD_TOL,
+            Some(region.size()),
+        )
+        .expect("settings in range"),
     };
     for d2 in [0.25, 0.5, 0.6] {
         let axis = medial_axis(&inner[0], &MedialOptions::default()).unwrap();
@@ -906,10 +910,12 @@ fn outward_distances_stay_within_the_exterior_axis() {
 }
 
 /// The options are checked against what the algorithms deliver, by the tolerances' one
-/// range: a chord tolerance in [1e-9, 0.5] for the offsets, as for the axis (whose size must
-/// also be a finite number above zero); out of it, an error naming the field.
+/// range, where the settings are made: a chord tolerance in [1e-9, 0.5] for the offsets, as
+/// for the axis (whose size must also be a finite number above zero); out of it, an error
+/// naming the field. Settings in range are taken.
 #[test]
 fn options_out_of_range_are_refused_by_name() {
+    use numeric::tolerance::{Settings, DEFAULT_CHORD_TOL, DEFAULT_PARAM_TOL};
     let region = pocket();
     let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
     for (chord_tol, ok) in [
@@ -919,13 +925,12 @@ fn options_out_of_range_are_refused_by_name() {
         (0.6, false),
         (f64::NAN, false),
     ] {
-        let opts = OffsetOptions {
-            chord_tol,
-            ..OffsetOptions::default()
-        };
-        let found = offsets(&region, &axis, &[0.5], &opts);
-        match found {
-            Ok(_) => assert!(ok, "chord_tol {chord_tol} taken"),
+        match Settings::new(DEFAULT_PARAM_TOL, chord_tol, None) {
+            Ok(settings) => {
+                assert!(ok, "chord_tol {chord_tol} taken");
+                let found = offsets(&region, &axis, &[0.5], &OffsetOptions { settings });
+                assert!(found.is_ok(), "chord_tol {chord_tol}: {found:?}");
+            }
             Err(e) => {
                 assert!(!ok, "chord_tol {chord_tol} refused: {e}");
                 assert!(e.to_string().contains("chord_tol"), "{e}");
@@ -933,21 +938,12 @@ fn options_out_of_range_are_refused_by_name() {
         }
     }
     for size in [0.0, -1.0, f64::INFINITY, f64::NAN] {
-        let opts = MedialOptions {
-            size: Some(size),
-            ..MedialOptions::default()
-        };
-        let e = medial_axis(&region, &opts).unwrap_err();
+        let e = Settings::new(DEFAULT_PARAM_TOL, DEFAULT_CHORD_TOL, Some(size)).unwrap_err();
         assert!(e.to_string().contains("size"), "{e}");
     }
-    let tiny = MedialOptions {
-        tol: 1e-16,
-        ..MedialOptions::default()
-    };
-    assert!(medial_axis(&region, &tiny)
-        .unwrap_err()
-        .to_string()
-        .contains("option tol"));
+    let tiny = Settings::new(1e-16, DEFAULT_CHORD_TOL, None).unwrap_err();
+    assert_eq!(tiny.field, "tol", "{tiny}");
+    assert!(tiny.to_string().starts_with("tol: "), "{tiny}");
 }
 
 #[test]

@@ -26,10 +26,11 @@ pub use sides::Side;
 use crate::error::{Error, Result};
 use crate::patch::Patch;
 use crate::symbolic::{bisector_function_scaled, Method};
-use crate::zeroset::{run_cells, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
+use crate::zeroset::{run_cells, ZeroSetOptions};
 use bspline::Rational;
 use curve::Frame;
 use jets::Jets;
+use numeric::tolerance::{Settings, Size};
 use numeric::Rect;
 use point::bbox;
 pub(crate) use point::{bbox_of_points, chord_size};
@@ -46,12 +47,11 @@ const DIVISIBLE: f64 = 1e-8;
 pub struct BisectorOptions {
     /// Which function of §3 to use (default `F3`).
     pub method: Method,
-    /// Parameter tolerance relative to the domains (default [`DEFAULT_TOL`], 1e-12).
-    pub tol: f64,
-    /// Chord tolerance relative to the curves' bounding-box diagonal (default
-    /// [`DEFAULT_CHORD_TOL`], 1e-3): the bisector polylines stay this close to the bisector in
-    /// the plane.
-    pub chord_tol: f64,
+    /// The tolerances: the parameter tolerance relative to the domains (default 1e-12), and
+    /// the chord tolerance (default 1e-3) relative to the size, by default the curves'
+    /// bounding-box diagonal (of a profile bisector, max(width, height) of the profiles'
+    /// box): the bisector polylines stay this close to the bisector in the plane.
+    pub settings: Settings,
     /// Keep only points whose foot points are the nearest points of the curves.
     pub trimmed: bool,
     /// Patch limit of the zero-set search.
@@ -69,8 +69,7 @@ impl Default for BisectorOptions {
     fn default() -> Self {
         Self {
             method: Method::F3,
-            tol: DEFAULT_TOL,
-            chord_tol: DEFAULT_CHORD_TOL,
+            settings: Settings::default(),
             trimmed: false,
             max_patches: 200_000,
             sides: None,
@@ -78,36 +77,28 @@ impl Default for BisectorOptions {
     }
 }
 
-fn check(opts: &BisectorOptions) -> Result<ZeroSetOptions> {
-    opts.validate()?;
-    Ok(zero_set_options(opts))
-}
-
+/// The zero set's options of a bisector's search (its chord tolerance is measured in the
+/// plane, apart).
 fn zero_set_options(opts: &BisectorOptions) -> ZeroSetOptions {
     ZeroSetOptions {
-        tol: opts.tol,
-        chord_tol: opts.chord_tol,
+        settings: opts.settings,
         max_patches: opts.max_patches,
     }
 }
 
-impl BisectorOptions {
-    /// Checks the options against what the computation can deliver (the bisector functions
-    /// check them too): the parameter tolerance in `[1e-15, 1e-3)`, the chord tolerance in
-    /// `[1e-9, 0.5]`.
-    ///
-    /// ```
-    /// let opts = zeroset::BisectorOptions { chord_tol: 1e-12, ..Default::default() };
-    /// assert!(opts.validate().is_err());
-    /// ```
-    pub fn validate(&self) -> Result<()> {
-        zero_set_options(self).check()
-    }
+/// The absolute chord tolerance of a bisector of `curves`: relative to the size given, else
+/// to their bounding-box diagonal.
+fn chord_of(opts: &BisectorOptions, curves: &[&Rational]) -> f64 {
+    let size = opts
+        .settings
+        .size
+        .map_or_else(|| chord_size(curves), Size::get);
+    opts.settings.chord_tol.get() * size
 }
 
 /// The bisector of `c1(t)` and `c2(r)`.
 pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
-    let z = check(opts)?;
+    let z = zero_set_options(opts);
     for (which, c) in [(1, c1), (2, c2)] {
         if c.dim() != 2 {
             return Err(Error::NotPlanar {
@@ -129,7 +120,7 @@ pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<
         diag,
         selfb: false,
         trimmed: opts.trimmed,
-        chord: opts.chord_tol * chord_size(&[c1, c2]),
+        chord: chord_of(opts, &[c1, c2]),
     };
     // (Cells pairing two pieces of one line hold no bisector point: skipped.)
     let (s1, s2) = (StraightSpans::of(c1, diag), StraightSpans::of(c2, diag));
@@ -219,7 +210,7 @@ fn to_global(mut b: Bisector, frame: &Frame) -> Bisector {
 
 /// The self-bisector of `c`: pairs `t < r` of distinct foot points on the same curve.
 pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
-    let z = check(opts)?;
+    let z = zero_set_options(opts);
     if c.dim() != 2 {
         return Err(Error::NotPlanar {
             which: 1,
@@ -239,7 +230,7 @@ pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
         diag,
         selfb: true,
         trimmed: opts.trimmed,
-        chord: opts.chord_tol * chord_size(&[c]),
+        chord: chord_of(opts, &[c]),
     };
     let spans = StraightSpans::of(c, diag);
     let mut cells: Vec<Patch> = Vec::new();

@@ -8,16 +8,6 @@ pub enum Error {
     /// An error of the underlying B-spline algebra (invalid curve, domain mismatch, ...).
     #[error(transparent)]
     Spline(#[from] bspline::Error),
-    /// An option is out of range (the field is named).
-    #[error("option {field} = {value} is invalid: {why}")]
-    BadOption {
-        /// The option's name.
-        field: &'static str,
-        /// Its value.
-        value: f64,
-        /// What it must satisfy.
-        why: &'static str,
-    },
     /// A curve is not planar.
     #[error("curve {which} has dimension {dim}; bisectors need planar curves")]
     NotPlanar {

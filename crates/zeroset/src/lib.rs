@@ -33,4 +33,4 @@ pub use profile_bisector::{
 };
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};
-pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions, DEFAULT_CHORD_TOL, DEFAULT_TOL};
+pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions};

@@ -170,7 +170,6 @@ pub fn profile_bisector_of_pairs(
     opts: &BisectorOptions,
     keep: &dyn Fn(usize, usize) -> bool,
 ) -> Result<ProfileBisector> {
-    opts.validate()?;
     let run = Run::new(&[a, b], opts);
     let (sa, sb) = (sites(a), sites(b));
     let mut out = run.empty();
@@ -211,7 +210,6 @@ pub fn profile_self_bisector_of_pairs(
     opts: &BisectorOptions,
     keep: &dyn Fn(usize, usize) -> bool,
 ) -> Result<ProfileBisector> {
-    opts.validate()?;
     let run = Run::new(&[p], opts);
     let s = sites(p);
     let mut out = run.empty();

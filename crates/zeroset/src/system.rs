@@ -9,7 +9,7 @@
 
 use crate::error::Result;
 use crate::patch::{common_sign, Patch};
-use crate::zeroset::{DEFAULT_TOL, TOL_FLOOR};
+use crate::zeroset::TOL_FLOOR;
 use bspline::tensor::TensorBSpline;
 use nalgebra::{Matrix2, Vector2};
 use numeric::newton2::{newton2, Iterate, Newton2, StepVerdict};
@@ -29,7 +29,7 @@ pub struct SystemOptions {
 impl Default for SystemOptions {
     fn default() -> Self {
         Self {
-            tol: DEFAULT_TOL,
+            tol: numeric::tolerance::DEFAULT_PARAM_TOL,
             max_boxes: 1_000_000,
         }
     }

@@ -1,23 +1,13 @@
 //! The zero set of a bivariate B-spline function: the public entry point.
 
 use crate::assemble::assemble;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::extract::{Pieces, Tracer};
 use crate::patch::Patch;
 use bspline::tensor::TensorBSpline;
-use numeric::tolerance::check_pair;
+use numeric::tolerance::{ChordTol, ParamTol, Settings, Size};
 use numeric::Rect;
 use serde::{Deserialize, Serialize};
-
-/// The default parameter tolerance (relative to the domain) of [`ZeroSetOptions`],
-/// [`BisectorOptions`](crate::BisectorOptions) and [`SystemOptions`](crate::SystemOptions), the
-/// workspace's one ([`numeric::tolerance::DEFAULT_PARAM_TOL`]).
-pub use numeric::tolerance::DEFAULT_PARAM_TOL as DEFAULT_TOL;
-
-/// The default chord tolerance (relative to the size: the domain diagonal of a zero set, the
-/// curves' bounding-box diagonal of a bisector), the workspace's one
-/// ([`numeric::tolerance::DEFAULT_CHORD_TOL`]).
-pub use numeric::tolerance::DEFAULT_CHORD_TOL;
 
 /// The least tolerance whose reciprocal gives a depth limit: a zero, negative or NaN
 /// tolerance (the system options are not range-checked) then means the deepest subdivision
@@ -27,12 +17,11 @@ pub(crate) const TOL_FLOOR: f64 = 1e-300;
 /// Options for [`zero_set`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ZeroSetOptions {
-    /// Parameter tolerance relative to the domain: patches this small that are still not
-    /// resolved become singular or isolated points.
-    pub tol: f64,
-    /// Chord tolerance relative to the domain diagonal: the polylines stay this close to the
-    /// zero set (vertices are placed adaptively where it bends).
-    pub chord_tol: f64,
+    /// The tolerances: the parameter tolerance relative to the domain (patches this small
+    /// that are still not resolved become singular or isolated points), and the chord
+    /// tolerance relative to the size, by default the domain diagonal (the polylines stay
+    /// this close to the zero set; vertices are placed adaptively where it bends).
+    pub settings: Settings,
     /// Limit on the number of patches examined; hitting it makes the result incomplete.
     pub max_patches: usize,
 }
@@ -40,8 +29,7 @@ pub struct ZeroSetOptions {
 impl Default for ZeroSetOptions {
     fn default() -> Self {
         Self {
-            tol: DEFAULT_TOL,
-            chord_tol: DEFAULT_CHORD_TOL,
+            settings: Settings::default(),
             max_patches: 200_000,
         }
     }
@@ -49,28 +37,19 @@ impl Default for ZeroSetOptions {
 
 impl ZeroSetOptions {
     /// Sets the parameter tolerance.
-    pub fn tolerance(mut self, tol: f64) -> Self {
-        self.tol = tol;
+    pub fn tolerance(mut self, tol: ParamTol) -> Self {
+        self.settings.tol = tol;
         self
     }
     /// Sets the chord tolerance.
-    pub fn chord_tolerance(mut self, chord_tol: f64) -> Self {
-        self.chord_tol = chord_tol;
+    pub fn chord_tolerance(mut self, chord_tol: ChordTol) -> Self {
+        self.settings.chord_tol = chord_tol;
         self
-    }
-
-    pub(crate) fn check(&self) -> Result<()> {
-        check_pair(self.tol, self.chord_tol).map_err(|(field, e)| Error::BadOption {
-            field,
-            value: e.value,
-            why: e.requirement,
-        })?;
-        Ok(())
     }
 
     /// Depth limit implied by the tolerance: halving both sides down to `tol`, plus slack.
     pub(crate) fn max_depth(&self) -> usize {
-        let halvings = (1.0 / self.tol.max(TOL_FLOOR))
+        let halvings = (1.0 / self.settings.tol.get())
             .log2()
             .ceil()
             .clamp(1.0, 1100.0) as usize;
@@ -118,7 +97,6 @@ pub struct ZeroSet {
 /// assert!(z.branches[0].closed);
 /// ```
 pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
-    opts.check()?;
     let cells: Vec<Patch> = f.bezier_patches().iter().map(Patch::from_bezier).collect();
     let (dt, dr) = (f.domain_t(), f.domain_r());
     let dom = Rect::of(dt, dr);
@@ -130,7 +108,7 @@ pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
         dom,
         opts,
         &map,
-        opts.chord_tol * diag,
+        opts.settings.chord_tol.get() * opts.settings.size.map_or(diag, Size::get),
         &keep,
         &|_| false,
     );
@@ -150,7 +128,10 @@ pub(crate) fn run_cells(
 ) -> Pieces {
     let extent = [dom.t.width(), dom.r.width()];
     let tracer = Tracer {
-        min_size: [opts.tol * extent[0], opts.tol * extent[1]],
+        min_size: [
+            opts.settings.tol.get() * extent[0],
+            opts.settings.tol.get() * extent[1],
+        ],
         extent,
         dom,
         max_depth: opts.max_depth(),

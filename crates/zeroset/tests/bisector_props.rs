@@ -208,7 +208,7 @@ fn run_pair_on(
     // The chord tolerance itself: the tracer measures each segment's deviation (the seeds
     // kept below are where it had missed by up to 1.17x, between the quarter samples of a
     // segment whose image speed varies strongly).
-    let tol = opts.chord_tol * diag;
+    let tol = opts.settings.chord_tol.get() * diag;
     nothing_missed(&c1, &c2, &b, center, diag, tol, false, sides)
 }
 
@@ -232,7 +232,7 @@ fn run_self_on(p: &[[f64; 2]], c: Rational, side: Option<Side>) -> Result<(), Te
         .iter()
         .all(|br| br.tr.iter().all(|q| q[0] < q[1])));
     check_points(&c, &c, &b, size).map_err(TestCaseError::fail)?;
-    let tol = opts.chord_tol * diag;
+    let tol = opts.settings.chord_tol.get() * diag;
     nothing_missed(&c, &c, &b, center, diag, tol, true, sides)
 }
 

@@ -119,7 +119,7 @@ fn same_moved(
     // (an ulp of the data), which moves a point of the bisector at distance R from the
     // curves by about (R / size)² times as much: the normals meeting there are nearly
     // parallel.
-    let chord = BisectorOptions::default().chord_tol * diag;
+    let chord = BisectorOptions::default().settings.chord_tol.get() * diag;
     let rounding = 2.0 * f64::EPSILON * diag;
     // (Beyond `FAR` sizes from the curves the branches head for infinity, where the normals
     // are parallel, and no perturbation bound is tight: those points are not compared.)
@@ -174,7 +174,12 @@ fn far_tiny_quadratic_self_bisector() {
     let far = 105.0 * 2f64.powi(41);
     let p = vec![[-1.0, -1.0], [-1.0, -1.0], [10.0, 95.0]];
     let opts = BisectorOptions {
-        chord_tol: 0.5,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            0.5,
+            None,
+        )
+        .expect("settings in range"),
         ..Default::default()
     };
     same_moved(&[p], &[], ([far * k, 0.0], k), |s| {
@@ -195,7 +200,12 @@ fn rational_segment_self_bisector_is_the_segments() {
     let w = 2f64.powf(-21.75);
     let weighted = Rational::new(BSpline::bezier(2, coords).unwrap(), Some(&[w, 1.0])).unwrap();
     let opts = BisectorOptions {
-        chord_tol: 0.5,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            0.5,
+            None,
+        )
+        .expect("settings in range"),
         ..Default::default()
     };
     let (a, b) = (
@@ -222,7 +232,12 @@ fn points_stay_in_the_domain() {
     )
     .unwrap();
     let opts = BisectorOptions {
-        chord_tol: 0.5,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            0.5,
+            None,
+        )
+        .expect("settings in range"),
         ..Default::default()
     };
     let b = self_bisector(&tri, &opts).unwrap();
@@ -259,7 +274,7 @@ fn self_bisector_reaches_a_knot_peak_at_every_scale() {
     ];
     let p = pts(&a);
     let diag = diagonal(&p);
-    let tol = BisectorOptions::default().chord_tol * diag;
+    let tol = BisectorOptions::default().settings.chord_tol.get() * diag;
     for s in [1.0, 3.7, 1e-3, 7e5] {
         let q: Vec<[f64; 2]> = p.iter().map(|x| [s * x[0], s * x[1]]).collect();
         let curve = bsp(3, &q);
@@ -400,7 +415,7 @@ fn branches_ending_at_knot_corners_reach_the_centres_of_curvature() {
     ];
     for (a, knot) in cases {
         let p = pts(&a);
-        let tol = BisectorOptions::default().chord_tol * diagonal(&p);
+        let tol = BisectorOptions::default().settings.chord_tol.get() * diagonal(&p);
         for (o, s) in moves {
             // The curve as moved, mapped back: the move's rounding changes the data.
             let moved: Vec<[f64; 2]> = p

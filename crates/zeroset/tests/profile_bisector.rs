@@ -103,7 +103,12 @@ const CHORD: f64 = 1e-3;
 
 fn options(trimmed: bool) -> BisectorOptions {
     BisectorOptions {
-        chord_tol: CHORD,
+        settings: numeric::tolerance::Settings::new(
+            numeric::tolerance::DEFAULT_PARAM_TOL,
+            CHORD,
+            None,
+        )
+        .expect("settings in range"),
         trimmed,
         ..Default::default()
     }

@@ -2,7 +2,7 @@ use super::*;
 use crate::{medial_axis, MedialOptions, Verdict};
 use curve::{Profile, Region, Segment, V2};
 
-const TOL: f64 = zeroset::DEFAULT_TOL;
+const TOL: f64 = numeric::tolerance::DEFAULT_PARAM_TOL;
 
 /// A 10 × 6 pocket with rounded corners of radius 1: four ends at the arcs' centres, two
 /// junctions.

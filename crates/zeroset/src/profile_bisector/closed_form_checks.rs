@@ -61,7 +61,10 @@ pub(super) fn agrees_with_traced(
     size: f64,
 ) -> Result<(), TestCaseError> {
     let opts = BisectorOptions {
-        chord_tol: chord / 8.0,
+        settings: numeric::tolerance::Settings {
+            chord_tol: numeric::tolerance::ChordTol::new(chord / 8.0).expect("in range"),
+            ..Default::default()
+        },
         trimmed: false,
         ..BisectorOptions::default()
     };

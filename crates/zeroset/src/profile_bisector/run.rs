@@ -6,7 +6,7 @@ use super::{ProfileBisector, ProfileBranch};
 use crate::bisector::{bbox_of_points, BisectorOptions, FAR, TRIM_SLACK};
 use bspline::Rational;
 use curve::{ParamCurve, Profile};
-use numeric::tolerance::ChordTol;
+use numeric::tolerance::{ChordTol, Settings, Size};
 
 /// What one computation shares: the options, the profiles' size and reach.
 pub(super) struct Run<'a> {
@@ -29,13 +29,18 @@ impl<'a> Run<'a> {
             .collect();
         let (center, diag) = bbox_of_points(&pts);
         // (The contract's size: max(width, height) of the profiles' points together.)
-        let size = profiles
-            .iter()
-            .map(|p| p.bounding_box())
-            .reduce(curve::box_union)
-            .map(curve::box_size)
-            .filter(|s| *s > 0.0 && s.is_finite())
-            .unwrap_or(diag);
+        let size = opts.settings.size.map_or_else(
+            || {
+                profiles
+                    .iter()
+                    .map(|p| p.bounding_box())
+                    .reduce(curve::box_union)
+                    .map(curve::box_size)
+                    .filter(|s| *s > 0.0 && s.is_finite())
+                    .unwrap_or(diag)
+            },
+            Size::get,
+        );
         Self {
             profiles: [profiles[0], profiles[profiles.len() - 1]],
             opts: *opts,
@@ -58,8 +63,8 @@ impl<'a> Run<'a> {
         Reach {
             center: self.center,
             far: FAR * self.diag,
-            chord: self.opts.chord_tol * self.size,
-            tol: self.opts.tol,
+            chord: self.opts.settings.chord_tol.get() * self.size,
+            tol: self.opts.settings.tol.get(),
         }
     }
 
@@ -67,10 +72,15 @@ impl<'a> Run<'a> {
     /// chord tolerance relative to the profiles' size rather than the pair's.
     pub(super) fn pair_options(&self, curves: &[&Rational]) -> BisectorOptions {
         let pair = crate::bisector::chord_size(curves);
-        let chord =
-            (self.opts.chord_tol * self.size / pair).clamp(self.opts.chord_tol, ChordTol::COARSEST);
+        let own = self.opts.settings.chord_tol;
+        let chord = (own.get() * self.size / pair).clamp(own.get(), ChordTol::COARSEST);
         BisectorOptions {
-            chord_tol: chord,
+            // (In range but where the pair's size is no number: then the profiles' own.)
+            settings: Settings {
+                chord_tol: ChordTol::new(chord).unwrap_or(own),
+                size: None,
+                ..self.opts.settings
+            },
             trimmed: false,
             ..self.opts
         }

@@ -298,6 +298,13 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
+    /// The coefficients `c₀..c₃` of the cubic whose upper three are `upper` and which vanishes
+    /// at `x0`.
+    fn with_root(upper: [f64; 3], x0: f64) -> [f64; 4] {
+        let [c1, c2, c3] = upper;
+        [-((c3 * x0 + c2) * x0 + c1) * x0, c1, c2, c3]
+    }
+
     /// `f(x) = Σ cₖ xᵏ` (degree 3) with its first two derivatives.
     fn cubic(c: [f64; 4]) -> impl Fn(f64) -> (f64, f64, f64) {
         move |x| {
@@ -329,9 +336,8 @@ mod tests {
             at in 0.0f64..1.0,
             hint in -3.0f64..3.0,
         ) {
-            // A root at `x0` inside the bracket (the sign may still not change: two more).
-            let x0 = lo + at * (hi - lo);
-            let c = [-((c[2] * x0 + c[1]) * x0 + c[0]) * x0, c[0], c[1], c[2]];
+            // A root inside the bracket (the sign may still not change: two more).
+            let c = with_root(c, lo + at * (hi - lo));
             let f = cubic(c);
             let (flo, fhi) = (f(lo).0, f(hi).0);
             prop_assume!((flo < 0.0) != (fhi < 0.0) && flo != 0.0 && fhi != 0.0);
@@ -428,8 +434,7 @@ mod tests {
             hi in 0.0f64..2.0,
             at in 0.0f64..1.0,
         ) {
-            let x0 = lo + at * (hi - lo);
-            let c = [-((c[2] * x0 + c[1]) * x0 + c[0]) * x0, c[0], c[1], c[2]];
+            let c = with_root(c, lo + at * (hi - lo));
             let f = cubic(c);
             let (flo, fhi) = (f(lo).0, f(hi).0);
             prop_assume!((flo < 0.0) != (fhi < 0.0) && flo != 0.0 && fhi != 0.0);

@@ -9,10 +9,11 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The crates from left to right, with their source folders (a crate may use those before it).
-const CRATES: [(&str, &str); 10] = [
+const CRATES: [(&str, &str); 11] = [
     ("numeric", "crates/numeric"),
     ("bspline", "crates/bspline"),
     ("curve", "crates/curve"),
+    ("geometry", "crates/geometry"),
     ("testkit", "crates/testkit"),
     ("zeroset", "crates/zeroset"),
     ("antipodal", "crates/antipodal"),

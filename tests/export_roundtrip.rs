@@ -13,6 +13,7 @@ use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::{parse_drawing, parse_region, read_region, Curve, DrawingFormat};
 use curvekit::medial::{MedialOptions, NodeKind};
 use curvekit::offset::{OffsetOptions, OffsetSegment, Offsets};
+use geometry::NearestPoint;
 
 /// The round trip's bound, relative to the size (the contract's).
 const ROUND_TRIP: f64 = 1e-9;

@@ -14,6 +14,7 @@ pub(crate) use texts::{
 use super::timing::Stats;
 use curvekit::io::{Curve, CurveKind};
 use curvekit::svg::Figure;
+use geometry::Flatten;
 use std::fmt::Write as _;
 
 /// How far a region's drawn boundary strays from it, as a share of its size (a tenth of a

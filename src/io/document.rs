@@ -6,6 +6,7 @@
 
 use super::CurveKind;
 use curve::{OwnParam, ParamCurve, Profile, Region, Segment, SegmentKind};
+use geometry::Flatten;
 use serde_json::{json, Value};
 
 /// The document of a shape read from a drawing (a profile, a region, several regions, a line

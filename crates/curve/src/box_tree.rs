@@ -32,7 +32,7 @@ enum NodeKind {
 
 /// The hierarchy over a list of boxes `[lo x, lo y, hi x, hi y]`.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub(crate) struct BoxTree {
+pub struct BoxTree {
     nodes: Vec<TreeNode>,
     /// The boxes' indices, leaf by leaf.
     order: Vec<u32>,
@@ -96,7 +96,7 @@ impl BoxTree {
 
     /// Calls `visit(i)` for every box `i` whose distance from `x` is below `reach`, and for
     /// some others of the same leaves (in no particular order; the caller tests each).
-    pub(crate) fn within(&self, x: V2, reach: f64, mut visit: impl FnMut(usize)) {
+    pub fn within(&self, x: V2, reach: f64, mut visit: impl FnMut(usize)) {
         if self.nodes.is_empty() {
             return;
         }
@@ -123,7 +123,7 @@ impl BoxTree {
     /// stops once `visit(i)` has returned a distance no box left can beat: `visit` is called
     /// for box `i` while the least distance from `x` of the nodes left is below the least
     /// value `visit` has returned.
-    pub(crate) fn nearest_first(&self, x: V2, mut visit: impl FnMut(usize) -> f64) {
+    pub fn nearest_first(&self, x: V2, mut visit: impl FnMut(usize) -> f64) {
         if self.nodes.is_empty() {
             return;
         }

@@ -12,6 +12,13 @@
 //! - [`Frame`]: exact changes of coordinates into a frame of about unit size near the curve.
 //! - [`exact`]: exact predicates on the data (collinear points, parallel stretches).
 //! - [`V2`], [`Jet`]: the small geometric types the algorithms share.
+//! - What a profile keeps to be searched fast, as data: the boxes of its segments and of
+//!   their Bézier pieces ([`piece_bounds`]) and the hierarchy over them ([`box_tree`]). The
+//!   searches themselves (clearance, nearest point, flattening) are the `geometry` crate's.
+//!
+//! The constructors keep the model's promise: a [`Profile`] does not cross itself and a
+//! [`Region`]'s boundaries do not cross each other (a certified crossing test, the one
+//! predicate the model runs, since every certificate built on a profile rests on it).
 //!
 //! ```
 //! use curve::{shapes::Ellipse, ParamCurve, PlaneCurve};
@@ -22,25 +29,21 @@
 
 mod affine;
 mod bezier_piece;
-mod box_tree;
+pub mod box_tree;
 pub mod circle;
-mod clearance;
 mod corner_knots;
 mod crossing;
 mod error;
 pub mod exact;
 mod extent;
 mod fill;
-mod flatten;
 mod frame;
 mod geom;
-mod nearest;
 mod on_circle;
 mod own_param;
 mod param;
-mod piece_bounds;
+pub mod piece_bounds;
 mod plane;
-mod polygon_clearance;
 mod profile;
 mod region;
 mod segment;
@@ -50,14 +53,12 @@ mod spline;
 pub mod watch;
 
 pub use affine::Affine;
-pub use clearance::Clearance;
 pub use corner_knots::{DocumentSpan, CORNER_TURN};
 pub use error::{Error, Result};
 pub use extent::{box_size, curves_box, union as box_union, Box2};
 pub use fill::{FillRule, FilledOutline};
 pub use frame::Frame;
 pub use geom::{distance_to_segment, squared_distance_to_segment, wrap_pi, Jet, V2};
-pub use nearest::Nearest;
 pub use on_circle::OnCircle;
 pub use own_param::OwnParam;
 pub use param::ParamCurve;

@@ -1,7 +1,7 @@
 //! What the rounding of a segment's Bézier pieces may hide, bounded: the error of each
 //! piece's homogeneous coefficients, the room it gives its Euclidean control points, and the
 //! box each piece lies in. The profile keeps these boxes; the disk tests of
-//! [`crate::clearance`] and the box hierarchy read them.
+//! `geometry`'s clearance and nearest-point searches and the box hierarchy read them.
 
 use crate::geom::V2;
 use crate::segment::Segment;
@@ -10,13 +10,15 @@ use numeric::rounding::ulps;
 
 /// Units of rounding allowed per comparison: the Euclidean points (a division), the bounds
 /// (a few products and sums) and one more per halving of the piece.
-pub(crate) const CLEARANCE_ROUNDING_ULPS: f64 = 16.0;
+pub const CLEARANCE_ROUNDING_ULPS: f64 = 16.0;
 
 /// Bounds on the error of a piece's homogeneous coefficients.
 #[derive(Clone, Copy)]
-pub(crate) struct Errors {
-    pub(crate) point: f64,
-    pub(crate) weight: f64,
+pub struct Errors {
+    /// Of the points' coordinates `X, Y`.
+    pub point: f64,
+    /// Of the weights.
+    pub weight: f64,
 }
 
 impl Errors {
@@ -24,7 +26,7 @@ impl Errors {
     /// `w`, of a piece halved `depth` times) may be off by: `X / w` moves by
     /// (δX + |X / w| δw) / w for errors δX, δw ≤ w / 2 of its coefficients (to first order;
     /// twice that covers the rest), and the arithmetic's rounding.
-    pub(crate) fn room(self, w: f64, mag: f64, depth: usize) -> f64 {
+    pub fn room(self, w: f64, mag: f64, depth: usize) -> f64 {
         4.0 * (self.point + mag * self.weight) / w
             + ulps(CLEARANCE_ROUNDING_ULPS + depth as f64) * mag
     }
@@ -32,7 +34,7 @@ impl Errors {
 
 /// Bounds on the error of piece `k`'s homogeneous coefficients: of the points' `X, Y` (with
 /// `given` added: the curve's own, the rounding of `w·x`) and of the weights.
-pub(crate) fn coefficient_error(pieces: &Piecewise, k: usize, given: f64) -> Errors {
+pub fn coefficient_error(pieces: &Piecewise, k: usize, given: f64) -> Errors {
     let e = pieces.errors(k);
     Errors {
         point: e[0].max(e[1]) + given,
@@ -81,7 +83,7 @@ pub(crate) fn piece_boxes(seg: &Segment) -> Vec<[f64; 4]> {
 }
 
 /// A lower bound on the distance from `x` to a box `[lo x, lo y, hi x, hi y]`.
-pub(crate) fn box_distance(b: [f64; 4], x: V2) -> f64 {
+pub fn box_distance(b: [f64; 4], x: V2) -> f64 {
     let dx = (b[0] - x.x).max(x.x - b[2]).max(0.0);
     let dy = (b[1] - x.y).max(x.y - b[3]).max(0.0);
     // (The norm rounds by up to two units either way, a square root of a sum of squares:

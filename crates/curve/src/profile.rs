@@ -247,13 +247,13 @@ impl Profile {
     }
 
     /// The box of Bézier piece `k` of segment `i`, grown by what the rounding of its
-    /// Euclidean control points may hide (see [`crate::clearance`]).
-    pub(crate) fn piece_box(&self, i: usize, k: usize) -> [f64; 4] {
+    /// Euclidean control points may hide (see [`crate::piece_bounds`]): the piece lies in it.
+    pub fn piece_box(&self, i: usize, k: usize) -> [f64; 4] {
         self.piece_boxes[i][k]
     }
 
     /// The hierarchy over the segments' boxes.
-    pub(crate) fn box_tree(&self) -> &BoxTree {
+    pub fn box_tree(&self) -> &BoxTree {
         &self.tree
     }
 

@@ -239,7 +239,7 @@ impl SplineCurve {
 
     /// The homogeneous Bézier pieces `(X, Y, w)` (point-major), each with the bound on its
     /// coefficients' error from their extraction.
-    pub(crate) fn bezier_pieces(&self) -> &Piecewise {
+    pub fn bezier_pieces(&self) -> &Piecewise {
         &self.pieces
     }
 

@@ -15,6 +15,7 @@
 use crate::candidates::{Candidate, Vertex};
 use crate::sites::{Sites, EMPTY_SLACK};
 use curve::{JointKind, ParamCurve};
+use geometry::NearestPoint;
 use numeric::rounding::ulps;
 
 /// Units of rounding (of the centre's coordinates and the radius) by which the other side

@@ -13,7 +13,7 @@
 //! at their common ends: junctions, ends at centres of curvature, convex corners; stretches
 //! that continue each other (a foot passing from one segment to the next) are one edge.
 //!
-//! Emptiness is proven on the boundaries' control hulls ([`curve::Profile::clearance`]);
+//! Emptiness is proven on the boundaries' control hulls ([`geometry::ProfileClearance::clearance`]);
 //! where rounding leaves a disk undecided, the nearest point found decides it and the
 //! result is not certified. Junctions are solved numerically (regula falsi on the third
 //! contact) and then proven: a disk of radius 1e-10 (or 1e-9) of the size about each holds a

@@ -2,7 +2,8 @@
 //! profile parameter, which side of a boundary is inside, and the distance from a point to
 //! the whole boundary.
 
-use curve::{Clearance, JointKind, ParamCurve, Profile, Region};
+use curve::{JointKind, ParamCurve, Profile, Region};
+use geometry::{Clearance, NearestPoint, ProfileClearance};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A disk counts as empty when no boundary point is nearer its centre than its radius by
@@ -165,7 +166,7 @@ impl<'a> Sites<'a> {
 
     /// What the disk centred at `x` of radius `rho` holds: no boundary point nearer its
     /// centre than the radius less the slack, or one such point. Proven on the boundaries'
-    /// control hulls ([`Profile::clearance`], nearest segments first) where rounding allows,
+    /// control hulls ([`ProfileClearance::clearance`], nearest segments first) where rounding allows,
     /// else decided by the nearest point found.
     pub(crate) fn disk(&self, x: [f64; 2], rho: f64) -> Disk {
         let (disk, decided) = self.disk_verdict(x, rho);

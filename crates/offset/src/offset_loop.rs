@@ -3,6 +3,7 @@
 
 use bspline::knots::basis_at;
 use curve::{Profile, Segment, SegmentKind, SplineCurve};
+use geometry::Flatten;
 use serde::{Deserialize, Serialize};
 
 /// One piece of an offset loop.

@@ -6,7 +6,8 @@ use super::{distance, Foot, JUNCTION_ROOM};
 use crate::junction_proof::{closed_site_at, proven_within, ClosedSite};
 use crate::sites::Sites;
 use crate::Node;
-use curve::{Clearance, ParamCurve, V2};
+use curve::{ParamCurve, V2};
+use geometry::{Clearance, ProfileClearance};
 use numeric::rounding::ulps;
 
 /// The polygons a junction is proven with, tried in turn: the share of the room about it
@@ -38,7 +39,7 @@ struct Polygon {
 }
 
 /// The narrowest enclosure of a distance, in units of rounding of the coordinates: four
-/// times the disk tests' own allowance ([`curve::Profile::clearance`] allows 16).
+/// times the disk tests' own allowance ([`geometry::ProfileClearance::clearance`] allows 16).
 const ENCLOSURE_ULPS: f64 = 64.0;
 
 /// The widest enclosure of a distance a polygon is tried with, as a share of its radius.

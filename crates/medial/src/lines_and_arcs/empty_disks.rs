@@ -7,6 +7,7 @@ use crate::candidates::Vertex;
 use crate::sites::{Disk, EMPTY_SLACK};
 use crate::true_sites::{LineSite, TrueSite};
 use curve::V2;
+use geometry::ProfileClearance;
 use numeric::rounding::ulps;
 
 /// How far (a share of the size) an arc's exact form may stray from its circle for the

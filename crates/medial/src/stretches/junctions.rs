@@ -6,6 +6,7 @@ use super::Branch;
 use crate::candidates::Vertex;
 use crate::sites::Disk;
 use curve::ParamCurve;
+use geometry::NearestPoint;
 use numeric::rounding::ulps;
 use numeric::solve::Itp;
 

@@ -6,6 +6,7 @@ use super::{ProfileBisector, ProfileBranch};
 use crate::bisector::{bbox_of_points, BisectorOptions, FAR, TRIM_SLACK};
 use bspline::Rational;
 use curve::{ParamCurve, Profile};
+use geometry::NearestPoint;
 use numeric::tolerance::{ChordTol, Settings, Size};
 
 /// What one computation shares: the options, the profiles' size and reach.

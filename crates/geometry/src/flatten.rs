@@ -8,8 +8,8 @@
 //! chord: the polyline's every point is within the tolerance of the curve and back. Every
 //! vertex is a point of the curve (a piece's end), and comes with its parameter.
 
-use crate::geom::distance_to_segment;
-use crate::{ParamCurve, Profile, Segment};
+use curve::distance_to_segment;
+use curve::{ParamCurve, Profile, Segment};
 use numeric::rounding::ulps;
 
 /// How near (a share of the size) two consecutive points are one: the contract's joint
@@ -26,80 +26,63 @@ const FLATTENING_ROUNDING: f64 = ulps(1e3);
 /// the recursion on a degenerate piece).
 const MAX_FLATTENING_HALVINGS: u32 = 24;
 
-impl Profile {
-    /// The profile as a polyline within `tol` of it (both ways), from its start to its end
-    /// (for a closed profile, its start again at the end); every vertex on the profile. A
-    /// `tol` that is not finite and positive is taken as the profile's size × 1e-3, and none
-    /// finer than the rounding of its coordinates (1e3 ε of their magnitude) is taken.
-    ///
-    /// ```
-    /// use curve::{Profile, Segment};
-    /// let circle = Profile::new(vec![Segment::arc([0.0, 0.0], 1.0, 0.0, std::f64::consts::TAU).unwrap()], None).unwrap();
-    /// let ring = circle.flattened(1e-3);
-    /// assert_eq!(ring.first(), ring.last());
-    /// // Each chord of a circle of radius 1 within 1e-3 spans at most 2·acos(1 − 1e-3) ≈ 0.0895 rad.
-    /// assert!(ring.len() >= (std::f64::consts::TAU / 0.0895) as usize);
-    /// ```
-    pub fn flattened(&self, tol: f64) -> Vec<[f64; 2]> {
-        self.flattened_with_params(tol)
-            .into_iter()
-            .map(|(p, _)| p)
-            .collect()
-    }
-
-    /// [`Profile::flattened`], each vertex with its parameter on the profile.
-    pub fn flattened_with_params(&self, tol: f64) -> Vec<([f64; 2], f64)> {
-        let tol = if tol.is_finite() && tol > 0.0 {
-            tol
-        } else {
-            1e-3 * self.size()
-        };
-        // (No finer than the rounding of the coordinates: below it no halving flattens a
-        // piece, and the halvings would run to their bound everywhere.)
-        let b = self.bounding_box();
-        let far = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let tol = tol.max(FLATTENING_ROUNDING * (self.size() + far));
-        let joined = JOINED * self.size();
-        let mut points: Vec<([f64; 2], f64)> = Vec::new();
-        for (i, s) in self.segments().iter().enumerate() {
-            let start = points.len();
-            flatten_segment(s, tol, joined, &mut points);
-            for p in &mut points[start..] {
-                p.1 = self.profile_param(i, p.1);
-            }
-        }
-        // A closed profile's polyline ends exactly where it starts.
-        if self.is_closed() && points.len() > 1 {
-            let (first, last) = (points[0].0, points[points.len() - 1].0);
-            if (first[0] - last[0]).hypot(first[1] - last[1]) <= joined {
-                let end = points.len() - 1;
-                points[end].0 = first;
-            }
-        }
-        points
-    }
+/// [`crate::Flatten::flattened`] of a profile.
+pub(crate) fn flattened(profile: &Profile, tol: f64) -> Vec<[f64; 2]> {
+    flattened_with_params(profile, tol)
+        .into_iter()
+        .map(|(p, _)| p)
+        .collect()
 }
 
-impl Segment {
-    /// The segment as a polyline within `tol` of it (both ways), every vertex on it (as
-    /// [`Profile::flattened`], for a segment that is no profile's: an offset loop's piece).
-    pub fn flattened(&self, tol: f64) -> Vec<[f64; 2]> {
-        // (No finer than the rounding of its coordinates, as for a profile.)
-        let far = self
-            .curve()
-            .control_points()
-            .iter()
-            .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
-        let tol = if tol.is_finite() && tol > 0.0 {
-            tol
-        } else {
-            0.0
+/// [`crate::Flatten::flattened_with_params`] of a profile.
+pub(crate) fn flattened_with_params(profile: &Profile, tol: f64) -> Vec<([f64; 2], f64)> {
+    let tol = if tol.is_finite() && tol > 0.0 {
+        tol
+    } else {
+        1e-3 * profile.size()
+    };
+    // (No finer than the rounding of the coordinates: below it no halving flattens a
+    // piece, and the halvings would run to their bound everywhere.)
+    let b = profile.bounding_box();
+    let far = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let tol = tol.max(FLATTENING_ROUNDING * (profile.size() + far));
+    let joined = JOINED * profile.size();
+    let mut points: Vec<([f64; 2], f64)> = Vec::new();
+    for (i, s) in profile.segments().iter().enumerate() {
+        let start = points.len();
+        flatten_segment(s, tol, joined, &mut points);
+        for p in &mut points[start..] {
+            p.1 = profile.profile_param(i, p.1);
         }
-        .max(FLATTENING_ROUNDING * far);
-        let mut points = Vec::new();
-        flatten_segment(self, tol, 0.0, &mut points);
-        points.into_iter().map(|(p, _)| p).collect()
     }
+    // A closed profile's polyline ends exactly where it starts.
+    if profile.is_closed() && points.len() > 1 {
+        let (first, last) = (points[0].0, points[points.len() - 1].0);
+        if (first[0] - last[0]).hypot(first[1] - last[1]) <= joined {
+            let end = points.len() - 1;
+            points[end].0 = first;
+        }
+    }
+    points
+}
+
+/// [`crate::Flatten::flattened`] of a segment.
+pub(crate) fn segment_flattened(segment: &Segment, tol: f64) -> Vec<[f64; 2]> {
+    // (No finer than the rounding of its coordinates, as for a profile.)
+    let far = segment
+        .curve()
+        .control_points()
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    let tol = if tol.is_finite() && tol > 0.0 {
+        tol
+    } else {
+        0.0
+    }
+    .max(FLATTENING_ROUNDING * far);
+    let mut points = Vec::new();
+    flatten_segment(segment, tol, 0.0, &mut points);
+    points.into_iter().map(|(p, _)| p).collect()
 }
 
 /// Appends the points of `s` within `tol`, each with its parameter on the exact form (its
@@ -173,7 +156,8 @@ fn de_casteljau_half(control: &[[f64; 3]]) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{ParamCurve, SegmentKind, SplineCurve};
+    use crate::Flatten;
+    use curve::{ParamCurve, SegmentKind, SplineCurve};
     use proptest::prelude::*;
 
     /// The distance from `p` to the polyline.
@@ -208,7 +192,7 @@ mod tests {
             prop_assume!(profile.is_some());
             let profile = profile.unwrap();
             let tol = 10f64.powf(tol_exp);
-            let vertices = profile.flattened_with_params(tol);
+            let vertices = flattened_with_params(&profile, tol);
             let line: Vec<[f64; 2]> = vertices.iter().map(|v| v.0).collect();
             prop_assert!(line.len() >= 2);
             let (a, b) = profile.domain();

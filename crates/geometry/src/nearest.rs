@@ -3,11 +3,11 @@
 //! included; segments whose control-point box is no nearer than a point already found are
 //! skipped. A sampled search: a feature narrower than the sampling can be missed.
 
-use crate::geom::V2;
-use crate::param::ParamCurve;
-use crate::piece_bounds::box_distance;
-use crate::profile::Profile;
-use crate::segment::Segment;
+use curve::piece_bounds::box_distance;
+use curve::ParamCurve;
+use curve::Profile;
+use curve::Segment;
+use curve::V2;
 use numeric::minimize::{minimize, Bracket, Limits};
 use std::ops::ControlFlow;
 
@@ -40,62 +40,46 @@ pub struct Nearest {
     pub u: f64,
 }
 
-impl Profile {
-    /// The nearest point of the profile to `x`; the search stops early once a point nearer
-    /// than `enough` is found (pass 0 for the nearest point itself).
-    ///
-    /// ```
-    /// use curve::{Profile, Segment};
-    /// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
-    /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
-    /// let box_ = Profile::new(sides, None).unwrap();
-    /// let n = box_.nearest([1.0, 0.5], 0.0);
-    /// assert!((n.distance - 0.5).abs() < 1e-15 && (n.u - 0.25).abs() < 1e-15);
-    /// ```
-    pub fn nearest(&self, x: [f64; 2], enough: f64) -> Nearest {
-        let x = V2::from_arr(x);
-        let mut best = Nearest {
-            distance: f64::INFINITY,
-            u: 0.0,
-        };
-        // Nearest boxes first: once a point is found, every segment whose box is no nearer
-        // is passed over.
-        let mut done = false;
-        self.box_tree().nearest_first(x, |i| {
-            if done || box_distance(self.segment_box(i), x) >= best.distance {
-                return f64::INFINITY;
-            }
-            let (d, v) = nearest_on(&self.segments()[i], x);
-            if d < best.distance {
-                best = Nearest {
-                    distance: d,
-                    u: self.profile_param(i, v),
-                };
-                done = d < enough;
-            }
-            // (Once near enough, no node is nearer than minus infinity: the search ends.)
-            if done {
-                f64::NEG_INFINITY
-            } else {
-                d
-            }
-        });
-        best
-    }
+/// [`crate::NearestPoint::nearest`].
+pub(crate) fn nearest(profile: &Profile, x: [f64; 2], enough: f64) -> Nearest {
+    let x = V2::from_arr(x);
+    let mut best = Nearest {
+        distance: f64::INFINITY,
+        u: 0.0,
+    };
+    // Nearest boxes first: once a point is found, every segment whose box is no nearer
+    // is passed over.
+    let mut done = false;
+    profile.box_tree().nearest_first(x, |i| {
+        if done || box_distance(profile.segment_box(i), x) >= best.distance {
+            return f64::INFINITY;
+        }
+        let (d, v) = nearest_on(&profile.segments()[i], x);
+        if d < best.distance {
+            best = Nearest {
+                distance: d,
+                u: profile.profile_param(i, v),
+            };
+            done = d < enough;
+        }
+        // (Once near enough, no node is nearer than minus infinity: the search ends.)
+        if done {
+            f64::NEG_INFINITY
+        } else {
+            d
+        }
+    });
+    best
 }
 
-impl Profile {
-    /// The nearest point to `x` near the parameter `u`: Newton's method on the foot-point
-    /// condition from `u`, inside the segment holding it (a local search, for a point known
-    /// to be near: a junction's third contact, followed as the disk moves).
-    pub fn nearest_near(&self, x: [f64; 2], u: f64) -> Nearest {
-        let (i, _) = self.locate(u);
-        let x = V2::from_arr(x);
-        let u = polish(self, x, u, i as f64, (i + 1) as f64);
-        Nearest {
-            distance: (self.jet_to(u, 0).p - x).norm(),
-            u,
-        }
+/// [`crate::NearestPoint::nearest_near`].
+pub(crate) fn nearest_near(profile: &Profile, x: [f64; 2], u: f64) -> Nearest {
+    let (i, _) = profile.locate(u);
+    let x = V2::from_arr(x);
+    let u = polish(profile, x, u, i as f64, (i + 1) as f64);
+    Nearest {
+        distance: (profile.jet_to(u, 0).p - x).norm(),
+        u,
     }
 }
 
@@ -170,7 +154,8 @@ fn polish(c: &impl ParamCurve, x: V2, u: f64, lo: f64, hi: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Segment;
+    use crate::NearestPoint;
+    use curve::Segment;
 
     /// Against the exact distance to a closed chain of lines and a half circle, on random
     /// points near and far: the distance agrees to rounding and is attained at `u`.

@@ -3,8 +3,8 @@
 //! circle.
 
 use super::pieces::Piece;
-use crate::geom::V2;
-use crate::piece_bounds::{box_distance, Errors};
+use curve::piece_bounds::{box_distance, Errors};
+use curve::V2;
 use smallvec::SmallVec;
 
 pub(super) enum Verdict {

@@ -3,14 +3,14 @@
 //! A medial axis tests the disks along a bisector of two lines all at once: disks whose
 //! centres and radii move linearly sweep the convex hull of the two end disks, which is the
 //! two disks and the quadrilateral between their points of tangency. The disks are tested one
-//! by one ([`Profile::clearance`]); the quadrilateral here, against each line near it, by the
+//! by one ([`crate::ProfileClearance::clearance`]); the quadrilateral here, against each line near it, by the
 //! separating axis theorem (two convex sets of the plane are apart if and only if the
 //! projections on the normal of some edge of either are). Every comparison leaves room for
 //! the rounding of the projections, so a separation found holds for the exact lines.
 
-use crate::geom::V2;
-use crate::profile::Profile;
-use crate::segment::SegmentKind;
+use curve::Profile;
+use curve::SegmentKind;
+use curve::V2;
 use numeric::rounding::ulps;
 
 /// Units of rounding allowed in a projection: a dot product of coordinates with an edge's
@@ -18,49 +18,34 @@ use numeric::rounding::ulps;
 /// times the normal), doubled for the difference of two of them.
 const POLYGON_ROUNDING_ULPS: f64 = 8.0;
 
-impl Profile {
-    /// Whether no point of the profile lies in the closed convex polygon `corners` (in either
-    /// turning order): `true` where every segment near it is a line proven apart from it by
-    /// a separating axis, with room for rounding. `false` where that is not proven: a
-    /// segment meets the polygon or comes within rounding of it, a curved segment lies near
-    /// it, or the polygon has fewer than three corners or is not finite.
-    ///
-    /// ```
-    /// use curve::{Profile, Segment};
-    /// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
-    /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
-    /// let box_ = Profile::new(sides, None).unwrap();
-    /// assert!(box_.misses_convex_polygon(&[[1.0, 0.5], [3.0, 0.5], [2.0, 1.5]]));
-    /// assert!(!box_.misses_convex_polygon(&[[1.0, 0.5], [3.0, 0.5], [2.0, 2.5]]));
-    /// ```
-    pub fn misses_convex_polygon(&self, corners: &[[f64; 2]]) -> bool {
-        if corners.len() < 3 || corners.iter().flatten().any(|c| !c.is_finite()) {
-            return false;
-        }
-        let pts: Vec<V2> = corners.iter().map(|&c| V2::from_arr(c)).collect();
-        let (mut lo, mut hi) = (pts[0], pts[0]);
-        for p in &pts {
-            lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
-            hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
-        }
-        let centre = (lo + hi) * 0.5;
-        // (A shade beyond the half diagonal: the tree passes over no box the test needs.)
-        let reach = (hi - lo).norm() * 0.5 * (1.0 + 1e-12) + f64::MIN_POSITIVE;
-        let mut apart = true;
-        self.box_tree().within(centre, reach, |i| {
-            if !apart {
-                return;
-            }
-            let b = self.segment_box(i);
-            // (Boxes apart: the segment, inside its box, is apart from the polygon too.)
-            if b[2] < lo.x || b[0] > hi.x || b[3] < lo.y || b[1] > hi.y {
-                return;
-            }
-            let seg = &self.segments()[i];
-            apart = seg.kind() == SegmentKind::Line && separated(&pts, [seg.start(), seg.end()]);
-        });
-        apart
+/// [`crate::ProfileClearance::misses_convex_polygon`].
+pub(crate) fn misses_convex_polygon(profile: &Profile, corners: &[[f64; 2]]) -> bool {
+    if corners.len() < 3 || corners.iter().flatten().any(|c| !c.is_finite()) {
+        return false;
     }
+    let pts: Vec<V2> = corners.iter().map(|&c| V2::from_arr(c)).collect();
+    let (mut lo, mut hi) = (pts[0], pts[0]);
+    for p in &pts {
+        lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    let centre = (lo + hi) * 0.5;
+    // (A shade beyond the half diagonal: the tree passes over no box the test needs.)
+    let reach = (hi - lo).norm() * 0.5 * (1.0 + 1e-12) + f64::MIN_POSITIVE;
+    let mut apart = true;
+    profile.box_tree().within(centre, reach, |i| {
+        if !apart {
+            return;
+        }
+        let b = profile.segment_box(i);
+        // (Boxes apart: the segment, inside its box, is apart from the polygon too.)
+        if b[2] < lo.x || b[0] > hi.x || b[3] < lo.y || b[1] > hi.y {
+            return;
+        }
+        let seg = &profile.segments()[i];
+        apart = seg.kind() == SegmentKind::Line && separated(&pts, [seg.start(), seg.end()]);
+    });
+    apart
 }
 
 /// Whether the segment `s` and the convex polygon `poly` are apart along the normal of an
@@ -92,8 +77,9 @@ fn separated(poly: &[V2], s: [V2; 2]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::separated;
-    use crate::geom::V2;
-    use crate::{Profile, Segment};
+    use crate::ProfileClearance;
+    use curve::V2;
+    use curve::{Profile, Segment};
     use proptest::prelude::*;
 
     /// Whether the segment meets the convex polygon, by dense samples of the segment tested

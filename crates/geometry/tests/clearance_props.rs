@@ -1,4 +1,4 @@
-//! `Profile::clearance` against an independent distance: dense samples of every segment,
+//! `ProfileClearance::clearance` against an independent distance: dense samples of every segment,
 //! refined by golden-section search about the least. A disk a little smaller than the
 //! distance must be clear, a little larger entered (at a point that really is inside), on
 //! random profiles of lines, arcs and rational cubic Béziers and on rational Béziers of degree
@@ -7,7 +7,8 @@
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use curve::{Clearance, ParamCurve, Profile, Segment, SegmentKind, SplineCurve};
+use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve};
+use geometry::{Clearance, ProfileClearance};
 use proptest::prelude::*;
 
 /// Samples per segment of the oracle.

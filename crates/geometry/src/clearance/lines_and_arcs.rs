@@ -1,10 +1,10 @@
 //! Segments decided whole against a disk: an arc on its circle, a line by its exact
 //! distance from the centre.
 
-use crate::geom::V2;
-use crate::param::ParamCurve;
-use crate::piece_bounds::CLEARANCE_ROUNDING_ULPS;
-use crate::segment::{Segment, SegmentKind};
+use curve::piece_bounds::CLEARANCE_ROUNDING_ULPS;
+use curve::ParamCurve;
+use curve::V2;
+use curve::{Segment, SegmentKind};
 use numeric::rounding::ulps;
 
 /// Units of rounding allowed between an arc's rational form and its circle: its control
@@ -55,7 +55,7 @@ pub(super) fn line_passes_by(seg: &Segment, x: V2, r: f64) -> bool {
         return false;
     }
     let (a, b) = (seg.start(), seg.end());
-    let squared = crate::geom::squared_distance_to_segment(x.arr(), a.arr(), b.arr());
+    let squared = curve::squared_distance_to_segment(x.arr(), a.arr(), b.arr());
     // (The foot and the difference round by a few units of the coordinates; the squares by
     // a few units of themselves.)
     let room = ulps(CLEARANCE_ROUNDING_ULPS) * (x.norm() + a.norm() + b.norm() + r);

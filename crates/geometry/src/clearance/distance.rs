@@ -3,8 +3,8 @@
 //! tangent at its least point.
 
 use super::pieces::Piece;
-use crate::geom::V2;
-use crate::piece_bounds::Errors;
+use curve::piece_bounds::Errors;
+use curve::V2;
 use numeric::rounding::ulps;
 use smallvec::{smallvec, SmallVec};
 

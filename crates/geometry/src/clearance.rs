@@ -18,8 +18,8 @@
 mod distance;
 mod hull;
 mod lines_and_arcs;
-mod pieces;
 
+use crate::pieces::{halve, Pending, Piece};
 use curve::piece_bounds::{box_distance, coefficient_error, CLEARANCE_ROUNDING_ULPS};
 use curve::ParamCurve;
 use curve::Profile;
@@ -28,7 +28,6 @@ use distance::{distance_verdict, Convex};
 use hull::{test_piece, Verdict};
 use lines_and_arcs::{arc_distance, line_passes_by};
 use numeric::rounding::ulps;
-use pieces::{halve, Pending, Piece};
 
 /// Halvings of one Bézier piece before it is left undecided: a piece 2^-40 of its span is
 /// far below any slack a caller may leave between the disk and the curve.

@@ -6,8 +6,9 @@
 //!   ([`clearance`](ProfileClearance::clearance), proven by halving Bézier pieces until
 //!   their hulls decide; [`misses_convex_polygon`](ProfileClearance::misses_convex_polygon),
 //!   by separating axes).
-//! - [`NearestPoint`]: the nearest point of a profile to a point (a sampled search polished
-//!   by Newton's method), and the nearest point near a known parameter.
+//! - [`NearestPoint`]: the nearest point of a profile to a point, its [`Foot`] (global: a
+//!   branch and bound on the Bézier pieces' hulls, polished by Newton's method), and the
+//!   nearest point near a known parameter.
 //! - [`Flatten`]: polylines within a proven distance of a profile or a segment.
 //!
 //! The model (`curve`) keeps, as data, what these searches read fast: the boxes of the
@@ -27,10 +28,11 @@
 mod clearance;
 mod flatten;
 mod nearest;
+mod pieces;
 mod polygon_clearance;
 
 pub use clearance::Clearance;
-pub use nearest::Nearest;
+pub use nearest::Foot;
 
 use curve::{Profile, Segment};
 
@@ -115,20 +117,20 @@ pub trait NearestPoint {
     /// let n = box_.nearest([1.0, 0.5], 0.0);
     /// assert!((n.distance - 0.5).abs() < 1e-15 && (n.u - 0.25).abs() < 1e-15);
     /// ```
-    fn nearest(&self, x: [f64; 2], enough: f64) -> Nearest;
+    fn nearest(&self, x: [f64; 2], enough: f64) -> Foot;
 
     /// The nearest point to `x` near the parameter `u`: Newton's method on the foot-point
     /// condition from `u`, inside the segment holding it (a local search, for a point known
     /// to be near: a junction's third contact, followed as the disk moves).
-    fn nearest_near(&self, x: [f64; 2], u: f64) -> Nearest;
+    fn nearest_near(&self, x: [f64; 2], u: f64) -> Foot;
 }
 
 impl NearestPoint for Profile {
-    fn nearest(&self, x: [f64; 2], enough: f64) -> Nearest {
+    fn nearest(&self, x: [f64; 2], enough: f64) -> Foot {
         nearest::nearest(self, x, enough)
     }
 
-    fn nearest_near(&self, x: [f64; 2], u: f64) -> Nearest {
+    fn nearest_near(&self, x: [f64; 2], u: f64) -> Foot {
         nearest::nearest_near(self, x, u)
     }
 }

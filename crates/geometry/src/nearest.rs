@@ -1,39 +1,38 @@
-//! The nearest point of a profile to a point in the plane: per segment, dense samples and
-//! Newton's method on `⟨C − x, C'⟩ = 0` from every sampled local minimum, the segment's ends
-//! included; segments whose control-point box is no nearer than a point already found are
-//! skipped. A sampled search: a feature narrower than the sampling can be missed.
+//! The nearest point of a profile to a point in the plane, global: segments nearest first
+//! (those whose control-point box is no nearer than a point already found are passed over),
+//! and in each segment a branch and bound on its Bézier pieces, the hull of a piece's
+//! control points bounding its distance from below and Newton's method on
+//! `⟨C − x, C'⟩ = 0` polishing the point found. No point of the curve is nearer than the
+//! point found by more than the rounding of the coordinates and of the pieces' coefficients,
+//! where the search ends within its bounds (a piece count and a depth no ordinary drawing
+//! reaches).
 
-use curve::piece_bounds::box_distance;
-use curve::ParamCurve;
-use curve::Profile;
-use curve::Segment;
-use curve::V2;
-use numeric::minimize::{minimize, Bracket, Limits};
-use std::ops::ControlFlow;
+use crate::pieces::{halve, hull_distance, ControlPoints, Pending, Piece};
+use curve::piece_bounds::{box_distance, coefficient_error, Errors};
+use curve::{ParamCurve, Profile, Segment, V2};
+use numeric::rounding::ulps;
 
-/// Samples per Bézier piece of a segment's exact form.
-const SAMPLES_PER_PIECE: usize = 32;
-
-/// Newton steps from a sampled minimum.
+/// Newton steps from a piece's middle.
 const NEAREST_NEWTON_STEPS: usize = 20;
 
-/// The minimisation on a window of two sample steps closes it to this share of it (0.618⁴⁸,
-/// what 48 golden sections leave): Newton's polish takes over from there, and where it cannot
-/// (a flat distance, near a centre of curvature) the parameter matters to the distance only
-/// far below rounding.
-const NEAREST_BRACKET: f64 = 1e-10;
+/// How much nearer than the point found (relative to the coordinates' magnitude) a piece's
+/// hull must come, beyond the rounding its control points may hide, to be halved further:
+/// the distances' own rounding, a few units of the coordinates (a point of the curve is
+/// evaluated to about that).
+const NEAREST_SLACK: f64 = ulps(64.0);
 
-/// Evaluations of the distance in the minimisation on a window: golden sections alone close
-/// it to [`NEAREST_BRACKET`] within 48 (with the middle at a golden section) to 52.
-const NEAREST_MIN_STEPS: usize = 96;
+/// Halvings of one Bézier piece at most: 2^-40 of a piece is far below what the slack
+/// resolves about a minimum (the hull's distance closes on the curve's quadratically).
+const MAX_NEAREST_DEPTH: usize = 40;
 
-/// A parabolic step nearer the bracket's middle than this share of it is a golden section
-/// instead ([`Limits::parabola_min_move`]): it keeps the parabola from creeping.
-const NEAREST_PARABOLA_MOVE: f64 = 0.1;
+/// Pieces looked at in one search of a segment at most (a guard: a segment running along a
+/// circle about `x` keeps every piece within the slack).
+const MAX_NEAREST_PIECES: usize = 4096;
 
-/// The nearest point found.
+/// A foot: the nearest point of a profile to a point of the plane (an axis point's, a
+/// bisector point's), found by [`crate::NearestPoint`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Nearest {
+pub struct Foot {
     /// Its distance.
     pub distance: f64,
     /// Its profile parameter.
@@ -41,9 +40,9 @@ pub struct Nearest {
 }
 
 /// [`crate::NearestPoint::nearest`].
-pub(crate) fn nearest(profile: &Profile, x: [f64; 2], enough: f64) -> Nearest {
+pub(crate) fn nearest(profile: &Profile, x: [f64; 2], enough: f64) -> Foot {
     let x = V2::from_arr(x);
-    let mut best = Nearest {
+    let mut best = Foot {
         distance: f64::INFINITY,
         u: 0.0,
     };
@@ -54,9 +53,8 @@ pub(crate) fn nearest(profile: &Profile, x: [f64; 2], enough: f64) -> Nearest {
         if done || box_distance(profile.segment_box(i), x) >= best.distance {
             return f64::INFINITY;
         }
-        let (d, v) = nearest_on(&profile.segments()[i], x);
-        if d < best.distance {
-            best = Nearest {
+        if let Some((d, v)) = nearest_on(&profile.segments()[i], x, best.distance) {
+            best = Foot {
                 distance: d,
                 u: profile.profile_param(i, v),
             };
@@ -66,76 +64,95 @@ pub(crate) fn nearest(profile: &Profile, x: [f64; 2], enough: f64) -> Nearest {
         if done {
             f64::NEG_INFINITY
         } else {
-            d
+            best.distance
         }
     });
     best
 }
 
 /// [`crate::NearestPoint::nearest_near`].
-pub(crate) fn nearest_near(profile: &Profile, x: [f64; 2], u: f64) -> Nearest {
+pub(crate) fn nearest_near(profile: &Profile, x: [f64; 2], u: f64) -> Foot {
     let (i, _) = profile.locate(u);
     let x = V2::from_arr(x);
     let u = polish(profile, x, u, i as f64, (i + 1) as f64);
-    Nearest {
+    Foot {
         distance: (profile.jet_to(u, 0).p - x).norm(),
         u,
     }
 }
 
-/// The nearest point of one segment: its distance and the segment's own parameter.
-fn nearest_on(s: &Segment, x: V2) -> (f64, f64) {
+/// The nearest point of one segment to `x` if it is nearer than `beat` (less the slack): its
+/// distance and the segment's own parameter. Branch and bound on the segment's Bézier
+/// pieces: a piece whose hull is proven no nearer than the best point found less the slack
+/// is passed over, any other is halved; a piece whose middle comes nearer than the best
+/// point found is polished there by Newton's method, so the bound closes on the nearest
+/// local minimum at once and the halvings only have to exclude the rest.
+fn nearest_on(s: &Segment, x: V2, beat: f64) -> Option<(f64, f64)> {
     let c = s.curve();
-    let (a, b) = c.domain();
-    let n = SAMPLES_PER_PIECE * c.piece_count().max(1);
-    let at = |k: usize| {
-        if k == n {
-            b
-        } else {
-            a + (b - a) * k as f64 / n as f64
-        }
-    };
+    let pieces = c.bezier_pieces();
+    let dim = pieces.dim();
     let dist = |u: f64| (c.jet_to(u, 0).p - x).norm();
-    let ds: Vec<f64> = (0..=n).map(|k| dist(at(k))).collect();
-    let mut best = (f64::INFINITY, a);
-    for k in 0..=n {
-        // A sampled minimum, the ends included (the nearest point may lie between an end
-        // sample and its neighbour).
-        let below = |j: Option<usize>| j.is_none_or(|j| ds[k] <= ds[j]);
-        if !(below(k.checked_sub(1)) && below((k < n).then_some(k + 1))) {
-            continue;
+    let (a, b) = c.domain();
+    let mut best = [(dist(a), a), (dist(b), b)]
+        .into_iter()
+        .fold((f64::INFINITY, a), |m, e| if e.0 < m.0 { e } else { m });
+    // (One bound on the coefficients' errors for all the pieces: the largest.)
+    let given = c.curve().coefficient_error();
+    let err = (0..pieces.pieces())
+        .map(|k| coefficient_error(pieces, k, given))
+        .fold(
+            Errors {
+                point: 0.0,
+                weight: 0.0,
+            },
+            |m, e| Errors {
+                point: m.point.max(e.point),
+                weight: m.weight.max(e.weight),
+            },
+        );
+    let mut pending = Pending::default();
+    for k in (0..pieces.pieces()).rev() {
+        let (lo, hi) = pieces.piece_span(k);
+        pending.push(pieces.piece(k), lo, hi, 0);
+    }
+    let (mut current, mut work) = (Vec::new(), Vec::new());
+    let mut tested = 0;
+    while let Some((lo, hi, depth)) = pending.pop(&mut current) {
+        tested += 1;
+        if tested > MAX_NEAREST_PIECES {
+            break;
         }
-
-        let (lo, hi) = (k.saturating_sub(1), (k + 1).min(n));
-        // The sampled minimum and its neighbours bracket a minimum: numeric's minimisation
-        // closes the bracket first (near a centre of curvature the distance is flat and
-        // Newton's step has no sign to go by); then Newton's method polishes where the
-        // distance is convex.
-        let bracket = Bracket {
-            lo: (at(lo), ds[lo]),
-            mid: (at(k), ds[k]),
-            hi: (at(hi), ds[hi]),
-        };
-        let (lo, hi) = (at(lo), at(hi));
-        let limits = Limits {
-            width: NEAREST_BRACKET * (hi - lo),
-            max_steps: NEAREST_MIN_STEPS,
-            parabola_min_move: NEAREST_PARABOLA_MOVE,
-        };
-        let found = match minimize(|u| ControlFlow::<(), _>::Continue(dist(u)), bracket, limits) {
-            ControlFlow::Continue(m) => m.bracket.mid.0,
-            ControlFlow::Break(()) => at(k),
-        };
-        let u = polish(c, x, found, lo, hi);
-        let d = dist(u);
-        if d < best.0 {
-            best = (d, u);
+        let control = ControlPoints::of(&current, dim, x);
+        // (A weight that may not be positive bounds nothing: such a piece is halved.)
+        if control.w_min > 2.0 * err.weight {
+            // Passed over when its hull, moved nearer by what rounding may hide and farther by
+            // as much (the piece holding the point found is then passed over too, once its
+            // hull is within the slack of it), is no nearer than the point found less the
+            // slack.
+            let room = err.room(control.w_min, control.mag, depth);
+            let slack = NEAREST_SLACK * control.mag;
+            if hull_distance(&control.pts, x) + room >= best.0.min(beat) - slack {
+                continue;
+            }
         }
-        if ds[k] < best.0 {
-            best = (ds[k], at(k));
+        let mid = 0.5 * (lo + hi);
+        let at_mid = dist(mid);
+        if at_mid < best.0 {
+            let u = polish(c, x, mid, lo, hi);
+            let d = dist(u);
+            best = if d < at_mid { (d, u) } else { (at_mid, mid) };
+        }
+        if depth < MAX_NEAREST_DEPTH {
+            let piece = Piece {
+                coefs: &current,
+                lo,
+                hi,
+                depth,
+            };
+            halve(&piece, dim, &mut work, &mut pending);
         }
     }
-    best
+    (best.0 < beat).then_some(best)
 }
 
 /// Newton's method on `⟨C − x, C'⟩ = 0` from `u` within `[lo, hi]`, kept only while it

@@ -1,14 +1,17 @@
-//! `ProfileClearance::clearance` against an independent distance: dense samples of every segment,
+//! `ProfileClearance::clearance` and `NearestPoint::nearest` against an independent distance: dense samples of every segment,
 //! refined by golden-section search about the least. A disk a little smaller than the
 //! distance must be clear, a little larger entered (at a point that really is inside), on
 //! random profiles of lines, arcs and rational cubic Béziers and on rational Béziers of degree
 //! 4 to 40 (where the squared distance is proven convex), scaled and moved far from the
-//! origin; where rounding leaves it undecided the answer must say so, never be wrong.
+//! origin; where rounding leaves it undecided the answer must say so, never be wrong. The
+//! nearest point must be as near as the oracle's, to rounding, on the same profiles and on
+//! strongly rational Béziers (weights from 1e-3 to 1e3), whose narrow turns a sampled search
+//! passes over.
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve};
-use geometry::{Clearance, ProfileClearance};
+use geometry::{Clearance, NearestPoint, ProfileClearance};
 use proptest::prelude::*;
 
 /// Samples per segment of the oracle.
@@ -338,4 +341,70 @@ fn a_huge_disk_grazing_a_side_is_not_called_clear() {
     let triangle = Profile::new(sides, None).unwrap();
     let verdict = triangle.clearance([0.0, 1e6], 1e6 + 2f64.powi(-33));
     assert_ne!(verdict, Clearance::Clear);
+}
+
+/// The nearest point of `p` to each of `xs` (about `o`, in units of `scale`): at the distance
+/// its parameter gives, and no farther than the oracle's nearest point, to `rounding`.
+fn check_nearest(
+    p: &Profile,
+    xs: &[(f64, f64)],
+    o: [f64; 2],
+    scale: f64,
+    rounding: f64,
+) -> Result<(), TestCaseError> {
+    for &(a, b) in xs {
+        let x = [o[0] + scale * a, o[1] + scale * b];
+        let want = oracle_distance(p, x);
+        let n = p.nearest(x, 0.0);
+        let q = p.jet_to(n.u, 0).p;
+        testkit::prop_assert_near!((q.x - x[0]).hypot(q.y - x[1]), n.distance, rounding);
+        prop_assert!(
+            n.distance <= want + rounding,
+            "at {x:?} the nearest point found is {} away, the oracle's {want}",
+            n.distance
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// The star profiles of the disk tests, small, huge and far from the origin.
+    #[test]
+    fn the_nearest_point_is_the_oracles(
+        kinds in prop::collection::vec(0u8..3, 4..9),
+        bend in prop::collection::vec(-0.4..0.4f64, 8),
+        w in prop::collection::vec(0.3..3.0f64, 2),
+        scale in prop_oneof![Just(1.0), Just(1e-6), (-30i32..30).prop_map(|k| 2f64.powi(k))],
+        far in prop_oneof![Just(0.0), Just(1e3), Just(1e6)],
+        xs in prop::collection::vec((-1.8..1.8f64, -1.8..1.8f64), 8),
+    ) {
+        let o = [far * scale, -0.5 * far * scale];
+        let p = profile(&kinds, &bend, &w, scale, o);
+        prop_assume!(p.is_some());
+        let rounding = 1e-12 * (2.8 * scale + far * scale);
+        check_nearest(&p.unwrap(), &xs, o, scale, rounding)?;
+    }
+
+    /// One strongly rational cubic Bézier (weights 1e-3 to 1e3: the curve turns within a
+    /// small share of its parameters), open, with points near it and far.
+    #[test]
+    fn the_nearest_point_is_found_on_strongly_rational_beziers(
+        ys in prop::collection::vec(-1.0..1.0f64, 4),
+        log_w in prop::collection::vec(-3.0..3.0f64, 2),
+        scale in prop_oneof![Just(1.0), (-20i32..20).prop_map(|k| 2f64.powi(k))],
+        xs in prop::collection::vec((-1.5..1.5f64, -1.5..1.5f64), 8),
+    ) {
+        let pts: Vec<[f64; 2]> = ys
+            .iter()
+            .enumerate()
+            .map(|(i, y)| [scale * (2.0 * i as f64 / 3.0 - 1.0), scale * y])
+            .collect();
+        let weights = [1.0, 10f64.powf(log_w[0]), 10f64.powf(log_w[1]), 1.0];
+        let c = SplineCurve::clamped(3, &pts, Some(&weights), None).unwrap();
+        let p = Profile::new(vec![Segment::spline(SegmentKind::Bezier, c).unwrap()], Some(false));
+        prop_assume!(p.is_ok());
+        check_nearest(&p.unwrap(), &xs, [0.0, 0.0], scale, 1e-12 * scale)?;
+    }
 }

@@ -2,7 +2,7 @@
 //! coefficients: outside where they are all positive, else, where it is convex, by its
 //! tangent at its least point.
 
-use super::pieces::Piece;
+use crate::pieces::Piece;
 use curve::piece_bounds::Errors;
 use curve::V2;
 use numeric::rounding::ulps;

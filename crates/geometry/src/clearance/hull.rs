@@ -2,10 +2,9 @@
 //! outside (box and slab bounds), or a piece straight to within rounding that touches the
 //! circle.
 
-use super::pieces::Piece;
-use curve::piece_bounds::{box_distance, Errors};
+use crate::pieces::{hull_distance, ControlPoints, Piece};
+use curve::piece_bounds::Errors;
 use curve::V2;
-use smallvec::SmallVec;
 
 pub(super) enum Verdict {
     Outside,
@@ -21,16 +20,8 @@ pub(super) enum Verdict {
 /// The piece's verdict against the disk of centre `x` and radius `r`; `err` bounds the error
 /// of its homogeneous coefficients.
 pub(super) fn test_piece(piece: &Piece<'_>, dim: usize, x: V2, r: f64, err: Errors) -> Verdict {
-    let n = piece.coefs.len() / dim;
-    let mut pts: SmallVec<[V2; 16]> = SmallVec::with_capacity(n);
-    let (mut w_min, mut mag) = (f64::INFINITY, x.x.abs().max(x.y.abs()));
-    for c in piece.coefs.chunks_exact(dim) {
-        let w = c[2];
-        w_min = w_min.min(w);
-        let p = V2::new(c[0] / w, c[1] / w);
-        mag = mag.max(p.x.abs()).max(p.y.abs());
-        pts.push(p);
-    }
+    let ControlPoints { pts, w_min, mag } = ControlPoints::of(piece.coefs, dim, x);
+    let n = pts.len();
     if w_min.is_nan() || w_min <= 2.0 * err.weight {
         // A weight that may not be positive: the hull says nothing.
         return Verdict::Split;
@@ -46,30 +37,7 @@ pub(super) fn test_piece(piece: &Piece<'_>, dim: usize, x: V2, r: f64, err: Erro
             };
         }
     }
-    let (mut lo, mut hi) = (
-        V2::new(f64::INFINITY, f64::INFINITY),
-        -V2::new(f64::INFINITY, f64::INFINITY),
-    );
-    let mut centroid = V2::new(0.0, 0.0);
-    for p in &pts {
-        lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
-        hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
-        centroid = centroid + *p;
-    }
-    let boxed = box_distance([lo.x, lo.y, hi.x, hi.y], x);
-    // The slab bound: every hull point lies at least this far along the direction from the
-    // points' centroid to the centre.
-    let towards = x - centroid * (1.0 / n as f64);
-    let len = towards.norm();
-    let slab = if len > 0.0 {
-        let d = towards * (1.0 / len);
-        pts.iter()
-            .map(|p| (x - *p).dot(d))
-            .fold(f64::INFINITY, f64::min)
-    } else {
-        0.0
-    };
-    if boxed.max(slab) - room >= r {
+    if hull_distance(&pts, x) - room >= r {
         return Verdict::Outside;
     }
     // A piece straight to within rounding whose chord does not pass clearly inside the disk

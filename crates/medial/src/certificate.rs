@@ -134,7 +134,7 @@ pub(crate) fn shaped_like_the_region(axis: &MedialAxis, holes: usize) -> bool {
 
 /// A contact of a node's disk with the boundary: boundary, profile parameter, point.
 #[derive(Debug, Clone, Copy)]
-struct Foot {
+struct DiskContact {
     boundary: usize,
     u: f64,
     xy: [f64; 2],
@@ -148,8 +148,8 @@ fn feet_of(
     edges: &[usize],
     id: usize,
     same: f64,
-) -> Vec<Foot> {
-    let mut out: Vec<Foot> = Vec::new();
+) -> Vec<DiskContact> {
+    let mut out: Vec<DiskContact> = Vec::new();
     for e in edges.iter().map(|&k| &axis.edges[k]) {
         let ends = [(e.from == id, 0), (e.to == id, e.feet.len() - 1)];
         for (at, k) in ends {
@@ -163,7 +163,7 @@ fn feet_of(
                     .iter()
                     .any(|f| f.boundary == b && distance(f.xy, xy) <= same)
                 {
-                    out.push(Foot { boundary: b, u, xy });
+                    out.push(DiskContact { boundary: b, u, xy });
                 }
             }
         }

@@ -2,7 +2,7 @@
 //! radius exceeds it), joined across the seams where the two sides of the axis meet.
 
 use crate::seams::Seam;
-use crate::walk::{incoming_segment, outgoing_segment, Foot, Walk};
+use crate::walk::{incoming_segment, outgoing_segment, OffsetSource, Walk};
 use std::f64::consts::TAU;
 
 /// A run of one boundary, walked from one foot to another (the whole boundary when
@@ -11,8 +11,8 @@ use std::f64::consts::TAU;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct BoundaryRun {
     pub(crate) boundary: usize,
-    pub(crate) from: Foot,
-    pub(crate) to: Foot,
+    pub(crate) from: OffsetSource,
+    pub(crate) to: OffsetSource,
     pub(crate) whole: bool,
     pub(crate) length: f64,
 }
@@ -59,9 +59,9 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
                 // against the parameter, the last one's end.)
                 let last = walks[b].profile.segments().len() - 1;
                 let start = if walks[b].side > 0.0 {
-                    Foot::OnSegment { segment: 0, u: 0.0 }
+                    OffsetSource::OnSegment { segment: 0, u: 0.0 }
                 } else {
-                    Foot::OnSegment {
+                    OffsetSource::OnSegment {
                         segment: last,
                         u: walks[b].period,
                     }
@@ -145,14 +145,14 @@ pub(crate) fn loops(walks: &[Walk<'_>], seams: &[Seam], kept_whole: &[bool]) -> 
 /// Where a foot is along its boundary's walk: the parameter ahead of 0, then, at a reflex
 /// corner, the place in its fan (clockwise from the incoming segment's normal; a foot on the
 /// outgoing segment after the whole fan).
-fn place(walk: &Walk<'_>, foot: Foot) -> (f64, f64) {
+fn place(walk: &Walk<'_>, foot: OffsetSource) -> (f64, f64) {
     match foot {
-        Foot::OnSegment { segment, u } => {
+        OffsetSource::OnSegment { segment, u } => {
             let along = walk.ahead(0.0, u);
             let outgoing = walk.joint_at(u).is_some() && outgoing_segment(walk, u) == segment;
             (along, if outgoing { 2.0 * TAU } else { 0.0 })
         }
-        Foot::Fan { u, angle } => {
+        OffsetSource::Fan { u, angle } => {
             let incoming = incoming_segment(walk, u);
             let start = walk.normal_leaving(incoming).angle();
             (walk.ahead(0.0, u), 1e-9 + (start - angle).rem_euclid(TAU))

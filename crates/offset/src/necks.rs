@@ -232,7 +232,7 @@ pub(crate) fn onto_axis(
 /// of a joint is the joint, exactly: a parameter a rounding short of a closed boundary's
 /// period (`1 - 1e-12` for `0`) would be walked to the long way round, and would not be
 /// known for a reflex corner's.
-pub(crate) fn local_nearest(walk: &Walk<'_>, x: V2, u: f64) -> geometry::Nearest {
+pub(crate) fn local_nearest(walk: &Walk<'_>, x: V2, u: f64) -> geometry::Foot {
     let found = walk.profile.nearest_near(x.arr(), u);
     let joint = found.u.round();
     if (found.u - joint).abs() > JOINT * walk.period {

@@ -5,7 +5,7 @@
 use crate::loops::BoundaryRun;
 use crate::spline_offset::spline_offset;
 use crate::walk::{incoming_segment, outgoing_segment};
-use crate::walk::{Foot, Walk};
+use crate::walk::{OffsetSource, Walk};
 use crate::OffsetSegment;
 use curve::{SegmentKind, V2};
 use std::f64::consts::TAU;
@@ -23,11 +23,11 @@ pub(crate) fn pieces(
 ) {
     let n = walk.profile.segments().len();
     let (mut at, mut segment) = match stretch.from {
-        Foot::OnSegment { segment, u } => (u, segment),
-        Foot::Fan { u, angle } => {
+        OffsetSource::OnSegment { segment, u } => (u, segment),
+        OffsetSource::Fan { u, angle } => {
             let outgoing = outgoing_segment(walk, u);
             let end = match stretch.to {
-                Foot::Fan { u: v, angle: a } if !stretch.whole && same(walk, u, v) => {
+                OffsetSource::Fan { u: v, angle: a } if !stretch.whole && same(walk, u, v) => {
                     if fan_place(walk, u, a) >= fan_place(walk, u, angle) {
                         out.push(corner_arc(walk, u, angle, a, d));
                         return;
@@ -61,8 +61,10 @@ pub(crate) fn pieces(
             span => span,
         };
         let ends_here = match stretch.to {
-            Foot::OnSegment { segment: s, .. } => s == segment && walked + span >= target - 1e-12,
-            Foot::Fan { .. } => false,
+            OffsetSource::OnSegment { segment: s, .. } => {
+                s == segment && walked + span >= target - 1e-12
+            }
+            OffsetSource::Fan { .. } => false,
         } || (stretch.whole && walked + span >= target - 1e-12);
         if ends_here {
             let to = if stretch.whole {
@@ -93,7 +95,7 @@ pub(crate) fn pieces(
         if walk.reflex_corner_at(at).is_some() {
             let from = walk.normal_leaving(segment).angle();
             match stretch.to {
-                Foot::Fan { u, angle } if same(walk, u, at) && walked >= target - 1e-12 => {
+                OffsetSource::Fan { u, angle } if same(walk, u, at) && walked >= target - 1e-12 => {
                     out.push(corner_arc(walk, at, from, angle, d));
                     return;
                 }
@@ -118,9 +120,9 @@ const SWEEP_STEPS: usize = 8;
 const PARAMETER_ROUNDING: f64 = 1e-12;
 
 /// A foot's profile parameter.
-fn param(foot: Foot) -> f64 {
+fn param(foot: OffsetSource) -> f64 {
     match foot {
-        Foot::OnSegment { u, .. } | Foot::Fan { u, .. } => u,
+        OffsetSource::OnSegment { u, .. } | OffsetSource::Fan { u, .. } => u,
     }
 }
 
@@ -194,7 +196,7 @@ fn segment_piece(
     if (to - from).abs() <= PARAMETER_ROUNDING {
         return;
     }
-    let point = |u: f64| walk.offset(Foot::OnSegment { segment, u }, d).0;
+    let point = |u: f64| walk.offset(OffsetSource::OnSegment { segment, u }, d).0;
     let seg = &walk.profile.segments()[segment];
     match (seg.kind(), seg.circle()) {
         (SegmentKind::Line, _) => out.push(OffsetSegment::Line {

@@ -3,7 +3,7 @@
 //! begins or ends.
 
 use crate::necks::{self, Between, TOUCHING};
-use crate::walk::{incoming_segment, outgoing_segment, sided_feet, Foot, Walk};
+use crate::walk::{incoming_segment, outgoing_segment, sided_feet, OffsetSource, Walk};
 use curve::V2;
 use medial::{Edge, MedialAxis};
 use numeric::newton2::{newton2, Matrix2, Newton2, Outcome, StepVerdict, Vector2};
@@ -30,7 +30,7 @@ const BRACKET_ROUNDING: f64 = 1e-9;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Seam {
     /// Per side of the axis: the boundary and the foot.
-    pub(crate) feet: [(usize, Foot); 2],
+    pub(crate) feet: [(usize, OffsetSource); 2],
     /// Per side: whether the stretch of boundary kept on that side begins at the foot (else it
     /// ends there), in the direction the boundary is walked.
     pub(crate) begins: [bool; 2],
@@ -86,9 +86,9 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     let (before, after) = (before?, after?);
     let boundary_of = |side: usize| (before[side].0 == after[side].0).then_some(before[side].0);
     let boundaries = [boundary_of(0)?, boundary_of(1)?];
-    let feet_at = |share: f64| -> Option<[(usize, Foot); 2]> {
+    let feet_at = |share: f64| -> Option<[(usize, OffsetSource); 2]> {
         let guess = x0 + (x1 - x0) * share;
-        let foot = |side: usize| -> Option<(usize, Foot)> {
+        let foot = |side: usize| -> Option<(usize, OffsetSource)> {
             let b = boundaries[side];
             let walk = walks.get(b)?;
             Some((
@@ -115,7 +115,7 @@ fn seam_between(edge: &Edge, k: usize, walks: &[Walk<'_>], d: f64, size: f64) ->
     // the two offsets run nearly parallel, the equations are nearly singular, and a first
     // step may leap to the seam on the dip's far side: a solution with a foot outside its
     // vertices' feet is that one, and Newton's method starts again from other shares.
-    let bracketed = |found: &[(usize, Foot); 2]| {
+    let bracketed = |found: &[(usize, OffsetSource); 2]| {
         (0..2).all(|side| {
             foot_within(
                 &walks[boundaries[side]],
@@ -210,7 +210,7 @@ fn touching_vertex(
     walks: &[Walk<'_>],
     d: f64,
     size: f64,
-) -> Option<[(usize, Foot); 2]> {
+) -> Option<[(usize, OffsetSource); 2]> {
     let above = |r: f64| r > d + TOUCHING * size;
     let least = j > 0
         && j + 1 < edge.xy.len()
@@ -255,7 +255,7 @@ fn touching_feet(
     bracket: &Bracket,
     d: f64,
     size: f64,
-) -> [(usize, Foot); 2] {
+) -> [(usize, OffsetSource); 2] {
     let feet = start.map(|(b, u)| (b, foot_between(&walks[b], u, u, 0.0, x)));
     let (found, closed) = refine(walks, feet, d, size);
     let inside = (0..2).all(|side| {
@@ -342,7 +342,7 @@ const CROSSING_HALVINGS: usize = 24;
 /// side beginning or ending there as the radius widens `toward_wider` along the axis.
 fn seam_of(
     walks: &[Walk<'_>],
-    feet: [(usize, Foot); 2],
+    feet: [(usize, OffsetSource); 2],
     mut refined: bool,
     toward_wider: V2,
     d: f64,
@@ -365,14 +365,14 @@ fn seam_of(
 
 /// The foot between two vertices' feet `u0`, `u1` at `share` of the way: the fan of a reflex
 /// corner both feet sit on, else a point of the segment the way between them crosses.
-fn foot_between(walk: &Walk<'_>, u0: f64, u1: f64, share: f64, guess: V2) -> Foot {
+fn foot_between(walk: &Walk<'_>, u0: f64, u1: f64, share: f64, guess: V2) -> OffsetSource {
     let period = walk.period;
     // (The short way round a closed boundary.)
     let step = (u1 - u0 + 0.5 * period).rem_euclid(period) - 0.5 * period;
     if let (Some(c0), Some(c1)) = (walk.reflex_corner_at(u0), walk.reflex_corner_at(u1)) {
         if c0 == c1 {
             let c = walk.point(c0);
-            return Foot::Fan {
+            return OffsetSource::Fan {
                 u: c0,
                 angle: (guess - c).angle(),
             };
@@ -381,7 +381,7 @@ fn foot_between(walk: &Walk<'_>, u0: f64, u1: f64, share: f64, guess: V2) -> Foo
     let u = (u0 + step * share).rem_euclid(period);
     let middle = (u0 + 0.5 * step).rem_euclid(period);
     let segment = walk.profile.locate(middle).0;
-    Foot::OnSegment {
+    OffsetSource::OnSegment {
         segment,
         u: u.clamp(segment as f64, segment as f64 + 1.0),
     }
@@ -416,8 +416,13 @@ const FAN_MARGIN: f64 = 0.01;
 /// corner to the step's ends. (By the parameter alone, a fan's foot is always within: both
 /// seams either side of a neck between two corners, as between the two holes of a glyph
 /// '8', were solved at one crossing of the corners' circles, and the loops joined wrongly.)
-fn foot_within(walk: &Walk<'_>, (u0, u1): (f64, f64), (x0, x1): (V2, V2), found: Foot) -> bool {
-    let Foot::Fan { u, angle } = found else {
+fn foot_within(
+    walk: &Walk<'_>,
+    (u0, u1): (f64, f64),
+    (x0, x1): (V2, V2),
+    found: OffsetSource,
+) -> bool {
+    let OffsetSource::Fan { u, angle } = found else {
         return within(walk, u0, u1, param(found));
     };
     let same = |v: f64| walk.reflex_corner_at(v).is_some_and(|c| c == u);
@@ -433,17 +438,17 @@ fn foot_within(walk: &Walk<'_>, (u0, u1): (f64, f64), (x0, x1): (V2, V2), found:
 }
 
 /// A foot's boundary parameter (a corner's, for a fan).
-fn param(foot: Foot) -> f64 {
+fn param(foot: OffsetSource) -> f64 {
     match foot {
-        Foot::OnSegment { u, .. } | Foot::Fan { u, .. } => u,
+        OffsetSource::OnSegment { u, .. } | OffsetSource::Fan { u, .. } => u,
     }
 }
 
 /// The point a foot stands on.
-pub(crate) fn foot_point(walk: &Walk<'_>, foot: Foot) -> V2 {
+pub(crate) fn foot_point(walk: &Walk<'_>, foot: OffsetSource) -> V2 {
     match foot {
-        Foot::OnSegment { segment, u } => walk.profile.jet_on(segment, u, 0).p,
-        Foot::Fan { u, .. } => walk.point(u),
+        OffsetSource::OnSegment { segment, u } => walk.profile.jet_on(segment, u, 0).p,
+        OffsetSource::Fan { u, .. } => walk.point(u),
     }
 }
 
@@ -451,12 +456,12 @@ pub(crate) fn foot_point(walk: &Walk<'_>, foot: Foot) -> V2 {
 /// [`newton2`] on the gap between them, each foot moved its own way by [`moved`]).
 fn refine(
     walks: &[Walk<'_>],
-    feet: [(usize, Foot); 2],
+    feet: [(usize, OffsetSource); 2],
     d: f64,
     size: f64,
-) -> ([(usize, Foot); 2], bool) {
+) -> ([(usize, OffsetSource); 2], bool) {
     // [da −db] (δa, δb) = gap, and the feet move by −δ.
-    let linearize = |current: &[(usize, Foot); 2]| {
+    let linearize = |current: &[(usize, OffsetSource); 2]| {
         let (qa, da) = walks[current[0].0].offset(current[0].1, d);
         let (qb, db) = walks[current[1].0].offset(current[1].1, d);
         let gap = qa - qb;
@@ -465,7 +470,7 @@ fn refine(
             Matrix2::new(da.x, -db.x, da.y, -db.y),
         )
     };
-    let advance = |current: &[(usize, Foot); 2], step: Vector2<f64>| {
+    let advance = |current: &[(usize, OffsetSource); 2], step: Vector2<f64>| {
         let mut next = *current;
         next[0].1 = moved(&walks[current[0].0], current[0].1, -step[0]);
         next[1].1 = moved(&walks[current[1].0], current[1].1, -step[1]);
@@ -485,19 +490,19 @@ fn refine(
 /// A foot moved by `step` in its variable. A foot leaving its segment goes on to the next one
 /// past a smooth joint, or into the fan of a reflex corner; one leaving a fan goes on to the
 /// segment on that side (so a seam whose bracketing feet straddle a corner is still found).
-fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
+fn moved(walk: &Walk<'_>, foot: OffsetSource, step: f64) -> OffsetSource {
     let n = walk.profile.segments().len();
     match foot {
-        Foot::OnSegment { segment, u } => {
+        OffsetSource::OnSegment { segment, u } => {
             let (lo, hi) = (segment as f64, segment as f64 + 1.0);
             let v = u + step;
             if (lo..=hi).contains(&v) {
-                return Foot::OnSegment { segment, u: v };
+                return OffsetSource::OnSegment { segment, u: v };
             }
             let joint = if v < lo { lo } else { hi };
             let at = joint.rem_euclid(walk.period);
             if walk.reflex_corner_at(at).is_some() {
-                return Foot::Fan {
+                return OffsetSource::Fan {
                     u: at,
                     angle: walk.normal(segment, joint).angle(),
                 };
@@ -516,17 +521,17 @@ fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
                 } else {
                     next as f64
                 };
-                return Foot::OnSegment {
+                return OffsetSource::OnSegment {
                     segment: next,
                     u: entry,
                 };
             }
-            Foot::OnSegment {
+            OffsetSource::OnSegment {
                 segment,
                 u: v.clamp(lo, hi),
             }
         }
-        Foot::Fan { u, angle } => {
+        OffsetSource::Fan { u, angle } => {
             let angle = angle + step;
             let incoming = incoming_segment(walk, u);
             let outgoing = outgoing_segment(walk, u);
@@ -534,7 +539,7 @@ fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
             let sweep = (start - walk.normal_entering(outgoing).angle()).rem_euclid(TAU);
             let into = (start - angle).rem_euclid(TAU);
             if into <= sweep {
-                return Foot::Fan { u, angle };
+                return OffsetSource::Fan { u, angle };
             }
             // (Past the fan: on the side it left by, the nearer of its two edges.)
             let beyond_end = into - sweep < 0.5 * (TAU - sweep);
@@ -545,7 +550,7 @@ fn moved(walk: &Walk<'_>, foot: Foot, step: f64) -> Foot {
             } else {
                 segment as f64 + 1.0
             };
-            Foot::OnSegment { segment, u: end }
+            OffsetSource::OnSegment { segment, u: end }
         }
     }
 }

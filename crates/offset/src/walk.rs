@@ -19,7 +19,7 @@ pub(crate) struct Walk<'r> {
 /// reflex corner (a corner turning away from the region, whose nearest points inside form a
 /// sector about it).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Foot {
+pub(crate) enum OffsetSource {
     /// Segment `segment` at the profile parameter `u`.
     OnSegment { segment: usize, u: f64 },
     /// The reflex corner at the profile parameter `u` (a joint), in the direction `angle`.
@@ -72,9 +72,9 @@ impl<'r> Walk<'r> {
 
     /// The offset point at distance `d` from `foot` and its derivative in the foot's own
     /// variable (the parameter, or the fan's angle).
-    pub(crate) fn offset(&self, foot: Foot, d: f64) -> (V2, V2) {
+    pub(crate) fn offset(&self, foot: OffsetSource, d: f64) -> (V2, V2) {
         match foot {
-            Foot::OnSegment { segment, u } => {
+            OffsetSource::OnSegment { segment, u } => {
                 let jet = self.profile.jet_on(segment, u, 2);
                 let speed = jet.d1.norm();
                 let tangent = jet.d1 * (1.0 / speed);
@@ -85,7 +85,7 @@ impl<'r> Walk<'r> {
                     jet.d1 + turning.perp() * (self.side * d),
                 )
             }
-            Foot::Fan { u, angle } => {
+            OffsetSource::Fan { u, angle } => {
                 let c = self.point(u);
                 let (s, co) = angle.sin_cos();
                 (c + V2::new(co, s) * d, V2::new(-s, co) * d)

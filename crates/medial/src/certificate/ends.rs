@@ -1,7 +1,7 @@
 //! The proofs of ends' places: at the centre of an arc a foot is on, or at a centre of
 //! curvature where the curvature's magnitude is proven to peak within the tolerance.
 
-use super::{distance, Foot, JUNCTION_ROOM};
+use super::{distance, DiskContact, JUNCTION_ROOM};
 use crate::curvature::proven_rate_sign;
 use crate::sites::Sites;
 use crate::Node;
@@ -10,7 +10,7 @@ use curve::ParamCurve;
 /// Whether an end lies at the centre of an arc one of its feet is on (at a joint, either
 /// segment there), with its radius; where it has no edge (the whole axis), at the centre of
 /// every arc of the boundary, which is then one circle.
-pub(super) fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
+pub(super) fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[DiskContact]) -> bool {
     let room = JUNCTION_ROOM[1] * sites.size;
     let centre_of = |s: &curve::Segment| {
         s.circle()
@@ -49,7 +49,7 @@ pub(super) fn end_on_arc(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool 
 pub(super) fn end_at_curvature_peak(
     sites: &Sites<'_>,
     node: &Node,
-    feet: &[Foot],
+    feet: &[DiskContact],
     tol: f64,
 ) -> bool {
     let room = JUNCTION_ROOM[1] * sites.size;

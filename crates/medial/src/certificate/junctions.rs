@@ -2,7 +2,7 @@
 //! zero along a polygon about the junction (Brouwer's degree), or, for three lines or reflex
 //! corners, Krawczyk's test in closed form.
 
-use super::{distance, Foot, JUNCTION_ROOM};
+use super::{distance, DiskContact, JUNCTION_ROOM};
 use crate::junction_proof::{closed_site_at, proven_within, ClosedSite};
 use crate::sites::Sites;
 use crate::Node;
@@ -50,7 +50,7 @@ const FIRST_CORNERS: usize = 8;
 
 /// Whether a point equidistant from three stretches of the boundary about three of the
 /// junction's feet is proven within `JUNCTION_ROOM` of it.
-pub(super) fn junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
+pub(super) fn junction_proven(sites: &Sites<'_>, node: &Node, feet: &[DiskContact]) -> bool {
     if feet.len() < 3 {
         return false;
     }
@@ -71,7 +71,11 @@ pub(super) fn junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> 
 /// within `JUNCTION_ROOM` of it ([`proven_within`]): where the distances' differences are
 /// nearly parallel (two sides meeting at a corner that turns by 1e-6 rad, their feet closer
 /// than feet are merged), which the winding test cannot part.
-pub(super) fn closed_form_junction_proven(sites: &Sites<'_>, node: &Node, feet: &[Foot]) -> bool {
+pub(super) fn closed_form_junction_proven(
+    sites: &Sites<'_>,
+    node: &Node,
+    feet: &[DiskContact],
+) -> bool {
     let x = V2::from_arr(node.xy);
     JUNCTION_ROOM.iter().any(|&room| {
         let reach = room * sites.size;
@@ -99,7 +103,7 @@ struct Contact {
 }
 
 impl Contact {
-    fn new(sites: &Sites<'_>, f: &Foot, feet: &[Foot]) -> Self {
+    fn new(sites: &Sites<'_>, f: &DiskContact, feet: &[DiskContact]) -> Self {
         let b = sites.boundaries[f.boundary];
         let n = b.domain().1;
         let apart = |u: f64| {

@@ -107,6 +107,21 @@ pub fn bezier_chain_profile(
     assemble(bezier_chain(radii, wobble, smooth)?, start, reverse)
 }
 
+/// A closed chain of five cubic Béziers ([`bezier_chain_profile`]), smooth
+/// at the joints where `smooth` says: the radii of its joints and the pushes of its inner
+/// control points, as the medial axis's and the bisectors' tests of a whole chain draw it.
+pub fn five_cubics(smooth: [bool; 5]) -> Profile {
+    let radii = [1.5, 1.0, 1.8, 1.2, 1.6];
+    let wobble = [
+        (0.2, -0.3),
+        (0.3, 0.25),
+        (-0.2, 0.1),
+        (0.35, -0.1),
+        (0.1, 0.3),
+    ];
+    bezier_chain_profile(&radii, &wobble, &smooth, 0, false).unwrap()
+}
+
 /// An inner control point's push off the chord for [`bezier_chain`] (relative to its
 /// length): from 0.05 to `most`, either side (a push near zero leaves a cubic straight within
 /// rounding).

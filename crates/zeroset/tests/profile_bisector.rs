@@ -19,7 +19,7 @@ use std::cell::Cell;
 use testkit::boundary_oracle::{off_segment, winding, Oracle};
 use testkit::cases;
 use testkit::outlines::polygon;
-use testkit::profiles::{bezier_chain_profile, bezier_chains, filleted_polygons};
+use testkit::profiles::{bezier_chains, filleted_polygons};
 use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
 
 /// Grid nodes per side.
@@ -316,20 +316,7 @@ fn bezier_chains_inside_match_the_oracle() {
 #[test]
 fn profile_bisectors_move_with_the_profile() {
     let room = polygon(&[[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]]);
-    let chain = bezier_chain_profile(
-        &[1.5, 1.0, 1.8, 1.2, 1.6],
-        &[
-            (0.2, -0.3),
-            (0.3, 0.25),
-            (-0.2, 0.1),
-            (0.35, -0.1),
-            (0.1, 0.3),
-        ],
-        &[true, false, true, false, false],
-        0,
-        false,
-    )
-    .unwrap();
+    let chain = testkit::profiles::five_cubics([true, false, true, false, false]);
     for shape in [&room, &chain] {
         moves_with_the_profile(shape);
     }

@@ -200,7 +200,7 @@ fn corner_pairs(p: &Profile, size: f64, out: &mut Expected) {
                 let x1 = k as f64 / SAMPLES as f64;
                 let cur = g(x1);
                 if (prev < 0.0) != (cur < 0.0) || cur == 0.0 {
-                    let x = common::bisect(&g, (k - 1) as f64 / SAMPLES as f64, x1);
+                    let x = common::bisect(g, (k - 1) as f64 / SAMPLES as f64, x1);
                     let at = At { seg: i, x };
                     let j = jet(p, at, 1);
                     let d = j.p - c.at;

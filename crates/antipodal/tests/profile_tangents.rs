@@ -122,7 +122,7 @@ fn oracle(a: &Profile, b: &Profile) -> Expected {
                     let x1 = k as f64 / N as f64;
                     let cur = h(x1);
                     if (prev < 0.0) != (cur < 0.0) {
-                        let x = common::bisect(&h, (k - 1) as f64 / N as f64, x1);
+                        let x = common::bisect(h, (k - 1) as f64 / N as f64, x1);
                         let q = jet(to, j, x, 0).p;
                         let m = cone_margin(tin, tout, q - c);
                         let l = if flip { (q, c) } else { (c, q) };

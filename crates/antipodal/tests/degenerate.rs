@@ -100,65 +100,47 @@ fn circles_are_families() {
 
 #[test]
 fn singular_and_crossing_curves_are_errors() {
-    let cusp = SplineCurve::periodic(
-        3,
-        &[
-            [0.0, 0.0],
-            [1.0, 0.0],
-            [1.0, 0.0],
-            [1.0, 0.0],
-            [1.0, 1.0],
-            [0.0, 1.0],
-        ],
-        None,
-    )
-    .unwrap();
-    assert!(matches!(
-        antipodal(&cusp, &Options::default()),
-        Err(Error::Cusp { .. })
-    ));
-    let eight = SplineCurve::periodic(
-        3,
-        &[
-            [0.0, 0.0],
-            [1.0, 1.0],
-            [2.0, 0.0],
-            [1.0, -1.0],
-            [0.0, 0.0],
-            [-1.0, 1.0],
-            [-2.0, 0.0],
-            [-1.0, -1.0],
-        ],
-        None,
-    )
-    .unwrap();
+    // What the search says of the curve of degree `p` through `pts`, periodic or clamped.
+    let periodic = |pts: &[[f64; 2]]| {
+        antipodal(
+            &SplineCurve::periodic(3, pts, None).unwrap(),
+            &Options::default(),
+        )
+    };
+    let clamped = |p: usize, pts: &[[f64; 2]]| {
+        antipodal(
+            &SplineCurve::clamped(p, pts, None, None).unwrap(),
+            &Options::default(),
+        )
+    };
+    let cusp = [
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [1.0, 0.0],
+        [1.0, 0.0],
+        [1.0, 1.0],
+        [0.0, 1.0],
+    ];
+    assert!(matches!(periodic(&cusp), Err(Error::Cusp { .. })));
+    let eight = [
+        [0.0, 0.0],
+        [1.0, 1.0],
+        [2.0, 0.0],
+        [1.0, -1.0],
+        [0.0, 0.0],
+        [-1.0, 1.0],
+        [-2.0, 0.0],
+        [-1.0, -1.0],
+    ];
     // A figure eight's tangent turns +1 and −1 around: 0 in all.
     assert!(matches!(
-        antipodal(&eight, &Options::default()),
+        periodic(&eight),
         Err(Error::Winding { turns }) if turns.abs() < 0.1
     ));
-    let open = SplineCurve::clamped(
-        3,
-        &[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]],
-        None,
-        None,
-    )
-    .unwrap();
-    assert!(matches!(
-        antipodal(&open, &Options::default()),
-        Err(Error::NotClosed { .. })
-    ));
-    let corner = SplineCurve::clamped(
-        2,
-        &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]],
-        None,
-        None,
-    )
-    .unwrap();
-    assert!(matches!(
-        antipodal(&corner, &Options::default()),
-        Err(Error::Corner { .. })
-    ));
+    let open = [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]];
+    assert!(matches!(clamped(3, &open), Err(Error::NotClosed { .. })));
+    let corner = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]];
+    assert!(matches!(clamped(2, &corner), Err(Error::Corner { .. })));
     assert!(matches!(
         Limacon::new(2.0, 3.0).map_err(Error::from),
         Err(Error::Curve(curve::Error::InvalidShape { field: "a", .. }))

@@ -242,6 +242,30 @@ fn check_answers(
     Ok(())
 }
 
+/// `s` scaled by 2^`k` has the identical answer (scaled), and moved by `by` (whole numbers,
+/// of one size either way) then scaled, the same curve's.
+fn scaled_and_moved(s: &Spec, k: i32, by: [f64; 2]) -> Result<(), TestCaseError> {
+    let scale = 2f64.powi(k);
+    let scaled = |p: [f64; 2]| [p[0] * scale, p[1] * scale];
+    let tol = 1e-9 * size(s) * scale;
+    check(
+        s,
+        &s.mapped(scaled, &s.identity()),
+        scaled,
+        tol,
+        Transform::Identical,
+    )?;
+    let moved = |p: [f64; 2]| [(p[0] + by[0]) * scale, (p[1] + by[1]) * scale];
+    let tol = tol + 4.0 * f64::EPSILON * by[0].abs().max(by[1].abs()) * scale;
+    check(
+        s,
+        &s.mapped(moved, &s.identity()),
+        moved,
+        tol,
+        Transform::SameCurve,
+    )
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: cases(120), ..ProptestConfig::default() })]
 
@@ -254,13 +278,7 @@ proptest! {
         k in -600i32..600,
     ) {
         let offset = grid(offset, 0);
-        let scale = 2f64.powi(k);
-        let scaled = |p: [f64; 2]| [p[0] * scale, p[1] * scale];
-        let tol = 1e-9 * size(&s) * scale;
-        check(&s, &s.mapped(scaled, &s.identity()), scaled, tol, Transform::Identical)?;
-        let moved = |p: [f64; 2]| [(p[0] + offset) * scale, (p[1] - offset) * scale];
-        let tol = tol + 4.0 * f64::EPSILON * offset.abs() * scale;
-        check(&s, &s.mapped(moved, &s.identity()), moved, tol, Transform::SameCurve)?;
+        scaled_and_moved(&s, k, [offset, -offset])?;
     }
 
     /// Quarter turns, reversal and a shifted seam (the same curve), and a turn by any angle,
@@ -302,13 +320,7 @@ proptest! {
         k in -300i32..300,
     ) {
         let offset = grid(offset, 0);
-        let scale = 2f64.powi(k);
-        let scaled = |p: [f64; 2]| [p[0] * scale, p[1] * scale];
-        let tol = 1e-9 * size(&s) * scale;
-        check(&s, &s.mapped(scaled, &s.identity()), scaled, tol, Transform::Identical)?;
-        let moved = |p: [f64; 2]| [(p[0] + offset) * scale, (p[1] + offset) * scale];
-        let tol = tol + 4.0 * f64::EPSILON * offset.abs() * scale;
-        check(&s, &s.mapped(moved, &s.identity()), moved, tol, Transform::SameCurve)?;
+        scaled_and_moved(&s, k, [offset, offset])?;
     }
 }
 

@@ -13,14 +13,16 @@
 
 mod common;
 
-use antipodal::{profile_antipodal, Options, Profile, ProfilePair, Segment};
+use antipodal::{profile_antipodal, AntipodalPair, Options, Profile, ProfilePair, Segment};
 use curve::{JointKind, ParamCurve, SegmentKind, SplineCurve, V2};
 use numeric::certificate::Verdict;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
+use testkit::profiles::{
+    bezier_chains, filleted_polygon, filleted_polygons, one_spline, step_angles,
+};
 
 // ---- the oracle -------------------------------------------------------------------------
 
@@ -70,7 +72,6 @@ const GRID: usize = 48;
 fn smooth_pairs(p: &Profile, size: f64, out: &mut Expected) {
     let n = p.segments().len();
     let orient = p.orientation();
-    let xs: Vec<f64> = (0..=GRID).map(|k| k as f64 / GRID as f64).collect();
     let fg = |a: At, b: At| {
         let (ja, jb) = (jet(p, a, 1), jet(p, b, 1));
         let r = jb.p - ja.p;
@@ -78,91 +79,54 @@ fn smooth_pairs(p: &Profile, size: f64, out: &mut Expected) {
     };
     for i in 0..n {
         for j in i..n {
-            let vals: Vec<Vec<(f64, f64)>> = xs
-                .iter()
-                .map(|&x| {
-                    xs.iter()
-                        .map(|&y| fg(At { seg: i, x }, At { seg: j, x: y }))
-                        .collect()
-                })
-                .collect();
-            for a in 0..GRID {
-                for b in 0..GRID {
-                    if i == j && b <= a {
-                        continue;
-                    }
-                    let c = [
-                        vals[a][b],
-                        vals[a + 1][b],
-                        vals[a][b + 1],
-                        vals[a + 1][b + 1],
-                    ];
-                    let spans = |f: &dyn Fn(&(f64, f64)) -> f64| {
-                        let lo = c.iter().map(f).fold(f64::INFINITY, f64::min);
-                        let hi = c.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
-                        lo <= 0.0 && hi >= 0.0
-                    };
-                    if !(spans(&|v| v.0) && spans(&|v| v.1)) {
-                        continue;
-                    }
-                    let (s0, t0) = (0.5 * (xs[a] + xs[a + 1]), 0.5 * (xs[b] + xs[b + 1]));
-                    let Some((s, t)) = newton(p, i, j, s0, t0) else {
-                        continue;
-                    };
-                    let h = 2.0 / GRID as f64;
-                    if (s - s0).abs() > h || (t - t0).abs() > h {
-                        continue;
-                    }
-                    let (sa, tb) = (At { seg: i, x: s }, At { seg: j, x: t });
-                    let (js, jt) = (jet(p, sa, 1), jet(p, tb, 1));
-                    let r = jt.p - js.p;
-                    if r.norm() < 1e-3 * size {
-                        continue;
-                    }
-                    let inward = js.d1.perp() * orient;
-                    if js.d1.dot(jt.d1) >= 0.0 || inward.dot(r) <= 0.0 {
-                        continue;
-                    }
-                    let pair = (js.p, jt.p);
-                    if corner_at(p, sa) || corner_at(p, tb) {
-                        out.limits.push(pair);
-                    } else {
-                        push_unique(&mut out.pairs, pair, size);
-                    }
+            let f = |x: f64, y: f64| fg(At { seg: i, x }, At { seg: j, x: y });
+            // (On one segment, the cells above the diagonal: each pair once.)
+            let look = |a: usize, b: usize| i != j || b > a;
+            for (s0, t0) in common::straddling_cells(GRID, f, look) {
+                let Some((s, t)) = newton(p, i, j, s0, t0) else {
+                    continue;
+                };
+                let h = 2.0 / GRID as f64;
+                if (s - s0).abs() > h || (t - t0).abs() > h {
+                    continue;
+                }
+                let (sa, tb) = (At { seg: i, x: s }, At { seg: j, x: t });
+                let (js, jt) = (jet(p, sa, 1), jet(p, tb, 1));
+                let r = jt.p - js.p;
+                if r.norm() < 1e-3 * size {
+                    continue;
+                }
+                let inward = js.d1.perp() * orient;
+                if js.d1.dot(jt.d1) >= 0.0 || inward.dot(r) <= 0.0 {
+                    continue;
+                }
+                let pair = (js.p, jt.p);
+                if corner_at(p, sa) || corner_at(p, tb) {
+                    out.limits.push(pair);
+                } else {
+                    push_unique(&mut out.pairs, pair, size);
                 }
             }
         }
     }
 }
 
-fn newton(p: &Profile, i: usize, j: usize, mut s: f64, mut t: f64) -> Option<(f64, f64)> {
-    for _ in 0..60 {
+fn newton(p: &Profile, i: usize, j: usize, s: f64, t: f64) -> Option<(f64, f64)> {
+    let system = |s: f64, t: f64| {
         let (js, jt) = (
             jet(p, At { seg: i, x: s }, 2),
             jet(p, At { seg: j, x: t }, 2),
         );
         let r = jt.p - js.p;
-        let f = r.dot(js.d1);
-        let g = r.dot(jt.d1);
-        let (fs, ft) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
-        let (gs, gt) = (-js.d1.dot(jt.d1), jt.d1.dot(jt.d1) + r.dot(jt.d2));
-        let det = fs * gt - ft * gs;
-        if det == 0.0 || !det.is_finite() {
-            return None;
-        }
-        let ds = (f * gt - g * ft) / det;
-        let dt = (fs * g - gs * f) / det;
-        s -= ds;
-        t -= dt;
-        if !(-1e-9..=1.0 + 1e-9).contains(&s) || !(-1e-9..=1.0 + 1e-9).contains(&t) {
-            return None;
-        }
-        if ds.abs() < 1e-15 && dt.abs() < 1e-15 {
-            return Some((s.clamp(0.0, 1.0), t.clamp(0.0, 1.0)));
-        }
-    }
-    // (Not converged: no root here.)
-    None
+        (
+            [r.dot(js.d1), r.dot(jt.d1)],
+            [
+                [-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1)],
+                [-js.d1.dot(jt.d1), jt.d1.dot(jt.d1) + r.dot(jt.d2)],
+            ],
+        )
+    };
+    common::newton_in_unit_square(system, s, t)
 }
 
 /// Where `d` lies against the corner's cone: positive inside (the sine of the angle to the
@@ -236,19 +200,8 @@ fn corner_pairs(p: &Profile, size: f64, out: &mut Expected) {
                 let x1 = k as f64 / SAMPLES as f64;
                 let cur = g(x1);
                 if (prev < 0.0) != (cur < 0.0) || cur == 0.0 {
-                    let (mut lo, mut hi) = ((k - 1) as f64 / SAMPLES as f64, x1);
-                    for _ in 0..80 {
-                        let mid = 0.5 * (lo + hi);
-                        if (g(lo) < 0.0) == (g(mid) < 0.0) {
-                            lo = mid;
-                        } else {
-                            hi = mid;
-                        }
-                    }
-                    let at = At {
-                        seg: i,
-                        x: 0.5 * (lo + hi),
-                    };
+                    let x = common::bisect(g, (k - 1) as f64 / SAMPLES as f64, x1);
+                    let at = At { seg: i, x };
                     let j = jet(p, at, 1);
                     let d = j.p - c.at;
                     let inward = j.d1.perp() * o;
@@ -349,11 +302,6 @@ fn check(p: &Profile, size: f64) -> Result<(usize, usize, usize), TestCaseError>
     ))
 }
 
-/// An inner control point's distance off the chord (relative to its length), either side.
-fn wobble() -> impl Strategy<Value = f64> {
-    prop_oneof![-0.4f64..-0.05, 0.05f64..0.4]
-}
-
 static RUNS: AtomicUsize = AtomicUsize::new(0);
 static UNCERTIFIED: AtomicUsize = AtomicUsize::new(0);
 static CORNER_CORNER: AtomicUsize = AtomicUsize::new(0);
@@ -369,45 +317,13 @@ fn tally((cc, cs, sm): (usize, usize, usize)) {
 proptest! {
     #![proptest_config(ProptestConfig { cases: common::cases(150), ..ProptestConfig::default() })]
 
-    fn filleted_polygons_match_the_oracle(
-        steps in proptest::collection::vec(0.5f64..1.5, 3..8),
-        radii in proptest::collection::vec(1.0f64..2.0, 8),
-        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 8),
-        start in 0usize..16,
-        reverse in any::<bool>(),
-    ) {
-        let n = steps.len();
-        let total: f64 = steps.iter().sum();
-        let mut angles = Vec::with_capacity(n);
-        let mut acc = 0.0;
-        for s in &steps {
-            angles.push(TAU * acc / total);
-            acc += s;
-        }
-        let Some(segs) = filleted_polygon(&angles, &radii[..n], &round[..n]) else {
-            return Ok(());
-        };
-        let Some(p) = assemble(segs, start, reverse) else {
-            return Ok(());
-        };
+    fn filleted_polygons_match_the_oracle(p in filleted_polygons(3..8, 16)) {
+        let Some(p) = p else { return Ok(()) };
         tally(check(&p, 4.0)?);
     }
 
-    fn bezier_chains_match_the_oracle(
-        radii in proptest::collection::vec(1.0f64..2.0, 3..7),
-        // (A wobble near zero leaves a cubic straight within rounding: uncertified, rightly.)
-        wobble in proptest::collection::vec((wobble(), wobble()), 8),
-        smooth in proptest::collection::vec(any::<bool>(), 8),
-        start in 0usize..8,
-        reverse in any::<bool>(),
-    ) {
-        let n = radii.len();
-        let Some(segs) = bezier_chain(&radii, &wobble[..n], &smooth[..n]) else {
-            return Ok(());
-        };
-        let Some(p) = assemble(segs, start, reverse) else {
-            return Ok(());
-        };
+    fn bezier_chains_match_the_oracle(p in bezier_chains(3..7, 8, 0.4)) {
+        let Some(p) = p else { return Ok(()) };
         tally(check(&p, 4.0)?);
     }
 }
@@ -504,6 +420,24 @@ fn assert_same_points(a: &[[f64; 4]], b: &[[f64; 4]], room: f64) {
     }
 }
 
+/// A curve's pairs as those of a profile of that one smooth segment (no corners; both points
+/// on segment 0).
+fn as_profile_pairs(pairs: &[AntipodalPair]) -> Vec<ProfilePair> {
+    pairs
+        .iter()
+        .map(|p| ProfilePair {
+            s: p.s,
+            t: p.t,
+            p: p.p,
+            q: p.q,
+            distance: p.distance,
+            kind: Some(p.kind),
+            corner: [false; 2],
+            segment: [0; 2],
+        })
+        .collect()
+}
+
 /// A smooth closed curve given as a one-segment profile has the curve's pairs, and a periodic
 /// B-spline split into its Bézier pieces (joined G2) has the same pairs as the spline.
 #[test]
@@ -520,27 +454,10 @@ fn round_trips_through_profiles() {
     ];
     let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
     let alone = antipodal::antipodal(&c, &Options::default()).unwrap();
-    let one = Profile::new(
-        vec![Segment::spline(SegmentKind::BSpline, c).unwrap()],
-        None,
-    )
-    .unwrap();
+    let one = one_spline(c);
     let r = profile_antipodal(&one, &Options::default()).unwrap();
     assert!(alone.certified() && r.certified());
-    let curve_pairs: Vec<ProfilePair> = alone
-        .pairs
-        .iter()
-        .map(|p| ProfilePair {
-            s: p.s,
-            t: p.t,
-            p: p.p,
-            q: p.q,
-            distance: p.distance,
-            kind: Some(p.kind),
-            corner: [false; 2],
-            segment: [0; 2],
-        })
-        .collect();
+    let curve_pairs = as_profile_pairs(&alone.pairs);
     assert!(!curve_pairs.is_empty());
     assert_same_points(&point_pairs(&r.pairs), &point_pairs(&curve_pairs), 1e-10);
     for (a, b) in r.pairs.iter().zip(&alone.pairs) {
@@ -576,20 +493,7 @@ fn round_trips_through_profiles() {
     assert!(split.corners().next().is_none());
     let r = profile_antipodal(&split, &Options::default()).unwrap();
     assert!(whole.certified() && r.certified(), "{:?}", r.reason());
-    let whole_pairs: Vec<ProfilePair> = whole
-        .pairs
-        .iter()
-        .map(|p| ProfilePair {
-            s: p.s,
-            t: p.t,
-            p: p.p,
-            q: p.q,
-            distance: p.distance,
-            kind: Some(p.kind),
-            corner: [false; 2],
-            segment: [0; 2],
-        })
-        .collect();
+    let whole_pairs = as_profile_pairs(&whole.pairs);
     assert!(whole_pairs.len() >= 2);
     assert_same_points(&point_pairs(&r.pairs), &point_pairs(&whole_pairs), 1e-9);
 }
@@ -611,13 +515,7 @@ fn pairs_move_with_the_profile() {
     runner
         .run(&strategy, |(steps, radii, round, k)| {
             let n = steps.len();
-            let total: f64 = steps.iter().sum();
-            let mut angles = Vec::with_capacity(n);
-            let mut acc = 0.0;
-            for s in &steps {
-                angles.push(TAU * acc / total);
-                acc += s;
-            }
+            let angles = step_angles(&steps);
             let (offset, scale) = ([3.0e6, -1.25e6], 2f64.powi(k));
             let moved = |v: V2| V2::new(-v.y * scale + offset[0], v.x * scale + offset[1]);
             let here = filleted_polygon(&angles, &radii[..n], &round[..n]);

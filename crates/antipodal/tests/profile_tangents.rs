@@ -17,7 +17,7 @@ use curve::{Affine, JointKind, ParamCurve, SegmentKind, V2};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
+use testkit::profiles::{assemble, bezier_chain_profile, stepped_polygon};
 
 fn jet(p: &Profile, i: usize, x: f64, order: usize) -> curve::Jet {
     let c = p.segments()[i].curve();
@@ -85,7 +85,6 @@ fn same(a: (V2, V2), b: (V2, V2)) -> bool {
 fn oracle(a: &Profile, b: &Profile) -> Expected {
     const GRID: usize = 40;
     let mut out = Expected::default();
-    let xs: Vec<f64> = (0..=GRID).map(|k| k as f64 / GRID as f64).collect();
     for i in (0..a.segments().len()).filter(|&i| curved(a, i)) {
         for j in (0..b.segments().len()).filter(|&j| curved(b, j)) {
             let fg = |s: f64, t: f64| {
@@ -93,38 +92,18 @@ fn oracle(a: &Profile, b: &Profile) -> Expected {
                 let r = jt.p - js.p;
                 (js.d1.unit().cross(r), jt.d1.unit().cross(r))
             };
-            let vals: Vec<Vec<(f64, f64)>> = xs
-                .iter()
-                .map(|&s| xs.iter().map(|&t| fg(s, t)).collect())
-                .collect();
-            for x in 0..GRID {
-                for y in 0..GRID {
-                    let c = [
-                        vals[x][y],
-                        vals[x + 1][y],
-                        vals[x][y + 1],
-                        vals[x + 1][y + 1],
-                    ];
-                    let spans = |f: &dyn Fn(&(f64, f64)) -> f64| {
-                        c.iter().map(f).fold(f64::INFINITY, f64::min) <= 0.0
-                            && c.iter().map(f).fold(f64::NEG_INFINITY, f64::max) >= 0.0
-                    };
-                    if !(spans(&|v| v.0) && spans(&|v| v.1)) {
-                        continue;
-                    }
-                    let (s0, t0) = (0.5 * (xs[x] + xs[x + 1]), 0.5 * (xs[y] + xs[y + 1]));
-                    let Some((s, t)) = newton(a, i, b, j, s0, t0) else {
-                        continue;
-                    };
-                    if (s - s0).abs() > 2.0 / GRID as f64 || (t - t0).abs() > 2.0 / GRID as f64 {
-                        continue;
-                    }
-                    let l = (jet(a, i, s, 0).p, jet(b, j, t, 0).p);
-                    if corner_end(a, i, s) || corner_end(b, j, t) {
-                        out.limits.push(l);
-                    } else if !out.lines.iter().any(|&m| same(m, l)) {
-                        out.lines.push(l);
-                    }
+            for (s0, t0) in common::straddling_cells(GRID, fg, |_, _| true) {
+                let Some((s, t)) = newton(a, i, b, j, s0, t0) else {
+                    continue;
+                };
+                if (s - s0).abs() > 2.0 / GRID as f64 || (t - t0).abs() > 2.0 / GRID as f64 {
+                    continue;
+                }
+                let l = (jet(a, i, s, 0).p, jet(b, j, t, 0).p);
+                if corner_end(a, i, s) || corner_end(b, j, t) {
+                    out.limits.push(l);
+                } else if !out.lines.iter().any(|&m| same(m, l)) {
+                    out.lines.push(l);
                 }
             }
         }
@@ -143,16 +122,7 @@ fn oracle(a: &Profile, b: &Profile) -> Expected {
                     let x1 = k as f64 / N as f64;
                     let cur = h(x1);
                     if (prev < 0.0) != (cur < 0.0) {
-                        let (mut lo, mut hi) = ((k - 1) as f64 / N as f64, x1);
-                        for _ in 0..80 {
-                            let m = 0.5 * (lo + hi);
-                            if (h(lo) < 0.0) == (h(m) < 0.0) {
-                                lo = m;
-                            } else {
-                                hi = m;
-                            }
-                        }
-                        let x = 0.5 * (lo + hi);
+                        let x = common::bisect(h, (k - 1) as f64 / N as f64, x1);
                         let q = jet(to, j, x, 0).p;
                         let m = cone_margin(tin, tout, q - c);
                         let l = if flip { (q, c) } else { (c, q) };
@@ -181,35 +151,19 @@ fn oracle(a: &Profile, b: &Profile) -> Expected {
     out
 }
 
-fn newton(
-    a: &Profile,
-    i: usize,
-    b: &Profile,
-    j: usize,
-    mut s: f64,
-    mut t: f64,
-) -> Option<(f64, f64)> {
-    for _ in 0..60 {
+fn newton(a: &Profile, i: usize, b: &Profile, j: usize, s: f64, t: f64) -> Option<(f64, f64)> {
+    let system = |s: f64, t: f64| {
         let (js, jt) = (jet(a, i, s, 2), jet(b, j, t, 2));
         let r = jt.p - js.p;
-        let (f, g) = (js.d1.cross(r), jt.d1.cross(r));
-        let (fs, ft) = (js.d2.cross(r) - js.d1.cross(js.d1), js.d1.cross(jt.d1));
-        let (gs, gt) = (-jt.d1.cross(js.d1), jt.d2.cross(r));
-        let det = fs * gt - ft * gs;
-        if det == 0.0 || !det.is_finite() {
-            return None;
-        }
-        let (ds, dt) = ((f * gt - g * ft) / det, (fs * g - gs * f) / det);
-        s -= ds;
-        t -= dt;
-        if !(-1e-9..=1.0 + 1e-9).contains(&s) || !(-1e-9..=1.0 + 1e-9).contains(&t) {
-            return None;
-        }
-        if ds.abs() < 1e-15 && dt.abs() < 1e-15 {
-            return Some((s.clamp(0.0, 1.0), t.clamp(0.0, 1.0)));
-        }
-    }
-    None
+        (
+            [js.d1.cross(r), jt.d1.cross(r)],
+            [
+                [js.d2.cross(r) - js.d1.cross(js.d1), js.d1.cross(jt.d1)],
+                [-jt.d1.cross(js.d1), jt.d2.cross(r)],
+            ],
+        )
+    };
+    common::newton_in_unit_square(system, s, t)
 }
 
 /// A reported line satisfies the definition: through the two points, tangent at smooth ones,
@@ -294,15 +248,10 @@ proptest! {
         angle in 0.0f64..TAU,
         reverse in any::<bool>(),
     ) {
-        let n = steps.len();
-        let total: f64 = steps.iter().sum();
-        let mut acc = 0.0;
-        let angles: Vec<f64> = steps.iter().map(|s| { let a = TAU * acc / total; acc += s; a }).collect();
-        let Some(a) = filleted_polygon(&angles, &radii[..n], &round[..n])
+        let Some(a) = stepped_polygon(&steps, &radii, &round)
             .and_then(|s| assemble(s, 1, reverse)) else { return Ok(()); };
         let m = chain_radii.len();
-        let Some(b) = bezier_chain(&chain_radii, &wobble[..m], &smooth[..m])
-            .and_then(|s| assemble(s, 0, !reverse))
+        let Some(b) = bezier_chain_profile(&chain_radii, &wobble[..m], &smooth[..m], 0, !reverse)
             .and_then(|p| moved(&p, angle, 6.0 * angle.cos(), 6.0 * angle.sin())) else {
             return Ok(());
         };

@@ -13,11 +13,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// A closed chain of cubic Béziers round a star ([`testkit::profiles::bezier_chain`]), run
 /// backwards when `reverse`; `None` where a wobble makes it cross itself.
 fn chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool], reverse: bool) -> Option<Profile> {
-    testkit::profiles::assemble(
-        testkit::profiles::bezier_chain(radii, wobble, smooth)?,
-        0,
-        reverse,
-    )
+    testkit::profiles::bezier_chain_profile(radii, wobble, smooth, 0, reverse)
 }
 
 /// Sign changes of the curvature by dense sampling: inside each segment, and across smooth
@@ -144,11 +140,7 @@ fn one_segment_profiles_have_the_curves_inflections() {
     ];
     let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
     let alone = antipodal::inflections(&c, &Options::default()).unwrap();
-    let p = Profile::new(
-        vec![Segment::spline(SegmentKind::BSpline, c).unwrap()],
-        None,
-    )
-    .unwrap();
+    let p = testkit::profiles::one_spline(c);
     let r = profile_inflections(&p, &Options::default()).unwrap();
     let inside: Vec<f64> = alone
         .inflections

@@ -5,23 +5,28 @@
 use curve::{ParamCurve, SplineCurve};
 use proptest::prelude::*;
 
+/// The points `pts` moved by `by` (exactly: the shapes below are on a grid the move keeps).
+fn moved(pts: &[(f64, f64)], by: [f64; 2]) -> Vec<[f64; 2]> {
+    pts.iter().map(|&(x, y)| [x + by[0], y + by[1]]).collect()
+}
+
 /// A quadratic B-spline on uniform unclamped knots whose ends are 8 units apart (3 % of its
 /// size), 2^56 units from the origin: open. (Evaluated in place, the ends rounded to the same
 /// point, and the curve was taken for closed; found by fuzzing.)
 #[test]
 fn an_open_curve_far_from_the_origin_is_open() {
     let far = 2f64.powi(56);
-    let pts: Vec<[f64; 2]> = [
-        (0.0, 0.0),
-        (-32.0, -16.0),
-        (0.0, -112.0),
-        (104.0, 104.0),
-        (0.0, 0.0),
-        (-32.0, 0.0),
-    ]
-    .iter()
-    .map(|&(x, y)| [x - far, y - far])
-    .collect();
+    let pts = moved(
+        &[
+            (0.0, 0.0),
+            (-32.0, -16.0),
+            (0.0, -112.0),
+            (104.0, 104.0),
+            (0.0, 0.0),
+            (-32.0, 0.0),
+        ],
+        [-far, -far],
+    );
     let knots: Vec<f64> = (1..=9).map(|i| i as f64 / 16.0).collect();
     let c = SplineCurve::clamped(2, &pts, None, Some(knots)).unwrap();
     assert!(!c.is_closed());
@@ -33,16 +38,16 @@ fn an_open_curve_far_from_the_origin_is_open() {
 #[test]
 fn an_open_rational_curve_far_from_the_origin_is_open() {
     let far = 2f64.powi(50);
-    let pts: Vec<[f64; 2]> = [
-        (0.0, 103.0),
-        (-1.0, -1.0),
-        (-27.0, -1.0),
-        (3.0, -22.0),
-        (0.0, 71.0),
-    ]
-    .iter()
-    .map(|&(x, y)| [x + 71.0 * far, y - 33.0 * far])
-    .collect();
+    let pts = moved(
+        &[
+            (0.0, 103.0),
+            (-1.0, -1.0),
+            (-27.0, -1.0),
+            (3.0, -22.0),
+            (0.0, 71.0),
+        ],
+        [71.0 * far, -33.0 * far],
+    );
     let knots = vec![
         7.1875, 23.125, 39.0625, 55.0, 70.9375, 86.875, 102.8125, 118.75,
     ];

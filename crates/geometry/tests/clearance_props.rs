@@ -13,6 +13,7 @@
 use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve};
 use geometry::{Clearance, NearestPoint, ProfileClearance};
 use proptest::prelude::*;
+use testkit::boundary_oracle::golden;
 
 /// Samples per segment of the oracle.
 const SAMPLES: usize = 4000;
@@ -43,24 +44,11 @@ fn least_sampled(f: &dyn Fn(f64) -> f64, lo: f64, hi: f64, steps: usize) -> f64 
     for k in 0..=steps {
         let (before, after) = (k.saturating_sub(1), (k + 1).min(steps));
         if values[k] <= values[before] && values[k] <= values[after] {
-            best = best.min(f(golden(f, at(before), at(after))));
+            // (80 steps: to rounding.)
+            best = best.min(f(golden(f, at(before), at(after), 80)));
         }
     }
     best
-}
-
-/// The least of `f` on `[lo, hi]` by golden-section search (to rounding).
-fn golden(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..80 {
-        let (l, r) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        if f(l) < f(r) {
-            hi = r;
-        } else {
-            lo = l;
-        }
-    }
-    0.5 * (lo + hi)
 }
 
 /// The distance from `x` to the points of the closed profile with parameters in `[lo,
@@ -132,14 +120,22 @@ fn profile(kinds: &[u8], bend: &[f64], w: &[f64], s: f64, o: [f64; 2]) -> Option
     Profile::new(segs, None).ok()
 }
 
+/// What [`profile`] builds round a star from: the kinds of 4 to 8 sides, their bends, and the
+/// cubics' inner weights.
+fn star_sides() -> impl Strategy<Value = (Vec<u8>, Vec<f64>, Vec<f64>)> {
+    (
+        prop::collection::vec(0u8..3, 4..9),
+        prop::collection::vec(-0.4..0.4f64, 8),
+        prop::collection::vec(0.3..3.0f64, 2),
+    )
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
     #[test]
     fn clearance_agrees_with_dense_distances(
-        kinds in prop::collection::vec(0u8..3, 4..9),
-        bend in prop::collection::vec(-0.4..0.4f64, 8),
-        w in prop::collection::vec(0.3..3.0f64, 2),
+        (kinds, bend, w) in star_sides(),
         scale in prop_oneof![Just(1.0), Just(1e-6), Just(3e5), (-40i32..40).prop_map(|k| 2f64.powi(k))],
         far in prop_oneof![Just(0.0), Just(1e3), Just(1e6), Just(1e9)],
         xs in prop::collection::vec((-1.8..1.8f64, -1.8..1.8f64), 12),
@@ -163,9 +159,7 @@ proptest! {
     /// judged against the points in it only, the distance taken over it alone.
     #[test]
     fn clearance_between_agrees_with_dense_distances_in_the_window(
-        kinds in prop::collection::vec(0u8..3, 4..9),
-        bend in prop::collection::vec(-0.4..0.4f64, 8),
-        w in prop::collection::vec(0.3..3.0f64, 2),
+        (kinds, bend, w) in star_sides(),
         scale in prop_oneof![Just(1.0), (-30i32..30).prop_map(|k| 2f64.powi(k))],
         far in prop_oneof![Just(0.0), Just(1e6)],
         start in -1.0..9.0f64,

@@ -15,11 +15,13 @@ mod graph;
 mod judge;
 #[path = "common/sampled_voronoi.rs"]
 mod sampled_voronoi;
+#[path = "common/traced.rs"]
+mod traced;
 
 use curve::{Affine, ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
-use judge::{judge, CHORD};
-use medial::{medial_axis, MedialAxis, MedialOptions};
+use judge::judge;
 use numeric::certificate::Verdict;
+use traced::axis;
 
 /// The segments of an SVG path of `M`, `L`, `H`, `V`, `C` and `Z` (absolute or relative),
 /// one subpath; `Z` draws its closing line unless the last point is the first.
@@ -102,19 +104,6 @@ fn path(d: &str) -> Vec<Segment> {
 fn region(outer: Vec<Segment>, holes: Vec<Vec<Segment>>) -> Region {
     let p = |s| Profile::new(s, None).unwrap();
     Region::new(p(outer), holes.into_iter().map(p).collect()).unwrap()
-}
-
-fn axis(region: &Region) -> MedialAxis {
-    let opts = MedialOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            CHORD,
-            None,
-        )
-        .expect("settings in range"),
-        ..MedialOptions::default()
-    };
-    medial_axis(region, &opts).unwrap()
 }
 
 /// The maps a drawn shape is also judged under: moved far, scaled by 1e±3, rotated.

@@ -14,6 +14,8 @@
 mod graph;
 #[path = "common/sampled_voronoi.rs"]
 mod sampled_voronoi;
+#[path = "common/traced.rs"]
+mod traced;
 
 use curve::{ParamCurve, Profile, Region, Segment};
 use graph::components_and_cycles;
@@ -23,24 +25,10 @@ use proptest::prelude::*;
 use sampled_voronoi::sampled_medial_points;
 use std::cell::Cell;
 use std::f64::consts::{PI, TAU};
-use testkit::boundary_oracle::{off_segment, winding, Oracle};
+use testkit::boundary_oracle::{off_polylines, winding, Oracle};
 use testkit::cases;
-use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
-
-const CHORD: f64 = 1e-3;
-
-fn axis(region: &Region) -> MedialAxis {
-    let opts = MedialOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            CHORD,
-            None,
-        )
-        .expect("settings in range"),
-        ..Default::default()
-    };
-    medial_axis(region, &opts).unwrap()
-}
+use testkit::profiles::{assemble, bezier_chain_profile, stepped_polygon};
+use traced::{axis, off_axis, traced_options, CHORD};
 
 fn circle(c: [f64; 2], r: f64) -> Profile {
     Profile::new(vec![Segment::arc(c, r, 0.0, TAU).unwrap()], None).unwrap()
@@ -213,23 +201,7 @@ fn a_four_centre_oval_has_one_edge_between_its_small_centres() {
 /// graph, to the bit, on the rounded pocket with an island and a chain of Béziers.
 #[test]
 fn the_axis_is_the_same_on_one_thread() {
-    let chain = assemble(
-        bezier_chain(
-            &[1.5, 1.0, 1.8, 1.2, 1.6],
-            &[
-                (0.2, -0.3),
-                (0.3, 0.25),
-                (-0.2, 0.1),
-                (0.35, -0.1),
-                (0.1, 0.3),
-            ],
-            &[false; 5],
-        )
-        .unwrap(),
-        0,
-        false,
-    )
-    .unwrap();
+    let chain = testkit::profiles::five_cubics([false; 5]);
     // The 10 × 6 pocket with corners of radius 1 and an island of radius 1.
     let pocket = Region::new(pocket_outline(), vec![circle([6.5, 3.0], 1.0)]);
     for region in [Region::new(chain, vec![]).unwrap(), pocket.unwrap()] {
@@ -428,14 +400,8 @@ fn fitted_samples(a: &MedialAxis) -> Vec<Vec<[f64; 2]>> {
 /// at both feet; every leaf at the box is on its edge.
 fn check_exterior(region: &Region, b: &Boundaries<'_>) -> Result<(), TestCaseError> {
     let opts = MedialOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            CHORD,
-            None,
-        )
-        .expect("settings in range"),
         exterior: true,
-        ..Default::default()
+        ..traced_options()
     };
     let a = medial_axis(region, &opts).unwrap();
     prop_assert!(a.complete);
@@ -489,14 +455,8 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
     }
     let fitted = case.is_multiple_of(FIT_EVERY).then(|| {
         let opts = MedialOptions {
-            settings: numeric::tolerance::Settings::new(
-                numeric::tolerance::DEFAULT_PARAM_TOL,
-                CHORD,
-                None,
-            )
-            .expect("settings in range"),
             fit: true,
-            ..Default::default()
+            ..traced_options()
         };
         medial_axis(region, &opts).unwrap()
     });
@@ -615,11 +575,7 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
         sampled.dominated
     );
     for z in &sampled.points {
-        let off = a
-            .edges
-            .iter()
-            .flat_map(|e| e.xy.windows(2).map(|w| off_segment(z.xy, w[0], w[1])))
-            .fold(f64::INFINITY, f64::min);
+        let off = off_axis(&a, z.xy);
         prop_assert!(
             off <= room,
             "medial point {:?} (radius {}) is {off} off the axis",
@@ -627,10 +583,7 @@ fn check(region: &Region) -> Result<(), TestCaseError> {
             z.radius
         );
         if let Some(curves) = &fitted_curves {
-            let off = curves
-                .iter()
-                .flat_map(|c| c.windows(2).map(|w| off_segment(z.xy, w[0], w[1])))
-                .fold(f64::INFINITY, f64::min);
+            let off = off_polylines(z.xy, curves.iter().map(|c| &c[..]));
             prop_assert!(
                 off <= room,
                 "medial point {:?} is {off} off the fitted axis",
@@ -657,20 +610,6 @@ fn end_foot(a: &MedialAxis, id: usize) -> Option<(f64, usize)> {
     })
 }
 
-fn polygon(steps: &[f64], radii: &[f64], round: &[f64]) -> Option<Vec<Segment>> {
-    let total: f64 = steps.iter().sum();
-    let mut acc = 0.0;
-    let angles: Vec<f64> = steps
-        .iter()
-        .map(|s| {
-            let a = TAU * acc / total;
-            acc += s;
-            a
-        })
-        .collect();
-    filleted_polygon(&angles, &radii[..steps.len()], &round[..steps.len()])
-}
-
 /// Round holes of the given centres (in the unit disk, scaled by 0.5) and radii, kept where
 /// the region accepts them with a clear margin.
 fn with_holes(outer: Profile, holes: &[([f64; 2], f64)]) -> Option<Region> {
@@ -686,8 +625,13 @@ fn with_holes(outer: Profile, holes: &[([f64; 2], f64)]) -> Option<Region> {
     Region::new(outer, kept).ok()
 }
 
-fn wobble() -> impl Strategy<Value = f64> {
-    prop_oneof![-0.3f64..-0.05, 0.05f64..0.3]
+/// The region inside `outer` with the round `holes` (as [`with_holes`] places them), every
+/// one of them kept, once [`check`] has found its axis right.
+fn checked_region(outer: Profile, holes: &[([f64; 2], f64)]) -> Region {
+    let region = with_holes(outer, holes).unwrap();
+    assert_eq!(region.holes().len(), holes.len(), "a hole was refused");
+    check(&region).unwrap();
+    region
 }
 
 fn hole() -> impl Strategy<Value = ([f64; 2], f64)> {
@@ -698,40 +642,31 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: cases(16), ..ProptestConfig::default() })]
 
     fn filleted_polygons(
-        steps in proptest::collection::vec(0.5f64..1.5, 3..7),
-        radii in proptest::collection::vec(1.0f64..2.0, 7),
-        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 7),
-        start in 0usize..12,
-        reverse in any::<bool>(),
+        outer in testkit::profiles::filleted_polygons(3..7, 12),
         holes in proptest::collection::vec(hole(), 0..3),
     ) {
-        let Some(segs) = polygon(&steps, &radii, &round) else { return Ok(()) };
-        let Some(p) = assemble(segs, start, reverse) else { return Ok(()) };
-        let Some(region) = with_holes(p, &holes) else { return Ok(()) };
-        if !region.holes().is_empty() {
-            bump(&WITH_HOLES, 1);
-        }
-        check(&region)?;
+        check_drawn(outer, &holes)?;
     }
 
     // Joints of either kind: a corner, or smooth with a jump of the curvature (G1, not G2).
     fn bezier_chains(
-        radii in proptest::collection::vec(1.0f64..2.0, 3..6),
-        wobble in proptest::collection::vec((wobble(), wobble()), 6),
-        smooth in proptest::collection::vec(any::<bool>(), 6),
-        start in 0usize..6,
-        reverse in any::<bool>(),
+        outer in testkit::profiles::bezier_chains(3..6, 6, 0.3),
         holes in proptest::collection::vec(hole(), 0..3),
     ) {
-        let n = radii.len();
-        let Some(segs) = bezier_chain(&radii, &wobble[..n], &smooth[..n]) else { return Ok(()) };
-        let Some(p) = assemble(segs, start, reverse) else { return Ok(()) };
-        let Some(region) = with_holes(p, &holes) else { return Ok(()) };
-        if !region.holes().is_empty() {
-            bump(&WITH_HOLES, 1);
-        }
-        check(&region)?;
+        check_drawn(outer, &holes)?;
     }
+}
+
+/// [`check`] on a drawn region: inside `outer` (where it is a profile) with those of the
+/// round `holes` it accepts, counted when it keeps some.
+fn check_drawn(outer: Option<Profile>, holes: &[([f64; 2], f64)]) -> Result<(), TestCaseError> {
+    let Some(region) = outer.and_then(|p| with_holes(p, holes)) else {
+        return Ok(());
+    };
+    if !region.holes().is_empty() {
+        bump(&WITH_HOLES, 1);
+    }
+    check(&region)
 }
 
 /// A closed cubic B-spline (NURBS with `weights`) through control points round a star at
@@ -784,12 +719,7 @@ proptest! {
         holes in proptest::collection::vec(hole(), 0..3),
     ) {
         let w = weights.as_ref().map(|w| &w[..radii.len()]);
-        let Some(p) = closed_spline(&radii, w) else { return Ok(()) };
-        let Some(region) = with_holes(p, &holes) else { return Ok(()) };
-        if !region.holes().is_empty() {
-            bump(&WITH_HOLES, 1);
-        }
-        check(&region)?;
+        check_drawn(closed_spline(&radii, w), &holes)?;
     }
 }
 
@@ -840,13 +770,17 @@ fn a_leaf_at_a_smooth_joint_ends_at_the_sharper_sides_centre() {
         (-0.05, -0.05),
         (-0.05, -0.05),
     ];
-    let segs = bezier_chain(&radii, &wobble, &[false, false, false, true, false]).unwrap();
-    let outline = assemble(segs, 0, false).unwrap();
+    let outline = bezier_chain_profile(
+        &radii,
+        &wobble,
+        &[false, false, false, true, false],
+        0,
+        false,
+    )
+    .unwrap();
     let sharper = 1.0 / outline.jet_on(2, 3.0, 3).curvature().abs();
     assert!(sharper < 0.41 && 1.0 / outline.jet_on(3, 3.0, 3).curvature().abs() > 1.3);
-    let region = Region::new(outline, vec![]).unwrap();
-    check(&region).unwrap();
-    let a = axis(&region);
+    let a = axis(&checked_region(outline, &[]));
     let ends: Vec<_> = a.nodes.iter().filter(|n| n.kind == NodeKind::End).collect();
     assert_eq!(ends.len(), 1, "{:?}", a.nodes);
     testkit::assert_near!(ends[0].radius, sharper, 1e-9, "{:?} {sharper}", ends[0]);
@@ -869,15 +803,12 @@ fn a_junction_whose_third_contact_is_on_a_feet_segment() {
         (-0.05, -0.17367561327226244),
         (-0.2006562983337941, 0.17490760724839632),
     ];
-    let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
-    let outer = assemble(segs, 0, false).unwrap();
+    let outer = bezier_chain_profile(&radii, &wobble, &[false; 4], 0, false).unwrap();
     let hole = (
         [-0.8707659644847356, 0.8174766831175151],
         0.20672370399983253,
     );
-    let region = with_holes(outer, &[hole]).unwrap();
-    assert_eq!(region.holes().len(), 1);
-    check(&region).unwrap();
+    checked_region(outer, &[hole]);
 }
 
 /// CI's random case: a leaf from a cubic's curvature maximum to a junction, short (1.7e-2)
@@ -886,8 +817,7 @@ fn a_junction_whose_third_contact_is_on_a_feet_segment() {
 /// and the leaf became a loop at the centre, apart from the rest.
 #[test]
 fn a_short_leaf_from_a_curvature_maximum_reaches_its_junction() {
-    let region = Region::new(sharply_bent_cubics(0), vec![]).unwrap();
-    check(&region).unwrap();
+    let region = checked_region(sharply_bent_cubics(0), &[]);
     assert_eq!(kinds(&axis(&region), NodeKind::End), 1);
 }
 
@@ -904,9 +834,7 @@ fn a_branch_past_the_evolute_between_two_vertices_breaks_at_its_junction() {
         0.11131415240713867,
     );
     for start in 0..4 {
-        let region = with_holes(sharply_bent_cubics(start), &[hole]).unwrap();
-        assert_eq!(region.holes().len(), 1);
-        check(&region).unwrap();
+        checked_region(sharply_bent_cubics(start), &[hole]);
     }
 }
 
@@ -925,8 +853,7 @@ fn sharply_bent_cubics(start: usize) -> Profile {
         (-0.05, -0.1681011491931554),
         (-0.268686652326142, 0.27506893294054613),
     ];
-    let segs = bezier_chain(&radii, &wobble, &[false; 4]).unwrap();
-    assemble(segs, start, false).unwrap()
+    bezier_chain_profile(&radii, &wobble, &[false; 4], start, false).unwrap()
 }
 
 /// A random closed cubic B-spline of 9 control points (one segment, no hole): the short
@@ -947,8 +874,7 @@ fn a_short_edge_hidden_between_vertices_of_one_spline_is_found() {
         1.079719207003536,
         1.3076141591901762,
     ];
-    let region = Region::new(closed_spline(&radii, None).unwrap(), vec![]).unwrap();
-    check(&region).unwrap();
+    let region = checked_region(closed_spline(&radii, None).unwrap(), &[]);
     assert_eq!(kinds(&axis(&region), NodeKind::Junction), 2);
 }
 
@@ -984,9 +910,7 @@ fn a_hole_in_a_wiggly_spline_keeps_its_cycle() {
         [0.17990307859668112, 0.548683511017336],
         0.13434422286911718,
     );
-    let region = with_holes(outer, &[hole]).unwrap();
-    assert_eq!(region.holes().len(), 1);
-    check(&region).unwrap();
+    checked_region(outer, &[hole]);
 }
 
 /// A random chain with two smooth joints and a hole (a wider random run's case): the hole's
@@ -998,14 +922,13 @@ fn a_hole_in_a_wiggly_spline_keeps_its_cycle() {
 #[test]
 fn a_branch_turning_between_its_vertices_reaches_its_junction() {
     let radii = [1.4458403445253272, 1.9907059228053479, 1.1323003324290553];
-    let segs = bezier_chain(&radii, &[(-0.05, -0.05); 3], &[true, false, true]).unwrap();
+    let outer =
+        bezier_chain_profile(&radii, &[(-0.05, -0.05); 3], &[true, false, true], 0, false).unwrap();
     let hole = (
         [-0.15635263822222772, -0.08988750577444202],
         0.09570641978321387,
     );
-    let region = with_holes(assemble(segs, 0, false).unwrap(), &[hole]).unwrap();
-    assert_eq!(region.holes().len(), 1);
-    check(&region).unwrap();
+    let region = checked_region(outer, &[hole]);
     assert_eq!(kinds(&axis(&region), NodeKind::Junction), 3);
 }
 
@@ -1042,8 +965,7 @@ fn a_leaf_tip_cut_at_a_knot_is_no_loop() {
         1.0389430425540485,
         0.7086053176434862,
     ];
-    let region = Region::new(closed_spline(&radii, Some(&weights)).unwrap(), vec![]).unwrap();
-    check(&region).unwrap();
+    let region = checked_region(closed_spline(&radii, Some(&weights)).unwrap(), &[]);
     let a = axis(&region);
     let tip = a
         .nodes
@@ -1072,9 +994,8 @@ fn a_leaf_to_a_peak_beside_a_smooth_joint_is_one_edge() {
         (-0.05, -0.05),
         (-0.05, -0.05),
     ];
-    let segs = bezier_chain(&radii, &wobble, &[false, false, true, false]).unwrap();
-    let region = Region::new(assemble(segs, 0, false).unwrap(), vec![]).unwrap();
-    check(&region).unwrap();
+    let outer = bezier_chain_profile(&radii, &wobble, &[false, false, true, false], 0, false);
+    let region = checked_region(outer.unwrap(), &[]);
     assert_eq!(kinds(&axis(&region), NodeKind::End), 1);
 }
 
@@ -1092,9 +1013,8 @@ fn two_leaf_tips_beside_a_smooth_joint_are_two_nodes() {
         (-0.05, -0.05),
         (-0.05, -0.05),
     ];
-    let segs = bezier_chain(&radii, &wobble, &[true, false, true]).unwrap();
-    let region = Region::new(assemble(segs, 1, false).unwrap(), vec![]).unwrap();
-    check(&region).unwrap();
+    let outer = bezier_chain_profile(&radii, &wobble, &[true, false, true], 1, false);
+    let region = checked_region(outer.unwrap(), &[]);
     let a = axis(&region);
     assert_eq!(
         (kinds(&a, NodeKind::End), kinds(&a, NodeKind::Junction)),
@@ -1174,9 +1094,8 @@ fn an_end_at_a_fillet_centre_with_its_feet_at_the_joints() {
         1.0,
     ];
     let round = [0.9157530236956428, 0.2, 0.0, 0.0, 0.0, 0.0, 0.0];
-    let segs = polygon(&steps, &radii, &round).unwrap();
-    let region = with_holes(assemble(segs, 2, false).unwrap(), &[]).unwrap();
-    check(&region).unwrap();
+    let segs = stepped_polygon(&steps, &radii, &round).unwrap();
+    let region = checked_region(assemble(segs, 2, false).unwrap(), &[]);
     assert!(axis(&region).certified());
 }
 
@@ -1203,9 +1122,8 @@ fn a_short_stretch_beside_a_reflex_corner_is_no_loop() {
         (-0.05, -0.05),
     ];
     let smooth = [true, false, false, false, false, false];
-    let segs = bezier_chain(&radii, &wobble[..5], &smooth[..5]).unwrap();
-    let region = with_holes(assemble(segs, 0, false).unwrap(), &[]).unwrap();
-    check(&region).unwrap();
+    let outer = bezier_chain_profile(&radii, &wobble[..5], &smooth[..5], 0, false);
+    let region = checked_region(outer.unwrap(), &[]);
     assert!(axis(&region).edges.iter().all(|e| e.from != e.to));
 }
 
@@ -1235,11 +1153,8 @@ fn a_corners_stretch_reaches_its_junction_with_no_vertex_between() {
         1.0,
     ];
     let round = [0.2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
-    let segs = polygon(&steps, &radii, &round).unwrap();
-    let outer = assemble(segs, 0, false).unwrap();
-    let region = with_holes(outer, &[([0.0, 0.0], 0.05)]).unwrap();
-    assert_eq!(region.holes().len(), 1);
-    check(&region).unwrap();
+    let segs = stepped_polygon(&steps, &radii, &round).unwrap();
+    let region = checked_region(assemble(segs, 0, false).unwrap(), &[([0.0, 0.0], 0.05)]);
     assert!(axis(&region).certified());
 }
 
@@ -1250,8 +1165,7 @@ fn a_corners_stretch_reaches_its_junction_with_no_vertex_between() {
 #[test]
 fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
     let outline = testkit::outlines::bezier_chain(12);
-    let region = Region::new(outline.clone(), vec![]).unwrap();
-    check(&region).unwrap();
+    let region = checked_region(outline.clone(), &[]);
     let a = axis(&region);
     assert!(a.certified(), "{:?}", a.reason());
     let ends: Vec<_> = a.nodes.iter().filter(|n| n.kind == NodeKind::End).collect();
@@ -1280,8 +1194,7 @@ fn leaves_beside_reflex_corners_end_at_the_corners_centres_of_curvature() {
 /// stretch between them was missed (a leaf ended there, uncertified).
 #[test]
 fn three_reflex_corners_on_one_disk_make_a_junction() {
-    let region = Region::new(testkit::outlines::bezier_chain(50), vec![]).unwrap();
-    check(&region).unwrap();
+    let region = checked_region(testkit::outlines::bezier_chain(50), &[]);
     let a = axis(&region);
     assert!(a.certified(), "{:?}", a.reason());
 }
@@ -1293,8 +1206,7 @@ fn three_reflex_corners_on_one_disk_make_a_junction() {
 /// The corner is now the third site.
 #[test]
 fn a_junction_touching_a_corner_beside_its_own_foot_is_one_node() {
-    let region = Region::new(testkit::outlines::bezier_chain(75), vec![]).unwrap();
-    check(&region).unwrap();
+    let region = checked_region(testkit::outlines::bezier_chain(75), &[]);
     let a = axis(&region);
     assert!(shaped_like_the_region(&a, 0), "the graph came apart");
     // The 100-segment chain: the branch of a corner and its own segment starts where its

@@ -15,24 +15,15 @@ mod graph;
 mod judge;
 #[path = "common/sampled_voronoi.rs"]
 mod sampled_voronoi;
+#[path = "common/traced.rs"]
+mod traced;
 
 use curve::{Affine, Profile, Region, Segment, V2};
-use judge::{judge, CHORD};
-use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
+use judge::judge;
+use medial::{MedialAxis, NodeKind};
 use numeric::certificate::Verdict;
-
-fn axis(region: &Region) -> MedialAxis {
-    let opts = MedialOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            CHORD,
-            None,
-        )
-        .expect("settings in range"),
-        ..MedialOptions::default()
-    };
-    medial_axis(region, &opts).unwrap()
-}
+use testkit::outlines::polygon;
+use traced::axis;
 
 /// The axis of `region`: right by the oracle where certified, with a reason where not.
 fn right_or_honest(name: &str, region: &Region) -> MedialAxis {
@@ -45,14 +36,6 @@ fn right_or_honest(name: &str, region: &Region) -> MedialAxis {
         assert!(a.reason().is_some(), "{name}: uncertified without a reason");
     }
     a
-}
-
-fn polygon(points: &[[f64; 2]]) -> Profile {
-    let n = points.len();
-    let sides = (0..n)
-        .map(|i| Segment::line(points[i], points[(i + 1) % n]).unwrap())
-        .collect();
-    Profile::new(sides, None).unwrap()
 }
 
 /// A regular polygon of `n` sides about the origin (its sides tangent to one circle), each

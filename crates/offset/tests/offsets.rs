@@ -12,14 +12,7 @@ use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use testkit::cases;
-
-fn polygon(c: &[[f64; 2]]) -> Profile {
-    let n = c.len();
-    let sides = (0..n)
-        .map(|i| Segment::line(c[i], c[(i + 1) % n]).unwrap())
-        .collect();
-    Profile::new(sides, None).unwrap()
-}
+use testkit::outlines::polygon;
 
 fn circle(center: [f64; 2], r: f64) -> Profile {
     Profile::new(vec![Segment::arc(center, r, 0.0, TAU).unwrap()], None).unwrap()
@@ -49,6 +42,33 @@ fn offsets_of(region: &Region, distances: &[f64]) -> Offsets {
     let axis = medial_axis(region, &MedialOptions::default()).unwrap();
     assert!(axis.certified(), "{:?}", axis.reason());
     offsets(region, &axis, distances, &OffsetOptions::default()).unwrap()
+}
+
+/// The offsets of `region` by `distances`, found right by [`check`] to `tol`; with the
+/// areas it measured.
+fn checked_offsets(region: &Region, distances: &[f64], tol: f64) -> (Offsets, Vec<Vec<f64>>) {
+    let found = offsets_of(region, distances);
+    let areas = check(region, &found, tol);
+    (found, areas)
+}
+
+/// The region inside the polygon through `corners` (no holes).
+fn polygon_region(corners: &[[f64; 2]]) -> Region {
+    Region::new(polygon(corners), vec![]).unwrap()
+}
+
+/// The region inside a closed chain of Béziers ([`testkit::profiles::bezier_chain`]) with a
+/// round hole of radius 0.15 at the origin: the random chains' regression cases.
+fn chain_round_a_hole(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool]) -> Region {
+    let outer = testkit::profiles::bezier_chain_profile(radii, wobble, smooth, 0, false).unwrap();
+    Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap()
+}
+
+/// The offset of `region` by `distance`, which must be certified.
+fn certified_offsets(region: &Region, distance: f64) -> Offsets {
+    let found = offsets_of(region, &[distance]);
+    assert!(found.certified(), "{:?}", found.reason());
+    found
 }
 
 /// Chords a query looks at together: one box stands for them all.
@@ -205,13 +225,8 @@ fn check_against(chords: &Chords, found: &Offsets, tol: f64, area_samples: usize
 
 #[test]
 fn a_rectangle_shrinks_to_a_rectangle_until_it_vanishes() {
-    let region = Region::new(
-        polygon(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]),
-        vec![],
-    )
-    .unwrap();
-    let found = offsets_of(&region, &[0.25, 0.5, 0.9, 1.1]);
-    let areas = check(&region, &found, 1e-9);
+    let region = polygon_region(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]);
+    let (found, areas) = checked_offsets(&region, &[0.25, 0.5, 0.9, 1.1], 1e-9);
     for (k, d) in [0.25, 0.5, 0.9].iter().enumerate() {
         assert_eq!(found.offsets[k].loops.len(), 1);
         assert_eq!(found.offsets[k].loops[0].segments.len(), 4);
@@ -231,8 +246,7 @@ fn a_rectangle_shrinks_to_a_rectangle_until_it_vanishes() {
 #[test]
 fn an_annulus_gives_two_circles_each_way_round() {
     let region = Region::new(circle([1.0, 2.0], 3.0), vec![circle([1.0, 2.0], 1.0)]).unwrap();
-    let found = offsets_of(&region, &[0.5, 0.99, 1.01]);
-    let areas = check(&region, &found, 1e-6);
+    let (found, areas) = checked_offsets(&region, &[0.5, 0.99, 1.01], 1e-6);
     for (k, d) in [0.5_f64, 0.99].iter().enumerate() {
         let mut got = areas[k].clone();
         got.sort_by(f64::total_cmp);
@@ -248,8 +262,7 @@ fn an_annulus_gives_two_circles_each_way_round() {
 fn the_pocket_keeps_its_island_then_splits_then_vanishes() {
     let region = pocket();
     let distances: Vec<f64> = (1..=12).map(|k| 0.25 * k as f64).collect();
-    let found = offsets_of(&region, &distances);
-    check(&region, &found, 1e-6);
+    let (found, _) = checked_offsets(&region, &distances, 1e-6);
     let counts: Vec<usize> = found.offsets.iter().map(|o| o.loops.len()).collect();
     // Two loops (round the pocket, round the island) while the island's gap to the right
     // wall (2.5 wide) is open; then one loop left of the island; then none.
@@ -261,20 +274,15 @@ fn the_pocket_keeps_its_island_then_splits_then_vanishes() {
 #[test]
 fn reflex_corners_become_arcs_of_the_distance() {
     // An L-shaped room: its one reflex corner at (2, 2).
-    let region = Region::new(
-        polygon(&[
-            [0.0, 0.0],
-            [6.0, 0.0],
-            [6.0, 2.0],
-            [2.0, 2.0],
-            [2.0, 6.0],
-            [0.0, 6.0],
-        ]),
-        vec![],
-    )
-    .unwrap();
-    let found = offsets_of(&region, &[0.5]);
-    check(&region, &found, 1e-9);
+    let region = polygon_region(&[
+        [0.0, 0.0],
+        [6.0, 0.0],
+        [6.0, 2.0],
+        [2.0, 2.0],
+        [2.0, 6.0],
+        [0.0, 6.0],
+    ]);
+    let (found, _) = checked_offsets(&region, &[0.5], 1e-9);
     let arcs: Vec<&OffsetSegment> = found.offsets[0].loops[0]
         .segments
         .iter()
@@ -303,8 +311,7 @@ fn a_stretch_across_a_round_islands_seam_is_one_arc() {
     // fixture region-pocket.json).
     let mut region = pocket();
     region = Region::new(region.outer().clone(), vec![circle([6.5, 3.0], 1.2)]).unwrap();
-    let found = offsets_of(&region, &[1.0, 1.1]);
-    check(&region, &found, 1e-6);
+    let (found, _) = checked_offsets(&region, &[1.0, 1.1], 1e-6);
     for o in &found.offsets {
         let arcs = o.loops.iter().flat_map(|l| &l.segments).filter(
             |s| matches!(s, OffsetSegment::Arc { r, .. } if (r - (1.2 + o.distance)).abs() < 1e-9),
@@ -849,11 +856,7 @@ fn outward_of(region: &Region, distances: &[f64]) -> Offsets {
 
 #[test]
 fn outward_a_rectangle_grows_rounded_corners_and_a_hole_shrinks() {
-    let region = Region::new(
-        polygon(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]),
-        vec![],
-    )
-    .unwrap();
+    let region = polygon_region(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]);
     let found = outward_of(&region, &[0.5]);
     let areas = check(&region, &found, 1e-6);
     assert_eq!(found.offsets[0].loops.len(), 1);
@@ -951,8 +954,7 @@ fn a_square_hole_grows_rounded_corners_inward() {
     let outer = polygon(&[[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]);
     let hole = polygon(&[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]);
     let region = Region::new(outer, vec![hole]).unwrap();
-    let found = offsets_of(&region, &[0.5]);
-    let areas = check(&region, &found, 1e-6);
+    let (found, areas) = checked_offsets(&region, &[0.5], 1e-6);
     let round_hole = found.offsets[0]
         .loops
         .iter()
@@ -986,8 +988,7 @@ fn a_d_shaped_hole_closes_round_its_corners() {
     .unwrap();
     let region = Region::new(outer, vec![hole]).unwrap();
     for d in [0.3, 0.5, 1.0] {
-        let found = offsets_of(&region, &[d]);
-        check(&region, &found, 1e-6);
+        let (found, _) = checked_offsets(&region, &[d], 1e-6);
         assert_eq!(found.offsets[0].loops.len(), 2, "d = {d}");
     }
 }
@@ -1005,8 +1006,7 @@ fn a_neck_between_two_round_holes_closes() {
     )
     .unwrap();
     for d in [0.45, 0.499, 0.4999999, 0.5005, 0.55, 0.8] {
-        let found = offsets_of(&region, &[d]);
-        check(&region, &found, 1e-6);
+        let (found, _) = checked_offsets(&region, &[d], 1e-6);
         // (Round the pocket and each hole while the neck is open, then round both holes.)
         assert_eq!(
             found.offsets[0].loops.len(),
@@ -1067,20 +1067,15 @@ fn a_malformed_axis_is_an_error() {
 /// profile (which cannot turn back).
 #[test]
 fn arms_exactly_twice_the_distance_wide_leave_the_elbow() {
-    let region = Region::new(
-        polygon(&[
-            [0.0, 0.0],
-            [6.0, 0.0],
-            [6.0, 1.0],
-            [1.0, 1.0],
-            [1.0, 6.0],
-            [0.0, 6.0],
-        ]),
-        vec![],
-    )
-    .unwrap();
-    let found = offsets_of(&region, &[0.5]);
-    check(&region, &found, 1e-6);
+    let region = polygon_region(&[
+        [0.0, 0.0],
+        [6.0, 0.0],
+        [6.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 6.0],
+        [0.0, 6.0],
+    ]);
+    let (found, _) = checked_offsets(&region, &[0.5], 1e-6);
     assert_eq!(found.offsets[0].loops.len(), 1);
     let elbow = &found.offsets[0].loops[0];
     let profile = elbow.profile();
@@ -1210,12 +1205,8 @@ fn the_seams_either_side_of_a_dip_are_apart() {
     ];
     let mut wobble = [(-0.05, -0.05); 4];
     wobble[2].0 = 0.27650936262867126;
-    let segs =
-        testkit::profiles::bezier_chain(&radii, &wobble, &[false, false, false, true]).unwrap();
-    let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
-    let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
-    let found = offsets_of(&region, &[0.31863438899044777]);
-    assert!(found.certified(), "{:?}", found.reason());
+    let region = chain_round_a_hole(&radii, &wobble, &[false, false, false, true]);
+    let found = certified_offsets(&region, 0.31863438899044777);
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 1);
     assert!(loops[0].profile().is_ok(), "{:?}", loops[0].profile().err());
@@ -1234,11 +1225,8 @@ fn the_seams_either_side_of_a_dip_are_apart() {
 fn a_neck_between_two_vertices_is_pinched_through() {
     let radii = [1.3575459749564318, 1.7484363407870969, 1.891938139778087];
     let wobble = [(0.09469513577707032, -0.05), (-0.05, -0.05), (-0.05, -0.05)];
-    let segs = testkit::profiles::bezier_chain(&radii, &wobble, &[false, true, false]).unwrap();
-    let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
-    let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
-    let found = offsets_of(&region, &[0.3386013494889568]);
-    assert!(found.certified(), "{:?}", found.reason());
+    let region = chain_round_a_hole(&radii, &wobble, &[false, true, false]);
+    let found = certified_offsets(&region, 0.3386013494889568);
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 1, "{loops:?}");
     assert!(loops[0].profile().is_ok(), "{:?}", loops[0].profile().err());
@@ -1254,12 +1242,8 @@ fn a_neck_between_two_vertices_is_pinched_through() {
 #[test]
 fn a_neck_where_the_axis_curves_round_a_hole_is_seen() {
     let radii = [1.367748594300923, 1.451288655030718, 1.5787204787821496];
-    let segs = testkit::profiles::bezier_chain(&radii, &[(-0.05, -0.05); 3], &[false, true, true])
-        .unwrap();
-    let outer = testkit::profiles::assemble(segs, 0, false).unwrap();
-    let region = Region::new(outer, vec![circle([0.0, 0.0], 0.15)]).unwrap();
-    let found = offsets_of(&region, &[0.5530143102806266]);
-    assert!(found.certified(), "{:?}", found.reason());
+    let region = chain_round_a_hole(&radii, &[(-0.05, -0.05); 3], &[false, true, true]);
+    let found = certified_offsets(&region, 0.5530143102806266);
     let loops = &found.offsets[0].loops;
     assert_eq!(loops.len(), 2);
     for l in loops {

@@ -7,11 +7,12 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::{arcs_sweep, ends, samples, winding};
+use common::{arcs_sweep, ends, samples};
 use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::{medial_axis, MedialOptions};
 use numeric::certificate::Verdict;
 use offset::{offsets, outward_offsets, OffsetOptions, Offsets};
+use testkit::boundary_oracle::winding;
 
 /// The region bounded by the closed clamped cubic through (by) `points`, its first and last
 /// equal.

@@ -9,12 +9,13 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::{ends, winding};
+use common::ends;
 use curve::{Affine, Profile, Region, Segment};
 use medial::{medial_axis, MedialOptions};
 use numeric::certificate::Verdict;
 use offset::{offsets, OffsetOptions, OffsetSegment, Offsets};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use testkit::boundary_oracle::winding;
 
 /// The plate's side, corner radius, and the hole's centre and radius.
 const SIDE: f64 = 100.0;

@@ -100,7 +100,7 @@ impl<'a> Oracle<'a> {
         };
         let mut best = (squared, self.u[k]);
         for (a, b) in [(before, before + 1), (after - 1, after)] {
-            let u = golden(&f, self.u[a], self.u[b]);
+            let u = golden(&f, self.u[a], self.u[b], GOLDEN_STEPS);
             let value = f(u);
             if value < best.0 {
                 best = (value, u);
@@ -132,7 +132,12 @@ impl<'a> Oracle<'a> {
                 let left = j == 0 || fine[j] <= fine[j - 1];
                 let right = j == FINE || fine[j] <= fine[j + 1];
                 if left && right {
-                    let u = golden(&f, at(j.saturating_sub(1)), at((j + 1).min(FINE)));
+                    let u = golden(
+                        &f,
+                        at(j.saturating_sub(1)),
+                        at((j + 1).min(FINE)),
+                        GOLDEN_STEPS,
+                    );
                     out.push((f(u), u));
                 }
             }
@@ -150,10 +155,14 @@ fn neighbours(k: usize, last: usize) -> (usize, usize) {
     )
 }
 
-/// The least of `f` on `[a, b]` by golden-section search (where it has one minimum there).
-fn golden(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+/// The oracle's golden-section steps: the bracket shrinks by 0.618⁶⁰ ≈ 3e-13.
+const GOLDEN_STEPS: usize = 60;
+
+/// Where `f` is least on `[a, b]`, by `steps` steps of golden-section search (where it has
+/// one minimum there).
+pub fn golden(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, steps: usize) -> f64 {
     let g = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..60 {
+    for _ in 0..steps {
         let (c, e) = (b - g * (b - a), a + g * (b - a));
         if f(c) < f(e) {
             b = e;
@@ -177,6 +186,14 @@ pub fn off_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     // (A square root, not `hypot`: these coordinates cannot overflow when squared, and the
     // oracle's searches call this millions of times.)
     ((v[0] - s * d[0]).powi(2) + (v[1] - s * d[1]).powi(2)).sqrt()
+}
+
+/// The distance from `p` to the nearest of the `polylines` (infinite where there are none).
+pub fn off_polylines<'a>(p: [f64; 2], polylines: impl IntoIterator<Item = &'a [[f64; 2]]>) -> f64 {
+    polylines
+        .into_iter()
+        .flat_map(|line| line.windows(2).map(|w| off_segment(p, w[0], w[1])))
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The winding number of a closed polygon about `x`.

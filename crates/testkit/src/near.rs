@@ -86,6 +86,23 @@ pub fn failure(
     })
 }
 
+/// The message of a failed `call!(left, right, tol, what…)` ([`failure`]), or `None`: what
+/// [`assert_near!`](crate::assert_near!) and [`prop_assert_near!`](crate::prop_assert_near!)
+/// both ask, each then failing its own way.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __near_failure {
+    ($call:literal, $left:expr, $right:expr, $tol:expr, $($what:tt)+) => {
+        $crate::near::failure(
+            $call,
+            [stringify!($left), stringify!($right), stringify!($tol)],
+            format_args!($($what)+),
+            (&$left, &$right),
+            $tol,
+        )
+    };
+}
+
 /// Asserts that two values lie within `tol` of each other ([`gap`] `<= tol`),
 /// printing both, their gap and the tolerance when they do not. A further format string and
 /// arguments say what was compared.
@@ -100,13 +117,9 @@ macro_rules! assert_near {
         $crate::assert_near!($left, $right, $tol, "")
     };
     ($left:expr, $right:expr, $tol:expr, $($what:tt)+) => {
-        if let Some(message) = $crate::near::failure(
-            "assert_near",
-            [stringify!($left), stringify!($right), stringify!($tol)],
-            format_args!($($what)+),
-            (&$left, &$right),
-            $tol,
-        ) {
+        if let Some(message) =
+            $crate::__near_failure!("assert_near", $left, $right, $tol, $($what)+)
+        {
             panic!("{}", message);
         }
     };
@@ -127,13 +140,9 @@ macro_rules! prop_assert_near {
         $crate::prop_assert_near!($left, $right, $tol, "")
     };
     ($left:expr, $right:expr, $tol:expr, $($what:tt)+) => {
-        if let Some(message) = $crate::near::failure(
-            "prop_assert_near",
-            [stringify!($left), stringify!($right), stringify!($tol)],
-            format_args!($($what)+),
-            (&$left, &$right),
-            $tol,
-        ) {
+        if let Some(message) =
+            $crate::__near_failure!("prop_assert_near", $left, $right, $tol, $($what)+)
+        {
             return ::core::result::Result::Err(
                 $crate::__proptest::test_runner::TestCaseError::fail(message),
             );

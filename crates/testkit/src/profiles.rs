@@ -5,7 +5,31 @@
 
 use curve::{ParamCurve, SegmentKind, SplineCurve, V2};
 use curve::{Profile, Segment};
+use proptest::prelude::*;
 use std::f64::consts::TAU;
+
+/// The angles of a star's vertices spaced round one turn in proportion to `steps` (step `i`
+/// from vertex `i` to the next), the first at 0.
+pub fn step_angles(steps: &[f64]) -> Vec<f64> {
+    let total: f64 = steps.iter().sum();
+    let mut acc = 0.0;
+    steps
+        .iter()
+        .map(|s| {
+            let a = TAU * acc / total;
+            acc += s;
+            a
+        })
+        .collect()
+}
+
+/// A [`filleted_polygon`] with its vertices spaced by `steps` (see [`step_angles`]); the
+/// first `steps.len()` of `radii` and `round` are its own (a property test draws them for
+/// the most vertices).
+pub fn stepped_polygon(steps: &[f64], radii: &[f64], round: &[f64]) -> Option<Vec<Segment>> {
+    let n = steps.len();
+    filleted_polygon(&step_angles(steps), &radii[..n], &round[..n])
+}
 
 /// A star-shaped polygon (vertex `i` at angle `angles[i]` and radius `radii[i]`) with the
 /// corners where `round[i] > 0` rounded by a tangent arc of that share of the shorter edge.
@@ -69,6 +93,92 @@ pub fn bezier_chain(radii: &[f64], wobble: &[(f64, f64)], smooth: &[bool]) -> Op
         segs.push(Segment::spline(SegmentKind::Bezier, c).ok()?);
     }
     Some(segs)
+}
+
+/// A [`bezier_chain`] as a profile, started at segment `start`, run backwards when `reverse`
+/// (see [`assemble`]); `None` where it is none (a wobble makes it cross itself).
+pub fn bezier_chain_profile(
+    radii: &[f64],
+    wobble: &[(f64, f64)],
+    smooth: &[bool],
+    start: usize,
+    reverse: bool,
+) -> Option<Profile> {
+    assemble(bezier_chain(radii, wobble, smooth)?, start, reverse)
+}
+
+/// A closed chain of five cubic Béziers ([`bezier_chain_profile`]), smooth
+/// at the joints where `smooth` says: the radii of its joints and the pushes of its inner
+/// control points, as the medial axis's and the bisectors' tests of a whole chain draw it.
+pub fn five_cubics(smooth: [bool; 5]) -> Profile {
+    let radii = [1.5, 1.0, 1.8, 1.2, 1.6];
+    let wobble = [
+        (0.2, -0.3),
+        (0.3, 0.25),
+        (-0.2, 0.1),
+        (0.35, -0.1),
+        (0.1, 0.3),
+    ];
+    bezier_chain_profile(&radii, &wobble, &smooth, 0, false).unwrap()
+}
+
+/// An inner control point's push off the chord for [`bezier_chain`] (relative to its
+/// length): from 0.05 to `most`, either side (a push near zero leaves a cubic straight within
+/// rounding).
+pub fn wobble(most: f64) -> impl Strategy<Value = f64> {
+    prop_oneof![-most..-0.05, 0.05..most]
+}
+
+/// The spline `c` as a profile of one B-spline segment (a closed one without a corner at its
+/// seam is a smooth closed profile).
+pub fn one_spline(c: SplineCurve) -> Profile {
+    Profile::new(
+        vec![Segment::spline(SegmentKind::BSpline, c).unwrap()],
+        None,
+    )
+    .unwrap()
+}
+
+/// Random [`stepped_polygon`]s as profiles ([`assemble`]d): `vertices` vertices at radii 1
+/// to 2 (spaced by steps of 0.5 to 1.5), about half of them rounded, started at a segment
+/// below `starts`, either way round; `None` where one is no profile.
+pub fn filleted_polygons(
+    vertices: std::ops::Range<usize>,
+    starts: usize,
+) -> impl Strategy<Value = Option<Profile>> {
+    let most = vertices.end;
+    (
+        proptest::collection::vec(0.5f64..1.5, vertices),
+        proptest::collection::vec(1.0f64..2.0, most),
+        proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], most),
+        0..starts,
+        any::<bool>(),
+    )
+        .prop_map(|(steps, radii, round, start, reverse)| {
+            assemble(stepped_polygon(&steps, &radii, &round)?, start, reverse)
+        })
+}
+
+/// Random [`bezier_chain_profile`]s: `joints` joints at radii 1 to 2, their inner control
+/// points pushed by [`wobble`]`(most)`, smooth or not at random, started at any segment,
+/// either way round; `None` where one is no profile. (`slots`, at least the most joints, is
+/// how many pushes and kinds are drawn, and bounds the start.)
+pub fn bezier_chains(
+    joints: std::ops::Range<usize>,
+    slots: usize,
+    most: f64,
+) -> impl Strategy<Value = Option<Profile>> {
+    (
+        proptest::collection::vec(1.0f64..2.0, joints),
+        proptest::collection::vec((wobble(most), wobble(most)), slots),
+        proptest::collection::vec(any::<bool>(), slots),
+        0..slots,
+        any::<bool>(),
+    )
+        .prop_map(|(radii, wobble, smooth, start, reverse)| {
+            let n = radii.len();
+            bezier_chain_profile(&radii, &wobble[..n], &smooth[..n], start, reverse)
+        })
 }
 
 /// The segments as a profile, started at segment `start`, run backwards when `reverse`.

@@ -78,19 +78,20 @@ fn h(c1: &Rational, c2: &Rational, t: f64, r: f64) -> f64 {
         - (d[0] * d[0] + d[1] * d[1]) * (n1[0] * d2[0] + n1[1] * d2[1])
 }
 
-/// The oracle: returns (bisector points found, those not covered). For a self-bisector only
-/// `r ≥ t + gap` is scanned (on the diagonal `h` vanishes trivially).
+/// The independent oracle finds no bisector point farther than `tol` from what was reported
+/// (on `sides` of the curves only, where given). For a self-bisector only `r ≥ t + gap` is
+/// scanned (on the diagonal `h` vanishes trivially).
 #[allow(clippy::too_many_arguments)]
-fn oracle_misses(
+fn nothing_missed(
     c1: &Rational,
     c2: &Rational,
     b: &Bisector,
     center: [f64; 2],
     diag: f64,
     tol: f64,
-    selfb: bool,
+    is_self: bool,
     sides: Option<[Side; 2]>,
-) -> (usize, Vec<[f64; 2]>) {
+) -> Result<(), TestCaseError> {
     let (nt, nr) = (80, 400);
     let (a1, b1) = c1.domain();
     let (a2, b2) = c2.domain();
@@ -99,7 +100,7 @@ fn oracle_misses(
     let mut misses = Vec::new();
     for i in 1..nt {
         let t = a1 + (b1 - a1) * i as f64 / nt as f64;
-        let r_lo = if selfb { t + gap } else { a2 };
+        let r_lo = if is_self { t + gap } else { a2 };
         if r_lo >= b2 {
             continue;
         }
@@ -151,7 +152,14 @@ fn oracle_misses(
             prev = cur;
         }
     }
-    (found, misses)
+    prop_assert!(found == 0 || !b.branches.is_empty());
+    prop_assert!(
+        misses.is_empty(),
+        "missed {} of {found} oracle points, e.g. {:?}",
+        misses.len(),
+        &misses[..misses.len().min(4)]
+    );
+    Ok(())
 }
 
 /// Whether `p` lies clearly on side `side` of the tangent of `c` at `u` (the sine of its
@@ -236,30 +244,6 @@ fn run_self_on(p: &[[f64; 2]], c: Rational, side: Option<Side>) -> Result<(), Te
     nothing_missed(&c, &c, &b, center, diag, tol, true, sides)
 }
 
-/// The independent oracle finds no bisector point farther than `tol` from what was reported
-/// (on `sides` of the curves only, where given).
-#[allow(clippy::too_many_arguments)]
-fn nothing_missed(
-    c1: &Rational,
-    c2: &Rational,
-    b: &Bisector,
-    center: [f64; 2],
-    diag: f64,
-    tol: f64,
-    is_self: bool,
-    sides: Option<[Side; 2]>,
-) -> Result<(), TestCaseError> {
-    let (found, misses) = oracle_misses(c1, c2, b, center, diag, tol, is_self, sides);
-    prop_assert!(found == 0 || !b.branches.is_empty());
-    prop_assert!(
-        misses.is_empty(),
-        "missed {} of {found} oracle points, e.g. {:?}",
-        misses.len(),
-        &misses[..misses.len().min(4)]
-    );
-    Ok(())
-}
-
 /// A clamped uniform cubic B-spline with weights (a NURBS curve).
 fn nurbs(p: &[[f64; 2]], w: &[f64]) -> Rational {
     let c: Vec<f64> = p.iter().flat_map(|q| [q[0], q[1]]).collect();
@@ -270,19 +254,15 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(250))]
     /// Two cubic Béziers in disjoint boxes.
     #[test]
-    fn random_cubic_bezier_pairs(a in prop::collection::vec(-1.0..1.0f64, 8), b in prop::collection::vec(-1.0..1.0f64, 8)) {
-        let mut b = b;
-        for k in (0..8).step_by(2) { b[k] += 2.5; }
-        let (p1, p2) = (pts(&a), pts(&b));
+    fn random_cubic_bezier_pairs(p1 in control_points(4), p2 in control_points(4)) {
+        let p2 = shifted(&p2, [2.5, 0.0]);
         run_pair(&p1, &p2, bez(&p1), bez(&p2))?;
     }
 
     /// A cubic B-spline with five points and a quadratic Bézier in disjoint boxes.
     #[test]
-    fn random_bspline_and_quadratic_pairs(a in prop::collection::vec(-1.0..1.0f64, 10), b in prop::collection::vec(-1.0..1.0f64, 6)) {
-        let mut b = b;
-        for k in (1..6).step_by(2) { b[k] += 2.5; }
-        let (p1, p2) = (pts(&a), pts(&b));
+    fn random_bspline_and_quadratic_pairs(p1 in control_points(5), p2 in control_points(3)) {
+        let p2 = shifted(&p2, [0.0, 2.5]);
         run_pair(&p1, &p2, bsp(3, &p1), bez(&p2))?;
     }
 }
@@ -292,8 +272,7 @@ proptest! {
     /// Two cubic Béziers in the same box: they usually intersect, and each intersection is a
     /// crossing of the zero set (the two angle bisectors through it).
     #[test]
-    fn random_intersecting_cubic_bezier_pairs(a in prop::collection::vec(-1.0..1.0f64, 8), b in prop::collection::vec(-1.0..1.0f64, 8)) {
-        let (p1, p2) = (pts(&a), pts(&b));
+    fn random_intersecting_cubic_bezier_pairs(p1 in control_points(4), p2 in control_points(4)) {
         run_pair(&p1, &p2, bez(&p1), bez(&p2))?;
     }
 }
@@ -302,15 +281,13 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(150))]
     /// Self-bisectors of cubic B-splines with seven points (the paper's figure 5 setting).
     #[test]
-    fn random_self_bisectors(a in prop::collection::vec(-1.0..1.0f64, 14)) {
-        let p = pts(&a);
+    fn random_self_bisectors(p in control_points(7)) {
         run_self(&p, bsp(3, &p))?;
     }
 
     /// Self-bisectors of cubic NURBS with seven points and weights in [0.5, 2].
     #[test]
-    fn random_nurbs_self_bisectors(a in prop::collection::vec(-1.0..1.0f64, 14), w in prop::collection::vec(0.5..2.0f64, 7)) {
-        let p = pts(&a);
+    fn random_nurbs_self_bisectors(p in control_points(7), w in prop::collection::vec(0.5..2.0f64, 7)) {
         run_self(&p, nurbs(&p, &w))?;
     }
 }
@@ -406,15 +383,13 @@ proptest! {
     /// from self-bisectors of cubic B-splines.
     #[test]
     fn sided_bisectors_keep_every_point_on_their_sides(
-        a in prop::collection::vec(-1.0..1.0f64, 8),
-        b in prop::collection::vec(-1.0..1.0f64, 8),
-        s in prop::collection::vec(-1.0..1.0f64, 14),
+        p1 in control_points(4),
+        p2 in control_points(4),
+        p in control_points(7),
         left in [any::<bool>(), any::<bool>()],
     ) {
         let side = |l: bool| if l { Side::Left } else { Side::Right };
-        let (p1, p2) = (pts(&a), pts(&b));
         run_pair_on(&p1, &p2, bez(&p1), bez(&p2), Some([side(left[0]), side(left[1])]))?;
-        let p = pts(&s);
         run_self_on(&p, bsp(3, &p), Some(side(left[0])))?;
     }
 }

@@ -223,16 +223,6 @@ fn closed_periodic_self_bisector_joins_across_the_seam() {
         .any(|p| (p[0] - 2.0).abs() < 1e-9));
 }
 
-fn self_checked(c: &Rational) -> Bisector {
-    let b = self_bisector(c, &BisectorOptions::default()).unwrap();
-    assert!(b.complete && !b.branches.is_empty());
-    assert!(b
-        .branches
-        .iter()
-        .all(|br| br.tr.iter().all(|q| q[0] < q[1])));
-    b
-}
-
 /// The demo's open cubic NURBS (`fixtures/open_nurbs.json`): its self-bisector used to hit
 /// the patch limit (95 fragments, incomplete) because the degree-11 diagonal cells were not
 /// divided by (t − r)⁴. Four branches, ending on the diagonal at the four curvature extrema.
@@ -251,7 +241,7 @@ fn open_nurbs_self_bisector() {
     let knots = vec![0., 0., 0., 0., 1., 2., 3., 4., 4., 4., 4.];
     let s = bspline::BSpline::new(3, knots, 2, c).unwrap();
     let curve = Rational::new(s, Some(&[1., 3., 1., 1., 0.5, 2., 1.])).unwrap();
-    let b = self_checked(&curve);
+    let b = one(&curve);
     assert_eq!(b.branches.len(), 4);
     insta::assert_json_snapshot!(summary(&b));
 }
@@ -275,7 +265,7 @@ fn periodic_nurbs_self_bisector() {
     let mut w = vec![1., 2., 0.5, 1., 1.5, 1., 0.6, 1.];
     w.extend_from_slice(&[1., 2., 0.5]);
     let curve = Rational::new(bspline::BSpline::periodic(3, 2, c).unwrap(), Some(&w)).unwrap();
-    let b = self_checked(&curve);
+    let b = one(&curve);
     assert_eq!(b.branches.len(), 8);
     insta::assert_json_snapshot!(summary(&b));
 }

@@ -16,10 +16,10 @@
 use curve::{ParamCurve, Profile};
 use proptest::prelude::*;
 use std::cell::Cell;
-use std::f64::consts::TAU;
 use testkit::boundary_oracle::{off_segment, winding, Oracle};
 use testkit::cases;
-use testkit::profiles::{assemble, bezier_chain, filleted_polygon};
+use testkit::outlines::polygon;
+use testkit::profiles::{bezier_chains, filleted_polygons};
 use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
 
 /// Grid nodes per side.
@@ -243,20 +243,6 @@ fn check_self(p: &Profile) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-fn polygon(steps: &[f64], radii: &[f64], round: &[f64]) -> Option<Vec<curve::Segment>> {
-    let total: f64 = steps.iter().sum();
-    let mut acc = 0.0;
-    let angles: Vec<f64> = steps
-        .iter()
-        .map(|s| {
-            let a = TAU * acc / total;
-            acc += s;
-            a
-        })
-        .collect();
-    filleted_polygon(&angles, &radii[..steps.len()], &round[..steps.len()])
-}
-
 fn moved(p: &Profile, by: [f64; 2]) -> Profile {
     let segs = p
         .segments()
@@ -269,49 +255,22 @@ fn moved(p: &Profile, by: [f64; 2]) -> Profile {
     Profile::new(segs, None).unwrap()
 }
 
-fn wobble() -> impl Strategy<Value = f64> {
-    prop_oneof![-0.4f64..-0.05, 0.05f64..0.4]
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: cases(24), ..ProptestConfig::default() })]
 
-    fn filleted_polygon_pairs(
-        steps in proptest::collection::vec(0.5f64..1.5, 3..6),
-        radii in proptest::collection::vec(1.0f64..2.0, 6),
-        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 6),
-        start in 0usize..12,
-        reverse in any::<bool>(),
-        dy in -2.0f64..2.0,
-    ) {
-        let Some(segs) = polygon(&steps, &radii, &round) else { return Ok(()) };
-        let Some(a) = assemble(segs, start, reverse) else { return Ok(()) };
+    fn filleted_polygon_pairs(a in filleted_polygons(3..6, 12), dy in -2.0f64..2.0) {
+        let Some(a) = a else { return Ok(()) };
         let b = moved(&a, [5.0, dy]);
         check_pair(&a, &b)?;
     }
 
-    fn filleted_polygons_inside(
-        steps in proptest::collection::vec(0.5f64..1.5, 3..7),
-        radii in proptest::collection::vec(1.0f64..2.0, 7),
-        round in proptest::collection::vec(prop_oneof![Just(0.0), 0.2f64..1.0], 7),
-        start in 0usize..12,
-        reverse in any::<bool>(),
-    ) {
-        let Some(segs) = polygon(&steps, &radii, &round) else { return Ok(()) };
-        let Some(p) = assemble(segs, start, reverse) else { return Ok(()) };
+    fn filleted_polygons_inside(p in filleted_polygons(3..7, 12)) {
+        let Some(p) = p else { return Ok(()) };
         check_self(&p)?;
     }
 
-    fn bezier_chains_inside(
-        radii in proptest::collection::vec(1.0f64..2.0, 3..6),
-        wobble in proptest::collection::vec((wobble(), wobble()), 6),
-        smooth in proptest::collection::vec(any::<bool>(), 6),
-        start in 0usize..6,
-        reverse in any::<bool>(),
-    ) {
-        let n = radii.len();
-        let Some(segs) = bezier_chain(&radii, &wobble[..n], &smooth[..n]) else { return Ok(()) };
-        let Some(p) = assemble(segs, start, reverse) else { return Ok(()) };
+    fn bezier_chains_inside(p in bezier_chains(3..6, 6, 0.4)) {
+        let Some(p) = p else { return Ok(()) };
         check_self(&p)?;
     }
 }
@@ -356,28 +315,8 @@ fn bezier_chains_inside_match_the_oracle() {
 /// within the chord tolerance of the other's polylines, both ways), as many corner branches.
 #[test]
 fn profile_bisectors_move_with_the_profile() {
-    let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
-    let sides: Vec<curve::Segment> = (0..6)
-        .map(|i| curve::Segment::line(c[i], c[(i + 1) % 6]).unwrap())
-        .collect();
-    let room = Profile::new(sides, None).unwrap();
-    let chain = assemble(
-        bezier_chain(
-            &[1.5, 1.0, 1.8, 1.2, 1.6],
-            &[
-                (0.2, -0.3),
-                (0.3, 0.25),
-                (-0.2, 0.1),
-                (0.35, -0.1),
-                (0.1, 0.3),
-            ],
-            &[true, false, true, false, false],
-        )
-        .unwrap(),
-        0,
-        false,
-    )
-    .unwrap();
+    let room = polygon(&[[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]]);
+    let chain = testkit::profiles::five_cubics([true, false, true, false, false]);
     for shape in [&room, &chain] {
         moves_with_the_profile(shape);
     }

@@ -26,26 +26,126 @@ fn f_anti(js: &Jet, jt: &Jet) -> (f64, f64) {
     (ts.cross(tt), r.dot(ts) / r.norm().max(1e-300))
 }
 
-fn newton_anti(c: &dyn PlaneCurve, mut s: f64, mut t: f64) -> Option<(f64, f64)> {
+/// The values and the Jacobian of a 2×2 system at a point: `([f, g], [[f_s, f_t], [g_s,
+/// g_t]])`.
+pub type System = ([f64; 2], [[f64; 2]; 2]);
+
+/// The Newton step `(ds, dt)` of a 2×2 system (by Cramer's rule), `None` where its Jacobian
+/// is singular or not finite.
+pub fn newton_step((f, jac): System) -> Option<(f64, f64)> {
+    let [[a11, a12], [a21, a22]] = jac;
+    let det = a11 * a22 - a12 * a21;
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    Some((
+        (f[0] * a22 - f[1] * a12) / det,
+        (a11 * f[1] - a21 * f[0]) / det,
+    ))
+}
+
+/// Newton on `system` from `(s, t)`, at most 60 steps: where it stopped, and whether because
+/// the step fell below 1e-15 of the point; `None` where a Jacobian was singular.
+fn newton_from(
+    system: impl Fn(f64, f64) -> System,
+    (mut s, mut t): (f64, f64),
+) -> Option<((f64, f64), bool)> {
     for _ in 0..60 {
-        let (js, jt) = (c.jet(wrap(c, s)), c.jet(wrap(c, t)));
-        let r = jt.p - js.p;
-        let f1 = js.d1.cross(jt.d1);
-        let f2 = r.dot(js.d1);
-        let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
-        let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
-        let det = a11 * a22 - a12 * a21;
-        if det == 0.0 || !det.is_finite() {
-            return None;
-        }
-        let ds = (f1 * a22 - f2 * a12) / det;
-        let dt = (a11 * f2 - a21 * f1) / det;
+        let (ds, dt) = newton_step(system(s, t))?;
         s -= ds;
         t -= dt;
         if ds.abs() + dt.abs() < 1e-15 * (1.0 + s.abs() + t.abs()) {
-            break;
+            return Some(((s, t), true));
         }
     }
+    Some(((s, t), false))
+}
+
+/// Newton on a 2×2 system in the unit square of two segments' parameters, from `(s, t)`: the
+/// root, clamped into the square, where the steps fall below 1e-15 within 60 steps without
+/// leaving the square by more than 1e-9; `None` otherwise.
+pub fn newton_in_unit_square(
+    system: impl Fn(f64, f64) -> System,
+    mut s: f64,
+    mut t: f64,
+) -> Option<(f64, f64)> {
+    for _ in 0..60 {
+        let (ds, dt) = newton_step(system(s, t))?;
+        s -= ds;
+        t -= dt;
+        if !(-1e-9..=1.0 + 1e-9).contains(&s) || !(-1e-9..=1.0 + 1e-9).contains(&t) {
+            return None;
+        }
+        if ds.abs() < 1e-15 && dt.abs() < 1e-15 {
+            return Some((s.clamp(0.0, 1.0), t.clamp(0.0, 1.0)));
+        }
+    }
+    // (Not converged: no root here.)
+    None
+}
+
+/// Where `g` changes sign in `[lo, hi]`, by 80 halvings: the last bracket's midpoint.
+pub fn bisect(g: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if (g(lo) < 0.0) == (g(mid) < 0.0) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The cells of a `grid × grid` sampling of the unit square where both values of `f` change
+/// sign (the least at the cell's corners at most 0, the greatest at least 0), as their centres;
+/// only the cells `(a, b)` (by index) that `look(a, b)` are looked at.
+pub fn straddling_cells(
+    grid: usize,
+    f: impl Fn(f64, f64) -> (f64, f64),
+    look: impl Fn(usize, usize) -> bool,
+) -> Vec<(f64, f64)> {
+    let xs: Vec<f64> = (0..=grid).map(|k| k as f64 / grid as f64).collect();
+    let vals: Vec<Vec<(f64, f64)>> = xs
+        .iter()
+        .map(|&s| xs.iter().map(|&t| f(s, t)).collect())
+        .collect();
+    let mut cells = Vec::new();
+    for a in 0..grid {
+        for b in (0..grid).filter(|&b| look(a, b)) {
+            let c = [
+                vals[a][b],
+                vals[a + 1][b],
+                vals[a][b + 1],
+                vals[a + 1][b + 1],
+            ];
+            let spans = |f: &dyn Fn(&(f64, f64)) -> f64| {
+                let lo = c.iter().map(f).fold(f64::INFINITY, f64::min);
+                let hi = c.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
+                lo <= 0.0 && hi >= 0.0
+            };
+            if spans(&|v| v.0) && spans(&|v| v.1) {
+                cells.push((0.5 * (xs[a] + xs[a + 1]), 0.5 * (xs[b] + xs[b + 1])));
+            }
+        }
+    }
+    cells
+}
+
+fn newton_anti(c: &dyn PlaneCurve, s: f64, t: f64) -> Option<(f64, f64)> {
+    let system = |s: f64, t: f64| {
+        let (js, jt) = (c.jet(wrap(c, s)), c.jet(wrap(c, t)));
+        let r = jt.p - js.p;
+        (
+            [js.d1.cross(jt.d1), r.dot(js.d1)],
+            [
+                [js.d2.cross(jt.d1), js.d1.cross(jt.d2)],
+                [-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1)],
+            ],
+        )
+    };
+    // (Not converged within the steps: the residual test below judges the point reached.)
+    let ((s, t), _) = newton_from(system, (s, t))?;
     let (s, t) = (wrap(c, s), wrap(c, t));
     let (js, jt) = (c.jet(s), c.jet(t));
     let (f1, f2) = f_anti(&js, &jt);
@@ -220,6 +320,17 @@ pub fn tangent_oracle(c1: &dyn PlaneCurve, c2: &dyn PlaneCurve, n: usize) -> Vec
         let r = b.p - a.p;
         (ta.cross(tb), r.cross(ta) / r.norm().max(1e-300))
     };
+    let system = |s: f64, t: f64| {
+        let (a, b) = (c1.jet(wrap2(c1, s)), c2.jet(wrap2(c2, t)));
+        let r = b.p - a.p;
+        (
+            [a.d1.cross(b.d1), r.cross(a.d1)],
+            [
+                [a.d2.cross(b.d1), a.d1.cross(b.d2)],
+                [-a.d1.cross(a.d1) + r.cross(a.d2), b.d1.cross(a.d1)],
+            ],
+        )
+    };
     let mut out: Vec<(f64, f64)> = Vec::new();
     let m = n - 1;
     let grid: Vec<(f64, f64)> = (0..n * n).map(|k| f(&j1[k / n], &j2[k % n])).collect();
@@ -234,31 +345,10 @@ pub fn tangent_oracle(c1: &dyn PlaneCurve, c2: &dyn PlaneCurve, n: usize) -> Vec
             if !(ch(0) && ch(1)) {
                 continue;
             }
-            let (mut s, mut t) = (0.5 * (u1[i] + u1[i + 1]), 0.5 * (u2[j] + u2[j + 1]));
-            let mut ok = false;
-            for _ in 0..60 {
-                let (a, b) = (c1.jet(wrap2(c1, s)), c2.jet(wrap2(c2, t)));
-                let r = b.p - a.p;
-                let g1 = a.d1.cross(b.d1);
-                let g2 = r.cross(a.d1);
-                let (a11, a12) = (a.d2.cross(b.d1), a.d1.cross(b.d2));
-                let (a21, a22) = (-a.d1.cross(a.d1) + r.cross(a.d2), b.d1.cross(a.d1));
-                let det = a11 * a22 - a12 * a21;
-                if det == 0.0 || !det.is_finite() {
-                    break;
-                }
-                let ds = (g1 * a22 - g2 * a12) / det;
-                let dt = (a11 * g2 - a21 * g1) / det;
-                s -= ds;
-                t -= dt;
-                if ds.abs() + dt.abs() < 1e-15 * (1.0 + s.abs() + t.abs()) {
-                    ok = true;
-                    break;
-                }
-            }
-            if !ok {
+            let start = (0.5 * (u1[i] + u1[i + 1]), 0.5 * (u2[j] + u2[j + 1]));
+            let Some(((s, t), true)) = newton_from(system, start) else {
                 continue;
-            }
+            };
             let (s, t) = (wrap2(c1, s), wrap2(c2, t));
             let (a, b) = (c1.jet(s), c2.jet(t));
             let (g1, g2) = f(&a, &b);

@@ -3,12 +3,10 @@
 
 use crate::graph::components_and_cycles as shape;
 use crate::sampled_voronoi::sampled_medial_points;
+use crate::traced::{off_axis, CHORD};
 use curve::{Profile, Region};
 use medial::MedialAxis;
-use testkit::boundary_oracle::{off_segment, winding, Oracle};
-
-/// The chord tolerance the axes judged are traced to (relative to the size).
-pub(crate) const CHORD: f64 = 1e-3;
+use testkit::boundary_oracle::{winding, Oracle};
 
 /// The oracle's verdict on the axis of `region`: `Err` with what is wrong.
 pub(crate) fn judge(region: &Region, a: &MedialAxis) -> Result<(), String> {
@@ -53,11 +51,7 @@ pub(crate) fn judge(region: &Region, a: &MedialAxis) -> Result<(), String> {
     }
     let sampled = sampled_medial_points(&profiles, size, distance, inside);
     for z in &sampled.points {
-        let off = a
-            .edges
-            .iter()
-            .flat_map(|e| e.xy.windows(2).map(|w| off_segment(z.xy, w[0], w[1])))
-            .fold(f64::INFINITY, f64::min);
+        let off = off_axis(a, z.xy);
         if off > CHORD * size + 1e-6 * size {
             return Err(format!(
                 "medial point {:?} (radius {}) is {off} off the axis",

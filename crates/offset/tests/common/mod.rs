@@ -1,5 +1,6 @@
 //! Helpers shared by the offset tests: sampling the pieces of an offset loop (an independent
-//! de Boor evaluation for its splines), their ends, and the winding number of a polygon.
+//! de Boor evaluation for its splines) and their ends. (The winding number of a polygon is
+//! testkit's, `testkit::boundary_oracle::winding`.)
 #![allow(dead_code, unreachable_pub)]
 
 use offset::OffsetSegment;
@@ -72,21 +73,6 @@ pub fn samples(s: &OffsetSegment, n: usize) -> Vec<[f64; 2]> {
 pub fn ends(s: &OffsetSegment) -> ([f64; 2], [f64; 2]) {
     let p = samples(s, 1);
     (p[0], p[p.len() - 1])
-}
-
-/// The winding number of the closed polygon `poly` about `p`.
-pub fn winding(poly: &[[f64; 2]], p: [f64; 2]) -> i32 {
-    let mut w = 0;
-    for k in 0..poly.len() {
-        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
-        let side = (b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1]);
-        if a[1] <= p[1] && b[1] > p[1] && side > 0.0 {
-            w += 1;
-        } else if a[1] > p[1] && b[1] <= p[1] && side < 0.0 {
-            w -= 1;
-        }
-    }
-    w
 }
 
 /// The angle the arcs of a loop's pieces sweep, in all.

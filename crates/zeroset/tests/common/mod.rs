@@ -81,6 +81,18 @@ pub fn pts(v: &[f64]) -> Vec<[f64; 2]> {
     v.chunks(2).map(|c| [c[0], c[1]]).collect()
 }
 
+/// `n` random control points in the square [-1, 1]² (drawn as a flat list of coordinates,
+/// see [`pts`]).
+pub fn control_points(n: usize) -> impl proptest::strategy::Strategy<Value = Vec<[f64; 2]>> {
+    use proptest::strategy::Strategy;
+    proptest::collection::vec(-1.0..1.0f64, 2 * n).prop_map(|v| pts(&v))
+}
+
+/// The points `p` moved by `by`.
+pub fn shifted(p: &[[f64; 2]], by: [f64; 2]) -> Vec<[f64; 2]> {
+    p.iter().map(|q| [q[0] + by[0], q[1] + by[1]]).collect()
+}
+
 /// Regular curves only (the paper's assumption): no collapsed control-polygon legs.
 pub fn regular(p: &[[f64; 2]]) -> bool {
     p.windows(2)

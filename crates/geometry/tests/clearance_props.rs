@@ -1,5 +1,6 @@
-//! `ProfileClearance::clearance` and `NearestPoint::nearest` against an independent distance: dense samples of every segment,
-//! refined by golden-section search about the least. A disk a little smaller than the
+//! `ProfileClearance::clearance` and `NearestPoint::nearest` against an independent
+//! distance: dense samples of every segment, refined by golden-section search about the
+//! least. A disk a little smaller than the
 //! distance must be clear, a little larger entered (at a point that really is inside), on
 //! random profiles of lines, arcs and rational cubic Béziers and on rational Béziers of degree
 //! 4 to 40 (where the squared distance is proven convex), scaled and moved far from the

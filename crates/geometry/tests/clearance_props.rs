@@ -1,13 +1,12 @@
-//! `ProfileClearance::clearance` and `NearestPoint::nearest` against an independent
-//! distance: dense samples of every segment, refined by golden-section search about the
-//! least. A disk a little smaller than the
-//! distance must be clear, a little larger entered (at a point that really is inside), on
-//! random profiles of lines, arcs and rational cubic Béziers and on rational Béziers of degree
-//! 4 to 40 (where the squared distance is proven convex), scaled and moved far from the
-//! origin; where rounding leaves it undecided the answer must say so, never be wrong. The
-//! nearest point must be as near as the oracle's, to rounding, on the same profiles and on
-//! strongly rational Béziers (weights from 1e-3 to 1e3), whose narrow turns a sampled search
-//! passes over.
+//! `ProfileClearance::clearance` and `NearestPoint::nearest` against an independent distance:
+//! dense samples of every segment, refined by golden-section search about the least. A disk a
+//! little smaller than the distance must be clear, a little larger entered (at a point that
+//! really is inside), on random profiles of lines, arcs and rational cubic Béziers and on
+//! rational Béziers of degree 4 to 40 (where the squared distance is proven convex), scaled and
+//! moved far from the origin; where rounding leaves it undecided the answer must say so, never
+//! be wrong. The nearest point must be as near as the oracle's, to rounding, on the same
+//! profiles and on strongly rational Béziers (weights from 1e-3 to 1e3), whose narrow turns a
+//! sampled search passes over.
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 

@@ -1,7 +1,8 @@
 //! curvekit: certified geometry on planar freeform curves.
 //!
 //! The crates do the geometry ([`bspline`]: exact B-spline algebra and certified roots;
-//! [`curve`]: the curve model and the analytic shapes; [`zeroset`]: zero sets and bisectors;
+//! [`curve`]: the curve model and the analytic shapes; [`geometry`]: clearance, the nearest
+//! point and flattening on it; [`zeroset`]: zero sets and bisectors;
 //! [`antipodal`]: inflections, antipodal points and common tangents; [`medial`]: the medial
 //! axis of regions; [`offset`]: offsets of regions from it). This crate adds what
 //! the `curvekit` tool needs around them: reading curve files ([`io`]), the commands as calls on
@@ -11,6 +12,7 @@
 pub use antipodal;
 pub use bspline;
 pub use curve;
+pub use geometry;
 pub use medial;
 pub use numeric;
 pub use offset;

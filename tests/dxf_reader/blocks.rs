@@ -12,7 +12,7 @@ use super::written::{
 use super::{bulge_circle, temp_dxf};
 use curve::{ParamCurve, Profile, Region, V2};
 use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};
-use geometry::NearestPoint;
+use curvekit::geometry::NearestPoint;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::time::{Duration, Instant};

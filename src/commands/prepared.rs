@@ -93,19 +93,20 @@ fn inflections_of(
     route: Route<'_>,
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
-    let found = match route {
-        Route::Profile(p) => antipodal::profile_inflections(p, opts).map(|mut f| {
-            f.in_document(&[DocMap::Profile(p)]);
-            InflectionsFound::Profile(f)
-        }),
-        Route::Smooth(prepared) => prepared.inflections(opts).map(|mut f| {
-            f.in_document(&[smooth_map(curve)]);
-            InflectionsFound::Curve(f)
-        }),
-    };
-    found
-        .map(|f| f.doubted(curve.drawing_outline_doubt()))
-        .map_err(|e| antipodal_error(e, &[curve]))
+    on_route(
+        curve,
+        route,
+        |p, map| {
+            antipodal::profile_inflections(p, opts)
+                .map(|f| f.into_document(&[map]))
+                .map(InflectionsFound::Profile)
+        },
+        |s, map| {
+            s.inflections(opts)
+                .map(|f| f.into_document(&[map]))
+                .map(InflectionsFound::Curve)
+        },
+    )
 }
 
 /// `antipodal` of `curve` on `route`, in the curve's own parameter.
@@ -114,15 +115,33 @@ fn antipodal_of(
     route: Route<'_>,
     opts: &antipodal::Options,
 ) -> Result<AntipodalFound, CommandError> {
+    on_route(
+        curve,
+        route,
+        |p, map| {
+            antipodal::profile_antipodal(p, opts)
+                .map(|f| f.into_document(&[map]))
+                .map(AntipodalFound::Profile)
+        },
+        |s, map| {
+            s.antipodal(opts)
+                .map(|f| f.into_document(&[map]))
+                .map(AntipodalFound::Curve)
+        },
+    )
+}
+
+/// A one-curve command on `route`: `on_profile` or `on_smooth`, given the map of the curve's
+/// parameter to its document's; the result is doubted where the drawing's outline is.
+fn on_route<F: Doubted>(
+    curve: &Curve,
+    route: Route<'_>,
+    on_profile: impl FnOnce(&Profile, DocMap<'_>) -> antipodal::Result<F>,
+    on_smooth: impl FnOnce(&antipodal::Prepared<'_>, DocMap<'_>) -> antipodal::Result<F>,
+) -> Result<F, CommandError> {
     let found = match route {
-        Route::Profile(p) => antipodal::profile_antipodal(p, opts).map(|mut f| {
-            f.in_document(&[DocMap::Profile(p)]);
-            AntipodalFound::Profile(f)
-        }),
-        Route::Smooth(prepared) => prepared.antipodal(opts).map(|mut f| {
-            f.in_document(&[smooth_map(curve)]);
-            AntipodalFound::Curve(f)
-        }),
+        Route::Profile(p) => on_profile(p, DocMap::Profile(p)),
+        Route::Smooth(prepared) => on_smooth(prepared, smooth_map(curve)),
     };
     found
         .map(|f| f.doubted(curve.drawing_outline_doubt()))
@@ -158,27 +177,28 @@ pub fn inflections(
     curve: &Curve,
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
-    validate_options(opts)?;
-    one_curve(&[curve], "inflections")?;
-    match (&curve.shape, spline_with_corners(curve)?) {
-        (CurveKind::Profile(p), _) => inflections_of(curve, Route::Profile(p), opts),
-        (_, Some(p)) => inflections_of(curve, Route::Profile(&p), opts),
-        _ => inflections_of(
-            curve,
-            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
-            opts,
-        ),
-    }
+    on_fresh(curve, opts, "inflections", inflections_of)
 }
 
 /// `antipodal` of a curve read: [`PreparedCurve::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
+    on_fresh(curve, opts, "antipodal", antipodal_of)
+}
+
+/// A one-curve command (`run`, named `command` in a refusal) on `curve` read, by the route its
+/// shape takes, a smooth curve freshly prepared.
+fn on_fresh<F>(
+    curve: &Curve,
+    opts: &antipodal::Options,
+    command: &str,
+    run: fn(&Curve, Route<'_>, &antipodal::Options) -> Result<F, CommandError>,
+) -> Result<F, CommandError> {
     validate_options(opts)?;
-    one_curve(&[curve], "antipodal")?;
+    one_curve(&[curve], command)?;
     match (&curve.shape, spline_with_corners(curve)?) {
-        (CurveKind::Profile(p), _) => antipodal_of(curve, Route::Profile(p), opts),
-        (_, Some(p)) => antipodal_of(curve, Route::Profile(&p), opts),
-        _ => antipodal_of(
+        (CurveKind::Profile(p), _) => run(curve, Route::Profile(p), opts),
+        (_, Some(p)) => run(curve, Route::Profile(&p), opts),
+        _ => run(
             curve,
             Route::Smooth(&antipodal::prepare(curve.plane_curve())),
             opts,

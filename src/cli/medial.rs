@@ -1,11 +1,11 @@
 //! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
 
 use super::report::{describe, draw_curve, time_line};
-use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
+use super::{write_export, Common, Failure, OutFiles};
 use curvekit::commands;
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
-use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
+use curvekit::medial::{MedialAxis, NodeKind};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use numeric::certificate::Verdict;
 use std::fmt::Write as _;
@@ -22,34 +22,16 @@ pub(super) fn run(
     out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
-    let opts = MedialOptions {
-        settings: common.region_settings(chord_tol)?,
-        fit,
-        exterior,
-    };
+    let opts = common.axis_options(chord_tol, (fit, exterior))?;
     let curve = common.read_region(path)?;
-    let compute = || commands::medial(&curve, &opts);
-    let axis = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, axis_figure(&curve, &axis))?;
-    }
+    let (axis, stats) = common.computed(|| commands::medial(&curve, &opts))?;
+    common.draw(|| Ok(axis_figure(&curve, &axis)))?;
     let units = curve.units();
-    if let Some(path) = &out.dxf {
-        write_file(
-            path,
-            dxf_file::medial_dxf(&axis, units).map_err(export_failure)?,
-        )?;
-    }
-    if let Some(path) = &out.svg_paths {
-        write_file(
-            path,
-            svg_paths::medial_svg(&axis, units).map_err(export_failure)?,
-        )?;
-    }
-    print_out(&if common.json {
-        commands::json_document(&axis, &[&curve], stats.as_ref())
-    } else {
+    write_export(out.dxf.as_deref(), || dxf_file::medial_dxf(&axis, units))?;
+    write_export(out.svg_paths.as_deref(), || {
+        svg_paths::medial_svg(&axis, units)
+    })?;
+    common.report(&axis, &[&curve], stats.as_ref(), || {
         let mut s = String::new();
         let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
         let _ = writeln!(s, "region:      {} ({})", curve.file, describe(&curve));

@@ -2,11 +2,10 @@
 //! JSON (closed profile documents) or a figure.
 
 use super::report::{describe, draw_curve, time_line};
-use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
+use super::{write_export, Common, Failure, OutFiles};
 use curvekit::commands::{self, Distances};
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
-use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use numeric::certificate::Verdict;
@@ -24,37 +23,21 @@ pub(super) fn run(
     out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
-    let settings = common.region_settings(chord_tol)?;
-    let medial_opts = MedialOptions {
-        settings,
-        fit: false,
-        exterior: outward,
-    };
+    let medial_opts = common.axis_options(chord_tol, (false, outward))?;
     commands::validate_offset(distances, outward)?;
-    let opts = OffsetOptions { settings };
+    let opts = OffsetOptions {
+        settings: medial_opts.settings,
+    };
     let curve = common.read_region(path)?;
-    let compute = || commands::offset(&curve, distances, &opts, &medial_opts);
-    let found = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, figure(&curve, &found))?;
-    }
+    let (found, stats) =
+        common.computed(|| commands::offset(&curve, distances, &opts, &medial_opts))?;
+    common.draw(|| Ok(figure(&curve, &found)))?;
     let units = curve.units();
-    if let Some(path) = &out.dxf {
-        write_file(
-            path,
-            dxf_file::offsets_dxf(&found, units).map_err(export_failure)?,
-        )?;
-    }
-    if let Some(path) = &out.svg_paths {
-        write_file(
-            path,
-            svg_paths::offsets_svg(&found, units).map_err(export_failure)?,
-        )?;
-    }
-    print_out(&if common.json {
-        commands::json_document(&found, &[&curve], stats.as_ref())
-    } else {
+    write_export(out.dxf.as_deref(), || dxf_file::offsets_dxf(&found, units))?;
+    write_export(out.svg_paths.as_deref(), || {
+        svg_paths::offsets_svg(&found, units)
+    })?;
+    common.report(&found, &[&curve], stats.as_ref(), || {
         text(&curve, &found, stats.as_ref())
     })
 }

@@ -2,11 +2,10 @@
 //! a figure.
 
 use super::report::{describe, draw_curve, time_line};
-use super::{export_failure, print_out, timing, write_file, Common, Failure};
+use super::{write_export, Common, Failure};
 use curvekit::commands;
 use curvekit::export::dxf_file;
 use curvekit::io::Curve;
-use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY, DOT};
 use numeric::certificate::Verdict;
@@ -25,34 +24,20 @@ pub(super) fn run(
     dxf: Option<&Path>,
     common: &Common,
 ) -> Result<(), Failure> {
-    let settings = common.region_settings(chord_tol)?;
-    let medial_opts = MedialOptions {
-        settings,
-        fit: false,
-        exterior: false,
-    };
+    let medial_opts = common.axis_options(chord_tol, (false, false))?;
     let opts = VCarveOptions {
         angle,
         max_depth,
-        offset: OffsetOptions { settings },
+        offset: OffsetOptions {
+            settings: medial_opts.settings,
+        },
     };
     commands::validate_vcarve_options(&opts)?;
     let curve = common.read_region(path)?;
-    let compute = || commands::vcarve(&curve, &opts, &medial_opts);
-    let found = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, figure(&curve, &found))?;
-    }
-    if let Some(path) = dxf {
-        write_file(
-            path,
-            dxf_file::vcarve_dxf(&found, curve.units()).map_err(export_failure)?,
-        )?;
-    }
-    print_out(&if common.json {
-        commands::json_document(&found, &[&curve], stats.as_ref())
-    } else {
+    let (found, stats) = common.computed(|| commands::vcarve(&curve, &opts, &medial_opts))?;
+    common.draw(|| Ok(figure(&curve, &found)))?;
+    write_export(dxf, || dxf_file::vcarve_dxf(&found, curve.units()))?;
+    common.report(&found, &[&curve], stats.as_ref(), || {
         text(&curve, &found, stats.as_ref())
     })
 }

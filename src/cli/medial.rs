@@ -1,7 +1,7 @@
 //! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
 
-use super::report::{describe, draw_curve, time_line};
-use super::{write_export, Common, Failure, OutFiles};
+use super::report::{describe, draw_curve, verdict_lines};
+use super::{Common, Failure, OutFiles};
 use curvekit::commands;
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
@@ -26,11 +26,12 @@ pub(super) fn run(
     let curve = common.read_region(path)?;
     let (axis, stats) = common.computed(|| commands::medial(&curve, &opts))?;
     common.draw(|| Ok(axis_figure(&curve, &axis)))?;
-    let units = curve.units();
-    write_export(out.dxf.as_deref(), || dxf_file::medial_dxf(&axis, units))?;
-    write_export(out.svg_paths.as_deref(), || {
-        svg_paths::medial_svg(&axis, units)
-    })?;
+    out.write(
+        &axis,
+        curve.units(),
+        dxf_file::medial_dxf,
+        svg_paths::medial_svg,
+    )?;
     common.report(&axis, &[&curve], stats.as_ref(), || {
         let mut s = String::new();
         let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
@@ -61,14 +62,7 @@ pub(super) fn run(
                 "fitted:      {points} control points, at most {error:.3e} from the polylines"
             );
         }
-        let _ = writeln!(s, "certified:   {}", axis.certified());
-        if let Some(why) = &axis.reason() {
-            let _ = writeln!(s, "  (why: {why})");
-        }
-        let _ = writeln!(s, "complete:    {}", axis.complete);
-        if let Some(st) = &stats {
-            let _ = writeln!(s, "{}", time_line(st));
-        }
+        verdict_lines(&mut s, &axis, axis.complete, stats.as_ref());
         s
     })
 }

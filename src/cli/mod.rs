@@ -243,6 +243,21 @@ pub(crate) struct OutFiles {
     pub(crate) svg_paths: Option<PathBuf>,
 }
 
+impl OutFiles {
+    /// Writes `found` as the files asked for: its DXF (`dxf`) and its SVG paths (`svg`), in
+    /// the drawing's `units`.
+    pub(crate) fn write<R>(
+        &self,
+        found: &R,
+        units: Option<&str>,
+        dxf: fn(&R, Option<&str>) -> Result<Vec<u8>, curvekit::export::ExportError>,
+        svg: fn(&R, Option<&str>) -> Result<String, curvekit::export::ExportError>,
+    ) -> Result<(), Failure> {
+        write_export(self.dxf.as_deref(), || dxf(found, units))?;
+        write_export(self.svg_paths.as_deref(), || svg(found, units))
+    }
+}
+
 /// Options every command takes.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct Common {

@@ -1,8 +1,8 @@
 //! `curvekit offset`: the inward (or outward) offsets of a region at one or several distances, as text,
 //! JSON (closed profile documents) or a figure.
 
-use super::report::{describe, draw_curve, time_line};
-use super::{write_export, Common, Failure, OutFiles};
+use super::report::{describe, draw_curve, verdict_lines};
+use super::{Common, Failure, OutFiles};
 use curvekit::commands::{self, Distances};
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
@@ -32,11 +32,12 @@ pub(super) fn run(
     let (found, stats) =
         common.computed(|| commands::offset(&curve, distances, &opts, &medial_opts))?;
     common.draw(|| Ok(figure(&curve, &found)))?;
-    let units = curve.units();
-    write_export(out.dxf.as_deref(), || dxf_file::offsets_dxf(&found, units))?;
-    write_export(out.svg_paths.as_deref(), || {
-        svg_paths::offsets_svg(&found, units)
-    })?;
+    out.write(
+        &found,
+        curve.units(),
+        dxf_file::offsets_dxf,
+        svg_paths::offsets_svg,
+    )?;
     common.report(&found, &[&curve], stats.as_ref(), || {
         text(&curve, &found, stats.as_ref())
     })
@@ -90,13 +91,6 @@ fn text(curve: &Curve, found: &Offsets, stats: Option<&commands::Stats>) -> Stri
             o.loops.len()
         );
     }
-    let _ = writeln!(s, "certified:   {}", found.certified());
-    if let Some(why) = &found.reason() {
-        let _ = writeln!(s, "  (why: {why})");
-    }
-    let _ = writeln!(s, "complete:    {}", found.complete);
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    verdict_lines(&mut s, found, found.complete, stats);
     s
 }

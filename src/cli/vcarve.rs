@@ -1,7 +1,7 @@
 //! `curvekit vcarve`: the tool paths of a V-bit over the medial axis, as text, JSON, DXF or
 //! a figure.
 
-use super::report::{describe, draw_curve, time_line};
+use super::report::{describe, draw_curve, verdict_lines};
 use super::{write_export, Common, Failure};
 use curvekit::commands;
 use curvekit::export::dxf_file;
@@ -125,13 +125,6 @@ fn text(curve: &Curve, found: &VCarve, stats: Option<&commands::Stats>) -> Strin
         }
         None => {}
     }
-    let _ = writeln!(s, "certified:   {}", found.certified());
-    if let Some(why) = &found.reason() {
-        let _ = writeln!(s, "  (why: {why})");
-    }
-    let _ = writeln!(s, "complete:    {}", found.complete);
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    verdict_lines(&mut s, found, found.complete, stats);
     s
 }

@@ -40,16 +40,21 @@ fn inflection_lines(curve: &Curve, inflections: &[Inflection], r: &impl Verdict)
         let seg = f
             .segment
             .map_or(String::new(), |k| format!("  segment {k}"));
-        let _ = writeln!(
-            s,
-            "  {:>3}  u = {:<22}  p = ({}, {}){seg}{note}",
-            i + 1,
-            n(f.u),
-            n(f.p[0]),
-            n(f.p[1])
-        );
+        inflection_row(&mut s, i, f, &format!("{seg}{note}"));
     }
     s
+}
+
+/// The line of the `k`-th inflection: its number, parameter and point, then `after`.
+fn inflection_row(s: &mut String, k: usize, f: &Inflection, after: &str) {
+    let _ = writeln!(
+        s,
+        "  {:>3}  u = {:<22}  p = ({}, {}){after}",
+        k + 1,
+        n(f.u),
+        n(f.p[0]),
+        n(f.p[1])
+    );
 }
 
 /// The text report of `inflections` on a profile: its inflections, then its corners.
@@ -220,14 +225,7 @@ pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>
     let mut s = antipodal_head(curve, r, r.complete, Why::Unstated, pairs, families);
     let _ = writeln!(s, "inflections: {}", r.inflections.len());
     for (k, i) in r.inflections.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "  {:>3}  u = {:<22}  p = ({}, {})",
-            k + 1,
-            n(i.u),
-            n(i.p[0]),
-            n(i.p[1])
-        );
+        inflection_row(&mut s, k, i, "");
     }
     push_time_line(&mut s, stats);
     s

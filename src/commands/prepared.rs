@@ -41,12 +41,12 @@ impl PreparedCurve {
 
     /// The inflections (and a profile's corners).
     pub fn inflections(&self, opts: &antipodal::Options) -> Result<InflectionsFound, CommandError> {
-        inflections_of(&self.curve, self.route(), opts)
+        INFLECTIONS.on_route(&self.curve, self.route(), opts)
     }
 
     /// The antipodal pairs, inflections and families (and a profile's corners).
     pub fn antipodal(&self, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-        antipodal_of(&self.curve, self.route(), opts)
+        ANTIPODAL.on_route(&self.curve, self.route(), opts)
     }
 
     fn route(&self) -> Route<'_> {
@@ -87,65 +87,75 @@ pub(super) fn smooth_map(curve: &Curve) -> DocMap<'_> {
     }
 }
 
-/// `inflections` of `curve` on `route`, in the curve's own parameter.
-fn inflections_of(
-    curve: &Curve,
-    route: Route<'_>,
-    opts: &antipodal::Options,
-) -> Result<InflectionsFound, CommandError> {
-    on_route(
-        curve,
-        route,
-        |p, map| {
-            antipodal::profile_inflections(p, opts)
-                .map(|f| f.into_document(&[map]))
-                .map(InflectionsFound::Profile)
-        },
-        |s, map| {
-            s.inflections(opts)
-                .map(|f| f.into_document(&[map]))
-                .map(InflectionsFound::Curve)
-        },
-    )
+/// A one-curve command: its name (in a refusal), what it computes on a profile and on a
+/// smooth curve prepared, and the variant that holds each result.
+struct OneCurveCommand<C, P, F> {
+    name: &'static str,
+    on_profile: fn(&Profile, &antipodal::Options) -> antipodal::Result<P>,
+    on_smooth: fn(&antipodal::Prepared<'_>, &antipodal::Options) -> antipodal::Result<C>,
+    curve_found: fn(C) -> F,
+    profile_found: fn(P) -> F,
 }
 
-/// `antipodal` of `curve` on `route`, in the curve's own parameter.
-fn antipodal_of(
-    curve: &Curve,
-    route: Route<'_>,
-    opts: &antipodal::Options,
-) -> Result<AntipodalFound, CommandError> {
-    on_route(
-        curve,
-        route,
-        |p, map| {
-            antipodal::profile_antipodal(p, opts)
-                .map(|f| f.into_document(&[map]))
-                .map(AntipodalFound::Profile)
-        },
-        |s, map| {
-            s.antipodal(opts)
-                .map(|f| f.into_document(&[map]))
-                .map(AntipodalFound::Curve)
-        },
-    )
-}
+const INFLECTIONS: OneCurveCommand<
+    antipodal::Inflections,
+    antipodal::ProfileInflections,
+    InflectionsFound,
+> = OneCurveCommand {
+    name: "inflections",
+    on_profile: antipodal::profile_inflections,
+    on_smooth: |prepared, opts| prepared.inflections(opts),
+    curve_found: InflectionsFound::Curve,
+    profile_found: InflectionsFound::Profile,
+};
 
-/// A one-curve command on `route`: `on_profile` or `on_smooth`, given the map of the curve's
-/// parameter to its document's; the result is doubted where the drawing's outline is.
-fn on_route<F: Doubted>(
-    curve: &Curve,
-    route: Route<'_>,
-    on_profile: impl FnOnce(&Profile, DocMap<'_>) -> antipodal::Result<F>,
-    on_smooth: impl FnOnce(&antipodal::Prepared<'_>, DocMap<'_>) -> antipodal::Result<F>,
-) -> Result<F, CommandError> {
-    let found = match route {
-        Route::Profile(p) => on_profile(p, DocMap::Profile(p)),
-        Route::Smooth(prepared) => on_smooth(prepared, smooth_map(curve)),
-    };
-    found
-        .map(|f| f.doubted(curve.drawing_outline_doubt()))
-        .map_err(|e| antipodal_error(e, &[curve]))
+const ANTIPODAL: OneCurveCommand<
+    antipodal::Antipodal,
+    antipodal::ProfileAntipodal,
+    AntipodalFound,
+> = OneCurveCommand {
+    name: "antipodal",
+    on_profile: antipodal::profile_antipodal,
+    on_smooth: |prepared, opts| prepared.antipodal(opts),
+    curve_found: AntipodalFound::Curve,
+    profile_found: AntipodalFound::Profile,
+};
+
+impl<C: InDocument, P: InDocument, F: Doubted> OneCurveCommand<C, P, F> {
+    /// The command on `curve` by `route`, in the curve's own parameter; the result is doubted
+    /// where the drawing's outline is.
+    fn on_route(
+        &self,
+        curve: &Curve,
+        route: Route<'_>,
+        opts: &antipodal::Options,
+    ) -> Result<F, CommandError> {
+        let found = match route {
+            Route::Profile(p) => (self.on_profile)(p, opts)
+                .map(|f| (self.profile_found)(f.into_document(&[DocMap::Profile(p)]))),
+            Route::Smooth(prepared) => (self.on_smooth)(prepared, opts)
+                .map(|f| (self.curve_found)(f.into_document(&[smooth_map(curve)]))),
+        };
+        found
+            .map(|f| f.doubted(curve.drawing_outline_doubt()))
+            .map_err(|e| antipodal_error(e, &[curve]))
+    }
+
+    /// The command on `curve` read, by the route its shape takes, a smooth curve freshly
+    /// prepared.
+    fn on_fresh(&self, curve: &Curve, opts: &antipodal::Options) -> Result<F, CommandError> {
+        validate_options(opts)?;
+        one_curve(&[curve], self.name)?;
+        match (&curve.shape, spline_with_corners(curve)?) {
+            (CurveKind::Profile(p), _) => self.on_route(curve, Route::Profile(p), opts),
+            (_, Some(p)) => self.on_route(curve, Route::Profile(&p), opts),
+            _ => self.on_route(
+                curve,
+                Route::Smooth(&antipodal::prepare(curve.plane_curve())),
+                opts,
+            ),
+        }
+    }
 }
 
 /// A curve read, shared with its prepared form: the plane curve of its shape.
@@ -177,31 +187,10 @@ pub fn inflections(
     curve: &Curve,
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
-    on_fresh(curve, opts, "inflections", inflections_of)
+    INFLECTIONS.on_fresh(curve, opts)
 }
 
 /// `antipodal` of a curve read: [`PreparedCurve::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-    on_fresh(curve, opts, "antipodal", antipodal_of)
-}
-
-/// A one-curve command (`run`, named `command` in a refusal) on `curve` read, by the route its
-/// shape takes, a smooth curve freshly prepared.
-fn on_fresh<F>(
-    curve: &Curve,
-    opts: &antipodal::Options,
-    command: &str,
-    run: fn(&Curve, Route<'_>, &antipodal::Options) -> Result<F, CommandError>,
-) -> Result<F, CommandError> {
-    validate_options(opts)?;
-    one_curve(&[curve], command)?;
-    match (&curve.shape, spline_with_corners(curve)?) {
-        (CurveKind::Profile(p), _) => run(curve, Route::Profile(p), opts),
-        (_, Some(p)) => run(curve, Route::Profile(&p), opts),
-        _ => run(
-            curve,
-            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
-            opts,
-        ),
-    }
+    ANTIPODAL.on_fresh(curve, opts)
 }

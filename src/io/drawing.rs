@@ -117,14 +117,9 @@ pub(super) fn profiles(
                 ));
             }
             let profile = Profile::new(c.segments, c.closed).map_err(|e| {
-                let field = match e {
-                    curve::Error::Gap { segment, .. }
-                    | curve::Error::ZeroLength { segment }
-                    | curve::Error::Cusp { segment, .. }
-                    | curve::Error::SelfCrossing {
-                        second: segment, ..
-                    } => format!("{} segment {segment}", c.name),
-                    _ => c.name.clone(),
+                let field = match super::profile::segment_at_fault(&e) {
+                    Some(segment) => format!("{} segment {segment}", c.name),
+                    None => c.name.clone(),
                 };
                 error(file, &field, Problem::Geometry(e.to_string()))
             })?;

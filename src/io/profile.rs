@@ -52,17 +52,26 @@ pub(super) fn parse_profile(f: &Fields<'_>) -> Result<Profile, FieldError> {
         })
         .collect::<Result<Vec<_>, _>>()?;
     Profile::new(segments, closed).map_err(|e| {
-        let field = match e {
-            curve::Error::Gap { segment, .. }
-            | curve::Error::ZeroLength { segment }
-            | curve::Error::Cusp { segment, .. }
-            | curve::Error::SelfCrossing {
-                second: segment, ..
-            } => format!("segments[{segment}]"),
-            _ => "segments".to_string(),
+        let field = match segment_at_fault(&e) {
+            Some(segment) => format!("segments[{segment}]"),
+            None => "segments".to_string(),
         };
         (field, Problem::Geometry(e.to_string()))
     })
+}
+
+/// The segment a profile was refused for (the later of two that cross), where the refusal
+/// names one.
+pub(crate) fn segment_at_fault(e: &curve::Error) -> Option<usize> {
+    match *e {
+        curve::Error::Gap { segment, .. }
+        | curve::Error::ZeroLength { segment }
+        | curve::Error::Cusp { segment, .. }
+        | curve::Error::SelfCrossing {
+            second: segment, ..
+        } => Some(segment),
+        _ => None,
+    }
 }
 
 /// One segment object of a profile: a `line`, `arc`, `bezier` or open `bspline`.

@@ -322,11 +322,7 @@ impl PyCurve {
             "Curve(kind={:?}, name={:?}, closed={}, domain=({a}, {b}))",
             self.curve.kind(),
             self.curve.file,
-            if self.curve.is_closed() {
-                "True"
-            } else {
-                "False"
-            }
+            crate::results::py_bool(self.curve.is_closed())
         )
     }
 

@@ -122,26 +122,47 @@ enum OneCurve<'py> {
 }
 
 impl OneCurve<'_> {
-    /// Runs `warm` on the prepared curve, or `cold` on the curve.
+    /// Runs `command` with `opts`: warm on the prepared curve, cold on the curve.
     fn run<T: Send>(
         &self,
         py: Python<'_>,
-        warm: impl FnOnce(&commands::PreparedCurve) -> Result<T, CommandError> + Send,
-        cold: impl FnOnce(&curvekit::io::Curve) -> Result<T, CommandError> + Send,
+        command: &OneCurveCommand<T>,
+        opts: &::antipodal::Options,
     ) -> PyResult<(T, commands::CurveSummary)> {
         match self {
             OneCurve::Prepared(p) => {
                 let prepared = p.get().prepared();
-                let found = detached(py, || warm(prepared))?;
+                let found = detached(py, || (command.warm)(prepared, opts))?;
                 Ok((found, commands::CurveSummary::of(prepared.curve())))
             }
             OneCurve::Curve(c) => {
                 let c = c.get();
-                Ok((detached(py, || cold(c.curve()))?, c.summary()))
+                Ok((
+                    detached(py, || (command.cold)(c.curve(), opts))?,
+                    c.summary(),
+                ))
             }
         }
     }
 }
+
+/// A one-curve command: on a curve prepared (warm), and on a curve (prepared for the run).
+pub(crate) struct OneCurveCommand<T> {
+    warm: fn(&commands::PreparedCurve, &::antipodal::Options) -> Result<T, CommandError>,
+    cold: fn(&curvekit::io::Curve, &::antipodal::Options) -> Result<T, CommandError>,
+}
+
+/// `antipodal`, on a curve prepared or not.
+pub(crate) const ANTIPODAL: OneCurveCommand<commands::AntipodalFound> = OneCurveCommand {
+    warm: commands::PreparedCurve::antipodal,
+    cold: commands::antipodal,
+};
+
+/// `inflections`, on a curve prepared or not.
+pub(crate) const INFLECTIONS: OneCurveCommand<commands::InflectionsFound> = OneCurveCommand {
+    warm: commands::PreparedCurve::inflections,
+    cold: commands::inflections,
+};
 
 /// The antipodal point pairs of a closed curve or profile (Jia 2004): grasps of a two-finger
 /// gripper. `tol` is the parameter tolerance relative to the domain's length.
@@ -149,11 +170,7 @@ impl OneCurve<'_> {
 #[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAntipodal> {
     let opts = curve_options(tol).map_err(to_py_err)?;
-    let (found, summary) = curve.run(
-        py,
-        |p| p.antipodal(&opts),
-        |c| commands::antipodal(c, &opts),
-    )?;
+    let (found, summary) = curve.run(py, &ANTIPODAL, &opts)?;
     Ok(PyAntipodal::new(found, vec![summary]))
 }
 
@@ -162,11 +179,7 @@ fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAnt
 #[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn inflections_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyInflections> {
     let opts = curve_options(tol).map_err(to_py_err)?;
-    let (found, summary) = curve.run(
-        py,
-        |p| p.inflections(&opts),
-        |c| commands::inflections(c, &opts),
-    )?;
+    let (found, summary) = curve.run(py, &INFLECTIONS, &opts)?;
     Ok(PyInflections::new(found, vec![summary]))
 }
 

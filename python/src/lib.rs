@@ -153,16 +153,18 @@ pub(crate) struct OneCurveCommand<T> {
 }
 
 /// `antipodal`, on a curve prepared or not.
-pub(crate) const ANTIPODAL: OneCurveCommand<commands::AntipodalFound> = OneCurveCommand {
-    warm: commands::PreparedCurve::antipodal,
-    cold: commands::antipodal,
-};
+pub(crate) const ANTIPODAL_WARM_OR_COLD: OneCurveCommand<commands::AntipodalFound> =
+    OneCurveCommand {
+        warm: commands::PreparedCurve::antipodal,
+        cold: commands::antipodal,
+    };
 
 /// `inflections`, on a curve prepared or not.
-pub(crate) const INFLECTIONS: OneCurveCommand<commands::InflectionsFound> = OneCurveCommand {
-    warm: commands::PreparedCurve::inflections,
-    cold: commands::inflections,
-};
+pub(crate) const INFLECTIONS_WARM_OR_COLD: OneCurveCommand<commands::InflectionsFound> =
+    OneCurveCommand {
+        warm: commands::PreparedCurve::inflections,
+        cold: commands::inflections,
+    };
 
 /// The antipodal point pairs of a closed curve or profile (Jia 2004): grasps of a two-finger
 /// gripper. `tol` is the parameter tolerance relative to the domain's length.
@@ -170,7 +172,7 @@ pub(crate) const INFLECTIONS: OneCurveCommand<commands::InflectionsFound> = OneC
 #[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAntipodal> {
     let opts = curve_options(tol).map_err(to_py_err)?;
-    let (found, summary) = curve.run(py, &ANTIPODAL, &opts)?;
+    let (found, summary) = curve.run(py, &ANTIPODAL_WARM_OR_COLD, &opts)?;
     Ok(PyAntipodal::new(found, vec![summary]))
 }
 
@@ -179,7 +181,7 @@ fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAnt
 #[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
 fn inflections_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyInflections> {
     let opts = curve_options(tol).map_err(to_py_err)?;
-    let (found, summary) = curve.run(py, &INFLECTIONS, &opts)?;
+    let (found, summary) = curve.run(py, &INFLECTIONS_WARM_OR_COLD, &opts)?;
     Ok(PyInflections::new(found, vec![summary]))
 }
 

@@ -142,7 +142,13 @@ fn antipodal_many(
     curves: Vec<Bound<'_, PyAny>>,
     tol: f64,
 ) -> PyResult<Vec<PyAntipodal>> {
-    one_curve_each(py, &curves, tol, &crate::ANTIPODAL, PyAntipodal::new)
+    one_curve_each(
+        py,
+        &curves,
+        tol,
+        &crate::ANTIPODAL_WARM_OR_COLD,
+        PyAntipodal::new,
+    )
 }
 
 /// `inflections` of each curve.
@@ -153,7 +159,13 @@ fn inflections_many(
     curves: Vec<Bound<'_, PyAny>>,
     tol: f64,
 ) -> PyResult<Vec<PyInflections>> {
-    one_curve_each(py, &curves, tol, &crate::INFLECTIONS, PyInflections::new)
+    one_curve_each(
+        py,
+        &curves,
+        tol,
+        &crate::INFLECTIONS_WARM_OR_COLD,
+        PyInflections::new,
+    )
 }
 
 /// Two lists that pair up, refused where their lengths differ.

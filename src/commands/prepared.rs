@@ -41,12 +41,12 @@ impl PreparedCurve {
 
     /// The inflections (and a profile's corners).
     pub fn inflections(&self, opts: &antipodal::Options) -> Result<InflectionsFound, CommandError> {
-        INFLECTIONS.on_route(&self.curve, self.route(), opts)
+        INFLECTIONS_BY_ROUTE.on_route(&self.curve, self.route(), opts)
     }
 
     /// The antipodal pairs, inflections and families (and a profile's corners).
     pub fn antipodal(&self, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-        ANTIPODAL.on_route(&self.curve, self.route(), opts)
+        ANTIPODAL_BY_ROUTE.on_route(&self.curve, self.route(), opts)
     }
 
     fn route(&self) -> Route<'_> {
@@ -97,7 +97,7 @@ struct OneCurveCommand<C, P, F> {
     profile_found: fn(P) -> F,
 }
 
-const INFLECTIONS: OneCurveCommand<
+const INFLECTIONS_BY_ROUTE: OneCurveCommand<
     antipodal::Inflections,
     antipodal::ProfileInflections,
     InflectionsFound,
@@ -109,7 +109,7 @@ const INFLECTIONS: OneCurveCommand<
     profile_found: InflectionsFound::Profile,
 };
 
-const ANTIPODAL: OneCurveCommand<
+const ANTIPODAL_BY_ROUTE: OneCurveCommand<
     antipodal::Antipodal,
     antipodal::ProfileAntipodal,
     AntipodalFound,
@@ -187,10 +187,10 @@ pub fn inflections(
     curve: &Curve,
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
-    INFLECTIONS.on_fresh(curve, opts)
+    INFLECTIONS_BY_ROUTE.on_fresh(curve, opts)
 }
 
 /// `antipodal` of a curve read: [`PreparedCurve::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-    ANTIPODAL.on_fresh(curve, opts)
+    ANTIPODAL_BY_ROUTE.on_fresh(curve, opts)
 }

@@ -140,6 +140,20 @@ impl PyCurve {
         Ok(self.region()?.parts())
     }
 
+    /// The one part of the region the curve is, for the getter `getter`; refused where there
+    /// are several, each with its own `each` (`outer boundary`, `holes`).
+    fn only_part(&self, getter: &str, each: &str) -> PyResult<&curve::Region> {
+        let parts = self.parts_read().map_err(crate::to_py_err)?;
+        match parts.as_slice() {
+            [one] => Ok(*one),
+            _ => Err(PyValueError::new_err(format!(
+                "{getter}: {} has {} parts, each with its {each}: take .parts",
+                self.curve.file,
+                parts.len()
+            ))),
+        }
+    }
+
     /// The curve made of `doc`, named after this one with `what`.
     fn made(&self, what: &str, doc: &serde_json::Value) -> PyResult<PyCurve> {
         Self::from_document(format!("{} {what}", self.curve.file), doc.to_string())
@@ -247,34 +261,19 @@ impl PyCurve {
     /// multi-part input has several: see `parts`.
     #[getter]
     fn outer(&self) -> PyResult<PyCurve> {
-        let parts = self.parts_read().map_err(crate::to_py_err)?;
-        match parts.as_slice() {
-            [one] => self.made("outer", &io::profile_document(one.outer())),
-            _ => Err(PyValueError::new_err(format!(
-                "outer: {} has {} parts, each with its outer boundary: take .parts",
-                self.curve.file,
-                parts.len()
-            ))),
-        }
+        let one = self.only_part("outer", "outer boundary")?;
+        self.made("outer", &io::profile_document(one.outer()))
     }
 
     /// The holes of the region the curve is, as closed profiles (none for a closed curve).
     #[getter]
     fn holes(&self) -> PyResult<Vec<PyCurve>> {
-        let parts = self.parts_read().map_err(crate::to_py_err)?;
-        match parts.as_slice() {
-            [one] => one
-                .holes()
-                .iter()
-                .enumerate()
-                .map(|(k, h)| self.made(&format!("hole {k}"), &io::profile_document(h)))
-                .collect(),
-            _ => Err(PyValueError::new_err(format!(
-                "holes: {} has {} parts, each with its holes: take .parts",
-                self.curve.file,
-                parts.len()
-            ))),
-        }
+        let one = self.only_part("holes", "holes")?;
+        one.holes()
+            .iter()
+            .enumerate()
+            .map(|(k, h)| self.made(&format!("hole {k}"), &io::profile_document(h)))
+            .collect()
     }
 
     /// The disjoint regions of the curve, each a region (one for a region or a closed curve).

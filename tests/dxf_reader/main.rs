@@ -255,6 +255,18 @@ fn ellipses_full_and_partial_rotated() {
             ..Default::default()
         })
     };
+    // A partial one from `start` to `end` closed by its chord: the profile read, and the arc's
+    // ends.
+    let closed_by_chord = |start: f64, end: f64| {
+        let mut d = drawing();
+        let (a, b) = (
+            ellipse_at(c, major, ratio, start),
+            ellipse_at(c, major, ratio, end),
+        );
+        add(&mut d, ellipse(start, end));
+        add(&mut d, line(b.x, b.y, a.x, a.y));
+        (read(&d), a, b)
+    };
     // Its implicit equation in its own axes.
     let on = |q: V2| {
         let u = major * (1.0 / major.norm());
@@ -270,14 +282,7 @@ fn ellipses_full_and_partial_rotated() {
         assert!(on(q).abs() < 1e-14, "{q:?}");
     }
     // A partial one from 1 to 4 radians (eccentric angles), closed by its chord.
-    let mut d = drawing();
-    let (a, b) = (
-        ellipse_at(c, major, ratio, 1.0),
-        ellipse_at(c, major, ratio, 4.0),
-    );
-    add(&mut d, ellipse(1.0, 4.0));
-    add(&mut d, line(b.x, b.y, a.x, a.y));
-    let p = read(&d);
+    let (p, a, b) = closed_by_chord(1.0, 4.0);
     assert!(p.is_closed());
     let e = &p.segments()[0];
     assert_eq!(e.kind(), SegmentKind::EllipticArc);
@@ -289,14 +294,7 @@ fn ellipses_full_and_partial_rotated() {
     let mid = ellipse_at(c, major, ratio, 2.5);
     assert!(distance_to(e, mid) < 1e-12);
     // Start above end (5 → 1 radians): through 0, once round.
-    let mut d = drawing();
-    let (a, b) = (
-        ellipse_at(c, major, ratio, 5.0),
-        ellipse_at(c, major, ratio, 1.0),
-    );
-    add(&mut d, ellipse(5.0, 1.0));
-    add(&mut d, line(b.x, b.y, a.x, a.y));
-    let p = read(&d);
+    let (p, _, _) = closed_by_chord(5.0, 1.0);
     assert!(distance_to(&p.segments()[0], ellipse_at(c, major, ratio, 0.0)) < 1e-12);
 }
 

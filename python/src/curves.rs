@@ -15,6 +15,18 @@ use std::sync::{Arc, OnceLock};
 /// tolerance of every result's polylines.
 const GEO_TOLERANCE: f64 = 1e-3;
 
+/// How far the GeoJSON of `regions` may stray from them: [`GEO_TOLERANCE`] of their size.
+pub(crate) fn geo_flatness(regions: &[&curve::Region]) -> f64 {
+    let size = curve::box_size(
+        regions
+            .iter()
+            .map(|r| r.bounding_box())
+            .reduce(curve::box_union)
+            .unwrap_or([0.0; 4]),
+    );
+    GEO_TOLERANCE * size
+}
+
 /// Where a curve came from: what it is read again from when unpickled.
 #[derive(Clone)]
 struct Source {
@@ -294,14 +306,7 @@ impl PyCurve {
     fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let geometry = if self.curve.is_closed() {
             let parts = self.parts_read().map_err(crate::to_py_err)?;
-            let size = curve::box_size(
-                parts
-                    .iter()
-                    .map(|r| r.bounding_box())
-                    .reduce(curve::box_union)
-                    .unwrap_or([0.0; 4]),
-            );
-            io::regions_geometry(&parts, GEO_TOLERANCE * size)
+            io::regions_geometry(&parts, geo_flatness(&parts))
         } else {
             let profile = match &self.curve.shape {
                 CurveKind::Profile(p) => (**p).clone(),

@@ -200,7 +200,8 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict, {
         let geometry = match refs.as_slice() {
             [] => serde_json::json!({"type": "MultiPolygon", "coordinates": []}),
             _ => {
-                let mut g = curvekit::io::regions_geometry(&refs, flatness(&refs));
+                let mut g =
+                    curvekit::io::regions_geometry(&refs, crate::curves::geo_flatness(&refs));
                 g["type"] = "MultiPolygon".into();
                 if refs.len() == 1 {
                     g["coordinates"] = serde_json::json!([g["coordinates"].clone()]);
@@ -336,16 +337,4 @@ impl PyOffsets {
             .map_err(|e| crate::CurvekitError::new_err(format!("the offset loops: {e}")))?;
         Ok((offset, regions))
     }
-}
-
-/// The flattening tolerance of regions' GeoJSON: the chord tolerance (1e-3) of their size.
-fn flatness(regions: &[&curve::Region]) -> f64 {
-    let size = curve::box_size(
-        regions
-            .iter()
-            .map(|r| r.bounding_box())
-            .reduce(curve::box_union)
-            .unwrap_or([0.0; 4]),
-    );
-    1e-3 * size
 }

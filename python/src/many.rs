@@ -4,7 +4,7 @@
 
 use crate::curves::{PyCurve, PyPrepared};
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
-use crate::results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
+use crate::results::{PyBisector, PyTangents};
 use crate::{bisector_method, bisector_options, CurvekitError, InputError, OneCurveCommand};
 use curvekit::commands::{self, CommandError, CurveSummary, FailureKind};
 use pyo3::exceptions::PyValueError;
@@ -119,7 +119,7 @@ fn classes<T, C>(found: Vec<(T, CurveSummary)>, class: fn(T, Vec<CurveSummary>) 
 
 /// A one-curve command on each of `curves` (curves and prepared curves), as results of
 /// `class`.
-fn one_curve_each<T: Send, C>(
+pub(crate) fn one_curve_each<T: Send, C>(
     py: Python<'_>,
     curves: &[Bound<'_, PyAny>],
     tol: f64,
@@ -132,40 +132,6 @@ fn one_curve_each<T: Send, C>(
     };
     let found = each(py, &items, |item| item.run(command, &opts))?;
     Ok(classes(found, class))
-}
-
-/// `antipodal` of each curve.
-#[pyfunction]
-#[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
-fn antipodal_many(
-    py: Python<'_>,
-    curves: Vec<Bound<'_, PyAny>>,
-    tol: f64,
-) -> PyResult<Vec<PyAntipodal>> {
-    one_curve_each(
-        py,
-        &curves,
-        tol,
-        &crate::ANTIPODAL_WARM_OR_COLD,
-        PyAntipodal::new,
-    )
-}
-
-/// `inflections` of each curve.
-#[pyfunction]
-#[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
-fn inflections_many(
-    py: Python<'_>,
-    curves: Vec<Bound<'_, PyAny>>,
-    tol: f64,
-) -> PyResult<Vec<PyInflections>> {
-    one_curve_each(
-        py,
-        &curves,
-        tol,
-        &crate::INFLECTIONS_WARM_OR_COLD,
-        PyInflections::new,
-    )
 }
 
 /// Two lists that pair up, refused where their lengths differ.
@@ -318,8 +284,6 @@ fn vcarve_many(
 
 /// Registers the vectorised functions.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(antipodal_many, m)?)?;
-    m.add_function(wrap_pyfunction!(inflections_many, m)?)?;
     m.add_function(wrap_pyfunction!(tangents_many, m)?)?;
     m.add_function(wrap_pyfunction!(bisector_many, m)?)?;
     m.add_function(wrap_pyfunction!(medial_many, m)?)?;

@@ -24,21 +24,25 @@ pub(super) fn parse_segment_kind(kind: &str, f: &Fields<'_>) -> Result<Segment, 
     super::shape("kind", made)
 }
 
+/// A count of a profile's `pieces` (its segments, a polyline's vertices) within
+/// [`MAX_SEGMENTS`], or the problem it is.
+pub(crate) fn at_most_max_segments(count: usize, pieces: &str) -> Result<(), Problem> {
+    if count > MAX_SEGMENTS {
+        return Err(Problem::OutOfRange {
+            rule: format!("at most {MAX_SEGMENTS} {pieces}"),
+            value: count as f64,
+        });
+    }
+    Ok(())
+}
+
 /// A `profile` object (unknown fields were already rejected).
 pub(super) fn parse_profile(f: &Fields<'_>) -> Result<Profile, FieldError> {
     let items = match f.require("segments")? {
         Value::Array(items) => items,
         v => return Err(wrong_type("segments", "an array of segment objects", v)),
     };
-    if items.len() > MAX_SEGMENTS {
-        return Err((
-            "segments".into(),
-            Problem::OutOfRange {
-                rule: format!("at most {MAX_SEGMENTS} segments"),
-                value: items.len() as f64,
-            },
-        ));
-    }
+    at_most_max_segments(items.len(), "segments").map_err(|p| ("segments".into(), p))?;
     let closed = f.opt_bool("closed")?;
     let segments = items
         .iter()

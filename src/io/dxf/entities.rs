@@ -4,7 +4,7 @@
 
 use super::spline::{spline, Spline};
 use super::text::Record;
-use crate::io::{Problem, MAX_ABS, MAX_SEGMENTS};
+use crate::io::{Problem, MAX_ABS};
 use curve::{Affine, Segment, JOIN_GAP};
 use dxf::entities::{Entity, EntityType};
 use numeric::rounding::ulps;
@@ -363,15 +363,8 @@ fn polyline(
     mirrored: bool,
     closed: bool,
 ) -> Result<Outcome, EntityError> {
-    if vertices.len() > MAX_SEGMENTS {
-        return Err((
-            "vertices".into(),
-            Problem::OutOfRange {
-                rule: format!("at most {MAX_SEGMENTS} vertices"),
-                value: vertices.len() as f64,
-            },
-        ));
-    }
+    crate::io::profile::at_most_max_segments(vertices.len(), "vertices")
+        .map_err(|p| ("vertices".into(), p))?;
     if vertices.len() < 2 {
         // (A single vertex is a point: nothing drawn.)
         return Ok(Outcome::Nothing);

@@ -32,8 +32,15 @@ use zeroset::{
 /// Parameter tolerance of every bench (see the module docs).
 const TOL: f64 = 1e-9;
 
-fn fixture(name: &str, text: &str) -> Rational {
+fn parsed(name: &str, text: &str) -> Rational {
     parse_curve(name, text).unwrap().rational().unwrap().clone()
+}
+
+/// The spline of fixture `$name` (`fixtures/$name.json`, embedded).
+macro_rules! fixture {
+    ($name:literal) => {
+        parsed($name, include_str!(concat!("../fixtures/", $name, ".json")))
+    };
 }
 
 fn opts() -> BisectorOptions {
@@ -49,26 +56,11 @@ fn opts() -> BisectorOptions {
 }
 
 fn bisectors(c: &mut Criterion) {
-    let cub1 = fixture(
-        "bisector-bench-cubic1",
-        include_str!("../fixtures/bisector-bench-cubic1.json"),
-    );
-    let cub2 = fixture(
-        "bisector-bench-cubic2",
-        include_str!("../fixtures/bisector-bench-cubic2.json"),
-    );
-    let quad1 = fixture(
-        "bisector-fig3-quadratic1",
-        include_str!("../fixtures/bisector-fig3-quadratic1.json"),
-    );
-    let quad2 = fixture(
-        "bisector-fig3-quadratic2",
-        include_str!("../fixtures/bisector-fig3-quadratic2.json"),
-    );
-    let seven = fixture(
-        "bisector-fig5-cubic-bspline",
-        include_str!("../fixtures/bisector-fig5-cubic-bspline.json"),
-    );
+    let cub1 = fixture!("bisector-bench-cubic1");
+    let cub2 = fixture!("bisector-bench-cubic2");
+    let quad1 = fixture!("bisector-fig3-quadratic1");
+    let quad2 = fixture!("bisector-fig3-quadratic2");
+    let seven = fixture!("bisector-fig5-cubic-bspline");
     let o = opts();
     // The results the figures are for (complete, and the branch counts of the demo).
     let check = |b: zeroset::Bisector, n: usize| {

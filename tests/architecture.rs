@@ -324,16 +324,26 @@ fn modules_import_no_new_circle() {
         .iter()
         .map(|(c, m)| (c.to_string(), m.iter().map(|s| s.to_string()).collect()))
         .collect();
-    let new: Vec<_> = found.difference(&known).collect();
-    let gone: Vec<_> = known.difference(&found).collect();
-    assert!(
-        new.is_empty(),
-        "modules importing each other in a circle: {new:?}"
+    ratchet(
+        &found,
+        &known,
+        "modules importing each other in a circle",
+        "circles broken, to leave KNOWN_CIRCLES",
     );
-    assert!(
-        gone.is_empty(),
-        "circles broken, to leave KNOWN_CIRCLES: {gone:?}"
-    );
+}
+
+/// A ratchet's check: nothing `found` that is not `known` (`new` says what that is), and
+/// nothing `known` that is no longer found (`gone` says what to do).
+fn ratchet<T: Ord + std::fmt::Debug>(
+    found: &BTreeSet<T>,
+    known: &BTreeSet<T>,
+    new: &str,
+    gone: &str,
+) {
+    let added: Vec<_> = found.difference(known).collect();
+    let left: Vec<_> = known.difference(found).collect();
+    assert!(added.is_empty(), "{new}: {added:?}");
+    assert!(left.is_empty(), "{gone}: {left:?}");
 }
 
 /// Each workspace crate's library name, and the library names of what it depends on outside
@@ -472,15 +482,11 @@ fn no_two_public_types_share_a_name() {
         .map(|(ty, _)| ty.as_str())
         .collect();
     let known: BTreeSet<&str> = KNOWN_SHARED_TYPES.into_iter().collect();
-    let new: Vec<_> = shared.difference(&known).collect();
-    let gone: Vec<_> = known.difference(&shared).collect();
-    assert!(
-        new.is_empty(),
-        "public types of one name in two crates: {new:?}"
-    );
-    assert!(
-        gone.is_empty(),
-        "renamed, to leave KNOWN_SHARED_TYPES: {gone:?}"
+    ratchet(
+        &shared,
+        &known,
+        "public types of one name in two crates",
+        "renamed, to leave KNOWN_SHARED_TYPES",
     );
 }
 

@@ -201,6 +201,22 @@ fn medial_feet_are_in_each_boundarys_own_parameter() {
     }
 }
 
+/// Asserts that every point of the bisector document `bis` is as far from its foot on
+/// `first` as from its foot on `second`, each foot evaluated at the document's parameter
+/// (`tr`); the points checked.
+fn equidistant_points(bis: &Value, first: &Value, second: &Value) -> usize {
+    let mut seen = 0;
+    for br in arr(&bis["branches"]) {
+        for (tr, xy) in arr(&br["tr"]).iter().zip(arr(&br["xy"])) {
+            let (p, q) = (eval(first, num(&tr[0])), eval(second, num(&tr[1])));
+            let (dp, dq) = (dist(p, pt(xy)), dist(q, pt(xy)));
+            testkit::assert_near!(dp, dq, 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
+            seen += 1;
+        }
+    }
+    seen
+}
+
 #[test]
 fn bisectors_and_tangents_of_arcs_are_in_the_arcs_angle() {
     let dir = tempfile::tempdir().unwrap();
@@ -211,30 +227,12 @@ fn bisectors_and_tangents_of_arcs_are_in_the_arcs_angle() {
         file_of(&other, &dir, "line.json"),
     );
     let bis = curvekit_json(&["bisector", &a, &b]);
-    let mut seen = 0;
-    for br in arr(&bis["branches"]) {
-        for (tr, xy) in arr(&br["tr"]).iter().zip(arr(&br["xy"])) {
-            let (p, q) = (eval(&arc, num(&tr[0])), eval(&other, num(&tr[1])));
-            let (dp, dq) = (dist(p, pt(xy)), dist(q, pt(xy)));
-            testkit::assert_near!(dp, dq, 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
-            seen += 1;
-        }
-    }
-    assert!(seen > 0);
+    assert!(equidistant_points(&bis, &arc, &other) > 0);
     // An analytic shape's self-bisector, in its angle.
     let limacon = json!({"kind":"limacon","a":4,"b":2.5});
     let l = file_of(&limacon, &dir, "limacon.json");
     let bis = curvekit_json(&["bisector", &l]);
-    let mut seen = 0;
-    for br in arr(&bis["branches"]) {
-        for (tr, xy) in arr(&br["tr"]).iter().zip(arr(&br["xy"])) {
-            let (p, q) = (eval(&limacon, num(&tr[0])), eval(&limacon, num(&tr[1])));
-            let (dp, dq) = (dist(p, pt(xy)), dist(q, pt(xy)));
-            testkit::assert_near!(dp, dq, 1e-6 * (dp + dq), "{tr:?}: {dp} vs {dq}");
-            seen += 1;
-        }
-    }
-    assert!(seen > 0);
+    assert!(equidistant_points(&bis, &limacon, &limacon) > 0);
     let circle = json!({"kind":"circle","r":1,"center":[0,3]});
     let c = file_of(&circle, &dir, "circle.json");
     let tan = curvekit_json(&["tangents", &a, &c]);

@@ -3,10 +3,12 @@
 //! the curvature sampled densely from the curve's derivatives.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+
+use common::Tally;
 use curvekit::io::parse_curve;
 use proptest::prelude::*;
 use serde_json::json;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 const SAMPLES: usize = 4000;
 
@@ -106,22 +108,19 @@ proptest! {
                 "reported {} is no sign change (want {want:?})", i.u
             );
         }
-        COMPARED.fetch_add(1, Ordering::Relaxed);
-        INFLECTIONS.fetch_add(want.len(), Ordering::Relaxed);
+        COMPARED.add(1);
+        INFLECTIONS.add(want.len());
     }
 }
 
-static COMPARED: AtomicUsize = AtomicUsize::new(0);
-static INFLECTIONS: AtomicUsize = AtomicUsize::new(0);
+static COMPARED: Tally = Tally::new();
+static INFLECTIONS: Tally = Tally::new();
 
 /// Runs the property; most cases must be compared, with many inflections among them.
 #[test]
 fn inflections_match_sampled_curvature_on_many_curves() {
     inflections_match_sampled_curvature();
-    let (n, k) = (
-        COMPARED.load(Ordering::Relaxed),
-        INFLECTIONS.load(Ordering::Relaxed),
-    );
+    let (n, k) = (COMPARED.get(), INFLECTIONS.get());
     assert!(
         n >= 300 && k >= 1000,
         "only {n} cases and {k} inflections compared"

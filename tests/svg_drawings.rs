@@ -338,6 +338,25 @@ proptest! {
     }
 }
 
+/// Asserts that `p`'s antipodal pairs are certified and that the longest is as long as its
+/// diameter (sampled); the pairs, and the longest's length. `case` heads a failure's message.
+fn longest_pair_is_the_diameter(
+    p: &Profile,
+    case: &str,
+) -> (curvekit::antipodal::ProfileAntipodal, f64) {
+    let r = curvekit::antipodal::profile_antipodal(p, &Default::default()).unwrap();
+    assert!(r.certified(), "{case}{:?}", r.reason());
+    let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
+    let diameter = sampled_diameter(p);
+    testkit::assert_near!(
+        longest,
+        diameter,
+        1e-9 * diameter,
+        "{case}{longest} vs {diameter}"
+    );
+    (r, longest)
+}
+
 /// The diameter of a closed profile by dense sampling and local refinement (golden-section
 /// on each coordinate in turn from the best sampled pair): an oracle independent of the
 /// antipodal search.
@@ -396,16 +415,7 @@ fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
     let side = r#"<path d="M9.721 5.044l.813 2.846a3.75 3.75 0 0 0 2.576 2.576l2.846.813a.75.75 0 0 1 0 1.442l-2.846.813a3.75 3.75 0 0 0-2.576 2.576l-.813 2.846a.75.75 0 0 1-1.442 0l-.813-2.846a3.75 3.75 0 0 0-2.576-2.576l-2.846-.813a.75.75 0 0 1 0-1.442l2.846-.813A3.75 3.75 0 0 0 7.466 7.89l.813-2.846A.75.75 0 0 1 9 4.5a.75.75 0 0 1 .721.544Z"/>"#;
     for body in [top.as_str(), side] {
         let p = profile_of(body);
-        let r = curvekit::antipodal::profile_antipodal(&p, &Default::default()).unwrap();
-        assert!(r.certified(), "{:?}", r.reason());
-        let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
-        let diameter = sampled_diameter(&p);
-        testkit::assert_near!(
-            longest,
-            diameter,
-            1e-9 * diameter,
-            "{longest} vs {diameter}"
-        );
+        let (r, longest) = longest_pair_is_the_diameter(&p, "");
         let top_tip = r
             .pairs
             .iter()
@@ -428,16 +438,7 @@ fn a_diameter_from_a_corner_to_an_arcs_middle_is_found_and_certified() {
         "scale(-1 1)",
     ] {
         let moved = profile_of(&format!(r#"<g transform="{transform}">{top}</g>"#));
-        let r = curvekit::antipodal::profile_antipodal(&moved, &Default::default()).unwrap();
-        assert!(r.certified(), "{transform}: {:?}", r.reason());
-        let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
-        let diameter = sampled_diameter(&moved);
-        testkit::assert_near!(
-            longest,
-            diameter,
-            1e-9 * diameter,
-            "{transform}: {longest} vs {diameter}"
-        );
+        longest_pair_is_the_diameter(&moved, &format!("{transform}: "));
     }
 }
 

@@ -5,13 +5,13 @@
 
 mod common;
 
+use common::Tally;
 use common::{curvekit, fixture};
 use curvekit::curve::{ParamCurve, Profile, Segment, SegmentKind, V2};
 use curvekit::io::{read_curve_picked, CurveKind};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use std::io::Write;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 fn write_svg(body: &str) -> tempfile::NamedTempFile {
     let mut f = tempfile::Builder::new().suffix(".svg").tempfile().unwrap();
@@ -300,25 +300,22 @@ proptest! {
             }
         }
         prop_assert_eq!(got.corners().count(), want.corners().count(), "{}", d);
-        ROUND_TRIPS.fetch_add(1, Ordering::Relaxed);
+        ROUND_TRIPS.add(1);
         if want.segments().iter().any(|s| s.kind() == SegmentKind::Arc) {
-            WITH_ARCS.fetch_add(1, Ordering::Relaxed);
+            WITH_ARCS.add(1);
         }
     }
 }
 
-static ROUND_TRIPS: AtomicUsize = AtomicUsize::new(0);
-static WITH_ARCS: AtomicUsize = AtomicUsize::new(0);
+static ROUND_TRIPS: Tally = Tally::new();
+static WITH_ARCS: Tally = Tally::new();
 
 /// Runs the round trip and checks it is not vacuous: most cases make a profile, most of them
 /// with arcs.
 #[test]
 fn profiles_survive_a_round_trip_through_path_data_and_many() {
     profiles_survive_a_round_trip_through_path_data();
-    let (n, arcs) = (
-        ROUND_TRIPS.load(Ordering::Relaxed),
-        WITH_ARCS.load(Ordering::Relaxed),
-    );
+    let (n, arcs) = (ROUND_TRIPS.get(), WITH_ARCS.get());
     assert!(n >= 150 && arcs >= 100, "{n} round trips, {arcs} with arcs");
 }
 

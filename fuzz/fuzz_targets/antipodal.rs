@@ -9,7 +9,7 @@ mod common;
 
 use antipodal::{Options, Verdict};
 use arbitrary::Arbitrary;
-use common::{all_finite, tolerance, within, ArbCurve};
+use common::{accepted_and_finite, all_finite, tolerance, within, ArbCurve};
 use curvekit::antipodal;
 use libfuzzer_sys::fuzz_target;
 
@@ -44,12 +44,7 @@ fuzz_target!(|input: Input| {
     };
     let prepared = antipodal::prepare(plane);
     if let Ok(r) = prepared.inflections(&opts) {
-        assert!(
-            opts.validate().is_ok(),
-            "tol {} accepted",
-            opts.settings.tol.get()
-        );
-        assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
+        accepted_and_finite(&opts, &r);
         for i in &r.inflections {
             assert!(
                 within(i.u, domain),

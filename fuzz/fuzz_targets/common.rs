@@ -171,6 +171,37 @@ pub fn tolerance(code: u8, raw: f64) -> f64 {
 
 /// Every number in a serialized result is finite (serde_json writes a non-finite one as
 /// `null`, and the results write no other null).
+/// Asserts what every answer of the curve commands holds: its options were valid (an answer to
+/// a tolerance out of range is a defect) and its document has only finite numbers.
+pub fn accepted_and_finite<R: serde::Serialize + std::fmt::Debug>(
+    opts: &curvekit::antipodal::Options,
+    r: &R,
+) {
+    assert!(
+        opts.validate().is_ok(),
+        "tol {} accepted",
+        opts.settings.tol.get()
+    );
+    assert!(all_finite(&serde_json::to_value(r).unwrap()), "{r:?}");
+}
+
+/// A drawing read as the commands read it: as regions (an error, or regions with finite
+/// points), then as its first profile, an error (`None`) or a curve with finite points.
+pub fn read_drawing(name: &str, format: curvekit::io::DrawingFormat, data: &[u8]) -> Option<Curve> {
+    // As the regions `medial` and `offset` read (outlines nested, filled, checked for
+    // crossings): an error or regions with finite points.
+    if let Ok(region) = curvekit::io::parse_region(name, Some(format), data, None) {
+        for p in region.polyline(16) {
+            assert!(p[0].is_finite() && p[1].is_finite(), "region point {p:?}");
+        }
+    }
+    let curve = curvekit::io::parse_drawing(name, format, data, Some(0)).ok()?;
+    for p in curve.polyline(16) {
+        assert!(p[0].is_finite() && p[1].is_finite(), "point {p:?}");
+    }
+    Some(curve)
+}
+
 pub fn all_finite(v: &Value) -> bool {
     match v {
         Value::Null => false,

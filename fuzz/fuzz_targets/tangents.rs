@@ -7,7 +7,7 @@ mod common;
 
 use antipodal::Options;
 use arbitrary::Arbitrary;
-use common::{all_finite, tolerance, within, ArbCurve};
+use common::{accepted_and_finite, tolerance, within, ArbCurve};
 use curvekit::antipodal;
 use libfuzzer_sys::fuzz_target;
 
@@ -31,12 +31,7 @@ fuzz_target!(|input: Input| {
     let opts = Options::default().tolerance(tol);
     let (p1, p2) = (c1.plane_curve(), c2.plane_curve());
     if let Ok(r) = antipodal::common_tangents(p1, p2, &opts) {
-        assert!(
-            opts.validate().is_ok(),
-            "tol {} accepted",
-            opts.settings.tol.get()
-        );
-        assert!(all_finite(&serde_json::to_value(&r).unwrap()), "{r:?}");
+        accepted_and_finite(&opts, &r);
         for l in &r.lines {
             assert!(
                 within(l.s, c1.domain()) && within(l.t, c2.domain()),

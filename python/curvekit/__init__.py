@@ -404,6 +404,14 @@ def _paired(first: list[Any], second: Any, command: str) -> list[Any]:
     return [_curve(second)] * len(first)
 
 
+def _one_or_many(command: str, curve: Any, **options: Any) -> Any:
+    """The one-curve ``command`` on ``curve`` with ``options``, or, given a list of curves, on
+    each (``command_many``, in parallel)."""
+    if _is_many(curve):
+        return getattr(_curvekit, f"{command}_many")(_curves(curve), **options)
+    return getattr(_curvekit, command)(_curve(curve), **options)
+
+
 @overload
 def antipodal(curve: OneCurve, *, tol: float = ...) -> Antipodal: ...
 @overload
@@ -413,9 +421,7 @@ def antipodal(curve: Any, *, tol: float = 1e-12) -> Any:
     two-finger gripper, with the inflections and the families of non-isolated pairs. ``tol``
     is the parameter tolerance relative to the domain's length (``--tol``). Given a list of
     curves, a list of results, computed in parallel."""
-    if _is_many(curve):
-        return _curvekit.antipodal_many(_curves(curve), tol=tol)
-    return _curvekit.antipodal(_curve(curve), tol=tol)
+    return _one_or_many("antipodal", curve, tol=tol)
 
 
 @overload
@@ -425,9 +431,7 @@ def inflections(curve: Many, *, tol: float = ...) -> List[Inflections]: ...
 def inflections(curve: Any, *, tol: float = 1e-12) -> Any:
     """The inflections of a curve (and the corners of a profile); of each of a list of
     curves, in parallel."""
-    if _is_many(curve):
-        return _curvekit.inflections_many(_curves(curve), tol=tol)
-    return _curvekit.inflections(_curve(curve), tol=tol)
+    return _one_or_many("inflections", curve, tol=tol)
 
 
 @overload
@@ -517,11 +521,7 @@ def medial(
     of edges whose points carry the radius of the largest inscribed disk; ``fit`` adds each
     edge as a B-spline; ``exterior`` gives the Voronoi diagram outside instead. Given a list
     of regions, a list of axes, computed in parallel."""
-    if _is_many(region):
-        return _curvekit.medial_many(
-            _curves(region), chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol
-        )
-    return _curvekit.medial(_curve(region), chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol)
+    return _one_or_many("medial", region, chord_tol=chord_tol, fit=fit, exterior=exterior, tol=tol)
 
 
 @overload
@@ -563,18 +563,9 @@ def offset(
     its exterior axis, for distances below half its size). Given a list of regions, a list of
     results, computed in parallel."""
     listed = None if distances is None else [float(d) for d in distances]
-    if _is_many(region):
-        return _curvekit.offset_many(
-            _curves(region),
-            distance=distance,
-            distances=listed,
-            step=step,
-            outward=outward,
-            chord_tol=chord_tol,
-            tol=tol,
-        )
-    return _curvekit.offset(
-        _curve(region),
+    return _one_or_many(
+        "offset",
+        region,
         distance=distance,
         distances=listed,
         step=step,
@@ -604,8 +595,4 @@ def vcarve(
     each point at the depth ``-radius / tan(angle / 2)`` that cuts its largest disk; with
     ``max_depth``, no deeper, and a flat pass along the offset where the axis is deeper. Given
     a list of regions, a list of results, computed in parallel."""
-    if _is_many(region):
-        return _curvekit.vcarve_many(
-            _curves(region), angle=angle, max_depth=max_depth, chord_tol=chord_tol, tol=tol
-        )
-    return _curvekit.vcarve(_curve(region), angle=angle, max_depth=max_depth, chord_tol=chord_tol, tol=tol)
+    return _one_or_many("vcarve", region, angle=angle, max_depth=max_depth, chord_tol=chord_tol, tol=tol)

@@ -15,6 +15,18 @@ use std::sync::{Arc, OnceLock};
 /// tolerance of every result's polylines.
 const GEO_TOLERANCE: f64 = 1e-3;
 
+/// How far the GeoJSON of `regions` may stray from them: [`GEO_TOLERANCE`] of their size.
+pub(crate) fn geo_flatness(regions: &[&curve::Region]) -> f64 {
+    let size = curve::box_size(
+        regions
+            .iter()
+            .map(|r| r.bounding_box())
+            .reduce(curve::box_union)
+            .unwrap_or([0.0; 4]),
+    );
+    GEO_TOLERANCE * size
+}
+
 /// Where a curve came from: what it is read again from when unpickled.
 #[derive(Clone)]
 struct Source {
@@ -140,6 +152,20 @@ impl PyCurve {
         Ok(self.region()?.parts())
     }
 
+    /// The one part of the region the curve is, for the getter `getter`; refused where there
+    /// are several, each with its own `each` (`outer boundary`, `holes`).
+    fn only_part(&self, getter: &str, each: &str) -> PyResult<&curve::Region> {
+        let parts = self.parts_read().map_err(crate::to_py_err)?;
+        match parts.as_slice() {
+            [one] => Ok(*one),
+            _ => Err(PyValueError::new_err(format!(
+                "{getter}: {} has {} parts, each with its {each}: take .parts",
+                self.curve.file,
+                parts.len()
+            ))),
+        }
+    }
+
     /// The curve made of `doc`, named after this one with `what`.
     fn made(&self, what: &str, doc: &serde_json::Value) -> PyResult<PyCurve> {
         Self::from_document(format!("{} {what}", self.curve.file), doc.to_string())
@@ -247,34 +273,19 @@ impl PyCurve {
     /// multi-part input has several: see `parts`.
     #[getter]
     fn outer(&self) -> PyResult<PyCurve> {
-        let parts = self.parts_read().map_err(crate::to_py_err)?;
-        match parts.as_slice() {
-            [one] => self.made("outer", &io::profile_document(one.outer())),
-            _ => Err(PyValueError::new_err(format!(
-                "outer: {} has {} parts, each with its outer boundary: take .parts",
-                self.curve.file,
-                parts.len()
-            ))),
-        }
+        let one = self.only_part("outer", "outer boundary")?;
+        self.made("outer", &io::profile_document(one.outer()))
     }
 
     /// The holes of the region the curve is, as closed profiles (none for a closed curve).
     #[getter]
     fn holes(&self) -> PyResult<Vec<PyCurve>> {
-        let parts = self.parts_read().map_err(crate::to_py_err)?;
-        match parts.as_slice() {
-            [one] => one
-                .holes()
-                .iter()
-                .enumerate()
-                .map(|(k, h)| self.made(&format!("hole {k}"), &io::profile_document(h)))
-                .collect(),
-            _ => Err(PyValueError::new_err(format!(
-                "holes: {} has {} parts, each with its holes: take .parts",
-                self.curve.file,
-                parts.len()
-            ))),
-        }
+        let one = self.only_part("holes", "holes")?;
+        one.holes()
+            .iter()
+            .enumerate()
+            .map(|(k, h)| self.made(&format!("hole {k}"), &io::profile_document(h)))
+            .collect()
     }
 
     /// The disjoint regions of the curve, each a region (one for a region or a closed curve).
@@ -295,14 +306,7 @@ impl PyCurve {
     fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let geometry = if self.curve.is_closed() {
             let parts = self.parts_read().map_err(crate::to_py_err)?;
-            let size = curve::box_size(
-                parts
-                    .iter()
-                    .map(|r| r.bounding_box())
-                    .reduce(curve::box_union)
-                    .unwrap_or([0.0; 4]),
-            );
-            io::regions_geometry(&parts, GEO_TOLERANCE * size)
+            io::regions_geometry(&parts, geo_flatness(&parts))
         } else {
             let profile = match &self.curve.shape {
                 CurveKind::Profile(p) => (**p).clone(),
@@ -322,11 +326,7 @@ impl PyCurve {
             "Curve(kind={:?}, name={:?}, closed={}, domain=({a}, {b}))",
             self.curve.kind(),
             self.curve.file,
-            if self.curve.is_closed() {
-                "True"
-            } else {
-                "False"
-            }
+            crate::results::py_bool(self.curve.is_closed())
         )
     }
 

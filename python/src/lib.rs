@@ -122,53 +122,87 @@ enum OneCurve<'py> {
 }
 
 impl OneCurve<'_> {
-    /// Runs `warm` on the prepared curve, or `cold` on the curve.
+    /// Runs `command` with `opts`: warm on the prepared curve, cold on the curve.
     fn run<T: Send>(
         &self,
         py: Python<'_>,
-        warm: impl FnOnce(&commands::PreparedCurve) -> Result<T, CommandError> + Send,
-        cold: impl FnOnce(&curvekit::io::Curve) -> Result<T, CommandError> + Send,
+        command: &OneCurveCommand<T>,
+        opts: &::antipodal::Options,
     ) -> PyResult<(T, commands::CurveSummary)> {
         match self {
             OneCurve::Prepared(p) => {
                 let prepared = p.get().prepared();
-                let found = detached(py, || warm(prepared))?;
+                let found = detached(py, || (command.warm)(prepared, opts))?;
                 Ok((found, commands::CurveSummary::of(prepared.curve())))
             }
             OneCurve::Curve(c) => {
                 let c = c.get();
-                Ok((detached(py, || cold(c.curve()))?, c.summary()))
+                Ok((
+                    detached(py, || (command.cold)(c.curve(), opts))?,
+                    c.summary(),
+                ))
             }
         }
     }
 }
 
-/// The antipodal point pairs of a closed curve or profile (Jia 2004): grasps of a two-finger
-/// gripper. `tol` is the parameter tolerance relative to the domain's length.
-#[pyfunction(name = "antipodal")]
-#[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
-fn antipodal_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyAntipodal> {
-    let opts = curve_options(tol).map_err(to_py_err)?;
-    let (found, summary) = curve.run(
-        py,
-        |p| p.antipodal(&opts),
-        |c| commands::antipodal(c, &opts),
-    )?;
-    Ok(PyAntipodal::new(found, vec![summary]))
+/// A one-curve command: on a curve prepared (warm), and on a curve (prepared for the run).
+pub(crate) struct OneCurveCommand<T> {
+    warm: fn(&commands::PreparedCurve, &::antipodal::Options) -> Result<T, CommandError>,
+    cold: fn(&curvekit::io::Curve, &::antipodal::Options) -> Result<T, CommandError>,
 }
 
-/// The inflections of a curve (and the corners of a profile).
-#[pyfunction(name = "inflections")]
-#[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
-fn inflections_of(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<PyInflections> {
-    let opts = curve_options(tol).map_err(to_py_err)?;
-    let (found, summary) = curve.run(
-        py,
-        |p| p.inflections(&opts),
-        |c| commands::inflections(c, &opts),
-    )?;
-    Ok(PyInflections::new(found, vec![summary]))
+/// `antipodal`, on a curve prepared or not.
+pub(crate) const ANTIPODAL_WARM_OR_COLD: OneCurveCommand<commands::AntipodalFound> =
+    OneCurveCommand {
+        warm: commands::PreparedCurve::antipodal,
+        cold: commands::antipodal,
+    };
+
+/// `inflections`, on a curve prepared or not.
+pub(crate) const INFLECTIONS_WARM_OR_COLD: OneCurveCommand<commands::InflectionsFound> =
+    OneCurveCommand {
+        warm: commands::PreparedCurve::inflections,
+        cold: commands::inflections,
+    };
+
+/// A one-curve command's two Python functions, alike but for the command and its result
+/// class: `$single` (`$name` in Python) on one curve, prepared or not, and `$many` on a list
+/// of them, computed in parallel.
+macro_rules! one_curve_functions {
+    ($(#[doc = $doc:literal])* $name:literal: $single:ident, $many:ident, $command:ident => $class:ident) => {
+        $(#[doc = $doc])*
+        #[pyfunction(name = $name)]
+        #[pyo3(signature = (curve, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
+        fn $single(py: Python<'_>, curve: OneCurve<'_>, tol: f64) -> PyResult<$class> {
+            let opts = curve_options(tol).map_err(to_py_err)?;
+            let (found, summary) = curve.run(py, &$command, &opts)?;
+            Ok($class::new(found, vec![summary]))
+        }
+
+        #[doc = concat!("`", $name, "` of each curve.")]
+        #[pyfunction]
+        #[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
+        fn $many(
+            py: Python<'_>,
+            curves: Vec<Bound<'_, PyAny>>,
+            tol: f64,
+        ) -> PyResult<Vec<$class>> {
+            many::one_curve_each(py, &curves, tol, &$command, $class::new)
+        }
+    };
 }
+
+one_curve_functions!(
+    /// The antipodal point pairs of a closed curve or profile (Jia 2004): grasps of a two-finger
+    /// gripper. `tol` is the parameter tolerance relative to the domain's length.
+    "antipodal": antipodal_of, antipodal_many, ANTIPODAL_WARM_OR_COLD => PyAntipodal
+);
+
+one_curve_functions!(
+    /// The inflections of a curve (and the corners of a profile).
+    "inflections": inflections_of, inflections_many, INFLECTIONS_WARM_OR_COLD => PyInflections
+);
 
 /// The lines tangent to two curves.
 #[pyfunction(name = "tangents")]
@@ -440,6 +474,8 @@ fn _curvekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     curves::register(m)?;
     m.add_function(wrap_pyfunction!(antipodal_of, m)?)?;
     m.add_function(wrap_pyfunction!(inflections_of, m)?)?;
+    m.add_function(wrap_pyfunction!(antipodal_many, m)?)?;
+    m.add_function(wrap_pyfunction!(inflections_many, m)?)?;
     m.add_function(wrap_pyfunction!(tangents_of, m)?)?;
     m.add_function(wrap_pyfunction!(bisector_of, m)?)?;
     m.add_function(wrap_pyfunction!(medial_of, m)?)?;

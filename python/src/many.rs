@@ -4,8 +4,8 @@
 
 use crate::curves::{PyCurve, PyPrepared};
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
-use crate::results::{PyAntipodal, PyBisector, PyInflections, PyTangents};
-use crate::{bisector_method, bisector_options, CurvekitError, InputError};
+use crate::results::{PyBisector, PyTangents};
+use crate::{bisector_method, bisector_options, CurvekitError, InputError, OneCurveCommand};
 use curvekit::commands::{self, CommandError, CurveSummary, FailureKind};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -95,63 +95,53 @@ fn plain<'a>(curves: &'a [Bound<'_, PyCurve>]) -> Vec<&'a PyCurve> {
 }
 
 impl Item<'_> {
-    /// Runs `warm` on a prepared curve, or `cold` on a curve (prepared for this run); the
-    /// result with the curve's summary.
+    /// Runs `command` with `opts`: warm on a prepared curve, cold on a curve (prepared for
+    /// this run); the result with the curve's summary.
     fn run<T>(
         &self,
-        warm: impl Fn(&commands::PreparedCurve) -> Result<T, CommandError>,
-        cold: impl Fn(&curvekit::io::Curve) -> Result<T, CommandError>,
+        command: &OneCurveCommand<T>,
+        opts: &::antipodal::Options,
     ) -> Result<(T, CurveSummary), CommandError> {
         Ok(match self {
-            Item::Prepared(p) => (warm(p.prepared())?, CurveSummary::of(p.prepared().curve())),
-            Item::Curve(c) => (cold(c.curve())?, c.summary()),
+            Item::Prepared(p) => (
+                (command.warm)(p.prepared(), opts)?,
+                CurveSummary::of(p.prepared().curve()),
+            ),
+            Item::Curve(c) => ((command.cold)(c.curve(), opts)?, c.summary()),
         })
     }
 }
 
-/// `antipodal` of each curve.
-#[pyfunction]
-#[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
-fn antipodal_many(
-    py: Python<'_>,
-    curves: Vec<Bound<'_, PyAny>>,
-    tol: f64,
-) -> PyResult<Vec<PyAntipodal>> {
-    let items = items(&curves)?;
-    let Some(opts) = built(items.len(), crate::curve_options(tol))? else {
-        return Ok(Vec::new());
-    };
-    let found = each(py, &items, |item| {
-        item.run(|p| p.antipodal(&opts), |c| commands::antipodal(c, &opts))
-    })?;
-    Ok(found
-        .into_iter()
-        .map(|(f, s)| PyAntipodal::new(f, vec![s]))
-        .collect())
+/// The answers of a list, each of one curve, as results of one class (its `new`).
+fn classes<T, C>(found: Vec<(T, CurveSummary)>, class: fn(T, Vec<CurveSummary>) -> C) -> Vec<C> {
+    found.into_iter().map(|(f, s)| class(f, vec![s])).collect()
 }
 
-/// `inflections` of each curve.
-#[pyfunction]
-#[pyo3(signature = (curves, *, tol = curvekit::numeric::tolerance::DEFAULT_PARAM_TOL))]
-fn inflections_many(
+/// A one-curve command on each of `curves` (curves and prepared curves), as results of
+/// `class`.
+pub(crate) fn one_curve_each<T: Send, C>(
     py: Python<'_>,
-    curves: Vec<Bound<'_, PyAny>>,
+    curves: &[Bound<'_, PyAny>],
     tol: f64,
-) -> PyResult<Vec<PyInflections>> {
-    let items = items(&curves)?;
+    command: &OneCurveCommand<T>,
+    class: fn(T, Vec<CurveSummary>) -> C,
+) -> PyResult<Vec<C>> {
+    let items = items(curves)?;
     let Some(opts) = built(items.len(), crate::curve_options(tol))? else {
         return Ok(Vec::new());
     };
-    let found = each(py, &items, |item| {
-        item.run(
-            |p| p.inflections(&opts),
-            |c| commands::inflections(c, &opts),
-        )
-    })?;
-    Ok(found
-        .into_iter()
-        .map(|(f, s)| PyInflections::new(f, vec![s]))
-        .collect())
+    let found = each(py, &items, |item| item.run(command, &opts))?;
+    Ok(classes(found, class))
+}
+
+/// Two lists that pair up, refused where their lengths differ.
+fn paired_lengths(command: &str, first: usize, second: usize) -> PyResult<()> {
+    if first == second {
+        return Ok(());
+    }
+    Err(PyValueError::new_err(format!(
+        "{command}: {first} curves against {second}: the lists pair up, so their lengths must match"
+    )))
 }
 
 /// `tangents` of each pair `(curves1[k], curves2[k])`.
@@ -163,13 +153,7 @@ fn tangents_many(
     curves2: Vec<Bound<'_, PyCurve>>,
     tol: f64,
 ) -> PyResult<Vec<PyTangents>> {
-    if curves1.len() != curves2.len() {
-        return Err(PyValueError::new_err(format!(
-            "tangents: {} curves against {}: the lists pair up, so their lengths must match",
-            curves1.len(),
-            curves2.len()
-        )));
-    }
+    paired_lengths("tangents", curves1.len(), curves2.len())?;
     let Some(opts) = built(curves1.len(), crate::curve_options(tol))? else {
         return Ok(Vec::new());
     };
@@ -201,14 +185,10 @@ fn bisector_many(
     let method = bisector_method(method)?;
     let first = plain(&curves1);
     let second: Vec<Option<&PyCurve>> = match &curves2 {
-        Some(list) if list.len() != first.len() => {
-            return Err(PyValueError::new_err(format!(
-                "bisector: {} curves against {}: the lists pair up, so their lengths must match",
-                first.len(),
-                list.len()
-            )))
+        Some(list) => {
+            paired_lengths("bisector", first.len(), list.len())?;
+            plain(list).into_iter().map(Some).collect()
         }
-        Some(list) => plain(list).into_iter().map(Some).collect(),
         None => vec![None; first.len()],
     };
     let pairs: Vec<(&PyCurve, Option<&PyCurve>)> = first.into_iter().zip(second).collect();
@@ -249,10 +229,7 @@ fn medial_many(
         return Ok(Vec::new());
     };
     let found = each(py, &plain(&regions), |c| crate::medial_work(c, &opts))?;
-    Ok(found
-        .into_iter()
-        .map(|(f, s)| PyMedialAxis::new(f, vec![s]))
-        .collect())
+    Ok(classes(found, PyMedialAxis::new))
 }
 
 /// `offset` of each region.
@@ -280,10 +257,7 @@ fn offset_many(
     let found = each(py, &plain(&regions), |c| {
         crate::offset_work(c, &asked, &opts, &medial_opts)
     })?;
-    Ok(found
-        .into_iter()
-        .map(|(f, s)| PyOffsets::new(f, vec![s]))
-        .collect())
+    Ok(classes(found, PyOffsets::new))
 }
 
 /// `vcarve` of each region.
@@ -305,16 +279,11 @@ fn vcarve_many(
     let found = each(py, &plain(&regions), |c| {
         crate::vcarve_work(c, &opts, &medial_opts)
     })?;
-    Ok(found
-        .into_iter()
-        .map(|(f, s)| PyVCarve::new(f, vec![s]))
-        .collect())
+    Ok(classes(found, PyVCarve::new))
 }
 
 /// Registers the vectorised functions.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(antipodal_many, m)?)?;
-    m.add_function(wrap_pyfunction!(inflections_many, m)?)?;
     m.add_function(wrap_pyfunction!(tangents_many, m)?)?;
     m.add_function(wrap_pyfunction!(bisector_many, m)?)?;
     m.add_function(wrap_pyfunction!(medial_many, m)?)?;

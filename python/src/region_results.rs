@@ -2,7 +2,7 @@
 //! their fields, the tool's `--json` document, and the files CAD and CAM programs read (DXF,
 //! SVG paths), as the tool writes them.
 
-use crate::results::{points2, result_class, Kept, PickledCurve};
+use crate::results::{points2, result_class, verdict_repr, Kept, PickledCurve};
 use curvekit::commands::{json_document_of, CurveSummary};
 use curvekit::export::{dxf_file, svg_paths, ExportError};
 use medial::MedialAxis;
@@ -17,7 +17,15 @@ fn export_error(e: ExportError) -> PyErr {
     crate::CurvekitError::new_err(e.to_string())
 }
 
-result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
+/// A DXF file as written, as Python's bytes.
+fn dxf_bytes<'py>(
+    py: Python<'py>,
+    written: Result<Vec<u8>, ExportError>,
+) -> PyResult<Bound<'py, PyBytes>> {
+    Ok(PyBytes::new(py, &written.map_err(export_error)?))
+}
+
+result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict, {
     /// The nodes' points, an `(n, 2)` array (row `i` is node `i`).
     #[getter]
     fn nodes<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
@@ -103,9 +111,10 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict = "Whether the res
     /// The axis as a DXF file's bytes, as `curvekit medial --dxf` writes it (R2010: edges as
     /// splines when fitted, else polylines; nodes as points on a layer per kind).
     fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
-        let units = self.units();
-        let bytes = dxf_file::medial_dxf(&self.found, units.as_deref()).map_err(export_error)?;
-        Ok(PyBytes::new(py, &bytes))
+        dxf_bytes(
+            py,
+            dxf_file::medial_dxf(&self.found, self.units().as_deref()),
+        )
     }
 
     /// The axis as plain SVG paths in the input's coordinates, as `--svg-paths` writes it.
@@ -114,20 +123,16 @@ result_class!(PyMedialAxis, "MedialAxis", MedialAxis, verdict = "Whether the res
     }
 
     fn __repr__(&self) -> String {
-        format!(
-            "MedialAxis({} nodes, {} edges, certified={})",
+        let counts = format!(
+            "{} nodes, {} edges",
             self.found.nodes.len(),
-            self.found.edges.len(),
-            if curvekit::numeric::certificate::Verdict::certified(&self.found) {
-                "True"
-            } else {
-                "False"
-            }
-        )
+            self.found.edges.len()
+        );
+        verdict_repr("MedialAxis", &counts, &self.found)
     }
 });
 
-result_class!(PyOffsets, "Offsets", Offsets, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
+result_class!(PyOffsets, "Offsets", Offsets, verdict, {
     /// The distances, in the order asked, an `(m,)` array.
     #[getter]
     fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
@@ -195,7 +200,8 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict = "Whether the result is ce
         let geometry = match refs.as_slice() {
             [] => serde_json::json!({"type": "MultiPolygon", "coordinates": []}),
             _ => {
-                let mut g = curvekit::io::regions_geometry(&refs, flatness(&refs));
+                let mut g =
+                    curvekit::io::regions_geometry(&refs, crate::curves::geo_flatness(&refs));
                 g["type"] = "MultiPolygon".into();
                 if refs.len() == 1 {
                     g["coordinates"] = serde_json::json!([g["coordinates"].clone()]);
@@ -226,9 +232,10 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict = "Whether the result is ce
     /// The offsets as a DXF file's bytes, as `curvekit offset --dxf` writes it (R2010: lines,
     /// arcs and splines as computed, a layer per distance).
     fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
-        let units = self.units();
-        let bytes = dxf_file::offsets_dxf(&self.found, units.as_deref()).map_err(export_error)?;
-        Ok(PyBytes::new(py, &bytes))
+        dxf_bytes(
+            py,
+            dxf_file::offsets_dxf(&self.found, self.units().as_deref()),
+        )
     }
 
     /// The offsets as plain SVG paths in the input's coordinates, as `--svg-paths` writes it.
@@ -237,19 +244,12 @@ result_class!(PyOffsets, "Offsets", Offsets, verdict = "Whether the result is ce
     }
 
     fn __repr__(&self) -> String {
-        format!(
-            "Offsets({} distances, certified={})",
-            self.found.offsets.len(),
-            if curvekit::numeric::certificate::Verdict::certified(&self.found) {
-                "True"
-            } else {
-                "False"
-            }
-        )
+        let counts = format!("{} distances", self.found.offsets.len());
+        verdict_repr("Offsets", &counts, &self.found)
     }
 });
 
-result_class!(PyVCarve, "VCarve", VCarve, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
+result_class!(PyVCarve, "VCarve", VCarve, verdict, {
     /// The bit's included angle (degrees).
     #[getter]
     fn angle(&self) -> f64 {
@@ -298,9 +298,10 @@ result_class!(PyVCarve, "VCarve", VCarve, verdict = "Whether the result is certi
     /// The paths as a DXF file's bytes, as `curvekit vcarve --dxf` writes it (3D polylines,
     /// the flat passes at their depth).
     fn dxf<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
-        let units = self.units();
-        let bytes = dxf_file::vcarve_dxf(&self.found, units.as_deref()).map_err(export_error)?;
-        Ok(PyBytes::new(py, &bytes))
+        dxf_bytes(
+            py,
+            dxf_file::vcarve_dxf(&self.found, self.units().as_deref()),
+        )
     }
 
     fn __len__(&self) -> usize {
@@ -308,16 +309,12 @@ result_class!(PyVCarve, "VCarve", VCarve, verdict = "Whether the result is certi
     }
 
     fn __repr__(&self) -> String {
-        format!(
-            "VCarve({} paths, {} flats, certified={})",
+        let counts = format!(
+            "{} paths, {} flats",
             self.found.paths.len(),
-            self.found.flats.len(),
-            if curvekit::numeric::certificate::Verdict::certified(&self.found) {
-                "True"
-            } else {
-                "False"
-            }
-        )
+            self.found.flats.len()
+        );
+        verdict_repr("VCarve", &counts, &self.found)
     }
 });
 
@@ -340,16 +337,4 @@ impl PyOffsets {
             .map_err(|e| crate::CurvekitError::new_err(format!("the offset loops: {e}")))?;
         Ok((offset, regions))
     }
-}
-
-/// The flattening tolerance of regions' GeoJSON: the chord tolerance (1e-3) of their size.
-fn flatness(regions: &[&curve::Region]) -> f64 {
-    let size = curve::box_size(
-        regions
-            .iter()
-            .map(|r| r.bounding_box())
-            .reduce(curve::box_union)
-            .unwrap_or([0.0; 4]),
-    );
-    1e-3 * size
 }

@@ -22,29 +22,25 @@ fn _result_from_json(
     fn make<T: Kept>(variant: &str, found: &str) -> serde_json::Result<T> {
         T::from_document(variant, found)
     }
-    let object = match class {
-        "Antipodal" => PyAntipodal::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Inflections" => PyInflections::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Tangents" => PyTangents::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Bisector" => PyBisector::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "MedialAxis" => PyMedialAxis::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "Offsets" => PyOffsets::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        "VCarve" => PyVCarve::new(make(variant, found).map_err(bad)?, curves)
-            .into_pyobject(py)?
-            .into_any(),
-        other => return Err(PyValueError::new_err(format!("no result class {other:?}"))),
+    // (Each class by its Python name: the arm that rebuilds it by its `new`.)
+    macro_rules! rebuilt {
+        ($($name:literal => $class:ident),* $(,)?) => {
+            match class {
+                $($name => $class::new(make(variant, found).map_err(bad)?, curves)
+                    .into_pyobject(py)?
+                    .into_any(),)*
+                other => return Err(PyValueError::new_err(format!("no result class {other:?}"))),
+            }
+        };
+    }
+    let object = rebuilt! {
+        "Antipodal" => PyAntipodal,
+        "Inflections" => PyInflections,
+        "Tangents" => PyTangents,
+        "Bisector" => PyBisector,
+        "MedialAxis" => PyMedialAxis,
+        "Offsets" => PyOffsets,
+        "VCarve" => PyVCarve,
     };
     Ok(object.unbind())
 }

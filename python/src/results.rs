@@ -5,6 +5,7 @@
 use curvekit::commands::{
     json_document_of, AntipodalFound, BisectorFound, CurveSummary, InflectionsFound, TangentsFound,
 };
+use curvekit::numeric::certificate::Verdict;
 use medial::MedialAxis;
 use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
 use offset::{Offsets, VCarve};
@@ -88,6 +89,35 @@ fn pairs2<'py>(py: Python<'py>, pairs: &[[[f64; 2]; 2]]) -> Bound<'py, PyArray3<
         .unwrap_or_else(|_| PyArray3::zeros(py, [0, 2, 2], false))
 }
 
+/// `True` or `False`, as Python spells a truth value in a repr.
+pub(crate) fn py_bool(b: bool) -> &'static str {
+    if b {
+        "True"
+    } else {
+        "False"
+    }
+}
+
+/// A result's repr: its class, what it counts, and whether it is certified
+/// (`Tangents(2 lines, certified=True)`).
+pub(crate) fn verdict_repr(class: &str, counts: &str, found: &impl Verdict) -> String {
+    format!(
+        "{class}({counts}, certified={})",
+        py_bool(found.certified())
+    )
+}
+
+/// `$body` on whichever result a two-way result `$found` (of enum `$two_ways`) holds, a
+/// curve's or a profile's: for the fields the two share, which the getters read alike.
+macro_rules! either {
+    ($found:expr, $two_ways:ident, $f:ident => $body:expr) => {
+        match $found {
+            $two_ways::Curve($f) => $body,
+            $two_ways::Profile($f) => $body,
+        }
+    };
+}
+
 /// The common methods of a result class: its document, pickling, and the shared fields.
 /// A result's curve as it pickles: its summary with what its drawing said (which the
 /// summary's JSON leaves to the result's own fields).
@@ -121,10 +151,7 @@ pub(crate) trait Completeness {
 
 impl Completeness for AntipodalFound {
     fn complete(&self) -> bool {
-        match self {
-            AntipodalFound::Curve(f) => f.complete,
-            AntipodalFound::Profile(f) => f.complete,
-        }
+        either!(self, AntipodalFound, f => f.complete)
     }
 }
 
@@ -140,6 +167,12 @@ macro_rules! complete_field {
 complete_field!(MedialAxis, Offsets, VCarve);
 
 macro_rules! result_class {
+    // (A result with `certified`, `complete` and `reason`, documented as every region's is.)
+    ($class:ident, $name:literal, $found:ty, verdict, { $($extra:tt)* }) => {
+        result_class!($class, $name, $found, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
+            $($extra)*
+        });
+    };
     // (A result with `certified`, `complete` and `reason`: their getters, the verdict's from
     // the one `Verdict` trait every result answers it by.)
     ($class:ident, $name:literal, $found:ty, verdict = $doc:literal, { $($extra:tt)* }) => {
@@ -298,10 +331,7 @@ result_class!(
         /// The inflections' parameters, an `(m,)` array.
         #[getter]
         fn inflections<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-            let list = match &self.found {
-                AntipodalFound::Curve(f) => &f.inflections,
-                AntipodalFound::Profile(f) => &f.inflections,
-            };
+            let list = either!(&self.found, AntipodalFound, f => &f.inflections);
             PyArray1::from_vec(py, list.iter().map(|i| i.u).collect())
         }
 
@@ -309,10 +339,7 @@ result_class!(
         /// array.
         #[getter]
         fn families<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
-            let ranges: Vec<[[f64; 2]; 2]> = match &self.found {
-                AntipodalFound::Curve(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
-                AntipodalFound::Profile(f) => f.families.iter().map(|g| [g.s, g.t]).collect(),
-            };
+            let ranges: Vec<[[f64; 2]; 2]> = either!(&self.found, AntipodalFound, f => f.families.iter().map(|g| [g.s, g.t]).collect());
             pairs2(py, &ranges)
         }
 
@@ -321,15 +348,8 @@ result_class!(
         }
 
         fn __repr__(&self) -> String {
-            format!(
-                "Antipodal({} pairs, certified={})",
-                self.pair_fields().len(),
-                if curvekit::numeric::certificate::Verdict::certified(&self.found) {
-                    "True"
-                } else {
-                    "False"
-                }
-            )
+            let counts = format!("{} pairs", self.pair_fields().len());
+            verdict_repr("Antipodal", &counts, &self.found)
         }
     }
 );
@@ -337,18 +357,11 @@ result_class!(
 impl PyAntipodal {
     /// Each pair's `([s, t], [p, q], distance)`, for both variants.
     fn pair_fields(&self) -> Vec<([f64; 2], [[f64; 2]; 2], f64)> {
-        match &self.found {
-            AntipodalFound::Curve(f) => f
-                .pairs
-                .iter()
-                .map(|p| ([p.s, p.t], [p.p, p.q], p.distance))
-                .collect(),
-            AntipodalFound::Profile(f) => f
-                .pairs
-                .iter()
-                .map(|p| ([p.s, p.t], [p.p, p.q], p.distance))
-                .collect(),
-        }
+        either!(&self.found, AntipodalFound, f => f
+            .pairs
+            .iter()
+            .map(|p| ([p.s, p.t], [p.p, p.q], p.distance))
+            .collect())
     }
 }
 
@@ -385,25 +398,15 @@ result_class!(
         }
 
         fn __repr__(&self) -> String {
-            format!(
-                "Inflections({} inflections, certified={})",
-                self.list().len(),
-                if curvekit::numeric::certificate::Verdict::certified(&self.found) {
-                    "True"
-                } else {
-                    "False"
-                }
-            )
+            let counts = format!("{} inflections", self.list().len());
+            verdict_repr("Inflections", &counts, &self.found)
         }
     }
 );
 
 impl PyInflections {
     fn list(&self) -> &[antipodal::Inflection] {
-        match &self.found {
-            InflectionsFound::Curve(f) => &f.inflections,
-            InflectionsFound::Profile(f) => &f.inflections,
-        }
+        either!(&self.found, InflectionsFound, f => &f.inflections)
     }
 }
 
@@ -430,25 +433,15 @@ result_class!(
         }
 
         fn __repr__(&self) -> String {
-            format!(
-                "Tangents({} lines, certified={})",
-                self.lines().len(),
-                if curvekit::numeric::certificate::Verdict::certified(&self.found) {
-                    "True"
-                } else {
-                    "False"
-                }
-            )
+            let counts = format!("{} lines", self.lines().len());
+            verdict_repr("Tangents", &counts, &self.found)
         }
     }
 );
 
 impl PyTangents {
     fn lines(&self) -> Vec<([f64; 2], [[f64; 2]; 2])> {
-        match &self.found {
-            TangentsFound::Curve(f) => f.lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect(),
-            TangentsFound::Profile(f) => f.lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect(),
-        }
+        either!(&self.found, TangentsFound, f => f.lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect())
     }
 }
 
@@ -456,10 +449,7 @@ result_class!(PyBisector, "Bisector", BisectorFound, {
     /// No search limit was hit.
     #[getter]
     fn complete(&self) -> bool {
-        match &self.found {
-            BisectorFound::Curve(f) => f.complete,
-            BisectorFound::Profile(f) => f.complete,
-        }
+        either!(&self.found, BisectorFound, f => f.complete)
     }
 
     /// The branches, each `(tr, xy)`: the foot-point parameters `(t, r)` and the bisector
@@ -471,17 +461,11 @@ result_class!(PyBisector, "Bisector", BisectorFound, {
         py: Python<'py>,
     ) -> Vec<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
         let pair = |tr: &[[f64; 2]], xy: &[[f64; 2]]| (points2(py, tr), points2(py, xy));
-        match &self.found {
-            BisectorFound::Curve(f) => f.branches.iter().map(|b| pair(&b.tr, &b.xy)).collect(),
-            BisectorFound::Profile(f) => f.branches.iter().map(|b| pair(&b.tr, &b.xy)).collect(),
-        }
+        either!(&self.found, BisectorFound, f => f.branches.iter().map(|b| pair(&b.tr, &b.xy)).collect())
     }
 
     fn __len__(&self) -> usize {
-        match &self.found {
-            BisectorFound::Curve(f) => f.branches.len(),
-            BisectorFound::Profile(f) => f.branches.len(),
-        }
+        either!(&self.found, BisectorFound, f => f.branches.len())
     }
 
     fn __repr__(&self) -> String {

@@ -2,64 +2,81 @@
 //! time and draw, report.
 
 use super::report::{self, draw_curve};
-use super::{print_out, timing, write_file, BisectorArgs, Common, Failure};
+use super::timing::Stats;
+use super::{timing, BisectorArgs, Common, Failure};
 use curvekit::commands::{
-    self, json_document, AntipodalFound, BisectorFound, InflectionsFound, PreparedCurve,
+    self, AntipodalFound, BisectorFound, CommandError, InflectionsFound, PreparedCurve,
     TangentsFound,
 };
 use curvekit::io::{Curve, CurveKind};
 use curvekit::svg::{Figure, Mark, DOT};
 use numeric::certificate::Verdict;
+use serde::Serialize;
 use std::path::Path;
 use std::sync::Arc;
 
 pub(super) fn run_inflections(path: &Path, common: &Common) -> Result<(), Failure> {
-    let opts = common.options()?;
-    let curve = Arc::new(common.read_curve(path)?);
-    let prepared = PreparedCurve::new(curve.clone(), "inflections")?;
-    let found = prepared.inflections(&opts)?;
-    let stats = common.time.then(|| {
-        timing::measure_both(
-            || prepared.inflections(&opts),
-            || commands::inflections(&curve, &opts),
-        )
-    });
-    if let Some(svg) = &common.svg {
-        write_file(svg, inflections_figure(&curve, &found))?;
-    }
-    print_out(&if common.json {
-        json_document(&found, &[&curve], stats.as_ref())
-    } else {
-        match &found {
-            InflectionsFound::Curve(f) => report::inflections_text(&curve, f, stats.as_ref()),
-            InflectionsFound::Profile(f) => {
-                report::profile_inflections_text(&curve, f, stats.as_ref())
-            }
-        }
-    })
+    run_one_curve(
+        path,
+        common,
+        OneCurve {
+            name: "inflections",
+            warm: PreparedCurve::inflections,
+            cold: commands::inflections,
+            figure: inflections_figure,
+            text: |curve, found, stats| match found {
+                InflectionsFound::Curve(f) => report::inflections_text(curve, f, stats),
+                InflectionsFound::Profile(f) => report::profile_inflections_text(curve, f, stats),
+            },
+        },
+    )
 }
 
 pub(super) fn run_antipodal(path: &Path, common: &Common) -> Result<(), Failure> {
+    run_one_curve(
+        path,
+        common,
+        OneCurve {
+            name: "antipodal",
+            warm: PreparedCurve::antipodal,
+            cold: commands::antipodal,
+            figure: antipodal_figure,
+            text: |curve, found, stats| match found {
+                AntipodalFound::Curve(f) => report::antipodal_text(curve, f, stats),
+                AntipodalFound::Profile(f) => report::profile_antipodal_text(curve, f, stats),
+            },
+        },
+    )
+}
+
+/// A one-curve command as the tool runs it: computed on the curve prepared (warm) and from
+/// the curve read (cold, timed beside it), drawn and reported.
+struct OneCurve<F> {
+    name: &'static str,
+    warm: fn(&PreparedCurve, &antipodal::Options) -> Result<F, CommandError>,
+    cold: fn(&Curve, &antipodal::Options) -> Result<F, CommandError>,
+    figure: fn(&Curve, &F) -> String,
+    text: fn(&Curve, &F, Option<&Stats>) -> String,
+}
+
+fn run_one_curve<F: Serialize>(
+    path: &Path,
+    common: &Common,
+    command: OneCurve<F>,
+) -> Result<(), Failure> {
     let opts = common.options()?;
     let curve = Arc::new(common.read_curve(path)?);
-    let prepared = PreparedCurve::new(curve.clone(), "antipodal")?;
-    let found = prepared.antipodal(&opts)?;
+    let prepared = PreparedCurve::new(curve.clone(), command.name)?;
+    let found = (command.warm)(&prepared, &opts)?;
     let stats = common.time.then(|| {
         timing::measure_both(
-            || prepared.antipodal(&opts),
-            || commands::antipodal(&curve, &opts),
+            || (command.warm)(&prepared, &opts),
+            || (command.cold)(&curve, &opts),
         )
     });
-    if let Some(svg) = &common.svg {
-        write_file(svg, antipodal_figure(&curve, &found))?;
-    }
-    print_out(&if common.json {
-        json_document(&found, &[&curve], stats.as_ref())
-    } else {
-        match &found {
-            AntipodalFound::Curve(f) => report::antipodal_text(&curve, f, stats.as_ref()),
-            AntipodalFound::Profile(f) => report::profile_antipodal_text(&curve, f, stats.as_ref()),
-        }
+    common.draw(|| Ok((command.figure)(&curve, &found)))?;
+    common.report(&found, &[&curve], stats.as_ref(), || {
+        (command.text)(&curve, &found, stats.as_ref())
     })
 }
 
@@ -78,16 +95,10 @@ pub(super) fn run_tangents(path1: &Path, path2: &Path, common: &Common) -> Resul
         }
         TangentsFound::Profile(_) => timing::measure_both(run, run),
     });
-    if let Some(svg) = &common.svg {
-        write_file(svg, tangents_figure(&both, &found))?;
-    }
-    print_out(&if common.json {
-        json_document(&found, &both, stats.as_ref())
-    } else {
-        match &found {
-            TangentsFound::Curve(f) => report::tangents_text(&both, f, stats.as_ref()),
-            TangentsFound::Profile(f) => report::profile_tangents_text(&both, f, stats.as_ref()),
-        }
+    common.draw(|| Ok(tangents_figure(&both, &found)))?;
+    common.report(&found, &both, stats.as_ref(), || match &found {
+        TangentsFound::Curve(f) => report::tangents_text(&both, f, stats.as_ref()),
+        TangentsFound::Profile(f) => report::profile_tangents_text(&both, f, stats.as_ref()),
     })
 }
 
@@ -108,19 +119,11 @@ pub(super) fn run_bisector(
     let c1 = common.read_curve(path1)?;
     let c2 = path2.map(|p| common.read_curve(p)).transpose()?;
     let curves: Vec<&Curve> = std::iter::once(&c1).chain(c2.as_ref()).collect();
-    let compute = || commands::bisector(&c1, c2.as_ref(), &opts);
-    let found = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, bisector_figure(&curves, &found)?)?;
-    }
-    print_out(&if common.json {
-        json_document(&found, &curves, stats.as_ref())
-    } else {
-        match &found {
-            BisectorFound::Curve(f) => report::bisector_text(&curves, f, stats.as_ref()),
-            BisectorFound::Profile(f) => report::profile_bisector_text(&curves, f, stats.as_ref()),
-        }
+    let (found, stats) = common.computed(|| commands::bisector(&c1, c2.as_ref(), &opts))?;
+    common.draw(|| bisector_figure(&curves, &found))?;
+    common.report(&found, &curves, stats.as_ref(), || match &found {
+        BisectorFound::Curve(f) => report::bisector_text(&curves, f, stats.as_ref()),
+        BisectorFound::Profile(f) => report::profile_bisector_text(&curves, f, stats.as_ref()),
     })
 }
 

@@ -1,11 +1,11 @@
 //! `curvekit medial`: the medial axis of a region, as text, JSON or a figure.
 
-use super::report::{describe, draw_curve, time_line};
-use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
+use super::report::{describe, draw_curve, verdict_lines};
+use super::{Common, Failure, OutFiles};
 use curvekit::commands;
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
-use curvekit::medial::{MedialAxis, MedialOptions, NodeKind};
+use curvekit::medial::{MedialAxis, NodeKind};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use numeric::certificate::Verdict;
 use std::fmt::Write as _;
@@ -22,34 +22,17 @@ pub(super) fn run(
     out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
-    let opts = MedialOptions {
-        settings: common.region_settings(chord_tol)?,
-        fit,
-        exterior,
-    };
+    let opts = common.axis_options(chord_tol, (fit, exterior))?;
     let curve = common.read_region(path)?;
-    let compute = || commands::medial(&curve, &opts);
-    let axis = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, axis_figure(&curve, &axis))?;
-    }
-    let units = curve.units();
-    if let Some(path) = &out.dxf {
-        write_file(
-            path,
-            dxf_file::medial_dxf(&axis, units).map_err(export_failure)?,
-        )?;
-    }
-    if let Some(path) = &out.svg_paths {
-        write_file(
-            path,
-            svg_paths::medial_svg(&axis, units).map_err(export_failure)?,
-        )?;
-    }
-    print_out(&if common.json {
-        commands::json_document(&axis, &[&curve], stats.as_ref())
-    } else {
+    let (axis, stats) = common.computed(|| commands::medial(&curve, &opts))?;
+    common.draw(|| Ok(axis_figure(&curve, &axis)))?;
+    out.write(
+        &axis,
+        curve.units(),
+        dxf_file::medial_dxf,
+        svg_paths::medial_svg,
+    )?;
+    common.report(&axis, &[&curve], stats.as_ref(), || {
         let mut s = String::new();
         let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
         let _ = writeln!(s, "region:      {} ({})", curve.file, describe(&curve));
@@ -79,14 +62,7 @@ pub(super) fn run(
                 "fitted:      {points} control points, at most {error:.3e} from the polylines"
             );
         }
-        let _ = writeln!(s, "certified:   {}", axis.certified());
-        if let Some(why) = &axis.reason() {
-            let _ = writeln!(s, "  (why: {why})");
-        }
-        let _ = writeln!(s, "complete:    {}", axis.complete);
-        if let Some(st) = &stats {
-            let _ = writeln!(s, "{}", time_line(st));
-        }
+        verdict_lines(&mut s, &axis, axis.complete, stats.as_ref());
         s
     })
 }

@@ -243,6 +243,21 @@ pub(crate) struct OutFiles {
     pub(crate) svg_paths: Option<PathBuf>,
 }
 
+impl OutFiles {
+    /// Writes `found` as the files asked for: its DXF (`dxf`) and its SVG paths (`svg`), in
+    /// the drawing's `units`.
+    pub(crate) fn write<R>(
+        &self,
+        found: &R,
+        units: Option<&str>,
+        dxf: fn(&R, Option<&str>) -> Result<Vec<u8>, curvekit::export::ExportError>,
+        svg: fn(&R, Option<&str>) -> Result<String, curvekit::export::ExportError>,
+    ) -> Result<(), Failure> {
+        write_export(self.dxf.as_deref(), || dxf(found, units))?;
+        write_export(self.svg_paths.as_deref(), || svg(found, units))
+    }
+}
+
 /// Options every command takes.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct Common {
@@ -320,6 +335,57 @@ impl Common {
     /// The settings of a command on regions: `--tol` and its `--chord-tol`.
     pub(crate) fn region_settings(&self, chord_tol: f64) -> Result<Settings, Failure> {
         settings(CommandFamily::Regions, self.tol, chord_tol)
+    }
+
+    /// The medial axis's options of a command on regions (its settings from `--tol` and its
+    /// `--chord-tol`), the axis fitted with `fit`, the exterior one with `exterior`.
+    pub(crate) fn axis_options(
+        &self,
+        chord_tol: f64,
+        (fit, exterior): (bool, bool),
+    ) -> Result<curvekit::medial::MedialOptions, Failure> {
+        Ok(curvekit::medial::MedialOptions {
+            settings: self.region_settings(chord_tol)?,
+            fit,
+            exterior,
+        })
+    }
+
+    /// What `compute` finds, and with `--time` the time it takes (computed again).
+    pub(crate) fn computed<T>(
+        &self,
+        mut compute: impl FnMut() -> Result<T, curvekit::commands::CommandError>,
+    ) -> Result<(T, Option<timing::Stats>), Failure> {
+        let found = compute()?;
+        let stats = self.time.then(|| timing::measure(compute));
+        Ok((found, stats))
+    }
+
+    /// Writes the figure `figure` draws to the `--svg` file, where one is asked for.
+    pub(crate) fn draw(
+        &self,
+        figure: impl FnOnce() -> Result<String, Failure>,
+    ) -> Result<(), Failure> {
+        match &self.svg {
+            Some(svg) => write_file(svg, figure()?),
+            None => Ok(()),
+        }
+    }
+
+    /// Prints the report of `found` on `curves`: its JSON document with `--json`, else the
+    /// text `text` writes.
+    pub(crate) fn report(
+        &self,
+        found: &impl serde::Serialize,
+        curves: &[&curvekit::io::Curve],
+        stats: Option<&timing::Stats>,
+        text: impl FnOnce() -> String,
+    ) -> Result<(), Failure> {
+        print_out(&if self.json {
+            curvekit::commands::json_document(found, curves, stats)
+        } else {
+            text()
+        })
     }
 }
 
@@ -420,6 +486,18 @@ pub(crate) fn write_file(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), 
 /// A result that could not be written (exit 1).
 pub(crate) fn export_failure(e: curvekit::export::ExportError) -> Failure {
     Failure::Export(e)
+}
+
+/// Writes the file `export` makes of a result to `path`, where one is asked for (`--dxf`,
+/// `--svg-paths`).
+pub(crate) fn write_export<C: AsRef<[u8]>>(
+    path: Option<&Path>,
+    export: impl FnOnce() -> Result<C, curvekit::export::ExportError>,
+) -> Result<(), Failure> {
+    match path {
+        Some(path) => write_file(path, export().map_err(export_failure)?),
+        None => Ok(()),
+    }
 }
 
 /// Prints to stdout; a closed pipe ends the output quietly (exit 0), as `head` expects.

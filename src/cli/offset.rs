@@ -1,12 +1,11 @@
 //! `curvekit offset`: the inward (or outward) offsets of a region at one or several distances, as text,
 //! JSON (closed profile documents) or a figure.
 
-use super::report::{describe, draw_curve, time_line};
-use super::{export_failure, print_out, timing, write_file, Common, Failure, OutFiles};
+use super::report::{describe, draw_curve, verdict_lines};
+use super::{Common, Failure, OutFiles};
 use curvekit::commands::{self, Distances};
 use curvekit::export::{dxf_file, svg_paths};
 use curvekit::io::Curve;
-use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, Offsets};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY};
 use numeric::certificate::Verdict;
@@ -24,37 +23,22 @@ pub(super) fn run(
     out: &OutFiles,
     common: &Common,
 ) -> Result<(), Failure> {
-    let settings = common.region_settings(chord_tol)?;
-    let medial_opts = MedialOptions {
-        settings,
-        fit: false,
-        exterior: outward,
-    };
+    let medial_opts = common.axis_options(chord_tol, (false, outward))?;
     commands::validate_offset(distances, outward)?;
-    let opts = OffsetOptions { settings };
+    let opts = OffsetOptions {
+        settings: medial_opts.settings,
+    };
     let curve = common.read_region(path)?;
-    let compute = || commands::offset(&curve, distances, &opts, &medial_opts);
-    let found = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, figure(&curve, &found))?;
-    }
-    let units = curve.units();
-    if let Some(path) = &out.dxf {
-        write_file(
-            path,
-            dxf_file::offsets_dxf(&found, units).map_err(export_failure)?,
-        )?;
-    }
-    if let Some(path) = &out.svg_paths {
-        write_file(
-            path,
-            svg_paths::offsets_svg(&found, units).map_err(export_failure)?,
-        )?;
-    }
-    print_out(&if common.json {
-        commands::json_document(&found, &[&curve], stats.as_ref())
-    } else {
+    let (found, stats) =
+        common.computed(|| commands::offset(&curve, distances, &opts, &medial_opts))?;
+    common.draw(|| Ok(figure(&curve, &found)))?;
+    out.write(
+        &found,
+        curve.units(),
+        dxf_file::offsets_dxf,
+        svg_paths::offsets_svg,
+    )?;
+    common.report(&found, &[&curve], stats.as_ref(), || {
         text(&curve, &found, stats.as_ref())
     })
 }
@@ -107,13 +91,6 @@ fn text(curve: &Curve, found: &Offsets, stats: Option<&commands::Stats>) -> Stri
             o.loops.len()
         );
     }
-    let _ = writeln!(s, "certified:   {}", found.certified());
-    if let Some(why) = &found.reason() {
-        let _ = writeln!(s, "  (why: {why})");
-    }
-    let _ = writeln!(s, "complete:    {}", found.complete);
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    verdict_lines(&mut s, found, found.complete, stats);
     s
 }

@@ -93,6 +93,24 @@ pub(crate) fn describe(curve: &Curve) -> String {
     line
 }
 
+/// The closing lines of a region command's text report: whether it is certified (and why
+/// not), whether it is complete, and the time line where it was timed.
+pub(crate) fn verdict_lines(
+    s: &mut String,
+    found: &impl numeric::certificate::Verdict,
+    complete: bool,
+    stats: Option<&Stats>,
+) {
+    let _ = writeln!(s, "certified:   {}", found.certified());
+    if let Some(why) = &found.reason() {
+        let _ = writeln!(s, "  (why: {why})");
+    }
+    let _ = writeln!(s, "complete:    {complete}");
+    if let Some(st) = stats {
+        let _ = writeln!(s, "{}", time_line(st));
+    }
+}
+
 /// The `--time` line of text reports.
 pub(crate) fn time_line(st: &Stats) -> String {
     let mut line = format!(

@@ -1,12 +1,11 @@
 //! `curvekit vcarve`: the tool paths of a V-bit over the medial axis, as text, JSON, DXF or
 //! a figure.
 
-use super::report::{describe, draw_curve, time_line};
-use super::{export_failure, print_out, timing, write_file, Common, Failure};
+use super::report::{describe, draw_curve, verdict_lines};
+use super::{write_export, Common, Failure};
 use curvekit::commands;
 use curvekit::export::dxf_file;
 use curvekit::io::Curve;
-use curvekit::medial::MedialOptions;
 use curvekit::offset::{OffsetOptions, VCarve, VCarveOptions};
 use curvekit::svg::{scale_color, Figure, Mark, BOUNDARY, DOT};
 use numeric::certificate::Verdict;
@@ -25,34 +24,20 @@ pub(super) fn run(
     dxf: Option<&Path>,
     common: &Common,
 ) -> Result<(), Failure> {
-    let settings = common.region_settings(chord_tol)?;
-    let medial_opts = MedialOptions {
-        settings,
-        fit: false,
-        exterior: false,
-    };
+    let medial_opts = common.axis_options(chord_tol, (false, false))?;
     let opts = VCarveOptions {
         angle,
         max_depth,
-        offset: OffsetOptions { settings },
+        offset: OffsetOptions {
+            settings: medial_opts.settings,
+        },
     };
     commands::validate_vcarve_options(&opts)?;
     let curve = common.read_region(path)?;
-    let compute = || commands::vcarve(&curve, &opts, &medial_opts);
-    let found = compute()?;
-    let stats = common.time.then(|| timing::measure(compute));
-    if let Some(svg) = &common.svg {
-        write_file(svg, figure(&curve, &found))?;
-    }
-    if let Some(path) = dxf {
-        write_file(
-            path,
-            dxf_file::vcarve_dxf(&found, curve.units()).map_err(export_failure)?,
-        )?;
-    }
-    print_out(&if common.json {
-        commands::json_document(&found, &[&curve], stats.as_ref())
-    } else {
+    let (found, stats) = common.computed(|| commands::vcarve(&curve, &opts, &medial_opts))?;
+    common.draw(|| Ok(figure(&curve, &found)))?;
+    write_export(dxf, || dxf_file::vcarve_dxf(&found, curve.units()))?;
+    common.report(&found, &[&curve], stats.as_ref(), || {
         text(&curve, &found, stats.as_ref())
     })
 }
@@ -140,13 +125,6 @@ fn text(curve: &Curve, found: &VCarve, stats: Option<&commands::Stats>) -> Strin
         }
         None => {}
     }
-    let _ = writeln!(s, "certified:   {}", found.certified());
-    if let Some(why) = &found.reason() {
-        let _ = writeln!(s, "  (why: {why})");
-    }
-    let _ = writeln!(s, "complete:    {}", found.complete);
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    verdict_lines(&mut s, found, found.complete, stats);
     s
 }

@@ -55,6 +55,15 @@ impl DocMap<'_> {
 pub(crate) trait InDocument {
     /// Maps every parameter, with `maps[k]` for input `k` (one map for a one-curve result).
     fn in_document(&mut self, maps: &[DocMap<'_>]);
+
+    /// The result with its parameters mapped, as [`InDocument::in_document`] maps them.
+    fn into_document(mut self, maps: &[DocMap<'_>]) -> Self
+    where
+        Self: Sized,
+    {
+        self.in_document(maps);
+        self
+    }
 }
 
 fn inflections(list: &mut [antipodal::Inflection], m: &DocMap<'_>) {

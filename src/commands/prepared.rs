@@ -41,12 +41,12 @@ impl PreparedCurve {
 
     /// The inflections (and a profile's corners).
     pub fn inflections(&self, opts: &antipodal::Options) -> Result<InflectionsFound, CommandError> {
-        inflections_of(&self.curve, self.route(), opts)
+        INFLECTIONS_BY_ROUTE.on_route(&self.curve, self.route(), opts)
     }
 
     /// The antipodal pairs, inflections and families (and a profile's corners).
     pub fn antipodal(&self, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-        antipodal_of(&self.curve, self.route(), opts)
+        ANTIPODAL_BY_ROUTE.on_route(&self.curve, self.route(), opts)
     }
 
     fn route(&self) -> Route<'_> {
@@ -87,46 +87,75 @@ pub(super) fn smooth_map(curve: &Curve) -> DocMap<'_> {
     }
 }
 
-/// `inflections` of `curve` on `route`, in the curve's own parameter.
-fn inflections_of(
-    curve: &Curve,
-    route: Route<'_>,
-    opts: &antipodal::Options,
-) -> Result<InflectionsFound, CommandError> {
-    let found = match route {
-        Route::Profile(p) => antipodal::profile_inflections(p, opts).map(|mut f| {
-            f.in_document(&[DocMap::Profile(p)]);
-            InflectionsFound::Profile(f)
-        }),
-        Route::Smooth(prepared) => prepared.inflections(opts).map(|mut f| {
-            f.in_document(&[smooth_map(curve)]);
-            InflectionsFound::Curve(f)
-        }),
-    };
-    found
-        .map(|f| f.doubted(curve.drawing_outline_doubt()))
-        .map_err(|e| antipodal_error(e, &[curve]))
+/// A one-curve command: its name (in a refusal), what it computes on a profile and on a
+/// smooth curve prepared, and the variant that holds each result.
+struct OneCurveCommand<C, P, F> {
+    name: &'static str,
+    on_profile: fn(&Profile, &antipodal::Options) -> antipodal::Result<P>,
+    on_smooth: fn(&antipodal::Prepared<'_>, &antipodal::Options) -> antipodal::Result<C>,
+    curve_found: fn(C) -> F,
+    profile_found: fn(P) -> F,
 }
 
-/// `antipodal` of `curve` on `route`, in the curve's own parameter.
-fn antipodal_of(
-    curve: &Curve,
-    route: Route<'_>,
-    opts: &antipodal::Options,
-) -> Result<AntipodalFound, CommandError> {
-    let found = match route {
-        Route::Profile(p) => antipodal::profile_antipodal(p, opts).map(|mut f| {
-            f.in_document(&[DocMap::Profile(p)]);
-            AntipodalFound::Profile(f)
-        }),
-        Route::Smooth(prepared) => prepared.antipodal(opts).map(|mut f| {
-            f.in_document(&[smooth_map(curve)]);
-            AntipodalFound::Curve(f)
-        }),
-    };
-    found
-        .map(|f| f.doubted(curve.drawing_outline_doubt()))
-        .map_err(|e| antipodal_error(e, &[curve]))
+const INFLECTIONS_BY_ROUTE: OneCurveCommand<
+    antipodal::Inflections,
+    antipodal::ProfileInflections,
+    InflectionsFound,
+> = OneCurveCommand {
+    name: "inflections",
+    on_profile: antipodal::profile_inflections,
+    on_smooth: |prepared, opts| prepared.inflections(opts),
+    curve_found: InflectionsFound::Curve,
+    profile_found: InflectionsFound::Profile,
+};
+
+const ANTIPODAL_BY_ROUTE: OneCurveCommand<
+    antipodal::Antipodal,
+    antipodal::ProfileAntipodal,
+    AntipodalFound,
+> = OneCurveCommand {
+    name: "antipodal",
+    on_profile: antipodal::profile_antipodal,
+    on_smooth: |prepared, opts| prepared.antipodal(opts),
+    curve_found: AntipodalFound::Curve,
+    profile_found: AntipodalFound::Profile,
+};
+
+impl<C: InDocument, P: InDocument, F: Doubted> OneCurveCommand<C, P, F> {
+    /// The command on `curve` by `route`, in the curve's own parameter; the result is doubted
+    /// where the drawing's outline is.
+    fn on_route(
+        &self,
+        curve: &Curve,
+        route: Route<'_>,
+        opts: &antipodal::Options,
+    ) -> Result<F, CommandError> {
+        let found = match route {
+            Route::Profile(p) => (self.on_profile)(p, opts)
+                .map(|f| (self.profile_found)(f.into_document(&[DocMap::Profile(p)]))),
+            Route::Smooth(prepared) => (self.on_smooth)(prepared, opts)
+                .map(|f| (self.curve_found)(f.into_document(&[smooth_map(curve)]))),
+        };
+        found
+            .map(|f| f.doubted(curve.drawing_outline_doubt()))
+            .map_err(|e| antipodal_error(e, &[curve]))
+    }
+
+    /// The command on `curve` read, by the route its shape takes, a smooth curve freshly
+    /// prepared.
+    fn on_fresh(&self, curve: &Curve, opts: &antipodal::Options) -> Result<F, CommandError> {
+        validate_options(opts)?;
+        one_curve(&[curve], self.name)?;
+        match (&curve.shape, spline_with_corners(curve)?) {
+            (CurveKind::Profile(p), _) => self.on_route(curve, Route::Profile(p), opts),
+            (_, Some(p)) => self.on_route(curve, Route::Profile(&p), opts),
+            _ => self.on_route(
+                curve,
+                Route::Smooth(&antipodal::prepare(curve.plane_curve())),
+                opts,
+            ),
+        }
+    }
 }
 
 /// A curve read, shared with its prepared form: the plane curve of its shape.
@@ -158,30 +187,10 @@ pub fn inflections(
     curve: &Curve,
     opts: &antipodal::Options,
 ) -> Result<InflectionsFound, CommandError> {
-    validate_options(opts)?;
-    one_curve(&[curve], "inflections")?;
-    match (&curve.shape, spline_with_corners(curve)?) {
-        (CurveKind::Profile(p), _) => inflections_of(curve, Route::Profile(p), opts),
-        (_, Some(p)) => inflections_of(curve, Route::Profile(&p), opts),
-        _ => inflections_of(
-            curve,
-            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
-            opts,
-        ),
-    }
+    INFLECTIONS_BY_ROUTE.on_fresh(curve, opts)
 }
 
 /// `antipodal` of a curve read: [`PreparedCurve::antipodal`] on a freshly prepared curve.
 pub fn antipodal(curve: &Curve, opts: &antipodal::Options) -> Result<AntipodalFound, CommandError> {
-    validate_options(opts)?;
-    one_curve(&[curve], "antipodal")?;
-    match (&curve.shape, spline_with_corners(curve)?) {
-        (CurveKind::Profile(p), _) => antipodal_of(curve, Route::Profile(p), opts),
-        (_, Some(p)) => antipodal_of(curve, Route::Profile(&p), opts),
-        _ => antipodal_of(
-            curve,
-            Route::Smooth(&antipodal::prepare(curve.plane_curve())),
-            opts,
-        ),
-    }
+    ANTIPODAL_BY_ROUTE.on_fresh(curve, opts)
 }

@@ -20,16 +20,13 @@ pub fn tangents(
     one_curve(&both, "tangents")?;
     let found = if needs_profiles(&both)? {
         let (a, b) = (as_profile(c1, "tangents")?, as_profile(c2, "tangents")?);
-        antipodal::profile_tangents(&a, &b, opts).map(|mut f| {
-            f.in_document(&[DocMap::Profile(&a), DocMap::Profile(&b)]);
-            TangentsFound::Profile(f)
+        antipodal::profile_tangents(&a, &b, opts).map(|f| {
+            TangentsFound::Profile(f.into_document(&[DocMap::Profile(&a), DocMap::Profile(&b)]))
         })
     } else {
         let (a, b) = antipodal::prepare_pair(c1.plane_curve(), c2.plane_curve());
-        a.common_tangents(&b, opts).map(|mut f| {
-            f.in_document(&[smooth_map(c1), smooth_map(c2)]);
-            TangentsFound::Curve(f)
-        })
+        a.common_tangents(&b, opts)
+            .map(|f| TangentsFound::Curve(f.into_document(&[smooth_map(c1), smooth_map(c2)])))
     };
     let doubt = c1
         .drawing_outline_doubt()
@@ -75,10 +72,7 @@ pub fn bisector(
             [one, ..] => zeroset::profile_self_bisector(one, opts),
             [] => unreachable!("one curve at least"),
         }
-        .map(|mut f| {
-            f.in_document(&maps);
-            BisectorFound::Profile(f)
-        })
+        .map(|f| BisectorFound::Profile(f.into_document(&maps)))
     } else {
         let rationals = curves
             .iter()
@@ -90,10 +84,7 @@ pub fn bisector(
             [one, ..] => zeroset::self_bisector(one, opts),
             [] => unreachable!("one curve at least"),
         }
-        .map(|mut f| {
-            f.in_document(&maps);
-            BisectorFound::Curve(f)
-        })
+        .map(|f| BisectorFound::Curve(f.into_document(&maps)))
     };
     found.map_err(zeroset_error)
 }

@@ -17,7 +17,7 @@
 //! ezdxf reads the files as written; its audit repairs two things the crate writes (a
 //! transparency group of 0 on every entity, the tables' head handles), neither geometry.
 
-use super::{distance_name, ExportError, NO_SWEEP};
+use super::{distance_name, sweeps_nothing, ExportError};
 use dxf::entities::{Arc, Circle, Entity, EntityType, Line, ModelPoint, Polyline, Spline, Vertex};
 use dxf::enums::{AcadVersion, Units};
 use dxf::tables::Layer;
@@ -124,6 +124,9 @@ impl Writer {
 /// The entity of one offset piece, at height `z`; none for an arc that sweeps nothing (a
 /// corner's arc where the offset meets it head on), which DXF would draw as a whole circle.
 fn piece(s: &OffsetSegment, z: f64) -> Option<EntityType> {
+    if sweeps_nothing(s) {
+        return None;
+    }
     let at = |p: [f64; 2]| Point::new(p[0], p[1], z);
     match s {
         OffsetSegment::Line { from, to } => Some(EntityType::Line(Line::new(at(*from), at(*to)))),
@@ -133,9 +136,6 @@ fn piece(s: &OffsetSegment, z: f64) -> Option<EntityType> {
             start,
             end,
         } => {
-            if (end - start).abs() <= NO_SWEEP {
-                return None;
-            }
             if ((end - start).abs() - TAU).abs() <= FULL_TURN * TAU {
                 return Some(EntityType::Circle(Circle::new(at(*center), *r)));
             }

@@ -27,6 +27,11 @@ pub enum ExportError {
 /// curvekit's readers take sweeps within 1e-9 rad of nothing as one.
 pub const NO_SWEEP: f64 = 1e-9;
 
+/// Whether `s` is an arc that sweeps nothing ([`NO_SWEEP`]): a piece neither writer writes.
+pub(crate) fn sweeps_nothing(s: &offset::OffsetSegment) -> bool {
+    matches!(s, offset::OffsetSegment::Arc { start, end, .. } if (end - start).abs() <= NO_SWEEP)
+}
+
 /// A distance as a layer or group name takes it (`offset_0.25`): Rust's shortest form that
 /// reads back as the same number, never an exponent.
 pub(crate) fn distance_name(d: f64) -> String {

@@ -7,7 +7,7 @@
 //! is ambiguous), splines their Bézier pieces (`Q`, `C`; a degree-1 spline its lines); numbers
 //! are written in Rust's shortest form that reads back as the same `f64`.
 
-use super::{distance_name, ExportError, NO_SWEEP};
+use super::{distance_name, sweeps_nothing, ExportError};
 use medial::MedialAxis;
 use offset::{OffsetSegment, Offsets};
 use std::f64::consts::FRAC_PI_2;
@@ -72,6 +72,9 @@ impl Document {
 
 /// The path data of one offset piece from where the last ended.
 fn piece_data(doc: &mut Document, s: &OffsetSegment, d: &mut String) -> Result<(), ExportError> {
+    if sweeps_nothing(s) {
+        return Ok(());
+    }
     match s {
         OffsetSegment::Line { to, .. } => {
             let _ = write!(d, " L {}", doc.point(*to));
@@ -82,9 +85,6 @@ fn piece_data(doc: &mut Document, s: &OffsetSegment, d: &mut String) -> Result<(
             start,
             end,
         } => {
-            if (end - start).abs() <= NO_SWEEP {
-                return Ok(());
-            }
             let pieces = ((end - start).abs() / FRAC_PI_2).ceil().max(1.0) as usize;
             let sweep = u8::from(end > start);
             for k in 1..=pieces {

@@ -3,7 +3,7 @@
 //! chain becomes a profile; the command gets the one profile the file holds, or the one
 //! `--pick N` chooses.
 
-use super::{Curve, CurveFileError, CurveKind, Problem, MAX_SEGMENTS};
+use super::{Curve, CurveFileError, CurveKind, Problem};
 use curve::{FillRule, Profile, Segment};
 use serde::{Deserialize, Serialize};
 
@@ -106,25 +106,12 @@ pub(super) fn profiles(
     chains
         .into_iter()
         .map(|c| {
-            if c.segments.len() > MAX_SEGMENTS {
-                return Err(error(
-                    file,
-                    &c.name,
-                    Problem::OutOfRange {
-                        rule: format!("at most {MAX_SEGMENTS} segments"),
-                        value: c.segments.len() as f64,
-                    },
-                ));
-            }
+            super::profile::at_most_max_segments(c.segments.len(), "segments")
+                .map_err(|p| error(file, &c.name, p))?;
             let profile = Profile::new(c.segments, c.closed).map_err(|e| {
-                let field = match e {
-                    curve::Error::Gap { segment, .. }
-                    | curve::Error::ZeroLength { segment }
-                    | curve::Error::Cusp { segment, .. }
-                    | curve::Error::SelfCrossing {
-                        second: segment, ..
-                    } => format!("{} segment {segment}", c.name),
-                    _ => c.name.clone(),
+                let field = match super::profile::segment_at_fault(&e) {
+                    Some(segment) => format!("{} segment {segment}", c.name),
+                    None => c.name.clone(),
                 };
                 error(file, &field, Problem::Geometry(e.to_string()))
             })?;

@@ -24,21 +24,25 @@ pub(super) fn parse_segment_kind(kind: &str, f: &Fields<'_>) -> Result<Segment, 
     super::shape("kind", made)
 }
 
+/// A count of a profile's `pieces` (its segments, a polyline's vertices) within
+/// [`MAX_SEGMENTS`], or the problem it is.
+pub(crate) fn at_most_max_segments(count: usize, pieces: &str) -> Result<(), Problem> {
+    if count > MAX_SEGMENTS {
+        return Err(Problem::OutOfRange {
+            rule: format!("at most {MAX_SEGMENTS} {pieces}"),
+            value: count as f64,
+        });
+    }
+    Ok(())
+}
+
 /// A `profile` object (unknown fields were already rejected).
 pub(super) fn parse_profile(f: &Fields<'_>) -> Result<Profile, FieldError> {
     let items = match f.require("segments")? {
         Value::Array(items) => items,
         v => return Err(wrong_type("segments", "an array of segment objects", v)),
     };
-    if items.len() > MAX_SEGMENTS {
-        return Err((
-            "segments".into(),
-            Problem::OutOfRange {
-                rule: format!("at most {MAX_SEGMENTS} segments"),
-                value: items.len() as f64,
-            },
-        ));
-    }
+    at_most_max_segments(items.len(), "segments").map_err(|p| ("segments".into(), p))?;
     let closed = f.opt_bool("closed")?;
     let segments = items
         .iter()
@@ -52,17 +56,26 @@ pub(super) fn parse_profile(f: &Fields<'_>) -> Result<Profile, FieldError> {
         })
         .collect::<Result<Vec<_>, _>>()?;
     Profile::new(segments, closed).map_err(|e| {
-        let field = match e {
-            curve::Error::Gap { segment, .. }
-            | curve::Error::ZeroLength { segment }
-            | curve::Error::Cusp { segment, .. }
-            | curve::Error::SelfCrossing {
-                second: segment, ..
-            } => format!("segments[{segment}]"),
-            _ => "segments".to_string(),
+        let field = match segment_at_fault(&e) {
+            Some(segment) => format!("segments[{segment}]"),
+            None => "segments".to_string(),
         };
         (field, Problem::Geometry(e.to_string()))
     })
+}
+
+/// The segment a profile was refused for (the later of two that cross), where the refusal
+/// names one.
+pub(crate) fn segment_at_fault(e: &curve::Error) -> Option<usize> {
+    match *e {
+        curve::Error::Gap { segment, .. }
+        | curve::Error::ZeroLength { segment }
+        | curve::Error::Cusp { segment, .. }
+        | curve::Error::SelfCrossing {
+            second: segment, ..
+        } => Some(segment),
+        _ => None,
+    }
 }
 
 /// One segment object of a profile: a `line`, `arc`, `bezier` or open `bspline`.

@@ -111,16 +111,21 @@ pub(super) fn read(file: &str, text: &str) -> Result<DrawingRead, CurveFileError
     Ok(walk.read)
 }
 
-/// The unit of the user units, where the root's width is in one and its `viewBox` as wide.
-fn units_of(root: &Node<'_, '_>) -> Option<String> {
-    let width: svgtypes::Length = root.attribute("width")?.trim().parse().ok()?;
-    let view: Vec<f64> = root
-        .attribute("viewBox")?
+/// The numbers of an element's `viewBox` (separated by commas or white space); `None`
+/// without one, or where one is not a number.
+fn view_box(node: &Node<'_, '_>) -> Option<Vec<f64>> {
+    node.attribute("viewBox")?
         .split(|c: char| c == ',' || c.is_whitespace())
         .filter(|t| !t.is_empty())
         .map(str::parse)
         .collect::<Result<_, _>>()
-        .ok()?;
+        .ok()
+}
+
+/// The unit of the user units, where the root's width is in one and its `viewBox` as wide.
+fn units_of(root: &Node<'_, '_>) -> Option<String> {
+    let width: svgtypes::Length = root.attribute("width")?.trim().parse().ok()?;
+    let view = view_box(root)?;
     let &(name, _) = WIDTH_UNITS.iter().find(|(_, u)| *u == width.unit)?;
     let same = view.len() == 4 && (view[2] - width.number).abs() <= 1e-9 * width.number.abs();
     same.then(|| name.to_string())
@@ -373,13 +378,7 @@ fn style_of(node: &Node<'_, '_>, inherited: Style) -> Result<Style, String> {
 /// A `<symbol>`'s `viewBox` fitted into the `<use>`'s `width` and `height` (uniformly,
 /// centred: SVG's default `xMidYMid meet`); `None` without them.
 fn symbol_fit(symbol: &Node<'_, '_>, usage: &Node<'_, '_>) -> Option<Affine> {
-    let view: Vec<f64> = symbol
-        .attribute("viewBox")?
-        .split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|t| !t.is_empty())
-        .map(str::parse)
-        .collect::<Result<_, _>>()
-        .ok()?;
+    let view = view_box(symbol)?;
     let (w, h) = (
         user_length(usage.attribute("width")?).ok()?,
         user_length(usage.attribute("height")?).ok()?,

@@ -5,6 +5,26 @@ use serde_json::Value;
 use std::path::PathBuf;
 use std::process::Command;
 
+/// A count of what a property test checked, over all its cases (which run on several
+/// threads), so that the test can assert it was not vacuous.
+pub(crate) struct Tally(std::sync::atomic::AtomicUsize);
+
+impl Tally {
+    pub(crate) const fn new() -> Self {
+        Self(std::sync::atomic::AtomicUsize::new(0))
+    }
+
+    /// Counts `n` more.
+    pub(crate) fn add(&self, n: usize) {
+        self.0.fetch_add(n, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// The count so far.
+    pub(crate) fn get(&self) -> usize {
+        self.0.load(std::sync::atomic::Ordering::Relaxed)
+    }
+}
+
 /// Exit status (or -1 when killed), stdout and stderr of one run of `curvekit`.
 pub(crate) struct Run {
     pub(crate) code: i32,

@@ -255,6 +255,18 @@ fn ellipses_full_and_partial_rotated() {
             ..Default::default()
         })
     };
+    // A partial one from `start` to `end` closed by its chord: the profile read, and the arc's
+    // ends.
+    let closed_by_chord = |start: f64, end: f64| {
+        let mut d = drawing();
+        let (a, b) = (
+            ellipse_at(c, major, ratio, start),
+            ellipse_at(c, major, ratio, end),
+        );
+        add(&mut d, ellipse(start, end));
+        add(&mut d, line(b.x, b.y, a.x, a.y));
+        (read(&d), a, b)
+    };
     // Its implicit equation in its own axes.
     let on = |q: V2| {
         let u = major * (1.0 / major.norm());
@@ -270,14 +282,7 @@ fn ellipses_full_and_partial_rotated() {
         assert!(on(q).abs() < 1e-14, "{q:?}");
     }
     // A partial one from 1 to 4 radians (eccentric angles), closed by its chord.
-    let mut d = drawing();
-    let (a, b) = (
-        ellipse_at(c, major, ratio, 1.0),
-        ellipse_at(c, major, ratio, 4.0),
-    );
-    add(&mut d, ellipse(1.0, 4.0));
-    add(&mut d, line(b.x, b.y, a.x, a.y));
-    let p = read(&d);
+    let (p, a, b) = closed_by_chord(1.0, 4.0);
     assert!(p.is_closed());
     let e = &p.segments()[0];
     assert_eq!(e.kind(), SegmentKind::EllipticArc);
@@ -289,14 +294,7 @@ fn ellipses_full_and_partial_rotated() {
     let mid = ellipse_at(c, major, ratio, 2.5);
     assert!(distance_to(e, mid) < 1e-12);
     // Start above end (5 → 1 radians): through 0, once round.
-    let mut d = drawing();
-    let (a, b) = (
-        ellipse_at(c, major, ratio, 5.0),
-        ellipse_at(c, major, ratio, 1.0),
-    );
-    add(&mut d, ellipse(5.0, 1.0));
-    add(&mut d, line(b.x, b.y, a.x, a.y));
-    let p = read(&d);
+    let (p, _, _) = closed_by_chord(5.0, 1.0);
     assert!(distance_to(&p.segments()[0], ellipse_at(c, major, ratio, 0.0)) < 1e-12);
 }
 
@@ -381,6 +379,22 @@ fn a_tilted_extrusion_alone_is_refused_naming_the_entity() {
 // ---------------------------------------------------------------------------------------------
 // Polylines.
 
+/// An LWPOLYLINE of `vertices` with `flags` (1: closed).
+fn lwpolyline(flags: i32, vertices: Vec<LwPolylineVertex>) -> EntityType {
+    EntityType::LwPolyline(LwPolyline {
+        flags,
+        vertices,
+        ..Default::default()
+    })
+}
+
+/// The profile a drawing of `entity` alone is read as.
+fn read_one(entity: EntityType) -> Profile {
+    let mut d = drawing();
+    add(&mut d, entity);
+    read(&d)
+}
+
 fn lw(x: f64, y: f64, bulge: f64) -> LwPolylineVertex {
     LwPolylineVertex {
         x,
@@ -405,22 +419,16 @@ fn bulge_circle(p: V2, q: V2, b: f64) -> (V2, f64, V2) {
 
 #[test]
 fn bulges_make_arcs_through_their_middle() {
-    let mut d = drawing();
     let pts = [
         (0.0, 0.0, 0.5),
         (4.0, 0.0, 0.0),
         (4.0, 3.0, -0.25),
         (0.0, 3.0, 0.0),
     ];
-    add(
-        &mut d,
-        EntityType::LwPolyline(LwPolyline {
-            flags: 1,
-            vertices: pts.iter().map(|&(x, y, b)| lw(x, y, b)).collect(),
-            ..Default::default()
-        }),
-    );
-    let p = read(&d);
+    let p = read_one(lwpolyline(
+        1,
+        pts.iter().map(|&(x, y, b)| lw(x, y, b)).collect(),
+    ));
     assert!(p.is_closed());
     assert_eq!(p.segments().len(), 4);
     for (i, &(x, y, b)) in pts.iter().enumerate() {
@@ -449,39 +457,28 @@ fn bulges_make_arcs_through_their_middle() {
 
 #[test]
 fn repeated_vertices_are_skipped_and_an_open_polyline_stays_open() {
-    let mut d = drawing();
-    add(
-        &mut d,
-        EntityType::LwPolyline(LwPolyline {
-            vertices: vec![
-                lw(0.0, 0.0, 0.0),
-                lw(1.0, 0.0, 0.0),
-                lw(1.0, 0.0, 0.0),
-                lw(1.0, 1.0, 0.3),
-                lw(2.0, 2.0, 0.0),
-            ],
-            ..Default::default()
-        }),
-    );
-    let p = read(&d);
+    let p = read_one(lwpolyline(
+        0,
+        vec![
+            lw(0.0, 0.0, 0.0),
+            lw(1.0, 0.0, 0.0),
+            lw(1.0, 0.0, 0.0),
+            lw(1.0, 1.0, 0.3),
+            lw(2.0, 2.0, 0.0),
+        ],
+    ));
     assert!(!p.is_closed());
     assert_eq!(p.segments().len(), 3);
     // A closed polyline whose last vertex repeats the first: no zero-length closing piece.
-    let mut d = drawing();
-    add(
-        &mut d,
-        EntityType::LwPolyline(LwPolyline {
-            flags: 1,
-            vertices: vec![
-                lw(0.0, 0.0, 0.0),
-                lw(1.0, 0.0, 0.0),
-                lw(0.0, 1.0, 0.0),
-                lw(0.0, 0.0, 0.0),
-            ],
-            ..Default::default()
-        }),
-    );
-    let p = read(&d);
+    let p = read_one(lwpolyline(
+        1,
+        vec![
+            lw(0.0, 0.0, 0.0),
+            lw(1.0, 0.0, 0.0),
+            lw(0.0, 1.0, 0.0),
+            lw(0.0, 0.0, 0.0),
+        ],
+    ));
     assert!(p.is_closed());
     assert_eq!(p.segments().len(), 3);
 }

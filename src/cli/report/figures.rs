@@ -2,7 +2,7 @@
 //! them and, for a bisector, its zero set in the parameter square.
 
 use super::{draw_curve, n};
-use antipodal::{Antipodal, ProfileAntipodal};
+use antipodal::{Antipodal, Corner, Family, Inflection, ProfileAntipodal};
 use curvekit::curve::ParamCurve;
 use curvekit::curve::Profile;
 use curvekit::io::Curve;
@@ -43,28 +43,18 @@ fn antipodal_legend(
 /// Figures 1 and 24) and each family by its two end pairs; the header says whether the answer
 /// is certified.
 pub(crate) fn antipodal_figure(curve: &Curve, found: &Antipodal, title: String) -> String {
-    let mut fig = Figure::new();
-    draw_curve(&mut fig, curve);
-    for (k, pair) in found.pairs.iter().enumerate() {
-        fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
-    }
-    for f in &found.families {
-        for k in 0..2 {
-            let (p, q) = (curve.point_at(f.s[k]), curve.point_at(f.t[k]));
-            fig.colored(vec![p, q], FAMILY.into());
-        }
-    }
-    found.inflections.iter().for_each(|i| fig.dot(i.p));
-    antipodal_legend(
-        &mut fig,
-        found.pairs.len(),
-        found.families.len(),
-        found.inflections.len(),
-        0,
-    );
-    fig.title(title);
-    fig.status(found.certified(), found.reason().as_deref());
-    fig.render()
+    let end_pair = |f: &Family, k: usize| [curve.point_at(f.s[k]), curve.point_at(f.t[k])];
+    let marks = AntipodalMarks {
+        pairs: found.pairs.iter().map(|p| [p.p, p.q]).collect(),
+        families: found
+            .families
+            .iter()
+            .map(|f| [end_pair(f, 0), end_pair(f, 1)])
+            .collect(),
+        inflections: &found.inflections,
+        corners: &[],
+    };
+    antipodal_drawing(curve, marks, found, title)
 }
 
 /// The antipodal figure of a profile: as for a curve, with the corners marked.
@@ -73,23 +63,52 @@ pub(crate) fn profile_antipodal_figure(
     found: &ProfileAntipodal,
     title: String,
 ) -> String {
+    let marks = AntipodalMarks {
+        pairs: found.pairs.iter().map(|p| [p.p, p.q]).collect(),
+        families: found
+            .families
+            .iter()
+            .map(|f| [[f.p[0], f.q[0]], [f.p[1], f.q[1]]])
+            .collect(),
+        inflections: &found.inflections,
+        corners: &found.corners,
+    };
+    antipodal_drawing(curve, marks, found, title)
+}
+
+/// What an antipodal figure marks, on a curve or on a profile.
+struct AntipodalMarks<'a> {
+    /// Each pair's two points.
+    pairs: Vec<[[f64; 2]; 2]>,
+    /// Each family's two end pairs, each by its two points.
+    families: Vec<[[[f64; 2]; 2]; 2]>,
+    inflections: &'a [Inflection],
+    corners: &'a [Corner],
+}
+
+/// The antipodal figure of `marks` on `curve`, its header saying whether `found` is certified.
+fn antipodal_drawing(
+    curve: &Curve,
+    marks: AntipodalMarks<'_>,
+    found: &impl Verdict,
+    title: String,
+) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, curve);
-    for (k, pair) in found.pairs.iter().enumerate() {
-        fig.segment(pair.p, pair.q, Some((k + 1).to_string()));
+    for (k, [p, q]) in marks.pairs.iter().enumerate() {
+        fig.segment(*p, *q, Some((k + 1).to_string()));
     }
-    for f in &found.families {
-        fig.colored(vec![f.p[0], f.q[0]], FAMILY.into());
-        fig.colored(vec![f.p[1], f.q[1]], FAMILY.into());
+    for [p, q] in marks.families.iter().flatten() {
+        fig.colored(vec![*p, *q], FAMILY.into());
     }
-    found.inflections.iter().for_each(|i| fig.dot(i.p));
-    found.corners.iter().for_each(|c| fig.corner(c.p));
+    marks.inflections.iter().for_each(|i| fig.dot(i.p));
+    marks.corners.iter().for_each(|c| fig.corner(c.p));
     antipodal_legend(
         &mut fig,
-        found.pairs.len(),
-        found.families.len(),
-        found.inflections.len(),
-        found.corners.len(),
+        marks.pairs.len(),
+        marks.families.len(),
+        marks.inflections.len(),
+        marks.corners.len(),
     );
     fig.title(title);
     fig.status(found.certified(), found.reason().as_deref());

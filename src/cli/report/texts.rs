@@ -14,22 +14,22 @@ use zeroset::{Bisector, ProfileBisector, ProfileBranch};
 
 /// The readable inflection report.
 pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&Stats>) -> String {
-    let mut s = inflection_lines(curve, &r.inflections, r.certified());
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    let mut s = inflection_lines(curve, &r.inflections, r);
+    push_time_line(&mut s, stats);
     s
 }
 
 /// The curve, then a line per inflection (with its segment on a profile).
-fn inflection_lines(curve: &Curve, inflections: &[Inflection], certified: bool) -> String {
+fn inflection_lines(curve: &Curve, inflections: &[Inflection], r: &impl Verdict) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "curve:       {} ({})", curve.file, describe(curve));
-    let _ = writeln!(
-        s,
-        "inflections: {} ({})",
+    curve_line(&mut s, "curve:", curve);
+    count_line(
+        &mut s,
+        "inflections:",
         inflections.len(),
-        certified_word(certified)
+        r,
+        Why::Unstated,
+        "",
     );
     for (i, f) in inflections.iter().enumerate() {
         let note = match (f.certified, f.kind) {
@@ -40,16 +40,21 @@ fn inflection_lines(curve: &Curve, inflections: &[Inflection], certified: bool) 
         let seg = f
             .segment
             .map_or(String::new(), |k| format!("  segment {k}"));
-        let _ = writeln!(
-            s,
-            "  {:>3}  u = {:<22}  p = ({}, {}){seg}{note}",
-            i + 1,
-            n(f.u),
-            n(f.p[0]),
-            n(f.p[1])
-        );
+        inflection_row(&mut s, i, f, &format!("{seg}{note}"));
     }
     s
+}
+
+/// The line of the `k`-th inflection: its number, parameter and point, then `after`.
+fn inflection_row(s: &mut String, k: usize, f: &Inflection, after: &str) {
+    let _ = writeln!(
+        s,
+        "  {:>3}  u = {:<22}  p = ({}, {}){after}",
+        k + 1,
+        n(f.u),
+        n(f.p[0]),
+        n(f.p[1])
+    );
 }
 
 /// The text report of `inflections` on a profile: its inflections, then its corners.
@@ -58,7 +63,7 @@ pub(crate) fn profile_inflections_text(
     r: &ProfileInflections,
     stats: Option<&Stats>,
 ) -> String {
-    let mut s = inflection_lines(curve, &r.inflections, r.certified());
+    let mut s = inflection_lines(curve, &r.inflections, r);
     let _ = writeln!(s, "corners:     {}", r.corners.len());
     for (i, c) in r.corners.iter().enumerate() {
         let kind = match c.kind {
@@ -75,14 +80,19 @@ pub(crate) fn profile_inflections_text(
             n(c.turn)
         );
     }
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    push_time_line(&mut s, stats);
     s
 }
 
 fn curve_line(s: &mut String, label: &str, curve: &Curve) {
     let _ = writeln!(s, "{label:<13}{} ({})", curve.file, describe(curve));
+}
+
+/// A line per curve of a two-curve report (`curve 1:`, `curve 2:`).
+fn curves_lines(s: &mut String, curves: &[&Curve]) {
+    for (k, c) in curves.iter().enumerate() {
+        curve_line(s, &format!("curve {}:", k + 1), c);
+    }
 }
 
 fn certified_word(certified: bool) -> &'static str {
@@ -93,57 +103,131 @@ fn certified_word(certified: bool) -> &'static str {
     }
 }
 
-/// The readable antipodal report.
-pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>) -> String {
-    let mut s = String::new();
-    curve_line(&mut s, "curve:", curve);
-    let complete = if r.complete { "" } else { ", INCOMPLETE" };
+/// The count line of what a result found (`pairs:       3 (certified)`), and on a profile
+/// the reason it is not certified.
+fn count_line(s: &mut String, label: &str, count: usize, r: &impl Verdict, why: Why, extra: &str) {
     let _ = writeln!(
         s,
-        "pairs:       {} ({}{complete})",
-        r.pairs.len(),
+        "{label:<13}{count} ({}{extra})",
         certified_word(r.certified())
     );
-    for (k, p) in r.pairs.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "  {:>3}  type {:?}  s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})  distance {}",
-            k + 1,
-            p.kind,
-            n(p.s),
-            n(p.t),
-            n(p.p[0]),
-            n(p.p[1]),
-            n(p.q[0]),
-            n(p.q[1]),
-            n(p.distance)
-        );
+    if why == Why::Stated && !r.certified() {
+        if let Some(reason) = r.reason() {
+            let _ = writeln!(s, "  (why: {reason})");
+        }
     }
-    let _ = writeln!(s, "families:    {}", r.families.len());
-    for f in &r.families {
-        let _ = writeln!(
-            s,
-            "       s in [{}, {}]  t in [{}, {}]",
-            n(f.s[0]),
-            n(f.s[1]),
-            n(f.t[0]),
-            n(f.t[1])
-        );
-    }
-    let _ = writeln!(s, "inflections: {}", r.inflections.len());
-    for (k, i) in r.inflections.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "  {:>3}  u = {:<22}  p = ({}, {})",
-            k + 1,
-            n(i.u),
-            n(i.p[0]),
-            n(i.p[1])
-        );
-    }
+}
+
+/// Whether a report states why its result is not certified (the profile reports do).
+#[derive(Clone, Copy, PartialEq)]
+enum Why {
+    Stated,
+    Unstated,
+}
+
+/// The time line, where the command was timed.
+fn push_time_line(s: &mut String, stats: Option<&Stats>) {
     if let Some(st) = stats {
         let _ = writeln!(s, "{}", time_line(st));
     }
+}
+
+/// Where on a profile a point lies: at a corner or on a segment, by its number.
+fn site(corner: bool, segment: usize) -> String {
+    let what = if corner { "corner" } else { "segment" };
+    format!("{what} {segment}")
+}
+
+/// The two sites a pair or a tangent line joins on profiles: `  (corner 1, segment 3)`.
+fn sites(corner: [bool; 2], segment: [usize; 2]) -> String {
+    format!(
+        "  ({}, {})",
+        site(corner[0], segment[0]),
+        site(corner[1], segment[1])
+    )
+}
+
+/// The parameters and points of a chord that joins `p` at `s` to `q` at `t` (an antipodal
+/// pair, a common tangent line).
+fn chord(s: f64, t: f64, p: [f64; 2], q: [f64; 2]) -> String {
+    format!(
+        "s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})",
+        n(s),
+        n(t),
+        n(p[0]),
+        n(p[1]),
+        n(q[0]),
+        n(q[1])
+    )
+}
+
+/// The ranges of parameters a family of antipodal pairs spans.
+fn family_range(s: [f64; 2], t: [f64; 2]) -> String {
+    format!(
+        "s in [{}, {}]  t in [{}, {}]",
+        n(s[0]),
+        n(s[1]),
+        n(t[0]),
+        n(t[1])
+    )
+}
+
+/// A line of an antipodal report, on a curve or a profile: the pair's type (if it has one),
+/// its chord, its length and (on a profile) its sites.
+struct PairRow {
+    kind: String,
+    chord: String,
+    distance: f64,
+    sites: String,
+}
+
+/// The head of an antipodal report, on a curve or a profile: the curve, the pairs and the
+/// families (each family's range and what follows it).
+fn antipodal_head(
+    curve: &Curve,
+    r: &impl Verdict,
+    complete: bool,
+    why: Why,
+    pairs: impl ExactSizeIterator<Item = PairRow>,
+    families: impl ExactSizeIterator<Item = String>,
+) -> String {
+    let mut s = String::new();
+    curve_line(&mut s, "curve:", curve);
+    let complete = if complete { "" } else { ", INCOMPLETE" };
+    count_line(&mut s, "pairs:", pairs.len(), r, why, complete);
+    for (k, p) in pairs.enumerate() {
+        let _ = writeln!(
+            s,
+            "  {:>3}  type {}  {}  distance {}{}",
+            k + 1,
+            p.kind,
+            p.chord,
+            n(p.distance),
+            p.sites
+        );
+    }
+    let _ = writeln!(s, "families:    {}", families.len());
+    for f in families {
+        let _ = writeln!(s, "       {f}");
+    }
+    s
+}
+
+/// The readable antipodal report.
+pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>) -> String {
+    let pairs = r.pairs.iter().map(|p| PairRow {
+        kind: format!("{:?}", p.kind),
+        chord: chord(p.s, p.t, p.p, p.q),
+        distance: p.distance,
+        sites: String::new(),
+    });
+    let families = r.families.iter().map(|f| family_range(f.s, f.t));
+    let mut s = antipodal_head(curve, r, r.complete, Why::Unstated, pairs, families);
+    let _ = writeln!(s, "inflections: {}", r.inflections.len());
+    for (k, i) in r.inflections.iter().enumerate() {
+        inflection_row(&mut s, k, i, "");
+    }
+    push_time_line(&mut s, stats);
     s
 }
 
@@ -154,51 +238,16 @@ pub(crate) fn profile_antipodal_text(
     r: &ProfileAntipodal,
     stats: Option<&Stats>,
 ) -> String {
-    let mut s = String::new();
-    curve_line(&mut s, "curve:", curve);
-    let complete = if r.complete { "" } else { ", INCOMPLETE" };
-    let _ = writeln!(
-        s,
-        "pairs:       {} ({}{complete})",
-        r.pairs.len(),
-        certified_word(r.certified())
-    );
-    if let Some(why) = r.reason().as_ref().filter(|_| !r.certified()) {
-        let _ = writeln!(s, "  (why: {why})");
-    }
-    for (k, p) in r.pairs.iter().enumerate() {
-        let kind = p.kind.map_or("-".to_string(), |t| format!("{t:?}"));
-        let end = |corner: bool, segment: usize| {
-            if corner {
-                format!("corner {segment}")
-            } else {
-                format!("segment {segment}")
-            }
-        };
-        let _ = writeln!(
-            s,
-            "  {:>3}  type {kind}  s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})  distance {}  ({}, {})",
-            k + 1,
-            n(p.s),
-            n(p.t),
-            n(p.p[0]),
-            n(p.p[1]),
-            n(p.q[0]),
-            n(p.q[1]),
-            n(p.distance),
-            end(p.corner[0], p.segment[0]),
-            end(p.corner[1], p.segment[1]),
-        );
-    }
-    let _ = writeln!(s, "families:    {}", r.families.len());
-    for f in &r.families {
-        let _ = writeln!(
-            s,
-            "       s in [{}, {}]  t in [{}, {}]  from ({}, {})-({}, {}) to ({}, {})-({}, {})",
-            n(f.s[0]),
-            n(f.s[1]),
-            n(f.t[0]),
-            n(f.t[1]),
+    let pairs = r.pairs.iter().map(|p| PairRow {
+        kind: p.kind.map_or("-".to_string(), |t| format!("{t:?}")),
+        chord: chord(p.s, p.t, p.p, p.q),
+        distance: p.distance,
+        sites: sites(p.corner, p.segment),
+    });
+    let families = r.families.iter().map(|f| {
+        format!(
+            "{}  from ({}, {})-({}, {}) to ({}, {})-({}, {})",
+            family_range(f.s, f.t),
             n(f.p[0][0]),
             n(f.p[0][1]),
             n(f.q[0][0]),
@@ -207,8 +256,9 @@ pub(crate) fn profile_antipodal_text(
             n(f.p[1][1]),
             n(f.q[1][0]),
             n(f.q[1][1]),
-        );
-    }
+        )
+    });
+    let mut s = antipodal_head(curve, r, r.complete, Why::Stated, pairs, families);
     let corners = ProfileInflections {
         inflections: r.inflections.clone(),
         corners: r.corners.clone(),
@@ -220,35 +270,29 @@ pub(crate) fn profile_antipodal_text(
     s
 }
 
+/// A common-tangent report, of curves or profiles: the curves, then each line's chord and
+/// what follows it.
+fn tangent_lines(
+    curves: &[&Curve],
+    r: &impl Verdict,
+    why: Why,
+    lines: impl ExactSizeIterator<Item = String>,
+    stats: Option<&Stats>,
+) -> String {
+    let mut s = String::new();
+    curves_lines(&mut s, curves);
+    count_line(&mut s, "lines:", lines.len(), r, why, "");
+    for (k, line) in lines.enumerate() {
+        let _ = writeln!(s, "  {:>3}  {line}", k + 1);
+    }
+    push_time_line(&mut s, stats);
+    s
+}
+
 /// The readable common-tangent report.
 pub(crate) fn tangents_text(curves: &[&Curve], r: &Tangents, stats: Option<&Stats>) -> String {
-    let mut s = String::new();
-    for (k, c) in curves.iter().enumerate() {
-        curve_line(&mut s, &format!("curve {}:", k + 1), c);
-    }
-    let _ = writeln!(
-        s,
-        "lines:       {} ({})",
-        r.lines.len(),
-        certified_word(r.certified())
-    );
-    for (k, l) in r.lines.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "  {:>3}  s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})",
-            k + 1,
-            n(l.s),
-            n(l.t),
-            n(l.p[0]),
-            n(l.p[1]),
-            n(l.q[0]),
-            n(l.q[1])
-        );
-    }
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
-    s
+    let lines = r.lines.iter().map(|l| chord(l.s, l.t, l.p, l.q));
+    tangent_lines(curves, r, Why::Unstated, lines, stats)
 }
 
 /// The readable common-tangent report of profiles: each line with its corners and segments.
@@ -257,45 +301,11 @@ pub(crate) fn profile_tangents_text(
     r: &ProfileTangents,
     stats: Option<&Stats>,
 ) -> String {
-    let mut s = String::new();
-    for (k, c) in curves.iter().enumerate() {
-        curve_line(&mut s, &format!("curve {}:", k + 1), c);
-    }
-    let _ = writeln!(
-        s,
-        "lines:       {} ({})",
-        r.lines.len(),
-        certified_word(r.certified())
-    );
-    if let Some(why) = r.reason().as_ref().filter(|_| !r.certified()) {
-        let _ = writeln!(s, "  (why: {why})");
-    }
-    let end = |corner: bool, segment: usize| {
-        if corner {
-            format!("corner {segment}")
-        } else {
-            format!("segment {segment}")
-        }
-    };
-    for (k, l) in r.lines.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "  {:>3}  s = {:<20}  t = {:<20}  p = ({}, {})  q = ({}, {})  ({}, {})",
-            k + 1,
-            n(l.s),
-            n(l.t),
-            n(l.p[0]),
-            n(l.p[1]),
-            n(l.q[0]),
-            n(l.q[1]),
-            end(l.corner[0], l.segment[0]),
-            end(l.corner[1], l.segment[1]),
-        );
-    }
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
-    s
+    let lines = r
+        .lines
+        .iter()
+        .map(|l| chord(l.s, l.t, l.p, l.q) + &sites(l.corner, l.segment));
+    tangent_lines(curves, r, Why::Stated, lines, stats)
 }
 
 /// The readable bisector report (branch ends; the full polylines are in the JSON).
@@ -311,10 +321,7 @@ pub(crate) fn profile_bisector_text(
     r: &ProfileBisector,
     stats: Option<&Stats>,
 ) -> String {
-    let site = |k: usize, b: &ProfileBranch| {
-        let what = if b.corner[k] { "corner" } else { "segment" };
-        format!("{what} {}", b.segment[k])
-    };
+    let site = |k: usize, b: &ProfileBranch| site(b.corner[k], b.segment[k]);
     let branches = r
         .branches
         .iter()
@@ -333,9 +340,7 @@ fn bisector_lines<'a>(
     stats: Option<&Stats>,
 ) -> String {
     let mut s = String::new();
-    for (k, c) in curves.iter().enumerate() {
-        curve_line(&mut s, &format!("curve {}:", k + 1), c);
-    }
+    curves_lines(&mut s, curves);
     let complete = if complete {
         ""
     } else {
@@ -357,8 +362,6 @@ fn bisector_lines<'a>(
         }
     }
     let _ = writeln!(s, "singular:    {singular}\nisolated:    {isolated}");
-    if let Some(st) = stats {
-        let _ = writeln!(s, "{}", time_line(st));
-    }
+    push_time_line(&mut s, stats);
     s
 }

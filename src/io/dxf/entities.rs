@@ -4,7 +4,7 @@
 
 use super::spline::{spline, Spline};
 use super::text::Record;
-use crate::io::{Problem, MAX_ABS, MAX_SEGMENTS};
+use crate::io::{Problem, MAX_ABS};
 use curve::{Affine, Segment, JOIN_GAP};
 use dxf::entities::{Entity, EntityType};
 use numeric::rounding::ulps;
@@ -246,6 +246,18 @@ fn off(why: String) -> Outcome {
     Outcome::Skip { outline: true, why }
 }
 
+/// Whether an entity of extrusion direction `$normal` is mirrored in x (its object
+/// coordinates the world's, or mirrored); an entity out of the drawing's plane is skipped:
+/// the function returns its outcome.
+macro_rules! level_or_skip {
+    ($normal:expr) => {
+        match plane($normal)? {
+            Plane::Level { mirrored } => mirrored,
+            Plane::Off(why) => return Ok(off(why)),
+        }
+    };
+}
+
 /// The shape of one entity (a zero-length line is decided later), or why it is not read.
 pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, EntityError> {
     let vec3 = |v: &dxf::Vector| [v.x, v.y, v.z];
@@ -265,10 +277,7 @@ pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, 
             segment(Segment::line(from, to).map_err(|e| curve_error("", e))?)
         }
         EntityType::Arc(a) => {
-            let mirrored = match plane(vec3(&a.normal))? {
-                Plane::Level { mirrored } => mirrored,
-                Plane::Off(why) => return Ok(off(why)),
-            };
+            let mirrored = level_or_skip!(vec3(&a.normal));
             let center = point("center", a.center.x, a.center.y)?;
             let r = positive("radius", a.radius)?;
             let start = number("start angle", a.start_angle)?.rem_euclid(360.0);
@@ -281,10 +290,7 @@ pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, 
             segment(placed(seg, mirrored)?)
         }
         EntityType::Circle(c) => {
-            let mirrored = match plane(vec3(&c.normal))? {
-                Plane::Level { mirrored } => mirrored,
-                Plane::Off(why) => return Ok(off(why)),
-            };
+            let mirrored = level_or_skip!(vec3(&c.normal));
             let center = point("center", c.center.x, c.center.y)?;
             let r = positive("radius", c.radius)?;
             let seg = Segment::arc(center, r, 0.0, TAU).map_err(|e| curve_error("", e))?;
@@ -292,10 +298,7 @@ pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, 
         }
         EntityType::Ellipse(e) => ellipse(e)?,
         EntityType::LwPolyline(p) => {
-            let mirrored = match plane(vec3(&p.extrusion_direction))? {
-                Plane::Level { mirrored } => mirrored,
-                Plane::Off(why) => return Ok(off(why)),
-            };
+            let mirrored = level_or_skip!(vec3(&p.extrusion_direction));
             let vertices = p
                 .vertices
                 .iter()
@@ -316,10 +319,7 @@ pub(super) fn shape_of(entity: &Entity, record: &Record<'_>) -> Result<Outcome, 
             let three_d = p.flags & 8 != 0;
             let mirrored = match three_d {
                 true => false,
-                false => match plane(vec3(&p.normal))? {
-                    Plane::Level { mirrored } => mirrored,
-                    Plane::Off(why) => return Ok(off(why)),
-                },
+                false => level_or_skip!(vec3(&p.normal)),
             };
             // Spline-frame control vertices (16) are not on the curve drawn.
             let drawn = || p.vertices().filter(|v| v.flags & 16 == 0);
@@ -363,15 +363,8 @@ fn polyline(
     mirrored: bool,
     closed: bool,
 ) -> Result<Outcome, EntityError> {
-    if vertices.len() > MAX_SEGMENTS {
-        return Err((
-            "vertices".into(),
-            Problem::OutOfRange {
-                rule: format!("at most {MAX_SEGMENTS} vertices"),
-                value: vertices.len() as f64,
-            },
-        ));
-    }
+    crate::io::profile::at_most_max_segments(vertices.len(), "vertices")
+        .map_err(|p| ("vertices".into(), p))?;
     if vertices.len() < 2 {
         // (A single vertex is a point: nothing drawn.)
         return Ok(Outcome::Nothing);
@@ -396,10 +389,7 @@ pub(super) fn full_turn(sweep: f64) -> f64 {
 
 /// An `ELLIPSE` in world coordinates, or why it is not read.
 fn ellipse(e: &dxf::entities::Ellipse) -> Result<Outcome, EntityError> {
-    let flip = match plane([e.normal.x, e.normal.y, e.normal.z])? {
-        Plane::Level { mirrored } => mirrored,
-        Plane::Off(why) => return Ok(off(why)),
-    };
+    let flip = level_or_skip!([e.normal.x, e.normal.y, e.normal.z]);
     let center = point("center", e.center.x, e.center.y)?;
     let axis = point("major axis", e.major_axis.x, e.major_axis.y)?;
     let rx = axis[0].hypot(axis[1]);

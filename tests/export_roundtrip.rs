@@ -10,10 +10,10 @@ use common::fixture;
 use curvekit::commands::{self, Distances};
 use curvekit::curve::{ParamCurve, Profile, SegmentKind};
 use curvekit::export::{dxf_file, svg_paths};
+use curvekit::geometry::NearestPoint;
 use curvekit::io::{parse_drawing, parse_region, read_region, Curve, DrawingFormat};
 use curvekit::medial::{MedialOptions, NodeKind};
 use curvekit::offset::{OffsetOptions, OffsetSegment, Offsets};
-use curvekit::geometry::NearestPoint;
 
 /// The round trip's bound, relative to the size (the contract's).
 const ROUND_TRIP: f64 = 1e-9;

@@ -12,8 +12,8 @@ mod graph;
 
 use common::curvekit_json;
 use curvekit::curve::{ParamCurve, Profile, Region, SegmentKind, V2};
-use curvekit::io::{parse_region, read_curve_picked, CurveKind, DrawingFormat};
 use curvekit::geometry::NearestPoint;
+use curvekit::io::{parse_region, read_curve_picked, CurveKind, DrawingFormat};
 use numeric::certificate::Verdict;
 use proptest::prelude::*;
 use serde_json::Value;

@@ -11,8 +11,8 @@ use super::written::{
 };
 use super::{bulge_circle, temp_dxf};
 use curve::{ParamCurve, Profile, Region, V2};
-use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};
 use curvekit::geometry::NearestPoint;
+use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::time::{Duration, Instant};

@@ -8,6 +8,7 @@ use crate::bezier_piece::{pieces_of, BezierPiece};
 use crate::profile::Profile;
 use crate::region::Region;
 use crate::V2;
+use numeric::subdivide::{depth_first, Decision};
 
 /// How far (relative to the box found) a piece's box may stick out and be taken as on the
 /// box: a size is a scale for tolerances, needed to a few digits only.
@@ -55,8 +56,8 @@ pub fn curves_box(curves: &[&bspline::Rational]) -> crate::Result<Box2> {
 
 /// The box of the points of `segments` (see [`Profile::bounding_box`]).
 fn segments_box(segments: &[crate::Segment]) -> Box2 {
-    let mut stack: Vec<BezierPiece> = pieces_of(0, segments);
-    let mut found = stack.iter().fold(
+    let pieces: Vec<BezierPiece> = pieces_of(0, segments);
+    let mut found = pieces.iter().fold(
         [
             f64::INFINITY,
             f64::INFINITY,
@@ -65,34 +66,44 @@ fn segments_box(segments: &[crate::Segment]) -> Box2 {
         ],
         |b, s| union(b, ends(s)),
     );
-    while let Some(s) = stack.pop() {
-        let Some([lo, hi]) = s.bounds else {
-            // (A weight not positive: no hull to bound it; its ends are on it.)
-            continue;
-        };
-        let control = [lo.x, lo.y, hi.x, hi.y];
-        let room = BOX_FLATNESS * box_size(found);
-        let beyond = |by: f64| {
-            control[0] < found[0] - by
-                || control[1] < found[1] - by
-                || control[2] > found[2] + by
-                || control[3] > found[3] + by
-        };
-        if !beyond(0.0) {
-            continue;
-        }
-        // (Within the flatness, or halved as far as it goes: its control box, which holds
-        // it, is taken.)
-        if !beyond(room) || s.depth >= MAX_EXTENT_DEPTH {
-            found = union(found, control);
-            continue;
-        }
-        for half in s.halves() {
-            found = union(found, ends(&half));
-            stack.push(half);
-        }
+    // (The last piece first, and of two halves the second first, as the box was always
+    // grown: the flatness allowed is relative to the box found so far.)
+    for piece in pieces.into_iter().rev() {
+        depth_first(piece, MAX_EXTENT_DEPTH, |s, visit| {
+            grow_box(&mut found, s, visit.can_halve)
+        });
     }
     found
+}
+
+/// Grows `found` by piece `s` where its control box sticks out of it: by the control box
+/// where that is within the flatness (or `s` may not be halved), else by the ends of its
+/// halves, which are then visited.
+fn grow_box(found: &mut Box2, s: BezierPiece, can_halve: bool) -> Decision<BezierPiece, ()> {
+    let Some([lo, hi]) = s.bounds else {
+        // (A weight not positive: no hull to bound it; its ends are on it.)
+        return Decision::Decided;
+    };
+    let control = [lo.x, lo.y, hi.x, hi.y];
+    let room = BOX_FLATNESS * box_size(*found);
+    let beyond = |by: f64| {
+        control[0] < found[0] - by
+            || control[1] < found[1] - by
+            || control[2] > found[2] + by
+            || control[3] > found[3] + by
+    };
+    if !beyond(0.0) {
+        return Decision::Decided;
+    }
+    // (Within the flatness, or halved as far as it goes: its control box, which holds
+    // it, is taken.)
+    if !beyond(room) || !can_halve {
+        *found = union(*found, control);
+        return Decision::Decided;
+    }
+    let [first, second] = s.halves();
+    *found = union(union(*found, ends(&first)), ends(&second));
+    Decision::Halve(second, first)
 }
 
 impl Profile {

@@ -25,6 +25,7 @@
 use crate::pairs::{Neighbours, SegmentId};
 use boostvoronoi::prelude::{Builder, Diagram, EdgeIndex, Line, SourceCategory};
 use curve::{Profile, SegmentKind, V2};
+use numeric::subdivide::{depth_first, Decision};
 use std::collections::HashSet;
 use std::f64::consts::PI;
 use std::sync::mpsc;
@@ -282,9 +283,9 @@ fn chord_params(b: &Profile, i: usize, sag: f64) -> Vec<f64> {
         return out;
     }
     let lo = i as f64;
-    let mut stack = vec![(lo, lo + 1.0, 0usize)];
-    // (Last in, first out: the right half is pushed first, so the params come in order.)
-    while let Some((u0, u1, depth)) = stack.pop() {
+    // (The first half first, so the params come in order.)
+    depth_first((lo, lo + 1.0), MAX_SEED_CHORD_DEPTH, |(u0, u1), visit| {
+        let depth = visit.depth;
         let (a, m, c) = (
             b.jet_on(i, u0, 1),
             b.jet_on(i, 0.5 * (u0 + u1), 0),
@@ -297,16 +298,15 @@ fn chord_params(b: &Profile, i: usize, sag: f64) -> Vec<f64> {
             (m.p - a.p).norm()
         };
         let turn = a.d1.cross(c.d1).atan2(a.d1.dot(c.d1)).abs();
-        if depth < MAX_SEED_CHORD_DEPTH
-            && (depth < MIN_CHORD_DEPTH || off > sag || turn > CHORD_TURN)
-        {
+        if visit.can_halve && (depth < MIN_CHORD_DEPTH || off > sag || turn > CHORD_TURN) {
             let mid = 0.5 * (u0 + u1);
-            stack.push((mid, u1, depth + 1));
-            stack.push((u0, mid, depth + 1));
-        } else if u1 < lo + 1.0 {
+            return Decision::<_, ()>::Halve((u0, mid), (mid, u1));
+        }
+        if u1 < lo + 1.0 {
             out.push(u1);
         }
-    }
+        Decision::Decided
+    });
     out
 }
 

@@ -11,6 +11,8 @@
 //!   `nalgebra`'s fixed-size matrices, with its damped step, residual test and iteration bound.
 //! - [`minimize`]: the one bracketed minimisation, [`minimize::minimize`] (parabolic steps
 //!   safeguarded by golden sections), and its Newton polish, [`minimize::polish`].
+//! - [`subdivide`]: the one halve-until-decided driver, [`subdivide::depth_first`] (depth
+//!   first, first half first, so kept parts come in order; the depth bounded).
 //! - [`tolerance`]: the parameter and chord tolerances and the size as validated types, with
 //!   their defaults and accepted ranges written once, and the [`tolerance::Settings`] that
 //!   carries them from the edge to every algorithm.
@@ -35,6 +37,7 @@ pub mod newton2;
 mod rect;
 pub mod rounding;
 pub mod solve;
+pub mod subdivide;
 pub mod tolerance;
 
 pub use interval::Interval;

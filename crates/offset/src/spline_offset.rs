@@ -6,6 +6,7 @@
 use crate::OffsetSegment;
 use bspline::fit::fit_samples;
 use curve::V2;
+use numeric::subdivide::{depth_first, Decision};
 
 /// Halvings of a spline's span before its offset polyline is taken as it is (2^16 chords).
 const MAX_OFFSET_HALVINGS: usize = 16;
@@ -92,22 +93,21 @@ fn polyline_parameters(
 ) -> (Vec<f64>, f64) {
     let mut params = vec![from];
     let mut error = 0.0f64;
-    let mut stack = vec![(from, to, 0usize)];
-    while let Some((a, b, depth)) = stack.pop() {
+    depth_first((from, to), MAX_OFFSET_HALVINGS, |(a, b), visit| {
         let (pa, pb) = (point(a), point(b));
         let off = |t: f64| {
             let p = point(a + (b - a) * t);
             curve::distance_to_segment(p.arr(), pa.arr(), pb.arr())
         };
         let deviation = off(0.25).max(off(0.5)).max(off(0.75));
-        if deviation > chord && depth < MAX_OFFSET_HALVINGS {
+        if deviation > chord && visit.can_halve {
             let m = 0.5 * (a + b);
-            stack.push((m, b, depth + 1));
-            stack.push((a, m, depth + 1));
+            Decision::<_, ()>::Halve((a, m), (m, b))
         } else {
             error = error.max(deviation);
             params.push(b);
+            Decision::Decided
         }
-    }
+    });
     (params, error)
 }

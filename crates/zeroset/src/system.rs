@@ -14,6 +14,7 @@ use bspline::tensor::TensorBSpline;
 use nalgebra::{Matrix2, Vector2};
 use numeric::newton2::{newton2, Iterate, Newton2, StepVerdict};
 use numeric::rounding::{ulps, UNIT_ROUNDOFF};
+use numeric::subdivide::{depth_first, Decision};
 use numeric::Rect;
 use serde::{Deserialize, Serialize};
 
@@ -79,18 +80,18 @@ pub fn solve_system(
             4.0 * (cf.pt + cf.pr + 2) as f64 * UNIT_ROUNDOFF * sf,
             4.0 * (cg.pt + cg.pr + 2) as f64 * UNIT_ROUNDOFF * sg,
         ];
-        let mut stack = vec![(cf.clone(), cg.clone(), 0usize)];
-        while let Some((pf, pg, depth)) = stack.pop() {
+        depth_first((cf.clone(), cg.clone()), max_depth, |(pf, pg), visit| {
+            let depth = visit.depth;
             boxes += 1;
             if boxes > opts.max_boxes {
-                break;
+                return Decision::Stop(());
             }
             let ef = (pf.pt + pf.pr + 2) as f64 * (depth + 4) as f64 * UNIT_ROUNDOFF * sf;
             let eg = (pg.pt + pg.pr + 2) as f64 * (depth + 4) as f64 * UNIT_ROUNDOFF * sg;
             if common_sign(pf.c.iter().copied(), ef) != 0
                 || common_sign(pg.c.iter().copied(), eg) != 0
             {
-                continue;
+                return Decision::Decided;
             }
             let bx = pf.rect();
             if unique(&pf, &pg) {
@@ -100,12 +101,12 @@ pub fn solve_system(
                         r,
                         certified: true,
                     });
-                    continue;
+                    return Decision::Decided;
                 }
             }
             let [wt, wr] = bx.widths();
             let small = wt <= min[0] && wr <= min[1];
-            if small || depth >= max_depth {
+            if small || !visit.can_halve {
                 let [mt, mr] = bx.mid();
                 let (t, r) = newton(cf, cg, bx.grown(min), noise).unwrap_or((mt, mr));
                 sols.push(Solution {
@@ -113,7 +114,7 @@ pub fn solve_system(
                     r,
                     certified: false,
                 });
-                continue;
+                return Decision::Decided;
             }
             let split_t = wt / ext[0] >= wr / ext[1];
             let s = 0.498_763_4;
@@ -122,9 +123,8 @@ pub fn solve_system(
             } else {
                 (pf.split_r(s), pg.split_r(s))
             };
-            stack.push((fb, gb, depth + 1));
-            stack.push((fa, ga, depth + 1));
-        }
+            Decision::Halve((fa, ga), (fb, gb))
+        });
     }
     Ok(dedup(
         sols,

@@ -125,10 +125,11 @@ fn nearest_on(s: &Segment, x: V2, beat: f64) -> Option<(f64, f64)> {
         let control = ControlPoints::of(&current, dim, x);
         // (A weight that may not be positive bounds nothing: such a piece is halved.)
         if control.w_min > 2.0 * err.weight {
-            // Passed over when its hull, moved nearer by what rounding may hide and farther by
-            // as much (the piece holding the point found is then passed over too, once its
-            // hull is within the slack of it), is no nearer than the point found less the
-            // slack.
+            // Passed over when its proven bound (the hull's distance less what rounding may
+            // hide) is no nearer than the point found less the slack and twice that room: a
+            // point nearer by less is within rounding of the point found. (Without the room,
+            // the pieces about the point found, within rounding of it themselves, would be
+            // halved to the depth bound.)
             let room = err.room(control.w_min, control.mag, depth);
             let slack = NEAREST_SLACK * control.mag;
             if hull_distance(&control.pts, x) + room >= best.0.min(beat) - slack {

@@ -303,20 +303,15 @@ pub(crate) fn curve_profile(shape: &super::CurveKind) -> Option<Result<Profile, 
                 super::SplineKind::BSpline => SegmentKind::BSpline,
             };
             let segment = if s.periodic {
-                s.curve
-                    .restrict(a, b)
-                    .map_err(curve::Error::from)
-                    .and_then(curve::SplineCurve::new)
+                Segment::periodic_spline(kind, &s.plane)
             } else {
-                Ok(s.plane.clone())
-            }
-            .and_then(|c| Segment::spline(kind, c));
+                Segment::spline(kind, s.plane.clone())
+            };
             segment
                 .and_then(|seg| Profile::of_curve(seg, (a, b)))
                 .map_err(|e| geometry("points", e))
         }
-        super::CurveKind::Analytic(a) => a
-            .boundary_segment()
+        super::CurveKind::Analytic(a) => Segment::of_shape(*a)
             .and_then(|seg| Profile::of_curve(seg, (0.0, std::f64::consts::TAU)))
             .map_err(|e| geometry("kind", e)),
     };

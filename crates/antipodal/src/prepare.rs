@@ -9,7 +9,7 @@ use crate::forms::SymbolicForms;
 use crate::types::{Antipodal, Inflections, Options, Provenance, Tangents};
 use crate::view::Source;
 use curve::circle::Angle;
-use curve::{Frame, Local, OnCircle, ParamCurve, PlaneCurve, StraightSpan};
+use curve::{ExactCurve, Frame, OnCircle, ParamCurve, PlaneCurve, StraightSpan};
 use numeric::certificate::{Certified, Doubt, Doubts};
 use std::sync::Arc;
 
@@ -21,7 +21,7 @@ pub struct Prepared<'c> {
     frame: Frame,
     /// The curve moved into the frame (`None`: a curve known only by evaluation, used as
     /// given).
-    local: Option<Local>,
+    local: Option<ExactCurve>,
     /// An analytic shape in the parameter of its rational-circle form, where its symbolic
     /// forms live.
     circle: Option<OnCircle>,
@@ -77,8 +77,8 @@ impl<'c> Prepared<'c> {
         };
         let local = exact.in_frame(&frame);
         let lobes = match &local {
-            Local::Shape(s) => s.lobes() as usize,
-            Local::Spline(_) => 1,
+            ExactCurve::Shape(s) => s.lobes() as usize,
+            ExactCurve::Spline(_) => 1,
         };
         // (Straightness is proven on the data as given: the frame moves the curve, not its
         // parameters.)
@@ -87,8 +87,8 @@ impl<'c> Prepared<'c> {
             curve::Exact::Shape(s) => (Vec::new(), s.is_exact_circle()),
         };
         let (circle, pieces, simple) = match &local {
-            Local::Spline(s) => (None, Some(s.exact_pieces()), false),
-            Local::Shape(shape) => match (shape.circle_shape(), shape.exact_pieces()) {
+            ExactCurve::Spline(s) => (None, Some(s.exact_pieces()), false),
+            ExactCurve::Shape(shape) => match (shape.circle_shape(), shape.exact_pieces()) {
                 (Some(form), Some(pieces)) => (Some(OnCircle::new(form)), Some(pieces), true),
                 _ => (None, None, true),
             },

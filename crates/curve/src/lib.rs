@@ -62,7 +62,7 @@ pub use geom::{distance_to_segment, squared_distance_to_segment, wrap_pi, Jet, V
 pub use on_circle::OnCircle;
 pub use own_param::OwnParam;
 pub use param::ParamCurve;
-pub use plane::{Exact, Local, PlaneCurve};
+pub use plane::{Exact, ExactCurve, PlaneCurve};
 pub use profile::{Joint, JointKind, Profile, JOIN_GAP};
 pub use region::Region;
 pub use segment::{Segment, SegmentKind};

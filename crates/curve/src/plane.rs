@@ -41,29 +41,31 @@ impl Exact<'_> {
 
     /// The same curve in `frame`, owned; exact where the frame was chosen for it (see
     /// [`Frame`]), with any rounding of the change carried as error of its coefficients.
-    pub fn in_frame(&self, frame: &Frame) -> Local {
+    pub fn in_frame(&self, frame: &Frame) -> ExactCurve {
         match self {
-            Exact::Spline(s) => Local::Spline(Box::new(s.in_frame(frame))),
-            Exact::Shape(s) => Local::Shape(s.in_frame(frame)),
+            Exact::Spline(s) => ExactCurve::Spline(Box::new(s.in_frame(frame))),
+            Exact::Shape(s) => ExactCurve::Shape(s.in_frame(frame)),
         }
     }
 }
 
-/// A curve of this crate moved into a frame (see [`Exact::in_frame`]).
-#[derive(Debug, Clone)]
-pub enum Local {
+/// One of this crate's curve kinds, owned: a curve moved into a frame (see
+/// [`Exact::in_frame`]), or the smooth closed curve a segment runs once round (see
+/// [`crate::Segment::whole_curve`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExactCurve {
     /// A B-spline or NURBS curve.
     Spline(Box<SplineCurve>),
     /// An analytic shape.
     Shape(Shape),
 }
 
-impl Local {
+impl ExactCurve {
     /// The curve as the algorithms evaluate it.
     pub fn curve(&self) -> &dyn PlaneCurve {
         match self {
-            Local::Spline(s) => s.as_ref(),
-            Local::Shape(s) => s,
+            ExactCurve::Spline(s) => s.as_ref(),
+            ExactCurve::Shape(s) => s,
         }
     }
 }
@@ -99,7 +101,3 @@ impl PlaneCurve for SplineCurve {
 /// A shape in the rational circle's parameter is known to the algorithms by evaluation: its
 /// exact form is its shape's.
 impl PlaneCurve for OnCircle {}
-
-/// A profile is known to the algorithms of smooth curves by evaluation only: its segments'
-/// exact forms are taken segment by segment by the algorithms that know of profiles.
-impl PlaneCurve for crate::Profile {}

@@ -207,12 +207,15 @@ impl Profile {
             0.0
         };
         let left = if closed { orientation > 0.0 } else { true };
+        // The seam of a smooth closed curve taken whole is smooth by its definition, however
+        // its exact form's end tangents round (an ellipse far from the origin).
+        let whole = closed && n == 1 && segments[0].whole_curve().is_some();
         let joints = turns
             .into_iter()
             .map(|(i, turn)| Joint {
                 u: i as f64,
                 turn,
-                kind: if turn.abs() <= CORNER_TURN {
+                kind: if turn.abs() <= CORNER_TURN || whole {
                     JointKind::Smooth
                 } else if (turn > 0.0) == left {
                     JointKind::Convex
@@ -369,6 +372,10 @@ impl Profile {
         i as f64 + (v - a) / (b - a)
     }
 }
+
+/// A profile is known to the algorithms of smooth curves by evaluation only: its segments'
+/// exact forms are taken segment by segment by the algorithms that know of profiles.
+impl crate::plane::PlaneCurve for Profile {}
 
 impl ParamCurve for Profile {
     fn domain(&self) -> (f64, f64) {

@@ -7,6 +7,8 @@ use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
 use crate::own_param::OwnParam;
 use crate::param::ParamCurve;
+use crate::plane::ExactCurve;
+use crate::shapes::{circle_form_spline, CircleShape, Shape};
 use crate::spline::SplineCurve;
 use std::f64::consts::{FRAC_PI_2, TAU};
 
@@ -48,6 +50,9 @@ pub struct Segment {
     circle: Option<([f64; 2], f64)>,
     /// How the exact form's parameter maps to the segment's own (an arc's angle share).
     own: OwnParam,
+    /// The smooth closed curve the segment runs once round, as it was defined, where it was
+    /// made from one (see [`Segment::whole_curve`]).
+    whole: Option<ExactCurve>,
 }
 
 /// The widest angle one rational quadratic piece of an arc spans: a quarter turn keeps its
@@ -80,6 +85,7 @@ impl Segment {
             curve: SplineCurve::clamped(1, &[from, to], None, None)?,
             circle: None,
             own: OwnParam::Same,
+            whole: None,
         })
     }
 
@@ -164,6 +170,7 @@ impl Segment {
                 pieces: k,
                 piece_sweep: step,
             },
+            whole: None,
         })
     }
 
@@ -182,6 +189,7 @@ impl Segment {
             curve,
             circle: None,
             own: OwnParam::Same,
+            whole: None,
         })
     }
 
@@ -198,7 +206,119 @@ impl Segment {
             curve,
             circle,
             own,
+            whole: None,
         }
+    }
+
+    /// A periodic spline as the segment that runs once round it: the spline clamped over its
+    /// domain (the same curve, its seam now the segment's ends), its parameter the spline's.
+    /// Where the spline is at least `C¹` across its seam, the segment keeps it as its
+    /// [`whole curve`](Segment::whole_curve): smooth there by definition.
+    ///
+    /// ```
+    /// use curve::{ParamCurve, Segment, SegmentKind, SplineCurve};
+    /// let ring = [[2.0, 0.0], [0.0, 1.0], [-2.0, 0.0], [0.0, -1.0]];
+    /// let spline = SplineCurve::periodic(3, &ring, None).unwrap();
+    /// let seg = Segment::periodic_spline(SegmentKind::BSpline, &spline).unwrap();
+    /// assert!(seg.is_closed() && seg.whole_curve().is_some());
+    /// assert!((seg.jet(1.5).p - spline.jet(1.5).p).norm() < 1e-15);
+    /// ```
+    pub fn periodic_spline(kind: SegmentKind, periodic: &SplineCurve) -> Result<Self> {
+        let Some(order) = periodic.periodic_order() else {
+            return Err(Error::InvalidShape {
+                field: "periodic",
+                value: 0.0,
+                why: "true: a periodic spline",
+            });
+        };
+        let (a, b) = periodic.domain();
+        let clamped = SplineCurve::new(periodic.curve().restrict(a, b)?)?;
+        let segment = Segment::spline(kind, clamped)?;
+        Ok(if order >= 1 {
+            segment.of_whole_curve(ExactCurve::Spline(Box::new(periodic.clone())))
+        } else {
+            segment
+        })
+    }
+
+    /// An analytic shape as one closed segment, for a profile whose parameter is the shape's
+    /// angle φ ∈ `[0, 2π)` ([`crate::Profile::of_curve`] on `(0, 2π)`): a circle or an
+    /// ellipse as a full-turn arc (its own parameter the angle's share), the other shapes as
+    /// their exact rational form on the rational circle (its own parameter the angle itself),
+    /// with the rounding of that form's coefficients as their error. The shape is the
+    /// segment's [`whole curve`](Segment::whole_curve).
+    ///
+    /// ```
+    /// use curve::shapes::{Limacon, Shape};
+    /// use curve::{ParamCurve, Profile, Segment};
+    /// let shape = Shape::Limacon(Limacon::new(4.0, 2.5).unwrap());
+    /// let seg = Segment::of_shape(shape).unwrap();
+    /// let p = Profile::of_curve(seg, (0.0, std::f64::consts::TAU)).unwrap();
+    /// let u = p.internal_param(1.0);
+    /// let want = shape.jet(1.0).p;
+    /// assert!((p.jet(u).p - want).norm() < 1e-13);
+    /// ```
+    pub fn of_shape(shape: Shape) -> Result<Self> {
+        let segment = match (shape, shape.circle_shape()) {
+            (Shape::Circle(c), _) => Segment::arc(c.center(), c.r(), 0.0, TAU),
+            (Shape::Ellipse(e), _) => {
+                Segment::elliptic_arc(e.center(), e.a(), e.b(), 0.0, 0.0, TAU)
+            }
+            (shape, circle) => {
+                // (A slender lemniscate has a form too; the antipodal search only declines it.)
+                let form = match (shape, circle) {
+                    (_, Some(form)) => form,
+                    (Shape::EllipticLemniscate(l), None) => {
+                        CircleShape::Lemniscate { a: l.a(), b: l.b() }
+                    }
+                    _ => unreachable!("every other shape has a circle form"),
+                };
+                let (hom, err) = circle_form_spline(form)?;
+                let rational = bspline::Rational::from_homogeneous_with_error(hom, err)?;
+                Ok(Segment::from_parts(
+                    SegmentKind::BSpline,
+                    SplineCurve::new(rational)?,
+                    None,
+                    OwnParam::Angle(form.angle()),
+                ))
+            }
+        }?;
+        Ok(segment.of_whole_curve(ExactCurve::Shape(shape)))
+    }
+
+    /// The segment as the one that runs once round `whole`, its parameter `whole`'s (the
+    /// caller vouches for both).
+    pub(crate) fn of_whole_curve(self, whole: ExactCurve) -> Self {
+        Self {
+            whole: Some(whole),
+            ..self
+        }
+    }
+
+    /// The smooth closed curve the segment runs once round, as it was defined (an analytic
+    /// shape, a periodic spline `C¹` or smoother across its seam), where it was made from one
+    /// ([`Segment::of_shape`], [`Segment::periodic_spline`]); its
+    /// parameter is the segment's own. A closed profile of this one segment is that curve:
+    /// its seam is smooth by definition, and the algorithms of smooth closed curves run on it
+    /// as defined. A segment moved, reversed or cut is a segment of its own (`None`).
+    pub fn whole_curve(&self) -> Option<&ExactCurve> {
+        self.whole.as_ref()
+    }
+
+    /// The exact form's parameter at the parameter `x` of the segment's whole curve (within
+    /// its domain; `None` without one): the segment's own parameter is the whole curve's,
+    /// mapped linearly onto the own domain (an arc's share of the turn for a circle or an
+    /// ellipse, the angle itself for the other shapes, a spline's own).
+    pub fn form_param_of_whole(&self, x: f64) -> Option<f64> {
+        let whole = self.whole.as_ref()?;
+        let (wa, wb) = whole.curve().domain();
+        let (oa, ob) = self.own_domain();
+        let own = if (wa, wb) == (oa, ob) {
+            x
+        } else {
+            oa + (x - wa) / (wb - wa) * (ob - oa)
+        };
+        Some(self.own.form(own, self.curve.domain()))
     }
 
     /// How the exact form's parameter maps to the segment's own: the identity but for arcs

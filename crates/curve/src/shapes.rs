@@ -14,7 +14,8 @@ use crate::frame::Frame;
 use crate::geom::{Jet, V2};
 use crate::param::ParamCurve;
 use bspline::symbolic::CurvePieces;
-use rational_form::{circle_form, circle_form_spline};
+use rational_form::circle_form;
+pub(crate) use rational_form::circle_form_spline;
 use std::f64::consts::TAU;
 
 /// The most slender elliptic lemniscate (`a/b` or `b/a`) run on its circle form. Beyond, the
@@ -150,53 +151,6 @@ impl Shape {
         let hom = circle_form(form).ok()?;
         let pieces = CurvePieces::new(hom, false).ok()?;
         Some(pieces.periodic(0).numerators_continuous())
-    }
-
-    /// The shape as one closed segment, for a profile whose parameter is the shape's angle
-    /// φ ∈ `[0, 2π)` ([`crate::Profile::of_curve`] on `(0, 2π)`): a circle or an ellipse as a
-    /// full-turn arc (its own parameter the angle's share), the other shapes as their exact
-    /// rational form on the rational circle (its own parameter the angle itself), with the
-    /// rounding of that form's coefficients as their error.
-    ///
-    /// ```
-    /// use curve::shapes::{Limacon, Shape};
-    /// use curve::{ParamCurve, Profile};
-    /// let shape = Shape::Limacon(Limacon::new(4.0, 2.5).unwrap());
-    /// let seg = shape.boundary_segment().unwrap();
-    /// let p = Profile::of_curve(seg, (0.0, std::f64::consts::TAU)).unwrap();
-    /// let u = p.internal_param(1.0);
-    /// let want = shape.jet(1.0).p;
-    /// assert!((p.jet(u).p - want).norm() < 1e-13);
-    /// ```
-    pub fn boundary_segment(&self) -> crate::Result<crate::Segment> {
-        use crate::own_param::OwnParam;
-        use crate::segment::{Segment, SegmentKind};
-        match (*self, self.circle_shape()) {
-            (Shape::Circle(c), _) => Segment::arc(c.center.arr(), c.r, 0.0, TAU),
-            (Shape::Ellipse(e), _) => {
-                Segment::elliptic_arc(e.center.arr(), e.a, e.b, 0.0, 0.0, TAU)
-            }
-            (shape, circle) => {
-                // (A slender lemniscate has a form too; the antipodal search only declines it.)
-                let form = match (shape, circle) {
-                    (_, Some(form)) => form,
-                    (Shape::EllipticLemniscate(l), None) => {
-                        CircleShape::Lemniscate { a: l.a, b: l.b }
-                    }
-                    _ => unreachable!("every other shape has a circle form"),
-                };
-                let (hom, err) = circle_form_spline(form)?;
-                let rational = bspline::Rational::from_homogeneous_with_error(hom, err)?;
-                let curve = crate::SplineCurve::new(rational)?;
-                let angle = form.angle();
-                Ok(Segment::from_parts(
-                    SegmentKind::BSpline,
-                    curve,
-                    None,
-                    OwnParam::Angle(angle),
-                ))
-            }
-        }
     }
 
     fn as_curve(&self) -> &dyn ParamCurve {

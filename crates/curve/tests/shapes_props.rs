@@ -153,7 +153,7 @@ proptest! {
         let exact = c.exact().unwrap();
         let frame = Frame::for_points(&exact.extent());
         let local = exact.in_frame(&frame);
-        let curve::Local::Spline(ls) = &local else { unreachable!() };
+        let curve::ExactCurve::Spline(ls) = &local else { unreachable!() };
         if weights.is_none() {
             prop_assert_eq!(ls.curve().coefficient_error(), 0.0);
             for (l, g) in ls.control_points().iter().zip(c.control_points()) {
@@ -213,6 +213,54 @@ proptest! {
                     );
                 }
             }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// A shape or a periodic spline as the segment that runs once round it: the profile of
+    /// that segment at the whole curve's parameter `x`, mapped through
+    /// `Segment::form_param_of_whole`, is the curve's point at `x` (by evaluation of each, the
+    /// shape by its equations); and its seam is no corner, however far from the origin.
+    #[test]
+    fn whole_curves_keep_their_parameter(
+        a in 0.2f64..5.0, b in 0.2f64..5.0, eps in 0.01f64..0.95, m in 2u32..9,
+        offset in prop_oneof![Just(0.0), Just(1e8), -1e3f64..1e3],
+        seed in proptest::collection::vec(0.0f64..1.0, 16),
+        weights in proptest::option::of(proptest::collection::vec(0.5f64..2.0, 8)),
+        share in 0.0f64..1.0,
+    ) {
+        use curve::{Profile, Segment, SegmentKind};
+        let shapes = [
+            Shape::Circle(curve::shapes::Circle::new(a, [offset, -offset]).unwrap()),
+            Shape::Ellipse(Ellipse::new(a, b, [offset, b]).unwrap()),
+            Shape::Limacon(Limacon::new(a + b, b).unwrap()),
+            Shape::EllipticLemniscate(EllipticLemniscate::new(a, b).unwrap()),
+            Shape::Convexities(Convexities::new(a, eps, m).unwrap()),
+        ];
+        let star = Star { center: [offset, offset], ..Star::default() };
+        let spline = SplineCurve::periodic(3, &star.points_from_seed(&seed), weights.as_deref())
+            .unwrap();
+        let mut cases: Vec<(Segment, &dyn PlaneCurve)> = shapes
+            .iter()
+            .map(|s| (Segment::of_shape(*s).unwrap(), s as &dyn PlaneCurve))
+            .collect();
+        cases.push((Segment::periodic_spline(SegmentKind::BSpline, &spline).unwrap(), &spline));
+        for (segment, curve) in cases {
+            let (lo, hi) = curve.domain();
+            let x = lo + (hi - lo) * share;
+            let v = segment.form_param_of_whole(x).unwrap();
+            let whole = segment.whole_curve().unwrap().curve().jet(x).p;
+            let want = curve.jet(x).p;
+            prop_assert_eq!(whole, want);
+            let profile = Profile::of_curve(segment, (lo, hi)).unwrap();
+            prop_assert!(profile.corners().next().is_none());
+            let got = profile.jet(profile.profile_param(0, v)).p;
+            // (Far from the origin the form's points round to units of their coordinates.)
+            let room = 1e-13 * (a + b) + 8.0 * f64::EPSILON * want.norm();
+            prop_assert!((got - want).norm() <= room, "{:?} against {:?}", got, want);
         }
     }
 }

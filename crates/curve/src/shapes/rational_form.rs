@@ -66,7 +66,7 @@ pub(super) fn circle_form(shape: CircleShape) -> bspline::Result<Piecewise> {
 /// The homogeneous form of [`circle_form`] as one B-spline (knots of full multiplicity at the
 /// quarters, where its pieces meet), with a bound on the error of its coefficients: the
 /// pieces' bounds, and where two pieces' shared end points were rounded apart, their gap.
-pub(super) fn circle_form_spline(shape: CircleShape) -> bspline::Result<(BSpline, f64)> {
+pub(crate) fn circle_form_spline(shape: CircleShape) -> bspline::Result<(BSpline, f64)> {
     let form = circle_form(shape)?;
     let (p, dim, n) = (form.degree(), form.dim(), form.pieces());
     let mut knots = vec![form.breaks()[0]; p + 1];

@@ -31,7 +31,8 @@
 //! `finish`, `monotone`, `radius_rates` and `families` (beyond the paper: proofs that spare
 //! marches, that θ is monotone or of one sign on a stretch, and continua of pairs); `profiles`,
 //! `profile_pairs`, `corner_pairs` and `profile_tangents` (beyond the papers: profiles of
-//! segments joined at corners, segment by segment, and the corners' cones). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
+//! segments joined at corners, segment by segment, and the corners' cones); `whole_curve` (a
+//! closed profile of one smooth segment is a smooth closed curve, and runs as one). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
 //! `taylor` (with `numeric::Interval` for ranges); `ledger` keeps the doubts met on each view
 //! of a run (`numeric::certificate::Doubt` names every reason a result is not certified).
@@ -65,6 +66,7 @@ mod taylor;
 mod tracks;
 mod types;
 mod view;
+mod whole_curve;
 
 pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, SplineCurve, V2};
 pub use error::{Error, Result};

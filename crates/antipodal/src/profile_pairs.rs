@@ -88,6 +88,9 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
             gap: (profile.jet(b).p - profile.jet(a).p).norm(),
         });
     }
+    if let Some(whole) = crate::whole_curve::whole_curve(profile) {
+        return crate::whole_curve::antipodal(&whole, opts);
+    }
     let segs = profile.segments();
     let points: Vec<[f64; 2]> = segs
         .iter()

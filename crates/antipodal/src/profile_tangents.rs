@@ -117,6 +117,10 @@ impl<'p> Side<'p> {
 /// ```
 pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<ProfileTangents> {
     opts.validate()?;
+    use crate::whole_curve::{tangents, whole_curve};
+    if let (Some(wa), Some(wb)) = (whole_curve(a), whole_curve(b)) {
+        return tangents(&wa, &wb, opts);
+    }
     let curved = |p: &Profile| {
         p.segments()
             .iter()

@@ -50,6 +50,9 @@ pub(crate) fn profile_inflections_run(
     opts: &Options,
 ) -> Result<Certified<ProfileInflections>> {
     opts.validate()?;
+    if let Some(whole) = crate::whole_curve::whole_curve(profile) {
+        return crate::whole_curve::inflections_run(&whole, opts);
+    }
     let mut out = ProfileInflections {
         inflections: Vec::new(),
         corners: Vec::new(),

@@ -60,10 +60,18 @@ class _Result:
     def to_dict(self) -> dict[str, Any]:
         """The tool's --json document."""
 
-class Antipodal(_Result):
+class _Certified(_Result):
+    """What the results that say whether they are certified share (in the stubs only, as `_Result`)."""
+
     certified: bool
+
+class _Verdict(_Certified):
+    """What the results that also say whether they are complete, and why not certified, share."""
+
     complete: bool
     reason: Optional[str]
+
+class Antipodal(_Verdict):
     pairs: npt.NDArray[np.float64]
     """(n, 2): the parameters (s, t) of each pair, sorted by s."""
     points: npt.NDArray[np.float64]
@@ -75,15 +83,13 @@ class Antipodal(_Result):
     """(k, 2, 2): [[s0, s1], [t0, t1]] of each family of non-isolated pairs."""
     def __len__(self) -> int: ...
 
-class Inflections(_Result):
-    certified: bool
+class Inflections(_Certified):
     params: npt.NDArray[np.float64]
     points: npt.NDArray[np.float64]
     corners: npt.NDArray[np.float64]
     def __len__(self) -> int: ...
 
-class Tangents(_Result):
-    certified: bool
+class Tangents(_Certified):
     params: npt.NDArray[np.float64]
     points: npt.NDArray[np.float64]
     def __len__(self) -> int: ...
@@ -94,10 +100,7 @@ class Bisector(_Result):
     """Each branch as (tr, xy): foot-point parameters and bisector points, (k, 2) each."""
     def __len__(self) -> int: ...
 
-class MedialAxis(_Result):
-    certified: bool
-    complete: bool
-    reason: Optional[str]
+class MedialAxis(_Verdict):
     nodes: npt.NDArray[np.float64]
     node_radii: npt.NDArray[np.float64]
     node_kinds: list[str]
@@ -111,10 +114,7 @@ class MedialAxis(_Result):
     def svg_paths(self) -> str:
         """The axis as plain SVG paths in the input's coordinates."""
 
-class VCarve(_Result):
-    certified: bool
-    complete: bool
-    reason: Optional[str]
+class VCarve(_Verdict):
     angle: float
     max_depth: Optional[float]
     paths: list[npt.NDArray[np.float64]]
@@ -127,10 +127,7 @@ class VCarve(_Result):
         """The paths as a DXF file's bytes (3D polylines; the flats at their depth)."""
     def __len__(self) -> int: ...
 
-class Offsets(_Result):
-    certified: bool
-    complete: bool
-    reason: Optional[str]
+class Offsets(_Verdict):
     distances: npt.NDArray[np.float64]
     def polylines(self, k: int, arc_points: int = 32) -> list[npt.NDArray[np.float64]]:
         """The loops at the k-th distance as closed (n, 2) polylines."""

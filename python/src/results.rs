@@ -167,6 +167,22 @@ macro_rules! complete_field {
 complete_field!(MedialAxis, Offsets, VCarve);
 
 macro_rules! result_class {
+    // (A result whose `len` is the length of its `$list()`, which its repr counts as `$noun`:
+    // `Tangents(2 lines, certified=True)`.)
+    ($class:ident, $name:literal, $found:ty, $verdict:ident = $doc:literal, counting $noun:literal in $list:ident, { $($extra:tt)* }) => {
+        result_class!($class, $name, $found, $verdict = $doc, {
+            fn __len__(&self) -> usize {
+                self.$list().len()
+            }
+
+            fn __repr__(&self) -> String {
+                let counts = format!(concat!("{} ", $noun), self.$list().len());
+                verdict_repr($name, &counts, &self.found)
+            }
+
+            $($extra)*
+        });
+    };
     // (A result with `certified`, `complete` and `reason`, documented as every region's is.)
     ($class:ident, $name:literal, $found:ty, verdict, { $($extra:tt)* }) => {
         result_class!($class, $name, $found, verdict = "Whether the result is certified (what that proves is the command's: see its documentation); `reason` says why not.", {
@@ -291,6 +307,7 @@ result_class!(
     "Antipodal",
     AntipodalFound,
     verdict = "Every pair proven (sign tests on exact forms) to be antipodal, and nothing missed.",
+    counting "pairs" in pair_fields,
     {
         /// The pairs' parameters `(s, t)`, an `(n, 2)` array sorted by `s`.
         #[getter]
@@ -342,15 +359,6 @@ result_class!(
             let ranges: Vec<[[f64; 2]; 2]> = either!(&self.found, AntipodalFound, f => f.families.iter().map(|g| [g.s, g.t]).collect());
             pairs2(py, &ranges)
         }
-
-        fn __len__(&self) -> usize {
-            self.pair_fields().len()
-        }
-
-        fn __repr__(&self) -> String {
-            let counts = format!("{} pairs", self.pair_fields().len());
-            verdict_repr("Antipodal", &counts, &self.found)
-        }
     }
 );
 
@@ -370,6 +378,7 @@ result_class!(
     "Inflections",
     InflectionsFound,
     certified = "Every inflection proven, and nothing missed.",
+    counting "inflections" in list,
     {
         /// The inflections' parameters, an `(m,)` array.
         #[getter]
@@ -392,15 +401,6 @@ result_class!(
             };
             PyArray1::from_vec(py, us)
         }
-
-        fn __len__(&self) -> usize {
-            self.list().len()
-        }
-
-        fn __repr__(&self) -> String {
-            let counts = format!("{} inflections", self.list().len());
-            verdict_repr("Inflections", &counts, &self.found)
-        }
     }
 );
 
@@ -415,6 +415,7 @@ result_class!(
     "Tangents",
     TangentsFound,
     certified = "Every line proven, and nothing missed.",
+    counting "lines" in lines,
     {
         /// The lines' parameters `(s, t)` on the two curves, an `(n, 2)` array.
         #[getter]
@@ -426,15 +427,6 @@ result_class!(
         #[getter]
         fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
             pairs2(py, &self.lines().iter().map(|l| l.1).collect::<Vec<_>>())
-        }
-
-        fn __len__(&self) -> usize {
-            self.lines().len()
-        }
-
-        fn __repr__(&self) -> String {
-            let counts = format!("{} lines", self.lines().len());
-            verdict_repr("Tangents", &counts, &self.found)
         }
     }
 );

@@ -154,23 +154,17 @@ pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> Str
 
 /// The figure of a curve's antipodal pairs.
 pub(super) fn antipodal_figure(curve: &Curve, found: &AntipodalFound) -> String {
+    // (A curve's title counts its inflections, a profile's its corners.)
+    let title = |pairs: usize, marks: usize, what: &str| {
+        format!("{} — antipodal: {pairs} pairs, {marks} {what}", curve.file)
+    };
     match found {
         AntipodalFound::Curve(f) => {
-            let title = format!(
-                "{} — antipodal: {} pairs, {} inflections",
-                curve.file,
-                f.pairs.len(),
-                f.inflections.len()
-            );
+            let title = title(f.pairs.len(), f.inflections.len(), "inflections");
             report::antipodal_figure(curve, f, title)
         }
         AntipodalFound::Profile(f) => {
-            let title = format!(
-                "{} — antipodal: {} pairs, {} corners",
-                curve.file,
-                f.pairs.len(),
-                f.corners.len()
-            );
+            let title = title(f.pairs.len(), f.corners.len(), "corners");
             report::profile_antipodal_figure(curve, f, title)
         }
     }

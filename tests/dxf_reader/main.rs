@@ -457,30 +457,26 @@ fn bulges_make_arcs_through_their_middle() {
 
 #[test]
 fn repeated_vertices_are_skipped_and_an_open_polyline_stays_open() {
-    let p = read_one(lwpolyline(
-        0,
-        vec![
-            lw(0.0, 0.0, 0.0),
-            lw(1.0, 0.0, 0.0),
-            lw(1.0, 0.0, 0.0),
-            lw(1.0, 1.0, 0.3),
-            lw(2.0, 2.0, 0.0),
-        ],
-    ));
-    assert!(!p.is_closed());
-    assert_eq!(p.segments().len(), 3);
-    // A closed polyline whose last vertex repeats the first: no zero-length closing piece.
-    let p = read_one(lwpolyline(
-        1,
-        vec![
-            lw(0.0, 0.0, 0.0),
-            lw(1.0, 0.0, 0.0),
-            lw(0.0, 1.0, 0.0),
-            lw(0.0, 0.0, 0.0),
-        ],
-    ));
-    assert!(p.is_closed());
-    assert_eq!(p.segments().len(), 3);
+    let open = vec![
+        lw(0.0, 0.0, 0.0),
+        lw(1.0, 0.0, 0.0),
+        lw(1.0, 0.0, 0.0),
+        lw(1.0, 1.0, 0.3),
+        lw(2.0, 2.0, 0.0),
+    ];
+    // A closed polyline (flag 1) whose last vertex repeats the first: no zero-length closing
+    // piece.
+    let closed = vec![
+        lw(0.0, 0.0, 0.0),
+        lw(1.0, 0.0, 0.0),
+        lw(0.0, 1.0, 0.0),
+        lw(0.0, 0.0, 0.0),
+    ];
+    for (flag, vertices) in [(0, open), (1, closed)] {
+        let p = read_one(lwpolyline(flag, vertices));
+        assert_eq!(p.is_closed(), flag == 1);
+        assert_eq!(p.segments().len(), 3);
+    }
 }
 
 #[test]

@@ -52,17 +52,8 @@ fn clamped_closed_fixture() {
 
 #[test]
 fn periodic_nurbs_fixture() {
-    let pts = [
-        [3.0, 0.0],
-        [2.5, 2.0],
-        [0.5, 1.0],
-        [-1.0, 2.5],
-        [-3.0, 0.5],
-        [-2.5, -2.0],
-        [0.0, -0.8],
-        [2.0, -2.5],
-    ];
-    let w = [1.0, 2.0, 0.5, 1.0, 1.5, 1.0, 0.6, 1.0];
+    let pts = testkit::outlines::PERIODIC_NURBS_POINTS;
+    let w = testkit::outlines::PERIODIC_NURBS_WEIGHTS;
     let c = SplineCurve::periodic(3, &pts, Some(&w)).unwrap();
     assert!(check(&c) >= 2);
 }

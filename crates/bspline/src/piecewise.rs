@@ -205,6 +205,21 @@ impl Piecewise {
         })
     }
 
+    /// A function of the same breaks and dimension as `self` with other pieces, of `degree`
+    /// (what a piece-by-piece operation builds: a raised degree, a derivative).
+    #[inline]
+    fn with_pieces(&self, degree: usize, coefs: Vec<f64>, err: Vec<f64>, smooth: Vec<i32>) -> Self {
+        Self {
+            breaks: self.breaks.clone(),
+            degree,
+            dim: self.dim,
+            coefs,
+            err,
+            smooth,
+            binoms: binomials(degree),
+        }
+    }
+
     /// The same function declared periodic: its derivatives up to `order` agree across the
     /// seam (a periodic B-spline of degree p is `C^(p−1)` there). The caller vouches for it.
     pub fn with_periodic_seam(mut self, order: i32) -> Self {

@@ -28,28 +28,36 @@ trait Algebra: Sized {
     fn parts(&self, which: &[usize]) -> Result<Self>;
 }
 
+/// The operations both forms have under the same names (`mul`, `sub`, `cross`, `cross3`,
+/// `dot`, `scale`): one forwarding written for the two impls.
+macro_rules! same_named_operations {
+    () => {
+        fn times(&self, other: &Self) -> Result<Self> {
+            self.mul(other)
+        }
+        fn minus(&self, other: &Self) -> Result<Self> {
+            self.sub(other)
+        }
+        fn cross2(&self, other: &Self) -> Result<Self> {
+            self.cross(other)
+        }
+        fn cross3d(&self, other: &Self) -> Result<Self> {
+            self.cross3(other)
+        }
+        fn dotted(&self, other: &Self) -> Result<Self> {
+            self.dot(other)
+        }
+        fn scaled(&self, s: f64) -> Self {
+            self.scale(s)
+        }
+    };
+}
+
 impl Algebra for BSpline {
     fn derivative(&self) -> Self {
         self.deriv()
     }
-    fn times(&self, other: &Self) -> Result<Self> {
-        self.mul(other)
-    }
-    fn minus(&self, other: &Self) -> Result<Self> {
-        self.sub(other)
-    }
-    fn cross2(&self, other: &Self) -> Result<Self> {
-        self.cross(other)
-    }
-    fn cross3d(&self, other: &Self) -> Result<Self> {
-        self.cross3(other)
-    }
-    fn dotted(&self, other: &Self) -> Result<Self> {
-        self.dot(other)
-    }
-    fn scaled(&self, s: f64) -> Self {
-        self.scale(s)
-    }
+    same_named_operations!();
     fn parts(&self, which: &[usize]) -> Result<Self> {
         let dim = self.dim();
         if let Some(&k) = which.iter().find(|&&k| k >= dim) {
@@ -70,24 +78,7 @@ impl Algebra for Piecewise {
     fn derivative(&self) -> Self {
         Piecewise::derivative(self)
     }
-    fn times(&self, other: &Self) -> Result<Self> {
-        self.mul(other)
-    }
-    fn minus(&self, other: &Self) -> Result<Self> {
-        self.sub(other)
-    }
-    fn cross2(&self, other: &Self) -> Result<Self> {
-        self.cross(other)
-    }
-    fn cross3d(&self, other: &Self) -> Result<Self> {
-        self.cross3(other)
-    }
-    fn dotted(&self, other: &Self) -> Result<Self> {
-        self.dot(other)
-    }
-    fn scaled(&self, s: f64) -> Self {
-        self.scale(s)
-    }
+    same_named_operations!();
     fn parts(&self, which: &[usize]) -> Result<Self> {
         self.components(which)
     }

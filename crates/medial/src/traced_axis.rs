@@ -393,7 +393,7 @@ impl Tracer<'_, '_> {
 mod tests {
     use crate::candidates::PairSource;
     use crate::test_shapes::{random_rounded, same_graph};
-    use crate::{axis_of, MedialOptions, Verdict};
+    use crate::{axis_of, MedialAxis, MedialOptions, Verdict};
     use curve::{Region, V2};
     use testkit::outlines::{polygon, star_polygon};
     use testkit::rng;
@@ -435,6 +435,25 @@ mod tests {
         Region::new(polygon(points), vec![]).unwrap()
     }
 
+    /// The traced path's axis of `region` (named `what`), which must stand, be certified and
+    /// be the seed's pairs' axis.
+    fn traced_as_seeded(region: &Region, opts: &MedialOptions, what: &str) -> MedialAxis {
+        let (traced, stands) = axis_of(region, opts, PairSource::SeedEdges).unwrap();
+        assert!(
+            stands && traced.certified(),
+            "{what}: {:?}",
+            traced.reason()
+        );
+        let seeded = axis_of(region, opts, PairSource::Seed).unwrap().0;
+        same_graph(&traced, &seeded, same_graph_tol(region, opts)).unwrap();
+        traced
+    }
+
+    /// How near two axes of `region` by different routes must be: two chord tolerances.
+    fn same_graph_tol(region: &Region, opts: &MedialOptions) -> f64 {
+        2.0 * opts.settings.chord_tol.get() * region.size()
+    }
+
     /// The traced path stands on gears of 12 and 25 teeth (arcs about one centre meeting
     /// lines at corners, round a hole: nodes of nearly cocircular chords), certified, with the
     /// seed's pairs' axis; and a gear turned, scaled and moved (far from the origin, a
@@ -444,20 +463,8 @@ mod tests {
         let opts = MedialOptions::default();
         for n in [12usize, 25] {
             let region = testkit::outlines::gear(n);
-            let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
-            assert!(
-                stands && traced.certified(),
-                "gear {n}: {:?}",
-                traced.reason()
-            );
+            let traced = traced_as_seeded(&region, &opts, &format!("gear {n}"));
             assert_eq!((traced.nodes.len(), traced.edges.len()), (4 * n, 4 * n));
-            let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
-            same_graph(
-                &traced,
-                &seeded,
-                2.0 * opts.settings.chord_tol.get() * region.size(),
-            )
-            .unwrap();
             // (Turned about the origin, scaled and moved; then moved back, scaled back and
             // turned back: a little, and far from the origin at a thousand times the size.)
             for (turn, scale, shift) in [(0.3f64, 1.0, [0.5, -0.2]), (-1.1, 1e3, [1e5, -3e5])] {
@@ -486,12 +493,7 @@ mod tests {
                 for e in &mut back.edges {
                     e.xy.iter_mut().for_each(|x| *x = undo(*x));
                 }
-                same_graph(
-                    &back,
-                    &traced,
-                    2.0 * opts.settings.chord_tol.get() * region.size(),
-                )
-                .unwrap();
+                same_graph(&back, &traced, same_graph_tol(&region, &opts)).unwrap();
             }
         }
     }
@@ -503,19 +505,7 @@ mod tests {
         for n in [100usize, 400] {
             let region = region_of(&star_polygon(n));
             let opts = MedialOptions::default();
-            let (traced, stands) = axis_of(&region, &opts, PairSource::SeedEdges).unwrap();
-            assert!(
-                stands && traced.certified(),
-                "star {n}: {:?}",
-                traced.reason()
-            );
-            let seeded = axis_of(&region, &opts, PairSource::Seed).unwrap().0;
-            same_graph(
-                &traced,
-                &seeded,
-                2.0 * opts.settings.chord_tol.get() * region.size(),
-            )
-            .unwrap();
+            traced_as_seeded(&region, &opts, &format!("star {n}"));
         }
     }
 }

@@ -62,6 +62,34 @@ pub const PERIODIC_CUBIC_POINTS: [[f64; 2]; 6] = [
     [0.0, 2.0],
 ];
 
+/// The control points of the periodic cubic NURBS fixture (`fixtures/periodic_nurbs.json`),
+/// with [`PERIODIC_NURBS_WEIGHTS`].
+pub const PERIODIC_NURBS_POINTS: [[f64; 2]; 8] = [
+    [3.0, 0.0],
+    [2.5, 2.0],
+    [0.5, 1.0],
+    [-1.0, 2.5],
+    [-3.0, 0.5],
+    [-2.5, -2.0],
+    [0.0, -0.8],
+    [2.0, -2.5],
+];
+
+/// The weights of [`PERIODIC_NURBS_POINTS`].
+pub const PERIODIC_NURBS_WEIGHTS: [f64; 8] = [1.0, 2.0, 0.5, 1.0, 1.5, 1.0, 0.6, 1.0];
+
+/// The control points of the cubic B-spline of Elber & Kim's Fig. 5, a self-bisector
+/// (`fixtures/bisector-fig5-cubic-bspline.json`).
+pub const FIG5_CUBIC_POINTS: [[f64; 2]; 7] = [
+    [0.0, 0.0],
+    [1.0, 2.0],
+    [3.0, 2.5],
+    [4.0, 0.5],
+    [3.0, -1.5],
+    [1.5, -1.0],
+    [2.0, 0.5],
+];
+
 /// The 10×6 rounded-rectangle pocket (corner radius 1) with a round island of radius 1, as
 /// the tool reads it.
 pub const POCKET: &str = r#"{"kind":"region",

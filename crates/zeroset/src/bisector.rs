@@ -305,30 +305,13 @@ mod tests {
     /// B-spline, a cubic NURBS (degree 11 cells) and a periodic NURBS.
     #[test]
     fn self_bisector_functions_divide_by_the_expected_power() {
-        let seven = pts(&[
-            [0.0, 0.0],
-            [1.0, 2.0],
-            [3.0, 2.5],
-            [4.0, 0.5],
-            [3.0, -1.5],
-            [1.5, -1.0],
-            [2.0, 0.5],
-        ]);
+        let seven = pts(&testkit::outlines::FIG5_CUBIC_POINTS);
         let cubic = Rational::polynomial(&BSpline::clamped_uniform(3, 2, seven.clone()).unwrap());
         let w = [1.0, 3.0, 1.0, 1.0, 0.5, 2.0, 1.0];
         let nurbs =
             Rational::new(BSpline::clamped_uniform(3, 2, seven).unwrap(), Some(&w)).unwrap();
-        let ring = pts(&[
-            [3.0, 0.0],
-            [2.5, 2.0],
-            [0.5, 1.0],
-            [-1.0, 2.5],
-            [-3.0, 0.5],
-            [-2.5, -2.0],
-            [0.0, -0.8],
-            [2.0, -2.5],
-        ]);
-        let mut wr = vec![1.0, 2.0, 0.5, 1.0, 1.5, 1.0, 0.6, 1.0];
+        let ring = pts(&testkit::outlines::PERIODIC_NURBS_POINTS);
+        let mut wr = testkit::outlines::PERIODIC_NURBS_WEIGHTS.to_vec();
         wr.extend_from_slice(&[1.0, 2.0, 0.5]);
         let periodic = Rational::new(BSpline::periodic(3, 2, ring).unwrap(), Some(&wr)).unwrap();
         for c in [&cubic, &nurbs, &periodic] {

@@ -250,18 +250,7 @@ impl Tracer<'_> {
             // Index of the partial derivative in the running variable in `eval_grad`.
             let k = if along_t { 1 } else { 2 };
             let x0 = polygon_crossing(lo, hi, &coefs, err);
-            let x = bracketed_from(
-                |x| {
-                    let [t, r] = at(x);
-                    let g = cell.eval_grad(t, r);
-                    (g[0], g[k])
-                },
-                lo,
-                hi,
-                s0,
-                x0,
-                noise,
-            );
+            let x = bracketed_from(|x| cell.value_and_partial(at(x), k), lo, hi, s0, x0, noise);
             let [t, r] = at(x);
             let end = End {
                 p: [t, r],
@@ -290,17 +279,7 @@ impl Tracer<'_> {
         let point = |s: f64| -> [f64; 2] {
             let w = if sb != sa { (s - sa) / (sb - sa) } else { 0.5 };
             let x0 = oa + w * (ob - oa);
-            let x = bracketed_or_end(
-                |x| {
-                    let [t, r] = at(x, s);
-                    let g = cell.eval_grad(t, r);
-                    (g[0], g[dk])
-                },
-                lo,
-                hi,
-                x0,
-                noise,
-            );
+            let x = bracketed_or_end(|x| cell.value_and_partial(at(x, s), dk), lo, hi, x0, noise);
             at(x, s)
         };
         // The direction of the mapped curve at a vertex, oriented from `a` toward `b`: the

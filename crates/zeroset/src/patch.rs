@@ -237,6 +237,14 @@ impl Patch {
         }
     }
 
+    /// Value and the partial `k` of [`Patch::eval_grad`] (1: in `t`, 2: in `r`) at global
+    /// `(t, r)`: what a bracketed solve along a line of the patch reads.
+    #[inline]
+    pub(crate) fn value_and_partial(&self, [t, r]: [f64; 2], k: usize) -> (f64, f64) {
+        let g = self.eval_grad(t, r);
+        (g[0], g[k])
+    }
+
     /// Value and first partials (with respect to the global `t`, `r`) at global `(t, r)`.
     pub(crate) fn eval_grad(&self, t: f64, r: f64) -> [f64; 3] {
         let (ht, hr) = (self.t1 - self.t0, self.r1 - self.r0);

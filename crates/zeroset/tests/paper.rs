@@ -134,18 +134,7 @@ fn fig4_self_bisector_quadratic_bspline_seven_points() {
 
 #[test]
 fn fig5_self_bisector_cubic_bspline_seven_points() {
-    let c = bsp(
-        3,
-        &[
-            [0.0, 0.0],
-            [1.0, 2.0],
-            [3.0, 2.5],
-            [4.0, 0.5],
-            [3.0, -1.5],
-            [1.5, -1.0],
-            [2.0, 0.5],
-        ],
-    );
+    let c = bsp(3, &testkit::outlines::FIG5_CUBIC_POINTS);
     insta::assert_json_snapshot!(summary(&one(&c)));
 }
 

@@ -154,15 +154,7 @@ impl Piecewise {
                 (0..d).map(|k| e[k] + rounding::insertion(self.coordinate_magnitude(i, k) + e[k])),
             );
         }
-        Piecewise {
-            breaks: self.breaks.clone(),
-            degree: q,
-            dim: d,
-            coefs,
-            err,
-            smooth: self.smooth.clone(),
-            binoms: binomials(q),
-        }
+        self.with_pieces(q, coefs, err, self.smooth.clone())
     }
 
     /// `s · self + t · other` (of one dimension; the lower degree is raised).

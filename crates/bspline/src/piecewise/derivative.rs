@@ -1,7 +1,7 @@
 //! The derivative piece by piece (the hodograph), with the bound on its error and its
 //! continuity one order lower at every break.
 
-use super::{binomials, Piecewise};
+use super::Piecewise;
 use crate::rounding;
 
 impl Piecewise {
@@ -28,15 +28,12 @@ impl Piecewise {
                 rounding::derivative(p, a, b, self.coordinate_magnitude(i, k), self.errors(i)[k])
             }));
         }
-        Piecewise {
-            breaks: self.breaks.clone(),
-            degree: q,
-            dim: d,
+        self.with_pieces(
+            q,
             coefs,
             err,
-            smooth: self.smooth.iter().map(|&s| lower(s)).collect(),
-            binoms: binomials(q),
-        }
+            self.smooth.iter().map(|&s| lower(s)).collect(),
+        )
     }
 }
 

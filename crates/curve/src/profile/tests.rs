@@ -23,27 +23,9 @@ pub(crate) fn rounded_rectangle(w: f64, h: f64, r: f64, reverse: bool) -> Profil
         }
     }
     if reverse {
-        segs = segs.into_iter().rev().map(reversed).collect();
+        segs = segs.iter().rev().map(|s| s.reversed().unwrap()).collect();
     }
     Profile::new(segs, None).unwrap()
-}
-
-/// The segment run backwards.
-fn reversed(s: Segment) -> Segment {
-    let c = s.curve();
-    let pts: Vec<[f64; 2]> = c.control_points().into_iter().rev().collect();
-    let w: Vec<f64> = c.curve().weights().into_iter().rev().collect();
-    let (a, b) = c.domain();
-    let knots: Vec<f64> = c
-        .curve()
-        .homogeneous()
-        .knots()
-        .iter()
-        .rev()
-        .map(|k| a + b - k)
-        .collect();
-    let curve = SplineCurve::clamped(c.curve().degree(), &pts, Some(&w), Some(knots)).unwrap();
-    Segment::spline(s.kind(), curve).unwrap()
 }
 
 #[test]

@@ -15,6 +15,41 @@ fn check(field: &'static str, value: f64, ok: bool, why: &'static str) -> Result
     }
 }
 
+/// The accessors of a kind's plain parameters, each the field of its name.
+macro_rules! parameters {
+    ($kind:ident { $($(#[doc = $doc:literal])* $field:ident: $t:ty,)* }) => {
+        impl $kind {
+            $(
+                $(#[doc = $doc])*
+                pub fn $field(&self) -> $t {
+                    self.$field
+                }
+            )*
+        }
+    };
+}
+
+/// [`ParamCurve`] for kinds that run once round, closed, over φ ∈ `[0, 2π)`: their jets
+/// from their own `jet_in_angle`.
+macro_rules! closed_over_the_angle {
+    ($($kind:ident),*) => {
+        $(impl ParamCurve for $kind {
+            fn domain(&self) -> (f64, f64) {
+                (0.0, TAU)
+            }
+            fn is_closed(&self) -> bool {
+                true
+            }
+            #[inline]
+            fn jet_to(&self, u: f64, order: usize) -> Jet {
+                self.jet_in_angle(u, order)
+            }
+        })*
+    };
+}
+
+closed_over_the_angle!(Circle, Ellipse, Limacon, EllipticLemniscate, Convexities);
+
 /// Circle `(cx + r cos φ, cy + r sin φ)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Circle {
@@ -32,15 +67,16 @@ impl Circle {
             center: V2::from_arr(center),
         })
     }
-    /// The radius.
-    pub fn r(&self) -> f64 {
-        self.r
-    }
     /// The center.
     pub fn center(&self) -> [f64; 2] {
         self.center.arr()
     }
 }
+
+parameters!(Circle {
+    /// The radius.
+    r: f64,
+});
 
 /// Ellipse `(cx + a cos φ, cy + b sin φ)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -62,19 +98,18 @@ impl Ellipse {
             center: V2::from_arr(center),
         })
     }
-    /// Semi-axis along x.
-    pub fn a(&self) -> f64 {
-        self.a
-    }
-    /// Semi-axis along y.
-    pub fn b(&self) -> f64 {
-        self.b
-    }
     /// The center.
     pub fn center(&self) -> [f64; 2] {
         self.center.arr()
     }
 }
+
+parameters!(Ellipse {
+    /// Semi-axis along x.
+    a: f64,
+    /// Semi-axis along y.
+    b: f64,
+});
 
 /// Limaçon `r(φ) = a + b cos φ`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -90,15 +125,14 @@ impl Limacon {
         check("a", a, a > b, "must be > b for a simple curve")?;
         Ok(Self { a, b })
     }
-    /// Constant term.
-    pub fn a(&self) -> f64 {
-        self.a
-    }
-    /// Cosine amplitude.
-    pub fn b(&self) -> f64 {
-        self.b
-    }
 }
+
+parameters!(Limacon {
+    /// Constant term.
+    a: f64,
+    /// Cosine amplitude.
+    b: f64,
+});
 
 /// Elliptic lemniscate `r(φ) = sqrt(a² cos² φ + b² sin² φ)`: certified on its exact rational
 /// form (the inverse of an ellipse) up to `a/b = 5` (either way round), sampled beyond.
@@ -115,15 +149,14 @@ impl EllipticLemniscate {
         check("b", b, b > 0.0, "must be > 0")?;
         Ok(Self { a, b })
     }
-    /// Radius at φ = 0.
-    pub fn a(&self) -> f64 {
-        self.a
-    }
-    /// Radius at φ = π/2.
-    pub fn b(&self) -> f64 {
-        self.b
-    }
 }
+
+parameters!(EllipticLemniscate {
+    /// Radius at φ = 0.
+    a: f64,
+    /// Radius at φ = π/2.
+    b: f64,
+});
 
 /// Curve with convexities `r(φ) = p / (1 + ε cos mφ)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -141,28 +174,21 @@ impl Convexities {
         check("m", m as f64, m >= 2, "must be an integer ≥ 2")?;
         Ok(Self { p, eps, m })
     }
-    /// Scale.
-    pub fn p(&self) -> f64 {
-        self.p
-    }
-    /// Eccentricity.
-    pub fn eps(&self) -> f64 {
-        self.eps
-    }
-    /// Number of lobes.
-    pub fn m(&self) -> u32 {
-        self.m
-    }
 }
 
-impl ParamCurve for Circle {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
-    }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn jet_to(&self, u: f64, _order: usize) -> Jet {
+parameters!(Convexities {
+    /// Scale.
+    p: f64,
+    /// Eccentricity.
+    eps: f64,
+    /// Number of lobes.
+    m: u32,
+});
+
+impl Circle {
+    /// The point and its derivatives up to `order` (≤ 3) at the angle `u`.
+    #[inline]
+    fn jet_in_angle(&self, u: f64, _order: usize) -> Jet {
         let (s, c) = u.sin_cos();
         let r = self.r;
         Jet {
@@ -174,41 +200,29 @@ impl ParamCurve for Circle {
     }
 }
 
-impl ParamCurve for Ellipse {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
-    }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn jet_to(&self, u: f64, _order: usize) -> Jet {
+impl Ellipse {
+    /// The point and its derivatives up to `order` (≤ 3) at the angle `u`.
+    #[inline]
+    fn jet_in_angle(&self, u: f64, _order: usize) -> Jet {
         let (s, c) = u.sin_cos();
         ellipse_jet(self.a, self.b, self.center, s, c)
     }
 }
 
-impl ParamCurve for Limacon {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
-    }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn jet_to(&self, u: f64, _order: usize) -> Jet {
+impl Limacon {
+    /// The point and its derivatives up to `order` (≤ 3) at the angle `u`.
+    #[inline]
+    fn jet_in_angle(&self, u: f64, _order: usize) -> Jet {
         let (s, c) = u.sin_cos();
         let (a, b) = (self.a, self.b);
         polar_jet_cs(s, c, [a + b * c, -b * s, -b * c, b * s])
     }
 }
 
-impl ParamCurve for EllipticLemniscate {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
-    }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn jet_to(&self, u: f64, order: usize) -> Jet {
+impl EllipticLemniscate {
+    /// The point and its derivatives up to `order` (≤ 3) at the angle `u`.
+    #[inline]
+    fn jet_in_angle(&self, u: f64, order: usize) -> Jet {
         // r² = g = A + B cos 2φ; differentiate r² = g three times. The value itself as
         // a² cos² φ + b² sin² φ: the form with cos 2φ cancels near the waist (φ = π/2) of a
         // slender lemniscate, where g ≈ b² ≪ a².
@@ -238,14 +252,10 @@ impl ParamCurve for EllipticLemniscate {
     }
 }
 
-impl ParamCurve for Convexities {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
-    }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn jet_to(&self, u: f64, order: usize) -> Jet {
+impl Convexities {
+    /// The point and its derivatives up to `order` (≤ 3) at the angle `u`.
+    #[inline]
+    fn jet_in_angle(&self, u: f64, order: usize) -> Jet {
         let (sm, cm) = (self.m as f64 * u).sin_cos();
         let (s, c) = u.sin_cos();
         convexities_jet(self.p, self.eps, self.m, s, c, sm, cm, order.max(1))

@@ -231,6 +231,23 @@ pub struct ProfilePair {
     pub segment: [usize; 2],
 }
 
+/// A smooth curve's pair as the pair of a profile of that one segment, in the curve's own
+/// parameter: no corner, both points on segment 0, its type kept.
+impl From<AntipodalPair> for ProfilePair {
+    fn from(p: AntipodalPair) -> Self {
+        ProfilePair {
+            s: p.s,
+            t: p.t,
+            p: p.p,
+            q: p.q,
+            distance: p.distance,
+            kind: Some(p.kind),
+            corner: [false; 2],
+            segment: [0; 2],
+        }
+    }
+}
+
 impl ProfilePair {
     /// The pair with `s ≤ t` (its two contacts swapped if need be).
     pub(crate) fn ordered(self) -> ProfilePair {

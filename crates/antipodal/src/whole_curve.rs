@@ -68,13 +68,17 @@ impl WholeCurve<'_> {
         self.profile.profile_param(0, v) + turns
     }
 
-    fn inflection(&self, f: Inflection) -> Inflection {
-        Inflection {
-            u: self.param(f.u),
-            bracket: f.bracket.map(|[lo, hi]| [self.param(lo), self.param(hi)]),
-            segment: Some(0),
-            ..f
-        }
+    /// The curve's inflections on the profile (on segment 0).
+    fn inflections(&self, found: Vec<Inflection>) -> Vec<Inflection> {
+        found
+            .into_iter()
+            .map(|f| Inflection {
+                u: self.param(f.u),
+                bracket: f.bracket.map(|[lo, hi]| [self.param(lo), self.param(hi)]),
+                segment: Some(0),
+                ..f
+            })
+            .collect()
     }
 }
 
@@ -86,22 +90,13 @@ pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<ProfileAn
         pairs: found
             .pairs
             .iter()
-            .map(|p| ProfilePair {
+            .map(|&p| ProfilePair {
                 s: on.param(p.s),
                 t: on.param(p.t),
-                p: p.p,
-                q: p.q,
-                distance: p.distance,
-                kind: Some(p.kind),
-                corner: [false; 2],
-                segment: [0; 2],
+                ..ProfilePair::from(p)
             })
             .collect(),
-        inflections: found
-            .inflections
-            .into_iter()
-            .map(|f| on.inflection(f))
-            .collect(),
+        inflections: on.inflections(found.inflections),
         corners: Vec::new(),
         families: found
             .families
@@ -126,11 +121,7 @@ pub(crate) fn inflections_run(
     let (found, doubts) = crate::prepare::inflections_run(on.curve, opts)?.into_parts();
     Ok(Certified {
         value: ProfileInflections {
-            inflections: found
-                .inflections
-                .into_iter()
-                .map(|f| on.inflection(f))
-                .collect(),
+            inflections: on.inflections(found.inflections),
             corners: Vec::new(),
             doubts: Doubts::none(),
         },

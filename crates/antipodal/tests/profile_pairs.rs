@@ -423,19 +423,7 @@ fn assert_same_points(a: &[[f64; 4]], b: &[[f64; 4]], room: f64) {
 /// A curve's pairs as those of a profile of that one smooth segment (no corners; both points
 /// on segment 0).
 fn as_profile_pairs(pairs: &[AntipodalPair]) -> Vec<ProfilePair> {
-    pairs
-        .iter()
-        .map(|p| ProfilePair {
-            s: p.s,
-            t: p.t,
-            p: p.p,
-            q: p.q,
-            distance: p.distance,
-            kind: Some(p.kind),
-            corner: [false; 2],
-            segment: [0; 2],
-        })
-        .collect()
+    pairs.iter().map(|&p| ProfilePair::from(p)).collect()
 }
 
 /// A smooth closed curve given as a one-segment profile has the curve's pairs, and a periodic

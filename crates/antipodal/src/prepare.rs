@@ -306,6 +306,19 @@ pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
 }
 
 /// All simple inflections of a curve (Jia §5.1; certified for the curve kinds of `curve`).
+///
+/// ```
+/// use antipodal::{inflections, Options, SplineCurve, Verdict};
+/// // An S-shaped cubic Bézier turns left, then right: one inflection, at its middle by
+/// // symmetry.
+/// let s = SplineCurve::clamped(3, &[[0.0, 0.0], [1.0, 1.0], [2.0, -1.0], [3.0, 0.0]], None, None)
+///     .unwrap();
+/// let r = inflections(&s, &Options::default()).unwrap();
+/// assert!(r.certified());
+/// assert_eq!(r.inflections.len(), 1);
+/// assert!((r.inflections[0].u - 0.5).abs() < 1e-12);
+/// assert!((r.inflections[0].p[0] - 1.5).abs() < 1e-12);
+/// ```
 pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections> {
     prepare(curve).inflections(opts)
 }
@@ -321,6 +334,16 @@ pub(crate) fn inflections_run(
 
 /// Two curves prepared in one frame (the identity when either is known only by evaluation),
 /// for their common tangents.
+///
+/// ```
+/// use antipodal::{prepare_pair, shapes::Circle, Options};
+/// // Two unit circles side by side, prepared once, asked twice.
+/// let (a, b) = (Circle::new(1.0, [0.0, 0.0]).unwrap(), Circle::new(1.0, [4.0, 0.0]).unwrap());
+/// let (pa, pb) = prepare_pair(&a, &b);
+/// assert_eq!(pa.frame(), pb.frame());
+/// let first = pa.common_tangents(&pb, &Options::default()).unwrap();
+/// assert_eq!(first, pa.common_tangents(&pb, &Options::default()).unwrap());
+/// ```
 pub fn prepare_pair<'c>(
     c1: &'c dyn PlaneCurve,
     c2: &'c dyn PlaneCurve,
@@ -337,6 +360,16 @@ pub fn prepare_pair<'c>(
 
 /// Every line tangent to both curves (Jia §2.5): prepares them in one frame and runs once (see
 /// [`Prepared::common_tangents`]).
+///
+/// ```
+/// use antipodal::{common_tangents, shapes::Circle, Options};
+/// // Two unit circles apart: two outer tangents (y = ±1) and two crossing between them.
+/// let (a, b) = (Circle::new(1.0, [0.0, 0.0]).unwrap(), Circle::new(1.0, [4.0, 0.0]).unwrap());
+/// let r = common_tangents(&a, &b, &Options::default()).unwrap();
+/// assert_eq!(r.lines.len(), 4);
+/// let outer = r.lines.iter().filter(|l| (l.p[1] - l.q[1]).abs() < 1e-12).count();
+/// assert_eq!(outer, 2);
+/// ```
 pub fn common_tangents(
     c1: &dyn PlaneCurve,
     c2: &dyn PlaneCurve,

@@ -292,6 +292,12 @@ impl KnotVector {
 
 /// The clamped knot vector of `n` control points and degree `p` on `[a, b]` with uniform
 /// interior knots.
+///
+/// ```
+/// // Five control points of a cubic: one interior knot, in the middle.
+/// let k = bspline::clamped_uniform_knots(3, 5, 0.0, 2.0);
+/// assert_eq!(k, vec![0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0, 2.0]);
+/// ```
 pub fn clamped_uniform_knots(p: usize, n: usize, a: f64, b: f64) -> Vec<f64> {
     let interior = n - p - 1;
     let mut k = vec![a; p + 1];

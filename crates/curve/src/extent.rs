@@ -31,6 +31,10 @@ pub fn union(a: Box2, b: Box2) -> Box2 {
 }
 
 /// max(width, height) of a box.
+///
+/// ```
+/// assert_eq!(curve::box_size([1.0, -2.0, 4.0, 5.0]), 7.0);
+/// ```
 pub fn box_size(b: Box2) -> f64 {
     (b[2] - b[0]).max(b[3] - b[1])
 }
@@ -38,6 +42,20 @@ pub fn box_size(b: Box2) -> f64 {
 /// The box of the points of rational B-spline curves together, `[lo x, lo y, hi x, hi y]`, to
 /// within `1e-9` of its size (never smaller than the points): what the contract's size of a
 /// command's input curves is taken of.
+///
+/// ```
+/// use bspline::{BSpline, Rational};
+/// // A quadratic arch whose middle control point (at height 2) lies above the curve, which
+/// // rises to 1: the box is the curve's, not the control points'.
+/// let points = vec![-1.0, 0.0, 0.0, 2.0, 1.0, 0.0];
+/// let arch = Rational::polynomial(&BSpline::bezier(2, points).unwrap());
+/// let b = curve::curves_box(&[&arch]).unwrap();
+/// // (Each side at or beyond the curve's, within 1e-9 of the size, 2.)
+/// let sides = [(b[0], -1.0, -1.0), (b[1], 0.0, -1.0), (b[2], 1.0, 1.0), (b[3], 1.0, 1.0)];
+/// for (got, want, out) in sides {
+///     assert!((got - want) * out >= 0.0 && (got - want).abs() <= 1e-9 * 2.0);
+/// }
+/// ```
 pub fn curves_box(curves: &[&bspline::Rational]) -> crate::Result<Box2> {
     let segments = curves
         .iter()

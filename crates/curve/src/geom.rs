@@ -93,6 +93,13 @@ impl Mul<f64> for V2 {
 }
 
 /// The angle `a` wrapped into `(−π, π]`.
+///
+/// ```
+/// use std::f64::consts::PI;
+/// assert_eq!(curve::wrap_pi(-PI), PI);
+/// assert!((curve::wrap_pi(3.0 * PI / 2.0) + PI / 2.0).abs() < 1e-15);
+/// assert!((curve::wrap_pi(7.0 * PI + 0.5) - (-PI + 0.5)).abs() < 1e-14);
+/// ```
 pub fn wrap_pi(a: f64) -> f64 {
     use std::f64::consts::{PI, TAU};
     // Most angles are within a turn of the range: a subtraction, not a floating remainder.
@@ -124,6 +131,11 @@ pub fn distance_to_segment(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 }
 
 /// The square of [`distance_to_segment`], without its root (for the least of many).
+///
+/// ```
+/// // Beyond the segment's end, the distance to the end: 3² + 4².
+/// assert_eq!(curve::squared_distance_to_segment([7.0, 4.0], [0.0, 0.0], [4.0, 0.0]), 25.0);
+/// ```
 pub fn squared_distance_to_segment(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     let (ex, ey) = offset_from_segment(x, a, b);
     ex * ex + ey * ey

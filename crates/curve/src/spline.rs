@@ -404,6 +404,20 @@ pub(crate) fn control_size(c: &Rational) -> f64 {
 /// Point and derivatives up to order `k ≤ 3` of the planar rational curve with homogeneous
 /// form `h` (`out[2j..2j+2]` the j-th derivative), by the quotient rule
 /// `C⁽ʲ⁾ = (X⁽ʲ⁾ − Σᵢ C(j,i) w⁽ⁱ⁾ C⁽ʲ⁻ⁱ⁾) / w`.
+///
+/// ```
+/// use curve::{rational_derivs, ParamCurve, SplineCurve};
+/// // A quarter of the unit circle as a rational quadratic: its point and derivatives agree
+/// // with the curve's jet.
+/// let w = std::f64::consts::FRAC_1_SQRT_2;
+/// let points = [[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+/// let c = SplineCurve::clamped(2, &points, Some(&[1.0, w, 1.0]), None).unwrap();
+/// let mut out = [0.0; 8];
+/// rational_derivs(&c.exact_pieces().hom, 0.3, 2, &mut out);
+/// let j = c.jet(0.3);
+/// assert!((out[0] - j.p.x).abs() < 1e-15 && (out[3] - j.d1.y).abs() < 1e-14);
+/// assert!((out[0].hypot(out[1]) - 1.0).abs() < 1e-15);
+/// ```
 pub fn rational_derivs(h: &Piecewise, u: f64, k: usize, out: &mut [f64; 8]) {
     let mut hv = [0.0; 12];
     let k = k.min(3);

@@ -172,6 +172,20 @@ impl Flatten for Segment {
 }
 
 /// [`Flatten::flattened`] of a profile, each vertex with its parameter on the profile.
+///
+/// ```
+/// use curve::{ParamCurve, Profile, Segment};
+/// use geometry::flattened_with_params;
+/// // A half circle within 1e-3: every vertex is the profile's point at its parameter.
+/// let arc = Segment::arc([0.0, 0.0], 1.0, 0.0, std::f64::consts::PI).unwrap();
+/// let p = Profile::new(vec![arc], None).unwrap();
+/// let points = flattened_with_params(&p, 1e-3);
+/// assert!(points.len() > 10);
+/// for (v, u) in points {
+///     let on = p.jet(u).p;
+///     assert!((on.x - v[0]).hypot(on.y - v[1]) < 1e-12);
+/// }
+/// ```
 pub fn flattened_with_params(profile: &Profile, tol: f64) -> Vec<([f64; 2], f64)> {
     flatten::flattened_with_params(profile, tol)
 }

@@ -132,6 +132,22 @@ pub enum Error {
 
 /// The inward offsets of `region` at each of `distances`, from its medial axis `axis`
 /// (computed by [`medial::medial_axis`], not the exterior one).
+///
+/// ```
+/// use curve::{Profile, Region, Segment};
+/// use medial::{medial_axis, MedialOptions};
+/// use offset::{offsets, OffsetOptions, OffsetSegment, Verdict};
+/// // A disk of radius 2 offset by 0.5 and by 3: a circle of radius 1.5, then nothing.
+/// let circle = Segment::arc([1.0, -1.0], 2.0, 0.0, std::f64::consts::TAU).unwrap();
+/// let region = Region::new(Profile::new(vec![circle], None).unwrap(), vec![]).unwrap();
+/// let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+/// let found = offsets(&region, &axis, &[0.5, 3.0], &OffsetOptions::default()).unwrap();
+/// assert!(found.certified());
+/// let ring = &found.offsets[0].loops[0];
+/// assert!(ring.segments.iter().all(|s| matches!(s, OffsetSegment::Arc { r, .. }
+///     if (r - 1.5).abs() < 1e-12)));
+/// assert!(found.offsets[1].loops.is_empty());
+/// ```
 pub fn offsets(
     region: &Region,
     axis: &MedialAxis,
@@ -146,6 +162,23 @@ pub fn offsets(
 /// exterior medial axis `exterior` (computed by [`medial::medial_axis`] with
 /// `exterior: true`). That axis is clipped to the region's box grown by half its size, so the
 /// distances must stay below half the size.
+///
+/// ```
+/// use curve::{Profile, Region, Segment};
+/// use medial::{medial_axis, MedialOptions};
+/// use offset::{outward_offsets, OffsetOptions, OffsetSegment};
+/// // A 4 × 2 rectangle grown by 0.5: its four sides moved out, joined by quarter circles
+/// // about its corners.
+/// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+/// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+/// let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+/// let opts = MedialOptions { exterior: true, ..MedialOptions::default() };
+/// let exterior = medial_axis(&region, &opts).unwrap();
+/// let found = outward_offsets(&region, &exterior, &[0.5], &OffsetOptions::default()).unwrap();
+/// let grown = &found.offsets[0].loops[0];
+/// let arcs = grown.segments.iter().filter(|s| matches!(s, OffsetSegment::Arc { .. }));
+/// assert_eq!((grown.segments.len(), arcs.count()), (8, 4));
+/// ```
 pub fn outward_offsets(
     region: &Region,
     exterior: &MedialAxis,

@@ -97,6 +97,23 @@ fn chord_of(opts: &BisectorOptions, curves: &[&Rational]) -> f64 {
 }
 
 /// The bisector of `c1(t)` and `c2(r)`.
+///
+/// ```
+/// use bspline::{BSpline, Rational};
+/// use zeroset::{bisector, BisectorOptions};
+/// // Two segments on the axes, c1(t) = (1 + 2t, 0) and c2(r) = (0, 1 + 2r): the points
+/// // equidistant from both with perpendicular feet are those of the diagonal, their feet at
+/// // t = r.
+/// let c1 = Rational::polynomial(&BSpline::bezier(2, vec![1.0, 0.0, 3.0, 0.0]).unwrap());
+/// let c2 = Rational::polynomial(&BSpline::bezier(2, vec![0.0, 1.0, 0.0, 3.0]).unwrap());
+/// let b = bisector(&c1, &c2, &BisectorOptions::default()).unwrap();
+/// assert!(b.complete && !b.branches.is_empty());
+/// for br in &b.branches {
+///     for (tr, xy) in br.tr.iter().zip(&br.xy) {
+///         assert!((tr[0] - tr[1]).abs() < 1e-9 && (xy[0] - xy[1]).abs() < 1e-9);
+///     }
+/// }
+/// ```
 pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let z = zero_set_options(opts);
     for (which, c) in [(1, c1), (2, c2)] {
@@ -209,6 +226,24 @@ fn to_global(mut b: Bisector, frame: &Frame) -> Bisector {
 }
 
 /// The self-bisector of `c`: pairs `t < r` of distinct foot points on the same curve.
+///
+/// ```
+/// use bspline::{BSpline, Rational};
+/// use zeroset::{self_bisector, BisectorOptions};
+/// // A symmetric arch: its mirrored points, t and 1 − t, are equidistant from the points of
+/// // its axis of symmetry x = 0.
+/// let arch = Rational::polynomial(
+///     &BSpline::bezier(2, vec![-1.0, 0.0, 0.0, 2.0, 1.0, 0.0]).unwrap(),
+/// );
+/// let b = self_bisector(&arch, &BisectorOptions::default()).unwrap();
+/// assert!(b.complete && !b.branches.is_empty());
+/// let on_axis = |br: &zeroset::Branch| {
+///     br.tr.iter().zip(&br.xy).all(|(tr, xy)| {
+///         (tr[0] + tr[1] - 1.0).abs() < 1e-9 && xy[0].abs() < 1e-9
+///     })
+/// };
+/// assert!(b.branches.iter().any(on_axis));
+/// ```
 pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let z = zero_set_options(opts);
     if c.dim() != 2 {

@@ -164,6 +164,28 @@ pub fn profile_bisector(
 /// of `a`, `j` of `b`); a corner counts as each of the two segments it joins. For callers
 /// that have shown which pairs can matter (the medial axis keeps the pairs that can share an
 /// empty disk).
+///
+/// ```
+/// use curve::{Profile, Segment};
+/// use zeroset::{profile_bisector, profile_bisector_of_pairs, BisectorOptions};
+/// // Two L-shaped walls, each a vertical segment then a horizontal one: kept to the pair of
+/// // their vertical segments, the bisector is theirs alone (x = 2 between x = 0 and 4); the
+/// // whole one also has the left top's bisector with the right side (on y = x − 1).
+/// let wall = |x: f64, to: f64| {
+///     let segs = vec![
+///         Segment::line([x, 0.0], [x, 3.0]).unwrap(),
+///         Segment::line([x, 3.0], [to, 3.0]).unwrap(),
+///     ];
+///     Profile::new(segs, None).unwrap()
+/// };
+/// let (left, right) = (wall(0.0, 2.0), wall(4.0, 3.0));
+/// let opts = BisectorOptions::default();
+/// let kept = profile_bisector_of_pairs(&left, &right, &opts, &|i, j| i == 0 && j == 0).unwrap();
+/// let all = profile_bisector(&left, &right, &opts).unwrap();
+/// let on_middle = |br: &zeroset::ProfileBranch| br.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-9);
+/// assert!(!kept.branches.is_empty() && kept.branches.iter().all(on_middle));
+/// assert!(!all.branches.iter().all(on_middle));
+/// ```
 pub fn profile_bisector_of_pairs(
     a: &Profile,
     b: &Profile,
@@ -205,6 +227,20 @@ pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<Prof
 /// [`profile_self_bisector`] restricted to the pairs of segments `keep(i, j)` accepts (`i ≤
 /// j`; a segment's own bisector is `keep(i, i)`); a corner counts as each of the two
 /// segments it joins.
+///
+/// ```
+/// use curve::{Profile, Segment};
+/// use zeroset::{profile_self_bisector_of_pairs, BisectorOptions};
+/// // A 4 × 2 rectangle, kept to its two long sides (segments 0 and 2): their bisector is the
+/// // middle line y = 1.
+/// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+/// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+/// let rect = Profile::new(sides, None).unwrap();
+/// let keep = |i: usize, j: usize| (i, j) == (0, 2);
+/// let b = profile_self_bisector_of_pairs(&rect, &BisectorOptions::default(), &keep).unwrap();
+/// assert!(!b.branches.is_empty());
+/// assert!(b.branches.iter().all(|br| br.xy.iter().all(|p| (p[1] - 1.0).abs() < 1e-9)));
+/// ```
 pub fn profile_self_bisector_of_pairs(
     p: &Profile,
     opts: &BisectorOptions,

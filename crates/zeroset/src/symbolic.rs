@@ -131,6 +131,18 @@ impl Sep {
 }
 
 /// The bivariate function of `method` for the curves `c1(t)`, `c2(r)` (both planar).
+///
+/// ```
+/// use bspline::{BSpline, Rational};
+/// use zeroset::{bisector_function, Method};
+/// // Segments on the axes, c1(t) = (1 + 2t, 0) and c2(r) = (0, 1 + 2r): matched feet (t = r)
+/// // are zeros of F3, unmatched ones are not.
+/// let c1 = Rational::polynomial(&BSpline::bezier(2, vec![1.0, 0.0, 3.0, 0.0]).unwrap());
+/// let c2 = Rational::polynomial(&BSpline::bezier(2, vec![0.0, 1.0, 0.0, 3.0]).unwrap());
+/// let f = bisector_function(&c1, &c2, Method::F3).unwrap();
+/// assert!(f.eval(0.3, 0.3).abs() < 1e-12);
+/// assert!(f.eval(0.3, 0.7).abs() > 1e-3);
+/// ```
 pub fn bisector_function(c1: &Rational, c2: &Rational, method: Method) -> Result<TensorBSpline> {
     Ok(bisector_function_scaled(c1, c2, method)?.0)
 }

@@ -49,6 +49,20 @@ pub struct Solution {
 }
 
 /// All isolated solutions of `f = g = 0` on the common domain, sorted by `(t, r)`.
+///
+/// ```
+/// use bspline::tensor::TensorBSpline;
+/// use zeroset::{solve_system, SystemOptions};
+/// // f = t − r and g = t + r − 1 on the unit square (bilinear, by their corner values):
+/// // one common zero, at (1/2, 1/2).
+/// let unit = || vec![0.0, 0.0, 1.0, 1.0];
+/// let f = TensorBSpline::new(1, unit(), 1, unit(), vec![0.0, -1.0, 1.0, 0.0]).unwrap();
+/// let g = TensorBSpline::new(1, unit(), 1, unit(), vec![-1.0, 0.0, 0.0, 1.0]).unwrap();
+/// let found = solve_system(&f, &g, &SystemOptions::default()).unwrap();
+/// assert_eq!(found.len(), 1);
+/// assert!(found[0].certified);
+/// assert!((found[0].t - 0.5).abs() < 1e-12 && (found[0].r - 0.5).abs() < 1e-12);
+/// ```
 pub fn solve_system(
     f: &TensorBSpline,
     g: &TensorBSpline,

@@ -150,6 +150,18 @@ pub(super) fn psi(c1: &Jets, c2: &Jets, t: f64, r: f64) -> (f64, f64, f64) {
 
 /// The bisector point of the foot points `c1(t)`, `c2(r)` if they are matched (residual of the
 /// bisector conditions ≤ [`RESIDUAL`]), else `None`.
+///
+/// ```
+/// use bspline::{BSpline, Rational};
+/// use zeroset::bisector_point;
+/// // Segments on the axes, c1(t) = (1 + 2t, 0) and c2(r) = (0, 1 + 2r): the feet (2, 0) and
+/// // (0, 2) are matched at the point (2, 2); the feet (2, 0) and (0, 1) are not.
+/// let c1 = Rational::polynomial(&BSpline::bezier(2, vec![1.0, 0.0, 3.0, 0.0]).unwrap());
+/// let c2 = Rational::polynomial(&BSpline::bezier(2, vec![0.0, 1.0, 0.0, 3.0]).unwrap());
+/// let p = bisector_point(&c1, &c2, 0.5, 0.5).unwrap();
+/// assert!((p[0] - 2.0).abs() < 1e-12 && (p[1] - 2.0).abs() < 1e-12);
+/// assert_eq!(bisector_point(&c1, &c2, 0.5, 0.0), None);
+/// ```
 pub fn bisector_point(c1: &Rational, c2: &Rational, t: f64, r: f64) -> Option<[f64; 2]> {
     let (center, diag) = bbox(&[c1, c2]);
     let floor = FLOOR * (diag + center[0].hypot(center[1]));

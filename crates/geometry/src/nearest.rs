@@ -7,7 +7,7 @@
 //! where the search ends within its bounds (a piece count and a depth no ordinary drawing
 //! reaches).
 
-use crate::pieces::{halve, hull_distance, ControlPoints, Pending, Piece};
+use crate::pieces::{append_halves, hull_distance, ControlPoints};
 use curve::piece_bounds::{box_distance, coefficient_error, Errors};
 use curve::{ParamCurve, Profile, Segment, V2};
 use numeric::rounding::ulps;
@@ -83,10 +83,13 @@ pub(crate) fn nearest_near(profile: &Profile, x: [f64; 2], u: f64) -> Foot {
 
 /// The nearest point of one segment to `x` if it is nearer than `beat` (less the slack): its
 /// distance and the segment's own parameter. Branch and bound on the segment's Bézier
-/// pieces: a piece whose hull is proven no nearer than the best point found less the slack
-/// is passed over, any other is halved; a piece whose middle comes nearer than the best
-/// point found is polished there by Newton's method, so the bound closes on the nearest
-/// local minimum at once and the halvings only have to exclude the rest.
+/// pieces, nearest bound first: a piece whose hull is proven no nearer than the best point
+/// found less the slack is passed over, and with it every piece left (their bounds are no
+/// nearer); any other is halved; a piece whose middle comes nearer than the best point
+/// found is polished there by Newton's method, so the bound closes on the nearest local
+/// minimum at once and the halvings only have to exclude the rest. (Depth first, the
+/// pieces about a centre of curvature of the curve, where the distance is flat to third
+/// order, were halved until the piece bound ran out before the nearer pieces were reached.)
 fn nearest_on(s: &Segment, x: V2, beat: f64) -> Option<(f64, f64)> {
     let c = s.curve();
     let pieces = c.bezier_pieces();
@@ -110,50 +113,137 @@ fn nearest_on(s: &Segment, x: V2, beat: f64) -> Option<(f64, f64)> {
                 weight: m.weight.max(e.weight),
             },
         );
-    let mut pending = Pending::default();
-    for k in (0..pieces.pieces()).rev() {
+    // A piece's key: its proven bound (the hull's distance less what rounding may hide) less
+    // the slack; a piece whose key is no nearer than the point found is passed over: a point
+    // of it nearer by less is within rounding of the point found. (Without the room, the
+    // pieces about the point found, within rounding of it themselves, would be halved to the
+    // depth bound.) A weight that may not be positive bounds nothing: such a piece is halved.
+    let key = |coefs: &[f64], depth: usize| {
+        let control = ControlPoints::of(coefs, dim, x);
+        if control.w_min > 2.0 * err.weight {
+            let room = err.room(control.w_min, control.mag, depth);
+            hull_distance(&control.pts, x) + room - NEAREST_SLACK * control.mag
+        } else {
+            f64::NEG_INFINITY
+        }
+    };
+    let mut queue = Queue::default();
+    for k in 0..pieces.pieces() {
         let (lo, hi) = pieces.piece_span(k);
-        pending.push(pieces.piece(k), lo, hi, 0);
+        let coefs = pieces.piece(k);
+        queue.push(coefs, key(coefs, 0), lo, hi, 0);
     }
     let (mut current, mut work) = (Vec::new(), Vec::new());
     let mut tested = 0;
-    while let Some((lo, hi, depth)) = pending.pop(&mut current) {
+    while let Some(q) = queue.pop(&mut current) {
+        if q.key >= best.0.min(beat) {
+            break;
+        }
         tested += 1;
         if tested > MAX_NEAREST_PIECES {
             break;
         }
-        let control = ControlPoints::of(&current, dim, x);
-        // (A weight that may not be positive bounds nothing: such a piece is halved.)
-        if control.w_min > 2.0 * err.weight {
-            // Passed over when its proven bound (the hull's distance less what rounding may
-            // hide) is no nearer than the point found less the slack and twice that room: a
-            // point nearer by less is within rounding of the point found. (Without the room,
-            // the pieces about the point found, within rounding of it themselves, would be
-            // halved to the depth bound.)
-            let room = err.room(control.w_min, control.mag, depth);
-            let slack = NEAREST_SLACK * control.mag;
-            if hull_distance(&control.pts, x) + room >= best.0.min(beat) - slack {
-                continue;
-            }
-        }
-        let mid = 0.5 * (lo + hi);
+        let mid = 0.5 * (q.lo + q.hi);
         let at_mid = dist(mid);
         if at_mid < best.0 {
-            let u = polish(c, x, mid, lo, hi);
+            let u = polish(c, x, mid, q.lo, q.hi);
             let d = dist(u);
             best = if d < at_mid { (d, u) } else { (at_mid, mid) };
         }
-        if depth < MAX_NEAREST_DEPTH {
-            let piece = Piece {
-                coefs: &current,
-                lo,
-                hi,
-                depth,
-            };
-            halve(&piece, dim, &mut work, &mut pending);
+        if q.depth < MAX_NEAREST_DEPTH {
+            let halves = queue.halves(&current, dim, &mut work);
+            let depth = q.depth + 1;
+            let len = current.len();
+            let (second, first) = (halves, halves + len);
+            let key_of = |queue: &Queue, at: usize| key(&queue.coefs[at..at + len], depth);
+            let (k2, k1) = (key_of(&queue, second), key_of(&queue, first));
+            queue.enqueue(second, k2, mid, q.hi, depth);
+            queue.enqueue(first, k1, q.lo, mid, depth);
         }
     }
     (best.0 < beat).then_some(best)
+}
+
+/// A piece waiting in [`Queue`]: its key, where its coefficients start in the queue's
+/// buffer, its interval and its depth.
+#[derive(Debug, Clone, Copy)]
+struct Queued {
+    key: f64,
+    at: usize,
+    lo: f64,
+    hi: f64,
+    depth: usize,
+}
+
+impl PartialEq for Queued {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == std::cmp::Ordering::Equal
+    }
+}
+
+impl Eq for Queued {}
+
+impl PartialOrd for Queued {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+/// The least key first (a max-heap of the reversed order); among equal keys, the piece
+/// queued first.
+impl Ord for Queued {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        other
+            .key
+            .total_cmp(&self.key)
+            .then_with(|| other.at.cmp(&self.at))
+    }
+}
+
+/// The pieces still to test, least key first, their coefficients in one buffer (appended
+/// to, never moved: a search tests at most [`MAX_NEAREST_PIECES`] pieces).
+#[derive(Default)]
+struct Queue {
+    coefs: Vec<f64>,
+    heap: std::collections::BinaryHeap<Queued>,
+    /// Coefficients per piece (the same for all pieces of a segment).
+    len: usize,
+}
+
+impl Queue {
+    fn push(&mut self, coefs: &[f64], key: f64, lo: f64, hi: f64, depth: usize) {
+        self.len = coefs.len();
+        let at = self.coefs.len();
+        self.coefs.extend_from_slice(coefs);
+        self.enqueue(at, key, lo, hi, depth);
+    }
+
+    /// Queues the piece whose coefficients are already in the buffer at `at`.
+    fn enqueue(&mut self, at: usize, key: f64, lo: f64, hi: f64, depth: usize) {
+        self.heap.push(Queued {
+            key,
+            at,
+            lo,
+            hi,
+            depth,
+        });
+    }
+
+    /// The piece of the least key, its coefficients copied into `into`.
+    fn pop(&mut self, into: &mut Vec<f64>) -> Option<Queued> {
+        let q = self.heap.pop()?;
+        into.clear();
+        into.extend_from_slice(&self.coefs[q.at..q.at + self.len]);
+        Some(q)
+    }
+
+    /// The halves of `coefs` appended to the buffer (the second, then the first); where
+    /// the second starts.
+    fn halves(&mut self, coefs: &[f64], dim: usize, work: &mut Vec<f64>) -> usize {
+        let at = self.coefs.len();
+        append_halves(coefs, dim, work, &mut self.coefs);
+        at
+    }
 }
 
 /// Newton's method on `⟨C − x, C'⟩ = 0` from `u` within `[lo, hi]`, kept only while it

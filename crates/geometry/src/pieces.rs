@@ -48,14 +48,26 @@ impl Pending {
 /// The two halves of a piece by de Casteljau's algorithm on its homogeneous coefficients,
 /// pushed onto `pending`, the first half last (it is tested first); `work` is scratch.
 pub(crate) fn halve(piece: &Piece<'_>, dim: usize, work: &mut Vec<f64>, pending: &mut Pending) {
-    let len = piece.coefs.len();
+    append_halves(piece.coefs, dim, work, &mut pending.coefs);
+    let mid = 0.5 * (piece.lo + piece.hi);
+    let depth = piece.depth + 1;
+    pending.len = piece.coefs.len();
+    pending.spans.push((mid, piece.hi, depth));
+    pending.spans.push((piece.lo, mid, depth));
+}
+
+/// The two halves of the Bézier piece `coefs` (`dim` numbers per control point) by de
+/// Casteljau's algorithm at its middle, appended to `out`: the second half, then the
+/// first; `work` is scratch.
+#[inline]
+pub(crate) fn append_halves(coefs: &[f64], dim: usize, work: &mut Vec<f64>, out: &mut Vec<f64>) {
+    let len = coefs.len();
     let n = len / dim;
     work.clear();
-    work.extend_from_slice(piece.coefs);
-    let right = pending.coefs.len();
+    work.extend_from_slice(coefs);
+    let right = out.len();
     let left = right + len;
-    pending.coefs.resize(left + len, 0.0);
-    let out = &mut pending.coefs;
+    out.resize(left + len, 0.0);
     out[left..left + dim].copy_from_slice(&work[..dim]);
     out[right + (n - 1) * dim..left].copy_from_slice(&work[(n - 1) * dim..]);
     for level in 1..n {
@@ -69,11 +81,6 @@ pub(crate) fn halve(piece: &Piece<'_>, dim: usize, work: &mut Vec<f64>, pending:
         let k = (n - 1 - level) * dim;
         out[right + k..right + k + dim].copy_from_slice(&work[k..k + dim]);
     }
-    let mid = 0.5 * (piece.lo + piece.hi);
-    let depth = piece.depth + 1;
-    pending.len = len;
-    pending.spans.push((mid, piece.hi, depth));
-    pending.spans.push((piece.lo, mid, depth));
 }
 
 /// A lower bound on the distance from `x` to the convex hull of `pts` (a rational Bézier

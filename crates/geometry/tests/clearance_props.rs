@@ -10,7 +10,7 @@
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve};
+use curve::{ParamCurve, Profile, Segment, SegmentKind, SplineCurve, V2};
 use geometry::{Clearance, NearestPoint, ProfileClearance};
 use proptest::prelude::*;
 use testkit::boundary_oracle::golden;
@@ -400,5 +400,80 @@ proptest! {
         let p = Profile::new(vec![Segment::spline(SegmentKind::Bezier, c).unwrap()], Some(false));
         prop_assume!(p.is_ok());
         check_nearest(&p.unwrap(), &xs, [0.0, 0.0], scale, 1e-12 * scale)?;
+    }
+}
+
+/// A point at the centre of curvature of one end of a long flat stretch of the curve, far
+/// from its nearest point elsewhere: about its centre of curvature the distance to the curve
+/// is flat to third order, so no bound separates the pieces there from the point found
+/// there, and a search that halves them first never reaches the rest (a trimmed
+/// self-bisector's point on the clamped closed fixture: 2.11 found where 0.31 is the
+/// nearest).
+#[test]
+fn the_nearest_point_is_found_beyond_a_centre_of_curvature() {
+    let pts = [
+        [0.0, 0.0],
+        [2.0, -1.0],
+        [4.0, -0.5],
+        [5.0, 1.5],
+        [3.0, 1.0],
+        [1.5, 3.0],
+        [-1.0, 2.0],
+        [-1.0, 0.5],
+        [0.0, 0.0],
+    ];
+    let knots = vec![0., 0., 0., 0., 0.15, 0.3, 0.45, 0.6, 0.8, 1., 1., 1., 1.];
+    let c = SplineCurve::clamped(3, &pts, None, Some(knots)).unwrap();
+    let p = Profile::new(
+        vec![Segment::spline(SegmentKind::BSpline, c).unwrap()],
+        None,
+    )
+    .unwrap();
+    let x = [2.4307394812607583, 1.4269277407295309];
+    let want = oracle_distance(&p, x);
+    assert!((want - 0.3067211).abs() < 1e-6, "{want}");
+    let n = p.nearest(x, 0.0);
+    testkit::assert_near!(n.distance, want, 1e-12);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(60))]
+
+    /// Points at the centres of curvature of random periodic star splines where their
+    /// curvature is extreme (there the distance is flattest about the point of the curve,
+    /// to fourth order, and that point need not be the nearest), and about them.
+    #[test]
+    fn the_nearest_point_is_the_oracles_about_centres_of_curvature(
+        seed in prop::collection::vec(0.0f64..1.0, 16),
+        shrink in prop_oneof![Just(1.0), 0.99f64..1.01],
+    ) {
+        let star = testkit::stars::Star::default();
+        let spline = SplineCurve::periodic(3, &star.points_from_seed(&seed), None).unwrap();
+        let (a, b) = spline.domain();
+        let seg = Segment::periodic_spline(SegmentKind::BSpline, &spline).unwrap();
+        let p = Profile::of_curve(seg, (a, b)).unwrap();
+        // The curvature's extremes, to the sampling's step.
+        const STEPS: usize = 4000;
+        let at = |i: usize| a + (b - a) * (i % STEPS) as f64 / STEPS as f64;
+        let kappa: Vec<f64> = (0..STEPS).map(|i| spline.jet(at(i)).curvature()).collect();
+        let extreme = |i: usize| {
+            let (before, here, after) = (kappa[(i + STEPS - 1) % STEPS], kappa[i], kappa[(i + 1) % STEPS]);
+            (here - before) * (after - here) < 0.0
+        };
+        let mut tested = 0;
+        for i in (0..STEPS).filter(|&i| extreme(i) && kappa[i].abs() > 1e-3) {
+            let j = spline.jet(at(i));
+            let normal = V2::new(-j.d1.y, j.d1.x) * (1.0 / j.d1.norm());
+            let x = (j.p + normal * (shrink / j.curvature())).arr();
+            let want = oracle_distance(&p, x);
+            let n = p.nearest(x, 0.0);
+            prop_assert!(
+                n.distance <= want + 1e-12 * (1.0 + x[0].abs() + x[1].abs()),
+                "at {x:?} the nearest point found is {} away, the oracle's {want}",
+                n.distance
+            );
+            tested += 1;
+        }
+        prop_assert!(tested >= 2);
     }
 }

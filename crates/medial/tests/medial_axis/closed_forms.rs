@@ -1,13 +1,12 @@
 //! The medial axis against closed forms on degenerate regions: nearly flat corners, a disk, a
 //! stadium, an annulus, a four-centre oval, an L-shaped room inside and out.
 
-use crate::graph::components_and_cycles;
 use crate::helpers::{circle, kinds, pocket_outline};
-use crate::traced::{axis, off_axis, traced_options, CHORD};
-use curve::{ParamCurve, Profile, Region, Segment};
-use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
+use crate::traced::axis;
+use curve::{Profile, Region, Segment};
+use medial::{medial_axis, MedialOptions, NodeKind};
+use numeric::certificate::Verdict;
 use std::f64::consts::{PI, TAU};
-use testkit::profiles::stepped_polygon;
 
 /// A nearly flat corner (its sides turning by 1e-5 to 1e-3 rad) is a corner all the same:
 /// inside, a convex one has its edge of the axis; outside, a reflex one has its edge of the

@@ -1,11 +1,13 @@
 //! Cases found beside corners: fillet centres, reflex corners' stretches, leaves and
 //! junctions, and the benchmarks' chains of cubics.
 
-use crate::helpers::{checked_region, end_foot, kinds};
-use crate::traced::{axis, traced_options};
-use curve::{ParamCurve, Profile, Region, Segment};
-use medial::{medial_axis, MedialOptions, NodeKind};
-use testkit::profiles::{assemble, bezier_chain_profile};
+use crate::helpers::{checked_region, end_foot};
+use crate::oracle::shaped_like_the_region;
+use crate::traced::axis;
+use curve::Region;
+use medial::NodeKind;
+use numeric::certificate::Verdict;
+use testkit::profiles::{assemble, bezier_chain_profile, stepped_polygon};
 
 /// A filleted triangle whose two straight sides' bisector ends at a fillet's centre: the
 /// end's feet are the sides' tangent points, at the joints with the arc, which the

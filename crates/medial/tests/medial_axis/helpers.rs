@@ -2,7 +2,7 @@
 //! pocket) made and checked, and what an axis has (nodes of a kind, an end's foot).
 
 use crate::oracle::check;
-use curve::{Profile, Region, Segment};
+use curve::{ParamCurve, Profile, Region, Segment};
 use medial::{MedialAxis, NodeKind};
 use std::f64::consts::TAU;
 

@@ -2,8 +2,9 @@
 
 use crate::helpers::{circle, closed_cubic, pocket_outline};
 use crate::oracle::size_of;
-use curve::{Profile, Region, Segment};
-use medial::{medial_axis, MedialOptions, NodeKind};
+use crate::traced::axis;
+use curve::Region;
+use numeric::certificate::Verdict;
 
 /// Metamorphic: an axis certified after the region is moved far from the origin, scaled by
 /// 2^±20 or 1e±6, or rotated, is the moved axis (every node, of its kind, within 1e-9 of the

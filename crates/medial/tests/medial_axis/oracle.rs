@@ -3,15 +3,15 @@
 //! was not vacuous.
 
 use crate::graph::components_and_cycles;
-use crate::helpers::{circle, end_foot};
+use crate::helpers::end_foot;
 use crate::sampled_voronoi::sampled_medial_points;
 use crate::traced::{axis, off_axis, traced_options, CHORD};
-use curve::{ParamCurve, Profile, Region, Segment};
+use curve::{ParamCurve, Profile, Region};
 use medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use numeric::certificate::Verdict;
 use proptest::prelude::*;
 use std::cell::Cell;
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::PI;
 use testkit::boundary_oracle::{off_polylines, winding, Oracle};
 
 /// Every boundary of the region with its oracle.

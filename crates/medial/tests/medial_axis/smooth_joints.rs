@@ -1,11 +1,11 @@
 //! Cases the random regions found on splines and smooth joints: leaves, junctions and
 //! branches beside curvature maxima, knots and joints where the curvature jumps.
 
-use crate::helpers::{checked_region, circle, closed_spline, end_foot, kinds};
-use crate::traced::{axis, traced_options};
-use curve::{ParamCurve, Profile, Region, Segment};
-use medial::{medial_axis, MedialOptions, NodeKind};
-use testkit::profiles::{assemble, bezier_chain_profile};
+use crate::helpers::{checked_region, closed_spline, kinds};
+use crate::traced::axis;
+use curve::Profile;
+use medial::NodeKind;
+use testkit::profiles::bezier_chain_profile;
 
 /// A random chain with a smooth joint where the curvature jumps from 2.5 to 0.75: the leaf
 /// whose feet close in on the joint ends at the centre of curvature of the sharper side,

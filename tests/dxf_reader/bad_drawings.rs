@@ -2,12 +2,14 @@
 //! and truncated files, entities the dxf crate drops silently, entities left out, and
 //! profiles ordered and named by their first entity.
 
+use super::common::curvekit;
 use super::splines::quarter_circle_text;
 use super::{
     add, drawing, dxf_text, g, line, p3, read, read_err, read_path, read_text, saved, temp_dxf,
 };
-use curvekit::io::{CurveFileError, CurveKind};
-use dxf::entities::{Circle, EntityType};
+use curve::ParamCurve;
+use curvekit::io::read_curve_picked;
+use dxf::entities::{Circle, Entity, EntityType};
 use dxf::Drawing;
 
 /// A square of side 10 with its last side stopping `gap` short.

@@ -1,7 +1,8 @@
 //! The fixtures (the bracket, the plate) read as profiles, and the commands run on them.
 
-use super::common::{curvekit, curvekit_json, fixture};
-use super::{corners, read_path};
+use super::common::{curvekit_json, fixture};
+use super::read_path;
+use curve::{ParamCurve, SegmentKind};
 
 #[test]
 fn the_bracket_fixture_reads_as_one_closed_profile() {

@@ -3,10 +3,13 @@
 //! extrusion.
 
 use super::polylines::lw;
-use super::{add, arc, corners, distance_to, drawing, line, near, p3, read, read_err, samples};
-use curve::{ParamCurve, Segment, SegmentKind, V2};
-use dxf::entities::{Circle, Ellipse, EntityType, LwPolyline};
-use dxf::{Point, Vector};
+use super::{
+    add, arc, corners, distance_to, drawing, line, near, p3, read, read_err, read_path, samples,
+    saved,
+};
+use curve::{ParamCurve, SegmentKind, V2};
+use dxf::entities::{Arc, Circle, Ellipse, EntityType, LwPolyline};
+use dxf::Vector;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
 
 #[test]

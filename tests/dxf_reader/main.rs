@@ -22,9 +22,10 @@ mod random_polygons;
 mod splines;
 mod written;
 
-use curve::{ParamCurve, Profile, Segment, SegmentKind, V2};
+use curve::{ParamCurve, Profile, Segment, V2};
 use curvekit::io::{read_curve_picked, CurveFileError, CurveKind};
-use dxf::entities::{Arc, EntityType, Line};
+use dxf::entities::{Arc, Entity, EntityType, Line};
+use dxf::enums::AcadVersion;
 use dxf::{Drawing, Point};
 use std::io::Write;
 

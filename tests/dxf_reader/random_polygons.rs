@@ -1,9 +1,10 @@
 //! Property: random polygons with random bulges, written by the dxf crate, read back.
 
 use super::polylines::{bulge_circle, lw};
-use super::{add, distance_to, drawing, near, read_path, saved};
-use curve::{ParamCurve, V2};
-use dxf::entities::{EntityType, LwPolyline};
+use super::{add, distance_to, drawing, near, p3, read_path, saved};
+use curve::{ParamCurve, SegmentKind, V2};
+use dxf::entities::{EntityType, LwPolyline, Polyline, Vertex};
+use dxf::Vector;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 

@@ -2,11 +2,11 @@
 //! multiplicity two, periodic ones clamped exactly, and the refusals that name the entity and
 //! field.
 
-use super::{add, corners, drawing, dxf_text, g, line, near, p3, read, read_err, read_text};
+use super::{add, drawing, dxf_text, g, line, near, p3, read, read_err, read_text};
 use curve::{ParamCurve, Profile, SegmentKind, SplineCurve, V2};
 use dxf::entities::{EntityType, Spline};
-use dxf::Point;
-use std::f64::consts::{FRAC_1_SQRT_2, PI};
+use dxf::Drawing;
+use std::f64::consts::FRAC_1_SQRT_2;
 
 pub(crate) fn spline_entity(
     degree: i32,

@@ -5,11 +5,12 @@
 //! missing or external block, a cycle, nesting too deep, too much work) is skipped or refused
 //! by name, without hanging.
 
+use super::polylines::bulge_circle;
+use super::temp_dxf;
 use super::written::{
     arc, block, circle, entity, exploded, file, lwpolyline, rectangle, Block, Placement, Prim,
     Written,
 };
-use super::{bulge_circle, temp_dxf};
 use curve::{ParamCurve, Profile, Region, V2};
 use curvekit::geometry::NearestPoint;
 use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};

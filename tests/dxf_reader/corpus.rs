@@ -5,8 +5,9 @@
 //! making answers uncertified, naming them; closed splines with corners read with them.
 
 use super::common::{curvekit, curvekit_json, fixture};
+use super::splines::spline_entity;
 use super::written::{circle, entity, file, line, num, rectangle, Written};
-use super::{add, drawing, p3, saved, spline_entity, temp_dxf};
+use super::{add, drawing, p3, saved, temp_dxf};
 use curve::{ParamCurve, Region, V2};
 use curvekit::io::{read_region, Curve, CurveFileError};
 use dxf::entities::{Circle, EntityType, Polyline, Vertex};

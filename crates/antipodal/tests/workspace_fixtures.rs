@@ -33,18 +33,8 @@ fn check(c: &dyn PlaneCurve) -> usize {
 
 #[test]
 fn clamped_closed_fixture() {
-    let pts = [
-        [0.0, 0.0],
-        [2.0, -1.0],
-        [4.0, -0.5],
-        [5.0, 1.5],
-        [3.0, 1.0],
-        [1.5, 3.0],
-        [-1.0, 2.0],
-        [-1.0, 0.5],
-        [0.0, 0.0],
-    ];
-    let knots = vec![0., 0., 0., 0., 0.15, 0.3, 0.45, 0.6, 0.8, 1., 1., 1., 1.];
+    let pts = testkit::outlines::CLAMPED_CLOSED_POINTS;
+    let knots = testkit::outlines::CLAMPED_CLOSED_KNOTS.to_vec();
     let c = SplineCurve::clamped(3, &pts, None, Some(knots)).unwrap();
     assert!(c.is_closed());
     assert!(check(&c) >= 2);

@@ -411,18 +411,8 @@ proptest! {
 /// nearest).
 #[test]
 fn the_nearest_point_is_found_beyond_a_centre_of_curvature() {
-    let pts = [
-        [0.0, 0.0],
-        [2.0, -1.0],
-        [4.0, -0.5],
-        [5.0, 1.5],
-        [3.0, 1.0],
-        [1.5, 3.0],
-        [-1.0, 2.0],
-        [-1.0, 0.5],
-        [0.0, 0.0],
-    ];
-    let knots = vec![0., 0., 0., 0., 0.15, 0.3, 0.45, 0.6, 0.8, 1., 1., 1., 1.];
+    let pts = testkit::outlines::CLAMPED_CLOSED_POINTS;
+    let knots = testkit::outlines::CLAMPED_CLOSED_KNOTS.to_vec();
     let c = SplineCurve::clamped(3, &pts, None, Some(knots)).unwrap();
     let p = Profile::new(
         vec![Segment::spline(SegmentKind::BSpline, c).unwrap()],

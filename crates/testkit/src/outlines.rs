@@ -78,6 +78,25 @@ pub const PERIODIC_NURBS_POINTS: [[f64; 2]; 8] = [
 /// The weights of [`PERIODIC_NURBS_POINTS`].
 pub const PERIODIC_NURBS_WEIGHTS: [f64; 8] = [1.0, 2.0, 0.5, 1.0, 1.5, 1.0, 0.6, 1.0];
 
+/// The control points of `fixtures/clamped_closed.json`: a cubic B-spline closed by its
+/// points (its first and last equal, its end tangents along one line), on
+/// [`CLAMPED_CLOSED_KNOTS`].
+pub const CLAMPED_CLOSED_POINTS: [[f64; 2]; 9] = [
+    [0.0, 0.0],
+    [2.0, -1.0],
+    [4.0, -0.5],
+    [5.0, 1.5],
+    [3.0, 1.0],
+    [1.5, 3.0],
+    [-1.0, 2.0],
+    [-1.0, 0.5],
+    [0.0, 0.0],
+];
+
+/// The knots of `fixtures/clamped_closed.json`: clamped, its interior knots not uniform.
+pub const CLAMPED_CLOSED_KNOTS: [f64; 13] =
+    [0., 0., 0., 0., 0.15, 0.3, 0.45, 0.6, 0.8, 1., 1., 1., 1.];
+
 /// The control points of the cubic B-spline of Elber & Kim's Fig. 5, a self-bisector
 /// (`fixtures/bisector-fig5-cubic-bspline.json`).
 pub const FIG5_CUBIC_POINTS: [[f64; 2]; 7] = [

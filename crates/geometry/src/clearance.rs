@@ -20,7 +20,7 @@ mod hull;
 mod lines_and_arcs;
 
 use crate::pieces::{halve, Pending, Piece};
-use curve::piece_bounds::{box_distance, coefficient_error, CLEARANCE_ROUNDING_ULPS};
+use curve::piece_bounds::{box_distance, coefficient_error, Errors, CLEARANCE_ROUNDING_ULPS};
 use curve::ParamCurve;
 use curve::Profile;
 use curve::V2;
@@ -28,6 +28,7 @@ use distance::{distance_verdict, Convex};
 use hull::{test_piece, Verdict};
 use lines_and_arcs::{arc_distance, line_passes_by};
 use numeric::rounding::ulps;
+use std::cmp::Ordering;
 
 /// Halvings of one Bézier piece before it is left undecided: a piece 2^-40 of its span is
 /// far below any slack a caller may leave between the disk and the curve.
@@ -144,14 +145,9 @@ fn clearance_in(profile: &Profile, x: [f64; 2], r: f64, window: Option<&Window>)
         let within = |v: f64| window.is_none_or(|w| w.holds(profile.profile_param(i, v)));
         let pieces = seg.curve().bezier_pieces();
         let dim = pieces.dim();
-        let given = seg.curve().curve().coefficient_error();
-        for k in 0..pieces.pieces() {
-            if box_distance(profile.piece_box(i, k), x) >= far {
-                continue;
-            }
+        for (k, err) in near_pieces(profile, i, x, far) {
             let (lo, hi) = pieces.piece_span(k);
             pending.push(pieces.piece(k), lo, hi, 0);
-            let err = coefficient_error(pieces, k, given);
             while let Some((lo, hi, depth)) = pending.pop(&mut current) {
                 let piece = Piece {
                     coefs: &current,
@@ -212,6 +208,28 @@ fn clearance_in(profile: &Profile, x: [f64; 2], r: f64, window: Option<&Window>)
     }
 }
 
+/// The Bézier pieces of segment `i` whose boxes come nearer `x` than `far`, each with the
+/// bound on its coefficients' errors.
+fn near_pieces(
+    profile: &Profile,
+    i: usize,
+    x: V2,
+    far: f64,
+) -> impl Iterator<Item = (usize, Errors)> + '_ {
+    let curve = profile.segments()[i].curve();
+    let (pieces, given) = (curve.bezier_pieces(), curve.curve().coefficient_error());
+    (0..pieces.pieces())
+        // (A distance that is not a number is no proof of being far: such a piece is kept.)
+        .filter(move |&k| {
+            let d = box_distance(profile.piece_box(i, k), x);
+            !matches!(
+                d.partial_cmp(&far),
+                Some(Ordering::Greater | Ordering::Equal)
+            )
+        })
+        .map(move |k| (k, coefficient_error(pieces, k, given)))
+}
+
 /// Of the ends of the Bézier pieces of the segments `order` (within `window`), the
 /// nearest `x`, if it lies inside the disk of radius `r` past the rounding of its
 /// coordinates; pieces whose boxes are `far` from `x` are passed over.
@@ -228,13 +246,8 @@ fn deepest_piece_end(
         let seg = &profile.segments()[i];
         let pieces = seg.curve().bezier_pieces();
         let dim = pieces.dim();
-        let given = seg.curve().curve().coefficient_error();
-        for k in 0..pieces.pieces() {
-            if box_distance(profile.piece_box(i, k), x) >= far {
-                continue;
-            }
+        for (k, err) in near_pieces(profile, i, x, far) {
             let coefs = pieces.piece(k);
-            let err = coefficient_error(pieces, k, given);
             let (lo, hi) = pieces.piece_span(k);
             for (v, c) in [(lo, &coefs[..dim]), (hi, &coefs[coefs.len() - dim..])] {
                 let w = c[2];

@@ -212,8 +212,10 @@ impl Segment {
 
     /// A periodic spline as the segment that runs once round it: the spline clamped over its
     /// domain (the same curve, its seam now the segment's ends), its parameter the spline's.
-    /// Where the spline is at least `C¹` across its seam, the segment keeps it as its
-    /// [`whole curve`](Segment::whole_curve): smooth there by definition.
+    /// Where the spline is at least `C¹` across its seam and regular there (its derivative
+    /// not zero: repeated control points about the seam may make a corner of a `C¹`
+    /// spline), the segment keeps it as its [`whole curve`](Segment::whole_curve): smooth
+    /// there by definition.
     ///
     /// ```
     /// use curve::{ParamCurve, Segment, SegmentKind, SplineCurve};
@@ -234,7 +236,8 @@ impl Segment {
         let (a, b) = periodic.domain();
         let clamped = SplineCurve::new(periodic.curve().restrict(a, b)?)?;
         let segment = Segment::spline(kind, clamped)?;
-        Ok(if order >= 1 {
+        let regular = periodic.jet_to(a, 1).d1.norm() > 0.0;
+        Ok(if order >= 1 && regular {
             segment.of_whole_curve(ExactCurve::Spline(Box::new(periodic.clone())))
         } else {
             segment
@@ -296,9 +299,10 @@ impl Segment {
     }
 
     /// The smooth closed curve the segment runs once round, as it was defined (an analytic
-    /// shape, a periodic spline `C¹` or smoother across its seam), where it was made from one
-    /// ([`Segment::of_shape`], [`Segment::periodic_spline`]); its
-    /// parameter is the segment's own. A closed profile of this one segment is that curve:
+    /// shape, a periodic spline `C¹` or smoother and regular across its seam), where it was
+    /// made from one ([`Segment::of_shape`], [`Segment::periodic_spline`]); its parameter maps
+    /// linearly onto the segment's own ([`Segment::form_param_of_whole`]). A closed profile
+    /// of this one segment is that curve:
     /// its seam is smooth by definition, and the algorithms of smooth closed curves run on it
     /// as defined. A segment moved, reversed or cut is a segment of its own (`None`).
     pub fn whole_curve(&self) -> Option<&ExactCurve> {
@@ -462,6 +466,25 @@ mod tests {
                 prop_assert!((p - want).norm() <= 1e-12 * size, "{p:?} {want:?}");
             }
         }
+    }
+
+    #[test]
+    fn a_periodic_spline_is_whole_only_where_smooth_and_regular_at_its_seam() {
+        let smooth = [[2.0, 0.0], [0.0, 1.0], [-2.0, 0.0], [0.0, -1.0]];
+        let c = SplineCurve::periodic(3, &smooth, None).unwrap();
+        let seg = Segment::periodic_spline(SegmentKind::BSpline, &c).unwrap();
+        assert!(matches!(seg.whole_curve(), Some(ExactCurve::Spline(s)) if **s == c));
+        // The seam (u = 0) is shaped by the first four points, its derivative half the
+        // third less the first: those are one point, and the derivative vanishes there, where
+        // the tangent turns (a corner).
+        let pinched = [[2.0, 1.0], [0.0, 0.0], [2.0, 1.0], [3.0, 3.0], [0.0, 3.0]];
+        let c = SplineCurve::periodic(3, &pinched, None).unwrap();
+        let seg = Segment::periodic_spline(SegmentKind::BSpline, &c).unwrap();
+        assert!(seg.whole_curve().is_none());
+        // A polygon, C⁰: no whole curve either.
+        let c = SplineCurve::periodic(1, &smooth, None).unwrap();
+        let seg = Segment::periodic_spline(SegmentKind::BSpline, &c).unwrap();
+        assert!(seg.whole_curve().is_none());
     }
 
     #[test]

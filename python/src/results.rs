@@ -336,13 +336,11 @@ result_class!(
         /// The pairs' types (`"A"` to `"E"`, Jia 2004 §3.3; `None` at a corner or a straight end).
         #[getter]
         fn types(&self) -> Vec<Option<String>> {
-            let name = |k: &antipodal::PairType| format!("{k:?}");
-            match &self.found {
-                AntipodalFound::Curve(f) => f.pairs.iter().map(|p| Some(name(&p.kind))).collect(),
-                AntipodalFound::Profile(f) => {
-                    f.pairs.iter().map(|p| p.kind.as_ref().map(name)).collect()
-                }
-            }
+            either!(&self.found, AntipodalFound, f => f
+                .pairs
+                .iter()
+                .map(|p| p.kind.map(|k| format!("{k:?}")))
+                .collect())
         }
 
         /// The inflections' parameters, an `(m,)` array.
@@ -395,10 +393,7 @@ result_class!(
         /// A profile's corners' parameters (empty for a smooth curve), a `(c,)` array.
         #[getter]
         fn corners<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-            let us = match &self.found {
-                InflectionsFound::Curve(_) => Vec::new(),
-                InflectionsFound::Profile(f) => f.corners.iter().map(|c| c.u).collect(),
-            };
+            let us = either!(&self.found, InflectionsFound, f => f.corner_list().iter().map(|c| c.u).collect());
             PyArray1::from_vec(py, us)
         }
     }

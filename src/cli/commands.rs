@@ -132,8 +132,9 @@ pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> Str
     let mut fig = Figure::new();
     draw_curve(&mut fig, curve);
     let (inflections, corners) = match found {
-        InflectionsFound::Curve(f) => (&f.inflections, &[][..]),
-        InflectionsFound::Profile(f) => (&f.inflections, &f.corners[..]),
+        InflectionsFound::Curve(f) | InflectionsFound::Profile(f) => {
+            (&f.inflections, f.corner_list())
+        }
     };
     inflections.iter().for_each(|i| fig.dot(i.p));
     corners.iter().for_each(|c| fig.corner(c.p));
@@ -158,16 +159,11 @@ pub(super) fn antipodal_figure(curve: &Curve, found: &AntipodalFound) -> String 
     let title = |pairs: usize, marks: usize, what: &str| {
         format!("{} — antipodal: {pairs} pairs, {marks} {what}", curve.file)
     };
-    match found {
-        AntipodalFound::Curve(f) => {
-            let title = title(f.pairs.len(), f.inflections.len(), "inflections");
-            report::antipodal_figure(curve, f, title)
-        }
-        AntipodalFound::Profile(f) => {
-            let title = title(f.pairs.len(), f.corners.len(), "corners");
-            report::profile_antipodal_figure(curve, f, title)
-        }
-    }
+    let (f, title) = match found {
+        AntipodalFound::Curve(f) => (f, title(f.pairs.len(), f.inflections.len(), "inflections")),
+        AntipodalFound::Profile(f) => (f, title(f.pairs.len(), f.corner_list().len(), "corners")),
+    };
+    report::antipodal_figure(curve, f, title)
 }
 
 /// The figure of the lines tangent to two curves, numbered.
@@ -182,10 +178,8 @@ pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String 
                 .for_each(|j| fig.corner(curvekit::curve::ParamCurve::jet(&**p, j.u).p.arr()));
         }
     }
-    let lines: Vec<([f64; 2], [f64; 2])> = match found {
-        TangentsFound::Curve(f) => f.lines.iter().map(|l| (l.p, l.q)).collect(),
-        TangentsFound::Profile(f) => f.lines.iter().map(|l| (l.p, l.q)).collect(),
-    };
+    let (TangentsFound::Curve(f) | TangentsFound::Profile(f)) = found;
+    let lines: Vec<([f64; 2], [f64; 2])> = f.lines.iter().map(|l| (l.p, l.q)).collect();
     for (k, (p, q)) in lines.iter().enumerate() {
         fig.segment(*p, *q, Some((k + 1).to_string()));
     }

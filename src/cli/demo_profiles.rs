@@ -2,9 +2,9 @@
 //! drawings (embedded), with their antipodal pairs (corner pairs included), families,
 //! inflections and corners.
 
-use super::report::profile_antipodal_figure;
+use super::report::antipodal_figure;
 use super::{write_file, Common, Failure};
-use antipodal::ProfileAntipodal;
+use antipodal::Antipodal;
 use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, parse_drawing, Curve, CurveKind, DrawingFormat};
 use numeric::certificate::Verdict;
@@ -63,7 +63,7 @@ const PROFILES: &[Embedded] = &[
 pub(super) struct ProfileRow {
     name: &'static str,
     curve: Curve,
-    result: Result<ProfileAntipodal, String>,
+    result: Result<Antipodal, String>,
     svg: String,
 }
 
@@ -90,9 +90,9 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<ProfileRow>, Failu
                     "demo {name} — antipodal: {} pairs, {} families, {} corners",
                     r.pairs.len(),
                     r.families.len(),
-                    r.corners.len()
+                    r.corner_list().len()
                 );
-                write_file(&svg, profile_antipodal_figure(&curve, r, title))?;
+                write_file(&svg, antipodal_figure(&curve, r, title))?;
             }
             Ok(ProfileRow {
                 name,
@@ -126,13 +126,13 @@ pub(super) fn table(rows: &[ProfileRow]) -> String {
         };
         match &r.result {
             Ok(a) => {
-                let corner_pairs = a.pairs.iter().filter(|p| p.corner.contains(&true)).count();
+                let corner_pairs = a.pairs.iter().filter(|p| p.has_corner()).count();
                 let _ = writeln!(
                     s,
                     "{:<22} {:>8} {:>7} {:>11} {:>5} {:>12} {:>8} {:>9}",
                     r.name,
                     segments,
-                    a.corners.len(),
+                    a.corner_list().len(),
                     a.inflections.len(),
                     a.pairs.len(),
                     corner_pairs,
@@ -167,10 +167,10 @@ pub(super) fn json(rows: &[ProfileRow]) -> Value {
             let result = match &r.result {
                 Ok(a) => json!({
                     "pairs": a.pairs.len(),
-                    "corner_pairs": a.pairs.iter().filter(|p| p.corner.contains(&true)).count(),
+                    "corner_pairs": a.pairs.iter().filter(|p| p.has_corner()).count(),
                     "families": a.families.len(),
                     "inflections": a.inflections.len(),
-                    "corners": a.corners.len(),
+                    "corners": a.corner_list().len(),
                     "certified": a.certified(),
                 }),
                 Err(e) => json!({ "error": e }),

@@ -3,9 +3,7 @@
 mod figures;
 mod texts;
 
-pub(crate) use figures::{
-    antipodal_figure, bisector_figure, profile_antipodal_figure, profile_bisector_figure,
-};
+pub(crate) use figures::{antipodal_figure, bisector_figure, profile_bisector_figure};
 pub(crate) use texts::{
     antipodal_text, bisector_text, inflections_text, profile_antipodal_text, profile_bisector_text,
     profile_inflections_text, profile_tangents_text, tangents_text,

@@ -4,35 +4,38 @@
 use numeric::certificate::{Doubt, Doubts, Verdict};
 use serde::Serialize;
 
-/// What `inflections` found: on a smooth curve, or on a profile (with its corners).
+/// What `inflections` found: on a smooth curve, or on a profile (with its corners). The two
+/// share one type; the variant says which document the tool writes.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum InflectionsFound {
     /// On a spline or an analytic shape.
     Curve(antipodal::Inflections),
     /// On a profile: also the corners.
-    Profile(antipodal::ProfileInflections),
+    Profile(antipodal::Inflections),
 }
 
 /// What `antipodal` found: on a smooth curve, or on a profile (pairs with corners, families
-/// with end points).
+/// with end points). The two share one type; the variant says which document the tool
+/// writes.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum AntipodalFound {
     /// On a spline or an analytic shape.
     Curve(antipodal::Antipodal),
     /// On a profile.
-    Profile(antipodal::ProfileAntipodal),
+    Profile(antipodal::Antipodal),
 }
 
-/// What `tangents` found: between two smooth curves, or where one is a profile.
+/// What `tangents` found: between two smooth curves, or where one is a profile. The two share
+/// one type; the variant says which document the tool writes.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum TangentsFound {
     /// Between two splines or analytic shapes.
     Curve(antipodal::Tangents),
     /// Where one curve or both are profiles.
-    Profile(antipodal::ProfileTangents),
+    Profile(antipodal::Tangents),
 }
 
 /// What `bisector` found: of splines, or where one curve is a profile.

@@ -83,13 +83,9 @@ fn corners(list: &mut [antipodal::Corner], m: &DocMap<'_>) {
 impl InDocument for antipodal::Inflections {
     fn in_document(&mut self, maps: &[DocMap<'_>]) {
         inflections(&mut self.inflections, &maps[0]);
-    }
-}
-
-impl InDocument for antipodal::ProfileInflections {
-    fn in_document(&mut self, maps: &[DocMap<'_>]) {
-        inflections(&mut self.inflections, &maps[0]);
-        corners(&mut self.corners, &maps[0]);
+        if let Some(list) = &mut self.corners {
+            corners(list, &maps[0]);
+        }
     }
 }
 
@@ -98,28 +94,16 @@ impl InDocument for antipodal::Antipodal {
         let m = &maps[0];
         for p in &mut self.pairs {
             (p.s, p.t) = (m.param(p.s), m.param(p.t));
+            p.segment = p.segment.map(|ij| ij.map(|i| m.segment(i)));
         }
         for f in &mut self.families {
             f.s = f.s.map(|u| m.unwrapped(u));
             f.t = f.t.map(|u| m.unwrapped(u));
         }
         inflections(&mut self.inflections, m);
-    }
-}
-
-impl InDocument for antipodal::ProfileAntipodal {
-    fn in_document(&mut self, maps: &[DocMap<'_>]) {
-        let m = &maps[0];
-        for p in &mut self.pairs {
-            (p.s, p.t) = (m.param(p.s), m.param(p.t));
-            p.segment = p.segment.map(|i| m.segment(i));
+        if let Some(list) = &mut self.corners {
+            corners(list, m);
         }
-        for f in &mut self.families {
-            f.s = f.s.map(|u| m.unwrapped(u));
-            f.t = f.t.map(|u| m.unwrapped(u));
-        }
-        inflections(&mut self.inflections, m);
-        corners(&mut self.corners, m);
     }
 }
 
@@ -127,15 +111,9 @@ impl InDocument for antipodal::Tangents {
     fn in_document(&mut self, maps: &[DocMap<'_>]) {
         for l in &mut self.lines {
             (l.s, l.t) = (maps[0].param(l.s), maps[1].param(l.t));
-        }
-    }
-}
-
-impl InDocument for antipodal::ProfileTangents {
-    fn in_document(&mut self, maps: &[DocMap<'_>]) {
-        for l in &mut self.lines {
-            (l.s, l.t) = (maps[0].param(l.s), maps[1].param(l.t));
-            l.segment = [maps[0].segment(l.segment[0]), maps[1].segment(l.segment[1])];
+            l.segment = l
+                .segment
+                .map(|[i, j]| [maps[0].segment(i), maps[1].segment(j)]);
         }
     }
 }

@@ -99,7 +99,7 @@ struct OneCurveCommand<C, P, F> {
 
 const INFLECTIONS_BY_ROUTE: OneCurveCommand<
     antipodal::Inflections,
-    antipodal::ProfileInflections,
+    antipodal::Inflections,
     InflectionsFound,
 > = OneCurveCommand {
     name: "inflections",
@@ -111,7 +111,7 @@ const INFLECTIONS_BY_ROUTE: OneCurveCommand<
 
 const ANTIPODAL_BY_ROUTE: OneCurveCommand<
     antipodal::Antipodal,
-    antipodal::ProfileAntipodal,
+    antipodal::Antipodal,
     AntipodalFound,
 > = OneCurveCommand {
     name: "antipodal",

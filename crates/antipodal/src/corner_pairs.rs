@@ -12,7 +12,7 @@
 //! reported or not): such candidates are left out. Every other decision is clear of rounding.
 
 use crate::profiles::at_corner;
-use crate::types::{Options, ProfilePair};
+use crate::types::{AntipodalPair, Options};
 use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
 use bspline::Piecewise;
 use curve::{Frame, ParamCurve, Profile, SplineCurve, V2};
@@ -54,7 +54,7 @@ impl CornerSite {
 
 /// The pairs with a corner, and the doubts met finding them.
 pub(crate) struct CornerPairs {
-    pub(crate) pairs: Vec<ProfilePair>,
+    pub(crate) pairs: Vec<AntipodalPair>,
     pub(crate) doubts: Doubts,
 }
 
@@ -78,15 +78,15 @@ pub(crate) fn corner_pairs(
             if a.holds(d) && b.holds(-d) {
                 let (p, q) = (global(a.p), global(b.p));
                 out.pairs.push(
-                    ProfilePair {
+                    AntipodalPair {
                         s: a.u,
                         t: b.u,
                         p,
                         q,
                         distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
                         kind: None,
-                        corner: [true, true],
-                        segment: [a.segment, b.segment],
+                        corner: Some([true, true]),
+                        segment: Some([a.segment, b.segment]),
                     }
                     .ordered(),
                 );
@@ -124,15 +124,15 @@ pub(crate) fn corner_pairs(
                         }
                         let (p, q) = (global(site.p), global(j.p));
                         out.pairs.push(
-                            ProfilePair {
+                            AntipodalPair {
                                 s: site.u,
                                 t: profile.profile_param(i, s),
                                 p,
                                 q,
                                 distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
                                 kind: None,
-                                corner: [true, false],
-                                segment: [site.segment, i],
+                                corner: Some([true, false]),
+                                segment: Some([site.segment, i]),
                             }
                             .ordered(),
                         );

@@ -155,6 +155,7 @@ pub(crate) fn inflections_of(src: Source<'_>, opts: &Options) -> Result<Certifie
     }
     let found = Inflections {
         inflections,
+        corners: None,
         doubts: Doubts::none(),
     };
     Ok(Certified {
@@ -227,6 +228,7 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Certified<
     let found = Antipodal {
         pairs,
         inflections: inflection_list(v, &prep.zeros, doubts.is_empty()),
+        corners: None,
         families: families.iter().map(|&f| family_of(v, f)).collect(),
         doubts: Doubts::none(),
         complete: !budget.exhausted,
@@ -414,7 +416,9 @@ fn finish_pairs(
                 p: p.arr(),
                 q: q.arr(),
                 distance: (q - p).norm(),
-                kind,
+                kind: Some(kind),
+                corner: None,
+                segment: None,
             }
         })
         .collect();
@@ -546,6 +550,8 @@ pub(crate) fn tangents_of(
             t,
             p: p.arr(),
             q: q.arr(),
+            corner: None,
+            segment: None,
         });
     }
     out.sort_by(|x, y| x.s.total_cmp(&y.s));

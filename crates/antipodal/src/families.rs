@@ -158,11 +158,15 @@ pub(crate) fn family_of(v: &View, f: (f64, f64, f64, f64)) -> Family {
         Family {
             s: [s1, s0],
             t: [t1, t0],
+            p: None,
+            q: None,
         }
     } else {
         Family {
             s: [s0, s1],
             t: [t0, t1],
+            p: None,
+            q: None,
         }
     }
 }

@@ -32,7 +32,9 @@
 //! marches, that θ is monotone or of one sign on a stretch, and continua of pairs); `profiles`,
 //! `profile_pairs`, `corner_pairs` and `profile_tangents` (beyond the papers: profiles of
 //! segments joined at corners, segment by segment, and the corners' cones); `whole_curve` (a
-//! closed profile of one smooth segment is a smooth closed curve, and runs as one). Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
+//! closed profile of one smooth segment is a smooth closed curve, and runs as one). Curves and
+//! profiles share the result types: what only a profile has (corners, segments, a family's end
+//! points) is `None` on a smooth curve, and its document does not write it. Below them the proof layer: `view` (a curve as the steps see it), `arcs` (what an
 //! arc is proven to be), `bounds` and `cells` (per-piece curvature and rate cells), `enclosure`,
 //! `taylor` (with `numeric::Interval` for ranges); `ledger` keeps the doubts met on each view
 //! of a run (`numeric::certificate::Doubt` names every reason a result is not certified).
@@ -80,6 +82,5 @@ pub use profile_tangents::{profile_tangents, MAX_SEGMENT_PAIRS};
 pub use profiles::profile_inflections;
 pub use types::{
     Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,
-    Options, PairType, ProfileAntipodal, ProfileFamily, ProfileInflections, ProfilePair,
-    ProfileTangentLine, ProfileTangents, TangentLine, Tangents,
+    Options, PairType, TangentLine, Tangents,
 };

@@ -14,7 +14,7 @@ use crate::ledger::Ledger;
 use crate::pairs::{opposite_pair, polish, THETA_NOISE};
 use crate::profiles::profile_inflections_run;
 use crate::search::{antipodal_points, Budget};
-use crate::types::{Options, ProfileAntipodal, ProfileFamily, ProfilePair, Provenance};
+use crate::types::{Antipodal, AntipodalPair, Family, Options, Provenance};
 use crate::view::{Source, View};
 use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, StraightSpan, V2};
 use numeric::certificate::{Certified, Doubt, Doubts};
@@ -76,11 +76,11 @@ struct Raw {
 /// assert!(r.certified());
 /// assert_eq!(r.pairs.len(), 2);
 /// let foot = &r.pairs[0];
-/// assert_eq!((foot.corner, foot.kind), ([true, false], None));
+/// assert_eq!((foot.corner, foot.kind), (Some([true, false]), None));
 /// assert!((foot.q[0] - 2.0).abs() < 1e-12 && (foot.q[1] - 2.0).abs() < 1e-12);
-/// assert_eq!(r.pairs[1].corner, [true, true]);
+/// assert_eq!(r.pairs[1].corner, Some([true, true]));
 /// ```
-pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAntipodal> {
+pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Antipodal> {
     opts.validate()?;
     if !profile.is_closed() {
         let (a, b) = profile.domain();
@@ -203,7 +203,7 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<ProfileAnt
     // A pair on a family (at its end, say) is one of its pairs.
     pairs.retain(|p| !families.iter().any(|f| on_family(f, p)));
     let (inflections, inflection_doubts) = profile_inflections_run(profile, opts)?.into_parts();
-    let out = ProfileAntipodal {
+    let out = Antipodal {
         pairs,
         inflections: inflections.inflections,
         corners: inflections.corners,
@@ -288,8 +288,8 @@ fn finish(
     frame: &Frame,
     raw: Vec<Raw>,
     ledger: &mut Ledger,
-) -> Vec<ProfilePair> {
-    let mut out: Vec<ProfilePair> = Vec::with_capacity(raw.len());
+) -> Vec<AntipodalPair> {
+    let mut out: Vec<AntipodalPair> = Vec::with_capacity(raw.len());
     for r in raw {
         let (vs, vt) = (views[r.i], views[r.j]);
         let clamp = |v: &View, u: f64| u.clamp(v.a, v.b);
@@ -328,7 +328,7 @@ fn profile_pair(
     frame: &Frame,
     (i, s): (usize, f64),
     (j, t): (usize, f64),
-) -> ProfilePair {
+) -> AntipodalPair {
     let (vs, vt) = (views[i], views[j]);
     let at_corner = |k: usize, v: &View, x: f64| {
         joint_at(profile, k, v, x).is_some_and(|kind| kind != JointKind::Smooth)
@@ -343,15 +343,15 @@ fn profile_pair(
     );
     let us = profile.profile_param(i, vs.to_curve(s));
     let ut = profile.profile_param(j, vt.to_curve(t));
-    ProfilePair {
+    AntipodalPair {
         s: us,
         t: ut,
         p,
         q,
         distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
         kind,
-        corner,
-        segment: [i, j],
+        corner: Some(corner),
+        segment: Some([i, j]),
     }
     .ordered()
 }
@@ -364,7 +364,7 @@ fn joint_at(profile: &Profile, k: usize, v: &View, x: f64) -> Option<JointKind> 
 
 /// The same pair found twice (from two segments meeting at a smooth joint, or as a corner
 /// pair and a smooth one on the cone's edge).
-fn same_pair(profile: &Profile, a: &ProfilePair, b: &ProfilePair) -> bool {
+fn same_pair(profile: &Profile, a: &AntipodalPair, b: &AntipodalPair) -> bool {
     let room = SAME_PAIR * profile.size();
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     (near(a.p, b.p) && near(a.q, b.q)) || (near(a.p, b.q) && near(a.q, b.p))
@@ -378,24 +378,24 @@ fn family(
     i: usize,
     j: usize,
     f: (f64, f64, f64, f64),
-) -> ProfileFamily {
+) -> Family {
     let (vs, vt) = (views[i], views[j]);
     let su = |x: f64| profile.profile_param(i, vs.to_curve(x));
     let tu = |x: f64| profile.profile_param(j, vt.to_curve(x));
     let ps = |x: f64| frame.to_global(vs.point(x).arr());
     let pt = |x: f64| frame.to_global(vt.point(x).arr());
-    ProfileFamily {
+    Family {
         s: [su(f.0), su(f.1)],
         t: [tu(f.2), tu(f.3)],
-        p: [ps(f.0), ps(f.1)],
-        q: [pt(f.2), pt(f.3)],
+        p: Some([ps(f.0), ps(f.1)]),
+        q: Some([pt(f.2), pt(f.3)]),
     }
 }
 
 /// Whether the pair is one of the family's: `s` inside one side's range and `t` where the
 /// family matches it (interpolated: exact on straight sides, and at a family's ends, where
 /// the pairs it absorbs lie).
-fn on_family(f: &ProfileFamily, p: &ProfilePair) -> bool {
+fn on_family(f: &Family, p: &AntipodalPair) -> bool {
     let matches = |s: f64, t: f64, fs: [f64; 2], ft: [f64; 2]| {
         let (lo, hi) = (fs[0].min(fs[1]), fs[0].max(fs[1]));
         if s < lo - FAMILY_SLACK || s > hi + FAMILY_SLACK || hi <= lo {
@@ -409,25 +409,33 @@ fn on_family(f: &ProfileFamily, p: &ProfilePair) -> bool {
 
 /// Families that continue each other (the pieces of one arc, a circle's halves) joined into
 /// one: where one ends, at both sides, the other starts.
-fn merged(profile: &Profile, mut fs: Vec<ProfileFamily>) -> Vec<ProfileFamily> {
+fn merged(profile: &Profile, mut fs: Vec<Family>) -> Vec<Family> {
     let room = SAME_PAIR * profile.size();
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
+    // (A profile's family has its end points.)
+    let ends = |f: &Family| (f.p.unwrap_or_default(), f.q.unwrap_or_default());
     // (Each join removes one family: at most as many rounds as families.)
     for _ in 0..fs.len() {
         let found = (0..fs.len()).find_map(|a| {
             (0..fs.len())
-                .find(|&b| b != a && near(fs[a].p[1], fs[b].p[0]) && near(fs[a].q[1], fs[b].q[0]))
+                .find(|&b| {
+                    let ((pa, qa), (pb, qb)) = (ends(&fs[a]), ends(&fs[b]));
+                    b != a && near(pa[1], pb[0]) && near(qa[1], qb[0])
+                })
                 .map(|b| (a, b))
         });
         let Some((a, b)) = found else {
             break;
         };
         let next = fs[b];
+        let ((mut p, mut q), (next_p, next_q)) = (ends(&fs[a]), ends(&next));
+        p[1] = next_p[1];
+        q[1] = next_q[1];
         let f = &mut fs[a];
         f.s[1] = next.s[1];
         f.t[1] = next.t[1];
-        f.p[1] = next.p[1];
-        f.q[1] = next.q[1];
+        f.p = Some(p);
+        f.q = Some(q);
         fs.remove(b);
     }
     fs

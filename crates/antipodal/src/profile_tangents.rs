@@ -13,7 +13,7 @@
 use crate::error::{Error, Result};
 use crate::prepare::common_tangents_run;
 use crate::profiles::at_corner;
-use crate::types::{Options, ProfileTangentLine, ProfileTangents, Provenance};
+use crate::types::{Options, Provenance, TangentLine, Tangents};
 use bspline::roots::{find_roots, RootKind, RootOptions};
 use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
 use numeric::certificate::{Certified, Doubt, Doubts};
@@ -113,9 +113,9 @@ impl<'p> Side<'p> {
 /// let r = profile_tangents(&square(0.0), &square(3.0), &Options::default()).unwrap();
 /// assert!(r.certified());
 /// assert_eq!(r.lines.len(), 2);
-/// assert!(r.lines.iter().all(|l| l.corner == [true, true]));
+/// assert!(r.lines.iter().all(|l| l.corner == Some([true, true])));
 /// ```
-pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<ProfileTangents> {
+pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Tangents> {
     opts.validate()?;
     use crate::whole_curve::{tangents, whole_curve};
     if let (Some(wa), Some(wb)) = (whole_curve(a), whole_curve(b)) {
@@ -140,7 +140,7 @@ pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Prof
         .collect();
     let frame = Frame::for_points(&points);
     let (sa, sb) = (Side::new(a, &frame), Side::new(b, &frame));
-    let mut out = ProfileTangents {
+    let mut out = Tangents {
         lines: Vec::new(),
         doubts: Doubts::none(),
     };
@@ -181,7 +181,7 @@ fn smooth_lines(
     sb: &Side,
     frame: &Frame,
     opts: &Options,
-    out: &mut ProfileTangents,
+    out: &mut Tangents,
     doubts: &mut Doubts,
 ) -> Result<()> {
     let size = frame.length_to_local(sa.profile.size().max(sb.profile.size()));
@@ -228,7 +228,7 @@ fn corner_lines(
     opts: &Options,
     size: f64,
     flip: bool,
-    out: &mut ProfileTangents,
+    out: &mut Tangents,
     doubts: &mut Doubts,
 ) -> Result<()> {
     let ropts = RootOptions::default().tolerance(opts.settings.tol.get());
@@ -280,19 +280,19 @@ fn line(
     (t, q): (f64, V2),
     corner: [bool; 2],
     segment: [usize; 2],
-) -> ProfileTangentLine {
-    ProfileTangentLine {
+) -> TangentLine {
+    TangentLine {
         s,
         t,
         p: frame.to_global(p.arr()),
         q: frame.to_global(q.arr()),
-        corner,
-        segment,
+        corner: Some(corner),
+        segment: Some(segment),
     }
 }
 
 /// Adds `l` unless it is already there (found from both segments at a smooth joint).
-fn push(out: &mut ProfileTangents, l: ProfileTangentLine, size: f64, frame: &Frame) {
+fn push(out: &mut Tangents, l: TangentLine, size: f64, frame: &Frame) {
     let room = frame.length_to_global(SAME_LINE * size);
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     if !out.lines.iter().any(|m| near(m.p, l.p) && near(m.q, l.q)) {

@@ -5,7 +5,7 @@
 use crate::error::{Error, Result};
 use crate::prepare::inflections_run;
 use crate::types::{
-    Corner, CornerKind, Inflection, InflectionKind, Options, ProfileInflections, Provenance,
+    Corner, CornerKind, Inflection, InflectionKind, Inflections, Options, Provenance,
 };
 use curve::{JointKind, ParamCurve, Profile, SegmentKind};
 use numeric::certificate::{Certified, Doubt, Doubts};
@@ -35,9 +35,9 @@ const JOINT_CURVATURE_NOISE: f64 = 1e-9;
 /// let r = profile_inflections(&s, &Options::default()).unwrap();
 /// assert_eq!(r.inflections.len(), 1);
 /// assert_eq!((r.inflections[0].u, r.inflections[0].segment), (1.0, Some(1)));
-/// assert!(r.corners.is_empty());
+/// assert!(r.corner_list().is_empty());
 /// ```
-pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileInflections> {
+pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<Inflections> {
     Ok(Provenance::finished(profile_inflections_run(
         profile, opts,
     )?))
@@ -48,14 +48,15 @@ pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<ProfileI
 pub(crate) fn profile_inflections_run(
     profile: &Profile,
     opts: &Options,
-) -> Result<Certified<ProfileInflections>> {
+) -> Result<Certified<Inflections>> {
     opts.validate()?;
     if let Some(whole) = crate::whole_curve::whole_curve(profile) {
         return crate::whole_curve::inflections_run(&whole, opts);
     }
-    let mut out = ProfileInflections {
+    let mut corners = Vec::new();
+    let mut out = Inflections {
         inflections: Vec::new(),
-        corners: Vec::new(),
+        corners: None,
         doubts: Doubts::none(),
     };
     let mut doubts = Doubts::none();
@@ -103,7 +104,7 @@ pub(crate) fn profile_inflections_run(
         let i = joint.u as usize;
         let p = profile.jet_to(joint.u, 0).p.arr();
         if joint.kind != JointKind::Smooth {
-            out.corners.push(Corner {
+            corners.push(Corner {
                 u: joint.u,
                 p,
                 turn: joint.turn,
@@ -139,6 +140,7 @@ pub(crate) fn profile_inflections_run(
         }
     }
     out.inflections.sort_by(|a, b| a.u.total_cmp(&b.u));
+    out.corners = Some(corners);
     Ok(Certified { value: out, doubts })
 }
 

@@ -80,10 +80,11 @@ pub enum PairType {
     E,
 }
 
-/// One pair of antipodal points.
+/// One pair of antipodal points: of a smooth curve, or of a profile (which also says whether
+/// each point is a corner, and on which segment it lies).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct AntipodalPair {
-    /// Parameter of the first point (`s < t`).
+    /// Parameter of the first point (`s ≤ t`; `s < t` on a smooth curve).
     pub s: f64,
     /// Parameter of the second point.
     pub t: f64,
@@ -93,9 +94,53 @@ pub struct AntipodalPair {
     pub q: [f64; 2],
     /// `|q − p|`.
     pub distance: f64,
-    /// Type A–E.
+    /// Type A–E where both ends are smooth points of curved stretches (always on a smooth
+    /// curve); `None` (`null`) on a profile with a corner or a straight end (the types need
+    /// the curvature at both ends).
     #[serde(rename = "type")]
-    pub kind: PairType,
+    pub kind: Option<PairType>,
+    /// On a profile: whether the point at `s`, and the one at `t`, is a corner (`None` on a
+    /// smooth curve, whose document does not write it).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub corner: Option<[bool; 2]>,
+    /// On a profile: the segments of the two points (at a joint: the segment starting there,
+    /// for a corner).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub segment: Option<[usize; 2]>,
+}
+
+impl AntipodalPair {
+    /// The pair as one of a profile of this one segment, in the same parameter: no corner,
+    /// both points on segment 0.
+    pub fn on_one_segment(self) -> AntipodalPair {
+        AntipodalPair {
+            corner: Some([false; 2]),
+            segment: Some([0; 2]),
+            ..self
+        }
+    }
+
+    /// Whether a point of the pair is a profile's corner.
+    pub fn has_corner(&self) -> bool {
+        self.corner.is_some_and(|c| c.contains(&true))
+    }
+
+    /// The pair with `s ≤ t` (its two contacts swapped if need be).
+    pub(crate) fn ordered(self) -> AntipodalPair {
+        if self.s <= self.t {
+            self
+        } else {
+            AntipodalPair {
+                s: self.t,
+                t: self.s,
+                p: self.q,
+                q: self.p,
+                corner: self.corner.map(|[a, b]| [b, a]),
+                segment: self.segment.map(|[a, b]| [b, a]),
+                ..self
+            }
+        }
+    }
 }
 
 /// A point of simple inflection.
@@ -134,20 +179,33 @@ pub enum InflectionKind {
 /// A continuum of antipodal pairs: every `s` in `s` pairs with one `t` in `t`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Family {
-    /// Parameter range on one side (may run across the seam: then `s[1] < s[0]`).
+    /// Parameter range on one side (on a smooth curve it may run across the seam: then
+    /// `s[1] < s[0]`).
     pub s: [f64; 2],
-    /// The matching range on the other side.
+    /// The matching range on the other side (`s[k]` pairs with `t[k]`).
     pub t: [f64; 2],
+    /// On a profile: the points at `s[0]` and `s[1]` (a drawing's parameters depend on how
+    /// its reader chained it; `None` on a smooth curve, whose document does not write them).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub p: Option<[[f64; 2]; 2]>,
+    /// On a profile: the points at `t[0]` and `t[1]`.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub q: Option<[[f64; 2]; 2]>,
 }
 
-/// Result of [`antipodal()`](crate::antipodal()).
+/// The antipodal pairs, inflections and families of a smooth curve
+/// ([`antipodal()`](crate::antipodal())) or of a profile ([`crate::profile_antipodal`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Antipodal {
     /// Isolated antipodal pairs, sorted by `s`.
     pub pairs: Vec<AntipodalPair>,
-    /// Simple inflections, sorted by `u`.
+    /// Inflections (on a profile: at smooth points and smooth joints), sorted by `u`.
     pub inflections: Vec<Inflection>,
-    /// Continua of antipodal pairs (circles, concentric arcs).
+    /// On a profile: its corners, sorted by `u` (not inflections; `None` on a smooth curve,
+    /// whose document does not list them).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub corners: Option<Vec<Corner>>,
+    /// Continua of antipodal pairs (circles, concentric arcs, facing parallel lines).
     pub families: Vec<Family>,
     /// The doubts met (none: every decision followed from certified sign tests). Read with
     /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
@@ -158,16 +216,35 @@ pub struct Antipodal {
     pub complete: bool,
 }
 
-/// Result of [`crate::inflections`].
+/// The inflections of a smooth curve ([`crate::inflections`]) or of a profile
+/// ([`crate::profile_inflections`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Inflections {
-    /// Inflections, sorted by `u`.
+    /// Inflections (on a profile: at smooth points and smooth joints), sorted by `u`.
     pub inflections: Vec<Inflection>,
+    /// On a profile: its corners, sorted by `u` (not inflections; `None` on a smooth curve,
+    /// whose document does not list them).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub corners: Option<Vec<Corner>>,
     /// The doubts met (none: every decision followed from certified sign tests). Read with
     /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
     /// writes them as its `certified` and, when it is false, `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
+}
+
+impl Antipodal {
+    /// The corners: a profile's, none on a smooth curve.
+    pub fn corner_list(&self) -> &[Corner] {
+        self.corners.as_deref().unwrap_or_default()
+    }
+}
+
+impl Inflections {
+    /// The corners: a profile's, none on a smooth curve.
+    pub fn corner_list(&self) -> &[Corner] {
+        self.corners.as_deref().unwrap_or_default()
+    }
 }
 
 /// A corner of a profile (see [`curve::Joint`]).
@@ -194,156 +271,29 @@ pub enum CornerKind {
     Reflex,
 }
 
-/// Result of [`crate::profile_inflections`].
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ProfileInflections {
-    /// Inflections at smooth points and smooth joints, sorted by `u`.
-    pub inflections: Vec<Inflection>,
-    /// The corners, sorted by `u` (not inflections).
-    pub corners: Vec<Corner>,
-    /// The doubts met (none: every decision followed from certified sign tests). Read with
-    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
-    /// writes them as its `certified` and, when it is false, `reason` fields.
-    #[serde(flatten)]
-    pub doubts: Doubts,
-}
-
-/// One antipodal pair of a profile (see [`crate::profile_antipodal`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct ProfilePair {
-    /// Profile parameter of the first point (`s ≤ t`).
-    pub s: f64,
-    /// Profile parameter of the second point.
-    pub t: f64,
-    /// The first point.
-    pub p: [f64; 2],
-    /// The second point.
-    pub q: [f64; 2],
-    /// `|q − p|`.
-    pub distance: f64,
-    /// Type A–E where both ends are smooth points of curved segments; `null` with a corner or
-    /// a straight end (the types need the curvature at both ends).
-    #[serde(rename = "type")]
-    pub kind: Option<PairType>,
-    /// Whether the point at `s`, and the one at `t`, is a corner.
-    pub corner: [bool; 2],
-    /// The segments of the two points (at a joint: the segment starting there, for a corner).
-    pub segment: [usize; 2],
-}
-
-/// A smooth curve's pair as the pair of a profile of that one segment, in the curve's own
-/// parameter: no corner, both points on segment 0, its type kept.
-impl From<AntipodalPair> for ProfilePair {
-    fn from(p: AntipodalPair) -> Self {
-        ProfilePair {
-            s: p.s,
-            t: p.t,
-            p: p.p,
-            q: p.q,
-            distance: p.distance,
-            kind: Some(p.kind),
-            corner: [false; 2],
-            segment: [0; 2],
-        }
-    }
-}
-
-impl ProfilePair {
-    /// The pair with `s ≤ t` (its two contacts swapped if need be).
-    pub(crate) fn ordered(self) -> ProfilePair {
-        if self.s <= self.t {
-            self
-        } else {
-            ProfilePair {
-                s: self.t,
-                t: self.s,
-                p: self.q,
-                q: self.p,
-                corner: [self.corner[1], self.corner[0]],
-                segment: [self.segment[1], self.segment[0]],
-                ..self
-            }
-        }
-    }
-}
-
-/// A continuum of antipodal pairs of a profile, with its end points (a drawing's parameters
-/// depend on how its reader chained it).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct ProfileFamily {
-    /// Profile parameters on one side.
-    pub s: [f64; 2],
-    /// The matching parameters on the other (`s[k]` pairs with `t[k]`).
-    pub t: [f64; 2],
-    /// The points at `s[0]` and `s[1]`.
-    pub p: [[f64; 2]; 2],
-    /// The points at `t[0]` and `t[1]`.
-    pub q: [[f64; 2]; 2],
-}
-
-/// Result of [`crate::profile_antipodal`].
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ProfileAntipodal {
-    /// Isolated antipodal pairs, sorted by `s`.
-    pub pairs: Vec<ProfilePair>,
-    /// Inflections at smooth points and smooth joints, sorted by `u`.
-    pub inflections: Vec<Inflection>,
-    /// The corners, sorted by `u`.
-    pub corners: Vec<Corner>,
-    /// Continua of pairs (facing parallel lines, concentric arcs).
-    pub families: Vec<ProfileFamily>,
-    /// The doubts met (none: every decision followed from certified sign tests). Read with
-    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
-    /// writes them as its `certified` and, when it is false, `reason` fields.
-    #[serde(flatten)]
-    pub doubts: Doubts,
-    /// False when a work limit was hit (the result may then be incomplete).
-    pub complete: bool,
-}
-
-/// A line tangent to the first curve at `s` and to the second at `t`.
+/// A line tangent to the first curve (or profile) at `s` and to the second at `t`: where a
+/// profile's corner is the point of contact, the line passes through it.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct TangentLine {
     /// Parameter on the first curve.
     pub s: f64,
     /// Parameter on the second curve.
     pub t: f64,
-    /// Point of tangency on the first curve.
+    /// Point of tangency (or the corner) on the first curve.
     pub p: [f64; 2],
-    /// Point of tangency on the second curve.
+    /// Point of tangency (or the corner) on the second curve.
     pub q: [f64; 2],
+    /// On profiles: whether the line passes through a corner of the first, and of the second
+    /// (`None` between smooth curves, whose document does not write it).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub corner: Option<[bool; 2]>,
+    /// On profiles: the segments of the two points (a corner's: the segment starting there).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub segment: Option<[usize; 2]>,
 }
 
-/// A common tangent line of two profiles (see [`crate::profile_tangents`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct ProfileTangentLine {
-    /// Profile parameter on the first profile (a corner's, where the line passes through one).
-    pub s: f64,
-    /// Profile parameter on the second.
-    pub t: f64,
-    /// The point of tangency (or the corner) on the first profile.
-    pub p: [f64; 2],
-    /// The point of tangency (or the corner) on the second.
-    pub q: [f64; 2],
-    /// Whether the line passes through a corner of the first profile, and of the second.
-    pub corner: [bool; 2],
-    /// The segments of the two points (a corner's: the segment starting there).
-    pub segment: [usize; 2],
-}
-
-/// Result of [`crate::profile_tangents`].
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ProfileTangents {
-    /// The lines, sorted by `s`.
-    pub lines: Vec<ProfileTangentLine>,
-    /// The doubts met (none: every decision followed from certified sign tests). Read with
-    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
-    /// writes them as its `certified` and, when it is false, `reason` fields.
-    #[serde(flatten)]
-    pub doubts: Doubts,
-}
-
-/// Result of [`common_tangents()`](crate::common_tangents()).
+/// The common tangent lines of two smooth curves ([`common_tangents()`](crate::common_tangents()))
+/// or of two profiles ([`crate::profile_tangents`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Tangents {
     /// The lines, sorted by `s`.
@@ -383,6 +333,3 @@ macro_rules! provenance {
 provenance!(Antipodal);
 provenance!(Inflections);
 provenance!(Tangents);
-provenance!(ProfileInflections);
-provenance!(ProfileAntipodal);
-provenance!(ProfileTangents);

@@ -10,8 +10,8 @@
 use crate::error::Result;
 use crate::prepare::{common_tangents_run, prepare};
 use crate::types::{
-    Antipodal, Inflection, Options, ProfileAntipodal, ProfileFamily, ProfileInflections,
-    ProfilePair, ProfileTangentLine, ProfileTangents, Provenance, Tangents,
+    Antipodal, AntipodalPair, Family, Inflection, Inflections, Options, Provenance, TangentLine,
+    Tangents,
 };
 use curve::{ParamCurve, PlaneCurve, Profile, SegmentKind};
 use numeric::certificate::{Certified, Doubts};
@@ -83,29 +83,29 @@ impl WholeCurve<'_> {
 }
 
 /// [`crate::profile_antipodal`] on the profile of a whole curve.
-pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<ProfileAntipodal> {
-    let found: Antipodal = prepare(on.curve).antipodal(opts)?;
+pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<Antipodal> {
+    let found = prepare(on.curve).antipodal(opts)?;
     let at = |x: f64| on.curve.jet(x).p.arr();
-    Ok(ProfileAntipodal {
+    Ok(Antipodal {
         pairs: found
             .pairs
             .iter()
-            .map(|&p| ProfilePair {
+            .map(|&p| AntipodalPair {
                 s: on.param(p.s),
                 t: on.param(p.t),
-                ..ProfilePair::from(p)
+                ..p.on_one_segment()
             })
             .collect(),
         inflections: on.inflections(found.inflections),
-        corners: Vec::new(),
+        corners: Some(Vec::new()),
         families: found
             .families
             .iter()
-            .map(|f| ProfileFamily {
+            .map(|f| Family {
                 s: f.s.map(|x| on.param(x)),
                 t: f.t.map(|x| on.param(x)),
-                p: f.s.map(at),
-                q: f.t.map(at),
+                p: Some(f.s.map(at)),
+                q: Some(f.t.map(at)),
             })
             .collect(),
         doubts: found.doubts,
@@ -117,12 +117,12 @@ pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<ProfileAn
 pub(crate) fn inflections_run(
     on: &WholeCurve<'_>,
     opts: &Options,
-) -> Result<Certified<ProfileInflections>> {
+) -> Result<Certified<Inflections>> {
     let (found, doubts) = crate::prepare::inflections_run(on.curve, opts)?.into_parts();
     Ok(Certified {
-        value: ProfileInflections {
+        value: Inflections {
             inflections: on.inflections(found.inflections),
-            corners: Vec::new(),
+            corners: Some(Vec::new()),
             doubts: Doubts::none(),
         },
         doubts,
@@ -134,19 +134,18 @@ pub(crate) fn tangents(
     on_a: &WholeCurve<'_>,
     on_b: &WholeCurve<'_>,
     opts: &Options,
-) -> Result<ProfileTangents> {
+) -> Result<Tangents> {
     let found: Tangents = Provenance::finished(common_tangents_run(on_a.curve, on_b.curve, opts)?);
-    Ok(ProfileTangents {
+    Ok(Tangents {
         lines: found
             .lines
             .iter()
-            .map(|l| ProfileTangentLine {
+            .map(|l| TangentLine {
                 s: on_a.param(l.s),
                 t: on_b.param(l.t),
-                p: l.p,
-                q: l.q,
-                corner: [false; 2],
-                segment: [0; 2],
+                corner: Some([false; 2]),
+                segment: Some([0; 2]),
+                ..*l
             })
             .collect(),
         doubts: found.doubts,

@@ -126,9 +126,9 @@ fn answer_for(curve: &SplineCurve) -> Option<Antipodal> {
     }
 }
 
-fn types(r: &Antipodal) -> Vec<PairType> {
-    let mut t: Vec<PairType> = r.pairs.iter().map(|p| p.kind).collect();
-    t.sort_by_key(|k| *k as u8);
+fn types(r: &Antipodal) -> Vec<Option<PairType>> {
+    let mut t: Vec<Option<PairType>> = r.pairs.iter().map(|p| p.kind).collect();
+    t.sort_by_key(|k| k.map(|k| k as u8));
     t
 }
 

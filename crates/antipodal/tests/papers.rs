@@ -38,7 +38,7 @@ fn rounded(r: &Antipodal) -> Rounded {
                     round(p.s),
                     round(p.t),
                     round(p.distance),
-                    format!("{:?}", p.kind),
+                    format!("{:?}", p.kind.expect("a smooth curve's pair has a type")),
                 )
             })
             .collect(),

@@ -13,7 +13,7 @@
 
 mod common;
 
-use antipodal::{profile_antipodal, AntipodalPair, Options, Profile, ProfilePair, Segment};
+use antipodal::{profile_antipodal, AntipodalPair, Options, Profile, Segment};
 use curve::{JointKind, ParamCurve, SegmentKind, SplineCurve, V2};
 use numeric::certificate::Verdict;
 use proptest::prelude::*;
@@ -235,14 +235,14 @@ fn same(a: (V2, V2), b: (V2, V2), size: f64) -> bool {
 
 /// Whether a reported pair satisfies the definition (to rounding): collinear normals facing
 /// each other at smooth ends, the segment inside the cone at corners.
-fn satisfies(p: &Profile, pair: &ProfilePair) -> Result<(), String> {
+fn satisfies(p: &Profile, pair: &AntipodalPair) -> Result<(), String> {
     let (a, b) = (V2::from_arr(pair.p), V2::from_arr(pair.q));
     let d = b - a;
     let ss = sites(p);
     let o = p.orientation();
     for (end, from, dir, u) in [
-        (pair.corner[0], a, d, pair.s),
-        (pair.corner[1], b, -d, pair.t),
+        (corners(pair)[0], a, d, pair.s),
+        (corners(pair)[1], b, -d, pair.t),
     ] {
         if end {
             let site = ss
@@ -294,11 +294,11 @@ fn check(p: &Profile, size: f64) -> Result<(usize, usize, usize), TestCaseError>
         }
         prop_assert!((got.1 - got.0).norm() >= 1e-3 * size || want.pairs.is_empty());
     }
-    let count = |f: &dyn Fn(&ProfilePair) -> bool| r.pairs.iter().filter(|g| f(g)).count();
+    let count = |f: &dyn Fn(&AntipodalPair) -> bool| r.pairs.iter().filter(|g| f(g)).count();
     Ok((
-        count(&|g| g.corner == [true, true]),
-        count(&|g| g.corner[0] != g.corner[1]),
-        count(&|g| g.corner == [false, false] && g.kind.is_some()),
+        count(&|g| corners(g) == [true, true]),
+        count(&|g| corners(g)[0] != corners(g)[1]),
+        count(&|g| corners(g) == [false, false] && g.kind.is_some()),
     ))
 }
 
@@ -373,7 +373,7 @@ fn rectangles_and_half_discs() {
     assert!(r
         .pairs
         .iter()
-        .all(|p| p.corner == [true, true] && p.kind.is_none()));
+        .all(|p| p.corner == Some([true, true]) && p.kind.is_none()));
     let d = Profile::new(
         vec![
             Segment::line([-1.0, 0.0], [1.0, 0.0]).unwrap(),
@@ -388,13 +388,13 @@ fn rectangles_and_half_discs() {
     let p = &r.pairs[0];
     assert_eq!(
         (p.s, p.t, p.corner, p.segment),
-        (0.5, 1.5, [false, false], [0, 1])
+        (0.5, 1.5, Some([false, false]), Some([0, 1]))
     );
     assert!((p.q[1] - 1.0).abs() < 1e-15 && p.distance == p.q[1]);
 }
 
 /// The pairs as sorted point pairs, for comparing two runs.
-fn point_pairs(pairs: &[ProfilePair]) -> Vec<[f64; 4]> {
+fn point_pairs(pairs: &[AntipodalPair]) -> Vec<[f64; 4]> {
     let mut v: Vec<[f64; 4]> = pairs
         .iter()
         .map(|p| {
@@ -422,8 +422,14 @@ fn assert_same_points(a: &[[f64; 4]], b: &[[f64; 4]], room: f64) {
 
 /// A curve's pairs as those of a profile of that one smooth segment (no corners; both points
 /// on segment 0).
-fn as_profile_pairs(pairs: &[AntipodalPair]) -> Vec<ProfilePair> {
-    pairs.iter().map(|&p| ProfilePair::from(p)).collect()
+fn as_profile_pairs(pairs: &[AntipodalPair]) -> Vec<AntipodalPair> {
+    pairs.iter().map(|&p| p.on_one_segment()).collect()
+}
+
+/// Whether a profile's pair has a corner at `s`, and at `t`.
+fn corners(pair: &AntipodalPair) -> [bool; 2] {
+    pair.corner
+        .expect("a profile's pair says where its corners are")
 }
 
 /// A smooth closed curve given as a one-segment profile has the curve's pairs, and a periodic
@@ -449,7 +455,7 @@ fn round_trips_through_profiles() {
     assert!(!curve_pairs.is_empty());
     assert_same_points(&point_pairs(&r.pairs), &point_pairs(&curve_pairs), 1e-10);
     for (a, b) in r.pairs.iter().zip(&alone.pairs) {
-        assert_eq!(a.kind, Some(b.kind));
+        assert_eq!(a.kind, b.kind);
     }
 
     // A periodic cubic: its Bézier pieces as segments.
@@ -518,12 +524,12 @@ fn pairs_move_with_the_profile() {
             let rb = profile_antipodal(&b, &Options::default()).unwrap();
             prop_assert_eq!(ra.pairs.len(), rb.pairs.len());
             prop_assert_eq!(ra.certified(), rb.certified());
-            let expect: Vec<ProfilePair> = ra
+            let expect: Vec<AntipodalPair> = ra
                 .pairs
                 .iter()
                 .map(|p| {
                     let (mp, mq) = (moved(V2::from_arr(p.p)), moved(V2::from_arr(p.q)));
-                    ProfilePair {
+                    AntipodalPair {
                         p: mp.arr(),
                         q: mq.arr(),
                         ..*p

@@ -99,12 +99,12 @@ proptest! {
             })
             .map(|i| i as f64)
             .collect();
-        let mut got: Vec<f64> = r.corners.iter().map(|c| c.u).collect();
+        let mut got: Vec<f64> = r.corner_list().iter().map(|c| c.u).collect();
         got.sort_by(f64::total_cmp);
         let mut sharp = sharp;
         sharp.sort_by(f64::total_cmp);
         prop_assert_eq!(&got, &sharp);
-        for c in &r.corners {
+        for c in r.corner_list() {
             let convex = c.turn * p.orientation() > 0.0;
             prop_assert_eq!(c.kind == CornerKind::Convex, convex);
         }
@@ -168,9 +168,9 @@ fn corners_lines_and_bad_segments() {
     .unwrap();
     let r = profile_inflections(&d, &Options::default()).unwrap();
     assert!(r.inflections.is_empty() && r.certified());
-    assert_eq!(r.corners.len(), 2);
-    assert!(r.corners.iter().all(|c| c.kind == CornerKind::Convex));
-    testkit::assert_near!(r.corners[0].turn, PI / 2.0, 1e-12);
+    assert_eq!(r.corner_list().len(), 2);
+    assert!(r.corner_list().iter().all(|c| c.kind == CornerKind::Convex));
+    testkit::assert_near!(r.corner_list()[0].turn, PI / 2.0, 1e-12);
     // A cusp inside a Bézier segment is refused, naming the segment.
     let cusp = SplineCurve::clamped(
         3,
@@ -220,7 +220,7 @@ fn a_curvature_vanishing_at_a_corner_is_not_an_inflection() {
         r.inflections
     );
     assert!(
-        r.corners.iter().any(|c| near_corner(c.u)),
+        r.corner_list().iter().any(|c| near_corner(c.u)),
         "{:?}",
         r.corners
     );

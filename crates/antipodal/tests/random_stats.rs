@@ -76,7 +76,8 @@ fn run(seed: u64, cases: usize, rmin: f64, min_valid: usize, opts: &Options) {
         infl += r.inflections.len();
         certified += r.certified() as usize;
         for p in &r.pairs {
-            *types.entry(format!("{:?}", p.kind)).or_insert(0) += 1;
+            let kind = p.kind.expect("a smooth curve's pair has a type");
+            *types.entry(format!("{kind:?}")).or_insert(0) += 1;
             assert!(
                 common::residual(&c, p.s, p.t) <= 1e-12,
                 "case {case} residual"

@@ -2,7 +2,7 @@
 //! them and, for a bisector, its zero set in the parameter square.
 
 use super::{draw_curve, n};
-use antipodal::{Antipodal, Corner, Family, Inflection, ProfileAntipodal};
+use antipodal::{Antipodal, Corner, Family, Inflection};
 use curvekit::curve::ParamCurve;
 use curvekit::curve::Profile;
 use curvekit::io::Curve;
@@ -39,39 +39,20 @@ fn antipodal_legend(
     }
 }
 
-/// The antipodal figure: the curve, its inflections, each pair as a numbered segment (Jia's
-/// Figures 1 and 24) and each family by its two end pairs; the header says whether the answer
-/// is certified.
+/// The antipodal figure: the curve, its inflections (and a profile's corners), each pair as a
+/// numbered segment (Jia's Figures 1 and 24) and each family by its two end pairs; the header
+/// says whether the answer is certified.
 pub(crate) fn antipodal_figure(curve: &Curve, found: &Antipodal, title: String) -> String {
-    let end_pair = |f: &Family, k: usize| [curve.point_at(f.s[k]), curve.point_at(f.t[k])];
-    let marks = AntipodalMarks {
-        pairs: found.pairs.iter().map(|p| [p.p, p.q]).collect(),
-        families: found
-            .families
-            .iter()
-            .map(|f| [end_pair(f, 0), end_pair(f, 1)])
-            .collect(),
-        inflections: &found.inflections,
-        corners: &[],
+    // (A profile's family has its end points; a curve's are found from its parameters.)
+    let end_pairs = |f: &Family| match (f.p, f.q) {
+        (Some(p), Some(q)) => [[p[0], q[0]], [p[1], q[1]]],
+        _ => [0, 1].map(|k| [curve.point_at(f.s[k]), curve.point_at(f.t[k])]),
     };
-    antipodal_drawing(curve, marks, found, title)
-}
-
-/// The antipodal figure of a profile: as for a curve, with the corners marked.
-pub(crate) fn profile_antipodal_figure(
-    curve: &Curve,
-    found: &ProfileAntipodal,
-    title: String,
-) -> String {
     let marks = AntipodalMarks {
         pairs: found.pairs.iter().map(|p| [p.p, p.q]).collect(),
-        families: found
-            .families
-            .iter()
-            .map(|f| [[f.p[0], f.q[0]], [f.p[1], f.q[1]]])
-            .collect(),
+        families: found.families.iter().map(end_pairs).collect(),
         inflections: &found.inflections,
-        corners: &found.corners,
+        corners: found.corner_list(),
     };
     antipodal_drawing(curve, marks, found, title)
 }

@@ -4,8 +4,7 @@
 use super::{describe, n, time_line};
 use crate::cli::timing::Stats;
 use antipodal::{
-    Antipodal, CornerKind, Inflection, InflectionKind, Inflections, ProfileAntipodal,
-    ProfileInflections, ProfileTangents, Tangents,
+    Antipodal, AntipodalPair, CornerKind, Inflection, InflectionKind, Inflections, Tangents,
 };
 use curvekit::io::Curve;
 use numeric::certificate::Verdict;
@@ -60,12 +59,12 @@ fn inflection_row(s: &mut String, k: usize, f: &Inflection, after: &str) {
 /// The text report of `inflections` on a profile: its inflections, then its corners.
 pub(crate) fn profile_inflections_text(
     curve: &Curve,
-    r: &ProfileInflections,
+    r: &Inflections,
     stats: Option<&Stats>,
 ) -> String {
     let mut s = inflection_lines(curve, &r.inflections, r);
-    let _ = writeln!(s, "corners:     {}", r.corners.len());
-    for (i, c) in r.corners.iter().enumerate() {
+    let _ = writeln!(s, "corners:     {}", r.corner_list().len());
+    for (i, c) in r.corner_list().iter().enumerate() {
         let kind = match c.kind {
             CornerKind::Convex => "convex",
             CornerKind::Reflex => "reflex",
@@ -138,8 +137,12 @@ fn site(corner: bool, segment: usize) -> String {
     format!("{what} {segment}")
 }
 
-/// The two sites a pair or a tangent line joins on profiles: `  (corner 1, segment 3)`.
-fn sites(corner: [bool; 2], segment: [usize; 2]) -> String {
+/// The two sites a pair or a tangent line joins on profiles: `  (corner 1, segment 3)`;
+/// nothing between smooth curves, which have neither.
+fn sites(corner: Option<[bool; 2]>, segment: Option<[usize; 2]>) -> String {
+    let (Some(corner), Some(segment)) = (corner, segment) else {
+        return String::new();
+    };
     format!(
         "  ({}, {})",
         site(corner[0], segment[0]),
@@ -213,14 +216,20 @@ fn antipodal_head(
     s
 }
 
-/// The readable antipodal report.
-pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>) -> String {
-    let pairs = r.pairs.iter().map(|p| PairRow {
-        kind: format!("{:?}", p.kind),
+/// A pair's row: its type (`-` where it has none), chord, distance and, on a profile, its
+/// sites.
+fn pair_row(p: &AntipodalPair) -> PairRow {
+    PairRow {
+        kind: p.kind.map_or("-".to_string(), |t| format!("{t:?}")),
         chord: chord(p.s, p.t, p.p, p.q),
         distance: p.distance,
-        sites: String::new(),
-    });
+        sites: sites(p.corner, p.segment),
+    }
+}
+
+/// The readable antipodal report.
+pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>) -> String {
+    let pairs = r.pairs.iter().map(pair_row);
     let families = r.families.iter().map(|f| family_range(f.s, f.t));
     let mut s = antipodal_head(curve, r, r.complete, Why::Unstated, pairs, families);
     let _ = writeln!(s, "inflections: {}", r.inflections.len());
@@ -235,31 +244,28 @@ pub(crate) fn antipodal_text(curve: &Curve, r: &Antipodal, stats: Option<&Stats>
 /// families with their end points, inflections and corners.
 pub(crate) fn profile_antipodal_text(
     curve: &Curve,
-    r: &ProfileAntipodal,
+    r: &Antipodal,
     stats: Option<&Stats>,
 ) -> String {
-    let pairs = r.pairs.iter().map(|p| PairRow {
-        kind: p.kind.map_or("-".to_string(), |t| format!("{t:?}")),
-        chord: chord(p.s, p.t, p.p, p.q),
-        distance: p.distance,
-        sites: sites(p.corner, p.segment),
-    });
+    let pairs = r.pairs.iter().map(pair_row);
     let families = r.families.iter().map(|f| {
+        // (A profile's family has its end points.)
+        let (p, q) = (f.p.unwrap_or_default(), f.q.unwrap_or_default());
         format!(
             "{}  from ({}, {})-({}, {}) to ({}, {})-({}, {})",
             family_range(f.s, f.t),
-            n(f.p[0][0]),
-            n(f.p[0][1]),
-            n(f.q[0][0]),
-            n(f.q[0][1]),
-            n(f.p[1][0]),
-            n(f.p[1][1]),
-            n(f.q[1][0]),
-            n(f.q[1][1]),
+            n(p[0][0]),
+            n(p[0][1]),
+            n(q[0][0]),
+            n(q[0][1]),
+            n(p[1][0]),
+            n(p[1][1]),
+            n(q[1][0]),
+            n(q[1][1]),
         )
     });
     let mut s = antipodal_head(curve, r, r.complete, Why::Stated, pairs, families);
-    let corners = ProfileInflections {
+    let corners = Inflections {
         inflections: r.inflections.clone(),
         corners: r.corners.clone(),
         doubts: r.doubts.clone(),
@@ -298,7 +304,7 @@ pub(crate) fn tangents_text(curves: &[&Curve], r: &Tangents, stats: Option<&Stat
 /// The readable common-tangent report of profiles: each line with its corners and segments.
 pub(crate) fn profile_tangents_text(
     curves: &[&Curve],
-    r: &ProfileTangents,
+    r: &Tangents,
     stats: Option<&Stats>,
 ) -> String {
     let lines = r

@@ -13,6 +13,9 @@
 //! Two pieces of one circle have every normal through its centre: their bisector is that one
 //! point (reported as isolated), as is the self-bisector of an arc. Two pieces of one line
 //! have none.
+//!
+//! A profile of one spline segment without a corner is the curve it is: [`profile_bisector`]
+//! (of two such) and [`profile_self_bisector`] run the curve's bisector on it (`whole_curve`).
 
 mod arcs;
 #[cfg(test)]
@@ -23,6 +26,7 @@ mod polyline;
 mod run;
 mod site_pairs;
 mod stretches;
+mod whole_curve;
 
 use crate::bisector::BisectorOptions;
 use crate::error::Result;
@@ -31,6 +35,7 @@ use curve::{JointKind, Profile};
 use point_site::Corner;
 use run::Run;
 use serde::{Deserialize, Serialize};
+use whole_curve::{one_spline, spline_bisector, spline_self_bisector};
 
 /// One branch of a profile bisector.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -140,6 +145,12 @@ fn sites(p: &Profile) -> Vec<Site<'_>> {
 /// The bisector of two profiles: every point with a foot point on each, at equal distance,
 /// on the normal of a segment or inside the cone of a corner.
 ///
+/// Two profiles that are each one Bézier or B-spline segment without a corner (open, or
+/// closed with a smooth seam; not an analytic shape's form) are the curves they are: their
+/// bisector is [`crate::bisector`]'s of the segments' splines (a periodic spline's whole
+/// curve), its parameters the profiles', every foot on segment 0 and no corner
+/// ([`crate::Bisector::from`] drops those again).
+///
 /// ```
 /// use curve::{Profile, Segment};
 /// use zeroset::{profile_bisector, BisectorOptions};
@@ -157,6 +168,9 @@ pub fn profile_bisector(
     b: &Profile,
     opts: &BisectorOptions,
 ) -> Result<ProfileBisector> {
+    if let (Some(a), Some(b)) = (one_spline(a), one_spline(b)) {
+        return spline_bisector(&a, &b, opts);
+    }
     profile_bisector_of_pairs(a, b, opts, &|_, _| true)
 }
 
@@ -209,6 +223,29 @@ pub fn profile_bisector_of_pairs(
 /// The self-bisector of a profile: pairs of distinct foot points on it, on different sites
 /// or on one segment.
 ///
+/// A profile of one Bézier or B-spline segment without a corner (as for
+/// [`profile_bisector`]) is the curve it is: its self-bisector is [`crate::self_bisector`]'s
+/// of the segment's spline (a periodic spline's whole curve), in the profile's parameter.
+///
+/// ```
+/// use curve::{Profile, Segment, SegmentKind, SplineCurve};
+/// use zeroset::{profile_self_bisector, self_bisector, Bisector, BisectorOptions};
+/// // A periodic cubic is its whole curve: the profile's self-bisector is the curve's, its
+/// // parameters the profile's (the curve's on [0, 4) over 4).
+/// let ring = [[2.0, 0.0], [0.0, 1.0], [-2.0, 0.0], [0.0, -1.0]];
+/// let spline = SplineCurve::periodic(3, &ring, None).unwrap();
+/// let segment = Segment::periodic_spline(SegmentKind::BSpline, &spline).unwrap();
+/// let profile = Profile::of_curve(segment, (0.0, 4.0)).unwrap();
+/// let opts = BisectorOptions::default();
+/// let on_profile = Bisector::from(profile_self_bisector(&profile, &opts).unwrap());
+/// let on_curve = self_bisector(spline.curve(), &opts).unwrap();
+/// assert!(!on_curve.branches.is_empty());
+/// for (p, c) in on_profile.branches.iter().zip(&on_curve.branches) {
+///     assert_eq!(p.xy, c.xy);
+///     assert!(p.tr.iter().zip(&c.tr).all(|(p, c)| p == &[c[0] / 4.0, c[1] / 4.0]));
+/// }
+/// ```
+///
 /// ```
 /// use curve::{Profile, Segment};
 /// use zeroset::{profile_self_bisector, BisectorOptions};
@@ -221,6 +258,9 @@ pub fn profile_bisector_of_pairs(
 /// assert!(b.branches.iter().any(|br| br.corner.contains(&true)));
 /// ```
 pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<ProfileBisector> {
+    if let Some(spline) = one_spline(p) {
+        return spline_self_bisector(&spline, opts);
+    }
     profile_self_bisector_of_pairs(p, opts, &|_, _| true)
 }
 

@@ -151,7 +151,7 @@ pub(crate) trait Completeness {
 
 impl Completeness for AntipodalFound {
     fn complete(&self) -> bool {
-        either!(self, AntipodalFound, f => f.complete)
+        self.result().complete
     }
 }
 
@@ -336,17 +336,14 @@ result_class!(
         /// The pairs' types (`"A"` to `"E"`, Jia 2004 §3.3; `None` at a corner or a straight end).
         #[getter]
         fn types(&self) -> Vec<Option<String>> {
-            either!(&self.found, AntipodalFound, f => f
-                .pairs
-                .iter()
-                .map(|p| p.kind.map(|k| format!("{k:?}")))
-                .collect())
+            let pairs = &self.found.result().pairs;
+            pairs.iter().map(|p| p.kind.map(|k| format!("{k:?}"))).collect()
         }
 
         /// The inflections' parameters, an `(m,)` array.
         #[getter]
         fn inflections<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-            let list = either!(&self.found, AntipodalFound, f => &f.inflections);
+            let list = &self.found.result().inflections;
             PyArray1::from_vec(py, list.iter().map(|i| i.u).collect())
         }
 
@@ -354,7 +351,8 @@ result_class!(
         /// array.
         #[getter]
         fn families<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<f64>> {
-            let ranges: Vec<[[f64; 2]; 2]> = either!(&self.found, AntipodalFound, f => f.families.iter().map(|g| [g.s, g.t]).collect());
+            let families = &self.found.result().families;
+            let ranges: Vec<[[f64; 2]; 2]> = families.iter().map(|g| [g.s, g.t]).collect();
             pairs2(py, &ranges)
         }
     }
@@ -363,11 +361,11 @@ result_class!(
 impl PyAntipodal {
     /// Each pair's `([s, t], [p, q], distance)`, for both variants.
     fn pair_fields(&self) -> Vec<([f64; 2], [[f64; 2]; 2], f64)> {
-        either!(&self.found, AntipodalFound, f => f
-            .pairs
+        let pairs = &self.found.result().pairs;
+        pairs
             .iter()
             .map(|p| ([p.s, p.t], [p.p, p.q], p.distance))
-            .collect())
+            .collect()
     }
 }
 
@@ -393,7 +391,7 @@ result_class!(
         /// A profile's corners' parameters (empty for a smooth curve), a `(c,)` array.
         #[getter]
         fn corners<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-            let us = either!(&self.found, InflectionsFound, f => f.corner_list().iter().map(|c| c.u).collect());
+            let us = self.found.result().corner_list().iter().map(|c| c.u).collect();
             PyArray1::from_vec(py, us)
         }
     }
@@ -401,7 +399,7 @@ result_class!(
 
 impl PyInflections {
     fn list(&self) -> &[antipodal::Inflection] {
-        either!(&self.found, InflectionsFound, f => &f.inflections)
+        &self.found.result().inflections
     }
 }
 
@@ -428,7 +426,8 @@ result_class!(
 
 impl PyTangents {
     fn lines(&self) -> Vec<([f64; 2], [[f64; 2]; 2])> {
-        either!(&self.found, TangentsFound, f => f.lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect())
+        let lines = &self.found.result().lines;
+        lines.iter().map(|l| ([l.s, l.t], [l.p, l.q])).collect()
     }
 }
 

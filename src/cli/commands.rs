@@ -131,11 +131,7 @@ pub(super) fn run_bisector(
 pub(super) fn inflections_figure(curve: &Curve, found: &InflectionsFound) -> String {
     let mut fig = Figure::new();
     draw_curve(&mut fig, curve);
-    let (inflections, corners) = match found {
-        InflectionsFound::Curve(f) | InflectionsFound::Profile(f) => {
-            (&f.inflections, f.corner_list())
-        }
-    };
+    let (inflections, corners) = (&found.result().inflections, found.result().corner_list());
     inflections.iter().for_each(|i| fig.dot(i.p));
     corners.iter().for_each(|c| fig.corner(c.p));
     let mut title = format!("{} — inflections: {}", curve.file, inflections.len());
@@ -178,8 +174,8 @@ pub(super) fn tangents_figure(both: &[&Curve], found: &TangentsFound) -> String 
                 .for_each(|j| fig.corner(curvekit::curve::ParamCurve::jet(&**p, j.u).p.arr()));
         }
     }
-    let (TangentsFound::Curve(f) | TangentsFound::Profile(f)) = found;
-    let lines: Vec<([f64; 2], [f64; 2])> = f.lines.iter().map(|l| (l.p, l.q)).collect();
+    let lines: Vec<([f64; 2], [f64; 2])> =
+        found.result().lines.iter().map(|l| (l.p, l.q)).collect();
     for (k, (p, q)) in lines.iter().enumerate() {
         fig.segment(*p, *q, Some((k + 1).to_string()));
     }

@@ -4,39 +4,50 @@
 use numeric::certificate::{Doubt, Doubts, Verdict};
 use serde::Serialize;
 
-/// What `inflections` found: on a smooth curve, or on a profile (with its corners). The two
-/// share one type; the variant says which document the tool writes.
+/// What a curve command found, and which document the tool writes of it: a smooth curve's,
+/// or a profile's (its pairs and lines with their corners and segments, its corners listed).
+/// A curve and a profile share one result type; what only a profile has is absent on a
+/// curve.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
-pub enum InflectionsFound {
-    /// On a spline or an analytic shape.
-    Curve(antipodal::Inflections),
-    /// On a profile: also the corners.
-    Profile(antipodal::Inflections),
+pub enum Found<T> {
+    /// On a spline or an analytic shape: the curve's document.
+    Curve(T),
+    /// On a profile: the profile's document.
+    Profile(T),
 }
+
+impl<T> Found<T> {
+    /// The result, whichever document it is written as.
+    pub fn result(&self) -> &T {
+        match self {
+            Found::Curve(f) | Found::Profile(f) => f,
+        }
+    }
+
+    /// The result, taken.
+    pub fn into_result(self) -> T {
+        match self {
+            Found::Curve(f) | Found::Profile(f) => f,
+        }
+    }
+
+    fn result_mut(&mut self) -> &mut T {
+        match self {
+            Found::Curve(f) | Found::Profile(f) => f,
+        }
+    }
+}
+
+/// What `inflections` found: on a smooth curve, or on a profile (with its corners).
+pub type InflectionsFound = Found<antipodal::Inflections>;
 
 /// What `antipodal` found: on a smooth curve, or on a profile (pairs with corners, families
-/// with end points). The two share one type; the variant says which document the tool
-/// writes.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(untagged)]
-pub enum AntipodalFound {
-    /// On a spline or an analytic shape.
-    Curve(antipodal::Antipodal),
-    /// On a profile.
-    Profile(antipodal::Antipodal),
-}
+/// with end points).
+pub type AntipodalFound = Found<antipodal::Antipodal>;
 
-/// What `tangents` found: between two smooth curves, or where one is a profile. The two share
-/// one type; the variant says which document the tool writes.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(untagged)]
-pub enum TangentsFound {
-    /// Between two splines or analytic shapes.
-    Curve(antipodal::Tangents),
-    /// Where one curve or both are profiles.
-    Profile(antipodal::Tangents),
-}
+/// What `tangents` found: between two smooth curves, or where one is a profile.
+pub type TangentsFound = Found<antipodal::Tangents>;
 
 /// What `bisector` found: of splines, or where one curve is a profile.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -65,29 +76,30 @@ pub(super) trait Doubted {
     }
 }
 
-/// The verdict (and the doubts) of whichever result each variant holds.
-macro_rules! two_ways {
-    ($found:ident) => {
-        impl Doubted for $found {
+macro_rules! doubted {
+    ($($result:ty),*) => {
+        $(impl Doubted for $result {
             fn doubts_mut(&mut self) -> &mut Doubts {
-                match self {
-                    $found::Curve(f) => &mut f.doubts,
-                    $found::Profile(f) => &mut f.doubts,
-                }
+                &mut self.doubts
             }
-        }
-
-        impl Verdict for $found {
-            fn doubts(&self) -> &Doubts {
-                match self {
-                    $found::Curve(f) => &f.doubts,
-                    $found::Profile(f) => &f.doubts,
-                }
-            }
-        }
+        })*
     };
 }
 
-two_ways!(InflectionsFound);
-two_ways!(AntipodalFound);
-two_ways!(TangentsFound);
+doubted!(
+    antipodal::Inflections,
+    antipodal::Antipodal,
+    antipodal::Tangents
+);
+
+impl<T: Doubted> Doubted for Found<T> {
+    fn doubts_mut(&mut self) -> &mut Doubts {
+        self.result_mut().doubts_mut()
+    }
+}
+
+impl<T: Verdict> Verdict for Found<T> {
+    fn doubts(&self) -> &Doubts {
+        self.result().doubts()
+    }
+}

@@ -31,7 +31,7 @@ mod two_curves;
 pub use documents::{json_document, json_document_of, CurveSummary, DrawingSummary, Stats};
 use errors::{antipodal_error, refuse};
 pub use errors::{CommandError, FailureKind, UsageError};
-pub use found::{AntipodalFound, BisectorFound, InflectionsFound, TangentsFound};
+pub use found::{AntipodalFound, BisectorFound, Found, InflectionsFound, TangentsFound};
 /// The verdict every result answers (`certified()`, `reason()`), and the doubts it reads.
 pub use numeric::certificate::{Doubt, Doubts, Verdict};
 pub use prepared::{antipodal, inflections, PreparedCurve};

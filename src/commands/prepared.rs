@@ -4,7 +4,7 @@
 use super::errors::antipodal_error;
 use super::found::Doubted;
 use super::params::{DocMap, InDocument};
-use super::{one_curve, validate_options, AntipodalFound, CommandError, InflectionsFound};
+use super::{one_curve, validate_options, AntipodalFound, CommandError, Found, InflectionsFound};
 use crate::io::{Curve, CurveKind};
 use curve::{ParamCurve, PlaneCurve, Profile};
 use std::sync::Arc;
@@ -87,41 +87,27 @@ pub(super) fn smooth_map(curve: &Curve) -> DocMap<'_> {
     }
 }
 
-/// A one-curve command: its name (in a refusal), what it computes on a profile and on a
-/// smooth curve prepared, and the variant that holds each result.
-struct OneCurveCommand<C, P, F> {
+/// A one-curve command: its name (in a refusal), and what it computes on a profile and on a
+/// smooth curve prepared (one result type for both).
+struct OneCurveCommand<T> {
     name: &'static str,
-    on_profile: fn(&Profile, &antipodal::Options) -> antipodal::Result<P>,
-    on_smooth: fn(&antipodal::Prepared<'_>, &antipodal::Options) -> antipodal::Result<C>,
-    curve_found: fn(C) -> F,
-    profile_found: fn(P) -> F,
+    on_profile: fn(&Profile, &antipodal::Options) -> antipodal::Result<T>,
+    on_smooth: fn(&antipodal::Prepared<'_>, &antipodal::Options) -> antipodal::Result<T>,
 }
 
-const INFLECTIONS_BY_ROUTE: OneCurveCommand<
-    antipodal::Inflections,
-    antipodal::Inflections,
-    InflectionsFound,
-> = OneCurveCommand {
+const INFLECTIONS_BY_ROUTE: OneCurveCommand<antipodal::Inflections> = OneCurveCommand {
     name: "inflections",
     on_profile: antipodal::profile_inflections,
     on_smooth: |prepared, opts| prepared.inflections(opts),
-    curve_found: InflectionsFound::Curve,
-    profile_found: InflectionsFound::Profile,
 };
 
-const ANTIPODAL_BY_ROUTE: OneCurveCommand<
-    antipodal::Antipodal,
-    antipodal::Antipodal,
-    AntipodalFound,
-> = OneCurveCommand {
+const ANTIPODAL_BY_ROUTE: OneCurveCommand<antipodal::Antipodal> = OneCurveCommand {
     name: "antipodal",
     on_profile: antipodal::profile_antipodal,
     on_smooth: |prepared, opts| prepared.antipodal(opts),
-    curve_found: AntipodalFound::Curve,
-    profile_found: AntipodalFound::Profile,
 };
 
-impl<C: InDocument, P: InDocument, F: Doubted> OneCurveCommand<C, P, F> {
+impl<T: InDocument + Doubted> OneCurveCommand<T> {
     /// The command on `curve` by `route`, in the curve's own parameter; the result is doubted
     /// where the drawing's outline is.
     fn on_route(
@@ -129,12 +115,12 @@ impl<C: InDocument, P: InDocument, F: Doubted> OneCurveCommand<C, P, F> {
         curve: &Curve,
         route: Route<'_>,
         opts: &antipodal::Options,
-    ) -> Result<F, CommandError> {
+    ) -> Result<Found<T>, CommandError> {
         let found = match route {
             Route::Profile(p) => (self.on_profile)(p, opts)
-                .map(|f| (self.profile_found)(f.into_document(&[DocMap::Profile(p)]))),
+                .map(|f| Found::Profile(f.into_document(&[DocMap::Profile(p)]))),
             Route::Smooth(prepared) => (self.on_smooth)(prepared, opts)
-                .map(|f| (self.curve_found)(f.into_document(&[smooth_map(curve)]))),
+                .map(|f| Found::Curve(f.into_document(&[smooth_map(curve)]))),
         };
         found
             .map(|f| f.doubted(curve.drawing_outline_doubt()))
@@ -143,7 +129,7 @@ impl<C: InDocument, P: InDocument, F: Doubted> OneCurveCommand<C, P, F> {
 
     /// The command on `curve` read, by the route its shape takes, a smooth curve freshly
     /// prepared.
-    fn on_fresh(&self, curve: &Curve, opts: &antipodal::Options) -> Result<F, CommandError> {
+    fn on_fresh(&self, curve: &Curve, opts: &antipodal::Options) -> Result<Found<T>, CommandError> {
         validate_options(opts)?;
         one_curve(&[curve], self.name)?;
         match (&curve.shape, spline_with_corners(curve)?) {

@@ -10,12 +10,19 @@
 //!
 //! A direction within rounding of a cone's edge is the contract's limit case (it may be
 //! reported or not): such candidates are left out. Every other decision is clear of rounding.
+//!
+//! A smooth joint whose two tangents still turn by more than the noise the segments' searches
+//! take in (the rounding of a drawing far from the origin: a fillet at 1e8 turns by 1e-8) has
+//! a fan of normals the searches of both segments miss: a pair whose normal lies in it has
+//! its root just beyond the end of each. Its fan, widened by what the rounding may hide, is
+//! searched the same way, and a pair found there is a smooth pair.
 
+use crate::driver::pair_type;
 use crate::profiles::at_corner;
 use crate::types::{AntipodalPair, Options};
 use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
 use bspline::Piecewise;
-use curve::{Frame, ParamCurve, Profile, SplineCurve, V2};
+use curve::{Frame, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
 use numeric::certificate::{Doubt, Doubts};
 
 /// How far inside a cone (the sine of the angle to its nearer edge) a direction must be to be
@@ -24,12 +31,14 @@ use numeric::certificate::{Doubt, Doubts};
 const CONE_EDGE: f64 = 1e-9;
 
 /// How close (relative to the profile's size) a foot point may come to its corner and still be
-/// the corner itself: the root at the end of a segment that meets the corner, or a joint's gap.
+/// the corner itself: the root at the end of a segment that meets the corner, or a joint's gap
+/// (and never less than the rounding of the profile's points, [`Profile::point_rounding`]).
 const FOOT_AT_CORNER: f64 = 1e-8;
 
-/// A convex corner, in the frame's coordinates.
+/// A convex corner, or a smooth joint whose tangents turn by rounding (see the module
+/// documentation), in the frame's coordinates.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct CornerSite {
+pub(crate) struct JointSite {
     /// The profile parameter of the joint.
     pub(crate) u: f64,
     /// The segment that starts there.
@@ -38,17 +47,28 @@ pub(crate) struct CornerSite {
     pub(crate) p: V2,
     /// The inward unit normals of the incoming and outgoing segments: the cone's edges.
     pub(crate) cone: [V2; 2],
+    /// A corner; else a smooth joint, its cone the fan of normals rounding left it.
+    pub(crate) corner: bool,
+    /// How far (the sine of the angle) a direction may lie beyond an edge of a smooth joint's
+    /// fan and still be in it: the turn the rounding of its tangents may hide.
+    pub(crate) widening: f64,
 }
 
-impl CornerSite {
-    /// Whether `d` points strictly inside the cone (clear of its edges by [`CONE_EDGE`]).
+impl JointSite {
+    /// Whether `d` points inside the cone: a corner's strictly (clear of its edges by
+    /// [`CONE_EDGE`]), a smooth joint's fan widened by its rounding.
     fn holds(&self, d: V2) -> bool {
         let d = d.unit();
         let [a, b] = self.cone;
         // The cone of a convex corner spans less than π: inside means on the inner side of
         // both edges.
         let turn = a.cross(b).signum();
-        turn * a.cross(d) > CONE_EDGE && turn * d.cross(b) > CONE_EDGE
+        let room = if self.corner {
+            -CONE_EDGE
+        } else {
+            self.widening
+        };
+        turn * a.cross(d) > -room && turn * d.cross(b) > -room
     }
 }
 
@@ -63,7 +83,7 @@ pub(crate) struct CornerPairs {
 pub(crate) fn corner_pairs(
     profile: &Profile,
     frame: &Frame,
-    sites: &[CornerSite],
+    sites: &[JointSite],
     curves: &[&SplineCurve],
     opts: &Options,
 ) -> CornerPairs {
@@ -72,6 +92,19 @@ pub(crate) fn corner_pairs(
         doubts: Doubts::none(),
     };
     let global = |p: V2| frame.to_global(p.arr());
+    // A pair's type where both ends are smooth points of curved segments (`None` otherwise):
+    // the curvatures signed the way the profile runs round its region.
+    let curvature = |i: usize, x: f64| {
+        let curved = profile.segments()[i].kind() != SegmentKind::Line;
+        curved.then(|| curves[i].jet_to(x, 2).curvature() * profile.orientation())
+    };
+    let site_curvature = |site: &JointSite| {
+        let c = curves[site.segment];
+        (!site.corner)
+            .then(|| curvature(site.segment, c.domain().0))
+            .flatten()
+    };
+    let kind = |ks: Option<f64>, kt: Option<f64>, r: f64| Some(pair_type(ks?, kt?, r));
     for (k, a) in sites.iter().enumerate() {
         for b in &sites[k + 1..] {
             let d = b.p - a.p;
@@ -84,8 +117,8 @@ pub(crate) fn corner_pairs(
                         p,
                         q,
                         distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
-                        kind: None,
-                        corner: Some([true, true]),
+                        kind: kind(site_curvature(a), site_curvature(b), d.norm()),
+                        corner: Some([a.corner, b.corner]),
                         segment: Some([a.segment, b.segment]),
                     }
                     .ordered(),
@@ -94,6 +127,7 @@ pub(crate) fn corner_pairs(
         }
     }
     let size = frame.length_to_local(profile.size());
+    let rounding = frame.length_to_local(profile.point_rounding());
     for site in sites {
         for (i, c) in curves.iter().enumerate() {
             match foot_points(c, site.p, opts) {
@@ -106,13 +140,20 @@ pub(crate) fn corner_pairs(
                         }
                         let j = c.jet_to(s, 1);
                         let d = j.p - site.p;
-                        if d.norm() <= FOOT_AT_CORNER * size {
+                        if d.norm() <= (FOOT_AT_CORNER * size).max(rounding) {
                             continue;
                         }
                         if !foot.separated {
-                            out.doubts.add(Doubt::FootFromCorner {
-                                u: site.u,
-                                segment: i,
+                            out.doubts.add(if site.corner {
+                                Doubt::FootFromCorner {
+                                    u: site.u,
+                                    segment: i,
+                                }
+                            } else {
+                                Doubt::FootFromJoint {
+                                    u: site.u,
+                                    segment: i,
+                                }
                             });
                             continue;
                         }
@@ -130,8 +171,8 @@ pub(crate) fn corner_pairs(
                                 p,
                                 q,
                                 distance: (V2::from_arr(q) - V2::from_arr(p)).norm(),
-                                kind: None,
-                                corner: Some([true, false]),
+                                kind: kind(site_curvature(site), curvature(i, s), d.norm()),
+                                corner: Some([site.corner, false]),
                                 segment: Some([site.segment, i]),
                             }
                             .ordered(),

@@ -335,8 +335,12 @@ pub(crate) fn trim_antipodal_ends<'a>(
 /// The type of the pair of `vs` at `s` and `vt` at `t` (Jia 2004, §3.3).
 pub(crate) fn classify(vs: &View, vt: &View, s: f64, t: f64) -> PairType {
     let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
-    let (ks, kt) = (js.curvature(), jt.curvature());
-    let r = (jt.p - js.p).norm();
+    pair_type(js.curvature(), jt.curvature(), (jt.p - js.p).norm())
+}
+
+/// The type of a pair at distance `r` whose curvatures are `ks` and `kt`, signed positive
+/// where the curve turns the way it runs round its region (Jia 2004, §3.3).
+pub(crate) fn pair_type(ks: f64, kt: f64, r: f64) -> PairType {
     let radii = 1.0 / ks + 1.0 / kt;
     match (ks > 0.0, kt > 0.0) {
         (true, true) if radii < r => PairType::A,

@@ -4,7 +4,7 @@
 //! of two, is then searched exactly as the pieces of one smooth curve are (§5). The pairs with
 //! a corner at one end or both come from [`crate::corner_pairs`].
 
-use crate::corner_pairs::{corner_pairs, CornerSite};
+use crate::corner_pairs::{corner_pairs, JointSite};
 use crate::dissect::Piece;
 use crate::driver::{classify, dissect, sections, trim_antipodal_ends, Dissected};
 use crate::error::{Error, Result};
@@ -12,7 +12,7 @@ use crate::families::{flat_pairs, is_family};
 use crate::forms::SymbolicForms;
 use crate::ledger::Ledger;
 use crate::pairs::{opposite_pair, polish, THETA_NOISE};
-use crate::profiles::profile_inflections_run;
+use crate::profiles::{profile_inflections_run, FAN_NOISE};
 use crate::search::{antipodal_points, Budget};
 use crate::types::{Antipodal, AntipodalPair, Family, Options, Provenance};
 use crate::view::{Source, View};
@@ -26,8 +26,9 @@ const SEGMENT_SAMPLES: usize = 96;
 /// How far (relative to a segment's domain) the final polish of a pair may move it.
 const FINAL_POLISH_REACH: f64 = 1e-4;
 
-/// Two pairs whose points are closer than this (relative to the profile's size) are one: a
-/// pair at a smooth joint is found from the segments on both sides.
+/// Two pairs whose points are closer than this (relative to the profile's size; and never
+/// less than the rounding of its points, [`Profile::point_rounding`]) are one: a pair at a
+/// smooth joint is found from the segments on both sides.
 const SAME_PAIR: f64 = 1e-7;
 
 /// Room (in profile parameters, a segment's domain being 1) for a pair on a family's end to
@@ -183,7 +184,7 @@ pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Antipodal>
         }
     }
     let views: Vec<&View> = parts.iter().map(|d| &d.view).collect();
-    let sites = corner_sites(profile, &locals);
+    let sites = joint_sites(profile, &locals);
     let mut pairs = finish(profile, &views, &frame, raw, &mut ledger);
     let curves: Vec<&SplineCurve> = locals.iter().map(|l| &l.curve).collect();
     let corner = corner_pairs(profile, &frame, &sites, &curves, opts);
@@ -256,25 +257,30 @@ fn search_pieces<'a>(
     }
 }
 
-/// The convex corners with their cones of inward normals, in the frame.
-fn corner_sites(profile: &Profile, locals: &[Local]) -> Vec<CornerSite> {
+/// The convex corners with their cones of inward normals, and the smooth joints whose
+/// tangents turn beyond [`FAN_NOISE`] with their fans, in the frame.
+fn joint_sites(profile: &Profile, locals: &[Local]) -> Vec<JointSite> {
     let n = profile.segments().len();
     let inward = |t: V2| t.perp() * profile.orientation();
     profile
         .joints()
         .iter()
-        .filter(|j| j.kind == JointKind::Convex)
+        .filter(|j| {
+            j.kind == JointKind::Convex || (j.kind == JointKind::Smooth && j.turn.abs() > FAN_NOISE)
+        })
         .filter_map(|j| {
             let i = j.u as usize;
             let before = &profile.segments()[(i + n - 1) % n];
             let after = &profile.segments()[i];
             let (din, dout) = (before.end_direction()?, after.start_direction()?);
             let c = &locals[i].curve;
-            Some(CornerSite {
+            Some(JointSite {
                 u: j.u,
                 segment: i,
                 p: c.jet(c.domain().0).p,
                 cone: [inward(din), inward(dout)],
+                corner: j.kind == JointKind::Convex,
+                widening: profile.smooth_turn(),
             })
         })
         .collect()
@@ -365,7 +371,7 @@ fn joint_at(profile: &Profile, k: usize, v: &View, x: f64) -> Option<JointKind> 
 /// The same pair found twice (from two segments meeting at a smooth joint, or as a corner
 /// pair and a smooth one on the cone's edge).
 fn same_pair(profile: &Profile, a: &AntipodalPair, b: &AntipodalPair) -> bool {
-    let room = SAME_PAIR * profile.size();
+    let room = (SAME_PAIR * profile.size()).max(profile.point_rounding());
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     (near(a.p, b.p) && near(a.q, b.q)) || (near(a.p, b.q) && near(a.q, b.p))
 }
@@ -410,7 +416,7 @@ fn on_family(f: &Family, p: &AntipodalPair) -> bool {
 /// Families that continue each other (the pieces of one arc, a circle's halves) joined into
 /// one: where one ends, at both sides, the other starts.
 fn merged(profile: &Profile, mut fs: Vec<Family>) -> Vec<Family> {
-    let room = SAME_PAIR * profile.size();
+    let room = (SAME_PAIR * profile.size()).max(profile.point_rounding());
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     // (A profile's family has its end points.)
     let ends = |f: &Family| (f.p.unwrap_or_default(), f.q.unwrap_or_default());

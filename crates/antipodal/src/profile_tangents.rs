@@ -12,7 +12,7 @@
 
 use crate::error::{Error, Result};
 use crate::prepare::common_tangents_run;
-use crate::profiles::at_corner;
+use crate::profiles::{at_corner, FAN_NOISE};
 use crate::types::{Options, Provenance, TangentLine, Tangents};
 use bspline::roots::{find_roots, RootKind, RootOptions};
 use curve::{Frame, JointKind, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
@@ -26,28 +26,48 @@ const CONE_EDGE: f64 = 1e-9;
 /// two-curve search, some tens of microseconds): keeps a run within seconds.
 pub const MAX_SEGMENT_PAIRS: usize = 40_000;
 
-/// Two lines whose points of tangency are this close (relative to the size) are one.
+/// Two lines whose points of tangency are this close (relative to the size; and never less
+/// than the rounding of the profiles' points, [`Profile::point_rounding`]) are one.
 const SAME_LINE: f64 = 1e-7;
 
-/// A corner in the frame: where, and its incoming and outgoing unit tangents.
+/// How close (in the frame) two points of tangency are one ([`SAME_LINE`]).
+fn same_line_room(a: &Profile, b: &Profile, frame: &Frame) -> f64 {
+    let size = a.size().max(b.size());
+    let rounding = a.point_rounding().max(b.point_rounding());
+    frame.length_to_local((SAME_LINE * size).max(rounding))
+}
+
+/// A corner in the frame, or a smooth joint whose tangents turn by rounding (its fan, searched
+/// as a corner's cone is: see [`FAN_NOISE`]): where, and its incoming and outgoing unit
+/// tangents.
 struct ConeCorner {
     u: f64,
     segment: usize,
     at: V2,
     tangents: [V2; 2],
+    /// A corner; else a smooth joint.
+    corner: bool,
+    /// How far (radians) a smooth joint's fan is widened: the turn the rounding of its
+    /// tangents may hide.
+    widening: f64,
 }
 
 impl ConeCorner {
-    /// Whether the line along `d` (either way) lies strictly inside the tangent cone.
+    /// Whether the line along `d` (either way) lies inside the tangent cone: a corner's
+    /// strictly, a smooth joint's fan widened by its rounding.
     fn holds(&self, d: V2) -> bool {
         let [tin, tout] = self.tangents;
         let turn = tin.cross(tout).atan2(tin.dot(tout));
+        let edge = if self.corner {
+            CONE_EDGE.asin()
+        } else {
+            -self.widening
+        };
         let inside = |u: V2| {
             let u = u.unit();
             let a = tin.cross(u).atan2(tin.dot(u));
             // (Angles measured from the incoming tangent the way the corner turns.)
             let a = a * turn.signum();
-            let edge = CONE_EDGE.asin();
             a > edge && a < turn.abs() - edge
         };
         inside(d) || inside(-d)
@@ -72,7 +92,7 @@ impl<'p> Side<'p> {
         let corners = profile
             .joints()
             .iter()
-            .filter(|j| j.kind != JointKind::Smooth)
+            .filter(|j| j.kind != JointKind::Smooth || j.turn.abs() > FAN_NOISE)
             .filter_map(|j| {
                 let i = j.u as usize;
                 let segs = profile.segments();
@@ -86,6 +106,8 @@ impl<'p> Side<'p> {
                     segment: i,
                     at: c.jet(c.domain().0).p,
                     tangents: [tin, tout],
+                    corner: j.kind != JointKind::Smooth,
+                    widening: profile.smooth_turn(),
                 })
             })
             .collect();
@@ -146,25 +168,25 @@ pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Tang
     };
     // (The smooth lines' doubts first, then the corners' in turn.)
     let mut doubts = Doubts::none();
-    let size = frame.length_to_local(a.size().max(b.size()));
+    let room = same_line_room(a, b, &frame);
     smooth_lines(&sa, &sb, &frame, opts, &mut out, &mut doubts)?;
     for (from, to, flip) in [(&sa, &sb, false), (&sb, &sa, true)] {
-        corner_lines(from, to, &frame, opts, size, flip, &mut out, &mut doubts)?;
+        corner_lines(from, to, &frame, opts, room, flip, &mut out, &mut doubts)?;
     }
     for ca in &sa.corners {
         for cb in &sb.corners {
             let d = cb.at - ca.at;
-            if d.norm() > SAME_LINE * size && ca.holds(d) && cb.holds(d) {
+            if d.norm() > room && ca.holds(d) && cb.holds(d) {
                 push(
                     &mut out,
                     line(
                         &frame,
                         (ca.u, ca.at),
                         (cb.u, cb.at),
-                        [true, true],
+                        [ca.corner, cb.corner],
                         [ca.segment, cb.segment],
                     ),
-                    size,
+                    room,
                     &frame,
                 );
             }
@@ -184,7 +206,7 @@ fn smooth_lines(
     out: &mut Tangents,
     doubts: &mut Doubts,
 ) -> Result<()> {
-    let size = frame.length_to_local(sa.profile.size().max(sb.profile.size()));
+    let room = same_line_room(sa.profile, sb.profile, frame);
     let curved = |s: &Side, i: usize| s.profile.segments()[i].kind() != SegmentKind::Line;
     for i in (0..sa.curves.len()).filter(|&i| curved(sa, i)) {
         for j in (0..sb.curves.len()).filter(|&j| curved(sb, j)) {
@@ -210,7 +232,7 @@ fn smooth_lines(
                     [false, false],
                     [i, j],
                 );
-                push(out, new, size, frame);
+                push(out, new, room, frame);
             }
         }
     }
@@ -226,7 +248,7 @@ fn corner_lines(
     to: &Side,
     frame: &Frame,
     opts: &Options,
-    size: f64,
+    room: f64,
     flip: bool,
     out: &mut Tangents,
     doubts: &mut Doubts,
@@ -254,19 +276,35 @@ fn corner_lines(
                 }
                 let q = curve.jet(r.u).p;
                 let d = q - c.at;
-                if d.norm() <= SAME_LINE * size || !c.holds(d) {
+                if d.norm() <= room || !c.holds(d) {
                     continue;
                 }
                 if !(r.kind == RootKind::Simple && r.certified) && opts.certify {
-                    doubts.add(Doubt::TangencyFromCorner { u: c.u, segment: j });
+                    doubts.add(if c.corner {
+                        Doubt::TangencyFromCorner { u: c.u, segment: j }
+                    } else {
+                        Doubt::TangencyFromJoint { u: c.u, segment: j }
+                    });
                 }
                 let t = to.profile.profile_param(j, r.u);
                 let new = if flip {
-                    line(frame, (t, q), (c.u, c.at), [false, true], [j, c.segment])
+                    line(
+                        frame,
+                        (t, q),
+                        (c.u, c.at),
+                        [false, c.corner],
+                        [j, c.segment],
+                    )
                 } else {
-                    line(frame, (c.u, c.at), (t, q), [true, false], [c.segment, j])
+                    line(
+                        frame,
+                        (c.u, c.at),
+                        (t, q),
+                        [c.corner, false],
+                        [c.segment, j],
+                    )
                 };
-                push(out, new, size, frame);
+                push(out, new, room, frame);
             }
         }
     }
@@ -291,9 +329,10 @@ fn line(
     }
 }
 
-/// Adds `l` unless it is already there (found from both segments at a smooth joint).
-fn push(out: &mut Tangents, l: TangentLine, size: f64, frame: &Frame) {
-    let room = frame.length_to_global(SAME_LINE * size);
+/// Adds `l` unless it is already there (found from both segments at a smooth joint): its
+/// points within `room` (in the frame, [`same_line_room`]) of another's.
+fn push(out: &mut Tangents, l: TangentLine, room: f64, frame: &Frame) {
+    let room = frame.length_to_global(room);
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     if !out.lines.iter().any(|m| near(m.p, l.p) && near(m.q, l.q)) {
         out.lines.push(l);

@@ -9,6 +9,15 @@ use crate::types::{
 };
 use curve::{JointKind, ParamCurve, Profile, SegmentKind};
 use numeric::certificate::{Certified, Doubt, Doubts};
+use numeric::rounding::ulps;
+
+/// The turn of a smooth joint's tangents above which the segments' searches may miss a pair
+/// or a common tangent whose direction lies between them, its root just beyond the end of
+/// each segment (the floor of the noise they take the antipodal angle to have,
+/// [`crate::pairs::Pair::theta_noise`]): such a joint's fan is searched as a corner's cone is,
+/// and what is found there is smooth. (Near the origin a smooth joint turns by less; a drawing
+/// far from it, by the rounding of its coordinates.)
+pub(crate) const FAN_NOISE: f64 = ulps(64.0);
 
 /// The curvature (times the profile's size) beside a smooth joint below which its sign is
 /// not clear of the rounding of the jets it is computed from.

@@ -9,10 +9,27 @@ use crate::param::ParamCurve;
 use crate::segment::{Segment, SegmentKind};
 use crate::spline::SplineCurve;
 use crate::V2;
+use numeric::rounding::ulps;
 
 /// The jump of the tangent direction (radians) above which a joint is a corner: the interface
-/// contract's, far above the rounding of tangents computed from control points.
+/// contract's, far above the rounding of tangents computed from control points near the
+/// origin (far from it, see [`smooth_turn`]).
 pub const CORNER_TURN: f64 = 1e-9;
+
+/// How far (relative to the largest coordinate of the point where two legs of a control
+/// polygon meet) rounding may move a leg: each of its two points is rounded by up to an ulp
+/// of the coordinates there (`2ε` relative), whatever their distance.
+const LEG_ROUNDING: f64 = ulps(4.0);
+
+/// The largest turn between the tangents along the legs `before` (arriving at `at`) and
+/// `after` (leaving it) that is no corner: the contract's [`CORNER_TURN`], beyond what the
+/// rounding of the legs' points can turn them by. Near the origin that rounding is
+/// negligible; far from it, on short legs, it is not (a fillet of radius 0.01 at 1e8 has its
+/// tangents rounded 1.5e-6 apart).
+pub fn smooth_turn(at: V2, before: V2, after: V2) -> f64 {
+    let magnitude = at.x.abs().max(at.y.abs());
+    CORNER_TURN + LEG_ROUNDING * magnitude * (1.0 / before.norm() + 1.0 / after.norm())
+}
 
 /// Where a segment of a profile lies in the parameter its document gives the profile: a
 /// `profile` document's `[0, n)` (segment `i` on `[i, i + 1]`, at its own parameter mapped
@@ -85,7 +102,7 @@ fn straightened(s: Segment) -> Result<Segment> {
 }
 
 /// The interior knots of a spline segment where it is only C⁰ (multiplicity at least its
-/// degree) and its tangent direction turns by more than [`CORNER_TURN`], in order. At such a
+/// degree) and its tangent direction turns by more than [`smooth_turn`] allows, in order. At such a
 /// knot, first at index `j` of the clamped knot vector, the curve passes through control point
 /// `j − 1`; the tangents arriving and leaving point along the control polygon's legs there
 /// (the nearest points that differ, where points repeat).
@@ -117,7 +134,7 @@ fn corner_knots(s: &Segment) -> Vec<f64> {
             let after = points[j..].iter().map(|&q| q - at).find(|d| d.norm() > 0.0);
             if let (Some(din), Some(dout)) = (before, after) {
                 let turn = din.cross(dout).atan2(din.dot(dout));
-                if turn.abs() > CORNER_TURN {
+                if turn.abs() > smooth_turn(at, din, dout) {
                     out.push(k);
                 }
             }

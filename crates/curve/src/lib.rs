@@ -53,7 +53,7 @@ mod spline;
 pub mod watch;
 
 pub use affine::Affine;
-pub use corner_knots::{DocumentSpan, CORNER_TURN};
+pub use corner_knots::{smooth_turn, DocumentSpan, CORNER_TURN};
 pub use error::{Error, Result};
 pub use extent::{box_size, curves_box, union as box_union, Box2};
 pub use fill::{FillRule, FilledOutline};

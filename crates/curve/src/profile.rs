@@ -4,7 +4,7 @@
 //! mapped linearly); its joints are classified as smooth (G1), convex or reflex corners.
 
 use crate::box_tree::BoxTree;
-use crate::corner_knots::{DocumentSpan, CORNER_TURN};
+use crate::corner_knots::{smooth_turn, DocumentSpan, CORNER_TURN};
 use crate::crossing::first_crossing;
 use crate::error::{Error, Result};
 use crate::geom::{Jet, V2};
@@ -18,7 +18,8 @@ pub struct Joint {
     /// The profile parameter there (the index of the segment that starts there).
     pub u: f64,
     /// The signed angle from the incoming to the outgoing tangent (radians, positive turning
-    /// left); within [`CORNER_TURN`] of zero the joint is smooth.
+    /// left); within [`CORNER_TURN`] of zero the joint is smooth (beyond the rounding of the
+    /// tangents: [`crate::smooth_turn`]).
     pub turn: f64,
     /// Smooth, or a corner and which kind.
     pub kind: JointKind,
@@ -63,6 +64,10 @@ pub struct Profile {
     orientation: f64,
     /// The diagonal of the box of the control points.
     size: f64,
+    /// The largest turn a joint of this profile may have and be judged smooth.
+    smooth_turn: f64,
+    /// How far apart two computations of one point of it may lie.
+    point_rounding: f64,
     /// Per segment, the box of its control points (`[lo x, lo y, hi x, hi y]`): it holds
     /// the segment, and bounds the distance from a point to it from below.
     boxes: Vec<[f64; 4]>,
@@ -142,7 +147,8 @@ impl Profile {
         let size = size_of(&segments);
         // (Far from the origin a joint's two ends may round apart by more than that: a few
         // units of rounding of the coordinates are no gap.)
-        let room = (JOIN_GAP * size).max(JOIN_ROUNDING * magnitude_of(&segments));
+        let point_rounding = JOIN_ROUNDING * magnitude_of(&segments);
+        let room = (JOIN_GAP * size).max(point_rounding);
         // (NaN fails too.)
         let joined = |gap: f64| gap <= room;
         for (i, w) in segments.windows(2).enumerate() {
@@ -174,8 +180,7 @@ impl Profile {
         let mut turns = Vec::with_capacity(n);
         for i in first..n {
             let before = &segments[(i + n - 1) % n];
-            let (Some(din), Some(dout)) = (before.end_direction(), segments[i].start_direction())
-            else {
+            let (Some(din), Some(dout)) = (before.end_leg(), segments[i].start_leg()) else {
                 return Err(Error::ZeroLength { segment: i });
             };
             let turn = din.cross(dout).atan2(din.dot(dout));
@@ -185,7 +190,7 @@ impl Profile {
                     at: segments[i].start().arr(),
                 });
             }
-            turns.push((i, turn));
+            turns.push((i, turn, smooth_turn(segments[i].start(), din, dout)));
         }
         // (Before the area: a bow tie encloses none, and its crossing is the cause.)
         if let Some(c) = first_crossing(&segments, closed, size)? {
@@ -210,12 +215,15 @@ impl Profile {
         // The seam of a smooth closed curve taken whole is smooth by its definition, however
         // its exact form's end tangents round (an ellipse far from the origin).
         let whole = closed && n == 1 && segments[0].whole_curve().is_some();
+        let smooth_turn = turns
+            .iter()
+            .fold(CORNER_TURN, |most, &(_, _, smooth)| most.max(smooth));
         let joints = turns
             .into_iter()
-            .map(|(i, turn)| Joint {
+            .map(|(i, turn, smooth)| Joint {
                 u: i as f64,
                 turn,
-                kind: if turn.abs() <= CORNER_TURN || whole {
+                kind: if turn.abs() <= smooth || whole {
                     JointKind::Smooth
                 } else if (turn > 0.0) == left {
                     JointKind::Convex
@@ -237,6 +245,8 @@ impl Profile {
             joints,
             orientation,
             size,
+            smooth_turn,
+            point_rounding,
             boxes,
             piece_boxes,
             tree,
@@ -264,6 +274,22 @@ impl Profile {
     /// tolerances.
     pub fn size(&self) -> f64 {
         self.size
+    }
+
+    /// How far apart two computations of one of its points may lie, whatever its size: a few
+    /// units of rounding of its largest coordinate (a joint's two ends, a pair found from the
+    /// segments on both sides of a joint). Far below the size near the origin; far from it,
+    /// not: a part 0.03 wide drawn at 1e8 has its points rounded by 1.5e-8.
+    pub fn point_rounding(&self) -> f64 {
+        self.point_rounding
+    }
+
+    /// The largest turn a joint of this profile may have and be judged smooth: the contract's
+    /// [`CORNER_TURN`], or more where the rounding of its tangents is more (a drawing far from
+    /// the origin with short segments; see [`crate::smooth_turn`]). Whoever trusts a joint to be
+    /// smooth trusts it to this turn.
+    pub fn smooth_turn(&self) -> f64 {
+        self.smooth_turn
     }
 
     /// The first point.

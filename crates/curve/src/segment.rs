@@ -370,23 +370,33 @@ impl Segment {
     /// The unit tangent leaving the first point (from the first control point that differs from
     /// it: a repeated end point leaves the first derivative zero there).
     pub fn start_direction(&self) -> Option<V2> {
+        self.start_leg().map(V2::unit)
+    }
+
+    /// The unit tangent arriving at the last point.
+    pub fn end_direction(&self) -> Option<V2> {
+        self.end_leg().map(V2::unit)
+    }
+
+    /// The control polygon's first leg: from the first point to the first control point that
+    /// differs from it (along the tangent leaving the first point; its length says how far
+    /// the rounding of the points can turn that tangent).
+    pub fn start_leg(&self) -> Option<V2> {
         let pts = self.curve.control_points();
         let first = V2::from_arr(pts[0]);
         pts.iter()
             .map(|&p| V2::from_arr(p) - first)
             .find(|d| d.norm() > 0.0)
-            .map(V2::unit)
     }
 
-    /// The unit tangent arriving at the last point.
-    pub fn end_direction(&self) -> Option<V2> {
+    /// The control polygon's last leg, arriving at the last point.
+    pub fn end_leg(&self) -> Option<V2> {
         let pts = self.curve.control_points();
         let last = V2::from_arr(pts[pts.len() - 1]);
         pts.iter()
             .rev()
             .map(|&p| last - V2::from_arr(p))
             .find(|d| d.norm() > 0.0)
-            .map(V2::unit)
     }
 
     /// The jet at `x ∈ [0, 1]`, the segment's share of a profile's parameter (mapped linearly

@@ -19,16 +19,18 @@ use bspline::Piecewise;
 use curve::Profile;
 
 /// Half-width of the band about zero in which a coefficient's sign is not trusted, relative to
-/// its magnitude `|A_k| |x| + |B_k|`: a joint whose tangent turns by less than
-/// [`curve::CORNER_TURN`] counts as smooth, and there `(x − C)·C'` is zero on one side of it
-/// and up to that turn (relative) on the other; the rounding of the coefficients is far
-/// below.
-const UNTRUSTED: f64 = 4.0 * curve::CORNER_TURN;
+/// its magnitude `|A_k| |x| + |B_k|`, in units of the largest turn a joint of the boundary may
+/// have and count as smooth ([`Profile::smooth_turn`]): there `(x − C)·C'` is zero on one side
+/// of the joint and up to that turn (relative) on the other; the rounding of the coefficients
+/// is far below.
+const UNTRUSTED_TURNS: f64 = 4.0;
 
 /// The normal fan of one segment: the coefficients of `G` per Bézier piece, in coordinates
 /// relative to `origin`, and at each end that is a corner the neighbour's `G` there.
 pub(crate) struct Fan {
     origin: [f64; 2],
+    /// The half-width of the untrusted band (see [`UNTRUSTED_TURNS`]).
+    untrusted: f64,
     /// Per piece, the Bernstein coefficients `(A_k, B_k)` of `G`.
     pieces: Vec<Vec<Coefficient>>,
     /// At a corner start, the last coefficient of the segment before (its `G` at the
@@ -111,6 +113,7 @@ impl Fan {
             .collect();
         Some(Fan {
             origin,
+            untrusted: UNTRUSTED_TURNS * boundary.smooth_turn(),
             pieces,
             corner: [None, None],
         })
@@ -129,7 +132,7 @@ impl Fan {
         let range = |c: &Coefficient| {
             let v = c.a[0] * centre[0] + c.a[1] * centre[1] - c.b;
             let spread = c.a[0].abs() * half[0] + c.a[1].abs() * half[1];
-            let untrusted = UNTRUSTED * ((c.a[0].abs() + c.a[1].abs()) * reach + c.b.abs());
+            let untrusted = self.untrusted * ((c.a[0].abs() + c.a[1].abs()) * reach + c.b.abs());
             (v - spread - untrusted, v + spread + untrusted)
         };
         // A corner `x` lies ahead of along the segment before it (G ≥ 0 at its end) and

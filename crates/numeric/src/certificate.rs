@@ -114,10 +114,26 @@ pub enum Doubt {
         /// The segment the tangency is on.
         segment: usize,
     },
+    /// A point of tangency from a smooth joint whose tangents turn by rounding is not
+    /// separated from another within rounding.
+    TangencyFromJoint {
+        /// The profile parameter of the joint.
+        u: f64,
+        /// The segment the tangency is on.
+        segment: usize,
+    },
     /// A foot point of a profile's corner (a pair with the corner at one end) is not
     /// separated from another within rounding.
     FootFromCorner {
         /// The profile parameter of the corner.
+        u: f64,
+        /// The segment the foot point is on.
+        segment: usize,
+    },
+    /// A foot point of a smooth joint whose tangents turn by rounding (a pair with the joint
+    /// at one end) is not separated from another within rounding.
+    FootFromJoint {
+        /// The profile parameter of the joint.
         u: f64,
         /// The segment the foot point is on.
         segment: usize,
@@ -325,6 +341,8 @@ impl Doubt {
             | Doubt::CurvatureAtJoint { .. }
             | Doubt::TangencyFromCorner { .. }
             | Doubt::FootFromCorner { .. }
+            | Doubt::FootFromJoint { .. }
+            | Doubt::TangencyFromJoint { .. }
             | Doubt::CornerFeetNotFound { .. }
             | Doubt::OffsetError { .. }
             | Doubt::LoopNotAProfile { .. }
@@ -362,6 +380,16 @@ impl fmt::Display for Doubt {
                 f,
                 "a foot point of the corner at u = {u} on segment {segment} is not separated \
                  from another within rounding"
+            ),
+            Doubt::TangencyFromJoint { u, segment } => write!(
+                f,
+                "a point of tangency from the smooth joint at u = {u} on segment {segment} is \
+                 not separated from another within rounding"
+            ),
+            Doubt::FootFromJoint { u, segment } => write!(
+                f,
+                "a foot point of the smooth joint at u = {u} on segment {segment} is not \
+                 separated from another within rounding"
             ),
             Doubt::CornerFeetNotFound { segment, why } => write!(
                 f,

@@ -81,6 +81,8 @@ fn every_reason_is_stated() {
         Doubt::CurvatureAtJoint { u: 1.0 },
         Doubt::TangencyFromCorner { u: 1.0, segment: 2 },
         Doubt::FootFromCorner { u: 1.0, segment: 2 },
+        Doubt::FootFromJoint { u: 1.0, segment: 2 },
+        Doubt::TangencyFromJoint { u: 1.0, segment: 2 },
         Doubt::CornerFeetNotFound {
             segment: 1,
             why: "no root".into(),

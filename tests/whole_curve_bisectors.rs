@@ -134,7 +134,7 @@ fn compare(
     let domain = |c: &SplineCurve| curve::ParamCurve::domain(c);
     let domains = [domain(a.1), domain(b.unwrap_or(a).1)];
     match (on_profile, on_curve) {
-        (Ok(p), Ok(c)) => difference(&Bisector::from(p), &c, domains),
+        (Ok(p), Ok(c)) => difference(&p.without_sites(), &c, domains),
         (Err(p), Err(c)) if p.to_string() == c.to_string() => None,
         (p, c) => Some(format!("results {:?} against {:?}", p.err(), c.err())),
     }
@@ -176,7 +176,9 @@ fn periodic_fixtures_run_on_their_whole_curve() {
             "{name}"
         );
         let opts = BisectorOptions::default();
-        let on_profile = Bisector::from(zeroset::profile_self_bisector(&p, &opts).unwrap());
+        let on_profile = zeroset::profile_self_bisector(&p, &opts)
+            .unwrap()
+            .without_sites();
         let on_curve = zeroset::self_bisector(spline(&c).curve(), &opts).unwrap();
         let points = |b: &Bisector| {
             b.branches

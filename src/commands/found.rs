@@ -50,14 +50,7 @@ pub type AntipodalFound = Found<antipodal::Antipodal>;
 pub type TangentsFound = Found<antipodal::Tangents>;
 
 /// What `bisector` found: of splines, or where one curve is a profile.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(untagged)]
-pub enum BisectorFound {
-    /// Of one or two splines (lines and arcs among them).
-    Curve(zeroset::Bisector),
-    /// Where one curve or both are profiles.
-    Profile(zeroset::ProfileBisector),
-}
+pub type BisectorFound = Found<zeroset::Bisector>;
 
 /// Results that say whether they are certified: a drawing's doubt makes them not.
 pub(super) trait Doubted {

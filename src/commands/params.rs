@@ -127,20 +127,7 @@ impl InDocument for zeroset::Bisector {
     fn in_document(&mut self, maps: &[DocMap<'_>]) {
         let (mt, mr) = pair(maps);
         let map = |tr: &mut [f64; 2]| *tr = [mt.param(tr[0]), mr.param(tr[1])];
-        for b in &mut self.branches {
-            b.tr.iter_mut().for_each(map);
-        }
-        for p in self.singular.iter_mut().chain(&mut self.isolated) {
-            map(&mut p.tr);
-        }
-    }
-}
-
-impl InDocument for zeroset::ProfileBisector {
-    fn in_document(&mut self, maps: &[DocMap<'_>]) {
-        let (mt, mr) = pair(maps);
-        let map = |tr: &mut [f64; 2]| *tr = [mt.param(tr[0]), mr.param(tr[1])];
-        let segments = |s: [usize; 2]| [mt.segment(s[0]), mr.segment(s[1])];
+        let segments = |s: Option<[usize; 2]>| s.map(|[t, r]| [mt.segment(t), mr.segment(r)]);
         for b in &mut self.branches {
             b.tr.iter_mut().for_each(map);
             b.segment = segments(b.segment);

@@ -72,7 +72,7 @@ pub fn bisector(
         if profiles.iter().any(has_corners) {
             found.map(|f| BisectorFound::Profile(f.into_document(&maps)))
         } else {
-            found.map(|f| BisectorFound::Curve(zeroset::Bisector::from(f).into_document(&maps)))
+            found.map(|f| BisectorFound::Curve(f.without_sites().into_document(&maps)))
         }
     } else if analytic || needs_profiles(&curves)? {
         let profiles = profiles_of(&curves)?;
@@ -130,7 +130,7 @@ fn has_corners(p: &Profile) -> bool {
 fn on_profiles(
     profiles: &[Profile],
     opts: &zeroset::BisectorOptions,
-) -> zeroset::Result<zeroset::ProfileBisector> {
+) -> zeroset::Result<zeroset::Bisector> {
     match profiles {
         [a, b] => zeroset::profile_bisector(a, b, opts),
         [one, ..] => zeroset::profile_self_bisector(one, opts),

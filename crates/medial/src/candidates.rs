@@ -10,7 +10,7 @@ use crate::sites::Sites;
 use curve::{ParamCurve, Profile, SpanOf};
 use numeric::tolerance::{ChordTol, ParamTol, Settings};
 use zeroset::{
-    profile_bisector_of_pairs, profile_self_bisector_of_pairs, BisectorOptions, ProfileBisector,
+    profile_bisector_of_pairs, profile_self_bisector_of_pairs, Bisector, BisectorOptions,
 };
 
 /// A vertex of the axis: its foot parameters, point and radius.
@@ -194,12 +194,7 @@ impl<'a> Pieces<'a> {
     }
 }
 
-fn add(
-    out: &mut Vec<Candidate>,
-    found: ProfileBisector,
-    boundary: [usize; 2],
-    pieces: [&Pieces<'_>; 2],
-) {
+fn add(out: &mut Vec<Candidate>, found: Bisector, boundary: [usize; 2], pieces: [&Pieces<'_>; 2]) {
     // Back on the boundaries: segments and parameters of the spans' profiles mapped.
     let map = |segment: [usize; 2], tr: [f64; 2]| {
         let (s0, t) = pieces[0].on_boundary(segment[0], tr[0]);
@@ -207,8 +202,9 @@ fn add(
         ([s0, s1], [t, r])
     };
     for br in found.branches {
-        let segment = map(br.segment, [0.0; 2]).0;
-        let mut tr: Vec<[f64; 2]> = br.tr.iter().map(|&tr| map(br.segment, tr).1).collect();
+        let (sites, corner) = (br.segments(), br.corners());
+        let segment = map(sites, [0.0; 2]).0;
+        let mut tr: Vec<[f64; 2]> = br.tr.iter().map(|&tr| map(sites, tr).1).collect();
         // The bisector of a closed boundary's one segment with itself is traced with its
         // feet in order (t < r): where a foot passes the seam, from the end of the
         // parameter to its start, the two trade places. Each vertex's feet are kept in the
@@ -218,7 +214,7 @@ fn add(
         let whole = pieces[0].whole;
         if boundary[0] == boundary[1]
             && segment[0] == segment[1]
-            && br.corner == [false, false]
+            && corner == [false, false]
             && whole.is_closed()
         {
             let n = whole.domain().1;
@@ -238,7 +234,7 @@ fn add(
         out.push(Candidate {
             boundary,
             segment,
-            corner: br.corner,
+            corner,
             tr,
             xy: br.xy,
         });
@@ -246,11 +242,11 @@ fn add(
     // Isolated points (the centre of an arc, of arcs of one circle): single-vertex
     // candidates, nodes of their own where no edge reaches them (a disk).
     for p in found.isolated {
-        let (segment, tr) = map(p.segment, p.tr);
+        let (segment, tr) = map(p.segments(), p.tr);
         out.push(Candidate {
             boundary,
             segment,
-            corner: p.corner,
+            corner: p.corners(),
             tr: vec![tr],
             xy: vec![p.xy],
         });

@@ -29,7 +29,7 @@ pub use bisector::{
 pub use error::{Error, Result};
 pub use profile_bisector::{
     profile_bisector, profile_bisector_of_pairs, profile_self_bisector,
-    profile_self_bisector_of_pairs, ProfileBisector, ProfileBranch, ProfilePoint,
+    profile_self_bisector_of_pairs,
 };
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};

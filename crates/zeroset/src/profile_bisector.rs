@@ -28,53 +28,13 @@ mod site_pairs;
 mod stretches;
 mod whole_curve;
 
-use crate::bisector::BisectorOptions;
+use crate::bisector::{Bisector, BisectorOptions};
 use crate::error::Result;
 use bspline::Rational;
 use curve::{JointKind, Profile};
 use point_site::Corner;
 use run::Run;
-use serde::{Deserialize, Serialize};
 use whole_curve::{one_spline, spline_bisector, spline_self_bisector};
-
-/// One branch of a profile bisector.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ProfileBranch {
-    /// `[t, r]` per vertex: the foot points' profile parameters (a corner's is constant).
-    pub tr: Vec<[f64; 2]>,
-    /// The bisector point per vertex.
-    pub xy: Vec<[f64; 2]>,
-    /// The segment of each foot point (for a corner, the segment starting there).
-    pub segment: [usize; 2],
-    /// Whether each foot point is a corner.
-    pub corner: [bool; 2],
-}
-
-/// A special point of a profile bisector.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct ProfilePoint {
-    /// Foot-point parameters.
-    pub tr: [f64; 2],
-    /// The bisector point.
-    pub xy: [f64; 2],
-    /// The segment of each foot point.
-    pub segment: [usize; 2],
-    /// Whether each foot point is a corner (always false: special points come from segments).
-    pub corner: [bool; 2],
-}
-
-/// The bisector of two profiles, or the self-bisector of one.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ProfileBisector {
-    /// The branches, site pair by site pair.
-    pub branches: Vec<ProfileBranch>,
-    /// Where branches of one pair of segments cross.
-    pub singular: Vec<ProfilePoint>,
-    /// Isolated bisector points (among them the centres of arcs of one circle).
-    pub isolated: Vec<ProfilePoint>,
-    /// False when a search limit was hit.
-    pub complete: bool,
-}
 
 /// A site of a profile.
 #[derive(Debug, Clone, Copy)]
@@ -149,7 +109,7 @@ fn sites(p: &Profile) -> Vec<Site<'_>> {
 /// closed with a smooth seam; not an analytic shape's form) are the curves they are: their
 /// bisector is [`crate::bisector`]'s of the segments' splines (a periodic spline's whole
 /// curve), its parameters the profiles', every foot on segment 0 and no corner
-/// ([`crate::Bisector::from`] drops those again).
+/// ([`crate::Bisector::without_sites`] drops those again).
 ///
 /// ```
 /// use curve::{Profile, Segment};
@@ -160,14 +120,10 @@ fn sites(p: &Profile) -> Vec<Site<'_>> {
 /// let right = Profile::new(vec![l([4., -1.], [4., 0.]), l([4., 0.], [5., 0.])], None).unwrap();
 /// let b = profile_bisector(&left, &right, &BisectorOptions::default()).unwrap();
 /// assert!(b.complete);
-/// let corners = b.branches.iter().find(|br| br.corner == [true, true]).unwrap();
+/// let corners = b.branches.iter().find(|br| br.corners() == [true, true]).unwrap();
 /// assert!(corners.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-12));
 /// ```
-pub fn profile_bisector(
-    a: &Profile,
-    b: &Profile,
-    opts: &BisectorOptions,
-) -> Result<ProfileBisector> {
+pub fn profile_bisector(a: &Profile, b: &Profile, opts: &BisectorOptions) -> Result<Bisector> {
     if let (Some(a), Some(b)) = (one_spline(a), one_spline(b)) {
         return spline_bisector(&a, &b, opts);
     }
@@ -196,7 +152,7 @@ pub fn profile_bisector(
 /// let opts = BisectorOptions::default();
 /// let kept = profile_bisector_of_pairs(&left, &right, &opts, &|i, j| i == 0 && j == 0).unwrap();
 /// let all = profile_bisector(&left, &right, &opts).unwrap();
-/// let on_middle = |br: &zeroset::ProfileBranch| br.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-9);
+/// let on_middle = |br: &zeroset::Branch| br.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-9);
 /// assert!(!kept.branches.is_empty() && kept.branches.iter().all(on_middle));
 /// assert!(!all.branches.iter().all(on_middle));
 /// ```
@@ -205,7 +161,7 @@ pub fn profile_bisector_of_pairs(
     b: &Profile,
     opts: &BisectorOptions,
     keep: &dyn Fn(usize, usize) -> bool,
-) -> Result<ProfileBisector> {
+) -> Result<Bisector> {
     let run = Run::new(&[a, b], opts);
     let (sa, sb) = (sites(a), sites(b));
     let mut out = run.empty();
@@ -229,7 +185,7 @@ pub fn profile_bisector_of_pairs(
 ///
 /// ```
 /// use curve::{Profile, Segment, SegmentKind, SplineCurve};
-/// use zeroset::{profile_self_bisector, self_bisector, Bisector, BisectorOptions};
+/// use zeroset::{profile_self_bisector, self_bisector, BisectorOptions};
 /// // A periodic cubic is its whole curve: the profile's self-bisector is the curve's, its
 /// // parameters the profile's (the curve's on [0, 4) over 4).
 /// let ring = [[2.0, 0.0], [0.0, 1.0], [-2.0, 0.0], [0.0, -1.0]];
@@ -237,7 +193,7 @@ pub fn profile_bisector_of_pairs(
 /// let segment = Segment::periodic_spline(SegmentKind::BSpline, &spline).unwrap();
 /// let profile = Profile::of_curve(segment, (0.0, 4.0)).unwrap();
 /// let opts = BisectorOptions::default();
-/// let on_profile = Bisector::from(profile_self_bisector(&profile, &opts).unwrap());
+/// let on_profile = profile_self_bisector(&profile, &opts).unwrap().without_sites();
 /// let on_curve = self_bisector(spline.curve(), &opts).unwrap();
 /// assert!(!on_curve.branches.is_empty());
 /// for (p, c) in on_profile.branches.iter().zip(&on_curve.branches) {
@@ -255,9 +211,9 @@ pub fn profile_bisector_of_pairs(
 /// let room = Profile::new(sides, None).unwrap();
 /// let opts = BisectorOptions { trimmed: true, ..Default::default() };
 /// let b = profile_self_bisector(&room, &opts).unwrap();
-/// assert!(b.branches.iter().any(|br| br.corner.contains(&true)));
+/// assert!(b.branches.iter().any(|br| br.corners().contains(&true)));
 /// ```
-pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<ProfileBisector> {
+pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<Bisector> {
     if let Some(spline) = one_spline(p) {
         return spline_self_bisector(&spline, opts);
     }
@@ -285,7 +241,7 @@ pub fn profile_self_bisector_of_pairs(
     p: &Profile,
     opts: &BisectorOptions,
     keep: &dyn Fn(usize, usize) -> bool,
-) -> Result<ProfileBisector> {
+) -> Result<Bisector> {
     let run = Run::new(&[p], opts);
     let s = sites(p);
     let mut out = run.empty();

@@ -20,13 +20,13 @@ use testkit::boundary_oracle::{off_segment, winding, Oracle};
 use testkit::cases;
 use testkit::outlines::polygon;
 use testkit::profiles::{bezier_chains, filleted_polygons};
-use zeroset::{profile_bisector, profile_self_bisector, BisectorOptions, ProfileBisector};
+use zeroset::{profile_bisector, profile_self_bisector, Bisector, BisectorOptions};
 
 /// Grid nodes per side.
 const GRID: usize = 40;
 
 /// The distance from `x` to the reported branches (as polylines).
-fn to_branches(b: &ProfileBisector, x: [f64; 2]) -> f64 {
+fn to_branches(b: &Bisector, x: [f64; 2]) -> f64 {
     let mut best = f64::INFINITY;
     for br in &b.branches {
         for w in br.xy.windows(2) {
@@ -151,7 +151,7 @@ fn check_pair(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
     bump(&FOUND, found.min(1));
     prop_assert!(found == 0 || !trimmed.branches.is_empty());
     for br in &trimmed.branches {
-        if br.corner.contains(&true) {
+        if br.corners().contains(&true) {
             bump(&CORNER_BRANCHES, 1);
         }
         for x in &br.xy {
@@ -223,7 +223,7 @@ fn check_self(p: &Profile) -> Result<(), TestCaseError> {
     }
     bump(&FOUND, found.min(1));
     for br in &trimmed.branches {
-        if br.corner.contains(&true) {
+        if br.corners().contains(&true) {
             bump(&CORNER_BRANCHES, 1);
         }
         for (tr, x) in br.tr.iter().zip(&br.xy) {
@@ -348,11 +348,11 @@ fn moves_with_the_profile(shape: &Profile) {
         let moved_shape = Profile::new(segs, None).unwrap();
         let moved = profile_self_bisector(&moved_shape, &opts).unwrap();
         assert!(moved.complete);
-        let expected = ProfileBisector {
+        let expected = Bisector {
             branches: base
                 .branches
                 .iter()
-                .map(|b| zeroset::ProfileBranch {
+                .map(|b| zeroset::Branch {
                     xy: b.xy.iter().map(|p| map.apply(*p)).collect(),
                     ..b.clone()
                 })
@@ -369,9 +369,9 @@ fn moves_with_the_profile(shape: &Profile) {
         // and where its branch stops short of that corner of the domain moves by about the
         // chord tolerance with the data.
         let n = shape.segments().len();
-        let smooth_pair = |b: &zeroset::ProfileBranch| {
-            let [i, j] = b.segment;
-            b.corner == [false, false] && (j == i + 1 || (i == 0 && j + 1 == n))
+        let smooth_pair = |b: &zeroset::Branch| {
+            let [i, j] = b.segments();
+            b.corners() == [false, false] && (j == i + 1 || (i == 0 && j + 1 == n))
         };
         // Rays are cut at 1e3 box diagonals from the box's centre, and the box of a rotated
         // shape is another: compare within 10 sizes of the shape.
@@ -388,11 +388,11 @@ fn moves_with_the_profile(shape: &Profile) {
         }
         // The corners' branches alone also match (a corner site on one side is a corner
         // site on the other).
-        let corners_only = |b: &ProfileBisector| ProfileBisector {
+        let corners_only = |b: &Bisector| Bisector {
             branches: b
                 .branches
                 .iter()
-                .filter(|br| br.corner.contains(&true))
+                .filter(|br| br.corners().contains(&true))
                 .cloned()
                 .collect(),
             isolated: Vec::new(),

@@ -8,7 +8,7 @@ use curvekit::curve::Profile;
 use curvekit::io::Curve;
 use curvekit::svg::{side_by_side, Figure, Mark, DOT};
 use numeric::certificate::Verdict;
-use zeroset::{Bisector, Branch, ProfileBisector};
+use zeroset::Bisector;
 
 /// The colour of a family of antipodal pairs (its two end pairs), set apart from the isolated
 /// pairs' dashed grey.
@@ -123,21 +123,15 @@ pub(crate) fn bisector_figure(curves: &[&Curve], r: &Bisector, title: String) ->
 pub(crate) fn profile_bisector_figure(
     curves: &[&Curve],
     profiles: &[Profile],
-    r: &ProfileBisector,
+    r: &Bisector,
     title: String,
 ) -> String {
     let (Some(a), Some(b)) = (profiles.first(), profiles.last()) else {
         return Figure::new().render();
     };
+    // (The branches alone: the special points are the profiles' sites' own.)
     let plain = Bisector {
-        branches: r
-            .branches
-            .iter()
-            .map(|b| Branch {
-                tr: b.tr.clone(),
-                xy: b.xy.clone(),
-            })
-            .collect(),
+        branches: r.branches.clone(),
         singular: Vec::new(),
         isolated: Vec::new(),
         complete: r.complete,

@@ -9,7 +9,7 @@ use antipodal::{
 use curvekit::io::Curve;
 use numeric::certificate::Verdict;
 use std::fmt::Write as _;
-use zeroset::{Bisector, ProfileBisector, ProfileBranch};
+use zeroset::{Bisector, Branch};
 
 /// The readable inflection report.
 pub(crate) fn inflections_text(curve: &Curve, r: &Inflections, stats: Option<&Stats>) -> String {
@@ -324,10 +324,10 @@ pub(crate) fn bisector_text(curves: &[&Curve], r: &Bisector, stats: Option<&Stat
 /// The readable bisector report of profiles: as for curves, with the sites of each branch.
 pub(crate) fn profile_bisector_text(
     curves: &[&Curve],
-    r: &ProfileBisector,
+    r: &Bisector,
     stats: Option<&Stats>,
 ) -> String {
-    let site = |k: usize, b: &ProfileBranch| site(b.corner[k], b.segment[k]);
+    let site = |k: usize, b: &Branch| site(b.corners()[k], b.segments()[k]);
     let branches = r
         .branches
         .iter()

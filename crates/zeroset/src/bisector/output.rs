@@ -31,13 +31,21 @@ const DIAGONAL_NEWTON_STEP: f64 = 1e-12;
 /// enough that the branch reaches the diagonal as drawn.
 const DIAGONAL_OFFSET: f64 = 1e-6;
 
-/// One branch: matched foot-point parameters and the bisector points they give.
+/// One branch: matched foot-point parameters and the bisector points they give; of profiles,
+/// also the sites its feet lie on (one site pair per branch).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Branch {
-    /// `[t, r]` per vertex.
+    /// `[t, r]` per vertex: the foot points' parameters (a profile's; a corner's is constant).
     pub tr: Vec<[f64; 2]>,
     /// `P(t, r)` per vertex.
     pub xy: Vec<[f64; 2]>,
+    /// Of profiles: the segment of each foot point (for a corner, the segment starting
+    /// there; `None` of curves, whose document does not write it: see [`Branch::segments`]).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub segment: Option<[usize; 2]>,
+    /// Of profiles: whether each foot point is a corner.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub corner: Option<[bool; 2]>,
 }
 
 /// A special point of the bisector.
@@ -47,19 +55,83 @@ pub struct BisectorPoint {
     pub tr: [f64; 2],
     /// The bisector point.
     pub xy: [f64; 2],
+    /// Of profiles: the segment of each foot point (`None` of curves).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub segment: Option<[usize; 2]>,
+    /// Of profiles: whether each foot point is a corner (always false: special points come
+    /// from segments).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub corner: Option<[bool; 2]>,
 }
 
-/// The bisector of two curves, or the self-bisector of one.
+/// The bisector of two curves or profiles, or the self-bisector of one.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Bisector {
-    /// The branches.
+    /// The branches (of profiles: site pair by site pair).
     pub branches: Vec<Branch>,
     /// Where branches cross (singular points of the zero set).
     pub singular: Vec<BisectorPoint>,
-    /// Isolated bisector points.
+    /// Isolated bisector points (among them the centres of arcs of one circle).
     pub isolated: Vec<BisectorPoint>,
     /// False when a search limit was hit.
     pub complete: bool,
+}
+
+impl Branch {
+    /// A branch of curves' bisector, its sites not stated.
+    pub(crate) fn of_curves(tr: Vec<[f64; 2]>, xy: Vec<[f64; 2]>) -> Branch {
+        Branch {
+            tr,
+            xy,
+            segment: None,
+            corner: None,
+        }
+    }
+
+    /// The segment of each foot point: a profile's, segment 0 of a curve (a profile of that
+    /// one segment).
+    pub fn segments(&self) -> [usize; 2] {
+        self.segment.unwrap_or([0; 2])
+    }
+
+    /// Whether each foot point is a corner (never on a curve).
+    pub fn corners(&self) -> [bool; 2] {
+        self.corner.unwrap_or([false; 2])
+    }
+}
+
+impl BisectorPoint {
+    /// The segment of each foot point: a profile's, segment 0 of a curve.
+    pub fn segments(&self) -> [usize; 2] {
+        self.segment.unwrap_or([0; 2])
+    }
+
+    /// Whether each foot point is a corner (never on a curve).
+    pub fn corners(&self) -> [bool; 2] {
+        self.corner.unwrap_or([false; 2])
+    }
+}
+
+impl Bisector {
+    /// The bisector as that of curves: the sites dropped, the parameters kept. For profiles
+    /// of one segment without a corner, what the curves' bisector reports.
+    pub fn without_sites(self) -> Bisector {
+        let point = |p: BisectorPoint| BisectorPoint {
+            segment: None,
+            corner: None,
+            ..p
+        };
+        Bisector {
+            branches: self
+                .branches
+                .into_iter()
+                .map(|b| Branch::of_curves(b.tr, b.xy))
+                .collect(),
+            singular: self.singular.into_iter().map(point).collect(),
+            isolated: self.isolated.into_iter().map(point).collect(),
+            complete: self.complete,
+        }
+    }
 }
 
 impl Ctx<'_> {
@@ -74,10 +146,7 @@ impl Ctx<'_> {
             } else {
                 pl.pts.iter().map(|&q| Some(q)).collect()
             };
-            let mut cur = Branch {
-                tr: Vec::new(),
-                xy: Vec::new(),
-            };
+            let mut cur = Branch::of_curves(Vec::new(), Vec::new());
             for q in pts {
                 match q.and_then(|q| self.accept(q[0], q[1])) {
                     Some((q, p)) => {
@@ -105,8 +174,12 @@ impl Ctx<'_> {
                 // For a closed curve the corner (start, end) is the diagonal across the seam.
                 .filter(|q| !closed || q[1] - q[0] < (1.0 - DIAGONAL_ARTEFACT) * ext)
                 .filter_map(|q| {
-                    self.accept(q[0], q[1])
-                        .map(|(tr, xy)| BisectorPoint { tr, xy })
+                    self.accept(q[0], q[1]).map(|(tr, xy)| BisectorPoint {
+                        tr,
+                        xy,
+                        segment: None,
+                        corner: None,
+                    })
                 })
                 .collect()
         };
@@ -123,10 +196,7 @@ fn flush(cur: &mut Branch, out: &mut Vec<Branch>) {
     if cur.tr.len() >= 2 {
         out.push(std::mem::replace(
             cur,
-            Branch {
-                tr: Vec::new(),
-                xy: Vec::new(),
-            },
+            Branch::of_curves(Vec::new(), Vec::new()),
         ));
     } else {
         cur.tr.clear();

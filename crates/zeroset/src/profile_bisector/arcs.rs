@@ -170,10 +170,10 @@ fn branch_of(
     }
     let steps = extents.map(|e| e / STEPS as f64);
     let densify = Feet { at, steps };
-    let mut out = Branch {
-        tr: Vec::with_capacity(feet.len()),
-        xy: Vec::with_capacity(feet.len()),
-    };
+    let mut out = Branch::of_curves(
+        Vec::with_capacity(feet.len()),
+        Vec::with_capacity(feet.len()),
+    );
     for (k, &v) in feet.iter().enumerate() {
         if k > 0 {
             densify.between(

@@ -80,7 +80,7 @@ pub(crate) fn line_bisector(c1: &Rational, c2: &Rational, reach: &Reach) -> Opti
                 }
             })
             .unzip();
-        branches.push(Branch { tr, xy });
+        branches.push(Branch::of_curves(tr, xy));
     }
     Some(Bisector {
         branches,

@@ -2,8 +2,7 @@
 //! size and reach; and the trimming of its result to the nearest foot points.
 
 use super::point_site::Reach;
-use super::{ProfileBisector, ProfileBranch};
-use crate::bisector::{bbox_of_points, BisectorOptions, FAR, TRIM_SLACK};
+use crate::bisector::{bbox_of_points, Bisector, BisectorOptions, Branch, FAR, TRIM_SLACK};
 use bspline::Rational;
 use curve::{ParamCurve, Profile};
 use geometry::NearestPoint;
@@ -51,8 +50,8 @@ impl<'a> Run<'a> {
         }
     }
 
-    pub(super) fn empty(&self) -> ProfileBisector {
-        ProfileBisector {
+    pub(super) fn empty(&self) -> Bisector {
+        Bisector {
             branches: Vec::new(),
             singular: Vec::new(),
             isolated: Vec::new(),
@@ -94,7 +93,7 @@ impl<'a> Run<'a> {
 
     /// With `trimmed`, keeps only the vertices whose foot points are nearest points of the
     /// profiles, splitting branches where others are dropped.
-    pub(super) fn trim(&self, out: &mut ProfileBisector, profiles: [&Profile; 2]) {
+    pub(super) fn trim(&self, out: &mut Bisector, profiles: [&Profile; 2]) {
         if !self.opts.trimmed {
             return;
         }
@@ -109,10 +108,10 @@ impl<'a> Run<'a> {
         };
         let mut branches = Vec::new();
         for b in out.branches.drain(..) {
-            let mut cur: Option<ProfileBranch> = None;
+            let mut cur: Option<Branch> = None;
             for (tr, xy) in b.tr.iter().zip(&b.xy) {
                 if keeps(*tr, *xy) {
-                    let c = cur.get_or_insert_with(|| ProfileBranch {
+                    let c = cur.get_or_insert_with(|| Branch {
                         tr: Vec::new(),
                         xy: Vec::new(),
                         ..b.clone()

@@ -5,8 +5,8 @@ use super::arcs::{arc_bisector, Carrier};
 use super::lines;
 use super::point_site::{corner_corner, corner_curve, Corner, SharedEnd};
 use super::run::Run;
-use super::{ProfileBisector, ProfileBranch, ProfilePoint, Site};
-use crate::bisector::{bisector, self_bisector, Bisector, Branch};
+use super::Site;
+use crate::bisector::{bisector, self_bisector, Bisector, BisectorPoint, Branch};
 use crate::error::Result;
 use bspline::Rational;
 use curve::{ParamCurve, Profile, Segment, SegmentKind};
@@ -28,7 +28,7 @@ impl Run<'_> {
         x: &Site<'_>,
         y: &Site<'_>,
         one_profile: bool,
-        out: &mut ProfileBisector,
+        out: &mut Bisector,
     ) -> Result<()> {
         match (x, y) {
             (
@@ -84,11 +84,11 @@ impl Run<'_> {
                 },
             ) => {
                 if let Some(ends) = corner_corner(k1, k2, &self.reach()) {
-                    out.branches.push(ProfileBranch {
+                    out.branches.push(Branch {
                         tr: vec![[*u1, *u2]; 2],
                         xy: ends.to_vec(),
-                        segment: [*i, *j],
-                        corner: [true, true],
+                        segment: Some([*i, *j]),
+                        corner: Some([true, true]),
                     });
                 }
                 Ok(())
@@ -102,7 +102,7 @@ impl Run<'_> {
         c1: &Rational,
         j: usize,
         c2: &Rational,
-        out: &mut ProfileBisector,
+        out: &mut Bisector,
     ) -> Result<()> {
         let (s1, s2) = (
             &self.profiles[0].segments()[i],
@@ -119,11 +119,11 @@ impl Run<'_> {
         }
         if let (Some(k1), Some(k2)) = (s1.circle(), s2.circle()) {
             if k1 == k2 {
-                out.isolated.push(ProfilePoint {
+                out.isolated.push(BisectorPoint {
                     tr: [self.param(0, i, mid(c1)), self.param(1, j, mid(c2))],
                     xy: k1.0,
-                    segment: [i, j],
-                    corner: [false, false],
+                    segment: Some([i, j]),
+                    corner: Some([false, false]),
                 });
                 return Ok(());
             }
@@ -144,19 +144,19 @@ impl Run<'_> {
         i: usize,
         c: &Rational,
         p: &Profile,
-        out: &mut ProfileBisector,
+        out: &mut Bisector,
     ) -> Result<()> {
         let s = &p.segments()[i];
         match (s.kind(), s.circle()) {
             (SegmentKind::Line, _) => Ok(()),
             (_, Some((centre, _))) => {
-                out.isolated.push(ProfilePoint {
+                out.isolated.push(BisectorPoint {
                     // Any two points of the arc are feet of its centre: a quarter and three
                     // quarters along (distinct, also on a full circle).
                     tr: [i as f64 + 0.25, i as f64 + 0.75],
                     xy: centre,
-                    segment: [i, i],
-                    corner: [false, false],
+                    segment: Some([i, i]),
+                    corner: Some([false, false]),
                 });
                 Ok(())
             }
@@ -169,13 +169,7 @@ impl Run<'_> {
     }
 
     /// A bisector of two segments, in the profiles' parameters.
-    fn add(
-        &self,
-        found: Bisector,
-        seg: [usize; 2],
-        determinate: Determinate,
-        out: &mut ProfileBisector,
-    ) {
+    fn add(&self, found: Bisector, seg: [usize; 2], determinate: Determinate, out: &mut Bisector) {
         let map = |tr: [f64; 2]| [self.param(0, seg[0], tr[0]), self.param(1, seg[1], tr[1])];
         out.complete &= found.complete;
         let extent = POINT_EXTENT * self.diag;
@@ -197,10 +191,7 @@ impl Run<'_> {
         };
         let pieces = found.branches.into_iter().flat_map(|b| {
             let mut runs: Vec<Branch> = Vec::new();
-            let mut cur = Branch {
-                tr: Vec::new(),
-                xy: Vec::new(),
-            };
+            let mut cur = Branch::of_curves(Vec::new(), Vec::new());
             for (tr, xy) in b.tr.into_iter().zip(b.xy) {
                 if determined(tr, xy) {
                     cur.tr.push(tr);
@@ -208,10 +199,7 @@ impl Run<'_> {
                 } else if !cur.xy.is_empty() {
                     runs.push(std::mem::replace(
                         &mut cur,
-                        Branch {
-                            tr: Vec::new(),
-                            xy: Vec::new(),
-                        },
+                        Branch::of_curves(Vec::new(), Vec::new()),
                     ));
                 }
             }
@@ -229,26 +217,26 @@ impl Run<'_> {
                 // Two straight segments whose feet meet at one end of each (parallel lines
                 // whose spans touch), an arc and the line tangent to it at their joint (every
                 // foot on the arc with the joint): one point.
-                out.isolated.push(ProfilePoint {
+                out.isolated.push(BisectorPoint {
                     tr: map(b.tr[0]),
                     xy: first,
-                    segment: seg,
-                    corner: [false, false],
+                    segment: Some(seg),
+                    corner: Some([false, false]),
                 });
                 continue;
             }
-            out.branches.push(ProfileBranch {
+            out.branches.push(Branch {
                 tr: b.tr.into_iter().map(map).collect(),
                 xy: b.xy,
-                segment: seg,
-                corner: [false, false],
+                segment: Some(seg),
+                corner: Some([false, false]),
             });
         }
-        let point = |p: crate::BisectorPoint| ProfilePoint {
+        let point = |p: BisectorPoint| BisectorPoint {
             tr: map(p.tr),
-            xy: p.xy,
-            segment: seg,
-            corner: [false, false],
+            segment: Some(seg),
+            corner: Some([false, false]),
+            ..p
         };
         out.singular.extend(found.singular.into_iter().map(point));
         out.isolated.extend(found.isolated.into_iter().map(point));
@@ -266,7 +254,7 @@ impl Run<'_> {
         c: &Rational,
         shared: Option<SharedEnd>,
         swapped: bool,
-        out: &mut ProfileBisector,
+        out: &mut Bisector,
     ) -> Result<()> {
         let (which, corner_side) = if swapped { (0, 1) } else { (1, 0) };
         let side = self.opts.sides.map(|s| s[which]);
@@ -285,11 +273,11 @@ impl Run<'_> {
             segment[corner_side] = index;
             segment[which] = j;
             is_corner[corner_side] = true;
-            out.branches.push(ProfileBranch {
+            out.branches.push(Branch {
                 tr,
                 xy,
-                segment,
-                corner: is_corner,
+                segment: Some(segment),
+                corner: Some(is_corner),
             });
         }
         Ok(())

@@ -8,7 +8,6 @@
 //! Analytic shapes (their whole curve is the shape, not a spline), lines and arcs (their
 //! closed forms) keep the profile's path.
 
-use super::{ProfileBisector, ProfileBranch, ProfilePoint};
 use crate::bisector::{bisector, self_bisector, Bisector, BisectorOptions, BisectorPoint, Branch};
 use crate::error::Result;
 use bspline::Rational;
@@ -53,23 +52,23 @@ impl OneSpline<'_> {
     }
 
     /// The curve's bisector on the profiles of `self` (its `t`) and `other` (its `r`).
-    fn on_profiles(&self, other: &OneSpline<'_>, found: Bisector) -> ProfileBisector {
+    fn on_profiles(&self, other: &OneSpline<'_>, found: Bisector) -> Bisector {
         let tr = |[t, r]: [f64; 2]| [self.param(t), other.param(r)];
-        let point = |p: BisectorPoint| ProfilePoint {
+        let point = |p: BisectorPoint| BisectorPoint {
             tr: tr(p.tr),
             xy: p.xy,
-            segment: [0; 2],
-            corner: [false; 2],
+            segment: Some([0; 2]),
+            corner: Some([false; 2]),
         };
-        ProfileBisector {
+        Bisector {
             branches: found
                 .branches
                 .into_iter()
-                .map(|b| ProfileBranch {
+                .map(|b| Branch {
                     tr: b.tr.into_iter().map(tr).collect(),
                     xy: b.xy,
-                    segment: [0; 2],
-                    corner: [false; 2],
+                    segment: Some([0; 2]),
+                    corner: Some([false; 2]),
                 })
                 .collect(),
             singular: found.singular.into_iter().map(point).collect(),
@@ -84,36 +83,11 @@ pub(super) fn spline_bisector(
     a: &OneSpline<'_>,
     b: &OneSpline<'_>,
     opts: &BisectorOptions,
-) -> Result<ProfileBisector> {
+) -> Result<Bisector> {
     Ok(a.on_profiles(b, bisector(a.curve, b.curve, opts)?))
 }
 
 /// [`crate::profile_self_bisector`] of a profile that is one spline.
-pub(super) fn spline_self_bisector(
-    p: &OneSpline<'_>,
-    opts: &BisectorOptions,
-) -> Result<ProfileBisector> {
+pub(super) fn spline_self_bisector(p: &OneSpline<'_>, opts: &BisectorOptions) -> Result<Bisector> {
     Ok(p.on_profiles(p, self_bisector(p.curve, opts)?))
-}
-
-/// A profile bisector as the bisector of its curves: the segments and corners dropped, the
-/// parameters kept (the profiles'). For a profile of one segment without a corner, what the
-/// curve's bisector reports.
-impl From<ProfileBisector> for Bisector {
-    fn from(b: ProfileBisector) -> Self {
-        let point = |p: ProfilePoint| BisectorPoint { tr: p.tr, xy: p.xy };
-        Bisector {
-            branches: b
-                .branches
-                .into_iter()
-                .map(|br| Branch {
-                    tr: br.tr,
-                    xy: br.xy,
-                })
-                .collect(),
-            singular: b.singular.into_iter().map(point).collect(),
-            isolated: b.isolated.into_iter().map(point).collect(),
-            complete: b.complete,
-        }
-    }
 }

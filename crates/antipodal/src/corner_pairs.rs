@@ -50,7 +50,8 @@ pub(crate) struct JointSite {
     /// A corner; else a smooth joint, its cone the fan of normals rounding left it.
     pub(crate) corner: bool,
     /// How far (the sine of the angle) a direction may lie beyond an edge of a smooth joint's
-    /// fan and still be in it: the turn the rounding of its tangents may hide.
+    /// fan and still be in it: the turn the rounding of its tangents may hide (its own,
+    /// [`curve::Joint::smooth_turn`]).
     pub(crate) widening: f64,
 }
 
@@ -98,9 +99,14 @@ pub(crate) fn corner_pairs(
         let curved = profile.segments()[i].kind() != SegmentKind::Line;
         curved.then(|| curves[i].jet_to(x, 2).curvature() * profile.orientation())
     };
+    // (At a smooth joint, the curvature of the segment starting there; none where either
+    // segment there is straight, as a pair found from the straight side would have none.)
+    let n = curves.len();
     let site_curvature = |site: &JointSite| {
         let c = curves[site.segment];
-        (!site.corner)
+        let before = (site.segment + n - 1) % n;
+        let straight_before = profile.segments()[before].kind() == SegmentKind::Line;
+        (!site.corner && !straight_before)
             .then(|| curvature(site.segment, c.domain().0))
             .flatten()
     };

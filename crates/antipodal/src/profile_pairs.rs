@@ -280,7 +280,7 @@ fn joint_sites(profile: &Profile, locals: &[Local]) -> Vec<JointSite> {
                 p: c.jet(c.domain().0).p,
                 cone: [inward(din), inward(dout)],
                 corner: j.kind == JointKind::Convex,
-                widening: profile.smooth_turn(),
+                widening: j.smooth_turn,
             })
         })
         .collect()

@@ -107,7 +107,7 @@ impl<'p> Side<'p> {
                     at: c.jet(c.domain().0).p,
                     tangents: [tin, tout],
                     corner: j.kind != JointKind::Smooth,
-                    widening: profile.smooth_turn(),
+                    widening: j.smooth_turn,
                 })
             })
             .collect();

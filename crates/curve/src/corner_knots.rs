@@ -17,18 +17,42 @@ use numeric::rounding::ulps;
 pub const CORNER_TURN: f64 = 1e-9;
 
 /// How far (relative to the largest coordinate of the point where two legs of a control
-/// polygon meet) rounding may move a leg: each of its two points is rounded by up to an ulp
-/// of the coordinates there (`2ε` relative), whatever their distance.
-const LEG_ROUNDING: f64 = ulps(4.0);
+/// polygon meet) rounding may move a leg from the one its author meant: each of its two
+/// points rounded by up to half an ulp of the coordinates there (`ε/2` relative at most), or,
+/// computed (an arc's from its centre, radius and angles), by about an ulp; measured on line
+/// to arc joints out to 5e8, at most `1.4 ε` over both legs.
+const LEG_ROUNDING: f64 = ulps(2.0);
+
+/// The most turn the rounding of a joint's legs is taken to explain: a joint turning more is a
+/// corner whatever its legs. Far above what a drawn fillet rounds by where drawings lie (one
+/// of radius 1e-3 at 1e8: some 1e-4), far below any drawn corner's angle (a chamfer of 1e-6 at
+/// 1e8, whose legs' directions round by 0.1 rad, stays a corner). Segments so short, so far
+/// out, that their directions round by more are beyond what the contract's corner can decide.
+const ROUNDED_TURN_CAP: f64 = 1e-3;
 
 /// The largest turn between the tangents along the legs `before` (arriving at `at`) and
 /// `after` (leaving it) that is no corner: the contract's [`CORNER_TURN`], beyond what the
-/// rounding of the legs' points can turn them by. Near the origin that rounding is
-/// negligible; far from it, on short legs, it is not (a fillet of radius 0.01 at 1e8 has its
-/// tangents rounded 1.5e-6 apart).
+/// rounding of the legs' points can turn them by (at most [`ROUNDED_TURN_CAP`]). Near the
+/// origin that rounding is negligible; far from it, on short legs, it is not: a fillet of
+/// radius 0.01 at 1e8 has its tangents rounded 1.5e-6 apart, and a line and an arc of radius
+/// 1 meeting tangentially there, some 1e-8.
+///
+/// ```
+/// use curve::{smooth_turn, CORNER_TURN, V2};
+/// // Near the origin, the contract's turn.
+/// let near = smooth_turn(V2::new(1.0, 2.0), V2::new(1.0, 0.0), V2::new(0.0, 1.0));
+/// assert!(near - CORNER_TURN < 1e-14);
+/// // At 1e8 with legs of 0.1: the legs' rounding, some 9e-7.
+/// let far = smooth_turn(V2::new(1e8, 1e8), V2::new(0.1, 0.0), V2::new(0.0, 0.1));
+/// assert!(far > 100.0 * CORNER_TURN && far < 1e-6);
+/// // With legs of 1e-6 it would be 0.09 rad: capped at 1e-3, far below a drawn corner.
+/// let tiny = smooth_turn(V2::new(1e8, 1e8), V2::new(1e-6, 0.0), V2::new(0.0, 1e-6));
+/// assert!(tiny <= CORNER_TURN + 1e-3);
+/// ```
 pub fn smooth_turn(at: V2, before: V2, after: V2) -> f64 {
     let magnitude = at.x.abs().max(at.y.abs());
-    CORNER_TURN + LEG_ROUNDING * magnitude * (1.0 / before.norm() + 1.0 / after.norm())
+    let rounding = LEG_ROUNDING * magnitude * (1.0 / before.norm() + 1.0 / after.norm());
+    CORNER_TURN + rounding.min(ROUNDED_TURN_CAP)
 }
 
 /// Where a segment of a profile lies in the parameter its document gives the profile: a

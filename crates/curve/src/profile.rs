@@ -23,6 +23,10 @@ pub struct Joint {
     pub turn: f64,
     /// Smooth, or a corner and which kind.
     pub kind: JointKind,
+    /// The largest turn this joint may have and be smooth: the contract's [`CORNER_TURN`],
+    /// beyond the rounding of its tangents ([`crate::smooth_turn`]). A smooth joint turns by
+    /// at most this; whoever trusts it to be smooth trusts it to this turn.
+    pub smooth_turn: f64,
 }
 
 /// The kind of a joint.
@@ -215,14 +219,17 @@ impl Profile {
         // The seam of a smooth closed curve taken whole is smooth by its definition, however
         // its exact form's end tangents round (an ellipse far from the origin).
         let whole = closed && n == 1 && segments[0].whole_curve().is_some();
-        let smooth_turn = turns
-            .iter()
-            .fold(CORNER_TURN, |most, &(_, _, smooth)| most.max(smooth));
-        let joints = turns
+        let joints: Vec<Joint> = turns
             .into_iter()
             .map(|(i, turn, smooth)| Joint {
                 u: i as f64,
                 turn,
+                // (The whole curve's seam turns by what it turns, and is smooth.)
+                smooth_turn: if whole {
+                    smooth.max(turn.abs())
+                } else {
+                    smooth
+                },
                 kind: if turn.abs() <= smooth || whole {
                     JointKind::Smooth
                 } else if (turn > 0.0) == left {
@@ -232,6 +239,9 @@ impl Profile {
                 },
             })
             .collect();
+        let smooth_turn = joints
+            .iter()
+            .fold(CORNER_TURN, |most, j| most.max(j.smooth_turn));
         let boxes: Vec<[f64; 4]> = segments.iter().map(control_box).collect();
         let tree = BoxTree::new(&boxes);
         let piece_boxes = segments
@@ -284,7 +294,8 @@ impl Profile {
         self.point_rounding
     }
 
-    /// The largest turn a joint of this profile may have and be judged smooth: the contract's
+    /// The largest turn a joint of this profile may have and be judged smooth (the most of its
+    /// joints' [`Joint::smooth_turn`]): the contract's
     /// [`CORNER_TURN`], or more where the rounding of its tangents is more (a drawing far from
     /// the origin with short segments; see [`crate::smooth_turn`]). Whoever trusts a joint to be
     /// smooth trusts it to this turn.

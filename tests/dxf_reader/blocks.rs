@@ -6,11 +6,11 @@
 //! by name, without hanging.
 
 use super::polylines::bulge_circle;
-use super::temp_dxf;
 use super::written::{
     arc, block, circle, entity, exploded, file, lwpolyline, rectangle, Block, Placement, Prim,
     Written,
 };
+use super::{groups, line_with_a_malformed_last_group, temp_dxf};
 use curve::{ParamCurve, Profile, Region, V2};
 use curvekit::geometry::NearestPoint;
 use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};
@@ -404,32 +404,18 @@ fn a_reference_to_a_missing_or_external_block_is_skipped_and_uncertified() {
 #[test]
 fn blocks_inserted_inside_themselves_are_skipped_by_name_without_hanging() {
     // A holds a circle and a reference to itself; B and C refer to each other.
-    let blocks = vec![
-        block(
-            "A",
-            v(0.0, 0.0),
-            vec![
-                circle(v(20.0, 0.0), 1.0),
-                Placement::at(v(5.0, 0.0)).insert("A").handle("3A"),
-            ],
-        ),
-        block(
-            "B",
-            v(0.0, 0.0),
-            vec![
-                circle(v(40.0, 0.0), 1.0),
-                Placement::at(v(5.0, 0.0)).insert("C").handle("3B"),
-            ],
-        ),
-        block(
-            "C",
-            v(0.0, 0.0),
-            vec![
-                circle(v(40.0, 0.0), 1.0),
-                Placement::at(v(5.0, 0.0)).insert("B").handle("3C"),
-            ],
-        ),
-    ];
+    // (name, the circle's x, the block referred to, the reference's handle.)
+    let blocks: Vec<Block> = [
+        ("A", 20.0, "A", "3A"),
+        ("B", 40.0, "C", "3B"),
+        ("C", 40.0, "B", "3C"),
+    ]
+    .into_iter()
+    .map(|(name, x, to, handle)| {
+        let reference = Placement::at(v(5.0, 0.0)).insert(to).handle(handle);
+        block(name, v(0.0, 0.0), vec![circle(v(x, 0.0), 1.0), reference])
+    })
+    .collect();
     let (r, skipped, doubt) = within(Duration::from_secs(20), move || {
         plate_with(
             &blocks,
@@ -519,25 +505,19 @@ fn an_expansion_past_the_bound_on_work_is_refused_quickly() {
 fn attributes_are_text_and_cells_at_one_place_are_drawn_once() {
     let attdef = entity(
         "ATTDEF",
-        vec![
-            (10, "0".into()),
-            (20, "0".into()),
-            (40, "1".into()),
-            (1, "".into()),
-            (3, "Part number?".into()),
-            (2, "PN".into()),
-        ],
+        groups(&[
+            (10, "0"),
+            (20, "0"),
+            (40, "1"),
+            (1, ""),
+            (3, "Part number?"),
+            (2, "PN"),
+        ]),
     );
     let part = block("TAG", v(0.0, 0.0), vec![attdef, circle(v(20.0, 0.0), 1.0)]);
     let attrib = entity(
         "ATTRIB",
-        vec![
-            (10, "0".into()),
-            (20, "0".into()),
-            (40, "1".into()),
-            (1, "A-113".into()),
-            (2, "PN".into()),
-        ],
+        groups(&[(10, "0"), (20, "0"), (40, "1"), (1, "A-113"), (2, "PN")]),
     );
     let insert = Placement::at(v(0.0, 0.0)).insert("TAG").with(&[(66, "1")]);
     let (r, skipped, doubt) = plate_with(
@@ -599,15 +579,7 @@ fn references_that_place_nothing_or_name_two_blocks_are_skipped() {
 #[test]
 fn a_block_the_crate_cannot_read_refuses_only_a_drawing_that_inserts_it() {
     // The LINE's last group is malformed: the dxf crate drops it without a word.
-    let broken = entity(
-        "LINE",
-        vec![
-            (10, "0".into()),
-            (20, "1".into()),
-            (11, "0".into()),
-            (21, "zero".into()),
-        ],
-    );
+    let broken = entity("LINE", line_with_a_malformed_last_group());
     let blocks = [
         block("BROKEN", v(0.0, 0.0), vec![broken]),
         block("PART", v(0.0, 0.0), vec![circle(v(20.0, 0.0), 1.0)]),

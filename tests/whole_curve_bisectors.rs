@@ -257,6 +257,18 @@ fn options(method: usize, trimmed: bool) -> BisectorOptions {
     }
 }
 
+/// The profile bisector of `a` and `b`, and the self-bisector of `a`, are the curves'.
+fn check_pair_and_self(
+    a: &(Profile, SplineCurve),
+    b: &(Profile, SplineCurve),
+    opts: &BisectorOptions,
+) -> Result<(), TestCaseError> {
+    let pair = compare((&a.0, &a.1), Some((&b.0, &b.1)), opts);
+    prop_assert_eq!(pair, None);
+    prop_assert_eq!(compare((&a.0, &a.1), None, opts), None);
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
 
@@ -271,10 +283,7 @@ proptest! {
         let a = open_star(&seed_a, [0.0, 0.0]);
         let b = open_star(&seed_b, [2.6, 0.4]);
         let (Some(a), Some(b)) = (a, b) else { return Ok(()) };
-        let opts = options(method, trimmed);
-        let pair = compare((&a.0, &a.1), Some((&b.0, &b.1)), &opts);
-        prop_assert_eq!(pair, None);
-        prop_assert_eq!(compare((&a.0, &a.1), None, &opts), None);
+        check_pair_and_self(&a, &b, &options(method, trimmed))?;
     }
 
     /// Two random periodic cubics apart, and the self-bisector of one.
@@ -289,9 +298,6 @@ proptest! {
         let b = periodic_star(&seed_b, [2.6, 0.4]);
         let (Some(a), Some(b)) = (a, b) else { return Ok(()) };
         prop_assert!(a.0.segments()[0].whole_curve().is_some());
-        let opts = options(method, trimmed);
-        let pair = compare((&a.0, &a.1), Some((&b.0, &b.1)), &opts);
-        prop_assert_eq!(pair, None);
-        prop_assert_eq!(compare((&a.0, &a.1), None, &opts), None);
+        check_pair_and_self(&a, &b, &options(method, trimmed))?;
     }
 }

@@ -6,7 +6,7 @@ use super::report::{antipodal_figure, bisector_figure, draw_curve, time_line};
 use super::{demo_medial, demo_profiles, print_out, timing, write_file, Common, Failure};
 use antipodal::Inflections;
 use curvekit::commands::CurveSummary;
-use curvekit::io::{parse_curve, Curve};
+use curvekit::io::{parse_curve, Curve, DrawingFormat};
 use curvekit::svg::{Figure, Mark, DOT};
 use numeric::certificate::Verdict;
 use numeric::tolerance::Settings;
@@ -17,13 +17,46 @@ use std::sync::mpsc;
 use std::time::Duration;
 use zeroset::{Bisector, BisectorOptions};
 
+/// The text of the file of `fixtures/` whose name is the literals given, joined; embedded.
+macro_rules! fixture_text {
+    ($($name_part:literal),+) => {
+        include_str!(concat!("../../fixtures/", $($name_part),+))
+    };
+}
+
+/// An embedded curve file of this section: (its name, the text of `fixtures/<name>.json`).
 macro_rules! fixture {
     ($name:literal) => {
+        ($name, fixture_text!($name, ".json"))
+    };
+}
+
+/// An [`EmbeddedInput`] of the profile and medial sections: `$name`, from the curve file
+/// `$file` of `fixtures/`, or from the drawing `$file` in the format `$format`.
+macro_rules! embedded_input {
+    ($name:literal, $file:literal) => {
+        ($name, None, $crate::cli::demo::fixture_text!($file))
+    };
+    ($name:literal, $format:ident, $file:literal) => {
         (
             $name,
-            include_str!(concat!("../../fixtures/", $name, ".json")),
+            Some(curvekit::io::DrawingFormat::$format),
+            $crate::cli::demo::fixture_text!($file),
         )
     };
+}
+pub(super) use {embedded_input, fixture_text};
+
+/// An embedded input of the profile and medial sections: name, format (`None`: a curve
+/// file), file text.
+pub(super) type EmbeddedInput = (&'static str, Option<DrawingFormat>, &'static str);
+
+/// The failure of the computation `what` of the example `name`, as one line.
+pub(super) fn failure<T>(name: &str, what: &str, result: &Result<T, String>) -> Option<String> {
+    result
+        .as_ref()
+        .err()
+        .map(|e| format!("{name}: {what}: {e}"))
 }
 
 /// Name and file text of each shape example.
@@ -143,21 +176,27 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
 fn errors(shapes: &[ShapeRow], bisectors: &[BisectorRow]) -> Vec<String> {
     let mut out = Vec::new();
     for r in shapes {
-        if let Some(Err(e)) = &r.inflections {
-            out.push(format!("{}: inflections: {e}", r.name));
-        }
-        if let Some(Err(e)) = &r.pairs {
-            out.push(format!("{}: antipodal: {e}", r.name));
-        }
-        if let Some(Err(e)) = &r.self_bisector {
-            out.push(format!("{}: self-bisector: {e}", r.name));
-        }
+        out.extend(
+            r.inflections
+                .as_ref()
+                .and_then(|c| failure(r.name, "inflections", c)),
+        );
+        out.extend(
+            r.pairs
+                .as_ref()
+                .and_then(|c| failure(r.name, "antipodal", c)),
+        );
+        out.extend(
+            r.self_bisector
+                .as_ref()
+                .and_then(|c| failure(r.name, "self-bisector", c)),
+        );
     }
-    for r in bisectors {
-        if let Err(e) = &r.result {
-            out.push(format!("{}: bisector: {e}", r.name));
-        }
-    }
+    out.extend(
+        bisectors
+            .iter()
+            .filter_map(|r| failure(r.name, "bisector", &r.result)),
+    );
     out
 }
 

@@ -1,10 +1,11 @@
 //! The medial-axis section of `curvekit demo`: the skeletons of the shipped pockets and
 //! outlines (embedded), with their figures.
 
+use super::demo::{embedded_input, failure, EmbeddedInput};
 use super::medial::axis_figure;
 use super::offset::figure as offset_figure;
 use super::{write_file, Common, Failure};
-use curvekit::io::{parse_region, Curve, CurveKind, DrawingFormat};
+use curvekit::io::{parse_region, Curve, CurveKind};
 use curvekit::medial::{medial_axis, MedialAxis, MedialOptions, NodeKind};
 use curvekit::offset::{offsets, OffsetOptions};
 use numeric::certificate::Verdict;
@@ -12,35 +13,12 @@ use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// An embedded region: name, format (`None`: a curve file), file text.
-type Embedded = (&'static str, Option<DrawingFormat>, &'static str);
-
-const REGIONS: &[Embedded] = &[
-    (
-        "medial-region-pocket",
-        None,
-        include_str!("../../fixtures/region-pocket.json"),
-    ),
-    (
-        "medial-drawing-pocket",
-        Some(DrawingFormat::Svg),
-        include_str!("../../fixtures/drawing-pocket.svg"),
-    ),
-    (
-        "medial-drawing-glyph-d",
-        Some(DrawingFormat::Svg),
-        include_str!("../../fixtures/drawing-glyph-d.svg"),
-    ),
-    (
-        "medial-drawing-plate",
-        Some(DrawingFormat::Dxf),
-        include_str!("../../fixtures/drawing-plate.dxf"),
-    ),
-    (
-        "medial-periodic-cubic",
-        None,
-        include_str!("../../fixtures/periodic_cubic.json"),
-    ),
+const REGIONS: &[EmbeddedInput] = &[
+    embedded_input!("medial-region-pocket", "region-pocket.json"),
+    embedded_input!("medial-drawing-pocket", Svg, "drawing-pocket.svg"),
+    embedded_input!("medial-drawing-glyph-d", Svg, "drawing-glyph-d.svg"),
+    embedded_input!("medial-drawing-plate", Dxf, "drawing-plate.dxf"),
+    embedded_input!("medial-periodic-cubic", "periodic_cubic.json"),
 ];
 
 /// Pocketing passes drawn per example: offsets at every multiple of the widest inscribed
@@ -148,12 +126,7 @@ pub(super) fn table(rows: &[MedialRow]) -> String {
 /// The failures of the section, one line each.
 pub(super) fn errors(rows: &[MedialRow]) -> Vec<String> {
     rows.iter()
-        .filter_map(|r| {
-            r.result
-                .as_ref()
-                .err()
-                .map(|e| format!("{}: medial: {e}", r.name))
-        })
+        .filter_map(|r| failure(r.name, "medial", &r.result))
         .collect()
 }
 

@@ -2,61 +2,27 @@
 //! drawings (embedded), with their antipodal pairs (corner pairs included), families,
 //! inflections and corners.
 
+use super::demo::{embedded_input, failure, EmbeddedInput};
 use super::report::antipodal_figure;
 use super::{write_file, Common, Failure};
 use antipodal::Antipodal;
 use curvekit::commands::CurveSummary;
-use curvekit::io::{parse_curve, parse_drawing, Curve, CurveKind, DrawingFormat};
+use curvekit::io::{parse_curve, parse_drawing, Curve, CurveKind};
 use numeric::certificate::Verdict;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// An embedded profile: name, format (`None`: a curve file), file text.
-type Embedded = (&'static str, Option<DrawingFormat>, &'static str);
-
 /// The examples: curve files, then drawings as design tools write them.
-const PROFILES: &[Embedded] = &[
-    (
-        "profile-cam",
-        None,
-        include_str!("../../fixtures/profile-cam.json"),
-    ),
-    (
-        "profile-bracket",
-        None,
-        include_str!("../../fixtures/profile-bracket.json"),
-    ),
-    (
-        "profile-rounded-slot",
-        None,
-        include_str!("../../fixtures/profile-rounded-slot.json"),
-    ),
-    (
-        "drawing-glyph-d",
-        Some(DrawingFormat::Svg),
-        include_str!("../../fixtures/drawing-glyph-d.svg"),
-    ),
-    (
-        "drawing-pocket",
-        Some(DrawingFormat::Svg),
-        include_str!("../../fixtures/drawing-pocket.svg"),
-    ),
-    (
-        "drawing-gear",
-        Some(DrawingFormat::Svg),
-        include_str!("../../fixtures/drawing-gear.svg"),
-    ),
-    (
-        "drawing-bracket",
-        Some(DrawingFormat::Dxf),
-        include_str!("../../fixtures/drawing-bracket.dxf"),
-    ),
-    (
-        "drawing-plate",
-        Some(DrawingFormat::Dxf),
-        include_str!("../../fixtures/drawing-plate.dxf"),
-    ),
+const PROFILES: &[EmbeddedInput] = &[
+    embedded_input!("profile-cam", "profile-cam.json"),
+    embedded_input!("profile-bracket", "profile-bracket.json"),
+    embedded_input!("profile-rounded-slot", "profile-rounded-slot.json"),
+    embedded_input!("drawing-glyph-d", Svg, "drawing-glyph-d.svg"),
+    embedded_input!("drawing-pocket", Svg, "drawing-pocket.svg"),
+    embedded_input!("drawing-gear", Svg, "drawing-gear.svg"),
+    embedded_input!("drawing-bracket", Dxf, "drawing-bracket.dxf"),
+    embedded_input!("drawing-plate", Dxf, "drawing-plate.dxf"),
 ];
 
 /// One example's results.
@@ -151,12 +117,7 @@ pub(super) fn table(rows: &[ProfileRow]) -> String {
 /// The failures of the profile section, one line each.
 pub(super) fn errors(rows: &[ProfileRow]) -> Vec<String> {
     rows.iter()
-        .filter_map(|r| {
-            r.result
-                .as_ref()
-                .err()
-                .map(|e| format!("{}: antipodal: {e}", r.name))
-        })
+        .filter_map(|r| failure(r.name, "antipodal", &r.result))
         .collect()
 }
 

@@ -40,10 +40,7 @@ pub fn parse_region(
         let read = drawing_read(file, format, bytes)?;
         return regions::pick_region(file, read, pick);
     }
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
-    })?;
-    let c = parse_curve(file, text)?;
+    let c = parse_curve(file, utf8_text(file, bytes)?)?;
     let fail = |(field, problem): FieldError| CurveFileError {
         file: c.file.clone(),
         field,
@@ -86,16 +83,7 @@ pub fn read_curve_as(
     match drawing {
         Some(format) => parse_drawing(&file, format, &bytes, pick),
         // (A curve file holds one curve: `pick` is for drawings.)
-        None => {
-            let text = std::str::from_utf8(&bytes).map_err(|e| {
-                drawing::error(
-                    &file,
-                    "document",
-                    Problem::Syntax(format!("not UTF-8: {e}")),
-                )
-            })?;
-            parse_curve(&file, text)
-        }
+        None => parse_curve(&file, utf8_text(&file, &bytes)?),
     }
 }
 
@@ -119,6 +107,13 @@ pub const STDIN_NAME: &str = "<stdin>";
 /// Most bytes read from standard input: as much as the readers' own limits let through, and a
 /// bound on memory where the stream does not end.
 const MAX_STDIN_BYTES: u64 = 1 << 30;
+
+/// The text of a file's `bytes` (a curve file, an SVG drawing), refused when it is not UTF-8;
+/// `file` names it in the error.
+fn utf8_text<'a>(file: &str, bytes: &'a [u8]) -> Result<&'a str, CurveFileError> {
+    std::str::from_utf8(bytes)
+        .map_err(|e| drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}"))))
+}
 
 fn unreadable(file: &str, e: std::io::Error) -> CurveFileError {
     drawing::error(file, "document", Problem::Unreadable(e.to_string()))
@@ -216,12 +211,7 @@ fn drawing_read(
     bytes: &[u8],
 ) -> Result<DrawingRead, CurveFileError> {
     match format {
-        DrawingFormat::Svg => {
-            let text = std::str::from_utf8(bytes).map_err(|e| {
-                drawing::error(file, "document", Problem::Syntax(format!("not UTF-8: {e}")))
-            })?;
-            svg::read(file, text)
-        }
+        DrawingFormat::Svg => svg::read(file, utf8_text(file, bytes)?),
         DrawingFormat::Dxf => dxf::read(file, bytes),
     }
 }

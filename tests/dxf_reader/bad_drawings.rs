@@ -5,7 +5,8 @@
 use super::common::curvekit;
 use super::splines::quarter_circle_text;
 use super::{
-    add, drawing, dxf_text, g, line, p3, read, read_err, read_path, read_text, saved, temp_dxf,
+    add, drawing, dxf_text, g, groups, line, line_with_a_malformed_last_group, p3, read, read_err,
+    read_path, read_text, saved, temp_dxf,
 };
 use curve::ParamCurve;
 use curvekit::io::read_curve_picked;
@@ -96,12 +97,7 @@ fn an_empty_drawing_and_one_of_text_only_are_bad_input() {
     assert!(r.stderr.contains("no usable geometry"), "{}", r.stderr);
     let text = dxf_text(&[(
         "TEXT",
-        vec![
-            (1, "hello".to_string()),
-            (10, "0".into()),
-            (20, "0".into()),
-            (40, "1".into()),
-        ],
+        groups(&[(1, "hello"), (10, "0"), (20, "0"), (40, "1")]),
     )]);
     let e = read_text(&text).unwrap_err();
     assert!(e.to_string().contains("no usable geometry"), "{e}");
@@ -148,15 +144,7 @@ fn an_entity_the_crate_drops_silently_is_refused() {
     let text = dxf_text(&[
         ("LINE", g(&[(10, 0.0), (20, 0.0), (11, 1.0), (21, 0.0)])),
         ("LINE", g(&[(10, 1.0), (20, 0.0), (11, 0.0), (21, 1.0)])),
-        (
-            "LINE",
-            vec![
-                (10, "0".to_string()),
-                (20, "1".into()),
-                (11, "0".into()),
-                (21, "zero".into()),
-            ],
-        ),
+        ("LINE", line_with_a_malformed_last_group()),
     ]);
     let crate_view = Drawing::load(&mut text.as_bytes()).unwrap();
     assert_eq!(crate_view.entities().count(), 2, "the crate was fixed");

@@ -6,11 +6,11 @@
 //! by name, without hanging.
 
 use super::polylines::bulge_circle;
-use super::temp_dxf;
 use super::written::{
     arc, block, circle, entity, exploded, file, lwpolyline, rectangle, Block, Placement, Prim,
     Written,
 };
+use super::{groups, line_with_a_malformed_last_group, temp_dxf};
 use curve::{ParamCurve, Profile, Region, V2};
 use curvekit::geometry::NearestPoint;
 use curvekit::io::{read_region, CurveFileError, CurveKind, Skipped};
@@ -294,6 +294,21 @@ fn skipped_count(skipped: &[Skipped], kind: &str) -> usize {
         .map_or(0, |s| s.count)
 }
 
+/// Asserts that `count` INSERTs were skipped, and that the doubt they leave names each of
+/// `words`.
+fn assert_inserts_skipped(
+    skipped: &[Skipped],
+    doubt: Option<String>,
+    count: usize,
+    words: &[&str],
+) {
+    assert_eq!(skipped_count(skipped, "INSERT"), count, "{skipped:?}");
+    let doubt = doubt.expect("a skipped INSERT leaves a doubt");
+    for word in words {
+        assert!(doubt.contains(word), "{word:?} is not in: {doubt}");
+    }
+}
+
 /// Runs `f` on a thread of its own and fails if it takes more than `limit`.
 fn within<T: Send + 'static>(limit: Duration, f: impl FnOnce() -> T + Send + 'static) -> T {
     let (tx, rx) = std::sync::mpsc::channel();
@@ -367,12 +382,7 @@ fn a_reference_to_a_missing_or_external_block_is_skipped_and_uncertified() {
     ];
     let (r, skipped, doubt) = plate_with(&[], inserts).unwrap();
     assert_eq!(r.holes().len(), 1);
-    assert_eq!(skipped_count(&skipped, "INSERT"), 1);
-    let doubt = doubt.unwrap();
-    assert!(
-        doubt.contains("INSERT 2A") && doubt.contains("NOPE"),
-        "{doubt}"
-    );
+    assert_inserts_skipped(&skipped, doubt, 1, &["INSERT 2A", "NOPE"]);
     // An external reference (XREF, flag 4): its drawing is another file.
     let xref = Block {
         flags: 4,
@@ -383,12 +393,7 @@ fn a_reference_to_a_missing_or_external_block_is_skipped_and_uncertified() {
         vec![Placement::at(v(0.0, 0.0)).insert("OTHER").handle("2B")],
     )
     .unwrap();
-    assert_eq!(skipped_count(&skipped, "INSERT"), 1);
-    let doubt = doubt.unwrap();
-    assert!(
-        doubt.contains("INSERT 2B") && doubt.contains("external"),
-        "{doubt}"
-    );
+    assert_inserts_skipped(&skipped, doubt, 1, &["INSERT 2B", "external"]);
     // Out of the drawing's plane (a tilted extrusion direction).
     let tilted = Placement::at(v(0.0, 0.0))
         .insert("PART")
@@ -397,39 +402,24 @@ fn a_reference_to_a_missing_or_external_block_is_skipped_and_uncertified() {
     let part = block("PART", v(0.0, 0.0), vec![circle(v(20.0, 0.0), 1.0)]);
     let (r, skipped, doubt) = plate_with(&[part], vec![tilted]).unwrap();
     assert_eq!(r.holes().len(), 0);
-    assert_eq!(skipped_count(&skipped, "INSERT"), 1);
-    assert!(doubt.unwrap().contains("INSERT 2C"));
+    assert_inserts_skipped(&skipped, doubt, 1, &["INSERT 2C"]);
 }
 
 #[test]
 fn blocks_inserted_inside_themselves_are_skipped_by_name_without_hanging() {
     // A holds a circle and a reference to itself; B and C refer to each other.
-    let blocks = vec![
-        block(
-            "A",
-            v(0.0, 0.0),
-            vec![
-                circle(v(20.0, 0.0), 1.0),
-                Placement::at(v(5.0, 0.0)).insert("A").handle("3A"),
-            ],
-        ),
-        block(
-            "B",
-            v(0.0, 0.0),
-            vec![
-                circle(v(40.0, 0.0), 1.0),
-                Placement::at(v(5.0, 0.0)).insert("C").handle("3B"),
-            ],
-        ),
-        block(
-            "C",
-            v(0.0, 0.0),
-            vec![
-                circle(v(40.0, 0.0), 1.0),
-                Placement::at(v(5.0, 0.0)).insert("B").handle("3C"),
-            ],
-        ),
-    ];
+    // (name, the circle's x, the block referred to, the reference's handle.)
+    let blocks: Vec<Block> = [
+        ("A", 20.0, "A", "3A"),
+        ("B", 40.0, "C", "3B"),
+        ("C", 40.0, "B", "3C"),
+    ]
+    .into_iter()
+    .map(|(name, x, to, handle)| {
+        let reference = Placement::at(v(5.0, 0.0)).insert(to).handle(handle);
+        block(name, v(0.0, 0.0), vec![circle(v(x, 0.0), 1.0), reference])
+    })
+    .collect();
     let (r, skipped, doubt) = within(Duration::from_secs(20), move || {
         plate_with(
             &blocks,
@@ -442,10 +432,12 @@ fn blocks_inserted_inside_themselves_are_skipped_by_name_without_hanging() {
     .unwrap();
     // A's circle once, B's and C's once each.
     assert_eq!(r.holes().len(), 3);
-    assert_eq!(skipped_count(&skipped, "INSERT"), 2);
-    let doubt = doubt.unwrap();
-    assert!(doubt.contains("INSERT 2A > INSERT 3A"), "{doubt}");
-    assert!(doubt.contains("inside itself"), "{doubt}");
+    assert_inserts_skipped(
+        &skipped,
+        doubt,
+        2,
+        &["INSERT 2A > INSERT 3A", "inside itself"],
+    );
 }
 
 #[test]
@@ -470,10 +462,7 @@ fn nesting_deeper_than_the_bound_is_skipped_by_name() {
     .unwrap();
     // Blocks 1 to 16 drawn; the reference to block 17, the 17th level, skipped.
     assert_eq!(r.holes().len(), 16);
-    assert_eq!(skipped_count(&skipped, "INSERT"), 1);
-    let doubt = doubt.unwrap();
-    assert!(doubt.contains("INSERT 110"), "{doubt}");
-    assert!(doubt.contains("16"), "{doubt}");
+    assert_inserts_skipped(&skipped, doubt, 1, &["INSERT 110", "16"]);
 }
 
 #[test]
@@ -519,25 +508,19 @@ fn an_expansion_past_the_bound_on_work_is_refused_quickly() {
 fn attributes_are_text_and_cells_at_one_place_are_drawn_once() {
     let attdef = entity(
         "ATTDEF",
-        vec![
-            (10, "0".into()),
-            (20, "0".into()),
-            (40, "1".into()),
-            (1, "".into()),
-            (3, "Part number?".into()),
-            (2, "PN".into()),
-        ],
+        groups(&[
+            (10, "0"),
+            (20, "0"),
+            (40, "1"),
+            (1, ""),
+            (3, "Part number?"),
+            (2, "PN"),
+        ]),
     );
     let part = block("TAG", v(0.0, 0.0), vec![attdef, circle(v(20.0, 0.0), 1.0)]);
     let attrib = entity(
         "ATTRIB",
-        vec![
-            (10, "0".into()),
-            (20, "0".into()),
-            (40, "1".into()),
-            (1, "A-113".into()),
-            (2, "PN".into()),
-        ],
+        groups(&[(10, "0"), (20, "0"), (40, "1"), (1, "A-113"), (2, "PN")]),
     );
     let insert = Placement::at(v(0.0, 0.0)).insert("TAG").with(&[(66, "1")]);
     let (r, skipped, doubt) = plate_with(
@@ -578,12 +561,7 @@ fn references_that_place_nothing_or_name_two_blocks_are_skipped() {
     ] {
         let (r, skipped, doubt) = plate_with(&[part()], vec![insert]).unwrap();
         assert_eq!(r.holes().len(), 0);
-        assert_eq!(skipped_count(&skipped, "INSERT"), 1);
-        let doubt = doubt.unwrap();
-        assert!(
-            doubt.contains(&format!("INSERT {h}")) && doubt.contains(why),
-            "{doubt}"
-        );
+        assert_inserts_skipped(&skipped, doubt, 1, &[&format!("INSERT {h}"), why]);
     }
     // Two blocks of one name (names are compared without case): which one is meant is unknown.
     let other = block("part", v(0.0, 0.0), vec![circle(v(40.0, 0.0), 1.0)]);
@@ -592,22 +570,13 @@ fn references_that_place_nothing_or_name_two_blocks_are_skipped() {
         vec![Placement::at(v(0.0, 0.0)).insert("PART")],
     )
     .unwrap();
-    assert_eq!(skipped_count(&skipped, "INSERT"), 1);
-    assert!(doubt.unwrap().contains("twice"));
+    assert_inserts_skipped(&skipped, doubt, 1, &["twice"]);
 }
 
 #[test]
 fn a_block_the_crate_cannot_read_refuses_only_a_drawing_that_inserts_it() {
     // The LINE's last group is malformed: the dxf crate drops it without a word.
-    let broken = entity(
-        "LINE",
-        vec![
-            (10, "0".into()),
-            (20, "1".into()),
-            (11, "0".into()),
-            (21, "zero".into()),
-        ],
-    );
+    let broken = entity("LINE", line_with_a_malformed_last_group());
     let blocks = [
         block("BROKEN", v(0.0, 0.0), vec![broken]),
         block("PART", v(0.0, 0.0), vec![circle(v(20.0, 0.0), 1.0)]),

@@ -109,6 +109,17 @@ fn g(pairs: &[(i32, f64)]) -> Vec<(i32, String)> {
     pairs.iter().map(|&(c, v)| (c, format!("{v:?}"))).collect()
 }
 
+/// Groups from `(code, text)` pairs.
+fn groups(pairs: &[(i32, &str)]) -> Vec<(i32, String)> {
+    pairs.iter().map(|&(c, v)| (c, v.to_string())).collect()
+}
+
+/// The groups of a LINE whose last group is malformed (`21` holds a word): the dxf crate
+/// drops such an entity without a word, and the reader must not.
+fn line_with_a_malformed_last_group() -> Vec<(i32, String)> {
+    groups(&[(10, "0"), (20, "1"), (11, "0"), (21, "zero")])
+}
+
 fn near(a: V2, b: V2, tol: f64) -> bool {
     (a - b).norm() <= tol
 }

@@ -2,7 +2,7 @@
 //! multiplicity two, periodic ones clamped exactly, and the refusals that name the entity and
 //! field.
 
-use super::{add, drawing, dxf_text, g, line, near, p3, read, read_err, read_text};
+use super::{add, drawing, dxf_text, g, groups, line, near, p3, read, read_err, read_text};
 use curve::{ParamCurve, Profile, SegmentKind, SplineCurve, V2};
 use dxf::entities::{EntityType, Spline};
 use dxf::Drawing;
@@ -73,17 +73,17 @@ fn a_rational_spline_keeps_its_weights() {
 /// The hand-written SPLINE groups of the quarter circle, as AutoCAD orders them (each weight
 /// after its point), with or without z groups.
 pub(crate) fn quarter_circle_text(with_z: bool) -> String {
-    let mut s = vec![
-        (5, "4A".to_string()),
-        (100, "AcDbEntity".into()),
-        (8, "0".into()),
-        (100, "AcDbSpline".into()),
-        (70, "12".into()),
-        (71, "2".into()),
-        (72, "6".into()),
-        (73, "3".into()),
-        (74, "0".into()),
-    ];
+    let mut s = groups(&[
+        (5, "4A"),
+        (100, "AcDbEntity"),
+        (8, "0"),
+        (100, "AcDbSpline"),
+        (70, "12"),
+        (71, "2"),
+        (72, "6"),
+        (73, "3"),
+        (74, "0"),
+    ]);
     s.extend(g(&[
         (40, 0.0),
         (40, 0.0),

@@ -34,8 +34,7 @@ impl Written {
 
     /// The entity with more groups at its end.
     pub(crate) fn with(mut self, more: &[(i32, &str)]) -> Written {
-        self.groups
-            .extend(more.iter().map(|&(c, v)| (c, v.to_string())));
+        self.groups.extend(super::groups(more));
         self
     }
 }

@@ -81,26 +81,14 @@ impl TensorBSpline {
 
     /// The outer product `f(t) · g(r)` of two scalar functions.
     pub fn outer(f: &BSpline, g: &BSpline) -> Result<Self> {
-        for h in [f, g] {
-            if h.dim() != 1 {
-                return Err(Error::DimensionMismatch {
-                    expected: 1,
-                    got: h.dim(),
-                });
-            }
-        }
+        check_scalar(f)?;
+        check_scalar(g)?;
         let coefs = f
             .coefs()
             .iter()
             .flat_map(|a| g.coefs().iter().map(move |b| a * b))
             .collect();
-        Ok(Self {
-            deg_t: f.degree(),
-            deg_r: g.degree(),
-            knots_t: f.knots().to_vec(),
-            knots_r: g.knots().to_vec(),
-            coefs,
-        })
+        Ok(Self::on_spaces_of(f, g, coefs))
     }
 
     /// `Σ_k f_k(t) g_k(r)`, exactly: every `f_k` (every `g_k`) is brought into one common
@@ -111,14 +99,8 @@ impl TensorBSpline {
             return Err(Error::ZeroDimension);
         }
         for (f, g) in terms {
-            for h in [f, g] {
-                if h.dim() != 1 {
-                    return Err(Error::DimensionMismatch {
-                        expected: 1,
-                        got: h.dim(),
-                    });
-                }
-            }
+            check_scalar(f)?;
+            check_scalar(g)?;
         }
         let fs: Vec<&BSpline> = terms.iter().map(|(f, _)| f).collect();
         let gs: Vec<&BSpline> = terms.iter().map(|(_, g)| g).collect();
@@ -134,13 +116,18 @@ impl TensorBSpline {
                 coefs[i * n_r + j] = (0..k).map(|m| fi[m] * gj[m]).sum();
             }
         }
-        Ok(Self {
-            deg_t: ft.degree(),
-            deg_r: gr.degree(),
-            knots_t: ft.knots().to_vec(),
-            knots_r: gr.knots().to_vec(),
+        Ok(Self::on_spaces_of(&ft, &gr, coefs))
+    }
+
+    /// The function of grid `coefs` on the spline space of `f` in `t` and of `g` in `r`.
+    fn on_spaces_of(f: &BSpline, g: &BSpline, coefs: Vec<f64>) -> Self {
+        Self {
+            deg_t: f.degree(),
+            deg_r: g.degree(),
+            knots_t: f.knots().to_vec(),
+            knots_r: g.knots().to_vec(),
             coefs,
-        })
+        }
     }
 
     /// Degree in `t`.
@@ -272,5 +259,17 @@ impl BezierPatch {
             knots_r: kr,
             coefs: self.coefs.clone(),
         }
+    }
+}
+
+/// Refuses a factor that is not a scalar function.
+fn check_scalar(h: &BSpline) -> Result<()> {
+    if h.dim() == 1 {
+        Ok(())
+    } else {
+        Err(Error::DimensionMismatch {
+            expected: 1,
+            got: h.dim(),
+        })
     }
 }

@@ -148,7 +148,7 @@ proptest! {
         // What rounding of the coordinates allows: beyond it no verdict may be wrong, within
         // it the answer may be undecided.
         let rounding = 1e-13 * (size + far * scale);
-        check_disks(&p, &xs, o, scale, size, rounding)?;
+        check_disks(&p, &placed(&xs, o, scale), size, rounding)?;
     }
 }
 
@@ -175,8 +175,7 @@ proptest! {
         let rounding = 1e-13 * (size + far * scale);
         let gap = 1e-9 * size;
         let n = p.segments().len() as f64;
-        for &(a, b) in &xs {
-            let x = [o[0] + scale * a, o[1] + scale * b];
+        for x in placed(&xs, o, scale) {
             let d = oracle_distance_between(&p, x, lo, hi);
             if d <= 1e-3 * size {
                 continue;
@@ -229,7 +228,7 @@ proptest! {
         prop_assume!(p.is_ok());
         let size = 2.0 * scale;
         let rounding = 1e-13 * (size + far * scale);
-        check_disks(&p.unwrap(), &xs, o, scale, size, rounding)?;
+        check_disks(&p.unwrap(), &placed(&xs, o, scale), size, rounding)?;
     }
 }
 
@@ -270,25 +269,29 @@ proptest! {
         // that error is carried with the points': below a size of about 1e-6, disks within
         // 1e-9 of the size may be left undecided. Never decided wrong.)
         let rounding = 1e-13 * (size + far * scale) + 1e-15;
-        check_disks(&p.unwrap(), &xs, o, scale, size, rounding)?;
+        check_disks(&p.unwrap(), &placed(&xs, o, scale), size, rounding)?;
     }
 }
 
-/// Disks about each of `xs` (in units of `scale` about `o`) a little smaller and a little
-/// larger than the distance from the profile: clear and entered, or undecided only where
-/// rounding allows; never the wrong verdict.
+/// The probe points `xs`, given in units of `scale` about `o`, in the plane.
+fn placed(xs: &[(f64, f64)], o: [f64; 2], scale: f64) -> Vec<[f64; 2]> {
+    xs.iter()
+        .map(|&(a, b)| [o[0] + scale * a, o[1] + scale * b])
+        .collect()
+}
+
+/// Disks about each of `xs` a little smaller and a little larger than the distance from the
+/// profile: clear and entered, or undecided only where rounding allows; never the wrong
+/// verdict.
 fn check_disks(
     p: &Profile,
-    xs: &[(f64, f64)],
-    o: [f64; 2],
-    scale: f64,
+    xs: &[[f64; 2]],
     size: f64,
     rounding: f64,
 ) -> Result<(), TestCaseError> {
     let gap = 1e-9 * size;
     let mut decided = 0;
-    for &(a, b) in xs {
-        let x = [o[0] + scale * a, o[1] + scale * b];
+    for &x in xs {
         let d = oracle_distance(p, x);
         if d <= 1e-3 * size {
             continue;
@@ -337,17 +340,10 @@ fn a_huge_disk_grazing_a_side_is_not_called_clear() {
     assert_ne!(verdict, Clearance::Clear);
 }
 
-/// The nearest point of `p` to each of `xs` (about `o`, in units of `scale`): at the distance
-/// its parameter gives, and no farther than the oracle's nearest point, to `rounding`.
-fn check_nearest(
-    p: &Profile,
-    xs: &[(f64, f64)],
-    o: [f64; 2],
-    scale: f64,
-    rounding: f64,
-) -> Result<(), TestCaseError> {
-    for &(a, b) in xs {
-        let x = [o[0] + scale * a, o[1] + scale * b];
+/// The nearest point of `p` to each of `xs`: at the distance its parameter gives, and no
+/// farther than the oracle's nearest point, to `rounding`.
+fn check_nearest(p: &Profile, xs: &[[f64; 2]], rounding: f64) -> Result<(), TestCaseError> {
+    for &x in xs {
         let want = oracle_distance(p, x);
         let n = p.nearest(x, 0.0);
         let q = p.jet_to(n.u, 0).p;
@@ -378,7 +374,7 @@ proptest! {
         let p = profile(&kinds, &bend, &w, scale, o);
         prop_assume!(p.is_some());
         let rounding = 1e-12 * (2.8 * scale + far * scale);
-        check_nearest(&p.unwrap(), &xs, o, scale, rounding)?;
+        check_nearest(&p.unwrap(), &placed(&xs, o, scale), rounding)?;
     }
 
     /// One strongly rational cubic Bézier (weights 1e-3 to 1e3: the curve turns within a
@@ -399,7 +395,7 @@ proptest! {
         let c = SplineCurve::clamped(3, &pts, Some(&weights), None).unwrap();
         let p = Profile::new(vec![Segment::spline(SegmentKind::Bezier, c).unwrap()], Some(false));
         prop_assume!(p.is_ok());
-        check_nearest(&p.unwrap(), &xs, [0.0, 0.0], scale, 1e-12 * scale)?;
+        check_nearest(&p.unwrap(), &placed(&xs, [0.0, 0.0], scale), 1e-12 * scale)?;
     }
 }
 

@@ -166,26 +166,24 @@ pub struct MedialAxis {
     pub complete: bool,
 }
 
-/// Whether the axis is certified, and why not, read off its doubts.
-///
-/// ```
-/// use curve::{Profile, Region, Segment};
-/// use medial::{medial_axis, Doubt, MedialOptions, Verdict};
-/// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
-/// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
-/// let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
-/// let mut axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-/// assert!(axis.certified() && axis.reason().is_none());
-/// // A doubt met makes it not certified; the first one met is its reason.
-/// axis.doubts.add(Doubt::SearchLimit);
-/// assert!(!axis.certified());
-/// assert_eq!(axis.reason().as_deref(), Some("a search limit was hit"));
-/// ```
-impl Verdict for MedialAxis {
-    fn doubts(&self) -> &Doubts {
-        &self.doubts
-    }
-}
+numeric::impl_verdict!(
+    /// Whether the axis is certified, and why not, read off its doubts.
+    ///
+    /// ```
+    /// use curve::{Profile, Region, Segment};
+    /// use medial::{medial_axis, Doubt, MedialOptions, Verdict};
+    /// let c = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
+    /// let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect();
+    /// let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+    /// let mut axis = medial_axis(&region, &MedialOptions::default()).unwrap();
+    /// assert!(axis.certified() && axis.reason().is_none());
+    /// // A doubt met makes it not certified; the first one met is its reason.
+    /// axis.doubts.add(Doubt::SearchLimit);
+    /// assert!(!axis.certified());
+    /// assert_eq!(axis.reason().as_deref(), Some("a search limit was hit"));
+    /// ```
+    MedialAxis
+);
 
 /// The medial axis of `region`.
 ///

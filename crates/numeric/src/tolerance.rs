@@ -48,6 +48,32 @@ fn checked(value: f64, in_range: bool, requirement: &'static str) -> Result<f64,
     }
 }
 
+/// The constructor, the accessor and the default of a tolerance type: `new` accepts a finite
+/// value in `$range` (its `FINEST` to its `COARSEST`, the end excluded or included) and
+/// refuses any other quoting its `REQUIREMENT`; the default is `$default`.
+macro_rules! tolerance_in_range {
+    ($kind:ident, $range:expr, $default:expr) => {
+        impl $kind {
+            /// The tolerance `value`, when it is in range.
+            pub fn new(value: f64) -> Result<Self, ToleranceError> {
+                let range = $range;
+                checked(value, range.contains(&value), Self::REQUIREMENT).map(Self)
+            }
+
+            /// The tolerance as a number.
+            pub const fn get(self) -> f64 {
+                self.0
+            }
+        }
+
+        impl Default for $kind {
+            fn default() -> Self {
+                Self($default)
+            }
+        }
+    };
+}
+
 /// A parameter tolerance relative to a domain's length, in `[1e-15, 1e-3)`.
 ///
 /// ```
@@ -68,24 +94,9 @@ impl ParamTol {
     /// What a parameter tolerance must satisfy, in words.
     pub const REQUIREMENT: &'static str = "must be at least 1e-15 (what double precision \
         resolves of a domain) and below 1e-3 (coarser brackets merge the features of a curve)";
-
-    /// The tolerance `value`, when it is in range.
-    pub fn new(value: f64) -> Result<Self, ToleranceError> {
-        let range = Self::FINEST..Self::COARSEST;
-        checked(value, range.contains(&value), Self::REQUIREMENT).map(Self)
-    }
-
-    /// The tolerance as a number.
-    pub const fn get(self) -> f64 {
-        self.0
-    }
 }
 
-impl Default for ParamTol {
-    fn default() -> Self {
-        Self(DEFAULT_PARAM_TOL)
-    }
-}
+tolerance_in_range!(ParamTol, Self::FINEST..Self::COARSEST, DEFAULT_PARAM_TOL);
 
 /// A chord tolerance relative to the size of the input, in `[1e-9, 0.5]`.
 ///
@@ -107,24 +118,9 @@ impl ChordTol {
     /// What a chord tolerance must satisfy, in words.
     pub const REQUIREMENT: &'static str = "must be at least 1e-9 (finer polylines run to \
         millions of points, past the accuracy of their vertices) and at most 0.5";
-
-    /// The tolerance `value`, when it is in range.
-    pub fn new(value: f64) -> Result<Self, ToleranceError> {
-        let range = Self::FINEST..=Self::COARSEST;
-        checked(value, range.contains(&value), Self::REQUIREMENT).map(Self)
-    }
-
-    /// The tolerance as a number.
-    pub const fn get(self) -> f64 {
-        self.0
-    }
 }
 
-impl Default for ChordTol {
-    fn default() -> Self {
-        Self(DEFAULT_CHORD_TOL)
-    }
-}
+tolerance_in_range!(ChordTol, Self::FINEST..=Self::COARSEST, DEFAULT_CHORD_TOL);
 
 /// The size relative tolerances are taken of: the contract's, max(width, height) of the
 /// bounding box of the command's inputs (all the parts of a multi-part input together), a

@@ -102,11 +102,7 @@ pub struct Offsets {
     pub complete: bool,
 }
 
-impl Verdict for Offsets {
-    fn doubts(&self) -> &Doubts {
-        &self.doubts
-    }
-}
+numeric::impl_verdict!(Offsets);
 
 /// Why offsets could not be computed.
 #[derive(Debug, Clone, PartialEq, Error)]

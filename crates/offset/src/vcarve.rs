@@ -14,7 +14,7 @@
 use crate::{Error, OffsetLoop, OffsetOptions};
 use curve::Region;
 use medial::MedialAxis;
-use numeric::certificate::{Doubts, Verdict};
+use numeric::certificate::Doubts;
 use serde::{Deserialize, Serialize};
 
 /// Options of [`vcarve`].
@@ -60,11 +60,7 @@ pub struct VCarve {
     pub complete: bool,
 }
 
-impl Verdict for VCarve {
-    fn doubts(&self) -> &Doubts {
-        &self.doubts
-    }
-}
+numeric::impl_verdict!(VCarve);
 
 impl VCarveOptions {
     /// The options checked: the angle in (0°, 180°), the depth finite and positive.

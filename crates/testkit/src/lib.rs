@@ -31,6 +31,13 @@ pub mod stars;
 pub use near::{gap, within, Near};
 pub use random::{rng, Lcg};
 
+/// The settings of a test: the default parameter tolerance, the chord tolerance `chord_tol`,
+/// and the size `size` the tolerances are relative to (`None`: each algorithm's input's).
+pub fn settings(chord_tol: f64, size: Option<f64>) -> numeric::tolerance::Settings {
+    numeric::tolerance::Settings::new(numeric::tolerance::DEFAULT_PARAM_TOL, chord_tol, size)
+        .expect("settings in range")
+}
+
 /// Re-exported for [`prop_assert_near!`], so that a crate using it needs no import of its own.
 #[doc(hidden)]
 pub use proptest as __proptest;

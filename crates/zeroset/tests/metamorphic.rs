@@ -164,12 +164,7 @@ proptest! {
 /// below are about how soon the answer comes, not its detail.
 fn coarsest_chord() -> BisectorOptions {
     BisectorOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            0.5,
-            None,
-        )
-        .expect("settings in range"),
+        settings: testkit::settings(0.5, None),
         ..Default::default()
     }
 }

@@ -103,12 +103,7 @@ const CHORD: f64 = 1e-3;
 
 fn options(trimmed: bool) -> BisectorOptions {
     BisectorOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            CHORD,
-            None,
-        )
-        .expect("settings in range"),
+        settings: testkit::settings(CHORD, None),
         trimmed,
         ..Default::default()
     }

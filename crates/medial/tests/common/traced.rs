@@ -11,12 +11,7 @@ pub(crate) const CHORD: f64 = 1e-3;
 /// defaults.
 pub(crate) fn traced_options() -> MedialOptions {
     MedialOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            CHORD,
-            None,
-        )
-        .expect("settings in range"),
+        settings: testkit::settings(CHORD, None),
         ..MedialOptions::default()
     }
 }

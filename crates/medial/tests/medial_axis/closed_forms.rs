@@ -8,6 +8,18 @@ use medial::{medial_axis, MedialOptions, NodeKind};
 use numeric::certificate::Verdict;
 use std::f64::consts::{PI, TAU};
 
+/// The region inside the polygon of `corners`.
+fn polygon(corners: &[[f64; 2]]) -> Region {
+    let n = corners.len();
+    let sides = (0..n)
+        .map(|i| Segment::line(corners[i], corners[(i + 1) % n]).unwrap())
+        .collect();
+    Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap()
+}
+
+/// An L-shaped room: a 4 × 4 square less the square [2, 4]², its reflex corner at (2, 2).
+const L_SHAPED_ROOM: [[f64; 2]; 6] = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
+
 /// A nearly flat corner (its sides turning by 1e-5 to 1e-3 rad) is a corner all the same:
 /// inside, a convex one has its edge of the axis; outside, a reflex one has its edge of the
 /// exterior axis (its feet are the turn times the radius apart, less than the share at which
@@ -20,10 +32,7 @@ fn a_nearly_flat_corner_has_its_edge() {
             let h = 2.0 * (0.5 * turn).tan();
             let dip = if convex { -h } else { h };
             let c = [[0.0, 0.0], [2.0, dip], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]];
-            let sides = (0..5)
-                .map(|i| Segment::line(c[i], c[(i + 1) % 5]).unwrap())
-                .collect();
-            let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+            let region = polygon(&c);
             let a = medial_axis(
                 &region,
                 &MedialOptions {
@@ -64,10 +73,7 @@ fn a_heptagons_nearly_flat_corner_has_its_edge() {
         [-0.4652867174014439, -0.9729391429502283],
         [0.37409388111524, -0.4690988894808179],
     ];
-    let sides = (0..7)
-        .map(|i| Segment::line(c[i], c[(i + 1) % 7]).unwrap())
-        .collect();
-    let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+    let region = polygon(&c);
     let a = axis(&region);
     for corner in c {
         assert!(
@@ -189,11 +195,7 @@ fn the_axis_is_the_same_on_one_thread() {
 /// ends.
 #[test]
 fn the_exterior_of_an_l_shaped_room_is_the_notch_diagonal() {
-    let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
-    let sides = (0..6)
-        .map(|i| Segment::line(c[i], c[(i + 1) % 6]).unwrap())
-        .collect();
-    let region = Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap();
+    let region = polygon(&L_SHAPED_ROOM);
     let opts = MedialOptions {
         exterior: true,
         ..Default::default()
@@ -225,11 +227,7 @@ fn the_exterior_of_an_l_shaped_room_is_the_notch_diagonal() {
 
 #[test]
 fn an_l_shaped_room_has_its_reflex_corner_in_the_axis() {
-    let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
-    let sides = (0..6)
-        .map(|i| Segment::line(c[i], c[(i + 1) % 6]).unwrap())
-        .collect();
-    let a = axis(&Region::new(Profile::new(sides, None).unwrap(), vec![]).unwrap());
+    let a = axis(&polygon(&L_SHAPED_ROOM));
     assert_eq!(kinds(&a, NodeKind::Corner), 5);
     assert_eq!(kinds(&a, NodeKind::Junction), 3);
     assert_eq!(a.edges.len(), 7);

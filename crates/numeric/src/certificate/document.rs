@@ -39,6 +39,32 @@ pub trait Verdict {
     }
 }
 
+/// [`Verdict`] for result types that keep their doubts in a field `doubts: Doubts`, each type
+/// with its own attributes (a doc comment, an example).
+///
+/// ```
+/// use numeric::certificate::{Doubt, Doubts, Verdict};
+///
+/// struct Found {
+///     doubts: Doubts,
+/// }
+/// numeric::impl_verdict!(Found);
+/// assert!(!Found { doubts: Doubt::SearchLimit.into() }.certified());
+/// ```
+#[macro_export]
+macro_rules! impl_verdict {
+    ($($(#[$attr:meta])* $t:ty),+ $(,)?) => {
+        $(
+            $(#[$attr])*
+            impl $crate::certificate::Verdict for $t {
+                fn doubts(&self) -> &$crate::certificate::Doubts {
+                    &self.doubts
+                }
+            }
+        )+
+    };
+}
+
 impl Verdict for Doubts {
     fn doubts(&self) -> &Doubts {
         self

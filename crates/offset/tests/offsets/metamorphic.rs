@@ -30,12 +30,7 @@ fn offsets_compose() {
         "the pocket at 0.5 is one region with its island"
     );
     let opts = OffsetOptions {
-        settings: numeric::tolerance::Settings::new(
-            numeric::tolerance::DEFAULT_PARAM_TOL,
-            numeric::tolerance::DEFAULT_CHORD_TOL,
-            Some(region.size()),
-        )
-        .expect("settings in range"),
+        settings: testkit::settings(numeric::tolerance::DEFAULT_CHORD_TOL, Some(region.size())),
     };
     for d2 in [0.25, 0.5, 0.6] {
         let axis = medial_axis(&inner[0], &MedialOptions::default()).unwrap();

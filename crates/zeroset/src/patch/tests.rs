@@ -73,36 +73,25 @@ fn restriction_and_signs_of_the_partials() {
         .expect("overlap");
     testkit::assert_near!(q.eval(0.55, 0.75), f(0.55, 0.75), 1e-14);
     assert!((q.t0 - 0.5).abs() < 1e-15 && (q.r1 - 0.8).abs() < 1e-15);
-    assert_eq!(
-        p.partial_sign(0, Rect::of((0.5, 0.6), (0.7, 0.8)), err),
-        Some(1)
-    );
-    assert_eq!(
-        p.partial_sign(1, Rect::of((0.5, 0.6), (0.7, 0.8)), err),
-        Some(1)
-    );
-    assert_eq!(
-        p.partial_sign(1, Rect::of((0.0, 0.1), (0.7, 0.8)), err),
-        Some(-1)
-    );
-    // ∂F/∂t vanishes on r = 0.6 − 0.2 t, ∂F/∂r on t = 0.3: no trusted sign across them.
-    assert_eq!(
-        p.partial_sign(0, Rect::of((0.0, 1.0), (0.4, 0.6)), err),
-        Some(0)
-    );
-    assert_eq!(
-        p.partial_sign(1, Rect::of((0.2, 0.4), (0.0, 1.0)), err),
-        Some(0)
-    );
-    // Partly outside the patch: the part inside counts; wholly outside: nothing.
-    assert_eq!(
-        p.partial_sign(0, Rect::of((0.5, 1.5), (0.7, 1.5)), err),
-        Some(1)
-    );
-    assert_eq!(
-        p.partial_sign(0, Rect::of((1.5, 2.0), (0.0, 1.0)), err),
-        None
-    );
+    // (partial: 0 for ∂F/∂t, 1 for ∂F/∂r; the box; the sign trusted there.)
+    let cases = [
+        (0, Rect::of((0.5, 0.6), (0.7, 0.8)), Some(1)),
+        (1, Rect::of((0.5, 0.6), (0.7, 0.8)), Some(1)),
+        (1, Rect::of((0.0, 0.1), (0.7, 0.8)), Some(-1)),
+        // ∂F/∂t vanishes on r = 0.6 − 0.2 t, ∂F/∂r on t = 0.3: no trusted sign across them.
+        (0, Rect::of((0.0, 1.0), (0.4, 0.6)), Some(0)),
+        (1, Rect::of((0.2, 0.4), (0.0, 1.0)), Some(0)),
+        // Partly outside the patch: the part inside counts; wholly outside: nothing.
+        (0, Rect::of((0.5, 1.5), (0.7, 1.5)), Some(1)),
+        (0, Rect::of((1.5, 2.0), (0.0, 1.0)), None),
+    ];
+    for (partial, rect, sign) in cases {
+        assert_eq!(
+            p.partial_sign(partial, rect, err),
+            sign,
+            "{partial} {rect:?}"
+        );
+    }
 }
 
 #[test]

@@ -1,7 +1,7 @@
 //! Options and the plain result types (serde) of the public entry points.
 
 use crate::error::{Error, Result};
-use numeric::certificate::{Certified, Doubts, Verdict};
+use numeric::certificate::{Certified, Doubts};
 use numeric::tolerance::{ParamTol, Settings};
 use serde::{Deserialize, Serialize};
 
@@ -208,8 +208,9 @@ pub struct Antipodal {
     /// Continua of antipodal pairs (circles, concentric arcs, facing parallel lines).
     pub families: Vec<Family>,
     /// The doubts met (none: every decision followed from certified sign tests). Read with
-    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
-    /// writes them as its `certified` and, when it is false, `reason` fields.
+    /// [`Verdict`](numeric::certificate::Verdict): `certified()`, and `reason()` (the first
+    /// doubt, stated); the document writes them as its `certified` and, when it is false,
+    /// `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
     /// False when a work limit was hit (the result may then be incomplete).
@@ -227,8 +228,9 @@ pub struct Inflections {
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub corners: Option<Vec<Corner>>,
     /// The doubts met (none: every decision followed from certified sign tests). Read with
-    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
-    /// writes them as its `certified` and, when it is false, `reason` fields.
+    /// [`Verdict`](numeric::certificate::Verdict): `certified()`, and `reason()` (the first
+    /// doubt, stated); the document writes them as its `certified` and, when it is false,
+    /// `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
 }
@@ -299,8 +301,9 @@ pub struct Tangents {
     /// The lines, sorted by `s`.
     pub lines: Vec<TangentLine>,
     /// The doubts met (none: every decision followed from certified sign tests). Read with
-    /// [`Verdict`]: `certified()`, and `reason()` (the first doubt, stated); the document
-    /// writes them as its `certified` and, when it is false, `reason` fields.
+    /// [`Verdict`](numeric::certificate::Verdict): `certified()`, and `reason()` (the first
+    /// doubt, stated); the document writes them as its `certified` and, when it is false,
+    /// `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
 }
@@ -314,22 +317,15 @@ pub(crate) trait Provenance: Sized {
 }
 
 macro_rules! provenance {
-    ($t:ty) => {
-        impl Provenance for $t {
+    ($($t:ty),+) => {
+        $(impl Provenance for $t {
             fn finished(run: Certified<Self>) -> Self {
                 let (mut result, doubts) = run.into_parts();
                 result.doubts = doubts;
                 result
             }
-        }
-
-        impl Verdict for $t {
-            fn doubts(&self) -> &Doubts {
-                &self.doubts
-            }
-        }
+        })+
+        numeric::impl_verdict!($($t),+);
     };
 }
-provenance!(Antipodal);
-provenance!(Inflections);
-provenance!(Tangents);
+provenance!(Antipodal, Inflections, Tangents);

@@ -32,7 +32,7 @@ const ROUNDED_TURN_CAP: f64 = 1e-3;
 
 /// The largest turn between the tangents along the legs `before` (arriving at `at`) and
 /// `after` (leaving it) that is no corner: the contract's [`CORNER_TURN`], beyond what the
-/// rounding of the legs' points can turn them by (at most [`ROUNDED_TURN_CAP`]). Near the
+/// rounding of the legs' points can turn them by (taken at most 1e-3 rad). Near the
 /// origin that rounding is negligible; far from it, on short legs, it is not: a fillet of
 /// radius 0.01 at 1e8 has its tangents rounded 1.5e-6 apart, and a line and an arc of radius
 /// 1 meeting tangentially there, some 1e-8.

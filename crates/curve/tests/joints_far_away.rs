@@ -26,6 +26,15 @@ fn stadium(at: [f64; 2], r: f64, half: f64) -> Profile {
     .unwrap()
 }
 
+/// The closed polygon through `corners`.
+fn polygon(corners: &[[f64; 2]]) -> Profile {
+    let n = corners.len();
+    let sides = (0..n)
+        .map(|i| Segment::line(corners[i], corners[(i + 1) % n]).unwrap())
+        .collect();
+    Profile::new(sides, None).unwrap()
+}
+
 fn kinds(p: &Profile) -> Vec<JointKind> {
     p.joints().iter().map(|j| j.kind).collect()
 }
@@ -56,10 +65,7 @@ fn a_small_true_corner_far_from_the_origin_stays_a_corner() {
         [x + 1.0, y + 1.0],
         [x, y + 1.0],
     ];
-    let sides = (0..5)
-        .map(|i| Segment::line(c[i], c[(i + 1) % 5]).unwrap())
-        .collect();
-    let p = Profile::new(sides, None).unwrap();
+    let p = polygon(&c);
     let k = kinds(&p);
     assert_eq!(k.len(), 5);
     assert!(
@@ -84,10 +90,7 @@ fn a_tiny_chamfer_far_from_the_origin_keeps_its_corners() {
         [x + 1.0, y + 1.0],
         [x, y + 1.0],
     ];
-    let sides = (0..5)
-        .map(|i| Segment::line(c[i], c[(i + 1) % 5]).unwrap())
-        .collect();
-    let p = Profile::new(sides, None).unwrap();
+    let p = polygon(&c);
     assert!(
         kinds(&p).iter().all(|&k| k == JointKind::Convex),
         "{:?}",

@@ -157,9 +157,10 @@ pub struct MedialAxis {
     /// The edges.
     pub edges: Vec<Edge>,
     /// The doubts met (none: every trimming decision and the place of every node followed
-    /// from sign tests on bounds, see the crate's documentation). Read with [`Verdict`]:
-    /// `certified()`, and `reason()` (the first doubt, stated); the document writes them as
-    /// its `certified` and, when it is false, `reason` fields.
+    /// from sign tests on bounds, see the crate's documentation). Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first
+    /// doubt, stated); the document writes them as its `certified` and, when it is false,
+    /// `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
     /// False when a search limit was hit.

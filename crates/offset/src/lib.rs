@@ -93,9 +93,10 @@ pub struct Offsets {
     pub offsets: Vec<Offset>,
     /// The doubts met (none: the axis was certified and every seam closed by Newton's
     /// method). Where the axis is not certified, [`Doubt::AxisUncertified`] comes first and
-    /// the axis's own doubts after it. Read with [`Verdict`]: `certified()`, and `reason()`
-    /// (the first doubt, stated); the document writes them as its `certified` and, when it
-    /// is false, `reason` fields.
+    /// the axis's own doubts after it. Read with
+    /// [`Verdict`]: `certified()`, and `reason()` (the first
+    /// doubt, stated); the document writes them as its `certified` and, when it is false,
+    /// `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
     /// Whether the axis was complete and the seams joined into loops.

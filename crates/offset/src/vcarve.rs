@@ -50,10 +50,10 @@ pub struct VCarve {
     /// where the axis never gets that deep).
     pub flats: Vec<OffsetLoop>,
     /// The doubts met (none: the axis and the flat passes' offset are certified): the
-    /// axis's own first, then the flat passes'. Read with [`Verdict`]: `certified()`, and
-    /// `reason()` (the first doubt, stated: where the axis is not certified, its own
-    /// reason); the document writes them as its `certified` and, when it is false, `reason`
-    /// fields.
+    /// axis's own first, then the flat passes'. Read with
+    /// [`Verdict`](numeric::certificate::Verdict): `certified()`, and `reason()` (the first
+    /// doubt, stated: where the axis is not certified, its own reason); the document writes
+    /// them as its `certified` and, when it is false, `reason` fields.
     #[serde(flatten)]
     pub doubts: Doubts,
     /// Whether the axis (and the offset) are complete.

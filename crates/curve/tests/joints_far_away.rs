@@ -5,7 +5,7 @@
 //! smooth joints were reflex corners. A drawing's joints mean the same wherever it lies.
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use curve::{Affine, JointKind, Profile, Segment};
+use curve::{Affine, JointKind, Profile, Segment, SegmentKind, SplineCurve};
 use proptest::prelude::*;
 use std::f64::consts::PI;
 use testkit::profiles::{bezier_chains, filleted_polygons};
@@ -97,6 +97,40 @@ fn a_tiny_chamfer_far_from_the_origin_keeps_its_corners() {
         p.joints()
     );
     assert!(p.smooth_turn() <= curve::CORNER_TURN + 1e-3);
+}
+
+/// A quadratic B-spline far away whose interior knot of full multiplicity (the curve passes
+/// through its middle control point, only C0 there) sits between legs of about 1e-3 along one
+/// line (their directions rounded some 1e-5 apart), or turning by `turn`: the profile of the
+/// curve is cut there only where it turns.
+fn spline_with_a_double_knot(turn: f64) -> Profile {
+    let (x, y) = (1e8 + 0.123, -7e7 + 0.456);
+    let along = |d: f64, angle: f64| [x + d * angle.cos(), y + d * angle.sin()];
+    let a = 0.3f64;
+    let points = [
+        along(-2.6e-3, a),
+        along(-1.3e-3, a),
+        along(0.0, a),
+        along(0.7e-3, a + turn),
+        along(1.4e-3, a + turn),
+    ];
+    let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.0];
+    let c = SplineCurve::clamped(2, &points, None, Some(knots)).unwrap();
+    Profile::of_curve(
+        Segment::spline(SegmentKind::BSpline, c).unwrap(),
+        (0.0, 2.0),
+    )
+    .unwrap()
+}
+
+#[test]
+fn a_double_knot_far_from_the_origin_is_a_corner_only_where_it_turns() {
+    // (A turn of 0.01 is a corner.)
+    let straight = spline_with_a_double_knot(0.0);
+    assert_eq!(straight.segments().len(), 1, "{:?}", straight.joints());
+    let bent = spline_with_a_double_knot(0.01);
+    assert_eq!(bent.segments().len(), 2);
+    assert_eq!(bent.corners().count(), 1);
 }
 
 /// The profile moved to `offset` and scaled by `scale` about the origin first.

@@ -132,8 +132,7 @@ pub(crate) fn corner_pairs(
             }
         }
     }
-    let size = frame.length_to_local(profile.size());
-    let rounding = frame.length_to_local(profile.point_rounding());
+    let at_corner_room = frame.length_to_local(profile.same_point_room(FOOT_AT_CORNER));
     for site in sites {
         for (i, c) in curves.iter().enumerate() {
             match foot_points(c, site.p, opts) {
@@ -146,7 +145,7 @@ pub(crate) fn corner_pairs(
                         }
                         let j = c.jet_to(s, 1);
                         let d = j.p - site.p;
-                        if d.norm() <= (FOOT_AT_CORNER * size).max(rounding) {
+                        if d.norm() <= at_corner_room {
                             continue;
                         }
                         if !foot.separated {

@@ -371,7 +371,7 @@ fn joint_at(profile: &Profile, k: usize, v: &View, x: f64) -> Option<JointKind> 
 /// The same pair found twice (from two segments meeting at a smooth joint, or as a corner
 /// pair and a smooth one on the cone's edge).
 fn same_pair(profile: &Profile, a: &AntipodalPair, b: &AntipodalPair) -> bool {
-    let room = (SAME_PAIR * profile.size()).max(profile.point_rounding());
+    let room = profile.same_point_room(SAME_PAIR);
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     (near(a.p, b.p) && near(a.q, b.q)) || (near(a.p, b.q) && near(a.q, b.p))
 }
@@ -416,7 +416,7 @@ fn on_family(f: &Family, p: &AntipodalPair) -> bool {
 /// Families that continue each other (the pieces of one arc, a circle's halves) joined into
 /// one: where one ends, at both sides, the other starts.
 fn merged(profile: &Profile, mut fs: Vec<Family>) -> Vec<Family> {
-    let room = (SAME_PAIR * profile.size()).max(profile.point_rounding());
+    let room = profile.same_point_room(SAME_PAIR);
     let near = |x: [f64; 2], y: [f64; 2]| (V2::from_arr(x) - V2::from_arr(y)).norm() <= room;
     // (A profile's family has its end points.)
     let ends = |f: &Family| (f.p.unwrap_or_default(), f.q.unwrap_or_default());

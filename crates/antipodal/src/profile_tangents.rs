@@ -32,9 +32,10 @@ const SAME_LINE: f64 = 1e-7;
 
 /// How close (in the frame) two points of tangency are one ([`SAME_LINE`]).
 fn same_line_room(a: &Profile, b: &Profile, frame: &Frame) -> f64 {
-    let size = a.size().max(b.size());
-    let rounding = a.point_rounding().max(b.point_rounding());
-    frame.length_to_local((SAME_LINE * size).max(rounding))
+    let room = a
+        .same_point_room(SAME_LINE)
+        .max(b.same_point_room(SAME_LINE));
+    frame.length_to_local(room)
 }
 
 /// A corner in the frame, or a smooth joint whose tangents turn by rounding (its fan, searched

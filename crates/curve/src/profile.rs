@@ -294,6 +294,12 @@ impl Profile {
         self.point_rounding
     }
 
+    /// How close two of its points are to count as one, at `share` of its size: never closer
+    /// than the rounding of its points ([`Profile::point_rounding`]).
+    pub fn same_point_room(&self, share: f64) -> f64 {
+        (share * self.size).max(self.point_rounding)
+    }
+
     /// The largest turn a joint of this profile may have and be judged smooth (the most of its
     /// joints' [`Joint::smooth_turn`]): the contract's
     /// [`CORNER_TURN`], or more where the rounding of its tangents is more (a drawing far from

@@ -6,7 +6,7 @@
 //! that the time per pair can be compared.
 #![allow(missing_docs, clippy::unwrap_used)]
 
-use antipodal::{antipodal, profile_antipodal, Options, Profile, SplineCurve};
+use antipodal::{antipodal, Options, Profile, SplineCurve};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use curvekit::io::{read_curve_picked, CurveKind};
 use std::path::Path;
@@ -45,16 +45,14 @@ fn profiles(c: &mut Criterion) {
         ("profile_gear_48", fixture("drawing-gear.svg")),
     ];
     for (name, p) in &cases {
-        let r = profile_antipodal(p, &opts).unwrap();
+        let r = antipodal(p, &opts).unwrap();
         assert!(r.complete, "{name}");
         eprintln!(
             "{name}: {} pairs, {} families",
             r.pairs.len(),
             r.families.len()
         );
-        c.bench_function(name, |b| {
-            b.iter(|| profile_antipodal(black_box(p), &opts).unwrap())
-        });
+        c.bench_function(name, |b| b.iter(|| antipodal(black_box(p), &opts).unwrap()));
     }
     for (name, s) in [
         ("bspline_star_8", star(8, 3)),

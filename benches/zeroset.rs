@@ -21,8 +21,9 @@
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use bspline::tensor::TensorBSpline;
-use bspline::{BSpline, Rational};
+use bspline::BSpline;
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use curve::SplineCurve;
 use curvekit::io::parse_curve;
 use std::time::Duration;
 use zeroset::{
@@ -32,8 +33,8 @@ use zeroset::{
 /// Parameter tolerance of every bench (see the module docs).
 const TOL: f64 = 1e-9;
 
-fn parsed(name: &str, text: &str) -> Rational {
-    parse_curve(name, text).unwrap().rational().unwrap().clone()
+fn parsed(name: &str, text: &str) -> SplineCurve {
+    SplineCurve::new(parse_curve(name, text).unwrap().rational().unwrap().clone()).unwrap()
 }
 
 /// The spline of fixture `$name` (`fixtures/$name.json`, embedded).
@@ -94,7 +95,9 @@ fn bisectors(c: &mut Criterion) {
         b.iter(|| self_bisector(black_box(&seven), &o).unwrap())
     });
     g.bench_function("f3_function_two_cubic_beziers", |b| {
-        b.iter(|| bisector_function(black_box(&cub1), black_box(&cub2), Method::F3).unwrap())
+        b.iter(|| {
+            bisector_function(black_box(cub1.curve()), black_box(cub2.curve()), Method::F3).unwrap()
+        })
     });
     g.finish();
 }

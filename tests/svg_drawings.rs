@@ -341,7 +341,7 @@ proptest! {
 /// Asserts that `p`'s antipodal pairs are certified and that the longest is as long as its
 /// diameter (sampled); the pairs, and the longest's length. `case` heads a failure's message.
 fn longest_pair_is_the_diameter(p: &Profile, case: &str) -> (curvekit::antipodal::Antipodal, f64) {
-    let r = curvekit::antipodal::profile_antipodal(p, &Default::default()).unwrap();
+    let r = curvekit::antipodal::antipodal(p, &Default::default()).unwrap();
     assert!(r.certified(), "{case}{:?}", r.reason());
     let longest = r.pairs.iter().map(|q| q.distance).fold(0.0, f64::max);
     let diameter = sampled_diameter(p);

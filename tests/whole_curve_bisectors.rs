@@ -1,8 +1,8 @@
 //! Move 6 (issue 41), zeroset's first step: a profile of one spline segment without a corner
 //! is the curve it is. On the bisector fixtures the tool takes the curve's path on, and on
-//! random open and periodic splines, the profile entries (`profile_bisector`,
-//! `profile_self_bisector`) answer as the curve entries (`bisector`, `self_bisector` on the
-//! spline's rational form), for every method, trimmed or not: the same points exactly, the
+//! random open and periodic splines, the one entry (`bisector`, `self_bisector`) answers a
+//! spline given as a profile as it answers the spline given as a curve (on its rational
+//! form), for every method, trimmed or not: the same points exactly, the
 //! same parameters to within [`PARAM_AGREEMENT`] of the domain (the profile's are shares of
 //! it), a periodic spline on its whole curve. And the tool writes the curve documents it wrote
 //! before, byte for byte.
@@ -123,12 +123,12 @@ fn compare(
 ) -> Option<String> {
     let (on_profile, on_curve) = match b {
         Some(b) => (
-            zeroset::profile_bisector(a.0, b.0, opts),
-            zeroset::bisector(a.1.curve(), b.1.curve(), opts),
+            zeroset::bisector(a.0, b.0, opts),
+            zeroset::bisector(a.1, b.1, opts),
         ),
         None => (
-            zeroset::profile_self_bisector(a.0, opts),
-            zeroset::self_bisector(a.1.curve(), opts),
+            zeroset::self_bisector(a.0, opts),
+            zeroset::self_bisector(a.1, opts),
         ),
     };
     let domain = |c: &SplineCurve| curve::ParamCurve::domain(c);
@@ -176,10 +176,8 @@ fn periodic_fixtures_run_on_their_whole_curve() {
             "{name}"
         );
         let opts = BisectorOptions::default();
-        let on_profile = zeroset::profile_self_bisector(&p, &opts)
-            .unwrap()
-            .without_sites();
-        let on_curve = zeroset::self_bisector(spline(&c).curve(), &opts).unwrap();
+        let on_profile = zeroset::self_bisector(&p, &opts).unwrap().without_sites();
+        let on_curve = zeroset::self_bisector(spline(&c), &opts).unwrap();
         let points = |b: &Bisector| {
             b.branches
                 .iter()
@@ -214,8 +212,8 @@ fn tool_writes_the_curve_documents() {
             assert!(matches!(found, BisectorFound::Curve(_)), "{}", a.file);
             // (A spline's document parameter is its own.)
             let on_curve = match &b {
-                Some(b) => zeroset::bisector(a.rational().unwrap(), b.rational().unwrap(), opts),
-                None => zeroset::self_bisector(a.rational().unwrap(), opts),
+                Some(b) => zeroset::bisector(a.plane_curve(), b.plane_curve(), opts),
+                None => zeroset::self_bisector(a.plane_curve(), opts),
             };
             let want = serde_json::to_string(&BisectorFound::Curve(on_curve.unwrap())).unwrap();
             assert_eq!(serde_json::to_string(&found).unwrap(), want, "{}", a.file);

@@ -95,7 +95,7 @@ fn the_profile_of_a_smooth_closed_curve_answers_as_the_curve() {
         let (a, b) = plane.domain();
         let period = b - a;
         let on_curve = antipodal::antipodal(plane, &opts);
-        let on_profile = antipodal::profile_antipodal(profile, &opts);
+        let on_profile = antipodal::antipodal(profile, &opts);
         let (r, q): (Antipodal, Antipodal) = match (on_curve, on_profile) {
             (Ok(r), Ok(q)) => (r, q),
             (Err(e), Err(f)) => {
@@ -127,7 +127,7 @@ fn the_profile_of_a_smooth_closed_curve_answers_as_the_curve() {
             }
         }
         let alone = antipodal::inflections(plane, &opts).unwrap();
-        let on_profile = antipodal::profile_inflections(profile, &opts).unwrap();
+        let on_profile = antipodal::inflections(profile, &opts).unwrap();
         assert_eq!(alone.doubts, on_profile.doubts, "{name}");
         for list in [&r.inflections, &q.inflections] {
             assert_eq!(alone.inflections.len(), list.len(), "{name}");
@@ -164,7 +164,7 @@ fn two_smooth_closed_curves_have_the_tangents_of_their_profiles() {
         let ((_, c1, p1), (_, c2, p2)) = (pick(first), pick(second));
         let (d1, d2) = (c1.plane_curve().domain(), c2.plane_curve().domain());
         let r = antipodal::common_tangents(c1.plane_curve(), c2.plane_curve(), &opts).unwrap();
-        let q = antipodal::profile_tangents(p1, p2, &opts).unwrap();
+        let q = antipodal::common_tangents(p1, p2, &opts).unwrap();
         assert_eq!(r.doubts, q.doubts, "{first} {second}");
         assert_eq!(r.lines.len(), q.lines.len(), "{first} {second}");
         assert!(!r.lines.is_empty());
@@ -216,8 +216,8 @@ fn the_segment_path_finds_the_same_pairs() {
         if curve_knows_more.contains(&file.as_str()) {
             continue;
         }
-        let whole = antipodal::profile_antipodal(profile, &opts).unwrap();
-        let other = antipodal::profile_antipodal(&split_in_two(profile), &opts).unwrap();
+        let whole = antipodal::antipodal(profile, &opts).unwrap();
+        let other = antipodal::antipodal(&split_in_two(profile), &opts).unwrap();
         // (A slender lemniscate is sampled on both paths, each for its own reason.)
         assert_eq!(whole.certified(), other.certified(), "{file}");
         assert_eq!(whole.pairs.len(), other.pairs.len(), "{file}");

@@ -28,7 +28,7 @@ fuzz_target!(|input: Input| {
         let r = curve.rational()?.clone();
         (r.control_points().len() <= MAX_BISECTOR_POINTS).then_some((curve, r))
     };
-    let Some((c1, r1)) = spline(&input.first) else {
+    let Some((c1, _)) = spline(&input.first) else {
         return;
     };
     let second = match &input.second {
@@ -49,8 +49,8 @@ fuzz_target!(|input: Input| {
         ..BisectorOptions::default()
     };
     let result = match &second {
-        None => zeroset::self_bisector(&r1, &opts),
-        Some((_, r2)) => zeroset::bisector(&r1, r2, &opts),
+        None => zeroset::self_bisector(c1.plane_curve(), &opts),
+        Some((c2, _)) => zeroset::bisector(c1.plane_curve(), c2.plane_curve(), &opts),
     };
     if let Ok(b) = result {
         assert!(all_finite(&serde_json::to_value(&b).unwrap()), "{b:?}");

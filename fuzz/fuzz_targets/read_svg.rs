@@ -20,7 +20,7 @@ fuzz_target!(|data: &[u8]| {
     }
     let opts = curvekit::antipodal::Options::default()
         .tolerance(curvekit::numeric::tolerance::ParamTol::new(1e-10).expect("in range"));
-    if let Ok(r) = curvekit::antipodal::profile_antipodal(profile, &opts) {
+    if let Ok(r) = curvekit::antipodal::antipodal(profile.as_ref(), &opts) {
         for pair in &r.pairs {
             assert!(
                 pair.p.iter().chain(&pair.q).all(|x| x.is_finite()),

@@ -295,9 +295,10 @@ fn bisector_row(
 /// The bisector of one or two curves (self-bisector for one), computed in a thread so that a
 /// slow case is reported as such instead of stalling the demo.
 fn bisector_within_budget(curves: &[Curve], settings: Settings) -> Result<Bisector, String> {
-    let rationals: Vec<bspline::Rational> = curves
+    let splines: Vec<curve::SplineCurve> = curves
         .iter()
         .filter_map(|c| c.rational().cloned())
+        .filter_map(|r| curve::SplineCurve::new(r).ok())
         .collect();
     let opts = BisectorOptions {
         settings,
@@ -305,7 +306,7 @@ fn bisector_within_budget(curves: &[Curve], settings: Settings) -> Result<Bisect
     };
     let (tx, rx) = mpsc::channel();
     std::thread::spawn(move || {
-        let r = match rationals.as_slice() {
+        let r = match splines.as_slice() {
             [one] => zeroset::self_bisector(one, &opts),
             [a, b] => zeroset::bisector(a, b, &opts),
             _ => Err(zeroset::Error::NotPlanar { which: 1, dim: 0 }),

@@ -46,7 +46,7 @@ pub(super) fn rows(out: &Path, common: &Common) -> Result<Vec<ProfileRow>, Failu
             };
             let result = match &curve.shape {
                 CurveKind::Profile(p) => {
-                    antipodal::profile_antipodal(p, &common.options()?).map_err(|e| e.to_string())
+                    antipodal::antipodal(p.as_ref(), &common.options()?).map_err(|e| e.to_string())
                 }
                 _ => Err("not a profile".to_string()),
             };

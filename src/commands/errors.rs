@@ -240,7 +240,8 @@ pub(super) fn antipodal_error(e: antipodal::Error, curves: &[&Curve]) -> Command
             None => CommandError::Antipodal(e),
         },
         E::Spline(e) => CommandError::Spline(e),
-        E::TooComplex { .. } => CommandError::Antipodal(e),
+        // (The tool takes every curve as a profile itself where one is needed.)
+        E::TooComplex { .. } | E::NoSegment { .. } => CommandError::Antipodal(e),
         // (A refusal of the two profiles together: the first names them.)
         E::TooManySegmentPairs { .. } => match curves.first() {
             Some(c) => refuse(c, "segments", &e.to_string()),

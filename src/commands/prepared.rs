@@ -97,13 +97,13 @@ struct OneCurveCommand<T> {
 
 const INFLECTIONS_BY_ROUTE: OneCurveCommand<antipodal::Inflections> = OneCurveCommand {
     name: "inflections",
-    on_profile: antipodal::profile_inflections,
+    on_profile: |profile, opts| antipodal::inflections(profile, opts),
     on_smooth: |prepared, opts| prepared.inflections(opts),
 };
 
 const ANTIPODAL_BY_ROUTE: OneCurveCommand<antipodal::Antipodal> = OneCurveCommand {
     name: "antipodal",
-    on_profile: antipodal::profile_antipodal,
+    on_profile: |profile, opts| antipodal::antipodal(profile, opts),
     on_smooth: |prepared, opts| prepared.antipodal(opts),
 };
 

@@ -21,7 +21,7 @@ pub fn tangents(
     one_curve(&both, "tangents")?;
     let found = if needs_profiles(&both)? {
         let (a, b) = (as_profile(c1, "tangents")?, as_profile(c2, "tangents")?);
-        antipodal::profile_tangents(&a, &b, opts).map(|f| {
+        antipodal::common_tangents(&a, &b, opts).map(|f| {
             TangentsFound::Profile(f.into_document(&[DocMap::Profile(&a), DocMap::Profile(&b)]))
         })
     } else {
@@ -83,12 +83,12 @@ pub fn bisector(
         // profile's parameter would round) keep the zero set of their rational forms in this
         // step: a profile would take their closed forms, which change the results (for the
         // better: a circle's centre found), a later step of its own.
-        let rationals = curves
+        let splines = curves
             .iter()
             .map(|c| spline_of(c))
             .collect::<Result<Vec<_>, _>>()?;
         let maps: Vec<DocMap<'_>> = curves.iter().map(|c| smooth_map(c)).collect();
-        match &rationals[..] {
+        match splines[..] {
             [a, b] => zeroset::bisector(a, b, opts),
             [one, ..] => zeroset::self_bisector(one, opts),
             [] => unreachable!("one curve at least"),
@@ -132,15 +132,16 @@ fn on_profiles(
     opts: &zeroset::BisectorOptions,
 ) -> zeroset::Result<zeroset::Bisector> {
     match profiles {
-        [a, b] => zeroset::profile_bisector(a, b, opts),
-        [one, ..] => zeroset::profile_self_bisector(one, opts),
+        [a, b] => zeroset::bisector(a, b, opts),
+        [one, ..] => zeroset::self_bisector(one, opts),
         [] => unreachable!("one curve at least"),
     }
 }
 
-/// Bisectors are computed on the exact rational form, which only spline kinds have.
-fn spline_of(c: &Curve) -> Result<&bspline::Rational, CommandError> {
-    c.rational().ok_or_else(|| {
+/// A curve read as a curve has its bisector computed on its exact rational form, which only
+/// spline kinds (lines and arcs among them) have: the curve as that spline.
+fn spline_of(c: &Curve) -> Result<&dyn curve::PlaneCurve, CommandError> {
+    c.rational().map(|_| c.plane_curve()).ok_or_else(|| {
         refuse(
             c,
             "kind",

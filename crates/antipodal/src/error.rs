@@ -47,6 +47,16 @@ pub enum Error {
         /// Why.
         source: Box<Error>,
     },
+    /// A curve known by evaluation only was paired with a profile: it has no exact form to be
+    /// taken as a profile's segment.
+    #[error(
+        "curve {which} is known by evaluation only: it has no exact form to be taken as a \
+         profile's segment"
+    )]
+    NoSegment {
+        /// 1 or 2: which of the command's curves.
+        which: usize,
+    },
     /// The operation needs a closed curve.
     #[error("the curve is not closed (its ends are {gap} apart)")]
     NotClosed {

@@ -47,6 +47,7 @@ mod corner_pairs;
 mod dissect;
 mod driver;
 mod enclosure;
+mod entries;
 mod error;
 mod families;
 mod finish;
@@ -70,16 +71,15 @@ mod types;
 mod view;
 mod whole_curve;
 
-pub use curve::{shapes, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, SplineCurve, V2};
+pub use curve::{
+    shapes, Boundary, Frame, Jet, ParamCurve, PlaneCurve, Profile, Segment, SplineCurve, V2,
+};
+pub use entries::{antipodal, common_tangents, inflections};
 pub use error::{Error, Result};
 pub use forms::SymbolicForms;
 pub use numeric::certificate::{Doubt, Doubts, Verdict};
-pub use prepare::{
-    antipodal, common_tangents, inflections, prepare, prepare_pair, prepare_shared, Prepared,
-};
-pub use profile_pairs::profile_antipodal;
-pub use profile_tangents::{profile_tangents, MAX_SEGMENT_PAIRS};
-pub use profiles::profile_inflections;
+pub use prepare::{prepare, prepare_pair, prepare_shared, Prepared};
+pub use profile_tangents::MAX_SEGMENT_PAIRS;
 pub use types::{
     Antipodal, AntipodalPair, Corner, CornerKind, Family, Inflection, InflectionKind, Inflections,
     Options, PairType, TangentLine, Tangents,

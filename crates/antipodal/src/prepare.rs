@@ -292,38 +292,7 @@ fn frame_of(curve: &dyn PlaneCurve) -> Frame {
         .map_or(Frame::IDENTITY, |e| Frame::for_points(&e.extent()))
 }
 
-/// Every pair of antipodal points of a simple closed curve (Jia 2004): prepares the curve and
-/// runs once (see [`Prepared::antipodal`]).
-///
-/// ```
-/// use antipodal::{antipodal, shapes::Ellipse, Options};
-/// let e = Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap();
-/// let r = antipodal(&e, &Options::default()).unwrap();
-/// assert_eq!(r.pairs.len(), 2);
-/// ```
-pub fn antipodal(curve: &dyn PlaneCurve, opts: &Options) -> Result<Antipodal> {
-    prepare(curve).antipodal(opts)
-}
-
-/// All simple inflections of a curve (Jia §5.1; certified for the curve kinds of `curve`).
-///
-/// ```
-/// use antipodal::{inflections, Options, SplineCurve, Verdict};
-/// // An S-shaped cubic Bézier turns left, then right: one inflection, at its middle by
-/// // symmetry.
-/// let s = SplineCurve::clamped(3, &[[0.0, 0.0], [1.0, 1.0], [2.0, -1.0], [3.0, 0.0]], None, None)
-///     .unwrap();
-/// let r = inflections(&s, &Options::default()).unwrap();
-/// assert!(r.certified());
-/// assert_eq!(r.inflections.len(), 1);
-/// assert!((r.inflections[0].u - 0.5).abs() < 1e-12);
-/// assert!((r.inflections[0].p[0] - 1.5).abs() < 1e-12);
-/// ```
-pub fn inflections(curve: &dyn PlaneCurve, opts: &Options) -> Result<Inflections> {
-    prepare(curve).inflections(opts)
-}
-
-/// [`inflections`] with the doubts met, not yet stated: for the runs that join them into
+/// [`crate::inflections`] on a curve, with the doubts met, not yet stated: for the runs that join them into
 /// their own (a profile's segments).
 pub(crate) fn inflections_run(
     curve: &dyn PlaneCurve,
@@ -358,28 +327,7 @@ pub fn prepare_pair<'c>(
     )
 }
 
-/// Every line tangent to both curves (Jia §2.5): prepares them in one frame and runs once (see
-/// [`Prepared::common_tangents`]).
-///
-/// ```
-/// use antipodal::{common_tangents, shapes::Circle, Options};
-/// // Two unit circles apart: two outer tangents (y = ±1) and two crossing between them.
-/// let (a, b) = (Circle::new(1.0, [0.0, 0.0]).unwrap(), Circle::new(1.0, [4.0, 0.0]).unwrap());
-/// let r = common_tangents(&a, &b, &Options::default()).unwrap();
-/// assert_eq!(r.lines.len(), 4);
-/// let outer = r.lines.iter().filter(|l| (l.p[1] - l.q[1]).abs() < 1e-12).count();
-/// assert_eq!(outer, 2);
-/// ```
-pub fn common_tangents(
-    c1: &dyn PlaneCurve,
-    c2: &dyn PlaneCurve,
-    opts: &Options,
-) -> Result<Tangents> {
-    let (p1, p2) = prepare_pair(c1, c2);
-    p1.common_tangents(&p2, opts)
-}
-
-/// [`common_tangents`] with the doubts met, not yet stated: for the runs that join them into
+/// [`crate::common_tangents`] of two curves, with the doubts met, not yet stated: for the runs that join them into
 /// their own (a profile's segments).
 pub(crate) fn common_tangents_run(
     c1: &dyn PlaneCurve,

@@ -63,25 +63,7 @@ struct Raw {
 /// segment between them lies inside the corner's cone of inward normals (see the contract),
 /// and the continua of pairs (facing parallel lines, concentric arcs) as families. Certified
 /// where every segment's decisions are (lines and arcs are exact rational curves).
-///
-/// ```
-/// use antipodal::{profile_antipodal, Options, Verdict};
-/// use curve::{Profile, Segment};
-/// // A right triangle: the right-angle corner pairs with the foot of its perpendicular on
-/// // the hypotenuse; the two sharp corners pair along the hypotenuse (a corner sharper than
-/// // a right angle has its edges' directions inside its cone).
-/// let c = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
-/// let sides = (0..3).map(|i| Segment::line(c[i], c[(i + 1) % 3]).unwrap()).collect();
-/// let t = Profile::new(sides, None).unwrap();
-/// let r = profile_antipodal(&t, &Options::default()).unwrap();
-/// assert!(r.certified());
-/// assert_eq!(r.pairs.len(), 2);
-/// let foot = &r.pairs[0];
-/// assert_eq!((foot.corner, foot.kind), (Some([true, false]), None));
-/// assert!((foot.q[0] - 2.0).abs() < 1e-12 && (foot.q[1] - 2.0).abs() < 1e-12);
-/// assert_eq!(r.pairs[1].corner, Some([true, true]));
-/// ```
-pub fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Antipodal> {
+pub(crate) fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Antipodal> {
     opts.validate()?;
     if !profile.is_closed() {
         let (a, b) = profile.domain();

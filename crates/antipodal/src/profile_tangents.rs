@@ -122,23 +122,7 @@ impl<'p> Side<'p> {
 
 /// Every common tangent line of two profiles (open or closed), with its corners and
 /// segments; certified where every decision is.
-///
-/// ```
-/// use antipodal::{profile_tangents, Options, Verdict};
-/// use curve::{Profile, Segment};
-/// // Two squares side by side: the lines through opposite corners (the diagonals' cross
-/// // tangents) and the lines along the top and bottom edges (limit cases, left out).
-/// let square = |x: f64| {
-///     let c = [[x, 0.0], [x + 1.0, 0.0], [x + 1.0, 1.0], [x, 1.0]];
-///     Profile::new((0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap()).collect(), None)
-///         .unwrap()
-/// };
-/// let r = profile_tangents(&square(0.0), &square(3.0), &Options::default()).unwrap();
-/// assert!(r.certified());
-/// assert_eq!(r.lines.len(), 2);
-/// assert!(r.lines.iter().all(|l| l.corner == Some([true, true])));
-/// ```
-pub fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Tangents> {
+pub(crate) fn profile_tangents(a: &Profile, b: &Profile, opts: &Options) -> Result<Tangents> {
     opts.validate()?;
     use crate::whole_curve::{tangents, whole_curve};
     if let (Some(wa), Some(wb)) = (whole_curve(a), whole_curve(b)) {

@@ -27,26 +27,7 @@ const JOINT_CURVATURE_NOISE: f64 = 1e-9;
 /// are), and at smooth joints where the curvature changes sign across the joint (an arc joined
 /// tangentially to an arc bent the other way); and its corners, which are not inflections.
 /// A straight segment has no single inflection: none is reported on it.
-///
-/// ```
-/// use antipodal::{profile_inflections, Options};
-/// use curve::{Profile, Segment};
-/// use std::f64::consts::PI;
-/// // An S of two half circles: one inflection, at the joint.
-/// let s = Profile::new(
-///     vec![
-///         Segment::arc([1.0, 0.0], 1.0, PI, 0.0).unwrap(),
-///         Segment::arc([3.0, 0.0], 1.0, PI, 2.0 * PI).unwrap(),
-///     ],
-///     None,
-/// )
-/// .unwrap();
-/// let r = profile_inflections(&s, &Options::default()).unwrap();
-/// assert_eq!(r.inflections.len(), 1);
-/// assert_eq!((r.inflections[0].u, r.inflections[0].segment), (1.0, Some(1)));
-/// assert!(r.corner_list().is_empty());
-/// ```
-pub fn profile_inflections(profile: &Profile, opts: &Options) -> Result<Inflections> {
+pub(crate) fn profile_inflections(profile: &Profile, opts: &Options) -> Result<Inflections> {
     Ok(Provenance::finished(profile_inflections_run(
         profile, opts,
     )?))

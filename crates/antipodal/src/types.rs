@@ -193,8 +193,8 @@ pub struct Family {
     pub q: Option<[[f64; 2]; 2]>,
 }
 
-/// The antipodal pairs, inflections and families of a smooth curve
-/// ([`antipodal()`](crate::antipodal())) or of a profile ([`crate::profile_antipodal`]).
+/// The antipodal pairs, inflections and families of a smooth curve or of a profile
+/// ([`antipodal()`](crate::antipodal())).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Antipodal {
     /// Isolated antipodal pairs, sorted by `s`.
@@ -217,8 +217,7 @@ pub struct Antipodal {
     pub complete: bool,
 }
 
-/// The inflections of a smooth curve ([`crate::inflections`]) or of a profile
-/// ([`crate::profile_inflections`]).
+/// The inflections of a smooth curve or of a profile ([`crate::inflections`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Inflections {
     /// Inflections (on a profile: at smooth points and smooth joints), sorted by `u`.
@@ -294,8 +293,8 @@ pub struct TangentLine {
     pub segment: Option<[usize; 2]>,
 }
 
-/// The common tangent lines of two smooth curves ([`common_tangents()`](crate::common_tangents()))
-/// or of two profiles ([`crate::profile_tangents`]).
+/// The common tangent lines of two smooth curves or profiles
+/// ([`common_tangents()`](crate::common_tangents())).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Tangents {
     /// The lines, sorted by `s`.

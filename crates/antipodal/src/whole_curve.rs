@@ -82,7 +82,7 @@ impl WholeCurve<'_> {
     }
 }
 
-/// [`crate::profile_antipodal`] on the profile of a whole curve.
+/// [`crate::profile_pairs::profile_antipodal`] on the profile of a whole curve.
 pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<Antipodal> {
     let found = prepare(on.curve).antipodal(opts)?;
     let at = |x: f64| on.curve.jet(x).p.arr();
@@ -113,7 +113,7 @@ pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<Antipodal
     })
 }
 
-/// [`crate::profile_inflections`] on the profile of a whole curve, its doubts not yet stated.
+/// [`crate::profiles::profile_inflections`] on the profile of a whole curve, its doubts not yet stated.
 pub(crate) fn inflections_run(
     on: &WholeCurve<'_>,
     opts: &Options,
@@ -129,7 +129,7 @@ pub(crate) fn inflections_run(
     })
 }
 
-/// [`crate::profile_tangents`] on the profiles of two whole curves.
+/// [`crate::profile_tangents::profile_tangents`] on the profiles of two whole curves.
 pub(crate) fn tangents(
     on_a: &WholeCurve<'_>,
     on_b: &WholeCurve<'_>,

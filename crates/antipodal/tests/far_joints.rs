@@ -6,7 +6,7 @@
 //! off the joint's normal, certified.
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use antipodal::{profile_antipodal, Options, Profile, Segment, Verdict};
+use antipodal::{antipodal, Options, Profile, Segment, Verdict};
 use curve::V2;
 use std::f64::consts::PI;
 
@@ -49,7 +49,7 @@ fn a_pair_at_a_smooth_joint_lies_along_its_normal() {
                 let o = [1e8, 1e8];
                 let p = d_shape(o, a, short, off);
                 let joint = V2::new(o[0], o[1]);
-                let r = profile_antipodal(&p, &Options::default()).unwrap();
+                let r = antipodal(&p, &Options::default()).unwrap();
                 // The inward normal at the joint is (−sin a, cos a) (it turns by ~1e-8): a
                 // pair with an end there points along it.
                 let normal = V2::new(-a.sin(), a.cos());

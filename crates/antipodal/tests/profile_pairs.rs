@@ -13,7 +13,7 @@
 
 mod common;
 
-use antipodal::{profile_antipodal, AntipodalPair, Options, Profile, Segment};
+use antipodal::{antipodal, AntipodalPair, Options, Profile, Segment};
 use curve::{JointKind, ParamCurve, SegmentKind, SplineCurve, V2};
 use numeric::certificate::Verdict;
 use proptest::prelude::*;
@@ -267,7 +267,7 @@ fn satisfies(p: &Profile, pair: &AntipodalPair) -> Result<(), String> {
 }
 
 fn check(p: &Profile, size: f64) -> Result<(usize, usize, usize), TestCaseError> {
-    let r = profile_antipodal(p, &Options::default()).unwrap();
+    let r = antipodal(p, &Options::default()).unwrap();
     // (Uncertified results are compared all the same; they must stay rare.)
     RUNS.fetch_add(1, Ordering::Relaxed);
     if !r.certified() {
@@ -366,7 +366,7 @@ fn rectangles_and_half_discs() {
         None,
     )
     .unwrap();
-    let r = profile_antipodal(&rect, &Options::default()).unwrap();
+    let r = antipodal(&rect, &Options::default()).unwrap();
     assert!(r.certified());
     assert_eq!(r.families.len(), 2);
     assert_eq!(r.pairs.len(), 2);
@@ -382,7 +382,7 @@ fn rectangles_and_half_discs() {
         None,
     )
     .unwrap();
-    let r = profile_antipodal(&d, &Options::default()).unwrap();
+    let r = antipodal(&d, &Options::default()).unwrap();
     assert!(r.certified() && r.families.is_empty());
     assert_eq!(r.pairs.len(), 1);
     let p = &r.pairs[0];
@@ -449,7 +449,7 @@ fn round_trips_through_profiles() {
     let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
     let alone = antipodal::antipodal(&c, &Options::default()).unwrap();
     let one = one_spline(c);
-    let r = profile_antipodal(&one, &Options::default()).unwrap();
+    let r = antipodal(&one, &Options::default()).unwrap();
     assert!(alone.certified() && r.certified());
     let curve_pairs = as_profile_pairs(&alone.pairs);
     assert!(!curve_pairs.is_empty());
@@ -485,7 +485,7 @@ fn round_trips_through_profiles() {
         .collect();
     let split = Profile::new(segs, None).unwrap();
     assert!(split.corners().next().is_none());
-    let r = profile_antipodal(&split, &Options::default()).unwrap();
+    let r = antipodal(&split, &Options::default()).unwrap();
     assert!(whole.certified() && r.certified(), "{:?}", r.reason());
     let whole_pairs = as_profile_pairs(&whole.pairs);
     assert!(whole_pairs.len() >= 2);
@@ -522,8 +522,8 @@ fn pairs_move_with_the_profile() {
             let (Ok(a), Ok(b)) = (Profile::new(here, None), Profile::new(there, None)) else {
                 return Ok(());
             };
-            let ra = profile_antipodal(&a, &Options::default()).unwrap();
-            let rb = profile_antipodal(&b, &Options::default()).unwrap();
+            let ra = antipodal(&a, &Options::default()).unwrap();
+            let rb = antipodal(&b, &Options::default()).unwrap();
             prop_assert_eq!(ra.pairs.len(), rb.pairs.len());
             prop_assert_eq!(ra.certified(), rb.certified());
             let expect: Vec<AntipodalPair> = ra

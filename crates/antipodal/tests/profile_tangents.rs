@@ -12,7 +12,7 @@
 
 mod common;
 
-use antipodal::{profile_tangents, Options, Profile, TangentLine};
+use antipodal::{common_tangents, Options, Profile, TangentLine};
 use curve::{Affine, JointKind, ParamCurve, SegmentKind, V2};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
@@ -198,7 +198,7 @@ static THROUGH_CORNERS: AtomicUsize = AtomicUsize::new(0);
 static SMOOTH: AtomicUsize = AtomicUsize::new(0);
 
 fn check(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
-    let r = profile_tangents(a, b, &Options::default()).unwrap();
+    let r = common_tangents(a, b, &Options::default()).unwrap();
     let want = oracle(a, b);
     for w in &want.lines {
         let found = r
@@ -301,8 +301,8 @@ fn tangents_at_smooth_joints_far_from_the_origin() {
         };
         let (a, b) = (halves(y), halves(y + 10.0));
         assert!(a.corners().next().is_none() && b.corners().next().is_none());
-        let split = profile_tangents(&a, &b, &Options::default()).unwrap();
-        let expect = profile_tangents(&whole(y), &whole(y + 10.0), &Options::default()).unwrap();
+        let split = common_tangents(&a, &b, &Options::default()).unwrap();
+        let expect = common_tangents(&whole(y), &whole(y + 10.0), &Options::default()).unwrap();
         // (Whether a tangent at the segments' ends is certified is its own question: the
         // region test and the iteration may disagree there, and say so; this asks for the
         // lines.)
@@ -318,4 +318,48 @@ fn tangents_at_smooth_joints_far_from_the_origin() {
         }
         assert!(split.lines.iter().all(|l| l.corner == Some([false, false])));
     }
+}
+
+/// One entry for curves and profiles: a curve paired with a profile is taken as the profile of
+/// its one segment, in its own parameter, so the lines are those of that profile with the
+/// other; a curve known by evaluation only has no segment, and is refused by name.
+#[test]
+fn a_curve_beside_a_profile_is_its_one_segment() {
+    use curve::shapes::{Ellipse, Shape};
+    use curve::{ParamCurve, Segment};
+    let ellipse = Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap();
+    let c = [[6.0, -1.0], [8.0, -1.0], [8.0, 1.0], [6.0, 1.0]];
+    let sides = (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4]).unwrap());
+    let square = Profile::new(sides.collect(), None).unwrap();
+    let as_segment = Profile::of_curve(
+        Segment::of_shape(Shape::Ellipse(ellipse)).unwrap(),
+        ellipse.domain(),
+    )
+    .unwrap();
+    let opts = Options::default();
+    let mixed = common_tangents(&ellipse, &square, &opts).unwrap();
+    let expect = common_tangents(&as_segment, &square, &opts).unwrap();
+    assert_eq!(mixed, expect);
+    assert_eq!(mixed.lines.len(), 4, "{:?}", mixed.lines);
+    // The other order names the profile first.
+    let swapped = common_tangents(&square, &ellipse, &opts).unwrap();
+    assert_eq!(swapped.lines.len(), 4);
+
+    /// The ellipse known by evaluation only.
+    struct Sampled(Ellipse);
+    impl ParamCurve for Sampled {
+        fn domain(&self) -> (f64, f64) {
+            self.0.domain()
+        }
+        fn is_closed(&self) -> bool {
+            true
+        }
+        fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
+            self.0.jet_to(u, order)
+        }
+    }
+    impl curve::PlaneCurve for Sampled {}
+    let sampled = Sampled(ellipse);
+    let refused = common_tangents(curve::Boundary::Curve(&sampled), &square, &opts);
+    assert_eq!(refused, Err(antipodal::Error::NoSegment { which: 1 }));
 }

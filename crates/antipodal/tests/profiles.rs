@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use antipodal::{profile_inflections, CornerKind, Options, Profile, Segment};
+use antipodal::{inflections, CornerKind, Options, Profile, Segment};
 use curve::{ParamCurve, SegmentKind, SplineCurve};
 use numeric::certificate::Verdict;
 use proptest::prelude::*;
@@ -74,7 +74,7 @@ proptest! {
         let Some(p) = chain(&radii, &wobble[..n], &smooth[..n], reverse) else {
             return Ok(());
         };
-        let r = profile_inflections(&p, &Options::default()).unwrap();
+        let r = inflections(&p, &Options::default()).unwrap();
         let size = 4.0;
         let (want, least) = sampled_inflections(&p, size);
         // Resolved: every sign change clear of the sampling's own noise.
@@ -141,7 +141,7 @@ fn one_segment_profiles_have_the_curves_inflections() {
     let c = SplineCurve::clamped(3, &pts, None, None).unwrap();
     let alone = antipodal::inflections(&c, &Options::default()).unwrap();
     let p = testkit::profiles::one_spline(c);
-    let r = profile_inflections(&p, &Options::default()).unwrap();
+    let r = inflections(&p, &Options::default()).unwrap();
     let inside: Vec<f64> = alone
         .inflections
         .iter()
@@ -166,7 +166,7 @@ fn corners_lines_and_bad_segments() {
         None,
     )
     .unwrap();
-    let r = profile_inflections(&d, &Options::default()).unwrap();
+    let r = inflections(&d, &Options::default()).unwrap();
     assert!(r.inflections.is_empty() && r.certified());
     assert_eq!(r.corner_list().len(), 2);
     assert!(r.corner_list().iter().all(|c| c.kind == CornerKind::Convex));
@@ -187,7 +187,7 @@ fn corners_lines_and_bad_segments() {
         None,
     )
     .unwrap();
-    let e = profile_inflections(&p, &Options::default()).unwrap_err();
+    let e = inflections(&p, &Options::default()).unwrap_err();
     assert!(e.to_string().starts_with("segment 1:"), "{e}");
 }
 
@@ -212,7 +212,7 @@ fn a_curvature_vanishing_at_a_corner_is_not_an_inflection() {
         None,
     )
     .unwrap();
-    let r = profile_inflections(&flag, &Options::default()).unwrap();
+    let r = inflections(&flag, &Options::default()).unwrap();
     let near_corner = |u: f64| (u - 1.0).abs() < 1e-6;
     assert!(
         r.inflections.iter().all(|i| !near_corner(i.u)),

@@ -9,6 +9,8 @@
 //! - [`Profile`]: chains of [`Segment`]s (lines, arcs, Bézier and open B-spline curves) joined
 //!   at corners or smoothly, as part outlines are drawn; [`Region`]: an outer profile and
 //!   holes (a pocket with islands).
+//! - [`Boundary`]: what a command takes, a smooth curve or a profile (a smooth closed curve
+//!   is a closed profile of one segment).
 //! - [`Frame`]: exact changes of coordinates into a frame of about unit size near the curve.
 //! - [`exact`]: exact predicates on the data (collinear points, parallel stretches).
 //! - [`V2`], [`Jet`]: the small geometric types the algorithms share.
@@ -29,6 +31,7 @@
 
 mod affine;
 mod bezier_piece;
+mod boundary;
 pub mod box_tree;
 pub mod circle;
 mod corner_knots;
@@ -53,6 +56,7 @@ mod spline;
 pub mod watch;
 
 pub use affine::Affine;
+pub use boundary::Boundary;
 pub use corner_knots::{smooth_turn, DocumentSpan, CORNER_TURN};
 pub use error::{Error, Result};
 pub use extent::{box_size, curves_box, union as box_union, Box2};

@@ -5,7 +5,7 @@
 //! The axis is made of pieces of bisectors (Elber & Kim): between two segments of the
 //! boundary, a segment and a reflex corner, or two reflex corners. The candidates are the
 //! bisectors of every pair of sites of every boundary and of every pair of boundaries
-//! ([`zeroset::profile_self_bisector`], [`zeroset::profile_bisector`]); a point of one lies on
+//! ([`zeroset::self_bisector`], [`zeroset::bisector`]); a point of one lies on
 //! the axis where it is inside the region and its disk is empty (no boundary point nearer than
 //! its foot points). Each candidate branch is cut to its stretches with empty disks; where a
 //! stretch ends inside a branch a third boundary point reached the disk: the end is refined on

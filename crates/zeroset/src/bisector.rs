@@ -23,7 +23,7 @@ pub use output::{Bisector, BisectorPoint, Branch};
 pub use point::{bisector_point, RESIDUAL};
 pub use sides::Side;
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::patch::Patch;
 use crate::symbolic::{bisector_function_scaled, Method};
 use crate::zeroset::{run_cells, ZeroSetOptions};
@@ -42,7 +42,7 @@ pub(crate) use vertices::{FAR, TRIM_SLACK};
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
 const DIVISIBLE: f64 = 1e-8;
 
-/// Options for [`bisector`] and [`self_bisector`].
+/// Options for [`bisector`](fn@crate::bisector) and [`self_bisector`](crate::self_bisector).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BisectorOptions {
     /// Which function of §3 to use (default `F3`).
@@ -96,34 +96,14 @@ fn chord_of(opts: &BisectorOptions, curves: &[&Rational]) -> f64 {
     opts.settings.chord_tol.get() * size
 }
 
-/// The bisector of `c1(t)` and `c2(r)`.
-///
-/// ```
-/// use bspline::{BSpline, Rational};
-/// use zeroset::{bisector, BisectorOptions};
-/// // Two segments on the axes, c1(t) = (1 + 2t, 0) and c2(r) = (0, 1 + 2r): the points
-/// // equidistant from both with perpendicular feet are those of the diagonal, their feet at
-/// // t = r.
-/// let c1 = Rational::polynomial(&BSpline::bezier(2, vec![1.0, 0.0, 3.0, 0.0]).unwrap());
-/// let c2 = Rational::polynomial(&BSpline::bezier(2, vec![0.0, 1.0, 0.0, 3.0]).unwrap());
-/// let b = bisector(&c1, &c2, &BisectorOptions::default()).unwrap();
-/// assert!(b.complete && !b.branches.is_empty());
-/// for br in &b.branches {
-///     for (tr, xy) in br.tr.iter().zip(&br.xy) {
-///         assert!((tr[0] - tr[1]).abs() < 1e-9 && (xy[0] - xy[1]).abs() < 1e-9);
-///     }
-/// }
-/// ```
-pub fn bisector(c1: &Rational, c2: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
+/// The bisector of the rational curves `c1(t)` and `c2(r)` (planar: [`crate::bisector`]
+/// takes them as spline curves).
+pub(crate) fn curve_bisector(
+    c1: &Rational,
+    c2: &Rational,
+    opts: &BisectorOptions,
+) -> Result<Bisector> {
     let z = zero_set_options(opts);
-    for (which, c) in [(1, c1), (2, c2)] {
-        if c.dim() != 2 {
-            return Err(Error::NotPlanar {
-                which,
-                dim: c.dim(),
-            });
-        }
-    }
     let (frame, local) = local_curves(&[c1, c2])?;
     let (c1, c2) = (&local[0], &local[1]);
     let (f, terms) = bisector_function_scaled(c1, c2, opts.method)?;
@@ -225,33 +205,10 @@ fn to_global(mut b: Bisector, frame: &Frame) -> Bisector {
     b
 }
 
-/// The self-bisector of `c`: pairs `t < r` of distinct foot points on the same curve.
-///
-/// ```
-/// use bspline::{BSpline, Rational};
-/// use zeroset::{self_bisector, BisectorOptions};
-/// // A symmetric arch: its mirrored points, t and 1 − t, are equidistant from the points of
-/// // its axis of symmetry x = 0.
-/// let arch = Rational::polynomial(
-///     &BSpline::bezier(2, vec![-1.0, 0.0, 0.0, 2.0, 1.0, 0.0]).unwrap(),
-/// );
-/// let b = self_bisector(&arch, &BisectorOptions::default()).unwrap();
-/// assert!(b.complete && !b.branches.is_empty());
-/// let on_axis = |br: &zeroset::Branch| {
-///     br.tr.iter().zip(&br.xy).all(|(tr, xy)| {
-///         (tr[0] + tr[1] - 1.0).abs() < 1e-9 && xy[0].abs() < 1e-9
-///     })
-/// };
-/// assert!(b.branches.iter().any(on_axis));
-/// ```
-pub fn self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
+/// The self-bisector of the rational curve `c`: pairs `t < r` of distinct foot points on
+/// the same curve.
+pub(crate) fn curve_self_bisector(c: &Rational, opts: &BisectorOptions) -> Result<Bisector> {
     let z = zero_set_options(opts);
-    if c.dim() != 2 {
-        return Err(Error::NotPlanar {
-            which: 1,
-            dim: c.dim(),
-        });
-    }
     let (frame, local) = local_curves(&[c])?;
     let c = &local[0];
     let (f, terms) = bisector_function_scaled(c, c, opts.method)?;

@@ -6,13 +6,15 @@
 //! - [`solve_system`]: the isolated common zeros of two bivariate functions.
 //! - [`bisector`], [`self_bisector`]: the bisector as branches of matched foot points `(t, r)`
 //!   and bisector points `P(t, r)` (Eq. 16), from the functions `F1`, `F2`, `F3` of §3
-//!   ([`bisector_function`]).
-//! - [`profile_bisector`], [`profile_self_bisector`]: the same for profiles (chains of
-//!   segments with corners), corners acting as point sites inside their cones.
+//!   ([`bisector_function`]); of curves or of profiles (chains of segments with corners),
+//!   corners acting as point sites inside their cones.
+//! - [`profile_bisector_of_pairs`], [`profile_self_bisector_of_pairs`]: a profile's, kept to
+//!   the pairs of segments a caller has shown can matter (the medial axis).
 
 mod assemble;
 mod bisector;
 mod deviation;
+mod entries;
 mod error;
 mod extract;
 mod patch;
@@ -23,14 +25,11 @@ mod system;
 mod zeroset;
 
 pub use bisector::{
-    bisector, bisector_point, self_bisector, Bisector, BisectorOptions, BisectorPoint, Branch,
-    Side, RESIDUAL,
+    bisector_point, Bisector, BisectorOptions, BisectorPoint, Branch, Side, RESIDUAL,
 };
+pub use entries::{bisector, self_bisector};
 pub use error::{Error, Result};
-pub use profile_bisector::{
-    profile_bisector, profile_bisector_of_pairs, profile_self_bisector,
-    profile_self_bisector_of_pairs,
-};
+pub use profile_bisector::{profile_bisector_of_pairs, profile_self_bisector_of_pairs};
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};
 pub use zeroset::{zero_set, Polyline, ZeroSet, ZeroSetOptions};

@@ -14,8 +14,8 @@
 //! point (reported as isolated), as is the self-bisector of an arc. Two pieces of one line
 //! have none.
 //!
-//! A profile of one spline segment without a corner is the curve it is: [`profile_bisector`]
-//! (of two such) and [`profile_self_bisector`] run the curve's bisector on it (`whole_curve`).
+//! A profile of one spline segment without a corner is the curve it is: `profile_bisector`
+//! (of two such) and `profile_self_bisector` run the curve's bisector on it (`whole_curve`).
 
 mod arcs;
 #[cfg(test)]
@@ -107,37 +107,28 @@ fn sites(p: &Profile) -> Vec<Site<'_>> {
 ///
 /// Two profiles that are each one Bézier or B-spline segment without a corner (open, or
 /// closed with a smooth seam; not an analytic shape's form) are the curves they are: their
-/// bisector is [`crate::bisector`]'s of the segments' splines (a periodic spline's whole
+/// bisector is the curve engine's, on the segments' splines (a periodic spline's whole
 /// curve), its parameters the profiles', every foot on segment 0 and no corner
 /// ([`crate::Bisector::without_sites`] drops those again).
-///
-/// ```
-/// use curve::{Profile, Segment};
-/// use zeroset::{profile_bisector, BisectorOptions};
-/// // Two right angles 4 apart, their corners' cones both above: their bisector is a ray of x = 2.
-/// let l = |a: [f64; 2], b: [f64; 2]| Segment::line(a, b).unwrap();
-/// let left = Profile::new(vec![l([0., -1.], [0., 0.]), l([0., 0.], [-1., 0.])], None).unwrap();
-/// let right = Profile::new(vec![l([4., -1.], [4., 0.]), l([4., 0.], [5., 0.])], None).unwrap();
-/// let b = profile_bisector(&left, &right, &BisectorOptions::default()).unwrap();
-/// assert!(b.complete);
-/// let corners = b.branches.iter().find(|br| br.corners() == [true, true]).unwrap();
-/// assert!(corners.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-12));
-/// ```
-pub fn profile_bisector(a: &Profile, b: &Profile, opts: &BisectorOptions) -> Result<Bisector> {
+pub(crate) fn profile_bisector(
+    a: &Profile,
+    b: &Profile,
+    opts: &BisectorOptions,
+) -> Result<Bisector> {
     if let (Some(a), Some(b)) = (one_spline(a), one_spline(b)) {
         return spline_bisector(&a, &b, opts);
     }
     profile_bisector_of_pairs(a, b, opts, &|_, _| true)
 }
 
-/// [`profile_bisector`] restricted to the pairs of segments `keep(i, j)` accepts (segment `i`
+/// The bisector of two profiles restricted to the pairs of segments `keep(i, j)` accepts (segment `i`
 /// of `a`, `j` of `b`); a corner counts as each of the two segments it joins. For callers
 /// that have shown which pairs can matter (the medial axis keeps the pairs that can share an
 /// empty disk).
 ///
 /// ```
 /// use curve::{Profile, Segment};
-/// use zeroset::{profile_bisector, profile_bisector_of_pairs, BisectorOptions};
+/// use zeroset::{bisector, profile_bisector_of_pairs, BisectorOptions};
 /// // Two L-shaped walls, each a vertical segment then a horizontal one: kept to the pair of
 /// // their vertical segments, the bisector is theirs alone (x = 2 between x = 0 and 4); the
 /// // whole one also has the left top's bisector with the right side (on y = x − 1).
@@ -151,7 +142,7 @@ pub fn profile_bisector(a: &Profile, b: &Profile, opts: &BisectorOptions) -> Res
 /// let (left, right) = (wall(0.0, 2.0), wall(4.0, 3.0));
 /// let opts = BisectorOptions::default();
 /// let kept = profile_bisector_of_pairs(&left, &right, &opts, &|i, j| i == 0 && j == 0).unwrap();
-/// let all = profile_bisector(&left, &right, &opts).unwrap();
+/// let all = bisector(&left, &right, &opts).unwrap();
 /// let on_middle = |br: &zeroset::Branch| br.xy.iter().all(|p| (p[0] - 2.0).abs() < 1e-9);
 /// assert!(!kept.branches.is_empty() && kept.branches.iter().all(on_middle));
 /// assert!(!all.branches.iter().all(on_middle));
@@ -180,47 +171,16 @@ pub fn profile_bisector_of_pairs(
 /// or on one segment.
 ///
 /// A profile of one Bézier or B-spline segment without a corner (as for
-/// [`profile_bisector`]) is the curve it is: its self-bisector is [`crate::self_bisector`]'s
-/// of the segment's spline (a periodic spline's whole curve), in the profile's parameter.
-///
-/// ```
-/// use curve::{Profile, Segment, SegmentKind, SplineCurve};
-/// use zeroset::{profile_self_bisector, self_bisector, BisectorOptions};
-/// // A periodic cubic is its whole curve: the profile's self-bisector is the curve's, its
-/// // parameters the profile's (the curve's on [0, 4) over 4).
-/// let ring = [[2.0, 0.0], [0.0, 1.0], [-2.0, 0.0], [0.0, -1.0]];
-/// let spline = SplineCurve::periodic(3, &ring, None).unwrap();
-/// let segment = Segment::periodic_spline(SegmentKind::BSpline, &spline).unwrap();
-/// let profile = Profile::of_curve(segment, (0.0, 4.0)).unwrap();
-/// let opts = BisectorOptions::default();
-/// let on_profile = profile_self_bisector(&profile, &opts).unwrap().without_sites();
-/// let on_curve = self_bisector(spline.curve(), &opts).unwrap();
-/// assert!(!on_curve.branches.is_empty());
-/// for (p, c) in on_profile.branches.iter().zip(&on_curve.branches) {
-///     assert_eq!(p.xy, c.xy);
-///     assert!(p.tr.iter().zip(&c.tr).all(|(p, c)| p == &[c[0] / 4.0, c[1] / 4.0]));
-/// }
-/// ```
-///
-/// ```
-/// use curve::{Profile, Segment};
-/// use zeroset::{profile_self_bisector, BisectorOptions};
-/// // An L-shaped room: its reflex corner is a point site inside.
-/// let c = [[0., 0.], [4., 0.], [4., 2.], [2., 2.], [2., 4.], [0., 4.]];
-/// let sides = (0..6).map(|i| Segment::line(c[i], c[(i + 1) % 6]).unwrap()).collect();
-/// let room = Profile::new(sides, None).unwrap();
-/// let opts = BisectorOptions { trimmed: true, ..Default::default() };
-/// let b = profile_self_bisector(&room, &opts).unwrap();
-/// assert!(b.branches.iter().any(|br| br.corners().contains(&true)));
-/// ```
-pub fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<Bisector> {
+/// [`profile_bisector`]) is the curve it is: its self-bisector is the curve engine's, on the
+/// segment's spline (a periodic spline's whole curve), in the profile's parameter.
+pub(crate) fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Result<Bisector> {
     if let Some(spline) = one_spline(p) {
         return spline_self_bisector(&spline, opts);
     }
     profile_self_bisector_of_pairs(p, opts, &|_, _| true)
 }
 
-/// [`profile_self_bisector`] restricted to the pairs of segments `keep(i, j)` accepts (`i ≤
+/// The self-bisector of a profile restricted to the pairs of segments `keep(i, j)` accepts (`i ≤
 /// j`; a segment's own bisector is `keep(i, i)`); a corner counts as each of the two
 /// segments it joins.
 ///

@@ -210,7 +210,8 @@ fn run_pair_on(
         sides,
         ..Default::default()
     };
-    let b = bisector(&c1, &c2, &opts).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let b = bisector(&as_curve(&c1), &as_curve(&c2), &opts)
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert!(b.complete);
     check_points(&c1, &c2, &b, size).map_err(TestCaseError::fail)?;
     // The chord tolerance itself: the tracer measures each segment's deviation (the seeds
@@ -233,7 +234,7 @@ fn run_self_on(p: &[[f64; 2]], c: Rational, side: Option<Side>) -> Result<(), Te
         sides,
         ..Default::default()
     };
-    let b = self_bisector(&c, &opts).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let b = self_bisector(&as_curve(&c), &opts).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert!(b.complete);
     prop_assert!(b
         .branches
@@ -334,13 +335,13 @@ fn polygon_splines_have_complete_self_bisectors() {
     ];
     for p in shapes {
         let c = bsp(1, p);
-        let b = self_bisector(&c, &BisectorOptions::default()).unwrap();
+        let b = self_bisector(&as_curve(&c), &BisectorOptions::default()).unwrap();
         assert!(b.complete, "{p:?}");
         run_self(p, c).unwrap();
     }
     // The rectangle's midline between its long sides.
     let c = bsp(1, shapes[0]);
-    let b = self_bisector(&c, &BisectorOptions::default()).unwrap();
+    let b = self_bisector(&as_curve(&c), &BisectorOptions::default()).unwrap();
     let on_midline = b
         .branches
         .iter()

@@ -146,7 +146,7 @@ proptest! {
     ) {
         let p2 = shifted(&p2, [2.5, 0.0]);
         prop_assume!(regular(&p1) && regular(&p2));
-        same_moved(&[p1, p2], &[], t, |s| bisector(&bez(&s[0]), &bez(&s[1]), &Default::default()).unwrap())?;
+        same_moved(&[p1, p2], &[], t, |s| bisector(&as_curve(&bez(&s[0])), &as_curve(&bez(&s[1])), &Default::default()).unwrap())?;
     }
 
     /// Self-bisectors of cubic B-splines with six points, moved and scaled.
@@ -156,7 +156,7 @@ proptest! {
         t in transform(),
     ) {
         prop_assume!(regular(&p));
-        same_moved(&[p], &[1.0 / 3.0, 2.0 / 3.0], t, |s| self_bisector(&bsp(3, &s[0]), &Default::default()).unwrap())?;
+        same_moved(&[p], &[1.0 / 3.0, 2.0 / 3.0], t, |s| self_bisector(&as_curve(&bsp(3, &s[0])), &Default::default()).unwrap())?;
     }
 }
 
@@ -181,7 +181,7 @@ fn far_tiny_quadratic_self_bisector() {
     let p = vec![[-1.0, -1.0], [-1.0, -1.0], [10.0, 95.0]];
     let opts = coarsest_chord();
     same_moved(&[p], &[], ([far * k, 0.0], k), |s| {
-        self_bisector(&bez(&s[0]), &opts).unwrap()
+        self_bisector(&as_curve(&bez(&s[0])), &opts).unwrap()
     })
     .unwrap();
 }
@@ -199,8 +199,8 @@ fn rational_segment_self_bisector_is_the_segments() {
     let weighted = Rational::new(BSpline::bezier(2, coords).unwrap(), Some(&[w, 1.0])).unwrap();
     let opts = coarsest_chord();
     let (a, b) = (
-        self_bisector(&line, &opts).unwrap(),
-        self_bisector(&weighted, &opts).unwrap(),
+        self_bisector(&as_curve(&line), &opts).unwrap(),
+        self_bisector(&as_curve(&weighted), &opts).unwrap(),
     );
     assert_eq!((a.branches.len(), a.complete), (0, true));
     assert_eq!((b.branches.len(), b.complete), (0, true));
@@ -222,7 +222,7 @@ fn points_stay_in_the_domain() {
     )
     .unwrap();
     let opts = coarsest_chord();
-    let b = self_bisector(&tri, &opts).unwrap();
+    let b = self_bisector(&as_curve(&tri), &opts).unwrap();
     let (lo, hi) = tri.domain();
     let inside = |tr: [f64; 2]| (lo..=hi).contains(&tr[0]) && (lo..=hi).contains(&tr[1]);
     assert!(b.branches.iter().flat_map(|br| &br.tr).all(|&q| inside(q)));
@@ -267,7 +267,7 @@ fn self_bisector_reaches_a_knot_peak_at_every_scale() {
         let k = (o[2] * o[5] - o[3] * o[4]) / (speed2 * speed2.sqrt());
         let n = [-o[3] / speed2.sqrt(), o[2] / speed2.sqrt()];
         let centre = [(o[0] + n[0] / k) / s, (o[1] + n[1] / k) / s];
-        let b = self_bisector(&curve, &Default::default()).unwrap();
+        let b = self_bisector(&as_curve(&curve), &Default::default()).unwrap();
         let nearest = b
             .branches
             .iter()
@@ -415,7 +415,7 @@ fn branches_ending_at_knot_corners_reach_the_centres_of_curvature() {
             let speed = d[0].hypot(d[1]);
             let radius = speed.powi(3) / (d[0] * dd[1] - d[1] * dd[0]);
             let centre = [v[0] - radius * d[1] / speed, v[1] + radius * d[0] / speed];
-            let b = self_bisector(&bsp(3, &moved), &Default::default()).unwrap();
+            let b = self_bisector(&as_curve(&bsp(3, &moved)), &Default::default()).unwrap();
             let nearest = b
                 .branches
                 .iter()
@@ -431,7 +431,7 @@ fn branches_ending_at_knot_corners_reach_the_centres_of_curvature() {
                 std::slice::from_ref(&p),
                 &[1.0 / 3.0, 2.0 / 3.0],
                 (o, s),
-                |s| self_bisector(&bsp(3, &s[0]), &Default::default()).unwrap(),
+                |s| self_bisector(&as_curve(&bsp(3, &s[0])), &Default::default()).unwrap(),
             )
             .unwrap();
         }

@@ -54,8 +54,8 @@ fn f1_f2_f3_agree() {
     for (c1, c2, diag) in pairs() {
         let run = |m| {
             bisector(
-                &c1,
-                &c2,
+                &as_curve(&c1),
+                &as_curve(&c2),
                 &BisectorOptions {
                     method: m,
                     ..Default::default()
@@ -82,10 +82,10 @@ fn f1_f2_f3_agree() {
 #[test]
 fn trimmed_is_a_nearest_point_subset() {
     for (c1, c2, diag) in pairs() {
-        let all = bisector(&c1, &c2, &BisectorOptions::default()).unwrap();
+        let all = bisector(&as_curve(&c1), &as_curve(&c2), &BisectorOptions::default()).unwrap();
         let trimmed = bisector(
-            &c1,
-            &c2,
+            &as_curve(&c1),
+            &as_curve(&c2),
             &BisectorOptions {
                 trimmed: true,
                 ..Default::default()

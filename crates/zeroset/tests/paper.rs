@@ -78,14 +78,14 @@ fn summary(b: &Bisector) -> Summary {
 }
 
 fn two(c1: &Rational, c2: &Rational) -> Bisector {
-    let b = bisector(c1, c2, &BisectorOptions::default()).unwrap();
+    let b = bisector(&as_curve(c1), &as_curve(c2), &BisectorOptions::default()).unwrap();
     assert!(b.complete && !b.branches.is_empty());
     b
 }
 
 /// The self-bisector, complete, with every branch above the diagonal (the mirror dropped).
 fn one(c: &Rational) -> Bisector {
-    let b = self_bisector(c, &BisectorOptions::default()).unwrap();
+    let b = self_bisector(&as_curve(c), &BisectorOptions::default()).unwrap();
     assert!(b.complete && !b.branches.is_empty());
     assert!(b
         .branches
@@ -195,7 +195,7 @@ fn rational_quarter_circles_have_the_diagonal_bisector() {
 fn closed_periodic_self_bisector_joins_across_the_seam() {
     let pts = vec![0., 0., 2., -1., 4., 0., 4., 2., 2., 1.2, 0., 2.];
     let c = Rational::polynomial(&bspline::BSpline::periodic(3, 2, pts).unwrap());
-    let b = self_bisector(&c, &BisectorOptions::default()).unwrap();
+    let b = self_bisector(&as_curve(&c), &BisectorOptions::default()).unwrap();
     assert!(b.complete && !b.branches.is_empty());
     // No branch ends on the seam borders t = 0 or r = 6 any more (they were joined).
     for br in &b.branches {

@@ -20,7 +20,7 @@ use testkit::boundary_oracle::{off_segment, winding, Oracle};
 use testkit::cases;
 use testkit::outlines::polygon;
 use testkit::profiles::{bezier_chains, filleted_polygons};
-use zeroset::{profile_bisector, profile_self_bisector, Bisector, BisectorOptions};
+use zeroset::{bisector, self_bisector, Bisector, BisectorOptions};
 
 /// Grid nodes per side.
 const GRID: usize = 40;
@@ -113,8 +113,8 @@ fn options(trimmed: bool) -> BisectorOptions {
 /// trimmed bisector's vertices against the oracle's distances.
 fn check_pair(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
     let (lo, hi, size) = bbox(&[a, b]);
-    let full = profile_bisector(a, b, &options(false)).unwrap();
-    let trimmed = profile_bisector(a, b, &options(true)).unwrap();
+    let full = bisector(a, b, &options(false)).unwrap();
+    let trimmed = bisector(a, b, &options(true)).unwrap();
     prop_assert!(full.complete && trimmed.complete);
     let (oa, ob) = (Oracle::new(a), Oracle::new(b));
     let f = |x: [f64; 2]| oa.nearest(x).0 - ob.nearest(x).0;
@@ -169,8 +169,8 @@ fn check_pair(a: &Profile, b: &Profile) -> Result<(), TestCaseError> {
 /// self-bisector is at the boundary's distance from its foot points.
 fn check_self(p: &Profile) -> Result<(), TestCaseError> {
     let (lo, hi, size) = bbox(&[p]);
-    let full = profile_self_bisector(p, &options(false)).unwrap();
-    let trimmed = profile_self_bisector(p, &options(true)).unwrap();
+    let full = self_bisector(p, &options(false)).unwrap();
+    let trimmed = self_bisector(p, &options(true)).unwrap();
     prop_assert!(full.complete && trimmed.complete);
     let o = Oracle::new(p);
     let polygon: Vec<[f64; 2]> = o.pts.clone();
@@ -321,7 +321,7 @@ fn moves_with_the_profile(shape: &Profile) {
     // Untrimmed: the trimmed bisector drops whole polyline edges where its vertices stop
     // being nearest, so its branch ends depend on where the vertices fall.
     let opts = options(false);
-    let base = profile_self_bisector(shape, &opts).unwrap();
+    let base = self_bisector(shape, &opts).unwrap();
     assert!(base.complete && !base.branches.is_empty());
     let (s, (sin, cos)) = (1024.0, 0.6f64.sin_cos());
     let (lo, hi, size) = bbox(&[shape]);
@@ -341,7 +341,7 @@ fn moves_with_the_profile(shape: &Profile) {
                 .collect();
         }
         let moved_shape = Profile::new(segs, None).unwrap();
-        let moved = profile_self_bisector(&moved_shape, &opts).unwrap();
+        let moved = self_bisector(&moved_shape, &opts).unwrap();
         assert!(moved.complete);
         let expected = Bisector {
             branches: base
@@ -405,4 +405,41 @@ fn moves_with_the_profile(shape: &Profile) {
             }
         }
     }
+}
+
+/// One entry for curves and profiles: a spline beside a profile is taken as the profile of its
+/// one segment, in its own parameter; a curve known by evaluation only is refused by name.
+#[test]
+fn a_curve_beside_a_profile_is_its_one_segment() {
+    use curve::{Boundary, PlaneCurve, Segment, SegmentKind, SplineCurve};
+    let arch = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]];
+    let spline = SplineCurve::clamped(3, &arch, None, None).unwrap();
+    let segment = Segment::spline(SegmentKind::BSpline, spline.clone()).unwrap();
+    let as_segment = Profile::of_curve(segment, spline.domain()).unwrap();
+    let c = [[0.0, -3.0], [4.0, -3.0], [4.0, -1.0], [0.0, -1.0]];
+    let box_below = polygon(&c);
+    let opts = BisectorOptions::default();
+    let mixed = bisector(&spline, &box_below, &opts).unwrap();
+    assert_eq!(mixed, bisector(&as_segment, &box_below, &opts).unwrap());
+    assert!(mixed.complete && !mixed.branches.is_empty());
+    // (A profile's branches say which segments their feet are on.)
+    assert!(mixed.branches.iter().all(|b| b.segment.is_some()));
+
+    /// The spline known by evaluation only.
+    struct Sampled(SplineCurve);
+    impl ParamCurve for Sampled {
+        fn domain(&self) -> (f64, f64) {
+            self.0.domain()
+        }
+        fn is_closed(&self) -> bool {
+            false
+        }
+        fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
+            self.0.jet_to(u, order)
+        }
+    }
+    impl PlaneCurve for Sampled {}
+    let sampled = Sampled(spline);
+    let refused = bisector(&box_below, Boundary::Curve(&sampled), &opts);
+    assert_eq!(refused, Err(zeroset::Error::NotExact { which: 2 }));
 }

@@ -4,7 +4,7 @@
 
 use super::lines::STEPS;
 use super::polyline::off_chord;
-use crate::bisector::{bisector, Bisector, BisectorOptions, Branch};
+use crate::bisector::{curve_bisector, Bisector, BisectorOptions, Branch};
 use bspline::Rational;
 use proptest::prelude::*;
 
@@ -68,7 +68,7 @@ pub(super) fn agrees_with_traced(
         trimmed: false,
         ..BisectorOptions::default()
     };
-    let traced = bisector(c1, c2, &opts).expect("traced");
+    let traced = curve_bisector(c1, c2, &opts).expect("traced");
     prop_assume!(traced.complete);
     let room = 2.0 * chord * size;
     for x in traced.branches.iter().flat_map(|br| &br.xy) {

@@ -6,7 +6,7 @@ use super::lines;
 use super::point_site::{corner_corner, corner_curve, Corner, SharedEnd};
 use super::run::Run;
 use super::Site;
-use crate::bisector::{bisector, self_bisector, Bisector, BisectorPoint, Branch};
+use crate::bisector::{curve_bisector, curve_self_bisector, Bisector, BisectorPoint, Branch};
 use crate::error::Result;
 use bspline::Rational;
 use curve::{ParamCurve, Profile, Segment, SegmentKind};
@@ -134,7 +134,7 @@ impl Run<'_> {
                 return Ok(());
             }
         }
-        let found = bisector(c1, c2, &self.pair_options(&[c1, c2]))?;
+        let found = curve_bisector(c1, c2, &self.pair_options(&[c1, c2]))?;
         self.add(found, [i, j], Determinate::ApartFeet, out);
         Ok(())
     }
@@ -161,7 +161,7 @@ impl Run<'_> {
                 Ok(())
             }
             _ => {
-                let found = self_bisector(c, &self.pair_options(&[c]))?;
+                let found = curve_self_bisector(c, &self.pair_options(&[c]))?;
                 self.add(found, [i, i], Determinate::ApartFeet, out);
                 Ok(())
             }

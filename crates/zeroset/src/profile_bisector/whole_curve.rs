@@ -1,6 +1,6 @@
 //! A profile of one spline segment without a corner (open, or closed with a smooth seam) is
-//! the curve it is: its bisectors are the curve's ([`crate::bisector`],
-//! [`crate::self_bisector`]), run on the segment's whole periodic spline where it was made
+//! the curve it is: its bisectors are the curve engine's (`curve_bisector`,
+//! `curve_self_bisector`), run on the segment's whole periodic spline where it was made
 //! from one ([`curve::Segment::whole_curve`]), else on the segment's own spline, and reported
 //! on the profile with no corners. So a spline gives the same bisector whether it comes as a
 //! curve or as a profile.
@@ -8,7 +8,9 @@
 //! Analytic shapes (their whole curve is the shape, not a spline), lines and arcs (their
 //! closed forms) keep the profile's path.
 
-use crate::bisector::{bisector, self_bisector, Bisector, BisectorOptions, BisectorPoint, Branch};
+use crate::bisector::{
+    curve_bisector, curve_self_bisector, Bisector, BisectorOptions, BisectorPoint, Branch,
+};
 use crate::error::Result;
 use bspline::Rational;
 use curve::{ExactCurve, Profile, SegmentKind};
@@ -84,10 +86,10 @@ pub(super) fn spline_bisector(
     b: &OneSpline<'_>,
     opts: &BisectorOptions,
 ) -> Result<Bisector> {
-    Ok(a.on_profiles(b, bisector(a.curve, b.curve, opts)?))
+    Ok(a.on_profiles(b, curve_bisector(a.curve, b.curve, opts)?))
 }
 
 /// [`crate::profile_self_bisector`] of a profile that is one spline.
 pub(super) fn spline_self_bisector(p: &OneSpline<'_>, opts: &BisectorOptions) -> Result<Bisector> {
-    Ok(p.on_profiles(p, self_bisector(p.curve, opts)?))
+    Ok(p.on_profiles(p, curve_self_bisector(p.curve, opts)?))
 }

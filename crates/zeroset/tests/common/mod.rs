@@ -98,3 +98,8 @@ pub fn regular(p: &[[f64; 2]]) -> bool {
     p.windows(2)
         .all(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]) > 0.05)
 }
+
+/// `c` as the spline curve the bisector entries take.
+pub fn as_curve(c: &Rational) -> curve::SplineCurve {
+    curve::SplineCurve::new(c.clone()).expect("a planar curve")
+}

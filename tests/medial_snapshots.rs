@@ -103,7 +103,7 @@ fn every_vertex_is_at_its_radius_from_the_boundary() {
                 step = step.max((w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]));
             }
             samples.extend(pts);
-            size = size.max(b.size());
+            size = size.max(b.scale());
         }
         let out = curvekit_json(&["medial", &fixture(name)]);
         for e in out["edges"].as_array().unwrap() {
@@ -145,7 +145,7 @@ fn every_end_is_a_centre_of_curvature_at_an_extremum() {
             .chain(region.holes())
             .enumerate()
         {
-            size = size.max(b.size());
+            size = size.max(b.scale());
             for i in 0..b.segments().len() {
                 for s in 0..=4000 {
                     let j = b.jet_on(i, i as f64 + s as f64 / 4000.0, 3);

@@ -230,7 +230,7 @@ fn the_segment_path_finds_the_same_pairs() {
             .flat_map(|x| [x.p, x.q])
             .flatten()
             .fold(0.0f64, |m, c| m.max(c.abs()));
-        let room = 1e-9 * profile.size() + ulps(8.0) * magnitude;
+        let room = 1e-9 * profile.scale() + ulps(8.0) * magnitude;
         for x in &whole.pairs {
             let near = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]) <= room;
             assert!(

@@ -314,7 +314,7 @@ impl PyCurve {
                     .ok_or_else(|| PyValueError::new_err("no profile to draw"))?
                     .map_err(|e| crate::to_py_err(e.into()))?,
             };
-            io::line_geometry(&profile, GEO_TOLERANCE * profile.size())
+            io::line_geometry(&profile, GEO_TOLERANCE * profile.scale())
         };
         py.import("json")?
             .call_method1("loads", (geometry.to_string(),))

@@ -33,7 +33,7 @@ pub(crate) fn draw_curve(fig: &mut Figure, curve: &Curve) {
                 .iter()
                 .flat_map(|r| std::iter::once(r.outer()).chain(r.holes()))
             {
-                fig.boundary(b.flattened(REGION_FLATNESS * b.size()), true);
+                fig.boundary(b.flattened(REGION_FLATNESS * b.scale()), true);
             }
             return;
         }

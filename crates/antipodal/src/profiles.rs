@@ -88,7 +88,7 @@ pub(crate) fn profile_inflections_run(
             });
         }
     }
-    let size = profile.size();
+    let size = profile.scale();
     let n = profile.segments().len();
     for joint in profile.joints() {
         let i = joint.u as usize;

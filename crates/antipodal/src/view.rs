@@ -223,15 +223,10 @@ impl<'a> View<'a> {
             piece_points: RefCell::new(Vec::new()),
         };
         let sampled = || {
-            let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
-            for i in 0..64 {
-                let p = v.point(a + (b - a) * i as f64 / 63.0);
-                lo = V2::new(lo.x.min(p.x), lo.y.min(p.y));
-                hi = V2::new(hi.x.max(p.x), hi.y.max(p.y));
-            }
-            (hi - lo).norm().max(f64::MIN_POSITIVE)
+            let samples = (0..64).map(|i| v.point(a + (b - a) * i as f64 / 63.0).arr());
+            curve::points_scale(samples).max(f64::MIN_POSITIVE)
         };
-        // The sample grid maps to itself reversed: the size does not depend on the
+        // The sample grid maps to itself reversed: the scale does not depend on the
         // orientation, and forms kept by the curve keep it too.
         let scale = match &v.cert {
             Some(c) => c.forms.size(sampled),

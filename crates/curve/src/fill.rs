@@ -97,7 +97,7 @@ impl Region {
         }
         let size = outlines
             .iter()
-            .map(|o| o.profile.size())
+            .map(|o| o.profile.scale())
             .fold(0.0, f64::max);
         let chains: Vec<Chain<'_>> = outlines
             .iter()
@@ -181,7 +181,7 @@ fn parents(outlines: &[FilledOutline]) -> Result<Vec<Option<usize>>> {
         |b: &[f64; 4], p: crate::V2| b[0] <= p.x && b[1] <= p.y && b[2] >= p.x && b[3] >= p.y;
     let tests: Vec<Outline> = outlines
         .iter()
-        .map(|o| Outline::new(o.profile.segments(), o.profile.size()))
+        .map(|o| Outline::new(o.profile.segments(), o.profile.scale()))
         .collect();
     let mut within: Vec<Vec<usize>> = vec![Vec::new(); n];
     for i in 0..n {

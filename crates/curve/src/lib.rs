@@ -59,7 +59,7 @@ pub use affine::Affine;
 pub use boundary::Boundary;
 pub use corner_knots::{smooth_turn, DocumentSpan, CORNER_TURN};
 pub use error::{Error, Result};
-pub use extent::{box_size, curves_box, union as box_union, Box2};
+pub use extent::{box_size, curves_box, points_scale, union as box_union, Box2};
 pub use fill::{FillRule, FilledOutline};
 pub use frame::Frame;
 pub use geom::{distance_to_segment, squared_distance_to_segment, wrap_pi, Jet, V2};

@@ -7,6 +7,7 @@ use crate::box_tree::BoxTree;
 use crate::corner_knots::{smooth_turn, DocumentSpan, CORNER_TURN};
 use crate::crossing::first_crossing;
 use crate::error::{Error, Result};
+use crate::extent::points_scale;
 use crate::geom::{Jet, V2};
 use crate::param::ParamCurve;
 use crate::segment::Segment;
@@ -41,19 +42,19 @@ pub enum JointKind {
     Reflex,
 }
 
-/// How far apart (relative to the profile's size) the end of a segment and the start of the
+/// How far apart (relative to the profile's scale) the end of a segment and the start of the
 /// next may be: the interface contract's tolerance for drawings whose end points were rounded.
 pub const JOIN_GAP: f64 = 1e-9;
 
 /// A joint's gap (relative to the largest coordinate) that is rounding of the coordinates,
-/// whatever the size: end points computed far from the origin (an arc's, from its centre and
+/// whatever the scale: end points computed far from the origin (an arc's, from its centre and
 /// angles) round by a few units there.
 const JOIN_ROUNDING: f64 = ulps(16.0);
 
 /// Samples per segment of the polygon whose signed area gives a closed profile's orientation.
 const AREA_SAMPLES: usize = 32;
 
-/// The area (relative to the size squared) below which a closed profile encloses nothing.
+/// The area (relative to the scale squared) below which a closed profile encloses nothing.
 const FLAT_AREA: f64 = 1e-12;
 
 /// A chain of segments, closed or open, with its joints.
@@ -67,7 +68,7 @@ pub struct Profile {
     /// +1 counterclockwise, −1 clockwise (a closed profile), 0 open.
     orientation: f64,
     /// The diagonal of the box of the control points.
-    size: f64,
+    scale: f64,
     /// The largest turn a joint of this profile may have and be judged smooth.
     smooth_turn: f64,
     /// How far apart two computations of one point of it may lie.
@@ -84,7 +85,7 @@ pub struct Profile {
 
 impl Profile {
     /// The profile of `segments`, each starting where the previous one ends (within
-    /// [`JOIN_GAP`] of the size, or a few units of rounding of the coordinates far from the
+    /// [`JOIN_GAP`] of the scale, or a few units of rounding of the coordinates far from the
     /// origin); closed when `closed` says so, or, when it is `None`, when
     /// the last segment ends where the first starts. A spline segment with a corner inside it
     /// (a knot of full multiplicity where the tangent turns) is cut there into segments
@@ -148,11 +149,11 @@ impl Profile {
         if segments.is_empty() {
             return Err(Error::EmptyProfile);
         }
-        let size = size_of(&segments);
+        let scale = scale_of(&segments);
         // (Far from the origin a joint's two ends may round apart by more than that: a few
         // units of rounding of the coordinates are no gap.)
         let point_rounding = JOIN_ROUNDING * magnitude_of(&segments);
-        let room = (JOIN_GAP * size).max(point_rounding);
+        let room = (JOIN_GAP * scale).max(point_rounding);
         // (NaN fails too.)
         let joined = |gap: f64| gap <= room;
         for (i, w) in segments.windows(2).enumerate() {
@@ -197,7 +198,7 @@ impl Profile {
             turns.push((i, turn, smooth_turn(segments[i].start(), din, dout)));
         }
         // (Before the area: a bow tie encloses none, and its crossing is the cause.)
-        if let Some(c) = first_crossing(&segments, closed, size)? {
+        if let Some(c) = first_crossing(&segments, closed, scale)? {
             return Err(Error::SelfCrossing {
                 first: c.first,
                 second: c.second,
@@ -206,7 +207,7 @@ impl Profile {
         }
         let orientation = if closed {
             let area = signed_area(&segments);
-            if area.abs().partial_cmp(&(FLAT_AREA * size * size))
+            if area.abs().partial_cmp(&(FLAT_AREA * scale * scale))
                 != Some(std::cmp::Ordering::Greater)
             {
                 return Err(Error::FlatProfile { area });
@@ -254,7 +255,7 @@ impl Profile {
             closed,
             joints,
             orientation,
-            size,
+            scale,
             smooth_turn,
             point_rounding,
             boxes,
@@ -281,23 +282,24 @@ impl Profile {
     }
 
     /// The diagonal of the box of the segments' control points: the scale of the profile's
-    /// tolerances.
-    pub fn size(&self) -> f64 {
-        self.size
+    /// own tolerances ([`crate::points_scale`]). (The contract's size, which the options'
+    /// relative tolerances are taken of, is the larger side of its box: [`crate::box_size`].)
+    pub fn scale(&self) -> f64 {
+        self.scale
     }
 
-    /// How far apart two computations of one of its points may lie, whatever its size: a few
+    /// How far apart two computations of one of its points may lie, whatever its scale: a few
     /// units of rounding of its largest coordinate (a joint's two ends, a pair found from the
-    /// segments on both sides of a joint). Far below the size near the origin; far from it,
+    /// segments on both sides of a joint). Far below the scale near the origin; far from it,
     /// not: a part 0.03 wide drawn at 1e8 has its points rounded by 1.5e-8.
     pub fn point_rounding(&self) -> f64 {
         self.point_rounding
     }
 
-    /// How close two of its points are to count as one, at `share` of its size: never closer
+    /// How close two of its points are to count as one, at `share` of its scale: never closer
     /// than the rounding of its points ([`Profile::point_rounding`]).
     pub fn same_point_room(&self, share: f64) -> f64 {
-        (share * self.size).max(self.point_rounding)
+        (share * self.scale).max(self.point_rounding)
     }
 
     /// The largest turn a joint of this profile may have and be judged smooth (the most of its
@@ -455,15 +457,9 @@ fn control_box(s: &Segment) -> [f64; 4] {
     )
 }
 
-/// The diagonal of the box of the segments' control points.
-fn size_of(segments: &[Segment]) -> f64 {
-    let mut lo = V2::new(f64::INFINITY, f64::INFINITY);
-    let mut hi = V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for p in segments.iter().flat_map(|s| s.curve().control_points()) {
-        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
-        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
-    }
-    (hi - lo).norm()
+/// The scale of the segments' control points.
+fn scale_of(segments: &[Segment]) -> f64 {
+    points_scale(segments.iter().flat_map(|s| s.curve().control_points()))
 }
 
 /// The largest coordinate of the segments' control points.

@@ -35,7 +35,7 @@ impl Region {
         // (Each boundary is simple, proven when it was made: only pairs of boundaries are
         // tested, to the flatness of the outer boundary's size.)
         let chains: Vec<Chain<'_>> = boundaries.iter().map(|p| (p.segments(), true)).collect();
-        if let Some(c) = first_crossing_among(&chains, true, outer.size())? {
+        if let Some(c) = first_crossing_among(&chains, true, outer.scale())? {
             return Err(Error::BoundariesCross {
                 first: c.chains.0,
                 second: c.chains.1,
@@ -45,7 +45,7 @@ impl Region {
         // No crossings: a boundary lies inside another exactly when one of its points does.
         let outlines: Vec<Outline> = boundaries
             .iter()
-            .map(|p| Outline::new(p.segments(), p.size()))
+            .map(|p| Outline::new(p.segments(), p.scale()))
             .collect();
         let inside = |b: usize, of: usize| outlines[of].winds_round(boundaries[b].jet_to(0.0, 0).p);
         for h in 1..boundaries.len() {

@@ -51,7 +51,7 @@ impl PartialEq for SplineCurve {
     }
 }
 
-/// The largest gap between the end points, relative to the control points' size, that still
+/// The largest gap between the end points, relative to the control points' scale, that still
 /// makes a clamped curve closed: a few units of rounding of the points.
 const CLOSED_GAP: f64 = 1e-12;
 
@@ -66,8 +66,8 @@ impl SplineCurve {
                 got: curve.dim(),
             }));
         }
-        let size = control_size(&curve);
-        let closed = end_gap_of(&curve) <= CLOSED_GAP * size.max(f64::MIN_POSITIVE);
+        let scale = control_scale(&curve);
+        let closed = end_gap_of(&curve) <= CLOSED_GAP * scale.max(f64::MIN_POSITIVE);
         Ok(Self::from_rational(curve, closed, None, None))
     }
 
@@ -133,7 +133,7 @@ impl SplineCurve {
         let mut c = Self::new(Rational::new(spline.clone(), weights)?)?;
         // Judged again on the points as given, which carry no rounding of `X / w`.
         if let Some(gap) = end_gap(degree, spline.knots(), points, weights, 0.0) {
-            c.closed = gap <= CLOSED_GAP * control_size(&c.curve).max(f64::MIN_POSITIVE);
+            c.closed = gap <= CLOSED_GAP * control_scale(&c.curve).max(f64::MIN_POSITIVE);
         }
         c.data = Some(Data {
             points: spline,
@@ -391,14 +391,9 @@ fn end_gap_of(curve: &Rational) -> f64 {
     })
 }
 
-pub(crate) fn control_size(c: &Rational) -> f64 {
-    let pts = c.control_points();
-    let (mut lo, mut hi) = (V2::new(f64::MAX, f64::MAX), V2::new(f64::MIN, f64::MIN));
-    for p in &pts {
-        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
-        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
-    }
-    (hi - lo).norm()
+/// The scale of a curve's control points ([`crate::points_scale`]).
+pub(crate) fn control_scale(c: &Rational) -> f64 {
+    crate::extent::points_scale(c.control_points().iter().map(|p| [p[0], p[1]]))
 }
 
 /// Point and derivatives up to order `k ≤ 3` of the planar rational curve with homogeneous

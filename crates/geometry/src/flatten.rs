@@ -39,14 +39,14 @@ pub(crate) fn flattened_with_params(profile: &Profile, tol: f64) -> Vec<([f64; 2
     let tol = if tol.is_finite() && tol > 0.0 {
         tol
     } else {
-        1e-3 * profile.size()
+        1e-3 * profile.scale()
     };
     // (No finer than the rounding of the coordinates: below it no halving flattens a
     // piece, and the halvings would run to their bound everywhere.)
     let b = profile.bounding_box();
     let far = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let tol = tol.max(FLATTENING_ROUNDING * (profile.size() + far));
-    let joined = JOINED * profile.size();
+    let tol = tol.max(FLATTENING_ROUNDING * (profile.scale() + far));
+    let joined = JOINED * profile.scale();
     let mut points: Vec<([f64; 2], f64)> = Vec::new();
     for (i, s) in profile.segments().iter().enumerate() {
         let start = points.len();
@@ -223,7 +223,7 @@ mod tests {
             for (v, u) in &vertices {
                 let p = profile.jet_to(*u, 0).p.arr();
                 let off = (p[0] - v[0]).hypot(p[1] - v[1]);
-                prop_assert!(off <= 1e-12 * profile.size(), "a vertex {off:e} off the curve");
+                prop_assert!(off <= 1e-12 * profile.scale(), "a vertex {off:e} off the curve");
             }
         }
     }

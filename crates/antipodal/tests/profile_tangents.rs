@@ -345,21 +345,7 @@ fn a_curve_beside_a_profile_is_its_one_segment() {
     let swapped = common_tangents(&square, &ellipse, &opts).unwrap();
     assert_eq!(swapped.lines.len(), 4);
 
-    /// The ellipse known by evaluation only.
-    struct Sampled(Ellipse);
-    impl ParamCurve for Sampled {
-        fn domain(&self) -> (f64, f64) {
-            self.0.domain()
-        }
-        fn is_closed(&self) -> bool {
-            true
-        }
-        fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
-            self.0.jet_to(u, order)
-        }
-    }
-    impl curve::PlaneCurve for Sampled {}
-    let sampled = Sampled(ellipse);
+    let sampled = testkit::evaluation_only::EvaluationOnly(ellipse);
     let refused = common_tangents(curve::Boundary::Curve(&sampled), &square, &opts);
     assert_eq!(refused, Err(antipodal::Error::NoSegment { which: 1 }));
 }

@@ -10,6 +10,9 @@
 //!   another segment or backwards.
 //! - [`boundary_oracle`]: distances to a profile by dense sampling and golden-section search,
 //!   sharing no code with the crates; the exact winding number of a polygon.
+//! - [`evaluation_only`]: a curve known by evaluation only (no exact form).
+//! - [`far_joints`]: profiles with smooth joints (stadiums, filleted rectangles, D-shapes,
+//!   ovals of arcs) for the tests far from the origin.
 //! - [`outlines`]: the benchmarks' parts (the pocket, the CAD outline, gears, star polygons),
 //!   which the tests also run on, so a fault found on a benchmark shape is tested on it.
 //!
@@ -21,6 +24,8 @@
 //! ```
 
 pub mod boundary_oracle;
+pub mod evaluation_only;
+pub mod far_joints;
 #[doc(hidden)]
 pub mod near;
 pub mod outlines;

@@ -411,7 +411,7 @@ fn moves_with_the_profile(shape: &Profile) {
 /// one segment, in its own parameter; a curve known by evaluation only is refused by name.
 #[test]
 fn a_curve_beside_a_profile_is_its_one_segment() {
-    use curve::{Boundary, PlaneCurve, Segment, SegmentKind, SplineCurve};
+    use curve::{Boundary, Segment, SegmentKind, SplineCurve};
     let arch = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]];
     let spline = SplineCurve::clamped(3, &arch, None, None).unwrap();
     let segment = Segment::spline(SegmentKind::BSpline, spline.clone()).unwrap();
@@ -425,21 +425,7 @@ fn a_curve_beside_a_profile_is_its_one_segment() {
     // (A profile's branches say which segments their feet are on.)
     assert!(mixed.branches.iter().all(|b| b.segment.is_some()));
 
-    /// The spline known by evaluation only.
-    struct Sampled(SplineCurve);
-    impl ParamCurve for Sampled {
-        fn domain(&self) -> (f64, f64) {
-            self.0.domain()
-        }
-        fn is_closed(&self) -> bool {
-            false
-        }
-        fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
-            self.0.jet_to(u, order)
-        }
-    }
-    impl PlaneCurve for Sampled {}
-    let sampled = Sampled(spline);
+    let sampled = testkit::evaluation_only::EvaluationOnly(spline);
     let refused = bisector(&box_below, Boundary::Curve(&sampled), &opts);
     assert_eq!(refused, Err(zeroset::Error::NotExact { which: 2 }));
 }

@@ -393,7 +393,7 @@ fn end_gap_of(curve: &Rational) -> f64 {
 
 /// The scale of a curve's control points ([`crate::points_scale`]).
 pub(crate) fn control_scale(c: &Rational) -> f64 {
-    crate::extent::points_scale(c.control_points().iter().map(|p| [p[0], p[1]]))
+    crate::geom::points_scale(c.control_points().iter().map(|p| [p[0], p[1]]))
 }
 
 /// Point and derivatives up to order `k ≤ 3` of the planar rational curve with homogeneous

@@ -189,6 +189,26 @@ impl Jet {
     }
 }
 
+/// The scale of points: the diagonal of their box (0 for none), what a model's own tolerances
+/// (a profile's joins, a spline's closedness, a curve's sampled searches) are taken of. It
+/// is not the contract's size ([`crate::box_size`]), which the options' relative tolerances are.
+///
+/// ```
+/// assert_eq!(curve::points_scale([[0.0, 0.0], [3.0, 1.0], [1.0, 4.0]]), 5.0);
+/// ```
+pub fn points_scale(points: impl IntoIterator<Item = [f64; 2]>) -> f64 {
+    let mut lo = V2::new(f64::INFINITY, f64::INFINITY);
+    let mut hi = V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for p in points {
+        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
+        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
+    }
+    if lo.x > hi.x {
+        return 0.0;
+    }
+    (hi - lo).norm()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -246,24 +266,4 @@ mod tests {
         assert_eq!(wrap_pi(0.0), 0.0);
         testkit::assert_near!(wrap_pi(3.0 * PI), PI, 1e-15);
     }
-}
-
-/// The scale of points: the diagonal of their box (0 for none), what a model's own tolerances
-/// (a profile's joins, a spline's closedness, a curve's sampled searches) are taken of. It
-/// is not the contract's size ([`crate::box_size`]), which the options' relative tolerances are.
-///
-/// ```
-/// assert_eq!(curve::points_scale([[0.0, 0.0], [3.0, 1.0], [1.0, 4.0]]), 5.0);
-/// ```
-pub fn points_scale(points: impl IntoIterator<Item = [f64; 2]>) -> f64 {
-    let mut lo = V2::new(f64::INFINITY, f64::INFINITY);
-    let mut hi = V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for p in points {
-        lo = V2::new(lo.x.min(p[0]), lo.y.min(p[1]));
-        hi = V2::new(hi.x.max(p[0]), hi.y.max(p[1]));
-    }
-    if lo.x > hi.x {
-        return 0.0;
-    }
-    (hi - lo).norm()
 }

@@ -5,6 +5,7 @@ use crate::ledger::Ledger;
 use crate::view::View;
 use curve::V2;
 use numeric::certificate::{Doubt, Doubts};
+use numeric::newton2::{self, newton_step, Matrix2, Newton2, StepVerdict, Vector2};
 use numeric::rounding::ulps;
 use std::f64::consts::{PI, TAU};
 
@@ -349,9 +350,15 @@ pub(crate) fn polish(vs: &View, vt: &View, s: f64, t: f64, max_move: f64) -> Opt
     polish_within(vs, vt, s, t, area)
 }
 
+/// Linearisations of the antipodal system a polish makes, at most: from a nearby pair,
+/// quadratic convergence reaches the rounding floor in four or five.
+const PAIR_POLISH_STEPS: usize = 9;
+
 /// [`polish`] inside the box `area = ((s_lo, s_hi), (t_lo, t_hi))`: `None` as soon as an
 /// iterate leaves it (a bracket's Newton that heads out of the bracket is converging to
-/// some other pair, and is given up before it spends more jets on it).
+/// some other pair, and is given up before it spends more jets on it). The best point met is
+/// kept: each linearisation (one pair of jets) measures the end of the step before it, and
+/// the polish stops when that residual rises.
 pub(crate) fn polish_within(
     vs: &View,
     vt: &View,
@@ -360,54 +367,46 @@ pub(crate) fn polish_within(
     area: ((f64, f64), (f64, f64)),
 ) -> Option<(f64, f64)> {
     let ((s_lo, s_hi), (t_lo, t_hi)) = area;
-    let (mut s, mut t) = (s, t);
-    // The best point so far and its residual; each iteration evaluates one pair of jets,
-    // which gives both the residual of the current point and the Newton step from it.
-    let mut best = (f64::INFINITY, s, t);
-    for _ in 0..9 {
-        let step = newton_step(vs, vt, s, t);
-        if step.residual > best.0 {
-            break;
-        }
-        best = (step.residual, s, t);
-        // At the rounding floor another step only moves within the noise (it used to take
-        // three or four more jet pairs to see the residual rise).
-        if step.residual <= RESIDUAL_FLOOR {
-            break;
-        }
-        let Some((ds, dt)) = step.step else {
-            break;
-        };
-        if ds.abs() <= ulps(4.0) * s.abs().max(1.0) && dt.abs() <= ulps(4.0) * t.abs().max(1.0) {
-            break;
-        }
-        let (ns, nt) = (s - ds, t - dt);
-        // (NaN leaves too.)
-        let inside = ns >= s_lo && ns <= s_hi && nt >= t_lo && nt <= t_hi;
-        if !inside {
-            return None;
-        }
-        s = ns;
-        t = nt;
-    }
-    Some((best.1, best.2))
+    // At the rounding floor another step only moves within the noise (it used to take three
+    // or four more jet pairs to see the residual rise).
+    let limits = Newton2 {
+        residual: RESIDUAL_FLOOR,
+        ..Newton2::steps(PAIR_POLISH_STEPS)
+    };
+    newton2::polish(
+        Vector2::new(s, t),
+        limits,
+        |x| antipodal_system(vs, vt, x[0], x[1]),
+        |x, step| x - step,
+        |it| {
+            let (s, t) = (it.from[0], it.from[1]);
+            if it.step[0].abs() <= ulps(4.0) * s.abs().max(1.0)
+                && it.step[1].abs() <= ulps(4.0) * t.abs().max(1.0)
+            {
+                return StepVerdict::Converged;
+            }
+            let (ns, nt) = (it.to[0], it.to[1]);
+            // (NaN leaves too.)
+            let inside = ns >= s_lo && ns <= s_hi && nt >= t_lo && nt <= t_hi;
+            if inside {
+                StepVerdict::Continue
+            } else {
+                StepVerdict::Abandon
+            }
+        },
+    )
+    .best()
+    .map(|x| (x[0], x[1]))
 }
 
 /// Tolerances a Newton step from a found pair may still take for the pair to count as
 /// resolved: the polish's own reach, within which a march's limit is placed.
 const RESOLVED_STEPS: f64 = 64.0;
 
-/// The antipodal system at one point: its residual and Newton's step from there.
-struct NewtonStep {
-    /// The sines of the angles between the tangents and between `r` and the tangent at `s`,
-    /// summed.
-    residual: f64,
-    /// The step `(ds, dt)` to subtract (`None` where the Jacobian is singular).
-    step: Option<(f64, f64)>,
-}
-
-/// [`NewtonStep`] at `(s, t)`.
-fn newton_step(vs: &View, vt: &View, s: f64, t: f64) -> NewtonStep {
+/// The antipodal system at `(s, t)`: its value `(α′(s) × α′(t), r · α′(s))`, its Jacobian,
+/// and its residual, the sines of the angles between the tangents and between `r` and the
+/// tangent at `s`, summed.
+fn antipodal_system(vs: &View, vt: &View, s: f64, t: f64) -> (Vector2<f64>, Matrix2<f64>, f64) {
     let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
     let r = jt.p - js.p;
     let f1 = js.d1.cross(jt.d1);
@@ -416,10 +415,11 @@ fn newton_step(vs: &View, vt: &View, s: f64, t: f64) -> NewtonStep {
         (f1 / (js.d1.norm() * jt.d1.norm())).abs() + (f2 / (r.norm() * js.d1.norm())).abs();
     let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
     let (a21, a22) = (-js.d1.dot(js.d1) + r.dot(js.d2), jt.d1.dot(js.d1));
-    let det = a11 * a22 - a12 * a21;
-    let step = (det != 0.0 && det.is_finite())
-        .then(|| ((f1 * a22 - f2 * a12) / det, (a11 * f2 - a21 * f1) / det));
-    NewtonStep { residual, step }
+    (
+        Vector2::new(f1, f2),
+        Matrix2::new(a11, a12, a21, a22),
+        residual,
+    )
 }
 
 /// `(s, t)` is a pair to the tolerance `tol`: a root of the antipodal system to rounding, or
@@ -429,15 +429,18 @@ fn newton_step(vs: &View, vt: &View, s: f64, t: f64) -> NewtonStep {
 /// long, and Newton from any point of them found a "pair" whose θ was zero because its `t`
 /// had left the opposite point, the tangents no longer parallel.)
 pub(crate) fn is_resolved(vs: &View, vt: &View, s: f64, t: f64, tol: f64) -> bool {
-    let at = newton_step(vs, vt, s, t);
-    at.residual <= RESIDUAL_FLOOR
-        || at
-            .step
-            .is_some_and(|(ds, dt)| ds.abs() <= tol && dt.abs() <= tol)
+    let (value, jacobian, residual) = antipodal_system(vs, vt, s, t);
+    residual <= RESIDUAL_FLOOR
+        || newton_step(value, jacobian, 0.0).is_some_and(|d| d[0].abs() <= tol && d[1].abs() <= tol)
 }
 
+/// Steps of a common tangent's polish, at most (each measured: one linearisation more).
+const TANGENT_POLISH_STEPS: usize = 8;
+
 /// Newton's method on the common-tangent system `α′(s) × β′(t) = 0`, `(β(t) − α(s)) × α′(s) = 0`
-/// from a found tangent: polishes it to full precision (`None` if it moves away).
+/// from a found tangent: polishes it to full precision (`None` if it moves away). The best
+/// point met is kept: a step is taken while the residual at its end does not rise, and the
+/// polish stops after a step below the parameters' rounding.
 pub(crate) fn polish_tangent(
     vs: &View,
     vt: &View,
@@ -445,44 +448,47 @@ pub(crate) fn polish_tangent(
     t: f64,
     max_move: f64,
 ) -> Option<(f64, f64)> {
-    let resid = |s: f64, t: f64| {
-        let (js, jt) = (vs.jet_to(s, 1), vt.jet_to(t, 1));
-        let r = jt.p - js.p;
-        (js.d1.cross(jt.d1) / (js.d1.norm() * jt.d1.norm())).abs()
-            + (r.cross(js.d1) / (r.norm() * js.d1.norm())).abs()
-    };
-    let (s0, t0) = (s, t);
-    let (mut s, mut t) = (s, t);
-    let mut best = resid(s, t);
-    for _ in 0..8 {
-        let (js, jt) = (vs.jet_to(s, 2), vt.jet_to(t, 2));
+    let tangent_system = |x: &Vector2<f64>| {
+        let (js, jt) = (vs.jet_to(x[0], 2), vt.jet_to(x[1], 2));
         let r = jt.p - js.p;
         let f1 = js.d1.cross(jt.d1);
         let f2 = r.cross(js.d1);
+        let residual =
+            (f1 / (js.d1.norm() * jt.d1.norm())).abs() + (f2 / (r.norm() * js.d1.norm())).abs();
         let (a11, a12) = (js.d2.cross(jt.d1), js.d1.cross(jt.d2));
         let (a21, a22) = (r.cross(js.d2), jt.d1.cross(js.d1));
-        let det = a11 * a22 - a12 * a21;
-        if det == 0.0 || !det.is_finite() {
-            break;
-        }
-        let ds = (f1 * a22 - f2 * a12) / det;
-        let dt = (a11 * f2 - a21 * f1) / det;
-        let (ns, nt) = (s - ds, t - dt);
-        if (ns - s0).abs() > max_move || (nt - t0).abs() > max_move {
-            return None;
-        }
-        let nr = resid(ns, nt);
-        if nr > best {
-            break;
-        }
-        best = nr;
-        s = ns;
-        t = nt;
-        if ds.abs() + dt.abs() <= STEP_ROUNDING * (1.0 + s.abs() + t.abs()) {
-            break;
-        }
-    }
-    Some((s, t))
+        (
+            Vector2::new(f1, f2),
+            Matrix2::new(a11, a12, a21, a22),
+            residual,
+        )
+    };
+    let (s0, t0) = (s, t);
+    // The steps taken, and whether the last one was below the parameters' rounding: the
+    // polish ends at its end (measured by the linearisation after it: not risen).
+    let (mut steps, mut settled) = (0, false);
+    // No residual test: only the rise of the residual, the step test and the bound end it.
+    newton2::polish(
+        Vector2::new(s, t),
+        Newton2::steps(TANGENT_POLISH_STEPS + 1),
+        tangent_system,
+        |x, step| x - step,
+        |it| {
+            if settled || steps == TANGENT_POLISH_STEPS {
+                return StepVerdict::Converged;
+            }
+            let (ns, nt) = (it.to[0], it.to[1]);
+            if (ns - s0).abs() > max_move || (nt - t0).abs() > max_move {
+                return StepVerdict::Abandon;
+            }
+            steps += 1;
+            settled =
+                it.step[0].abs() + it.step[1].abs() <= STEP_ROUNDING * (1.0 + ns.abs() + nt.abs());
+            StepVerdict::Continue
+        },
+    )
+    .best()
+    .map(|x| (x[0], x[1]))
 }
 
 /// The overlap (in radians) of two pieces' ranges of opposite normal angles below which it is

@@ -12,7 +12,7 @@ use bspline::Piecewise;
 use curve::V2;
 use numeric::certificate::{Doubt, Doubts};
 use numeric::rounding::ulps;
-use numeric::solve::{bracketed, Accuracy};
+use numeric::solve::{bracketed, newton_within, Accuracy};
 use smallvec::SmallVec;
 
 /// Halley's step safeguarded by a bracket on which `f` changes sign (see
@@ -454,22 +454,16 @@ fn sampled(
     accept(u).then_some(u)
 }
 
+/// Newton steps of a cluster's root polished on the curve, at most.
+const CLUSTER_POLISH_STEPS: usize = 8;
+
 /// A few Newton steps kept inside `[lo, hi]`.
 fn polish(f: &impl Fn(f64) -> (f64, f64, f64), u: f64, lo: f64, hi: f64) -> f64 {
-    let mut x = u;
-    for _ in 0..8 {
-        let (v, d, _) = f(x);
-        if d == 0.0 || v == 0.0 {
-            break;
-        }
-        let nx = (x - v / d).clamp(lo, hi);
-        if (nx - x).abs() <= NEWTON_STALL * (1.0 + x.abs()) {
-            x = nx;
-            break;
-        }
-        x = nx;
-    }
-    x
+    let value_and_slope = |x| {
+        let (value, slope, _) = f(x);
+        (value, slope)
+    };
+    newton_within(value_and_slope, u, (lo, hi), CLUSTER_POLISH_STEPS)
 }
 
 /// A value at an end (relative to the two end values) within rounding of zero: a root there
@@ -479,9 +473,6 @@ const END_ROOT: f64 = 1e-13;
 /// Jia's sampled test: an end value this small beside the other is a root at that end (the
 /// primitive touches zero there; its sign is rounding).
 const END_ZERO: f64 = 1e-12;
-
-/// A Newton step below this part of the parameter is below its rounding.
-const NEWTON_STALL: f64 = 1e-16;
 
 #[cfg(test)]
 mod tests {

@@ -6,9 +6,13 @@
 //!   `f64::EPSILON`.
 //! - [`solve`]: the bracketed 1-D solvers: [`solve::bracketed`] (Newton or Halley,
 //!   safeguarded by bisection, with its explicit [`solve::Accuracy`]), and for functions
-//!   without a derivative the steppers [`solve::Itp`] and [`solve::Illinois`].
+//!   without a derivative the steppers [`solve::Itp`] and [`solve::Illinois`]; without a
+//!   bracket, [`solve::newton_within`] (Newton clamped into an interval) and [`solve::secant`]
+//!   (secant steps, the answer held to a stated bound).
 //! - [`newton2`]: the one two-dimensional Newton's method, [`newton2::newton2`], on
-//!   `nalgebra`'s fixed-size matrices, with its damped step, residual test and iteration bound.
+//!   `nalgebra`'s fixed-size matrices, with its damped step, residual test and iteration bound,
+//!   and its finish [`newton2::polish`], which keeps the best iterate met by the caller's
+//!   residual and stops when it rises.
 //! - [`minimize`]: the one bracketed minimisation, [`minimize::minimize`] (parabolic steps
 //!   safeguarded by golden sections), and its Newton polish, [`minimize::polish`].
 //! - [`subdivide`]: the one halve-until-decided driver, [`subdivide::depth_first`] (depth

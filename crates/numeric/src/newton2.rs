@@ -26,6 +26,20 @@
 //! - *exhausted* after [`Newton2::max_steps`] linearisations, the iteration bound.
 //!
 //! Every outcome carries the last iterate.
+//!
+//! **The polish, keeping the best point met.** [`polish`] is the same iteration for a finish
+//! from a start already near a root, where rounding sets the floor: the caller's
+//! linearisation also measures a residual of its own (any measure that is 0 at a root, such
+//! as sines of angles that a root makes 0), and the iteration keeps the iterate of least
+//! residual met and stops as soon as the residual rises. At the rounding floor a Newton step
+//! divides noise by noise; the iterate it reaches may be worse than the one it left, and the
+//! polish returns the one it left. Its convergence is Newton's (quadratic near a simple root);
+//! its bound is [`Newton2::max_steps`] linearisations, each measuring the end of the step
+//! before it. Its steps are undamped (`halvings` is not used: the kept best is its guard).
+//! It stops, in this order of tests per linearisation: where the residual rose (the best is
+//! the iterate before); where the residual test holds; where `J` is singular; where the judge
+//! says converged (the step's start is the answer: its end was never measured) or abandons
+//! the step (the step's end is returned, as [`newton2`] does); after the bound (the best).
 
 pub use nalgebra::{Matrix2, Vector2};
 
@@ -212,6 +226,96 @@ pub fn newton2<X: Copy>(
     Outcome::Exhausted(x)
 }
 
+/// How a [`polish`] ended. Every outcome but [`Polished::Abandoned`] carries the best
+/// iterate met: the one of least residual among those linearised.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Polished<X> {
+    /// The residual test held at the best iterate, or the judge's step test on the step from
+    /// it.
+    Converged(X),
+    /// The residual rose at the end of the step from the best iterate.
+    Rose(X),
+    /// The Jacobian was singular at the best iterate.
+    Singular(X),
+    /// The judge rejected a step; the iterate is the step's end.
+    Abandoned(X),
+    /// The iteration bound was reached.
+    Exhausted(X),
+}
+
+impl<X> Polished<X> {
+    /// The best iterate met, unless the judge abandoned the polish.
+    pub fn best(self) -> Option<X> {
+        match self {
+            Polished::Converged(x)
+            | Polished::Rose(x)
+            | Polished::Singular(x)
+            | Polished::Exhausted(x) => Some(x),
+            Polished::Abandoned(_) => None,
+        }
+    }
+}
+
+/// Newton's finish from `start`, keeping the best iterate met (the module's documentation
+/// gives its stopping rule). `linearize(x)` returns `(F(x), J(x), residual(x))`, the residual
+/// the caller's own measure of how far `x` is from a root; `advance(x, δ)` moves an iterate
+/// by `−δ`; `judge` sees each step and says whether to go on. At most
+/// [`Newton2::max_steps`] linearisations; [`Newton2::halvings`] is not used.
+///
+/// ```
+/// use nalgebra::{Matrix2, Vector2};
+/// use numeric::newton2::{polish, Newton2, StepVerdict};
+/// // The unit circle meets the line y = x at (√½, √½); the residual is the largest component.
+/// let f = |p: &Vector2<f64>| {
+///     let value = Vector2::new(p.x * p.x + p.y * p.y - 1.0, p.y - p.x);
+///     (value, Matrix2::new(2.0 * p.x, 2.0 * p.y, -1.0, 1.0), value.amax())
+/// };
+/// let root = polish(Vector2::new(0.8, 0.6), Newton2::steps(20), f, |x, d| x - d,
+///     |_| StepVerdict::Continue)
+///     .best()
+///     .unwrap();
+/// assert!((root.x - 0.5f64.sqrt()).abs() < 1e-15 && (root.y - root.x).abs() < 1e-15);
+/// ```
+pub fn polish<X: Copy>(
+    start: X,
+    limits: Newton2,
+    mut linearize: impl FnMut(&X) -> (Vector2<f64>, Matrix2<f64>, f64),
+    mut advance: impl FnMut(&X, Vector2<f64>) -> X,
+    mut judge: impl FnMut(&Iterate<X>) -> StepVerdict,
+) -> Polished<X> {
+    debug_assert_eq!(limits.halvings, 0, "the polish does not damp its steps");
+    let mut x = start;
+    // The best iterate and its residual: the residual falls at every step taken, so the best
+    // is the last iterate measured (a NaN residual is kept: no test can tell it is worse).
+    let (mut best, mut least) = (start, f64::INFINITY);
+    for _ in 0..limits.max_steps {
+        let (value, jacobian, residual) = linearize(&x);
+        if residual > least {
+            return Polished::Rose(best);
+        }
+        (best, least) = (x, residual);
+        if residual <= limits.residual {
+            return Polished::Converged(x);
+        }
+        let Some(step) = newton_step(value, jacobian, limits.singular) else {
+            return Polished::Singular(x);
+        };
+        let to = advance(&x, step);
+        match judge(&Iterate {
+            from: x,
+            to,
+            step,
+            value,
+            jacobian,
+        }) {
+            StepVerdict::Continue => x = to,
+            StepVerdict::Converged => return Polished::Converged(x),
+            StepVerdict::Abandon => return Polished::Abandoned(to),
+        }
+    }
+    Polished::Exhausted(best)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -368,5 +472,115 @@ mod tests {
             newton2(start, limits, thin, minus, |_| StepVerdict::Converged),
             Outcome::Converged(_)
         ));
+    }
+
+    /// The circle of radius `radius` about the origin and the line through it at angle `phi`,
+    /// with a deterministic noise of amplitude `noise` on the first component (a residual
+    /// with a rounding floor); the residual is the largest component.
+    fn circle_and_line(
+        radius: f64,
+        phi: f64,
+        noise: f64,
+    ) -> impl Fn(&Vector2<f64>) -> (Vector2<f64>, Matrix2<f64>, f64) {
+        let (sin, cos) = phi.sin_cos();
+        move |p| {
+            let wobble = noise * (1e9 * (p.x + 2.0 * p.y)).sin();
+            let value = Vector2::new(
+                p.norm_squared() - radius * radius + wobble,
+                cos * p.y - sin * p.x,
+            );
+            let jacobian = Matrix2::new(2.0 * p.x, 2.0 * p.y, -sin, cos);
+            (value, jacobian, value.amax())
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(5000))]
+
+        /// From a start within a fifth of the radius of where a line through the centre meets
+        /// a circle, the polish reaches the closed-form point to rounding (without noise) or
+        /// to the noise's reach (with it), and what it returns is the least residual it
+        /// measured, every residual before it no lower than the one after.
+        #[test]
+        fn polish_keeps_the_least_residual_and_reaches_the_closed_form(
+            radius in 0.5f64..2.0,
+            phi in 0.0f64..6.3,
+            off in proptest::array::uniform2(-0.14f64..0.14),
+            noise in prop_oneof![Just(0.0), Just(1e-10)],
+        ) {
+            let f = circle_and_line(radius, phi, noise);
+            let root = Vector2::new(radius * phi.cos(), radius * phi.sin());
+            let start = root + radius * Vector2::new(off[0], off[1]);
+            let mut measured = Vec::new();
+            let out = polish(start, Newton2::steps(30), |x| {
+                let l = f(x);
+                measured.push((*x, l.2));
+                l
+            }, minus, |_| StepVerdict::Continue);
+            let best = out.best().unwrap();
+            let least = measured.iter().map(|m| m.1).fold(f64::INFINITY, f64::min);
+            prop_assert_eq!(f(&best).2, least, "{:?}", out);
+            // The residuals fall until the last one measured, which may have risen.
+            let kept = &measured[..measured.len() - usize::from(matches!(out, Polished::Rose(_)))];
+            prop_assert!(kept.windows(2).all(|w| w[1].1 <= w[0].1), "{measured:?}");
+            prop_assert!(kept.last().unwrap().0 == best);
+            // The line's residual is a distance, the circle's one a gap of squares: the point
+            // is within a few units of rounding of the root, or of the noise over 2 radius.
+            let reach = crate::rounding::ulps(8.0) * radius + 4.0 * noise / radius;
+            prop_assert!((best - root).amax() <= reach, "{best} vs {root} ({out:?})");
+        }
+    }
+
+    /// Each way a polish ends: the rise of the residual returns the iterate before it; the
+    /// judge's convergence returns the step's start; its rejection the step's end; the
+    /// singular Jacobian and the bound the best iterate.
+    #[test]
+    fn every_polish_outcome_carries_its_iterate() {
+        let start = Vector2::new(1.0, 1.0);
+        let limits = Newton2::steps(5);
+        // F(x) = x, the residual |x|∞ and, past the first step, a residual that rises.
+        let linear = |x: &Vector2<f64>| (*x, Matrix2::identity(), x.amax());
+        let rising = |x: &Vector2<f64>| (*x, Matrix2::identity(), 1.0 + x.amax());
+        let halving = |x: &Vector2<f64>, d: Vector2<f64>| x - 0.5 * d;
+        let go_on = |_: &Iterate<Vector2<f64>>| StepVerdict::Continue;
+        assert_eq!(
+            polish(start, limits, linear, minus, go_on),
+            Polished::Converged(Vector2::zeros())
+        );
+        let rose = polish(
+            start,
+            limits,
+            |x: &Vector2<f64>| {
+                let l = linear(x);
+                (l.0, l.1, if x.amax() < 1.0 { 3.0 } else { 2.0 })
+            },
+            halving,
+            go_on,
+        );
+        assert_eq!(rose, Polished::Rose(start));
+        let converged = polish(start, limits, rising, halving, |_| StepVerdict::Converged);
+        assert_eq!(converged, Polished::Converged(start));
+        let abandoned = polish(start, limits, rising, halving, |_| StepVerdict::Abandon);
+        assert_eq!(abandoned, Polished::Abandoned(Vector2::new(0.5, 0.5)));
+        let flat = |_: &Vector2<f64>| {
+            (
+                Vector2::new(1.0, 1.0),
+                Matrix2::new(1.0, 2.0, 2.0, 4.0),
+                1.0,
+            )
+        };
+        assert_eq!(
+            polish(start, limits, flat, minus, go_on),
+            Polished::Singular(start)
+        );
+        // Five linearisations, the residual falling: the fifth iterate measured is the best
+        // (the step from it is taken but never measured).
+        let exhausted = polish(start, limits, linear, halving, go_on);
+        assert_eq!(
+            exhausted,
+            Polished::Exhausted(Vector2::new(1.0, 1.0) / 16.0)
+        );
+        assert_eq!(exhausted.best(), Some(Vector2::new(1.0, 1.0) / 16.0));
+        assert_eq!(abandoned.best(), None);
     }
 }

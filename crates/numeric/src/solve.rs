@@ -4,10 +4,17 @@
 //!
 //! Every one-dimensional refinement of the workspace goes through [`bracketed`]: a root the
 //! certified counters have isolated, a primitive of Jia's method on a monotone segment, a
-//! crossing of a zero set with a cell edge.
+//! crossing of a zero set with a cell edge. Without a bracket, two finishes: [`newton_within`]
+//! (Newton's steps clamped into an interval, for a root located but not bracketed, as a
+//! cluster's) and [`secant`] (secant steps that may leave the starts' interval, the answer
+//! held to a stated bound).
 
 mod illinois;
+mod newton;
+mod secant;
 pub use illinois::{End, Illinois};
+pub use newton::newton_within;
+pub use secant::secant;
 
 /// How far [`bracketed`] refines, and where it starts.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -6,8 +6,9 @@ use super::Branch;
 use crate::candidates::Vertex;
 use crate::sites::EMPTY_SLACK;
 use numeric::rounding::ulps;
+use numeric::solve::secant;
 
-/// Newton steps of a foot-point solve.
+/// Secant steps of a foot-point solve.
 const FOOT_STEPS: usize = 30;
 
 /// The secant of a foot-point solve starts from the guessed foot and one this share of the
@@ -87,69 +88,38 @@ impl Branch<'_, '_> {
                 v
             }
         };
-        // Secant steps from two feet; the foot they converge to, if it is one.
-        let secant = |mut u0: f64, mut u1: f64| -> Option<Vertex> {
-            let (mut g0, mut g1) = (reduced(u0), reduced(u1));
-            // The iterate of least gap is the foot: at the gap's rounding floor (~1e-16 of
-            // the coordinates, far from the origin well above 1e-16 of the size) the steps
-            // divide noise by noise and may throw the next iterate anywhere.
-            let mut best = (f64::INFINITY, u1);
-            for (u, gu) in [(u0, g0), (u1, g1)] {
-                if gu.abs() < best.0 {
-                    best = (gu.abs(), u);
-                }
-            }
-            for _ in 0..FOOT_STEPS {
-                if g1 == 0.0 || g1 == g0 || (u1 - u0).abs() <= ulps(1.0) * u1.abs().max(1.0) {
-                    break;
-                }
-                let next = u1 - g1 * (u1 - u0) / (g1 - g0);
-                if !next.is_finite() {
-                    break;
-                }
-                (u0, g0) = (u1, g1);
-                u1 = next;
-                g1 = reduced(u1);
-                if !g1.is_finite() {
-                    break;
-                }
-                if g1.abs() < best.0 {
-                    best = (g1.abs(), u1);
-                }
-            }
-            self.foot_solved(keep, guess, p, q, (lo, hi), best.1, &g)
+        // The secant may leave the bracket (where the branch turns between its vertices,
+        // the other foot goes past both of theirs and back); by no more than the kept foot
+        // moves between them. (Its iterate of least gap is the foot: at the gap's rounding
+        // floor, ~1e-16 of the coordinates, far from the origin well above 1e-16 of the
+        // size, the steps divide noise by noise and may throw the next iterate anywhere.)
+        let span = (hi - lo).max((q[keep] - p[keep]).abs()).max(ulps(1.0));
+        let within = (lo - span, hi + span);
+        let foot = |u0: f64, u1: f64| {
+            secant(&reduced, (u0, u1), FOOT_STEPS, within)
+                .and_then(|u| self.foot_solved(keep, guess, p, u, &g))
         };
         // From the two vertices' feet; failing that, from the guess and a foot a little
         // beside it (beside a corner on the kept foot's own line the equidistant point of
         // the corner is at infinity, and a secant from there strays).
-        secant(lo, hi).or_else(|| {
+        foot(lo, hi).or_else(|| {
             let u = guess[other];
-            secant(u, u + START_STEP * (hi - lo).max(ulps(1.0)))
+            foot(u, u + START_STEP * (hi - lo).max(ulps(1.0)))
         })
     }
 
     /// The vertex with foot `keep` at `guess[keep]` and the other at `u`, where the secant
-    /// of [`Self::snap_keeping`] (bracketed by the feet `lo`, `hi` of the vertices `p`, `q`;
-    /// `g` the equidistance's gap and point) left it: if that is a foot.
-    #[allow(clippy::too_many_arguments)]
+    /// of [`Self::snap_keeping`] (from the feet of the vertex `p`; `g` the equidistance's gap
+    /// and point) left it: if that is a foot.
     fn foot_solved(
         &self,
         keep: usize,
         guess: [f64; 2],
         p: [f64; 2],
-        q: [f64; 2],
-        (lo, hi): (f64, f64),
         u: f64,
         g: &dyn Fn(f64) -> (f64, curve::V2),
     ) -> Option<Vertex> {
         let (c, other) = (self.c, 1 - keep);
-        // The secant may leave the bracket (where the branch turns between its vertices,
-        // the other foot goes past both of theirs and back); by no more than the kept foot
-        // moves between them.
-        let span = (hi - lo).max((q[keep] - p[keep]).abs()).max(ulps(1.0));
-        if !(u >= lo - span && u <= hi + span) {
-            return None;
-        }
         // Two feet on one segment keep their order: beside the feet's meeting the secant
         // may find the trivial solution, both feet at one point, or pass it.
         if c.boundary[0] == c.boundary[1] && c.segment[0] == c.segment[1] {

@@ -26,6 +26,7 @@ mod polyline;
 mod run;
 mod site_pairs;
 mod stretches;
+mod tangent_centre;
 mod whole_curve;
 
 use crate::bisector::{Bisector, BisectorOptions};

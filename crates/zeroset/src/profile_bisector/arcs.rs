@@ -25,6 +25,7 @@ use super::lines::STEPS;
 use super::point_site::Reach;
 use super::polyline::sample_runs;
 use super::stretches::{Cut, Cuts};
+use super::tangent_centre::tangent_centre;
 use crate::bisector::{in_frame, Bisector, Branch};
 use crate::error::Result;
 use bspline::roots::RootOptions;
@@ -99,6 +100,13 @@ pub(crate) fn arc_bisector(
     };
     for tau in [1.0, -1.0] {
         let Some(sign) = Signed::new(&first, &second, tau)? else {
+            // (A line tangent to the circle: its centre, with feet apart, where the contact
+            // is on the segment.)
+            if let (Carrier::Line, Carrier::Circle { center, .. }) = (ka, kb) {
+                let centre = tangent_centre(a, b, center, swapped);
+                out.isolated
+                    .extend(centre.filter(|_| out.isolated.is_empty()));
+            }
             continue;
         };
         let mut cuts = Cuts::new(lo, hi, opts);
@@ -443,7 +451,8 @@ struct Vertex {
 impl Signed {
     /// `None` where `D` vanishes for this sign: a line tangent to the circle, all of whose
     /// bisector points for this sign lie on the normal common to both at the point of contact,
-    /// with both feet there (no point of the medial axis, and none determined by the feet).
+    /// with both feet there (none determined by the feet) but for the circle's centre
+    /// ([`tangent_centre`]).
     fn new(a: &First, b: &Second, tau: f64) -> Result<Option<Self>> {
         let q0 = b.pivot();
         let q =

@@ -5,6 +5,7 @@ use super::arcs::{arc_bisector, Carrier};
 use super::lines;
 use super::point_site::{corner_corner, corner_curve, Corner, SharedEnd};
 use super::run::Run;
+use super::tangent_centre::tangent_circle_centres;
 use super::Site;
 use crate::bisector::{curve_bisector, curve_self_bisector, Bisector, BisectorPoint, Branch};
 use crate::error::Result;
@@ -129,7 +130,8 @@ impl Run<'_> {
             }
         }
         if let (Some(k1), Some(k2)) = (carrier(s1), carrier(s2)) {
-            if let Some(found) = arc_bisector(c1, k1, c2, k2, &self.reach())? {
+            if let Some(mut found) = arc_bisector(c1, k1, c2, k2, &self.reach())? {
+                found.isolated.extend(tangent_circle_centres(s1, s2));
                 self.add(found, [i, j], Determinate::ApartFeet, out);
                 return Ok(());
             }

@@ -1,7 +1,7 @@
 //! The two-curve commands (`tangents`, `bisector`), on smooth curves or, where one is a
 //! profile, on profiles.
 
-use super::errors::{antipodal_error, refuse, zeroset_error};
+use super::errors::{antipodal_error, zeroset_error};
 use super::found::Doubted;
 use super::params::{DocMap, InDocument};
 use super::prepared::{smooth_map, spline_with_corners};
@@ -62,68 +62,46 @@ pub fn bisector(
     let analytic = curves
         .iter()
         .any(|c| matches!(c.shape, CurveKind::Analytic(_)));
-    let found = if curves.iter().all(|c| spline_in_profile_exactly(c)) {
-        // Splines go as profiles: one smooth segment is the curve it is (zeroset runs the
-        // curve's bisector on it), written as the curve's document; a spline with corners is
-        // the profile of its pieces.
-        let profiles = profiles_of(&curves)?;
-        let maps: Vec<DocMap<'_>> = profiles.iter().map(DocMap::Profile).collect();
-        let found = on_profiles(&profiles, opts);
-        if profiles.iter().any(has_corners) {
-            found.map(|f| BisectorFound::Profile(f.into_document(&maps)))
-        } else {
-            found.map(|f| BisectorFound::Curve(f.without_sites().into_document(&maps)))
-        }
-    } else if analytic || needs_profiles(&curves)? {
+    let found = if analytic || needs_profiles(&curves)? {
         let profiles = profiles_of(&curves)?;
         let maps: Vec<DocMap<'_>> = profiles.iter().map(DocMap::Profile).collect();
         on_profiles(&profiles, opts).map(|f| BisectorFound::Profile(f.into_document(&maps)))
+    } else if curves
+        .iter()
+        .all(|c| matches!(c.shape, CurveKind::Segment(_)))
+    {
+        // Lines and arcs go as profiles of their one segment, so that their closed forms
+        // apply (two arcs of one circle: its centre). Written as the curves' document: no
+        // sites, each parameter the segment's own (a profile of one segment spans its own
+        // domain).
+        let profiles = profiles_of(&curves)?;
+        let maps: Vec<DocMap<'_>> = profiles.iter().map(DocMap::Profile).collect();
+        on_profiles(&profiles, opts)
+            .map(|f| BisectorFound::Curve(f.without_sites().into_document(&maps)))
     } else {
-        // Lines and arcs read as curves (and the splines beside them, or on a domain the
-        // profile's parameter would round) keep the zero set of their rational forms in this
-        // step: a profile would take their closed forms, which change the results (for the
-        // better: a circle's centre found), a later step of its own.
-        let splines = curves
-            .iter()
-            .map(|c| spline_of(c))
-            .collect::<Result<Vec<_>, _>>()?;
-        let maps: Vec<DocMap<'_>> = curves.iter().map(|c| smooth_map(c)).collect();
-        match splines[..] {
-            [a, b] => zeroset::bisector(a, b, opts),
-            [one, ..] => zeroset::self_bisector(one, opts),
+        // Smooth splines, and lines or arcs beside them, are the curves they are: the curve
+        // engine on their rational forms, in their own parameters. (No closed form takes a
+        // spline; as a profile, a spline would lose its own parameter's last digits on a
+        // domain other than [0, 2^k] and a periodic one its whole curve, for the same points.)
+        match curves[..] {
+            [a, b] => zeroset::bisector(a.plane_curve(), b.plane_curve(), opts),
+            [one, ..] => zeroset::self_bisector(one.plane_curve(), opts),
             [] => unreachable!("one curve at least"),
         }
-        .map(|f| BisectorFound::Curve(f.into_document(&maps)))
+        .map(|f| BisectorFound::Curve(f.into_document(&maps_of(&curves))))
     };
     found.map_err(zeroset_error)
 }
 
-/// Whether `c` is a spline whose parameter a profile of it carries exactly: its domain is
-/// `[0, 2^k]` (a Bézier's `[0, 1]`, a B-spline's on its default knots, a periodic one of
-/// `2^k` points), so the profile's parameter, its share of the domain, and the document's
-/// parameter again differ only in the exponent. On other domains that round trip can change
-/// the last digit, which the curve's document would show (on `[0.15, 2.7]`, of about 1 % of
-/// parameters; on `[0, 49)`, of 1 and of parameters just below powers of two).
-fn spline_in_profile_exactly(c: &Curve) -> bool {
-    /// The fraction bits of an `f64`: zero on a power of two.
-    const FRACTION_BITS: u64 = (1 << 52) - 1;
-    let (a, b) = c.domain();
-    matches!(c.shape, CurveKind::Spline(_))
-        && a == 0.0
-        && b.is_normal()
-        && b > 0.0
-        && b.to_bits() & FRACTION_BITS == 0
+/// How the curves' exact forms' parameters map to their documents' (a line's or an arc's
+/// own).
+fn maps_of<'a>(curves: &[&'a Curve]) -> Vec<DocMap<'a>> {
+    curves.iter().map(|c| smooth_map(c)).collect()
 }
 
 /// The bisector's inputs as profiles.
 fn profiles_of(curves: &[&Curve]) -> Result<Vec<Profile>, CommandError> {
     curves.iter().map(|c| as_profile(c, "bisector")).collect()
-}
-
-/// Whether a profile has corners or several segments: a spline so read is the profile of its
-/// pieces (as `prepared::spline_with_corners` takes it).
-fn has_corners(p: &Profile) -> bool {
-    p.segments().len() > 1 || p.corners().next().is_some()
 }
 
 /// The bisector of two profiles, or the self-bisector of one.
@@ -136,19 +114,4 @@ fn on_profiles(
         [one, ..] => zeroset::self_bisector(one, opts),
         [] => unreachable!("one curve at least"),
     }
-}
-
-/// A curve read as a curve has its bisector computed on its exact rational form, which only
-/// spline kinds (lines and arcs among them) have: the curve as that spline.
-fn spline_of(c: &Curve) -> Result<&dyn curve::PlaneCurve, CommandError> {
-    c.rational().map(|_| c.plane_curve()).ok_or_else(|| {
-        refuse(
-            c,
-            "kind",
-            &format!(
-                "bisector needs a bezier, bspline, line or arc curve, got {}",
-                c.kind()
-            ),
-        )
-    })
 }

@@ -25,6 +25,7 @@ use crate::tracks::Tracks;
 use crate::view::View;
 use curve::{wrap_pi, V2};
 use numeric::certificate::{Doubt, Doubts};
+use numeric::subdivide::{depth_first, Decision};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Halvings of a pair of arcs before the test gives up on it (2⁻⁴⁰ of an arc is far below
@@ -199,8 +200,8 @@ impl View<'_> {
             psi0: a.2,
             psi1: b.2,
         };
-        let mut stack = vec![arc];
-        while let Some(arc) = stack.pop() {
+        // (No depth bound: an arc is halved only while it is wider than the tolerance.)
+        depth_first(arc, usize::MAX, |arc, _| {
             let turning = (arc.psi1 - arc.psi0).abs();
             if turning < FRAC_PI_2 - 0.1 || arc.u1 - arc.u0 <= self.tol {
                 // An arc within the tolerance that still turns this much (a near-cusp) may
@@ -209,12 +210,11 @@ impl View<'_> {
                     doubts.add(Doubt::NearCusp);
                 }
                 arcs.push(arc);
-                continue;
+                return Decision::<_, ()>::Decided;
             }
             let (l, r) = self.halves(&arc);
-            stack.push(r);
-            stack.push(l);
-        }
+            Decision::Halve(l, r)
+        });
     }
 
     /// The two halves of an arc (one jet at its middle).

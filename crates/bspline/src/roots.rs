@@ -15,6 +15,7 @@ use crate::error::{Error, Result};
 use crate::piecewise::Piecewise;
 use crate::spline::BSpline;
 use numeric::rounding::ulps;
+use numeric::subdivide::{depth_first, Decision};
 use serde::{Deserialize, Serialize};
 
 mod count;
@@ -207,7 +208,7 @@ pub fn find_roots_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> Resul
         parts: 0,
         roots: Vec::new(),
     };
-    search.visit(Part::of(f, a, b), 0);
+    search.isolate(Part::of(f, a, b));
     let roots = merge_clusters(std::mem::take(&mut search.roots));
     Ok(search.separate_simple_clusters(roots, a, b))
 }
@@ -244,9 +245,8 @@ pub fn prove_positive_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> R
     // touching unproven parts is where the function reaches zero (within rounding); its middle
     // is the estimate (a double zero, as of a speed, sits in the middle of its rounding zone).
     let mut run: Option<(f64, f64)> = None;
-    let mut stack = vec![(Part::of(f, a, b), 0usize)];
     let mut parts = 0usize;
-    while let Some((part, depth)) = stack.pop() {
+    depth_first(Part::of(f, a, b), opts.max_depth, |part, visit| {
         parts += 1;
         let (lo, hi) = part.interval();
         let positive = part
@@ -254,10 +254,10 @@ pub fn prove_positive_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> R
             .iter()
             .all(|s| s.coefs.iter().all(|&x| x > s.err));
         if positive {
-            if run.is_some() {
-                break;
-            }
-            continue;
+            return match run {
+                Some(_) => Decision::Stop(()),
+                None => Decision::Decided,
+            };
         }
         // A part within rounding of zero (or below it) is not split further: rounding would
         // keep it unproven at every depth.
@@ -265,18 +265,22 @@ pub fn prove_positive_in(f: &Piecewise, a: f64, b: f64, opts: &RootOptions) -> R
             .spans
             .iter()
             .all(|s| s.coefs.iter().all(|&x| x <= s.err));
-        if flat || hi - lo <= tol || depth >= opts.max_depth || parts >= opts.max_pieces {
-            match &mut run {
-                None => run = Some((lo, hi)),
-                Some(r) if lo <= r.1 => r.1 = hi,
-                Some(_) => break,
-            }
-            continue;
+        if flat || hi - lo <= tol || !visit.can_halve || parts >= opts.max_pieces {
+            return match &mut run {
+                None => {
+                    run = Some((lo, hi));
+                    Decision::Decided
+                }
+                Some(r) if lo <= r.1 => {
+                    r.1 = hi;
+                    Decision::Decided
+                }
+                Some(_) => Decision::Stop(()),
+            };
         }
         let (left, right) = part.split(f, split_point(f, lo, hi));
-        stack.push((right, depth + 1));
-        stack.push((left, depth + 1));
-    }
+        Decision::Halve(left, right)
+    });
     // A stretch at an end of the interval has only one side: the zero is at that end.
     Ok(run.map(|(lo, hi)| match (lo <= a, hi >= b) {
         (true, false) => a,

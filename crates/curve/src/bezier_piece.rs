@@ -12,6 +12,7 @@
 use crate::geom::V2;
 use crate::segment::Segment;
 use numeric::rounding::ulps;
+use numeric::subdivide::{depth_first, Decision};
 use smallvec::SmallVec;
 use std::f64::consts::PI;
 
@@ -240,20 +241,18 @@ impl BezierPiece {
         let reach = |p: V2| (p - self.start).dot(along);
         let mut farthest = 0.0f64;
         let mut before: Vec<(V2, V2)> = Vec::new();
-        let mut pending = vec![self.clone()];
         let mut parts = 0;
-        while let Some(part) = pending.pop() {
+        // (The depth bound is the piece's own: its halves count from the stretch it came from.)
+        let halvings = MAX_RETRACE_DEPTH.saturating_sub(self.depth);
+        depth_first(self.clone(), halvings, |part, visit| {
             parts += 1;
             let reaches: SmallVec<[f64; 8]> = part.points().map(reach).collect();
             let one_way = reaches.windows(2).all(|w| w[1] >= w[0]);
-            let settled = one_way
-                || part.extent() <= delta
-                || part.depth >= MAX_RETRACE_DEPTH
-                || parts > MAX_RETRACE_PARTS;
+            let settled =
+                one_way || part.extent() <= delta || !visit.can_halve || parts > MAX_RETRACE_PARTS;
             if !settled {
                 let [h0, h1] = part.halves();
-                pending.extend([h1, h0]);
-                continue;
+                return Decision::Halve(h0, h1);
             }
             let end = reach(part.end);
             if end < farthest - 2.0 * delta
@@ -261,12 +260,12 @@ impl BezierPiece {
                     crate::geom::distance_to_segment(part.end.arr(), a.arr(), b.arr()) <= rounding
                 })
             {
-                return Some(part.end);
+                return Decision::Stop(part.end);
             }
             farthest = farthest.max(end);
             before.push((part.start, part.end));
-        }
-        None
+            Decision::Decided
+        })
     }
 
     /// Where neighbours `self` and `next`, each within `delta` of its chord, run back along

@@ -11,6 +11,7 @@ use crate::bezier_piece::{pieces_of, BezierPiece};
 use crate::geom::V2;
 use crate::segment::Segment;
 use numeric::rounding::ulps;
+use numeric::subdivide::{depth_first, Decision};
 
 /// How far (relative to the chains' size) a stretch tested by its chord may stray from it.
 pub(crate) const FLATNESS: f64 = 1e-7;
@@ -255,22 +256,28 @@ impl Outline {
     pub(crate) fn winds_round(&self, p: V2) -> Result<bool, Undecided> {
         let mut polygon = Vec::new();
         let bound = MORE_TESTS + TESTS_PER_PIECE * self.pieces.len();
-        let mut pending: Vec<BezierPiece> = self.pieces.iter().rev().cloned().collect();
         let mut tests = 0;
-        while let Some(s) = pending.pop() {
-            tests += 1;
-            if tests > bound {
-                return Err(Undecided { tests: bound });
-            }
-            if polygon.is_empty() {
-                polygon.push(s.start);
-            }
-            let settled = s.depth >= MAX_CROSSING_DEPTH || s.is_flat(self.delta);
-            if s.box_holds(p) && !settled {
-                let [h0, h1] = s.halves();
-                pending.extend([h1, h0]);
-            } else {
-                polygon.push(s.end);
+        // (The pieces in order, each searched before the next: the polygon runs along them.)
+        for piece in &self.pieces {
+            let undecided = depth_first(piece.clone(), MAX_CROSSING_DEPTH, |s, visit| {
+                tests += 1;
+                if tests > bound {
+                    return Decision::Stop(Undecided { tests: bound });
+                }
+                if polygon.is_empty() {
+                    polygon.push(s.start);
+                }
+                let settled = !visit.can_halve || s.is_flat(self.delta);
+                if s.box_holds(p) && !settled {
+                    let [h0, h1] = s.halves();
+                    Decision::Halve(h0, h1)
+                } else {
+                    polygon.push(s.end);
+                    Decision::Decided
+                }
+            });
+            if let Some(undecided) = undecided {
+                return Err(undecided);
             }
         }
         Ok(winding(&polygon, p) != 0)

@@ -54,8 +54,11 @@ pub fn depth_first<P, B>(
     max_depth: usize,
     mut visit: impl FnMut(P, Visit) -> Decision<P, B>,
 ) -> Option<B> {
-    let mut stack = vec![(root, 0usize)];
-    while let Some((part, depth)) = stack.pop() {
+    // The part to visit next: the root, then each first half, goes straight to its visit;
+    // only the second halves wait on the stack (a root decided at once allocates nothing).
+    let mut next = Some((root, 0usize));
+    let mut stack = Vec::new();
+    while let Some((part, depth)) = next.take().or_else(|| stack.pop()) {
         let can_halve = depth < max_depth;
         match visit(part, Visit { depth, can_halve }) {
             Decision::Decided => {}
@@ -63,7 +66,7 @@ pub fn depth_first<P, B>(
                 debug_assert!(can_halve, "a part at the depth bound was asked to halve");
                 if can_halve {
                     stack.push((second, depth + 1));
-                    stack.push((first, depth + 1));
+                    next = Some((first, depth + 1));
                 }
             }
             Decision::Stop(value) => return Some(value),

@@ -14,6 +14,7 @@ use crate::patch::{common_sign, tsign, variations, vsign, Patch};
 use crate::solve1::{bracketed_from, bracketed_or_end};
 use curve::distance_to_segment;
 use numeric::rounding::UNIT_ROUNDOFF;
+use numeric::subdivide::{depth_first, Decision};
 use numeric::Rect;
 
 /// Where an arc ends: on a patch edge.
@@ -120,14 +121,19 @@ impl Tracer<'_> {
                 continue;
             }
             let strict = !(self.lax)(cell);
-            let mut stack = vec![(cell.clone(), 0usize)];
-            while let Some((p, depth)) = stack.pop() {
+            let over = depth_first(cell.clone(), self.max_depth, |p, visit| {
+                // (A half the region filter drops is passed over unseen and uncounted; the
+                // cell itself passed it above.)
+                if visit.depth > 0 && !(self.keep)(&p) {
+                    return Decision::Decided;
+                }
                 out.patches += 1;
                 if out.patches > self.max_patches {
                     out.truncated = true;
-                    return;
+                    return Decision::Stop(());
                 }
-                let err = (p.pt + p.pr + 2) as f64 * (depth + 4) as f64 * UNIT_ROUNDOFF * scale;
+                let err =
+                    (p.pt + p.pr + 2) as f64 * (visit.depth + 4) as f64 * UNIT_ROUNDOFF * scale;
                 match self.classify(&p, err, strict) {
                     Class::Empty => {}
                     Class::Simple(graph_r) => {
@@ -143,7 +149,7 @@ impl Tracer<'_> {
                         // F within rounding of zero on the whole patch: no sign can be trusted
                         // here, so splitting further cannot resolve anything.
                         let flat = p.max_abs() <= 4.0 * err;
-                        if small || flat || depth >= self.max_depth {
+                        if small || flat || !visit.can_halve {
                             let c = [0.5 * (p.t0 + p.t1), 0.5 * (p.r0 + p.r1)];
                             out.leaves.push(Leaf {
                                 bx: p.rect(),
@@ -151,20 +157,20 @@ impl Tracer<'_> {
                                 fabs: cell.eval(c[0], c[1]).abs(),
                                 cell: ci,
                             });
-                            continue;
+                            return Decision::Decided;
                         }
                         let (a, b) = if wt >= wr {
                             p.split_t(SPLIT_T)
                         } else {
                             p.split_r(SPLIT_R)
                         };
-                        for q in [b, a] {
-                            if (self.keep)(&q) {
-                                stack.push((q, depth + 1));
-                            }
-                        }
+                        return Decision::Halve(a, b);
                     }
                 }
+                Decision::Decided
+            });
+            if over.is_some() {
+                return;
             }
         }
     }

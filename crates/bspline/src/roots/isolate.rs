@@ -5,6 +5,7 @@
 use super::subdivision::{split_point, Part};
 use super::{prove_positive_in, value, Count, Root, RootKind, RootOptions};
 use crate::piecewise::Piecewise;
+use numeric::subdivide::{depth_first, Decision, Visit};
 
 fn cluster(lo: f64, hi: f64) -> Root {
     Root {
@@ -112,30 +113,35 @@ impl Isolation<'_> {
         matches!(rising, Ok(None)) || matches!(falling, Ok(None))
     }
 
-    pub(super) fn visit(&mut self, part: Part, depth: usize) {
+    /// Subdivides `root` depth first, the left part first (so the roots come in order), until
+    /// each part holds no root, one (refined and kept) or a cluster (a part within rounding of
+    /// zero, of the tolerance's width, at the depth bound or past the budget of parts).
+    pub(super) fn isolate(&mut self, root: Part) {
+        depth_first(root, self.opts.max_depth, |part, visit| {
+            self.decide(part, visit)
+        });
+    }
+
+    /// What [`Self::isolate`] does with one part.
+    fn decide(&mut self, part: Part, visit: Visit) -> Decision<Part, ()> {
         self.parts += 1;
         let (lo, hi) = part.interval();
         let (count, flat) = part.count();
         match count.finish() {
-            Count::Zero => return,
+            Count::Zero => return Decision::Decided,
             Count::One(a, b) => {
                 let root = self.refine(a.max(lo), b.min(hi), count.starts_negative());
                 self.roots.push(root);
-                return;
+                return Decision::Decided;
             }
             Count::AtEnd(_) | Count::Open => {}
         }
-        if flat
-            || hi - lo <= self.tol
-            || depth >= self.opts.max_depth
-            || self.parts >= self.opts.max_pieces
-        {
+        if flat || hi - lo <= self.tol || !visit.can_halve || self.parts >= self.opts.max_pieces {
             self.roots.push(cluster(lo, hi));
-            return;
+            return Decision::Decided;
         }
         let (left, right) = part.split(self.f, split_point(self.f, lo, hi));
-        self.visit(left, depth + 1);
-        self.visit(right, depth + 1);
+        Decision::Halve(left, right)
     }
 
     /// Safeguarded Newton inside a bracket where the function has exactly one simple root and

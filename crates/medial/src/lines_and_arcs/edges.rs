@@ -7,6 +7,7 @@ use crate::candidates::{Candidate, Vertex};
 use crate::corners::entered_across_corner;
 use crate::true_sites::{SiteShape, TrueSite};
 use curve::{wrap_pi, V2};
+use numeric::subdivide::{depth_first, Decision};
 use std::f64::consts::PI;
 
 /// Most distance (a share of the size) between the vertices of an edge: the disks between
@@ -252,30 +253,42 @@ impl LinesAndArcs<'_, '_> {
         };
         let step = EDGE_STEP * self.sites.size;
         let mut out = vec![p];
-        let (mut t_lo, mut x_lo) = (t0, p);
-        // (The right ends still to reach, the nearest last; the point where the radius is
-        // least or greatest among them, a vertex: the offsets find where a pass touches
-        // itself there.)
-        let mut stack = vec![(t1, q, 0usize)];
-        if let Some(t) = radius_extremum(along, other, t0, t1) {
-            stack.push((t, at(t)?, 0));
-        }
-        while let Some(&(t_hi, x_hi, depth)) = stack.last() {
-            let t_mid = 0.5 * (t_lo + t_hi);
-            let x_mid = at(t_mid)?;
-            let sag = curve::distance_to_segment(x_mid.arr(), x_lo.arr(), x_hi.arr());
-            if (x_hi - x_lo).norm() > step || sag > self.chord_tol {
-                if depth == MAX_EDGE_HALVINGS {
-                    return None; // (finer than the tracer goes: the other paths decide)
+        // (The spans to halve, in order; the point where the radius is least or greatest
+        // between the ends, a vertex, parts them: the offsets find where a pass touches itself
+        // there.)
+        let (start, end) = ((t0, p), (t1, q));
+        let cut = match radius_extremum(along, other, t0, t1) {
+            Some(t) => Some((t, at(t)?)),
+            None => None,
+        };
+        let spans = match cut {
+            Some(cut) => [Some((start, cut)), Some((cut, end))],
+            None => [Some((start, end)), None],
+        };
+        for span in spans.into_iter().flatten() {
+            let refused = depth_first(span, MAX_EDGE_HALVINGS, |(lo, hi), visit| {
+                let ((t_lo, x_lo), (t_hi, x_hi)) = (lo, hi);
+                let t_mid = 0.5 * (t_lo + t_hi);
+                let Some(x_mid) = at(t_mid) else {
+                    return Decision::Stop(());
+                };
+                let sag = curve::distance_to_segment(x_mid.arr(), x_lo.arr(), x_hi.arr());
+                if (x_hi - x_lo).norm() > step || sag > self.chord_tol {
+                    if !visit.can_halve {
+                        // (Finer than the tracer goes: the other paths decide.)
+                        return Decision::Stop(());
+                    }
+                    let mid = (t_mid, x_mid);
+                    return Decision::Halve((lo, mid), (mid, hi));
                 }
-                stack.push((t_mid, x_mid, depth + 1));
-            } else {
-                stack.pop();
                 out.push(x_hi);
-                (t_lo, x_lo) = (t_hi, x_hi);
                 if out.len() > MAX_EDGE_VERTICES {
-                    return None;
+                    return Decision::Stop(());
                 }
+                Decision::Decided
+            });
+            if refused.is_some() {
+                return None;
             }
         }
         Some(out)

@@ -13,6 +13,15 @@ fn curve(name: &str, json: &str) -> Curve {
     parse_curve(name, json).unwrap()
 }
 
+/// The arc of centre `center` and radius `r` from angle `start` to `end`, read from its file.
+fn arc(center: [f64; 2], r: f64, start: f64, end: f64) -> Curve {
+    let json = format!(
+        r#"{{"kind":"arc","center":[{},{}],"r":{r},"start":{start},"end":{end}}}"#,
+        center[0], center[1]
+    );
+    curve("arc", &json)
+}
+
 /// The tool's bisector of `a` and `b` as its JSON document, checked to be the curve's.
 fn document(a: &Curve, b: &Curve) -> Value {
     let found = curvekit::commands::bisector(a, Some(b), &BisectorOptions::default()).unwrap();
@@ -48,14 +57,8 @@ fn on_arc(start: f64, end: f64, u: f64) -> [f64; 2] {
 
 #[test]
 fn two_arcs_of_one_circle_have_its_centre() {
-    let a = curve(
-        "a",
-        r#"{"kind":"arc","center":[0,0],"r":2,"start":0.3,"end":1.2}"#,
-    );
-    let b = curve(
-        "b",
-        r#"{"kind":"arc","center":[0,0],"r":2,"start":2.0,"end":2.8}"#,
-    );
+    let a = arc([0.0, 0.0], 2.0, 0.3, 1.2);
+    let b = arc([0.0, 0.0], 2.0, 2.0, 2.8);
     let doc = document(&a, &b);
     assert!(doc["branches"].as_array().unwrap().is_empty(), "{doc}");
     let [(tr, xy)] = isolated(&doc)[..] else {
@@ -96,10 +99,7 @@ fn two_lines_have_their_angle_bisectors() {
 #[test]
 fn an_arc_and_a_line_tangent_to_its_circle_have_its_centre() {
     // y = −2 touches the circle of radius 2 at (0, −2), on the segment; the arc is far above.
-    let a = curve(
-        "a",
-        r#"{"kind":"arc","center":[0,0],"r":2,"start":0.3,"end":1.2}"#,
-    );
+    let a = arc([0.0, 0.0], 2.0, 0.3, 1.2);
     let line = curve("l", r#"{"kind":"line","from":[-3,-2],"to":[3,-2]}"#);
     let doc = document(&a, &line);
     let [(tr, xy)] = isolated(&doc)[..] else {
@@ -116,14 +116,8 @@ fn an_arc_and_a_line_tangent_to_its_circle_have_its_centre() {
 fn arcs_of_circles_tangent_to_each_other_have_their_centres() {
     // Radius 1 about (0, 0) and 2 about (0, 3) touch at (0, 1), on both arcs: each centre is
     // at its radius from its whole arc and from the contact.
-    let small = curve(
-        "s",
-        r#"{"kind":"arc","center":[0,0],"r":1,"start":0.5,"end":2.5}"#,
-    );
-    let large = curve(
-        "l",
-        r#"{"kind":"arc","center":[0,3],"r":2,"start":-2.5,"end":-0.5}"#,
-    );
+    let small = arc([0.0, 0.0], 1.0, 0.5, 2.5);
+    let large = arc([0.0, 3.0], 2.0, -2.5, -0.5);
     let centres: Vec<[f64; 2]> = isolated(&document(&small, &large))
         .into_iter()
         .map(|(_, xy)| xy)

@@ -14,7 +14,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::{ends, samples};
+use common::{ends, exterior_axis, samples};
 use curve::{Profile, Region};
 use medial::{medial_axis, MedialOptions};
 use numeric::certificate::Verdict;
@@ -72,14 +72,7 @@ fn offsets_round_far_smooth_joints_are_closed_and_at_their_distance() {
         let region = Region::new(profile.clone(), vec![]).unwrap();
         let oracle = Oracle::new(&profile);
         let axis = medial_axis(&region, &MedialOptions::default()).unwrap();
-        let exterior = medial_axis(
-            &region,
-            &MedialOptions {
-                exterior: true,
-                ..MedialOptions::default()
-            },
-        )
-        .unwrap();
+        let exterior = exterior_axis(&region);
         // (Outward also farther out: up to below half the size.)
         let far_out = 0.4 * region.size();
         for &d in distances.iter().chain([&far_out]) {

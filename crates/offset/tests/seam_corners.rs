@@ -7,7 +7,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::{arcs_sweep, ends, samples};
+use common::{arcs_sweep, ends, exterior_axis, samples};
 use curve::{ParamCurve, Profile, Region, Segment, SegmentKind, SplineCurve};
 use medial::{medial_axis, MedialOptions};
 use numeric::certificate::Verdict;
@@ -122,11 +122,7 @@ fn outward_a_corner_where_a_splines_ends_meet_grows_its_arc() {
         [-1.0, 3.0],
         [0.0, 0.0],
     ]);
-    let exterior = MedialOptions {
-        exterior: true,
-        ..MedialOptions::default()
-    };
-    let axis = medial_axis(&region, &exterior).unwrap();
+    let axis = exterior_axis(&region);
     assert!(axis.certified(), "{:?}", axis.reason());
     for d in [0.3, 1.0] {
         let found = outward_offsets(&region, &axis, &[d], &OffsetOptions::default()).unwrap();

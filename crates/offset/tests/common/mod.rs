@@ -5,6 +5,15 @@
 
 use offset::OffsetSegment;
 
+/// The medial axis of the outside of `region` (for its outward offsets).
+pub fn exterior_axis(region: &curve::Region) -> medial::MedialAxis {
+    let opts = medial::MedialOptions {
+        exterior: true,
+        ..medial::MedialOptions::default()
+    };
+    medial::medial_axis(region, &opts).unwrap()
+}
+
 /// The point of a clamped B-spline at `t` by the Cox–de Boor recursion (written here, apart
 /// from the crates' evaluation).
 pub fn de_boor(p: usize, knots: &[f64], points: &[[f64; 2]], t: f64) -> [f64; 2] {

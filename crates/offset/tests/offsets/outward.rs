@@ -1,19 +1,15 @@
 //! Outward offsets (by the exterior axis): a rectangle grows rounded corners, a hole shrinks,
 //! and the distances stay within the axis.
 
+use crate::common::exterior_axis;
 use crate::helpers::{circle, pocket, polygon_region};
 use crate::oracle::check;
 use curve::Region;
-use medial::{medial_axis, MedialOptions};
 use offset::{OffsetOptions, OffsetSegment, Offsets};
 use std::f64::consts::PI;
 
 fn outward_of(region: &Region, distances: &[f64]) -> Offsets {
-    let opts = MedialOptions {
-        exterior: true,
-        ..MedialOptions::default()
-    };
-    let axis = medial_axis(region, &opts).unwrap();
+    let axis = exterior_axis(region);
     offset::outward_offsets(region, &axis, distances, &OffsetOptions::default()).unwrap()
 }
 
@@ -58,14 +54,7 @@ fn outward_a_rectangle_grows_rounded_corners_and_a_hole_shrinks() {
 #[test]
 fn outward_distances_stay_within_the_exterior_axis() {
     let region = pocket();
-    let axis = medial_axis(
-        &region,
-        &MedialOptions {
-            exterior: true,
-            ..MedialOptions::default()
-        },
-    )
-    .unwrap();
+    let axis = exterior_axis(&region);
     let far = offset::outward_offsets(&region, &axis, &[6.0], &OffsetOptions::default());
     assert!(
         far.is_err(),

@@ -1,7 +1,7 @@
 //! Random regions (star-shaped polygons, chains of Béziers, maybe with a round hole) against
 //! the oracle, and a case they found.
 
-use crate::common::samples;
+use crate::common::{exterior_axis, samples};
 use crate::helpers::{circle, distance_to_piece};
 use crate::oracle::{check, Chords};
 use curve::{Profile, Region};
@@ -313,11 +313,7 @@ proptest! {
         prop_assert!(found.complete);
         check_all(&region, &found, 1e-6, false)?;
         // Outward, from the exterior axis: the same checks.
-        let outside = medial_axis(
-            &region,
-            &MedialOptions { exterior: true, ..MedialOptions::default() },
-        )
-        .unwrap();
+        let outside = exterior_axis(&region);
         if outside.certified() {
             let grown =
                 offset::outward_offsets(&region, &outside, &distances, &OffsetOptions::default())

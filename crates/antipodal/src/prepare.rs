@@ -292,8 +292,8 @@ fn frame_of(curve: &dyn PlaneCurve) -> Frame {
         .map_or(Frame::IDENTITY, |e| Frame::for_points(&e.extent()))
 }
 
-/// [`crate::inflections`] on a curve, with the doubts met, not yet stated: for the runs that join them into
-/// their own (a profile's segments).
+/// [`crate::inflections`] on a curve, with the doubts met, not yet stated: for the runs that
+/// join them into their own (a profile's segments).
 pub(crate) fn inflections_run(
     curve: &dyn PlaneCurve,
     opts: &Options,
@@ -327,8 +327,8 @@ pub fn prepare_pair<'c>(
     )
 }
 
-/// [`crate::common_tangents`] of two curves, with the doubts met, not yet stated: for the runs that join them into
-/// their own (a profile's segments).
+/// [`crate::common_tangents`] of two curves, with the doubts met, not yet stated: for the runs
+/// that join them into their own (a profile's segments).
 pub(crate) fn common_tangents_run(
     c1: &dyn PlaneCurve,
     c2: &dyn PlaneCurve,

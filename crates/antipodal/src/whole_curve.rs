@@ -113,7 +113,8 @@ pub(crate) fn antipodal(on: &WholeCurve<'_>, opts: &Options) -> Result<Antipodal
     })
 }
 
-/// [`crate::profiles::profile_inflections`] on the profile of a whole curve, its doubts not yet stated.
+/// [`crate::profiles::profile_inflections`] on the profile of a whole curve, its doubts not
+/// yet stated.
 pub(crate) fn inflections_run(
     on: &WholeCurve<'_>,
     opts: &Options,

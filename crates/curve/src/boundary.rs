@@ -59,14 +59,6 @@ impl<'a> Boundary<'a> {
         };
         Profile::of_curve(segment, curve.domain()).map(|p| Some(Cow::Owned(p)))
     }
-
-    /// The profile, where the boundary is one.
-    pub fn profile(&self) -> Option<&'a Profile> {
-        match self {
-            Boundary::Profile(p) => Some(p),
-            Boundary::Curve(_) => None,
-        }
-    }
 }
 
 impl std::fmt::Debug for Boundary<'_> {
@@ -147,6 +139,6 @@ mod tests {
         let square = Profile::new(sides.collect(), Some(true)).unwrap();
         let as_curve: &dyn PlaneCurve = &square;
         assert!(Boundary::from(as_curve).to_profile().unwrap().is_none());
-        assert!(Boundary::from(&square).profile().is_some());
+        assert!(matches!(Boundary::from(&square), Boundary::Profile(_)));
     }
 }

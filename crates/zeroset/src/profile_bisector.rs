@@ -122,10 +122,10 @@ pub(crate) fn profile_bisector(
     profile_bisector_of_pairs(a, b, opts, &|_, _| true)
 }
 
-/// The bisector of two profiles restricted to the pairs of segments `keep(i, j)` accepts (segment `i`
-/// of `a`, `j` of `b`); a corner counts as each of the two segments it joins. For callers
-/// that have shown which pairs can matter (the medial axis keeps the pairs that can share an
-/// empty disk).
+/// The bisector of two profiles restricted to the pairs of segments `keep(i, j)` accepts
+/// (segment `i` of `a`, `j` of `b`); a corner counts as each of the two segments it joins. For
+/// callers that have shown which pairs can matter (the medial axis keeps the pairs that can
+/// share an empty disk).
 ///
 /// ```
 /// use curve::{Profile, Segment};
@@ -181,8 +181,8 @@ pub(crate) fn profile_self_bisector(p: &Profile, opts: &BisectorOptions) -> Resu
     profile_self_bisector_of_pairs(p, opts, &|_, _| true)
 }
 
-/// The self-bisector of a profile restricted to the pairs of segments `keep(i, j)` accepts (`i ≤
-/// j`; a segment's own bisector is `keep(i, i)`); a corner counts as each of the two
+/// The self-bisector of a profile restricted to the pairs of segments `keep(i, j)` accepts
+/// (`i ≤ j`; a segment's own bisector is `keep(i, i)`); a corner counts as each of the two
 /// segments it joins.
 ///
 /// ```

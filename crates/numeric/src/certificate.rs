@@ -202,6 +202,16 @@ pub enum Doubt {
     /// Two loops' fitted pieces cross across a passage narrower than they follow.
     LoopsCross,
 
+    // Grasps.
+    /// A point of a grasp region's boundary was not resolved: a zero set's singular point, or
+    /// an end of a piece of the boundary that no other piece continues.
+    GraspBoundaryUnresolved,
+    /// A grasp region is a single point (force closure only where two conditions touch),
+    /// found within rounding.
+    GraspPointRegion,
+    /// A grasp region's most robust grasp was found by a local search, not proven.
+    GraspBestUnproven,
+
     // The tool's inputs.
     /// The drawing the input was read from holds what could be part of an outline and was
     /// not read.
@@ -318,6 +328,17 @@ impl Doubt {
                  the tolerance of a proven peak of the curvature"
             }
             Doubt::SearchLimit => "a search limit was hit",
+            Doubt::GraspBoundaryUnresolved => {
+                "a point of a grasp region's boundary was not resolved (a singular point of a \
+                 zero set, or an end no other piece of the boundary continues)"
+            }
+            Doubt::GraspPointRegion => {
+                "a grasp region is a single point, where two conditions of force closure touch \
+                 within rounding"
+            }
+            Doubt::GraspBestUnproven => {
+                "a grasp region's most robust grasp was found by a local search"
+            }
             Doubt::Cancelled => "the work was cancelled before the axis was proven",
             Doubt::AxisUncertified => "the medial axis is not certified",
             Doubt::SeamUnconverged => "a seam's feet did not converge",

@@ -26,7 +26,7 @@ pub use sides::Side;
 use crate::error::Result;
 use crate::patch::Patch;
 use crate::symbolic::{bisector_function_scaled, Method};
-use crate::zeroset::{run_cells, ZeroSetOptions};
+use crate::zeroset::{run_cells, Filters, ZeroSetOptions};
 use bspline::Rational;
 use curve::Frame;
 use jets::Jets;
@@ -40,7 +40,7 @@ use vertices::Ctx;
 pub(crate) use vertices::{FAR, TRIM_SLACK};
 
 /// Relative residual below which a diagonal cell counts as divisible by `t − r`.
-const DIVISIBLE: f64 = 1e-8;
+pub(crate) const DIVISIBLE: f64 = 1e-8;
 
 /// Options for [`bisector`](fn@crate::bisector) and [`self_bisector`](crate::self_bisector).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -135,7 +135,11 @@ pub(crate) fn curve_bisector(
         .sides
         .and_then(|s| SideFilter::new([c1, c2], pieces, s));
     let keep = |p: &Patch| sides.as_ref().is_none_or(|f| f.may_hold(p));
-    let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &keep, &|_| false);
+    let filters = Filters {
+        keep: &keep,
+        ..Filters::none()
+    };
+    let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &filters);
     Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
 }
 
@@ -259,7 +263,12 @@ pub(crate) fn curve_self_bisector(c: &Rational, opts: &BisectorOptions) -> Resul
     // the corner (start, end) — the diagonal across the seam: F vanishes to fourth order at
     // that corner (see `lax` in the tracer).
     let lax = |p: &Patch| p.t1 == p.r0 || (p.t0 == dom.t.lo && p.r1 == dom.r.hi);
-    let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &keep, &lax);
+    let filters = Filters {
+        keep: &keep,
+        lax: &lax,
+        ..Filters::none()
+    };
+    let pieces = run_cells(&cells, dom, &z, &map, ctx.chord, &filters);
     Ok(to_global(ctx.build(&pieces, dom, &cells), &frame))
 }
 

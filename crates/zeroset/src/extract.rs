@@ -69,6 +69,10 @@ pub(crate) struct Tracer<'a> {
     /// Cells where F has a known zero of high order at a corner (a self-bisector's cells
     /// touching the diagonal there), in which the check of inner edge coefficients is off.
     pub(crate) lax: &'a dyn Fn(&Patch) -> bool,
+    /// Whether the arc traced in a simple patch may stand as it is; `false` splits the patch
+    /// further (down to the size limit), as a caller that must know more about each arc
+    /// than that it is simple asks (see [`crate::nonnegative_set`]).
+    pub(crate) settle: &'a dyn Fn(&Patch, &[[f64; 2]]) -> bool,
 }
 
 /// Result of the subdivision of all cells.
@@ -137,13 +141,18 @@ impl Tracer<'_> {
                 match self.classify(&p, err, strict) {
                     Class::Empty => {}
                     Class::Simple(graph_r) => {
-                        if let Some(arc) = self.trace(cell, &p, graph_r, err) {
+                        let arc = self.trace(cell, &p, graph_r, err);
+                        let small =
+                            p.t1 - p.t0 <= self.min_size[0] && p.r1 - p.r0 <= self.min_size[1];
+                        let unsettled = arc.as_ref().is_some_and(|a| !(self.settle)(&p, &a.pts));
+                        if unsettled && !small && visit.can_halve {
+                            return self.halve(&p);
+                        }
+                        if let Some(arc) = arc {
                             out.arcs.push(arc);
                         }
                     }
                     Class::Split => {
-                        let wt = (p.t1 - p.t0) / self.extent[0];
-                        let wr = (p.r1 - p.r0) / self.extent[1];
                         let small =
                             p.t1 - p.t0 <= self.min_size[0] && p.r1 - p.r0 <= self.min_size[1];
                         // F within rounding of zero on the whole patch: no sign can be trusted
@@ -159,12 +168,7 @@ impl Tracer<'_> {
                             });
                             return Decision::Decided;
                         }
-                        let (a, b) = if wt >= wr {
-                            p.split_t(SPLIT_T)
-                        } else {
-                            p.split_r(SPLIT_R)
-                        };
-                        return Decision::Halve(a, b);
+                        return self.halve(&p);
                     }
                 }
                 Decision::Decided
@@ -173,6 +177,18 @@ impl Tracer<'_> {
                 return;
             }
         }
+    }
+
+    /// The patch split across its longer side (relative to the domain).
+    fn halve<R>(&self, p: &Patch) -> Decision<Patch, R> {
+        let wt = (p.t1 - p.t0) / self.extent[0];
+        let wr = (p.r1 - p.r0) / self.extent[1];
+        let (a, b) = if wt >= wr {
+            p.split_t(SPLIT_T)
+        } else {
+            p.split_r(SPLIT_R)
+        };
+        Decision::Halve(a, b)
     }
 
     fn classify(&self, p: &Patch, err: f64, strict: bool) -> Class {
@@ -204,7 +220,9 @@ impl Tracer<'_> {
                     _ => p.t0 == self.dom.t.lo,
                 };
                 let c = p.edge(e);
-                !on_border && c[1..c.len() - 1].iter().any(|&x| tsign(x, err) == 0)
+                // (An edge of degree 0 or 1 has no inner coefficient.)
+                let inner = c.get(1..c.len().saturating_sub(1)).unwrap_or(&[]);
+                !on_border && inner.iter().any(|&x| tsign(x, err) == 0)
             };
             if (0..4).any(unsure) {
                 return Class::Split;

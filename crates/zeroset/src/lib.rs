@@ -3,6 +3,8 @@
 //!
 //! - [`zero_set`]: all curves, crossings and isolated points of `F(t, r) = 0` by subdivision
 //!   with convex-hull purging and a proof of simplicity per patch (§4 of the paper).
+//! - [`nonnegative_set`]: the boundary of the set where several functions are all
+//!   non-negative (pieces of their zero sets, cut where they cross).
 //! - [`solve_system`]: the isolated common zeros of two bivariate functions.
 //! - [`bisector`], [`self_bisector`]: the bisector as branches of matched foot points `(t, r)`
 //!   and bisector points `P(t, r)` (Eq. 16), from the functions `F1`, `F2`, `F3` of §3
@@ -17,6 +19,7 @@ mod deviation;
 mod entries;
 mod error;
 mod extract;
+mod nonnegative;
 mod patch;
 mod profile_bisector;
 mod solve1;
@@ -29,6 +32,9 @@ pub use bisector::{
 };
 pub use entries::{bisector, self_bisector};
 pub use error::{Error, Result};
+pub use nonnegative::{
+    nonnegative_set, BoundaryPiece, NonNegativeOptions, NonNegativeSet, PieceEnd,
+};
 pub use profile_bisector::{profile_bisector_of_pairs, profile_self_bisector_of_pairs};
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};

@@ -157,11 +157,17 @@ fn missing(from: &[f64], into: &[f64], dom: (f64, f64)) -> Vec<f64> {
     v
 }
 
-/// Interval range of a coefficient iterator.
+/// Interval range of a coefficient iterator; `[0, 0]` for none (the partial derivative in a
+/// direction of degree 0 vanishes).
 fn range(it: impl Iterator<Item = f64>) -> (f64, f64) {
-    it.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+    let (lo, hi) = it.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
         (a.min(x), b.max(x))
-    })
+    });
+    if lo > hi {
+        (0.0, 0.0)
+    } else {
+        (lo, hi)
+    }
 }
 
 fn imul(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
@@ -180,7 +186,7 @@ const DET_SLACK: f64 = 1e-12;
 /// Whether the interval Jacobian over the box is regular (its determinant excludes 0). The
 /// coefficient differences are positive multiples of the partials' coefficients; the common
 /// factors do not change the sign of the determinant.
-fn unique(f: &Patch, g: &Patch) -> bool {
+pub(crate) fn unique(f: &Patch, g: &Patch) -> bool {
     let (ft, fr) = (range(f.dt_coefs()), range(f.dr_coefs()));
     let (gt, gr) = (range(g.dt_coefs()), range(g.dr_coefs()));
     // Scale differences into derivative units so the two products are comparable.

@@ -102,17 +102,34 @@ pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
     let dom = Rect::of(dt, dr);
     let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
     let map = |t: f64, r: f64| Some([t, r]);
-    let keep = |_: &Patch| true;
     let pieces = run_cells(
         &cells,
         dom,
         opts,
         &map,
         opts.settings.chord_tol.get() * opts.settings.size.map_or(diag, Size::get),
-        &keep,
-        &|_| false,
+        &Filters::none(),
     );
     Ok(finish(&pieces, dom, &cells))
+}
+
+/// What a caller of [`run_cells`] filters: which patches to look at, where a corner zero of
+/// high order is known, and whether a simple patch's arc may stand (see [`Tracer`]).
+pub(crate) struct Filters<'a> {
+    pub(crate) keep: &'a dyn Fn(&Patch) -> bool,
+    pub(crate) lax: &'a dyn Fn(&Patch) -> bool,
+    pub(crate) settle: &'a dyn Fn(&Patch, &[[f64; 2]]) -> bool,
+}
+
+impl Filters<'static> {
+    /// Every patch, none lax, every arc as traced.
+    pub(crate) fn none() -> Self {
+        Filters {
+            keep: &|_| true,
+            lax: &|_| false,
+            settle: &|_, _| true,
+        }
+    }
 }
 
 /// The subdivision with a mapping for the chord test and a region filter (shared with the
@@ -123,8 +140,7 @@ pub(crate) fn run_cells(
     opts: &ZeroSetOptions,
     map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
     chord_abs: f64,
-    keep: &dyn Fn(&Patch) -> bool,
-    lax: &dyn Fn(&Patch) -> bool,
+    filters: &Filters<'_>,
 ) -> Pieces {
     let extent = [dom.t.width(), dom.r.width()];
     let tracer = Tracer {
@@ -138,8 +154,9 @@ pub(crate) fn run_cells(
         max_patches: opts.max_patches,
         map,
         chord_tol: chord_abs,
-        keep,
-        lax,
+        keep: filters.keep,
+        lax: filters.lax,
+        settle: filters.settle,
     };
     let mut pieces = Pieces::default();
     tracer.run(cells, &mut pieces);

@@ -1,0 +1,543 @@
+//! The boundary of the set where several bivariate functions are all non-negative: each
+//! function's zero set, traced by the subdivision of [`crate::zero_set`] only where no other
+//! function is proven negative, then cut where another function changes sign.
+//!
+//! The set `{F₁ ≥ 0, …, Fₙ ≥ 0}` is bounded by pieces of the zero sets `Fₖ = 0` on which every
+//! other function is non-negative; consecutive pieces meet where two zero sets cross. Tracing
+//! each `Fₖ = 0` on the whole domain would spend most of the work where some other function is
+//! negative, so a patch is passed over when another function's Bernstein coefficients there
+//! are all negative beyond their rounding (or the caller proves the set empty there).
+//!
+//! On a domain of pairs (`t < r` of one parameter, as for two contacts on one curve) every
+//! function vanishes on the diagonal: the factor `(t − r)` is divided out of the diagonal
+//! cells, as for a self-bisector, and only the half `t < r` is traced.
+
+use crate::bisector::DIVISIBLE;
+use crate::error::{Error, Result};
+use crate::patch::{common_sign, Patch};
+use crate::system::unique;
+use crate::zeroset::{finish, run_cells, Filters, ZeroSetOptions};
+use bspline::tensor::TensorBSpline;
+use numeric::newton2::{polish, Matrix2, Newton2, StepVerdict, Vector2};
+use numeric::rounding::UNIT_ROUNDOFF;
+use numeric::tolerance::Size;
+use numeric::Rect;
+use serde::{Deserialize, Serialize};
+
+/// How close (relative to the domain) an end must lie to the domain's border to end there.
+const ON_BORDER: f64 = 1e-9;
+
+/// A function within this much (relative to its largest coefficient) of zero at a point of
+/// another's zero set is taken as vanishing there: two zero sets that coincide along a
+/// stretch (a circle's two cone conditions, one at each contact) then give that stretch
+/// once, to the function of lower index, rather than cut at every vertex by rounding.
+const ZERO_BAND: f64 = 1e-10;
+
+/// Newton steps for a crossing of two zero sets (quadratic convergence from a start within a
+/// chord of the crossing needs a handful).
+const CROSSING_STEPS: usize = 12;
+
+/// Bisection steps along a chord for where another function changes sign (to the last bit of
+/// a unit chord).
+const CHORD_BISECTIONS: usize = 60;
+
+/// Options for [`nonnegative_set`].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct NonNegativeOptions {
+    /// The tolerances and the patch limit of each function's zero set.
+    pub zero: ZeroSetOptions,
+    /// A domain of pairs: only `t < r` is traced, and every function vanishes on the diagonal
+    /// `t = r` (where its factor `t − r` is divided out).
+    pub pairs: bool,
+    /// Pairs on a closed curve: the functions vanish at the corner `(start, end)` too, where
+    /// the diagonal runs across the seam.
+    pub seam: bool,
+}
+
+/// How a piece of the boundary ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum PieceEnd {
+    /// Where the zero set of the function with this index crosses it: the boundary goes on
+    /// along that function's zero set.
+    Crossing(usize),
+    /// On the border of the domain.
+    Border,
+    /// Inside the domain, where the subdivision did not resolve the zero set (a singular
+    /// point or a patch at the size limit): the boundary is not known beyond it.
+    Loose,
+}
+
+/// One piece of the boundary: part of one function's zero set, with the set on its left.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BoundaryPiece {
+    /// The index of the function whose zero set it is.
+    pub function: usize,
+    /// Its vertices `[t, r]`, on that zero set to rounding; the set lies on the left.
+    pub pts: Vec<[f64; 2]>,
+    /// How it starts and ends; `None` for a closed loop (first vertex repeated at the end).
+    pub ends: Option<[PieceEnd; 2]>,
+}
+
+/// The boundary of `{F₁ ≥ 0, …, Fₙ ≥ 0}` ([`nonnegative_set`]).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct NonNegativeSet {
+    /// The pieces of the boundary.
+    pub pieces: Vec<BoundaryPiece>,
+    /// Isolated points of the set (a zero of one function where the others are positive and
+    /// which its zero set does not leave).
+    pub points: Vec<[f64; 2]>,
+    /// Points of the boundary the subdivision did not resolve (a zero set's singular points).
+    pub unresolved: Vec<[f64; 2]>,
+    /// False when a patch limit was hit or a function vanishes on a whole cell.
+    pub complete: bool,
+    /// Patches examined.
+    pub patches: usize,
+}
+
+/// The boundary of the set where every function of `fs` is non-negative, on their common
+/// domain. `excluded(rect)` is the caller's own proof that the set has no point in `rect`
+/// (return `false` when there is none); such patches are passed over.
+///
+/// ```
+/// use bspline::{tensor::TensorBSpline, BSpline};
+/// use zeroset::{nonnegative_set, NonNegativeOptions, PieceEnd};
+/// // t ≥ 0 and r ≥ 0 on [−1, 1]²: the quarter [0, 1]², bounded by two pieces that cross at
+/// // the origin and end on the border.
+/// let t = BSpline::bezier(1, vec![-1.0, 1.0]).unwrap().reparam(-1.0, 1.0).unwrap();
+/// let one = BSpline::constant(&[1.0], 0, -1.0, 1.0).unwrap();
+/// let ft = TensorBSpline::outer(&t, &one).unwrap();
+/// let fr = TensorBSpline::outer(&one, &t).unwrap();
+/// let s = nonnegative_set(&[ft, fr], &NonNegativeOptions::default(), &|_| false).unwrap();
+/// assert!(s.complete);
+/// assert_eq!(s.pieces.len(), 2);
+/// for p in &s.pieces {
+///     let ends = p.ends.unwrap();
+///     assert!(ends.contains(&PieceEnd::Border));
+///     assert!(ends.contains(&PieceEnd::Crossing(1 - p.function)));
+/// }
+/// ```
+pub fn nonnegative_set(
+    fs: &[TensorBSpline],
+    opts: &NonNegativeOptions,
+    excluded: &dyn Fn(Rect) -> bool,
+) -> Result<NonNegativeSet> {
+    let Some(first) = fs.first() else {
+        return Ok(NonNegativeSet {
+            complete: true,
+            ..NonNegativeSet::default()
+        });
+    };
+    let (dt, dr) = (first.domain_t(), first.domain_r());
+    if let Some(f) = fs.iter().find(|f| (f.domain_t(), f.domain_r()) != (dt, dr)) {
+        let (left, right) = if f.domain_t() != dt {
+            (dt, f.domain_t())
+        } else {
+            (dr, f.domain_r())
+        };
+        return Err(Error::Spline(bspline::Error::DomainMismatch {
+            left,
+            right,
+        }));
+    }
+    let dom = Rect::of(dt, dr);
+    let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
+    let chord_abs =
+        opts.zero.settings.chord_tol.get() * opts.zero.settings.size.map_or(diag, Size::get);
+    let stores: Vec<Cells> = fs.iter().map(|f| Cells::of(f, opts.pairs)).collect();
+    let map = |t: f64, r: f64| Some([t, r]);
+    let band: Vec<f64> = fs.iter().map(|f| ZERO_BAND * f.max_abs_coef()).collect();
+    let mut out = NonNegativeSet {
+        complete: true,
+        ..NonNegativeSet::default()
+    };
+    for (k, store) in stores.iter().enumerate() {
+        let keep = |p: &Patch| {
+            if opts.pairs && p.t0 >= p.r1 {
+                return false;
+            }
+            let bx = p.rect();
+            !excluded(bx)
+                && !stores
+                    .iter()
+                    .enumerate()
+                    .any(|(j, s)| j != k && s.negative_on(bx))
+        };
+        // An arc stands where every other function keeps one sign on its patch, or meets
+        // this one at most once there (a regular interval Jacobian), or vanishes along it
+        // (coinciding zero sets): then the signs at the arc's vertices tell where it leaves
+        // the set, and no excursion between two vertices goes unseen.
+        let settle = |p: &Patch, pts: &[[f64; 2]]| {
+            // Where the contacts meet every function vanishes: an arc through such a point is
+            // that point's, not a boundary's. Split on, until the caller's proof excludes it.
+            let meets =
+                opts.pairs && (p.t1 >= p.r0 || (opts.seam && p.t0 == dom.t.lo && p.r1 == dom.r.hi));
+            !meets
+                && stores.iter().enumerate().all(|(j, s)| {
+                    j == k
+                        || s.restricted(p.rect()).is_none_or(|q| {
+                            let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * q.max_abs();
+                            common_sign(q.c.iter().copied(), err) != 0
+                                || unique(p, &q)
+                                || pts.iter().all(|v| fs[j].eval(v[0], v[1]).abs() <= band[j])
+                        })
+                })
+        };
+        let filters = Filters {
+            keep: &keep,
+            lax: &|_| false,
+            settle: &settle,
+        };
+        let pieces = run_cells(&store.cells, dom, &opts.zero, &map, chord_abs, &filters);
+        let z = finish(&pieces, dom, &store.cells);
+        out.complete &= z.complete;
+        out.patches += z.patches;
+        let cut = Cutter {
+            fs,
+            k,
+            dom,
+            band: &band,
+        };
+        for b in z.branches {
+            cut.pieces(b.pts, b.closed, &mut out.pieces);
+        }
+        out.points
+            .extend(z.isolated.into_iter().filter(|&p| cut.others_hold(p)));
+        out.unresolved
+            .extend(z.singular.into_iter().filter(|&p| cut.others_hold(p)));
+    }
+    Ok(out)
+}
+
+/// One function's Bézier cells, indexed by their breakpoints, with the sign of each cell's
+/// values relative to the function's (a divided diagonal cell holds `F / (t − r)`).
+struct Cells {
+    t_breaks: Vec<f64>,
+    r_breaks: Vec<f64>,
+    /// Row-major: `cells[i * (r_breaks.len() − 1) + j]` spans `t_breaks[i..=i+1]` ×
+    /// `r_breaks[j..=j+1]`.
+    cells: Vec<Patch>,
+    /// Per cell: −1 where the cell holds `F / (t − r)` (negative on `t < r`), else +1.
+    sign: Vec<f64>,
+    /// The largest coefficient of each cell: the scale of its rounding.
+    scale: Vec<f64>,
+}
+
+impl Cells {
+    fn of(f: &TensorBSpline, pairs: bool) -> Self {
+        let d = f.deg_t().max(f.deg_r());
+        let square = if pairs {
+            f.elevate(d - f.deg_t(), d - f.deg_r())
+        } else {
+            f.clone()
+        };
+        let mut cells: Vec<Patch> = square
+            .bezier_patches()
+            .iter()
+            .map(Patch::from_bezier)
+            .collect();
+        let breaks = |pick: fn(&Patch) -> (f64, f64)| {
+            let mut v: Vec<f64> = cells
+                .iter()
+                .flat_map(|p| {
+                    let (a, b) = pick(p);
+                    [a, b]
+                })
+                .collect();
+            v.sort_by(f64::total_cmp);
+            v.dedup();
+            v
+        };
+        let t_breaks = breaks(|p| (p.t0, p.t1));
+        let r_breaks = breaks(|p| (p.r0, p.r1));
+        let index = |p: &Patch| {
+            let i = t_breaks.partition_point(|&x| x < p.t0);
+            let j = r_breaks.partition_point(|&x| x < p.r0);
+            i * (r_breaks.len() - 1) + j
+        };
+        cells.sort_by_key(|p| index(p));
+        let mut sign = vec![1.0; cells.len()];
+        if pairs {
+            for (c, s) in cells.iter_mut().zip(sign.iter_mut()) {
+                if c.t0 == c.r0 && c.t1 == c.r1 {
+                    if let Some(q) = c.divide_diagonal(DIVISIBLE) {
+                        *c = q;
+                        *s = -1.0;
+                    }
+                }
+            }
+        }
+        let scale = cells.iter().map(Patch::max_abs).collect();
+        Self {
+            t_breaks,
+            r_breaks,
+            cells,
+            sign,
+            scale,
+        }
+    }
+
+    /// The function on `bx`, a box inside one cell (`None` if it is in none).
+    fn restricted(&self, bx: Rect) -> Option<Patch> {
+        let i = self
+            .t_breaks
+            .partition_point(|&x| x <= bx.t.mid())
+            .checked_sub(1)?;
+        let j = self
+            .r_breaks
+            .partition_point(|&x| x <= bx.r.mid())
+            .checked_sub(1)?;
+        let nr = self.r_breaks.len() - 1;
+        if i >= self.t_breaks.len() - 1 || j >= nr {
+            return None;
+        }
+        self.cells.get(i * nr + j)?.restrict(bx)
+    }
+
+    /// Whether the function is proven negative on `bx` (all Bernstein coefficients of every
+    /// cell it meets, restricted to it, negative beyond their rounding).
+    fn negative_on(&self, bx: Rect) -> bool {
+        let span = |breaks: &[f64], lo: f64, hi: f64| {
+            let a = breaks.partition_point(|&x| x <= lo).saturating_sub(1);
+            let b = breaks.partition_point(|&x| x < hi).min(breaks.len() - 1);
+            a..b.max(a + 1)
+        };
+        let nr = self.r_breaks.len() - 1;
+        for i in span(&self.t_breaks, bx.t.lo, bx.t.hi) {
+            for j in span(&self.r_breaks, bx.r.lo, bx.r.hi) {
+                let at = i * nr + j;
+                let Some(cell) = self.cells.get(at) else {
+                    return false;
+                };
+                let Some(p) = cell.restrict(bx) else {
+                    continue;
+                };
+                // Four de Casteljau splits, each adding rounding of the order of the degree.
+                let err = 16.0 * (p.pt + p.pr + 2) as f64 * UNIT_ROUNDOFF * self.scale[at];
+                let want = if self.sign[at] < 0.0 { 1 } else { -1 };
+                if common_sign(p.c.iter().copied(), err) != want {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+}
+
+/// Cuts one function's zero set where another function changes sign.
+struct Cutter<'a> {
+    fs: &'a [TensorBSpline],
+    k: usize,
+    dom: Rect,
+    /// Per function, the values taken as zero ([`ZERO_BAND`]).
+    band: &'a [f64],
+}
+
+impl Cutter<'_> {
+    /// Whether every other function is non-negative at `p`.
+    fn others_hold(&self, p: [f64; 2]) -> bool {
+        self.first_negative(p).is_none()
+    }
+
+    /// The first other function negative at `p`.
+    fn first_negative(&self, p: [f64; 2]) -> Option<usize> {
+        (0..self.fs.len()).find(|&j| j != self.k && !self.holds(j, p))
+    }
+
+    /// Whether function `j` is non-negative at `p`; within its band of zero, only for a
+    /// function after this one (a stretch on both zero sets belongs to the first).
+    fn holds(&self, j: usize, p: [f64; 2]) -> bool {
+        let v = self.fs[j].eval(p[0], p[1]);
+        if j > self.k {
+            v >= -self.band[j]
+        } else {
+            v > self.band[j]
+        }
+    }
+
+    fn end_of(&self, p: [f64; 2]) -> PieceEnd {
+        let tol_t = ON_BORDER * self.dom.t.width();
+        let tol_r = ON_BORDER * self.dom.r.width();
+        let on = (p[0] - self.dom.t.lo).abs() <= tol_t
+            || (p[0] - self.dom.t.hi).abs() <= tol_t
+            || (p[1] - self.dom.r.lo).abs() <= tol_r
+            || (p[1] - self.dom.r.hi).abs() <= tol_r;
+        if on {
+            PieceEnd::Border
+        } else {
+            PieceEnd::Loose
+        }
+    }
+
+    /// Which functions hold (are non-negative) at `p`; this one always.
+    fn signs(&self, p: [f64; 2]) -> Vec<bool> {
+        (0..self.fs.len())
+            .map(|j| j == self.k || self.holds(j, p))
+            .collect()
+    }
+
+    /// The kept pieces of one branch of the zero set of function `k`.
+    ///
+    /// Along a segment between two vertices each other function changes sign at most once
+    /// (the tracer's `settle` split every patch until that holds), so a function whose signs
+    /// at the two ends differ crosses exactly once between them, and one whose signs agree
+    /// does not cross: the crossings, sorted along the segment, cut it into stretches inside
+    /// and outside the set.
+    fn pieces(&self, mut pts: Vec<[f64; 2]>, closed: bool, out: &mut Vec<BoundaryPiece>) {
+        if pts.len() < 2 {
+            return;
+        }
+        let mut signs: Vec<Vec<bool>> = pts.iter().map(|&p| self.signs(p)).collect();
+        let all = |v: &[bool]| v.iter().all(|&x| x);
+        if closed {
+            // Start the walk at a vertex outside the set, so no piece wraps round the start
+            // (a loop inside throughout, with no crossing, is one closed piece).
+            pts.pop();
+            signs.pop();
+            match signs.iter().position(|v| !all(v)) {
+                Some(at) => {
+                    pts.rotate_left(at);
+                    signs.rotate_left(at);
+                }
+                None if !self.any_crossing(&pts, &signs) => {
+                    pts.push(pts[0]);
+                    out.push(self.oriented(pts, None));
+                    return;
+                }
+                None => {}
+            }
+            pts.push(pts[0]);
+            signs.push(signs[0].clone());
+        }
+        let mut state = signs[0].clone();
+        let mut run: Option<(Vec<[f64; 2]>, PieceEnd)> =
+            all(&state).then(|| (vec![pts[0]], self.end_of(pts[0])));
+        for i in 0..pts.len() - 1 {
+            let (a, b) = (pts[i], pts[i + 1]);
+            let mut cuts: Vec<(f64, usize)> = (0..self.fs.len())
+                .filter(|&j| signs[i][j] != signs[i + 1][j])
+                .map(|j| (self.along(a, b, j), j))
+                .collect();
+            cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
+            for (l, j) in cuts {
+                let was = all(&state);
+                state[j] = !state[j];
+                let now = all(&state);
+                if was == now {
+                    continue;
+                }
+                let x = self.crossing_at(a, b, l, j);
+                if now {
+                    run = Some((vec![x], PieceEnd::Crossing(j)));
+                } else if let Some((mut v, start)) = run.take() {
+                    v.push(x);
+                    out.push(self.oriented(v, Some([start, PieceEnd::Crossing(j)])));
+                }
+            }
+            // The vertex's own signs (the same as the flips, but for rounding).
+            state.clone_from(&signs[i + 1]);
+            match (run.as_mut(), all(&state)) {
+                (Some((v, _)), true) => v.push(b),
+                (None, true) => run = Some((vec![b], PieceEnd::Loose)),
+                // The flips and the vertex's signs disagree (within rounding): the piece
+                // ends here, unresolved.
+                (Some(_), false) => {
+                    if let Some((mut v, start)) = run.take() {
+                        v.push(b);
+                        out.push(self.oriented(v, Some([start, PieceEnd::Loose])));
+                    }
+                }
+                (None, false) => {}
+            }
+        }
+        if let Some((v, start)) = run {
+            let end = self.end_of(v[v.len() - 1]);
+            if v.len() >= 2 {
+                out.push(self.oriented(v, Some([start, end])));
+            }
+        }
+    }
+
+    /// Whether some function changes sign along a closed polyline inside the set at every
+    /// vertex.
+    fn any_crossing(&self, pts: &[[f64; 2]], signs: &[Vec<bool>]) -> bool {
+        let n = pts.len();
+        (0..n).any(|i| signs[i] != signs[(i + 1) % n])
+    }
+
+    /// Where along the chord from `a` to `b` function `j` changes sign (a share in `[0, 1]`).
+    fn along(&self, a: [f64; 2], b: [f64; 2], j: usize) -> f64 {
+        let at = |l: f64| [a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])];
+        let start = self.holds(j, a);
+        let (mut lo, mut hi) = (0.0, 1.0);
+        for _ in 0..CHORD_BISECTIONS {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if self.holds(j, at(mid)) == start {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+
+    /// The crossing of this zero set with function `j`'s near the share `l` of the chord from
+    /// `a` to `b`, polished onto both zero sets.
+    fn crossing_at(&self, a: [f64; 2], b: [f64; 2], l: f64, j: usize) -> [f64; 2] {
+        let start = [a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])];
+        let reach = (b[0] - a[0]).hypot(b[1] - a[1]);
+        self.polish(start, j, reach).unwrap_or(start)
+    }
+
+    /// Newton on `F_k = F_j = 0` from `start`, kept if it stays within `reach` of it.
+    fn polish(&self, start: [f64; 2], j: usize, reach: f64) -> Option<[f64; 2]> {
+        let (fk, fj) = (&self.fs[self.k], &self.fs[j]);
+        let lin = |x: &Vector2<f64>| {
+            let a = fk.eval_derivs(x.x, x.y, 1, 1);
+            let b = fj.eval_derivs(x.x, x.y, 1, 1);
+            // Entries: [F, F_r, F_t, F_tr].
+            let value = Vector2::new(a[0], b[0]);
+            let jac = Matrix2::new(a[2], a[1], b[2], b[1]);
+            let res = (a[0] / (a[1].hypot(a[2]) + f64::MIN_POSITIVE)).abs()
+                + (b[0] / (b[1].hypot(b[2]) + f64::MIN_POSITIVE)).abs();
+            (value, jac, res)
+        };
+        let x = polish(
+            Vector2::new(start[0], start[1]),
+            Newton2::steps(CROSSING_STEPS),
+            lin,
+            |x, d| x - d,
+            |_| StepVerdict::Continue,
+        )
+        .best()?;
+        let inside = self.dom.t.lo <= x.x
+            && x.x <= self.dom.t.hi
+            && self.dom.r.lo <= x.y
+            && x.y <= self.dom.r.hi;
+        ((x.x - start[0]).hypot(x.y - start[1]) <= reach && inside).then_some([x.x, x.y])
+    }
+
+    /// The piece turned so the set lies on its left (where `F_k` grows).
+    fn oriented(&self, mut pts: Vec<[f64; 2]>, ends: Option<[PieceEnd; 2]>) -> BoundaryPiece {
+        let m = (pts.len() - 1) / 2;
+        let (a, b) = (pts[m], pts[m + 1]);
+        let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+        let g = self.fs[self.k].eval_derivs(mid[0], mid[1], 1, 1);
+        let (gt, gr) = (g[2], g[1]);
+        let v = [b[0] - a[0], b[1] - a[1]];
+        let mut ends = ends;
+        if v[0] * gr - v[1] * gt < 0.0 {
+            pts.reverse();
+            if let Some(e) = ends.as_mut() {
+                e.swap(0, 1);
+            }
+        }
+        BoundaryPiece {
+            function: self.k,
+            pts,
+            ends,
+        }
+    }
+}

@@ -9,7 +9,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The crates from left to right, with their source folders (a crate may use those before it).
-const CRATES: [(&str, &str); 11] = [
+const CRATES: [(&str, &str); 12] = [
     ("numeric", "crates/numeric"),
     ("bspline", "crates/bspline"),
     ("curve", "crates/curve"),
@@ -17,6 +17,7 @@ const CRATES: [(&str, &str); 11] = [
     ("testkit", "crates/testkit"),
     ("zeroset", "crates/zeroset"),
     ("antipodal", "crates/antipodal"),
+    ("grasp", "crates/grasp"),
     ("medial", "crates/medial"),
     ("offset", "crates/offset"),
     ("curvekit", "."),

@@ -1,104 +1,185 @@
-//! The regions from the pieces of their boundaries: pieces joined into loops where zero sets
-//! cross and along the border of the half square `s < t`, loops sorted into parts and holes,
-//! and parts glued across the seam of a closed curve into regions.
+//! The regions from the pieces of their boundaries: in each cell, pieces joined into loops
+//! where zero sets cross and along the cell's border; loops sorted into parts and holes;
+//! parts glued into regions across the cells' borders.
 //!
-//! The pairs `s < t` of a closed curve with domain `[a, b]` fill the triangle above the
-//! diagonal. Its left edge `s = a` and its top edge `t = b` are the same pairs (`(a, u)` and
-//! `(u, b)` both pair `C(a) = C(b)` with `C(u)`), so a region running across the seam shows
-//! as parts touching both edges, glued where their stretches of those edges overlap.
+//! The borders of the cells are the lines where one finger sits at a joint `k`: the pairs
+//! `{k, c}` for the other finger's parameter `c` (the line `s = k` above the diagonal, `t = k`
+//! below it; the closing joint's line is both the left edge `s = 0` and the top edge `t = n`
+//! of the square). Two parts touching one such line along overlapping stretches of `c` are one
+//! region where the joint is smooth (the conditions are continuous across it); at a convex
+//! corner the pairs on the line are the corner's own ([`crate::corners`]), and they join the
+//! parts they touch; a reflex corner takes no part, and joins nothing.
 
+use crate::cells::Traced;
+use crate::corners::CornerLine;
+use crate::model::{Cone, Model};
+use crate::polyline::{bounds, inside, signed_area};
 use numeric::certificate::{Doubt, Doubts};
-use zeroset::{BoundaryPiece, NonNegativeSet, PieceEnd};
+use zeroset::{BoundaryPiece, PieceEnd};
 
-/// Two ends are one point when this close, relative to the domain (crossings are polished
-/// onto both zero sets; an unpolished one lies within the chord tolerance, added to this).
+/// Two ends are one point when this close, relative to a cell (crossings are polished onto
+/// both zero sets; an unpolished one lies within the chord tolerance, added to this).
 const SAME_POINT: f64 = 1e-7;
 
-/// Stretches of the border overlap when they share more than this, relative to the domain.
-const BORDER_OVERLAP: f64 = 1e-9;
+/// Stretches of a line overlap when they share more than this (a cell's parameter being 1).
+const OVERLAP: f64 = 1e-9;
 
-/// A region as closed polylines in the triangle `s < t`.
-#[derive(Debug, Clone, PartialEq)]
+/// Loops narrower than this (a cell's parameter being 1) lie below every tolerance the
+/// boundaries are traced to: the crumbs the subdivision leaves where all functions vanish
+/// (at a corner where the contacts meet, which no grasp near it can hold).
+const CRUMB: f64 = 1e-9;
+
+/// A region as closed polylines in the triangle `s < t` of the profile's parameter.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub(crate) struct RawRegion {
-    /// Its parts, each a closed polyline (first vertex repeated last), the region on the
-    /// left; more than one where it runs across the seam.
+    /// Its parts, each a closed polyline (first vertex repeated last) in one cell, the region
+    /// on the left.
     pub(crate) parts: Vec<Vec<[f64; 2]>>,
     /// Holes in it, clockwise.
     pub(crate) holes: Vec<Vec<[f64; 2]>>,
+    /// Stretches of corner lines (pairs with a finger at a corner) that touch no part: each
+    /// from its first to its second point.
+    pub(crate) lines: Vec<[[f64; 2]; 2]>,
+    /// Single pairs.
+    pub(crate) points: Vec<[f64; 2]>,
     /// What is not proven about its boundary.
     pub(crate) doubts: Doubts,
 }
 
-/// A loop and the stretches of the two border edges it runs along.
+/// A walked stretch of a joint's line: the joint and the other finger's parameters.
+type Stretch = (usize, [f64; 2]);
+
+/// A closed loop in one cell with the stretches of joint lines it runs along.
 struct Loop {
     pts: Vec<[f64; 2]>,
-    /// Stretches `[lo, hi]` of `s` along the top edge `t = b`.
-    top: Vec<[f64; 2]>,
-    /// Stretches of `t` along the left edge `s = a`.
-    left: Vec<[f64; 2]>,
+    stretches: Vec<Stretch>,
     doubts: Doubts,
 }
 
-/// The regions bounded by `set`'s pieces on the domain `[a, b]` of a closed curve.
-pub(crate) fn regions(set: &NonNegativeSet, (a, b): (f64, f64), chord: f64) -> Vec<RawRegion> {
-    let tol = SAME_POINT * (b - a) + chord;
-    let mut loops = Vec::new();
-    let open: Vec<&BoundaryPiece> = set.pieces.iter().filter(|p| p.ends.is_some()).collect();
-    for p in set.pieces.iter().filter(|p| p.ends.is_none()) {
-        loops.push(Loop {
-            pts: p.pts.clone(),
-            top: Vec::new(),
-            left: Vec::new(),
-            doubts: Doubts::none(),
-        });
-    }
-    let mut used = vec![false; open.len()];
-    let walk = Walk {
-        open: &open,
-        a,
-        b,
-        tol,
-    };
-    for first in 0..open.len() {
-        if !used[first] {
-            loops.push(walk.trace(first, &mut used));
-        }
-    }
-    let mut unresolved = Doubts::none();
-    if !set.unresolved.is_empty() {
-        unresolved.add(Doubt::GraspBoundaryUnresolved);
-    }
-    let mut out = sort_and_glue(loops, &unresolved);
-    for &p in &set.points {
-        out.push(RawRegion {
-            parts: vec![vec![p, p]],
-            holes: Vec::new(),
-            doubts: Doubt::GraspPointRegion.into(),
-        });
-    }
-    out
+/// The border of one cell, counterclockwise: its corners, and per edge the joint line it lies
+/// on (`None`: the diagonal) and which coordinate runs along it.
+struct Border {
+    corners: Vec<[f64; 2]>,
+    lines: Vec<Option<(usize, usize)>>,
 }
 
-/// Joins open pieces into loops.
+impl Border {
+    fn of(i: usize, j: usize, n: usize) -> Self {
+        let (x0, x1, y0, y1) = (i as f64, (i + 1) as f64, j as f64, (j + 1) as f64);
+        // Line `s = k` runs along t (coordinate 1), line `t = k` along s (coordinate 0).
+        let s_line = |k: usize| Some((k % n, 1));
+        let t_line = |k: usize| Some((k % n, 0));
+        if i == j {
+            Border {
+                corners: vec![[x0, y0], [x1, y1], [x0, y1]],
+                lines: vec![None, t_line(j + 1), s_line(i)],
+            }
+        } else {
+            Border {
+                corners: vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]],
+                lines: vec![t_line(j), s_line(i + 1), t_line(j + 1), s_line(i)],
+            }
+        }
+    }
+
+    /// The place of a border point: edge `e` plus the share along it.
+    fn place(&self, p: [f64; 2]) -> f64 {
+        let m = self.corners.len();
+        let mut best = (f64::INFINITY, 0.0);
+        for e in 0..m {
+            let (a, b) = (self.corners[e], self.corners[(e + 1) % m]);
+            let d = [b[0] - a[0], b[1] - a[1]];
+            let len2 = d[0] * d[0] + d[1] * d[1];
+            let x = (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0);
+            let off = (a[0] + x * d[0] - p[0]).hypot(a[1] + x * d[1] - p[1]);
+            if off < best.0 {
+                best = (off, e as f64 + x.min(1.0 - f64::EPSILON));
+            }
+        }
+        best.1
+    }
+
+    /// The walk from place `from` to place `to` (counterclockwise, wrapping): the corners
+    /// passed, and the stretches of joint lines walked.
+    fn walk(&self, from: f64, to: f64, stretches: &mut Vec<Stretch>) -> Vec<[f64; 2]> {
+        let m = self.corners.len() as f64;
+        let to = if to < from { to + m } else { to };
+        let mut corners = Vec::new();
+        let mut at = from;
+        while at < to {
+            let e = at.floor();
+            let end = (e + 1.0).min(to);
+            let edge = (e as usize) % self.corners.len();
+            if let Some((joint, coord)) = self.lines[edge] {
+                let point = |x: f64| self.point(x)[coord];
+                let (a, b) = (point(at), point(end));
+                stretches.push((joint, [a.min(b), a.max(b)]));
+            }
+            if end < to {
+                corners.push(self.corners[(edge + 1) % self.corners.len()]);
+            }
+            at = end;
+        }
+        corners
+    }
+
+    /// The point at place `x` (an edge's end is the next edge's start).
+    fn point(&self, x: f64) -> [f64; 2] {
+        let m = self.corners.len();
+        let e = (x.floor() as usize) % m;
+        let f = x - x.floor();
+        let (a, b) = (self.corners[e], self.corners[(e + 1) % m]);
+        [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])]
+    }
+}
+
+/// The regions of `model` from its cells' pieces and its corner lines.
+pub(crate) fn regions(
+    model: &Model<'_>,
+    traced: &[((usize, usize), Traced)],
+    lines: &[CornerLine],
+    chord: f64,
+) -> Vec<RawRegion> {
+    let n = model.n();
+    let mut loops: Vec<Loop> = Vec::new();
+    let mut points: Vec<[f64; 2]> = Vec::new();
+    let mut shared = Doubts::none();
+    for ((i, j), t) in traced {
+        let border = Border::of(*i, *j, n);
+        let walk = Walk {
+            open: t.pieces.iter().filter(|p| p.ends.is_some()).collect(),
+            border: &border,
+            tol: SAME_POINT + chord,
+        };
+        let mut used = vec![false; walk.open.len()];
+        for first in 0..walk.open.len() {
+            if !used[first] {
+                loops.push(walk.trace(first, &mut used));
+            }
+        }
+        for p in t.pieces.iter().filter(|p| p.ends.is_none()) {
+            loops.push(Loop {
+                pts: p.pts.clone(),
+                stretches: Vec::new(),
+                doubts: Doubts::none(),
+            });
+        }
+        points.extend(&t.points);
+        if t.unresolved {
+            shared.add(Doubt::GraspBoundaryUnresolved);
+        }
+    }
+    glue(model, loops, lines, points, &shared)
+}
+
+/// Joins a cell's open pieces into loops.
 struct Walk<'a> {
-    open: &'a [&'a BoundaryPiece],
-    a: f64,
-    b: f64,
+    open: Vec<&'a BoundaryPiece>,
+    border: &'a Border,
     tol: f64,
 }
 
 impl Walk<'_> {
-    /// The place of a border point along the border walked counterclockwise round the
-    /// triangle: the top edge from `(b, b)` to `(a, b)`, then the left edge down to `(a, a)`.
-    fn border_place(&self, p: [f64; 2]) -> f64 {
-        let w = self.b - self.a;
-        if (p[1] - self.b).abs() <= (p[0] - self.a).abs() {
-            (self.b - p[0]).clamp(0.0, w)
-        } else {
-            w + (self.b - p[1]).clamp(0.0, w)
-        }
-    }
-
     fn ends(&self, i: usize) -> [PieceEnd; 2] {
         self.open[i].ends.unwrap_or([PieceEnd::Loose; 2])
     }
@@ -118,7 +199,8 @@ impl Walk<'_> {
         i: usize,
         used: &[bool],
         start: usize,
-    ) -> Option<(usize, Vec<[f64; 2]>, [f64; 2])> {
+        stretches: &mut Vec<Stretch>,
+    ) -> Option<(usize, Vec<[f64; 2]>)> {
         let end = self.last(i);
         let available = |j: usize| !used[j] || j == start;
         match self.ends(i)[1] {
@@ -133,21 +215,18 @@ impl Walk<'_> {
                     .map(|j| (j, dist(self.first(j), end)))
                     .filter(|&(_, d)| d <= self.tol)
                     .min_by(|x, y| x.1.total_cmp(&y.1))
-                    .map(|(j, _)| (j, Vec::new(), [0.0; 2]))
+                    .map(|(j, _)| (j, Vec::new()))
             }
             PieceEnd::Border => {
-                let from = self.border_place(end);
-                let j = (0..self.open.len())
+                let from = self.border.place(end);
+                let m = self.border.corners.len() as f64;
+                // The next start along the border, counterclockwise (wrapping round).
+                let ahead = |x: f64| if x >= from { x - from } else { x - from + m };
+                let (j, to) = (0..self.open.len())
                     .filter(|&j| available(j) && self.ends(j)[0] == PieceEnd::Border)
-                    .map(|j| (j, self.border_place(self.first(j))))
-                    .filter(|&(_, at)| at >= from)
-                    .min_by(|x, y| x.1.total_cmp(&y.1))?;
-                let w = self.b - self.a;
-                let mut between = Vec::new();
-                if from < w && j.1 > w {
-                    between.push([self.a, self.b]);
-                }
-                Some((j.0, between, [from, j.1]))
+                    .map(|j| (j, self.border.place(self.first(j))))
+                    .min_by(|x, y| ahead(x.1).total_cmp(&ahead(y.1)))?;
+                Some((j, self.border.walk(from, to, stretches)))
             }
             PieceEnd::Loose => None,
         }
@@ -155,30 +234,19 @@ impl Walk<'_> {
 
     /// The loop through piece `first`.
     fn trace(&self, first: usize, used: &mut [bool]) -> Loop {
-        let w = self.b - self.a;
         let mut l = Loop {
             pts: self.open[first].pts.clone(),
-            top: Vec::new(),
-            left: Vec::new(),
+            stretches: Vec::new(),
             doubts: Doubts::none(),
         };
         used[first] = true;
         let mut at = first;
         for _ in 0..=self.open.len() {
-            let Some((next, between, [from, to])) = self.next(at, used, first) else {
+            let Some((next, between)) = self.next(at, used, first, &mut l.stretches) else {
                 // Nothing goes on: close the loop by a chord, and say so.
                 l.doubts.add(Doubt::GraspBoundaryUnresolved);
                 break;
             };
-            if self.ends(at)[1] == PieceEnd::Border {
-                // The walked stretches, on each edge.
-                if from < w {
-                    l.top.push([self.b - to.min(w), self.b - from]);
-                }
-                if to > w {
-                    l.left.push([self.b - (to - w), self.b - (from.max(w) - w)]);
-                }
-            }
             l.pts.extend(between);
             if next == first {
                 break;
@@ -197,35 +265,70 @@ fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
     (p[0] - q[0]).hypot(p[1] - q[1])
 }
 
-/// Twice the signed area of a closed polyline.
-pub(crate) fn signed_area(pts: &[[f64; 2]]) -> f64 {
-    pts.windows(2)
-        .map(|w| w[0][0] * w[1][1] - w[1][0] * w[0][1])
-        .sum()
+/// What a node of the gluing is.
+enum Node {
+    Part(usize),
+    Line { joint: usize, piece: [f64; 2] },
+    Point([f64; 2]),
 }
 
-/// Whether `p` lies inside the closed polyline `pts` (even-odd).
-pub(crate) fn inside(pts: &[[f64; 2]], p: [f64; 2]) -> bool {
-    let mut c = false;
-    for w in pts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        if (a[1] > p[1]) != (b[1] > p[1]) {
-            let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-            if p[0] < x {
-                c = !c;
-            }
+/// The pair of the triangle `s < t` with one finger at joint `k` and the other at `c`.
+fn on_line(k: usize, c: f64) -> [f64; 2] {
+    let k = k as f64;
+    if c > k {
+        [k, c]
+    } else {
+        [c, k]
+    }
+}
+
+/// Parts, holes, corner lines and points glued into regions.
+fn glue(
+    model: &Model<'_>,
+    loops: Vec<Loop>,
+    lines: &[CornerLine],
+    points: Vec<[f64; 2]>,
+    shared: &Doubts,
+) -> Vec<RawRegion> {
+    let width = |l: &Loop| {
+        let (lo, hi) = bounds(&l.pts);
+        (hi[0] - lo[0]).max(hi[1] - lo[1])
+    };
+    let (outer, holes): (Vec<Loop>, Vec<Loop>) = loops
+        .into_iter()
+        .filter(|l| width(l) > CRUMB)
+        .partition(|l| signed_area(&l.pts) >= 0.0);
+    let mut nodes: Vec<Node> = (0..outer.len()).map(Node::Part).collect();
+    for line in lines {
+        for &piece in &line.pieces {
+            nodes.push(Node::Line {
+                joint: line.joint,
+                piece,
+            });
         }
     }
-    c
-}
-
-/// Outer loops as parts with their holes, glued across the seam into regions.
-fn sort_and_glue(loops: Vec<Loop>, shared: &Doubts) -> Vec<RawRegion> {
-    let (outer, holes): (Vec<Loop>, Vec<Loop>) =
-        loops.into_iter().partition(|l| signed_area(&l.pts) >= 0.0);
-    // Union-find over the outer loops: glued where a left stretch of one overlaps a top
-    // stretch of another (or of itself).
-    let mut root: Vec<usize> = (0..outer.len()).collect();
+    nodes.extend(points.iter().map(|&p| Node::Point(p)));
+    // Per joint, the stretches of its line each node holds.
+    let mut on_joint: Vec<Vec<(usize, [f64; 2])>> = vec![Vec::new(); model.n()];
+    for (k, node) in nodes.iter().enumerate() {
+        match node {
+            Node::Part(p) => {
+                for &(joint, c) in &outer[*p].stretches {
+                    on_joint[joint].push((k, c));
+                }
+            }
+            Node::Line { joint, piece } => {
+                on_joint[*joint].push((k, *piece));
+                // An end at another joint is a pair of two joints: on that joint's line too.
+                for c in piece.iter().copied().filter(|c| c.fract() == 0.0) {
+                    let other = (c as usize) % model.n();
+                    on_joint[other].push((k, [*joint as f64; 2]));
+                }
+            }
+            Node::Point(_) => {}
+        }
+    }
+    let mut root: Vec<usize> = (0..nodes.len()).collect();
     fn find(root: &mut [usize], i: usize) -> usize {
         let mut i = i;
         while root[i] != i {
@@ -234,44 +337,63 @@ fn sort_and_glue(loops: Vec<Loop>, shared: &Doubts) -> Vec<RawRegion> {
         }
         i
     }
-    let span = outer
-        .iter()
-        .flat_map(|l| l.pts.iter())
-        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()))
-        .max(1.0);
-    for i in 0..outer.len() {
-        for j in 0..outer.len() {
-            let glued = outer[i].left.iter().any(|l| {
-                outer[j]
-                    .top
-                    .iter()
-                    .any(|t| l[1].min(t[1]) - l[0].max(t[0]) > BORDER_OVERLAP * span)
-            });
-            if glued {
-                let (ri, rj) = (find(&mut root, i), find(&mut root, j));
-                root[ri] = rj;
+    for (joint, held) in on_joint.iter().enumerate() {
+        if model.joints[joint].cone == Cone::Reflex {
+            continue;
+        }
+        for (x, &(a, ca)) in held.iter().enumerate() {
+            for &(b, cb) in &held[x + 1..] {
+                let overlap = ca[1].min(cb[1]) - ca[0].max(cb[0]);
+                let point_in = (ca[0] == ca[1] || cb[0] == cb[1]) && overlap >= -OVERLAP;
+                if overlap > OVERLAP || point_in {
+                    let (ra, rb) = (find(&mut root, a), find(&mut root, b));
+                    root[ra] = rb;
+                }
             }
         }
     }
     let mut regions: Vec<(usize, RawRegion)> = Vec::new();
-    for (i, l) in outer.iter().enumerate() {
-        let r = find(&mut root, i);
-        let slot = match regions.iter().position(|(k, _)| *k == r) {
-            Some(k) => k,
-            None => {
-                regions.push((
-                    r,
-                    RawRegion {
-                        parts: Vec::new(),
-                        holes: Vec::new(),
-                        doubts: shared.clone(),
-                    },
-                ));
-                regions.len() - 1
+    let slot_of = |r: usize, regions: &mut Vec<(usize, RawRegion)>| match regions
+        .iter()
+        .position(|(k, _)| *k == r)
+    {
+        Some(k) => k,
+        None => {
+            regions.push((
+                r,
+                RawRegion {
+                    doubts: shared.clone(),
+                    ..RawRegion::default()
+                },
+            ));
+            regions.len() - 1
+        }
+    };
+    for (k, node) in nodes.iter().enumerate() {
+        let r = find(&mut root, k);
+        let slot = slot_of(r, &mut regions);
+        let region = &mut regions[slot].1;
+        match node {
+            Node::Part(p) => {
+                region.parts.push(outer[*p].pts.clone());
+                region.doubts.join(outer[*p].doubts.clone());
             }
-        };
-        regions[slot].1.parts.push(l.pts.clone());
-        regions[slot].1.doubts.join(l.doubts.clone());
+            Node::Line { joint, piece } => {
+                region
+                    .lines
+                    .push([on_line(*joint, piece[0]), on_line(*joint, piece[1])]);
+            }
+            Node::Point(p) => {
+                region.points.push(*p);
+                region.doubts.add(Doubt::GraspPointRegion);
+            }
+        }
+    }
+    // A line stretch inside a part's region adds nothing to draw.
+    for (_, r) in regions.iter_mut() {
+        if !r.parts.is_empty() {
+            r.lines.clear();
+        }
     }
     for h in holes {
         // The hole belongs to the smallest part around it.

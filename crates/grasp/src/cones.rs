@@ -92,14 +92,12 @@ impl Form {
         self.curve.domain()
     }
 
-    /// The curve.
-    pub(crate) fn curve(&self) -> &Rational {
-        &self.curve
-    }
-
-    /// `+1` counterclockwise, `−1` clockwise.
-    pub(crate) fn orientation(&self) -> f64 {
-        self.orientation
+    /// The point and the tangent at `v` (clamped to the domain).
+    pub(crate) fn point_tangent(&self, v: f64) -> ([f64; 2], [f64; 2]) {
+        let (a, b) = self.domain();
+        let mut out = [0.0; 4];
+        self.curve.eval_derivs(v.clamp(a, b), 1, &mut out);
+        ([out[0], out[1]], [out[2], out[3]])
     }
 
     /// The normal of the cone's edge toward `+T` (`ahead`: `μN − T`) or toward `−T`
@@ -136,6 +134,38 @@ impl Form {
             out.extend(p.coefs.chunks_exact(2).map(|c| [c[0], c[1]]));
         }
     }
+}
+
+/// The functions of one variable for a contact at the fixed point `corner` and `t` on `b`
+/// (each times `w(t) > 0`): the cone conditions at `t` (`⟨μN ∓ T, corner − C(t)⟩`), then the
+/// width conditions, then `×(edge, C(t) − corner)` for each edge normal of the corner's
+/// widened cone (which the caller combines by its width).
+pub(crate) fn corner_functions(
+    b: &Form,
+    corner: [f64; 2],
+    edges: [[f64; 2]; 2],
+    mu: f64,
+    widths: [Option<f64>; 2],
+) -> Result<(Vec<BSpline>, [BSpline; 2])> {
+    // e = corner w(t) − P(t), that is w (corner − C).
+    let ex = b.w.lincomb(corner[0], &b.x, -1.0)?;
+    let ey = b.w.lincomb(corner[1], &b.y, -1.0)?;
+    let mut holds = Vec::with_capacity(4);
+    for ahead in [false, true] {
+        let (wx, wy) = b.edge_normal(mu, ahead)?;
+        holds.push(wx.mul(&ex)?.add(&wy.mul(&ey)?)?);
+    }
+    let sq = ex.mul(&ex)?.add(&ey.mul(&ey)?)?;
+    let w2 = b.w.mul(&b.w)?;
+    if let Some(least) = widths[0] {
+        holds.push(sq.lincomb(1.0, &w2, -least * least)?);
+    }
+    if let Some(most) = widths[1] {
+        holds.push(w2.lincomb(most * most, &sq, -1.0)?);
+    }
+    // ×(edge, C − corner) w = −×(edge, e) = ey·edge_x... : edge × (−e).
+    let side = |edge: [f64; 2]| ey.lincomb(-edge[0], &ex, edge[1]);
+    Ok((holds, [side(edges[0])?, side(edges[1])?]))
 }
 
 /// The functions of force closure for contacts at `s` on `a` and `t` on `b`, in the order of

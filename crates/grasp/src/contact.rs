@@ -1,9 +1,9 @@
 //! Independent contact regions: the largest products of stretches `[s0, s1] × [t0, t1]` whose
 //! pairs are all force closure, proven by the sign test on every function's Bernstein
-//! coefficients over the rectangle.
+//! coefficients over the rectangle (cut into the cells it meets).
 
-use crate::cones::Form;
-use crate::quality::point_tangent;
+use crate::cells::Cell;
+use crate::model::{Cone, Model};
 use bspline::tensor::TensorBSpline;
 use numeric::rounding::UNIT_ROUNDOFF;
 
@@ -11,53 +11,93 @@ use numeric::rounding::UNIT_ROUNDOFF;
 /// up as not proven.
 const PROOF_DEPTH: usize = 3;
 
-/// Bisection steps for the size of the square and for each side pushed out.
+/// Bisection steps for the size of the square, and for each side pushed out.
 const SIZE_STEPS: usize = 24;
 const SIDE_STEPS: usize = 16;
 
-/// The proof that every function is positive on rectangles.
+/// The proof that every function is positive on rectangles of the profile's parameter.
 pub(crate) struct Positivity<'a> {
-    fs: &'a [TensorBSpline],
-    domain: (f64, f64),
-    /// Per function, the rounding allowance of its restricted coefficients.
-    err: Vec<f64>,
+    model: &'a Model<'a>,
+    cells: &'a [Cell],
+    /// Per cell and function, the rounding allowance of its restricted coefficients.
+    err: Vec<Vec<f64>>,
 }
 
 impl<'a> Positivity<'a> {
-    pub(crate) fn new(fs: &'a [TensorBSpline], domain: (f64, f64)) -> Self {
-        let err = fs
+    pub(crate) fn new(model: &'a Model<'a>, cells: &'a [Cell]) -> Self {
+        let err = cells
             .iter()
-            .map(|f| 64.0 * (f.deg_t() + f.deg_r() + 2) as f64 * UNIT_ROUNDOFF * f.max_abs_coef())
+            .map(|c| {
+                c.fs.iter()
+                    .map(|f| {
+                        64.0 * (f.deg_t() + f.deg_r() + 2) as f64 * UNIT_ROUNDOFF * f.max_abs_coef()
+                    })
+                    .collect()
+            })
             .collect();
-        Self { fs, domain, err }
+        Self { model, cells, err }
     }
 
-    /// Whether every pair of `[s0, s1] × [t0, t1]` (read modulo the period) is proven force
-    /// closure.
+    /// Whether every pair of `[s0, s1] × [t0, t1]` (profile parameters, read modulo `n`) is
+    /// proven force closure.
     pub(crate) fn proves(&self, s: [f64; 2], t: [f64; 2]) -> bool {
-        let (ss, ts) = (self.pieces(s), self.pieces(t));
-        ss.iter()
-            .all(|&s| ts.iter().all(|&t| self.proves_in_domain(s, t)))
-    }
-
-    /// `[lo, hi]` (no longer than the period) cut at the seam into stretches of the domain.
-    fn pieces(&self, [lo, hi]: [f64; 2]) -> Vec<[f64; 2]> {
-        let (a, b) = self.domain;
-        let w = b - a;
-        let shift = ((lo - a) / w).floor() * w;
-        let (lo, hi) = (lo - shift, hi - shift);
-        if hi <= b {
-            vec![[lo, hi]]
-        } else {
-            vec![[lo, b], [a, (hi - w).min(b)]]
+        let n = self.model.n() as f64;
+        // (A stretch of no length is a corner line's, not a contact region.)
+        if !(s[1] > s[0] && t[1] > t[0]) || s[1] - s[0] >= n || t[1] - t[0] >= n {
+            return false;
         }
+        let (Some(ss), Some(ts)) = (self.pieces(s), self.pieces(t)) else {
+            return false;
+        };
+        ss.iter().all(|&(i, si)| {
+            ts.iter().all(|&(j, tj)| {
+                // The conditions hold for a pair in either order: a cell below the diagonal
+                // is its mirror's.
+                let (i, j, si, tj) = if i <= j {
+                    (i, j, si, tj)
+                } else {
+                    (j, i, tj, si)
+                };
+                let k = self.cell_index(i, j);
+                self.cells[k]
+                    .fs
+                    .iter()
+                    .zip(&self.err[k])
+                    .all(|(f, &err)| positive(f, si, tj, err, PROOF_DEPTH))
+            })
+        })
     }
 
-    fn proves_in_domain(&self, s: [f64; 2], t: [f64; 2]) -> bool {
-        self.fs
-            .iter()
-            .zip(&self.err)
-            .all(|(f, &err)| positive(f, s, t, err, PROOF_DEPTH))
+    fn cell_index(&self, i: usize, j: usize) -> usize {
+        // Cells are listed row by row: (0, 0), (0, 1), …, (0, n − 1), (1, 1), …
+        let n = self.model.n();
+        i * n - i * i.saturating_sub(1) / 2 + (j - i)
+    }
+
+    /// `[lo, hi]` cut at the joints into stretches of segments (in their forms' parameters);
+    /// `None` when it runs across a reflex corner, whose pairs take no part.
+    fn pieces(&self, [lo, hi]: [f64; 2]) -> Option<Vec<(usize, [f64; 2])>> {
+        let n = self.model.n();
+        let mut out = Vec::new();
+        let mut at = lo;
+        while at < hi {
+            let k = at.floor();
+            let end = (k + 1.0).min(hi);
+            let (i, v0) = self.model.locate(at);
+            let (_, b) = self.model.forms[i].domain();
+            let v1 = if end == k + 1.0 {
+                b
+            } else {
+                self.model.locate(end).1
+            };
+            out.push((i, [v0, v1]));
+            let joint = (end.rem_euclid(n as f64) as usize) % n;
+            if end < hi && self.model.joints[joint].cone == Cone::Reflex {
+                return None;
+            }
+            at = end;
+        }
+        Some(out)
     }
 }
 
@@ -87,26 +127,29 @@ fn positive(f: &TensorBSpline, s: [f64; 2], t: [f64; 2], err: f64, depth: usize)
     }
 }
 
-/// The independent contact region around `center` (a force-closure pair): the largest square
-/// of equal arc lengths around it that is proven, then each side pushed out as far as
-/// proven. `None` when not even a tiny square is proven (a pair on the region's boundary).
+/// The independent contact region around `center` (a force-closure pair, profile parameters):
+/// the largest square of equal arc lengths around it that is proven, then each side pushed
+/// out as far as proven. `None` when not even a tiny square is proven (a pair on the region's
+/// boundary, or a region that is a line or a point).
 pub(crate) fn around(
-    form: &Form,
+    model: &Model<'_>,
     proof: &Positivity<'_>,
     center: [f64; 2],
     reach: [f64; 2],
 ) -> Option<([f64; 2], [f64; 2])> {
+    // Arc length per unit of the profile's parameter.
     let speed = |u: f64| {
-        let (_, d) = point_tangent(form, u);
-        d[0].hypot(d[1])
+        let (i, _) = model.locate(u);
+        let (a, b) = model.forms[i].domain();
+        let (_, d) = model.point_tangent(u);
+        d[0].hypot(d[1]) * (b - a)
     };
     let (vs, vt) = (speed(center[0]), speed(center[1]));
     if !(vs > 0.0 && vt > 0.0) {
         return None;
     }
-    let period = form.domain().1 - form.domain().0;
-    // Half arc lengths: ℓ / v in each parameter, at most a half period.
-    let cap = (0.5 * period * vs.min(vt))
+    let n = model.n() as f64;
+    let cap = (0.5 * n * vs.min(vt))
         .min(reach[0] * vs)
         .min(reach[1] * vt)
         .max(0.0);
@@ -136,7 +179,7 @@ pub(crate) fn around(
     let (mut s, mut t) = square(lo);
     // Push each side out in turn, as far as the proof goes.
     for side in 0..4 {
-        let (mut good, mut bad) = (0.0, period * 0.5);
+        let (mut good, mut bad) = (0.0, 0.5 * n);
         for _ in 0..SIDE_STEPS {
             let mid = 0.5 * (good + bad);
             let (mut s2, mut t2) = (s, t);
@@ -146,7 +189,7 @@ pub(crate) fn around(
                 2 => t2[0] -= mid,
                 _ => t2[1] += mid,
             }
-            if s2[1] - s2[0] < period && t2[1] - t2[0] < period && proof.proves(s2, t2) {
+            if proof.proves(s2, t2) {
                 good = mid;
             } else {
                 bad = mid;

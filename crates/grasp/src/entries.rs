@@ -1,23 +1,25 @@
 //! The crate's command: every force-closure grasp of a closed curve or profile.
 
 use crate::assemble::{regions, RawRegion};
-use crate::best::{bounds, most_robust};
-use crate::cones::{functions, Form};
+use crate::best::most_robust;
+use crate::cells::{cells, trace};
 use crate::contact::{around, Positivity};
+use crate::corners::corner_lines;
 use crate::error::{Error, Result};
+use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
-use crate::quality::{min_friction, point_tangent};
+use crate::polyline::{bounds, signed_area};
+use crate::quality::min_friction;
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
-use curve::{Boundary, Frame, ParamCurve, Profile};
+use curve::{Boundary, ParamCurve, Profile};
 use numeric::certificate::{Doubt, Doubts};
-use numeric::tolerance::Size;
-use zeroset::{nonnegative_set, NonNegativeOptions, ZeroSetOptions};
 
-/// Every two-finger force-closure grasp of a closed curve for Coulomb friction μ (Nguyen's
-/// condition: the chord between the contacts lies inside both friction cones), as regions of
-/// the square of contact parameters, each with its independent contact region and its most
-/// robust grasp. Every antipodal pair and family lies inside a region.
+/// Every two-finger force-closure grasp of a closed curve or profile for Coulomb friction μ
+/// (Nguyen's condition: the chord between the contacts lies inside both friction cones; at a
+/// convex corner, inside its cone of inward normals widened by the friction angle), as regions
+/// of the square of contact parameters, each with its independent contact region and its
+/// most robust grasp. Every antipodal pair and family lies inside a region.
 ///
 /// ```
 /// use grasp::{grasps, GraspOptions};
@@ -27,7 +29,7 @@ use zeroset::{nonnegative_set, NonNegativeOptions, ZeroSetOptions};
 /// let g = grasps(&e, &GraspOptions::friction(0.3)).unwrap();
 /// assert!(g.complete);
 /// assert_eq!(g.regions.len(), 2);
-/// assert!(g.regions.iter().all(|r| r.best.min_friction < 1e-9));
+/// assert!(g.regions.iter().all(|r| r.certified && r.best.min_friction < 1e-9));
 /// ```
 pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Result<Grasps> {
     opts.check()?;
@@ -37,80 +39,50 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     if !profile.is_closed() {
         return Err(Error::NotClosed);
     }
-    let corners = profile.corners().count();
-    let [segment] = profile.segments() else {
-        return Err(Error::Segments {
-            segments: profile.segments().len(),
-            corners,
-        });
-    };
-    if corners > 0 {
-        return Err(Error::Segments {
-            segments: 1,
-            corners,
-        });
-    }
-    let spline = segment.curve();
-    let frame = Frame::for_points(&spline.control_points());
-    let local = spline.in_frame(&frame);
-    let form = Form::new(local.curve(), profile.orientation())?;
-    let (a, b) = form.domain();
-    let widths = [opts.min_width, opts.max_width].map(|w| w.map(|w| frame.length_to_local(w)));
-    let fs: Vec<_> = functions(&form, &form, opts.friction, widths)?
-        .into_iter()
-        .map(|(_, f)| f)
-        .collect();
-    let near = NearContacts::new(&form, opts.friction, true);
-    let zero = ZeroSetOptions {
-        settings: opts.settings,
-        max_patches: opts.max_patches,
-    };
-    let set = nonnegative_set(
-        &fs,
-        &NonNegativeOptions {
-            zero,
-            pairs: true,
-            seam: true,
-        },
-        &|bx| near.excluded(bx),
-    )?;
-    let diag = std::f64::consts::SQRT_2 * (b - a);
-    let chord = opts.settings.chord_tol.get() * opts.settings.size.map_or(diag, Size::get);
-    let raw = regions(&set, (a, b), chord);
-
-    let seeds = antipodal_seeds(boundary, profile, (a, b))?;
-    let proof = Positivity::new(&fs, (a, b));
-    let out = Output {
-        form: &form,
-        frame: &frame,
-        profile,
-    };
+    let model = Model::new(profile)?;
+    let widths =
+        [opts.min_width, opts.max_width].map(|w| w.map(|w| model.frame.length_to_local(w)));
+    let cells = cells(&model, opts, widths)?;
+    let near = NearContacts::new(&model, opts.friction);
     let mut doubts = Doubts::none();
-    if !set.complete {
+    let mut complete = true;
+    let mut traced = Vec::with_capacity(cells.len());
+    for cell in &cells {
+        let t = trace(&model, cell, opts, &near)?;
+        complete &= t.complete;
+        traced.push(((cell.i, cell.j), t));
+    }
+    if !complete {
         doubts.add(Doubt::SearchLimit);
     }
+    let lines = corner_lines(&model, opts.friction, widths, &mut doubts)?;
+    // (The chord tolerance of the cells, in the profile's parameter where a cell is a unit.)
+    let chord = opts.settings.chord_tol.get() * std::f64::consts::SQRT_2;
+    let raw = regions(&model, &traced, &lines, chord);
+    let seeds = antipodal_seeds(boundary, profile)?;
+    let proof = Positivity::new(&model, &cells);
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
-        let (center, proven) = most_robust(&form, r, &seeds);
+        let (center, proven) = most_robust(&model, r, &seeds);
         let mut region_doubts = r.doubts.clone();
         if !proven {
             region_doubts.add(Doubt::GraspBestUnproven);
         }
-        let (lo, hi) = r.parts.iter().fold(
-            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
-            |(lo, hi), p| {
-                let (l, h) = bounds(p);
-                (
-                    [lo[0].min(l[0]), lo[1].min(l[1])],
-                    [hi[0].max(h[0]), hi[1].max(h[1])],
-                )
-            },
-        );
-        let reach = [hi[0] - lo[0], hi[1] - lo[1]];
-        let contact = around(&form, &proof, center, reach);
-        let certified = !r.doubts.iter().any(|d| *d != Doubt::GraspBestUnproven);
+        let reach = r
+            .parts
+            .iter()
+            .map(|p| bounds(p))
+            .fold([0.0f64; 2], |m, (lo, hi)| {
+                [m[0].max(hi[0] - lo[0]), m[1].max(hi[1] - lo[1])]
+            });
+        let contact = if r.parts.is_empty() {
+            None
+        } else {
+            around(&model, &proof, center, reach)
+        };
+        let certified = r.doubts.is_empty();
         doubts.join(region_doubts);
-        found.push(out.region(r, center, contact, certified));
+        found.push(output(&model, r, center, contact, certified));
     }
     Ok(Grasps {
         friction: opts.friction,
@@ -118,103 +90,79 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         max_width: opts.max_width,
         regions: found,
         doubts,
-        complete: set.complete,
+        complete,
     })
 }
 
-/// The antipodal pairs and the middles of the families, in the form's parameter.
-fn antipodal_seeds(
-    boundary: Boundary<'_>,
-    profile: &Profile,
-    (a, b): (f64, f64),
-) -> Result<Vec<[f64; 2]>> {
+/// The antipodal pairs and the middles of the families, in the profile's parameter.
+fn antipodal_seeds(boundary: Boundary<'_>, profile: &Profile) -> Result<Vec<[f64; 2]>> {
     let found = antipodal::antipodal(boundary, &antipodal::Options::default())?;
-    let form = |d: f64| {
-        let u = profile.internal_param(d);
-        a + u.fract() * (b - a) + if u >= 1.0 { b - a } else { 0.0 }
-    };
     let (da, db) = profile.document_domain();
-    let mut seeds: Vec<[f64; 2]> = found.pairs.iter().map(|p| [form(p.s), form(p.t)]).collect();
+    let mut seeds: Vec<[f64; 2]> = found
+        .pairs
+        .iter()
+        .map(|p| [profile.internal_param(p.s), profile.internal_param(p.t)])
+        .collect();
+    let period = db - da;
     for f in &found.families {
-        let mid = |[lo, hi]: [f64; 2]| {
-            let span = if hi >= lo {
-                hi - lo
-            } else {
-                hi - lo + (db - da)
-            };
-            let m = lo + 0.5 * span;
-            if m >= db {
-                m - (db - da)
-            } else {
-                m
-            }
+        // The middle pair: each range halved the short way round (a range runs backwards
+        // where its pairs are matched so, or across the seam).
+        let mid = |[a, b]: [f64; 2]| {
+            let step = (b - a + 0.5 * period).rem_euclid(period) - 0.5 * period;
+            profile.internal_param(da + (a + 0.5 * step - da).rem_euclid(period))
         };
-        seeds.push([form(mid(f.s)), form(mid(f.t))]);
+        seeds.push([mid(f.s), mid(f.t)]);
     }
     Ok(seeds)
 }
 
-/// Writes regions in the curve's own parameter and coordinates.
-struct Output<'a> {
-    form: &'a Form,
-    frame: &'a Frame,
-    profile: &'a Profile,
-}
-
-impl Output<'_> {
-    /// The document's parameter at the form's `v`, unwrapped: beyond the domain by whole
-    /// periods where `v` is.
-    fn param(&self, v: f64) -> f64 {
-        let (a, b) = self.form.domain();
-        let (da, db) = self.profile.document_domain();
-        let turns = ((v - a) / (b - a)).floor();
-        let x = ((v - a) / (b - a) - turns).clamp(0.0, 1.0);
-        self.profile.document_param_on(0, x) - da + da + turns * (db - da)
-    }
-
-    fn point(&self, v: f64) -> [f64; 2] {
-        self.frame.to_global(point_tangent(self.form, v).0)
-    }
-
-    fn polyline(&self, pts: &[[f64; 2]]) -> Vec<[f64; 2]> {
+/// A region in the curve's own parameter and coordinates.
+fn output(
+    model: &Model<'_>,
+    r: &RawRegion,
+    center: [f64; 2],
+    contact: Option<([f64; 2], [f64; 2])>,
+    certified: bool,
+) -> GraspRegion {
+    let polyline = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> {
         pts.iter()
-            .map(|p| [self.param(p[0]), self.param(p[1])])
+            .map(|p| [model.document_param(p[0]), model.document_param(p[1])])
             .collect()
+    };
+    let mut parts: Vec<Vec<[f64; 2]>> = r.parts.iter().map(|p| polyline(p)).collect();
+    parts.sort_by(|x, y| signed_area(y).total_cmp(&signed_area(x)));
+    // A region of pairs with a finger at a corner only: its longest stretch, there and back;
+    // a single pair: itself.
+    let degenerate = r
+        .lines
+        .iter()
+        .max_by(|a, b| {
+            let len = |l: &[[f64; 2]; 2]| (l[1][0] - l[0][0]).hypot(l[1][1] - l[0][1]);
+            len(a).total_cmp(&len(b))
+        })
+        .map(|l| polyline(&[l[0], l[1], l[0]]))
+        .or_else(|| r.points.first().map(|&p| polyline(&[p, p])));
+    let boundary = parts.first().cloned().or(degenerate).unwrap_or_default();
+    if parts.len() == 1 {
+        parts.clear();
     }
-
-    fn region(
-        &self,
-        r: &RawRegion,
-        center: [f64; 2],
-        contact: Option<([f64; 2], [f64; 2])>,
-        certified: bool,
-    ) -> GraspRegion {
-        let mut parts: Vec<Vec<[f64; 2]>> = r.parts.iter().map(|p| self.polyline(p)).collect();
-        parts.sort_by(|x, y| {
-            crate::assemble::signed_area(y).total_cmp(&crate::assemble::signed_area(x))
-        });
-        let boundary = parts[0].clone();
-        if parts.len() == 1 {
-            parts.clear();
-        }
-        GraspRegion {
-            boundary,
-            parts,
-            holes: r.holes.iter().map(|h| self.polyline(h)).collect(),
-            contact: contact.map(|(s, t)| ContactRegion {
-                s: s.map(|v| self.param(v)),
-                t: t.map(|v| self.param(v)),
-                p: s.map(|v| self.point(v)),
-                q: t.map(|v| self.point(v)),
-            }),
-            best: BestGrasp {
-                s: self.param(center[0]),
-                t: self.param(center[1]),
-                p: self.point(center[0]),
-                q: self.point(center[1]),
-                min_friction: min_friction(self.form, center[0], center[1]),
-            },
-            certified,
-        }
+    GraspRegion {
+        boundary,
+        parts,
+        holes: r.holes.iter().map(|h| polyline(h)).collect(),
+        contact: contact.map(|(s, t)| ContactRegion {
+            s: s.map(|u| model.document_param(u)),
+            t: t.map(|u| model.document_param(u)),
+            p: s.map(|u| model.global_point(u)),
+            q: t.map(|u| model.global_point(u)),
+        }),
+        best: BestGrasp {
+            s: model.document_param(center[0]),
+            t: model.document_param(center[1]),
+            p: model.global_point(center[0]),
+            q: model.global_point(center[1]),
+            min_friction: min_friction(model, center[0], center[1]),
+        },
+        certified,
     }
 }

@@ -23,17 +23,6 @@ pub enum Error {
     /// The boundary is open: grasps need a closed curve or profile.
     #[error("the boundary is open: grasps need a closed curve or profile")]
     NotClosed,
-    /// A profile of several segments or with corners.
-    #[error(
-        "the profile has {segments} segments and {corners} corners: grasps are computed on one \
-         smooth closed segment so far (a closed spline or an analytic shape)"
-    )]
-    Segments {
-        /// Its segments.
-        segments: usize,
-        /// Its corners.
-        corners: usize,
-    },
     /// An option out of range.
     #[error("{field} = {value}: {expected}")]
     Option {

@@ -19,12 +19,16 @@
 
 mod assemble;
 mod best;
+mod cells;
 mod cones;
 mod contact;
+mod corners;
 mod entries;
 mod error;
+mod model;
 mod near;
 mod options;
+mod polyline;
 mod quality;
 mod region_set;
 mod types;

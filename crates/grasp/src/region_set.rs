@@ -1,15 +1,20 @@
 //! A region as a set of pairs: which pairs it holds, on the whole torus of parameters.
 
-use crate::assemble::{inside, RawRegion};
+use crate::assemble::RawRegion;
+use crate::polyline::{inside, off_segment};
 
-/// The pair `(s, t)` (any reals, read modulo the period, in either order) as the point of the
-/// triangle `s < t` of the domain `[a, b]`.
-pub(crate) fn in_triangle((a, b): (f64, f64), s: f64, t: f64) -> [f64; 2] {
-    let w = b - a;
+/// How close (in the profile's parameter) a pair must lie to a corner line or a single pair
+/// of a region to be on it.
+const ON_LINE: f64 = 1e-9;
+
+/// The pair `(s, t)` (any reals, read modulo `n`, in either order) as the point of the
+/// triangle `s ≤ t` of `[0, n)`.
+pub(crate) fn in_triangle(n: usize, s: f64, t: f64) -> [f64; 2] {
+    let n = n as f64;
     let wrap = |u: f64| {
-        let x = a + (u - a).rem_euclid(w);
-        if x >= b {
-            a
+        let x = u.rem_euclid(n);
+        if x >= n {
+            0.0
         } else {
             x
         }
@@ -24,7 +29,17 @@ pub(crate) fn in_triangle((a, b): (f64, f64), s: f64, t: f64) -> [f64; 2] {
 
 /// Whether the region holds the pair `(s, t)` (by its polylines: exact up to the chord
 /// tolerance of their boundaries).
-pub(crate) fn holds(region: &RawRegion, domain: (f64, f64), s: f64, t: f64) -> bool {
-    let p = in_triangle(domain, s, t);
-    region.parts.iter().any(|part| inside(part, p)) && !region.holes.iter().any(|h| inside(h, p))
+pub(crate) fn holds(region: &RawRegion, n: usize, s: f64, t: f64) -> bool {
+    let p = in_triangle(n, s, t);
+    let in_parts = region.parts.iter().any(|part| inside(part, p))
+        && !region.holes.iter().any(|h| inside(h, p));
+    in_parts
+        || region
+            .lines
+            .iter()
+            .any(|l| off_segment(p, l[0], l[1]) <= ON_LINE)
+        || region
+            .points
+            .iter()
+            .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) <= ON_LINE)
 }

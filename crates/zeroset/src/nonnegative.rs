@@ -42,16 +42,18 @@ const CROSSING_STEPS: usize = 12;
 const CHORD_BISECTIONS: usize = 60;
 
 /// Options for [`nonnegative_set`].
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct NonNegativeOptions {
     /// The tolerances and the patch limit of each function's zero set.
     pub zero: ZeroSetOptions,
     /// A domain of pairs: only `t < r` is traced, and every function vanishes on the diagonal
     /// `t = r` (where its factor `t − r` is divided out).
     pub pairs: bool,
-    /// Pairs on a closed curve: the functions vanish at the corner `(start, end)` too, where
-    /// the diagonal runs across the seam.
-    pub seam: bool,
+    /// Points where every function vanishes besides the diagonal (where two contacts on a
+    /// curve meet: the corner `(start, end)` of a closed curve's seam, the joint of two
+    /// segments): an arc through one is that point's, not a boundary's, and its patch is
+    /// split on until `excluded` passes over it.
+    pub meets: Vec<[f64; 2]>,
 }
 
 /// How a piece of the boundary ends.
@@ -169,8 +171,11 @@ pub fn nonnegative_set(
         let settle = |p: &Patch, pts: &[[f64; 2]]| {
             // Where the contacts meet every function vanishes: an arc through such a point is
             // that point's, not a boundary's. Split on, until the caller's proof excludes it.
-            let meets =
-                opts.pairs && (p.t1 >= p.r0 || (opts.seam && p.t0 == dom.t.lo && p.r1 == dom.r.hi));
+            let meets = (opts.pairs && p.t1 >= p.r0)
+                || opts
+                    .meets
+                    .iter()
+                    .any(|m| p.t0 <= m[0] && m[0] <= p.t1 && p.r0 <= m[1] && m[1] <= p.r1);
             !meets
                 && stores.iter().enumerate().all(|(j, s)| {
                     j == k

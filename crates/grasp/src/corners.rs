@@ -1,0 +1,119 @@
+//! Grasps with a finger at a convex corner: the pairs `(corner, t)` whose chord lies inside
+//! the corner's cone of inward normals widened by the friction angle, and inside the friction
+//! cone at `t`. They lie on the line of the corner's parameter in the square of pairs, a set of
+//! intervals found by certified root isolation of functions of one variable.
+
+use crate::cones::corner_functions;
+use crate::error::Result;
+use crate::model::{Cone, Model};
+use crate::quality::slip_angle;
+use bspline::roots::{find_roots, RootOptions};
+use bspline::BSpline;
+use numeric::certificate::{Doubt, Doubts};
+use std::f64::consts::PI;
+
+/// The pairs with one finger at a convex corner: the other finger's profile parameters.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct CornerLine {
+    /// The joint (the segment starting there).
+    pub(crate) joint: usize,
+    /// The intervals of the other finger's profile parameter, sorted (a single value: the
+    /// other finger at another corner).
+    pub(crate) pieces: Vec<[f64; 2]>,
+}
+
+/// Rotates `v` by `angle`.
+fn rotate(v: [f64; 2], angle: f64) -> [f64; 2] {
+    let (s, c) = angle.sin_cos();
+    [c * v[0] - s * v[1], s * v[0] + c * v[1]]
+}
+
+/// The corner lines of every convex corner of `model`, for friction `mu` (widths in the
+/// frame's units).
+pub(crate) fn corner_lines(
+    model: &Model<'_>,
+    mu: f64,
+    widths: [Option<f64>; 2],
+    doubts: &mut Doubts,
+) -> Result<Vec<CornerLine>> {
+    let alpha = mu.atan();
+    let mut out = Vec::new();
+    for joint in &model.joints {
+        let Cone::Convex { before, after } = joint.cone else {
+            continue;
+        };
+        let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+        let turn = cross(before, after).signum();
+        let span = (before[0] * after[0] + before[1] * after[1])
+            .clamp(-1.0, 1.0)
+            .acos();
+        // The widened cone's edges, and whether it is wider than a half-plane (then a chord
+        // need only be on the inner side of one edge).
+        let (lo, hi) = (rotate(before, -turn * alpha), rotate(after, turn * alpha));
+        let wide = span + 2.0 * alpha > PI;
+        let mut pieces = Vec::new();
+        for (j, form) in model.forms.iter().enumerate() {
+            let (holds, [side_lo, side_hi]) =
+                corner_functions(form, joint.point, [lo, hi], mu, widths)?;
+            let (a, b) = form.domain();
+            let mut cuts = vec![a, b];
+            for f in holds.iter().chain([&side_lo, &side_hi]) {
+                for r in find_roots(f, a, b, &RootOptions::default())? {
+                    // Every function vanishes where the segment meets the corner (d = 0):
+                    // that root is known, proven or not.
+                    let at_corner = (j == joint.segment && r.bracket.0 <= a)
+                        || ((j + 1) % model.n() == joint.segment && r.bracket.1 >= b);
+                    if !r.certified && !at_corner {
+                        doubts.add(Doubt::RootsUnresolved);
+                    }
+                    cuts.push(r.u.clamp(a, b));
+                }
+            }
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup();
+            let inside = |v: f64| {
+                let lo_ok = turn * side_lo.eval_scalar(v) >= 0.0;
+                let hi_ok = -turn * side_hi.eval_scalar(v) >= 0.0;
+                let cone = if wide { lo_ok || hi_ok } else { lo_ok && hi_ok };
+                cone && holds.iter().all(|f: &BSpline| f.eval_scalar(v) >= 0.0)
+            };
+            for w in cuts.windows(2) {
+                if w[1] > w[0] && inside(0.5 * (w[0] + w[1])) {
+                    let piece = [model.profile_param(j, w[0]), model.profile_param(j, w[1])];
+                    match pieces.last_mut() {
+                        Some(last) if piece_touches(last, &piece) => last[1] = piece[1],
+                        _ => pieces.push(piece),
+                    }
+                }
+            }
+        }
+        // The other finger at another convex corner: its cone holds the limits of both its
+        // segments, so the pair is force closure where the angles to both cones are within α.
+        let k = joint.segment as f64;
+        for other in &model.joints {
+            let u = other.segment as f64;
+            if other.segment != joint.segment
+                && matches!(other.cone, Cone::Convex { .. })
+                && slip_angle(model, k, u) <= alpha
+                && !pieces.iter().any(|p| p[0] <= u && u <= p[1])
+            {
+                pieces.push([u, u]);
+            }
+        }
+        pieces.sort_by(|x, y| x[0].total_cmp(&y[0]));
+        out.push(CornerLine {
+            joint: joint.segment,
+            pieces,
+        });
+    }
+    Ok(out)
+}
+
+/// Two intervals of the line meet when the second starts this close (relative) to the end
+/// of the first: consecutive segments' intervals share the joint between them.
+const SHARED_END: f64 = 1e-12;
+
+/// Whether two intervals in order meet (the second starts where the first ends).
+fn piece_touches(first: &[f64; 2], second: &[f64; 2]) -> bool {
+    second[0] <= first[1] + SHARED_END * (1.0 + first[1].abs())
+}

@@ -24,6 +24,10 @@ const SAME_POINT: f64 = 1e-7;
 /// Stretches of a line overlap when they share more than this (a cell's parameter being 1).
 const OVERLAP: f64 = 1e-9;
 
+/// How far inside its first edge a cell no piece reaches is tested (a cell being 1): off the
+/// joint's line, whose corner cone is not the segment's.
+const INSIDE_EDGE: f64 = 1e-9;
+
 /// Loops narrower than this (a cell's parameter being 1) lie below every tolerance the
 /// boundaries are traced to: the crumbs the subdivision leaves where all functions vanish
 /// (at a corner where the contacts meet, which no grasp near it can hold).
@@ -134,11 +138,15 @@ impl Border {
 }
 
 /// The regions of `model` from its cells' pieces and its corner lines.
+///
+/// A cell whose border no piece reaches is inside the set all round its border or outside
+/// all round: `holds` (force closure at a pair) decides which, just inside its first edge.
 pub(crate) fn regions(
     model: &Model<'_>,
     traced: &[((usize, usize), Traced)],
     lines: &[CornerLine],
     chord: f64,
+    holds: &dyn Fn([f64; 2]) -> bool,
 ) -> Vec<RawRegion> {
     let n = model.n();
     let mut loops: Vec<Loop> = Vec::new();
@@ -156,6 +164,18 @@ pub(crate) fn regions(
             if !used[first] {
                 loops.push(walk.trace(first, &mut used));
             }
+        }
+        if walk.open.is_empty() && *i != *j && holds([*i as f64 + 0.5, *j as f64 + INSIDE_EDGE]) {
+            // (A diagonal cell's border holds the diagonal, which is never inside.)
+            let mut stretches = Vec::new();
+            let mut pts = border.walk(0.0, 4.0 - INSIDE_EDGE, &mut stretches);
+            pts.insert(0, border.corners[0]);
+            pts.push(border.corners[0]);
+            loops.push(Loop {
+                pts,
+                stretches,
+                doubts: Doubts::none(),
+            });
         }
         for p in t.pieces.iter().filter(|p| p.ends.is_none()) {
             loops.push(Loop {
@@ -203,6 +223,17 @@ impl Walk<'_> {
     ) -> Option<(usize, Vec<[f64; 2]>)> {
         let end = self.last(i);
         let available = |j: usize| !used[j] || j == start;
+        // A piece starting where this one ends goes on from it, whatever the ends are called:
+        // at a point where the contacts meet every function vanishes, and the pieces leaving
+        // it are tagged by whichever function the cut met first.
+        let here = (0..self.open.len())
+            .filter(|&j| available(j) && j != i)
+            .map(|j| (j, dist(self.first(j), end)))
+            .filter(|&(_, d)| d <= self.tol)
+            .min_by(|x, y| x.1.total_cmp(&y.1));
+        if let Some((j, _)) = here {
+            return Some((j, Vec::new()));
+        }
         match self.ends(i)[1] {
             PieceEnd::Crossing(other) => {
                 let mine = self.open[i].function;

@@ -10,7 +10,7 @@ use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use crate::polyline::{bounds, signed_area};
-use crate::quality::min_friction;
+use crate::quality::{min_friction, slip_angle};
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::{Boundary, ParamCurve, Profile};
 use numeric::certificate::{Doubt, Doubts};
@@ -58,7 +58,16 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     let lines = corner_lines(&model, opts.friction, widths, &mut doubts)?;
     // (The chord tolerance of the cells, in the profile's parameter where a cell is a unit.)
     let chord = opts.settings.chord_tol.get() * std::f64::consts::SQRT_2;
-    let raw = regions(&model, &traced, &lines, chord);
+    let alpha = opts.friction.atan();
+    let holds = |p: [f64; 2]| {
+        let (a, _) = model.point_tangent(p[0]);
+        let (b, _) = model.point_tangent(p[1]);
+        let d = (b[0] - a[0]).hypot(b[1] - a[1]);
+        slip_angle(&model, p[0], p[1]) <= alpha
+            && widths[0].is_none_or(|w| d >= w)
+            && widths[1].is_none_or(|w| d <= w)
+    };
+    let raw = regions(&model, &traced, &lines, chord, &holds);
     let seeds = antipodal_seeds(boundary, profile)?;
     let proof = Positivity::new(&model, &cells);
     let mut found = Vec::with_capacity(raw.len());

@@ -10,6 +10,12 @@
 //! point of the edge normal on the patch with every hodograph direction has one sign), that
 //! function is negative on the whole patch (on `d / (t − s)`, for the divided diagonal cells),
 //! and the patch holds no grasp.
+//!
+//! Pairs far apart are excluded by their normals alone: a chord can lie within α of the
+//! inward normal at `s` and within α of the reversed inward normal at `t` only where those two
+//! directions are within `2α` of each other. Where the normals' directions over the patch
+//! (from the hodograph's control points) keep them farther apart, the patch holds no grasp,
+//! whatever the chord.
 
 use crate::model::Model;
 use numeric::Rect;
@@ -22,6 +28,10 @@ const LONGEST_ARC: f64 = 0.5;
 /// Each inner product must be this far below zero, relative to the lengths of its factors:
 /// the control points carry rounding of this order.
 const SIGN_MARGIN: f64 = 1e-12;
+
+/// Two directions must be this much farther apart than `2α` (radians) for the normals' test:
+/// the angles are computed from rounded control points.
+const ANGLE_MARGIN: f64 = 1e-9;
 
 /// One stretch of the arc between the contacts: a segment and a range of its form's parameter.
 type Stretch = (usize, f64, f64);
@@ -41,6 +51,29 @@ impl<'a> NearContacts<'a> {
     /// in their forms' parameters) is force closure, proven from the directions of the arc
     /// between the contacts.
     pub(crate) fn excluded(&self, i: usize, j: usize, bx: Rect) -> bool {
+        self.normals_apart(i, j, bx) || self.chords_beyond(i, j, bx)
+    }
+
+    /// Whether the inward normal at `s` and the reversed one at `t` stay more than `2α` apart
+    /// over `bx`.
+    fn normals_apart(&self, i: usize, j: usize, bx: Rect) -> bool {
+        let forms = &self.model.forms;
+        let (mut at_s, mut at_t) = (Vec::new(), Vec::new());
+        forms[i].hodograph_points(bx.t.lo, bx.t.hi, &mut at_s);
+        forms[j].hodograph_points(bx.r.lo, bx.r.hi, &mut at_t);
+        // The tangents' directions as arcs (centre, half-width); the normals turn by the same
+        // quarter turn at both ends, and reversing one adds a half turn: the gap between the
+        // normal at s and the reversed normal at t is π minus the gap between the tangents.
+        let (Some(ts), Some(tt)) = (direction_arc(&at_s), direction_arc(&at_t)) else {
+            return false;
+        };
+        let between = angle_between(ts.0, tt.0);
+        let gap = (std::f64::consts::PI - between) - ts.1 - tt.1;
+        gap > 2.0 * self.mu.atan() + ANGLE_MARGIN
+    }
+
+    /// Whether the chords between nearby contacts are proven beyond a cone edge.
+    fn chords_beyond(&self, i: usize, j: usize, bx: Rect) -> bool {
         let n = self.model.n();
         let dom = |k: usize| self.model.forms[k].domain();
         let share = |k: usize, lo: f64, hi: f64| {
@@ -105,4 +138,27 @@ impl<'a> NearContacts<'a> {
         });
         beyond
     }
+}
+
+/// The arc of directions of `vectors` (centre angle, half-width), when it is less than a half
+/// turn wide and no vector vanishes.
+fn direction_arc(vectors: &[[f64; 2]]) -> Option<(f64, f64)> {
+    let first = *vectors.first()?;
+    let base = first[1].atan2(first[0]);
+    let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    for v in vectors {
+        if v[0] == 0.0 && v[1] == 0.0 {
+            return None;
+        }
+        let a = (first[0] * v[1] - first[1] * v[0]).atan2(first[0] * v[0] + first[1] * v[1]);
+        lo = lo.min(a);
+        hi = hi.max(a);
+    }
+    (hi - lo < std::f64::consts::PI).then(|| (base + 0.5 * (lo + hi), 0.5 * (hi - lo)))
+}
+
+/// The angle between two directions, in `[0, π]`.
+fn angle_between(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
 }

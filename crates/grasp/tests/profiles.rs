@@ -1,0 +1,118 @@
+//! Profiles against the independent dense check: random star polygons with some corners
+//! rounded by arcs (corners convex and reflex, lines and arcs) and closed chains of cubic
+//! Béziers with corners. On a grid of pairs away from every reported boundary, force closure
+//! decided from the profile's points and tangents alone agrees with membership in the
+//! regions (the corner lines are measure zero: the grid never meets them).
+
+use curve::{ParamCurve, Profile};
+use grasp::{grasps, GraspOptions, Grasps};
+use proptest::prelude::*;
+use testkit::boundary_oracle::{off_polylines, winding};
+use testkit::profiles::{bezier_chain_profile, stepped_polygon};
+
+/// Grid points per side of the square of pairs.
+const GRID: usize = 80;
+
+/// The larger angle between a contact's inward normal and the chord to the other, at the
+/// profile's document parameters.
+fn slip_angle(p: &Profile, s: f64, t: f64) -> f64 {
+    let (js, jt) = (p.jet(p.internal_param(s)), p.jet(p.internal_param(t)));
+    let o = p.orientation();
+    let d = [jt.p.x - js.p.x, jt.p.y - js.p.y];
+    let angle = |tan: [f64; 2], d: [f64; 2]| {
+        let n = [-o * tan[1], o * tan[0]];
+        (tan[0] * d[0] + tan[1] * d[1])
+            .abs()
+            .atan2(n[0] * d[0] + n[1] * d[1])
+    };
+    angle([js.d1.x, js.d1.y], d).max(angle([jt.d1.x, jt.d1.y], [-d[0], -d[1]]))
+}
+
+fn held(g: &Grasps, p: [f64; 2]) -> bool {
+    g.regions.iter().any(|r| {
+        let parts: Vec<&Vec<[f64; 2]>> = if r.parts.is_empty() {
+            vec![&r.boundary]
+        } else {
+            r.parts.iter().collect()
+        };
+        parts.iter().any(|part| winding(part, p) != 0)
+            && !r.holes.iter().any(|h| winding(h, p) != 0)
+    })
+}
+
+fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
+    let opts = GraspOptions::friction(mu);
+    let g = grasps(p, &opts).map_err(|e| TestCaseError::fail(format!("{e}")))?;
+    prop_assert!(g.complete);
+    let (a, b) = p.document_domain();
+    let n = p.segments().len() as f64;
+    // The chord tolerance is per cell (a pair of segments): a few of them, in the document's
+    // parameter.
+    let margin = 4.0 * opts.settings.chord_tol.get() * std::f64::consts::SQRT_2 * (b - a) / n;
+    let lines: Vec<&[[f64; 2]]> = g
+        .regions
+        .iter()
+        .flat_map(|r| {
+            std::iter::once(r.boundary.as_slice())
+                .chain(r.parts.iter().map(Vec::as_slice))
+                .chain(r.holes.iter().map(Vec::as_slice))
+        })
+        .collect();
+    for i in 0..GRID {
+        for j in i + 1..GRID {
+            let s = a + (b - a) * (i as f64 + 0.31) / GRID as f64;
+            let t = a + (b - a) * (j as f64 + 0.37) / GRID as f64;
+            if off_polylines([s, t], lines.iter().copied()) <= margin {
+                continue;
+            }
+            let fc = slip_angle(p, s, t) <= mu.atan();
+            prop_assert_eq!(
+                fc,
+                held(&g, [s, t]),
+                "pair ({}, {}), slip {}",
+                s,
+                t,
+                slip_angle(p, s, t)
+            );
+        }
+    }
+    for r in &g.regions {
+        prop_assert!(r.certified || !g.doubts.is_empty());
+        prop_assert!(
+            r.best.min_friction <= mu * (1.0 + 1e-9) + 1e-12,
+            "best {:?}",
+            r.best
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(24)))]
+
+    /// Star polygons of 3 to 7 vertices, some corners rounded.
+    #[test]
+    fn filleted_polygons_match_the_dense_check(
+        steps in prop::collection::vec(0.5..1.5f64, 3..=7),
+        radii in prop::collection::vec(0.5..1.0f64, 7),
+        round in prop::collection::vec(-1.0..1.0f64, 7),
+        mu in 0.05..1.0f64,
+    ) {
+        let Some(segments) = stepped_polygon(&steps, &radii, &round) else { return Ok(()) };
+        let p = Profile::new(segments, Some(true)).map_err(|e| TestCaseError::reject(format!("{e}")))?;
+        check(&p, mu)?;
+    }
+
+    /// Closed chains of 3 to 6 cubic Béziers, some joints corners.
+    #[test]
+    fn bezier_chains_match_the_dense_check(
+        radii in prop::collection::vec(0.6..1.0f64, 3..=6),
+        wobble in prop::collection::vec((-0.2..0.2f64, -0.2..0.2f64), 6),
+        smooth in prop::collection::vec(any::<bool>(), 6),
+        mu in 0.05..1.0f64,
+    ) {
+        let n = radii.len();
+        let Some(p) = bezier_chain_profile(&radii, &wobble[..n], &smooth[..n], 0, false) else { return Ok(()) };
+        check(&p, mu)?;
+    }
+}

@@ -154,7 +154,7 @@ fn direction_arc(vectors: &[[f64; 2]]) -> Option<(f64, f64)> {
         lo = lo.min(a);
         hi = hi.max(a);
     }
-    (hi - lo < std::f64::consts::PI).then(|| (base + 0.5 * (lo + hi), 0.5 * (hi - lo)))
+    (hi - lo < std::f64::consts::PI).then_some((base + 0.5 * (lo + hi), 0.5 * (hi - lo)))
 }
 
 /// The angle between two directions, in `[0, π]`.

@@ -246,6 +246,54 @@ impl TensorBSpline {
 }
 
 impl BezierPatch {
+    /// The same polynomial on `[t0, t1] × [r0, r1]`, a box inside the patch's (beyond it the
+    /// extrapolation's rounding grows with the distance), by de Casteljau subdivision along
+    /// each direction.
+    ///
+    /// ```
+    /// use bspline::tensor::BezierPatch;
+    /// // F(t, r) = t r on [0, 1]²: on [0.5, 1] × [0, 0.5] its corner values are 0, 0.25, 0, 0.5.
+    /// let p = BezierPatch { t0: 0.0, t1: 1.0, r0: 0.0, r1: 1.0, deg_t: 1, deg_r: 1,
+    ///     coefs: vec![0.0, 0.0, 0.0, 1.0] };
+    /// let q = p.restrict([0.5, 1.0], [0.0, 0.5]);
+    /// assert_eq!(q.coefs, vec![0.0, 0.25, 0.0, 0.5]);
+    /// ```
+    pub fn restrict(&self, t: [f64; 2], r: [f64; 2]) -> BezierPatch {
+        let (pt, pr) = (self.deg_t, self.deg_r);
+        let (wt, wr) = (self.t1 - self.t0, self.r1 - self.r0);
+        let local = |x: f64, a: f64, w: f64| if w > 0.0 { (x - a) / w } else { 0.0 };
+        let (ta, tb) = (local(t[0], self.t0, wt), local(t[1], self.t0, wt));
+        let (ra, rb) = (local(r[0], self.r0, wr), local(r[1], self.r0, wr));
+        let mut c = self.coefs.clone();
+        // Along r: each row (fixed t index) restricted to [ra, rb].
+        let mut row = vec![0.0; pr + 1];
+        for i in 0..=pt {
+            row.copy_from_slice(&c[i * (pr + 1)..(i + 1) * (pr + 1)]);
+            restrict_1d(&mut row, ra, rb);
+            c[i * (pr + 1)..(i + 1) * (pr + 1)].copy_from_slice(&row);
+        }
+        // Along t: each column.
+        let mut col = vec![0.0; pt + 1];
+        for j in 0..=pr {
+            for i in 0..=pt {
+                col[i] = c[i * (pr + 1) + j];
+            }
+            restrict_1d(&mut col, ta, tb);
+            for i in 0..=pt {
+                c[i * (pr + 1) + j] = col[i];
+            }
+        }
+        BezierPatch {
+            t0: t[0],
+            t1: t[1],
+            r0: r[0],
+            r1: r[1],
+            deg_t: pt,
+            deg_r: pr,
+            coefs: c,
+        }
+    }
+
     /// The patch as a clamped tensor-product B-spline on its box.
     pub fn to_tensor(&self) -> TensorBSpline {
         let mut kt = vec![self.t0; self.deg_t + 1];
@@ -258,6 +306,32 @@ impl BezierPatch {
             knots_t: kt,
             knots_r: kr,
             coefs: self.coefs.clone(),
+        }
+    }
+}
+
+/// The Bernstein coefficients `b` of a polynomial on `[0, 1]` replaced by those on `[a, z]`:
+/// the part left of `z` by one de Casteljau subdivision, then the part of that right of `a`
+/// (at `a / z` of it) by another.
+fn restrict_1d(b: &mut [f64], a: f64, z: f64) {
+    let n = b.len() - 1;
+    if z == 0.0 {
+        // Everything at the parameter 0: the first coefficient, n + 1 times.
+        let first = b[0];
+        b.iter_mut().for_each(|x| *x = first);
+        return;
+    }
+    // Left part at z: b_k ← the first point of level k (computed in place from the right).
+    for level in 1..=n {
+        for m in (level..=n).rev() {
+            b[m] = (1.0 - z) * b[m - 1] + z * b[m];
+        }
+    }
+    // Right part at x = a / z: b_k ← the last point of level n − k (in place from the left).
+    let x = a / z;
+    for level in 1..=n {
+        for m in 0..=n - level {
+            b[m] = (1.0 - x) * b[m] + x * b[m + 1];
         }
     }
 }

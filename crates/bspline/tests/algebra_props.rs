@@ -289,3 +289,49 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// A Bézier patch restricted to a box inside its own is the same polynomial there: its
+    /// corner and inner values match the patch's, evaluated from the Bernstein basis.
+    #[test]
+    fn bezier_patch_restriction_keeps_the_polynomial(
+        (pt, pr) in (0usize..=6, 0usize..=6),
+        coefs in proptest::collection::vec(-5.0f64..5.0, 49),
+        (t0, tw) in (-2.0f64..2.0, 0.1f64..3.0),
+        (r0, rw) in (-2.0f64..2.0, 0.1f64..3.0),
+        cut in ((0.0f64..0.95, 0.0f64..0.95), (0.0f64..0.95, 0.0f64..0.95)),
+    ) {
+        let p = bspline::tensor::BezierPatch {
+            t0, t1: t0 + tw, r0, r1: r0 + rw, deg_t: pt, deg_r: pr,
+            coefs: coefs[..(pt + 1) * (pr + 1)].to_vec(),
+        };
+        let (a, b) = (cut.0 .0.min(cut.0 .1), cut.0 .0.max(cut.0 .1) + 0.05);
+        let (c, d) = (cut.1 .0.min(cut.1 .1), cut.1 .0.max(cut.1 .1) + 0.05);
+        let t = [t0 + a * tw, t0 + b * tw];
+        let r = [r0 + c * rw, r0 + d * rw];
+        let q = p.restrict(t, r);
+        // Both as polynomials, evaluated from their Bernstein coefficients.
+        let value = |bp: &bspline::tensor::BezierPatch, x: f64, y: f64| {
+            let bern = |n: usize, u: f64, k: usize| {
+                let binom = (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64);
+                binom * u.powi(k as i32) * (1.0 - u).powi((n - k) as i32)
+            };
+            let (u, v) = ((x - bp.t0) / (bp.t1 - bp.t0), (y - bp.r0) / (bp.r1 - bp.r0));
+            let mut s = 0.0;
+            for i in 0..=bp.deg_t {
+                for j in 0..=bp.deg_r {
+                    s += bp.coefs[i * (bp.deg_r + 1) + j] * bern(bp.deg_t, u, i) * bern(bp.deg_r, v, j);
+                }
+            }
+            s
+        };
+        let scale = coefs.iter().fold(1.0f64, |m, x| m.max(x.abs())) * 3f64.powi((pt + pr) as i32);
+        for (x, y) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0), (0.3, 0.7), (0.61, 0.2)] {
+            let (px, py) = (t[0] + x * (t[1] - t[0]), r[0] + y * (r[1] - r[0]));
+            let (want, got) = (value(&p, px, py), value(&q, px, py));
+            prop_assert!(close(got, want, scale, TOL), "at ({px}, {py}): {got} vs {want}");
+        }
+    }
+}

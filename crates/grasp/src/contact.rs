@@ -4,38 +4,46 @@
 
 use crate::cells::Cell;
 use crate::model::{Cone, Model};
-use bspline::tensor::TensorBSpline;
+use bspline::tensor::BezierPatch;
 use numeric::rounding::UNIT_ROUNDOFF;
 
 /// Halvings of a rectangle whose coefficients do not all show the sign, before it is given
 /// up as not proven.
-const PROOF_DEPTH: usize = 3;
+const PROOF_DEPTH: usize = 2;
 
 /// Bisection steps for the size of the square, and for each side pushed out.
-const SIZE_STEPS: usize = 24;
-const SIDE_STEPS: usize = 16;
+const SIZE_STEPS: usize = 16;
+const SIDE_STEPS: usize = 10;
+
+/// One function's Bézier patches.
+type Patches = Vec<BezierPatch>;
 
 /// The proof that every function is positive on rectangles of the profile's parameter.
 pub(crate) struct Positivity<'a> {
     model: &'a Model<'a>,
-    cells: &'a [Cell],
-    /// Per cell and function, the rounding allowance of its restricted coefficients.
-    err: Vec<Vec<f64>>,
+    /// Per cell and function, its patches and the rounding allowance of their restricted
+    /// coefficients.
+    cells: Vec<Vec<(Patches, f64)>>,
 }
 
 impl<'a> Positivity<'a> {
-    pub(crate) fn new(model: &'a Model<'a>, cells: &'a [Cell]) -> Self {
-        let err = cells
+    pub(crate) fn new(model: &'a Model<'a>, cells: &[Cell]) -> Self {
+        let cells = cells
             .iter()
             .map(|c| {
                 c.fs.iter()
                     .map(|f| {
-                        64.0 * (f.deg_t() + f.deg_r() + 2) as f64 * UNIT_ROUNDOFF * f.max_abs_coef()
+                        let err = 64.0
+                            * (f.deg_t() + f.deg_r() + 2) as f64
+                            * UNIT_ROUNDOFF
+                            * f.max_abs_coef();
+                        let patches = f.bezier_patches();
+                        (patches, err)
                     })
                     .collect()
             })
             .collect();
-        Self { model, cells, err }
+        Self { model, cells }
     }
 
     /// Whether every pair of `[s0, s1] × [t0, t1]` (profile parameters, read modulo `n`) is
@@ -59,11 +67,14 @@ impl<'a> Positivity<'a> {
                     (j, i, tj, si)
                 };
                 let k = self.cell_index(i, j);
-                self.cells[k]
-                    .fs
-                    .iter()
-                    .zip(&self.err[k])
-                    .all(|(f, &err)| positive(f, si, tj, err, PROOF_DEPTH))
+                self.cells[k].iter().all(|(patches, err)| {
+                    patches.iter().all(|f| {
+                        // The rectangle's part on this patch, if any.
+                        let s = [si[0].max(f.t0), si[1].min(f.t1)];
+                        let t = [tj[0].max(f.r0), tj[1].min(f.r1)];
+                        !(s[0] < s[1] && t[0] < t[1]) || positive(f, s, t, *err, PROOF_DEPTH)
+                    })
+                })
             })
         })
     }
@@ -102,19 +113,14 @@ impl<'a> Positivity<'a> {
 }
 
 /// Whether `f` is proven positive on `s × t`, halving the longer side up to `depth` times.
-fn positive(f: &TensorBSpline, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -> bool {
-    let Ok(g) = f.restrict(s[0], s[1], t[0], t[1]) else {
-        return false;
-    };
-    let (lo, _) = g.coef_range();
-    if lo > err {
+fn positive(f: &BezierPatch, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -> bool {
+    let g = f.restrict(s, t);
+    if g.coefs.iter().all(|&c| c > err) {
         return true;
     }
     // The corners are values of f: a negative one ends the search.
-    let n = g.coefs().len();
-    let corner_negative = [0, g.n_r() - 1, n - g.n_r(), n - 1]
-        .iter()
-        .any(|&i| g.coefs()[i] < -err);
+    let (w, n) = (g.deg_r + 1, g.coefs.len());
+    let corner_negative = [0, w - 1, n - w, n - 1].iter().any(|&i| g.coefs[i] < -err);
     if depth == 0 || corner_negative {
         return false;
     }

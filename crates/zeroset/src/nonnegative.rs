@@ -23,6 +23,8 @@ use numeric::rounding::UNIT_ROUNDOFF;
 use numeric::tolerance::Size;
 use numeric::Rect;
 use serde::{Deserialize, Serialize};
+use std::cell::RefCell;
+use std::collections::HashMap;
 
 /// How close (relative to the domain) an end must lie to the domain's border to end there.
 const ON_BORDER: f64 = 1e-9;
@@ -152,17 +154,23 @@ pub fn nonnegative_set(
         complete: true,
         ..NonNegativeSet::default()
     };
+    let live: RefCell<HashMap<[u64; 4], bool>> = RefCell::new(HashMap::new());
     for (k, store) in stores.iter().enumerate() {
+        // Whether the set may meet a patch is the same question for every function's trace
+        // (a function negative there has no zero there either), and the traces split their
+        // cells alike: each answer is kept for the traces after.
         let keep = |p: &Patch| {
             if opts.pairs && p.t0 >= p.r1 {
                 return false;
             }
+            let key = [p.t0, p.t1, p.r0, p.r1].map(f64::to_bits);
+            if let Some(&known) = live.borrow().get(&key) {
+                return known;
+            }
             let bx = p.rect();
-            !excluded(bx)
-                && !stores
-                    .iter()
-                    .enumerate()
-                    .any(|(j, s)| j != k && s.negative_on(bx))
+            let may = !stores.iter().any(|s| s.negative_on(bx)) && !excluded(bx);
+            live.borrow_mut().insert(key, may);
+            may
         };
         // An arc stands where every other function keeps one sign on its patch, or meets
         // this one at most once there (a regular interval Jacobian), or vanishes along it

@@ -3,6 +3,7 @@
 mod batch;
 mod commands;
 mod demo;
+mod demo_grasps;
 mod demo_medial;
 mod demo_profiles;
 mod grasps;

@@ -227,7 +227,7 @@ pub(super) fn text(curve: &Curve, found: &Grasps, stats: Option<&Stats>) -> Stri
                 );
             }
             None => {
-                let _ = writeln!(s, "       contact: none proven (the region is a point)");
+                let _ = writeln!(s, "       contact: none proven");
             }
         }
         let parts = if r.parts.is_empty() {

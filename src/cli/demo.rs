@@ -1,9 +1,12 @@
 //! `curvekit demo`: the built-in examples (embedded, so it runs from any directory): the shapes
 //! of Jia's papers and a few B-spline/NURBS curves (inflections, antipodal pairs), then the
-//! bisector figures of Elber & Kim, then part outlines with corners (`demo_profiles`).
+//! bisector figures of Elber & Kim, then part outlines with corners (`demo_profiles`), the
+//! medial axes (`demo_medial`) and the grasps of two smooth shapes (`demo_grasps`).
 
 use super::report::{antipodal_figure, bisector_figure, draw_curve, time_line};
-use super::{demo_medial, demo_profiles, print_out, timing, write_file, Common, Failure};
+use super::{
+    demo_grasps, demo_medial, demo_profiles, print_out, timing, write_file, Common, Failure,
+};
 use antipodal::Inflections;
 use curvekit::commands::CurveSummary;
 use curvekit::io::{parse_curve, Curve, DrawingFormat};
@@ -147,6 +150,7 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         .collect::<Result<Vec<_>, _>>()?;
     let profiles = demo_profiles::rows(out, common)?;
     let medial = demo_medial::rows(out, common)?;
+    let grasps = demo_grasps::rows(out, common)?;
     let stats = common.time.then(|| {
         timing::measure(|| {
             shapes
@@ -156,9 +160,24 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         })
     });
     let text = if common.json {
-        demo_json(&shapes, &bisectors, &profiles, &medial, stats.as_ref())
+        demo_json(
+            &shapes,
+            &bisectors,
+            &profiles,
+            &medial,
+            &grasps,
+            stats.as_ref(),
+        )
     } else {
-        table(&shapes, &bisectors, &profiles, &medial, out, stats.as_ref())
+        table(
+            &shapes,
+            &bisectors,
+            &profiles,
+            &medial,
+            &grasps,
+            out,
+            stats.as_ref(),
+        )
     };
     print_out(&text)?;
     // The demo shows the state of every example; one that fails is reported, not fatal.
@@ -166,6 +185,7 @@ pub(super) fn run(out: &Path, common: &Common) -> Result<(), Failure> {
         .into_iter()
         .chain(demo_profiles::errors(&profiles))
         .chain(demo_medial::errors(&medial))
+        .chain(demo_grasps::errors(&grasps))
     {
         eprintln!("curvekit: warning: demo example {e}");
     }
@@ -354,6 +374,7 @@ fn table(
     bisectors: &[BisectorRow],
     profiles: &[demo_profiles::ProfileRow],
     medial: &[demo_medial::MedialRow],
+    grasps: &[demo_grasps::GraspRow],
     out: &Path,
     stats: Option<&timing::Stats>,
 ) -> String {
@@ -401,10 +422,12 @@ fn table(
     }
     s.push_str(&demo_profiles::table(profiles));
     s.push_str(&demo_medial::table(medial));
+    s.push_str(&demo_grasps::table(grasps));
     for e in errors(shapes, bisectors)
         .into_iter()
         .chain(demo_profiles::errors(profiles))
         .chain(demo_medial::errors(medial))
+        .chain(demo_grasps::errors(grasps))
     {
         let _ = writeln!(s, "failed: {e}");
     }
@@ -420,6 +443,7 @@ fn demo_json(
     bisectors: &[BisectorRow],
     profiles: &[demo_profiles::ProfileRow],
     medial: &[demo_medial::MedialRow],
+    grasps: &[demo_grasps::GraspRow],
     stats: Option<&timing::Stats>,
 ) -> String {
     let err = |e: &String| json!({ "error": e });
@@ -450,11 +474,13 @@ fn demo_json(
         .collect();
     let profiles = demo_profiles::json(profiles);
     let medial = demo_medial::json(medial);
+    let grasps = demo_grasps::json(grasps);
     let mut doc = json!({
         "shapes": shapes,
         "bisectors": bisectors,
         "profiles": profiles,
         "medial": medial,
+        "grasps": grasps,
     });
     if let (Some(s), Some(map)) = (stats, doc.as_object_mut()) {
         map.insert("stats".into(), json!(s));

@@ -3,8 +3,10 @@
 mod batch;
 mod commands;
 mod demo;
+mod demo_grasps;
 mod demo_medial;
 mod demo_profiles;
+mod grasps;
 mod medial;
 mod offset;
 pub(crate) mod progress;
@@ -46,6 +48,27 @@ enum Command {
     Inflections {
         /// Curve file (JSON).
         curve: PathBuf,
+        #[command(flatten)]
+        common: Common,
+    },
+    /// Two-finger force-closure grasps of a closed curve with friction: the regions of pairs
+    /// of contacts, each with its contact stretches and its most robust grasp.
+    Grasps {
+        /// Curve file (JSON), or a drawing.
+        curve: PathBuf,
+        /// The Coulomb friction coefficient μ between finger and curve (> 0): the friction
+        /// cone's half-angle is atan μ.
+        #[arg(long, value_name = "MU", allow_hyphen_values = true)]
+        friction: f64,
+        /// The gripper's least opening: pairs of contacts closer than W are left out.
+        #[arg(long, value_name = "W", allow_hyphen_values = true)]
+        min_width: Option<f64>,
+        /// The gripper's greatest opening: pairs of contacts farther apart than W are left out.
+        #[arg(long, value_name = "W", allow_hyphen_values = true)]
+        max_width: Option<f64>,
+        /// Chord tolerance of the regions' boundaries, relative to the parameter domain.
+        #[arg(long, value_name = "C", default_value_t = numeric::tolerance::DEFAULT_CHORD_TOL, value_parser = parse_tol, allow_hyphen_values = true)]
+        chord_tol: f64,
         #[command(flatten)]
         common: Common,
     },
@@ -418,6 +441,23 @@ pub(crate) fn run(cli: Cli) -> Result<(), Failure> {
             curve2,
             common,
         } => commands::run_tangents(&curve1, &curve2, &common),
+        Command::Grasps {
+            curve,
+            friction,
+            min_width,
+            max_width,
+            chord_tol,
+            common,
+        } => grasps::run(
+            &curve,
+            &grasps::GraspArgs {
+                friction,
+                min_width,
+                max_width,
+                chord_tol,
+            },
+            &common,
+        ),
         Command::Bisector {
             curve1,
             curve2,

@@ -129,7 +129,7 @@ pub(crate) fn time_line(st: &Stats) -> String {
 const PLAIN: std::ops::Range<f64> = 1e-4..1e7;
 
 /// A number for text reports: shortest round-trip form, scientific when tiny or huge.
-fn n(x: f64) -> String {
+pub(super) fn n(x: f64) -> String {
     if x != 0.0 && !PLAIN.contains(&x.abs()) {
         format!("{x:e}")
     } else {

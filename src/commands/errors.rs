@@ -32,6 +32,10 @@ pub enum CommandError {
     /// The V-carving could not be computed: cancelled (exit 1).
     #[error("vcarve: {0}")]
     Vcarve(#[source] offset::Error),
+    /// The grasps could not be computed (exit 1; the curves the command does not take are
+    /// [`CommandError::Input`], its options out of range [`CommandError::Usage`]).
+    #[error("grasps: {0}")]
+    Grasp(#[source] grasp::Error),
     /// A result the format cannot hold (exit 1).
     #[error(transparent)]
     Export(#[from] crate::export::ExportError),
@@ -105,6 +109,7 @@ impl CommandError {
             | CommandError::Medial(_)
             | CommandError::Offset(_)
             | CommandError::Vcarve(_)
+            | CommandError::Grasp(_)
             | CommandError::Export(_)
             | CommandError::Io { .. }
             | CommandError::Threads { .. }
@@ -353,6 +358,14 @@ mod tests {
             (
                 vcarve_error(offset::Error::Cancelled),
                 "vcarve: cancelled",
+                1,
+            ),
+            (
+                CommandError::Grasp(grasp::Error::ZeroSet(zeroset::Error::NotPlanar {
+                    which: 1,
+                    dim: 3,
+                })),
+                "grasps: curve 1 has dimension 3; bisectors need planar curves",
                 1,
             ),
             (

@@ -21,6 +21,7 @@
 mod documents;
 mod errors;
 mod found;
+mod grasps;
 mod params;
 mod parts;
 mod prepared;
@@ -32,6 +33,7 @@ pub use documents::{json_document, json_document_of, CurveSummary, DrawingSummar
 use errors::{antipodal_error, refuse};
 pub use errors::{CommandError, FailureKind, UsageError};
 pub use found::{AntipodalFound, BisectorFound, Found, InflectionsFound, TangentsFound};
+pub use grasps::{grasps, validate_grasp_options};
 /// The verdict every result answers (`certified()`, `reason()`), and the doubts it reads.
 pub use numeric::certificate::{Doubt, Doubts, Verdict};
 pub use prepared::{antipodal, inflections, PreparedCurve};

@@ -30,6 +30,12 @@ const LABEL_HEIGHT: f64 = 15.0;
 /// cover its edges).
 const MANY_DOTS: usize = 48;
 
+/// Pixels of a stretch picked out on a curve: thick enough to read over the curve's 2.
+const STRETCH_WIDTH: f64 = 5.0;
+
+/// Opacity of a filled area: what it covers shows through.
+const AREA_OPACITY: f64 = 0.45;
+
 /// Least size of a panel's content (user units): a panel of one point, of size 0, still gets
 /// a view box of nonzero width and height (else its pixel size is 0 / 0).
 const MIN_SIZE: f64 = 1e-9;
@@ -40,6 +46,11 @@ enum Item {
         color: Cow<'static, str>,
         width: f64,
         closed: bool,
+    },
+    /// A closed polygon filled with a colour, see-through, outlined in it.
+    Area {
+        points: Vec<[f64; 2]>,
+        color: Cow<'static, str>,
     },
     Dot {
         at: [f64; 2],
@@ -134,6 +145,26 @@ impl Figure {
             color: color.into(),
             width: 1.4,
             closed: false,
+        });
+    }
+
+    /// A stretch of a curve picked out in a colour (`#rrggbb`), thicker than the curve under
+    /// it (a grasp's contact stretch).
+    pub fn stretch(&mut self, points: Vec<[f64; 2]>, color: &'static str) {
+        self.items.push(Item::Polyline {
+            points,
+            color: color.into(),
+            width: STRETCH_WIDTH,
+            closed: false,
+        });
+    }
+
+    /// A closed polygon filled with a colour (`#rrggbb`), see-through so that what it covers
+    /// shows (a region of a parameter square).
+    pub fn area(&mut self, points: Vec<[f64; 2]>, color: &'static str) {
+        self.items.push(Item::Area {
+            points,
+            color: color.into(),
         });
     }
 
@@ -299,6 +330,15 @@ impl Figure {
                         num(width * upx)
                     );
                 }
+                Item::Area { points, color } => {
+                    let pts: Vec<String> = points.iter().map(|p| pair(*p)).collect();
+                    let _ = writeln!(
+                        s,
+                        r#"<polygon points="{}" fill="{color}" fill-opacity="{AREA_OPACITY}" stroke="{color}" stroke-width="{}" stroke-linejoin="round"/>"#,
+                        pts.join(" "),
+                        num(0.6 * upx)
+                    );
+                }
                 Item::Dot { at, color, scale } => {
                     let _ = writeln!(
                         s,
@@ -370,7 +410,9 @@ impl Figure {
         };
         for item in &self.items {
             match item {
-                Item::Polyline { points, .. } => points.iter().for_each(&mut add),
+                Item::Polyline { points, .. } | Item::Area { points, .. } => {
+                    points.iter().for_each(&mut add)
+                }
                 Item::Dot { at, .. } | Item::Text { at, .. } | Item::Corner { at } => add(at),
                 Item::Segment { from, to, .. } => {
                     add(from);

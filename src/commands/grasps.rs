@@ -2,6 +2,7 @@
 //! coefficient, in the curve's own parameter.
 
 use super::errors::{antipodal_error, number, refuse};
+use super::prepared::spline_with_corners;
 use super::{as_profile, one_curve, CommandError, FailureKind, UsageError};
 use crate::io::{Curve, CurveKind};
 use curve::Boundary;
@@ -45,16 +46,22 @@ pub fn validate_grasp_options(opts: &GraspOptions) -> Result<(), CommandError> {
 
 /// The grasps of a curve read, with `opts`: a spline or an analytic shape as its exact curve,
 /// a line or an arc and a profile as a profile. A region is refused (the command takes one
-/// curve); an open curve, one with corners or of several segments, and one known by
-/// evaluation only are refused as bad input naming the file; a drawing's unread outline makes
+/// curve); an open curve and one known by evaluation only are refused as bad input naming
+/// the file; a drawing's unread outline makes
 /// the result not certified.
 pub fn grasps(curve: &Curve, opts: &GraspOptions) -> Result<Grasps, CommandError> {
     validate_grasp_options(opts)?;
     one_curve(&[curve], "grasps")?;
+    // A spline with corners (degree 1, a full knot where it turns, a corner at its seam) is
+    // the profile of its pieces, its corners' cones taking part.
+    let cornered = spline_with_corners(curve)?;
     let profile;
-    let boundary: Boundary<'_> = match &curve.shape {
-        CurveKind::Spline(_) | CurveKind::Analytic(_) => Boundary::Curve(curve.plane_curve()),
-        CurveKind::Profile(p) => Boundary::Profile(p),
+    let boundary: Boundary<'_> = match (&curve.shape, &cornered) {
+        (_, Some(pieces)) => Boundary::Profile(pieces),
+        (CurveKind::Spline(_) | CurveKind::Analytic(_), None) => {
+            Boundary::Curve(curve.plane_curve())
+        }
+        (CurveKind::Profile(p), None) => Boundary::Profile(p),
         _ => {
             profile = as_profile(curve, "grasps")?;
             Boundary::Profile(&profile)
@@ -77,8 +84,8 @@ fn shape_field(curve: &Curve) -> &'static str {
 }
 
 /// A refusal of the grasp crate as the tool reports it: an option out of range is a usage
-/// error; a curve the command does not take (open, with corners or several segments, known
-/// by evaluation only, refused by the antipodal search) is bad input naming the file; the
+/// error; a curve the command does not take (open, known by evaluation only, refused by the
+/// antipodal search) is bad input naming the file; the
 /// rest is the computation's failure.
 fn grasp_error(e: grasp::Error, curve: &Curve) -> CommandError {
     use grasp::Error as E;
@@ -105,7 +112,6 @@ fn grasp_error(e: grasp::Error, curve: &Curve) -> CommandError {
             "grasps need the curve's exact form (a spline or an analytic shape); this one is \
              known by evaluation only",
         ),
-        E::Segments { .. } => refuse(curve, shape_field(curve), &e.to_string()),
         E::Antipodal(inner) => {
             let mapped = antipodal_error(inner.clone(), &[curve]);
             match mapped.kind() {

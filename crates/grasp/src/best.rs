@@ -5,7 +5,7 @@ use crate::assemble::RawRegion;
 use crate::model::Model;
 use crate::polyline::bounds;
 use crate::quality::slip_angle;
-use crate::region_set::holds;
+use crate::region_set::{holds, in_triangle};
 
 /// Samples across each part's box when no antipodal pair lies in the region.
 const SAMPLES_ACROSS: usize = 16;
@@ -105,7 +105,8 @@ pub(crate) fn most_robust(
             ] {
                 let y = [x[0] + ds * step, x[1] + dt * step];
                 let ay = angle(y);
-                if ay < ax {
+                // (Staying in the region: its other conditions, the widths, hold there.)
+                if ay < ax && holds(region, n, y[0], y[1]) {
                     (x, ax) = (y, ay);
                     moved = true;
                     break;
@@ -116,5 +117,5 @@ pub(crate) fn most_robust(
             }
         }
     }
-    (x, ax <= ANTIPODAL_ANGLE)
+    (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
 }

@@ -135,14 +135,14 @@ fn positive(f: &BezierPatch, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -
 
 /// The independent contact region around `center` (a force-closure pair, profile parameters):
 /// the largest square of equal arc lengths around it that is proven, then each side pushed
-/// out as far as proven. `None` when not even a tiny square is proven (a pair on the region's
-/// boundary, or a region that is a line or a point).
+/// out as far as proven; with the square's half arc length. `None` when not even a tiny
+/// square is proven (a pair on the region's boundary, or a region that is a line or a point).
 pub(crate) fn around(
     model: &Model<'_>,
     proof: &Positivity<'_>,
     center: [f64; 2],
     reach: [f64; 2],
-) -> Option<([f64; 2], [f64; 2])> {
+) -> Option<([f64; 2], [f64; 2], f64)> {
     // Arc length per unit of the profile's parameter.
     let speed = |u: f64| {
         let (i, _) = model.locate(u);
@@ -208,5 +208,5 @@ pub(crate) fn around(
             _ => t[1] += good,
         }
     }
-    Some((s, t))
+    Some((s, t, lo))
 }

@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
-use crate::polyline::{bounds, signed_area};
+use crate::polyline::{bounds, inside, off_segment, signed_area};
 use crate::quality::{min_friction, slip_angle};
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::{Boundary, ParamCurve, Profile};
@@ -84,11 +84,14 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
             .fold([0.0f64; 2], |m, (lo, hi)| {
                 [m[0].max(hi[0] - lo[0]), m[1].max(hi[1] - lo[1])]
             });
-        let contact = if r.parts.is_empty() {
-            None
-        } else {
-            around(&model, &proof, center, reach)
-        };
+        // The largest square is sought round the best grasp and round the points of the
+        // region deepest inside it (the best grasp may lie on a width limit).
+        let contact = deepest(r, CONTACT_CENTERS)
+            .into_iter()
+            .chain([center])
+            .filter_map(|c| around(&model, &proof, c, reach))
+            .max_by(|a, b| a.2.total_cmp(&b.2))
+            .map(|(s, t, _)| (s, t));
         let certified = r.doubts.is_empty();
         doubts.join(region_doubts);
         found.push(output(&model, r, center, contact, certified));
@@ -101,6 +104,39 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         doubts,
         complete,
     })
+}
+
+/// Centres tried for a region's contact region besides its best grasp.
+const CONTACT_CENTERS: usize = 4;
+
+/// Samples across a part's box for its deepest points.
+const DEPTH_SAMPLES: usize = 12;
+
+/// The `count` sampled points of `r`'s parts farthest from their boundaries.
+fn deepest(r: &RawRegion, count: usize) -> Vec<[f64; 2]> {
+    let mut found: Vec<([f64; 2], f64)> = Vec::new();
+    for part in &r.parts {
+        let (lo, hi) = bounds(part);
+        for i in 0..DEPTH_SAMPLES {
+            for j in 0..DEPTH_SAMPLES {
+                let at = |k: usize, d: usize| {
+                    lo[d] + (k as f64 + 0.5) / DEPTH_SAMPLES as f64 * (hi[d] - lo[d])
+                };
+                let p = [at(i, 0), at(j, 1)];
+                if inside(part, p) && !r.holes.iter().any(|h| inside(h, p)) {
+                    let depth = r
+                        .parts
+                        .iter()
+                        .chain(&r.holes)
+                        .flat_map(|l| l.windows(2).map(|w| off_segment(p, w[0], w[1])))
+                        .fold(f64::INFINITY, f64::min);
+                    found.push((p, depth));
+                }
+            }
+        }
+    }
+    found.sort_by(|a, b| b.1.total_cmp(&a.1));
+    found.into_iter().take(count).map(|(p, _)| p).collect()
 }
 
 /// The antipodal pairs and the middles of the families, in the profile's parameter.
@@ -134,9 +170,16 @@ fn output(
     certified: bool,
 ) -> GraspRegion {
     let polyline = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> {
-        pts.iter()
+        let mut out: Vec<[f64; 2]> = pts
+            .iter()
             .map(|p| [model.document_param(p[0]), model.document_param(p[1])])
-            .collect()
+            .collect();
+        // (Pieces meet end to end: their shared vertices once. A single pair stays two.)
+        out.dedup();
+        if out.len() == 1 {
+            out.push(out[0]);
+        }
+        out
     };
     let mut parts: Vec<Vec<[f64; 2]>> = r.parts.iter().map(|p| polyline(p)).collect();
     parts.sort_by(|x, y| signed_area(y).total_cmp(&signed_area(x)));

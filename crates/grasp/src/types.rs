@@ -17,7 +17,9 @@ pub struct Grasps {
     pub max_width: Option<f64>,
     /// The regions, each a connected set of pairs `(s, t)`.
     pub regions: Vec<GraspRegion>,
-    /// The doubts met (none: every region's boundary follows from certified zero sets).
+    /// The doubts met (none: every region's boundary follows from certified zero sets, and
+    /// each best grasp is an antipodal pair). Read with
+    /// [`Verdict`](numeric::certificate::Verdict): `certified()` and `reason()`.
     #[serde(flatten)]
     pub doubts: Doubts,
     /// False when a work limit was hit (regions may then be missing).
@@ -80,3 +82,5 @@ pub struct BestGrasp {
     /// antipodal pair).
     pub min_friction: f64,
 }
+
+numeric::impl_verdict!(Grasps);

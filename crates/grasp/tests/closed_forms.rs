@@ -2,6 +2,7 @@
 //! band `|t − s − π| ≤ 2 atan μ`, the ellipse's two regions round its axes with their
 //! crossings of the line `t = s + π` where `(a² − b²)|sin 2s| / (2ab) = μ`, and (once profiles
 //! with corners are supported) the rectangle's families of opposite sides widened by the cone.
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 mod common;
 

@@ -8,17 +8,24 @@
 //! where the curvature jumps, such minima are common), and below μ it makes a region of its
 //! own, which vanishes as μ → 0 but not always by 1e-3. Such a region is checked to be one:
 //! its best grasp needs friction (no pair hides in it) and is a local minimum by the oracle.
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 mod common;
 
 use common::{chord, holders, on_torus, outlines, Oracle, TestCurve};
 use curve::ParamCurve;
 use grasp::{grasps, GraspOptions};
+use numeric::tolerance::ChordTol;
 use proptest::prelude::*;
 use testkit::stars::star_curve;
 
 /// The friction of the limit.
 const MU: f64 = 1e-3;
+
+/// The chord tolerance (relative to the square's diagonal): the regions at μ = 1e-3 are
+/// about μ wide, far below the default 1e-3 of a domain of several units, which would hide
+/// any reach of the order of μ.
+const CHORD_TOL: f64 = 1e-6;
 
 /// Step of the central differences of the contact angles (their second derivatives are of
 /// the curve's size: the error is of order the step squared, far below the rates).
@@ -26,8 +33,9 @@ const DIFF_STEP: f64 = 1e-6;
 
 /// How far beyond the linearised parallelogram `|J δ|∞ ≤ α` a region may reach: at α = 1e-3
 /// the angles' second-order terms shift its edges by a share of order α times the
-/// conditioning of J; twice the linear reach is ample for curves whose J is not singular.
-const REACH_FACTOR: f64 = 2.0;
+/// conditioning of J (up to 1.5 % seen on these curves); a quarter is ample for curves whose
+/// J is not singular.
+const REACH_FACTOR: f64 = 1.25;
 
 /// The friction an antipodal pair needs, at most: zero up to the rounding of the angles.
 const PAIR_FRICTION: f64 = 1e-9;
@@ -50,11 +58,12 @@ proptest! {
         // (Generic curves: families, which a random star has with probability 0, are left
         // to the circle's closed form.)
         prop_assume!(found.families.is_empty());
-        let opts = GraspOptions::friction(MU);
+        let mut opts = GraspOptions::friction(MU);
+        opts.settings.chord_tol = ChordTol::new(CHORD_TOL).unwrap();
         let g = grasps(&c, &opts).map_err(|e| TestCaseError::fail(format!("grasps: {e}")))?;
         prop_assert!(g.complete);
         let domain = c.domain();
-        let test_curve = TestCurve::Spline(c.clone());
+        let test_curve = TestCurve::Spline(Box::new(c.clone()));
         let oracle = Oracle::new(test_curve.param(), &opts);
         for p in &found.pairs {
             prop_assert_eq!(holders(&g, domain, [p.s, p.t]), 1, "pair ({}, {})", p.s, p.t);
@@ -95,12 +104,12 @@ proptest! {
                     let d = (v[i] - pair[i]).rem_euclid(period);
                     d.min(period - d)
                 };
-                for i in 0..2 {
+                for (i, reach) in reach.iter().enumerate() {
                     prop_assert!(
-                        off(i) <= REACH_FACTOR * reach[i] + slack,
+                        off(i) <= REACH_FACTOR * reach + slack,
                         "region {}: vertex {:?} is {} from its pair {:?} in coordinate {}, \
                          the linear reach {}",
-                        k, v, off(i), pair, i, reach[i]
+                        k, v, off(i), pair, i, reach
                     );
                 }
             }
@@ -131,4 +140,53 @@ fn linear_reach(oracle: &Oracle<'_>, [s, t]: [f64; 2]) -> [f64; 2] {
         alpha * (inverse[0][0].abs() + inverse[0][1].abs()),
         alpha * (inverse[1][0].abs() + inverse[1][1].abs()),
     ]
+}
+
+/// The ellipse 3 × 2 and its axes' pairs `(0, π)` and `(π/2, 3π/2)`, at frictions `mus`:
+/// asserts two regions, each holding one pair; returns the results.
+fn ellipse_regions(mus: &[f64]) -> Vec<grasp::Grasps> {
+    let ellipse = curve::shapes::Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap();
+    let domain = (0.0, std::f64::consts::TAU);
+    let axes = [
+        [0.0, std::f64::consts::PI],
+        [std::f64::consts::FRAC_PI_2, 1.5 * std::f64::consts::PI],
+    ];
+    mus.iter()
+        .map(|&mu| {
+            let g = grasps(&ellipse, &GraspOptions::friction(mu)).unwrap();
+            assert!(g.complete, "μ = {mu}");
+            assert_eq!(g.regions.len(), 2, "μ = {mu}: {:#?}", g.regions);
+            for axis in axes {
+                assert_eq!(holders(&g, domain, axis), 1, "μ = {mu}: {axis:?}");
+            }
+            g
+        })
+        .collect()
+}
+
+/// The ellipse's two regions round its axes, down to μ = 1e-7.
+#[test]
+fn an_ellipse_s_regions_shrink_onto_its_axes() {
+    ellipse_regions(&[1e-3, 1e-5, 1e-7]);
+}
+
+/// At μ = 1e-9 the ellipse's regions are still two.
+#[test]
+#[ignore = "crate defect: at μ = 1e-9 the ellipse 3 × 2 gets four regions: the minor axis's \
+            twice, and the major axis's two parts across the seam as two regions"]
+fn an_ellipse_at_friction_1e_9_keeps_two_regions() {
+    ellipse_regions(&[1e-9]);
+}
+
+/// Every region of the ellipse at small friction is more than a point: it has a contact
+/// region.
+#[test]
+#[ignore = "crate defect: at μ = 1e-7 the major axis's region of the ellipse 3 × 2 has no \
+            contact region (found at 1e-5 and 1e-9)"]
+fn an_ellipse_s_regions_at_small_friction_have_contact_regions() {
+    for (g, mu) in ellipse_regions(&[1e-5, 1e-7]).iter().zip([1e-5, 1e-7]) {
+        for r in &g.regions {
+            assert!(r.contact.is_some(), "μ = {mu}: {r:?}");
+        }
+    }
 }

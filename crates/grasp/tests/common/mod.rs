@@ -6,6 +6,7 @@
 use curve::shapes::Shape;
 use curve::{Boundary, ParamCurve, SplineCurve};
 use grasp::{GraspOptions, GraspRegion, Grasps};
+use numeric::certificate::Doubt;
 use testkit::boundary_oracle::{off_segment, winding};
 
 /// Grid points per side of the square of pairs in the dense check.
@@ -302,6 +303,10 @@ pub(crate) enum Checks {
     /// The grid only, not the best grasps and contact rectangles (which a known defect of
     /// the crate spoils; a test of its own shows it).
     Grid,
+    /// Everything, but the best grasps' robustness against the grid only where the crate
+    /// does not itself report `GraspBestUnproven` (its local search is known to stop short
+    /// of the minimum at a knot; a test of its own shows it).
+    UnlessBestDoubted,
 }
 
 /// [`dense_check`], of the parts `checks` names.
@@ -379,6 +384,10 @@ pub(crate) fn check_result_of(
     }
     if checks == Checks::Grid {
         return Ok(seen);
+    }
+    let doubted = g.doubts.iter().any(|d| *d == Doubt::GraspBestUnproven);
+    if checks == Checks::UnlessBestDoubted && doubted {
+        least.fill(f64::INFINITY);
     }
     for (k, r) in g.regions.iter().enumerate() {
         check_best(&oracle, domain, k, r, least[k])?;
@@ -468,7 +477,8 @@ fn check_contact(
     for i in 0..CONTACT_SAMPLES {
         for j in 0..CONTACT_SAMPLES {
             let (s, t) = (wrap(at(c.s, i)), wrap(at(c.t, j)));
-            if !oracle.grasps_with_slack(s, t, CONTACT_ANGLE_SLACK, CONTACT_WIDTH_SLACK) {
+            let slack = CONTACT_ANGLE_SLACK + oracle.angle_rounding(s, t);
+            if !oracle.grasps_with_slack(s, t, slack, CONTACT_WIDTH_SLACK) {
                 return Err(format!(
                     "region {k}: contact pair ({s}, {t}) of {:?} × {:?}: slip angle {} against \
                      α = {}, width {}",

@@ -190,3 +190,15 @@ fn an_ellipse_s_regions_at_small_friction_have_contact_regions() {
         }
     }
 }
+
+/// Large friction (μ = 100, cones of half-angle 89.4°): every pair but those near the
+/// diagonal is force closure, and the result is complete.
+#[test]
+#[ignore = "crate limitation: at μ = 100 the ellipse 3 × 2 hits the work limit after 11 s \
+            (complete: false, SearchLimit, GraspBoundaryUnresolved); μ = 50 takes 3.6 s"]
+fn a_large_friction_is_complete() {
+    let ellipse = curve::shapes::Ellipse::new(3.0, 2.0, [1.0, -1.0]).unwrap();
+    let g = grasps(&ellipse, &GraspOptions::friction(100.0)).unwrap();
+    assert!(g.complete, "{:?}", g.doubts);
+    assert_eq!(g.regions.len(), 1);
+}

@@ -8,6 +8,7 @@
 mod common;
 
 use common::{chord, holders, lines, off_lines, on_torus};
+use curve::shapes::Ellipse;
 use curve::{ParamCurve, SplineCurve};
 use grasp::{grasps, GraspOptions, Grasps};
 use proptest::prelude::*;
@@ -140,6 +141,55 @@ proptest! {
         prop_assert_eq!(g.regions.len(), h.regions.len());
         // (A pair (s, t) of the curve is the pair (m − s, m − t) of its reversal.)
         same_membership(c.domain(), &opts, &g, &h, |[s, t]| [m - s, m - t])?;
+    }
+
+    /// A rational spline backwards (control points and weights reversed).
+    #[test]
+    fn reversal_maps_the_regions_of_rational_splines(
+        seed in prop::collection::vec(0.0..1.0f64, 12..=16),
+        weights in prop::collection::vec(0.3..3.0f64, 8),
+        mu in 0.05..1.0f64,
+    ) {
+        let points = star(&seed);
+        let weights = &weights[..points.len()];
+        let reversed: Vec<[f64; 2]> = points.iter().rev().copied().collect();
+        let reversed_weights: Vec<f64> = weights.iter().rev().copied().collect();
+        let (c, d) = (
+            SplineCurve::periodic(2, &points, Some(weights)).unwrap(),
+            SplineCurve::periodic(2, &reversed, Some(&reversed_weights)).unwrap(),
+        );
+        let m = knot_shift(&c, &d, -1.0);
+        prop_assert!(m.is_some(), "no reversal u ↦ m − u maps one curve onto the other");
+        let m = m.unwrap_or_default();
+        let opts = GraspOptions::friction(mu);
+        let (g, h) = (computed(&c, &opts)?, computed(&d, &opts)?);
+        prop_assert_eq!(g.regions.len(), h.regions.len());
+        same_membership(c.domain(), &opts, &g, &h, |[s, t]| [m - s, m - t])?;
+    }
+
+    /// An ellipse moved and scaled (its centre and both semi-axes): the same regions.
+    #[test]
+    fn a_moved_and_scaled_ellipse_keeps_the_regions(
+        axes in (0.5..3.0f64, 0.2..0.95f64),
+        log_scale in -3.0..3.0f64,
+        center in prop::array::uniform2(-1e6..1e6f64),
+        mu in 0.05..1.0f64,
+    ) {
+        let (a, b) = (axes.0, axes.0 * axes.1);
+        let k = 10f64.powf(log_scale);
+        let (e, f) = (
+            Ellipse::new(a, b, [0.0, 0.0]).unwrap(),
+            Ellipse::new(k * a, k * b, center).unwrap(),
+        );
+        let opts = GraspOptions::friction(mu);
+        let computed = |c: &Ellipse| {
+            let g = grasps(c, &opts).map_err(|e| TestCaseError::fail(format!("grasps: {e}")))?;
+            prop_assert!(g.complete);
+            Ok(g)
+        };
+        let (g, h) = (computed(&e)?, computed(&f)?);
+        prop_assert_eq!(g.regions.len(), h.regions.len());
+        same_membership(e.domain(), &opts, &g, &h, |p| p)?;
     }
 
     /// The control points rotated by one (the parameter shifted by one knot span, the seam

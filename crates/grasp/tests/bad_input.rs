@@ -1,13 +1,11 @@
 //! Bad input gets a typed error, never a panic (issue 42): friction ≤ 0, NaN or infinite;
-//! widths ≤ 0, not finite, or min ≥ max; an open curve; a profile with corners or several
-//! segments (refused for now with `Error::Segments`); a curve known by evaluation only.
+//! widths ≤ 0, not finite, or min ≥ max; an open curve; a curve known by evaluation only.
 #![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
 use curve::shapes::Ellipse;
 use curve::{PlaneCurve, SplineCurve};
 use grasp::{grasps, Error, GraspOptions};
 use testkit::evaluation_only::EvaluationOnly;
-use testkit::outlines::{bezier_chain, polygon};
 
 fn ellipse() -> Ellipse {
     Ellipse::new(3.0, 2.0, [1.0, -1.0]).unwrap()
@@ -78,28 +76,6 @@ fn an_open_curve_is_refused() {
         grasps(&open, &GraspOptions::friction(0.3)),
         Err(Error::NotClosed)
     ));
-}
-
-#[test]
-fn profiles_with_corners_are_refused_for_now() {
-    let square = polygon(&[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]);
-    let refused = grasps(&square, &GraspOptions::friction(0.3));
-    assert!(
-        matches!(
-            refused,
-            Err(Error::Segments {
-                segments: 4,
-                corners: 4
-            })
-        ),
-        "{refused:?}"
-    );
-    let chain = bezier_chain(5);
-    let refused = grasps(&chain, &GraspOptions::friction(0.3));
-    assert!(
-        matches!(refused, Err(Error::Segments { segments: 5, .. })),
-        "{refused:?}"
-    );
 }
 
 #[test]

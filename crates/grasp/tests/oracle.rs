@@ -228,6 +228,30 @@ fn the_best_grasp_is_the_most_robust_at_a_knot() {
         .unwrap_or_else(|e| panic!("{c:?}: {e}"));
 }
 
+/// A region across the seam (here round the pair (0.19, 2.95) of a quartic, with a part at
+/// the top edge t = 6) is one region, its best grasp inside it.
+#[test]
+fn a_region_across_the_seam_is_one_region() {
+    let seed = [
+        0.2659476931622764,
+        0.9494889801679826,
+        0.02057210774628421,
+        0.4623095638697482,
+        0.8654280953776543,
+        0.6901749641458311,
+        0.43330784598781336,
+        0.8308766841836551,
+        0.13739269133565882,
+        0.5920925669832178,
+        0.36000001773296597,
+        0.11511528244602473,
+    ];
+    let c = star_spline(4, &seed, None, 0);
+    let opts = GraspOptions::friction(0.12261116952818156);
+    let seen = dense_check(&c, &opts).unwrap_or_else(|e| panic!("{c:?}: {e}"));
+    assert_eq!(seen.regions, 2);
+}
+
 /// The benchmarks' star outlines as periodic splines (smooth closed curves through the star's
 /// control polygon), and the medial issue's periodic cubic, at a few frictions.
 #[test]

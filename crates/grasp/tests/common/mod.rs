@@ -95,6 +95,13 @@ impl<'a> Oracle<'a> {
         }
     }
 
+    /// The curve's jet at `u` read modulo the period (a closed curve's jets beyond its domain
+    /// are not its own: a spline's run on along its end pieces).
+    pub(crate) fn jet(&self, u: f64) -> curve::Jet {
+        let (a, b) = self.curve.domain();
+        self.curve.jet(a + (u - a).rem_euclid(b - a))
+    }
+
     /// The domain `[a, b)`, one period.
     pub(crate) fn domain(&self) -> (f64, f64) {
         self.curve.domain()
@@ -103,7 +110,7 @@ impl<'a> Oracle<'a> {
     /// The angles between each contact's inward normal and the chord to the other contact,
     /// signed (positive on the side of the tangent), at `s` then at `t`.
     pub(crate) fn signed_angles(&self, s: f64, t: f64) -> [f64; 2] {
-        let (js, jt) = (self.curve.jet(s), self.curve.jet(t));
+        let (js, jt) = (self.jet(s), self.jet(t));
         let d = [jt.p.x - js.p.x, jt.p.y - js.p.y];
         let angle = |tan: [f64; 2], d: [f64; 2]| {
             let n = [-self.orientation * tan[1], self.orientation * tan[0]];
@@ -133,7 +140,7 @@ impl<'a> Oracle<'a> {
 
     /// The rounding of the oracle's angles at `(s, t)` ([`JET_ROUNDING_ULPS`]).
     pub(crate) fn angle_rounding(&self, s: f64, t: f64) -> f64 {
-        let (js, jt) = (self.curve.jet(s), self.curve.jet(t));
+        let (js, jt) = (self.jet(s), self.jet(t));
         let far = [js.p.x, js.p.y, jt.p.x, jt.p.y]
             .iter()
             .fold(0.0f64, |m, x| m.max(x.abs()));
@@ -144,7 +151,7 @@ impl<'a> Oracle<'a> {
 
     /// `|C(t) − C(s)|`.
     pub(crate) fn width(&self, s: f64, t: f64) -> f64 {
-        let (p, q) = (self.curve.jet(s).p, self.curve.jet(t).p);
+        let (p, q) = (self.jet(s).p, self.jet(t).p);
         (q.x - p.x).hypot(q.y - p.y)
     }
 
@@ -167,7 +174,7 @@ impl<'a> Oracle<'a> {
 
     /// Checks that `p` is the curve's point at `u`.
     pub(crate) fn check_point(&self, p: [f64; 2], u: f64, what: &str) -> Result<(), String> {
-        let e = self.curve.jet(u).p;
+        let e = self.jet(u).p;
         let gap = (p[0] - e.x).hypot(p[1] - e.y);
         if gap > POINT_ROUNDING * self.size() {
             return Err(format!(

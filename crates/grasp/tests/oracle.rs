@@ -10,12 +10,12 @@
 
 mod common;
 
-use common::{dense_check, dense_check_of, Checks, Seen, TestCurve};
+use common::{dense_check, dense_check_of, Checks, Documented, Seen, TestCurve};
 use curve::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape};
 use curve::SplineCurve;
 use grasp::GraspOptions;
 use proptest::prelude::*;
-use testkit::outlines::{star_polygon, PERIODIC_CUBIC_POINTS};
+use testkit::outlines::{bezier_chain, polygon, star_polygon, PERIODIC_CUBIC_POINTS};
 use testkit::stars::{star_curve_with, Star};
 
 /// Where and how large a drawn spline is: at the origin, far from it, tiny, huge.
@@ -250,6 +250,26 @@ fn a_region_across_the_seam_is_one_region() {
     let opts = GraspOptions::friction(0.12261116952818156);
     let seen = dense_check(&c, &opts).unwrap_or_else(|e| panic!("{c:?}: {e}"));
     assert_eq!(seen.regions, 2);
+}
+
+/// The benchmarks' profiles with corners: star polygons and a chain of Béziers, on the grid
+/// only (the best grasps and contact rectangles may sit at corners, whose cones are the fans
+/// of their sides' normals, which the oracle's jets do not see).
+#[test]
+fn regions_match_the_dense_check_on_the_benchmark_profiles() {
+    let profiles = [
+        polygon(&star_polygon(6)),
+        polygon(&star_polygon(10)),
+        bezier_chain(5),
+    ];
+    for p in profiles {
+        let c = TestCurve::Profile(Box::new(Documented(p)));
+        for mu in [0.05, 0.3, 1.0] {
+            let seen = dense_check_of(&c, &GraspOptions::friction(mu), Checks::Grid)
+                .unwrap_or_else(|e| panic!("{c:?}, μ = {mu}: {e}"));
+            assert!(seen.decided > 0, "{c:?}: nothing decided");
+        }
+    }
 }
 
 /// The benchmarks' star outlines as periodic splines (smooth closed curves through the star's

@@ -4,7 +4,7 @@
 #![allow(dead_code)] // (each test file uses its own share)
 
 use curve::shapes::Shape;
-use curve::{Boundary, ParamCurve, SplineCurve};
+use curve::{Boundary, ParamCurve, Profile, SplineCurve};
 use grasp::{GraspOptions, GraspRegion, Grasps};
 use numeric::certificate::Doubt;
 use testkit::boundary_oracle::{off_segment, winding};
@@ -52,6 +52,26 @@ pub(crate) enum TestCurve {
     Spline(Box<SplineCurve>),
     /// An analytic shape.
     Shape(Shape),
+    /// A closed profile, read in its document's parameter.
+    Profile(Box<Documented>),
+}
+
+/// A profile as a curve of its document's parameter (the parameter the grasps are reported
+/// in): its jets at the profile parameter of each document parameter (the tangents' lengths
+/// differ from the document parameter's derivatives; the oracle needs only their directions).
+#[derive(Debug, Clone)]
+pub(crate) struct Documented(pub(crate) Profile);
+
+impl ParamCurve for Documented {
+    fn domain(&self) -> (f64, f64) {
+        self.0.document_domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.0.is_closed()
+    }
+    fn jet_to(&self, u: f64, order: usize) -> curve::Jet {
+        self.0.jet_to(self.0.internal_param(u), order)
+    }
 }
 
 impl TestCurve {
@@ -60,6 +80,7 @@ impl TestCurve {
         match self {
             TestCurve::Spline(c) => c.as_ref().into(),
             TestCurve::Shape(c) => c.into(),
+            TestCurve::Profile(c) => (&c.0).into(),
         }
     }
 
@@ -68,6 +89,7 @@ impl TestCurve {
         match self {
             TestCurve::Spline(c) => c.as_ref(),
             TestCurve::Shape(c) => c,
+            TestCurve::Profile(c) => c.as_ref(),
         }
     }
 }

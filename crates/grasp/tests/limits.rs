@@ -250,14 +250,17 @@ fn ellipse_regions(mus: &[f64]) -> Vec<grasp::Grasps> {
 
 /// The ellipse's two regions round its axes, down to μ = 1e-7.
 #[test]
+#[ignore = "crate defect (main 9590924f): from μ = 1e-3 down the major axis's region, across \
+            the seam, comes out as three regions (doubt GraspBoundaryUnresolved)"]
 fn an_ellipse_s_regions_shrink_onto_its_axes() {
     ellipse_regions(&[1e-3, 1e-5, 1e-7]);
 }
 
 /// At μ = 1e-9 the ellipse's regions are still two.
 #[test]
-#[ignore = "crate defect: at μ = 1e-9 the ellipse 3 × 2 gets four regions: the minor axis's \
-            twice, and the major axis's two parts across the seam as two regions"]
+#[ignore = "crate defect: at μ = 1e-9 the ellipse 3 × 2 gets no region at all on main \
+            9590924f, complete and without doubts (four at f773d44b: the minor axis's twice, \
+            the major axis's two seam parts as two)"]
 fn an_ellipse_at_friction_1e_9_keeps_two_regions() {
     ellipse_regions(&[1e-9]);
 }
@@ -265,8 +268,9 @@ fn an_ellipse_at_friction_1e_9_keeps_two_regions() {
 /// Every region of the ellipse at small friction is more than a point: it has a contact
 /// region.
 #[test]
-#[ignore = "crate defect: at μ = 1e-7 the major axis's region of the ellipse 3 × 2 has no \
-            contact region (found at 1e-5 and 1e-9)"]
+#[ignore = "crate defect: at μ = 1e-7 the major axis's region of the ellipse 3 × 2 had no \
+            contact region at f773d44b (found at 1e-5 and 1e-9); on 9590924f the regions \
+            themselves split at the seam"]
 fn an_ellipse_s_regions_at_small_friction_have_contact_regions() {
     for (g, mu) in ellipse_regions(&[1e-5, 1e-7]).iter().zip([1e-5, 1e-7]) {
         for r in &g.regions {

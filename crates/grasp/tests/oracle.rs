@@ -1,133 +1,335 @@
-//! The regions against an independent dense check: on a grid of pairs `(s, t)`, the force
-//! closure condition evaluated from the curve's points and tangents alone (no B-spline
-//! algebra) agrees with membership in the reported regions wherever the grid point is farther
-//! from every reported boundary than the chord tolerance allows.
+//! The regions against an independent dense check (issue 42): on a grid of pairs `(s, t)`,
+//! the force-closure condition evaluated from the curve's points and tangents alone (no
+//! B-spline algebra) agrees with membership in the reported regions wherever the grid point
+//! is farther from every reported boundary than the chord tolerance; every contact rectangle
+//! is sampled densely; every best grasp is recomputed and no grid point of its region needs
+//! less friction. On periodic splines of degree 2 to 4, NURBS, the analytic shapes and the
+//! benchmarks' star outlines, far from the origin and at tiny and huge scales, with and
+//! without width limits.
+#![allow(clippy::unwrap_used)] // test helpers outside #[test] fns
 
-use curve::{ParamCurve, SplineCurve};
-use grasp::{grasps, GraspOptions, Grasps};
+mod common;
+
+use common::{dense_check, dense_check_of, Checks, Documented, Seen, TestCurve};
+use curve::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape};
+use curve::SplineCurve;
+use grasp::GraspOptions;
 use proptest::prelude::*;
-use testkit::boundary_oracle::{off_polylines, winding};
-use testkit::stars::star_curve;
+use testkit::outlines::{bezier_chain, polygon, star_polygon, PERIODIC_CUBIC_POINTS};
+use testkit::stars::{star_curve_with, Star};
 
-/// Grid points per side of the square of pairs.
-const GRID: usize = 90;
+/// Where and how large a drawn spline is: at the origin, far from it, tiny, huge.
+const PLACEMENTS: [(f64, [f64; 2]); 4] = [
+    (1.0, [0.0, 0.0]),
+    (1.0, [1e6, -1e6]),
+    (1e-3, [0.0, 0.0]),
+    (1e3, [0.0, 0.0]),
+];
 
-/// The larger angle between a contact's inward normal and the chord to the other contact,
-/// from the curve's jets (counterclockwise curves: the inward normal is the left normal).
-fn slip_angle(c: &dyn ParamCurve, orientation: f64, s: f64, t: f64) -> f64 {
-    let (js, jt) = (c.jet(s), c.jet(t));
-    let d = [jt.p.x - js.p.x, jt.p.y - js.p.y];
-    let angle = |tan: [f64; 2], d: [f64; 2]| {
-        let n = [-orientation * tan[1], orientation * tan[0]];
-        (tan[0] * d[0] + tan[1] * d[1])
-            .abs()
-            .atan2(n[0] * d[0] + n[1] * d[1])
+/// The dense check, as a property's verdict.
+fn verdict(curve: &TestCurve, opts: &GraspOptions) -> Result<Seen, TestCaseError> {
+    dense_check(curve, opts).map_err(|e| TestCaseError::fail(format!("{curve:?}: {e}")))
+}
+
+/// A periodic spline of `degree` on the star of `seed`, placed.
+fn star_spline(degree: usize, seed: &[f64], weights: Option<&[f64]>, place: usize) -> TestCurve {
+    let (size, center) = PLACEMENTS[place];
+    let star = Star {
+        size,
+        center,
+        ..Star::default()
     };
-    angle([js.d1.x, js.d1.y], d).max(angle([jt.d1.x, jt.d1.y], [-d[0], -d[1]]))
+    TestCurve::Spline(Box::new(star_curve_with(&star, degree, seed, weights)))
 }
 
-/// The signed area of a sampled closed curve: its orientation.
-fn orientation(c: &dyn ParamCurve) -> f64 {
-    let (a, b) = c.domain();
-    let n = 400;
-    let p: Vec<_> = (0..n)
-        .map(|i| c.jet(a + (b - a) * i as f64 / n as f64).p)
-        .collect();
-    let area: f64 = (0..n)
-        .map(|i| {
-            let (u, v) = (p[i], p[(i + 1) % n]);
-            u.x * v.y - v.x * u.y
-        })
-        .sum();
-    area.signum()
-}
-
-/// Whether the grasps' regions hold the pair `(s, t)` of the triangle `s < t`.
-fn held(g: &Grasps, p: [f64; 2]) -> bool {
-    g.regions.iter().any(|r| {
-        let parts: Vec<&Vec<[f64; 2]>> = if r.parts.is_empty() {
-            vec![&r.boundary]
-        } else {
-            r.parts.iter().collect()
-        };
-        parts.iter().any(|part| winding(part, p) != 0)
-            && !r.holes.iter().any(|h| winding(h, p) != 0)
-    })
-}
-
-/// Every boundary polyline of the result.
-fn lines(g: &Grasps) -> Vec<&[[f64; 2]]> {
-    g.regions
-        .iter()
-        .flat_map(|r| {
-            std::iter::once(r.boundary.as_slice())
-                .chain(r.parts.iter().map(Vec::as_slice))
-                .chain(r.holes.iter().map(Vec::as_slice))
-        })
-        .collect()
-}
-
-/// Checks the grid; returns the number of grid points decided.
-fn check(c: &SplineCurve, mu: f64) -> Result<usize, TestCaseError> {
-    let opts = GraspOptions::friction(mu);
-    let g = grasps(c, &opts).map_err(|e| TestCaseError::fail(format!("{e}")))?;
-    prop_assert!(g.complete);
-    let (a, b) = c.domain();
-    let o = orientation(c);
-    let alpha = mu.atan();
-    // The chord tolerance is relative to the square's diagonal; a margin of a few of them.
-    let margin = 4.0 * opts.settings.chord_tol.get() * std::f64::consts::SQRT_2 * (b - a);
-    let boundaries = lines(&g);
-    let mut decided = 0;
-    for i in 0..GRID {
-        for j in i + 1..GRID {
-            let s = a + (b - a) * (i as f64 + 0.31) / GRID as f64;
-            let t = a + (b - a) * (j as f64 + 0.37) / GRID as f64;
-            if s >= t {
-                continue;
-            }
-            let p = [s, t];
-            if off_polylines(p, boundaries.iter().copied()) <= margin {
-                continue;
-            }
-            decided += 1;
-            let fc = slip_angle(c, o, s, t) <= alpha;
-            prop_assert_eq!(
-                fc,
-                held(&g, p),
-                "pair ({}, {}) slip angle {} against α = {}; {} regions",
-                s,
-                t,
-                slip_angle(c, o, s, t),
-                alpha,
-                g.regions.len()
-            );
+/// One of the analytic shapes, from draws in `[0, 1)`.
+fn shape(kind: usize, [x, y, z]: [f64; 3]) -> TestCurve {
+    let s = match kind {
+        0 => Shape::Circle(Circle::new(0.5 + 2.0 * x, [y - 0.5, z - 0.5]).unwrap()),
+        1 => {
+            let a = 0.5 + 2.0 * x;
+            // (b up to 0.95 a: a rounder ellipse is a near circle, tested on its own.)
+            Shape::Ellipse(Ellipse::new(a, a * (0.2 + 0.75 * y), [z, -z]).unwrap())
         }
+        2 => {
+            let a = 0.5 + 2.0 * x;
+            Shape::Limacon(Limacon::new(a, a * 0.9 * y).unwrap())
+        }
+        3 => {
+            // (a/b up to 5 either way: the lemniscates with an exact form.)
+            let ratio = 0.2 + 4.8 * y;
+            Shape::EllipticLemniscate(EllipticLemniscate::new(1.0 + x, (1.0 + x) * ratio).unwrap())
+        }
+        _ => Shape::Convexities(
+            Convexities::new(0.5 + x, 0.05 + 0.55 * y, 2 + (4.0 * z) as u32).unwrap(),
+        ),
+    };
+    TestCurve::Shape(s)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(400)))]
+
+    /// Random periodic B-splines of degree 2 to 4 on star polygons, placed anywhere, μ from
+    /// 0.05 to 1.
+    #[test]
+    #[ignore = "crate defect (main 9590924f): regions across the seam come out as several \
+                regions, best grasps outside their own (see a_region_across_the_seam_is_one_region)"]
+    fn regions_match_the_dense_check_on_splines(
+        degree in 2usize..=4,
+        seed in prop::collection::vec(0.0..1.0f64, 12..=20),
+        place in 0usize..PLACEMENTS.len(),
+        mu in 0.05..1.0f64,
+    ) {
+        verdict(&star_spline(degree, &seed, None, place), &GraspOptions::friction(mu))?;
     }
-    Ok(decided)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(160)))]
+
+    /// Random rational (NURBS) quadratics and cubics (the best grasps' robustness where the
+    /// crate does not doubt it: see [`the_best_grasp_is_the_most_robust_at_a_knot`]).
+    #[test]
+    #[ignore = "crate defect (main 9590924f): regions across the seam come out as several \
+                regions, best grasps outside their own (see a_region_across_the_seam_is_one_region)"]
+    fn regions_match_the_dense_check_on_rational_splines(
+        degree in 2usize..=3,
+        seed in prop::collection::vec(0.0..1.0f64, 12..=16),
+        weights in prop::collection::vec(0.3..3.0f64, 8),
+        place in 0usize..PLACEMENTS.len(),
+        mu in 0.05..1.0f64,
+    ) {
+        let c = star_spline(degree, &seed, Some(&weights), place);
+        dense_check_of(&c, &GraspOptions::friction(mu), Checks::UnlessBestDoubted)
+            .map_err(|e| TestCaseError::fail(format!("{c:?}: {e}")))?;
+    }
+
+    /// Width limits: the dense check also tests `|C(t) − C(s)|` against them (on the grid:
+    /// the best grasps and contact rectangles are spoilt by a defect, which
+    /// [`the_best_grasp_keeps_to_the_width_limits`] shows).
+    #[test]
+    fn regions_match_the_dense_check_within_width_limits(
+        seed in prop::collection::vec(0.0..1.0f64, 12..=16),
+        place in 0usize..PLACEMENTS.len(),
+        mu in 0.05..1.0f64,
+        limits in (0.0..1.0f64, 0.0..1.0f64),
+        which in 0usize..3,
+    ) {
+        let (size, _) = PLACEMENTS[place];
+        // (Widths of the star's curves run from about 0.35 to 2 sizes.)
+        let lo = size * (0.3 + 1.2 * limits.0);
+        let hi = lo + size * (0.05 + 1.0 * limits.1);
+        let opts = GraspOptions {
+            min_width: (which != 1).then_some(lo),
+            max_width: (which != 0).then_some(hi),
+            ..GraspOptions::friction(mu)
+        };
+        let c = star_spline(3, &seed, None, place);
+        dense_check_of(&c, &opts, Checks::Grid)
+            .map_err(|e| TestCaseError::fail(format!("{c:?}: {e}")))?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(160)))]
+
+    /// The grid alone (no best grasps, no contact rectangles) on the splines, NURBS and
+    /// curves with convexities of the tests above, while a defect at the seam spoils the rest.
+    #[test]
+    fn regions_match_the_dense_grid_on_splines_nurbs_and_convexities(
+        kind in 0usize..3,
+        degree in 2usize..=4,
+        seed in prop::collection::vec(0.0..1.0f64, 12..=16),
+        weights in prop::collection::vec(0.3..3.0f64, 8),
+        draws in prop::array::uniform3(0.0..1.0f64),
+        place in 0usize..PLACEMENTS.len(),
+        mu in 0.05..1.0f64,
+    ) {
+        let c = match kind {
+            0 => star_spline(degree, &seed, None, place),
+            1 => star_spline(degree.min(3), &seed, Some(&weights), place),
+            // (Few: each takes the crate a third of a second.)
+            _ if draws[0] < 0.2 => shape(4, draws),
+            _ => star_spline(degree, &seed, None, place),
+        };
+        dense_check_of(&c, &GraspOptions::friction(mu), Checks::Grid)
+            .map_err(|e| TestCaseError::fail(format!("{c:?}: {e}")))?;
+    }
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(testkit::cases(24)))]
 
-    /// Random periodic cubic B-splines on star polygons, μ from 0.05 to 1.
+    /// Circles, ellipses and limaçons with random parameters.
     #[test]
-    fn regions_match_the_dense_check_on_cubic_splines(
-        seed in prop::collection::vec(0.0..1.0f64, 12..=20),
+    fn regions_match_the_dense_check_on_conics_and_limacons(
+        kind in 0usize..3,
+        draws in prop::array::uniform3(0.0..1.0f64),
         mu in 0.05..1.0f64,
     ) {
-        let c = star_curve(3, &seed, None);
-        check(&c, mu)?;
+        verdict(&shape(kind, draws), &GraspOptions::friction(mu))?;
     }
 
-    /// Random rational (NURBS) quadratics.
+    /// Curves with convexities with random parameters.
     #[test]
-    fn regions_match_the_dense_check_on_rational_splines(
-        seed in prop::collection::vec(0.0..1.0f64, 12..=16),
-        weights in prop::collection::vec(0.3..3.0f64, 8),
+    #[ignore = "crate defect (main 9590924f): regions across the seam come out as several \
+                regions, best grasps outside their own (see a_region_across_the_seam_is_one_region)"]
+    fn regions_match_the_dense_check_on_curves_with_convexities(
+        draws in prop::array::uniform3(0.0..1.0f64),
         mu in 0.05..1.0f64,
     ) {
-        let c = star_curve(2, &seed, Some(&weights));
-        check(&c, mu)?;
+        verdict(&shape(4, draws), &GraspOptions::friction(mu))?;
+    }
+}
+
+proptest! {
+    // (Each takes the crate about a second and a half: few cases.)
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(6)))]
+
+    /// Elliptic lemniscates with random parameters.
+    #[test]
+    fn regions_match_the_dense_check_on_elliptic_lemniscates(
+        draws in prop::array::uniform3(0.0..1.0f64),
+        mu in 0.05..1.0f64,
+    ) {
+        verdict(&shape(3, draws), &GraspOptions::friction(mu))?;
+    }
+}
+
+/// The smallest case of the lemniscates' failure: a region's boundary (between its vertices,
+/// which lie on the true boundary) strays from it by more than the chord tolerance in the
+/// document's parameter φ, so that a pair with slip angle 0.7958 > π/4 is held.
+#[test]
+#[ignore = "crate defect: the lemniscate's boundary polyline strays from the true boundary by \
+            more than the chord tolerance in φ (a held pair with slip angle 0.7958 > π/4)"]
+fn a_lemniscate_s_boundary_keeps_to_the_chord_tolerance() {
+    let c = TestCurve::Shape(Shape::EllipticLemniscate(
+        EllipticLemniscate::new(1.0, 2.0).unwrap(),
+    ));
+    dense_check(&c, &GraspOptions::friction(1.0)).unwrap_or_else(|e| panic!("{c:?}: {e}"));
+}
+
+/// The smallest case of the width limits' failure: on the ellipse 3 × 2 with widths limited
+/// to [4.2, 5.8], the minor axis's pair (width 4) is reported as a region's best grasp.
+#[test]
+#[ignore = "crate defect: the best grasp is chosen without the width limits (the minor axis, \
+            width 4, outside [4.2, 5.8] and outside its region)"]
+fn the_best_grasp_keeps_to_the_width_limits() {
+    let c = TestCurve::Shape(Shape::Ellipse(Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap()));
+    let opts = GraspOptions {
+        min_width: Some(4.2),
+        max_width: Some(5.8),
+        ..GraspOptions::friction(0.3)
+    };
+    dense_check(&c, &opts).unwrap_or_else(|e| panic!("{c:?}: {e}"));
+}
+
+/// The smallest case found of the best grasp's failure: on this rational quadratic (μ =
+/// 0.4169), the region without an antipodal pair reports a best grasp needing friction
+/// 0.33441 where pairs near the knot t = 5 need 0.3314 (the crate reports
+/// `GraspBestUnproven`: its local search stops short of the minimum, which sits on a knot,
+/// where the curvature jumps).
+#[test]
+#[ignore = "crate defect: a region's best grasp is not its most robust (0.33441 against \
+            0.3314 near the knot t = 5)"]
+fn the_best_grasp_is_the_most_robust_at_a_knot() {
+    let seed = [
+        0.3303152248646873,
+        0.06705896069451227,
+        0.11208870231423208,
+        0.5198452322883061,
+        0.14627685047968397,
+        0.0691587909708816,
+        0.5650503852452404,
+        0.35248180362621495,
+        0.17386830306730489,
+        0.2960577088426986,
+        0.803550686036769,
+        0.06075426715955702,
+    ];
+    let weights = [
+        1.7179907005291661,
+        0.9610400718030284,
+        1.333806478787023,
+        2.389553223733758,
+        0.7758199168251199,
+        1.6249286977333703,
+    ];
+    let c = star_spline(2, &seed, Some(&weights), 0);
+    dense_check(&c, &GraspOptions::friction(0.41694879972843363))
+        .unwrap_or_else(|e| panic!("{c:?}: {e}"));
+}
+
+/// A region across the seam (here round the pair (0.19, 2.95) of a quartic, with a part at
+/// the top edge t = 6) is one region, its best grasp inside it.
+#[test]
+#[ignore = "crate defect (main 9590924f): three regions, the one round (0.19, 2.95) split at the \
+            seam, the part at t = 6 with a best (3.0418, 6.1258) outside it and beyond the domain"]
+fn a_region_across_the_seam_is_one_region() {
+    let seed = [
+        0.2659476931622764,
+        0.9494889801679826,
+        0.02057210774628421,
+        0.4623095638697482,
+        0.8654280953776543,
+        0.6901749641458311,
+        0.43330784598781336,
+        0.8308766841836551,
+        0.13739269133565882,
+        0.5920925669832178,
+        0.36000001773296597,
+        0.11511528244602473,
+    ];
+    let c = star_spline(4, &seed, None, 0);
+    let opts = GraspOptions::friction(0.12261116952818156);
+    let seen = dense_check(&c, &opts).unwrap_or_else(|e| panic!("{c:?}: {e}"));
+    assert_eq!(seen.regions, 2);
+}
+
+/// The benchmarks' profiles with corners: star polygons and a chain of Béziers, on the grid
+/// only (the best grasps and contact rectangles may sit at corners, whose cones are the fans
+/// of their sides' normals, which the oracle's jets do not see).
+#[test]
+fn regions_match_the_dense_check_on_the_benchmark_profiles() {
+    let profiles = [
+        polygon(&star_polygon(6)),
+        polygon(&star_polygon(10)),
+        bezier_chain(5),
+    ];
+    for p in profiles {
+        let c = TestCurve::Profile(Box::new(Documented(p)));
+        for mu in [0.05, 0.3, 1.0] {
+            let seen = dense_check_of(&c, &GraspOptions::friction(mu), Checks::Grid)
+                .unwrap_or_else(|e| panic!("{c:?}, μ = {mu}: {e}"));
+            assert!(seen.decided > 0, "{c:?}: nothing decided");
+        }
+    }
+}
+
+/// The benchmarks' star outlines as periodic splines (smooth closed curves through the star's
+/// control polygon), and the medial issue's periodic cubic, at a few frictions.
+#[test]
+fn regions_match_the_dense_check_on_the_benchmark_outlines() {
+    let mut curves: Vec<TestCurve> = [6, 10, 16]
+        .into_iter()
+        .flat_map(|n| {
+            let points = star_polygon(n);
+            [2, 3].map(|degree| {
+                TestCurve::Spline(Box::new(
+                    SplineCurve::periodic(degree, &points, None).unwrap(),
+                ))
+            })
+        })
+        .collect();
+    curves.push(TestCurve::Spline(Box::new(
+        SplineCurve::periodic(3, &PERIODIC_CUBIC_POINTS, None).unwrap(),
+    )));
+    for c in &curves {
+        for mu in [0.05, 0.3, 1.0] {
+            let seen = dense_check(c, &GraspOptions::friction(mu))
+                .unwrap_or_else(|e| panic!("{c:?}, μ = {mu}: {e}"));
+            assert!(seen.decided > 0, "{c:?}: nothing decided");
+        }
     }
 }

@@ -13,13 +13,16 @@
 use crate::cells::Traced;
 use crate::corners::CornerLine;
 use crate::model::{Cone, Model};
-use crate::polyline::{bounds, inside, signed_area};
+use crate::polyline::{bounds, inside, off_segment, signed_area};
 use numeric::certificate::{Doubt, Doubts};
 use zeroset::{BoundaryPiece, PieceEnd};
 
 /// Two ends are one point when this close, relative to a cell (crossings are polished onto
 /// both zero sets; an unpolished one lies within the chord tolerance, added to this).
 const SAME_POINT: f64 = 1e-7;
+
+/// Two places on a cell's border are one when this close (a cell's edge being 1).
+const SAME_PLACE: f64 = 1e-12;
 
 /// Stretches of a line overlap when they share more than this (a cell's parameter being 1).
 const OVERLAP: f64 = 1e-9;
@@ -28,9 +31,9 @@ const OVERLAP: f64 = 1e-9;
 /// joint's line, whose corner cone is not the segment's.
 const INSIDE_EDGE: f64 = 1e-9;
 
-/// Loops narrower than this (a cell's parameter being 1) lie below every tolerance the
-/// boundaries are traced to: the crumbs the subdivision leaves where all functions vanish
-/// (at a corner where the contacts meet, which no grasp near it can hold).
+/// Loops narrower than this (a cell's parameter being 1) at a point where the contacts meet
+/// are the crumbs the subdivision leaves where all functions vanish (a corner too blunt for
+/// any grasp near it), not regions.
 const CRUMB: f64 = 1e-9;
 
 /// A region as closed polylines in the triangle `s < t` of the profile's parameter.
@@ -84,6 +87,14 @@ impl Border {
                 lines: vec![t_line(j), s_line(i + 1), t_line(j + 1), s_line(i)],
             }
         }
+    }
+
+    /// The distance from `p` to the border.
+    fn off(&self, p: [f64; 2]) -> f64 {
+        let m = self.corners.len();
+        (0..m)
+            .map(|e| off_segment(p, self.corners[e], self.corners[(e + 1) % m]))
+            .fold(f64::INFINITY, f64::min)
     }
 
     /// The place of a border point: edge `e` plus the share along it.
@@ -226,14 +237,14 @@ impl Walk<'_> {
         // A piece starting where this one ends goes on from it, whatever the ends are called:
         // at a point where the contacts meet every function vanishes, and the pieces leaving
         // it are tagged by whichever function the cut met first.
-        let here = (0..self.open.len())
-            .filter(|&j| available(j) && j != i)
-            .map(|j| (j, dist(self.first(j), end)))
-            .filter(|&(_, d)| d <= self.tol)
-            .min_by(|x, y| x.1.total_cmp(&y.1));
-        if let Some((j, _)) = here {
-            return Some((j, Vec::new()));
-        }
+        let here = || {
+            (0..self.open.len())
+                .filter(|&j| available(j) && j != i)
+                .map(|j| (j, dist(self.first(j), end)))
+                .filter(|&(_, d)| d <= self.tol)
+                .min_by(|x, y| x.1.total_cmp(&y.1))
+                .map(|(j, _)| (j, Vec::new()))
+        };
         match self.ends(i)[1] {
             PieceEnd::Crossing(other) => {
                 let mine = self.open[i].function;
@@ -247,19 +258,29 @@ impl Walk<'_> {
                     .filter(|&(_, d)| d <= self.tol)
                     .min_by(|x, y| x.1.total_cmp(&y.1))
                     .map(|(j, _)| (j, Vec::new()))
+                    .or_else(here)
             }
             PieceEnd::Border => {
                 let from = self.border.place(end);
                 let m = self.border.corners.len() as f64;
-                // The next start along the border, counterclockwise (wrapping round).
-                let ahead = |x: f64| if x >= from { x - from } else { x - from + m };
+                // The next start on the border, counterclockwise (wrapping round; a start at
+                // the same place, to rounding, is next).
+                let ahead = |x: f64| {
+                    let d = x - from;
+                    if d >= -SAME_PLACE {
+                        d.max(0.0)
+                    } else {
+                        d + m
+                    }
+                };
                 let (j, to) = (0..self.open.len())
-                    .filter(|&j| available(j) && self.ends(j)[0] == PieceEnd::Border)
+                    .filter(|&j| available(j) && self.border.off(self.first(j)) <= SAME_POINT)
                     .map(|j| (j, self.border.place(self.first(j))))
                     .min_by(|x, y| ahead(x.1).total_cmp(&ahead(y.1)))?;
+                let to = if ahead(to) == 0.0 { from } else { to };
                 Some((j, self.border.walk(from, to, stretches)))
             }
-            PieceEnd::Loose => None,
+            PieceEnd::Loose => here(),
         }
     }
 
@@ -321,13 +342,21 @@ fn glue(
     points: Vec<[f64; 2]>,
     shared: &Doubts,
 ) -> Vec<RawRegion> {
-    let width = |l: &Loop| {
+    // The points where the contacts meet: a joint with itself (on the diagonal), and the
+    // closing joint's corner of the square.
+    let n = model.n() as f64;
+    let meets: Vec<[f64; 2]> = (0..=model.n())
+        .map(|k| [k as f64, k as f64])
+        .chain([[0.0, n]])
+        .collect();
+    let crumb = |l: &Loop| {
         let (lo, hi) = bounds(&l.pts);
-        (hi[0] - lo[0]).max(hi[1] - lo[1])
+        (hi[0] - lo[0]).max(hi[1] - lo[1]) <= CRUMB
+            && meets.iter().any(|m| dist(*m, lo) <= CRUMB && dist(*m, hi) <= CRUMB)
     };
     let (outer, holes): (Vec<Loop>, Vec<Loop>) = loops
         .into_iter()
-        .filter(|l| width(l) > CRUMB)
+        .filter(|l| !crumb(l))
         .partition(|l| signed_area(&l.pts) >= 0.0);
     let mut nodes: Vec<Node> = (0..outer.len()).map(Node::Part).collect();
     for line in lines {

@@ -61,8 +61,10 @@ pub(crate) fn most_robust(
                 }
             }
         }
-        // A part too thin for the grid: its vertices.
-        for &p in part {
+    }
+    if best.is_none() {
+        // Parts too thin for the grid: their vertices.
+        for &p in region.parts.iter().flatten() {
             consider(p, true, &mut best);
         }
     }

@@ -84,17 +84,23 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
             .fold([0.0f64; 2], |m, (lo, hi)| {
                 [m[0].max(hi[0] - lo[0]), m[1].max(hi[1] - lo[1])]
             });
-        // The largest square is sought round the best grasp and round the points of the
-        // region deepest inside it (the best grasp may lie on a width limit).
-        let contact = deepest(r, CONTACT_CENTERS)
+        // The largest square is sought round the best grasp, and round the points of the
+        // region deepest inside it where that one is clearly smaller (the best grasp may lie
+        // on a width limit, or off the region's middle).
+        let at_best = around(&model, &proof, center, reach);
+        let deeper = deepest(r, CONTACT_CENTERS)
             .into_iter()
-            .chain([center])
             .filter_map(|c| around(&model, &proof, c, reach))
-            .max_by(|a, b| a.2.total_cmp(&b.2))
-            .map(|(s, t, _)| (s, t));
+            .max_by(|a, b| a.2.total_cmp(&b.2));
+        let contact = match (at_best, deeper) {
+            (Some(b), Some(d)) if d.2 > b.2 * CLEARLY_LARGER => Some(d),
+            (None, d) => d,
+            (b, _) => b,
+        }
+        .map(|(s, t, _)| (s, t));
         let certified = r.doubts.is_empty();
         doubts.join(region_doubts);
-        found.push(output(&model, r, center, contact, certified));
+        found.push(output(&model, chord, r, center, contact, certified));
     }
     Ok(Grasps {
         friction: opts.friction,
@@ -104,6 +110,37 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         doubts,
         complete,
     })
+}
+
+/// A contact region round another centre replaces the one round the best grasp when its
+/// square is this much larger.
+const CLEARLY_LARGER: f64 = 1.1;
+
+/// Halvings of a chord whose image in the document's parameter bends.
+const IMAGE_DEPTH: usize = 8;
+
+/// The inner vertices that make the image of the chord from `a` to `b` under `map` a polyline
+/// within `tol` of it (its middles, where the image's middle is off the mapped chord).
+fn follow(
+    map: &dyn Fn([f64; 2]) -> [f64; 2],
+    a: [f64; 2],
+    b: [f64; 2],
+    tol: f64,
+    depth: usize,
+    out: &mut Vec<[f64; 2]>,
+) {
+    if depth == 0 {
+        return;
+    }
+    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let (ma, mb, mm) = (map(a), map(b), map(mid));
+    // (A chord across the seam maps to a jump: its image is not followed.)
+    let off = off_segment(mm, ma, mb);
+    if off > tol && off < 0.25 * (ma[0] - mb[0]).hypot(ma[1] - mb[1]) + tol {
+        follow(map, a, mid, tol, depth - 1, out);
+        out.push(mm);
+        follow(map, mid, b, tol, depth - 1, out);
+    }
 }
 
 /// Centres tried for a region's contact region besides its best grasp.
@@ -164,16 +201,27 @@ fn antipodal_seeds(boundary: Boundary<'_>, profile: &Profile) -> Result<Vec<[f64
 /// A region in the curve's own parameter and coordinates.
 fn output(
     model: &Model<'_>,
+    chord: f64,
     r: &RawRegion,
     center: [f64; 2],
     contact: Option<([f64; 2], [f64; 2])>,
     certified: bool,
 ) -> GraspRegion {
+    let doc = |p: [f64; 2]| [model.document_param(p[0]), model.document_param(p[1])];
+    // The chords were traced straight in the forms' parameters; where the document's parameter
+    // is not linear in them (an analytic shape's angle against its rational circle's), a chord
+    // is followed by its image, halved until its middle lies on the mapped chord.
+    let (da, db) = model.profile.document_domain();
+    let tol = chord * (db - da) / model.n() as f64;
     let polyline = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> {
-        let mut out: Vec<[f64; 2]> = pts
-            .iter()
-            .map(|p| [model.document_param(p[0]), model.document_param(p[1])])
-            .collect();
+        let mut out: Vec<[f64; 2]> = Vec::with_capacity(pts.len());
+        for w in pts.windows(2) {
+            out.push(doc(w[0]));
+            follow(&doc, w[0], w[1], tol, IMAGE_DEPTH, &mut out);
+        }
+        if let Some(&last) = pts.last() {
+            out.push(doc(last));
+        }
         // (Pieces meet end to end: their shared vertices once. A single pair stays two.)
         out.dedup();
         if out.len() == 1 {

@@ -260,8 +260,6 @@ fn a_rectangle_has_the_families_of_its_opposite_sides_widened_by_the_cone() {
 /// The axes' regions of a near-circular ellipse close to meeting (μ just below
 /// `(a² − b²) / (2ab)`): still two regions, each holding its best grasp.
 #[test]
-#[ignore = "crate defect: three regions, two of them uncertified copies round the minor axis \
-            whose polylines do not hold their own best grasp (π/2, 3π/2)"]
 fn an_ellipse_near_its_meeting_friction_keeps_two_regions() {
     let ellipse = Shape::Ellipse(
         Ellipse::new(

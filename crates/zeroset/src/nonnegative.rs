@@ -39,6 +39,14 @@ const ZERO_BAND: f64 = 1e-10;
 /// chord of the crossing needs a handful).
 const CROSSING_STEPS: usize = 12;
 
+/// Newton steps moving a point of a chord onto its zero set (it starts within the chord
+/// tolerance: quadratic convergence needs a few).
+const PROJECTION_STEPS: usize = 6;
+
+/// How far (relative to the chord) the two-dimensional Newton may move a crossing found by
+/// bisection before it is distrusted: it only polishes the last bits.
+const POLISH_REACH: f64 = 1e-3;
+
 /// Bisection steps along a chord for where another function changes sign (to the last bit of
 /// a unit chord).
 const CHORD_BISECTIONS: usize = 60;
@@ -479,7 +487,7 @@ impl Cutter<'_> {
 
     /// Where along the chord from `a` to `b` function `j` changes sign (a share in `[0, 1]`).
     fn along(&self, a: [f64; 2], b: [f64; 2], j: usize) -> f64 {
-        let at = |l: f64| [a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])];
+        let at = |l: f64| self.onto_zero_set([a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])]);
         let start = self.holds(j, a);
         let (mut lo, mut hi) = (0.0, 1.0);
         for _ in 0..CHORD_BISECTIONS {
@@ -496,12 +504,37 @@ impl Cutter<'_> {
         0.5 * (lo + hi)
     }
 
-    /// The crossing of this zero set with function `j`'s near the share `l` of the chord from
-    /// `a` to `b`, polished onto both zero sets.
+    /// The crossing of this zero set with function `j`'s at the share `l` of the chord from
+    /// `a` to `b` (found by bisection on the chord's points moved onto this zero set, so two
+    /// crossings close together, as where two zero sets nearly touch, are told apart), polished
+    /// onto both zero sets where Newton stays beside it.
     fn crossing_at(&self, a: [f64; 2], b: [f64; 2], l: f64, j: usize) -> [f64; 2] {
-        let start = [a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])];
-        let reach = (b[0] - a[0]).hypot(b[1] - a[1]);
+        let start = self.onto_zero_set([a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])]);
+        let reach = POLISH_REACH * (b[0] - a[0]).hypot(b[1] - a[1]);
         self.polish(start, j, reach).unwrap_or(start)
+    }
+
+    /// `p` moved onto this function's zero set along its gradient (a few Newton steps; where
+    /// the gradient vanishes, `p` as it is).
+    fn onto_zero_set(&self, p: [f64; 2]) -> [f64; 2] {
+        let f = &self.fs[self.k];
+        let mut x = p;
+        for _ in 0..PROJECTION_STEPS {
+            let d = f.eval_derivs(x[0], x[1], 1, 1);
+            // Entries: [F, F_r, F_t, F_tr].
+            let g2 = d[1] * d[1] + d[2] * d[2];
+            if !(g2 > 0.0) || d[0] == 0.0 {
+                break;
+            }
+            let step = d[0] / g2;
+            let next = [x[0] - step * d[2], x[1] - step * d[1]];
+            let moved = (next[0] - x[0]).hypot(next[1] - x[1]);
+            x = next;
+            if moved <= f64::EPSILON * (x[0].abs() + x[1].abs() + 1.0) {
+                break;
+            }
+        }
+        x
     }
 
     /// Newton on `F_k = F_j = 0` from `start`, kept if it stays within `reach` of it.

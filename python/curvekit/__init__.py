@@ -3,8 +3,8 @@
 Curves come from the tool's JSON documents (:func:`from_dict`, :meth:`Curve.from_json`), from
 files and drawings (:func:`read`: ``.json``, ``.svg``, ``.dxf``) and from numpy arrays
 (:func:`BSpline`, :func:`Bezier`, :func:`Line`, :func:`Arc` and the analytic kinds). The
-commands (:func:`antipodal`, :func:`inflections`, :func:`tangents`, :func:`bisector`,
-:func:`medial`, :func:`offset`, :func:`vcarve`) release the GIL while they compute, and their
+commands (:func:`antipodal`, :func:`grasps`, :func:`inflections`, :func:`tangents`,
+:func:`bisector`, :func:`medial`, :func:`offset`, :func:`vcarve`) release the GIL while they compute, and their
 results give numpy arrays and ``to_dict()``, the document ``curvekit COMMAND --json`` prints.
 Given a list of curves instead of one, a command answers a list, computed in parallel (as
 shapely's vectorised functions do). Curves and results pickle, so
@@ -31,9 +31,13 @@ import numpy as np
 from . import _curvekit
 from ._curvekit import (
     Antipodal,
+    BestGrasp,
     Bisector,
+    ContactRegion,
     Curve,
     CurvekitError,
+    GraspRegion,
+    Grasps,
     Inflections,
     InputError,
     MedialAxis,
@@ -50,15 +54,19 @@ __version__: str = _curvekit.__version__
 __all__ = [
     "Antipodal",
     "Arc",
+    "BestGrasp",
     "Bezier",
     "Bisector",
     "BSpline",
     "Circle",
+    "ContactRegion",
     "Convexities",
     "Curve",
     "CurvekitError",
     "Ellipse",
     "EllipticLemniscate",
+    "GraspRegion",
+    "Grasps",
     "Inflections",
     "InputError",
     "Limacon",
@@ -76,6 +84,7 @@ __all__ = [
     "bisector",
     "from_dict",
     "from_shapely",
+    "grasps",
     "inflections",
     "medial",
     "offset",
@@ -422,6 +431,47 @@ def antipodal(curve: Any, *, tol: float = 1e-12) -> Any:
     is the parameter tolerance relative to the domain's length (``--tol``). Given a list of
     curves, a list of results, computed in parallel."""
     return _one_or_many("antipodal", curve, tol=tol)
+
+
+@overload
+def grasps(
+    curve: OneCurve,
+    friction: float,
+    *,
+    min_width: Optional[float] = ...,
+    max_width: Optional[float] = ...,
+) -> Grasps: ...
+@overload
+def grasps(
+    curve: Many,
+    friction: float,
+    *,
+    min_width: Optional[float] = ...,
+    max_width: Optional[float] = ...,
+) -> List[Grasps]: ...
+def grasps(
+    curve: Any,
+    friction: float,
+    *,
+    min_width: Optional[float] = None,
+    max_width: Optional[float] = None,
+) -> Any:
+    """Every two-finger force-closure grasp of a closed curve or profile for Coulomb friction
+    ``friction`` (μ > 0; Nguyen's condition: the chord between the contacts lies inside both
+    friction cones of half-angle atan μ), pairs closer than ``min_width`` or farther apart than
+    ``max_width`` left out. The result's ``regions`` live in the square of contact parameters
+    (s < t), each with its independent contact region (``contact``) and its most robust grasp
+    (``best``); ``to_dict()`` is the document ``curvekit grasps --json`` prints. Given a list
+    of curves, a list of results, computed in parallel.
+
+    >>> import curvekit
+    >>> g = curvekit.grasps(curvekit.Ellipse(3.0, 2.0), 0.3)
+    >>> len(g.regions), g.certified
+    (2, True)
+    """
+    return _one_or_many(
+        "grasps", curve, friction=friction, min_width=min_width, max_width=max_width
+    )
 
 
 @overload

@@ -146,6 +146,50 @@ class Offsets(_Verdict):
         """The offsets as plain SVG paths in the input's coordinates."""
     def __len__(self) -> int: ...
 
+class ContactRegion:
+    """An independent contact region: every pair of [s0, s1] x [t0, t1] is force closure (an
+    interval may run beyond the domain across the seam: read it modulo the period)."""
+
+    s: npt.NDArray[np.float64]
+    """(2,): the first finger's stretch [s0, s1]."""
+    t: npt.NDArray[np.float64]
+    """(2,): the second finger's stretch [t0, t1]."""
+    p: npt.NDArray[np.float64]
+    """(2, 2): the ends of the first stretch."""
+    q: npt.NDArray[np.float64]
+    """(2, 2): the ends of the second stretch."""
+
+class BestGrasp:
+    """A region's most robust grasp."""
+
+    s: float
+    t: float
+    p: npt.NDArray[np.float64]
+    """(2,): the first contact."""
+    q: npt.NDArray[np.float64]
+    """(2,): the second contact."""
+    min_friction: float
+    """The least friction for which the pair is force closure (0 at an antipodal pair)."""
+
+class GraspRegion:
+    """A connected region of force-closure pairs (s, t), s < t."""
+
+    boundary: npt.NDArray[np.float64]
+    """(n, 2): a closed polyline of pairs (s, t), the region on its left."""
+    parts: list[npt.NDArray[np.float64]]
+    """Every part in the square (several across the seam), boundary first."""
+    holes: list[npt.NDArray[np.float64]]
+    contact: Optional[ContactRegion]
+    best: BestGrasp
+    certified: bool
+
+class Grasps(_Verdict):
+    friction: float
+    min_width: Optional[float]
+    max_width: Optional[float]
+    regions: list[GraspRegion]
+    def __len__(self) -> int: ...
+
 OneCurve = Union[Curve, PreparedCurve]
 
 __version__: str
@@ -154,6 +198,13 @@ def read(path: Union[str, PathLike[str]], *, pick: Optional[int] = None) -> Curv
 def prepare(curve: Curve) -> PreparedCurve: ...
 def antipodal(curve: OneCurve, *, tol: float = 1e-12) -> Antipodal: ...
 def inflections(curve: OneCurve, *, tol: float = 1e-12) -> Inflections: ...
+def grasps(
+    curve: OneCurve,
+    friction: float,
+    *,
+    min_width: Optional[float] = None,
+    max_width: Optional[float] = None,
+) -> Grasps: ...
 def tangents(curve1: Curve, curve2: Curve, *, tol: float = 1e-12) -> Tangents: ...
 def bisector(
     curve1: Curve,
@@ -192,6 +243,13 @@ def vcarve(
 ) -> VCarve: ...
 def antipodal_many(curves: list[OneCurve], *, tol: float = 1e-12) -> list[Antipodal]: ...
 def inflections_many(curves: list[OneCurve], *, tol: float = 1e-12) -> list[Inflections]: ...
+def grasps_many(
+    curves: list[OneCurve],
+    friction: float,
+    *,
+    min_width: Optional[float] = None,
+    max_width: Optional[float] = None,
+) -> list[Grasps]: ...
 def tangents_many(
     curves1: list[Curve], curves2: list[Curve], *, tol: float = 1e-12
 ) -> list[Tangents]: ...

@@ -15,6 +15,19 @@ def widest_grasp(outline: curvekit.Curve) -> float:
     return float(distances.max()) if len(grasps) else 0.0
 
 
+def most_robust(outlines: list[curvekit.Curve], friction: float) -> list[float]:
+    found: list[curvekit.Grasps] = curvekit.grasps(outlines, friction, max_width=5.0)
+    best: list[float] = []
+    for g in found:
+        regions: list[curvekit.GraspRegion] = g.regions
+        best.append(min((r.best.min_friction for r in regions), default=float("inf")))
+    one: curvekit.Grasps = curvekit.grasps(outlines[0], friction)
+    contact: curvekit.ContactRegion | None = one.regions[0].contact if one.regions else None
+    if contact is not None:
+        best.append(float(contact.s[1] - contact.s[0]))
+    return best
+
+
 def carve_all(paths: list[str]) -> list[curvekit.VCarve]:
     carved: list[curvekit.VCarve] = curvekit.vcarve(paths, angle=60.0, max_depth=2.0)
     return carved
@@ -27,7 +40,7 @@ def passes(region: curvekit.Curve) -> bytes:
 
 def main() -> None:
     outline = curvekit.BSpline([[0, 0], [2, -1], [4, 0], [4, 2], [2, 1.2], [0, 2]], periodic=True)
-    print(widest_grasp(outline), curvekit.__version__)
+    print(widest_grasp(outline), curvekit.__version__, most_robust([outline], 0.3))
     axes: list[curvekit.MedialAxis] = curvekit.medial([outline, curvekit.Circle(1.0)])
     print([a.certified for a in axes])
     bisectors: list[curvekit.Bisector] = curvekit.bisector([outline], method="f3")

@@ -4,6 +4,7 @@
 //! JSON. The geometry is the library's (`curvekit::commands`); this crate only translates.
 
 mod curves;
+mod grasps;
 mod many;
 mod region_results;
 mod registry;
@@ -35,9 +36,38 @@ create_exception!(
     "A computation that could not be carried out (the tool's exit status 1)."
 );
 
+/// A failure a call can end in: its kind decides the Python exception, its message the text.
+/// The tool's commands fail with a [`CommandError`]; the calls built on a library directly
+/// (`grasps`) with their own type.
+pub(crate) trait Failure: Send {
+    /// Bad input, bad options or a computation's failure.
+    fn kind(&self) -> FailureKind;
+    /// The message on one line.
+    fn message(&self) -> String;
+    /// A panic caught: a defect, reported as `internal error`.
+    fn panicked() -> Self;
+}
+
+impl Failure for CommandError {
+    fn kind(&self) -> FailureKind {
+        CommandError::kind(self)
+    }
+    fn message(&self) -> String {
+        CommandError::message(self)
+    }
+    fn panicked() -> Self {
+        CommandError::panicked()
+    }
+}
+
 /// The library's failure as a Python exception: bad input `InputError` (a `ValueError`), an
 /// option out of range `ValueError`, anything else `CurvekitError`.
 pub(crate) fn to_py_err(e: CommandError) -> PyErr {
+    failure_to_py_err(e)
+}
+
+/// [`to_py_err`] for any [`Failure`].
+pub(crate) fn failure_to_py_err(e: impl Failure) -> PyErr {
     match e.kind() {
         FailureKind::Input => InputError::new_err(e.message()),
         FailureKind::Usage => PyValueError::new_err(as_keyword(&e.message())),
@@ -56,15 +86,15 @@ fn as_keyword(message: &str) -> String {
 /// Runs `work` without the GIL (other Python threads go on meanwhile); a panic, a defect never
 /// expected, becomes a `CurvekitError` instead of ending the interpreter's thread. For the
 /// calls that take microseconds to milliseconds: see [`cancellable`] for the long ones.
-pub(crate) fn detached<T: Send>(
+pub(crate) fn detached<T: Send, E: Failure>(
     py: Python<'_>,
-    work: impl FnOnce() -> Result<T, CommandError> + Send,
+    work: impl FnOnce() -> Result<T, E> + Send,
 ) -> PyResult<T> {
     py.detach(|| {
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
-            .unwrap_or_else(|_| Err(CommandError::panicked()))
+            .unwrap_or_else(|_| Err(E::panicked()))
     })
-    .map_err(to_py_err)
+    .map_err(failure_to_py_err)
 }
 
 /// How often a long call looks for a signal (Ctrl-C): a cancelled computation stops at its
@@ -116,7 +146,7 @@ pub(crate) fn cancellable<T: Send>(
 
 /// A curve as the one-curve commands take it: prepared (warm) or not (prepared for this run).
 #[derive(FromPyObject)]
-enum OneCurve<'py> {
+pub(crate) enum OneCurve<'py> {
     Prepared(Bound<'py, PyPrepared>),
     Curve(Bound<'py, PyCurve>),
 }
@@ -482,6 +512,7 @@ fn _curvekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(offset_of, m)?)?;
     m.add_function(wrap_pyfunction!(vcarve_of, m)?)?;
     many::register(m)?;
+    grasps::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

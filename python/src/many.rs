@@ -5,7 +5,9 @@
 use crate::curves::{PyCurve, PyPrepared};
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use crate::results::{PyBisector, PyTangents};
-use crate::{bisector_method, bisector_options, CurvekitError, InputError, OneCurveCommand};
+use crate::{
+    bisector_method, bisector_options, CurvekitError, Failure, InputError, OneCurveCommand,
+};
 use curvekit::commands::{self, CommandError, CurveSummary, FailureKind};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -17,7 +19,7 @@ const ROUND_PER_THREAD: usize = 32;
 
 /// The failure of curve `k` of the list, as [`crate::to_py_err`] raises it, the message
 /// starting with the curve's place.
-fn failed_at(k: usize, e: CommandError) -> PyErr {
+fn failed_at(k: usize, e: impl Failure) -> PyErr {
     let message = format!("[{k}] {}", e.message());
     match e.kind() {
         FailureKind::Input => InputError::new_err(message),
@@ -38,20 +40,20 @@ fn built<T>(items: usize, opts: Result<T, CommandError>) -> PyResult<Option<T>> 
 
 /// `work` on every item, in parallel without the GIL, in rounds with a look for signals after
 /// each; the first failure (in the list's order) raised, naming its place.
-fn each<I: Sync, T: Send>(
+pub(crate) fn each<I: Sync, T: Send, E: Failure>(
     py: Python<'_>,
     items: &[I],
-    work: impl Fn(&I) -> Result<T, CommandError> + Sync,
+    work: impl Fn(&I) -> Result<T, E> + Sync,
 ) -> PyResult<Vec<T>> {
     let round = ROUND_PER_THREAD * rayon::current_num_threads().max(1);
     let mut found = Vec::with_capacity(items.len());
     for (r, block) in items.chunks(round).enumerate() {
-        let answers: Vec<Result<T, CommandError>> = py.detach(|| {
+        let answers: Vec<Result<T, E>> = py.detach(|| {
             block
                 .par_iter()
                 .map(|item| {
                     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(item)))
-                        .unwrap_or_else(|_| Err(CommandError::panicked()))
+                        .unwrap_or_else(|_| Err(E::panicked()))
                 })
                 .collect()
         });
@@ -64,13 +66,13 @@ fn each<I: Sync, T: Send>(
 }
 
 /// A curve of a list as the one-curve commands take it: prepared (warm) or not.
-enum Item<'a> {
+pub(crate) enum Item<'a> {
     Prepared(&'a PyPrepared),
     Curve(&'a PyCurve),
 }
 
 /// The items of a list of curves and prepared curves.
-fn items<'a>(curves: &'a [Bound<'_, PyAny>]) -> PyResult<Vec<Item<'a>>> {
+pub(crate) fn items<'a>(curves: &'a [Bound<'_, PyAny>]) -> PyResult<Vec<Item<'a>>> {
     curves
         .iter()
         .enumerate()
@@ -95,6 +97,14 @@ fn plain<'a>(curves: &'a [Bound<'_, PyCurve>]) -> Vec<&'a PyCurve> {
 }
 
 impl Item<'_> {
+    /// The curve read (a prepared curve's own).
+    pub(crate) fn curve(&self) -> &curvekit::io::Curve {
+        match self {
+            Item::Prepared(p) => p.prepared().curve(),
+            Item::Curve(c) => c.curve(),
+        }
+    }
+
     /// Runs `command` with `opts`: warm on a prepared curve, cold on a curve (prepared for
     /// this run); the result with the curve's summary.
     fn run<T>(

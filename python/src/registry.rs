@@ -1,6 +1,7 @@
 //! The result classes as the module registers them, and read back from their documents when
 //! unpickled (each pickles as its document: see `result_class!`).
 
+use crate::grasps::PyGrasps;
 use crate::region_results::{PyMedialAxis, PyOffsets, PyVCarve};
 use crate::results::{Kept, PickledCurve, PyAntipodal, PyBisector, PyInflections, PyTangents};
 use curvekit::commands::CurveSummary;
@@ -41,6 +42,7 @@ fn _result_from_json(
         "MedialAxis" => PyMedialAxis,
         "Offsets" => PyOffsets,
         "VCarve" => PyVCarve,
+        "Grasps" => PyGrasps,
     };
     Ok(object.unbind())
 }

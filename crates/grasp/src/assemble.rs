@@ -24,8 +24,14 @@ const SAME_POINT: f64 = 1e-7;
 /// Two places on a cell's border are one when this close (a cell's edge being 1).
 const SAME_PLACE: f64 = 1e-12;
 
-/// Stretches of a line overlap when they share more than this (a cell's parameter being 1).
-const OVERLAP: f64 = 1e-9;
+/// Stretches of a line overlap when they share more than this (a cell's parameter being 1):
+/// beyond the rounding of their ends, however small the regions (they shrink with μ).
+const OVERLAP: f64 = 1e-13;
+
+/// Ends are first matched this close (a cell being 1): crossings are polished onto both zero
+/// sets, so the two pieces meeting at one agree to rounding; only where none is found are
+/// ends up to the chord tolerance apart taken as one (a region may be smaller than that).
+const TIGHT: f64 = 1e-10;
 
 /// How far inside its first edge a cell no piece reaches is tested (a cell being 1): off the
 /// joint's line, whose corner cone is not the segment's.
@@ -238,26 +244,33 @@ impl Walk<'_> {
         // at a point where the contacts meet every function vanishes, and the pieces leaving
         // it are tagged by whichever function the cut met first.
         let here = || {
-            (0..self.open.len())
-                .filter(|&j| available(j) && j != i)
-                .map(|j| (j, dist(self.first(j), end)))
-                .filter(|&(_, d)| d <= self.tol)
-                .min_by(|x, y| x.1.total_cmp(&y.1))
-                .map(|(j, _)| (j, Vec::new()))
+            [TIGHT, self.tol].into_iter().find_map(|tol| {
+                (0..self.open.len())
+                    .filter(|&j| available(j) && j != i)
+                    .map(|j| (j, dist(self.first(j), end)))
+                    .filter(|&(_, d)| d <= tol)
+                    .min_by(|x, y| x.1.total_cmp(&y.1))
+                    .map(|(j, _)| (j, Vec::new()))
+            })
         };
         match self.ends(i)[1] {
             PieceEnd::Crossing(other) => {
                 let mine = self.open[i].function;
-                (0..self.open.len())
-                    .filter(|&j| available(j))
-                    .filter(|&j| {
-                        self.open[j].function == other
-                            && self.ends(j)[0] == PieceEnd::Crossing(mine)
-                    })
-                    .map(|j| (j, dist(self.first(j), end)))
-                    .filter(|&(_, d)| d <= self.tol)
-                    .min_by(|x, y| x.1.total_cmp(&y.1))
-                    .map(|(j, _)| (j, Vec::new()))
+                let tagged = |tol: f64| {
+                    (0..self.open.len())
+                        .filter(|&j| available(j))
+                        .filter(|&j| {
+                            self.open[j].function == other
+                                && self.ends(j)[0] == PieceEnd::Crossing(mine)
+                        })
+                        .map(|j| (j, dist(self.first(j), end)))
+                        .filter(|&(_, d)| d <= tol)
+                        .min_by(|x, y| x.1.total_cmp(&y.1))
+                        .map(|(j, _)| (j, Vec::new()))
+                };
+                tagged(TIGHT)
+                    .or_else(|| here().filter(|(j, _)| dist(self.first(*j), end) <= TIGHT))
+                    .or_else(|| tagged(self.tol))
                     .or_else(here)
             }
             PieceEnd::Border => {
@@ -352,7 +365,9 @@ fn glue(
     let crumb = |l: &Loop| {
         let (lo, hi) = bounds(&l.pts);
         (hi[0] - lo[0]).max(hi[1] - lo[1]) <= CRUMB
-            && meets.iter().any(|m| dist(*m, lo) <= CRUMB && dist(*m, hi) <= CRUMB)
+            && meets
+                .iter()
+                .any(|m| dist(*m, lo) <= CRUMB && dist(*m, hi) <= CRUMB)
     };
     let (outer, holes): (Vec<Loop>, Vec<Loop>) = loops
         .into_iter()

@@ -70,6 +70,11 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     let raw = regions(&model, &traced, &lines, chord, &holds);
     let seeds = antipodal_seeds(boundary, profile)?;
     let proof = Positivity::new(&model, &cells);
+    let unresolved = raw.iter().any(|r| {
+        r.doubts
+            .iter()
+            .any(|d| *d == Doubt::GraspBoundaryUnresolved)
+    });
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
         let (center, proven) = most_robust(&model, r, &seeds);
@@ -98,7 +103,9 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
             (b, _) => b,
         }
         .map(|(s, t, _)| (s, t));
-        let certified = r.doubts.is_empty();
+        // A boundary left unresolved anywhere may have cut a region in two or joined two:
+        // no region's identity is proven then.
+        let certified = r.doubts.is_empty() && !unresolved;
         doubts.join(region_doubts);
         found.push(output(&model, chord, r, center, contact, certified));
     }

@@ -112,8 +112,6 @@ fn a_circle_has_one_band() {
 
 /// The circle's contact stretches are as wide as the band allows: `2 atan μ`.
 #[test]
-#[ignore = "crate defect (since e5c98b38, faster proofs of contact regions): the unit circle's \
-            contact stretches at μ = 0.05 are 0.099834 wide, not 2 atan μ = 0.099917"]
 fn a_circle_s_contact_stretches_are_2_atan_mu_wide() {
     for (r, center, mu) in CIRCLES {
         let circle = Shape::Circle(Circle::new(r, center).unwrap());

@@ -207,8 +207,6 @@ proptest! {
     /// The reversal and the seam shift keep the number of regions (the membership tests above
     /// see only their union).
     #[test]
-    #[ignore = "crate defect: a region across the seam is reported as several regions \
-                (see oracle.rs, a_region_across_the_seam_is_one_region)"]
     fn reversal_and_seam_shift_keep_the_number_of_regions(
         seed in prop::collection::vec(0.0..1.0f64, 12..=18),
         degree in 2usize..=4,

@@ -40,10 +40,22 @@ fn pair(c: &mut Criterion, name: &str, curve: &dyn PlaneCurve) {
 }
 
 fn papers_shapes(c: &mut Criterion) {
-    pair(c, "ellipse_3x2", &Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap());
+    pair(
+        c,
+        "ellipse_3x2",
+        &Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap(),
+    );
     pair(c, "limacon_4_2.5", &Limacon::new(4.0, 2.5).unwrap());
-    pair(c, "lemniscate_6_3", &EllipticLemniscate::new(6.0, 3.0).unwrap());
-    pair(c, "convexities_4.5_0.2_4", &Convexities::new(4.5, 0.2, 4).unwrap());
+    pair(
+        c,
+        "lemniscate_6_3",
+        &EllipticLemniscate::new(6.0, 3.0).unwrap(),
+    );
+    pair(
+        c,
+        "convexities_4.5_0.2_4",
+        &Convexities::new(4.5, 0.2, 4).unwrap(),
+    );
 }
 
 fn growth(c: &mut Criterion) {

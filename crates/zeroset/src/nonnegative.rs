@@ -523,7 +523,7 @@ impl Cutter<'_> {
             let d = f.eval_derivs(x[0], x[1], 1, 1);
             // Entries: [F, F_r, F_t, F_tr].
             let g2 = d[1] * d[1] + d[2] * d[2];
-            if !(g2 > 0.0) || d[0] == 0.0 {
+            if g2.is_nan() || g2 <= 0.0 || d[0] == 0.0 {
                 break;
             }
             let step = d[0] / g2;

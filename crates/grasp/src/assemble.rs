@@ -21,8 +21,10 @@ use zeroset::{BoundaryPiece, PieceEnd};
 /// both zero sets; an unpolished one lies within the chord tolerance, added to this).
 const SAME_POINT: f64 = 1e-7;
 
-/// Two places on a cell's border are one when this close (a cell's edge being 1).
-const SAME_PLACE: f64 = 1e-12;
+/// Two places on a cell's border are one when this close (a cell's edge being 1): the ends
+/// of pieces meeting at a corner of the cell come from subdivision to the size limit there,
+/// a few units of the parameter tolerance apart, and may fall on either edge of it.
+const SAME_PLACE: f64 = SAME_POINT;
 
 /// Stretches of a line overlap when they share more than this (a cell's parameter being 1):
 /// beyond the rounding of their ends, however small the regions (they shrink with μ).
@@ -50,8 +52,8 @@ pub(crate) struct RawRegion {
     pub(crate) parts: Vec<Vec<[f64; 2]>>,
     /// Holes in it, clockwise.
     pub(crate) holes: Vec<Vec<[f64; 2]>>,
-    /// Stretches of corner lines (pairs with a finger at a corner) that touch no part: each
-    /// from its first to its second point.
+    /// Stretches of corner lines (pairs with a finger at a corner): each from its first to
+    /// its second point.
     pub(crate) lines: Vec<[[f64; 2]; 2]>,
     /// Single pairs.
     pub(crate) points: Vec<[f64; 2]>,
@@ -243,13 +245,18 @@ impl Walk<'_> {
         // A piece starting where this one ends goes on from it, whatever the ends are called:
         // at a point where the contacts meet every function vanishes, and the pieces leaving
         // it are tagged by whichever function the cut met first.
+        // Where several pieces meet at one point (a corner where the contacts meet, with a
+        // wedge of grasps round it), the region goes on along the piece turning farthest
+        // left: the region lies on the left of each piece, so that piece bounds the same
+        // sector of it.
+        let incoming = self.direction(i, false);
         let here = || {
             [TIGHT, self.tol].into_iter().find_map(|tol| {
                 (0..self.open.len())
                     .filter(|&j| available(j) && j != i)
-                    .map(|j| (j, dist(self.first(j), end)))
-                    .filter(|&(_, d)| d <= tol)
-                    .min_by(|x, y| x.1.total_cmp(&y.1))
+                    .filter(|&j| dist(self.first(j), end) <= tol)
+                    .map(|j| (j, turn(incoming, self.direction(j, true))))
+                    .max_by(|x, y| x.1.total_cmp(&y.1))
                     .map(|(j, _)| (j, Vec::new()))
             })
         };
@@ -274,6 +281,12 @@ impl Walk<'_> {
                     .or_else(here)
             }
             PieceEnd::Border => {
+                // A piece leaving this very point (a corner of the cell where the contacts
+                // meet) goes on from it: no walk round the border.
+                let tight = here().filter(|(j, _)| dist(self.first(*j), end) <= TIGHT);
+                if tight.is_some() {
+                    return tight;
+                }
                 let from = self.border.place(end);
                 let m = self.border.corners.len() as f64;
                 // The next start on the border, counterclockwise (wrapping round; a start at
@@ -295,6 +308,20 @@ impl Walk<'_> {
             }
             PieceEnd::Loose => here(),
         }
+    }
+
+    /// The direction in which piece `i` leaves its start (`leaving`) or arrives at its end.
+    fn direction(&self, i: usize, leaving: bool) -> [f64; 2] {
+        let pts = &self.open[i].pts;
+        let (a, b) = if leaving {
+            let far = pts.iter().find(|p| dist(**p, pts[0]) > 0.0).copied();
+            (pts[0], far.unwrap_or(pts[0]))
+        } else {
+            let last = pts[pts.len() - 1];
+            let far = pts.iter().rev().find(|p| dist(**p, last) > 0.0).copied();
+            (far.unwrap_or(last), last)
+        };
+        [b[0] - a[0], b[1] - a[1]]
     }
 
     /// The loop through piece `first`.
@@ -324,6 +351,11 @@ impl Walk<'_> {
         l.pts.push(p0);
         l
     }
+}
+
+/// The signed angle from direction `a` to direction `b` (left turns positive).
+fn turn(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] * b[1] - a[1] * b[0]).atan2(a[0] * b[0] + a[1] * b[1])
 }
 
 fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
@@ -462,12 +494,6 @@ fn glue(
                 region.points.push(*p);
                 region.doubts.add(Doubt::GraspPointRegion);
             }
-        }
-    }
-    // A line stretch inside a part's region adds nothing to draw.
-    for (_, r) in regions.iter_mut() {
-        if !r.parts.is_empty() {
-            r.lines.clear();
         }
     }
     for h in holes {

@@ -238,18 +238,14 @@ fn output(
     };
     let mut parts: Vec<Vec<[f64; 2]>> = r.parts.iter().map(|p| polyline(p)).collect();
     parts.sort_by(|x, y| signed_area(y).total_cmp(&signed_area(x)));
-    // A region of pairs with a finger at a corner only: its longest stretch, there and back;
-    // a single pair: itself.
-    let degenerate = r
-        .lines
-        .iter()
-        .max_by(|a, b| {
-            let len = |l: &[[f64; 2]; 2]| (l[1][0] - l[0][0]).hypot(l[1][1] - l[0][1]);
-            len(a).total_cmp(&len(b))
-        })
-        .map(|l| polyline(&[l[0], l[1], l[0]]))
-        .or_else(|| r.points.first().map(|&p| polyline(&[p, p])));
-    let boundary = parts.first().cloned().or(degenerate).unwrap_or_default();
+    // Pairs with a finger at a corner, as stretches there and back (the longest first), and
+    // single pairs: parts without area, after those with (nothing is left out).
+    let mut lines: Vec<&[[f64; 2]; 2]> = r.lines.iter().collect();
+    let len = |l: &[[f64; 2]; 2]| (l[1][0] - l[0][0]).hypot(l[1][1] - l[0][1]);
+    lines.sort_by(|a, b| len(b).total_cmp(&len(a)));
+    parts.extend(lines.iter().map(|l| polyline(&[l[0], l[1], l[0]])));
+    parts.extend(r.points.iter().map(|&p| polyline(&[p, p])));
+    let boundary = parts.first().cloned().unwrap_or_default();
     if parts.len() == 1 {
         parts.clear();
     }

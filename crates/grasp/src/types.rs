@@ -33,8 +33,10 @@ pub struct GraspRegion {
     /// Its boundary: a closed polyline in the square of parameters on the side `s < t`, the
     /// region on its left (the largest of its parts).
     pub boundary: Vec<[f64; 2]>,
-    /// Where the region runs across the curve's seam, the square shows it in several parts:
-    /// all of them, `boundary` first (a region of one part has just `boundary`).
+    /// Where the region runs across the curve's seam or across joints, the square shows it in
+    /// several parts: all of them, `boundary` first (a region of one part has just
+    /// `boundary`). Pairs with a finger at a corner lie on the corner's line: such a stretch
+    /// is a part without area, there and back, and a single pair a part of two equal points.
     #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub parts: Vec<Vec<[f64; 2]>>,
     /// Holes in it (closed polylines, clockwise), if any.

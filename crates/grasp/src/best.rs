@@ -3,7 +3,7 @@
 
 use crate::assemble::RawRegion;
 use crate::model::Model;
-use crate::polyline::bounds;
+use crate::polyline::{bounds, off_segment};
 use crate::quality::slip_angle;
 use crate::region_set::{holds, in_triangle};
 
@@ -29,6 +29,7 @@ pub(crate) fn most_robust(
     model: &Model<'_>,
     region: &RawRegion,
     seeds: &[[f64; 2]],
+    inside_by: f64,
 ) -> ([f64; 2], bool) {
     let n = model.n();
     let angle = |p: [f64; 2]| slip_angle(model, p[0], p[1]);
@@ -107,8 +108,11 @@ pub(crate) fn most_robust(
             ] {
                 let y = [x[0] + ds * step, x[1] + dt * step];
                 let ay = angle(y);
-                // (Staying in the region: its other conditions, the widths, hold there.)
-                if ay < ax && holds(region, n, y[0], y[1]) {
+                // (Staying in the region, a chord inside its polylines: where the least
+                // friction falls toward the region's edge, as on a width limit, the best grasp
+                // is the pair a chord inside, whichever side of the exact edge its polyline
+                // passes.)
+                if ay < ax && holds(region, n, y[0], y[1]) && depth(region, y) >= inside_by {
                     (x, ax) = (y, ay);
                     moved = true;
                     break;
@@ -120,4 +124,14 @@ pub(crate) fn most_robust(
         }
     }
     (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
+}
+
+/// How far `p` lies from the region's polylines.
+fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
+    region
+        .parts
+        .iter()
+        .chain(&region.holes)
+        .flat_map(|l| l.windows(2).map(|w| off_segment(p, w[0], w[1])))
+        .fold(f64::INFINITY, f64::min)
 }

@@ -77,7 +77,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     });
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
-        let (center, proven) = most_robust(&model, r, &seeds);
+        let (center, proven) = most_robust(&model, r, &seeds, chord);
         let mut region_doubts = r.doubts.clone();
         if !proven {
             region_doubts.add(Doubt::GraspBestUnproven);

@@ -205,9 +205,6 @@ fn a_lemniscate_s_boundary_keeps_to_the_chord_tolerance() {
 /// The smallest case of the width limits' failure: on the ellipse 3 × 2 with widths limited
 /// to [4.2, 5.8], the minor axis's pair (width 4) is reported as a region's best grasp.
 #[test]
-#[ignore = "crate defect: the most robust pair under width limits lies on the limit, on the \
-            region's boundary (1.8624, 5.0039), where the polyline test reads it as outside: \
-            the best grasp should be kept a chord inside its region"]
 fn the_best_grasp_keeps_to_the_width_limits() {
     let c = TestCurve::Shape(Shape::Ellipse(Ellipse::new(3.0, 2.0, [0.0, 0.0]).unwrap()));
     let opts = GraspOptions {

@@ -193,7 +193,9 @@ def test_a_circle_has_one_region() -> None:
     assert np.allclose(best.p, -best.q, atol=AXIS_POINT)
 
 
-def test_the_contact_stretches_hold_the_best_grasp_and_are_force_closure() -> None:
+def test_the_contact_stretches_are_force_closure() -> None:
+    # (The contact region is the largest product of stretches in its region; it need not
+    # hold the most robust grasp, which may lie near the region's edge.)
     rng = np.random.default_rng(SEED)
     curves = [curvekit.Ellipse(3.0, 2.0), curvekit.Limacon(4.0, 2.5)] + [
         star_spline(rng) for _ in range(3)
@@ -208,7 +210,6 @@ def test_the_contact_stretches_hold_the_best_grasp_and_are_force_closure() -> No
                 continue
             k = r.contact
             assert k.s.shape == k.t.shape == (2,) and k.p.shape == k.q.shape == (2, 2)
-            assert within(r.best.s, k.s, period) and within(r.best.t, k.t, period)
             assert np.allclose(c.evaluate(wrapped(c, k.s)), k.p, atol=AXIS_POINT)
             # Every pair of the rectangle is force closure: on a 9 × 9 grid of it.
             s, t = np.meshgrid(np.linspace(*k.s, 9), np.linspace(*k.t, 9))

@@ -147,13 +147,7 @@ proptest! {
             SplineCurve::periodic(degree, &points, None).unwrap(),
             SplineCurve::periodic(degree, &reversed, None).unwrap(),
         );
-        let m = knot_shift(&c, &d, -1.0);
-        prop_assert!(m.is_some(), "no reversal u ↦ m − u maps one curve onto the other");
-        let m = m.unwrap_or_default();
-        let opts = GraspOptions::friction(mu);
-        let (g, h) = (computed(&c, &opts)?, computed(&d, &opts)?);
-        // (A pair (s, t) of the curve is the pair (m − s, m − t) of its reversal.)
-        same_membership(c.domain(), &opts, &g, &h, |[s, t]| [m - s, m - t])?;
+        regions_map_by_reversal(&c, &d, mu)?;
     }
 
     /// A rational spline backwards (control points and weights reversed).
@@ -171,12 +165,7 @@ proptest! {
             SplineCurve::periodic(2, &points, Some(weights)).unwrap(),
             SplineCurve::periodic(2, &reversed, Some(&reversed_weights)).unwrap(),
         );
-        let m = knot_shift(&c, &d, -1.0);
-        prop_assert!(m.is_some(), "no reversal u ↦ m − u maps one curve onto the other");
-        let m = m.unwrap_or_default();
-        let opts = GraspOptions::friction(mu);
-        let (g, h) = (computed(&c, &opts)?, computed(&d, &opts)?);
-        same_membership(c.domain(), &opts, &g, &h, |[s, t]| [m - s, m - t])?;
+        regions_map_by_reversal(&c, &d, mu)?;
     }
 
     /// An ellipse moved and scaled (its centre and both semi-axes): the same regions.
@@ -240,4 +229,24 @@ proptest! {
         // (A pair (s, t) of the curve is the pair (s − m, t − m) of the shifted one.)
         same_membership(c.domain(), &opts, &g, &h, |[s, t]| [s - m, t - m])?;
     }
+}
+
+/// The regions of `c` and of `d`, the same curve backwards, map onto each other by the
+/// reversal `u ↦ m − u` of the parameter.
+fn regions_map_by_reversal(
+    c: &SplineCurve,
+    d: &SplineCurve,
+    mu: f64,
+) -> Result<(), TestCaseError> {
+    let m = knot_shift(c, d, -1.0);
+    prop_assert!(
+        m.is_some(),
+        "no reversal u ↦ m − u maps one curve onto the other"
+    );
+    let m = m.unwrap_or_default();
+    let opts = GraspOptions::friction(mu);
+    let (g, h) = (computed(c, &opts)?, computed(d, &opts)?);
+    // (A pair (s, t) of the curve is the pair (m − s, m − t) of its reversal.)
+    same_membership(c.domain(), &opts, &g, &h, |[s, t]| [m - s, m - t])?;
+    Ok(())
 }

@@ -3,9 +3,9 @@
 
 use crate::assemble::RawRegion;
 use crate::model::Model;
-use crate::polyline::{bounds, off_segment};
+use crate::polyline::bounds;
 use crate::quality::slip_angle;
-use crate::region_set::{holds, in_triangle};
+use crate::region_set::{depth, holds, in_triangle};
 
 /// Samples across each part's box when no antipodal pair lies in the region.
 const SAMPLES_ACROSS: usize = 16;
@@ -124,14 +124,4 @@ pub(crate) fn most_robust(
         }
     }
     (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
-}
-
-/// How far `p` lies from the region's polylines.
-fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
-    region
-        .parts
-        .iter()
-        .chain(&region.holes)
-        .flat_map(|l| l.windows(2).map(|w| off_segment(p, w[0], w[1])))
-        .fold(f64::INFINITY, f64::min)
 }

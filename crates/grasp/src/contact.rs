@@ -12,8 +12,8 @@ use numeric::rounding::UNIT_ROUNDOFF;
 const PROOF_DEPTH: usize = 2;
 
 /// Bisection steps for the size of the square, and for each side pushed out.
-const SIZE_STEPS: usize = 40;
-const SIDE_STEPS: usize = 24;
+const SIZE_STEPS: usize = 24;
+const SIDE_STEPS: usize = 14;
 
 /// One function's Bézier patches.
 type Patches = Vec<BezierPatch>;

@@ -11,6 +11,7 @@ use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use crate::polyline::{bounds, inside, off_segment, signed_area};
 use crate::quality::{min_friction, slip_angle};
+use crate::region_set::depth;
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::{Boundary, ParamCurve, Profile};
 use numeric::certificate::{Doubt, Doubts};
@@ -93,9 +94,14 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         // region deepest inside it where that one is clearly smaller (the best grasp may lie
         // on a width limit, or off the region's middle).
         let at_best = around(&model, &proof, center, reach);
-        let deeper = deepest(r, CONTACT_CENTERS)
+        // (Only where the best grasp lies clearly nearer the region's edge than its deepest
+        // points: elsewhere its square is the one to find.)
+        let candidates = deepest(r, CONTACT_CENTERS);
+        let best_depth = depth(r, center);
+        let deeper = candidates
             .into_iter()
-            .filter_map(|c| around(&model, &proof, c, reach))
+            .filter(|&(_, d)| at_best.is_none() || d > DEEPER * best_depth)
+            .filter_map(|(c, _)| around(&model, &proof, c, reach))
             .max_by(|a, b| a.2.total_cmp(&b.2));
         let contact = match (at_best, deeper) {
             (Some(b), Some(d)) if d.2 > b.2 * CLEARLY_LARGER => Some(d),
@@ -156,8 +162,13 @@ const CONTACT_CENTERS: usize = 4;
 /// Samples across a part's box for its deepest points.
 const DEPTH_SAMPLES: usize = 12;
 
-/// The `count` sampled points of `r`'s parts farthest from their boundaries.
-fn deepest(r: &RawRegion, count: usize) -> Vec<[f64; 2]> {
+/// A deeper point is tried as a contact region's centre when it lies this many times deeper
+/// than the best grasp.
+const DEEPER: f64 = 2.0;
+
+/// The `count` sampled points of `r`'s parts farthest from their boundaries, with their
+/// depths.
+fn deepest(r: &RawRegion, count: usize) -> Vec<([f64; 2], f64)> {
     let mut found: Vec<([f64; 2], f64)> = Vec::new();
     for part in &r.parts {
         let (lo, hi) = bounds(part);
@@ -168,19 +179,14 @@ fn deepest(r: &RawRegion, count: usize) -> Vec<[f64; 2]> {
                 };
                 let p = [at(i, 0), at(j, 1)];
                 if inside(part, p) && !r.holes.iter().any(|h| inside(h, p)) {
-                    let depth = r
-                        .parts
-                        .iter()
-                        .chain(&r.holes)
-                        .flat_map(|l| l.windows(2).map(|w| off_segment(p, w[0], w[1])))
-                        .fold(f64::INFINITY, f64::min);
-                    found.push((p, depth));
+                    found.push((p, depth(r, p)));
                 }
             }
         }
     }
     found.sort_by(|a, b| b.1.total_cmp(&a.1));
-    found.into_iter().take(count).map(|(p, _)| p).collect()
+    found.truncate(count);
+    found
 }
 
 /// The antipodal pairs and the middles of the families, in the profile's parameter.

@@ -43,3 +43,13 @@ pub(crate) fn holds(region: &RawRegion, n: usize, s: f64, t: f64) -> bool {
             .iter()
             .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) <= ON_LINE)
 }
+
+/// How far `p` lies from the region's polylines (in the profile's parameter).
+pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
+    region
+        .parts
+        .iter()
+        .chain(&region.holes)
+        .flat_map(|l| l.windows(2).map(|w| off_segment(p, w[0], w[1])))
+        .fold(f64::INFINITY, f64::min)
+}

@@ -233,11 +233,7 @@ proptest! {
 
 /// The regions of `c` and of `d`, the same curve backwards, map onto each other by the
 /// reversal `u ↦ m − u` of the parameter.
-fn regions_map_by_reversal(
-    c: &SplineCurve,
-    d: &SplineCurve,
-    mu: f64,
-) -> Result<(), TestCaseError> {
+fn regions_map_by_reversal(c: &SplineCurve, d: &SplineCurve, mu: f64) -> Result<(), TestCaseError> {
     let m = knot_shift(c, d, -1.0);
     prop_assert!(
         m.is_some(),

@@ -41,7 +41,7 @@ const CROSSING_STEPS: usize = 12;
 
 /// Newton steps moving a point of a chord onto its zero set (it starts within the chord
 /// tolerance: quadratic convergence needs a few).
-const PROJECTION_STEPS: usize = 6;
+const PROJECTION_STEPS: usize = 3;
 
 /// How far (relative to the chord) the two-dimensional Newton may move a crossing found by
 /// bisection before it is distrusted: it only polishes the last bits.

@@ -13,7 +13,8 @@
 use crate::cells::Traced;
 use crate::corners::CornerLine;
 use crate::model::{Cone, Model};
-use crate::polyline::{bounds, inside, off_segment, signed_area};
+use crate::polyline::{bounds, inside, signed_area};
+use curve::distance_to_segment;
 use numeric::certificate::{Doubt, Doubts};
 use zeroset::{BoundaryPiece, PieceEnd};
 
@@ -101,7 +102,7 @@ impl Border {
     fn off(&self, p: [f64; 2]) -> f64 {
         let m = self.corners.len();
         (0..m)
-            .map(|e| off_segment(p, self.corners[e], self.corners[(e + 1) % m]))
+            .map(|e| distance_to_segment(p, self.corners[e], self.corners[(e + 1) % m]))
             .fold(f64::INFINITY, f64::min)
     }
 

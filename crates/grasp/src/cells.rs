@@ -14,8 +14,8 @@ use zeroset::{nonnegative_set, BoundaryPiece, NonNegativeOptions, ZeroSetOptions
 pub(crate) struct Cell {
     pub(crate) i: usize,
     pub(crate) j: usize,
-    /// The functions of force closure on the forms' parameters, in [`crate::cones::Condition`]
-    /// order.
+    /// The functions of force closure on the forms' parameters, in the order of
+    /// [`crate::cones::functions`].
     pub(crate) fs: Vec<TensorBSpline>,
 }
 
@@ -40,10 +40,7 @@ pub(crate) fn cells(
     let mut out = Vec::with_capacity(n * (n + 1) / 2);
     for i in 0..n {
         for j in i..n {
-            let fs = functions(&model.forms[i], &model.forms[j], opts.friction, widths)?
-                .into_iter()
-                .map(|(_, f)| f)
-                .collect();
+            let fs = functions(&model.forms[i], &model.forms[j], opts.friction, widths)?;
             out.push(Cell { i, j, fs });
         }
     }

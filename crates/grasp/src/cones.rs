@@ -20,23 +20,6 @@ use bspline::tensor::TensorBSpline;
 use bspline::Bezier;
 use bspline::{BSpline, Rational};
 
-/// Which condition a function states (its index among the functions of a pair).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Condition {
-    /// `d` is not beyond the edge of the cone at `s` toward `−T(s)`: `⟨μN + T, d⟩ ≥ 0`.
-    SBack,
-    /// `d` is not beyond the edge of the cone at `s` toward `+T(s)`: `⟨μN − T, d⟩ ≥ 0`.
-    SAhead,
-    /// `−d` is not beyond the edge of the cone at `t` toward `−T(t)`.
-    TBack,
-    /// `−d` is not beyond the edge of the cone at `t` toward `+T(t)`.
-    TAhead,
-    /// `|d| ≥` the least width.
-    MinWidth,
-    /// `|d| ≤` the greatest width.
-    MaxWidth,
-}
-
 /// One exact curve form's univariate parts.
 pub(crate) struct Form {
     /// Homogeneous coordinates (Euclidean for a polynomial curve).
@@ -168,16 +151,18 @@ pub(crate) fn corner_functions(
     Ok((holds, [side(edges[0])?, side(edges[1])?]))
 }
 
-/// The functions of force closure for contacts at `s` on `a` and `t` on `b`, in the order of
-/// [`Condition`] (the widths only when given).
+/// The functions of force closure for contacts at `s` on `a` and `t` on `b`, in this order:
+/// `d` not beyond the edge of the cone at `s` toward `−T(s)` (`⟨μN + T, d⟩ ≥ 0`), nor toward
+/// `+T(s)` (`⟨μN − T, d⟩ ≥ 0`); the same for `−d` at `t`; then `|d|` at least the least width
+/// and at most the greatest, where given.
 pub(crate) fn functions(
     a: &Form,
     b: &Form,
     mu: f64,
     widths: [Option<f64>; 2],
-) -> Result<Vec<(Condition, TensorBSpline)>> {
+) -> Result<Vec<TensorBSpline>> {
     let mut out = Vec::with_capacity(6);
-    for (cond, ahead) in [(Condition::SBack, false), (Condition::SAhead, true)] {
+    for ahead in [false, true] {
         // ⟨V(s), e⟩ = (Vx wA)(s) PBx(t) + (Vy wA)(s) PBy(t) − ⟨V, PA⟩(s) wB(t).
         let (vx, vy) = a.edge_normal(mu, ahead)?;
         let dot = vx.mul(&a.x)?.add(&vy.mul(&a.y)?)?;
@@ -186,9 +171,9 @@ pub(crate) fn functions(
             (vy.mul(&a.w)?, b.y.clone()),
             (dot.scale(-1.0), b.w.clone()),
         ])?;
-        out.push((cond, f));
+        out.push(f);
     }
-    for (cond, ahead) in [(Condition::TBack, false), (Condition::TAhead, true)] {
+    for ahead in [false, true] {
         // ⟨W(t), −e⟩ = PAx(s) (Wx wB)(t) + PAy(s) (Wy wB)(t) − wA(s) ⟨W, PB⟩(t).
         let (wx, wy) = b.edge_normal(mu, ahead)?;
         let dot = wx.mul(&b.x)?.add(&wy.mul(&b.y)?)?;
@@ -197,7 +182,7 @@ pub(crate) fn functions(
             (a.y.clone(), wy.mul(&b.w)?),
             (a.w.scale(-1.0), dot),
         ])?;
-        out.push((cond, f));
+        out.push(f);
     }
     if widths.iter().any(Option::is_some) {
         // |e|² = Σ_c (PBc wA − PAc wB)²; the width w bounds it by w² wA² wB².
@@ -212,13 +197,13 @@ pub(crate) fn functions(
         if let Some(wmin) = least {
             let mut terms = sq.clone();
             terms.push((wa2.scale(-wmin * wmin), wb2.clone()));
-            out.push((Condition::MinWidth, TensorBSpline::sum_of_outer(&terms)?));
+            out.push(TensorBSpline::sum_of_outer(&terms)?);
         }
         if let Some(wmax) = most {
             let mut terms: Vec<(BSpline, BSpline)> =
                 sq.iter().map(|(f, g)| (f.scale(-1.0), g.clone())).collect();
             terms.push((wa2.scale(wmax * wmax), wb2));
-            out.push((Condition::MaxWidth, TensorBSpline::sum_of_outer(&terms)?));
+            out.push(TensorBSpline::sum_of_outer(&terms)?);
         }
     }
     Ok(out)

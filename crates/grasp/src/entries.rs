@@ -9,10 +9,11 @@ use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
-use crate::polyline::{bounds, inside, off_segment, signed_area};
+use crate::polyline::{bounds, inside, signed_area};
 use crate::quality::{min_friction, slip_angle};
 use crate::region_set::depth;
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
+use curve::distance_to_segment;
 use curve::{Boundary, ParamCurve, Profile};
 use numeric::certificate::{Doubt, Doubts};
 
@@ -148,7 +149,7 @@ fn follow(
     let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
     let (ma, mb, mm) = (map(a), map(b), map(mid));
     // (A chord across the seam maps to a jump: its image is not followed.)
-    let off = off_segment(mm, ma, mb);
+    let off = distance_to_segment(mm, ma, mb);
     if off > tol && off < 0.25 * (ma[0] - mb[0]).hypot(ma[1] - mb[1]) + tol {
         follow(map, a, mid, tol, depth - 1, out);
         out.push(mm);

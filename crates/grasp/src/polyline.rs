@@ -1,4 +1,4 @@
-//! Closed polylines in the square of pairs: their box, area, inside and distance.
+//! Closed polylines in the square of pairs: their box, area and inside.
 
 /// The box of a polyline.
 pub(crate) fn bounds(pts: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
@@ -33,16 +33,4 @@ pub(crate) fn inside(pts: &[[f64; 2]], p: [f64; 2]) -> bool {
         }
     }
     c
-}
-
-/// The distance from `p` to the segment from `a` to `b`.
-pub(crate) fn off_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
-    let x = if len2 > 0.0 {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a[0] + x * d[0] - p[0]).hypot(a[1] + x * d[1] - p[1])
 }

@@ -1,7 +1,8 @@
 //! A region as a set of pairs: which pairs it holds, on the whole torus of parameters.
 
 use crate::assemble::RawRegion;
-use crate::polyline::{inside, off_segment};
+use crate::polyline::inside;
+use curve::distance_to_segment;
 
 /// How close (in the profile's parameter) a pair must lie to a corner line or a single pair
 /// of a region to be on it.
@@ -37,7 +38,7 @@ pub(crate) fn holds(region: &RawRegion, n: usize, s: f64, t: f64) -> bool {
         || region
             .lines
             .iter()
-            .any(|l| off_segment(p, l[0], l[1]) <= ON_LINE)
+            .any(|l| distance_to_segment(p, l[0], l[1]) <= ON_LINE)
         || region
             .points
             .iter()
@@ -50,6 +51,6 @@ pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
         .parts
         .iter()
         .chain(&region.holes)
-        .flat_map(|l| l.windows(2).map(|w| off_segment(p, w[0], w[1])))
+        .flat_map(|l| l.windows(2).map(|w| distance_to_segment(p, w[0], w[1])))
         .fold(f64::INFINITY, f64::min)
 }

@@ -259,38 +259,23 @@ impl BezierPatch {
     /// assert_eq!(q.coefs, vec![0.0, 0.25, 0.0, 0.5]);
     /// ```
     pub fn restrict(&self, t: [f64; 2], r: [f64; 2]) -> BezierPatch {
-        let (pt, pr) = (self.deg_t, self.deg_r);
         let (wt, wr) = (self.t1 - self.t0, self.r1 - self.r0);
         let local = |x: f64, a: f64, w: f64| if w > 0.0 { (x - a) / w } else { 0.0 };
-        let (ta, tb) = (local(t[0], self.t0, wt), local(t[1], self.t0, wt));
-        let (ra, rb) = (local(r[0], self.r0, wr), local(r[1], self.r0, wr));
-        let mut c = self.coefs.clone();
-        // Along r: each row (fixed t index) restricted to [ra, rb].
-        let mut row = vec![0.0; pr + 1];
-        for i in 0..=pt {
-            row.copy_from_slice(&c[i * (pr + 1)..(i + 1) * (pr + 1)]);
-            restrict_1d(&mut row, ra, rb);
-            c[i * (pr + 1)..(i + 1) * (pr + 1)].copy_from_slice(&row);
-        }
-        // Along t: each column.
-        let mut col = vec![0.0; pt + 1];
-        for j in 0..=pr {
-            for i in 0..=pt {
-                col[i] = c[i * (pr + 1) + j];
-            }
-            restrict_1d(&mut col, ta, tb);
-            for i in 0..=pt {
-                c[i * (pr + 1) + j] = col[i];
-            }
-        }
+        let mut coefs = self.coefs.clone();
+        restrict_bernstein(
+            &mut coefs,
+            [self.deg_t, self.deg_r],
+            [local(t[0], self.t0, wt), local(t[1], self.t0, wt)],
+            [local(r[0], self.r0, wr), local(r[1], self.r0, wr)],
+        );
         BezierPatch {
             t0: t[0],
             t1: t[1],
             r0: r[0],
             r1: r[1],
-            deg_t: pt,
-            deg_r: pr,
-            coefs: c,
+            deg_t: self.deg_t,
+            deg_r: self.deg_r,
+            coefs,
         }
     }
 
@@ -310,28 +295,54 @@ impl BezierPatch {
     }
 }
 
-/// The Bernstein coefficients `b` of a polynomial on `[0, 1]` replaced by those on `[a, z]`:
-/// the part left of `z` by one de Casteljau subdivision, then the part of that right of `a`
-/// (at `a / z` of it) by another.
-fn restrict_1d(b: &mut [f64], a: f64, z: f64) {
-    let n = b.len() - 1;
+/// Tensor Bernstein coefficients on the unit square (row-major, `(deg_t + 1) × (deg_r + 1)`,
+/// rows along `t`) replaced in place by those of the same polynomial on `[t0, t1] × [r0, r1]`,
+/// a box of the unit square: two de Casteljau subdivisions along each direction, with no
+/// allocation (the zero-set tracer restricts patches in its innermost loop).
+///
+/// ```
+/// use bspline::tensor::restrict_bernstein;
+/// // F(t, r) = t r: on [0.5, 1] × [0, 0.5] its corner values are 0, 0.25, 0, 0.5.
+/// let mut c = vec![0.0, 0.0, 0.0, 1.0];
+/// restrict_bernstein(&mut c, [1, 1], [0.5, 1.0], [0.0, 0.5]);
+/// assert_eq!(c, vec![0.0, 0.25, 0.0, 0.5]);
+/// ```
+pub fn restrict_bernstein(coefs: &mut [f64], [deg_t, deg_r]: [usize; 2], t: [f64; 2], r: [f64; 2]) {
+    let w = deg_r + 1;
+    if (r[0], r[1]) != (0.0, 1.0) {
+        for i in 0..=deg_t {
+            restrict_1d(coefs, i * w, 1, deg_r, r[0], r[1]);
+        }
+    }
+    if (t[0], t[1]) != (0.0, 1.0) {
+        for j in 0..=deg_r {
+            restrict_1d(coefs, j, w, deg_t, t[0], t[1]);
+        }
+    }
+}
+
+/// The Bernstein coefficients `b[start + k · stride]`, `k ≤ n`, of a polynomial on `[0, 1]`
+/// replaced by those on `[a, z]`: the part left of `z` by one de Casteljau subdivision, then
+/// the part of that right of `a` (at `a / z` of it) by another.
+fn restrict_1d(b: &mut [f64], start: usize, stride: usize, n: usize, a: f64, z: f64) {
+    let at = |k: usize| start + k * stride;
     if z == 0.0 {
         // Everything at the parameter 0: the first coefficient, n + 1 times.
-        let first = b[0];
-        b.iter_mut().for_each(|x| *x = first);
+        let first = b[start];
+        (0..=n).for_each(|k| b[at(k)] = first);
         return;
     }
     // Left part at z: b_k ← the first point of level k (computed in place from the right).
     for level in 1..=n {
         for m in (level..=n).rev() {
-            b[m] = (1.0 - z) * b[m - 1] + z * b[m];
+            b[at(m)] = (1.0 - z) * b[at(m - 1)] + z * b[at(m)];
         }
     }
     // Right part at x = a / z: b_k ← the last point of level n − k (in place from the left).
     let x = a / z;
     for level in 1..=n {
         for m in 0..=n - level {
-            b[m] = (1.0 - x) * b[m] + x * b[m + 1];
+            b[at(m)] = (1.0 - x) * b[at(m)] + x * b[at(m + 1)];
         }
     }
 }

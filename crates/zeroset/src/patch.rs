@@ -4,7 +4,7 @@
 //! de Casteljau along one direction; the sign facts the solvers need (all coefficients of one
 //! sign, monotone in a direction, sign changes along an edge) are read off the coefficients.
 
-use bspline::tensor::BezierPatch;
+use bspline::tensor::{restrict_bernstein, BezierPatch};
 use numeric::rounding::UNIT_ROUNDOFF;
 use numeric::Rect;
 
@@ -173,28 +173,30 @@ impl Patch {
     }
 
     /// The same polynomial on the part of the patch's box inside `bx` (`None` when they do
-    /// not overlap). The new ends come from de Casteljau splits, so they may differ from
-    /// those of `bx` by rounding.
+    /// not overlap), by de Casteljau subdivision in place.
     pub(crate) fn restrict(&self, bx: Rect) -> Option<Patch> {
         let (a, b) = (bx.t.lo.max(self.t0), bx.t.hi.min(self.t1));
         let (c, d) = (bx.r.lo.max(self.r0), bx.r.hi.min(self.r1));
         if !(a <= b && c <= d) {
             return None;
         }
-        let mut p = self.clone();
-        if a > p.t0 {
-            p = p.split_t((a - p.t0) / (p.t1 - p.t0)).1;
-        }
-        if b < p.t1 {
-            p = p.split_t((b - p.t0) / (p.t1 - p.t0)).0;
-        }
-        if c > p.r0 {
-            p = p.split_r((c - p.r0) / (p.r1 - p.r0)).1;
-        }
-        if d < p.r1 {
-            p = p.split_r((d - p.r0) / (p.r1 - p.r0)).0;
-        }
-        Some(p)
+        let local = |x: f64, lo: f64, hi: f64| if hi > lo { (x - lo) / (hi - lo) } else { 0.0 };
+        let mut coefs = self.c.clone();
+        restrict_bernstein(
+            &mut coefs,
+            [self.pt, self.pr],
+            [local(a, self.t0, self.t1), local(b, self.t0, self.t1)],
+            [local(c, self.r0, self.r1), local(d, self.r0, self.r1)],
+        );
+        Some(Patch {
+            t0: a,
+            t1: b,
+            r0: c,
+            r1: d,
+            pt: self.pt,
+            pr: self.pr,
+            c: coefs,
+        })
     }
 
     /// The trusted sign of the partial derivative in `t` (`k = 0`) or `r` (`k = 1`) on the

@@ -346,7 +346,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: Rect, cells: &[Patch]) -> Assembled
 /// Two ends on one grid line are the same edge root when they are this close (relative to
 /// the domain): the root computed from either side differs by rounding / slope, which is
 /// far below this except beside flat regions (unresolved leaves), where ends go to leaves.
-const MATCH_TOL: f64 = 1e-7;
+pub(crate) const MATCH_TOL: f64 = 1e-7;
 
 /// Two ends attached to one cluster closer than this (relative to the domain) are one root.
 const SAME_ROOT: f64 = 1e-9;

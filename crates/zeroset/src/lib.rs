@@ -15,6 +15,8 @@
 
 mod assemble;
 mod bisector;
+mod blowup;
+mod boundary;
 mod deviation;
 mod entries;
 mod error;
@@ -30,11 +32,10 @@ mod zeroset;
 pub use bisector::{
     bisector_point, Bisector, BisectorOptions, BisectorPoint, Branch, Side, RESIDUAL,
 };
+pub use boundary::{BoundaryPiece, PieceEnd};
 pub use entries::{bisector, self_bisector};
 pub use error::{Error, Result};
-pub use nonnegative::{
-    nonnegative_set, BoundaryPiece, NonNegativeOptions, NonNegativeSet, PieceEnd,
-};
+pub use nonnegative::{nonnegative_set, NonNegativeOptions, NonNegativeSet};
 pub use profile_bisector::{profile_bisector_of_pairs, profile_self_bisector_of_pairs};
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};

@@ -11,8 +11,18 @@
 //! On a domain of pairs (`t < r` of one parameter, as for two contacts on one curve) every
 //! function vanishes on the diagonal: the factor `(t − r)` is divided out of the diagonal
 //! cells, as for a self-bisector, and only the half `t < r` is traced.
+//!
+//! Where every function vanishes at a corner of the domain (two contacts meeting at a joint
+//! of a curve), zero sets leave the corner in several directions and no subdivision parts
+//! them. A small box at that corner is cut out of every function's cells and traced apart,
+//! blown up ([`crate::blowup`]: divided by the distance to the corner, the functions no
+//! longer vanish there); its pieces are joined to the rest where they cross its border, and
+//! where a set of pinch grasps reaches the corner, its boundary runs into it.
 
+use crate::assemble::MATCH_TOL;
 use crate::bisector::DIVISIBLE;
+use crate::blowup::Corner;
+use crate::boundary::{end_at, join_loose, BoundaryPiece, PieceEnd};
 use crate::error::{Error, Result};
 use crate::patch::{common_sign, Patch};
 use crate::system::unique;
@@ -20,20 +30,23 @@ use crate::zeroset::{finish, run_cells, Filters, ZeroSetOptions};
 use bspline::tensor::TensorBSpline;
 use numeric::newton2::{polish, Matrix2, Newton2, StepVerdict, Vector2};
 use numeric::rounding::UNIT_ROUNDOFF;
+use numeric::solve::{bracketed_free, Accuracy};
 use numeric::tolerance::Size;
 use numeric::Rect;
 use serde::{Deserialize, Serialize};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
-/// How close (relative to the domain) an end must lie to the domain's border to end there.
-const ON_BORDER: f64 = 1e-9;
-
 /// A function within this much (relative to its largest coefficient) of zero at a point of
 /// another's zero set is taken as vanishing there: two zero sets that coincide along a
 /// stretch (a circle's two cone conditions, one at each contact) then give that stretch
 /// once, to the function of lower index, rather than cut at every vertex by rounding.
 const ZERO_BAND: f64 = 1e-10;
+
+/// Two functions vanishing at a point vanish along one curve there when their gradients are
+/// parallel to this (the sine of the angle between them): well above the rounding of
+/// gradients of coinciding zero sets, far below any transversal crossing's.
+const ALONG: f64 = 1e-6;
 
 /// Newton steps for a crossing of two zero sets (quadratic convergence from a start within a
 /// chord of the crossing needs a handful).
@@ -61,33 +74,11 @@ pub struct NonNegativeOptions {
     pub pairs: bool,
     /// Points where every function vanishes besides the diagonal (where two contacts on a
     /// curve meet: the corner `(start, end)` of a closed curve's seam, the joint of two
-    /// segments): an arc through one is that point's, not a boundary's, and its patch is
-    /// split on until `excluded` passes over it.
+    /// segments). At a corner of the domain, a small box round the point is traced blown up
+    /// (the zero sets leaving the point are told apart there); elsewhere, an arc through one
+    /// is that point's, not a boundary's, and its patch is split on until `excluded` passes
+    /// over it.
     pub meets: Vec<[f64; 2]>,
-}
-
-/// How a piece of the boundary ends.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum PieceEnd {
-    /// Where the zero set of the function with this index crosses it: the boundary goes on
-    /// along that function's zero set.
-    Crossing(usize),
-    /// On the border of the domain.
-    Border,
-    /// Inside the domain, where the subdivision did not resolve the zero set (a singular
-    /// point or a patch at the size limit): the boundary is not known beyond it.
-    Loose,
-}
-
-/// One piece of the boundary: part of one function's zero set, with the set on its left.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct BoundaryPiece {
-    /// The index of the function whose zero set it is.
-    pub function: usize,
-    /// Its vertices `[t, r]`, on that zero set to rounding; the set lies on the left.
-    pub pts: Vec<[f64; 2]>,
-    /// How it starts and ends; `None` for a closed loop (first vertex repeated at the end).
-    pub ends: Option<[PieceEnd; 2]>,
 }
 
 /// The boundary of `{F₁ ≥ 0, …, Fₙ ≥ 0}` ([`nonnegative_set`]).
@@ -156,7 +147,111 @@ pub fn nonnegative_set(
     let chord_abs =
         opts.zero.settings.chord_tol.get() * opts.zero.settings.size.map_or(diag, Size::get);
     let stores: Vec<Cells> = fs.iter().map(|f| Cells::of(f, opts.pairs)).collect();
-    let map = |t: f64, r: f64| Some([t, r]);
+    let stores = cut_corners(stores, dom, &opts.meets, opts.pairs);
+    // A meeting point at a corner of the domain is blown up (its small cell is traced apart,
+    // in the coordinates where the zero sets leaving it part); any other is split on.
+    let corners: Vec<Corner> = opts
+        .meets
+        .iter()
+        .filter_map(|&m| corner(&stores, dom, m, opts.pairs))
+        .collect();
+    let meets: Vec<[f64; 2]> = opts
+        .meets
+        .iter()
+        .filter(|m| !corners.iter().any(|c| c.meet == **m))
+        .copied()
+        .collect();
+    let skip: Vec<Rect> = corners.iter().map(|c| c.bx).collect();
+    let mut out = trace_set(
+        fs,
+        &stores,
+        &Tracing {
+            dom,
+            zero: &opts.zero,
+            pairs: opts.pairs,
+            meets: &meets,
+            skip: &skip,
+            excluded,
+            map: &|t, r| Some([t, r]),
+            chord_abs,
+        },
+    );
+    if corners.is_empty() {
+        return Ok(out);
+    }
+    let mut pieces = std::mem::take(&mut out.pieces);
+    let unit = Rect::of((0.0, 1.0), (0.0, 1.0));
+    for c in &corners {
+        for (chart, hs) in &c.halves {
+            let sub_stores: Vec<Cells> = hs.iter().map(|h| Cells::of(h, false)).collect();
+            let sub = trace_set(
+                hs,
+                &sub_stores,
+                &Tracing {
+                    dom: unit,
+                    zero: &opts.zero,
+                    pairs: false,
+                    meets: &[],
+                    skip: &[],
+                    excluded: &|bx| excluded(chart.image(bx)),
+                    map: &|w, l| Some(chart.point([w, l])),
+                    chord_abs,
+                },
+            );
+            out.complete &= sub.complete;
+            out.patches += sub.patches;
+            out.points
+                .extend(sub.points.iter().map(|&p| chart.point(p)));
+            out.unresolved
+                .extend(sub.unresolved.iter().map(|&p| chart.point(p)));
+            for mut p in sub.pieces {
+                p.pts.iter_mut().for_each(|x| *x = chart.point(*x));
+                if chart.reverses() {
+                    p.pts.reverse();
+                    if let Some(e) = p.ends.as_mut() {
+                        e.swap(0, 1);
+                    }
+                }
+                // An end on the half's border is on the domain's (the corner, the sides
+                // through it) or inside it, where a piece of the other half or of the rest
+                // of the domain goes on.
+                let (first, last) = (p.pts[0], p.pts[p.pts.len() - 1]);
+                if let Some(e) = p.ends.as_mut() {
+                    for (end, at) in e.iter_mut().zip([first, last]) {
+                        if *end == PieceEnd::Border {
+                            *end = end_at(dom, at);
+                        }
+                    }
+                }
+                pieces.push(p);
+            }
+        }
+    }
+    out.pieces = join_loose(
+        pieces,
+        [MATCH_TOL * dom.t.width(), MATCH_TOL * dom.r.width()],
+    );
+    Ok(out)
+}
+
+/// What one tracing of a set looks at.
+struct Tracing<'a> {
+    dom: Rect,
+    zero: &'a ZeroSetOptions,
+    pairs: bool,
+    /// Points where every function vanishes, split on until `excluded` passes over them.
+    meets: &'a [[f64; 2]],
+    /// Boxes traced apart (a whole cell of every function each).
+    skip: &'a [Rect],
+    excluded: &'a dyn Fn(Rect) -> bool,
+    /// Where chords are measured.
+    map: &'a dyn Fn(f64, f64) -> Option<[f64; 2]>,
+    chord_abs: f64,
+}
+
+/// The boundary pieces of the set of `fs` (with their cells `stores`) on `how.dom`.
+fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNegativeSet {
+    let dom = how.dom;
     let band: Vec<f64> = fs.iter().map(|f| ZERO_BAND * f.max_abs_coef()).collect();
     let mut out = NonNegativeSet {
         complete: true,
@@ -168,7 +263,7 @@ pub fn nonnegative_set(
         // (a function negative there has no zero there either), and the traces split their
         // cells alike: each answer is kept for the traces after.
         let keep = |p: &Patch| {
-            if opts.pairs && p.t0 >= p.r1 {
+            if how.pairs && p.t0 >= p.r1 {
                 return false;
             }
             let key = [p.t0, p.t1, p.r0, p.r1].map(f64::to_bits);
@@ -176,7 +271,9 @@ pub fn nonnegative_set(
                 return known;
             }
             let bx = p.rect();
-            let may = !stores.iter().any(|s| s.negative_on(bx)) && !excluded(bx);
+            let may = !how.skip.iter().any(|s| inside(bx, *s))
+                && !stores.iter().any(|s| s.negative_on(bx))
+                && !(how.excluded)(bx);
             live.borrow_mut().insert(key, may);
             may
         };
@@ -187,8 +284,8 @@ pub fn nonnegative_set(
         let settle = |p: &Patch, pts: &[[f64; 2]]| {
             // Where the contacts meet every function vanishes: an arc through such a point is
             // that point's, not a boundary's. Split on, until the caller's proof excludes it.
-            let meets = (opts.pairs && p.t1 >= p.r0)
-                || opts
+            let meets = (how.pairs && p.t1 >= p.r0)
+                || how
                     .meets
                     .iter()
                     .any(|m| p.t0 <= m[0] && m[0] <= p.t1 && p.r0 <= m[1] && m[1] <= p.r1);
@@ -208,7 +305,14 @@ pub fn nonnegative_set(
             lax: &|_| false,
             settle: &settle,
         };
-        let pieces = run_cells(&store.cells, dom, &opts.zero, &map, chord_abs, &filters);
+        let pieces = run_cells(
+            &store.cells,
+            dom,
+            how.zero,
+            how.map,
+            how.chord_abs,
+            &filters,
+        );
         let z = finish(&pieces, dom, &store.cells);
         out.complete &= z.complete;
         out.patches += z.patches;
@@ -217,6 +321,7 @@ pub fn nonnegative_set(
             k,
             dom,
             band: &band,
+            degenerate: std::cell::Cell::new(None),
         };
         for b in z.branches {
             cut.pieces(b.pts, b.closed, &mut out.pieces);
@@ -225,8 +330,91 @@ pub fn nonnegative_set(
             .extend(z.isolated.into_iter().filter(|&p| cut.others_hold(p)));
         out.unresolved
             .extend(z.singular.into_iter().filter(|&p| cut.others_hold(p)));
+        // (A set that is a curve there is not a region's boundary: said, not traced.)
+        out.unresolved.extend(cut.degenerate.get());
     }
-    Ok(out)
+    out
+}
+
+/// Whether the box `a` lies inside the box `b`.
+fn inside(a: Rect, b: Rect) -> bool {
+    b.t.lo <= a.t.lo && a.t.hi <= b.t.hi && b.r.lo <= a.r.lo && a.r.hi <= b.r.hi
+}
+
+/// The share of its cell's width (in `t`) that a box blown up at a corner of the domain takes:
+/// small, so that little more than the zero sets leaving the corner runs through it.
+const CORNER_SHARE: f64 = 0.125;
+
+/// The ratio of the corner box's share in `r` to its share in `t`: not 1, so that the
+/// diagonal dividing its two halves is not the line of mirror pairs `(u, −u)` of a symmetric
+/// curve, where zero sets cross (a crossing on a half's border would not be joined).
+const CORNER_ASPECT: f64 = 0.618_034;
+
+/// The cells of every function with a small box cut out at each meeting point at a corner of
+/// the domain (split off along a row and a column of cells, both ways on a domain of pairs so
+/// its diagonal cells stay square).
+fn cut_corners(mut stores: Vec<Cells>, dom: Rect, meets: &[[f64; 2]], pairs: bool) -> Vec<Cells> {
+    for m in meets {
+        let Some(first) = stores.first() else {
+            break;
+        };
+        let Some(cell) = first.cells.iter().find(|c| at_corner_of(c, *m)) else {
+            continue;
+        };
+        if !at_corner_of_rect(dom, *m) {
+            continue;
+        }
+        let toward = |from: f64, lo: f64, hi: f64, share: f64| {
+            if from == lo {
+                lo + share * (hi - lo)
+            } else {
+                hi - share * (hi - lo)
+            }
+        };
+        let at_t = toward(m[0], cell.t0, cell.t1, CORNER_SHARE);
+        let at_r = toward(m[1], cell.r0, cell.r1, CORNER_SHARE * CORNER_ASPECT);
+        stores = stores
+            .into_iter()
+            .map(|s| {
+                let s = s.split(0, at_t).split(1, at_r);
+                if pairs {
+                    s.split(0, at_r).split(1, at_t)
+                } else {
+                    s
+                }
+            })
+            .collect();
+    }
+    stores
+}
+
+/// Whether `m` is a corner of the patch `c`.
+fn at_corner_of(c: &Patch, m: [f64; 2]) -> bool {
+    (c.t0 == m[0] || c.t1 == m[0]) && (c.r0 == m[1] || c.r1 == m[1])
+}
+
+/// Whether `m` is a corner of the box `b`.
+fn at_corner_of_rect(b: Rect, m: [f64; 2]) -> bool {
+    (m[0] == b.t.lo || m[0] == b.t.hi) && (m[1] == b.r.lo || m[1] == b.r.hi)
+}
+
+/// The corner of the domain `meet` blown up, when every function's cell there is one box
+/// (not a diagonal cell of a domain of pairs, whose factor `t − r` is divided out).
+fn corner(stores: &[Cells], dom: Rect, meet: [f64; 2], pairs: bool) -> Option<Corner> {
+    if !at_corner_of_rect(dom, meet) {
+        return None;
+    }
+    let mut patches = Vec::with_capacity(stores.len());
+    for s in stores {
+        let at = s.cells.iter().position(|c| at_corner_of(c, meet))?;
+        let c = &s.cells[at];
+        let diagonal = pairs && c.t0 == c.r0 && c.t1 == c.r1;
+        if s.sign[at] < 0.0 || diagonal {
+            return None;
+        }
+        patches.push(c);
+    }
+    Corner::new(meet, &patches)
 }
 
 /// One function's Bézier cells, indexed by their breakpoints, with the sign of each cell's
@@ -256,6 +444,23 @@ impl Cells {
             .iter()
             .map(Patch::from_bezier)
             .collect();
+        let mut sign = vec![1.0; cells.len()];
+        if pairs {
+            for (c, s) in cells.iter_mut().zip(sign.iter_mut()) {
+                if c.t0 == c.r0 && c.t1 == c.r1 {
+                    if let Some(q) = c.divide_diagonal(DIVISIBLE) {
+                        *c = q;
+                        *s = -1.0;
+                    }
+                }
+            }
+        }
+        let scale = cells.iter().map(Patch::max_abs).collect();
+        Self::grid(cells, sign, scale)
+    }
+
+    /// The cells sorted row by row, with their breakpoints.
+    fn grid(cells: Vec<Patch>, sign: Vec<f64>, scale: Vec<f64>) -> Self {
         let breaks = |pick: fn(&Patch) -> (f64, f64)| {
             let mut v: Vec<f64> = cells
                 .iter()
@@ -275,26 +480,46 @@ impl Cells {
             let j = r_breaks.partition_point(|&x| x < p.r0);
             i * (r_breaks.len() - 1) + j
         };
-        cells.sort_by_key(|p| index(p));
-        let mut sign = vec![1.0; cells.len()];
-        if pairs {
-            for (c, s) in cells.iter_mut().zip(sign.iter_mut()) {
-                if c.t0 == c.r0 && c.t1 == c.r1 {
-                    if let Some(q) = c.divide_diagonal(DIVISIBLE) {
-                        *c = q;
-                        *s = -1.0;
-                    }
-                }
-            }
-        }
-        let scale = cells.iter().map(Patch::max_abs).collect();
+        let mut order: Vec<usize> = (0..cells.len()).collect();
+        order.sort_by_key(|&k| index(&cells[k]));
+        let mut taken: Vec<Option<Patch>> = cells.into_iter().map(Some).collect();
         Self {
+            cells: order.iter().filter_map(|&k| taken[k].take()).collect(),
+            sign: order.iter().map(|&k| sign[k]).collect(),
+            scale: order.iter().map(|&k| scale[k]).collect(),
             t_breaks,
             r_breaks,
-            cells,
-            sign,
-            scale,
         }
+    }
+
+    /// The cells with every one that `at` crosses in the direction `axis` (0: `t`, 1: `r`)
+    /// split there (each part keeps its cell's sign, and its scale of rounding).
+    fn split(self, axis: usize, at: f64) -> Self {
+        let mut cells = Vec::with_capacity(self.cells.len() + 8);
+        let (mut sign, mut scale) = (Vec::new(), Vec::new());
+        for ((c, s), e) in self.cells.into_iter().zip(self.sign).zip(self.scale) {
+            let (lo, hi) = if axis == 0 {
+                (c.t0, c.t1)
+            } else {
+                (c.r0, c.r1)
+            };
+            if lo < at && at < hi {
+                let u = (at - lo) / (hi - lo);
+                let (a, b) = if axis == 0 {
+                    c.split_t(u)
+                } else {
+                    c.split_r(u)
+                };
+                cells.extend([a, b]);
+                sign.extend([s, s]);
+                scale.extend([e, e]);
+            } else {
+                cells.push(c);
+                sign.push(s);
+                scale.push(e);
+            }
+        }
+        Self::grid(cells, sign, scale)
     }
 
     /// The function on `bx`, a box inside one cell (`None` if it is in none).
@@ -351,6 +576,9 @@ struct Cutter<'a> {
     dom: Rect,
     /// Per function, the values taken as zero ([`ZERO_BAND`]).
     band: &'a [f64],
+    /// A point where another function vanishes along this zero set but is positive on its
+    /// other side: the set there is that curve alone, with no inside to bound.
+    degenerate: std::cell::Cell<Option<[f64; 2]>>,
 }
 
 impl Cutter<'_> {
@@ -365,27 +593,27 @@ impl Cutter<'_> {
     }
 
     /// Whether function `j` is non-negative at `p`; within its band of zero, only for a
-    /// function after this one (a stretch on both zero sets belongs to the first).
+    /// function after this one (a stretch on both zero sets belongs to the first), and only
+    /// where it grows to the same side as this one (where it grows to the other, the set is
+    /// the curve alone).
     fn holds(&self, j: usize, p: [f64; 2]) -> bool {
         let v = self.fs[j].eval(p[0], p[1]);
+        if v.abs() <= self.band[j] && j > self.k {
+            // Entries: [F, F_r, F_t, F_tr].
+            let a = self.fs[self.k].eval_derivs(p[0], p[1], 1, 1);
+            let b = self.fs[j].eval_derivs(p[0], p[1], 1, 1);
+            let (dot, cross) = (a[1] * b[1] + a[2] * b[2], a[1] * b[2] - a[2] * b[1]);
+            let norms = a[1].hypot(a[2]) * b[1].hypot(b[2]);
+            // (Where they cross, or touch growing the same way, the band rule below holds.)
+            if dot < 0.0 && cross.abs() <= ALONG * norms {
+                self.degenerate.set(Some(p));
+                return false;
+            }
+        }
         if j > self.k {
             v >= -self.band[j]
         } else {
             v > self.band[j]
-        }
-    }
-
-    fn end_of(&self, p: [f64; 2]) -> PieceEnd {
-        let tol_t = ON_BORDER * self.dom.t.width();
-        let tol_r = ON_BORDER * self.dom.r.width();
-        let on = (p[0] - self.dom.t.lo).abs() <= tol_t
-            || (p[0] - self.dom.t.hi).abs() <= tol_t
-            || (p[1] - self.dom.r.lo).abs() <= tol_r
-            || (p[1] - self.dom.r.hi).abs() <= tol_r;
-        if on {
-            PieceEnd::Border
-        } else {
-            PieceEnd::Loose
         }
     }
 
@@ -431,7 +659,7 @@ impl Cutter<'_> {
         }
         let mut state = signs[0].clone();
         let mut run: Option<(Vec<[f64; 2]>, PieceEnd)> =
-            all(&state).then(|| (vec![pts[0]], self.end_of(pts[0])));
+            all(&state).then(|| (vec![pts[0]], end_at(self.dom, pts[0])));
         for i in 0..pts.len() - 1 {
             let (a, b) = (pts[i], pts[i + 1]);
             let mut cuts: Vec<(f64, usize)> = (0..self.fs.len())
@@ -471,7 +699,7 @@ impl Cutter<'_> {
             }
         }
         if let Some((v, start)) = run {
-            let end = self.end_of(v[v.len() - 1]);
+            let end = end_at(self.dom, v[v.len() - 1]);
             if v.len() >= 2 {
                 out.push(self.oriented(v, Some([start, end])));
             }
@@ -485,9 +713,26 @@ impl Cutter<'_> {
         (0..n).any(|i| signs[i] != signs[(i + 1) % n])
     }
 
-    /// Where along the chord from `a` to `b` function `j` changes sign (a share in `[0, 1]`).
+    /// Where along the chord from `a` to `b` function `j` changes sign (a share in `[0, 1]`),
+    /// on the chord's points moved onto this zero set.
     fn along(&self, a: [f64; 2], b: [f64; 2], j: usize) -> f64 {
         let at = |l: f64| self.onto_zero_set([a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1])]);
+        // The value whose sign is `holds`: shifted by the band to the side the band counts.
+        let shift = if j > self.k {
+            self.band[j]
+        } else {
+            -self.band[j]
+        };
+        let value = |l: f64| {
+            let p = at(l);
+            self.fs[j].eval(p[0], p[1]) + shift
+        };
+        let ends = (value(0.0), value(1.0));
+        if ends.0 * ends.1 < 0.0 {
+            return bracketed_free(value, (0.0, 1.0), ends, Accuracy::param(f64::EPSILON));
+        }
+        // (Where the signs come from more than the value, as beside coinciding zero sets:
+        // bisection on them.)
         let start = self.holds(j, a);
         let (mut lo, mut hi) = (0.0, 1.0);
         for _ in 0..CHORD_BISECTIONS {

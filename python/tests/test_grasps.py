@@ -329,8 +329,12 @@ POLYGONS = {
         ("pentagon", 1.0),
         ("triangle", 0.3),
         ("triangle", 1.0),
-        pytest.param("square", 1.0, marks=pytest.mark.xfail(strict=True, reason="grasp crate: the measure-zero line of a corner's two sides traced as a part with area")),
-        pytest.param("rectangle", 1.0, marks=pytest.mark.xfail(strict=True, reason="grasp crate: the measure-zero line of a corner's two sides traced as a part with area")),
+        # Right angles at μ = 1: the pinch grasps of a corner are the line of its two sides'
+        # mirror pairs, a set with no inside (the result says so and certifies nothing).
+        ("square", 1.0),
+        ("rectangle", 1.0),
+        ("triangle", 2.0),
+        ("pentagon", 3.0),
     ],
 )
 def test_polygons_match_the_dense_check(name: str, friction: float) -> None:
@@ -338,6 +342,12 @@ def test_polygons_match_the_dense_check(name: str, friction: float) -> None:
     # never straddle a corner.)
     c = curvekit.Polygon(POLYGONS[name])
     assert dense_check(c, friction) > 0.8 * GRID * (GRID - 1) / 2
+
+
+def test_a_right_angle_at_friction_one_certifies_nothing() -> None:
+    g = curvekit.grasps(curvekit.Polygon(POLYGONS["square"]), 1.0)
+    assert g.regions and not any(r.certified for r in g.regions)
+    assert not g.certified and g.reason
 
 
 def test_profiles_with_corners_are_taken() -> None:

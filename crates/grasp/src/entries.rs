@@ -57,7 +57,12 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     if !complete {
         doubts.add(Doubt::SearchLimit);
     }
-    let lines = corner_lines(&model, opts.friction, widths, &mut doubts)?;
+    let mut line_doubts = Doubts::none();
+    let lines = corner_lines(&model, opts.friction, widths, &mut line_doubts)?;
+    // A corner line's end left unproven may join two regions or part one: as with an
+    // unresolved boundary, no region's identity is proven then.
+    let lines_unproven = !line_doubts.is_empty();
+    doubts.join(line_doubts);
     // (The chord tolerance of the cells, in the profile's parameter where a cell is a unit.)
     let chord = opts.settings.chord_tol.get() * std::f64::consts::SQRT_2;
     let alpha = opts.friction.atan();
@@ -72,11 +77,12 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     let raw = regions(&model, &traced, &lines, chord, &holds);
     let seeds = antipodal_seeds(boundary, profile)?;
     let proof = Positivity::new(&model, &cells);
-    let unresolved = raw.iter().any(|r| {
-        r.doubts
-            .iter()
-            .any(|d| *d == Doubt::GraspBoundaryUnresolved)
-    });
+    let unresolved = lines_unproven
+        || raw.iter().any(|r| {
+            r.doubts
+                .iter()
+                .any(|d| *d == Doubt::GraspBoundaryUnresolved)
+        });
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
         let (center, proven) = most_robust(&model, r, &seeds, chord);
@@ -110,8 +116,8 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
             (b, _) => b,
         }
         .map(|(s, t, _)| (s, t));
-        // A boundary left unresolved anywhere may have cut a region in two or joined two:
-        // no region's identity is proven then.
+        // A boundary or corner line left unresolved anywhere may have cut a region in two or
+        // joined two: no region's identity is proven then.
         let certified = r.doubts.is_empty() && !unresolved;
         doubts.join(region_doubts);
         found.push(output(&model, chord, r, center, contact, certified));

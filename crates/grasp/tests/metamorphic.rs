@@ -7,11 +7,12 @@
 
 mod common;
 
-use common::{chord, holders, lines, off_lines, on_torus};
+use common::{chord, holders, lines, off_lines, on_torus, Documented};
 use curve::shapes::Ellipse;
 use curve::{ParamCurve, SplineCurve};
 use grasp::{grasps, GraspOptions, Grasps};
 use proptest::prelude::*;
+use testkit::profiles::bezier_chain_profile;
 use testkit::stars::star;
 
 /// Grid points per side.
@@ -83,12 +84,23 @@ fn region_counts(points: &[[f64; 2]], degree: usize, mu: f64) -> Result<[usize; 
 /// The shift `m` (a whole number of knot spans) with `moved(u) = original(sign·u + m)`, if
 /// any.
 fn knot_shift(original: &SplineCurve, moved: &SplineCurve, sign: f64) -> Option<f64> {
-    let (a, b) = original.domain();
-    let n = (b - a).round() as i64;
     let size = original
         .control_points()
         .iter()
         .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    whole_shift(original, moved, sign, size)
+}
+
+/// The whole number `m` with `moved(u) = original(sign·u + m)` (read modulo the period), if
+/// any, `size` the curves' size.
+fn whole_shift(
+    original: &dyn ParamCurve,
+    moved: &dyn ParamCurve,
+    sign: f64,
+    size: f64,
+) -> Option<f64> {
+    let (a, b) = original.domain();
+    let n = (b - a).round() as i64;
     (0..n).map(|m| m as f64).find(|&m| {
         (0..7).all(|k| {
             let u = a + (b - a) * (k as f64 + 0.13) / 7.0;
@@ -245,4 +257,45 @@ fn regions_map_by_reversal(c: &SplineCurve, d: &SplineCurve, mu: f64) -> Result<
     // (A pair (s, t) of the curve is the pair (m − s, m − t) of its reversal.)
     same_membership(c.domain(), &opts, &g, &h, |[s, t]| [m - s, m - t])?;
     Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(24)))]
+
+    /// A profile with corners reassembled from another segment, or run backwards: the same
+    /// regions, mapped by the shift (and reversal) of the document's parameter. Frictions up
+    /// to 1.5 bring pinch grasps at sharp corners.
+    #[test]
+    fn a_profile_started_elsewhere_or_run_backwards_keeps_the_regions(
+        radii in prop::collection::vec(0.6..1.0f64, 3..=6),
+        wobble in prop::collection::vec((-0.2..0.2f64, -0.2..0.2f64), 6),
+        smooth in prop::collection::vec(any::<bool>(), 6),
+        start in 0usize..6,
+        reverse in any::<bool>(),
+        mu in 0.05..1.5f64,
+    ) {
+        let n = radii.len();
+        let chain = |start: usize, reverse: bool| {
+            bezier_chain_profile(&radii, &wobble[..n], &smooth[..n], start % n, reverse)
+        };
+        let (Some(p), Some(q)) = (chain(0, false), chain(start, reverse)) else { return Ok(()) };
+        let opts = GraspOptions::friction(mu);
+        let computed = |p: &curve::Profile| {
+            let g = grasps(p, &opts).map_err(|e| TestCaseError::fail(format!("grasps: {e}")))?;
+            prop_assert!(g.complete);
+            Ok(g)
+        };
+        let (g, h) = (computed(&p)?, computed(&q)?);
+        let (dp, dq) = (Documented(p.clone()), Documented(q.clone()));
+        let sign = if reverse { -1.0 } else { 1.0 };
+        let m = whole_shift(&dp, &dq, sign, 2.0);
+        prop_assert!(m.is_some(), "no map u ↦ ±u + m takes one profile onto the other");
+        let m = m.unwrap_or_default();
+        prop_assert_eq!(g.regions.len(), h.regions.len());
+        // (The pair (s, t) of the first is the pair (sign (s − m), sign (t − m)) of the second.)
+        let compared = same_membership(dp.domain(), &opts, &g, &h, |[s, t]| {
+            [sign * (s - m), sign * (t - m)]
+        })?;
+        prop_assert!(compared > GRID * GRID / 4);
+    }
 }

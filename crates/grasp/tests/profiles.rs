@@ -45,16 +45,14 @@ fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
     let opts = GraspOptions::friction(mu);
     let g = grasps(p, &opts).map_err(|e| TestCaseError::fail(format!("{e}")))?;
     prop_assert!(g.complete);
-    // A result whose boundary was not resolved says so, and certifies no region (today: a
-    // corner sharp enough for pinch grasps right at its apex, interior angle below 2 atan μ,
-    // where every condition vanishes); every other result is held to the dense check.
-    if g.doubts
-        .iter()
-        .any(|d| *d == Doubt::GraspBoundaryUnresolved)
-    {
-        prop_assert!(g.regions.iter().all(|r| !r.certified));
-        return Ok(());
-    }
+    // Every boundary is resolved, corners sharper than twice the friction angle too (their
+    // pinch grasps at the apex are traced in the blown-up corner).
+    prop_assert!(
+        !g.doubts
+            .iter()
+            .any(|d| *d == Doubt::GraspBoundaryUnresolved),
+        "a boundary left unresolved"
+    );
     let (a, b) = p.document_domain();
     let n = p.segments().len() as f64;
     // The chord tolerance is per cell (a pair of segments): a few of them, in the document's
@@ -125,5 +123,62 @@ proptest! {
         let n = radii.len();
         let Some(p) = bezier_chain_profile(&radii, &wobble[..n], &smooth[..n], 0, false) else { return Ok(()) };
         check(&p, mu)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(24)))]
+
+    /// Curved triangles (three cubic Béziers meeting at corners) at frictions up to 2: corners
+    /// sharper than twice the friction angle, whose pinch grasps reach the apex, where every
+    /// condition vanishes.
+    #[test]
+    fn pinch_grasps_of_sharp_corners_match_the_dense_check(
+        radii in prop::collection::vec(0.6..1.0f64, 3),
+        wobble in prop::collection::vec((-0.2..0.2f64, -0.2..0.2f64), 3),
+        mu in 0.5..2.0f64,
+    ) {
+        let Some(p) = bezier_chain_profile(&radii, &wobble, &[false; 3], 0, false) else { return Ok(()) };
+        check(&p, mu)?;
+    }
+}
+
+/// Polygons at frictions above 1: every corner sharper than twice the friction angle, with
+/// pinch grasps at its apex, resolved and matching the dense check.
+#[test]
+fn polygons_at_high_friction_match_the_dense_check() {
+    let shapes: [&[[f64; 2]]; 3] = [
+        &[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
+        &[[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [0.0, 1.0]],
+        &[[0.0, 0.0], [3.0, 0.0], [1.0, 1.5]],
+    ];
+    for pts in shapes {
+        for mu in [1.01, 1.5, 2.5] {
+            let p = testkit::outlines::polygon(pts);
+            if let Err(e) = check(&p, mu) {
+                panic!("{pts:?}, μ = {mu}: {e}");
+            }
+        }
+    }
+}
+
+/// A right angle at μ = 1 exactly: its pinch grasps are the line of mirror pairs of its two
+/// sides, a set with no inside. The result says its boundary is unresolved and certifies no
+/// region (it once traced that line as a region with area, and certified it).
+#[test]
+fn a_right_angle_at_friction_one_certifies_nothing() {
+    for pts in [
+        [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
+        [[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [0.0, 1.0]],
+    ] {
+        let p = testkit::outlines::polygon(&pts);
+        let g = grasps(&p, &GraspOptions::friction(1.0)).unwrap();
+        assert!(
+            g.doubts
+                .iter()
+                .any(|d| *d == Doubt::GraspBoundaryUnresolved),
+            "{pts:?}"
+        );
+        assert!(g.regions.iter().all(|r| !r.certified), "{pts:?}");
     }
 }

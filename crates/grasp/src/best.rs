@@ -127,39 +127,61 @@ pub(crate) fn most_robust(
         return (region.parts.first().map_or([0.0; 2], |p| p[0]), false);
     };
     if in_part {
-        let (lo, hi) = bounds(&region.parts[0]);
-        let mut step = (hi[0] - lo[0]).max(hi[1] - lo[1]) / SAMPLES_ACROSS as f64;
-        for _ in 0..SEARCH_STEPS {
-            if step <= FINEST_STEP {
-                break;
-            }
-            let mut moved = false;
-            for (ds, dt) in [
-                (1.0, 0.0),
-                (-1.0, 0.0),
-                (0.0, 1.0),
-                (0.0, -1.0),
-                (1.0, 1.0),
-                (-1.0, -1.0),
-                (1.0, -1.0),
-                (-1.0, 1.0),
-            ] {
-                let y = [x[0] + ds * step, x[1] + dt * step];
-                let ay = angle(y);
-                // (Staying in the region, a chord inside its polylines: where the least
-                // friction falls toward the region's edge, as on a width limit, the best grasp
-                // is the pair a chord inside, whichever side of the exact edge its polyline
-                // passes.)
-                if ay < ax && holds(region, n, y[0], y[1]) && depth(region, y) >= inside_by {
-                    (x, ax) = (y, ay);
-                    moved = true;
-                    break;
-                }
-            }
-            if !moved {
-                step *= 0.5;
-            }
-        }
+        (x, ax) = descend(model, region, x, inside_by);
     }
     (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
+}
+
+/// A compass search for the pair of least slip angle from `start` (a pair of the region), by
+/// steps from a sixteenth of its largest part's box down, staying in the region a chord
+/// (`inside_by`) inside its polylines: the pair found and its slip angle.
+pub(crate) fn descend(
+    model: &Model<'_>,
+    region: &RawRegion,
+    start: [f64; 2],
+    inside_by: f64,
+) -> ([f64; 2], f64) {
+    let n = model.n();
+    let angle = |p: [f64; 2]| slip_angle(model, p[0], p[1]);
+    let (mut x, mut ax) = (start, angle(start));
+    let mut step = region
+        .parts
+        .iter()
+        .map(|part| {
+            let (lo, hi) = bounds(part);
+            (hi[0] - lo[0]).max(hi[1] - lo[1])
+        })
+        .fold(0.0, f64::max)
+        / SAMPLES_ACROSS as f64;
+    for _ in 0..SEARCH_STEPS {
+        if step <= FINEST_STEP {
+            break;
+        }
+        let mut moved = false;
+        for (ds, dt) in [
+            (1.0, 0.0),
+            (-1.0, 0.0),
+            (0.0, 1.0),
+            (0.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, -1.0),
+            (1.0, -1.0),
+            (-1.0, 1.0),
+        ] {
+            let y = [x[0] + ds * step, x[1] + dt * step];
+            let ay = angle(y);
+            // (Staying in the region, a chord inside its polylines: where the least friction
+            // falls toward the region's edge, as on a width limit, the best grasp is the pair
+            // a chord inside, whichever side of the exact edge its polyline passes.)
+            if ay < ax && holds(region, n, y[0], y[1]) && depth(region, y) >= inside_by {
+                (x, ax) = (y, ay);
+                moved = true;
+                break;
+            }
+        }
+        if !moved {
+            step *= 0.5;
+        }
+    }
+    (x, ax)
 }

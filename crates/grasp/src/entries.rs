@@ -1,7 +1,7 @@
 //! The crate's command: every force-closure grasp of a closed curve or profile.
 
 use crate::assemble::{regions, RawRegion};
-use crate::best::most_robust;
+use crate::best::{descend, most_robust};
 use crate::cells::{cells, trace};
 use crate::contact::{around, Positivity};
 use crate::corners::corner_lines;
@@ -9,9 +9,10 @@ use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
-use crate::polyline::{bounds, inside, signed_area};
-use crate::quality::{min_friction, slip_angle};
-use crate::region_set::depth;
+use crate::polyline::{bounds, signed_area};
+use crate::proof::{none_below, Below};
+use crate::quality::{force_closure, min_friction};
+use crate::region_set::{deepest, depth, in_triangle};
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::distance_to_segment;
 use curve::{Boundary, ParamCurve, Profile};
@@ -66,14 +67,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     // (The chord tolerance of the cells, in the profile's parameter where a cell is a unit.)
     let chord = opts.settings.chord_tol.get() * std::f64::consts::SQRT_2;
     let alpha = opts.friction.atan();
-    let holds = |p: [f64; 2]| {
-        let (a, _) = model.point_tangent(p[0]);
-        let (b, _) = model.point_tangent(p[1]);
-        let d = (b[0] - a[0]).hypot(b[1] - a[1]);
-        slip_angle(&model, p[0], p[1]) <= alpha
-            && widths[0].is_none_or(|w| d >= w)
-            && widths[1].is_none_or(|w| d <= w)
-    };
+    let holds = |p: [f64; 2]| force_closure(&model, alpha, widths, p);
     let raw = regions(&model, &traced, &lines, chord, &holds);
     let seeds = antipodal_seeds(boundary, profile)?;
     let proof = Positivity::new(&model, &cells);
@@ -85,7 +79,24 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         });
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
-        let (center, proven) = most_robust(&model, r, &seeds, chord);
+        let (mut center, mut proven) = most_robust(&model, r, &seeds, chord);
+        // A best grasp found by search is proven the most robust (to a share of its friction)
+        // where the set at a friction just below holds no pair of the region; a pair of it
+        // that does starts the search again.
+        for _ in 0..PROOF_ROUNDS {
+            let least = min_friction(&model, center[0], center[1]);
+            if proven || !(least > 0.0 && least.is_finite()) {
+                break;
+            }
+            match none_below(&model, opts, widths, r, least, chord)? {
+                Below::None => proven = true,
+                Below::Unknown => break,
+                Below::Beaten(p) => {
+                    let (x, _) = descend(&model, r, p, chord);
+                    center = in_triangle(model.n(), x[0], x[1]);
+                }
+            }
+        }
         let mut region_doubts = r.doubts.clone();
         if !proven {
             region_doubts.add(Doubt::GraspBestUnproven);
@@ -163,38 +174,16 @@ fn follow(
     }
 }
 
-/// Centres tried for a region's contact region besides its best grasp.
-const CONTACT_CENTERS: usize = 4;
-
-/// Samples across a part's box for its deepest points.
-const DEPTH_SAMPLES: usize = 12;
-
 /// A deeper point is tried as a contact region's centre when it lies this many times deeper
 /// than the best grasp.
 const DEEPER: f64 = 2.0;
 
-/// The `count` sampled points of `r`'s parts farthest from their boundaries, with their
-/// depths.
-fn deepest(r: &RawRegion, count: usize) -> Vec<([f64; 2], f64)> {
-    let mut found: Vec<([f64; 2], f64)> = Vec::new();
-    for part in &r.parts {
-        let (lo, hi) = bounds(part);
-        for i in 0..DEPTH_SAMPLES {
-            for j in 0..DEPTH_SAMPLES {
-                let at = |k: usize, d: usize| {
-                    lo[d] + (k as f64 + 0.5) / DEPTH_SAMPLES as f64 * (hi[d] - lo[d])
-                };
-                let p = [at(i, 0), at(j, 1)];
-                if inside(part, p) && !r.holes.iter().any(|h| inside(h, p)) {
-                    found.push((p, depth(r, p)));
-                }
-            }
-        }
-    }
-    found.sort_by(|a, b| b.1.total_cmp(&a.1));
-    found.truncate(count);
-    found
-}
+/// Times a best grasp found by search is beaten by the set at a friction just below and
+/// searched again from the pair that beat it, before it is left unproven.
+const PROOF_ROUNDS: usize = 2;
+
+/// Centres tried for a region's contact region besides its best grasp.
+const CONTACT_CENTERS: usize = 4;
 
 /// The antipodal pairs and the middles of the families, in the profile's parameter.
 fn antipodal_seeds(boundary: Boundary<'_>, profile: &Profile) -> Result<Vec<[f64; 2]>> {

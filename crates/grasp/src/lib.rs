@@ -29,6 +29,7 @@ mod model;
 mod near;
 mod options;
 mod polyline;
+mod proof;
 mod quality;
 mod region_set;
 mod types;

@@ -55,3 +55,19 @@ pub(crate) fn min_friction(model: &Model<'_>, s: f64, t: f64) -> f64 {
         a.tan()
     }
 }
+
+/// Whether the pair `p` (profile parameters) is force closure for the friction angle `alpha`
+/// within the width limits `widths` (in the frame's units).
+pub(crate) fn force_closure(
+    model: &Model<'_>,
+    alpha: f64,
+    widths: [Option<f64>; 2],
+    p: [f64; 2],
+) -> bool {
+    let (a, _) = model.point_tangent(p[0]);
+    let (b, _) = model.point_tangent(p[1]);
+    let d = (b[0] - a[0]).hypot(b[1] - a[1]);
+    slip_angle(model, p[0], p[1]) <= alpha
+        && widths[0].is_none_or(|w| d >= w)
+        && widths[1].is_none_or(|w| d <= w)
+}

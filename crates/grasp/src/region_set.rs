@@ -1,7 +1,7 @@
 //! A region as a set of pairs: which pairs it holds, on the whole torus of parameters.
 
 use crate::assemble::RawRegion;
-use crate::polyline::inside;
+use crate::polyline::{bounds, inside};
 use curve::distance_to_segment;
 
 /// How close (in the profile's parameter) a pair must lie to a corner line or a single pair
@@ -53,4 +53,30 @@ pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
         .chain(&region.holes)
         .flat_map(|l| l.windows(2).map(|w| distance_to_segment(p, w[0], w[1])))
         .fold(f64::INFINITY, f64::min)
+}
+
+/// Samples across a part's box for its deepest points.
+const DEPTH_SAMPLES: usize = 12;
+
+/// The `count` sampled points of `r`'s parts farthest from their boundaries, with their
+/// depths.
+pub(crate) fn deepest(r: &RawRegion, count: usize) -> Vec<([f64; 2], f64)> {
+    let mut found: Vec<([f64; 2], f64)> = Vec::new();
+    for part in &r.parts {
+        let (lo, hi) = bounds(part);
+        for i in 0..DEPTH_SAMPLES {
+            for j in 0..DEPTH_SAMPLES {
+                let at = |k: usize, d: usize| {
+                    lo[d] + (k as f64 + 0.5) / DEPTH_SAMPLES as f64 * (hi[d] - lo[d])
+                };
+                let p = [at(i, 0), at(j, 1)];
+                if inside(part, p) && !r.holes.iter().any(|h| inside(h, p)) {
+                    found.push((p, depth(r, p)));
+                }
+            }
+        }
+    }
+    found.sort_by(|a, b| b.1.total_cmp(&a.1));
+    found.truncate(count);
+    found
 }

@@ -215,14 +215,11 @@ fn the_best_grasp_keeps_to_the_width_limits() {
     dense_check(&c, &opts).unwrap_or_else(|e| panic!("{c:?}: {e}"));
 }
 
-/// The smallest case found of the best grasp's failure: on this rational quadratic (μ =
-/// 0.4169), the region without an antipodal pair reports a best grasp needing friction
-/// 0.33441 where pairs near the knot t = 5 need 0.3314 (the crate reports
-/// `GraspBestUnproven`: its local search stops short of the minimum, which sits on a knot,
-/// where the curvature jumps).
+/// The smallest case found of the local search's failure: on this rational quadratic (μ =
+/// 0.4169), the search stopped at a best grasp needing friction 0.33441 where pairs near the
+/// knot t = 5 need 0.3314 (the minimum sits on a knot, where the curvature jumps). The set
+/// traced again just below 0.33441 holds those pairs, and the search restarts from them.
 #[test]
-#[ignore = "crate defect: a region's best grasp is not its most robust (0.33441 against \
-            0.3314 near the knot t = 5)"]
 fn the_best_grasp_is_the_most_robust_at_a_knot() {
     let seed = [
         0.3303152248646873,

@@ -209,7 +209,8 @@ pub enum Doubt {
     /// A grasp region is a single point (force closure only where two conditions touch),
     /// found within rounding.
     GraspPointRegion,
-    /// A grasp region's most robust grasp was found by a local search, not proven.
+    /// A grasp region's most robust grasp was found by a local search, not proven (the set
+    /// traced again just below its friction could not be shown to miss the region).
     GraspBestUnproven,
 
     // The tool's inputs.

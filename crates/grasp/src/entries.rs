@@ -180,7 +180,7 @@ const DEEPER: f64 = 2.0;
 
 /// Times a best grasp found by search is beaten by the set at a friction just below and
 /// searched again from the pair that beat it, before it is left unproven.
-const PROOF_ROUNDS: usize = 2;
+const PROOF_ROUNDS: usize = 3;
 
 /// Centres tried for a region's contact region besides its best grasp.
 const CONTACT_CENTERS: usize = 4;

@@ -1,10 +1,13 @@
-//! A region's least friction, proven: the set traced again at a friction just below its best
-//! grasp's holds no pair of the region. The sets grow with the friction, so every pair of the
-//! region then needs at least that much, and the best grasp is the most robust to within that
-//! gap.
+//! A region's least friction, proven: the set at a friction just below its best grasp's has
+//! no pair in the region. The sets grow with the friction, so every pair of the region then
+//! needs at least that much, and the best grasp is the most robust to within that gap.
+//!
+//! The lower set is traced only on the box of each of the region's parts (its functions
+//! restricted there): its boundary pieces must all keep clear of the region, and where none
+//! crosses the box, one point tells whether the box is all in it or all out.
 
-use crate::assemble::{regions, RawRegion};
-use crate::cells::{cells_where, trace};
+use crate::assemble::RawRegion;
+use crate::cells::cells_where;
 use crate::corners::corner_lines;
 use crate::error::Result;
 use crate::model::Model;
@@ -13,8 +16,10 @@ use crate::options::GraspOptions;
 use crate::polyline::bounds;
 use crate::quality::{force_closure, min_friction};
 use crate::region_set::{deepest, depth, holds};
-use numeric::certificate::{Doubt, Doubts};
-use std::collections::BTreeSet;
+use curve::distance_to_segment;
+use numeric::certificate::Doubts;
+use numeric::tolerance::Size;
+use zeroset::{nonnegative_set, NonNegativeOptions, ZeroSetOptions};
 
 /// The share of its friction below a best grasp's at which the set is traced again: the best
 /// grasp is proven the most robust of its region to this share.
@@ -28,18 +33,16 @@ const LINE_SAMPLES: usize = 16;
 pub(crate) enum Below {
     /// No pair of the region is force closure at the lower friction.
     None,
-    /// This pair of the region is (a point deep inside a region of the lower set, on a
-    /// corner line of it, or a single pair of it).
+    /// This pair of the region, a chord inside it, is (and needs less friction than the best
+    /// grasp).
     Beaten([f64; 2]),
-    /// Not proven either way (the lower set left unresolved, or a part of it too thin to
-    /// tell).
+    /// Not proven either way (the lower set left unresolved, a part beside a point where
+    /// the contacts meet, or a piece of the lower set within a chord of the region's edge).
     Unknown,
 }
 
 /// Whether any pair of `region` (a region of the set at `opts.friction`, whose best grasp
-/// needs the friction `least`) is force closure at a friction [`BEST_GAP`] below: the set
-/// there is traced on the cells the region's box meets, and its regions, corner lines and
-/// points are tested against `region`.
+/// needs the friction `least`) is force closure at a friction [`BEST_GAP`] below.
 pub(crate) fn none_below(
     model: &Model<'_>,
     opts: &GraspOptions,
@@ -50,131 +53,211 @@ pub(crate) fn none_below(
 ) -> Result<Below> {
     let friction = least * (1.0 - BEST_GAP);
     let lower = GraspOptions { friction, ..*opts };
-    let wanted = cells_met(model.n(), region, chord);
+    let n = model.n();
     let near = NearContacts::new(model, friction);
-    let mut traced = Vec::with_capacity(wanted.len());
-    for cell in cells_where(model, &lower, widths, |i, j| wanted.contains(&(i, j)))? {
-        let t = trace(model, &cell, &lower, &near)?;
-        if !t.complete || t.unresolved {
+    // A pair the lower set holds beats the best grasp where it lies a chord inside the
+    // region; one clearly outside says nothing of it.
+    let beats = |p: [f64; 2]| {
+        holds(region, n, p[0], p[1])
+            && depth(region, p) >= chord
+            && min_friction(model, p[0], p[1]) < least
+    };
+    let outside = |p: [f64; 2]| !holds(region, n, p[0], p[1]) && depth(region, p) > 2.0 * chord;
+    let edges: Vec<[[f64; 2]; 2]> = region
+        .parts
+        .iter()
+        .chain(&region.holes)
+        .flat_map(|l| l.windows(2).map(|w| [w[0], w[1]]))
+        .collect();
+    for part in &region.parts {
+        let Some(lower_set) = lower_set_round(model, &lower, widths, &near, part, chord)? else {
             return Ok(Below::Unknown);
+        };
+        // Of the lower set's pairs in the region, the best; and the middle of them, nearer
+        // its least friction where the lower set there is a small blob round it.
+        let inside: Vec<[f64; 2]> = lower_set
+            .pieces
+            .iter()
+            .flatten()
+            .chain(&lower_set.points)
+            .copied()
+            .filter(|&p| beats(p))
+            .collect();
+        if !inside.is_empty() {
+            let k = inside.len() as f64;
+            let middle = inside
+                .iter()
+                .fold([0.0; 2], |m, p| [m[0] + p[0] / k, m[1] + p[1] / k]);
+            let friction_at = |p: &[f64; 2]| min_friction(model, p[0], p[1]);
+            let best = inside
+                .iter()
+                .copied()
+                .chain(beats(middle).then_some(middle))
+                .min_by(|a, b| friction_at(a).total_cmp(&friction_at(b)))
+                .unwrap_or(inside[0]);
+            return Ok(Below::Beaten(best));
         }
-        traced.push(((cell.i, cell.j), t));
+        for p in &lower_set.points {
+            if !outside(*p) {
+                return Ok(Below::Unknown);
+            }
+        }
+        for piece in &lower_set.pieces {
+            // Each chord of the piece (within the tolerance of the lower set's boundary) keeps
+            // clear of the region: its ends outside, and apart from every edge of the region.
+            for w in piece.windows(2) {
+                let clear = outside(w[0])
+                    && outside(w[1])
+                    && edges
+                        .iter()
+                        .all(|e| segments_apart(w[0], w[1], e[0], e[1]) > 2.0 * chord);
+                if !clear {
+                    return Ok(Below::Unknown);
+                }
+            }
+        }
+        if lower_set.pieces.is_empty() && lower_set.points.is_empty() {
+            // No boundary crosses the box: it is all in the lower set or all out, as one
+            // point of the part is.
+            let single = RawRegion {
+                parts: vec![part.clone()],
+                holes: region.holes.clone(),
+                ..RawRegion::default()
+            };
+            let Some(&(p, _)) = deepest(&single, 1).first() else {
+                return Ok(Below::Unknown);
+            };
+            if force_closure(model, friction.atan(), widths, p) {
+                return Ok(if beats(p) {
+                    Below::Beaten(p)
+                } else {
+                    Below::Unknown
+                });
+            }
+        }
     }
+    // Fingers at a corner, and single pairs of corners, that hold at the lower friction.
     let mut doubts = Doubts::none();
     let lines = corner_lines(model, friction, widths, &mut doubts)?;
     if !doubts.is_empty() {
         return Ok(Below::Unknown);
     }
-    let alpha = friction.atan();
-    let holds_lower = |p: [f64; 2]| force_closure(model, alpha, widths, p);
-    let found = regions(model, &traced, &lines, chord, &holds_lower);
-    let n = model.n();
-    let (lo, hi) = region_box(region, chord);
-    let near_region = |(a, b): ([f64; 2], [f64; 2])| {
-        a[0] <= hi[0] && b[0] >= lo[0] && a[1] <= hi[1] && b[1] >= lo[1]
-    };
-    for q in &found {
-        if q.doubts
-            .iter()
-            .any(|d| *d == Doubt::GraspBoundaryUnresolved)
-        {
-            return Ok(Below::Unknown);
-        }
-        for part in &q.parts {
-            if !near_region(bounds(part)) {
-                continue;
-            }
-            // The part's vertices lie on the lower set's boundary (to rounding): one clearly
-            // outside the region puts the whole part outside (the part lies in one region
-            // of the higher set); one inside it is a pair of the region needing less
-            // friction than the best grasp, where it does.
-            // (A pair within a chord of the region's edge is not taken: best grasps keep a
-            // chord inside, as on a width limit, where the least friction lies on the edge.)
-            let inside = |p: [f64; 2]| holds(region, n, p[0], p[1]) && depth(region, p) >= chord;
-            let mut outside = false;
-            for &v in part {
-                if holds(region, n, v[0], v[1]) {
-                    if inside(v) && min_friction(model, v[0], v[1]) < least {
-                        // (The middle of the part, where the part is wide enough to have
-                        // one inside the region, is nearer the least friction.)
-                        let single = RawRegion {
-                            parts: vec![part.clone()],
-                            holes: q.holes.clone(),
-                            ..RawRegion::default()
-                        };
-                        let middle = deepest(&single, 1)
-                            .first()
-                            .map(|&(p, _)| p)
-                            .filter(|&p| inside(p) && min_friction(model, p[0], p[1]) < least);
-                        return Ok(Below::Beaten(middle.unwrap_or(v)));
-                    }
-                } else if depth(region, v) > 2.0 * chord {
-                    outside = true;
-                    break;
+    for line in &lines {
+        let u = line.joint as f64;
+        for piece in &line.pieces {
+            for k in 0..=LINE_SAMPLES {
+                let v = piece[0] + k as f64 / LINE_SAMPLES as f64 * (piece[1] - piece[0]);
+                let p = [u.min(v), u.max(v)];
+                if holds(region, n, p[0], p[1]) {
+                    return Ok(if min_friction(model, p[0], p[1]) < least {
+                        Below::Beaten(p)
+                    } else {
+                        Below::Unknown
+                    });
                 }
             }
-            if !outside {
-                return Ok(Below::Unknown);
-            }
-        }
-        // A finger at a corner, or a single pair, that holds at the lower friction.
-        let on_line = q.lines.iter().find_map(|l| {
-            (0..=LINE_SAMPLES).find_map(|k| {
-                let x = k as f64 / LINE_SAMPLES as f64;
-                let p = [
-                    l[0][0] + x * (l[1][0] - l[0][0]),
-                    l[0][1] + x * (l[1][1] - l[0][1]),
-                ];
-                holds(region, n, p[0], p[1]).then_some(p)
-            })
-        });
-        let at_point = || {
-            q.points
-                .iter()
-                .copied()
-                .find(|p| holds(region, n, p[0], p[1]))
-        };
-        if let Some(p) = on_line.or_else(at_point) {
-            // (Its friction at most the lower one's but for rounding.)
-            return Ok(if min_friction(model, p[0], p[1]) < least {
-                Below::Beaten(p)
-            } else {
-                Below::Unknown
-            });
         }
     }
     Ok(Below::None)
 }
 
-/// The box of a region's parts, corner lines and points, grown by `grow`.
-fn region_box(region: &RawRegion, grow: f64) -> ([f64; 2], [f64; 2]) {
-    let pts = region
-        .parts
-        .iter()
-        .flatten()
-        .chain(region.lines.iter().flatten())
-        .chain(&region.points);
-    let (lo, hi) = pts.fold(
-        ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
-        |(lo, hi), p| {
-            (
-                [lo[0].min(p[0]), lo[1].min(p[1])],
-                [hi[0].max(p[0]), hi[1].max(p[1])],
-            )
-        },
-    );
-    ([lo[0] - grow, lo[1] - grow], [hi[0] + grow, hi[1] + grow])
+/// The boundary of the set at a lower friction on a box, in the profile's parameter.
+struct LowerSet {
+    /// Its pieces.
+    pieces: Vec<Vec<[f64; 2]>>,
+    /// Its single pairs.
+    points: Vec<[f64; 2]>,
 }
 
-/// The cells `(i, j)`, `i ≤ j`, that the region's box meets.
-fn cells_met(n: usize, region: &RawRegion, grow: f64) -> BTreeSet<(usize, usize)> {
-    let (lo, hi) = region_box(region, grow);
-    let index = |x: f64| (x.floor().max(0.0) as usize).min(n - 1);
-    let mut out = BTreeSet::new();
-    for i in index(lo[0])..=index(hi[0]) {
-        for j in index(lo[1])..=index(hi[1]) {
-            out.insert((i.min(j), i.max(j)));
-        }
+/// The lower set's boundary on the box of one part of a region (grown by two chords, inside
+/// the part's cell): `None` where it is not resolved there, or the box reaches a point where
+/// the contacts meet (the diagonal, a joint, the seam).
+fn lower_set_round(
+    model: &Model<'_>,
+    lower: &GraspOptions,
+    widths: [Option<f64>; 2],
+    near: &NearContacts<'_>,
+    part: &[[f64; 2]],
+    chord: f64,
+) -> Result<Option<LowerSet>> {
+    let n = model.n();
+    let (lo, hi) = bounds(part);
+    let cell = |x: f64| ((x.floor().max(0.0)) as usize).min(n - 1);
+    let (i, j) = (cell(0.5 * (lo[0] + hi[0])), cell(0.5 * (lo[1] + hi[1])));
+    let grow = 2.0 * chord;
+    let (s0, s1) = (
+        (lo[0] - grow).max(i as f64),
+        (hi[0] + grow).min((i + 1) as f64),
+    );
+    let (t0, t1) = (
+        (lo[1] - grow).max(j as f64),
+        (hi[1] + grow).min((j + 1) as f64),
+    );
+    let meets_diagonal = i == j && s1 >= t0;
+    let meets_joint = j == i + 1 && s1 >= (i + 1) as f64 && t0 <= j as f64;
+    let meets_seam = i == 0 && j == n - 1 && s0 <= 0.0 && t1 >= n as f64;
+    if i > j || !(s0 < s1 && t0 < t1) || meets_diagonal || meets_joint || meets_seam {
+        return Ok(None);
     }
-    out
+    let Some(c) = cells_where(model, lower, widths, |a, b| (a, b) == (i, j))?.pop() else {
+        return Ok(None);
+    };
+    let (fi, fj) = (model.forms[i].domain(), model.forms[j].domain());
+    let form = |(a, b): (f64, f64), k: usize, u: f64| a + (u - k as f64) * (b - a);
+    let fs =
+        c.fs.iter()
+            .map(|f| {
+                f.restrict(
+                    form(fi, i, s0),
+                    form(fi, i, s1),
+                    form(fj, j, t0),
+                    form(fj, j, t1),
+                )
+            })
+            .collect::<std::result::Result<Vec<_>, _>>()?;
+    // (The cell's own chord tolerance, not one relative to the small box.)
+    let diagonal = (fi.1 - fi.0).hypot(fj.1 - fj.0);
+    let mut settings = lower.settings;
+    if settings.size.is_none() {
+        let Ok(size) = Size::new(diagonal) else {
+            return Ok(None);
+        };
+        settings.size = Some(size);
+    }
+    let options = NonNegativeOptions {
+        zero: ZeroSetOptions {
+            settings,
+            max_patches: lower.max_patches,
+        },
+        pairs: false,
+        meets: Vec::new(),
+    };
+    let set = nonnegative_set(&fs, &options, &|bx| near.excluded(i, j, bx))?;
+    if !set.complete || !set.unresolved.is_empty() {
+        return Ok(None);
+    }
+    let to_profile = |p: [f64; 2]| [model.profile_param(i, p[0]), model.profile_param(j, p[1])];
+    Ok(Some(LowerSet {
+        pieces: set
+            .pieces
+            .iter()
+            .map(|p| p.pts.iter().map(|&q| to_profile(q)).collect())
+            .collect(),
+        points: set.points.iter().map(|&q| to_profile(q)).collect(),
+    }))
+}
+
+/// The distance between the segments `ab` and `cd` (0 where they cross).
+fn segments_apart(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
+    let side = |p: [f64; 2], q: [f64; 2], r: [f64; 2]| {
+        (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+    };
+    let crosses = side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0;
+    if crosses {
+        return 0.0;
+    }
+    distance_to_segment(a, c, d)
+        .min(distance_to_segment(b, c, d))
+        .min(distance_to_segment(c, a, b))
+        .min(distance_to_segment(d, a, b))
 }

@@ -20,7 +20,6 @@
 //! where a set of pinch grasps reaches the corner, its boundary runs into it.
 
 use crate::assemble::MATCH_TOL;
-use crate::bisector::DIVISIBLE;
 use crate::blowup::Corner;
 use crate::boundary::{end_at, join_loose, BoundaryPiece, PieceEnd};
 use crate::error::{Error, Result};
@@ -28,6 +27,7 @@ use crate::patch::{common_sign, Patch};
 use crate::system::unique;
 use crate::zeroset::{finish, run_cells, Filters, ZeroSetOptions};
 use bspline::tensor::TensorBSpline;
+use cells::Cells;
 use numeric::newton2::{polish, Matrix2, Newton2, StepVerdict, Vector2};
 use numeric::rounding::UNIT_ROUNDOFF;
 use numeric::solve::{bracketed_free, Accuracy};
@@ -36,6 +36,8 @@ use numeric::Rect;
 use serde::{Deserialize, Serialize};
 use std::cell::RefCell;
 use std::collections::HashMap;
+
+mod cells;
 
 /// A function within this much (relative to its largest coefficient) of zero at a point of
 /// another's zero set is taken as vanishing there: two zero sets that coincide along a
@@ -253,6 +255,7 @@ struct Tracing<'a> {
 fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNegativeSet {
     let dom = how.dom;
     let band: Vec<f64> = fs.iter().map(|f| ZERO_BAND * f.max_abs_coef()).collect();
+    let values: Vec<Cells> = fs.iter().map(|f| Cells::of(f, false)).collect();
     let mut out = NonNegativeSet {
         complete: true,
         ..NonNegativeSet::default()
@@ -296,7 +299,7 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
                             let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * q.max_abs();
                             common_sign(q.c.iter().copied(), err) != 0
                                 || unique(p, &q)
-                                || pts.iter().all(|v| fs[j].eval(v[0], v[1]).abs() <= band[j])
+                                || pts.iter().all(|&v| values[j].eval(v).abs() <= band[j])
                         })
                 })
         };
@@ -317,7 +320,7 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
         out.complete &= z.complete;
         out.patches += z.patches;
         let cut = Cutter {
-            fs,
+            fs: &values,
             k,
             dom,
             band: &band,
@@ -417,161 +420,10 @@ fn corner(stores: &[Cells], dom: Rect, meet: [f64; 2], pairs: bool) -> Option<Co
     Corner::new(meet, &patches)
 }
 
-/// One function's Bézier cells, indexed by their breakpoints, with the sign of each cell's
-/// values relative to the function's (a divided diagonal cell holds `F / (t − r)`).
-struct Cells {
-    t_breaks: Vec<f64>,
-    r_breaks: Vec<f64>,
-    /// Row-major: `cells[i * (r_breaks.len() − 1) + j]` spans `t_breaks[i..=i+1]` ×
-    /// `r_breaks[j..=j+1]`.
-    cells: Vec<Patch>,
-    /// Per cell: −1 where the cell holds `F / (t − r)` (negative on `t < r`), else +1.
-    sign: Vec<f64>,
-    /// The largest coefficient of each cell: the scale of its rounding.
-    scale: Vec<f64>,
-}
-
-impl Cells {
-    fn of(f: &TensorBSpline, pairs: bool) -> Self {
-        let d = f.deg_t().max(f.deg_r());
-        let square = if pairs {
-            f.elevate(d - f.deg_t(), d - f.deg_r())
-        } else {
-            f.clone()
-        };
-        let mut cells: Vec<Patch> = square
-            .bezier_patches()
-            .iter()
-            .map(Patch::from_bezier)
-            .collect();
-        let mut sign = vec![1.0; cells.len()];
-        if pairs {
-            for (c, s) in cells.iter_mut().zip(sign.iter_mut()) {
-                if c.t0 == c.r0 && c.t1 == c.r1 {
-                    if let Some(q) = c.divide_diagonal(DIVISIBLE) {
-                        *c = q;
-                        *s = -1.0;
-                    }
-                }
-            }
-        }
-        let scale = cells.iter().map(Patch::max_abs).collect();
-        Self::grid(cells, sign, scale)
-    }
-
-    /// The cells sorted row by row, with their breakpoints.
-    fn grid(cells: Vec<Patch>, sign: Vec<f64>, scale: Vec<f64>) -> Self {
-        let breaks = |pick: fn(&Patch) -> (f64, f64)| {
-            let mut v: Vec<f64> = cells
-                .iter()
-                .flat_map(|p| {
-                    let (a, b) = pick(p);
-                    [a, b]
-                })
-                .collect();
-            v.sort_by(f64::total_cmp);
-            v.dedup();
-            v
-        };
-        let t_breaks = breaks(|p| (p.t0, p.t1));
-        let r_breaks = breaks(|p| (p.r0, p.r1));
-        let index = |p: &Patch| {
-            let i = t_breaks.partition_point(|&x| x < p.t0);
-            let j = r_breaks.partition_point(|&x| x < p.r0);
-            i * (r_breaks.len() - 1) + j
-        };
-        let mut order: Vec<usize> = (0..cells.len()).collect();
-        order.sort_by_key(|&k| index(&cells[k]));
-        let mut taken: Vec<Option<Patch>> = cells.into_iter().map(Some).collect();
-        Self {
-            cells: order.iter().filter_map(|&k| taken[k].take()).collect(),
-            sign: order.iter().map(|&k| sign[k]).collect(),
-            scale: order.iter().map(|&k| scale[k]).collect(),
-            t_breaks,
-            r_breaks,
-        }
-    }
-
-    /// The cells with every one that `at` crosses in the direction `axis` (0: `t`, 1: `r`)
-    /// split there (each part keeps its cell's sign, and its scale of rounding).
-    fn split(self, axis: usize, at: f64) -> Self {
-        let mut cells = Vec::with_capacity(self.cells.len() + 8);
-        let (mut sign, mut scale) = (Vec::new(), Vec::new());
-        for ((c, s), e) in self.cells.into_iter().zip(self.sign).zip(self.scale) {
-            let (lo, hi) = if axis == 0 {
-                (c.t0, c.t1)
-            } else {
-                (c.r0, c.r1)
-            };
-            if lo < at && at < hi {
-                let u = (at - lo) / (hi - lo);
-                let (a, b) = if axis == 0 {
-                    c.split_t(u)
-                } else {
-                    c.split_r(u)
-                };
-                cells.extend([a, b]);
-                sign.extend([s, s]);
-                scale.extend([e, e]);
-            } else {
-                cells.push(c);
-                sign.push(s);
-                scale.push(e);
-            }
-        }
-        Self::grid(cells, sign, scale)
-    }
-
-    /// The function on `bx`, a box inside one cell (`None` if it is in none).
-    fn restricted(&self, bx: Rect) -> Option<Patch> {
-        let i = self
-            .t_breaks
-            .partition_point(|&x| x <= bx.t.mid())
-            .checked_sub(1)?;
-        let j = self
-            .r_breaks
-            .partition_point(|&x| x <= bx.r.mid())
-            .checked_sub(1)?;
-        let nr = self.r_breaks.len() - 1;
-        if i >= self.t_breaks.len() - 1 || j >= nr {
-            return None;
-        }
-        self.cells.get(i * nr + j)?.restrict(bx)
-    }
-
-    /// Whether the function is proven negative on `bx` (all Bernstein coefficients of every
-    /// cell it meets, restricted to it, negative beyond their rounding).
-    fn negative_on(&self, bx: Rect) -> bool {
-        let span = |breaks: &[f64], lo: f64, hi: f64| {
-            let a = breaks.partition_point(|&x| x <= lo).saturating_sub(1);
-            let b = breaks.partition_point(|&x| x < hi).min(breaks.len() - 1);
-            a..b.max(a + 1)
-        };
-        let nr = self.r_breaks.len() - 1;
-        for i in span(&self.t_breaks, bx.t.lo, bx.t.hi) {
-            for j in span(&self.r_breaks, bx.r.lo, bx.r.hi) {
-                let at = i * nr + j;
-                let Some(cell) = self.cells.get(at) else {
-                    return false;
-                };
-                let Some(p) = cell.restrict(bx) else {
-                    continue;
-                };
-                // Four de Casteljau splits, each adding rounding of the order of the degree.
-                let err = 16.0 * (p.pt + p.pr + 2) as f64 * UNIT_ROUNDOFF * self.scale[at];
-                let want = if self.sign[at] < 0.0 { 1 } else { -1 };
-                if common_sign(p.c.iter().copied(), err) != want {
-                    return false;
-                }
-            }
-        }
-        true
-    }
-}
-
 /// Cuts one function's zero set where another function changes sign.
 struct Cutter<'a> {
-    fs: &'a [TensorBSpline],
+    /// The functions, as their cells.
+    fs: &'a [Cells],
     k: usize,
     dom: Rect,
     /// Per function, the values taken as zero ([`ZERO_BAND`]).
@@ -597,11 +449,11 @@ impl Cutter<'_> {
     /// where it grows to the same side as this one (where it grows to the other, the set is
     /// the curve alone).
     fn holds(&self, j: usize, p: [f64; 2]) -> bool {
-        let v = self.fs[j].eval(p[0], p[1]);
+        let v = self.fs[j].eval(p);
         if v.abs() <= self.band[j] && j > self.k {
-            // Entries: [F, F_r, F_t, F_tr].
-            let a = self.fs[self.k].eval_derivs(p[0], p[1], 1, 1);
-            let b = self.fs[j].eval_derivs(p[0], p[1], 1, 1);
+            // Entries: [F, F_t, F_r].
+            let a = self.fs[self.k].eval_grad(p);
+            let b = self.fs[j].eval_grad(p);
             let (dot, cross) = (a[1] * b[1] + a[2] * b[2], a[1] * b[2] - a[2] * b[1]);
             let norms = a[1].hypot(a[2]) * b[1].hypot(b[2]);
             // (Where they cross, or touch growing the same way, the band rule below holds.)
@@ -725,7 +577,7 @@ impl Cutter<'_> {
         };
         let value = |l: f64| {
             let p = at(l);
-            self.fs[j].eval(p[0], p[1]) + shift
+            self.fs[j].eval(p) + shift
         };
         let ends = (value(0.0), value(1.0));
         if ends.0 * ends.1 < 0.0 {
@@ -765,14 +617,14 @@ impl Cutter<'_> {
         let f = &self.fs[self.k];
         let mut x = p;
         for _ in 0..PROJECTION_STEPS {
-            let d = f.eval_derivs(x[0], x[1], 1, 1);
-            // Entries: [F, F_r, F_t, F_tr].
+            // Entries: [F, F_t, F_r].
+            let d = f.eval_grad(x);
             let g2 = d[1] * d[1] + d[2] * d[2];
             if g2.is_nan() || g2 <= 0.0 || d[0] == 0.0 {
                 break;
             }
             let step = d[0] / g2;
-            let next = [x[0] - step * d[2], x[1] - step * d[1]];
+            let next = [x[0] - step * d[1], x[1] - step * d[2]];
             let moved = (next[0] - x[0]).hypot(next[1] - x[1]);
             x = next;
             if moved <= f64::EPSILON * (x[0].abs() + x[1].abs() + 1.0) {
@@ -786,11 +638,11 @@ impl Cutter<'_> {
     fn polish(&self, start: [f64; 2], j: usize, reach: f64) -> Option<[f64; 2]> {
         let (fk, fj) = (&self.fs[self.k], &self.fs[j]);
         let lin = |x: &Vector2<f64>| {
-            let a = fk.eval_derivs(x.x, x.y, 1, 1);
-            let b = fj.eval_derivs(x.x, x.y, 1, 1);
-            // Entries: [F, F_r, F_t, F_tr].
+            // Entries: [F, F_t, F_r].
+            let a = fk.eval_grad([x.x, x.y]);
+            let b = fj.eval_grad([x.x, x.y]);
             let value = Vector2::new(a[0], b[0]);
-            let jac = Matrix2::new(a[2], a[1], b[2], b[1]);
+            let jac = Matrix2::new(a[1], a[2], b[1], b[2]);
             let res = (a[0] / (a[1].hypot(a[2]) + f64::MIN_POSITIVE)).abs()
                 + (b[0] / (b[1].hypot(b[2]) + f64::MIN_POSITIVE)).abs();
             (value, jac, res)
@@ -815,8 +667,8 @@ impl Cutter<'_> {
         let m = (pts.len() - 1) / 2;
         let (a, b) = (pts[m], pts[m + 1]);
         let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-        let g = self.fs[self.k].eval_derivs(mid[0], mid[1], 1, 1);
-        let (gt, gr) = (g[2], g[1]);
+        let g = self.fs[self.k].eval_grad(mid);
+        let (gt, gr) = (g[1], g[2]);
         let v = [b[0] - a[0], b[1] - a[1]];
         let mut ends = ends;
         if v[0] * gr - v[1] * gt < 0.0 {

@@ -4,46 +4,93 @@
 
 use crate::cells::Cell;
 use crate::model::{Cone, Model};
-use bspline::tensor::BezierPatch;
+use bspline::tensor::{BezierPatch, TensorBSpline};
 use numeric::rounding::UNIT_ROUNDOFF;
 
 /// Halvings of a rectangle whose coefficients do not all show the sign, before it is given
 /// up as not proven.
 const PROOF_DEPTH: usize = 2;
 
-/// Bisection steps for the size of the square, and for each side pushed out.
+/// Bisection steps at most for the size of the square, and for each side pushed out.
 const SIZE_STEPS: usize = 24;
 const SIDE_STEPS: usize = 14;
 
-/// One function's Bézier patches.
-type Patches = Vec<BezierPatch>;
+/// The searches stop when the size or the push is known to this share of the square's size
+/// or the side's length: the contact region is then the largest to within a ten-millionth of
+/// its stretches (a circle's band, up to π/2 wide, is met within 1e-6), while no step is
+/// spent below that.
+const SEARCH_ACCURACY: f64 = 1e-7;
+
+/// One function's Bézier patches on their grid, with the rounding allowance of their
+/// restricted coefficients.
+struct Function {
+    /// Row by row in `t`.
+    patches: Vec<BezierPatch>,
+    /// Where the rows start in `t` and the columns in `r`, and where the last ends.
+    t_breaks: Vec<f64>,
+    r_breaks: Vec<f64>,
+    err: f64,
+}
+
+impl Function {
+    fn new(f: &TensorBSpline) -> Self {
+        let err = 64.0 * (f.deg_t() + f.deg_r() + 2) as f64 * UNIT_ROUNDOFF * f.max_abs_coef();
+        let patches = f.bezier_patches();
+        // (Row by row: the first row's columns are every row's.)
+        let (ts, rs) = (f.domain_t(), f.domain_r());
+        let columns = patches.iter().take_while(|p| p.t0 == ts.0).count().max(1);
+        let t_breaks = patches
+            .iter()
+            .step_by(columns)
+            .map(|p| p.t0)
+            .chain([ts.1])
+            .collect();
+        let r_breaks = patches[..columns.min(patches.len())]
+            .iter()
+            .map(|p| p.r0)
+            .chain([rs.1])
+            .collect();
+        Self {
+            patches,
+            t_breaks,
+            r_breaks,
+            err,
+        }
+    }
+
+    /// The patches that meet the open rectangle `s × t`.
+    fn meeting(&self, s: [f64; 2], t: [f64; 2]) -> impl Iterator<Item = usize> + '_ {
+        let span = |breaks: &[f64], [lo, hi]: [f64; 2]| {
+            let first = breaks.partition_point(|&b| b <= lo).saturating_sub(1);
+            let last = breaks.partition_point(|&b| b < hi).min(breaks.len() - 1);
+            first..last.max(first)
+        };
+        let columns = self.r_breaks.len() - 1;
+        let rows = span(&self.t_breaks, s);
+        let cols = span(&self.r_breaks, t);
+        rows.flat_map(move |i| cols.clone().map(move |j| i * columns + j))
+    }
+}
 
 /// The proof that every function is positive on rectangles of the profile's parameter.
 pub(crate) struct Positivity<'a> {
     model: &'a Model<'a>,
-    /// Per cell and function, its patches and the rounding allowance of their restricted
-    /// coefficients.
-    cells: Vec<Vec<(Patches, f64)>>,
+    /// Per cell, its functions.
+    cells: Vec<Vec<Function>>,
+    /// The cell, function and patch where the last proof failed.
+    last_failure: std::cell::Cell<Option<(usize, usize, usize)>>,
 }
 
 impl<'a> Positivity<'a> {
     pub(crate) fn new(model: &'a Model<'a>, cells: &[Cell]) -> Self {
-        let cells = cells
-            .iter()
-            .map(|c| {
-                c.fs.iter()
-                    .map(|f| {
-                        let err = 64.0
-                            * (f.deg_t() + f.deg_r() + 2) as f64
-                            * UNIT_ROUNDOFF
-                            * f.max_abs_coef();
-                        let patches = f.bezier_patches();
-                        (patches, err)
-                    })
-                    .collect()
-            })
-            .collect();
-        Self { model, cells }
+        Self {
+            model,
+            cells: cells
+                .iter()
+                .map(|c| c.fs.iter().map(Function::new).collect())
+                .collect(),
+            last_failure: std::cell::Cell::new(None),
+        }
     }
 
     /// Whether every pair of `[s0, s1] × [t0, t1]` (profile parameters, read modulo `n`) is
@@ -57,26 +104,53 @@ impl<'a> Positivity<'a> {
         let (Some(ss), Some(ts)) = (self.pieces(s), self.pieces(t)) else {
             return false;
         };
-        ss.iter().all(|&(i, si)| {
-            ts.iter().all(|&(j, tj)| {
-                // The conditions hold for a pair in either order: a cell below the diagonal
-                // is its mirror's.
-                let (i, j, si, tj) = if i <= j {
-                    (i, j, si, tj)
-                } else {
-                    (j, i, tj, si)
-                };
-                let k = self.cell_index(i, j);
-                self.cells[k].iter().all(|(patches, err)| {
-                    patches.iter().all(|f| {
-                        // The rectangle's part on this patch, if any.
-                        let s = [si[0].max(f.t0), si[1].min(f.t1)];
-                        let t = [tj[0].max(f.r0), tj[1].min(f.r1)];
-                        !(s[0] < s[1] && t[0] < t[1]) || positive(f, s, t, *err, PROOF_DEPTH)
-                    })
+        // The rectangle's parts on the cells: the conditions hold for a pair in either order,
+        // so a part below the diagonal is its mirror's.
+        let parts: Vec<(usize, [f64; 2], [f64; 2])> = ss
+            .iter()
+            .flat_map(|&(i, si)| {
+                ts.iter().map(move |&(j, tj)| {
+                    if i <= j {
+                        (self.cell_index(i, j), si, tj)
+                    } else {
+                        (self.cell_index(j, i), tj, si)
+                    }
                 })
             })
-        })
+            .collect();
+        // The patch that failed last is tried first: the searches try nested rectangles,
+        // and the one that fails them is most often the same.
+        let last = self.last_failure.get();
+        if let Some(at) = last {
+            if parts
+                .iter()
+                .any(|&(k, si, tj)| k == at.0 && !self.holds_on(at, si, tj))
+            {
+                return false;
+            }
+        }
+        for &(k, si, tj) in &parts {
+            for (f, function) in self.cells[k].iter().enumerate() {
+                for p in function.meeting(si, tj) {
+                    let at = (k, f, p);
+                    if Some(at) != last && !self.holds_on(at, si, tj) {
+                        self.last_failure.set(Some(at));
+                        return false;
+                    }
+                }
+            }
+        }
+        true
+    }
+
+    /// Whether function `f` of cell `k` is proven positive on its patch `p`'s part of
+    /// `si × tj` (true where they do not meet).
+    fn holds_on(&self, (k, f, p): (usize, usize, usize), si: [f64; 2], tj: [f64; 2]) -> bool {
+        let function = &self.cells[k][f];
+        let (patch, err) = (&function.patches[p], function.err);
+        let s = [si[0].max(patch.t0), si[1].min(patch.t1)];
+        let t = [tj[0].max(patch.r0), tj[1].min(patch.r1)];
+        !(s[0] < s[1] && t[0] < t[1]) || positive(patch, s, t, err, PROOF_DEPTH)
     }
 
     fn cell_index(&self, i: usize, j: usize) -> usize {
@@ -135,8 +209,9 @@ fn positive(f: &BezierPatch, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -
 
 /// The independent contact region around `center` (a force-closure pair, profile parameters):
 /// the largest square of equal arc lengths around it that is proven, then each side pushed
-/// out as far as proven; with the square's half arc length. `None` when not even a tiny
-/// square is proven (a pair on the region's boundary, or a region that is a line or a point).
+/// out as far as proven; with the square's half arc length. `reach` is the region's extent in
+/// each parameter: no square nor push goes beyond it. `None` when not even a tiny square is
+/// proven (a pair on the region's boundary, or a region that is a line or a point).
 pub(crate) fn around(
     model: &Model<'_>,
     proof: &Positivity<'_>,
@@ -171,6 +246,9 @@ pub(crate) fn around(
         lo = hi;
     } else {
         for _ in 0..SIZE_STEPS {
+            if lo > 0.0 && hi - lo <= SEARCH_ACCURACY * lo {
+                break;
+            }
             let mid = 0.5 * (lo + hi);
             if proven(square(mid)) {
                 lo = mid;
@@ -183,10 +261,19 @@ pub(crate) fn around(
         return None;
     }
     let (mut s, mut t) = square(lo);
-    // Push each side out in turn, as far as the proof goes.
+    // Push each side out in turn, as far as the proof goes: at most to the region's extent
+    // (the rectangle lies in one of its parts).
     for side in 0..4 {
-        let (mut good, mut bad) = (0.0, 0.5 * n);
+        let (extent, width) = if side < 2 {
+            (reach[0], s[1] - s[0])
+        } else {
+            (reach[1], t[1] - t[0])
+        };
+        let (mut good, mut bad) = (0.0, (0.5 * n).min(extent));
         for _ in 0..SIDE_STEPS {
+            if bad - good <= SEARCH_ACCURACY * width {
+                break;
+            }
             let mid = 0.5 * (good + bad);
             let (mut s2, mut t2) = (s, t);
             match side {

@@ -101,13 +101,15 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         if !proven {
             region_doubts.add(Doubt::GraspBestUnproven);
         }
+        // (The parts' polylines are within a chord of the region's edge.)
         let reach = r
             .parts
             .iter()
             .map(|p| bounds(p))
             .fold([0.0f64; 2], |m, (lo, hi)| {
                 [m[0].max(hi[0] - lo[0]), m[1].max(hi[1] - lo[1])]
-            });
+            })
+            .map(|x| x + 2.0 * chord);
         // The largest square is sought round the best grasp, and round the points of the
         // region deepest inside it where that one is clearly smaller (the best grasp may lie
         // on a width limit, or off the region's middle).

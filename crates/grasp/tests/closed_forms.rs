@@ -16,8 +16,8 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 const GRID: usize = 120;
 
 /// How far a contact stretch's width may fall short of the closed form's: the crate finds
-/// the largest square by bisection (24 steps of the region's reach, then 16 per side), well
-/// within 1e-6 of the angle parameter.
+/// the largest square by bisection to a ten-millionth of its size (then each side pushed out
+/// to a ten-millionth of its length), within 1e-6 of the angle parameter.
 const CONTACT_WIDTH_TOL: f64 = 1e-6;
 
 /// The friction the circle's best grasp may need: a pair of its family (0), found by a local

@@ -3,19 +3,15 @@
 
 use crate::assemble::RawRegion;
 use crate::model::Model;
-use crate::polyline::{bounds, signed_area};
+use crate::polyline::bounds;
 use crate::quality::slip_angle;
-use crate::region_set::{depth, holds, in_triangle};
+use crate::region_set::{deepest, held_inside, holds, in_triangle};
 
 /// Samples across each part's box when no antipodal pair lies in the region.
 const SAMPLES_ACROSS: usize = 16;
 
 /// Samples along a corner line's stretch.
 const SAMPLES_ALONG: usize = 64;
-
-/// Depths tried inside a thin part's edges: a quarter of its box, then each a quarter of the
-/// one before.
-const INWARD_STEPS: usize = 10;
 
 /// Steps of the compass search from the best sample.
 const SEARCH_STEPS: usize = 400;
@@ -69,35 +65,10 @@ pub(crate) fn most_robust(
     }
     if best.is_none() {
         // Parts too thin for the grid (a sliver, as the pinch grasps of a corner just
-        // sharper than twice the friction angle): of the points a little inside each edge's
-        // middle, the deepest (a sliver's pairs all need about the same friction; its
-        // edges are only within the chord tolerance of the exact boundary).
-        let mut deepest: Option<([f64; 2], f64)> = None;
-        for part in &region.parts {
-            let inward = signed_area(part).signum();
-            let (lo, hi) = bounds(part);
-            let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-            for w in part.windows(2) {
-                let (a, b) = (w[0], w[1]);
-                let len = (b[0] - a[0]).hypot(b[1] - a[1]);
-                if len <= 0.0 {
-                    continue;
-                }
-                let normal = [-(b[1] - a[1]) / len * inward, (b[0] - a[0]) / len * inward];
-                let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-                for k in 1..=INWARD_STEPS {
-                    let d = size * 0.5f64.powi(2 * k as i32);
-                    let p = [mid[0] + d * normal[0], mid[1] + d * normal[1]];
-                    if holds(region, n, p[0], p[1]) {
-                        let depth = depth(region, p);
-                        if deepest.is_none_or(|(_, e)| depth > e) {
-                            deepest = Some((p, depth));
-                        }
-                    }
-                }
-            }
-        }
-        if let Some((p, _)) = deepest {
+        // sharper than twice the friction angle): the deepest point found inside them (a
+        // sliver's pairs all need about the same friction; its edges are only within the
+        // chord tolerance of the exact boundary).
+        if let Some(&(p, _)) = deepest(region, 1).first() {
             consider(p, true, &mut best);
         }
     }
@@ -173,7 +144,7 @@ pub(crate) fn descend(
             // (Staying in the region, a chord inside its polylines: where the least friction
             // falls toward the region's edge, as on a width limit, the best grasp is the pair
             // a chord inside, whichever side of the exact edge its polyline passes.)
-            if ay < ax && holds(region, n, y[0], y[1]) && depth(region, y) >= inside_by {
+            if ay < ax && held_inside(region, n, y, inside_by) {
                 (x, ax) = (y, ay);
                 moved = true;
                 break;

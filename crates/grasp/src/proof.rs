@@ -15,7 +15,7 @@ use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use crate::polyline::bounds;
 use crate::quality::{force_closure, min_friction};
-use crate::region_set::{deepest, depth, holds};
+use crate::region_set::{deepest, depth, held_inside, holds};
 use curve::distance_to_segment;
 use numeric::certificate::Doubts;
 use numeric::tolerance::Size;
@@ -57,11 +57,8 @@ pub(crate) fn none_below(
     let near = NearContacts::new(model, friction);
     // A pair the lower set holds beats the best grasp where it lies a chord inside the
     // region; one clearly outside says nothing of it.
-    let beats = |p: [f64; 2]| {
-        holds(region, n, p[0], p[1])
-            && depth(region, p) >= chord
-            && min_friction(model, p[0], p[1]) < least
-    };
+    let beats =
+        |p: [f64; 2]| held_inside(region, n, p, chord) && min_friction(model, p[0], p[1]) < least;
     let outside = |p: [f64; 2]| !holds(region, n, p[0], p[1]) && depth(region, p) > 2.0 * chord;
     let edges: Vec<[[f64; 2]; 2]> = region
         .parts

@@ -1,7 +1,7 @@
 //! A region as a set of pairs: which pairs it holds, on the whole torus of parameters.
 
 use crate::assemble::RawRegion;
-use crate::polyline::{bounds, inside};
+use crate::polyline::{bounds, inside, signed_area};
 use curve::distance_to_segment;
 
 /// How close (in the profile's parameter) a pair must lie to a corner line or a single pair
@@ -45,6 +45,12 @@ pub(crate) fn holds(region: &RawRegion, n: usize, s: f64, t: f64) -> bool {
             .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) <= ON_LINE)
 }
 
+/// Whether the region holds the pair `p` at least `by` inside its polylines (so whichever side
+/// of the exact edge a polyline passes, within its chord tolerance, the exact region holds it).
+pub(crate) fn held_inside(region: &RawRegion, n: usize, p: [f64; 2], by: f64) -> bool {
+    holds(region, n, p[0], p[1]) && depth(region, p) >= by
+}
+
 /// How far `p` lies from the region's polylines (in the profile's parameter).
 pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
     region
@@ -58,10 +64,20 @@ pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
 /// Samples across a part's box for its deepest points.
 const DEPTH_SAMPLES: usize = 12;
 
+/// Depths tried inside a thin part's edges: a quarter of its box, then each a quarter of the
+/// one before.
+const INWARD_STEPS: usize = 10;
+
 /// The `count` sampled points of `r`'s parts farthest from their boundaries, with their
-/// depths.
+/// depths: from a grid across each part's box, or, for parts too thin for it, from points a
+/// little inside each edge's middle.
 pub(crate) fn deepest(r: &RawRegion, count: usize) -> Vec<([f64; 2], f64)> {
     let mut found: Vec<([f64; 2], f64)> = Vec::new();
+    let keep = |found: &mut Vec<([f64; 2], f64)>, part: &[[f64; 2]], p: [f64; 2]| {
+        if inside(part, p) && !r.holes.iter().any(|h| inside(h, p)) {
+            found.push((p, depth(r, p)));
+        }
+    };
     for part in &r.parts {
         let (lo, hi) = bounds(part);
         for i in 0..DEPTH_SAMPLES {
@@ -69,9 +85,30 @@ pub(crate) fn deepest(r: &RawRegion, count: usize) -> Vec<([f64; 2], f64)> {
                 let at = |k: usize, d: usize| {
                     lo[d] + (k as f64 + 0.5) / DEPTH_SAMPLES as f64 * (hi[d] - lo[d])
                 };
-                let p = [at(i, 0), at(j, 1)];
-                if inside(part, p) && !r.holes.iter().any(|h| inside(h, p)) {
-                    found.push((p, depth(r, p)));
+                keep(&mut found, part, [at(i, 0), at(j, 1)]);
+            }
+        }
+    }
+    if found.is_empty() {
+        for part in &r.parts {
+            let inward = signed_area(part).signum();
+            let (lo, hi) = bounds(part);
+            let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+            for w in part.windows(2) {
+                let (a, b) = (w[0], w[1]);
+                let len = (b[0] - a[0]).hypot(b[1] - a[1]);
+                if len <= 0.0 {
+                    continue;
+                }
+                let normal = [-(b[1] - a[1]) / len * inward, (b[0] - a[0]) / len * inward];
+                let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+                for k in 1..=INWARD_STEPS {
+                    let d = size * 0.5f64.powi(2 * k as i32);
+                    keep(
+                        &mut found,
+                        part,
+                        [mid[0] + d * normal[0], mid[1] + d * normal[1]],
+                    );
                 }
             }
         }

@@ -261,6 +261,25 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
         ..NonNegativeSet::default()
     };
     let live: RefCell<HashMap<[u64; 4], bool>> = RefCell::new(HashMap::new());
+    // Every function restricted to a patch's box, as far as asked: the keeping of the box and
+    // the settling of each trace's arc there read the same patches.
+    let restricted: RefCell<HashMap<[u64; 4], Vec<Option<Patch>>>> = RefCell::new(HashMap::new());
+    let restrict_upto = |key: [u64; 4], bx: Rect, upto: usize| {
+        let mut memo = restricted.borrow_mut();
+        let row = memo.entry(key).or_default();
+        while row.len() < upto {
+            row.push(stores[row.len()].restricted(bx));
+        }
+    };
+    // Whether function `j` is proven negative on the box `key` (its part of the memo computed).
+    let negative = |j: usize, key: [u64; 4], bx: Rect| {
+        let memo = restricted.borrow();
+        match memo.get(&key).and_then(|row| row.get(j)) {
+            // (A box across cells is asked of every cell it meets.)
+            Some(Some(q)) if q.rect() == bx => stores[j].negative_restricted(q),
+            _ => stores[j].negative_on(bx),
+        }
+    };
     for (k, store) in stores.iter().enumerate() {
         // Whether the set may meet a patch is the same question for every function's trace
         // (a function negative there has no zero there either), and the traces split their
@@ -275,7 +294,10 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
             }
             let bx = p.rect();
             let may = !how.skip.iter().any(|s| inside(bx, *s))
-                && !stores.iter().any(|s| s.negative_on(bx))
+                && !(0..stores.len()).any(|j| {
+                    restrict_upto(key, bx, j + 1);
+                    negative(j, key, bx)
+                })
                 && !(how.excluded)(bx);
             live.borrow_mut().insert(key, may);
             may
@@ -292,16 +314,24 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
                     .meets
                     .iter()
                     .any(|m| p.t0 <= m[0] && m[0] <= p.t1 && p.r0 <= m[1] && m[1] <= p.r1);
-            !meets
-                && stores.iter().enumerate().all(|(j, s)| {
-                    j == k
-                        || s.restricted(p.rect()).is_none_or(|q| {
-                            let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * q.max_abs();
-                            common_sign(q.c.iter().copied(), err) != 0
-                                || unique(p, &q)
-                                || pts.iter().all(|&v| values[j].eval(v).abs() <= band[j])
-                        })
-                })
+            if meets {
+                return false;
+            }
+            let key = [p.t0, p.t1, p.r0, p.r1].map(f64::to_bits);
+            restrict_upto(key, p.rect(), stores.len());
+            let memo = restricted.borrow();
+            let Some(row) = memo.get(&key) else {
+                return false;
+            };
+            row.iter().enumerate().all(|(j, q)| {
+                j == k
+                    || q.as_ref().is_none_or(|q| {
+                        let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * q.max_abs();
+                        common_sign(q.c.iter().copied(), err) != 0
+                            || unique(p, q)
+                            || pts.iter().all(|&v| values[j].eval(v).abs() <= band[j])
+                    })
+            })
         };
         let filters = Filters {
             keep: &keep,

@@ -112,8 +112,8 @@ impl Cells {
         Self::grid(cells, sign, scale)
     }
 
-    /// The function on `bx`, a box inside one cell (`None` if it is in none).
-    pub(super) fn restricted(&self, bx: Rect) -> Option<Patch> {
+    /// The cell holding the middle of `bx`.
+    fn cell_at(&self, bx: Rect) -> Option<usize> {
         let i = self
             .t_breaks
             .partition_point(|&x| x <= bx.t.mid())
@@ -123,10 +123,24 @@ impl Cells {
             .partition_point(|&x| x <= bx.r.mid())
             .checked_sub(1)?;
         let nr = self.r_breaks.len() - 1;
-        if i >= self.t_breaks.len() - 1 || j >= nr {
-            return None;
-        }
-        self.cells.get(i * nr + j)?.restrict(bx)
+        (i < self.t_breaks.len() - 1 && j < nr).then_some(i * nr + j)
+    }
+
+    /// The function on `bx`, a box inside one cell (`None` if it is in none).
+    pub(super) fn restricted(&self, bx: Rect) -> Option<Patch> {
+        self.cells.get(self.cell_at(bx)?)?.restrict(bx)
+    }
+
+    /// Whether `q`, the function restricted to a box inside one cell
+    /// ([`Cells::restricted`]), is proven negative there: [`Cells::negative_on`] that box.
+    pub(super) fn negative_restricted(&self, q: &Patch) -> bool {
+        let Some(at) = self.cell_at(q.rect()) else {
+            return false;
+        };
+        // Four de Casteljau splits, each adding rounding of the order of the degree.
+        let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * self.scale[at];
+        let want = if self.sign[at] < 0.0 { 1 } else { -1 };
+        common_sign(q.c.iter().copied(), err) == want
     }
 
     /// Whether the function is proven negative on `bx` (all Bernstein coefficients of every

@@ -62,6 +62,11 @@ const PROJECTION_STEPS: usize = 3;
 /// bisection before it is distrusted: it only polishes the last bits.
 const POLISH_REACH: f64 = 1e-3;
 
+/// Boxes whose restricted patches a set's tracing keeps at most: a few tens of megabytes at
+/// the highest degrees, however many patches the limit lets the subdivision visit (beyond
+/// it they are restricted again).
+const RESTRICTED_BOXES: usize = 1 << 14;
+
 /// Bisection steps along a chord for where another function changes sign (to the last bit of
 /// a unit chord).
 const CHORD_BISECTIONS: usize = 60;
@@ -266,6 +271,9 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
     let restricted: RefCell<HashMap<[u64; 4], Vec<Option<Patch>>>> = RefCell::new(HashMap::new());
     let restrict_upto = |key: [u64; 4], bx: Rect, upto: usize| {
         let mut memo = restricted.borrow_mut();
+        if memo.len() >= RESTRICTED_BOXES && !memo.contains_key(&key) {
+            memo.clear();
+        }
         let row = memo.entry(key).or_default();
         while row.len() < upto {
             row.push(stores[row.len()].restricted(bx));

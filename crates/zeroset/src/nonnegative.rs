@@ -296,7 +296,7 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
             if how.pairs && p.t0 >= p.r1 {
                 return false;
             }
-            let key = [p.t0, p.t1, p.r0, p.r1].map(f64::to_bits);
+            let key = box_key(p);
             if let Some(&known) = live.borrow().get(&key) {
                 return known;
             }
@@ -325,7 +325,7 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
             if meets {
                 return false;
             }
-            let key = [p.t0, p.t1, p.r0, p.r1].map(f64::to_bits);
+            let key = box_key(p);
             restrict_upto(key, p.rect(), stores.len());
             let memo = restricted.borrow();
             let Some(row) = memo.get(&key) else {
@@ -375,6 +375,11 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
         out.unresolved.extend(cut.degenerate.get());
     }
     out
+}
+
+/// A patch's box, as the key of what is kept per box.
+fn box_key(p: &Patch) -> [u64; 4] {
+    [p.t0, p.t1, p.r0, p.r1].map(f64::to_bits)
 }
 
 /// Whether the box `a` lies inside the box `b`.

@@ -134,9 +134,12 @@ impl Cells {
     /// Whether `q`, the function restricted to a box inside one cell
     /// ([`Cells::restricted`]), is proven negative there: [`Cells::negative_on`] that box.
     pub(super) fn negative_restricted(&self, q: &Patch) -> bool {
-        let Some(at) = self.cell_at(q.rect()) else {
-            return false;
-        };
+        self.cell_at(q.rect())
+            .is_some_and(|at| self.negative_in(at, q))
+    }
+
+    /// Whether `q`, cell `at` restricted to a box, shows the function negative there.
+    fn negative_in(&self, at: usize, q: &Patch) -> bool {
         // Four de Casteljau splits, each adding rounding of the order of the degree.
         let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * self.scale[at];
         let want = if self.sign[at] < 0.0 { 1 } else { -1 };
@@ -161,10 +164,7 @@ impl Cells {
                 let Some(p) = cell.restrict(bx) else {
                     continue;
                 };
-                // Four de Casteljau splits, each adding rounding of the order of the degree.
-                let err = 16.0 * (p.pt + p.pr + 2) as f64 * UNIT_ROUNDOFF * self.scale[at];
-                let want = if self.sign[at] < 0.0 { 1 } else { -1 };
-                if common_sign(p.c.iter().copied(), err) != want {
+                if !self.negative_in(at, &p) {
                     return false;
                 }
             }

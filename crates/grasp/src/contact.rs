@@ -30,6 +30,9 @@ struct Function {
     t_breaks: Vec<f64>,
     r_breaks: Vec<f64>,
     err: f64,
+    /// Per patch, whether its own coefficients all show the sign: then so do those of every
+    /// rectangle in it (each a convex combination of them), and no restriction is needed.
+    whole: Vec<bool>,
 }
 
 impl Function {
@@ -50,11 +53,16 @@ impl Function {
             .map(|p| p.r0)
             .chain([rs.1])
             .collect();
+        let whole = patches
+            .iter()
+            .map(|p| p.coefs.iter().all(|&c| c > err))
+            .collect();
         Self {
             patches,
             t_breaks,
             r_breaks,
             err,
+            whole,
         }
     }
 
@@ -150,7 +158,9 @@ impl<'a> Positivity<'a> {
         let (patch, err) = (&function.patches[p], function.err);
         let s = [si[0].max(patch.t0), si[1].min(patch.t1)];
         let t = [tj[0].max(patch.r0), tj[1].min(patch.r1)];
-        !(s[0] < s[1] && t[0] < t[1]) || positive(patch, s, t, err, PROOF_DEPTH)
+        !(s[0] < s[1] && t[0] < t[1])
+            || function.whole[p]
+            || positive(patch, s, t, err, PROOF_DEPTH)
     }
 
     fn cell_index(&self, i: usize, j: usize) -> usize {

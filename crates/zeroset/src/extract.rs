@@ -69,10 +69,25 @@ pub(crate) struct Tracer<'a> {
     /// Cells where F has a known zero of high order at a corner (a self-bisector's cells
     /// touching the diagonal there), in which the check of inner edge coefficients is off.
     pub(crate) lax: &'a dyn Fn(&Patch) -> bool,
-    /// Whether the arc traced in a simple patch may stand as it is; `false` splits the patch
-    /// further (down to the size limit), as a caller that must know more about each arc
-    /// than that it is simple asks (see [`crate::nonnegative_set`]).
-    pub(crate) settle: &'a dyn Fn(&Patch, &[[f64; 2]]) -> bool,
+    /// Whether the arc of a simple patch may stand as it is, as far as the patch tells
+    /// before the arc is traced; [`Settle::Splits`] splits the patch further (down to the
+    /// size limit), as a caller that must know more about each arc than that it is simple
+    /// asks (see [`crate::nonnegative_set`]).
+    pub(crate) settle: &'a dyn Fn(&Patch) -> Settle,
+    /// Where `settle` says [`Settle::ByVertices`]: whether the arc with these vertices (its
+    /// ends first, then all of them) stands.
+    pub(crate) settle_vertices: &'a dyn Fn(&Patch, &[[f64; 2]]) -> bool,
+}
+
+/// What a caller tells of a simple patch's arc before it is traced ([`Tracer::settle`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Settle {
+    /// The arc stands as traced.
+    Stands,
+    /// The patch is split further, whatever its arc.
+    Splits,
+    /// The arc's vertices decide ([`Tracer::settle_vertices`]).
+    ByVertices,
 }
 
 /// Result of the subdivision of all cells.
@@ -141,16 +156,26 @@ impl Tracer<'_> {
                 match self.classify(&p, err, strict) {
                     Class::Empty => {}
                     Class::Simple(graph_r) => {
-                        let arc = self.trace(cell, &p, graph_r, err);
                         let small =
                             p.t1 - p.t0 <= self.min_size[0] && p.r1 - p.r0 <= self.min_size[1];
-                        let unsettled = arc.as_ref().is_some_and(|a| !(self.settle)(&p, &a.pts));
-                        if unsettled && !small && visit.can_halve {
+                        let may_split = !small && visit.can_halve;
+                        // (What is split is not traced: its halves are.)
+                        let verdict = (self.settle)(&p);
+                        if verdict == Settle::Splits && may_split {
                             return self.halve(&p);
                         }
-                        if let Some(arc) = arc {
-                            out.arcs.push(arc);
+                        let Some(ends) = self.ends(cell, &p, err) else {
+                            return Decision::Decided;
+                        };
+                        let by_vertices = verdict == Settle::ByVertices && may_split;
+                        if by_vertices && !(self.settle_vertices)(&p, &[ends[0].p, ends[1].p]) {
+                            return self.halve(&p);
                         }
+                        let arc = self.arc(cell, &p, graph_r, ends);
+                        if by_vertices && !(self.settle_vertices)(&p, &arc.pts) {
+                            return self.halve(&p);
+                        }
+                        out.arcs.push(arc);
                     }
                     Class::Split => {
                         let small =
@@ -250,10 +275,10 @@ impl Tracer<'_> {
         }
     }
 
-    /// The arc of a simple patch. `graph_r`: the arc is `t = φ(r)` (else `r = ψ(t)`).
-    fn trace(&self, cell: &Patch, p: &Patch, graph_r: bool, err: f64) -> Option<Arc> {
-        // Rounding level of the cell's values.
-        let noise = 2.0 * (cell.pt + cell.pr + 2) as f64 * UNIT_ROUNDOFF * cell.max_abs();
+    /// The two ends of the arc of a simple patch, on its edges (`None` when the edge solves
+    /// do not give two).
+    fn ends(&self, cell: &Patch, p: &Patch, err: f64) -> Option<[End; 2]> {
+        let noise = cell_noise(cell);
         let mut ends: Vec<End> = Vec::with_capacity(2);
         for e in 0..4 {
             let coefs = p.edge(e);
@@ -284,10 +309,13 @@ impl Tracer<'_> {
             };
             ends.push(end);
         }
-        if ends.len() != 2 {
-            return None;
-        }
-        let (a, b) = (ends[0], ends[1]);
+        (ends.len() == 2).then(|| [ends[0], ends[1]])
+    }
+
+    /// The arc of a simple patch between its `ends`. `graph_r`: the arc is `t = φ(r)` (else
+    /// `r = ψ(t)`).
+    fn arc(&self, cell: &Patch, p: &Patch, graph_r: bool, [a, b]: [End; 2]) -> Arc {
+        let noise = cell_noise(cell);
         // The arc as a function of the graph variable s; the other coordinate is solved for.
         let k = if graph_r { 1 } else { 0 };
         // Start each solve on the chord between the ends (the arc is close to it).
@@ -344,7 +372,7 @@ impl Tracer<'_> {
         };
         self.refine(&point, &tangent, va, vb, None, 0, &mut pts);
         pts.push(b.p);
-        Some(Arc { pts, ends: [a, b] })
+        Arc { pts, ends: [a, b] }
     }
 
     /// Adds the interior vertices between two arc points until every chord is within tolerance
@@ -472,6 +500,11 @@ impl Tracer<'_> {
             self.refine(point, tangent, vm, b, quarters.1, depth + 1, out);
         }
     }
+}
+
+/// The rounding level of the values of the cell `cell` (where the edge and arc solves stop).
+fn cell_noise(cell: &Patch) -> f64 {
+    2.0 * (cell.pt + cell.pr + 2) as f64 * UNIT_ROUNDOFF * cell.max_abs()
 }
 
 /// A point of an arc and its image.

@@ -23,6 +23,7 @@ use crate::assemble::MATCH_TOL;
 use crate::blowup::Corner;
 use crate::boundary::{end_at, join_loose, BoundaryPiece, PieceEnd};
 use crate::error::{Error, Result};
+use crate::extract::Settle;
 use crate::patch::{common_sign, Patch};
 use crate::system::unique;
 use crate::zeroset::{finish, run_cells, Filters, ZeroSetOptions};
@@ -153,7 +154,8 @@ pub fn nonnegative_set(
     let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
     let chord_abs =
         opts.zero.settings.chord_tol.get() * opts.zero.settings.size.map_or(diag, Size::get);
-    let stores: Vec<Cells> = fs.iter().map(|f| Cells::of(f, opts.pairs)).collect();
+    let (stores, values): (Vec<Cells>, Vec<Cells>) =
+        fs.iter().map(|f| Cells::of(f, opts.pairs)).unzip();
     let stores = cut_corners(stores, dom, &opts.meets, opts.pairs);
     // A meeting point at a corner of the domain is blown up (its small cell is traced apart,
     // in the coordinates where the zero sets leaving it part); any other is split on.
@@ -172,6 +174,7 @@ pub fn nonnegative_set(
     let mut out = trace_set(
         fs,
         &stores,
+        &values,
         &Tracing {
             dom,
             zero: &opts.zero,
@@ -190,10 +193,12 @@ pub fn nonnegative_set(
     let unit = Rect::of((0.0, 1.0), (0.0, 1.0));
     for c in &corners {
         for (chart, hs) in &c.halves {
-            let sub_stores: Vec<Cells> = hs.iter().map(|h| Cells::of(h, false)).collect();
+            let (sub_stores, sub_values): (Vec<Cells>, Vec<Cells>) =
+                hs.iter().map(|h| Cells::of(h, false)).unzip();
             let sub = trace_set(
                 hs,
                 &sub_stores,
+                &sub_values,
                 &Tracing {
                     dom: unit,
                     zero: &opts.zero,
@@ -256,11 +261,16 @@ struct Tracing<'a> {
     chord_abs: f64,
 }
 
-/// The boundary pieces of the set of `fs` (with their cells `stores`) on `how.dom`.
-fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNegativeSet {
+/// The boundary pieces of the set of `fs` (with their cells to trace `stores` and of values
+/// `values`, [`Cells::of`]) on `how.dom`.
+fn trace_set(
+    fs: &[TensorBSpline],
+    stores: &[Cells],
+    values: &[Cells],
+    how: &Tracing<'_>,
+) -> NonNegativeSet {
     let dom = how.dom;
     let band: Vec<f64> = fs.iter().map(|f| ZERO_BAND * f.max_abs_coef()).collect();
-    let values: Vec<Cells> = fs.iter().map(|f| Cells::of(f, false)).collect();
     let mut out = NonNegativeSet {
         complete: true,
         ..NonNegativeSet::default()
@@ -313,8 +323,9 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
         // An arc stands where every other function keeps one sign on its patch, or meets
         // this one at most once there (a regular interval Jacobian), or vanishes along it
         // (coinciding zero sets): then the signs at the arc's vertices tell where it leaves
-        // the set, and no excursion between two vertices goes unseen.
-        let settle = |p: &Patch, pts: &[[f64; 2]]| {
+        // the set, and no excursion between two vertices goes unseen. The functions that
+        // must vanish along it, by the first two tests failing:
+        let undecided = |p: &Patch| -> Option<Vec<usize>> {
             // Where the contacts meet every function vanishes: an arc through such a point is
             // that point's, not a boundary's. Split on, until the caller's proof excludes it.
             let meets = (how.pairs && p.t1 >= p.r0)
@@ -323,28 +334,43 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
                     .iter()
                     .any(|m| p.t0 <= m[0] && m[0] <= p.t1 && p.r0 <= m[1] && m[1] <= p.r1);
             if meets {
-                return false;
+                return None;
             }
             let key = box_key(p);
             restrict_upto(key, p.rect(), stores.len());
             let memo = restricted.borrow();
-            let Some(row) = memo.get(&key) else {
-                return false;
-            };
-            row.iter().enumerate().all(|(j, q)| {
-                j == k
-                    || q.as_ref().is_none_or(|q| {
-                        let err = 16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * q.max_abs();
-                        common_sign(q.c.iter().copied(), err) != 0
-                            || unique(p, q)
-                            || pts.iter().all(|&v| values[j].eval(v).abs() <= band[j])
+            let row = memo.get(&key)?;
+            Some(
+                row.iter()
+                    .enumerate()
+                    .filter(|&(j, q)| {
+                        j != k
+                            && q.as_ref().is_some_and(|q| {
+                                let err =
+                                    16.0 * (q.pt + q.pr + 2) as f64 * UNIT_ROUNDOFF * q.max_abs();
+                                common_sign(q.c.iter().copied(), err) == 0 && !unique(p, q)
+                            })
                     })
+                    .map(|(j, _)| j)
+                    .collect(),
+            )
+        };
+        let settle = |p: &Patch| match undecided(p) {
+            None => Settle::Splits,
+            Some(js) if js.is_empty() => Settle::Stands,
+            Some(_) => Settle::ByVertices,
+        };
+        let settle_vertices = |p: &Patch, pts: &[[f64; 2]]| {
+            undecided(p).is_some_and(|js| {
+                js.iter()
+                    .all(|&j| pts.iter().all(|&v| values[j].eval(v).abs() <= band[j]))
             })
         };
         let filters = Filters {
             keep: &keep,
             lax: &|_| false,
             settle: &settle,
+            settle_vertices: &settle_vertices,
         };
         let pieces = run_cells(
             &store.cells,
@@ -358,7 +384,7 @@ fn trace_set(fs: &[TensorBSpline], stores: &[Cells], how: &Tracing<'_>) -> NonNe
         out.complete &= z.complete;
         out.patches += z.patches;
         let cut = Cutter {
-            fs: &values,
+            fs: values,
             k,
             dom,
             band: &band,

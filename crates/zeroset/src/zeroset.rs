@@ -2,7 +2,7 @@
 
 use crate::assemble::assemble;
 use crate::error::Result;
-use crate::extract::{Pieces, Tracer};
+use crate::extract::{Pieces, Settle, Tracer};
 use crate::patch::Patch;
 use bspline::tensor::TensorBSpline;
 use numeric::tolerance::{ChordTol, ParamTol, Settings, Size};
@@ -118,7 +118,8 @@ pub fn zero_set(f: &TensorBSpline, opts: &ZeroSetOptions) -> Result<ZeroSet> {
 pub(crate) struct Filters<'a> {
     pub(crate) keep: &'a dyn Fn(&Patch) -> bool,
     pub(crate) lax: &'a dyn Fn(&Patch) -> bool,
-    pub(crate) settle: &'a dyn Fn(&Patch, &[[f64; 2]]) -> bool,
+    pub(crate) settle: &'a dyn Fn(&Patch) -> Settle,
+    pub(crate) settle_vertices: &'a dyn Fn(&Patch, &[[f64; 2]]) -> bool,
 }
 
 impl Filters<'static> {
@@ -127,7 +128,8 @@ impl Filters<'static> {
         Filters {
             keep: &|_| true,
             lax: &|_| false,
-            settle: &|_, _| true,
+            settle: &|_| Settle::Stands,
+            settle_vertices: &|_, _| true,
         }
     }
 }
@@ -157,6 +159,7 @@ pub(crate) fn run_cells(
         keep: filters.keep,
         lax: filters.lax,
         settle: filters.settle,
+        settle_vertices: filters.settle_vertices,
     };
     let mut pieces = Pieces::default();
     tracer.run(cells, &mut pieces);

@@ -22,29 +22,38 @@ pub(super) struct Cells {
 }
 
 impl Cells {
-    pub(super) fn of(f: &TensorBSpline, pairs: bool) -> Self {
-        let d = f.deg_t().max(f.deg_r());
-        let square = if pairs {
-            f.elevate(d - f.deg_t(), d - f.deg_r())
-        } else {
-            f.clone()
-        };
-        let mut cells: Vec<Patch> = square
-            .bezier_patches()
-            .iter()
-            .map(Patch::from_bezier)
-            .collect();
-        let mut sign = vec![1.0; cells.len()];
+    /// The function's cells to trace (on a domain of `pairs`, each diagonal cell that holds
+    /// the factor `t − r` divided by it), and its cells of values (the function itself), from
+    /// one conversion to Bézier form.
+    pub(super) fn of(f: &TensorBSpline, pairs: bool) -> (Self, Self) {
+        let patches = f.bezier_patches();
+        let values: Vec<Patch> = patches.iter().map(Patch::from_bezier).collect();
+        let mut traced = values.clone();
+        let mut sign = vec![1.0; traced.len()];
         if pairs {
-            for (c, s) in cells.iter_mut().zip(sign.iter_mut()) {
+            for ((c, s), b) in traced.iter_mut().zip(sign.iter_mut()).zip(&patches) {
                 if c.t0 == c.r0 && c.t1 == c.r1 {
-                    if let Some(q) = c.divide_diagonal(DIVISIBLE) {
+                    // (The division needs one degree both ways; the other cells keep theirs.)
+                    let d = b.deg_t.max(b.deg_r);
+                    let square = b.to_tensor().elevate(d - b.deg_t, d - b.deg_r);
+                    let square = square.bezier_patches();
+                    if let Some(q) = square
+                        .first()
+                        .and_then(|e| Patch::from_bezier(e).divide_diagonal(DIVISIBLE))
+                    {
                         *c = q;
                         *s = -1.0;
                     }
                 }
             }
         }
+        let traced = Self::of_patches(traced, sign);
+        let ones = vec![1.0; values.len()];
+        (traced, Self::of_patches(values, ones))
+    }
+
+    /// The cells `cells`, with their signs relative to the function's.
+    fn of_patches(cells: Vec<Patch>, sign: Vec<f64>) -> Self {
         let scale = cells.iter().map(Patch::max_abs).collect();
         Self::grid(cells, sign, scale)
     }

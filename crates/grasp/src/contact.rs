@@ -6,6 +6,7 @@ use crate::cells::Cell;
 use crate::model::{Cone, Model};
 use bspline::tensor::{BezierPatch, TensorBSpline};
 use numeric::rounding::UNIT_ROUNDOFF;
+use std::cell::RefCell;
 
 /// Halvings of a rectangle whose coefficients do not all show the sign, before it is given
 /// up as not proven.
@@ -33,6 +34,32 @@ struct Function {
     /// Per patch, whether its own coefficients all show the sign: then so do those of every
     /// rectangle in it (each a convex combination of them), and no restriction is needed.
     whole: Vec<bool>,
+    /// Per patch, what the proofs so far found there.
+    known: Vec<RefCell<Known>>,
+}
+
+/// What the proofs so far found on one function's patch. The searches try nested and
+/// overlapping rectangles, most of whose parts on a patch were settled before.
+#[derive(Default)]
+struct Known {
+    /// The last part proven positive `[s0, s1, t0, t1]`: so is every rectangle inside it
+    /// (its coefficients are convex combinations of that one's).
+    proven: Option<[f64; 4]>,
+    /// Points where the function was found negative (a corner coefficient, a value, below its
+    /// rounding): no rectangle holding one is proven.
+    negative: Vec<[f64; 2]>,
+}
+
+/// Points found negative kept per patch (the latest): the searches close in on one place.
+const NEGATIVE_POINTS: usize = 4;
+
+/// What the sign test found on a rectangle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Verdict {
+    Positive,
+    /// The function is negative at this point of it.
+    NegativeAt([f64; 2]),
+    Unproven,
 }
 
 impl Function {
@@ -57,12 +84,14 @@ impl Function {
             .iter()
             .map(|p| p.coefs.iter().all(|&c| c > err))
             .collect();
+        let known = patches.iter().map(|_| RefCell::default()).collect();
         Self {
             patches,
             t_breaks,
             r_breaks,
             err,
             whole,
+            known,
         }
     }
 
@@ -158,9 +187,34 @@ impl<'a> Positivity<'a> {
         let (patch, err) = (&function.patches[p], function.err);
         let s = [si[0].max(patch.t0), si[1].min(patch.t1)];
         let t = [tj[0].max(patch.r0), tj[1].min(patch.r1)];
-        !(s[0] < s[1] && t[0] < t[1])
-            || function.whole[p]
-            || positive(patch, s, t, err, PROOF_DEPTH)
+        if !(s[0] < s[1] && t[0] < t[1]) || function.whole[p] {
+            return true;
+        }
+        let mut known = function.known[p].borrow_mut();
+        let holds = |x: [f64; 2]| s[0] <= x[0] && x[0] <= s[1] && t[0] <= x[1] && x[1] <= t[1];
+        if known
+            .proven
+            .is_some_and(|[a, b, c, d]| a <= s[0] && s[1] <= b && c <= t[0] && t[1] <= d)
+        {
+            return true;
+        }
+        if known.negative.iter().any(|&x| holds(x)) {
+            return false;
+        }
+        match positive(patch, s, t, err, PROOF_DEPTH) {
+            Verdict::Positive => {
+                known.proven = Some([s[0], s[1], t[0], t[1]]);
+                true
+            }
+            Verdict::NegativeAt(x) => {
+                if known.negative.len() == NEGATIVE_POINTS {
+                    known.negative.remove(0);
+                }
+                known.negative.push(x);
+                false
+            }
+            Verdict::Unproven => false,
+        }
     }
 
     fn cell_index(&self, i: usize, j: usize) -> usize {
@@ -197,23 +251,35 @@ impl<'a> Positivity<'a> {
 }
 
 /// Whether `f` is proven positive on `s × t`, halving the longer side up to `depth` times.
-fn positive(f: &BezierPatch, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -> bool {
+fn positive(f: &BezierPatch, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -> Verdict {
     let g = f.restrict(s, t);
     if g.coefs.iter().all(|&c| c > err) {
-        return true;
+        return Verdict::Positive;
     }
     // The corners are values of f: a negative one ends the search.
     let (w, n) = (g.deg_r + 1, g.coefs.len());
-    let corner_negative = [0, w - 1, n - w, n - 1].iter().any(|&i| g.coefs[i] < -err);
-    if depth == 0 || corner_negative {
-        return false;
+    let corners = [
+        (0, [s[0], t[0]]),
+        (w - 1, [s[0], t[1]]),
+        (n - w, [s[1], t[0]]),
+        (n - 1, [s[1], t[1]]),
+    ];
+    if let Some(&(_, x)) = corners.iter().find(|&&(i, _)| g.coefs[i] < -err) {
+        return Verdict::NegativeAt(x);
     }
-    if s[1] - s[0] >= t[1] - t[0] {
+    if depth == 0 {
+        return Verdict::Unproven;
+    }
+    let halves = if s[1] - s[0] >= t[1] - t[0] {
         let m = 0.5 * (s[0] + s[1]);
-        positive(f, [s[0], m], t, err, depth - 1) && positive(f, [m, s[1]], t, err, depth - 1)
+        [([s[0], m], t), ([m, s[1]], t)]
     } else {
         let m = 0.5 * (t[0] + t[1]);
-        positive(f, s, [t[0], m], err, depth - 1) && positive(f, s, [m, t[1]], err, depth - 1)
+        [(s, [t[0], m]), (s, [m, t[1]])]
+    };
+    match positive(f, halves[0].0, halves[0].1, err, depth - 1) {
+        Verdict::Positive => positive(f, halves[1].0, halves[1].1, err, depth - 1),
+        other => other,
     }
 }
 

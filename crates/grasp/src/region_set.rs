@@ -2,7 +2,7 @@
 
 use crate::assemble::RawRegion;
 use crate::polyline::{bounds, inside, signed_area};
-use curve::distance_to_segment;
+use curve::{distance_to_segment, squared_distance_to_segment};
 
 /// How close (in the profile's parameter) a pair must lie to a corner line or a single pair
 /// of a region to be on it.
@@ -57,8 +57,12 @@ pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
         .parts
         .iter()
         .chain(&region.holes)
-        .flat_map(|l| l.windows(2).map(|w| distance_to_segment(p, w[0], w[1])))
+        .flat_map(|l| {
+            l.windows(2)
+                .map(|w| squared_distance_to_segment(p, w[0], w[1]))
+        })
         .fold(f64::INFINITY, f64::min)
+        .sqrt()
 }
 
 /// Samples across a part's box for its deepest points.

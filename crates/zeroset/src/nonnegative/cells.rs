@@ -68,7 +68,7 @@ impl Cells {
                     [a, b]
                 })
                 .collect();
-            v.sort_by(f64::total_cmp);
+            v.sort_unstable_by(f64::total_cmp);
             v.dedup();
             v
         };
@@ -79,8 +79,14 @@ impl Cells {
             let j = r_breaks.partition_point(|&x| x < p.r0);
             i * (r_breaks.len() - 1) + j
         };
-        let mut order: Vec<usize> = (0..cells.len()).collect();
-        order.sort_by_key(|&k| index(&cells[k]));
+        // (No two cells share a place on the grid.)
+        let mut keyed: Vec<(usize, usize)> = cells
+            .iter()
+            .enumerate()
+            .map(|(k, c)| (index(c), k))
+            .collect();
+        keyed.sort_unstable();
+        let order: Vec<usize> = keyed.into_iter().map(|(_, k)| k).collect();
         let mut taken: Vec<Option<Patch>> = cells.into_iter().map(Some).collect();
         Self {
             cells: order.iter().filter_map(|&k| taken[k].take()).collect(),

@@ -310,39 +310,79 @@ impl BezierPatch {
 pub fn restrict_bernstein(coefs: &mut [f64], [deg_t, deg_r]: [usize; 2], t: [f64; 2], r: [f64; 2]) {
     let w = deg_r + 1;
     if (r[0], r[1]) != (0.0, 1.0) {
-        for i in 0..=deg_t {
-            restrict_1d(coefs, i * w, 1, deg_r, r[0], r[1]);
+        for row in coefs.chunks_exact_mut(w).take(deg_t + 1) {
+            restrict_run(row, r[0], r[1]);
         }
     }
     if (t[0], t[1]) != (0.0, 1.0) {
-        for j in 0..=deg_r {
-            restrict_1d(coefs, j, w, deg_t, t[0], t[1]);
+        restrict_rows(&mut coefs[..(deg_t + 1) * w], w, deg_t, t[0], t[1]);
+    }
+}
+
+/// The Bernstein coefficients `b` of a polynomial on `[0, 1]` replaced by those on `[a, z]`
+/// ([`restrict_rows`] for one polynomial, stored contiguously).
+fn restrict_run(b: &mut [f64], a: f64, z: f64) {
+    let n = b.len().saturating_sub(1);
+    if n == 0 {
+        return;
+    }
+    if z == 0.0 {
+        let first = b[0];
+        b.fill(first);
+        return;
+    }
+    for level in 1..=n {
+        for m in (level..=n).rev() {
+            b[m] = (1.0 - z) * b[m - 1] + z * b[m];
+        }
+    }
+    let x = a / z;
+    for level in 1..=n {
+        for m in 0..=n - level {
+            b[m] = (1.0 - x) * b[m] + x * b[m + 1];
         }
     }
 }
 
-/// The Bernstein coefficients `b[start + k · stride]`, `k ≤ n`, of a polynomial on `[0, 1]`
-/// replaced by those on `[a, z]`: the part left of `z` by one de Casteljau subdivision, then
-/// the part of that right of `a` (at `a / z` of it) by another.
-fn restrict_1d(b: &mut [f64], start: usize, stride: usize, n: usize, a: f64, z: f64) {
-    let at = |k: usize| start + k * stride;
+/// The Bernstein coefficients of degree `n` of `w` polynomials on `[0, 1]`, stored as `n + 1`
+/// rows of `w` (row `k` holds every polynomial's `k`-th coefficient), replaced by those on
+/// `[a, z]`: the part left of `z` by one de Casteljau subdivision, then the part of that right
+/// of `a` (at `a / z` of it) by another. (Whole rows at a time: a column of a tensor is
+/// restricted with the others, in contiguous memory.)
+fn restrict_rows(b: &mut [f64], w: usize, n: usize, a: f64, z: f64) {
     if z == 0.0 {
-        // Everything at the parameter 0: the first coefficient, n + 1 times.
-        let first = b[start];
-        (0..=n).for_each(|k| b[at(k)] = first);
+        // Everything at the parameter 0: the first row, n + 1 times.
+        let (first, rest) = b.split_at_mut(w);
+        rest.chunks_exact_mut(w)
+            .for_each(|row| row.copy_from_slice(first));
         return;
     }
-    // Left part at z: b_k ← the first point of level k (computed in place from the right).
+    // Row k ← (1 − x) row k + x row k + 1 (`lead`: row k is the one written) or row k + 1 ←
+    // (1 − x) row k + x row k + 1 (trailing).
+    let lerp = |b: &mut [f64], k: usize, x: f64, lead: bool| {
+        let (lo, hi) = b.split_at_mut((k + 1) * w);
+        let (p, q) = (&mut lo[k * w..], &mut hi[..w]);
+        if lead {
+            p.iter_mut()
+                .zip(q.iter())
+                .for_each(|(p, &q)| *p = (1.0 - x) * *p + x * q);
+        } else {
+            q.iter_mut()
+                .zip(p.iter())
+                .for_each(|(q, &p)| *q = (1.0 - x) * p + x * *q);
+        }
+    };
+    // Left part at z: row k ← the first point of level k (computed in place from the right).
     for level in 1..=n {
         for m in (level..=n).rev() {
-            b[at(m)] = (1.0 - z) * b[at(m - 1)] + z * b[at(m)];
+            lerp(b, m - 1, z, false);
         }
     }
-    // Right part at x = a / z: b_k ← the last point of level n − k (in place from the left).
+    // Right part at x = a / z: row k ← the last point of level n − k (in place from the left).
     let x = a / z;
     for level in 1..=n {
         for m in 0..=n - level {
-            b[at(m)] = (1.0 - x) * b[at(m)] + x * b[at(m + 1)];
+            lerp(b, m, x, true);
         }
     }
 }

@@ -448,11 +448,10 @@ fn cut_corners(mut stores: Vec<Cells>, dom: Rect, meets: &[[f64; 2]], pairs: boo
         stores = stores
             .into_iter()
             .map(|s| {
-                let s = s.split(0, at_t).split(1, at_r);
                 if pairs {
-                    s.split(0, at_r).split(1, at_t)
+                    s.split(&[(0, at_t), (1, at_r), (0, at_r), (1, at_t)])
                 } else {
-                    s
+                    s.split(&[(0, at_t), (1, at_r)])
                 }
             })
             .collect();

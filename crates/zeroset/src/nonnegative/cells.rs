@@ -97,31 +97,38 @@ impl Cells {
         }
     }
 
-    /// The cells with every one that `at` crosses in the direction `axis` (0: `t`, 1: `r`)
-    /// split there (each part keeps its cell's sign, and its scale of rounding).
-    pub(super) fn split(self, axis: usize, at: f64) -> Self {
-        let mut cells = Vec::with_capacity(self.cells.len() + 8);
+    /// The cells with every one that a cut `(axis, at)` crosses (`axis` 0: at `t = at`, 1: at
+    /// `r = at`) split there, each part keeping its cell's sign and its scale of rounding.
+    pub(super) fn split(self, cuts: &[(usize, f64)]) -> Self {
+        let mut cells = Vec::with_capacity(self.cells.len() + 8 * cuts.len());
         let (mut sign, mut scale) = (Vec::new(), Vec::new());
+        let mut pending: Vec<(Patch, f64, f64)> = Vec::new();
         for ((c, s), e) in self.cells.into_iter().zip(self.sign).zip(self.scale) {
-            let (lo, hi) = if axis == 0 {
-                (c.t0, c.t1)
-            } else {
-                (c.r0, c.r1)
-            };
-            if lo < at && at < hi {
-                let u = (at - lo) / (hi - lo);
-                let (a, b) = if axis == 0 {
-                    c.split_t(u)
-                } else {
-                    c.split_r(u)
-                };
-                cells.extend([a, b]);
-                sign.extend([s, s]);
-                scale.extend([e, e]);
-            } else {
-                cells.push(c);
-                sign.push(s);
-                scale.push(e);
+            pending.push((c, s, e));
+            while let Some((c, s, e)) = pending.pop() {
+                let crossing = cuts.iter().find_map(|&(axis, at)| {
+                    let (lo, hi) = if axis == 0 {
+                        (c.t0, c.t1)
+                    } else {
+                        (c.r0, c.r1)
+                    };
+                    (lo < at && at < hi).then(|| (axis, (at - lo) / (hi - lo)))
+                });
+                match crossing {
+                    Some((axis, u)) => {
+                        let (a, b) = if axis == 0 {
+                            c.split_t(u)
+                        } else {
+                            c.split_r(u)
+                        };
+                        pending.extend([(a, s, e), (b, s, e)]);
+                    }
+                    None => {
+                        cells.push(c);
+                        sign.push(s);
+                        scale.push(e);
+                    }
+                }
             }
         }
         Self::grid(cells, sign, scale)

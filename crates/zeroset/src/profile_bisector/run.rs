@@ -5,7 +5,7 @@ use super::point_site::Reach;
 use crate::bisector::{bbox_of_points, Bisector, BisectorOptions, Branch, FAR, TRIM_SLACK};
 use bspline::Rational;
 use curve::{ParamCurve, Profile};
-use geometry::NearestPoint;
+use geometry::{Clearance, NearestPoint, ProfileClearance};
 use numeric::tolerance::{ChordTol, Settings, Size};
 
 /// What one computation shares: the options, the profiles' size and reach.
@@ -99,12 +99,17 @@ impl<'a> Run<'a> {
         }
         let slack = TRIM_SLACK * self.diag;
         let foot = |k: usize, u: f64| profiles[k].jet(u).p.arr();
+        // No point of either profile nearer than the foot point (less the slack): proven on
+        // the control hulls where rounding allows, else by the nearest point found (which
+        // stops once one nearer is found).
         let keeps = |tr: [f64; 2], x: [f64; 2]| {
             let f = foot(0, tr[0]);
-            let rho = (x[0] - f[0]).hypot(x[1] - f[1]);
-            profiles
-                .iter()
-                .all(|p| p.nearest(x, rho - slack).distance >= rho - slack)
+            let r = (x[0] - f[0]).hypot(x[1] - f[1]) - slack;
+            profiles.iter().all(|p| match p.clearance(x, r) {
+                Clearance::Clear => true,
+                Clearance::Entered { .. } => false,
+                Clearance::Unresolved => p.nearest(x, r).distance >= r,
+            })
         };
         let mut branches = Vec::new();
         for b in out.branches.drain(..) {

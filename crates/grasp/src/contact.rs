@@ -283,6 +283,21 @@ fn positive(f: &BezierPatch, s: [f64; 2], t: [f64; 2], err: f64, depth: usize) -
     }
 }
 
+/// Arc length per unit of the profile's parameter at `u`.
+fn speed(model: &Model<'_>, u: f64) -> f64 {
+    let (i, _) = model.locate(u);
+    let (a, b) = model.forms[i].domain();
+    let (_, d) = model.point_tangent(u);
+    d[0].hypot(d[1]) * (b - a)
+}
+
+/// An upper bound on the half arc length of the square [`around`] can prove round `center`,
+/// a point `room` (in the profile's parameter) from the region's edge: the disk inscribed in
+/// the square's rectangle of parameters lies in the region.
+pub(crate) fn square_at_most(model: &Model<'_>, center: [f64; 2], room: f64) -> f64 {
+    room * speed(model, center[0]).max(speed(model, center[1]))
+}
+
 /// The independent contact region around `center` (a force-closure pair, profile parameters):
 /// the largest square of equal arc lengths around it that is proven, then each side pushed
 /// out as far as proven; with the square's half arc length. `reach` is the region's extent in
@@ -294,14 +309,7 @@ pub(crate) fn around(
     center: [f64; 2],
     reach: [f64; 2],
 ) -> Option<([f64; 2], [f64; 2], f64)> {
-    // Arc length per unit of the profile's parameter.
-    let speed = |u: f64| {
-        let (i, _) = model.locate(u);
-        let (a, b) = model.forms[i].domain();
-        let (_, d) = model.point_tangent(u);
-        d[0].hypot(d[1]) * (b - a)
-    };
-    let (vs, vt) = (speed(center[0]), speed(center[1]));
+    let (vs, vt) = (speed(model, center[0]), speed(model, center[1]));
     if !(vs > 0.0 && vt > 0.0) {
         return None;
     }

@@ -3,7 +3,7 @@
 use crate::assemble::{regions, RawRegion};
 use crate::best::{descend, most_robust};
 use crate::cells::{cells, trace};
-use crate::contact::{around, Positivity};
+use crate::contact::{around, square_at_most, Positivity};
 use crate::corners::corner_lines;
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -118,9 +118,16 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         // points: elsewhere its square is the one to find.)
         let candidates = deepest(r, CONTACT_CENTERS);
         let best_depth = depth(r, center);
+        // (A centre whose square cannot come clearly larger is not searched: its region's
+        // edge lies within a chord of the polylines.)
+        let beaten = |c: [f64; 2], d: f64| {
+            at_best
+                .is_some_and(|b| square_at_most(&model, c, d + 2.0 * chord) <= b.2 * CLEARLY_LARGER)
+        };
         let deeper = candidates
             .into_iter()
             .filter(|&(_, d)| at_best.is_none() || d > DEEPER * best_depth)
+            .filter(|&(c, d)| !beaten(c, d))
             .filter_map(|(c, _)| around(&model, &proof, c, reach))
             .max_by(|a, b| a.2.total_cmp(&b.2));
         let contact = match (at_best, deeper) {

@@ -289,6 +289,20 @@ fn a_large_friction_is_complete() {
     assert_eq!(g.regions.len(), 1);
 }
 
+/// A limaçon within 0.3 % of a circle, at a small friction (found by a stress run of the dense
+/// check, 10 times its cases): the cone conditions at the two contacts nearly coincide along
+/// the band round the diameter pairs, and the subdivision that parts their zero sets reaches
+/// the patch limit. The result says so (complete: false); it certifies nothing it has not
+/// traced.
+#[test]
+#[ignore = "crate limitation: the limaçon a = 0.5, b = 0.0015 at μ = 0.05 hits the patch limit \
+            after ~50 s (complete: false)"]
+fn a_nearly_circular_limacon_is_complete() {
+    let limacon = curve::shapes::Limacon::new(0.5, 0.001_514_719_659_393_623).unwrap();
+    let g = grasps(&limacon, &GraspOptions::friction(0.05)).unwrap();
+    assert!(g.complete, "{:?}", g.doubts);
+}
+
 /// A quadratic whose control polygon is symmetric about the origin (`P(i+5) = −P(i)`) has the
 /// antipodal pair `(0, 5)` on its knots, at the seam (the grasp regions hold it: their best
 /// grasp needs friction 2e-12 there).

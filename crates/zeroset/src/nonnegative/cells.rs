@@ -98,38 +98,44 @@ impl Cells {
     }
 
     /// The cells with every one that a cut `(axis, at)` crosses (`axis` 0: at `t = at`, 1: at
-    /// `r = at`) split there, each part keeping its cell's sign and its scale of rounding.
+    /// `r = at`) split there, cut after cut, each part keeping its cell's sign and its scale of
+    /// rounding; sorted into the grid once.
     pub(super) fn split(self, cuts: &[(usize, f64)]) -> Self {
-        let mut cells = Vec::with_capacity(self.cells.len() + 8 * cuts.len());
-        let (mut sign, mut scale) = (Vec::new(), Vec::new());
-        let mut pending: Vec<(Patch, f64, f64)> = Vec::new();
-        for ((c, s), e) in self.cells.into_iter().zip(self.sign).zip(self.scale) {
-            pending.push((c, s, e));
-            while let Some((c, s, e)) = pending.pop() {
-                let crossing = cuts.iter().find_map(|&(axis, at)| {
-                    let (lo, hi) = if axis == 0 {
-                        (c.t0, c.t1)
+        let mut parts: Vec<(Patch, f64, f64)> = self
+            .cells
+            .into_iter()
+            .zip(self.sign)
+            .zip(self.scale)
+            .map(|((c, s), e)| (c, s, e))
+            .collect();
+        for &(axis, at) in cuts {
+            let mut next = Vec::with_capacity(parts.len() + 8);
+            for (c, s, e) in parts {
+                let (lo, hi) = if axis == 0 {
+                    (c.t0, c.t1)
+                } else {
+                    (c.r0, c.r1)
+                };
+                if lo < at && at < hi {
+                    let u = (at - lo) / (hi - lo);
+                    let (a, b) = if axis == 0 {
+                        c.split_t(u)
                     } else {
-                        (c.r0, c.r1)
+                        c.split_r(u)
                     };
-                    (lo < at && at < hi).then(|| (axis, (at - lo) / (hi - lo)))
-                });
-                match crossing {
-                    Some((axis, u)) => {
-                        let (a, b) = if axis == 0 {
-                            c.split_t(u)
-                        } else {
-                            c.split_r(u)
-                        };
-                        pending.extend([(a, s, e), (b, s, e)]);
-                    }
-                    None => {
-                        cells.push(c);
-                        sign.push(s);
-                        scale.push(e);
-                    }
+                    next.extend([(a, s, e), (b, s, e)]);
+                } else {
+                    next.push((c, s, e));
                 }
             }
+            parts = next;
+        }
+        let mut cells = Vec::with_capacity(parts.len());
+        let (mut sign, mut scale) = (Vec::new(), Vec::new());
+        for (c, s, e) in parts {
+            cells.push(c);
+            sign.push(s);
+            scale.push(e);
         }
         Self::grid(cells, sign, scale)
     }

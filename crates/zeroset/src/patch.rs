@@ -268,18 +268,16 @@ impl Patch {
         let (bv, dv) = rest.split_at_mut(self.pr + 1);
         bernstein(u, bu, du);
         bernstein(v, bv, dv);
-        let w = self.w();
         let (mut f, mut ft, mut fr) = (0.0, 0.0, 0.0);
-        for i in 0..=self.pt {
-            let row = &self.c[i * w..(i + 1) * w];
+        for ((row, &b), &d) in self.c.chunks_exact(self.w()).zip(&*bu).zip(&*du) {
             let (mut s, mut sd) = (0.0, 0.0);
-            for j in 0..w {
-                s += row[j] * bv[j];
-                sd += row[j] * dv[j];
+            for ((&c, &x), &dx) in row.iter().zip(&*bv).zip(&*dv) {
+                s += c * x;
+                sd += c * dx;
             }
-            f += bu[i] * s;
-            ft += du[i] * s;
-            fr += bu[i] * sd;
+            f += b * s;
+            ft += d * s;
+            fr += b * sd;
         }
         [f, ft / ht, fr / hr]
     }
@@ -400,29 +398,42 @@ fn binom(n: usize, i: usize) -> f64 {
 }
 
 /// Bernstein basis values `b` and derivatives `d` (with respect to the local parameter) of
-/// degree `b.len() − 1` at `u`. Products of powers: every term is positive, so there is no
-/// cancellation. Filled in place (returning arrays by value showed up as copies in profiles).
+/// degree `b.len() − 1` at `u`: the basis of one degree less as products of powers (every
+/// term positive, so no cancellation), then one de Casteljau step up to this degree, whose
+/// differences are the derivatives. Filled in place (returning arrays by value showed up as
+/// copies in profiles).
 pub(crate) fn bernstein(u: f64, b: &mut [f64], d: &mut [f64]) {
     let n = b.len() - 1;
-    let v = 1.0 - u;
-    // First b[i] = v^(n−i); then, in increasing i, v^(n−1−i) is still in b[i + 1].
-    b[n] = 1.0;
-    for i in (0..n).rev() {
-        b[i] = b[i + 1] * v;
+    let d = &mut d[..=n];
+    if n == 0 {
+        b[0] = 1.0;
+        d[0] = 0.0;
+        return;
     }
-    // b[i] = C(n, i) u^i v^(n−i); B^{n−1}_i = C(n−1, i) u^i v^(n−1−i); d[i] = n (B^{n−1}_{i−1} − B^{n−1}_i).
-    let (mut pu, mut prev) = (1.0, 0.0);
-    for i in 0..=n {
-        let cur = if i < n {
-            binom(n - 1, i) * pu * b[i + 1]
-        } else {
-            0.0
-        };
-        b[i] *= binom(n, i) * pu;
-        d[i] = n as f64 * (prev - cur);
-        prev = cur;
+    let v = 1.0 - u;
+    // b[i] = C(n − 1, i) u^i v^(n−1−i) for i < n: first the powers of v, from the right.
+    let lower = &mut b[..n];
+    let mut pv = 1.0;
+    for x in lower.iter_mut().rev() {
+        *x = pv;
+        pv *= v;
+    }
+    let mut pu = 1.0;
+    for (i, x) in lower.iter_mut().enumerate() {
+        *x *= binom(n - 1, i) * pu;
         pu *= u;
     }
+    // B^n_i = v B^{n−1}_i + u B^{n−1}_{i−1}; (B^n_i)' = n (B^{n−1}_{i−1} − B^{n−1}_i).
+    let nf = n as f64;
+    let mut prev = 0.0;
+    for (x, dx) in b[..n].iter_mut().zip(d.iter_mut()) {
+        let cur = *x;
+        *x = v * cur + u * prev;
+        *dx = nf * (prev - cur);
+        prev = cur;
+    }
+    b[n] = u * prev;
+    d[n] = nf * prev;
 }
 
 #[cfg(test)]

@@ -37,6 +37,21 @@ fn bernstein_sums_to_one_and_matches_the_product_formula() {
             let c = (0..3).fold(1.0, |c, k| c * (n - k) as f64 / (k + 1) as f64);
             testkit::assert_near!(binom(n, 3), c, 1e-9 * c);
         }
+        // Each value and derivative against the product formula (B^{−1} = B^n_{n+1} = 0).
+        let (u, v) = (0.37f64, 0.63f64);
+        let basis = |m: usize, i: usize| binom(m, i) * u.powi(i as i32) * v.powi((m - i) as i32);
+        for i in 0..=n {
+            testkit::assert_near!(b[i], basis(n, i), 1e-12 * basis(n, i), "n {n} i {i}");
+            let left = if i > 0 { basis(n - 1, i - 1) } else { 0.0 };
+            let right = if i < n { basis(n - 1, i) } else { 0.0 };
+            let want = n as f64 * (left - right);
+            testkit::assert_near!(
+                d[i],
+                want,
+                1e-12 * (n as f64) * (left + right),
+                "n {n} i {i}"
+            );
+        }
     }
 }
 

@@ -36,20 +36,10 @@ pub(crate) fn cells(
     opts: &GraspOptions,
     widths: [Option<f64>; 2],
 ) -> Result<Vec<Cell>> {
-    cells_where(model, opts, widths, |_, _| true)
-}
-
-/// The cells `(i, j)` of `model` that `wanted` names, with their functions.
-pub(crate) fn cells_where(
-    model: &Model<'_>,
-    opts: &GraspOptions,
-    widths: [Option<f64>; 2],
-    wanted: impl Fn(usize, usize) -> bool,
-) -> Result<Vec<Cell>> {
     let n = model.n();
     let mut out = Vec::with_capacity(n * (n + 1) / 2);
     for i in 0..n {
-        for j in (i..n).filter(|&j| wanted(i, j)) {
+        for j in i..n {
             let fs = functions(&model.forms[i], &model.forms[j], opts.friction, widths)?;
             out.push(Cell { i, j, fs });
         }

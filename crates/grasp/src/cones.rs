@@ -70,6 +70,23 @@ impl Form {
         })
     }
 
+    /// The same form on `[lo, hi]` (inside the domain): the functions of a box of pairs
+    /// are built from their contacts' stretches, not cut out of the whole cell's.
+    pub(crate) fn restrict(&self, lo: f64, hi: f64) -> Result<Self> {
+        let (qx, qy) = (self.qx.restrict(lo, hi)?, self.qy.restrict(lo, hi)?);
+        let q_pieces = BSpline::stack(&[&qx, &qy])?.bezier_pieces();
+        Ok(Self {
+            x: self.x.restrict(lo, hi)?,
+            y: self.y.restrict(lo, hi)?,
+            w: self.w.restrict(lo, hi)?,
+            qx,
+            qy,
+            q_pieces,
+            curve: self.curve.restrict(lo, hi)?,
+            orientation: self.orientation,
+        })
+    }
+
     /// The parameter domain.
     pub(crate) fn domain(&self) -> (f64, f64) {
         self.curve.domain()

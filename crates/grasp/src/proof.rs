@@ -7,7 +7,7 @@
 //! crosses the box, one point tells whether the box is all in it or all out.
 
 use crate::assemble::RawRegion;
-use crate::cells::cells_where;
+use crate::cones::functions;
 use crate::corners::corner_lines;
 use crate::error::Result;
 use crate::model::Model;
@@ -196,22 +196,16 @@ fn lower_set_round(
     if i > j || !(s0 < s1 && t0 < t1) || meets_diagonal || meets_joint || meets_seam {
         return Ok(None);
     }
-    let Some(c) = cells_where(model, lower, widths, |a, b| (a, b) == (i, j))?.pop() else {
-        return Ok(None);
-    };
     let (fi, fj) = (model.forms[i].domain(), model.forms[j].domain());
     let form = |(a, b): (f64, f64), k: usize, u: f64| a + (u - k as f64) * (b - a);
-    let fs =
-        c.fs.iter()
-            .map(|f| {
-                f.restrict(
-                    form(fi, i, s0),
-                    form(fi, i, s1),
-                    form(fj, j, t0),
-                    form(fj, j, t1),
-                )
-            })
-            .collect::<std::result::Result<Vec<_>, _>>()?;
+    // (From the contacts' stretches: the whole cell's functions cost as many times more as the
+    // segments have spans beyond the box's.)
+    let fs = functions(
+        &model.forms[i].restrict(form(fi, i, s0), form(fi, i, s1))?,
+        &model.forms[j].restrict(form(fj, j, t0), form(fj, j, t1))?,
+        lower.friction,
+        widths,
+    )?;
     // (The cell's own chord tolerance, not one relative to the small box.)
     let diagonal = (fi.1 - fi.0).hypot(fj.1 - fj.0);
     let mut settings = lower.settings;

@@ -213,7 +213,13 @@ impl Rational {
     pub fn eval_derivs(&self, u: f64, k: usize, out: &mut [f64]) {
         let d = self.dim();
         let mut h: SmallVec<[f64; 16]> = smallvec::smallvec![0.0; (k + 1) * (d + 1)];
-        self.hom.eval_derivs(u, k, &mut h);
+        // (The point and tangent, the most asked, by de Boor's algorithm stopped a level early:
+        // a fraction of the work of every basis function's derivatives.)
+        if k == 1 {
+            self.hom.eval_d1(u, &mut h);
+        } else {
+            self.hom.eval_derivs(u, k, &mut h);
+        }
         let w = |j: usize| h[j * (d + 1) + d];
         for j in 0..=k {
             let mut binom = 1.0;

@@ -331,15 +331,20 @@ fn restrict_run(b: &mut [f64], a: f64, z: f64) {
         b.fill(first);
         return;
     }
-    for level in 1..=n {
-        for m in (level..=n).rev() {
-            b[m] = (1.0 - z) * b[m - 1] + z * b[m];
+    // (A pass at the end it keeps, z = 1 or x = 0, would leave every coefficient as it is.)
+    if z != 1.0 {
+        for level in 1..=n {
+            for m in (level..=n).rev() {
+                b[m] = (1.0 - z) * b[m - 1] + z * b[m];
+            }
         }
     }
     let x = a / z;
-    for level in 1..=n {
-        for m in 0..=n - level {
-            b[m] = (1.0 - x) * b[m] + x * b[m + 1];
+    if x != 0.0 {
+        for level in 1..=n {
+            for m in 0..=n - level {
+                b[m] = (1.0 - x) * b[m] + x * b[m + 1];
+            }
         }
     }
 }
@@ -373,16 +378,20 @@ fn restrict_rows(b: &mut [f64], w: usize, n: usize, a: f64, z: f64) {
         }
     };
     // Left part at z: row k ← the first point of level k (computed in place from the right).
-    for level in 1..=n {
-        for m in (level..=n).rev() {
-            lerp(b, m - 1, z, false);
+    if z != 1.0 {
+        for level in 1..=n {
+            for m in (level..=n).rev() {
+                lerp(b, m - 1, z, false);
+            }
         }
     }
     // Right part at x = a / z: row k ← the last point of level n − k (in place from the left).
     let x = a / z;
-    for level in 1..=n {
-        for m in 0..=n - level {
-            lerp(b, m, x, true);
+    if x != 0.0 {
+        for level in 1..=n {
+            for m in 0..=n - level {
+                lerp(b, m, x, true);
+            }
         }
     }
 }

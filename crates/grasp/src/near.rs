@@ -51,20 +51,22 @@ impl<'a> NearContacts<'a> {
     /// in their forms' parameters) is force closure, proven from the directions of the arc
     /// between the contacts.
     pub(crate) fn excluded(&self, i: usize, j: usize, bx: Rect) -> bool {
-        self.normals_apart(i, j, bx) || self.chords_beyond(i, j, bx)
-    }
-
-    /// Whether the inward normal at `s` and the reversed one at `t` stay more than `2α` apart
-    /// over `bx`.
-    fn normals_apart(&self, i: usize, j: usize, bx: Rect) -> bool {
+        // The hodograph's control points over the box's stretches: every tangent at `s` and
+        // at `t` is a positive combination of them.
         let forms = &self.model.forms;
         let (mut at_s, mut at_t) = (Vec::new(), Vec::new());
         forms[i].hodograph_points(bx.t.lo, bx.t.hi, &mut at_s);
         forms[j].hodograph_points(bx.r.lo, bx.r.hi, &mut at_t);
+        self.normals_apart(&at_s, &at_t) || self.chords_beyond(i, j, bx, [&at_s, &at_t])
+    }
+
+    /// Whether the inward normal at `s` and the reversed one at `t` stay more than `2α` apart,
+    /// where the tangents are positive combinations of `at_s` and of `at_t`.
+    fn normals_apart(&self, at_s: &[[f64; 2]], at_t: &[[f64; 2]]) -> bool {
         // The tangents' directions as arcs (centre, half-width); the normals turn by the same
         // quarter turn at both ends, and reversing one adds a half turn: the gap between the
         // normal at s and the reversed normal at t is π minus the gap between the tangents.
-        let (Some(ts), Some(tt)) = (direction_arc(&at_s), direction_arc(&at_t)) else {
+        let (Some(ts), Some(tt)) = (direction_arc(at_s), direction_arc(at_t)) else {
             return false;
         };
         let between = angle_between(ts.0, tt.0);
@@ -72,8 +74,9 @@ impl<'a> NearContacts<'a> {
         gap > 2.0 * self.mu.atan() + ANGLE_MARGIN
     }
 
-    /// Whether the chords between nearby contacts are proven beyond a cone edge.
-    fn chords_beyond(&self, i: usize, j: usize, bx: Rect) -> bool {
+    /// Whether the chords between nearby contacts are proven beyond a cone edge (`hodographs`:
+    /// [`NearContacts::excluded`]'s control points at `s` and at `t`).
+    fn chords_beyond(&self, i: usize, j: usize, bx: Rect, hodographs: [&[[f64; 2]]; 2]) -> bool {
         let n = self.model.n();
         let dom = |k: usize| self.model.forms[k].domain();
         let share = |k: usize, lo: f64, hi: f64| {
@@ -106,32 +109,40 @@ impl<'a> NearContacts<'a> {
         }
         tries
             .iter()
-            .any(|(arcs, sign)| short(arcs) && self.beyond_an_edge(i, j, bx, arcs, *sign))
+            .any(|(arcs, sign)| short(arcs) && self.beyond_an_edge(i, j, hodographs, arcs, *sign))
     }
 
-    /// Whether one cone function is negative on `bx` when `d` is `sign` times a positive
+    /// Whether one cone function is negative on the box when `d` is `sign` times a positive
     /// combination of the hodograph directions on `arcs`.
-    fn beyond_an_edge(&self, i: usize, j: usize, bx: Rect, arcs: &[Stretch], sign: f64) -> bool {
+    fn beyond_an_edge(
+        &self,
+        i: usize,
+        j: usize,
+        [at_s, at_t]: [&[[f64; 2]]; 2],
+        arcs: &[Stretch],
+        sign: f64,
+    ) -> bool {
         let forms = &self.model.forms;
         let mut chord = Vec::new();
         for &(k, lo, hi) in arcs {
             forms[k].hodograph_points(lo, hi, &mut chord);
         }
-        let (mut at_s, mut at_t) = (Vec::new(), Vec::new());
-        forms[i].hodograph_points(bx.t.lo, bx.t.hi, &mut at_s);
-        forms[j].hodograph_points(bx.r.lo, bx.r.hi, &mut at_t);
         if chord.is_empty() || at_s.is_empty() || at_t.is_empty() {
             return false;
         }
+        // (Each direction's length once, not once per product.)
+        let chord: Vec<([f64; 2], f64)> =
+            chord.into_iter().map(|c| (c, c[0].hypot(c[1]))).collect();
         // At s the cone holds d, at t it holds −d.
-        let sides = [(i, &at_s, sign), (j, &at_t, -sign)];
+        let sides = [(i, at_s, sign), (j, at_t, -sign)];
         let beyond = sides.into_iter().any(|(k, edge_pts, dir)| {
             [false, true].into_iter().any(|ahead| {
                 edge_pts.iter().all(|&q| {
                     let n = forms[k].edge_normal_at(q, self.mu, ahead);
-                    chord.iter().all(|c| {
+                    let margin = SIGN_MARGIN * n[0].hypot(n[1]);
+                    chord.iter().all(|&(c, length)| {
                         let dot = dir * (n[0] * c[0] + n[1] * c[1]);
-                        dot < -SIGN_MARGIN * n[0].hypot(n[1]) * c[0].hypot(c[1])
+                        dot < -margin * length
                     })
                 })
             })

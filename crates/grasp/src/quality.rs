@@ -6,7 +6,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// The angle between `d` and the inward normals a contact at profile parameter `u` offers: at
 /// a smooth point the angle to its normal; at a convex corner the angle to the nearer edge of
 /// its cone (0 inside it); a reflex corner takes no part (π).
-fn contact_angle(model: &Model<'_>, u: f64, d: [f64; 2]) -> f64 {
+fn contact_angle(model: &Model<'_>, u: f64, tan: [f64; 2], d: [f64; 2]) -> f64 {
     let angle = |n: [f64; 2]| {
         let along = (n[1] * d[0] - n[0] * d[1]).abs();
         along.atan2(n[0] * d[0] + n[1] * d[1])
@@ -24,7 +24,6 @@ fn contact_angle(model: &Model<'_>, u: f64, d: [f64; 2]) -> f64 {
             }
         }
         Some(Cone::Smooth) | None => {
-            let (_, tan) = model.point_tangent(u);
             let o = model.profile.orientation();
             angle([-o * tan[1], o * tan[0]])
         }
@@ -35,14 +34,14 @@ fn contact_angle(model: &Model<'_>, u: f64, d: [f64; 2]) -> f64 {
 /// the other contact (`[0, π]`): the pair is force closure for friction μ exactly when this
 /// is at most `atan μ`.
 pub(crate) fn slip_angle(model: &Model<'_>, s: f64, t: f64) -> f64 {
-    let (p, _) = model.point_tangent(s);
-    let (q, _) = model.point_tangent(t);
+    let (p, tan_s) = model.point_tangent(s);
+    let (q, tan_t) = model.point_tangent(t);
     let d = [q[0] - p[0], q[1] - p[1]];
     if d == [0.0, 0.0] {
         // One point: no chord, no grasp.
         return PI;
     }
-    contact_angle(model, s, d).max(contact_angle(model, t, [-d[0], -d[1]]))
+    contact_angle(model, s, tan_s, d).max(contact_angle(model, t, tan_t, [-d[0], -d[1]]))
 }
 
 /// The least friction coefficient that makes the pair force closure (infinite where a chord

@@ -7,7 +7,7 @@ use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::finish::certified_rest;
 use crate::ledger::Ledger;
 use crate::pairs::THETA_NOISE;
-use crate::pairs::{negligible, opposite_pair, Pair};
+use crate::pairs::{antipodal_ends, negligible, opposite_pair, Pair};
 use crate::search::{antipodal_points, Budget};
 use crate::tangent;
 use crate::tracks::Tracks;
@@ -203,6 +203,8 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Certified<
                 continue;
             }
             let Some(pair) = opposite_pair(v, p, v, q, &mut ledger) else {
+                // (Normals opposite only at an end of each: that pair of ends, if antipodal.)
+                raw.extend(antipodal_ends(v, p, v, q));
                 continue;
             };
             if is_family(&pair, &mut ledger) {

@@ -227,6 +227,54 @@ pub(crate) fn negligible(v: &View, s0: f64, s1: f64) -> bool {
     n0.cross(n1).atan2(n0.dot(n1)).abs() <= THETA_NOISE
 }
 
+/// The pair of ends of `p` (on `vs`) and `q` (on `vt`) that is antipodal to rounding, where the
+/// pieces' ranges of opposite normal angles only touch (within [`ANGLE_OVERLAP`], where
+/// [`opposite_pair`] finds no section): there the only points with opposite normals are an
+/// end of each, as where both pieces end at inflections, or at knots where the curvature
+/// jumps, whose normals are opposite. `None` when the ranges do not touch at a pair of ends,
+/// or `sin θ` there is beyond its noise (no pair).
+pub(crate) fn antipodal_ends<'a>(
+    vs: &'a View<'a>,
+    p: &Piece,
+    vt: &'a View<'a>,
+    q: &Piece,
+) -> Option<(f64, f64)> {
+    let (p0, p1) = ordered(p.psi_lo, p.psi_lo + p.rot);
+    let (q0, q1) = ordered(q.psi_lo + PI, q.psi_lo + PI + q.rot);
+    let k0 = ((0.5 * (p0 + p1) - 0.5 * (q0 + q1)) / TAU).round();
+    // The end of a piece (from `lo` at angle `start` to `hi`, turning by `rot`) at the angle.
+    let end_at = |start: f64, rot: f64, lo: f64, hi: f64, angle: f64| {
+        if (start - angle).abs() <= ANGLE_OVERLAP {
+            Some(lo)
+        } else if (start + rot - angle).abs() <= ANGLE_OVERLAP {
+            Some(hi)
+        } else {
+            None
+        }
+    };
+    (-1..=1).find_map(|k| {
+        let shift = TAU * (k0 + f64::from(k));
+        let (lo, hi) = (p0.max(q0 + shift), p1.min(q1 + shift));
+        if (hi - lo).abs() > ANGLE_OVERLAP {
+            return None;
+        }
+        let angle = 0.5 * (lo + hi);
+        let s = end_at(p.psi_lo, p.rot, p.lo, p.hi, angle)?;
+        let t = end_at(q.psi_lo + PI + shift, q.rot, q.lo, q.hi, angle)?;
+        let at = Pair {
+            vs,
+            vt,
+            sa: s,
+            sb: s,
+            ta: t,
+            tb: t,
+            s_convex: p.convex,
+            t_convex: q.convex,
+        };
+        at.is_noise(s, t, at.sin_theta(s, t)).then_some((s, t))
+    })
+}
+
 /// Intersects the normal cone of `p` with the outward-normal cone of `q` and returns the pair of
 /// sub-segments with opposite normals, if the cones overlap.
 pub(crate) fn opposite_pair<'a>(

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::families::{flat_pairs, is_family};
 use crate::forms::SymbolicForms;
 use crate::ledger::Ledger;
-use crate::pairs::{opposite_pair, polish, THETA_NOISE};
+use crate::pairs::{antipodal_ends, opposite_pair, polish, THETA_NOISE};
 use crate::profiles::{profile_inflections_run, FAN_NOISE};
 use crate::search::{antipodal_points, Budget};
 use crate::types::{Antipodal, AntipodalPair, Family, Options, Provenance};
@@ -148,11 +148,14 @@ pub(crate) fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Ant
                     }
                     let centre = |k: usize| segs[k].circle().map(|(c, _)| c);
                     let concentric = centre(i).is_some() && centre(i) == centre(j);
+                    // (A pair of piece ends at a corner is the corners' own search's.)
+                    let smooth = |k: usize, v: &View, x: f64| {
+                        joint_at(profile, k, v, x).is_none_or(|kind| kind == JointKind::Smooth)
+                    };
+                    let off_corners = |[s, t]: [f64; 2]| smooth(i, vi, s) && smooth(j, vj, t);
                     search_pieces(
-                        vi,
-                        p,
-                        vj,
-                        q,
+                        [(vi, p), (vj, q)],
+                        &off_corners,
                         concentric,
                         &mut found,
                         &mut budget,
@@ -184,7 +187,8 @@ pub(crate) fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Ant
             .collect(),
     );
     // A pair on a family (at its end, say) is one of its pairs.
-    pairs.retain(|p| !families.iter().any(|f| on_family(f, p)));
+    let period = profile.segments().len() as f64;
+    pairs.retain(|p| !families.iter().any(|f| on_family(f, p, period)));
     let (inflections, inflection_doubts) = profile_inflections_run(profile, opts)?.into_parts();
     let out = Antipodal {
         pairs,
@@ -206,13 +210,12 @@ pub(crate) fn profile_antipodal(profile: &Profile, opts: &Options) -> Result<Ant
 
 /// The search of one pair of curved pieces (as for one smooth curve): continua go to
 /// `family` (proven where the pieces lie on arcs `concentric` by definition), isolated
-/// pairs to `out`.
+/// pairs to `out`; a pair of the pieces' ends whose normals alone are opposite only where
+/// `off_corners` says both ends are off the profile's corners.
 #[allow(clippy::too_many_arguments)]
 fn search_pieces<'a>(
-    vi: &'a View<'a>,
-    p: &Piece,
-    vj: &'a View<'a>,
-    q: &Piece,
+    [(vi, p), (vj, q)]: [(&'a View<'a>, &Piece); 2],
+    off_corners: &dyn Fn([f64; 2]) -> bool,
     concentric: bool,
     out: &mut Vec<(f64, f64)>,
     budget: &mut Budget,
@@ -221,6 +224,8 @@ fn search_pieces<'a>(
     ledger: &mut Ledger,
 ) {
     let Some(pair) = opposite_pair(vi, p, vj, q, ledger) else {
+        // (Normals opposite only at an end of each: that pair of ends, if antipodal.)
+        out.extend(antipodal_ends(vi, p, vj, q).filter(|&(s, t)| off_corners([s, t])));
         return;
     };
     if is_family(&pair, ledger) {
@@ -382,15 +387,24 @@ fn family(
 
 /// Whether the pair is one of the family's: `s` inside one side's range and `t` where the
 /// family matches it (interpolated: exact on straight sides, and at a family's ends, where
-/// the pairs it absorbs lie).
-fn on_family(f: &Family, p: &AntipodalPair) -> bool {
+/// the pairs it absorbs lie). Parameters are read modulo `period` (a pair at the closing
+/// joint may say the profile's end where the family says its start).
+fn on_family(f: &Family, p: &AntipodalPair, period: f64) -> bool {
+    let apart = |x: f64| {
+        let d = x.rem_euclid(period);
+        d.min(period - d)
+    };
     let matches = |s: f64, t: f64, fs: [f64; 2], ft: [f64; 2]| {
         let (lo, hi) = (fs[0].min(fs[1]), fs[0].max(fs[1]));
-        if s < lo - FAMILY_SLACK || s > hi + FAMILY_SLACK || hi <= lo {
+        if hi <= lo {
             return false;
         }
-        let x = (s - fs[0]) / (fs[1] - fs[0]);
-        (ft[0] + x * (ft[1] - ft[0]) - t).abs() <= FAMILY_MATCH
+        [s, s - period, s + period].into_iter().any(|s| {
+            let x = (s - fs[0]) / (fs[1] - fs[0]);
+            s >= lo - FAMILY_SLACK
+                && s <= hi + FAMILY_SLACK
+                && apart(ft[0] + x * (ft[1] - ft[0]) - t) <= FAMILY_MATCH
+        })
     };
     matches(p.s, p.t, f.s, f.t) || matches(p.t, p.s, f.s, f.t)
 }

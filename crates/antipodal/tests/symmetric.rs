@@ -10,7 +10,7 @@
 
 mod common;
 
-use antipodal::{antipodal, Error, Options, ParamCurve, SplineCurve};
+use antipodal::{antipodal, Antipodal, Error, Options, ParamCurve, SplineCurve};
 use proptest::prelude::*;
 
 /// Samples of `C · C′` per knot span for the oracle's sign changes (the knots themselves
@@ -40,6 +40,16 @@ fn symmetric_polygon(angles: &[f64], radii: &[usize]) -> Vec<[f64; 2]> {
         .copied()
         .chain(half.iter().map(|p| [-p[0], -p[1]]))
         .collect()
+}
+
+/// The antipodal pairs of `c`; `None` where the crate refuses the curve (a spline cut off
+/// from its polygon's star shape may cross itself).
+fn searched(c: &SplineCurve) -> Option<Antipodal> {
+    match antipodal(c, &Options::default()) {
+        Ok(r) => Some(r),
+        Err(Error::SelfIntersecting { .. } | Error::Winding { .. } | Error::Cusp { .. }) => None,
+        Err(e) => panic!("{e}"),
+    }
 }
 
 /// The brackets `[lo, hi]` of `[0, m]` where `C · C′` changes sign, and whether the inward
@@ -93,13 +103,8 @@ proptest! {
         let m = angles.len();
         let pts = symmetric_polygon(&angles, &radii);
         let c = SplineCurve::periodic(degree, &pts, None).unwrap();
-        let found = match antipodal(&c, &Options::default()) {
-            Ok(r) => r,
-            // (A spline cut off from its polygon's star shape may cross itself.)
-            Err(Error::SelfIntersecting { .. } | Error::Winding { .. } | Error::Cusp { .. }) => {
-                return Ok(());
-            }
-            Err(e) => panic!("{e}"),
+        let Some(found) = searched(&c) else {
+            return Ok(());
         };
         prop_assert!(found.complete);
         // Only a certified result promises every pair.
@@ -178,14 +183,11 @@ proptest! {
     ) {
         let (pts, m) = knot_pair_star(&seed);
         let c = SplineCurve::periodic(2, &pts, None).unwrap();
-        let found = match antipodal(&c, &Options::default()) {
-            Ok(r) => r,
-            Err(Error::SelfIntersecting { .. } | Error::Winding { .. } | Error::Cusp { .. }) => {
-                return Ok(());
-            }
-            Err(e) => panic!("{e}"),
+        let Some(found) = searched(&c) else {
+            return Ok(());
         };
         prop_assert!(found.complete);
+        // Only a certified result promises every pair.
         prop_assume!(found.doubts.is_empty());
         let n = (2 * m) as f64;
         let (j0, jm) = (c.jet(0.0), c.jet(m as f64));

@@ -227,6 +227,20 @@ pub(crate) fn negligible(v: &View, s0: f64, s1: f64) -> bool {
     n0.cross(n1).atan2(n0.dot(n1)).abs() <= THETA_NOISE
 }
 
+/// The ranges of tangent angle `[lo, hi]` where `p`'s normals are opposite to `q`'s, with the
+/// whole turns `shift` added to `q`'s angles: empty where `hi < lo`. (Normals are opposite
+/// exactly when tangent angles differ by π; unwrapped angles of different pieces may be many
+/// turns apart, so the turns tried are centred on them.)
+fn overlaps(p: &Piece, q: &Piece) -> [(f64, f64, f64); 3] {
+    let (p0, p1) = ordered(p.psi_lo, p.psi_lo + p.rot);
+    let (q0, q1) = ordered(q.psi_lo + PI, q.psi_lo + PI + q.rot);
+    let k0 = ((0.5 * (p0 + p1) - 0.5 * (q0 + q1)) / TAU).round();
+    [-1.0, 0.0, 1.0].map(|k| {
+        let shift = TAU * (k0 + k);
+        (p0.max(q0 + shift), p1.min(q1 + shift), shift)
+    })
+}
+
 /// The pair of ends of `p` (on `vs`) and `q` (on `vt`) that is antipodal to rounding, where the
 /// pieces' ranges of opposite normal angles only touch (within [`ANGLE_OVERLAP`], where
 /// [`opposite_pair`] finds no section): there the only points with opposite normals are an
@@ -239,9 +253,6 @@ pub(crate) fn antipodal_ends<'a>(
     vt: &'a View<'a>,
     q: &Piece,
 ) -> Option<(f64, f64)> {
-    let (p0, p1) = ordered(p.psi_lo, p.psi_lo + p.rot);
-    let (q0, q1) = ordered(q.psi_lo + PI, q.psi_lo + PI + q.rot);
-    let k0 = ((0.5 * (p0 + p1) - 0.5 * (q0 + q1)) / TAU).round();
     // The end of a piece (from `lo` at angle `start` to `hi`, turning by `rot`) at the angle.
     let end_at = |start: f64, rot: f64, lo: f64, hi: f64, angle: f64| {
         if (start - angle).abs() <= ANGLE_OVERLAP {
@@ -252,9 +263,7 @@ pub(crate) fn antipodal_ends<'a>(
             None
         }
     };
-    (-1..=1).find_map(|k| {
-        let shift = TAU * (k0 + f64::from(k));
-        let (lo, hi) = (p0.max(q0 + shift), p1.min(q1 + shift));
+    overlaps(p, q).into_iter().find_map(|(lo, hi, shift)| {
         if (hi - lo).abs() > ANGLE_OVERLAP {
             return None;
         }
@@ -284,15 +293,8 @@ pub(crate) fn opposite_pair<'a>(
     q: &Piece,
     ledger: &mut Ledger,
 ) -> Option<Pair<'a>> {
-    // Normals are opposite exactly when tangent angles differ by π.
-    let (p0, p1) = ordered(p.psi_lo, p.psi_lo + p.rot);
-    let (q0, q1) = ordered(q.psi_lo + PI, q.psi_lo + PI + q.rot);
     let mut best: Option<(f64, f64, f64)> = None;
-    // Unwrapped angles of different pieces may be many turns apart: centre the search.
-    let k0 = ((0.5 * (p0 + p1) - 0.5 * (q0 + q1)) / TAU).round();
-    for k in -1..=1 {
-        let shift = TAU * (k0 + k as f64);
-        let (lo, hi) = (p0.max(q0 + shift), p1.min(q1 + shift));
+    for (lo, hi, shift) in overlaps(p, q) {
         if hi > lo && best.is_none_or(|b| hi - lo > b.1 - b.0) {
             best = Some((lo, hi, shift));
         }

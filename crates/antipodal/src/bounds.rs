@@ -286,6 +286,37 @@ impl BoundForms {
         }
     }
 
+    /// The breaks of the fine pieces where the curvature may jump, and whether it may jump
+    /// across the seam (between the last piece and the first): where the curvature numerator
+    /// is discontinuous by its structure (a curve only `C¹` there, as every quadratic spline
+    /// at its knots) and its two sides' values are not proven equal to rounding (their
+    /// ranges, each from its own piece's models, meet). A jump within that rounding is taken
+    /// for none: it moves θ′ by no more, so a pair it could hide would be double to rounding.
+    /// Every structural break counts when the enclosures do not share their pieces.
+    pub(crate) fn curvature_jumps(&self) -> (Vec<f64>, bool) {
+        let pw = &self.curvature.pw;
+        let (breaks, n) = (pw.breaks(), pw.pieces());
+        let may_jump = |k: usize| {
+            if pw.continuity(k) >= 0 {
+                return false;
+            }
+            if !self.aligned {
+                return true;
+            }
+            let (before, after) = if k == 0 { (n - 1, 0) } else { (k - 1, k) };
+            let side = |i: usize, at: f64| self.partial(i, at, at).map(|(kappa, _)| kappa);
+            match (
+                side(before, pw.piece_span(before).1),
+                side(after, pw.piece_span(after).0),
+            ) {
+                (Some(a), Some(b)) => a.hi < b.lo || b.hi < a.lo,
+                _ => true,
+            }
+        };
+        let inner = (1..n).filter(|&k| may_jump(k)).map(|k| breaks[k]).collect();
+        (inner, may_jump(0))
+    }
+
     /// Joins the curvature over `[x0, x1]` (within the domain) into `acc`; returns the
     /// greatest speed there. `None` where nothing is proven.
     pub(crate) fn join_arc_kappa(&self, x0: f64, x1: f64, acc: &mut Interval) -> Option<f64> {

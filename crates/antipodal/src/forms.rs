@@ -34,6 +34,8 @@ pub struct SymbolicForms {
     sign_changes: OnceLock<(RootOptions, bool, SignChanges)>,
     /// The forms of the curve run backwards (a clockwise curve is viewed reversed).
     reversed: OnceLock<Option<Box<SymbolicForms>>>,
+    /// The breaks where the curvature may jump, and whether it may across the seam.
+    jumps: OnceLock<(Vec<f64>, bool)>,
 }
 
 impl SymbolicForms {
@@ -49,6 +51,7 @@ impl SymbolicForms {
             size: OnceLock::new(),
             sign_changes: OnceLock::new(),
             reversed: OnceLock::new(),
+            jumps: OnceLock::new(),
         })
     }
 
@@ -79,6 +82,24 @@ impl SymbolicForms {
         self.bounds
             .get_or_init(|| BoundForms::new(&self.hom, &self.tangent, &self.curvature))
             .as_ref()
+    }
+
+    /// The breaks where the curvature may jump ([`BoundForms::curvature_jumps`]), and whether
+    /// it may across the seam, found on first use; every break where the homogeneous form is
+    /// less than `C²` where the enclosures cannot tell.
+    pub(crate) fn curvature_jumps(&self) -> &(Vec<f64>, bool) {
+        self.jumps.get_or_init(|| match self.bound_forms() {
+            Some(b) => b.curvature_jumps(),
+            None => {
+                let breaks = self.hom.breaks();
+                let last = breaks.len() - 1;
+                let inner = (1..last)
+                    .filter(|&k| self.hom.continuity(k) < 2)
+                    .map(|k| breaks[k])
+                    .collect();
+                (inner, self.hom.continuity(0) < 2)
+            }
+        })
     }
 
     /// The sign changes of the curvature numerator over the domain (closed: a circle), kept

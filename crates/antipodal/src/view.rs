@@ -461,6 +461,40 @@ impl<'a> View<'a> {
         out
     }
 
+    /// The unwrapped parameters strictly inside `(lo, hi)` where the curvature may jump, in
+    /// increasing order ([`SymbolicForms::curvature_jumps`]: as at every knot of a quadratic).
+    /// Jia's primitives assume the curvature continuous; across such a break θ has a kink,
+    /// and may touch zero there without changing sign. None without forms (nothing is
+    /// certified then) and on the analytic shapes, whose curvature is continuous whatever
+    /// their rational-circle form's breaks.
+    pub(crate) fn curvature_jumps(&self, lo: f64, hi: f64) -> SmallVec<[f64; 4]> {
+        let mut out = SmallVec::new();
+        let Some(cert) = self.cert.as_ref().filter(|_| !self.simple) else {
+            return out;
+        };
+        let (inner, seam) = cert.curvature_jumps();
+        for (x0, x1, shift) in self.domain_pieces(lo, hi) {
+            // (The seam is a piece's end here: it is taken below, once per turn.)
+            let from = inner.partition_point(|&x| x <= x0);
+            let to = inner.partition_point(|&x| x < x1);
+            out.extend(inner[from..to.max(from)].iter().map(|&x| x + shift));
+        }
+        if self.closed && *seam {
+            let first = ((lo - self.a) / self.period).floor() as i64 + 1;
+            for k in first.. {
+                let at = self.a + k as f64 * self.period;
+                if at >= hi {
+                    break;
+                }
+                if at > lo {
+                    out.push(at);
+                }
+            }
+        }
+        out.sort_by(f64::total_cmp);
+        out
+    }
+
     /// Certified roots of the scalar function `Σ weights[c] f_c` of a symbolic form (in the
     /// view's parameter) on the unwrapped interval `[lo, hi]`, split at the seam.
     pub(crate) fn cert_roots(

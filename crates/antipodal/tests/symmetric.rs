@@ -138,14 +138,23 @@ proptest! {
     }
 }
 
+/// Cases of the knot-pair property: the old search missed about one pair in a thousand draws.
+const KNOT_PAIR_CASES: u32 = 2048;
+
 /// A quadratic star whose control points 0, 1 and `m`, `m + 1` are opposite, with `|P₀| =
 /// |P₁|`: `C(0) = (P₀ + P₁)/2` and `C(m)` are opposite, with opposite tangents along `P₁ − P₀`,
 /// which is perpendicular to `C(0)`. The knots 0 and `m` are a pair with opposite normals
 /// along the chord, antipodal where the normals face each other. A quadratic's curvature on
-/// the span after knot `k` has the sign of the polygon's turn at `P(k+1)`: the radii beside
-/// make `P₀` and `P(m+1)` reflex and `P₁` and `P(m)` convex, so both knots are inflections, the
-/// normal's angle least at one and greatest at the other.
-fn knot_pair_star(seed: &[f64]) -> (Vec<[f64; 2]>, usize) {
+/// the span after knot `k` has the sign of the polygon's turn at `P(k+1)`, and its radius of
+/// curvature there shrinks as the turn sharpens; the radii of the points beside set them:
+/// - with `inflecting`, `P₀` and `P(m+1)` are reflex and `P₁` and `P(m)` convex, so both knots
+///   are inflections, the normal's angle least at one and greatest at the other (the pieces'
+///   normals are opposite only at their ends);
+/// - else the star's own radii decide: the curvature mostly jumps at the knots but keeps its
+///   sign, and the pair lies inside a section. Where the two radii of curvature add up to
+///   less than the chord on one side of the knots and to more on the other (about one draw in
+///   eight), θ along that section touches zero at the kink without changing sign.
+fn knot_pair_star(seed: &[f64], inflecting: bool) -> (Vec<[f64; 2]>, usize) {
     let mut pts = testkit::stars::star(seed);
     let n = pts.len();
     let m = n / 2;
@@ -153,15 +162,12 @@ fn knot_pair_star(seed: &[f64]) -> (Vec<[f64; 2]>, usize) {
         let l = p[0].hypot(p[1]);
         *p = [p[0] * r / l, p[1] * r / l];
     };
-    for (k, r) in [
-        (0, 0.7),
-        (1, 0.7),
-        (2, 0.4),
-        (m - 1, 0.4),
-        (m + 2, 1.0),
-        (n - 1, 1.0),
-    ] {
-        radius(&mut pts[k], r);
+    radius(&mut pts[0], 0.7);
+    radius(&mut pts[1], 0.7);
+    if inflecting {
+        for (k, r) in [(2, 0.4), (m - 1, 0.4), (m + 2, 1.0), (n - 1, 1.0)] {
+            radius(&mut pts[k], r);
+        }
     }
     pts[m] = [-pts[0][0], -pts[0][1]];
     pts[m + 1] = [-pts[1][0], -pts[1][1]];
@@ -169,19 +175,20 @@ fn knot_pair_star(seed: &[f64]) -> (Vec<[f64; 2]>, usize) {
 }
 
 proptest! {
-    // (Most drawn polygons turn the wrong way at a knot, or leave their star shape: many
-    // draws are passed over for each case.)
+    // (A pair missed at a kink is rare among the draws, which are cheap: many cases. Some
+    // draws are passed over: normals pointing apart, or a result with doubts.)
     #![proptest_config(ProptestConfig {
-        cases: common::cases(128),
-        max_global_rejects: 16 * common::cases(128),
+        cases: common::cases(KNOT_PAIR_CASES),
+        max_global_rejects: common::cases(KNOT_PAIR_CASES),
         ..ProptestConfig::default()
     })]
 
     #[test]
     fn opposite_knots_with_a_perpendicular_chord_are_a_pair(
-        seed in (4usize..=7).prop_flat_map(|m| proptest::collection::vec(0.0f64..1.0, 4 * m))
+        seed in (4usize..=7).prop_flat_map(|m| proptest::collection::vec(0.0f64..1.0, 4 * m)),
+        inflecting in any::<bool>(),
     ) {
-        let (pts, m) = knot_pair_star(&seed);
+        let (pts, m) = knot_pair_star(&seed, inflecting);
         let c = SplineCurve::periodic(2, &pts, None).unwrap();
         let Some(found) = searched(&c) else {
             return Ok(());
@@ -195,17 +202,6 @@ proptest! {
         let chord = [jm.p.x - j0.p.x, jm.p.y - j0.p.y];
         // (Normals pointing apart: no grasp, no pair.)
         prop_assume!(inward[0] * chord[0] + inward[1] * chord[1] > 0.0);
-        // Both knots inflections, turning opposite ways (the normal's angle has a minimum at
-        // one and a maximum at the other): the pieces' normals are opposite only at their
-        // ends. (Where the curvature keeps its sign at a knot, the pair lies inside a section
-        // and θ touches zero there without changing sign: see the ignored test below.)
-        let turn = |u: f64| {
-            let j = c.jet(u.rem_euclid(n));
-            (j.d1.x * j.d2.y - j.d1.y * j.d2.x).signum()
-        };
-        let (h, mf) = (1e-6, m as f64);
-        prop_assume!(turn(-h) != turn(h) && turn(mf - h) != turn(mf + h));
-        prop_assume!(turn(-h) == turn(mf + h));
         let near = |x: f64, y: f64| {
             let d = (x - y).rem_euclid(n);
             d.min(n - d) <= 1e-9
@@ -271,13 +267,11 @@ fn inflections_with_opposite_normals_on_knots_are_a_pair() {
 }
 
 /// A pair on two knots where the curvature jumps but keeps its sign (found by a stress run of
-/// `opposite_knots_with_a_perpendicular_chord_are_a_pair` before it was narrowed to
-/// inflections): `sin θ` along the section through `(5, 10)` falls to zero at `s = 5` and
-/// rises again, a touching zero at the kink, and Jia's march reports no pair there, with no
-/// doubt.
+/// `opposite_knots_with_a_perpendicular_chord_are_a_pair`): `sin θ` along the section through
+/// `(5, 10)` falls to zero at `s = 5` and rises again, a touching zero at the kink. Jia's march
+/// stepped over it and the result was certified without the pair; sections are now cut where
+/// the curvature may jump, and the pair is an end of two.
 #[test]
-#[ignore = "antipodal defect: a touching zero of θ at a knot inside a section (a quadratic's \
-            curvature jump) is missed, and the result is certified"]
 fn a_touching_pair_on_knots_inside_a_section_is_found() {
     let pts = [
         [0.6008903958808688, 0.05731342560741305],

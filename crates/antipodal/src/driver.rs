@@ -533,12 +533,16 @@ pub(crate) fn tangents_of(
         pb = b.view.reported_domain();
         for p in &a.pieces {
             for q in &b.pieces {
-                let Some(pair) = opposite_pair(&a.view, p, &b.view, q, &mut ledger) else {
-                    continue;
-                };
                 let mut found = Vec::new();
-                let mut leaves = 4096usize;
-                tangents_of_disjoint(&pair, 0, &mut leaves, &mut found, &mut ledger);
+                match opposite_pair(&a.view, p, &b.view, q, &mut ledger) {
+                    Some(pair) => {
+                        let mut leaves = 4096usize;
+                        tangents_of_disjoint(&pair, 0, &mut leaves, &mut found, &mut ledger);
+                    }
+                    // (Normals opposite only at an end of each: the line there, if tangent
+                    // to both.)
+                    None => found.extend(tangent::tangent_ends(&a.view, p, &b.view, q)),
+                }
                 for (s, t) in found {
                     let (s, t) = crate::pairs::polish_tangent(
                         &a.view,

@@ -51,6 +51,28 @@ impl<'a> Pair<'a> {
         }
     }
 
+    /// The pair of no width at the opposite points `s` of piece `p` (on `vs`) and `t` of `q`
+    /// (on `vt`): what a point test reads.
+    pub(crate) fn at(
+        vs: &'a View<'a>,
+        p: &Piece,
+        vt: &'a View<'a>,
+        q: &Piece,
+        s: f64,
+        t: f64,
+    ) -> Self {
+        Pair {
+            vs,
+            vt,
+            sa: s,
+            sb: s,
+            ta: t,
+            tb: t,
+            s_convex: p.convex,
+            t_convex: q.convex,
+        }
+    }
+
     /// The sub-pair over `(s0, s1)` whose opposite points are `t0`, `t1`.
     pub(crate) fn sub(&self, s0: f64, t0: f64, s1: f64, t1: f64) -> Pair<'a> {
         Pair {
@@ -241,18 +263,12 @@ fn overlaps(p: &Piece, q: &Piece) -> [(f64, f64, f64); 3] {
     })
 }
 
-/// The pair of ends of `p` (on `vs`) and `q` (on `vt`) that is antipodal to rounding, where the
-/// pieces' ranges of opposite normal angles only touch (within [`ANGLE_OVERLAP`], where
-/// [`opposite_pair`] finds no section): there the only points with opposite normals are an
-/// end of each, as where both pieces end at inflections, or at knots where the curvature
-/// jumps, whose normals are opposite. `None` when the ranges do not touch at a pair of ends,
-/// or `sin θ` there is beyond its noise (no pair).
-pub(crate) fn antipodal_ends<'a>(
-    vs: &'a View<'a>,
-    p: &Piece,
-    vt: &'a View<'a>,
-    q: &Piece,
-) -> Option<(f64, f64)> {
+/// The pair of ends of `p` and `q` whose normals are opposite where the pieces' ranges of
+/// opposite normal angles only touch (within [`ANGLE_OVERLAP`], where [`opposite_pair`] finds
+/// no section): there those ends are the only points with opposite normals, as where both
+/// pieces end at inflections, or at knots where the curvature jumps. `None` when the ranges do
+/// not touch at a pair of ends.
+pub(crate) fn touching_ends(p: &Piece, q: &Piece) -> Option<(f64, f64)> {
     // The end of a piece (from `lo` at angle `start` to `hi`, turning by `rot`) at the angle.
     let end_at = |start: f64, rot: f64, lo: f64, hi: f64, angle: f64| {
         if (start - angle).abs() <= ANGLE_OVERLAP {
@@ -270,18 +286,21 @@ pub(crate) fn antipodal_ends<'a>(
         let angle = 0.5 * (lo + hi);
         let s = end_at(p.psi_lo, p.rot, p.lo, p.hi, angle)?;
         let t = end_at(q.psi_lo + PI + shift, q.rot, q.lo, q.hi, angle)?;
-        let at = Pair {
-            vs,
-            vt,
-            sa: s,
-            sb: s,
-            ta: t,
-            tb: t,
-            s_convex: p.convex,
-            t_convex: q.convex,
-        };
-        at.is_noise(s, t, at.sin_theta(s, t)).then_some((s, t))
+        Some((s, t))
     })
+}
+
+/// The pair of ends of `p` (on `vs`) and `q` (on `vt`) whose normals alone are opposite
+/// ([`touching_ends`]), where it is antipodal to rounding (`sin θ` within its noise).
+pub(crate) fn antipodal_ends<'a>(
+    vs: &'a View<'a>,
+    p: &Piece,
+    vt: &'a View<'a>,
+    q: &Piece,
+) -> Option<(f64, f64)> {
+    let (s, t) = touching_ends(p, q)?;
+    let at = Pair::at(vs, p, vt, q, s, t);
+    at.is_noise(s, t, at.sin_theta(s, t)).then_some((s, t))
 }
 
 /// Intersects the normal cone of `p` with the outward-normal cone of `q` and returns the pair of

@@ -36,9 +36,13 @@ proptest! {
         pick in 0.0f64..1.0,
         gap in 2.5f64..6.0,
         mirror in any::<bool>(),
+        weights in proptest::option::of(proptest::collection::vec(0.5f64..2.0, 12)),
     ) {
         let pts = Star::default().points_from_seed(&seed);
-        let c1 = SplineCurve::periodic(deg, &pts, None).unwrap();
+        // (Rational too: the copy keeps the weights, as moving or mirroring the control
+        // points moves or mirrors the curve.)
+        let weights = weights.as_deref().map(|w| &w[..pts.len()]);
+        let c1 = SplineCurve::periodic(deg, &pts, weights).unwrap();
         let Ok(found) = inflections(&c1, &Options::default()) else {
             return Ok(());
         };
@@ -54,7 +58,7 @@ proptest! {
         } else {
             moved(&pts, by)
         };
-        let c2 = SplineCurve::periodic(deg, &other, None).unwrap();
+        let c2 = SplineCurve::periodic(deg, &other, weights).unwrap();
         let r = common_tangents(&c1, &c2, &Options::default()).unwrap();
         prop_assume!(r.doubts.is_empty());
         let per = c1.domain().1 - c1.domain().0;

@@ -1,7 +1,8 @@
 //! Centrally symmetric periodic splines (`P(i + m) = −P(i)`, so `C(u + m) = −C(u)`): the
 //! normals at `u` and `u + m` are opposite, and the pair is antipodal exactly where the
 //! distance from the centre is stationary, `C(u) · C′(u) = 0`. That gives an oracle sharing
-//! nothing with the crate: the sign changes of `C · C′` over half the domain. Equal radii of
+//! nothing with the crate: the sign changes of `C · C′` over half the domain (rational curves
+//! too, their weights repeated half a turn on). Equal radii of
 //! neighbouring control points put such zeros on knots, where a quadratic's curvature jumps,
 //! often from one sign to the other: pairs of inflections whose normals are opposite, which
 //! no section of Jia's search holds (the pieces' ranges of normals only touch there).
@@ -23,6 +24,9 @@ const ZERO: f64 = 1e-12;
 
 /// The radii the control points take: few, so that neighbours often share one.
 const RADII: [f64; 3] = [0.55, 0.8, 1.0];
+
+/// The weights of a rational curve's control points: few, so that neighbours often share one.
+const WEIGHTS: [f64; 3] = [0.6, 1.0, 1.7];
 
 /// A centrally symmetric control polygon of `2m` points, counterclockwise and star-shaped
 /// about the origin: angles jittered within their spacing, radii drawn from [`RADII`].
@@ -94,15 +98,19 @@ proptest! {
 
     #[test]
     fn every_stationary_distance_from_the_centre_is_a_pair(
-        (degree, angles, radii) in (2usize..=3, 3usize..=6).prop_flat_map(|(d, m)| (
+        (degree, angles, radii, weights) in (2usize..=3, 3usize..=6).prop_flat_map(|(d, m)| (
             Just(d),
             proptest::collection::vec(0.0f64..1.0, m),
             proptest::collection::vec(0usize..RADII.len(), m),
+            proptest::option::of(proptest::collection::vec(0usize..WEIGHTS.len(), m)),
         ))
     ) {
         let m = angles.len();
         let pts = symmetric_polygon(&angles, &radii);
-        let c = SplineCurve::periodic(degree, &pts, None).unwrap();
+        // (Weights repeated half a turn on keep the symmetry.)
+        let weights: Option<Vec<f64>> =
+            weights.map(|w| w.iter().chain(&w).map(|&k| WEIGHTS[k]).collect());
+        let c = SplineCurve::periodic(degree, &pts, weights.as_deref()).unwrap();
         let Some(found) = searched(&c) else {
             return Ok(());
         };

@@ -7,7 +7,7 @@ use crate::families::{family_of, flat_pairs, is_family, merge_families};
 use crate::finish::certified_rest;
 use crate::ledger::Ledger;
 use crate::pairs::THETA_NOISE;
-use crate::pairs::{antipodal_ends, negligible, opposite_pair, Pair};
+use crate::pairs::{negligible, opposite_pair, touching_ends, Pair};
 use crate::search::{antipodal_points, Budget};
 use crate::tangent;
 use crate::tracks::Tracks;
@@ -204,7 +204,7 @@ pub(crate) fn antipodal_of(src: Source<'_>, opts: &Options) -> Result<Certified<
             }
             let Some(pair) = opposite_pair(v, p, v, q, &mut ledger) else {
                 // (Normals opposite only at an end of each: that pair of ends, if antipodal.)
-                raw.extend(antipodal_ends(v, p, v, q));
+                raw.extend(touching_ends(v, p, v, q).and_then(|at| at.antipodal_start()));
                 continue;
             };
             if is_family(&pair, &mut ledger) {
@@ -541,7 +541,10 @@ pub(crate) fn tangents_of(
                     }
                     // (Normals opposite only at an end of each: the line there, if tangent
                     // to both.)
-                    None => found.extend(tangent::tangent_ends(&a.view, p, &b.view, q)),
+                    None => found.extend(
+                        touching_ends(&a.view, p, &b.view, q)
+                            .and_then(|at| tangent::tangent_start(&at)),
+                    ),
                 }
                 for (s, t) in found {
                     let (s, t) = crate::pairs::polish_tangent(

@@ -51,26 +51,11 @@ impl<'a> Pair<'a> {
         }
     }
 
-    /// The pair of no width at the opposite points `s` of piece `p` (on `vs`) and `t` of `q`
-    /// (on `vt`): what a point test reads.
-    pub(crate) fn at(
-        vs: &'a View<'a>,
-        p: &Piece,
-        vt: &'a View<'a>,
-        q: &Piece,
-        s: f64,
-        t: f64,
-    ) -> Self {
-        Pair {
-            vs,
-            vt,
-            sa: s,
-            sb: s,
-            ta: t,
-            tb: t,
-            s_convex: p.convex,
-            t_convex: q.convex,
-        }
+    /// `(sa, ta)` where it is antipodal to rounding (`sin θ` within its noise): the test of
+    /// a pair of no width ([`touching_ends`]).
+    pub(crate) fn antipodal_start(&self) -> Option<(f64, f64)> {
+        let (s, t) = (self.sa, self.ta);
+        self.is_noise(s, t, self.sin_theta(s, t)).then_some((s, t))
     }
 
     /// The sub-pair over `(s0, s1)` whose opposite points are `t0`, `t1`.
@@ -263,12 +248,19 @@ fn overlaps(p: &Piece, q: &Piece) -> [(f64, f64, f64); 3] {
     })
 }
 
-/// The pair of ends of `p` and `q` whose normals are opposite where the pieces' ranges of
-/// opposite normal angles only touch (within [`ANGLE_OVERLAP`], where [`opposite_pair`] finds
-/// no section): there those ends are the only points with opposite normals, as where both
-/// pieces end at inflections, or at knots where the curvature jumps. `None` when the ranges do
-/// not touch at a pair of ends.
-pub(crate) fn touching_ends(p: &Piece, q: &Piece) -> Option<(f64, f64)> {
+/// The pair of no width at the ends of `p` (on `vs`) and `q` (on `vt`) whose normals are
+/// opposite where the pieces' ranges of opposite normal angles only touch (within
+/// [`ANGLE_OVERLAP`], where [`opposite_pair`] finds no section): there those ends are the only
+/// points with opposite normals, as where both pieces end at inflections, or at knots where
+/// the curvature jumps. What a section would hold is then a point test: an antipodal pair
+/// ([`Pair::antipodal_start`]), a common tangent ([`crate::tangent::tangent_start`]). `None`
+/// when the ranges do not touch at a pair of ends.
+pub(crate) fn touching_ends<'a>(
+    vs: &'a View<'a>,
+    p: &Piece,
+    vt: &'a View<'a>,
+    q: &Piece,
+) -> Option<Pair<'a>> {
     // The end of a piece (from `lo` at angle `start` to `hi`, turning by `rot`) at the angle.
     let end_at = |start: f64, rot: f64, lo: f64, hi: f64, angle: f64| {
         if (start - angle).abs() <= ANGLE_OVERLAP {
@@ -286,21 +278,17 @@ pub(crate) fn touching_ends(p: &Piece, q: &Piece) -> Option<(f64, f64)> {
         let angle = 0.5 * (lo + hi);
         let s = end_at(p.psi_lo, p.rot, p.lo, p.hi, angle)?;
         let t = end_at(q.psi_lo + PI + shift, q.rot, q.lo, q.hi, angle)?;
-        Some((s, t))
+        Some(Pair {
+            vs,
+            vt,
+            sa: s,
+            sb: s,
+            ta: t,
+            tb: t,
+            s_convex: p.convex,
+            t_convex: q.convex,
+        })
     })
-}
-
-/// The pair of ends of `p` (on `vs`) and `q` (on `vt`) whose normals alone are opposite
-/// ([`touching_ends`]), where it is antipodal to rounding (`sin θ` within its noise).
-pub(crate) fn antipodal_ends<'a>(
-    vs: &'a View<'a>,
-    p: &Piece,
-    vt: &'a View<'a>,
-    q: &Piece,
-) -> Option<(f64, f64)> {
-    let (s, t) = touching_ends(p, q)?;
-    let at = Pair::at(vs, p, vt, q, s, t);
-    at.is_noise(s, t, at.sin_theta(s, t)).then_some((s, t))
 }
 
 /// Intersects the normal cone of `p` with the outward-normal cone of `q` and returns the pair of

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::families::{flat_pairs, is_family};
 use crate::forms::SymbolicForms;
 use crate::ledger::Ledger;
-use crate::pairs::{antipodal_ends, opposite_pair, polish, THETA_NOISE};
+use crate::pairs::{opposite_pair, polish, touching_ends, THETA_NOISE};
 use crate::profiles::{profile_inflections_run, FAN_NOISE};
 use crate::search::{antipodal_points, Budget};
 use crate::types::{Antipodal, AntipodalPair, Family, Options, Provenance};
@@ -225,7 +225,11 @@ fn search_pieces<'a>(
 ) {
     let Some(pair) = opposite_pair(vi, p, vj, q, ledger) else {
         // (Normals opposite only at an end of each: that pair of ends, if antipodal.)
-        out.extend(antipodal_ends(vi, p, vj, q).filter(|&(s, t)| off_corners([s, t])));
+        out.extend(
+            touching_ends(vi, p, vj, q)
+                .and_then(|at| at.antipodal_start())
+                .filter(|&(s, t)| off_corners([s, t])),
+        );
         return;
     };
     if is_family(&pair, ledger) {

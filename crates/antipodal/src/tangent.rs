@@ -12,9 +12,8 @@
 //! Once one tangent is known, the second lies where `d` changes sign again: a bisection on `d`
 //! backs the iteration up wherever a sign change brackets a tangent.
 
-use crate::dissect::Piece;
 use crate::ledger::Ledger;
-use crate::pairs::{touching_ends, Pair};
+use crate::pairs::Pair;
 use crate::prims::Prefer;
 use crate::view::View;
 use curve::V2;
@@ -139,17 +138,11 @@ fn common_tangent(p: &Pair, at_a: bool, t_first: bool, ledger: &mut Ledger) -> O
     verify(p, s, t).then_some((s, t))
 }
 
-/// The pair of ends of `p` (on `vs`) and `q` (on `vt`) whose normals alone are opposite
-/// ([`touching_ends`]), where their tangent lines are one to rounding: a common tangent no
-/// section holds (as at two inflections of mirrored curves, their normals' extremes).
-pub(crate) fn tangent_ends<'a>(
-    vs: &'a View<'a>,
-    p: &Piece,
-    vt: &'a View<'a>,
-    q: &Piece,
-) -> Option<(f64, f64)> {
-    let (s, t) = touching_ends(p, q)?;
-    verify(&Pair::at(vs, p, vt, q, s, t), s, t).then_some((s, t))
+/// `(sa, ta)` of a pair of no width ([`crate::pairs::touching_ends`]) where the tangent lines
+/// there are one to rounding: a common tangent no section holds (as at two inflections of
+/// mirrored curves, their normals' extremes).
+pub(crate) fn tangent_start(p: &Pair) -> Option<(f64, f64)> {
+    verify(p, p.sa, p.ta).then_some((p.sa, p.ta))
 }
 
 /// `(s, t)` lies on `p` (to the tolerances) and the tangent lines there are one to rounding.

@@ -24,6 +24,17 @@ use smallvec::SmallVec;
 pub(crate) fn common_tangents(p: &Pair, ledger: &mut Ledger) -> SmallVec<[(f64, f64); 2]> {
     let da = p.d(p.sa, p.ta);
     let db = p.d(p.sb, p.tb);
+    // An end on a common tangent: its lines one to rounding, and the chord along them to
+    // rounding of its direction (two close points of one curve have tangent lines within
+    // rounding of each other, `d ≈ κ |r|² / 2`, without sharing one).
+    let room = LINE_ROUNDING * p.vs.scale.max(p.vt.scale);
+    let on = |d: f64, s: f64, t: f64| d.abs() <= room && d.abs() <= CHORD_ALONG * p.r(s, t).norm();
+    let on = (on(da, p.sa, p.ta), on(db, p.sb, p.tb));
+    if on.0 || on.1 {
+        if let Some(found) = tangents_at_ends(p, on, (da, db), ledger) {
+            return found;
+        }
+    }
     let odd = (da > 0.0) != (db > 0.0);
     let mut out = SmallVec::new();
     if odd {
@@ -63,6 +74,82 @@ pub(crate) fn common_tangents(p: &Pair, ledger: &mut Ledger) -> SmallVec<[(f64, 
     out.sort_by(|x, y| x.0.total_cmp(&y.0));
     out
 }
+
+/// The common tangents of `p` where one lies at an end (`d` within rounding there, as where
+/// the arcs of two profiles end on the line of their collinear straight edges): that one, and
+/// the one inside if `d` changes sign between the end's side and the other end. `d` has simple
+/// zeros, at most two (Theorem 2): with both ends on tangents none lies between; with one, at
+/// most one, where the sign of `d` just inside the tangent end differs from its sign at the
+/// other. That sign is the slope's, `d′ = −κ |C′| (T · r)` (`N′ = −κ |C′| T`, and `N(s) · C′(t)`
+/// vanishes on opposite points), of κ's sign on the piece. (The configuration test of §2.2,
+/// which assumes `d` of one sign at the ends, would read such an end on the boundary of its
+/// region.) `None` where the slope's sign is not clear (the curves touching at the end): the
+/// general search decides.
+fn tangents_at_ends(
+    p: &Pair,
+    (on_a, on_b): (bool, bool),
+    (da, db): (f64, f64),
+    ledger: &mut Ledger,
+) -> Option<SmallVec<[(f64, f64); 2]>> {
+    let mut out: SmallVec<[(f64, f64); 2]> = SmallVec::new();
+    let ends = [((p.sa, p.ta), on_a, 1.0), ((p.sb, p.tb), on_b, -1.0)];
+    out.extend(ends.iter().filter(|e| e.1).map(|e| e.0));
+    if on_a && on_b {
+        return Some(out);
+    }
+    let (((s, t), _, inward), ((so, to), _, _)) = if on_a {
+        (ends[0], ends[1])
+    } else {
+        (ends[1], ends[0])
+    };
+    let far = if on_a { db } else { da };
+    let js = p.vs.jet_to(s, 1);
+    let along = js.d1.unit().dot(p.r(s, t));
+    let kappa = if p.s_convex { 1.0 } else { -1.0 };
+    let room = LINE_ROUNDING * p.vs.scale.max(p.vt.scale);
+    if along.abs() <= room {
+        // (The curves touch at the end: no slope to read.)
+        return None;
+    }
+    let inside_positive = -kappa * along * inward > 0.0;
+    if inside_positive == (far > 0.0) {
+        return Some(out);
+    }
+    // A point just inside with the slope's sign, clear of rounding, brackets the one inside
+    // with the other end.
+    let doubts = ledger.of(p.vt);
+    let mut step = 64.0 * p.vs.tol;
+    for _ in 0..INSIDE_STEPS {
+        let x = s + inward * step;
+        if (x - so) * inward <= 0.0 {
+            break;
+        }
+        let y = p.opposite_between(x, (s, t), (so, to), doubts);
+        let d = p.d(x, y);
+        if d.abs() > room {
+            if (d > 0.0) == inside_positive {
+                out.extend(bisect_d(p, x, y, so, to, ledger));
+            } else {
+                // (Past the one inside already: it lies within a few tolerances of the
+                // end's, one line to rounding.)
+                ledger.of(p.vs).add(Doubt::RootCluster);
+            }
+            out.sort_by(|x, y| x.0.total_cmp(&y.0));
+            return Some(out);
+        }
+        step *= 2.0;
+    }
+    ledger.of(p.vs).add(Doubt::RootCluster);
+    Some(out)
+}
+
+/// The sine of the angle between a chord and the tangent lines at its ends below which the
+/// chord lies along them (to rounding of its direction, as [`LINE_ROUNDING`] for the lines).
+const CHORD_ALONG: f64 = 1e-9;
+
+/// Steps (doubling from a few tolerances) in from a tangent end to a point where `d` shows
+/// its sign beyond rounding.
+const INSIDE_STEPS: usize = 40;
 
 /// `d = N(s) · r` keeps one sign over the whole of `p` (curves with symbolic forms): the
 /// normals of `S` lie in the cone of its end normals (a monotone segment, turning by less than

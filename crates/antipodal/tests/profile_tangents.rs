@@ -349,3 +349,48 @@ fn a_curve_beside_a_profile_is_its_one_segment() {
     let refused = common_tangents(curve::Boundary::Curve(&sampled), &square, &opts);
     assert_eq!(refused, Err(antipodal::Error::NoSegment { which: 1 }));
 }
+
+/// A rounded slot `w` long and `h` high (fillets of radius `r`) with its lower left corner at
+/// `(x, y)`: lines and quarter arcs joined smoothly, counterclockwise.
+fn slot(x: f64, y: f64, w: f64, h: f64, r: f64) -> Profile {
+    use curve::Segment;
+    use std::f64::consts::FRAC_PI_2;
+    let (x1, y1) = (x + w, y + h);
+    let segs = vec![
+        Segment::line([x + r, y], [x1 - r, y]),
+        Segment::arc([x1 - r, y + r], r, -FRAC_PI_2, 0.0),
+        Segment::line([x1, y + r], [x1, y1 - r]),
+        Segment::arc([x1 - r, y1 - r], r, 0.0, FRAC_PI_2),
+        Segment::line([x1 - r, y1], [x + r, y1]),
+        Segment::arc([x + r, y1 - r], r, FRAC_PI_2, 2.0 * FRAC_PI_2),
+        Segment::line([x, y1 - r], [x, y + r]),
+        Segment::arc([x + r, y + r], r, 2.0 * FRAC_PI_2, 3.0 * FRAC_PI_2),
+    ];
+    Profile::new(segs.into_iter().map(|s| s.unwrap()).collect(), None).unwrap()
+}
+
+/// Two slots standing on one line (their straight lower edges collinear): the arcs end on it,
+/// where `d` vanishes at a section's end and the configuration test of §2.2 reads the end on
+/// its region's boundary (it used to disagree with the iteration, uncertifying every such
+/// drawing). The line is listed through each pair of arc ends on it, and the result agrees
+/// with the oracle and is certified.
+#[test]
+fn slots_on_one_line_share_it_certified() {
+    for (w, h, r, gap) in [
+        (10.0, 6.0, 1.0, 5.0),
+        (5.0, 3.0, 0.5, 2.0),
+        (13.0, 7.8, 1.3, 4.0),
+    ] {
+        let a = slot(0.0, 0.0, 10.0, 6.0, 1.0);
+        let b = slot(10.0 + gap, 0.0, w, h, r);
+        let found = common_tangents(&a, &b, &Options::default()).unwrap();
+        assert!(found.doubts.is_empty(), "{:?}", found.doubts);
+        let on_base = found
+            .lines
+            .iter()
+            .filter(|l| l.p[1].abs() <= 1e-12 && l.q[1].abs() <= 1e-12)
+            .count();
+        assert_eq!(on_base, 4, "{:?}", found.lines);
+        check(&a, &b).unwrap();
+    }
+}

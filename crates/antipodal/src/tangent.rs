@@ -121,7 +121,7 @@ fn tangents_at_ends(
     let mut step = 64.0 * p.vs.tol;
     for _ in 0..INSIDE_STEPS {
         let x = s + inward * step;
-        if (x - so) * inward <= 0.0 {
+        if (so - x) * inward <= 0.0 {
             break;
         }
         let y = p.opposite_between(x, (s, t), (so, to), doubts);

@@ -394,3 +394,44 @@ fn slots_on_one_line_share_it_certified() {
         check(&a, &b).unwrap();
     }
 }
+
+/// Two quarter arcs bending the same way, the larger standing on the line tangent to the
+/// smaller at its start: that end of their pair lies on a common tangent, and the other outer
+/// tangent of the two circles (its normal at −10°) lies inside both arcs. Both are listed,
+/// certified. (The arcs' boxes meet, so the pair is halved before its tangents are sought:
+/// the one inside is found in another half than the end's.)
+#[test]
+fn a_tangent_at_an_end_and_one_inside() {
+    use curve::Segment;
+    use std::f64::consts::FRAC_PI_2;
+    let (r, beta) = (10.0f64, 130f64.to_radians());
+    // B's centre at height r − 1 (on the line y = −1), seen from A's at the angle β.
+    let dist = (r - 1.0) / beta.sin();
+    let centre = [dist * beta.cos(), r - 1.0];
+    let a = Profile::new(
+        vec![Segment::arc([0.0, 0.0], 1.0, -FRAC_PI_2, 0.0).unwrap()],
+        None,
+    )
+    .unwrap();
+    let b = Profile::new(
+        vec![Segment::arc(centre, r, -FRAC_PI_2, 0.0).unwrap()],
+        None,
+    )
+    .unwrap();
+    let found = common_tangents(&a, &b, &Options::default()).unwrap();
+    assert!(found.doubts.is_empty(), "{:?}", found.doubts);
+    let phi = 2.0 * beta + FRAC_PI_2;
+    let (c, s) = (phi.cos(), phi.sin());
+    let expected = [
+        ([0.0, -1.0], [centre[0], -1.0]),
+        ([c, s], [centre[0] + r * c, centre[1] + r * s]),
+    ];
+    let near = |u: [f64; 2], v: [f64; 2]| (u[0] - v[0]).hypot(u[1] - v[1]) <= 1e-9;
+    for (p, q) in expected {
+        assert!(
+            found.lines.iter().any(|l| near(l.p, p) && near(l.q, q)),
+            "{p:?}, {q:?} not in {:?}",
+            found.lines
+        );
+    }
+}

@@ -56,6 +56,19 @@ fn searched(c: &SplineCurve) -> Option<Antipodal> {
     }
 }
 
+/// Whether `found` holds the pair of parameters `u` and `v` (either way round, modulo the
+/// `period`, to 1e-9).
+fn holds_pair(found: &Antipodal, period: f64, u: f64, v: f64) -> bool {
+    let near = |x: f64, y: f64| {
+        let d = (x - y).rem_euclid(period);
+        d.min(period - d) <= 1e-9
+    };
+    found
+        .pairs
+        .iter()
+        .any(|p| (near(p.s, u) && near(p.t, v)) || (near(p.t, u) && near(p.s, v)))
+}
+
 /// The brackets `[lo, hi]` of `[0, m]` where `C · C′` changes sign, and whether the inward
 /// normals of the pair there face each other (the pair is antipodal, not just opposite).
 fn oracle(c: &SplineCurve, m: usize) -> Vec<[f64; 2]> {
@@ -210,15 +223,8 @@ proptest! {
         let chord = [jm.p.x - j0.p.x, jm.p.y - j0.p.y];
         // (Normals pointing apart: no grasp, no pair.)
         prop_assume!(inward[0] * chord[0] + inward[1] * chord[1] > 0.0);
-        let near = |x: f64, y: f64| {
-            let d = (x - y).rem_euclid(n);
-            d.min(n - d) <= 1e-9
-        };
-        let hit = found.pairs.iter().any(|p| {
-            (near(p.s, 0.0) && near(p.t, m as f64)) || (near(p.t, 0.0) && near(p.s, m as f64))
-        });
         prop_assert!(
-            hit,
+            holds_pair(&found, n, 0.0, m as f64),
             "polygon {pts:?}: the knots 0 and {m} are no reported pair; found {:?}",
             found.pairs.iter().map(|p| (p.s, p.t)).collect::<Vec<_>>()
         );
@@ -260,15 +266,8 @@ fn inflections_with_opposite_normals_on_knots_are_a_pair() {
         found.doubts
     );
     let (a, b) = c.domain();
-    let at_seam = found.pairs.iter().any(|p| {
-        let s = (p.s - a).rem_euclid(b - a);
-        let t = (p.t - a).rem_euclid(b - a);
-        let near = |x: f64, y: f64| (x - y).abs() <= 1e-9;
-        (near(s, 0.0) || near(s, b - a)) && near(t, 5.0)
-            || (near(t, 0.0) || near(t, b - a)) && near(s, 5.0)
-    });
     assert!(
-        at_seam,
+        holds_pair(&found, b - a, a, a + 5.0),
         "{:?}",
         found.pairs.iter().map(|p| (p.s, p.t)).collect::<Vec<_>>()
     );
@@ -295,16 +294,8 @@ fn a_touching_pair_on_knots_inside_a_section_is_found() {
     ];
     let c = SplineCurve::periodic(2, &pts, None).unwrap();
     let found = antipodal(&c, &Options::default()).unwrap();
-    let near = |x: f64, y: f64| {
-        let d = (x - y).rem_euclid(10.0);
-        d.min(10.0 - d) <= 1e-9
-    };
     assert!(
-        found
-            .pairs
-            .iter()
-            .any(|p| { (near(p.s, 0.0) && near(p.t, 5.0)) || (near(p.t, 0.0) && near(p.s, 5.0)) })
-            || !found.doubts.is_empty(),
+        holds_pair(&found, 10.0, 0.0, 5.0) || !found.doubts.is_empty(),
         "{:?}",
         found.pairs.iter().map(|p| (p.s, p.t)).collect::<Vec<_>>()
     );

@@ -288,27 +288,48 @@ impl Walk<'_> {
                 if tight.is_some() {
                     return tight;
                 }
-                let from = self.border.place(end);
-                let m = self.border.corners.len() as f64;
-                // The next start on the border, counterclockwise (wrapping round; a start at
-                // the same place, to rounding, is next).
-                let ahead = |x: f64| {
-                    let d = x - from;
-                    if d >= -SAME_PLACE {
-                        d.max(0.0)
-                    } else {
-                        d + m
-                    }
-                };
-                let (j, to) = (0..self.open.len())
-                    .filter(|&j| available(j) && self.border.off(self.first(j)) <= SAME_POINT)
-                    .map(|j| (j, self.border.place(self.first(j))))
-                    .min_by(|x, y| ahead(x.1).total_cmp(&ahead(y.1)))?;
-                let to = if ahead(to) == 0.0 { from } else { to };
-                Some((j, self.border.walk(from, to, stretches)))
+                self.along_border(i, end, &available, stretches)
             }
             PieceEnd::Loose => here(),
         }
+    }
+
+    /// The piece starting next on the border counterclockwise from the end `end` of piece
+    /// `i` (wrapping round; a start at the same place, to rounding, is next), with the border
+    /// walked to it.
+    ///
+    /// A piece's own start at a crossing is not next at the same place: the piece only grazes
+    /// the border there (a crossing within rounding of the edge, as where two zero sets that
+    /// coincide in the next cell part at its edge), and closing it on itself made a loop of
+    /// nothing and left the region open.
+    fn along_border(
+        &self,
+        i: usize,
+        end: [f64; 2],
+        available: &dyn Fn(usize) -> bool,
+        stretches: &mut Vec<Stretch>,
+    ) -> Option<(usize, Vec<[f64; 2]>)> {
+        let from = self.border.place(end);
+        let m = self.border.corners.len() as f64;
+        let ahead = |x: f64| {
+            let d = x - from;
+            if d >= -SAME_PLACE {
+                d.max(0.0)
+            } else {
+                d + m
+            }
+        };
+        let grazing = |j: usize, to: f64| {
+            j == i && matches!(self.ends(j)[0], PieceEnd::Crossing(_)) && ahead(to) == 0.0
+        };
+        let (j, to) = (0..self.open.len())
+            .filter(|&j| available(j))
+            .filter(|&j| self.border.off(self.first(j)) <= SAME_POINT)
+            .map(|j| (j, self.border.place(self.first(j))))
+            .filter(|&(j, to)| !grazing(j, to))
+            .min_by(|x, y| ahead(x.1).total_cmp(&ahead(y.1)))?;
+        let to = if ahead(to) == 0.0 { from } else { to };
+        Some((j, self.border.walk(from, to, stretches)))
     }
 
     /// The direction in which piece `i` leaves its start (`leaving`) or arrives at its end.

@@ -8,7 +8,8 @@ use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use bspline::tensor::TensorBSpline;
-use zeroset::{nonnegative_set, BoundaryPiece, NonNegativeOptions, ZeroSetOptions};
+use numeric::tolerance::{Settings, Size};
+use zeroset::{nonnegative_set_mapped, BoundaryPiece, NonNegativeOptions, ZeroSetOptions};
 
 /// A pair of segments: contacts `s` on segment `i` and `t` on segment `j`, `i ≤ j`.
 pub(crate) struct Cell {
@@ -68,15 +69,32 @@ pub(crate) fn trace(
     if i == 0 && j == n - 1 && n >= 2 {
         meets.push([si.0, ti.1]);
     }
+    // The boundary is reported in the document's parameter, which need not be linear in the
+    // forms' (an analytic shape's angle against its rational circle's): chords are measured
+    // there, against the tolerance of a cell of the document's mean width per segment.
+    let (da, db) = model.profile.document_domain();
+    let cell_diagonal = std::f64::consts::SQRT_2 * (db - da) / n as f64;
+    // (A profile's document domain has a length: the fallback, the forms' own diagonal, is
+    // never taken.)
+    let settings = Settings {
+        size: Size::new(cell_diagonal).ok(),
+        ..opts.settings
+    };
     let options = NonNegativeOptions {
         zero: ZeroSetOptions {
-            settings: opts.settings,
+            settings,
             max_patches: opts.max_patches,
         },
         pairs: i == j,
         meets,
     };
-    let set = nonnegative_set(&cell.fs, &options, &|bx| near.excluded(i, j, bx))?;
+    let document = |t: f64, r: f64| {
+        Some([
+            model.document_param(model.profile_param(i, t)),
+            model.document_param(model.profile_param(j, r)),
+        ])
+    };
+    let set = nonnegative_set_mapped(&cell.fs, &options, &|bx| near.excluded(i, j, bx), &document)?;
     let to_profile = |p: [f64; 2]| [model.profile_param(i, p[0]), model.profile_param(j, p[1])];
     let pieces = set
         .pieces

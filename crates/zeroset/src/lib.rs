@@ -35,7 +35,9 @@ pub use bisector::{
 pub use boundary::{BoundaryPiece, PieceEnd};
 pub use entries::{bisector, self_bisector};
 pub use error::{Error, Result};
-pub use nonnegative::{nonnegative_set, NonNegativeOptions, NonNegativeSet};
+pub use nonnegative::{
+    nonnegative_set, nonnegative_set_mapped, NonNegativeOptions, NonNegativeSet,
+};
 pub use profile_bisector::{profile_bisector_of_pairs, profile_self_bisector_of_pairs};
 pub use symbolic::{bisector_function, Method};
 pub use system::{solve_system, Solution, SystemOptions};

@@ -132,6 +132,20 @@ pub fn nonnegative_set(
     opts: &NonNegativeOptions,
     excluded: &dyn Fn(Rect) -> bool,
 ) -> Result<NonNegativeSet> {
+    nonnegative_set_mapped(fs, opts, excluded, &|t, r| Some([t, r]))
+}
+
+/// [`nonnegative_set`] with the chord tolerance kept where `map` sends the pairs `(t, r)`:
+/// a caller that reports the boundary in other coordinates (a curve's own parameter, not
+/// linear in its exact form's) gets polylines whose images stay within the tolerance of the
+/// image of the boundary. The tolerance is relative to `opts.zero.settings.size` there (by
+/// default the domain's diagonal, as measured in `(t, r)`); the vertices stay in `(t, r)`.
+pub fn nonnegative_set_mapped(
+    fs: &[TensorBSpline],
+    opts: &NonNegativeOptions,
+    excluded: &dyn Fn(Rect) -> bool,
+    map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
+) -> Result<NonNegativeSet> {
     let Some(first) = fs.first() else {
         return Ok(NonNegativeSet {
             complete: true,
@@ -182,7 +196,7 @@ pub fn nonnegative_set(
             meets: &meets,
             skip: &skip,
             excluded,
-            map: &|t, r| Some([t, r]),
+            map,
             chord_abs,
         },
     );
@@ -206,7 +220,10 @@ pub fn nonnegative_set(
                     meets: &[],
                     skip: &[],
                     excluded: &|bx| excluded(chart.image(bx)),
-                    map: &|w, l| Some(chart.point([w, l])),
+                    map: &|w, l| {
+                        let [t, r] = chart.point([w, l]);
+                        map(t, r)
+                    },
                     chord_abs,
                 },
             );

@@ -298,10 +298,10 @@ impl Walk<'_> {
     /// `i` (wrapping round; a start at the same place, to rounding, is next), with the border
     /// walked to it.
     ///
-    /// A piece's own start at a crossing is not next at the same place: the piece only grazes
-    /// the border there (a crossing within rounding of the edge, as where two zero sets that
-    /// coincide in the next cell part at its edge), and closing it on itself made a loop of
-    /// nothing and left the region open.
+    /// A piece's own start at a crossing is not next at the same place (to `SAME_PLACE`): the
+    /// piece only grazes the border there (a crossing within rounding of the edge, as where
+    /// two zero sets that coincide in the next cell part at its edge), and closing it on
+    /// itself made a loop of nothing and left the region open.
     fn along_border(
         &self,
         i: usize,
@@ -320,7 +320,7 @@ impl Walk<'_> {
             }
         };
         let grazing = |j: usize, to: f64| {
-            j == i && matches!(self.ends(j)[0], PieceEnd::Crossing(_)) && ahead(to) == 0.0
+            j == i && matches!(self.ends(j)[0], PieceEnd::Crossing(_)) && ahead(to) <= SAME_PLACE
         };
         let (j, to) = (0..self.open.len())
             .filter(|&j| available(j))

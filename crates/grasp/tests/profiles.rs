@@ -228,3 +228,45 @@ fn aligned_cad_shapes_match_the_dense_check() {
     assert_eq!(g.regions.len(), 2);
     assert!(g.regions.iter().all(|r| r.certified));
 }
+
+/// The aligned shapes not yet resolved (two zero sets crossing within rounding of a cell's
+/// edge, where the assembly cannot tell a crossing's start from a border start).
+fn unresolved_aligned_shapes() -> Option<Vec<(&'static str, Profile, f64)>> {
+    use testkit::far_joints::{filleted_rectangle, stadium};
+    let slot = stadium([1.0, -2.0], 2.0, 1.0);
+    let part = filleted_rectangle([0.0, 0.0], 4.0, 3.0, 0.5, 0.0);
+    Some(vec![
+        ("slot", slot.clone(), 0.1),
+        ("slot", slot.clone(), 1.0),
+        ("slot", slot, 2.0),
+        ("filleted rectangle", part, 0.5),
+        ("drawn circle", drawn_circle(2.0)?, 1.0),
+    ])
+}
+
+/// Where such a shape's boundary is not resolved, the result says so and certifies no region;
+/// where it is, it matches the dense check.
+#[test]
+fn aligned_cad_shapes_are_resolved_or_certify_nothing() {
+    for (name, p, mu) in unresolved_aligned_shapes().unwrap() {
+        let g = grasps(&p, &GraspOptions::friction(mu)).unwrap();
+        if g.doubts
+            .iter()
+            .any(|d| *d == Doubt::GraspBoundaryUnresolved)
+        {
+            assert!(g.regions.iter().all(|r| !r.certified), "{name} at μ = {mu}");
+        } else {
+            check(&p, mu).unwrap_or_else(|e| panic!("{name} at μ = {mu}: {e}"));
+        }
+    }
+}
+
+#[test]
+#[ignore = "crate limitation: the slot at μ = 0.1, 1 and 2, the filleted rectangle at 0.5 and \
+            the drawn circle at 1 are left unresolved (zero sets crossing within 1e-10 of a \
+            cell's edge; the assembly needs to become a planar graph of the cell)"]
+fn aligned_cad_shapes_are_all_resolved() {
+    for (name, p, mu) in unresolved_aligned_shapes().unwrap() {
+        check(&p, mu).unwrap_or_else(|e| panic!("{name} at μ = {mu}: {e}"));
+    }
+}

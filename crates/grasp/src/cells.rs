@@ -72,8 +72,7 @@ pub(crate) fn trace(
     // The boundary is reported in the document's parameter, which need not be linear in the
     // forms' (an analytic shape's angle against its rational circle's): chords are measured
     // there, against the tolerance of a cell of the document's mean width per segment.
-    let (da, db) = model.profile.document_domain();
-    let cell_diagonal = std::f64::consts::SQRT_2 * (db - da) / n as f64;
+    let cell_diagonal = std::f64::consts::SQRT_2 * model.document_cell();
     // (A profile's document domain has a length: the fallback, the forms' own diagonal, is
     // never taken.)
     let settings = Settings {

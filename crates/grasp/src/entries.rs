@@ -226,11 +226,11 @@ fn output(
     certified: bool,
 ) -> GraspRegion {
     let doc = |p: [f64; 2]| [model.document_param(p[0]), model.document_param(p[1])];
-    // The chords were traced straight in the forms' parameters; where the document's parameter
+    // The polylines are straight in the forms' parameters (their distance from the boundary
+    // was measured in the document's, [`crate::cells::trace`]); where the document's parameter
     // is not linear in them (an analytic shape's angle against its rational circle's), a chord
     // is followed by its image, halved until its middle lies on the mapped chord.
-    let (da, db) = model.profile.document_domain();
-    let tol = chord * (db - da) / model.n() as f64;
+    let tol = chord * model.document_cell();
     let polyline = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> {
         let mut out: Vec<[f64; 2]> = Vec::with_capacity(pts.len());
         for w in pts.windows(2) {

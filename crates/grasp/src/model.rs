@@ -128,6 +128,13 @@ impl<'p> Model<'p> {
         (k.fract() == 0.0).then(|| &self.joints[(k as usize) % self.n()])
     }
 
+    /// The document's parameter per segment, on average: the unit in which a cell's chord
+    /// tolerance is measured where the regions are reported.
+    pub(crate) fn document_cell(&self) -> f64 {
+        let (da, db) = self.profile.document_domain();
+        (db - da) / self.n() as f64
+    }
+
     /// The document's parameter at the profile parameter `u`, unwrapped by whole turns.
     pub(crate) fn document_param(&self, u: f64) -> f64 {
         let n = self.n() as f64;

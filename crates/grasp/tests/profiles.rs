@@ -202,14 +202,14 @@ fn drawn_circle(r: f64) -> Option<Profile> {
     Profile::new(segments, None).ok()
 }
 
-/// Shapes as CAD parts and drawings have them, aligned with the axes: a slot (stadium), a
-/// filleted rectangle and a drawn circle. Parallel sides make the cone conditions at both
-/// contacts coincide along whole cells; they part at the joints into the arcs, crossing
-/// within rounding of the cells' edges. Each is resolved and matches the dense check (all
-/// were left unresolved, the slot in 4 regions, the rectangle in 8).
+/// Shapes as CAD parts and drawings have them: a slot (stadium), a filleted rectangle and a
+/// drawn circle. Parallel sides (turned any way: the pairs do not see the axes) make the cone
+/// conditions at both contacts coincide along whole cells; they part at the joints into the
+/// arcs, crossing within rounding of the cells' edges. Each is resolved and matches the
+/// dense check (all were left unresolved, the slot in 4 regions, the rectangle in 8).
 ///
-/// Not yet resolved, and said so (no region certified): the slot at μ = 0.1 and 2, the
-/// rectangle at 0.5, the drawn circle at 1 (its boundary runs through pairs of its joints).
+/// Not yet resolved, and said so (no region certified): see
+/// [`aligned_cad_shapes_are_resolved_or_certify_nothing`].
 #[test]
 fn aligned_cad_shapes_match_the_dense_check() {
     use testkit::far_joints::{filleted_rectangle, stadium};
@@ -229,8 +229,9 @@ fn aligned_cad_shapes_match_the_dense_check() {
     assert!(g.regions.iter().all(|r| r.certified));
 }
 
-/// The aligned shapes not yet resolved (two zero sets crossing within rounding of a cell's
-/// edge, where the assembly cannot tell a crossing's start from a border start).
+/// The shapes with parallel sides not yet resolved (two zero sets crossing within rounding
+/// of a cell's edge, where the assembly cannot tell a crossing's start from a border start;
+/// the filleted rectangle turned by 0.3 or 1 rad gives the same).
 fn unresolved_aligned_shapes() -> Option<Vec<(&'static str, Profile, f64)>> {
     use testkit::far_joints::{filleted_rectangle, stadium};
     let slot = stadium([1.0, -2.0], 2.0, 1.0);

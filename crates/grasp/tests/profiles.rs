@@ -202,6 +202,17 @@ fn drawn_circle(r: f64) -> Option<Profile> {
     Profile::new(segments, None).ok()
 }
 
+/// The CAD shapes of the tests below: a slot (stadium) off the origin, a rectangle with
+/// fillets and a drawn circle.
+fn cad_shapes() -> Option<[Profile; 3]> {
+    use testkit::far_joints::{filleted_rectangle, stadium};
+    Some([
+        stadium([1.0, -2.0], 2.0, 1.0),
+        filleted_rectangle([0.0, 0.0], 4.0, 3.0, 0.5, 0.0),
+        drawn_circle(2.0)?,
+    ])
+}
+
 /// Shapes as CAD parts and drawings have them: a slot (stadium), a filleted rectangle and a
 /// drawn circle. Parallel sides (turned any way: the pairs do not see the axes) make the cone
 /// conditions at both contacts coincide along whole cells; they part at the joints into the
@@ -212,16 +223,14 @@ fn drawn_circle(r: f64) -> Option<Profile> {
 /// [`aligned_cad_shapes_are_resolved_or_certify_nothing`].
 #[test]
 fn aligned_cad_shapes_match_the_dense_check() {
-    use testkit::far_joints::{filleted_rectangle, stadium};
-    let slot = stadium([1.0, -2.0], 2.0, 1.0);
+    let [slot, part, circle] = cad_shapes().unwrap();
     for mu in [0.3, 0.5, 0.7] {
         check(&slot, mu).unwrap_or_else(|e| panic!("slot at μ = {mu}: {e}"));
     }
-    let part = filleted_rectangle([0.0, 0.0], 4.0, 3.0, 0.5, 0.0);
     for mu in [0.1, 0.3, 0.7, 2.0] {
         check(&part, mu).unwrap_or_else(|e| panic!("filleted rectangle at μ = {mu}: {e}"));
     }
-    check(&drawn_circle(2.0).unwrap(), 0.3).unwrap_or_else(|e| panic!("drawn circle: {e}"));
+    check(&circle, 0.3).unwrap_or_else(|e| panic!("drawn circle: {e}"));
     // The slot at μ = 0.3: the family across its sides and the pair across its ends, apart
     // (a chord turning from one to the other leaves both cones).
     let g = grasps(&slot, &GraspOptions::friction(0.3)).unwrap();
@@ -233,15 +242,13 @@ fn aligned_cad_shapes_match_the_dense_check() {
 /// of a cell's edge, where the assembly cannot tell a crossing's start from a border start;
 /// the filleted rectangle turned by 0.3 or 1 rad gives the same).
 fn unresolved_aligned_shapes() -> Option<Vec<(&'static str, Profile, f64)>> {
-    use testkit::far_joints::{filleted_rectangle, stadium};
-    let slot = stadium([1.0, -2.0], 2.0, 1.0);
-    let part = filleted_rectangle([0.0, 0.0], 4.0, 3.0, 0.5, 0.0);
+    let [slot, part, circle] = cad_shapes()?;
     Some(vec![
         ("slot", slot.clone(), 0.1),
         ("slot", slot.clone(), 1.0),
         ("slot", slot, 2.0),
         ("filleted rectangle", part, 0.5),
-        ("drawn circle", drawn_circle(2.0)?, 1.0),
+        ("drawn circle", circle, 1.0),
     ])
 }
 

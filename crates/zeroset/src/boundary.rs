@@ -110,6 +110,53 @@ pub(crate) fn join_loose(pieces: Vec<BoundaryPiece>, tol: [f64; 2]) -> Vec<Bound
     out
 }
 
+/// Pieces that retrace another one dropped: the same function's zero set between the same
+/// two ends, every vertex of either within `tol` of the other where `map` sends them (the
+/// cells on either side of a corner the zero set passes within rounding of each trace that
+/// stretch). Two such pieces bound the same stretch twice: the set on the left of both would
+/// lie on either side of the one curve.
+pub(crate) fn drop_retraced(
+    pieces: Vec<BoundaryPiece>,
+    tol: f64,
+    map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
+) -> Vec<BoundaryPiece> {
+    let mapped: Vec<Option<Vec<[f64; 2]>>> = pieces
+        .iter()
+        .map(|p| p.pts.iter().map(|q| map(q[0], q[1])).collect())
+        .collect();
+    let within = |a: &[[f64; 2]], b: &[[f64; 2]]| {
+        a.iter().all(|&q| {
+            b.windows(2)
+                .map(|w| curve::distance_to_segment(q, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min)
+                <= tol
+        })
+    };
+    let retraces = |i: usize, j: usize| {
+        let (p, q) = (&pieces[i], &pieces[j]);
+        let (Some(a), Some(b)) = (&mapped[i], &mapped[j]) else {
+            return false;
+        };
+        p.function == q.function
+            && p.ends.is_some()
+            && p.ends == q.ends
+            && a.len() >= 2
+            && b.len() >= 2
+            && within(a, b)
+            && within(b, a)
+    };
+    let mut dropped = vec![false; pieces.len()];
+    for i in 0..pieces.len() {
+        dropped[i] = (0..i).any(|j| !dropped[j] && retraces(i, j));
+    }
+    pieces
+        .into_iter()
+        .zip(dropped)
+        .filter(|(_, d)| !d)
+        .map(|(p, _)| p)
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -148,5 +195,45 @@ mod tests {
         let two = joined.iter().find(|p| p.function == 2).unwrap();
         assert_eq!(two.ends, None);
         assert_eq!(two.pts.first(), two.pts.last());
+    }
+
+    /// A stretch traced twice (once through a vertex on a cell's line) is kept once; pieces
+    /// of one function between the same ends but apart, of two functions, or with other
+    /// ends, all stay.
+    #[test]
+    fn a_retraced_piece_is_kept_once() {
+        use PieceEnd::{Border, Crossing};
+        let same = |p: &BoundaryPiece| (p.function, p.ends, p.pts.len());
+        let identity = |t: f64, r: f64| Some([t, r]);
+        let ends = [Crossing(2), Crossing(3)];
+        let once = piece(0, vec![[0.0, 0.0], [1.0, 1e-12]], ends);
+        let again = piece(0, vec![[0.0, 0.0], [0.5, 1e-11], [1.0, 1e-12]], ends);
+        let kept = drop_retraced(vec![once.clone(), again.clone()], 1e-9, &identity);
+        assert_eq!(kept.len(), 1);
+        assert_eq!(same(&kept[0]), same(&once));
+        let apart = piece(0, vec![[0.0, 0.0], [0.5, 1e-6], [1.0, 1e-12]], ends);
+        assert_eq!(
+            drop_retraced(vec![once.clone(), apart], 1e-9, &identity).len(),
+            2
+        );
+        let other = BoundaryPiece {
+            function: 1,
+            ..again.clone()
+        };
+        assert_eq!(
+            drop_retraced(vec![once.clone(), other], 1e-9, &identity).len(),
+            2
+        );
+        let bordered = BoundaryPiece {
+            ends: Some([Border, Crossing(3)]),
+            ..again.clone()
+        };
+        assert_eq!(
+            drop_retraced(vec![once.clone(), bordered], 1e-9, &identity).len(),
+            2
+        );
+        // Measured where the map sends the pairs: stretched a million times, apart.
+        let stretched = |t: f64, r: f64| Some([t, 1e6 * r]);
+        assert_eq!(drop_retraced(vec![once, again], 1e-9, &stretched).len(), 2);
     }
 }

@@ -21,7 +21,7 @@
 
 use crate::assemble::MATCH_TOL;
 use crate::blowup::Corner;
-use crate::boundary::{end_at, join_loose, BoundaryPiece, PieceEnd};
+use crate::boundary::{drop_retraced, end_at, join_loose, BoundaryPiece, PieceEnd};
 use crate::error::{Error, Result};
 use crate::extract::Settle;
 use crate::patch::{common_sign, Patch};
@@ -201,6 +201,7 @@ pub fn nonnegative_set_mapped(
         },
     );
     if corners.is_empty() {
+        out.pieces = drop_retraced(out.pieces, chord_abs, map);
         return Ok(out);
     }
     let mut pieces = std::mem::take(&mut out.pieces);
@@ -256,10 +257,11 @@ pub fn nonnegative_set_mapped(
             }
         }
     }
-    out.pieces = join_loose(
+    let joined = join_loose(
         pieces,
         [MATCH_TOL * dom.t.width(), MATCH_TOL * dom.r.width()],
     );
+    out.pieces = drop_retraced(joined, chord_abs, map);
     Ok(out)
 }
 

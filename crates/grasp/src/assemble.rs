@@ -276,16 +276,31 @@ impl Walk<'_> {
                         .min_by(|x, y| x.1.total_cmp(&y.1))
                         .map(|(j, _)| (j, Vec::new()))
                 };
+                // A crossing on the cell's border with nothing leaving it (the other zero set
+                // meets the border there, and its piece inside is a point) goes on along the
+                // border, as at a border end.
                 tagged(TIGHT)
+                    .or_else(|| {
+                        (self.border.off(end) <= SAME_POINT)
+                            .then(|| self.along_border(i, end, &available, stretches))
+                            .flatten()
+                    })
                     .or_else(|| here().filter(|(j, _)| dist(self.first(*j), end) <= TIGHT))
                     .or_else(|| tagged(self.tol))
                     .or_else(here)
             }
             PieceEnd::Border => {
                 // A piece leaving this very point (a corner of the cell where the contacts
-                // meet) goes on from it: no walk round the border.
+                // meet) goes on from it: no walk round the border. (Elsewhere the walk is
+                // taken however short: it records the stretch of the joint's line the region
+                // touches, which glues it to its part across.)
+                let at_corner = self
+                    .border
+                    .corners
+                    .iter()
+                    .any(|&c| dist(c, end) <= SAME_PLACE);
                 let tight = here().filter(|(j, _)| dist(self.first(*j), end) <= TIGHT);
-                if tight.is_some() {
+                if at_corner && tight.is_some() {
                     return tight;
                 }
                 self.along_border(i, end, &available, stretches)
@@ -325,11 +340,30 @@ impl Walk<'_> {
         let (j, to) = (0..self.open.len())
             .filter(|&j| available(j))
             .filter(|&j| self.border.off(self.first(j)) <= SAME_POINT)
+            .filter(|&j| !self.reached_by_crossing(j, available))
             .map(|j| (j, self.border.place(self.first(j))))
             .filter(|&(j, to)| !grazing(j, to))
             .min_by(|x, y| ahead(x.1).total_cmp(&ahead(y.1)))?;
         let to = if ahead(to) == 0.0 { from } else { to };
         Some((j, self.border.walk(from, to, stretches)))
+    }
+
+    /// Whether piece `j` starts at a crossing where another available piece ends: the walk
+    /// reaches it through that piece, not along the border, however near the border the
+    /// crossing lies (two zero sets parting at a cell's edge cross there to rounding, and the
+    /// piece from the edge to the crossing, a few ulps long, bounds the region too).
+    fn reached_by_crossing(&self, j: usize, available: &dyn Fn(usize) -> bool) -> bool {
+        let PieceEnd::Crossing(other) = self.ends(j)[0] else {
+            return false;
+        };
+        let mine = self.open[j].function;
+        (0..self.open.len()).any(|k| {
+            k != j
+                && available(k)
+                && self.open[k].function == other
+                && self.ends(k)[1] == PieceEnd::Crossing(mine)
+                && dist(self.last(k), self.first(j)) <= self.tol
+        })
     }
 
     /// The direction in which piece `i` leaves its start (`leaving`) or arrives at its end.

@@ -1,7 +1,7 @@
 //! The crate's command: every force-closure grasp of a closed curve or profile.
 
 use crate::assemble::{regions, RawRegion};
-use crate::best::{descend, most_robust};
+use crate::best::{descend, most_robust, ANTIPODAL_ANGLE};
 use crate::cells::{cells, trace};
 use crate::contact::{around, square_at_most, Positivity};
 use crate::corners::corner_lines;
@@ -12,7 +12,7 @@ use crate::options::GraspOptions;
 use crate::polyline::{bounds, signed_area};
 use crate::proof::{none_below, Below};
 use crate::quality::{force_closure, min_friction};
-use crate::region_set::{deepest, depth, in_triangle};
+use crate::region_set::{deepest, depth, holds_or_touches, in_triangle};
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::distance_to_segment;
 use curve::{Boundary, ParamCurve, Profile};
@@ -71,7 +71,22 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     let raw = regions(&model, &traced, &lines, chord, &holds);
     let seeds = antipodal_seeds(boundary, profile)?;
     let proof = Positivity::new(&model, &cells);
+    // (A cell's unresolved point is said even where no region came of it.)
+    if traced.iter().any(|(_, t)| t.unresolved) {
+        doubts.add(Doubt::GraspBoundaryUnresolved);
+    }
+    // Every antipodal pair within the width limits is force closure at any friction: one
+    // that no region holds was lost (regions narrower than the subdivision resolves).
+    let lost = seeds.iter().any(|&p| {
+        force_closure(&model, alpha.max(ANTIPODAL_ANGLE), widths, p)
+            && !raw.iter().any(|r| holds_or_touches(r, model.n(), p, chord))
+    });
+    if lost {
+        doubts.add(Doubt::GraspPairLost);
+    }
     let unresolved = lines_unproven
+        || lost
+        || traced.iter().any(|(_, t)| t.unresolved)
         || raw.iter().any(|r| {
             r.doubts
                 .iter()

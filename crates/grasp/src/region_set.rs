@@ -45,6 +45,14 @@ pub(crate) fn holds(region: &RawRegion, n: usize, s: f64, t: f64) -> bool {
             .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) <= ON_LINE)
 }
 
+/// Whether the region holds the pair `p` or passes within `by` of it (its polylines being
+/// within that of its exact edge).
+pub(crate) fn holds_or_touches(region: &RawRegion, n: usize, p: [f64; 2], by: f64) -> bool {
+    let [s, t] = in_triangle(n, p[0], p[1]);
+    // (A pair with a finger at the seam is also the point `(t, n)` of the triangle.)
+    holds(region, n, s, t) || depth(region, [s, t]) <= by || depth(region, [t, s + n as f64]) <= by
+}
+
 /// Whether the region holds the pair `p` at least `by` inside its polylines (so whichever side
 /// of the exact edge a polyline passes, within its chord tolerance, the exact region holds it).
 pub(crate) fn held_inside(region: &RawRegion, n: usize, p: [f64; 2], by: f64) -> bool {

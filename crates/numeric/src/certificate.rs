@@ -212,6 +212,9 @@ pub enum Doubt {
     /// A grasp region's most robust grasp was found by a local search, not proven (the set
     /// traced again just below its friction could not be shown to miss the region).
     GraspBestUnproven,
+    /// An antipodal pair (force closure at any friction) lies in no grasp region: regions
+    /// narrower than the subdivision resolves were lost.
+    GraspPairLost,
 
     // The tool's inputs.
     /// The drawing the input was read from holds what could be part of an outline and was
@@ -339,6 +342,10 @@ impl Doubt {
             }
             Doubt::GraspBestUnproven => {
                 "a grasp region's most robust grasp was found by a local search"
+            }
+            Doubt::GraspPairLost => {
+                "an antipodal pair lies in no grasp region (regions narrower than the \
+                 subdivision resolves were lost)"
             }
             Doubt::Cancelled => "the work was cancelled before the axis was proven",
             Doubt::AxisUncertified => "the medial axis is not certified",

@@ -262,31 +262,24 @@ impl Walk<'_> {
             })
         };
         match self.ends(i)[1] {
-            PieceEnd::Crossing(other) => {
-                let mine = self.open[i].function;
-                let tagged = |tol: f64| {
-                    (0..self.open.len())
-                        .filter(|&j| available(j))
-                        .filter(|&j| {
-                            self.open[j].function == other
-                                && self.ends(j)[0] == PieceEnd::Crossing(mine)
-                        })
-                        .map(|j| (j, dist(self.first(j), end)))
-                        .filter(|&(_, d)| d <= tol)
-                        .min_by(|x, y| x.1.total_cmp(&y.1))
-                        .map(|(j, _)| (j, Vec::new()))
-                };
-                // A crossing on the cell's border with nothing leaving it (the other zero set
-                // meets the border there, and its piece inside is a point) goes on along the
-                // border, as at a border end.
-                tagged(TIGHT)
+            PieceEnd::Crossing(_) => {
+                let partner = |tol: f64| self.partner(i, tol, &available).map(|j| (j, Vec::new()));
+                // Where the contacts meet, every function vanishes: any piece leaving the
+                // point goes on. Elsewhere a crossing on the cell's border with no piece of the
+                // other zero set leaving it (that one meets the border there, its piece inside
+                // a point) goes on along the border, as at a border end: the walk records the
+                // stretch of the joint's line the region touches.
+                let meeting = self.at_meeting(end);
+                partner(TIGHT)
+                    .or_else(|| {
+                        here().filter(|(j, _)| meeting && dist(self.first(*j), end) <= TIGHT)
+                    })
+                    .or_else(|| partner(self.tol))
                     .or_else(|| {
                         (self.border.off(end) <= SAME_POINT)
                             .then(|| self.along_border(i, end, &available, stretches))
                             .flatten()
                     })
-                    .or_else(|| here().filter(|(j, _)| dist(self.first(*j), end) <= TIGHT))
-                    .or_else(|| tagged(self.tol))
                     .or_else(here)
             }
             PieceEnd::Border => {
@@ -294,13 +287,8 @@ impl Walk<'_> {
                 // meet) goes on from it: no walk round the border. (Elsewhere the walk is
                 // taken however short: it records the stretch of the joint's line the region
                 // touches, which glues it to its part across.)
-                let at_corner = self
-                    .border
-                    .corners
-                    .iter()
-                    .any(|&c| dist(c, end) <= SAME_PLACE);
                 let tight = here().filter(|(j, _)| dist(self.first(*j), end) <= TIGHT);
-                if at_corner && tight.is_some() {
+                if self.at_meeting(end) && tight.is_some() {
                     return tight;
                 }
                 self.along_border(i, end, &available, stretches)
@@ -348,22 +336,50 @@ impl Walk<'_> {
         Some((j, self.border.walk(from, to, stretches)))
     }
 
-    /// Whether piece `j` starts at a crossing where another available piece ends: the walk
-    /// reaches it through that piece, not along the border, however near the border the
-    /// crossing lies (two zero sets parting at a cell's edge cross there to rounding, and the
-    /// piece from the edge to the crossing, a few ulps long, bounds the region too).
-    fn reached_by_crossing(&self, j: usize, available: &dyn Fn(usize) -> bool) -> bool {
-        let PieceEnd::Crossing(other) = self.ends(j)[0] else {
-            return false;
+    /// The available piece that goes on from the crossing where piece `k` ends: the nearest
+    /// within `tol` of that zero set starting at its crossing with `k`'s.
+    fn partner(&self, k: usize, tol: f64, available: &dyn Fn(usize) -> bool) -> Option<usize> {
+        let PieceEnd::Crossing(other) = self.ends(k)[1] else {
+            return None;
         };
-        let mine = self.open[j].function;
-        (0..self.open.len()).any(|k| {
-            k != j
-                && available(k)
-                && self.open[k].function == other
-                && self.ends(k)[1] == PieceEnd::Crossing(mine)
-                && dist(self.last(k), self.first(j)) <= self.tol
-        })
+        let (mine, end) = (self.open[k].function, self.last(k));
+        (0..self.open.len())
+            .filter(|&j| available(j))
+            .filter(|&j| {
+                self.open[j].function == other && self.ends(j)[0] == PieceEnd::Crossing(mine)
+            })
+            .map(|j| (j, dist(self.first(j), end)))
+            .filter(|&(_, d)| d <= tol)
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+            .map(|(j, _)| j)
+    }
+
+    /// Whether piece `j` is the partner of another available piece: the walk reaches it
+    /// through that piece, not along the border, however near the border their crossing lies
+    /// (two zero sets parting at a cell's edge cross there to rounding, and the piece from the
+    /// edge to the crossing, a few ulps long, bounds the region too).
+    fn reached_by_crossing(&self, j: usize, available: &dyn Fn(usize) -> bool) -> bool {
+        matches!(self.ends(j)[0], PieceEnd::Crossing(_))
+            && (0..self.open.len())
+                .any(|k| k != j && available(k) && self.partner(k, self.tol, available) == Some(j))
+    }
+
+    /// Whether `p` is a point where the contacts meet: a corner of the cell, or on its
+    /// diagonal edge.
+    fn at_meeting(&self, p: [f64; 2]) -> bool {
+        let m = self.border.corners.len();
+        self.border
+            .corners
+            .iter()
+            .any(|&c| dist(c, p) <= SAME_PLACE)
+            || (0..m).any(|e| {
+                self.border.lines[e].is_none()
+                    && distance_to_segment(
+                        p,
+                        self.border.corners[e],
+                        self.border.corners[(e + 1) % m],
+                    ) <= SAME_PLACE
+            })
     }
 
     /// The direction in which piece `i` leaves its start (`leaving`) or arrives at its end.

@@ -14,3 +14,18 @@ fn grasps_of_the_ellipse_at_friction_0_3() {
     doc["curve"]["file"] = serde_json::json!("ellipse.json");
     insta::assert_json_snapshot!("grasps-ellipse-0.3", rounded(&doc));
 }
+
+/// The rounded slot (a profile of lines and arcs, parallel sides) at μ = 0.3: every boundary
+/// resolved, the regions certified.
+#[test]
+fn grasps_of_the_rounded_slot_at_friction_0_3() {
+    let mut doc = curvekit_json(&[
+        "grasps",
+        &fixture("profile-rounded-slot.json"),
+        "--friction",
+        "0.3",
+    ]);
+    assert_eq!(doc["certified"], serde_json::json!(true));
+    doc["curve"]["file"] = serde_json::json!("profile-rounded-slot.json");
+    insta::assert_json_snapshot!("grasps-rounded-slot-0.3", rounded(&doc));
+}

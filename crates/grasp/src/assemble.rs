@@ -45,6 +45,11 @@ const INSIDE_EDGE: f64 = 1e-9;
 /// any grasp near it), not regions.
 const CRUMB: f64 = 1e-9;
 
+/// Loops no wider than this many units of rounding of the square's coordinates are debris: a
+/// zero set crossing a cell's edge leaves, beside its piece, a sliver a few ulps long where a
+/// patch's corner cut it, closed along the border into a loop of nothing.
+const DEBRIS_ULPS: f64 = 64.0;
+
 /// A region as closed polylines in the triangle `s < t` of the profile's parameter.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub(crate) struct RawRegion {
@@ -473,9 +478,13 @@ fn glue(
                 .iter()
                 .any(|m| dist(*m, lo) <= CRUMB && dist(*m, hi) <= CRUMB)
     };
+    let debris = |l: &Loop| {
+        let (lo, hi) = bounds(&l.pts);
+        (hi[0] - lo[0]).max(hi[1] - lo[1]) <= DEBRIS_ULPS * f64::EPSILON * n.max(1.0)
+    };
     let (outer, holes): (Vec<Loop>, Vec<Loop>) = loops
         .into_iter()
-        .filter(|l| !crumb(l))
+        .filter(|l| !crumb(l) && !debris(l))
         .partition(|l| signed_area(&l.pts) >= 0.0);
     let mut nodes: Vec<Node> = (0..outer.len()).map(Node::Part).collect();
     for line in lines {

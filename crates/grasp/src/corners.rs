@@ -100,6 +100,16 @@ pub(crate) fn corner_lines(
                 pieces.push([u, u]);
             }
         }
+        // A piece no longer than rounding at a reflex corner is the other finger at that
+        // corner, which takes no part: a segment's condition touching zero at its end (the
+        // reflex corner's pair exactly at the cone's edge, as round numbers make it) leaves
+        // such a sliver.
+        let at_reflex = |c: f64| {
+            let k = c.round();
+            (c - k).abs() <= SHARED_END * (1.0 + k.abs())
+                && model.joint_at(k).is_some_and(|j| j.cone == Cone::Reflex)
+        };
+        pieces.retain(|p| !(p[1] - p[0] <= SHARED_END * (1.0 + p[1].abs()) && at_reflex(p[0])));
         pieces.sort_by(|x, y| x[0].total_cmp(&y[0]));
         out.push(CornerLine {
             joint: joint.segment,

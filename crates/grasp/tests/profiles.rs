@@ -167,12 +167,15 @@ fn polygons_at_high_friction_match_the_dense_check() {
 /// region (it once traced that line as a region with area, and certified it).
 #[test]
 fn a_right_angle_at_friction_one_certifies_nothing() {
-    for pts in [
-        [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
-        [[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [0.0, 1.0]],
+    // (The kite's sides of slopes 2 and −2 at μ = 0.5: the cones' edges along the horizontal
+    // chords between them, the same set without inside.)
+    for (pts, mu) in [
+        ([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]], 1.0),
+        ([[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [0.0, 1.0]], 1.0),
+        ([[2.0, 0.0], [0.0, 4.0], [-2.0, 0.0], [0.0, -2.0]], 0.5),
     ] {
         let p = testkit::outlines::polygon(&pts);
-        let g = grasps(&p, &GraspOptions::friction(1.0)).unwrap();
+        let g = grasps(&p, &GraspOptions::friction(mu)).unwrap();
         assert!(
             g.doubts
                 .iter()
@@ -319,6 +322,73 @@ proptest! {
     ) {
         prop_assume!((mu - 1.0).abs() > 1e-3);
         let Some(p) = skyline(&widths, &heights[..widths.len()], turn) else { return Ok(()) };
+        check(&p, mu)?;
+    }
+}
+
+/// Whether two sides' friction cones share an edge direction, reversed: their normals are
+/// exactly `2 atan μ` off opposite (a right angle at μ = 1; the kite's slopes ±2 at 0.5). The
+/// pairs across them whose chord runs along that edge are then force closure with no margin
+/// and no others near them are: a set without inside, said unresolved.
+fn cones_share_an_edge(pts: &[[f64; 2]], mu: f64) -> bool {
+    let n = pts.len();
+    let dir = |k: usize| {
+        let (a, b) = (pts[k], pts[(k + 1) % n]);
+        (b[1] - a[1]).atan2(b[0] - a[0])
+    };
+    (0..n).any(|i| {
+        (0..n).any(|j| {
+            let apart = (dir(i) - dir(j) - std::f64::consts::PI).rem_euclid(std::f64::consts::TAU);
+            let off = apart.min(std::f64::consts::TAU - apart);
+            i != j && (off - 2.0 * mu.atan()).abs() < 1e-9
+        })
+    })
+}
+
+/// A polygon with its vertices on the integer grid: the points nearest `radii[k]` along
+/// `k/n` of a turn (a star about the origin), `None` where two coincide or three in a row are
+/// collinear, the profile is refused, or two sides' cones share an edge at friction `mu`
+/// ([`cones_share_an_edge`]).
+fn grid_polygon(radii: &[u32], mu: f64) -> Option<Profile> {
+    let n = radii.len();
+    let pts: Vec<[f64; 2]> = radii
+        .iter()
+        .enumerate()
+        .map(|(k, &r)| {
+            let a = std::f64::consts::TAU * k as f64 / n as f64;
+            let r = f64::from(r);
+            [(r * a.cos()).round(), (r * a.sin()).round()]
+        })
+        .collect();
+    let cross = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
+        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    };
+    if (0..n).any(|k| cross(pts[k], pts[(k + 1) % n], pts[(k + 2) % n]) == 0.0)
+        || cones_share_an_edge(&pts, mu)
+    {
+        return None;
+    }
+    let sides = (0..n)
+        .map(|k| curve::Segment::line(pts[k], pts[(k + 1) % n]).ok())
+        .collect::<Option<Vec<_>>>()?;
+    Profile::new(sides, None).ok()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(16)))]
+
+    /// Polygons on the integer grid (sides of slopes 0, 1/2, 1, 2, …, often parallel) at
+    /// frictions as typed, which put cone edges exactly along sides and chords (slope 1/2 at
+    /// μ = 0.5), or any from 0.05 to 2 (not where two sides' cones share an edge).
+    #[test]
+    fn grid_polygons_match_the_dense_check(
+        radii in prop::collection::vec(2u32..=5, 3..=8),
+        mu in prop_oneof![
+            prop::sample::select(vec![0.1, 0.2, 0.25, 0.3, 0.5, 0.75, 1.5, 2.0]),
+            0.05..2.0f64,
+        ],
+    ) {
+        let Some(p) = grid_polygon(&radii, mu) else { return Ok(()) };
         check(&p, mu)?;
     }
 }

@@ -214,7 +214,7 @@ pub(crate) fn regions(
             shared.add(Doubt::GraspBoundaryUnresolved);
         }
     }
-    glue(model, loops, lines, points, &shared)
+    glue(model, loops, lines, points, chord, &shared)
 }
 
 /// Joins a cell's open pieces into loops.
@@ -462,6 +462,7 @@ fn glue(
     loops: Vec<Loop>,
     lines: &[CornerLine],
     points: Vec<[f64; 2]>,
+    chord: f64,
     shared: &Doubts,
 ) -> Vec<RawRegion> {
     // The points where the contacts meet: a joint with itself (on the diagonal), and the
@@ -482,10 +483,25 @@ fn glue(
         let (lo, hi) = bounds(&l.pts);
         (hi[0] - lo[0]).max(hi[1] - lo[1]) <= DEBRIS_ULPS * f64::EPSILON * n.max(1.0)
     };
-    let (outer, holes): (Vec<Loop>, Vec<Loop>) = loops
+    let (mut outer, holes): (Vec<Loop>, Vec<Loop>) = loops
         .into_iter()
         .filter(|l| !crumb(l) && !debris(l))
         .partition(|l| signed_area(&l.pts) >= 0.0);
+    // A hole lies in a part of its cell. A clockwise loop no part holds that is thinner than
+    // the polylines resolve (its area within a chord of its length) is a sliver of the set
+    // whose two sides the polylines drew on one line, the sign of its area rounding's (the
+    // pinch grasps of a corner just sharper than twice the friction angle): a part.
+    let thin = |l: &Loop| {
+        let length: f64 = l.pts.windows(2).map(|w| dist(w[0], w[1])).sum();
+        signed_area(&l.pts).abs() <= chord * length
+    };
+    let (slivers, holes): (Vec<Loop>, Vec<Loop>) = holes
+        .into_iter()
+        .partition(|h| thin(h) && !outer.iter().any(|o| inside(&o.pts, h.pts[0])));
+    for mut sliver in slivers {
+        sliver.pts.reverse();
+        outer.push(sliver);
+    }
     let mut nodes: Vec<Node> = (0..outer.len()).map(Node::Part).collect();
     for line in lines {
         for &piece in &line.pieces {

@@ -392,3 +392,27 @@ proptest! {
         check(&p, mu)?;
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(16)))]
+
+    /// Closed chains of 3 to 6 cubic Béziers with their joints at round radii (symmetric
+    /// shapes: a regular chain's pairs are exact mirror images), smooth or corners, at
+    /// frictions as typed or any from 0.05 to 2. (A corner just sharper than twice the
+    /// friction angle, as [1, 0.8, 0.8] at μ = 0.5, has pinch grasps in a wedge thinner than
+    /// the chord tolerance.)
+    #[test]
+    fn round_bezier_chains_match_the_dense_check(
+        radii in prop::collection::vec(prop::sample::select(vec![0.6, 0.8, 1.0]), 3..=6),
+        smooth in prop::collection::vec(any::<bool>(), 6),
+        mu in prop_oneof![
+            prop::sample::select(vec![0.1, 0.2, 0.25, 0.3, 0.5, 0.75, 1.5, 2.0]),
+            0.05..2.0f64,
+        ],
+    ) {
+        let n = radii.len();
+        let flat = [(0.0, 0.0); 6];
+        let Some(p) = bezier_chain_profile(&radii, &flat[..n], &smooth[..n], 0, false) else { return Ok(()) };
+        check(&p, mu)?;
+    }
+}

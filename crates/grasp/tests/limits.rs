@@ -92,10 +92,12 @@ proptest! {
                 .iter()
                 .filter(|p| common::region_holds(r, domain, [p.s, p.t]))
                 .collect();
-            // (Pairs closer than the reach share a region: joined in it by force closure.)
+            // (Pairs closer than the reach share a region: joined in it by force closure,
+            // straight across or along a curved band, whose edge the region's outline is.)
             for p in inside.iter().skip(1) {
+                let (from, to) = ([inside[0].s, inside[0].t], [p.s, p.t]);
                 prop_assert!(
-                    joined(&oracle, [inside[0].s, inside[0].t], [p.s, p.t]),
+                    joined(&oracle, from, to) || joined_along_outline(&oracle, r, from, to),
                     "region {} holds the pairs ({}, {}) and ({}, {}), not joined by force \
                      closure",
                     k, inside[0].s, inside[0].t, p.s, p.t
@@ -182,6 +184,41 @@ fn joined(oracle: &Oracle<'_>, from: [f64; 2], to: [f64; 2]) -> bool {
         let x = i as f64 / PATH_SAMPLES as f64;
         let p = [0, 1].map(|c| from[c] + x * (to[c] - from[c]));
         oracle.slip_angle(p[0], p[1]) <= oracle.alpha
+    })
+}
+
+/// An outline's vertex is a pair of the region's edge within its chord tolerance: its slip
+/// angle within this share of α of the edge's α (the chord tolerance, 1e-6 of the square,
+/// moves an angle by far less than 5 % of α = 1e-3 rad).
+const OUTLINE_SLACK: f64 = 0.05;
+
+/// Whether the region's outline runs from the vertex nearest `from` to the one nearest `to`,
+/// one way round or the other, through pairs force closure (to [`OUTLINE_SLACK`]): the two
+/// pairs are joined along the edge of the band between them.
+fn joined_along_outline(
+    oracle: &Oracle<'_>,
+    region: &grasp::GraspRegion,
+    from: [f64; 2],
+    to: [f64; 2],
+) -> bool {
+    let domain = oracle.domain();
+    let (from, to) = (on_torus(domain, from), on_torus(domain, to));
+    let (parts, _) = outlines(region);
+    let nearest = |line: &[[f64; 2]], p: [f64; 2]| {
+        (0..line.len())
+            .min_by(|&i, &j| {
+                let d = |k: usize| (line[k][0] - p[0]).hypot(line[k][1] - p[1]);
+                d(i).total_cmp(&d(j))
+            })
+            .unwrap_or(0)
+    };
+    let holds = |q: [f64; 2]| oracle.slip_angle(q[0], q[1]) <= (1.0 + OUTLINE_SLACK) * oracle.alpha;
+    parts.iter().any(|line| {
+        let n = line.len();
+        let (a, b) = (nearest(line, from), nearest(line, to));
+        let forward = (0..=(b + n - a) % n).all(|k| holds(line[(a + k) % n]));
+        let backward = (0..=(a + n - b) % n).all(|k| holds(line[(b + k) % n]));
+        n > 0 && (forward || backward)
     })
 }
 

@@ -365,3 +365,40 @@ fn regions_match_the_dense_check_on_the_benchmark_outlines() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(12)))]
+
+    /// Circles and ellipses as drawn (axes in halves, centres on the integer grid) at
+    /// frictions as typed or any: their axis pairs sit on the knots of the rational forms,
+    /// and typed frictions meet round curvature ratios.
+    #[test]
+    fn round_conics_match_the_dense_check(
+        a in (2u32..=8).prop_map(|k| 0.5 * f64::from(k)),
+        halves in 1u32..=8,
+        center in ((-2i32..=2), (-2i32..=2)).prop_map(|(x, y)| [f64::from(x), f64::from(y)]),
+        circle in any::<bool>(),
+        mu in prop_oneof![
+            prop::sample::select(vec![0.1, 0.2, 0.25, 0.3, 0.5, 0.75, 1.0]),
+            0.05..1.0f64,
+        ],
+    ) {
+        let s = if circle {
+            Shape::Circle(Circle::new(a, center).unwrap())
+        } else {
+            // (b in halves up to 0.8 a: a rounder ellipse is a near circle, tested on its own.)
+            let b = 0.5 * f64::from(halves).min((1.6 * a).floor());
+            Shape::Ellipse(Ellipse::new(a, b, center).unwrap())
+        };
+        let curve = TestCurve::Shape(s);
+        let opts = GraspOptions::friction(mu);
+        verdict(&curve, &opts)?;
+        // Resolved, too: round numbers are no excuse.
+        let g = grasp::grasps(curve.boundary(), &opts)
+            .map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        prop_assert!(
+            !g.doubts.iter().any(|d| *d == numeric::certificate::Doubt::GraspBoundaryUnresolved),
+            "{:?}: {:?}", curve, g.doubts
+        );
+    }
+}

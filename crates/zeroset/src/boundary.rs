@@ -120,10 +120,9 @@ pub(crate) fn drop_retraced(
     tol: f64,
     map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
 ) -> Vec<BoundaryPiece> {
-    let mapped: Vec<Option<Vec<[f64; 2]>>> = pieces
-        .iter()
-        .map(|p| p.pts.iter().map(|q| map(q[0], q[1])).collect())
-        .collect();
+    let mapped = |p: &BoundaryPiece| -> Option<Vec<[f64; 2]>> {
+        p.pts.iter().map(|q| map(q[0], q[1])).collect()
+    };
     let within = |a: &[[f64; 2]], b: &[[f64; 2]]| {
         a.iter().all(|&q| {
             b.windows(2)
@@ -132,18 +131,16 @@ pub(crate) fn drop_retraced(
                 <= tol
         })
     };
+    // (Mapped only for the few pieces of one function with the same ends.)
     let retraces = |i: usize, j: usize| {
         let (p, q) = (&pieces[i], &pieces[j]);
-        let (Some(a), Some(b)) = (&mapped[i], &mapped[j]) else {
+        if p.function != q.function || p.ends.is_none() || p.ends != q.ends {
+            return false;
+        }
+        let (Some(a), Some(b)) = (mapped(p), mapped(q)) else {
             return false;
         };
-        p.function == q.function
-            && p.ends.is_some()
-            && p.ends == q.ends
-            && a.len() >= 2
-            && b.len() >= 2
-            && within(a, b)
-            && within(b, a)
+        a.len() >= 2 && b.len() >= 2 && within(&a, &b) && within(&b, &a)
     };
     let mut dropped = vec![false; pieces.len()];
     for i in 0..pieces.len() {

@@ -210,13 +210,20 @@ const PROOF_ROUNDS: usize = 3;
 const CONTACT_CENTERS: usize = 4;
 
 /// The antipodal pairs and the middles of the families, in the profile's parameter.
+///
+/// A profile's pairs come in its own parameter already (the exact forms', as `antipodal`
+/// answers a profile); a curve's come in the curve's own parameter, its document's (an
+/// analytic shape's angle), which the profile of its one segment maps to its form's.
 fn antipodal_seeds(boundary: Boundary<'_>, profile: &Profile) -> Result<Vec<[f64; 2]>> {
     let found = antipodal::antipodal(boundary, &antipodal::Options::default())?;
-    let (da, db) = profile.document_domain();
+    let (internal, (da, db)): (&dyn Fn(f64) -> f64, (f64, f64)) = match boundary {
+        Boundary::Profile(p) => (&|u| u, p.domain()),
+        Boundary::Curve(_) => (&|u| profile.internal_param(u), profile.document_domain()),
+    };
     let mut seeds: Vec<[f64; 2]> = found
         .pairs
         .iter()
-        .map(|p| [profile.internal_param(p.s), profile.internal_param(p.t)])
+        .map(|p| [internal(p.s), internal(p.t)])
         .collect();
     let period = db - da;
     for f in &found.families {
@@ -224,7 +231,7 @@ fn antipodal_seeds(boundary: Boundary<'_>, profile: &Profile) -> Result<Vec<[f64
         // where its pairs are matched so, or across the seam).
         let mid = |[a, b]: [f64; 2]| {
             let step = (b - a + 0.5 * period).rem_euclid(period) - 0.5 * period;
-            profile.internal_param(da + (a + 0.5 * step - da).rem_euclid(period))
+            internal(da + (a + 0.5 * step - da).rem_euclid(period))
         };
         seeds.push([mid(f.s), mid(f.t)]);
     }

@@ -154,7 +154,13 @@ pub(crate) fn assemble(pieces: &Pieces, dom: Rect, cells: &[Patch]) -> Assembled
         }
         twins(x, y)
     };
-    let taken = pair_closest(&pending, &at_corner, &mut link);
+    // (Two ends `twins` accepts lie within its largest tolerance of each other in `t`.)
+    let key = |id: usize| end_of(id).p[0] / ext[0];
+    let reach = |ids: &[usize]| {
+        let unc = ids.iter().map(|&id| end_of(id).unc).fold(0.0, f64::max);
+        MATCH_TOL.max(ROOT_SLACK * 2.0 * unc / unit)
+    };
+    let taken = pair_closest(&pending, &at_corner, &key, reach(&pending), &mut link);
     let mut rest: Vec<usize> = Vec::new();
     for (&id, _) in pending.iter().zip(taken).filter(|(_, t)| !t) {
         let p = end_of(id).p;
@@ -176,7 +182,7 @@ pub(crate) fn assemble(pieces: &Pieces, dom: Rect, cells: &[Patch]) -> Assembled
     // Ends left over, away from any cluster, that are as close as two computations of one
     // root can be are joined: the zero set passed (within rounding) by a patch corner, and
     // the patches on either side saw it on different edges of the corner.
-    pair_closest(&rest, &twins, &mut link);
+    pair_closest(&rest, &twins, &key, reach(&rest), &mut link);
     // Inside the neighbourhood of a cluster (its hull grown by its own size) rounding decides
     // nothing: F is within a few rounding bounds of zero there, and arcs traced through gaps
     // between its leaves are artefacts — fragments that leave the cluster and come back, or

@@ -72,7 +72,8 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     let seeds = antipodal_seeds(boundary, profile)?;
     let proof = Positivity::new(&model, &cells);
     // (A cell's unresolved point is said even where no region came of it.)
-    if traced.iter().any(|(_, t)| t.unresolved) {
+    let cell_unresolved = traced.iter().any(|(_, t)| t.unresolved);
+    if cell_unresolved {
         doubts.add(Doubt::GraspBoundaryUnresolved);
     }
     // Every antipodal pair within the width limits is force closure at any friction: one
@@ -86,7 +87,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     }
     let unresolved = lines_unproven
         || lost
-        || traced.iter().any(|(_, t)| t.unresolved)
+        || cell_unresolved
         || raw.iter().any(|r| {
             r.doubts
                 .iter()

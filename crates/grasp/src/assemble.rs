@@ -330,14 +330,26 @@ impl Walk<'_> {
         let grazing = |j: usize, to: f64| {
             j == i && matches!(self.ends(j)[0], PieceEnd::Crossing(_)) && ahead(to) <= SAME_PLACE
         };
+        // A piece no longer than rounding whose own start lies just behind its end (a zero set
+        // through a corner of the cell, cutting it within rounding) closes the other way
+        // round: the region on its left is the cell's bulk, not the nothing between its ends.
+        let (lo, hi) = bounds(&self.open[i].pts);
+        let speck = (hi[0] - lo[0]).max(hi[1] - lo[1]) <= SAME_POINT;
+        let around = |j: usize, to: f64| {
+            if j == i && speck && to < from {
+                to - from + m
+            } else {
+                ahead(to)
+            }
+        };
         let (j, to) = (0..self.open.len())
             .filter(|&j| available(j))
             .filter(|&j| self.border.off(self.first(j)) <= SAME_POINT)
             .filter(|&j| !self.reached_by_crossing(j, available))
             .map(|j| (j, self.border.place(self.first(j))))
             .filter(|&(j, to)| !grazing(j, to))
-            .min_by(|x, y| ahead(x.1).total_cmp(&ahead(y.1)))?;
-        let to = if ahead(to) == 0.0 { from } else { to };
+            .min_by(|x, y| around(x.0, x.1).total_cmp(&around(y.0, y.1)))?;
+        let to = if around(j, to) == 0.0 { from } else { to };
         Some((j, self.border.walk(from, to, stretches)))
     }
 

@@ -50,8 +50,9 @@ fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
     prop_assert!(
         !g.doubts
             .iter()
-            .any(|d| *d == Doubt::GraspBoundaryUnresolved),
-        "a boundary left unresolved"
+            .any(|d| *d == Doubt::GraspBoundaryUnresolved || *d == Doubt::GraspPairLost),
+        "a boundary left unresolved: {:?}",
+        g.doubts
     );
     let (a, b) = p.document_domain();
     let n = p.segments().len() as f64;

@@ -10,7 +10,7 @@
 
 mod common;
 
-use common::{dense_check, dense_check_of, Checks, Documented, Seen, TestCurve};
+use common::{check_result, dense_check, dense_check_of, Checks, Documented, Seen, TestCurve};
 use curve::shapes::{Circle, Convexities, Ellipse, EllipticLemniscate, Limacon, Shape};
 use curve::SplineCurve;
 use grasp::GraspOptions;
@@ -392,10 +392,12 @@ proptest! {
         };
         let curve = TestCurve::Shape(s);
         let opts = GraspOptions::friction(mu);
-        verdict(&curve, &opts)?;
-        // Resolved, too: round numbers are no excuse.
         let g = grasp::grasps(curve.boundary(), &opts)
             .map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        prop_assert!(g.complete, "{:?}", curve);
+        check_result(curve.param(), &opts, &g)
+            .map_err(|e| TestCaseError::fail(format!("{curve:?}: {e}")))?;
+        // Resolved, too: round numbers are no excuse.
         prop_assert!(
             !g.doubts.iter().any(|d| *d == numeric::certificate::Doubt::GraspBoundaryUnresolved),
             "{:?}: {:?}", curve, g.doubts

@@ -5,7 +5,7 @@ use crate::assemble::RawRegion;
 use crate::model::Model;
 use crate::polyline::bounds;
 use crate::quality::slip_angle;
-use crate::region_set::{deepest, held_inside, holds, in_triangle};
+use crate::region_set::{deepest, depth, held_inside, holds, in_triangle};
 
 /// Samples across each part's box when no antipodal pair lies in the region.
 const SAMPLES_ACROSS: usize = 16;
@@ -24,25 +24,26 @@ pub(crate) const ANTIPODAL_ANGLE: f64 = 1e-9;
 
 /// The most robust pair of `region`, and whether it is proven so (an antipodal pair of the
 /// region: its slip angle is zero). `seeds`: the antipodal pairs and the middles of the
-/// families, in the profile's parameter.
+/// families, in the profile's parameter; `alpha`: the friction angle.
 pub(crate) fn most_robust(
     model: &Model<'_>,
     region: &RawRegion,
     seeds: &[[f64; 2]],
+    alpha: f64,
     inside_by: f64,
 ) -> ([f64; 2], bool) {
     let n = model.n();
     let angle = |p: [f64; 2]| slip_angle(model, p[0], p[1]);
-    let mut best: Option<([f64; 2], f64, bool)> = None;
-    let consider = |p: [f64; 2], in_part: bool, best: &mut Option<([f64; 2], f64, bool)>| {
+    let mut best: Option<([f64; 2], f64, Start)> = None;
+    let consider = |p: [f64; 2], start: Start, best: &mut Option<([f64; 2], f64, Start)>| {
         let a = angle(p);
         if best.is_none_or(|(_, b, _)| a < b) {
-            *best = Some((p, a, in_part));
+            *best = Some((p, a, start));
         }
     };
     for &p in seeds {
         if holds(region, n, p[0], p[1]) {
-            consider(p, false, &mut best);
+            consider(p, Start::Exact, &mut best);
         }
     }
     if let Some((p, a, _)) = best {
@@ -58,7 +59,7 @@ pub(crate) fn most_robust(
                     |k: usize, d: usize| (k as f64 + 0.5) / SAMPLES_ACROSS as f64 * (hi[d] - lo[d]);
                 let p = [lo[0] + across(i, 0), lo[1] + across(j, 1)];
                 if holds(region, n, p[0], p[1]) {
-                    consider(p, true, &mut best);
+                    consider(p, Start::Inside, &mut best);
                 }
             }
         }
@@ -69,43 +70,72 @@ pub(crate) fn most_robust(
         // sliver's pairs all need about the same friction; its edges are only within the
         // chord tolerance of the exact boundary).
         if let Some(&(p, _)) = deepest(region, 1).first() {
-            consider(p, true, &mut best);
+            consider(p, Start::Inside, &mut best);
         }
     }
     if best.is_none() {
-        // Thinner still: the vertices.
-        for &p in region.parts.iter().flatten() {
-            consider(p, true, &mut best);
+        // Thinner still, a sliver within rounding of its edges: the search starts on them.
+        for part in &region.parts {
+            for w in part.windows(2) {
+                for k in 0..=SAMPLES_ALONG {
+                    consider(
+                        lerp(w[0], w[1], k as f64 / SAMPLES_ALONG as f64),
+                        Start::Inside,
+                        &mut best,
+                    );
+                }
+            }
         }
     }
     for l in &region.lines {
         for k in 0..=SAMPLES_ALONG {
-            let x = k as f64 / SAMPLES_ALONG as f64;
             consider(
-                [
-                    l[0][0] + x * (l[1][0] - l[0][0]),
-                    l[0][1] + x * (l[1][1] - l[0][1]),
-                ],
-                false,
+                lerp(l[0], l[1], k as f64 / SAMPLES_ALONG as f64),
+                Start::Exact,
                 &mut best,
             );
         }
     }
     for &p in &region.points {
-        consider(p, false, &mut best);
+        consider(p, Start::Exact, &mut best);
     }
-    let Some((mut x, mut ax, in_part)) = best else {
+    let Some((mut x, mut ax, start)) = best else {
         return (region.parts.first().map_or([0.0; 2], |p| p[0]), false);
     };
-    if in_part {
+    if let Start::Inside = start {
         (x, ax) = descend(model, region, x, inside_by);
+        if ax > alpha {
+            // Not force closure: the region is thinner there than its polylines resolve (a
+            // sliver within rounding of its edges, or one a chord passes outside of where
+            // it bows). Its pairs lie within the chord tolerance of the polylines, not
+            // inside them: the search roams that far round them.
+            (x, ax) = search(model, region, x, &|y| {
+                holds(region, n, y[0], y[1]) || depth(region, y) <= inside_by
+            });
+        }
     }
     (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
 }
 
-/// A compass search for the pair of least slip angle from `start` (a pair of the region), by
-/// steps from a sixteenth of its largest part's box down, staying in the region a chord
-/// (`inside_by`) inside its polylines: the pair found and its slip angle.
+/// Where the search for a region's most robust grasp starts.
+#[derive(Clone, Copy)]
+enum Start {
+    /// A pair known exactly (an antipodal pair, a point on a corner line): no search.
+    Exact,
+    /// A pair inside the region's polylines, or on them where none is inside.
+    Inside,
+}
+
+/// The point a share `x` of the way from `a` to `b`.
+fn lerp(a: [f64; 2], b: [f64; 2], x: f64) -> [f64; 2] {
+    [a[0] + x * (b[0] - a[0]), a[1] + x * (b[1] - a[1])]
+}
+
+/// A compass search for the pair of least slip angle from `start` (a pair of the region),
+/// staying in the region a chord (`inside_by`) inside its polylines: the pair found and its
+/// slip angle. (Where the least friction falls toward the region's edge, as on a width
+/// limit, the best grasp is the pair a chord inside, whichever side of the exact edge its
+/// polyline passes.)
 pub(crate) fn descend(
     model: &Model<'_>,
     region: &RawRegion,
@@ -113,6 +143,20 @@ pub(crate) fn descend(
     inside_by: f64,
 ) -> ([f64; 2], f64) {
     let n = model.n();
+    search(model, region, start, &|y| {
+        held_inside(region, n, y, inside_by)
+    })
+}
+
+/// A compass search for the pair of least slip angle from `start`, by steps from a
+/// sixteenth of the region's largest part's box down, moving only to pairs `allowed`: the
+/// pair found and its slip angle.
+fn search(
+    model: &Model<'_>,
+    region: &RawRegion,
+    start: [f64; 2],
+    allowed: &dyn Fn([f64; 2]) -> bool,
+) -> ([f64; 2], f64) {
     let angle = |p: [f64; 2]| slip_angle(model, p[0], p[1]);
     let (mut x, mut ax) = (start, angle(start));
     let mut step = region
@@ -141,10 +185,7 @@ pub(crate) fn descend(
         ] {
             let y = [x[0] + ds * step, x[1] + dt * step];
             let ay = angle(y);
-            // (Staying in the region, a chord inside its polylines: where the least friction
-            // falls toward the region's edge, as on a width limit, the best grasp is the pair
-            // a chord inside, whichever side of the exact edge its polyline passes.)
-            if ay < ax && held_inside(region, n, y, inside_by) {
+            if ay < ax && allowed(y) {
                 (x, ax) = (y, ay);
                 moved = true;
                 break;

@@ -95,7 +95,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         });
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
-        let (mut center, mut proven) = most_robust(&model, r, &seeds, chord);
+        let (mut center, mut proven) = most_robust(&model, r, &seeds, alpha, chord);
         // A best grasp found by search is proven the most robust (to a share of its friction)
         // where the set at a friction just below holds no pair of the region; a pair of it
         // that does starts the search again.

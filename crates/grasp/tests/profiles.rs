@@ -163,6 +163,22 @@ fn polygons_at_high_friction_match_the_dense_check() {
     }
 }
 
+/// A curved triangle whose corner at `s = 0` is sharper than twice the friction angle by
+/// rounding only: its pinch grasps are a sliver within rounding of its traced edges, which
+/// bows off the chord between them. Its best grasp is force closure (it was a pair on that
+/// chord, needing friction 1e-4 above μ).
+#[test]
+fn a_sliver_s_best_grasp_is_force_closure() {
+    let radii = [0.6610079091478593, 0.6709095683454489, 0.9761862535469958];
+    let wobble = [
+        (-0.1048536317505381, -0.024467017214925127),
+        (0.0, 0.0),
+        (-0.12276907646779311, 0.17303808593117304),
+    ];
+    let p = bezier_chain_profile(&radii, &wobble, &[false; 3], 0, false).unwrap();
+    check(&p, 0.5323860168239313).unwrap();
+}
+
 /// A right angle at μ = 1 exactly: its pinch grasps are the line of mirror pairs of its two
 /// sides, a set with no inside. The result says its boundary is unresolved and certifies no
 /// region (it once traced that line as a region with area, and certified it).

@@ -260,8 +260,17 @@ impl BSpline {
         self.n_ctrl() == p + 1 && k[0] == k[p] && k[p + 1] == k[2 * p + 1]
     }
 
+    /// Whether `other` lies in this function's spline space, clamped: harmonising them
+    /// changes neither.
+    fn same_space(&self, other: &BSpline) -> bool {
+        self.degree() == other.degree() && self.knots() == other.knots() && self.is_clamped()
+    }
+
     /// Brings two functions into one spline space (common degree, merged knot vector).
     pub fn harmonize(&self, other: &BSpline) -> Result<(BSpline, BSpline)> {
+        if self.same_space(other) {
+            return Ok((self.clone(), other.clone()));
+        }
         let (lo, hi) = check_same_domain(self, other)?;
         if self.is_clamped_bezier() && other.is_clamped_bezier() && other.domain() == (lo, hi) {
             // One span each, on the same interval: the common space is the higher degree's.
@@ -330,16 +339,25 @@ impl BSpline {
         let Some((first, rest)) = parts.split_first() else {
             return Err(Error::ZeroDimension);
         };
-        // Bring every part into one common space.
+        // Bring every part into one common space (where they do not share one already).
+        let shared = rest.iter().all(|g| first.same_space(g));
         let mut acc: BSpline = (*first).clone();
-        for g in rest {
-            acc = acc.harmonize(g)?.0;
+        let mut spaced: Vec<BSpline> = Vec::new();
+        if !shared {
+            for g in rest {
+                acc = acc.harmonize(g)?.0;
+            }
+            spaced = parts
+                .iter()
+                .map(|g| g.harmonize(&acc).map(|(g, _)| g))
+                .collect::<Result<_>>()?;
         }
-        let spaced: Vec<BSpline> = parts
-            .iter()
-            .map(|g| g.harmonize(&acc).map(|(g, _)| g))
-            .collect::<Result<_>>()?;
-        let dim: usize = spaced.iter().map(BSpline::dim).sum();
+        let spaced: Vec<&BSpline> = if shared {
+            parts.to_vec()
+        } else {
+            spaced.iter().collect()
+        };
+        let dim: usize = spaced.iter().map(|g| g.dim()).sum();
         let n = acc.n_ctrl();
         let mut coefs = Vec::with_capacity(n * dim);
         for i in 0..n {

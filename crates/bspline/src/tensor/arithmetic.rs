@@ -19,6 +19,17 @@ impl TensorBSpline {
 
     /// `s·self + u·other` in the common spline space (both on the same domain).
     pub fn lincomb(&self, s: f64, other: &Self, u: f64) -> Result<Self> {
+        let same_space = self.deg_t == other.deg_t
+            && self.deg_r == other.deg_r
+            && self.knots_t == other.knots_t
+            && self.knots_r == other.knots_r;
+        if same_space {
+            let mut out = self.clone();
+            for (c, d) in out.coefs.iter_mut().zip(&other.coefs) {
+                *c = s * *c + u * d;
+            }
+            return Ok(out);
+        }
         // Common r space first (views of different dimension harmonise fine), then common t.
         let (ar, br) = self.r_view().harmonize(&other.r_view())?;
         let a = Self::from_r_view(ar, self.deg_t, self.knots_t.clone());

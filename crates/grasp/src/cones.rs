@@ -21,21 +21,42 @@ use bspline::Bezier;
 use bspline::{BSpline, Rational};
 
 /// One exact curve form's univariate parts.
+///
+/// With the cone edge's normal `V = μ o q⊥ ± q` at a contact on this form and `P`, `w` the
+/// other contact's, the cone function `⟨V w, P_other⟩ − ⟨V, P⟩ w_other` is `Σ_k a_k ⊗ b_k`
+/// over the factors `a = [V_x w, V_y w, −⟨V, P⟩]` and `b = [x, y, w]` of the other: `μ` times
+/// its normal part (`V = o q⊥`) plus or minus its tangent part (`V = q`). Those parts do not
+/// depend on the friction and are kept here, each set of factors in one spline space (so the
+/// sums of outer products need no harmonising per pair of forms).
 pub(crate) struct Form {
-    /// Homogeneous coordinates (Euclidean for a polynomial curve).
-    x: BSpline,
-    y: BSpline,
-    /// The weight (the constant 1 for a polynomial curve).
-    w: BSpline,
-    /// The hodograph's numerator `q = P'w − Pw'` (`C'` itself for a polynomial curve).
-    qx: BSpline,
-    qy: BSpline,
+    /// Homogeneous coordinates and the weight (the constant 1 for a polynomial curve):
+    /// `[x, y, w]`.
+    point: [BSpline; 3],
+    /// The factors of the normal part, `[o q⊥_x w, o q⊥_y w, −⟨o q⊥, P⟩]`, with the hodograph's
+    /// numerator `q = P'w − Pw'` (`C'` itself for a polynomial curve).
+    normal: [BSpline; 3],
+    /// The factors of the tangent part, `[q_x w, q_y w, −⟨q, P⟩]`.
+    tangent: [BSpline; 3],
     /// `q` as Bézier pieces (dimension 2), for the cone test near the diagonal.
     q_pieces: Vec<Bezier>,
     /// The curve itself, for evaluation.
     curve: Rational,
     /// `+1` counterclockwise, `−1` clockwise: `N = orientation · T⊥`.
     orientation: f64,
+}
+
+/// `parts` in one spline space (common degree, merged knots).
+fn in_one_space(parts: [BSpline; 3]) -> Result<[BSpline; 3]> {
+    let mut common = parts[0].clone();
+    for g in &parts[1..] {
+        common = common.harmonize(g)?.0;
+    }
+    let [a, b, c] = parts;
+    Ok([
+        a.harmonize(&common)?.0,
+        b.harmonize(&common)?.0,
+        c.harmonize(&common)?.0,
+    ])
 }
 
 impl Form {
@@ -58,12 +79,19 @@ impl Form {
             (x, y, one, qx, qy)
         };
         let q_pieces = BSpline::stack(&[&qx, &qy])?.bezier_pieces();
+        let o = orientation;
+        // o q⊥ = o (−q_y, q_x).
+        let (nx, ny) = (qy.scale(-o), qx.scale(o));
+        let factors = |vx: &BSpline, vy: &BSpline| -> Result<[BSpline; 3]> {
+            let dot = vx.mul(&x)?.add(&vy.mul(&y)?)?;
+            in_one_space([vx.mul(&w)?, vy.mul(&w)?, dot.scale(-1.0)])
+        };
+        let normal = factors(&nx, &ny)?;
+        let tangent = factors(&qx, &qy)?;
         Ok(Self {
-            x,
-            y,
-            w,
-            qx,
-            qy,
+            point: in_one_space([x, y, w])?,
+            normal,
+            tangent,
             q_pieces,
             curve: curve.clone(),
             orientation,
@@ -73,14 +101,33 @@ impl Form {
     /// The same form on `[lo, hi]` (inside the domain): the functions of a box of pairs
     /// are built from their contacts' stretches, not cut out of the whole cell's.
     pub(crate) fn restrict(&self, lo: f64, hi: f64) -> Result<Self> {
-        let (qx, qy) = (self.qx.restrict(lo, hi)?, self.qy.restrict(lo, hi)?);
-        let q_pieces = BSpline::stack(&[&qx, &qy])?.bezier_pieces();
+        // (Splines of one space restricted alike stay in one space.)
+        let cut = |fs: &[BSpline; 3]| -> Result<[BSpline; 3]> {
+            Ok([
+                fs[0].restrict(lo, hi)?,
+                fs[1].restrict(lo, hi)?,
+                fs[2].restrict(lo, hi)?,
+            ])
+        };
+        let q_pieces = self
+            .q_pieces
+            .iter()
+            .filter(|p| p.b > lo && p.a < hi)
+            .map(|p| {
+                let mut p = p.clone();
+                if lo > p.a {
+                    p = p.split(lo).1;
+                }
+                if hi < p.b {
+                    p = p.split(hi).0;
+                }
+                p
+            })
+            .collect();
         Ok(Self {
-            x: self.x.restrict(lo, hi)?,
-            y: self.y.restrict(lo, hi)?,
-            w: self.w.restrict(lo, hi)?,
-            qx,
-            qy,
+            point: cut(&self.point)?,
+            normal: cut(&self.normal)?,
+            tangent: cut(&self.tangent)?,
             q_pieces,
             curve: self.curve.restrict(lo, hi)?,
             orientation: self.orientation,
@@ -101,17 +148,7 @@ impl Form {
     }
 
     /// The normal of the cone's edge toward `+T` (`ahead`: `μN − T`) or toward `−T`
-    /// (`μN + T`), as the two univariate splines `μ o q⊥ ∓ q`.
-    fn edge_normal(&self, mu: f64, ahead: bool) -> Result<(BSpline, BSpline)> {
-        let (o, sign) = (self.orientation, if ahead { -1.0 } else { 1.0 });
-        // q⊥ = (−qy, qx).
-        Ok((
-            self.qy.lincomb(-mu * o, &self.qx, sign)?,
-            self.qx.lincomb(mu * o, &self.qy, sign)?,
-        ))
-    }
-
-    /// The edge normal of [`Form::edge_normal`] at one hodograph point `q`.
+    /// (`μN + T`) at one hodograph point `q`.
     pub(crate) fn edge_normal_at(&self, q: [f64; 2], mu: f64, ahead: bool) -> [f64; 2] {
         let (o, sign) = (self.orientation, if ahead { -1.0 } else { 1.0 });
         [-mu * o * q[1] + sign * q[0], mu * o * q[0] + sign * q[1]]
@@ -136,6 +173,13 @@ impl Form {
     }
 }
 
+/// `Σ_k c_k f_k` for factors in one spline space.
+fn combine(c: [f64; 3], fs: &[BSpline; 3]) -> Result<BSpline> {
+    Ok(fs[0]
+        .lincomb(c[0], &fs[1], c[1])?
+        .lincomb(1.0, &fs[2], c[2])?)
+}
+
 /// The functions of one variable for a contact at the fixed point `corner` and `t` on `b`
 /// (each times `w(t) > 0`): the cone conditions at `t` (`⟨μN ∓ T, corner − C(t)⟩`), then the
 /// width conditions, then `×(edge, C(t) − corner)` for each edge normal of the corner's
@@ -147,25 +191,38 @@ pub(crate) fn corner_functions(
     mu: f64,
     widths: [Option<f64>; 2],
 ) -> Result<(Vec<BSpline>, [BSpline; 2])> {
-    // e = corner w(t) − P(t), that is w (corner − C).
-    let ex = b.w.lincomb(corner[0], &b.x, -1.0)?;
-    let ey = b.w.lincomb(corner[1], &b.y, -1.0)?;
+    // With e = corner w(t) − P(t), that is w (corner − C): ⟨V, e⟩ = Σ_k [corner, 1]_k a_k.
+    let at = [corner[0], corner[1], 1.0];
+    let (normal, tangent) = (combine(at, &b.normal)?, combine(at, &b.tangent)?);
     let mut holds = Vec::with_capacity(4);
     for ahead in [false, true] {
-        let (wx, wy) = b.edge_normal(mu, ahead)?;
-        holds.push(wx.mul(&ex)?.add(&wy.mul(&ey)?)?);
+        holds.push(normal.lincomb(mu, &tangent, if ahead { -1.0 } else { 1.0 })?);
     }
-    let sq = ex.mul(&ex)?.add(&ey.mul(&ey)?)?;
-    let w2 = b.w.mul(&b.w)?;
-    if let Some(least) = widths[0] {
-        holds.push(sq.lincomb(1.0, &w2, -least * least)?);
-    }
-    if let Some(most) = widths[1] {
-        holds.push(w2.lincomb(most * most, &sq, -1.0)?);
+    let [x, y, w] = &b.point;
+    let ex = w.lincomb(corner[0], x, -1.0)?;
+    let ey = w.lincomb(corner[1], y, -1.0)?;
+    if widths.iter().any(Option::is_some) {
+        let sq = ex.mul(&ex)?.add(&ey.mul(&ey)?)?;
+        let w2 = w.mul(w)?;
+        if let Some(least) = widths[0] {
+            holds.push(sq.lincomb(1.0, &w2, -least * least)?);
+        }
+        if let Some(most) = widths[1] {
+            holds.push(w2.lincomb(most * most, &sq, -1.0)?);
+        }
     }
     // ×(edge, C − corner) w = −×(edge, e) = ey·edge_x... : edge × (−e).
     let side = |edge: [f64; 2]| ey.lincomb(-edge[0], &ex, edge[1]);
     Ok((holds, [side(edges[0])?, side(edges[1])?]))
+}
+
+/// `Σ_k f_k ⊗ g_k`.
+fn outer_sum(fs: &[BSpline; 3], gs: &[BSpline; 3]) -> Result<TensorBSpline> {
+    Ok(TensorBSpline::sum_of_outer(&[
+        (fs[0].clone(), gs[0].clone()),
+        (fs[1].clone(), gs[1].clone()),
+        (fs[2].clone(), gs[2].clone()),
+    ])?)
 }
 
 /// The functions of force closure for contacts at `s` on `a` and `t` on `b`, in this order:
@@ -179,35 +236,29 @@ pub(crate) fn functions(
     widths: [Option<f64>; 2],
 ) -> Result<Vec<TensorBSpline>> {
     let mut out = Vec::with_capacity(6);
-    for ahead in [false, true] {
-        // ⟨V(s), e⟩ = (Vx wA)(s) PBx(t) + (Vy wA)(s) PBy(t) − ⟨V, PA⟩(s) wB(t).
-        let (vx, vy) = a.edge_normal(mu, ahead)?;
-        let dot = vx.mul(&a.x)?.add(&vy.mul(&a.y)?)?;
-        let f = TensorBSpline::sum_of_outer(&[
-            (vx.mul(&a.w)?, b.x.clone()),
-            (vy.mul(&a.w)?, b.y.clone()),
-            (dot.scale(-1.0), b.w.clone()),
-        ])?;
-        out.push(f);
-    }
-    for ahead in [false, true] {
-        // ⟨W(t), −e⟩ = PAx(s) (Wx wB)(t) + PAy(s) (Wy wB)(t) − wA(s) ⟨W, PB⟩(t).
-        let (wx, wy) = b.edge_normal(mu, ahead)?;
-        let dot = wx.mul(&b.x)?.add(&wy.mul(&b.y)?)?;
-        let f = TensorBSpline::sum_of_outer(&[
-            (a.x.clone(), wx.mul(&b.w)?),
-            (a.y.clone(), wy.mul(&b.w)?),
-            (a.w.scale(-1.0), dot),
-        ])?;
-        out.push(f);
+    // At s: ⟨V(s), e⟩ with e = P_b(t) w_a(s) − P_a(s) w_b(t). At t: ⟨W(t), −e⟩, the same
+    // sum with the forms' roles exchanged.
+    let at_s = [
+        outer_sum(&a.normal, &b.point)?,
+        outer_sum(&a.tangent, &b.point)?,
+    ];
+    let at_t = [
+        outer_sum(&a.point, &b.normal)?,
+        outer_sum(&a.point, &b.tangent)?,
+    ];
+    for [normal, tangent] in [&at_s, &at_t] {
+        for ahead in [false, true] {
+            out.push(normal.lincomb(mu, tangent, if ahead { -1.0 } else { 1.0 })?);
+        }
     }
     if widths.iter().any(Option::is_some) {
         // |e|² = Σ_c (PBc wA − PAc wB)²; the width w bounds it by w² wA² wB².
-        let (wa2, wb2) = (a.w.mul(&a.w)?, b.w.mul(&b.w)?);
+        let ([ax, ay, aw], [bx, by, bw]) = (&a.point, &b.point);
+        let (wa2, wb2) = (aw.mul(aw)?, bw.mul(bw)?);
         let mut sq = Vec::with_capacity(7);
-        for (pa, pb) in [(&a.x, &b.x), (&a.y, &b.y)] {
+        for (pa, pb) in [(ax, bx), (ay, by)] {
             sq.push((wa2.clone(), pb.mul(pb)?));
-            sq.push((pa.mul(&a.w)?.scale(-2.0), pb.mul(&b.w)?));
+            sq.push((pa.mul(aw)?.scale(-2.0), pb.mul(bw)?));
             sq.push((pa.mul(pa)?, wb2.clone()));
         }
         let [least, most] = widths;

@@ -28,20 +28,48 @@ fn rotate(v: [f64; 2], angle: f64) -> [f64; 2] {
     [c * v[0] - s * v[1], s * v[0] + c * v[1]]
 }
 
+/// A box of pairs `s ≤ t` in the profile's parameter: the corner lines are sought only
+/// where they may meet it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PairBox {
+    /// The interval of `s`.
+    pub(crate) s: [f64; 2],
+    /// The interval of `t`.
+    pub(crate) t: [f64; 2],
+}
+
+impl PairBox {
+    /// Whether a pair of a finger at `u` and the other on `[v0, v1]` may lie in the box, in
+    /// either order.
+    fn meets(&self, u: f64, [v0, v1]: [f64; 2]) -> bool {
+        let within = |x: [f64; 2], lo: f64, hi: f64| x[0] <= hi && lo <= x[1];
+        (within(self.s, u, u) && within(self.t, v0, v1))
+            || (within(self.t, u, u) && within(self.s, v0, v1))
+    }
+}
+
 /// The corner lines of every convex corner of `model`, for friction `mu` (widths in the
-/// frame's units).
+/// frame's units); where `only` is given, just their stretches that may meet it (a corner
+/// whose line cannot is left out).
 pub(crate) fn corner_lines(
     model: &Model<'_>,
     mu: f64,
     widths: [Option<f64>; 2],
+    only: Option<PairBox>,
     doubts: &mut Doubts,
 ) -> Result<Vec<CornerLine>> {
     let alpha = mu.atan();
+    let n = model.n() as f64;
+    let wanted = |u: f64, v: [f64; 2]| only.is_none_or(|b| b.meets(u, v));
     let mut out = Vec::new();
     for joint in &model.joints {
         let Cone::Convex { before, after } = joint.cone else {
             continue;
         };
+        let k = joint.segment as f64;
+        if !wanted(k, [0.0, n]) {
+            continue;
+        }
         let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
         let turn = cross(before, after).signum();
         let span = (before[0] * after[0] + before[1] * after[1])
@@ -53,6 +81,9 @@ pub(crate) fn corner_lines(
         let wide = span + 2.0 * alpha > PI;
         let mut pieces = Vec::new();
         for (j, form) in model.forms.iter().enumerate() {
+            if !wanted(k, [j as f64, (j + 1) as f64]) {
+                continue;
+            }
             let (holds, [side_lo, side_hi]) =
                 corner_functions(form, joint.point, [lo, hi], mu, widths)?;
             let (a, b) = form.domain();
@@ -89,7 +120,6 @@ pub(crate) fn corner_lines(
         }
         // The other finger at another convex corner: its cone holds the limits of both its
         // segments, so the pair is force closure where the angles to both cones are within α.
-        let k = joint.segment as f64;
         for other in &model.joints {
             let u = other.segment as f64;
             if other.segment != joint.segment

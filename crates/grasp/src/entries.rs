@@ -59,7 +59,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         doubts.add(Doubt::SearchLimit);
     }
     let mut line_doubts = Doubts::none();
-    let lines = corner_lines(&model, opts.friction, widths, &mut line_doubts)?;
+    let lines = corner_lines(&model, opts.friction, widths, None, &mut line_doubts)?;
     // A corner line's end left unproven may join two regions or part one: as with an
     // unresolved boundary, no region's identity is proven then.
     let lines_unproven = !line_doubts.is_empty();

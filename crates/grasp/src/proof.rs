@@ -8,7 +8,7 @@
 
 use crate::assemble::RawRegion;
 use crate::cones::functions;
-use crate::corners::corner_lines;
+use crate::corners::{corner_lines, PairBox};
 use crate::error::Result;
 use crate::model::Model;
 use crate::near::NearContacts;
@@ -133,9 +133,24 @@ pub(crate) fn none_below(
             }
         }
     }
-    // Fingers at a corner, and single pairs of corners, that hold at the lower friction.
+    // Fingers at a corner, and single pairs of corners, that hold at the lower friction (only
+    // those that may meet the region's box).
+    let (lo, hi) = bounds(
+        &region
+            .parts
+            .iter()
+            .flatten()
+            .chain(region.lines.iter().flatten())
+            .chain(&region.points)
+            .copied()
+            .collect::<Vec<_>>(),
+    );
+    let reach = PairBox {
+        s: [lo[0] - chord, hi[0] + chord],
+        t: [lo[1] - chord, hi[1] + chord],
+    };
     let mut doubts = Doubts::none();
-    let lines = corner_lines(model, friction, widths, &mut doubts)?;
+    let lines = corner_lines(model, friction, widths, Some(reach), &mut doubts)?;
     if !doubts.is_empty() {
         return Ok(Below::Unknown);
     }

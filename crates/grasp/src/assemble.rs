@@ -428,18 +428,34 @@ impl Walk<'_> {
                 l.doubts.add(Doubt::GraspBoundaryUnresolved);
                 break;
             };
-            l.pts.extend(between);
+            append(&mut l.pts, &between);
             if next == first {
                 break;
             }
             used[next] = true;
-            l.pts.extend_from_slice(&self.open[next].pts);
+            append(&mut l.pts, &self.open[next].pts);
             at = next;
         }
-        let p0 = l.pts[0];
-        l.pts.push(p0);
+        // (Closed on its first vertex, the last one if that is it to rounding.)
+        let (p0, len) = (l.pts[0], l.pts.len());
+        match l.pts.last_mut() {
+            Some(last) if len > 1 && dist(*last, p0) <= TIGHT => *last = p0,
+            _ => l.pts.push(p0),
+        }
         l
     }
+}
+
+/// `pts` followed by `more`, a vertex where they meet once: the end of one piece and the
+/// start of the next are one point to rounding (within [`TIGHT`]), computed in two places.
+fn append(pts: &mut Vec<[f64; 2]>, more: &[[f64; 2]]) {
+    let mut more = more;
+    if let (Some(&last), Some(&first)) = (pts.last(), more.first()) {
+        if dist(last, first) <= TIGHT {
+            more = &more[1..];
+        }
+    }
+    pts.extend_from_slice(more);
 }
 
 /// The signed angle from direction `a` to direction `b` (left turns positive).

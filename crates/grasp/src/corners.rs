@@ -91,10 +91,12 @@ pub(crate) fn corner_lines(
             for f in holds.iter().chain([&side_lo, &side_hi]) {
                 for r in find_roots(f, a, b, &RootOptions::default())? {
                     // Every function vanishes where the segment meets the corner (d = 0):
-                    // that root is known, proven or not.
-                    let at_corner = (j == joint.segment && r.bracket.0 <= a)
-                        || ((j + 1) % model.n() == joint.segment && r.bracket.1 >= b);
-                    if !r.certified && !at_corner {
+                    // that root is known, proven or not. So is one at either end of any
+                    // segment (a cone's edge through another joint, as round numbers put it):
+                    // the other finger is at that joint there, a pair of joints decided
+                    // apart, and the ends are cuts already.
+                    let at_end = r.bracket.0 <= a || r.bracket.1 >= b;
+                    if !r.certified && !at_end {
                         doubts.add(Doubt::RootsUnresolved);
                     }
                     cuts.push(r.u.clamp(a, b));

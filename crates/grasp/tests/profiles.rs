@@ -179,6 +179,23 @@ fn a_sliver_s_best_grasp_is_force_closure() {
     check(&p, 0.5323860168239313).unwrap();
 }
 
+/// A rectilinear outline turned 45° at μ = 0.5: cones' edges run exactly through other
+/// corners (slopes 1/2 and 2 on a half-unit grid), whose conditions vanish at segments' ends
+/// to rounding. Those roots are the other finger at a joint, decided apart: no doubt is said
+/// (they once left every region uncertified).
+#[test]
+fn cone_edges_through_corners_leave_no_doubt() {
+    let p = skyline(
+        &[1.0, 1.5, 0.5],
+        &[1.5, 2.0, 0.5],
+        std::f64::consts::FRAC_PI_4,
+    )
+    .unwrap();
+    check(&p, 0.5).unwrap();
+    let g = grasps(&p, &GraspOptions::friction(0.5)).unwrap();
+    assert!(g.doubts.is_empty(), "{:?}", g.doubts);
+}
+
 /// A right angle at μ = 1 exactly: its pinch grasps are the line of mirror pairs of its two
 /// sides, a set with no inside. The result says its boundary is unresolved and certifies no
 /// region (it once traced that line as a region with area, and certified it).

@@ -27,6 +27,7 @@ use crate::extract::Settle;
 use crate::patch::{common_sign, Patch};
 use crate::system::unique;
 use crate::zeroset::{finish, run_cells, Filters, ZeroSetOptions};
+use affine::affine_set;
 use bspline::tensor::TensorBSpline;
 use cells::Cells;
 use numeric::newton2::{polish, Matrix2, Newton2, StepVerdict, Vector2};
@@ -38,6 +39,7 @@ use serde::{Deserialize, Serialize};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod affine;
 mod cells;
 
 /// A function within this much (relative to its largest coefficient) of zero at a point of
@@ -168,6 +170,12 @@ pub fn nonnegative_set_mapped(
     let diag = (dt.1 - dt.0).hypot(dr.1 - dr.0);
     let chord_abs =
         opts.zero.settings.chord_tol.get() * opts.zero.settings.size.map_or(diag, Size::get);
+    // (Affine functions, as the cone conditions of two straight segments, in closed form.)
+    if !opts.pairs {
+        if let Some(set) = affine_set(fs, dom, &opts.meets, map, chord_abs) {
+            return Ok(set);
+        }
+    }
     let (stores, values): (Vec<Cells>, Vec<Cells>) =
         fs.iter().map(|f| Cells::of(f, opts.pairs)).unzip();
     let stores = cut_corners(stores, dom, &opts.meets, opts.pairs);

@@ -34,19 +34,23 @@ pub(crate) fn most_robust(
 ) -> ([f64; 2], bool) {
     let n = model.n();
     let angle = |p: [f64; 2]| slip_angle(model, p[0], p[1]);
-    let mut best: Option<([f64; 2], f64, Start)> = None;
-    let consider = |p: [f64; 2], start: Start, best: &mut Option<([f64; 2], f64, Start)>| {
+    // The best pair known exactly (antipodal, on a corner line, single) and the best pair
+    // inside a part, which a search from it may improve: both are kept, the search run, and
+    // the better taken (a corner line's best may lie beside a part's better one).
+    let mut exact: Option<([f64; 2], f64)> = None;
+    let mut inside: Option<([f64; 2], f64)> = None;
+    let consider = |p: [f64; 2], best: &mut Option<([f64; 2], f64)>| {
         let a = angle(p);
-        if best.is_none_or(|(_, b, _)| a < b) {
-            *best = Some((p, a, start));
+        if best.is_none_or(|(_, b)| a < b) {
+            *best = Some((p, a));
         }
     };
     for &p in seeds {
         if holds(region, n, p[0], p[1]) {
-            consider(p, Start::Exact, &mut best);
+            consider(p, &mut exact);
         }
     }
-    if let Some((p, a, _)) = best {
+    if let Some((p, a)) = exact {
         if a <= ANTIPODAL_ANGLE {
             return (p, true);
         }
@@ -59,29 +63,28 @@ pub(crate) fn most_robust(
                     |k: usize, d: usize| (k as f64 + 0.5) / SAMPLES_ACROSS as f64 * (hi[d] - lo[d]);
                 let p = [lo[0] + across(i, 0), lo[1] + across(j, 1)];
                 if holds(region, n, p[0], p[1]) {
-                    consider(p, Start::Inside, &mut best);
+                    consider(p, &mut inside);
                 }
             }
         }
     }
-    if best.is_none() {
+    if inside.is_none() {
         // Parts too thin for the grid (a sliver, as the pinch grasps of a corner just
         // sharper than twice the friction angle): the deepest point found inside them (a
         // sliver's pairs all need about the same friction; its edges are only within the
         // chord tolerance of the exact boundary).
         if let Some(&(p, _)) = deepest(region, 1).first() {
-            consider(p, Start::Inside, &mut best);
+            consider(p, &mut inside);
         }
     }
-    if best.is_none() {
+    if inside.is_none() {
         // Thinner still, a sliver within rounding of its edges: the search starts on them.
         for part in &region.parts {
             for w in part.windows(2) {
                 for k in 0..=SAMPLES_ALONG {
                     consider(
                         lerp(w[0], w[1], k as f64 / SAMPLES_ALONG as f64),
-                        Start::Inside,
-                        &mut best,
+                        &mut inside,
                     );
                 }
             }
@@ -91,39 +94,34 @@ pub(crate) fn most_robust(
         for k in 0..=SAMPLES_ALONG {
             consider(
                 lerp(l[0], l[1], k as f64 / SAMPLES_ALONG as f64),
-                Start::Exact,
-                &mut best,
+                &mut exact,
             );
         }
     }
     for &p in &region.points {
-        consider(p, Start::Exact, &mut best);
+        consider(p, &mut exact);
     }
-    let Some((mut x, mut ax, start)) = best else {
+    let inside = inside.map(|(x, _)| {
+        let (x, ax) = descend(model, region, x, inside_by);
+        if ax <= alpha {
+            return (x, ax);
+        }
+        // Not force closure: the region is thinner there than its polylines resolve (a
+        // sliver within rounding of its edges, or one a chord passes outside of where it
+        // bows). Its pairs lie within the chord tolerance of the polylines, not inside them:
+        // the search roams that far round them.
+        search(model, region, x, &|y| {
+            holds(region, n, y[0], y[1]) || depth(region, y) <= inside_by
+        })
+    });
+    let best = match (exact, inside) {
+        (Some(e), Some(i)) => Some(if i.1 < e.1 { i } else { e }),
+        (e, i) => e.or(i),
+    };
+    let Some((x, ax)) = best else {
         return (region.parts.first().map_or([0.0; 2], |p| p[0]), false);
     };
-    if let Start::Inside = start {
-        (x, ax) = descend(model, region, x, inside_by);
-        if ax > alpha {
-            // Not force closure: the region is thinner there than its polylines resolve (a
-            // sliver within rounding of its edges, or one a chord passes outside of where
-            // it bows). Its pairs lie within the chord tolerance of the polylines, not
-            // inside them: the search roams that far round them.
-            (x, ax) = search(model, region, x, &|y| {
-                holds(region, n, y[0], y[1]) || depth(region, y) <= inside_by
-            });
-        }
-    }
     (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
-}
-
-/// Where the search for a region's most robust grasp starts.
-#[derive(Clone, Copy)]
-enum Start {
-    /// A pair known exactly (an antipodal pair, a point on a corner line): no search.
-    Exact,
-    /// A pair inside the region's polylines, or on them where none is inside.
-    Inside,
 }
 
 /// The point a share `x` of the way from `a` to `b`.

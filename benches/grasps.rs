@@ -1,8 +1,10 @@
 //! Headline figures of issue 42 (grasps with friction), each beside the figure it is judged
 //! against, measured in the same run:
-//! - every force-closure region of the papers' shapes at μ = 0.3, against the warm
-//!   `antipodal` of the same curve (the target: at most 10 times its time);
-//! - how the cost grows with the number of control points of random periodic cubics;
+//! - every force-closure region of the papers' shapes at μ = 0.3, cold and from a prepared
+//!   curve (warm), against the warm `antipodal` of the same curve (the target: at most 10
+//!   times its time);
+//! - how the cost grows with the number of control points of random periodic cubics, and
+//!   with the number of sides of random star polygons (whose cells of two sides are affine);
 //! - a batch of random outlines of 8–20 points on all cores (the target: 10,000 in 10 s on
 //!   two cores, so this batch of 100 in 100 ms).
 #![allow(missing_docs, clippy::unwrap_used)]
@@ -33,6 +35,10 @@ fn pair(c: &mut Criterion, name: &str, curve: &dyn PlaneCurve) {
     let warm = Options::default();
     c.bench_function(&format!("grasps_{name}"), |b| {
         b.iter(|| grasps(black_box(curve), black_box(&opts)).unwrap())
+    });
+    let prepared_grasps = grasp::prepare(curve).unwrap();
+    c.bench_function(&format!("grasps_{name}_warm"), |b| {
+        b.iter(|| prepared_grasps.grasps(black_box(&opts)).unwrap())
     });
     c.bench_function(&format!("grasps_{name}_antipodal_warm"), |b| {
         b.iter(|| prepared.antipodal(black_box(&warm)).unwrap())
@@ -65,6 +71,15 @@ fn growth(c: &mut Criterion) {
         let curve = star(n, n as u64);
         g.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
             b.iter(|| grasps(black_box(&curve), black_box(&opts)).unwrap())
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group("grasps_polygon_n");
+    for n in [8usize, 16, 32, 64] {
+        let points = Star::default().drawn(n, &mut testkit::rng(n as u64));
+        let polygon = testkit::outlines::polygon(&points);
+        g.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
+            b.iter(|| grasps(black_box(&polygon), black_box(&opts)).unwrap())
         });
     }
     g.finish();

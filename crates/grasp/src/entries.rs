@@ -5,17 +5,18 @@ use crate::best::{descend, most_robust, ANTIPODAL_ANGLE};
 use crate::cells::{cells, trace};
 use crate::contact::{around, square_at_most, Positivity};
 use crate::corners::corner_lines;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use crate::polyline::{bounds, signed_area};
+use crate::prepared::prepare;
 use crate::proof::{none_below, Below};
 use crate::quality::{force_closure, min_friction};
 use crate::region_set::{deepest, depth, holds_or_touches, in_triangle};
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::distance_to_segment;
-use curve::{Boundary, ParamCurve, Profile};
+use curve::Boundary;
 use numeric::certificate::{Doubt, Doubts};
 
 /// Every two-finger force-closure grasp of a closed curve or profile for Coulomb friction μ
@@ -36,22 +37,25 @@ use numeric::certificate::{Doubt, Doubts};
 /// ```
 pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Result<Grasps> {
     opts.check()?;
-    let boundary = boundary.into();
-    let profile = boundary.to_profile()?.ok_or(Error::NotExact)?;
-    let profile: &Profile = &profile;
-    if !profile.is_closed() {
-        return Err(Error::NotClosed);
-    }
-    let model = Model::new(profile)?;
+    prepare(boundary)?.grasps(opts)
+}
+
+/// [`grasps`] of a prepared model, whose antipodal pairs and families' middles (in the
+/// profile's parameter) are `seeds`, for options already checked.
+pub(crate) fn grasps_of(
+    model: &Model<'_>,
+    seeds: &[[f64; 2]],
+    opts: &GraspOptions,
+) -> Result<Grasps> {
     let widths =
         [opts.min_width, opts.max_width].map(|w| w.map(|w| model.frame.length_to_local(w)));
-    let cells = cells(&model, opts, widths)?;
-    let near = NearContacts::new(&model, opts.friction);
+    let cells = cells(model, opts, widths)?;
+    let near = NearContacts::new(model, opts.friction);
     let mut doubts = Doubts::none();
     let mut complete = true;
     let mut traced = Vec::with_capacity(cells.len());
     for cell in &cells {
-        let t = trace(&model, cell, opts, &near)?;
+        let t = trace(model, cell, opts, &near)?;
         complete &= t.complete;
         traced.push(((cell.i, cell.j), t));
     }
@@ -59,7 +63,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         doubts.add(Doubt::SearchLimit);
     }
     let mut line_doubts = Doubts::none();
-    let lines = corner_lines(&model, opts.friction, widths, None, &mut line_doubts)?;
+    let lines = corner_lines(model, opts.friction, widths, None, &mut line_doubts)?;
     // A corner line's end left unproven may join two regions or part one: as with an
     // unresolved boundary, no region's identity is proven then.
     let lines_unproven = !line_doubts.is_empty();
@@ -67,10 +71,9 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     // (The chord tolerance of the cells, in the profile's parameter where a cell is a unit.)
     let chord = opts.settings.chord_tol.get() * std::f64::consts::SQRT_2;
     let alpha = opts.friction.atan();
-    let holds = |p: [f64; 2]| force_closure(&model, alpha, widths, p);
-    let raw = regions(&model, &traced, &lines, chord, &holds);
-    let seeds = antipodal_seeds(boundary, profile)?;
-    let proof = Positivity::new(&model, &cells);
+    let holds = |p: [f64; 2]| force_closure(model, alpha, widths, p);
+    let raw = regions(model, &traced, &lines, chord, &holds);
+    let proof = Positivity::new(model, &cells);
     // (A cell's unresolved point is said even where no region came of it.)
     let cell_unresolved = traced.iter().any(|(_, t)| t.unresolved);
     if cell_unresolved {
@@ -79,7 +82,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
     // Every antipodal pair within the width limits is force closure at any friction: one
     // that no region holds was lost (regions narrower than the subdivision resolves).
     let lost = seeds.iter().any(|&p| {
-        force_closure(&model, alpha.max(ANTIPODAL_ANGLE), widths, p)
+        force_closure(model, alpha.max(ANTIPODAL_ANGLE), widths, p)
             && !raw.iter().any(|r| holds_or_touches(r, model.n(), p, chord))
     });
     if lost {
@@ -95,20 +98,20 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         });
     let mut found = Vec::with_capacity(raw.len());
     for r in &raw {
-        let (mut center, mut proven) = most_robust(&model, r, &seeds, alpha, chord);
+        let (mut center, mut proven) = most_robust(model, r, seeds, alpha, chord);
         // A best grasp found by search is proven the most robust (to a share of its friction)
         // where the set at a friction just below holds no pair of the region; a pair of it
         // that does starts the search again.
         for _ in 0..PROOF_ROUNDS {
-            let least = min_friction(&model, center[0], center[1]);
+            let least = min_friction(model, center[0], center[1]);
             if proven || !(least > 0.0 && least.is_finite()) {
                 break;
             }
-            match none_below(&model, opts, widths, r, least, chord)? {
+            match none_below(model, opts, widths, r, least, chord)? {
                 Below::None => proven = true,
                 Below::Unknown => break,
                 Below::Beaten(p) => {
-                    let (x, _) = descend(&model, r, p, chord);
+                    let (x, _) = descend(model, r, p, chord);
                     center = in_triangle(model.n(), x[0], x[1]);
                 }
             }
@@ -129,7 +132,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         // The largest square is sought round the best grasp, and round the points of the
         // region deepest inside it where that one is clearly smaller (the best grasp may lie
         // on a width limit, or off the region's middle).
-        let at_best = around(&model, &proof, center, reach);
+        let at_best = around(model, &proof, center, reach);
         // (Only where the best grasp lies clearly nearer the region's edge than its deepest
         // points: elsewhere its square is the one to find.)
         let candidates = deepest(r, CONTACT_CENTERS);
@@ -138,13 +141,13 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         // edge lies within a chord of the polylines.)
         let beaten = |c: [f64; 2], d: f64| {
             at_best
-                .is_some_and(|b| square_at_most(&model, c, d + 2.0 * chord) <= b.2 * CLEARLY_LARGER)
+                .is_some_and(|b| square_at_most(model, c, d + 2.0 * chord) <= b.2 * CLEARLY_LARGER)
         };
         let deeper = candidates
             .into_iter()
             .filter(|&(_, d)| at_best.is_none() || d > DEEPER * best_depth)
             .filter(|&(c, d)| !beaten(c, d))
-            .filter_map(|(c, _)| around(&model, &proof, c, reach))
+            .filter_map(|(c, _)| around(model, &proof, c, reach))
             .max_by(|a, b| a.2.total_cmp(&b.2));
         let contact = match (at_best, deeper) {
             (Some(b), Some(d)) if d.2 > b.2 * CLEARLY_LARGER => Some(d),
@@ -156,7 +159,7 @@ pub fn grasps<'a>(boundary: impl Into<Boundary<'a>>, opts: &GraspOptions) -> Res
         // joined two: no region's identity is proven then.
         let certified = r.doubts.is_empty() && !unresolved;
         doubts.join(region_doubts);
-        found.push(output(&model, chord, r, center, contact, certified));
+        found.push(output(model, chord, r, center, contact, certified));
     }
     Ok(Grasps {
         friction: opts.friction,
@@ -209,35 +212,6 @@ const PROOF_ROUNDS: usize = 3;
 
 /// Centres tried for a region's contact region besides its best grasp.
 const CONTACT_CENTERS: usize = 4;
-
-/// The antipodal pairs and the middles of the families, in the profile's parameter.
-///
-/// A profile's pairs come in its own parameter already (the exact forms', as `antipodal`
-/// answers a profile); a curve's come in the curve's own parameter, its document's (an
-/// analytic shape's angle), which the profile of its one segment maps to its form's.
-fn antipodal_seeds(boundary: Boundary<'_>, profile: &Profile) -> Result<Vec<[f64; 2]>> {
-    let found = antipodal::antipodal(boundary, &antipodal::Options::default())?;
-    let (internal, (da, db)): (&dyn Fn(f64) -> f64, (f64, f64)) = match boundary {
-        Boundary::Profile(p) => (&|u| u, p.domain()),
-        Boundary::Curve(_) => (&|u| profile.internal_param(u), profile.document_domain()),
-    };
-    let mut seeds: Vec<[f64; 2]> = found
-        .pairs
-        .iter()
-        .map(|p| [internal(p.s), internal(p.t)])
-        .collect();
-    let period = db - da;
-    for f in &found.families {
-        // The middle pair: each range halved the short way round (a range runs backwards
-        // where its pairs are matched so, or across the seam).
-        let mid = |[a, b]: [f64; 2]| {
-            let step = (b - a + 0.5 * period).rem_euclid(period) - 0.5 * period;
-            internal(da + (a + 0.5 * step - da).rem_euclid(period))
-        };
-        seeds.push([mid(f.s), mid(f.t)]);
-    }
-    Ok(seeds)
-}
 
 /// A region in the curve's own parameter and coordinates.
 fn output(

@@ -5,6 +5,7 @@
 use crate::cones::Form;
 use crate::error::Result;
 use curve::{Frame, JointKind, Profile};
+use std::borrow::Cow;
 
 /// What a joint contributes as a contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -34,7 +35,7 @@ pub(crate) struct Joint {
 
 /// A closed profile in its frame.
 pub(crate) struct Model<'p> {
-    pub(crate) profile: &'p Profile,
+    pub(crate) profile: Cow<'p, Profile>,
     pub(crate) frame: Frame,
     pub(crate) forms: Vec<Form>,
     /// Per segment, the joint where it starts.
@@ -43,7 +44,7 @@ pub(crate) struct Model<'p> {
 
 impl<'p> Model<'p> {
     /// The model of the closed profile `profile`.
-    pub(crate) fn new(profile: &'p Profile) -> Result<Self> {
+    pub(crate) fn new(profile: Cow<'p, Profile>) -> Result<Self> {
         let points: Vec<[f64; 2]> = profile
             .segments()
             .iter()

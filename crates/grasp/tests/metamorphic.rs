@@ -299,3 +299,29 @@ proptest! {
         prop_assert!(compared > GRID * GRID / 4);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(testkit::cases(12)))]
+
+    /// One preparation answers every friction and width as a fresh computation does: the
+    /// same result, exactly (a spline curve and a profile with corners, each asked in turn
+    /// at frictions and widths in any order).
+    #[test]
+    fn a_prepared_curve_answers_as_a_fresh_one(
+        seed in prop::collection::vec(0.0..1.0f64, 8..=14),
+        radii in prop::collection::vec(0.6..1.0f64, 3..=5),
+        frictions in prop::collection::vec(0.05..1.5f64, 3),
+        widths in prop::collection::vec(prop::option::of(0.2..1.5f64), 3),
+    ) {
+        let c = testkit::stars::star_curve(3, &seed, None);
+        let n = radii.len();
+        let Some(p) = bezier_chain_profile(&radii, &[(0.0, 0.0); 5][..n], &[false; 5][..n], 0, false)
+        else { return Ok(()) };
+        let (pc, pp) = (grasp::prepare(&c).unwrap(), grasp::prepare(&p).unwrap());
+        for (&mu, &max_width) in frictions.iter().zip(&widths) {
+            let opts = GraspOptions { max_width: max_width.map(|w| 4.0 * w), ..GraspOptions::friction(mu) };
+            prop_assert_eq!(pc.grasps(&opts).unwrap(), grasps(&c, &opts).unwrap());
+            prop_assert_eq!(pp.grasps(&opts).unwrap(), grasps(&p, &opts).unwrap());
+        }
+    }
+}

@@ -5,8 +5,9 @@
 //!   times its time);
 //! - how the cost grows with the number of control points of random periodic cubics, and
 //!   with the number of sides of random star polygons (whose cells of two sides are affine);
-//! - a batch of random outlines of 8–20 points on all cores (the target: 10,000 in 10 s on
-//!   two cores, so this batch of 100 in 100 ms).
+//! - a batch of random outlines of 8–20 points on all cores, as periodic cubics through
+//!   them and as polygons (the target: 10,000 in 10 s on two cores, so this batch of 100 in
+//!   100 ms).
 #![allow(missing_docs, clippy::unwrap_used)]
 
 use antipodal::shapes::{Convexities, Ellipse, EllipticLemniscate, Limacon};
@@ -99,6 +100,23 @@ fn batch(c: &mut Criterion) {
             curves
                 .par_iter()
                 .map(|curve| grasps(curve, &opts).map(|g| g.regions.len()).unwrap_or(0))
+                .sum::<usize>()
+        })
+    });
+    // The same outlines read as polygons of their 8–20 points (the straight sides' cells
+    // affine).
+    let mut draw = testkit::rng(42);
+    let polygons: Vec<curve::Profile> = (0..100)
+        .map(|i| {
+            let n = (8 + (draw() * 13.0) as usize).min(20);
+            testkit::outlines::polygon(&Star::default().drawn(n, &mut testkit::rng(1000 + i)))
+        })
+        .collect();
+    c.bench_function("grasps_batch_100_polygons_all_cores", |b| {
+        b.iter(|| {
+            polygons
+                .par_iter()
+                .map(|p| grasps(p, &opts).map(|g| g.regions.len()).unwrap_or(0))
                 .sum::<usize>()
         })
     });

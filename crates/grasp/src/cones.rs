@@ -41,8 +41,30 @@ pub(crate) struct Form {
     q_pieces: Vec<Bezier>,
     /// The curve itself, for evaluation.
     curve: Rational,
+    /// For a straight segment of degree one, its start and its constant derivative: the
+    /// point and tangent without the general evaluation (the searches for best grasps ask
+    /// for thousands).
+    line: Option<[[f64; 2]; 2]>,
     /// `+1` counterclockwise, `−1` clockwise: `N = orientation · T⊥`.
     orientation: f64,
+}
+
+/// A polynomial curve of degree one on one span: its start and its derivative.
+fn straight(curve: &Rational) -> Option<[[f64; 2]; 2]> {
+    if curve.is_rational() || curve.degree() != 1 || curve.homogeneous().n_ctrl() != 2 {
+        return None;
+    }
+    let (a, b) = curve.domain();
+    let mut out = [0.0; 4];
+    curve.eval_derivs(a, 1, &mut out);
+    let mut end = [0.0; 4];
+    curve.eval_derivs(b, 0, &mut end);
+    // (The derivative from the ends, so the line runs exactly through both.)
+    let h = b - a;
+    Some([
+        [out[0], out[1]],
+        [(end[0] - out[0]) / h, (end[1] - out[1]) / h],
+    ])
 }
 
 /// `parts` in one spline space (common degree, merged knots).
@@ -93,6 +115,7 @@ impl Form {
             normal,
             tangent,
             q_pieces,
+            line: straight(curve),
             curve: curve.clone(),
             orientation,
         })
@@ -129,6 +152,10 @@ impl Form {
             normal: cut(&self.normal)?,
             tangent: cut(&self.tangent)?,
             q_pieces,
+            line: self.line.map(|[start, d]| {
+                let a = self.domain().0;
+                [[start[0] + (lo - a) * d[0], start[1] + (lo - a) * d[1]], d]
+            }),
             curve: self.curve.restrict(lo, hi)?,
             orientation: self.orientation,
         })
@@ -142,6 +169,10 @@ impl Form {
     /// The point and the tangent at `v` (clamped to the domain).
     pub(crate) fn point_tangent(&self, v: f64) -> ([f64; 2], [f64; 2]) {
         let (a, b) = self.domain();
+        if let Some([start, d]) = self.line {
+            let h = v.clamp(a, b) - a;
+            return ([start[0] + h * d[0], start[1] + h * d[1]], d);
+        }
         let mut out = [0.0; 4];
         self.curve.eval_derivs(v.clamp(a, b), 1, &mut out);
         ([out[0], out[1]], [out[2], out[3]])

@@ -423,3 +423,54 @@ fn under_width_limits_the_best_grasp_lies_in_its_region() {
         }
     }
 }
+
+/// The grasps of one drawing of the corpus at μ = 0.3 (its first outline).
+fn drawing_grasps(name: &str) -> Value {
+    let f = fixture(&format!("corpus/{name}"));
+    curvekit_json(&["grasps", f.as_str(), "--friction", "0.3", "--pick", "0"])
+}
+
+/// Font Awesome's octagon: eight straight sides, two of them 0.05° off parallel. Its cells of
+/// two sides are clipped in closed form: four certified regions round its four pairs of
+/// opposite sides, their outlines a few straight pieces (the subdivision once traced 184,627
+/// vertices for one of them, in 4 s).
+#[test]
+fn a_drawn_octagon_has_four_certified_regions_with_straight_edges() {
+    let d = drawing_grasps("icons/fontawesome-solid/octagon.svg");
+    assert_eq!(d["certified"], true);
+    let regions = d["regions"].as_array().unwrap();
+    assert_eq!(regions.len(), 4);
+    for r in regions {
+        assert_eq!(r["certified"], true);
+        assert!(num(&r["best"]["min_friction"]) < 1e-12);
+        // (Its largest part, in a cell of two straight sides, a few straight pieces; the
+        // parts reaching the corners' short curved stretches a few dozen vertices each.)
+        let boundary: Vec<[f64; 2]> = r["boundary"].as_array().unwrap().iter().map(pair).collect();
+        assert!(
+            (4..=8).contains(&boundary.len()),
+            "{} vertices",
+            boundary.len()
+        );
+        for part in polylines(&r["parts"]) {
+            assert!(part.len() <= 100, "{} vertices", part.len());
+        }
+    }
+}
+
+/// Glyphs whose best grasps lie at a pair of joints their regions reach (the search from
+/// inside keeps a chord from the cells' edges): taken there, force closure, proven the most
+/// robust, and the results certified.
+#[test]
+fn glyphs_best_grasps_at_pairs_of_joints_are_proven() {
+    for name in [
+        "glyphs/cantarell/0070-p.svg",
+        "glyphs/dejavu-sans/0032-two.svg",
+        "glyphs/roboto/0064-d.svg",
+    ] {
+        let d = drawing_grasps(name);
+        assert_eq!(d["certified"], true, "{name}: {}", d["reason"]);
+        for r in d["regions"].as_array().unwrap() {
+            assert!(num(&r["best"]["min_friction"]) <= 0.3, "{name}");
+        }
+    }
+}

@@ -101,6 +101,15 @@ pub(crate) fn most_robust(
     for &p in &region.points {
         consider(p, &mut exact);
     }
+    // A part's vertex at a cell's corner is a pair of joints the region reaches, exactly
+    // (the cells' edges are the joints' lines): where it is force closure, a candidate the
+    // search from inside, kept a chord from the edges, cannot reach.
+    let joint = |x: f64| x == x.round();
+    for &p in region.parts.iter().flatten() {
+        if joint(p[0]) && joint(p[1]) && angle(p) <= alpha {
+            consider(p, &mut exact);
+        }
+    }
     let inside = inside.map(|(x, _)| {
         let (x, ax) = descend(model, region, x, inside_by);
         if ax <= alpha {

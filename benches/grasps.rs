@@ -87,36 +87,39 @@ fn growth(c: &mut Criterion) {
 }
 
 fn batch(c: &mut Criterion) {
-    let opts = GraspOptions::friction(MU);
+    // The points of 100 random outlines of 8–20 points.
     let mut draw = testkit::rng(42);
-    let curves: Vec<SplineCurve> = (0..100)
-        .map(|i| {
-            let n = 8 + (draw() * 13.0) as usize;
-            star(n.min(20), 1000 + i)
-        })
-        .collect();
-    c.bench_function("grasps_batch_100_outlines_all_cores", |b| {
-        b.iter(|| {
-            curves
-                .par_iter()
-                .map(|curve| grasps(curve, &opts).map(|g| g.regions.len()).unwrap_or(0))
-                .sum::<usize>()
-        })
-    });
-    // The same outlines read as polygons of their 8–20 points (the straight sides' cells
-    // affine).
-    let mut draw = testkit::rng(42);
-    let polygons: Vec<curve::Profile> = (0..100)
+    let outlines: Vec<Vec<[f64; 2]>> = (0..100)
         .map(|i| {
             let n = (8 + (draw() * 13.0) as usize).min(20);
-            testkit::outlines::polygon(&Star::default().drawn(n, &mut testkit::rng(1000 + i)))
+            Star::default().drawn(n, &mut testkit::rng(1000 + i))
         })
         .collect();
-    c.bench_function("grasps_batch_100_polygons_all_cores", |b| {
+    let curves: Vec<SplineCurve> = outlines
+        .iter()
+        .map(|points| SplineCurve::periodic(3, points, None).unwrap())
+        .collect();
+    batch_of(c, "outlines", &curves);
+    // The same outlines read as polygons (the straight sides' cells affine).
+    let polygons: Vec<curve::Profile> = outlines
+        .iter()
+        .map(|points| testkit::outlines::polygon(points))
+        .collect();
+    batch_of(c, "polygons", &polygons);
+}
+
+/// The grasps of every one of `items` on all cores.
+fn batch_of<T>(c: &mut Criterion, name: &str, items: &[T])
+where
+    T: Sync,
+    for<'a> &'a T: Into<curve::Boundary<'a>>,
+{
+    let opts = GraspOptions::friction(MU);
+    c.bench_function(&format!("grasps_batch_100_{name}_all_cores"), |b| {
         b.iter(|| {
-            polygons
+            items
                 .par_iter()
-                .map(|p| grasps(p, &opts).map(|g| g.regions.len()).unwrap_or(0))
+                .map(|item| grasps(item, &opts).map(|g| g.regions.len()).unwrap_or(0))
                 .sum::<usize>()
         })
     });

@@ -130,6 +130,42 @@ pub fn distance_to_segment(x: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     ex.hypot(ey)
 }
 
+/// The points to insert between `a` and `b` (pushed onto `out` in order) so that the image of
+/// the segment under `map` stays within `tol` of the polyline through the images: the
+/// segment's middles, halved at most `depth` times, where the image of a middle lies off the
+/// chord of its ends' images. A chord whose image's middle lies off by more than a quarter of
+/// its length maps across a jump (a seam) and is not followed; nor one `map` has no image of.
+///
+/// ```
+/// // The parabola's image of [0, 1] on the x axis: halved until its middles lie within 0.02.
+/// let map = |p: [f64; 2]| Some([p[0], p[0] * p[0]]);
+/// let mut mids = Vec::new();
+/// curve::follow_image(&map, [0.0, 0.0], [1.0, 0.0], 0.02, 8, &mut mids);
+/// assert_eq!(mids, [[0.25, 0.0], [0.5, 0.0], [0.75, 0.0]]);
+/// ```
+pub fn follow_image(
+    map: &dyn Fn([f64; 2]) -> Option<[f64; 2]>,
+    a: [f64; 2],
+    b: [f64; 2],
+    tol: f64,
+    depth: usize,
+    out: &mut Vec<[f64; 2]>,
+) {
+    if depth == 0 {
+        return;
+    }
+    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let (Some(ma), Some(mb), Some(mm)) = (map(a), map(b), map(mid)) else {
+        return;
+    };
+    let off = distance_to_segment(mm, ma, mb);
+    if off > tol && off < 0.25 * (ma[0] - mb[0]).hypot(ma[1] - mb[1]) + tol {
+        follow_image(map, a, mid, tol, depth - 1, out);
+        out.push(mid);
+        follow_image(map, mid, b, tol, depth - 1, out);
+    }
+}
+
 /// The square of [`distance_to_segment`], without its root (for the least of many).
 ///
 /// ```

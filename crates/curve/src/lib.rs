@@ -62,7 +62,9 @@ pub use error::{Error, Result};
 pub use extent::{box_size, curves_box, union as box_union, Box2};
 pub use fill::{FillRule, FilledOutline};
 pub use frame::Frame;
-pub use geom::{distance_to_segment, points_scale, squared_distance_to_segment, wrap_pi, Jet, V2};
+pub use geom::{
+    distance_to_segment, follow_image, points_scale, squared_distance_to_segment, wrap_pi, Jet, V2,
+};
 pub use on_circle::OnCircle;
 pub use own_param::OwnParam;
 pub use param::ParamCurve;

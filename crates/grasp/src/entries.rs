@@ -15,8 +15,7 @@ use crate::proof::{none_below, Below};
 use crate::quality::{force_closure, min_friction};
 use crate::region_set::{deepest, depth, holds_or_touches, in_triangle};
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
-use curve::distance_to_segment;
-use curve::Boundary;
+use curve::{follow_image, Boundary};
 use numeric::certificate::{Doubt, Doubts};
 
 /// Every two-finger force-closure grasp of a closed curve or profile for Coulomb friction μ
@@ -178,30 +177,6 @@ const CLEARLY_LARGER: f64 = 1.1;
 /// Halvings of a chord whose image in the document's parameter bends.
 const IMAGE_DEPTH: usize = 8;
 
-/// The inner vertices that make the image of the chord from `a` to `b` under `map` a polyline
-/// within `tol` of it (its middles, where the image's middle is off the mapped chord).
-fn follow(
-    map: &dyn Fn([f64; 2]) -> [f64; 2],
-    a: [f64; 2],
-    b: [f64; 2],
-    tol: f64,
-    depth: usize,
-    out: &mut Vec<[f64; 2]>,
-) {
-    if depth == 0 {
-        return;
-    }
-    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-    let (ma, mb, mm) = (map(a), map(b), map(mid));
-    // (A chord across the seam maps to a jump: its image is not followed.)
-    let off = distance_to_segment(mm, ma, mb);
-    if off > tol && off < 0.25 * (ma[0] - mb[0]).hypot(ma[1] - mb[1]) + tol {
-        follow(map, a, mid, tol, depth - 1, out);
-        out.push(mm);
-        follow(map, mid, b, tol, depth - 1, out);
-    }
-}
-
 /// A deeper point is tried as a contact region's centre when it lies this many times deeper
 /// than the best grasp.
 const DEEPER: f64 = 2.0;
@@ -230,9 +205,12 @@ fn output(
     let tol = chord * model.document_cell();
     let polyline = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> {
         let mut out: Vec<[f64; 2]> = Vec::with_capacity(pts.len());
+        let mut mids = Vec::new();
         for w in pts.windows(2) {
             out.push(doc(w[0]));
-            follow(&doc, w[0], w[1], tol, IMAGE_DEPTH, &mut out);
+            mids.clear();
+            follow_image(&|p| Some(doc(p)), w[0], w[1], tol, IMAGE_DEPTH, &mut mids);
+            out.extend(mids.iter().map(|&m| doc(m)));
         }
         if let Some(&last) = pts.last() {
             out.push(doc(last));

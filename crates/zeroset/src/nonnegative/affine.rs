@@ -13,7 +13,7 @@
 use super::ZERO_BAND;
 use crate::boundary::{BoundaryPiece, PieceEnd};
 use bspline::tensor::TensorBSpline;
-use curve::distance_to_segment;
+use curve::follow_image;
 use numeric::rounding::UNIT_ROUNDOFF;
 use numeric::Rect;
 
@@ -191,7 +191,7 @@ pub(super) fn affine_set(
             _ => PieceEnd::Border,
         };
         let mut pts = vec![a];
-        follow(map, a, b, chord_abs, MAP_DEPTH, &mut pts);
+        follow_image(&|p| map(p[0], p[1]), a, b, chord_abs, MAP_DEPTH, &mut pts);
         pts.push(b);
         out.pieces.push(BoundaryPiece {
             function: k,
@@ -253,174 +253,5 @@ fn thickness(polygon: &[([f64; 2], Edge)]) -> f64 {
         area2.abs() / longest
     } else {
         0.0
-    }
-}
-
-/// The inner vertices that keep the image of the segment from `a` to `b` under `map` within
-/// `tol` of the image's chords (its middles, where the image's middle is off the mapped
-/// chord).
-fn follow(
-    map: &dyn Fn(f64, f64) -> Option<[f64; 2]>,
-    a: [f64; 2],
-    b: [f64; 2],
-    tol: f64,
-    depth: usize,
-    out: &mut Vec<[f64; 2]>,
-) {
-    if depth == 0 {
-        return;
-    }
-    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-    let (Some(ma), Some(mb), Some(mm)) = (map(a[0], a[1]), map(b[0], b[1]), map(mid[0], mid[1]))
-    else {
-        return;
-    };
-    if distance_to_segment(mm, ma, mb) > tol {
-        follow(map, a, mid, tol, depth - 1, out);
-        out.push(mid);
-        follow(map, mid, b, tol, depth - 1, out);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::nonnegative::{nonnegative_set, NonNegativeOptions};
-    use bspline::BSpline;
-    use proptest::prelude::*;
-
-    /// `a + b t + c r` on `[t0, t1] × [r0, r1]`, its factors raised `raise` degrees (so the
-    /// same function comes in a form the closed form does not take).
-    fn affine(
-        [a, b, c]: [f64; 3],
-        (t0, t1): (f64, f64),
-        (r0, r1): (f64, f64),
-        raise: usize,
-    ) -> TensorBSpline {
-        let line = |lo: f64, hi: f64, x0: f64, x1: f64| {
-            BSpline::bezier(1, vec![x0, x1])
-                .unwrap()
-                .reparam(lo, hi)
-                .unwrap()
-                .elevate(raise)
-        };
-        let one_t = line(t0, t1, 1.0, 1.0);
-        let one_r = line(r0, r1, 1.0, 1.0);
-        TensorBSpline::sum_of_outer(&[
-            (line(t0, t1, a + b * t0, a + b * t1), one_r.clone()),
-            (one_t, line(r0, r1, c * r0, c * r1)),
-        ])
-        .unwrap()
-    }
-
-    /// Whether every function is at least `-slack` at `p`.
-    fn inside(fs: &[TensorBSpline], p: [f64; 2], slack: f64) -> bool {
-        fs.iter().all(|f| f.eval(p[0], p[1]) >= -slack)
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(testkit::cases(200)))]
-
-        /// The closed form's pieces lie on their zero lines with the set on their left, and
-        /// are the subdivision's pieces of the same functions given at a higher degree.
-        #[test]
-        fn the_clip_gives_the_subdivision_s_pieces(
-            lines in prop::collection::vec((0.0..std::f64::consts::TAU, 0.0..1.0f64, 0.0..1.0f64), 2..=4),
-            t0 in -2.0..2.0f64, wt in 0.1..3.0f64,
-            r0 in -2.0..2.0f64, wr in 0.1..3.0f64,
-        ) {
-            let (dt, dr) = ((t0, t0 + wt), (r0, r0 + wr));
-            // Each zero line through a point of the domain, at any angle.
-            let coefs: Vec<(f64, f64, f64)> = lines
-                .iter()
-                .map(|&(angle, x, y)| {
-                    let (q, (c, s)) = ([t0 + x * wt, r0 + y * wr], angle.sin_cos());
-                    (-(s * q[0] + c * q[1]), s, c)
-                })
-                .collect();
-            let fs: Vec<TensorBSpline> =
-                coefs.iter().map(|&(a, b, c)| affine([a, b, c], dt, dr, 0)).collect();
-            let raised: Vec<TensorBSpline> =
-                coefs.iter().map(|&(a, b, c)| affine([a, b, c], dt, dr, 1)).collect();
-            let opts = NonNegativeOptions::default();
-            let closed = nonnegative_set(&fs, &opts, &|_| false).unwrap();
-            let traced = nonnegative_set(&raised, &opts, &|_| false).unwrap();
-            prop_assume!(traced.complete && traced.unresolved.is_empty());
-            prop_assert!(closed.complete && closed.unresolved.is_empty());
-            let diag = wt.hypot(wr);
-            for p in &closed.pieces {
-                prop_assert_eq!(p.pts.len(), 2);
-                let (a, b) = (p.pts[0], p.pts[1]);
-                let f = &fs[p.function];
-                for q in [a, b] {
-                    prop_assert!(f.eval(q[0], q[1]).abs() <= 1e-12 * f.max_abs_coef());
-                }
-                // Beside its middle: the set on the left, function k negative on the right.
-                let len = (b[0] - a[0]).hypot(b[1] - a[1]);
-                let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-                let left = [-(b[1] - a[1]) / len, (b[0] - a[0]) / len];
-                let h = 1e-7 * diag;
-                prop_assert!(inside(&fs, [mid[0] + h * left[0], mid[1] + h * left[1]], 1e-12));
-                prop_assert!(f.eval(mid[0] - h * left[0], mid[1] - h * left[1]) < 0.0);
-            }
-            // The same pieces as the subdivision's: functions, ends and end points.
-            prop_assert_eq!(closed.pieces.len(), traced.pieces.len());
-            for p in &closed.pieces {
-                let near = |x: [f64; 2], y: [f64; 2]| (x[0] - y[0]).hypot(x[1] - y[1]) <= 1e-6 * diag;
-                let same = traced.pieces.iter().any(|q| {
-                    q.function == p.function
-                        && q.ends == p.ends
-                        && near(q.pts[0], p.pts[0])
-                        && near(q.pts[q.pts.len() - 1], p.pts[1])
-                });
-                prop_assert!(same, "{:?} not among {:?}", p, traced.pieces);
-            }
-        }
-    }
-
-    /// Two zero lines on one line with opposite sides: the set is that line, without inside,
-    /// said unresolved; with the same side, the stretch is the first function's.
-    #[test]
-    fn coinciding_zero_lines() {
-        let (dt, dr) = ((0.0, 1.0), (0.0, 1.0));
-        let up = affine([-0.5, 0.0, 1.0], dt, dr, 0);
-        let down = affine([0.5, 0.0, -1.0], dt, dr, 0);
-        let opts = NonNegativeOptions::default();
-        let line = nonnegative_set(&[up.clone(), down], &opts, &|_| false).unwrap();
-        assert!(line.pieces.is_empty());
-        assert_eq!(line.unresolved.len(), 1);
-        let twice = affine([-1.0, 0.0, 2.0], dt, dr, 0);
-        let same = nonnegative_set(&[up, twice], &opts, &|_| false).unwrap();
-        assert!(same.unresolved.is_empty());
-        assert_eq!(same.pieces.len(), 1);
-        assert_eq!(same.pieces[0].function, 0);
-        assert_eq!(same.pieces[0].ends, Some([PieceEnd::Border; 2]));
-    }
-
-    /// Zero lines through a corner where every function vanishes (two contacts meeting): a
-    /// wedge is traced from the corner; an empty one leaves nothing, not even the corner.
-    #[test]
-    fn wedges_at_a_meeting_corner() {
-        let (dt, dr) = ((0.0, 1.0), (0.0, 1.0));
-        let opts = NonNegativeOptions {
-            meets: vec![[0.0, 0.0]],
-            ..NonNegativeOptions::default()
-        };
-        // r ≥ t/2 and r ≤ 2t: a wedge from the corner.
-        let wedge = [
-            affine([0.0, -0.5, 1.0], dt, dr, 0),
-            affine([0.0, 2.0, -1.0], dt, dr, 0),
-        ];
-        let s = nonnegative_set(&wedge, &opts, &|_| false).unwrap();
-        assert!(s.unresolved.is_empty());
-        assert_eq!(s.pieces.len(), 2);
-        assert!(s.pieces.iter().all(|p| p.pts.contains(&[0.0, 0.0])));
-        // r ≥ 2t and r ≤ t/2: only the corner.
-        let empty = [
-            affine([0.0, -2.0, 1.0], dt, dr, 0),
-            affine([0.0, 0.5, -1.0], dt, dr, 0),
-        ];
-        let s = nonnegative_set(&empty, &opts, &|_| false).unwrap();
-        assert!(s.pieces.is_empty() && s.unresolved.is_empty() && s.points.is_empty());
     }
 }

@@ -20,6 +20,7 @@
 mod assemble;
 mod best;
 mod cells;
+mod compute;
 mod cones;
 mod contact;
 mod corners;
@@ -29,14 +30,12 @@ mod model;
 mod near;
 mod options;
 mod polyline;
-mod prepared;
 mod proof;
 mod quality;
 mod region_set;
 mod types;
 
-pub use entries::grasps;
+pub use entries::{grasps, prepare, PreparedGrasps};
 pub use error::{Error, Result};
 pub use options::GraspOptions;
-pub use prepared::{prepare, PreparedGrasps};
 pub use types::{BestGrasp, ContactRegion, GraspRegion, Grasps};

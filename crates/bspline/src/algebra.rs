@@ -340,25 +340,23 @@ impl BSpline {
             return Err(Error::ZeroDimension);
         };
         // Bring every part into one common space (where they do not share one already).
-        let shared = rest.iter().all(|g| first.same_space(g));
-        let mut acc: BSpline = (*first).clone();
-        let mut spaced: Vec<BSpline> = Vec::new();
-        if !shared {
+        let harmonized: Vec<BSpline>;
+        let spaced: Vec<&BSpline> = if rest.iter().all(|g| first.same_space(g)) {
+            parts.to_vec()
+        } else {
+            let mut acc: BSpline = (*first).clone();
             for g in rest {
                 acc = acc.harmonize(g)?.0;
             }
-            spaced = parts
+            harmonized = parts
                 .iter()
                 .map(|g| g.harmonize(&acc).map(|(g, _)| g))
                 .collect::<Result<_>>()?;
-        }
-        let spaced: Vec<&BSpline> = if shared {
-            parts.to_vec()
-        } else {
-            spaced.iter().collect()
+            harmonized.iter().collect()
         };
+        let space = spaced[0];
         let dim: usize = spaced.iter().map(|g| g.dim()).sum();
-        let n = acc.n_ctrl();
+        let n = space.n_ctrl();
         let mut coefs = Vec::with_capacity(n * dim);
         for i in 0..n {
             for g in &spaced {
@@ -366,9 +364,9 @@ impl BSpline {
             }
         }
         Ok(BSpline::from_raw(
-            acc.degree(),
+            space.degree(),
             dim,
-            acc.knots().to_vec(),
+            space.knots().to_vec(),
             coefs,
         ))
     }

@@ -69,15 +69,12 @@ fn straight(curve: &Rational) -> Option<[[f64; 2]; 2]> {
 
 /// `parts` in one spline space (common degree, merged knots).
 fn in_one_space(parts: [BSpline; 3]) -> Result<[BSpline; 3]> {
-    let mut common = parts[0].clone();
-    for g in &parts[1..] {
-        common = common.harmonize(g)?.0;
-    }
-    let [a, b, c] = parts;
+    // (Stacking harmonises its parts; the components are the parts in the common space.)
+    let stacked = BSpline::stack(&[&parts[0], &parts[1], &parts[2]])?;
     Ok([
-        a.harmonize(&common)?.0,
-        b.harmonize(&common)?.0,
-        c.harmonize(&common)?.0,
+        stacked.component(0)?,
+        stacked.component(1)?,
+        stacked.component(2)?,
     ])
 }
 

@@ -170,6 +170,10 @@ class BestGrasp:
     """(2,): the second contact."""
     min_friction: float
     """The least friction for which the pair is force closure (0 at an antipodal pair)."""
+    toward: npt.NDArray[np.float64]
+    """(k, 2): stretches [u0, u1] round corners the region does not reach, toward which its
+    least friction falls unattained: pairs with a finger there may need less friction than
+    this one, no other pair of the region does (empty where the least is attained)."""
 
 class GraspRegion:
     """A connected region of force-closure pairs (s, t), s < t."""

@@ -260,7 +260,7 @@ impl PyGraspRegion {
     #[getter]
     fn best(&self) -> PyBestGrasp {
         PyBestGrasp {
-            best: self.region.best,
+            best: self.region.best.clone(),
         }
     }
 
@@ -361,6 +361,15 @@ impl PyBestGrasp {
     #[getter]
     fn min_friction(&self) -> f64 {
         self.best.min_friction
+    }
+
+    /// Stretches `[u0, u1]` of the curve's parameter round corners the region does not reach
+    /// (a reflex corner) toward which its least friction falls without being attained: pairs
+    /// with a finger in one may need less friction than this one, no other pair of the region
+    /// does. A `(k, 2)` array, empty where the least friction is attained.
+    #[getter]
+    fn toward<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        points2(py, &self.best.toward)
     }
 
     fn __repr__(&self) -> String {

@@ -312,6 +312,21 @@ def test_the_document_is_the_tools_where_the_tool_has_the_command() -> None:
     assert curvekit.grasps(path, 0.3).to_dict() == json.loads(done.stdout)
 
 
+def test_stretches_spared_toward_a_reflex_corner_are_the_tools() -> None:
+    # Octicons' agent icon: a region's least friction falls toward a pair of reflex corners
+    # (which take no part); its best grasp is proven but for pairs with a finger beside them.
+    path = str(FIXTURES / "corpus" / "icons" / "octicons" / "agent-24.svg")
+    g = curvekit.grasps(curvekit.read(path, pick=0), 0.3)
+    assert g.certified
+    spared = [r.best.toward for r in g.regions if len(r.best.toward)]
+    assert spared and all(t.shape[1] == 2 and np.all(t[:, 0] < t[:, 1]) for t in spared)
+    assert all(r.best.toward.shape == (0, 2) for r in g.regions if not len(r.best.toward))
+    done = run_tool("grasps", path, "--friction", "0.3", "--json", "--pick", "0")
+    assert done.returncode == 0, done.stderr
+    tool = [r["best"].get("toward", []) for r in json.loads(done.stdout)["regions"]]
+    assert [r.best.toward.tolist() for r in g.regions] == tool
+
+
 POLYGONS = {
     "square": [[0, 0], [2, 0], [2, 2], [0, 2]],
     "rectangle": [[0, 0], [3, 0], [3, 1], [0, 1]],

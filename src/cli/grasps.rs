@@ -215,6 +215,14 @@ pub(super) fn text(curve: &Curve, found: &Grasps, stats: Option<&Stats>) -> Stri
             n(b.q[1]),
             n(b.min_friction)
         );
+        for [u0, u1] in &b.toward {
+            let _ = writeln!(
+                s,
+                "       less friction only with a finger in [{}, {}] (toward a corner)",
+                n(*u0),
+                n(*u1)
+            );
+        }
         match &r.contact {
             Some(c) => {
                 let _ = writeln!(

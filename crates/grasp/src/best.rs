@@ -91,12 +91,16 @@ pub(crate) fn most_robust(
         }
     }
     for l in &region.lines {
-        for k in 0..=SAMPLES_ALONG {
-            consider(
-                lerp(l[0], l[1], k as f64 / SAMPLES_ALONG as f64),
-                &mut exact,
-            );
-        }
+        // The best sample along the line, then a search along it between its neighbours
+        // (the least friction may fall toward an end, as toward a reflex corner's line).
+        let at = |x: f64| lerp(l[0], l[1], x);
+        let Some((k, _)) = (0..=SAMPLES_ALONG)
+            .map(|k| (k, angle(at(k as f64 / SAMPLES_ALONG as f64))))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+        else {
+            continue;
+        };
+        consider(at(along(&|x| angle(at(x)), k)), &mut exact);
     }
     for &p in &region.points {
         consider(p, &mut exact);
@@ -131,6 +135,30 @@ pub(crate) fn most_robust(
         return (region.parts.first().map_or([0.0; 2], |p| p[0]), false);
     };
     (in_triangle(n, x[0], x[1]), ax <= ANTIPODAL_ANGLE)
+}
+
+/// The share of the way along a line (sampled at [`SAMPLES_ALONG`] steps) where `angle` is
+/// least, by a compass search from the sample `k` in steps halved from one sample's down to
+/// [`FINEST_STEP`], staying on the line.
+fn along(angle: &dyn Fn(f64) -> f64, k: usize) -> f64 {
+    let mut x = k as f64 / SAMPLES_ALONG as f64;
+    let mut ax = angle(x);
+    let mut step = 1.0 / SAMPLES_ALONG as f64;
+    for _ in 0..SEARCH_STEPS {
+        if step <= FINEST_STEP {
+            break;
+        }
+        let better = [x - step, x + step]
+            .into_iter()
+            .filter(|y| (0.0..=1.0).contains(y))
+            .map(|y| (y, angle(y)))
+            .find(|&(_, ay)| ay < ax);
+        match better {
+            Some((y, ay)) => (x, ax) = (y, ay),
+            None => step *= 0.5,
+        }
+    }
+    x
 }
 
 /// The point a share `x` of the way from `a` to `b`.

@@ -13,6 +13,7 @@ use crate::polyline::{bounds, signed_area};
 use crate::proof::{none_below, Below};
 use crate::quality::{force_closure, min_friction};
 use crate::region_set::{deepest, depth, holds_or_touches, in_triangle};
+use crate::spared::Spared;
 use crate::types::{BestGrasp, ContactRegion, GraspRegion, Grasps};
 use curve::follow_image;
 use numeric::certificate::{Doubt, Doubts};
@@ -84,13 +85,29 @@ pub(crate) fn grasps_of(
             if proven || !(least > 0.0 && least.is_finite()) {
                 break;
             }
-            match none_below(model, opts, widths, r, least, chord)? {
+            match none_below(model, opts, widths, r, least, chord, &Spared::default())? {
                 Below::None => proven = true,
                 Below::Unknown => break,
                 Below::Beaten(p) => {
                     let (x, _) = descend(model, r, p, chord);
                     center = in_triangle(model.n(), x[0], x[1]);
                 }
+            }
+        }
+        // Where the least friction falls toward a joint's line the region does not hold (a
+        // reflex corner, or two joints at one point), no pair attains it: what is proven is
+        // that only pairs with a finger beside that joint need less than the best found.
+        let mut toward = Spared::default();
+        if !proven {
+            let least = min_friction(model, center[0], center[1]);
+            let spared = Spared::toward(model, r, center, chord);
+            if !spared.is_empty()
+                && least > 0.0
+                && least.is_finite()
+                && none_below(model, opts, widths, r, least, chord, &spared)? == Below::None
+            {
+                proven = true;
+                toward = spared;
             }
         }
         let mut region_doubts = r.doubts.clone();
@@ -136,7 +153,7 @@ pub(crate) fn grasps_of(
         // joined two: no region's identity is proven then.
         let certified = r.doubts.is_empty() && !unresolved;
         doubts.join(region_doubts);
-        found.push(output(model, chord, r, center, contact, certified));
+        found.push(output(model, chord, r, center, &toward, contact, certified));
     }
     Ok(Grasps {
         friction: opts.friction,
@@ -172,6 +189,7 @@ fn output(
     chord: f64,
     r: &RawRegion,
     center: [f64; 2],
+    toward: &Spared,
     contact: Option<([f64; 2], [f64; 2])>,
     certified: bool,
 ) -> GraspRegion {
@@ -229,6 +247,11 @@ fn output(
             p: model.global_point(center[0]),
             q: model.global_point(center[1]),
             min_friction: min_friction(model, center[0], center[1]),
+            toward: toward
+                .joints
+                .iter()
+                .map(|&k| [k - toward.by, k + toward.by].map(|u| model.document_param(u)))
+                .collect(),
         },
         certified,
     }

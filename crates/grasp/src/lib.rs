@@ -33,6 +33,7 @@ mod polyline;
 mod proof;
 mod quality;
 mod region_set;
+mod spared;
 mod types;
 
 pub use entries::{grasps, prepare, PreparedGrasps};

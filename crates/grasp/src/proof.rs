@@ -16,6 +16,7 @@ use crate::options::GraspOptions;
 use crate::polyline::bounds;
 use crate::quality::{force_closure, min_friction};
 use crate::region_set::{deepest, depth, held_inside, holds};
+use crate::spared::{Spared, Witness};
 use curve::distance_to_segment;
 use numeric::certificate::Doubts;
 use numeric::tolerance::Size;
@@ -42,7 +43,8 @@ pub(crate) enum Below {
 }
 
 /// Whether any pair of `region` (a region of the set at `opts.friction`, whose best grasp
-/// needs the friction `least`) is force closure at a friction [`BEST_GAP`] below.
+/// needs the friction `least`) is force closure at a friction [`BEST_GAP`] below, leaving out
+/// the pairs with a finger in a stretch `spared`.
 pub(crate) fn none_below(
     model: &Model<'_>,
     opts: &GraspOptions,
@@ -50,6 +52,7 @@ pub(crate) fn none_below(
     region: &RawRegion,
     least: f64,
     chord: f64,
+    spared: &Spared,
 ) -> Result<Below> {
     let friction = least * (1.0 - BEST_GAP);
     let lower = GraspOptions { friction, ..*opts };
@@ -57,9 +60,14 @@ pub(crate) fn none_below(
     let near = NearContacts::new(model, friction);
     // A pair the lower set holds beats the best grasp where it lies a chord inside the
     // region; one clearly outside says nothing of it.
-    let beats =
-        |p: [f64; 2]| held_inside(region, n, p, chord) && min_friction(model, p[0], p[1]) < least;
-    let outside = |p: [f64; 2]| !holds(region, n, p[0], p[1]) && depth(region, p) > 2.0 * chord;
+    let beats = |p: [f64; 2]| {
+        !spared.spares(n, p)
+            && held_inside(region, n, p, chord)
+            && min_friction(model, p[0], p[1]) < least
+    };
+    let outside = |p: [f64; 2]| {
+        spared.spares(n, p) || !holds(region, n, p[0], p[1]) && depth(region, p) > 2.0 * chord
+    };
     let edges: Vec<[[f64; 2]; 2]> = region
         .parts
         .iter()
@@ -101,28 +109,41 @@ pub(crate) fn none_below(
         }
         for piece in &lower_set.pieces {
             // Each chord of the piece (within the tolerance of the lower set's boundary) keeps
-            // clear of the region: its ends outside, and apart from every edge of the region.
+            // clear of the region: its ends outside, and apart from every edge of the region;
+            // or it lies in a spared stretch.
             for w in piece.windows(2) {
-                let clear = outside(w[0])
-                    && outside(w[1])
-                    && edges
-                        .iter()
-                        .all(|e| segments_apart(w[0], w[1], e[0], e[1]) > 2.0 * chord);
+                let clear = spared.spares_segment(n, w[0], w[1], chord)
+                    || outside(w[0])
+                        && outside(w[1])
+                        && edges
+                            .iter()
+                            .all(|e| segments_apart(w[0], w[1], e[0], e[1]) > 2.0 * chord);
                 if !clear {
                     return Ok(Below::Unknown);
                 }
             }
         }
-        if lower_set.pieces.is_empty() && lower_set.points.is_empty() {
-            // No boundary crosses the box: it is all in the lower set or all out, as one
-            // point of the part is.
-            let single = RawRegion {
-                parts: vec![part.clone()],
-                holes: region.holes.clone(),
-                ..RawRegion::default()
+        let crossed = !(lower_set.pieces.is_empty() && lower_set.points.is_empty());
+        if !crossed || !spared.is_empty() {
+            // No boundary crosses the box outside the spared stretches: the part outside
+            // them is all in the lower set or all out, as one point of it is (where that
+            // rest is one piece).
+            let witness = if spared.is_empty() {
+                let single = RawRegion {
+                    parts: vec![part.clone()],
+                    holes: region.holes.clone(),
+                    ..RawRegion::default()
+                };
+                deepest(&single, 1)
+                    .first()
+                    .map_or(Witness::Unknown, |&(p, _)| Witness::Pair(p))
+            } else {
+                spared.witness(n, part, &region.holes)
             };
-            let Some(&(p, _)) = deepest(&single, 1).first() else {
-                return Ok(Below::Unknown);
+            let p = match witness {
+                Witness::Pair(p) => p,
+                Witness::Spared => continue,
+                Witness::Unknown => return Ok(Below::Unknown),
             };
             if force_closure(model, friction.atan(), widths, p) {
                 return Ok(if beats(p) {
@@ -160,7 +181,7 @@ pub(crate) fn none_below(
             for k in 0..=LINE_SAMPLES {
                 let v = piece[0] + k as f64 / LINE_SAMPLES as f64 * (piece[1] - piece[0]);
                 let p = [u.min(v), u.max(v)];
-                if holds(region, n, p[0], p[1]) {
+                if holds(region, n, p[0], p[1]) && !spared.spares(n, p) {
                     return Ok(if min_friction(model, p[0], p[1]) < least {
                         Below::Beaten(p)
                     } else {

@@ -53,10 +53,34 @@ pub(crate) fn holds_or_touches(region: &RawRegion, n: usize, p: [f64; 2], by: f6
     holds(region, n, s, t) || depth(region, [s, t]) <= by || depth(region, [t, s + n as f64]) <= by
 }
 
-/// Whether the region holds the pair `p` at least `by` inside its polylines (so whichever side
-/// of the exact edge a polyline passes, within its chord tolerance, the exact region holds it).
+/// Whether the region holds the pair `p` at least `by` inside its traced polylines (so
+/// whichever side of the exact edge a polyline passes, within its chord tolerance, the exact
+/// region holds it). Edges along a joint's line are exact (a cell's border), and may be
+/// approached as near as any pair: beyond them lies the next cell, another part of the region
+/// where the joint is smooth.
 pub(crate) fn held_inside(region: &RawRegion, n: usize, p: [f64; 2], by: f64) -> bool {
-    holds(region, n, p[0], p[1]) && depth(region, p) >= by
+    holds(region, n, p[0], p[1]) && traced_depth(region, p) >= by
+}
+
+/// How far `p` lies from the region's polylines but for their edges along a joint's line.
+fn traced_depth(region: &RawRegion, p: [f64; 2]) -> f64 {
+    let on_border = |a: [f64; 2], b: [f64; 2]| {
+        (0..2).any(|d| {
+            let k = a[d].round();
+            (a[d] - k).abs() <= ON_LINE && (b[d] - k).abs() <= ON_LINE
+        })
+    };
+    region
+        .parts
+        .iter()
+        .chain(&region.holes)
+        .flat_map(|l| {
+            l.windows(2)
+                .filter(|w| !on_border(w[0], w[1]))
+                .map(|w| squared_distance_to_segment(p, w[0], w[1]))
+        })
+        .fold(f64::INFINITY, f64::min)
+        .sqrt()
 }
 
 /// How far `p` lies from the region's polylines (in the profile's parameter).

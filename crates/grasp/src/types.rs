@@ -70,9 +70,9 @@ pub struct ContactRegion {
 
 /// A region's most robust grasp: the pair farthest (in angle) from the edges of both
 /// friction cones. An antipodal pair where the region holds one; otherwise found by search,
-/// and proven the most robust to one part in 10⁴ of its `min_friction` unless the result
-/// reports `GraspBestUnproven`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+/// and proven the most robust to one part in 10⁴ of its `min_friction` (but for pairs with a
+/// finger in a stretch of `toward`) unless the result reports `GraspBestUnproven`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BestGrasp {
     /// The first contact's parameter.
     pub s: f64,
@@ -85,6 +85,13 @@ pub struct BestGrasp {
     /// The least friction coefficient for which this pair is force closure (0 at an
     /// antipodal pair).
     pub min_friction: f64,
+    /// Stretches `[u0, u1]` of the curve's parameter, each round a corner the region does
+    /// not reach (a reflex corner, or one of two corners at one point) toward which its least
+    /// friction falls without being attained: pairs with a finger in one may need less
+    /// friction than this one, no other pair of the region does. Empty where the least
+    /// friction is attained. A stretch may run across the seam, as a contact region's.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub toward: Vec<[f64; 2]>,
 }
 
 numeric::impl_verdict!(Grasps);

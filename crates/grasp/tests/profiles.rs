@@ -4,42 +4,44 @@
 //! decided from the profile's points and tangents alone agrees with membership in the
 //! regions (the corner lines are measure zero: the grid never meets them).
 
-use curve::{ParamCurve, Profile};
-use grasp::{grasps, GraspOptions, Grasps};
+use curve::Profile;
+use grasp::{grasps, GraspOptions, GraspRegion, Grasps};
 use numeric::certificate::Doubt;
 use proptest::prelude::*;
 use testkit::boundary_oracle::{off_polylines, winding};
+use testkit::grasp_oracle::{least_friction, slip_angle};
 use testkit::profiles::{bezier_chain_profile, stepped_polygon};
 
 /// Grid points per side of the square of pairs.
 const GRID: usize = 80;
 
-/// The larger angle between a contact's inward normal and the chord to the other, at the
-/// profile's document parameters.
-fn slip_angle(p: &Profile, s: f64, t: f64) -> f64 {
-    let (js, jt) = (p.jet(p.internal_param(s)), p.jet(p.internal_param(t)));
-    let o = p.orientation();
-    let d = [jt.p.x - js.p.x, jt.p.y - js.p.y];
-    let angle = |tan: [f64; 2], d: [f64; 2]| {
-        let n = [-o * tan[1], o * tan[0]];
-        (tan[0] * d[0] + tan[1] * d[1])
-            .abs()
-            .atan2(n[0] * d[0] + n[1] * d[1])
-    };
-    angle([js.d1.x, js.d1.y], d).max(angle([jt.d1.x, jt.d1.y], [-d[0], -d[1]]))
+fn held(g: &Grasps, p: [f64; 2]) -> bool {
+    g.regions.iter().any(|r| region_holds(r, p))
 }
 
-fn held(g: &Grasps, p: [f64; 2]) -> bool {
-    g.regions.iter().any(|r| {
-        let parts: Vec<&Vec<[f64; 2]>> = if r.parts.is_empty() {
-            vec![&r.boundary]
-        } else {
-            r.parts.iter().collect()
-        };
-        parts.iter().any(|part| winding(part, p) != 0)
-            && !r.holes.iter().any(|h| winding(h, p) != 0)
-    })
+fn region_holds(r: &GraspRegion, p: [f64; 2]) -> bool {
+    let parts: Vec<&Vec<[f64; 2]>> = if r.parts.is_empty() {
+        vec![&r.boundary]
+    } else {
+        r.parts.iter().collect()
+    };
+    parts.iter().any(|part| winding(part, p) != 0) && !r.holes.iter().any(|h| winding(h, p) != 0)
 }
+
+/// Whether the pair `p` has a finger in one of the stretches the region's best grasp's proof
+/// spares (read modulo the period).
+fn spared(r: &GraspRegion, (a, b): (f64, f64), p: [f64; 2]) -> bool {
+    r.best
+        .toward
+        .iter()
+        .any(|&[lo, hi]| p.iter().any(|&u| (u - lo).rem_euclid(b - a) <= hi - lo))
+}
+
+/// The share of its friction by which a proven best grasp is the most robust of its region.
+const BEST_PROVEN_SHARE: f64 = 1e-4;
+
+/// The rounding of a grid pair's least friction (from points and tangents).
+const FRICTION_ROUNDING: f64 = 1e-9;
 
 fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
     let opts = GraspOptions::friction(mu);
@@ -68,6 +70,8 @@ fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
                 .chain(r.holes.iter().map(Vec::as_slice))
         })
         .collect();
+    // Per region, the least friction its grid pairs need outside the stretches spared.
+    let mut least = vec![f64::INFINITY; g.regions.len()];
     for i in 0..GRID {
         for j in i + 1..GRID {
             let s = a + (b - a) * (i as f64 + 0.31) / GRID as f64;
@@ -84,15 +88,29 @@ fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
                 t,
                 slip_angle(p, s, t)
             );
+            for (k, r) in g.regions.iter().enumerate() {
+                if region_holds(r, [s, t]) && !spared(r, (a, b), [s, t]) {
+                    least[k] = least[k].min(least_friction(p, s, t));
+                }
+            }
         }
     }
-    for r in &g.regions {
+    let proven = !g.doubts.iter().any(|d| *d == Doubt::GraspBestUnproven);
+    for (r, least) in g.regions.iter().zip(least) {
         prop_assert!(r.certified || !g.doubts.is_empty());
         prop_assert!(
             r.best.min_friction <= mu * (1.0 + 1e-9) + 1e-12,
             "best {:?}",
             r.best
         );
+        if proven {
+            prop_assert!(
+                least >= r.best.min_friction * (1.0 - BEST_PROVEN_SHARE) - FRICTION_ROUNDING,
+                "a grid pair of the region needs friction {}, its proven best {:?}",
+                least,
+                r.best
+            );
+        }
     }
     Ok(())
 }

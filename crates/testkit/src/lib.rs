@@ -11,6 +11,7 @@
 //! - [`boundary_oracle`]: distances to a profile by dense sampling and golden-section search,
 //!   sharing no code with the crates; the exact winding number of a polygon.
 //! - [`evaluation_only`]: a curve known by evaluation only (no exact form).
+//! - [`grasp_oracle`]: force closure from a profile's points and tangents alone.
 //! - [`far_joints`]: profiles with smooth joints (stadiums, filleted rectangles, D-shapes,
 //!   ovals of arcs) for the tests far from the origin.
 //! - [`outlines`]: the benchmarks' parts (the pocket, the CAD outline, gears, star polygons),
@@ -26,6 +27,7 @@
 pub mod boundary_oracle;
 pub mod evaluation_only;
 pub mod far_joints;
+pub mod grasp_oracle;
 #[doc(hidden)]
 pub mod near;
 pub mod outlines;

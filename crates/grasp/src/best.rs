@@ -90,16 +90,31 @@ pub(crate) fn most_robust(
             }
         }
     }
-    for l in &region.lines {
-        // The best sample along the line, then a search along it between its neighbours
-        // (the least friction may fall toward an end, as toward a reflex corner's line).
+    // Each line's best sample; then, from the best line on, a search along the line between
+    // its sample's neighbours (the least friction may fall toward an end, as toward a reflex
+    // corner's line) while a line's sample beats the best found (a search gains less than
+    // the samples' spacing tells apart).
+    let mut line_samples: Vec<(&[[f64; 2]; 2], usize, f64)> = region
+        .lines
+        .iter()
+        .filter_map(|l| {
+            (0..=SAMPLES_ALONG)
+                .map(|k| {
+                    (
+                        l,
+                        k,
+                        angle(lerp(l[0], l[1], k as f64 / SAMPLES_ALONG as f64)),
+                    )
+                })
+                .min_by(|a, b| a.2.total_cmp(&b.2))
+        })
+        .collect();
+    line_samples.sort_by(|a, b| a.2.total_cmp(&b.2));
+    for (l, k, sampled) in line_samples {
+        if exact.is_some_and(|(_, b)| b < sampled) {
+            break;
+        }
         let at = |x: f64| lerp(l[0], l[1], x);
-        let Some((k, _)) = (0..=SAMPLES_ALONG)
-            .map(|k| (k, angle(at(k as f64 / SAMPLES_ALONG as f64))))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-        else {
-            continue;
-        };
         consider(at(along(&|x| angle(at(x)), k)), &mut exact);
     }
     for &p in &region.points {

@@ -2,9 +2,11 @@
 //!
 //! A region beside a reflex corner's line (the corner takes no part) or beside a pair of
 //! joints at one point (no chord) may need less and less friction toward it: its infimum is
-//! not attained, and the best grasp found lies a chord inside the region's polyline. What
-//! can be proven then is that every pair of the region needing less friction has a finger
-//! within a stretch round such a joint: those pairs are spared by the proof.
+//! not attained. The best grasp found approaches it, but where the search stops a chord
+//! short (a traced edge beside the corner) or the set at a friction just below is finer
+//! there than its trace resolves, the proof fails. What can be proven then is that every
+//! pair of the region needing less friction has a finger within a stretch round such a
+//! joint: those pairs are spared by the proof.
 
 use crate::assemble::RawRegion;
 use crate::model::{Cone, Model};
@@ -12,7 +14,7 @@ use crate::polyline::bounds;
 use crate::region_set::deepest;
 
 /// A best grasp is taken to approach a joint's line when it lies this many chords from it
-/// (it is kept one chord inside the region's polylines, themselves a chord from the edge).
+/// (the search keeps a chord inside traced polylines, themselves a chord from the edge).
 const APPROACH_CHORDS: f64 = 4.0;
 
 /// The stretch spared round each joint, in units of the best grasp's distance from its line
@@ -49,7 +51,7 @@ impl Spared {
     ) -> Self {
         let n = model.n() as f64;
         let mut joints = Vec::new();
-        let mut nearest = chord;
+        let mut reach = chord;
         for x in best {
             let k = x.round();
             let distance = (x - k).abs();
@@ -69,13 +71,13 @@ impl Spared {
                 || region.points.iter().any(on_line);
             if corner && !held && !joints.contains(&joint) {
                 joints.push(joint);
-                nearest = nearest.max(distance);
+                reach = reach.max(distance);
             }
         }
         // (And the clearance the lower set's traced pieces need inside the stretch.)
         Self {
             joints,
-            by: STRETCH_PER_DISTANCE * nearest + PIECE_CLEARANCE * chord,
+            by: STRETCH_PER_DISTANCE * reach + PIECE_CLEARANCE * chord,
         }
     }
 

@@ -1,6 +1,7 @@
 //! `grasps` on arbitrary curves and frictions: an error or a result, never a panic or a hang;
 //! results hold finite numbers, best grasps within the domain (or their triangle) and on the
-//! curve, and every certified region's best grasp needs no more friction than given.
+//! curve, and every certified region's best grasp needs no more friction than given; the
+//! stretches its proof spares are proper intervals shorter than the period.
 #![no_main]
 
 #[path = "common.rs"]
@@ -41,7 +42,10 @@ fuzz_target!(|input: Input| {
     let domain = curve.domain();
     let period = domain.1 - domain.0;
     for r in &g.regions {
-        let b = r.best;
+        let b = &r.best;
+        for &[u0, u1] in &b.toward {
+            assert!(u0 < u1 && u1 - u0 < period, "spared stretch [{u0}, {u1}] of {b:?}");
+        }
         for (u, p) in [(b.s, b.p), (b.t, b.q)] {
             assert!(
                 (domain.0 - 1e-9 * period..=domain.1 + 1e-9 * period).contains(&u),

@@ -430,31 +430,40 @@ fn drawing_grasps(name: &str) -> Value {
     curvekit_json(&["grasps", f.as_str(), "--friction", "0.3", "--pick", "0"])
 }
 
-/// Font Awesome's octagon: eight straight sides, two of them 0.05° off parallel. Its cells of
-/// two sides are clipped in closed form: four certified regions round its four pairs of
-/// opposite sides, their outlines a few straight pieces (the subdivision once traced 184,627
-/// vertices for one of them, in 4 s).
+/// Font Awesome's octagon: eight straight sides, two of them 0.05° off parallel, its corners
+/// short curves meeting the sides with reflex kinks of 0.02°. Its cells of two sides are
+/// clipped in closed form: the regions round its four pairs of opposite sides, their
+/// outlines a few straight pieces (the subdivision once traced 184,627 vertices for one of
+/// them, in 4 s). A finger at a reflex kink takes no part, so the pairs of a corner with it
+/// cut the corner's line: four of the regions come apart there, eight in all (they were
+/// glued through those pairs, and the count depended on where the outline started). The
+/// two beside the kinks without an antipodal pair keep their best grasps unproven.
 #[test]
-fn a_drawn_octagon_has_four_certified_regions_with_straight_edges() {
+fn a_drawn_octagon_s_regions_have_straight_edges_and_part_at_its_kinks() {
     let d = drawing_grasps("icons/fontawesome-solid/octagon.svg");
-    assert_eq!(d["certified"], true);
+    if d["certified"] != true {
+        assert_eq!(
+            d["reason"],
+            "a grasp region's most robust grasp was found by a local search"
+        );
+    }
     let regions = d["regions"].as_array().unwrap();
-    assert_eq!(regions.len(), 4);
+    assert_eq!(regions.len(), 8);
+    let mut straight = 0;
+    let mut antipodal = 0;
     for r in regions {
         assert_eq!(r["certified"], true);
-        assert!(num(&r["best"]["min_friction"]) < 1e-12);
-        // (Its largest part, in a cell of two straight sides, a few straight pieces; the
-        // parts reaching the corners' short curved stretches a few dozen vertices each.)
+        antipodal += usize::from(num(&r["best"]["min_friction"]) < 1e-12);
+        // (A part in a cell of two straight sides, a few straight pieces; the parts reaching
+        // the corners' short curved stretches a few dozen vertices each.)
         let boundary: Vec<[f64; 2]> = r["boundary"].as_array().unwrap().iter().map(pair).collect();
-        assert!(
-            (4..=8).contains(&boundary.len()),
-            "{} vertices",
-            boundary.len()
-        );
+        straight += usize::from((4..=8).contains(&boundary.len()));
         for part in polylines(&r["parts"]) {
             assert!(part.len() <= 100, "{} vertices", part.len());
         }
     }
+    assert_eq!(straight, 4);
+    assert_eq!(antipodal, 6);
 }
 
 /// Glyphs whose best grasps lie at a pair of joints their regions reach (the search from

@@ -141,7 +141,7 @@ fn best_grasps_toward_reflex_corners_are_proven() {
     for name in [
         "glyphs/noto-sans/0034-four.svg",
         "dxf/gear.dxf",
-        "icons/octicons/agent-24.svg",
+        "icons/remixicon-fill/home-smile-fill.svg",
         "icons/ionicons-filled/volume-high.svg",
         "icons/heroicons-solid/light-bulb.svg",
     ] {

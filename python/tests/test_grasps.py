@@ -313,9 +313,9 @@ def test_the_document_is_the_tools_where_the_tool_has_the_command() -> None:
 
 
 def test_stretches_spared_toward_a_reflex_corner_are_the_tools() -> None:
-    # Octicons' agent icon: a region's least friction falls toward a pair of reflex corners
-    # (which take no part); its best grasp is proven but for pairs with a finger beside them.
-    path = str(FIXTURES / "corpus" / "icons" / "octicons" / "agent-24.svg")
+    # Ionicons' volume icon: a region's least friction falls toward a reflex corner (which
+    # takes no part); its best grasp is proven but for pairs with a finger beside it.
+    path = str(FIXTURES / "corpus" / "icons" / "ionicons-filled" / "volume-high.svg")
     g = curvekit.grasps(curvekit.read(path, pick=0), 0.3)
     assert g.certified
     spared = [r.best.toward for r in g.regions if len(r.best.toward)]

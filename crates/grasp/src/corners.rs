@@ -79,6 +79,11 @@ pub(crate) fn corner_lines(
         // need only be on the inner side of one edge).
         let (lo, hi) = (rotate(before, -turn * alpha), rotate(after, turn * alpha));
         let wide = span + 2.0 * alpha > PI;
+        let at_reflex = |c: f64| {
+            let k = c.round();
+            (c - k).abs() <= SHARED_END * (1.0 + k.abs())
+                && model.joint_at(k).is_some_and(|j| j.cone == Cone::Reflex)
+        };
         let mut pieces = Vec::new();
         for (j, form) in model.forms.iter().enumerate() {
             if !wanted(k, [j as f64, (j + 1) as f64]) {
@@ -113,8 +118,13 @@ pub(crate) fn corner_lines(
             for w in cuts.windows(2) {
                 if w[1] > w[0] && inside(0.5 * (w[0] + w[1])) {
                     let piece = [model.profile_param(j, w[0]), model.profile_param(j, w[1])];
+                    // (Intervals meeting at a joint of the other finger are one, but at a
+                    // reflex corner, whose pair with this corner is no grasp: the line is
+                    // cut there.)
                     match pieces.last_mut() {
-                        Some(last) if piece_touches(last, &piece) => last[1] = piece[1],
+                        Some(last) if piece_touches(last, &piece) && !at_reflex(last[1]) => {
+                            last[1] = piece[1]
+                        }
                         _ => pieces.push(piece),
                     }
                 }
@@ -136,11 +146,6 @@ pub(crate) fn corner_lines(
         // corner, which takes no part: a segment's condition touching zero at its end (the
         // reflex corner's pair exactly at the cone's edge, as round numbers make it) leaves
         // such a sliver.
-        let at_reflex = |c: f64| {
-            let k = c.round();
-            (c - k).abs() <= SHARED_END * (1.0 + k.abs())
-                && model.joint_at(k).is_some_and(|j| j.cone == Cone::Reflex)
-        };
         pieces.retain(|p| !(p[1] - p[0] <= SHARED_END * (1.0 + p[1].abs()) && at_reflex(p[0])));
         pieces.sort_by(|x, y| x[0].total_cmp(&y[0]));
         out.push(CornerLine {

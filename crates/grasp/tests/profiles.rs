@@ -197,6 +197,32 @@ fn a_sliver_s_best_grasp_is_force_closure() {
     check(&p, 0.5323860168239313).unwrap();
 }
 
+/// A chain whose corners 0 and 1 have lines of pairs running, in the other finger, through
+/// the reflex corner 3: the pair of a corner with a reflex corner is no grasp, so each line is
+/// cut there, and the two regions it reaches on either side stay two (they were glued into
+/// one, and certified, where the seam did not cut the line; started at corner 3 they were
+/// two).
+#[test]
+fn a_corner_line_is_cut_where_the_other_finger_passes_a_reflex_corner() {
+    let radii = [0.6, 0.6, 0.9623899084810694, 0.6, 0.9640104697933801, 0.6];
+    let wobble = [
+        (0.0, 0.0),
+        (0.0, 0.0),
+        (0.0, -0.11022444340699881),
+        (0.0, 0.1374148912040726),
+        (0.0, 0.0),
+        (0.0, 0.0),
+    ];
+    let mu = 1.0350875222897833;
+    for start in [0, 3] {
+        let p = bezier_chain_profile(&radii, &wobble, &[false; 6], start, false).unwrap();
+        check(&p, mu).unwrap();
+        let g = grasps(&p, &GraspOptions::friction(mu)).unwrap();
+        assert!(g.doubts.is_empty(), "start {start}: {:?}", g.doubts);
+        assert_eq!(g.regions.len(), 2, "start {start}");
+    }
+}
+
 /// A rectilinear outline turned 45° at μ = 0.5: cones' edges run exactly through other
 /// corners (slopes 1/2 and 2 on a half-unit grid), whose conditions vanish at segments' ends
 /// to rounding. Those roots are the other finger at a joint, decided apart: no doubt is said

@@ -12,16 +12,15 @@ use curvekit::curve::Profile;
 use curvekit::grasp::{grasps, GraspOptions, GraspRegion};
 use curvekit::io::{read_curve_picked, CurveKind};
 use testkit::boundary_oracle::{off_polylines, winding};
-use testkit::grasp_oracle::{least_friction, least_friction_at_corner};
+use testkit::grasp_oracle::{
+    in_stretches, least_friction, least_friction_at_corner, BEST_PROVEN_SHARE,
+};
 
 /// Samples across each side of a region's box.
 const SAMPLES: usize = 120;
 
 /// Samples along each corner line.
 const LINE_SAMPLES: usize = 2000;
-
-/// The share of its friction by which a proven best grasp is the most robust of its region.
-const BEST_PROVEN_SHARE: f64 = 1e-4;
 
 /// The rounding of a sampled pair's least friction (from points and tangents).
 const FRICTION_ROUNDING: f64 = 1e-9;
@@ -36,14 +35,6 @@ fn drawn(name: &str) -> Profile {
         CurveKind::Profile(p) => *p,
         other => panic!("{name}: not a profile: {other:?}"),
     }
-}
-
-/// Whether a finger of the pair lies in one of the stretches the best grasp's proof spares.
-fn spared(r: &GraspRegion, (a, b): (f64, f64), p: [f64; 2]) -> bool {
-    r.best
-        .toward
-        .iter()
-        .any(|&[lo, hi]| p.iter().any(|&u| (u - lo).rem_euclid(b - a) <= hi - lo))
 }
 
 /// The least friction of the pairs sampled across a box `[lo, hi]` inside a region's parts
@@ -74,7 +65,7 @@ fn least_sampled(p: &Profile, r: &GraspRegion, (lo, hi): ([f64; 2], [f64; 2]), m
             if !parts.iter().any(|part| winding(part, x) != 0)
                 || r.holes.iter().any(|h| winding(h, x) != 0)
                 || off_polylines(x, edges()) <= margin
-                || spared(r, domain, x)
+                || in_stretches(&r.best.toward, domain, x)
             {
                 continue;
             }
@@ -110,7 +101,7 @@ fn least_on_corner_lines(p: &Profile, r: &GraspRegion) -> f64 {
             let mut pair = [0.0; 2];
             pair[d] = part[0][d];
             pair[1 - d] = x;
-            if !spared(r, domain, pair) {
+            if !in_stretches(&r.best.toward, domain, pair) {
                 least = least.min(least_friction_at_corner(p, part[0][d], x));
             }
         }

@@ -70,29 +70,26 @@ fn traced_depth(region: &RawRegion, p: [f64; 2]) -> f64 {
             (a[d] - k).abs() <= ON_LINE && (b[d] - k).abs() <= ON_LINE
         })
     };
-    region
-        .parts
-        .iter()
-        .chain(&region.holes)
-        .flat_map(|l| {
-            l.windows(2)
-                .filter(|w| !on_border(w[0], w[1]))
-                .map(|w| squared_distance_to_segment(p, w[0], w[1]))
-        })
-        .fold(f64::INFINITY, f64::min)
-        .sqrt()
+    distance_to_edges(region, p, |a, b| !on_border(a, b))
 }
 
 /// How far `p` lies from the region's polylines (in the profile's parameter).
 pub(crate) fn depth(region: &RawRegion, p: [f64; 2]) -> f64 {
+    distance_to_edges(region, p, |_, _| true)
+}
+
+/// How far `p` lies from the edges of the region's polylines that `counted` keeps.
+fn distance_to_edges(
+    region: &RawRegion,
+    p: [f64; 2],
+    counted: impl Fn([f64; 2], [f64; 2]) -> bool,
+) -> f64 {
     region
         .parts
         .iter()
         .chain(&region.holes)
-        .flat_map(|l| {
-            l.windows(2)
-                .map(|w| squared_distance_to_segment(p, w[0], w[1]))
-        })
+        .flat_map(|l| l.windows(2).filter(|w| counted(w[0], w[1])))
+        .map(|w| squared_distance_to_segment(p, w[0], w[1]))
         .fold(f64::INFINITY, f64::min)
         .sqrt()
 }

@@ -9,7 +9,7 @@ use grasp::{grasps, GraspOptions, GraspRegion, Grasps};
 use numeric::certificate::Doubt;
 use proptest::prelude::*;
 use testkit::boundary_oracle::{off_polylines, winding};
-use testkit::grasp_oracle::{least_friction, slip_angle};
+use testkit::grasp_oracle::{in_stretches, least_friction, slip_angle, BEST_PROVEN_SHARE};
 use testkit::profiles::{bezier_chain_profile, stepped_polygon};
 
 /// Grid points per side of the square of pairs.
@@ -27,18 +27,6 @@ fn region_holds(r: &GraspRegion, p: [f64; 2]) -> bool {
     };
     parts.iter().any(|part| winding(part, p) != 0) && !r.holes.iter().any(|h| winding(h, p) != 0)
 }
-
-/// Whether the pair `p` has a finger in one of the stretches the region's best grasp's proof
-/// spares (read modulo the period).
-fn spared(r: &GraspRegion, (a, b): (f64, f64), p: [f64; 2]) -> bool {
-    r.best
-        .toward
-        .iter()
-        .any(|&[lo, hi]| p.iter().any(|&u| (u - lo).rem_euclid(b - a) <= hi - lo))
-}
-
-/// The share of its friction by which a proven best grasp is the most robust of its region.
-const BEST_PROVEN_SHARE: f64 = 1e-4;
 
 /// The rounding of a grid pair's least friction (from points and tangents).
 const FRICTION_ROUNDING: f64 = 1e-9;
@@ -89,7 +77,7 @@ fn check(p: &Profile, mu: f64) -> Result<(), TestCaseError> {
                 slip_angle(p, s, t)
             );
             for (k, r) in g.regions.iter().enumerate() {
-                if region_holds(r, [s, t]) && !spared(r, (a, b), [s, t]) {
+                if region_holds(r, [s, t]) && !in_stretches(&r.best.toward, (a, b), [s, t]) {
                     least[k] = least[k].min(least_friction(p, s, t));
                 }
             }

@@ -3,6 +3,10 @@
 
 use curve::{ParamCurve, Profile};
 
+/// The share of its `min_friction` to which a grasp region's best grasp is proven the most
+/// robust of its region (the contract's "Grasps: compatible additions").
+pub const BEST_PROVEN_SHARE: f64 = 1e-4;
+
 /// The larger angle between a contact's inward normal and the chord to the other, at the
 /// profile's document parameters `s` and `t` (points off its corners: the normal of the
 /// segment there).
@@ -70,6 +74,14 @@ pub fn least_friction_at_corner(p: &Profile, corner: f64, t: f64) -> f64 {
     }
 }
 
+/// Whether a finger of the pair `p` lies in one of the `stretches` `[u0, u1]` of a curve's
+/// parameter on `domain` (read modulo its period, as a grasp region's `best.toward`).
+pub fn in_stretches(stretches: &[[f64; 2]], (a, b): (f64, f64), p: [f64; 2]) -> bool {
+    stretches
+        .iter()
+        .any(|&[lo, hi]| p.iter().any(|&u| (u - lo).rem_euclid(b - a) <= hi - lo))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -88,6 +100,14 @@ mod tests {
         // left): the top's normal is half off the chord.
         let f = least_friction_at_corner(&p, at(1.0, 0.0), at(2.0, 0.5));
         assert!((f - 0.5).abs() < 1e-12, "{f}");
+    }
+
+    #[test]
+    fn stretches_are_read_modulo_the_period() {
+        let around_seam = [[-0.1, 0.1]];
+        assert!(in_stretches(&around_seam, (0.0, 6.0), [3.0, 5.95]));
+        assert!(in_stretches(&around_seam, (0.0, 6.0), [0.05, 3.0]));
+        assert!(!in_stretches(&around_seam, (0.0, 6.0), [0.2, 5.8]));
     }
 
     #[test]

@@ -5,9 +5,10 @@
 
 use curve::shapes::Shape;
 use curve::{Boundary, ParamCurve, Profile, SplineCurve};
-use grasp::{BestGrasp, GraspOptions, GraspRegion, Grasps};
+use grasp::{GraspOptions, GraspRegion, Grasps};
 use numeric::certificate::Doubt;
 use testkit::boundary_oracle::{off_segment, winding};
+use testkit::grasp_oracle::{in_stretches, BEST_PROVEN_SHARE};
 
 /// Grid points per side of the square of pairs in the dense check.
 pub(crate) const GRID: usize = 90;
@@ -38,11 +39,6 @@ pub(crate) const JET_ROUNDING_ULPS: f64 = 64.0;
 /// the best is a minimum found to the parameter tolerance (1e-12 of the domain), where
 /// `min_friction` is flat; a grid point beats it only by rounding.
 pub(crate) const BEST_GRID_SLACK: f64 = 1e-9;
-
-/// The share of its friction by which a best grasp found by search (not an antipodal pair) is
-/// proven the most robust: the crate traces the set again this share below it and finds no
-/// pair of the region there.
-pub(crate) const BEST_PROVEN_SHARE: f64 = 1e-4;
 
 /// How far a reported point (a best grasp's or a contact end's) may lie from the curve's
 /// point at its parameter, relative to the curve's size and distance from the origin: both
@@ -412,7 +408,7 @@ pub(crate) fn check_result_of(
             for (k, r) in g.regions.iter().enumerate() {
                 // (Pairs with a finger in a stretch the best grasp's proof spares may need
                 // less: the region's least friction falls toward a corner there.)
-                if region_holds(r, domain, p) && !spared(&r.best, domain, p) {
+                if region_holds(r, domain, p) && !in_stretches(&r.best.toward, domain, p) {
                     least[k] = least[k].min(oracle.min_friction(s, t));
                 }
             }
@@ -430,15 +426,6 @@ pub(crate) fn check_result_of(
         check_contact(&oracle, domain, k, r)?;
     }
     Ok(seen)
-}
-
-/// Whether the pair `p` has a finger in one of the stretches `best.toward` (read modulo the
-/// domain's period).
-fn spared(best: &BestGrasp, (a, b): (f64, f64), p: [f64; 2]) -> bool {
-    let period = b - a;
-    best.toward
-        .iter()
-        .any(|&[lo, hi]| p.iter().any(|&u| (u - lo).rem_euclid(period) <= hi - lo))
 }
 
 /// The best grasp: force closure, in its region, its `min_friction` the oracle's, and no grid

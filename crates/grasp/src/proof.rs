@@ -15,7 +15,7 @@ use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use crate::polyline::bounds;
 use crate::quality::{force_closure, min_friction};
-use crate::region_set::{deepest, depth, held_inside, holds};
+use crate::region_set::{depth, held_inside, holds};
 use crate::spared::{Spared, Witness};
 use curve::distance_to_segment;
 use numeric::certificate::Doubts;
@@ -128,19 +128,7 @@ pub(crate) fn none_below(
             // No boundary crosses the box outside the spared stretches: the part outside
             // them is all in the lower set or all out, as one point of it is (where that
             // rest is one piece).
-            let witness = if spared.is_empty() {
-                let single = RawRegion {
-                    parts: vec![part.clone()],
-                    holes: region.holes.clone(),
-                    ..RawRegion::default()
-                };
-                deepest(&single, 1)
-                    .first()
-                    .map_or(Witness::Unknown, |&(p, _)| Witness::Pair(p))
-            } else {
-                spared.witness(n, part, &region.holes)
-            };
-            let p = match witness {
+            let p = match spared.witness(n, part, &region.holes) {
                 Witness::Pair(p) => p,
                 Witness::Spared => continue,
                 Witness::Unknown => return Ok(Below::Unknown),

@@ -5,8 +5,8 @@ use crate::polyline::{bounds, inside, signed_area};
 use curve::{distance_to_segment, squared_distance_to_segment};
 
 /// How close (in the profile's parameter) a pair must lie to a corner line or a single pair
-/// of a region to be on it.
-const ON_LINE: f64 = 1e-9;
+/// of a region to be on it, and a polyline's vertex to a joint's line (a cell's border).
+pub(crate) const ON_LINE: f64 = 1e-9;
 
 /// The pair `(s, t)` (any reals, read modulo `n`, in either order) as the point of the
 /// triangle `s ≤ t` of `[0, n)`.

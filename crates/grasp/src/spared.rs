@@ -11,7 +11,7 @@
 use crate::assemble::RawRegion;
 use crate::model::{Cone, Model};
 use crate::polyline::bounds;
-use crate::region_set::deepest;
+use crate::region_set::{deepest, ON_LINE};
 
 /// A best grasp is taken to approach a joint's line when it lies this many chords from it
 /// (the search keeps a chord inside traced polylines, themselves a chord from the edge).
@@ -21,10 +21,6 @@ const APPROACH_CHORDS: f64 = 4.0;
 /// (the pairs needing less friction than it lie nearer the line than it does, to first order,
 /// where the friction grows away from the line; along it they may reach as far again).
 const STRETCH_PER_DISTANCE: f64 = 4.0;
-
-/// How far (in the profile's parameter) a part's vertex on a joint's line may lie across it
-/// by rounding.
-const ON_LINE: f64 = 1e-9;
 
 /// How far (in chords) a traced piece's chord keeps inside a stretch's edges to be spared:
 /// the piece itself lies within a chord of it.
@@ -86,22 +82,20 @@ impl Spared {
         self.joints.is_empty()
     }
 
-    /// The finger and the joint's nearest copy (modulo `n`) that spare the pair `p`, if any.
-    fn band(&self, n: usize, p: [f64; 2]) -> Option<(usize, f64)> {
+    /// The middle lines of the stretches in the square: each finger (the axis) at each
+    /// joint's copies (modulo `n`).
+    fn lines(&self, n: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
         let n = n as f64;
-        (0..2).find_map(|d| {
-            self.joints.iter().find_map(|&k| {
-                [k - n, k, k + n]
-                    .into_iter()
-                    .find(|&at| (p[d] - at).abs() < self.by)
-                    .map(|at| (d, at))
-            })
+        (0..2).flat_map(move |d| {
+            self.joints
+                .iter()
+                .flat_map(move |&k| [k - n, k, k + n].map(|at| (d, at)))
         })
     }
 
     /// Whether the pair `p` has a finger in a spared stretch.
     pub(crate) fn spares(&self, n: usize, p: [f64; 2]) -> bool {
-        self.band(n, p).is_some()
+        self.lines(n).any(|(d, at)| (p[d] - at).abs() < self.by)
     }
 
     /// Whether the segment from `a` to `b` (a chord of a traced piece, within `chord` of the
@@ -109,55 +103,44 @@ impl Spared {
     /// round one joint (which is convex), [`PIECE_CLEARANCE`] chords inside its edges.
     pub(crate) fn spares_segment(&self, n: usize, a: [f64; 2], b: [f64; 2], chord: f64) -> bool {
         let inner = self.by - PIECE_CLEARANCE * chord;
-        let n = n as f64;
-        (0..2).any(|d| {
-            self.joints.iter().any(|&k| {
-                [k - n, k, k + n]
-                    .into_iter()
-                    .any(|at| (a[d] - at).abs() < inner && (b[d] - at).abs() < inner)
-            })
-        })
+        self.lines(n)
+            .any(|(d, at)| (a[d] - at).abs() < inner && (b[d] - at).abs() < inner)
     }
 
     /// A pair of `part` (a closed polyline in one cell, with the region's `holes`) outside
     /// every spared stretch, where the part outside them is connected (so one pair tells
     /// whether all of it lies in a set whose boundary in the part is spared).
     pub(crate) fn witness(&self, n: usize, part: &[[f64; 2]], holes: &[Vec<[f64; 2]>]) -> Witness {
-        let nf = n as f64;
         let mut rest = part.to_vec();
-        for d in 0..2 {
-            for &k in &self.joints {
-                for at in [k - nf, k, k + nf] {
-                    let (lo, hi) = (at - self.by, at + self.by);
-                    if !rest.iter().any(|p| p[d] > lo && p[d] < hi) {
-                        continue;
-                    }
-                    // (A part lies in one cell: on one side of the joint's line, to rounding.)
-                    let (lo_part, hi_part) = bounds(&rest);
-                    let above = 0.5 * (lo_part[d] + hi_part[d]) >= at;
-                    let beside = if above {
-                        lo_part[d] >= at - ON_LINE
-                    } else {
-                        hi_part[d] <= at + ON_LINE
-                    };
-                    if !beside {
-                        return Witness::Unknown;
-                    }
-                    let keep = if above {
-                        |x: f64, edge: f64| x >= edge
-                    } else {
-                        |x: f64, edge: f64| x <= edge
-                    };
-                    let edge = if above { hi } else { lo };
-                    let Some(cut) = clip_once(&rest, d, edge, keep) else {
-                        return Witness::Unknown;
-                    };
-                    if cut.is_empty() {
-                        return Witness::Spared;
-                    }
-                    rest = cut;
-                }
+        for (d, at) in self.lines(n) {
+            let (lo, hi) = (at - self.by, at + self.by);
+            if !rest.iter().any(|p| p[d] > lo && p[d] < hi) {
+                continue;
             }
+            // (A part lies in one cell: on one side of the joint's line, to rounding.)
+            let (lo_part, hi_part) = bounds(&rest);
+            let above = 0.5 * (lo_part[d] + hi_part[d]) >= at;
+            let beside = if above {
+                lo_part[d] >= at - ON_LINE
+            } else {
+                hi_part[d] <= at + ON_LINE
+            };
+            if !beside {
+                return Witness::Unknown;
+            }
+            let keep = if above {
+                |x: f64, edge: f64| x >= edge
+            } else {
+                |x: f64, edge: f64| x <= edge
+            };
+            let edge = if above { hi } else { lo };
+            let Some(cut) = clip_once(&rest, d, edge, keep) else {
+                return Witness::Unknown;
+            };
+            if cut.is_empty() {
+                return Witness::Spared;
+            }
+            rest = cut;
         }
         // A hole reaching a stretch could part what is left.
         if holes.iter().flatten().any(|p| self.spares(n, *p)) {

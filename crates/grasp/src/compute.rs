@@ -10,7 +10,7 @@ use crate::model::Model;
 use crate::near::NearContacts;
 use crate::options::GraspOptions;
 use crate::polyline::{bounds, signed_area};
-use crate::proof::{none_below, Below};
+use crate::proof::{none_below, Below, LowerSets};
 use crate::quality::{force_closure, min_friction};
 use crate::region_set::{deepest, depth, holds_or_touches, in_triangle};
 use crate::spared::Spared;
@@ -80,12 +80,14 @@ pub(crate) fn grasps_of(
         // A best grasp found by search is proven the most robust (to a share of its friction)
         // where the set at a friction just below holds no pair of the region; a pair of it
         // that does starts the search again.
+        let mut traced: Option<LowerSets> = None;
         for _ in 0..PROOF_ROUNDS {
             let least = min_friction(model, center[0], center[1]);
             if proven || !(least > 0.0 && least.is_finite()) {
                 break;
             }
-            match none_below(model, opts, widths, r, least, chord, &Spared::default())? {
+            let lower = traced.insert(LowerSets::new(least, r));
+            match none_below(model, opts, widths, r, lower, chord, &Spared::default())? {
                 Below::None => proven = true,
                 Below::Unknown => break,
                 Below::Beaten(p) => {
@@ -101,10 +103,15 @@ pub(crate) fn grasps_of(
         if !proven {
             let least = min_friction(model, center[0], center[1]);
             let spared = Spared::toward(model, r, center, chord);
+            // (The plain proof's traces, where it was tried at this friction.)
+            let mut lower = match traced {
+                Some(t) if t.least == least => t,
+                _ => LowerSets::new(least, r),
+            };
             if !spared.is_empty()
                 && least > 0.0
                 && least.is_finite()
-                && none_below(model, opts, widths, r, least, chord, &spared)? == Below::None
+                && none_below(model, opts, widths, r, &mut lower, chord, &spared)? == Below::None
             {
                 proven = true;
                 toward = spared;

@@ -8,7 +8,7 @@
 
 use crate::assemble::RawRegion;
 use crate::cones::functions;
-use crate::corners::{corner_lines, PairBox};
+use crate::corners::{corner_lines, CornerLine, PairBox};
 use crate::error::Result;
 use crate::model::Model;
 use crate::near::NearContacts;
@@ -42,18 +42,42 @@ pub(crate) enum Below {
     Unknown,
 }
 
+/// The set at a friction [`BEST_GAP`] below a best grasp's, as far as a proof has traced it:
+/// round each part of one region, and its corner lines near the region. A proof that fails
+/// and is tried again with spared stretches reads the same traces.
+pub(crate) struct LowerSets {
+    /// The least friction of the best grasp.
+    pub(crate) least: f64,
+    /// Per part of the region: not traced yet, or the boundary there (`None`: unresolved).
+    parts: Vec<Option<Option<LowerSet>>>,
+    /// The corner lines that may meet the region's box (`None`: an end left unproven).
+    lines: Option<Option<Vec<CornerLine>>>,
+}
+
+impl LowerSets {
+    /// Nothing traced yet, below the best grasp's friction `least` in `region`.
+    pub(crate) fn new(least: f64, region: &RawRegion) -> Self {
+        Self {
+            least,
+            parts: (0..region.parts.len()).map(|_| None).collect(),
+            lines: None,
+        }
+    }
+}
+
 /// Whether any pair of `region` (a region of the set at `opts.friction`, whose best grasp
-/// needs the friction `least`) is force closure at a friction [`BEST_GAP`] below, leaving out
-/// the pairs with a finger in a stretch `spared`.
+/// needs the friction `lower.least`) is force closure at a friction [`BEST_GAP`] below,
+/// leaving out the pairs with a finger in a stretch `spared`.
 pub(crate) fn none_below(
     model: &Model<'_>,
     opts: &GraspOptions,
     widths: [Option<f64>; 2],
     region: &RawRegion,
-    least: f64,
+    traced: &mut LowerSets,
     chord: f64,
     spared: &Spared,
 ) -> Result<Below> {
+    let least = traced.least;
     let friction = least * (1.0 - BEST_GAP);
     let lower = GraspOptions { friction, ..*opts };
     let n = model.n();
@@ -74,8 +98,11 @@ pub(crate) fn none_below(
         .chain(&region.holes)
         .flat_map(|l| l.windows(2).map(|w| [w[0], w[1]]))
         .collect();
-    for part in &region.parts {
-        let Some(lower_set) = lower_set_round(model, &lower, widths, &near, part, chord)? else {
+    for (part, memo) in region.parts.iter().zip(traced.parts.iter_mut()) {
+        if memo.is_none() {
+            *memo = Some(lower_set_round(model, &lower, widths, &near, part, chord)?);
+        }
+        let Some(Some(lower_set)) = memo.as_ref() else {
             return Ok(Below::Unknown);
         };
         // Of the lower set's pairs in the region, the best; and the middle of them, nearer
@@ -158,12 +185,15 @@ pub(crate) fn none_below(
         s: [lo[0] - chord, hi[0] + chord],
         t: [lo[1] - chord, hi[1] + chord],
     };
-    let mut doubts = Doubts::none();
-    let lines = corner_lines(model, friction, widths, Some(reach), &mut doubts)?;
-    if !doubts.is_empty() {
-        return Ok(Below::Unknown);
+    if traced.lines.is_none() {
+        let mut doubts = Doubts::none();
+        let lines = corner_lines(model, friction, widths, Some(reach), &mut doubts)?;
+        traced.lines = Some(doubts.is_empty().then_some(lines));
     }
-    for line in &lines {
+    let Some(Some(lines)) = traced.lines.as_ref() else {
+        return Ok(Below::Unknown);
+    };
+    for line in lines {
         let u = line.joint as f64;
         for piece in &line.pieces {
             for k in 0..=LINE_SAMPLES {

@@ -4,7 +4,7 @@
 use crate::assemble::RawRegion;
 use crate::model::Model;
 use crate::polyline::bounds;
-use crate::quality::slip_angle;
+use crate::quality::{contact_angles, slip_angle};
 use crate::region_set::{deepest, depth, held_inside, holds, in_triangle};
 
 /// Samples across each part's box when no antipodal pair lies in the region.
@@ -207,9 +207,7 @@ fn search(
     start: [f64; 2],
     allowed: &dyn Fn([f64; 2]) -> bool,
 ) -> ([f64; 2], f64) {
-    let angle = |p: [f64; 2]| slip_angle(model, p[0], p[1]);
-    let (mut x, mut ax) = (start, angle(start));
-    let mut step = region
+    let first_step = region
         .parts
         .iter()
         .map(|part| {
@@ -218,12 +216,35 @@ fn search(
         })
         .fold(0.0, f64::max)
         / SAMPLES_ACROSS as f64;
+    compass(
+        &|p| contact_angles(model, p[0], p[1]),
+        start,
+        first_step,
+        allowed,
+    )
+}
+
+/// A compass search for the least of the larger of the two `angles` from `start`, by steps
+/// from `first_step` halved down to [`FINEST_STEP`], moving only to points `allowed`, and
+/// along the ridge where the two are equal when no step of the compass descends: the point
+/// found and its value.
+fn compass(
+    angles: &dyn Fn([f64; 2]) -> [f64; 2],
+    start: [f64; 2],
+    first_step: f64,
+    allowed: &dyn Fn([f64; 2]) -> bool,
+) -> ([f64; 2], f64) {
+    let larger = |a: [f64; 2]| a[0].max(a[1]);
+    let (mut x, mut at_x) = (start, angles(start));
+    let mut step = first_step;
     for _ in 0..SEARCH_STEPS {
         if step <= FINEST_STEP {
             break;
         }
+        // The angles a step along each axis either way (`+s, −s, +t, −t`), for the ridge.
+        let mut axes = [[0.0; 2]; 4];
         let mut moved = false;
-        for (ds, dt) in [
+        for (k, (ds, dt)) in [
             (1.0, 0.0),
             (-1.0, 0.0),
             (0.0, 1.0),
@@ -232,18 +253,158 @@ fn search(
             (-1.0, -1.0),
             (1.0, -1.0),
             (-1.0, 1.0),
-        ] {
+        ]
+        .into_iter()
+        .enumerate()
+        {
             let y = [x[0] + ds * step, x[1] + dt * step];
-            let ay = angle(y);
-            if ay < ax && allowed(y) {
-                (x, ax) = (y, ay);
+            let at_y = angles(y);
+            if let Some(a) = axes.get_mut(k) {
+                *a = at_y;
+            }
+            if larger(at_y) < larger(at_x) && allowed(y) {
+                (x, at_x) = (y, at_y);
                 moved = true;
                 break;
             }
         }
-        if !moved {
-            step *= 0.5;
+        if moved {
+            continue;
+        }
+        // Stalled: where the two angles are equal (the larger one's kink), the descent may
+        // run along their ridge between the compass's directions.
+        let on_ridge = along_ridge(angles, x, at_x, axes, step).and_then(|ys| {
+            ys.into_iter()
+                .map(|y| (y, angles(y)))
+                .find(|&(y, at_y)| larger(at_y) < larger(at_x) && allowed(y))
+        });
+        match on_ridge {
+            Some(y) => (x, at_x) = y,
+            None => step *= 0.5,
         }
     }
-    (x, ax)
+    (x, larger(at_x))
+}
+
+/// Differences of the two angles (radians) across a step below this are their rounding (a
+/// few units in the last place of angles up to π), not a ridge.
+const RIDGE_ROUNDING: f64 = 1e-12;
+
+/// The share of a step across which the ridge's direction is measured (by central
+/// differences): small enough to see the ridge's bend at that step (an angle's kink at a
+/// corner within it), large enough to keep the angles' rounding out of the difference.
+const RIDGE_DIFFERENCE: f64 = 1e-2;
+
+/// Where the ridge on which the two `angles` are equal passes within `step` of `x` (whose
+/// angles are `at_x`, and `axes` those a step along each axis either way, `+s, −s, +t, −t`):
+/// the points a step along it the way the angles fall, then the other way, each moved back
+/// onto it (one Newton step across it). Along the ridge the larger angle may descend where a
+/// step across it climbs (the other angle rising faster than the ridge falls), so that no
+/// step of the compass improves on `x`: the best grasp beside a reflex corner, on a narrow
+/// valley running between the directions.
+fn along_ridge<'a>(
+    angles: &'a dyn Fn([f64; 2]) -> [f64; 2],
+    x: [f64; 2],
+    at_x: [f64; 2],
+    axes: [[f64; 2]; 4],
+    step: f64,
+) -> Option<impl Iterator<Item = [f64; 2]> + 'a> {
+    let gap = |a: [f64; 2]| a[0] - a[1];
+    // Central differences of the angles' gap and of their mean over `h` either way of `x`.
+    let across =
+        |at: [[f64; 2]; 4], f: &dyn Fn([f64; 2]) -> f64| [f(at[0]) - f(at[1]), f(at[2]) - f(at[3])];
+    // Whether the ridge passes within the step, by the compass's own samples; then its
+    // direction from samples nearer.
+    let coarse = across(axes, &gap);
+    if gap(at_x).abs() > 0.5 * coarse[0].hypot(coarse[1]) {
+        return None;
+    }
+    let h = RIDGE_DIFFERENCE * step;
+    let near =
+        [[h, 0.0], [-h, 0.0], [0.0, h], [0.0, -h]].map(|d| angles([x[0] + d[0], x[1] + d[1]]));
+    let differences = across(near, &gap);
+    // (Where the angles stay equal, as on a circle's diameters, the differences are rounding
+    // and their direction is noise: no ridge.)
+    let spread = differences[0].hypot(differences[1]);
+    if !(spread > RIDGE_ROUNDING && spread.is_finite()) {
+        return None;
+    }
+    let slope = differences.map(|d| d / (2.0 * h));
+    let norm = 0.5 * spread / h;
+    // The ridge's direction, the way the mean of the angles (both, on it) falls.
+    let mut along = [-slope[1] / norm, slope[0] / norm];
+    let mean = across(near, &|a| 0.5 * (a[0] + a[1]));
+    if along[0] * mean[0] + along[1] * mean[1] > 0.0 {
+        along = [-along[0], -along[1]];
+    }
+    // (Lazily: the other way only where the first does not descend.)
+    let onto = move |sign: f64| {
+        let y = [x[0] + sign * step * along[0], x[1] + sign * step * along[1]];
+        let e = gap(angles(y)) / (norm * norm);
+        [y[0] - e * slope[0], y[1] - e * slope[1]]
+    };
+    Some([1.0, -1.0].into_iter().map(onto))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Two planes meeting in a narrow valley along the direction `(cos θ, sin θ)` (their
+    /// ridge), climbing across it `steep` times faster than it falls along it: the larger
+    /// of the two has its least on the ridge's end at the square's edge, where `allowed`
+    /// stops. The compass's eight directions miss the valley unless θ is one of theirs.
+    fn valley(theta: f64, steep: f64) -> impl Fn([f64; 2]) -> [f64; 2] {
+        let (c, s) = (theta.cos(), theta.sin());
+        move |p: [f64; 2]| {
+            let along = c * p[0] + s * p[1];
+            let across = -s * p[0] + c * p[1];
+            [-along + steep * across, -along - steep * across]
+        }
+    }
+
+    proptest! {
+        /// The search follows the valley to the disk's rim, on the ridge: the least of the
+        /// larger angle within the unit disk (`−1`, at the ridge's end) to within the finest
+        /// step's reach, from any start inside.
+        #[test]
+        fn the_compass_follows_a_narrow_valley_between_its_directions(
+            theta in 0.0f64..std::f64::consts::TAU,
+            steep in 10.0f64..1e4,
+            start in (-0.5f64..0.5, -0.5f64..0.5),
+        ) {
+            let angles = valley(theta, steep);
+            let in_disk = |p: [f64; 2]| p[0].hypot(p[1]) <= 1.0;
+            let (x, least) = compass(&angles, [start.0, start.1], 0.25, &in_disk);
+            prop_assert!(in_disk(x));
+            prop_assert!(least < -1.0 + 1e-6, "{least} at {x:?}, θ = {theta}, steep = {steep}");
+        }
+    }
+
+    /// Without the ridge's steps the same search stalls in the valley (the test above can
+    /// fail): a direction between the compass's, steep sides.
+    #[test]
+    fn the_compass_alone_stalls_in_a_valley_between_its_directions() {
+        let angles = valley(0.3, 1e3);
+        let angle = |p: [f64; 2]| {
+            let [a, b] = angles(p);
+            a.max(b)
+        };
+        let start = [0.0, 0.0];
+        // Every compass step from the start climbs, at every step size.
+        let mut step = 0.25;
+        while step > FINEST_STEP {
+            for d in [[1.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, -1.0]] {
+                for sign in [1.0, -1.0] {
+                    let y = [sign * d[0] * step, sign * d[1] * step];
+                    assert!(angle(y) > angle(start), "{y:?}");
+                }
+            }
+            step *= 0.5;
+        }
+        let in_disk = |p: [f64; 2]| p[0].hypot(p[1]) <= 1.0;
+        let (_, least) = compass(&angles, start, 0.25, &in_disk);
+        assert!(least < -1.0 + 1e-6, "{least}");
+    }
 }

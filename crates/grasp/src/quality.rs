@@ -34,14 +34,24 @@ fn contact_angle(model: &Model<'_>, u: f64, tan: [f64; 2], d: [f64; 2]) -> f64 {
 /// the other contact (`[0, π]`): the pair is force closure for friction μ exactly when this
 /// is at most `atan μ`.
 pub(crate) fn slip_angle(model: &Model<'_>, s: f64, t: f64) -> f64 {
+    let [at_s, at_t] = contact_angles(model, s, t);
+    at_s.max(at_t)
+}
+
+/// The angles of [`slip_angle`] at each contact: at `s` between its inward normals and the
+/// chord, at `t` between its inward normals and the chord reversed.
+pub(crate) fn contact_angles(model: &Model<'_>, s: f64, t: f64) -> [f64; 2] {
     let (p, tan_s) = model.point_tangent(s);
     let (q, tan_t) = model.point_tangent(t);
     let d = [q[0] - p[0], q[1] - p[1]];
     if d == [0.0, 0.0] {
         // One point: no chord, no grasp.
-        return PI;
+        return [PI; 2];
     }
-    contact_angle(model, s, tan_s, d).max(contact_angle(model, t, tan_t, [-d[0], -d[1]]))
+    [
+        contact_angle(model, s, tan_s, d),
+        contact_angle(model, t, tan_t, [-d[0], -d[1]]),
+    ]
 }
 
 /// The least friction coefficient that makes the pair force closure (infinite where a chord

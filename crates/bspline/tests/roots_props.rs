@@ -252,3 +252,85 @@ fn bad_input_is_an_error() {
     assert!(find_roots(&g, 0.5, 2.0, &RootOptions::default()).is_err());
     assert!(find_roots(&g, 0.0, 1.0, &RootOptions::default().tolerance(f64::NAN)).is_err());
 }
+
+/// The exact zeros of the piecewise-linear function with `values` at `knots`, on `[a, b]`: a
+/// sorted list of closed intervals (points where the function crosses zero; stretches where two
+/// consecutive values are zero).
+fn polyline_zeros(knots: &[f64], values: &[f64], a: f64, b: f64) -> Vec<(f64, f64)> {
+    use common::exact::{f, q};
+    let mut out = Vec::new();
+    for k in 0..knots.len() - 1 {
+        let (x0, x1, v0, v1) = (knots[k], knots[k + 1], values[k], values[k + 1]);
+        let zero = if v0 == 0.0 && v1 == 0.0 {
+            Some((x0, x1))
+        } else if (v0 <= 0.0) != (v1 <= 0.0) || v0 == 0.0 || v1 == 0.0 {
+            // (Exactly, then rounded: x0 + (x1 − x0) v0 / (v0 − v1).)
+            let x = q(x0) + (q(x1) - q(x0)) * q(v0) / (q(v0) - q(v1));
+            Some((f(&x), f(&x)))
+        } else {
+            None
+        };
+        if let Some((lo, hi)) = zero {
+            if hi >= a && lo <= b {
+                out.push((lo.max(a), hi.min(b)));
+            }
+        }
+    }
+    out
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 1000, ..ProptestConfig::default() })]
+
+    /// Piecewise-linear functions (the cone and foot-point functions of straight segments),
+    /// with zeros exactly at knots and at the search's ends as often as inside: every exact
+    /// zero lies in a reported bracket, every bracket holds one or lies within the tolerance of
+    /// one, and a certified root is the exact one.
+    #[test]
+    fn straight_pieces_lose_no_zero_and_add_none(
+        gaps in prop::collection::vec(0.05f64..1.0, 1..6),
+        raw in prop::collection::vec((0usize..4, -1.0f64..1.0), 6),
+        cut in (0.0f64..0.5, 0.5f64..1.0),
+        whole in any::<bool>(),
+    ) {
+        let mut knots = vec![0.0];
+        for g in &gaps {
+            knots.push(knots[knots.len() - 1] + g);
+        }
+        let n = knots.len();
+        // A zero a quarter of the time; small values a quarter.
+        let values: Vec<f64> = raw[..n]
+            .iter()
+            .map(|&(kind, v)| match kind {
+                0 => 0.0,
+                1 => v * 1e-3,
+                _ => v,
+            })
+            .collect();
+        let mut full = vec![knots[0]];
+        full.extend_from_slice(&knots);
+        full.push(knots[n - 1]);
+        let f = BSpline::new(1, full, 1, values.clone()).unwrap();
+        let end = knots[n - 1];
+        let (a, b) = if whole { (0.0, end) } else { (cut.0 * end, cut.1 * end) };
+        let opts = RootOptions::default();
+        let found = find_roots(&f, a, b, &opts).unwrap();
+        let exact = polyline_zeros(&knots, &values, a, b);
+        let slack = 1e-15 * end;
+        for &(lo, hi) in &exact {
+            for x in [lo, 0.5 * (lo + hi), hi] {
+                prop_assert!(found.iter().any(|r| covers(r, x, slack)), "{x} lost: {found:?}");
+            }
+        }
+        for r in &found {
+            let near = exact.iter().any(|&(lo, hi)| {
+                r.bracket.1 >= lo - opts.tol && r.bracket.0 <= hi + opts.tol
+            });
+            prop_assert!(near, "{r:?} holds no zero of {exact:?}");
+            if r.certified {
+                let at = exact.iter().any(|&(lo, hi)| lo - 1e-12 <= r.u && r.u <= hi + 1e-12);
+                prop_assert!(at, "{r:?} is not at a zero of {exact:?}");
+            }
+        }
+    }
+}

@@ -136,12 +136,28 @@ impl Isolation<'_> {
             }
             Count::AtEnd(_) | Count::Open => {}
         }
+        // A straight stretch is within rounding of zero on one interval, found in closed form
+        // rather than by halving toward it (a root at an end takes some forty halvings).
+        if let Some((z0, z1)) = part.straight_zeros() {
+            self.roots.push(self.cluster_of_width(z0, z1, lo, hi));
+            return Decision::Decided;
+        }
         if flat || hi - lo <= self.tol || !visit.can_halve || self.parts >= self.opts.max_pieces {
             self.roots.push(cluster(lo, hi));
             return Decision::Decided;
         }
         let (left, right) = part.split(self.f, split_point(self.f, lo, hi));
         Decision::Halve(left, right)
+    }
+
+    /// A cluster on `[z0, z1]`, widened to the tolerance inside `[lo, hi]` (as a part halved
+    /// down to the tolerance would give).
+    fn cluster_of_width(&self, z0: f64, z1: f64, lo: f64, hi: f64) -> Root {
+        if z1 - z0 >= self.tol || hi - lo <= self.tol {
+            return cluster(z0, z1);
+        }
+        let start = (0.5 * (z0 + z1 - self.tol)).clamp(lo, hi - self.tol);
+        cluster(start, start + self.tol)
     }
 
     /// Safeguarded Newton inside a bracket where the function has exactly one simple root and

@@ -88,6 +88,34 @@ impl Part {
         (count, flat)
     }
 
+    /// For a part of one span of degree one (a straight line), the interval where it is
+    /// within its error bound of zero, which holds every root of the exact function; `None`
+    /// for any other part, or where the line keeps clear of zero.
+    pub(super) fn straight_zeros(&self) -> Option<(f64, f64)> {
+        let [span] = self.spans.as_slice() else {
+            return None;
+        };
+        let [c0, c1] = span.coefs[..] else {
+            return None;
+        };
+        let (e, slope) = (span.err, c1 - c0);
+        // (On the unit interval of the span: |c0 + slope r| ≤ e.)
+        let (r0, r1) = if slope == 0.0 {
+            if c0.abs() > e {
+                return None;
+            }
+            (0.0, 1.0)
+        } else {
+            let (a, b) = ((-e - c0) / slope, (e - c0) / slope);
+            (a.min(b).max(0.0), a.max(b).min(1.0))
+        };
+        if !(r0 <= r1) {
+            return None;
+        }
+        let width = span.x1 - span.x0;
+        Some((span.x0 + width * r0, (span.x0 + width * r1).min(span.x1)))
+    }
+
     /// The two parts on either side of `m` (inside the part).
     pub(super) fn split(self, f: &Piecewise, m: f64) -> (Part, Part) {
         let p = f.degree();

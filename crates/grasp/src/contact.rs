@@ -3,10 +3,11 @@
 //! coefficients over the rectangle (cut into the cells it meets).
 
 use crate::cells::Cell;
-use crate::model::{Cone, Model};
+use crate::model::{wrap, Cone, Model};
 use bspline::tensor::{BezierPatch, TensorBSpline};
 use numeric::rounding::UNIT_ROUNDOFF;
-use std::cell::RefCell;
+use smallvec::SmallVec;
+use std::cell::{OnceCell, RefCell};
 
 /// Halvings of a rectangle whose coefficients do not all show the sign, before it is given
 /// up as not proven.
@@ -112,22 +113,28 @@ impl Function {
 /// The proof that every function is positive on rectangles of the profile's parameter.
 pub(crate) struct Positivity<'a> {
     model: &'a Model<'a>,
-    /// Per cell, its functions.
-    cells: Vec<Vec<Function>>,
+    /// The cells of the square of pairs.
+    source: &'a [Cell],
+    /// Per cell, its functions' patches, made when a proof first meets the cell (a contact
+    /// region meets a few of them).
+    cells: Vec<OnceCell<Vec<Function>>>,
     /// The cell, function and patch where the last proof failed.
     last_failure: std::cell::Cell<Option<(usize, usize, usize)>>,
 }
 
 impl<'a> Positivity<'a> {
-    pub(crate) fn new(model: &'a Model<'a>, cells: &[Cell]) -> Self {
+    pub(crate) fn new(model: &'a Model<'a>, cells: &'a [Cell]) -> Self {
         Self {
             model,
-            cells: cells
-                .iter()
-                .map(|c| c.fs.iter().map(Function::new).collect())
-                .collect(),
+            source: cells,
+            cells: cells.iter().map(|_| OnceCell::new()).collect(),
             last_failure: std::cell::Cell::new(None),
         }
+    }
+
+    /// The functions of cell `k`.
+    fn functions(&self, k: usize) -> &[Function] {
+        self.cells[k].get_or_init(|| self.source[k].fs.iter().map(Function::new).collect())
     }
 
     /// Whether every pair of `[s0, s1] × [t0, t1]` (profile parameters, read modulo `n`) is
@@ -143,7 +150,7 @@ impl<'a> Positivity<'a> {
         };
         // The rectangle's parts on the cells: the conditions hold for a pair in either order,
         // so a part below the diagonal is its mirror's.
-        let parts: Vec<(usize, [f64; 2], [f64; 2])> = ss
+        let parts: SmallVec<[(usize, [f64; 2], [f64; 2]); 8]> = ss
             .iter()
             .flat_map(|&(i, si)| {
                 ts.iter().map(move |&(j, tj)| {
@@ -167,7 +174,7 @@ impl<'a> Positivity<'a> {
             }
         }
         for &(k, si, tj) in &parts {
-            for (f, function) in self.cells[k].iter().enumerate() {
+            for (f, function) in self.functions(k).iter().enumerate() {
                 for p in function.meeting(si, tj) {
                     let at = (k, f, p);
                     if Some(at) != last && !self.holds_on(at, si, tj) {
@@ -183,7 +190,7 @@ impl<'a> Positivity<'a> {
     /// Whether function `f` of cell `k` is proven positive on its patch `p`'s part of
     /// `si × tj` (true where they do not meet).
     fn holds_on(&self, (k, f, p): (usize, usize, usize), si: [f64; 2], tj: [f64; 2]) -> bool {
-        let function = &self.cells[k][f];
+        let function = &self.functions(k)[f];
         let (patch, err) = (&function.patches[p], function.err);
         let s = [si[0].max(patch.t0), si[1].min(patch.t1)];
         let t = [tj[0].max(patch.r0), tj[1].min(patch.r1)];
@@ -225,9 +232,9 @@ impl<'a> Positivity<'a> {
 
     /// `[lo, hi]` cut at the joints into stretches of segments (in their forms' parameters);
     /// `None` when it runs across a reflex corner, whose pairs take no part.
-    fn pieces(&self, [lo, hi]: [f64; 2]) -> Option<Vec<(usize, [f64; 2])>> {
+    fn pieces(&self, [lo, hi]: [f64; 2]) -> Option<SmallVec<[(usize, [f64; 2]); 4]>> {
         let n = self.model.n();
-        let mut out = Vec::new();
+        let mut out = SmallVec::new();
         let mut at = lo;
         while at < hi {
             let k = at.floor();
@@ -240,7 +247,7 @@ impl<'a> Positivity<'a> {
                 self.model.locate(end).1
             };
             out.push((i, [v0, v1]));
-            let joint = (end.rem_euclid(n as f64) as usize) % n;
+            let joint = (wrap(end, n as f64) as usize) % n;
             if end < hi && self.model.joints[joint].cone == Cone::Reflex {
                 return None;
             }

@@ -110,7 +110,7 @@ impl<'p> Model<'p> {
     /// The segment and its form's parameter at the profile parameter `u` (read modulo `n`).
     pub(crate) fn locate(&self, u: f64) -> (usize, f64) {
         let n = self.n();
-        let u = u.rem_euclid(n as f64);
+        let u = wrap(u, n as f64);
         let i = (u.floor() as usize).min(n - 1);
         let (a, b) = self.forms[i].domain();
         (i, a + (u - i as f64).clamp(0.0, 1.0) * (b - a))
@@ -125,7 +125,7 @@ impl<'p> Model<'p> {
     /// The joint at the profile parameter `u`, if `u` is one (modulo `n`).
     pub(crate) fn joint_at(&self, u: f64) -> Option<&Joint> {
         let n = self.n() as f64;
-        let k = u.rem_euclid(n);
+        let k = wrap(u, n);
         (k.fract() == 0.0).then(|| &self.joints[(k as usize) % self.n()])
     }
 
@@ -149,5 +149,15 @@ impl<'p> Model<'p> {
     /// The point at the profile parameter `u`, in the profile's own coordinates.
     pub(crate) fn global_point(&self, u: f64) -> [f64; 2] {
         self.frame.to_global(self.point_tangent(u).0)
+    }
+}
+
+/// `u` modulo `n` in `[0, n)`: most parameters asked for are there already, and the general
+/// remainder is a slow library call (the searches ask millions of times).
+pub(crate) fn wrap(u: f64, n: f64) -> f64 {
+    if (0.0..n).contains(&u) {
+        u
+    } else {
+        u.rem_euclid(n)
     }
 }

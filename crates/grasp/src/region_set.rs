@@ -13,7 +13,7 @@ pub(crate) const ON_LINE: f64 = 1e-9;
 pub(crate) fn in_triangle(n: usize, s: f64, t: f64) -> [f64; 2] {
     let n = n as f64;
     let wrap = |u: f64| {
-        let x = u.rem_euclid(n);
+        let x = crate::model::wrap(u, n);
         if x >= n {
             0.0
         } else {

@@ -19,6 +19,7 @@ use crate::error::Result;
 use bspline::tensor::TensorBSpline;
 use bspline::Bezier;
 use bspline::{BSpline, Rational};
+use numeric::rounding::gamma;
 
 /// One exact curve form's univariate parts.
 ///
@@ -242,6 +243,47 @@ pub(crate) fn corner_functions(
     // ×(edge, C − corner) w = −×(edge, e) = ey·edge_x... : edge × (−e).
     let side = |edge: [f64; 2]| ey.lincomb(-edge[0], &ex, edge[1]);
     Ok((holds, [side(edges[0])?, side(edges[1])?]))
+}
+
+/// [`corner_functions`] on a straight segment `b` (without width limits), where every one is
+/// affine: each function's values at the segment's two ends, with a bound on their rounding
+/// (from the magnitudes of the terms, which cancel where a value is small).
+pub(crate) fn straight_corner_ends(
+    b: &Form,
+    corner: [f64; 2],
+    edges: [[f64; 2]; 2],
+    mu: f64,
+) -> Option<[[(f64, f64); 2]; 4]> {
+    let [start, q] = b.line?;
+    let (lo, hi) = b.domain();
+    let o = b.orientation;
+    let normal = [-o * q[1], o * q[0]];
+    let dot = |a: [f64; 2], e: [f64; 2]| a[0] * e[0] + a[1] * e[1];
+    let at = |v: f64| {
+        let h = v - lo;
+        let e = [
+            corner[0] - (start[0] + h * q[0]),
+            corner[1] - (start[1] + h * q[1]),
+        ];
+        let size = e[0].abs() + e[1].abs();
+        let (n, t) = (dot(normal, e), dot(q, e));
+        // (e itself is rounded: a few units of the points' magnitudes.)
+        let reach = size + corner[0].abs() + corner[1].abs() + start[0].abs() + start[1].abs();
+        let q_size = q[0].abs() + q[1].abs();
+        let cone_err = gamma(8) * (1.0 + mu) * q_size * reach;
+        let side = |edge: [f64; 2]| {
+            let err = gamma(6) * (edge[0].abs() + edge[1].abs()) * reach;
+            (e[0] * edge[1] - e[1] * edge[0], err)
+        };
+        [
+            (mu * n + t, cone_err),
+            (mu * n - t, cone_err),
+            side(edges[0]),
+            side(edges[1]),
+        ]
+    };
+    let (a, z) = (at(lo), at(hi));
+    Some([[a[0], z[0]], [a[1], z[1]], [a[2], z[2]], [a[3], z[3]]])
 }
 
 /// `Σ_k f_k ⊗ g_k`.

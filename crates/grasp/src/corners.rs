@@ -3,7 +3,7 @@
 //! cone at `t`. They lie on the line of the corner's parameter in the square of pairs, a set of
 //! intervals found by certified root isolation of functions of one variable.
 
-use crate::cones::corner_functions;
+use crate::cones::{corner_functions, straight_corner_ends, Form};
 use crate::error::Result;
 use crate::model::{Cone, Model};
 use crate::quality::slip_angle;
@@ -89,31 +89,18 @@ pub(crate) fn corner_lines(
             if !wanted(k, [j as f64, (j + 1) as f64]) {
                 continue;
             }
-            let (holds, [side_lo, side_hi]) =
-                corner_functions(form, joint.point, [lo, hi], mu, widths)?;
+            let conditions = Conditions::of(form, joint.point, [lo, hi], mu, widths)?;
             let (a, b) = form.domain();
             let mut cuts = vec![a, b];
-            for f in holds.iter().chain([&side_lo, &side_hi]) {
-                for r in find_roots(f, a, b, &RootOptions::default())? {
-                    // Every function vanishes where the segment meets the corner (d = 0):
-                    // that root is known, proven or not. So is one at either end of any
-                    // segment (a cone's edge through another joint, as round numbers put it):
-                    // the other finger is at that joint there, a pair of joints decided
-                    // apart, and the ends are cuts already.
-                    let at_end = r.bracket.0 <= a || r.bracket.1 >= b;
-                    if !r.certified && !at_end {
-                        doubts.add(Doubt::RootsUnresolved);
-                    }
-                    cuts.push(r.u.clamp(a, b));
-                }
-            }
+            conditions.cuts(a, b, &mut cuts, doubts)?;
             cuts.sort_by(f64::total_cmp);
             cuts.dedup();
             let inside = |v: f64| {
-                let lo_ok = turn * side_lo.eval_scalar(v) >= 0.0;
-                let hi_ok = -turn * side_hi.eval_scalar(v) >= 0.0;
+                let [side_lo, side_hi] = conditions.sides(v);
+                let lo_ok = turn * side_lo >= 0.0;
+                let hi_ok = -turn * side_hi >= 0.0;
                 let cone = if wide { lo_ok || hi_ok } else { lo_ok && hi_ok };
-                cone && holds.iter().all(|f: &BSpline| f.eval_scalar(v) >= 0.0)
+                cone && conditions.holds(v)
             };
             for w in cuts.windows(2) {
                 if w[1] > w[0] && inside(0.5 * (w[0] + w[1])) {
@@ -154,6 +141,101 @@ pub(crate) fn corner_lines(
         });
     }
     Ok(out)
+}
+
+/// The conditions on the other finger, on one segment: the cone conditions at it (and the
+/// widths), and on which side of each edge of the corner's widened cone it lies.
+enum Conditions {
+    /// As functions of the segment's parameter ([`corner_functions`]).
+    Splines {
+        holds: Vec<BSpline>,
+        sides: [BSpline; 2],
+    },
+    /// On a straight segment without width limits, all affine: each one's values at the
+    /// segment's ends `[lo, hi]`, with their rounding ([`straight_corner_ends`]), in the order
+    /// of the cone conditions then the sides.
+    Affine {
+        ends: [[(f64, f64); 2]; 4],
+        lo: f64,
+        hi: f64,
+    },
+}
+
+impl Conditions {
+    fn of(
+        form: &Form,
+        corner: [f64; 2],
+        edges: [[f64; 2]; 2],
+        mu: f64,
+        widths: [Option<f64>; 2],
+    ) -> Result<Self> {
+        if widths.iter().all(Option::is_none) {
+            if let Some(ends) = straight_corner_ends(form, corner, edges, mu) {
+                let (lo, hi) = form.domain();
+                return Ok(Self::Affine { ends, lo, hi });
+            }
+        }
+        let (holds, sides) = corner_functions(form, corner, edges, mu, widths)?;
+        Ok(Self::Splines { holds, sides })
+    }
+
+    /// Adds to `cuts` where a condition changes sign on `[a, b]` (the segment's domain).
+    fn cuts(&self, a: f64, b: f64, cuts: &mut Vec<f64>, doubts: &mut Doubts) -> Result<()> {
+        match self {
+            Self::Splines { holds, sides } => {
+                for f in holds.iter().chain(sides) {
+                    for r in find_roots(f, a, b, &RootOptions::default())? {
+                        // Every function vanishes where the segment meets the corner (d = 0):
+                        // that root is known, proven or not. So is one at either end of any
+                        // segment (a cone's edge through another joint, as round numbers put
+                        // it): the other finger is at that joint there, a pair of joints
+                        // decided apart, and the ends are cuts already.
+                        let at_end = r.bracket.0 <= a || r.bracket.1 >= b;
+                        if !r.certified && !at_end {
+                            doubts.add(Doubt::RootsUnresolved);
+                        }
+                        cuts.push(r.u.clamp(a, b));
+                    }
+                }
+            }
+            // An affine function with trusted values of opposite signs at the ends has its
+            // one root between them; one within rounding of zero at an end has its roots at
+            // that end, a cut already (or, within rounding at both, on no side of zero).
+            Self::Affine { ends, lo, hi } => {
+                for [(f0, e0), (f1, e1)] in ends {
+                    if f0.abs() > *e0 && f1.abs() > *e1 && (*f0 > 0.0) != (*f1 > 0.0) {
+                        cuts.push((lo + (hi - lo) * (f0 / (f0 - f1))).clamp(*lo, *hi));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The values at `v` of the functions of the sides of the corner's cone.
+    fn sides(&self, v: f64) -> [f64; 2] {
+        match self {
+            Self::Splines { sides, .. } => [sides[0].eval_scalar(v), sides[1].eval_scalar(v)],
+            Self::Affine { ends, lo, hi } => {
+                let r = (v - lo) / (hi - lo);
+                let at = |[(f0, _), (f1, _)]: [(f64, f64); 2]| f0 + r * (f1 - f0);
+                [at(ends[2]), at(ends[3])]
+            }
+        }
+    }
+
+    /// Whether every cone (and width) condition at the other finger holds at `v`.
+    fn holds(&self, v: f64) -> bool {
+        match self {
+            Self::Splines { holds, .. } => holds.iter().all(|f| f.eval_scalar(v) >= 0.0),
+            Self::Affine { ends, lo, hi } => {
+                let r = (v - lo) / (hi - lo);
+                ends[..2]
+                    .iter()
+                    .all(|[(f0, _), (f1, _)]| f0 + r * (f1 - f0) >= 0.0)
+            }
+        }
+    }
 }
 
 /// Two intervals of the line meet when the second starts this close (relative) to the end

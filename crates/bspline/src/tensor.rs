@@ -18,6 +18,7 @@ mod subdivision;
 use crate::error::{check_finite, Error, Result};
 use crate::knots::validate_knots;
 use crate::spline::BSpline;
+use std::borrow::Borrow;
 
 /// A scalar tensor-product B-spline `F(t, r) = Σ c_ij N_i(t) M_j(r)`.
 #[derive(Debug, Clone, PartialEq)]
@@ -93,17 +94,17 @@ impl TensorBSpline {
 
     /// `Σ_k f_k(t) g_k(r)`, exactly: every `f_k` (every `g_k`) is brought into one common
     /// spline space, then the grid is a matrix product. All `f_k` must share a domain, and all
-    /// `g_k`; all must be scalar.
-    pub fn sum_of_outer(terms: &[(BSpline, BSpline)]) -> Result<Self> {
+    /// `g_k`; all must be scalar. The terms are pairs of splines or of references to them.
+    pub fn sum_of_outer<F: Borrow<BSpline>, G: Borrow<BSpline>>(terms: &[(F, G)]) -> Result<Self> {
         if terms.is_empty() {
             return Err(Error::ZeroDimension);
         }
-        for (f, g) in terms {
+        let fs: Vec<&BSpline> = terms.iter().map(|(f, _)| f.borrow()).collect();
+        let gs: Vec<&BSpline> = terms.iter().map(|(_, g)| g.borrow()).collect();
+        for (f, g) in fs.iter().zip(&gs) {
             check_scalar(f)?;
             check_scalar(g)?;
         }
-        let fs: Vec<&BSpline> = terms.iter().map(|(f, _)| f).collect();
-        let gs: Vec<&BSpline> = terms.iter().map(|(_, g)| g).collect();
         // `stack` harmonises its parts: column k of the stacked spline is f_k in the common space.
         let ft = BSpline::stack(&fs)?;
         let gr = BSpline::stack(&gs)?;

@@ -289,9 +289,9 @@ pub(crate) fn straight_corner_ends(
 /// `Σ_k f_k ⊗ g_k`.
 fn outer_sum(fs: &[BSpline; 3], gs: &[BSpline; 3]) -> Result<TensorBSpline> {
     Ok(TensorBSpline::sum_of_outer(&[
-        (fs[0].clone(), gs[0].clone()),
-        (fs[1].clone(), gs[1].clone()),
-        (fs[2].clone(), gs[2].clone()),
+        (&fs[0], &gs[0]),
+        (&fs[1], &gs[1]),
+        (&fs[2], &gs[2]),
     ])?)
 }
 

@@ -111,7 +111,8 @@ impl<'p> Model<'p> {
     pub(crate) fn locate(&self, u: f64) -> (usize, f64) {
         let n = self.n();
         let u = wrap(u, n as f64);
-        let i = (u.floor() as usize).min(n - 1);
+        // (Truncation is the floor in [0, n), without the library call.)
+        let i = (u as usize).min(n - 1);
         let (a, b) = self.forms[i].domain();
         (i, a + (u - i as f64).clamp(0.0, 1.0) * (b - a))
     }
@@ -126,7 +127,7 @@ impl<'p> Model<'p> {
     pub(crate) fn joint_at(&self, u: f64) -> Option<&Joint> {
         let n = self.n() as f64;
         let k = wrap(u, n);
-        (k.fract() == 0.0).then(|| &self.joints[(k as usize) % self.n()])
+        (k == (k as usize) as f64).then(|| &self.joints[(k as usize) % self.n()])
     }
 
     /// The document's parameter per segment, on average: the unit in which a cell's chord

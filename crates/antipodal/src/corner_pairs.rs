@@ -24,6 +24,7 @@ use bspline::roots::{find_roots_in, prove_positive_in, RootKind, RootOptions};
 use bspline::Piecewise;
 use curve::{Frame, ParamCurve, Profile, SegmentKind, SplineCurve, V2};
 use numeric::certificate::{Doubt, Doubts};
+use numeric::rounding::gamma;
 
 /// How far inside a cone (the sine of the angle to its nearer edge) a direction must be to be
 /// inside it rather than on its edge: far above the rounding of the unit directions compared,
@@ -210,6 +211,9 @@ struct Perpendicular {
 /// `w (R · R′) − w′ |R|²` (`R · R′` for a polynomial curve); its coefficients carry their
 /// rounding bounds into the root isolation.
 fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Perpendicular>> {
+    if let Some(feet) = straight_foot(c, q) {
+        return Ok(feet);
+    }
     let pieces = c.exact_pieces();
     let hom = &pieces.hom;
     let rx = hom.weighted(&[1.0, 0.0, -q.x]);
@@ -258,4 +262,43 @@ fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Pe
         });
     }
     Ok(feet)
+}
+
+/// [`foot_points`] on a straight segment (a polynomial of degree one on one span), in closed
+/// form: the foot-point function `(C(u) − q) · C′` is affine with slope `|C′|² > 0`, so its
+/// one root is simple, and lies at an end where the end's value is within its rounding of
+/// zero. `None` for any other curve, and for a segment too short to tell its ends apart.
+fn straight_foot(c: &SplineCurve, q: V2) -> Option<Vec<Perpendicular>> {
+    let curve = c.curve();
+    if curve.is_rational() || curve.degree() != 1 {
+        return None;
+    }
+    let points = curve.control_points();
+    let [p0, p1] = points.as_slice() else {
+        return None;
+    };
+    let (a, b) = curve.domain();
+    let (p0, p1) = ([p0[0], p0[1]], [p1[0], p1[1]]);
+    let d = [p1[0] - p0[0], p1[1] - p0[1]];
+    // (The values at the ends, each with a bound on its rounding from its terms' sizes: the
+    // differences to q and d = p1 − p0, whose rounding is of the points' size.)
+    let d_size = [
+        d[0].abs() + p0[0].abs() + p1[0].abs(),
+        d[1].abs() + p0[1].abs() + p1[1].abs(),
+    ];
+    let at = |p: [f64; 2]| {
+        let value = (p[0] - q.x) * d[0] + (p[1] - q.y) * d[1];
+        let size = (p[0].abs() + q.x.abs()) * d_size[0] + (p[1].abs() + q.y.abs()) * d_size[1];
+        (value, gamma(6) * size)
+    };
+    let ((f0, e0), (f1, e1)) = (at(p0), at(p1));
+    let (at_start, at_end) = (f0.abs() <= e0, f1.abs() <= e1);
+    let u = match (at_start, at_end) {
+        (true, true) => return None,
+        (true, false) => a,
+        (false, true) => b,
+        (false, false) if (f0 > 0.0) != (f1 > 0.0) => (a + (b - a) * (f0 / (f0 - f1))).clamp(a, b),
+        (false, false) => return Some(Vec::new()),
+    };
+    Some(vec![Perpendicular { u, separated: true }])
 }

@@ -262,7 +262,7 @@ impl BSpline {
 
     /// Whether `other` lies in this function's spline space, clamped: harmonising them
     /// changes neither.
-    fn same_space(&self, other: &BSpline) -> bool {
+    pub(crate) fn same_space(&self, other: &BSpline) -> bool {
         self.degree() == other.degree() && self.knots() == other.knots() && self.is_clamped()
     }
 

@@ -105,18 +105,28 @@ impl TensorBSpline {
             check_scalar(f)?;
             check_scalar(g)?;
         }
+        let k = terms.len();
+        // (Factors in one space already, as callers keep them, are read where they are.)
+        if fs.iter().all(|f| fs[0].same_space(f)) && gs.iter().all(|g| gs[0].same_space(g)) {
+            let coefs = outer_grid(
+                fs[0].n_ctrl(),
+                gs[0].n_ctrl(),
+                k,
+                |i, m| fs[m].ctrl(i)[0],
+                |j, m| gs[m].ctrl(j)[0],
+            );
+            return Ok(Self::on_spaces_of(fs[0], gs[0], coefs));
+        }
         // `stack` harmonises its parts: column k of the stacked spline is f_k in the common space.
         let ft = BSpline::stack(&fs)?;
         let gr = BSpline::stack(&gs)?;
-        let (n_t, n_r, k) = (ft.n_ctrl(), gr.n_ctrl(), terms.len());
-        let mut coefs = vec![0.0; n_t * n_r];
-        for i in 0..n_t {
-            let fi = ft.ctrl(i);
-            for j in 0..n_r {
-                let gj = gr.ctrl(j);
-                coefs[i * n_r + j] = (0..k).map(|m| fi[m] * gj[m]).sum();
-            }
-        }
+        let coefs = outer_grid(
+            ft.n_ctrl(),
+            gr.n_ctrl(),
+            k,
+            |i, m| ft.ctrl(i)[m],
+            |j, m| gr.ctrl(j)[m],
+        );
         Ok(Self::on_spaces_of(&ft, &gr, coefs))
     }
 
@@ -407,4 +417,22 @@ fn check_scalar(h: &BSpline) -> Result<()> {
             got: h.dim(),
         })
     }
+}
+
+/// The grid `Σ_m f(i, m) g(j, m)` over `m < k`, row by row: the coefficients of a sum of `k`
+/// outer products of factors with `n_t` and `n_r` coefficients.
+fn outer_grid(
+    n_t: usize,
+    n_r: usize,
+    k: usize,
+    f: impl Fn(usize, usize) -> f64,
+    g: impl Fn(usize, usize) -> f64,
+) -> Vec<f64> {
+    let mut coefs = vec![0.0; n_t * n_r];
+    for i in 0..n_t {
+        for j in 0..n_r {
+            coefs[i * n_r + j] = (0..k).map(|m| f(i, m) * g(j, m)).sum();
+        }
+    }
+    coefs
 }

@@ -110,6 +110,12 @@ impl Function {
     }
 }
 
+/// A stretch of one segment: its index and an interval of its form's parameter.
+type SegmentStretch = (usize, [f64; 2]);
+
+/// A rectangle's part on one cell: the cell's index and the intervals of its two contacts.
+type CellPart = (usize, [f64; 2], [f64; 2]);
+
 /// The proof that every function is positive on rectangles of the profile's parameter.
 pub(crate) struct Positivity<'a> {
     model: &'a Model<'a>,
@@ -150,7 +156,7 @@ impl<'a> Positivity<'a> {
         };
         // The rectangle's parts on the cells: the conditions hold for a pair in either order,
         // so a part below the diagonal is its mirror's.
-        let parts: SmallVec<[(usize, [f64; 2], [f64; 2]); 8]> = ss
+        let parts: SmallVec<[CellPart; 8]> = ss
             .iter()
             .flat_map(|&(i, si)| {
                 ts.iter().map(move |&(j, tj)| {
@@ -232,7 +238,7 @@ impl<'a> Positivity<'a> {
 
     /// `[lo, hi]` cut at the joints into stretches of segments (in their forms' parameters);
     /// `None` when it runs across a reflex corner, whose pairs take no part.
-    fn pieces(&self, [lo, hi]: [f64; 2]) -> Option<SmallVec<[(usize, [f64; 2]); 4]>> {
+    fn pieces(&self, [lo, hi]: [f64; 2]) -> Option<SmallVec<[SegmentStretch; 4]>> {
         let n = self.model.n();
         let mut out = SmallVec::new();
         let mut at = lo;

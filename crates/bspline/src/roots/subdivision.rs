@@ -109,11 +109,9 @@ impl Part {
             let (a, b) = ((-e - c0) / slope, (e - c0) / slope);
             (a.min(b).max(0.0), a.max(b).min(1.0))
         };
-        if !(r0 <= r1) {
-            return None;
-        }
+        // (None where rounding left the interval empty or not a number.)
         let width = span.x1 - span.x0;
-        Some((span.x0 + width * r0, (span.x0 + width * r1).min(span.x1)))
+        (r0 <= r1).then(|| (span.x0 + width * r0, (span.x0 + width * r1).min(span.x1)))
     }
 
     /// The two parts on either side of `m` (inside the part).

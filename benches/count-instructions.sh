@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Instructions per run of `antipodal` (warm: on a prepared curve; cold: preparing and answering
-# once) on the papers' shapes and the wavy cubic, and of the medial axis (warm: on the region
-# built; cold: from the file's bytes) on the medial benchmarks' shapes, counted by callgrind.
+# once) on the papers' shapes and the wavy cubic, of the medial axis (warm: on the region
+# built; cold: from the file's bytes) on the medial benchmarks' shapes, and of the grasps of
+# the grasp benchmark's batch of 100 outlines (polygons, periodic cubics; cold, one thread),
+# counted by callgrind.
 # Usage: benches/count-instructions.sh [FILE ...]   (needs valgrind; FILEs: antipodal's runs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,5 +36,10 @@ if [ $# -eq 0 ]; then
         w=$(count "$f" medial-warm 20)
         c=$(count "$f" medial-cold 5)
         printf '%-45s %12d %12d %8.1f\n' "medial $f" "$w" "$c" "$(echo "$c / $w" | bc -l)"
+    done
+fi
+if [ $# -eq 0 ]; then
+    for kind in polygons outlines; do
+        printf '%-45s %12d\n' "grasps: batch of 100 $kind" "$(count grasps "$kind" 1)"
     done
 fi

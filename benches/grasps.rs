@@ -18,6 +18,10 @@ use rayon::prelude::*;
 use std::time::Duration;
 use testkit::stars::Star;
 
+#[path = "common/outlines.rs"]
+mod outlines;
+use outlines::{cubics, outline_points, polygons};
+
 /// The friction of the headline figures.
 const MU: f64 = 0.3;
 
@@ -87,25 +91,10 @@ fn growth(c: &mut Criterion) {
 }
 
 fn batch(c: &mut Criterion) {
-    // The points of 100 random outlines of 8–20 points.
-    let mut draw = testkit::rng(42);
-    let outlines: Vec<Vec<[f64; 2]>> = (0..100)
-        .map(|i| {
-            let n = (8 + (draw() * 13.0) as usize).min(20);
-            Star::default().drawn(n, &mut testkit::rng(1000 + i))
-        })
-        .collect();
-    let curves: Vec<SplineCurve> = outlines
-        .iter()
-        .map(|points| SplineCurve::periodic(3, points, None).unwrap())
-        .collect();
-    batch_of(c, "outlines", &curves);
+    let outlines = outline_points();
+    batch_of(c, "outlines", &cubics(&outlines));
     // The same outlines read as polygons (the straight sides' cells affine).
-    let polygons: Vec<curve::Profile> = outlines
-        .iter()
-        .map(|points| testkit::outlines::polygon(points))
-        .collect();
-    batch_of(c, "polygons", &polygons);
+    batch_of(c, "polygons", &polygons(&outlines));
 }
 
 /// The grasps of every one of `items` on all cores.

@@ -270,13 +270,7 @@ fn foot_points(c: &SplineCurve, q: V2, opts: &Options) -> bspline::Result<Vec<Pe
 /// zero. `None` for any other curve, and for a segment too short to tell its ends apart.
 fn straight_foot(c: &SplineCurve, q: V2) -> Option<Vec<Perpendicular>> {
     let curve = c.curve();
-    if curve.is_rational() || curve.degree() != 1 {
-        return None;
-    }
-    let points = curve.control_points();
-    let [p0, p1] = points.as_slice() else {
-        return None;
-    };
+    let [p0, p1] = curve.straight_ends()?;
     let (a, b) = curve.domain();
     let (p0, p1) = ([p0[0], p0[1]], [p1[0], p1[1]]);
     let d = [p1[0] - p0[0], p1[1] - p0[1]];

@@ -183,6 +183,37 @@ impl Rational {
             })
             .collect()
     }
+
+    /// For a straight segment, a polynomial curve of degree one on one span, its start and
+    /// end points (its two control points: on one span of degree one the basis is affine
+    /// whatever the knots outside the domain); `None` for any other curve, a rational one
+    /// included (a line, but not run at a constant speed). Closed forms on straight segments
+    /// (nearest points, feet, cone conditions) ask this one question.
+    ///
+    /// ```
+    /// use bspline::{BSpline, Rational};
+    /// let line = Rational::polynomial(&BSpline::bezier(2, vec![0., 1., 4., 3.]).unwrap());
+    /// let [p, q] = line.straight_ends().unwrap();
+    /// assert_eq!((p.as_slice(), q.as_slice()), (&[0., 1.][..], &[4., 3.][..]));
+    /// let bent = Rational::polynomial(&BSpline::bezier(2, vec![0., 0., 1., 1., 2., 0.]).unwrap());
+    /// assert!(bent.straight_ends().is_none());
+    /// // (A rational line: straight, but not at a constant speed.)
+    /// let w = [1.0, 2.0];
+    /// let uneven = Rational::new(BSpline::bezier(2, vec![1., 0., 1., 1.]).unwrap(), Some(&w)).unwrap();
+    /// assert!(uneven.straight_ends().is_none());
+    /// ```
+    pub fn straight_ends(&self) -> Option<[SmallVec<[f64; 4]>; 2]> {
+        if self.rational || self.degree() != 1 || self.hom.n_ctrl() != 2 {
+            return None;
+        }
+        let d = self.dim();
+        let end = |i: usize| {
+            let h = self.hom.ctrl(i);
+            h[..d].iter().map(|x| x / h[d]).collect()
+        };
+        Some([end(0), end(1)])
+    }
+
     /// The weights.
     pub fn weights(&self) -> Vec<f64> {
         let d = self.dim();

@@ -50,22 +50,13 @@ pub(crate) struct Form {
     orientation: f64,
 }
 
-/// A polynomial curve of degree one on one span: its start and its derivative.
+/// A straight segment's start and its constant derivative.
 fn straight(curve: &Rational) -> Option<[[f64; 2]; 2]> {
-    if curve.is_rational() || curve.degree() != 1 || curve.homogeneous().n_ctrl() != 2 {
-        return None;
-    }
+    let [p, q] = curve.straight_ends()?;
     let (a, b) = curve.domain();
-    let mut out = [0.0; 4];
-    curve.eval_derivs(a, 1, &mut out);
-    let mut end = [0.0; 4];
-    curve.eval_derivs(b, 0, &mut end);
-    // (The derivative from the ends, so the line runs exactly through both.)
     let h = b - a;
-    Some([
-        [out[0], out[1]],
-        [(end[0] - out[0]) / h, (end[1] - out[1]) / h],
-    ])
+    // (The derivative from the ends, so the line runs exactly through both.)
+    Some([[p[0], p[1]], [(q[0] - p[0]) / h, (q[1] - p[1]) / h]])
 }
 
 /// `parts` in one spline space (common degree, merged knots).

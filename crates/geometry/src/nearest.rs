@@ -9,8 +9,9 @@
 
 use crate::pieces::{append_halves, hull_distance, ControlPoints};
 use curve::piece_bounds::{box_distance, coefficient_error, Errors};
-use curve::{ParamCurve, Profile, Segment, V2};
+use curve::{OwnParam, ParamCurve, Profile, Segment, SplineCurve, V2};
 use numeric::rounding::ulps;
+use std::f64::consts::TAU;
 
 /// Newton steps from a piece's middle.
 const NEAREST_NEWTON_STEPS: usize = 20;
@@ -92,6 +93,72 @@ pub(crate) fn nearest_near(profile: &Profile, x: [f64; 2], u: f64) -> Foot {
 /// order, were halved until the piece bound ran out before the nearer pieces were reached.)
 fn nearest_on(s: &Segment, x: V2, beat: f64) -> Option<(f64, f64)> {
     let c = s.curve();
+    let found = if let Some([p, q]) = c.curve().straight_ends() {
+        Some(nearest_on_straight(c, [p[0], p[1]], [q[0], q[1]], x))
+    } else if let (Some((center, _)), OwnParam::Arc { .. }) = (s.circle(), s.own_param()) {
+        Some(nearest_on_arc(s, V2::from_arr(center), x))
+    } else {
+        nearest_by_pieces(c, x, beat)
+    };
+    found.filter(|f| f.0 < beat)
+}
+
+/// The nearest point of a circular arc to `x`, in closed form: where the ray from the
+/// centre through `x` meets the arc, or else the nearer end (the distance grows with the
+/// angle from that ray). Every point is as near to the centre itself: the start is taken.
+/// Distances are the curve's own at the parameters found, and the ends are always weighed,
+/// so a ray at an end within the angle's rounding loses nothing.
+fn nearest_on_arc(s: &Segment, center: V2, x: V2) -> (f64, f64) {
+    let c = s.curve();
+    let (a, b) = c.domain();
+    let dist = |u: f64| (c.jet_to(u, 0).p - x).norm();
+    let ends = [(dist(a), a), (dist(b), b)];
+    let nearer = |m: (f64, f64), e: (f64, f64)| if e.0 < m.0 { e } else { m };
+    let best = nearer(ends[0], ends[1]);
+    let (v, from) = (x - center, s.start() - center);
+    let (own_from, own_to) = s.own_domain();
+    let sweep = match s.own_param() {
+        OwnParam::Arc {
+            pieces,
+            piece_sweep,
+        } => pieces as f64 * piece_sweep.abs(),
+        _ => return best,
+    };
+    // (The way the arc runs from its tangent: a mirrored or reversed arc keeps the sweep
+    // it was defined with, whose sign then no longer says it.)
+    let way = from.cross(c.jet_to(a, 1).d1);
+    if v.norm() == 0.0 || sweep == 0.0 || way == 0.0 {
+        return best;
+    }
+    // (The angle from the start to the ray, the way the arc runs, in [0, 2π).)
+    let turn = (from.cross(v).atan2(from.dot(v)) * way.signum()).rem_euclid(TAU);
+    if turn > sweep {
+        return best;
+    }
+    let own = own_from + turn / sweep * (own_to - own_from);
+    let u = s.own_param().form(own, (a, b)).clamp(a, b);
+    nearer(best, (dist(u), u))
+}
+
+/// The nearest point of a straight segment from `p` to `q` to `x`, in closed form: the
+/// squared distance is a convex quadratic in the parameter, least at the projection on the
+/// line, clamped to the ends. Its distance is the curve's own at the parameter found, as the
+/// search's is.
+fn nearest_on_straight(c: &SplineCurve, p: [f64; 2], q: [f64; 2], x: V2) -> (f64, f64) {
+    let (a, b) = c.domain();
+    let d = V2::from_arr(q) - V2::from_arr(p);
+    let len2 = d.dot(d);
+    let along = if len2 > 0.0 {
+        ((x - V2::from_arr(p)).dot(d) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let u = (a + along * (b - a)).clamp(a, b);
+    ((c.jet_to(u, 0).p - x).norm(), u)
+}
+
+/// [`nearest_on`] by branch and bound, on any segment.
+fn nearest_by_pieces(c: &SplineCurve, x: V2, beat: f64) -> Option<(f64, f64)> {
     let pieces = c.bezier_pieces();
     let dim = pieces.dim();
     let dist = |u: f64| (c.jet_to(u, 0).p - x).norm();
@@ -307,6 +374,86 @@ mod tests {
             testkit::assert_near!(n.distance, want, 1e-12, "{x:?}: {} vs {want}", n.distance);
             let q = p.jet_to(n.u, 0).p;
             testkit::assert_near!((q.x - x[0]).hypot(q.y - x[1]), n.distance, 1e-12);
+        }
+    }
+
+    /// A straight segment's closed form against the branch and bound of every other
+    /// segment, on random lines (short, long, far from the origin) and points about them:
+    /// the same distance to rounding, attained at the parameter found, and the points no
+    /// farther apart than a flat minimum allows.
+    #[test]
+    fn a_straight_segments_closed_form_is_the_searchs_point() {
+        let mut rnd = testkit::rng(42);
+        for case in 0..2000 {
+            let scale = 2f64.powi(case % 41 - 20);
+            let far = if case % 3 == 0 { 1e4 * scale } else { 0.0 };
+            let mut at = || {
+                [
+                    far + scale * (2.0 * rnd() - 1.0),
+                    scale * (2.0 * rnd() - 1.0),
+                ]
+            };
+            let (p, q, x) = (at(), at(), at());
+            let Ok(line) = Segment::line(p, q) else {
+                continue;
+            };
+            let c = line.curve();
+            let x = V2::from_arr(x);
+            let (d, u) = nearest_on_straight(c, p, q, x);
+            let (want, v) = nearest_by_pieces(c, x, f64::INFINITY).unwrap();
+            let rounding = 1e-13 * (scale + far);
+            testkit::assert_near!(d, want, rounding, "case {case}");
+            testkit::assert_near!((c.jet_to(u, 0).p - x).norm(), d, rounding);
+            let (a, b) = c.domain();
+            assert!((a..=b).contains(&u), "case {case}: {u} off [{a}, {b}]");
+            let apart = (c.jet_to(u, 0).p - c.jet_to(v, 0).p).norm();
+            assert!(apart <= 1e-6 * (scale + far), "case {case}: {apart}");
+        }
+    }
+
+    /// An arc's closed form against the branch and bound, on random arcs (either way round,
+    /// small and whole turns, small, huge and far from the origin) and points inside and
+    /// outside their circles, the centre among them: the same distance to rounding, attained
+    /// at the parameter found.
+    #[test]
+    fn an_arcs_closed_form_is_the_searchs_point() {
+        let mut rnd = testkit::rng(43);
+        for case in 0..2000 {
+            let scale = 2f64.powi(case % 41 - 20);
+            let far = if case % 3 == 0 { 1e4 * scale } else { 0.0 };
+            let center = [far + scale * rnd(), scale * rnd()];
+            let r = scale * (0.1 + rnd());
+            let start = TAU * (2.0 * rnd() - 1.0);
+            let sweep = match case % 5 {
+                0 => TAU,
+                1 => -TAU,
+                _ => TAU * (2.0 * rnd() - 1.0),
+            };
+            let Ok(arc) = Segment::arc(center, r, start, start + sweep) else {
+                continue;
+            };
+            // (Reversed and mirrored arcs keep the sweep they were defined with.)
+            let arc = match case % 4 {
+                0 => arc.reversed().unwrap(),
+                // (x ↦ 2 c_x − x: mirrored in the vertical line through the centre.)
+                1 => {
+                    let mirror = curve::Affine([-1.0, 0.0, 0.0, 1.0, 2.0 * center[0], 0.0]);
+                    arc.transformed(&mirror).unwrap()
+                }
+                _ => arc,
+            };
+            let x = if case % 7 == 0 {
+                V2::from_arr(center)
+            } else {
+                let (a, l) = (TAU * rnd(), 2.5 * r * rnd());
+                V2::from_arr(center) + V2::new(a.cos(), a.sin()) * l
+            };
+            let c = arc.curve();
+            let (d, u) = nearest_on_arc(&arc, V2::from_arr(center), x);
+            let (want, _) = nearest_by_pieces(c, x, f64::INFINITY).unwrap();
+            let rounding = 1e-13 * (scale + far);
+            testkit::assert_near!(d, want, rounding, "case {case}");
+            testkit::assert_near!((c.jet_to(u, 0).p - x).norm(), d, rounding);
         }
     }
 }
